@@ -1,0 +1,49 @@
+// lmc — the headless face of the workbench engine, for batch work and tests.
+#include <algorithm>
+#include <iostream>
+
+#include "app/lmc/command.h"
+#include "core/common/error.h"
+
+namespace lmc::cli {
+
+std::vector<Command>& command_registry() {
+  static std::vector<Command> registry;
+  return registry;
+}
+
+int& command_exit_code() {
+  static int code = 0;
+  return code;
+}
+
+}  // namespace lmc::cli
+
+int main(int argc, char** argv) {
+  CLI::App app{
+      "lmc — design, record and analyse multi-Leap-Motion-Controller hand measurements.\n"
+      "Every command prints its own help: lmc <command> --help"};
+  app.set_version_flag("--version", std::string("lmc ") + LMC_VERSION);
+  app.require_subcommand(1);
+
+  auto& registry = lmc::cli::command_registry();
+  std::sort(registry.begin(), registry.end(),
+            [](const auto& a, const auto& b) { return a.order < b.order; });
+  for (auto& cmd : registry) {
+    CLI::App* sub = app.add_subcommand(cmd.name, cmd.summary);
+    cmd.setup(*sub);
+  }
+
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    return app.exit(e);
+  } catch (const lmc::Error& e) {
+    std::cerr << "lmc: error: " << e.what() << "\n";
+    return 1;
+  } catch (const std::exception& e) {
+    std::cerr << "lmc: error: " << e.what() << "\n";
+    return 1;
+  }
+  return lmc::cli::command_exit_code();
+}

@@ -1,0 +1,49 @@
+#pragma once
+// Typed access to JSON values that reports the JSON path of anything missing or mistyped, so
+// every loader names the file and the exact field a user must fix.
+#include <nlohmann/json.hpp>
+#include <string>
+
+#include "core/common/error.h"
+
+namespace lmc {
+
+class JsonReader {
+ public:
+  JsonReader(const nlohmann::json& j, std::string source, std::string path = "")
+      : j_(j), source_(std::move(source)), path_(std::move(path)) {}
+
+  const nlohmann::json& json() const { return j_; }
+  const std::string& path() const { return path_; }
+  bool has(const char* key) const { return j_.is_object() && j_.contains(key) && !j_.at(key).is_null(); }
+
+  JsonReader at(const char* key) const;
+  JsonReader at(size_t index) const;
+  size_t array_size() const;  // throws unless an array
+
+  double number() const;  // finite numbers only
+  int integer() const;
+  std::string string() const;
+  bool boolean() const;
+
+  double number(const char* key) const { return at(key).number(); }
+  double number_or(const char* key, double fallback) const { return has(key) ? number(key) : fallback; }
+  std::string string(const char* key) const { return at(key).string(); }
+  std::string string_or(const char* key, std::string fallback) const {
+    return has(key) ? string(key) : fallback;
+  }
+
+  [[noreturn]] void fail(const std::string& what) const;
+  void require_object() const;
+
+ private:
+  const nlohmann::json& j_;
+  std::string source_;
+  std::string path_;
+};
+
+// Parses text as JSON; a syntax error is reported with the file and the byte position.
+nlohmann::json parse_json_text(const std::string& text, const std::string& source);
+nlohmann::json read_json_file(const std::filesystem::path& path);
+
+}  // namespace lmc

@@ -1,0 +1,82 @@
+#include "ui/app/capture.h"
+
+#include <chrono>
+#include <filesystem>
+#include <iostream>
+#include <thread>
+
+#include "ui/app/workbench_shell.h"
+#include "ui/platform/gl_window.h"
+#include "ui/tabs/tab_registry.h"
+
+namespace lmc::ui {
+
+int run_interactive(int width, int height) {
+  GlWindow window(WindowOptions{width, height, true, "LMC Workbench"});
+  WorkbenchShell shell;
+  std::string title;
+  while (!shell.quit_requested()) {
+    if (window.should_close()) {
+      window.set_should_close(false);
+      shell.request_quit();
+    }
+    window.begin_frame();
+    shell.frame();
+    window.end_frame();
+    window.present();
+    if (const std::string t = shell.window_title(); t != title) {
+      title = t;
+      window.set_title(title);
+    }
+  }
+  return 0;
+}
+
+int run_capture(const std::string& dir, const std::vector<std::string>& tab_ids, int width, int height) {
+  std::vector<std::string> ids = tab_ids;
+  if (ids.empty()) {
+    for (const auto& info : tab_registry()) ids.push_back(info.id);
+  }
+  for (const auto& id : ids) {
+    bool known = false;
+    for (const auto& info : tab_registry()) known = known || info.id == id;
+    if (!known) {
+      std::cerr << "lmc-workbench: unknown tab '" << id << "' (tabs: layout, devices, record, review)\n";
+      return 2;
+    }
+  }
+  std::filesystem::create_directories(dir);
+  GlWindow window(WindowOptions{width, height, false, "LMC Workbench"});
+  WorkbenchShell shell;
+  for (const auto& id : ids) {
+    size_t index = 0;
+    for (size_t i = 0; i < tab_registry().size(); ++i) {
+      if (tab_registry()[i].id == id) index = i;
+    }
+    shell.select_tab(id);
+    const int settle_frames = shell.tab(index).prepare_for_capture();
+    // Let the tab settle: layout needs a couple of frames; background work (a heatmap, a
+    // simulated rig) gets up to 20 s to finish so the picture shows real content.
+    const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(20);
+    int frames = 0;
+    while (frames < settle_frames + 3 ||
+           (shell.tab(index).busy_for_capture() && std::chrono::steady_clock::now() < deadline)) {
+      window.begin_frame();
+      shell.frame();
+      window.end_frame();
+      window.present();
+      ++frames;
+      if (shell.tab(index).busy_for_capture()) std::this_thread::sleep_for(std::chrono::milliseconds(15));
+    }
+    window.begin_frame();
+    shell.frame();
+    window.end_frame();
+    const auto path = (std::filesystem::path(dir) / (id + ".png")).string();
+    window.save_png(path);
+    window.present();
+    std::cout << "wrote " << path << "\n";
+  }
+  return 0;
+}
+
+}  // namespace lmc::ui

@@ -1,0 +1,13 @@
+#pragma once
+// The two ways the workbench runs: interactively, or rendering tabs to PNG for review and tests.
+#include <string>
+#include <vector>
+
+namespace lmc::ui {
+
+int run_interactive(int width, int height);
+// Renders each requested tab (all when empty) in a hidden window to DIR/<tab>.png; returns 0
+// when every PNG was written, 2 for an unknown tab name.
+int run_capture(const std::string& dir, const std::vector<std::string>& tab_ids, int width, int height);
+
+}  // namespace lmc::ui

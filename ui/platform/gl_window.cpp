@@ -1,0 +1,133 @@
+#include "ui/platform/gl_window.h"
+
+// epoxy must come before GLFW so GLFW does not pull in a system GL header first.
+#include <epoxy/gl.h>
+#include <GLFW/glfw3.h>
+#include <imgui.h>
+#include <backends/imgui_impl_glfw.h>
+#include <backends/imgui_impl_opengl3.h>
+#include <stb_image_write.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace lmc::ui {
+namespace {
+
+std::string g_last_glfw_error;
+
+void on_glfw_error(int code, const char* description) {
+  g_last_glfw_error = "GLFW error " + std::to_string(code) + ": " + (description ? description : "");
+}
+
+// ImGui's layout file belongs to the user, not the repository: $XDG_CONFIG_HOME/lmc-workbench.
+std::string user_ini_path() {
+  std::filesystem::path base;
+  if (const char* xdg = std::getenv("XDG_CONFIG_HOME"); xdg && *xdg) {
+    base = xdg;
+  } else if (const char* home = std::getenv("HOME"); home && *home) {
+    base = std::filesystem::path(home) / ".config";
+  } else {
+    return {};
+  }
+  std::error_code ec;
+  std::filesystem::create_directories(base / "lmc-workbench", ec);
+  if (ec) return {};
+  return (base / "lmc-workbench" / "imgui.ini").string();
+}
+
+}  // namespace
+
+GlWindow::GlWindow(const WindowOptions& options) {
+  glfwSetErrorCallback(on_glfw_error);
+  if (!glfwInit()) {
+    throw std::runtime_error("cannot open a window (" +
+                             (g_last_glfw_error.empty() ? std::string("glfwInit failed") : g_last_glfw_error) +
+                             "). Is a display available? Without one, run under xvfb-run.");
+  }
+  glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 3);
+  glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 3);
+  glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);
+  glfwWindowHint(GLFW_OPENGL_FORWARD_COMPAT, GLFW_TRUE);
+  glfwWindowHint(GLFW_VISIBLE, options.visible ? GLFW_TRUE : GLFW_FALSE);
+  glfwWindowHint(GLFW_SAMPLES, 4);
+  window_ = glfwCreateWindow(options.width, options.height, options.title.c_str(), nullptr, nullptr);
+  if (window_ == nullptr) {
+    glfwTerminate();
+    throw std::runtime_error("cannot create an OpenGL 3.3 core window: " + g_last_glfw_error);
+  }
+  glfwMakeContextCurrent(window_);
+  glfwSwapInterval(options.visible ? 1 : 0);
+
+  IMGUI_CHECKVERSION();
+  ImGui::CreateContext();
+  ImGuiIO& io = ImGui::GetIO();
+  ini_path_ = options.visible ? user_ini_path() : std::string();
+  io.IniFilename = ini_path_.empty() ? nullptr : ini_path_.c_str();
+  ImGui::StyleColorsDark();
+  ImGuiStyle& style = ImGui::GetStyle();
+  style.WindowRounding = 3.0f;
+  style.FrameRounding = 3.0f;
+  style.TabRounding = 3.0f;
+  ImGui_ImplGlfw_InitForOpenGL(window_, true);
+  ImGui_ImplOpenGL3_Init("#version 330 core");
+}
+
+GlWindow::~GlWindow() {
+  ImGui_ImplOpenGL3_Shutdown();
+  ImGui_ImplGlfw_Shutdown();
+  ImGui::DestroyContext();
+  if (window_) glfwDestroyWindow(window_);
+  glfwTerminate();
+}
+
+bool GlWindow::should_close() const { return glfwWindowShouldClose(window_) != 0; }
+void GlWindow::set_should_close(bool close) { glfwSetWindowShouldClose(window_, close ? GLFW_TRUE : GLFW_FALSE); }
+void GlWindow::set_title(const std::string& title) { glfwSetWindowTitle(window_, title.c_str()); }
+
+void GlWindow::begin_frame() {
+  glfwPollEvents();
+  ImGui_ImplOpenGL3_NewFrame();
+  ImGui_ImplGlfw_NewFrame();
+  ImGui::NewFrame();
+}
+
+void GlWindow::end_frame() {
+  ImGui::Render();
+  glViewport(0, 0, framebuffer_width(), framebuffer_height());
+  glClearColor(0.10f, 0.11f, 0.13f, 1.0f);
+  glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+  ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
+}
+
+void GlWindow::present() { glfwSwapBuffers(window_); }
+
+int GlWindow::framebuffer_width() const {
+  int w = 0, h = 0;
+  glfwGetFramebufferSize(window_, &w, &h);
+  return w;
+}
+
+int GlWindow::framebuffer_height() const {
+  int w = 0, h = 0;
+  glfwGetFramebufferSize(window_, &w, &h);
+  return h;
+}
+
+void GlWindow::save_png(const std::string& path) const {
+  const int w = framebuffer_width();
+  const int h = framebuffer_height();
+  std::vector<unsigned char> pixels(static_cast<size_t>(w) * static_cast<size_t>(h) * 3);
+  glPixelStorei(GL_PACK_ALIGNMENT, 1);
+  glReadBuffer(GL_BACK);
+  glReadPixels(0, 0, w, h, GL_RGB, GL_UNSIGNED_BYTE, pixels.data());
+  stbi_flip_vertically_on_write(1);
+  if (stbi_write_png(path.c_str(), w, h, 3, pixels.data(), w * 3) == 0) {
+    throw std::runtime_error("cannot write " + path);
+  }
+}
+
+}  // namespace lmc::ui

@@ -1,0 +1,42 @@
+#pragma once
+// The one GLFW window with an OpenGL 3.3 core context and Dear ImGui on top of it.
+#include <functional>
+#include <string>
+
+struct GLFWwindow;
+
+namespace lmc::ui {
+
+struct WindowOptions {
+  int width = 1280;
+  int height = 800;
+  bool visible = true;  // false for --capture (a hidden window still renders and reads back)
+  std::string title = "LMC Workbench";
+};
+
+class GlWindow {
+ public:
+  // Throws std::runtime_error with GLFW's own message when no display or GL 3.3 is available.
+  explicit GlWindow(const WindowOptions& options);
+  ~GlWindow();
+  GlWindow(const GlWindow&) = delete;
+  GlWindow& operator=(const GlWindow&) = delete;
+
+  bool should_close() const;
+  void set_should_close(bool close);
+  void set_title(const std::string& title);
+  void begin_frame();                  // poll events, start an ImGui frame
+  void end_frame();                    // render ImGui into the back buffer (no swap)
+  void present();                      // swap buffers
+  int framebuffer_width() const;
+  int framebuffer_height() const;
+  // Back buffer → PNG (call between end_frame and present). Throws on failure.
+  void save_png(const std::string& path) const;
+  GLFWwindow* handle() const { return window_; }
+
+ private:
+  GLFWwindow* window_ = nullptr;
+  std::string ini_path_;
+};
+
+}  // namespace lmc::ui

@@ -1,0 +1,10 @@
+#pragma once
+#include <memory>
+
+#include "ui/tabs/tab.h"
+
+namespace lmc::ui {
+
+std::unique_ptr<Tab> make_review_tab(StatusSink& status);
+
+}  // namespace lmc::ui

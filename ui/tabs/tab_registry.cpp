@@ -1,0 +1,20 @@
+#include "ui/tabs/tab_registry.h"
+
+#include "ui/tabs/devices/devices_tab.h"
+#include "ui/tabs/layout/layout_tab.h"
+#include "ui/tabs/record/record_tab.h"
+#include "ui/tabs/review/review_tab.h"
+
+namespace lmc::ui {
+
+const std::vector<TabInfo>& tab_registry() {
+  static const std::vector<TabInfo> tabs = {
+      {"layout", "Layout", [](StatusSink& s) { return make_layout_tab(s); }},
+      {"devices", "Devices", [](StatusSink& s) { return make_devices_tab(s); }},
+      {"record", "Record", [](StatusSink& s) { return make_record_tab(s); }},
+      {"review", "Review", [](StatusSink& s) { return make_review_tab(s); }},
+  };
+  return tabs;
+}
+
+}  // namespace lmc::ui
