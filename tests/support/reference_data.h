@@ -1,0 +1,41 @@
+#pragma once
+// Tests that read ../shared/reference-data find it here and skip, saying why, when it is absent
+// (reference-data/README.md: the files may not be copied into the project).
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <string>
+
+namespace lmc::test {
+
+inline std::filesystem::path reference_data_dir() {
+  if (const char* env = std::getenv("LMC_REFERENCE_DATA_DIR"); env != nullptr && *env != '\0') return env;
+  return LMC_REFERENCE_DATA_DIR;
+}
+
+inline std::filesystem::path reference_file(const std::string& relative) {
+  return reference_data_dir() / relative;
+}
+
+inline std::filesystem::path asset_file(const std::string& relative) {
+  return std::filesystem::path(LMC_TEST_ASSETS_DIR) / relative;
+}
+
+// A fresh, empty folder for one test's files.
+inline std::filesystem::path scratch_dir(const std::string& name) {
+  auto dir = std::filesystem::temp_directory_path() / ("lmc_test_" + name);
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  return dir;
+}
+
+}  // namespace lmc::test
+
+// Skips the current test with a message naming the missing file.
+#define LMC_REQUIRE_REFERENCE_FILE(path)                                                       \
+  do {                                                                                         \
+    if (!std::filesystem::exists(path)) {                                                      \
+      GTEST_SKIP() << "reference data not found at " << (path)                                 \
+                   << " (../shared/reference-data is absent; this check needs it)";            \
+    }                                                                                          \
+  } while (0)
