@@ -1,0 +1,49 @@
+#pragma once
+// Membership in the convex hull of a handful of points (the six palm points of
+// reference-algorithms.md §3). The authors decide "q lies in the hull" with a linear programme
+// (q is a convex combination of the points); we precompute the hull's facet planes once per frame
+// so that each query is a few dot products, and fall back to the in-plane polygon when the points
+// are coplanar (the LP then accepts exactly the points of that polygon).
+#include <Eigen/Core>
+#include <array>
+#include <span>
+
+namespace lmc {
+
+// A facet plane n·p ≤ d (n unit length, pointing out of the hull).
+struct HullPlane {
+  double nx = 0, ny = 0, nz = 0, d = 0;
+};
+
+// Up to C(6,3) = 20 candidate facets for 6 points (coplanar sets become in-plane edge planes,
+// at most C(6,2) = 15). Fixed capacity: no allocation per frame.
+struct ConvexHull6 {
+  static constexpr int kMaxPoints = 6;
+  static constexpr int kMaxPlanes = 20;
+  std::array<HullPlane, kMaxPlanes> planes{};
+  int plane_count = 0;
+  bool flat = false;        // the points are coplanar: planes are the polygon's edges
+  bool degenerate = false;  // fewer than 3 non-collinear points: nothing is inside (except on it)
+
+  // Points on a facet count as inside, like a feasible LP; `tolerance_mm` absorbs rounding.
+  static constexpr double kTolerance_mm = 1e-7;
+};
+
+// Builds the facet planes of the hull of 3 to 6 points.
+ConvexHull6 build_convex_hull(std::span<const Eigen::Vector3d> points);
+
+inline bool hull_contains(const ConvexHull6& hull, double qx, double qy, double qz) {
+  if (hull.degenerate) return false;
+  for (int i = 0; i < hull.plane_count; ++i) {
+    const HullPlane& p = hull.planes[static_cast<size_t>(i)];
+    if (p.nx * qx + p.ny * qy + p.nz * qz - p.d > ConvexHull6::kTolerance_mm) return false;
+  }
+  return true;
+}
+
+// Slow, independent check for tests: q is inside iff it lies in one of the tetrahedra (or, for
+// coplanar points, triangles) spanned by the points (Carathéodory). Not for hot loops.
+bool hull_contains_bruteforce(std::span<const Eigen::Vector3d> points, const Eigen::Vector3d& q,
+                              double tolerance = 1e-9);
+
+}  // namespace lmc

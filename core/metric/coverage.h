@@ -1,0 +1,52 @@
+#pragma once
+// The numbers behind the placement metric (reference-algorithms.md §4), computed from the
+// visibility bits of a layout: for frame j and finger k, count the devices that see k;
+// F_j = min over the five fingers; c_i = #{j : F_j = i} for i = 0…D; plus per device × finger
+// coverage and per finger "seen by nobody" counts.
+#include <array>
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "core/hand/hand_frame.h"
+#include "core/visibility/visibility_kernel.h"
+
+namespace lmc {
+
+struct Coverage {
+  int devices = 0;
+  std::int64_t frames = 0;
+  std::vector<std::int64_t> c;  // size devices + 1: c[i] = frames whose worst finger is seen by i devices
+  // device_finger_seen[d][k]: frames in which device d sees finger k.
+  std::vector<std::array<std::int64_t, kNumDigits>> device_finger_seen;
+  // Frames in which no device sees finger k.
+  std::array<std::int64_t, kNumDigits> finger_unseen{};
+  double metric = 0.0;  // M (placement_metric.h)
+
+  // Fraction helpers for tables (0 when there are no frames).
+  double device_finger_fraction(int device, int finger) const;
+  double finger_unseen_fraction(int finger) const;
+};
+
+// All frames, or only `frame_subset` (indices into the table's frames) when it is non-empty
+// (e.g. the horizontal poses).
+Coverage compute_coverage(const VisibilityTable& table, std::span<const int> frame_subset = {});
+
+// The same from per-device bit columns (each of the same length), for callers that cache
+// columns per device (the workbench while dragging one device).
+Coverage compute_coverage(std::span<const std::span<const FingerBits>> device_columns,
+                          std::span<const int> frame_subset = {});
+
+// Number of devices that see the worst-covered finger, given the bits of each device for one
+// frame: min over fingers of the per-finger counts.
+inline int worst_finger_count(const FingerBits* bits, int devices) {
+  int counts[kNumDigits] = {0, 0, 0, 0, 0};
+  for (int d = 0; d < devices; ++d) {
+    for (int k = 0; k < kNumDigits; ++k) counts[k] += (bits[d] >> k) & 1;
+  }
+  int m = counts[0];
+  for (int k = 1; k < kNumDigits; ++k) m = counts[k] < m ? counts[k] : m;
+  return m;
+}
+
+}  // namespace lmc

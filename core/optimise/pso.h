@@ -1,0 +1,79 @@
+#pragma once
+// Global-best particle swarm search for a layout (reference-algorithms.md §5). A synchronous
+// function: it owns no threads (oneTBB parallelises the evaluation inside), reports progress
+// through a callback on the calling thread after every iteration, checks the stop token between
+// chunks of work, and returns Completed or Cancelled with the best layout found so far.
+//
+// Determinism: every random number is drawn on the calling thread from one std::mt19937_64 seeded
+// with `seed`, in a fixed order; the cost of a particle is computed from integer counts, so the
+// result is identical for any number of threads.
+//
+// Update (per particle i, dimension k, r1, r2 uniform in [0, 1)):
+//   v ← w·v + c1·r1·(pbest − x) + c2·r2·(gbest − x);  x ← x + v.
+// Boundary handling: a coordinate that leaves its bounds is clamped onto the bound and its
+// velocity component is set to zero (so the particle can slide along the wall but not stick
+// outside). Initial positions are uniform in the bounds; initial velocities uniform in
+// ±0.1·(max − min). With `start_from_layout`, particle 0 starts exactly at the start layout
+// (clamped into the bounds) so the result is never worse than the start. Locked parameters never
+// move and always hold the start layout's values.
+#include <cstdint>
+#include <functional>
+#include <span>
+#include <stop_token>
+#include <vector>
+
+#include "core/layout/layout.h"
+#include "core/metric/coverage.h"
+#include "core/optimise/search_space.h"
+#include "core/visibility/frame_prep.h"
+#include "core/visibility/visibility_params.h"
+
+namespace lmc {
+
+struct PsoSettings {
+  int particles = 30;
+  int iterations = 100;
+  double w = 0.9;   // inertia
+  double c1 = 0.5;  // cognitive (own best)
+  double c2 = 0.3;  // social (swarm best)
+  std::uint64_t seed = 1;
+  int threads = 0;  // 0 = all hardware threads; the result does not depend on it
+  bool start_from_layout = false;
+  double phalanx_radius_mm = 10.0;
+};
+
+enum class JobStatus : int { kCompleted = 0, kCancelled = 1 };
+
+struct PsoProgress {
+  int iteration = 0;    // iterations finished (0 = the initial swarm has been evaluated)
+  int iterations = 0;   // planned
+  double best_cost = 0;
+  std::int64_t layout_evaluations = 0;        // particles evaluated so far
+  std::int64_t device_frame_evaluations = 0;  // (device, frame) visibility tests so far
+};
+using PsoProgressCallback = std::function<void(const PsoProgress&)>;
+
+struct PsoResult {
+  JobStatus status = JobStatus::kCompleted;
+  Layout best_layout;
+  double best_cost = 0;
+  Coverage best_coverage;            // of best_layout on the pose set
+  std::vector<double> best_cost_history;  // best cost after the initial swarm and each iteration
+  int iterations_done = 0;
+  std::int64_t layout_evaluations = 0;
+  std::int64_t device_frame_evaluations = 0;
+  double seconds = 0;
+};
+
+// Searches placements for the devices of `start` (1–8 devices; their slots, serials, offsets and
+// sensor model are kept) on `frames`. The sensor model of `start` sets range and field of view.
+// Throws lmc::Error for an invalid search space, start layout or settings.
+PsoResult run_pso(const Layout& start, const SearchSpace& space, std::span<const PreparedFrame> frames,
+                  const PsoSettings& settings, const PsoProgressCallback& progress = {},
+                  std::stop_token stop = {});
+
+// The cost (M) of one layout on prepared frames; the building block of run_pso, exposed for tests
+// and benchmarks. Uses oneTBB over frames.
+double layout_cost(const Layout& layout, std::span<const PreparedFrame> frames, double phalanx_radius_mm = 10.0);
+
+}  // namespace lmc

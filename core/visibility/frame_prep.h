@@ -1,0 +1,50 @@
+#pragma once
+// Per-frame data that every device shares (reference-algorithms.md §2, §3), computed once per
+// frame so that each (device, frame) test is only the device-dependent arithmetic:
+//  * the 22 ray-tracing markers s0…s21 (s0 elbow, s1–s4 thumb Proxi…End, s5–s8 index,
+//    s9–s12 middle, s13–s16 ring, s17 pinky Meta, s18–s21 pinky Proxi…End);
+//  * the approach vector a = (s1 + s17)/2 − s0;
+//  * the palm plane (centroid, unit normal from the SVD of the centred palm points) and the
+//    facet planes of the six palm points' 3-D convex hull;
+//  * the 15 phalanges (3 per finger): base, unit direction, length.
+// Laid out as structure-of-arrays so the inner loops vectorise.
+#include <array>
+#include <span>
+#include <vector>
+
+#include "core/geometry/palm_hull.h"
+#include "core/hand/hand_frame.h"
+
+namespace lmc {
+
+inline constexpr int kNumRayMarkers = 22;
+inline constexpr int kNumFingerMarkers = 20;  // four per finger (s17, pinky Meta, belongs to none)
+inline constexpr int kNumPhalanges = 15;
+inline constexpr int kNumPalmPoints = 6;
+
+// Hand point (hand_frame.h index) of ray marker s_k.
+int ray_marker_hand_point(int k);
+// The ray marker index of finger f's j-th marker (j = 0…3): thumb s1–s4, …, pinky s18–s21.
+constexpr int finger_marker(int finger, int j) { return finger < 4 ? 1 + 4 * finger + j : 18 + j; }
+
+struct PreparedFrame {
+  // Markers s0…s21 in world coordinates (SoA).
+  std::array<double, kNumRayMarkers> mx{}, my{}, mz{};
+  // Approach (forearm) vector.
+  double ax = 0, ay = 0, az = 0;
+  // Palm plane through (cx, cy, cz) with unit normal (nx, ny, nz).
+  double cx = 0, cy = 0, cz = 0, nx = 0, ny = 0, nz = 0;
+  std::array<Eigen::Vector3d, kNumPalmPoints> palm_points{};
+  ConvexHull6 hull;
+  // Phalanx p (= 3·finger + segment): base b, unit direction w, length len (SoA). A zero-length
+  // phalanx has w = 0 and never occludes (its n = v × w is zero: "parallel").
+  std::array<double, kNumPhalanges> bx{}, by{}, bz{}, wx{}, wy{}, wz{}, len{};
+  // False when the frame has no hand or non-finite coordinates: nothing is visible.
+  bool valid = false;
+};
+
+PreparedFrame prepare_frame(const HandFrame& frame);
+// Prepares many frames (in parallel; the result does not depend on the thread count).
+std::vector<PreparedFrame> prepare_frames(std::span<const HandFrame> frames);
+
+}  // namespace lmc

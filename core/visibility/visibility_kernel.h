@@ -1,0 +1,48 @@
+#pragma once
+// The fast face of the visibility test (reference-algorithms.md §3): 5 bits per (device, frame),
+// bit k set when finger k (0 thumb … 4 pinky) is visible. Uses the same elementary tests as
+// visibility_explain.h (visibility_tests.h), with early exits.
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "core/layout/layout.h"
+#include "core/visibility/device_view.h"
+#include "core/visibility/frame_prep.h"
+#include "core/visibility/visibility_params.h"
+
+namespace lmc {
+
+using FingerBits = std::uint8_t;
+inline constexpr FingerBits kAllFingersVisible = 0x1F;
+
+// One (device, frame).
+FingerBits visible_fingers(const PreparedFrame& frame, const DeviceView& device, const VisibilityLimits& limits);
+
+// One device over many frames (the workbench caches these per-device columns).
+void device_visibility(const DeviceView& device, std::span<const PreparedFrame> frames,
+                       const VisibilityLimits& limits, std::span<FingerBits> out);
+
+// D × N bits for a layout: bits[d·N + j] (device-major).
+struct VisibilityTable {
+  int devices = 0;
+  int frames = 0;
+  std::vector<FingerBits> bits;
+
+  FingerBits at(int device, int frame) const {
+    return bits[static_cast<size_t>(device) * static_cast<size_t>(frames) + static_cast<size_t>(frame)];
+  }
+  std::span<const FingerBits> device_column(int device) const {
+    return std::span<const FingerBits>(bits).subspan(static_cast<size_t>(device) * static_cast<size_t>(frames),
+                                                     static_cast<size_t>(frames));
+  }
+};
+
+// Evaluates every device of `layout` on every frame (parallel over frames with oneTBB; the
+// result does not depend on the thread count). The sensor model comes from the layout.
+VisibilityTable compute_visibility(const Layout& layout, std::span<const PreparedFrame> frames,
+                                   double phalanx_radius_mm = 10.0);
+VisibilityTable compute_visibility(std::span<const DeviceView> devices, std::span<const PreparedFrame> frames,
+                                   const VisibilityParams& params);
+
+}  // namespace lmc

@@ -1,0 +1,32 @@
+#pragma once
+// The four numbers of the visibility test (reference-algorithms.md §3): sensor range, the
+// pyramid's full angles along the device's long (x) and short (z) axes, and the phalanx radius.
+// Defaults: the study's optimisation values (600 mm, 150°×120°, 10 mm radius); recorded trials
+// are analysed with 400 mm.
+#include "core/layout/sensor_model.h"
+
+namespace lmc {
+
+struct VisibilityParams {
+  double range_mm = 600.0;
+  double fov_long_deg = 150.0;
+  double fov_short_deg = 120.0;
+  double phalanx_radius_mm = 10.0;
+
+  static VisibilityParams from_sensor(const SensorModel& s, double phalanx_radius_mm = 10.0) {
+    return {s.range_mm, s.fov_long_deg, s.fov_short_deg, phalanx_radius_mm};
+  }
+  bool operator==(const VisibilityParams&) const = default;
+};
+
+// Precomputed form used by the kernels (tangents of the half angles, squared range and radius).
+struct VisibilityLimits {
+  double range_mm = 0;
+  double range_sq = 0;
+  double tan_half_long = 0;
+  double tan_half_short = 0;
+  double radius_sq = 0;
+};
+VisibilityLimits make_limits(const VisibilityParams& p);
+
+}  // namespace lmc

@@ -1,0 +1,74 @@
+#pragma once
+// The elementary tests of reference-algorithms.md §3, each written once and used by both the
+// batch kernel (visibility_kernel.cpp) and the explaining path (visibility_explain.cpp), so the
+// two can never disagree. Everything is double precision, like the authors' numpy code.
+#include <cmath>
+
+#include "core/visibility/device_view.h"
+#include "core/visibility/frame_prep.h"
+#include "core/visibility/visibility_params.h"
+
+namespace lmc::vis {
+
+// §3.1: the hand must enter from the user's side, a·f ≥ 0.
+inline double approach_dot(const PreparedFrame& fr, const DeviceView& d) {
+  return fr.ax * d.fx + fr.ay * d.fy + fr.az * d.fz;
+}
+inline bool approach_ok(const PreparedFrame& fr, const DeviceView& d) { return approach_dot(fr, d) >= 0.0; }
+
+enum class ViewResult : int { kInside = 0, kOutOfRange = 1, kOutOfView = 2 };
+
+// §3.2 for one marker m: distance to the device origin, then the pyramid in the device frame
+// (|p.x| ≤ p.y·tan(long/2), |p.z| ≤ p.y·tan(short/2); on a plane counts as inside).
+inline ViewResult marker_in_view(double mx, double my, double mz, const DeviceView& d, const VisibilityLimits& lim) {
+  const double vx = mx - d.ox, vy = my - d.oy, vz = mz - d.oz;
+  // The authors compare the Euclidean norm with L; comparing |v| itself (not |v|²) keeps ties
+  // identical to theirs.
+  if (std::sqrt(vx * vx + vy * vy + vz * vz) > lim.range_mm) return ViewResult::kOutOfRange;
+  const double px = d.rt[0] * vx + d.rt[1] * vy + d.rt[2] * vz;
+  const double py = d.rt[3] * vx + d.rt[4] * vy + d.rt[5] * vz;
+  const double pz = d.rt[6] * vx + d.rt[7] * vy + d.rt[8] * vz;
+  if (std::abs(px) > py * lim.tan_half_long || std::abs(pz) > py * lim.tan_half_short) return ViewResult::kOutOfView;
+  return ViewResult::kInside;
+}
+
+// Shared by all rays of one (device, frame): n·(c − o) for the palm plane.
+inline double palm_plane_numerator(const PreparedFrame& fr, const DeviceView& d) {
+  return fr.nx * (fr.cx - d.ox) + fr.ny * (fr.cy - d.oy) + fr.nz * (fr.cz - d.oz);
+}
+
+// §3.3 for the ray o → m, v = m − o (not normalised): the line meets the palm plane at
+// q = o + t·v with t = n·(c − o) / n·v; occluded when 0 < t < 1 (strictly between device and
+// marker) and q lies in the palm points' 3-D hull. A ray parallel to the plane (n·v = 0) is not
+// occluded.
+inline bool palm_occludes(const PreparedFrame& fr, const DeviceView& d, double plane_num, double vx, double vy,
+                          double vz) {
+  const double denom = fr.nx * vx + fr.ny * vy + fr.nz * vz;
+  if (denom == 0.0) return false;
+  const double t = plane_num / denom;
+  if (!(t > 0.0 && t < 1.0)) return false;
+  return hull_contains(fr.hull, d.ox + t * vx, d.oy + t * vy, d.oz + t * vz);
+}
+
+// §3.4 for the ray o → m (v = m − o, not normalised) against one phalanx (e = b − o, unit w,
+// length len). With unit v̂ = v/D the study's conditions are d < r, 0 < t1 ≤ D, 0 < t2 < ℓ where
+// n̂ = v̂ × w, d = |n̂·e|/|n̂|, t1 = (w × n̂)·e / n̂·n̂, t2 = (v̂ × n̂)·e / n̂·n̂. With n = v × w = D·n̂ the
+// same conditions read (n·e)² < r²·n·n, 0 < (w × n)·e ≤ n·n and 0 < (v × n)·e < ℓ·n·n: no square
+// root, no division. Parallel lines (n = 0) do not occlude; nor does a zero-length phalanx (w = 0).
+inline bool phalanx_occludes(double ex, double ey, double ez, double wx, double wy, double wz, double len, double vx,
+                             double vy, double vz, double radius_sq) {
+  const double nx = vy * wz - vz * wy;
+  const double ny = vz * wx - vx * wz;
+  const double nz = vx * wy - vy * wx;
+  const double nn = nx * nx + ny * ny + nz * nz;
+  const double ne = nx * ex + ny * ey + nz * ez;
+  // w × n
+  const double ax = wy * nz - wz * ny, ay = wz * nx - wx * nz, az = wx * ny - wy * nx;
+  // v × n
+  const double bx = vy * nz - vz * ny, by = vz * nx - vx * nz, bz = vx * ny - vy * nx;
+  const double t1 = ax * ex + ay * ey + az * ez;
+  const double t2 = bx * ex + by * ey + bz * ez;
+  return (nn > 0.0) & (ne * ne < radius_sq * nn) & (t1 > 0.0) & (t1 <= nn) & (t2 > 0.0) & (t2 < len * nn);
+}
+
+}  // namespace lmc::vis
