@@ -1,0 +1,503 @@
+#include "core/io/lmc_recording.h"
+
+#include <algorithm>
+#include <cmath>
+#include <istream>
+#include <limits>
+#include <optional>
+#include <ostream>
+#include <set>
+#include <sstream>
+
+#include "core/common/error.h"
+#include "core/io/atomic_write.h"
+#include "core/io/text_fields.h"
+
+namespace lmc {
+namespace {
+
+// Column layout (reference-data/README.md): 4 bookkeeping columns, then 30 points.
+constexpr int kMetaColumns = 4;
+constexpr std::array<std::string_view, kMetaColumns> kMetaNames = {"Device ID", "Frame ID", "Frame Rate",
+                                                                   "Time Stamp"};
+constexpr int kPointColumns = kMetaColumns + kNumHandPoints;                   // raw/resampled: 34
+constexpr int kSplitColumns = kMetaColumns + 3 * kNumHandPoints + kNumDigits;  // raytraced: 99
+constexpr std::array<char, 3> kAxes = {'x', 'y', 'z'};
+// The study's rig has four controllers; the recorder supports up to eight (one LeapC connection).
+constexpr int kMaxDeviceId = 8;
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+
+// How the columns are laid out in the file.
+enum class ColumnStyle {
+  kPointTriplets,  // raw / resampled: one "x,y,z" field per point, tab-separated
+  kSplitNumbers,   // raytraced: one number per column plus visibility labels
+};
+
+struct HeaderInfo {
+  ColumnStyle style = ColumnStyle::kPointTriplets;
+  bool whitespace_separated = false;  // the authors' raytraced files: space-padded
+  bool ends_with_separator = false;   // the authors' lines all end in a tab / space
+};
+
+std::vector<std::string> triplet_column_names() {
+  std::vector<std::string> names(kMetaNames.begin(), kMetaNames.end());
+  for (int i = 0; i < kNumHandPoints; ++i) {
+    const std::string base(hand_point_name(i));
+    names.push_back(base + ".x," + base + ".y," + base + ".z");
+  }
+  return names;
+}
+
+std::vector<std::string> split_column_names() {
+  std::vector<std::string> names(kMetaNames.begin(), kMetaNames.end());
+  for (int i = 0; i < kNumHandPoints; ++i) {
+    for (const char axis : kAxes) names.push_back(std::string(hand_point_name(i)) + "." + axis);
+  }
+  for (int d = 0; d < kNumDigits; ++d) names.push_back("visibility_" + std::string(digit_name(d)));
+  return names;
+}
+
+// A short, printable excerpt of a field for error messages.
+std::string quote(std::string_view s) {
+  std::string out = "'";
+  const size_t n = std::min<size_t>(s.size(), 40);
+  for (size_t i = 0; i < n; ++i) {
+    const auto c = static_cast<unsigned char>(s[i]);
+    out += (c < 0x20 || c == 0x7F) ? '?' : static_cast<char>(c);
+  }
+  if (s.size() > n) out += "...";
+  return out + "'";
+}
+
+[[noreturn]] void fail(const std::string& source, long line, long column, const std::string& what) {
+  throw Error(ErrorLocation{source, line, column}, what);
+}
+
+HeaderInfo read_header(const text::Line& line, const std::string& source) {
+  HeaderInfo info;
+  const std::string_view t = line.text;
+  if (text::is_blank(t)) {
+    fail(source, line.number, 1, "first line is empty: expected the header, starting with 'Device ID'");
+  }
+  std::vector<text::Field> fields;
+  if (t.find('\t') != std::string_view::npos) {
+    info.ends_with_separator = t.back() == '\t';
+    text::split_fields(t, '\t', fields);
+    while (!fields.empty() && text::is_blank(fields.back().text)) fields.pop_back();
+    if (text::normalise_name(fields.front().text) != "device id") {
+      fail(source, line.number, 1,
+           "not an LMC recording: the header must start with 'Device ID', found " + quote(fields.front().text));
+    }
+    std::vector<std::string> expected;
+    if (fields.size() == static_cast<size_t>(kPointColumns)) {
+      expected = triplet_column_names();
+      info.style = ColumnStyle::kPointTriplets;
+    } else if (fields.size() == static_cast<size_t>(kSplitColumns)) {
+      expected = split_column_names();
+      info.style = ColumnStyle::kSplitNumbers;
+    } else {
+      fail(source, line.number, 0,
+           "header has " + std::to_string(fields.size()) + " columns; expected " + std::to_string(kPointColumns) +
+               " (raw or resampled recording) or " + std::to_string(kSplitColumns) + " (raytraced)");
+    }
+    for (size_t i = 0; i < fields.size(); ++i) {
+      if (text::normalise_name(fields[i].text) != text::normalise_name(expected[i])) {
+        fail(source, line.number, fields[i].column,
+             "header column " + std::to_string(i + 1) + " is " + quote(fields[i].text) + ", expected '" +
+                 expected[i] + "'");
+      }
+    }
+    return info;
+  }
+  // Space-padded (the authors' raytraced output): column names containing spaces ("Device  ID")
+  // are split into words too, so compare word by word against the expected names' words.
+  info.whitespace_separated = true;
+  info.ends_with_separator = t.back() == ' ';
+  info.style = ColumnStyle::kSplitNumbers;
+  text::split_whitespace(t, fields);
+  std::vector<std::string> words;
+  for (const auto& name : split_column_names()) {
+    std::vector<text::Field> parts;
+    text::split_whitespace(name, parts);
+    for (const auto& p : parts) words.push_back(text::normalise_name(p.text));
+  }
+  if (fields.size() < 2 || text::normalise_name(fields[0].text) != "device" ||
+      text::normalise_name(fields[1].text) != "id") {
+    fail(source, line.number, fields.empty() ? 1 : fields[0].column,
+         "not an LMC recording: the header must start with 'Device ID'");
+  }
+  for (size_t i = 0; i < std::min(fields.size(), words.size()); ++i) {
+    if (text::normalise_name(fields[i].text) != words[i]) {
+      fail(source, line.number, fields[i].column,
+           "unexpected header word " + quote(fields[i].text) + ", expected '" + words[i] + "'");
+    }
+  }
+  if (fields.size() != words.size()) {
+    fail(source, line.number, 0,
+         "space-separated header has " + std::to_string(fields.size()) + " words; a raytraced recording has " +
+             std::to_string(words.size()) + " (" + std::to_string(kSplitColumns) + " columns)");
+  }
+  return info;
+}
+
+// Why a row could not be read. `short_row` marks "too few fields" so the caller can tell a
+// truncated last line from a malformed one.
+struct RowFailure {
+  long column = 0;
+  std::string message;
+  bool short_row = false;
+};
+
+struct ParsedRow {
+  HandFrame frame;
+  FingerLabels labels{};
+  bool all_nan = false;       // every coordinate NaN (resampled "nan,nan,nan" no-hand row)
+  bool short_no_hand = false;  // raw no-hand row (ends after the timestamp)
+  bool partial = false;        // some coordinates finite, some not
+};
+
+class RowParser {
+ public:
+  RowParser(const HeaderInfo& header, std::string source) : header_(header), source_(std::move(source)) {}
+
+  // Returns a failure instead of throwing so the caller can treat a cut-off last line gently.
+  std::optional<RowFailure> parse(std::string_view line, ParsedRow& row) {
+    row = ParsedRow{};
+    if (header_.whitespace_separated) {
+      text::split_whitespace(line, fields_);
+    } else {
+      text::split_fields(line, '\t', fields_);
+      while (!fields_.empty() && text::is_blank(fields_.back().text)) fields_.pop_back();
+    }
+    if (auto f = parse_meta(row.frame)) return f;
+    if (header_.style == ColumnStyle::kPointTriplets) return parse_triplets(row);
+    return parse_split(row);
+  }
+
+ private:
+  std::optional<RowFailure> count_failure(size_t expected, const char* what) const {
+    const size_t n = fields_.size();
+    RowFailure f;
+    f.short_row = n < expected;
+    f.column = n > expected ? fields_[expected].column : 0;
+    f.message = "row has " + std::to_string(n) + " fields; expected " + what;
+    return f;
+  }
+
+  std::optional<RowFailure> parse_meta(HandFrame& frame) {
+    if (fields_.size() < static_cast<size_t>(kMetaColumns)) {
+      return count_failure(static_cast<size_t>(kMetaColumns),
+                           header_.style == ColumnStyle::kPointTriplets
+                               ? "4 (no hand) or 34"
+                               : "99 (4 bookkeeping, 90 coordinates, 5 visibility labels)");
+    }
+    const auto id = text::parse_int(fields_[0].text);
+    if (!id) return RowFailure{fields_[0].column, "Device ID is not an integer: " + quote(fields_[0].text)};
+    if (*id < 1 || *id > kMaxDeviceId) {
+      return RowFailure{fields_[0].column,
+                        "Device ID " + std::to_string(*id) + " is outside 1.." + std::to_string(kMaxDeviceId)};
+    }
+    const auto frame_id = text::parse_int(fields_[1].text);
+    if (!frame_id) return RowFailure{fields_[1].column, "Frame ID is not an integer: " + quote(fields_[1].text)};
+    const auto rate = text::parse_double(fields_[2].text);
+    if (!rate || !std::isfinite(*rate) || *rate < 0.0) {
+      return RowFailure{fields_[2].column,
+                        "Frame Rate is not a finite non-negative number: " + quote(fields_[2].text)};
+    }
+    const auto ts = text::parse_int(fields_[3].text);
+    if (!ts) return RowFailure{fields_[3].column, "Time Stamp is not an integer (µs): " + quote(fields_[3].text)};
+    frame.device_id = static_cast<int>(*id);
+    frame.frame_id = *frame_id;
+    frame.frame_rate_hz = *rate;
+    frame.timestamp_us = *ts;
+    return std::nullopt;
+  }
+
+  std::optional<RowFailure> parse_triplets(ParsedRow& row) {
+    const size_t n = fields_.size();
+    if (n == static_cast<size_t>(kMetaColumns)) {
+      // Raw recording: the device saw no hand, the row ends after the timestamp.
+      row.short_no_hand = true;
+      set_no_hand(row.frame);
+      return std::nullopt;
+    }
+    if (n != static_cast<size_t>(kPointColumns)) return count_failure(kPointColumns, "4 (no hand) or 34");
+    int finite = 0;
+    for (int p = 0; p < kNumHandPoints; ++p) {
+      const text::Field& field = fields_[static_cast<size_t>(kMetaColumns + p)];
+      std::string_view rest = field.text;
+      long column = field.column;
+      for (int a = 0; a < 3; ++a) {
+        const size_t comma = rest.find(',');
+        const bool last = a == 2;
+        if (last != (comma == std::string_view::npos)) {
+          return RowFailure{field.column, "point '" + std::string(hand_point_name(p)) +
+                                              "' must be 3 comma-separated numbers x,y,z, found " +
+                                              quote(field.text)};
+        }
+        const std::string_view part = last ? rest : rest.substr(0, comma);
+        const auto v = text::parse_double(part);
+        if (!v) {
+          return RowFailure{column, "point '" + std::string(hand_point_name(p)) + "' " + kAxes[static_cast<size_t>(a)] +
+                                        " is not a number: " + quote(part)};
+        }
+        row.frame.points[static_cast<size_t>(p)][a] = *v;
+        finite += std::isfinite(*v) ? 1 : 0;
+        if (!last) {
+          rest.remove_prefix(comma + 1);
+          column += static_cast<long>(comma) + 1;
+        }
+      }
+    }
+    classify(row, finite);
+    return std::nullopt;
+  }
+
+  std::optional<RowFailure> parse_split(ParsedRow& row) {
+    if (fields_.size() != static_cast<size_t>(kSplitColumns)) {
+      return count_failure(kSplitColumns, "99 (4 bookkeeping, 90 coordinates, 5 visibility labels)");
+    }
+    int finite = 0;
+    for (int c = 0; c < 3 * kNumHandPoints; ++c) {
+      const text::Field& field = fields_[static_cast<size_t>(kMetaColumns + c)];
+      const auto v = text::parse_double(field.text);
+      if (!v) {
+        return RowFailure{field.column, "'" + std::string(hand_point_name(c / 3)) + "." +
+                                            kAxes[static_cast<size_t>(c % 3)] + "' is not a number: " +
+                                            quote(field.text)};
+      }
+      row.frame.points[static_cast<size_t>(c / 3)][c % 3] = *v;
+      finite += std::isfinite(*v) ? 1 : 0;
+    }
+    for (int d = 0; d < kNumDigits; ++d) {
+      const text::Field& field = fields_[static_cast<size_t>(kMetaColumns + 3 * kNumHandPoints + d)];
+      const auto v = text::parse_double(field.text);
+      if (!v || (*v != 1.0 && *v != 0.0 && *v != -1.0)) {
+        return RowFailure{field.column, "visibility_" + std::string(digit_name(d)) +
+                                            " must be 1, 0 or -1, found " + quote(field.text)};
+      }
+      row.labels[static_cast<size_t>(d)] = static_cast<std::int8_t>(*v);
+    }
+    classify(row, finite);
+    return std::nullopt;
+  }
+
+  static void classify(ParsedRow& row, int finite) {
+    constexpr int kAll = 3 * kNumHandPoints;
+    row.frame.hand_present = finite == kAll;
+    row.all_nan = finite == 0;
+    row.partial = finite > 0 && finite < kAll;
+  }
+
+  static void set_no_hand(HandFrame& frame) {
+    frame.hand_present = false;
+    for (auto& p : frame.points) p.setConstant(kNaN);
+  }
+
+  HeaderInfo header_;
+  std::string source_;
+  std::vector<text::Field> fields_;
+};
+
+void append_point_triplet(std::string& out, const Vec3& p) {
+  text::append_double(out, p.x());
+  out += ',';
+  text::append_double(out, p.y());
+  out += ',';
+  text::append_double(out, p.z());
+}
+
+// The authors' raytraced files pad every value with one space each side ("␠1␠␠␠0␠␠␠100␠"), and
+// names with spaces are written with two ("Device␠␠ID"); we write the same so their tools and
+// ours read each other's files.
+void append_padded(std::string& out, std::string_view value, bool first) {
+  if (!first) out += ' ';
+  out += ' ';
+  out += value;
+  out += ' ';
+}
+
+std::string label_text(std::int8_t label) {
+  // Authors' files print the labels as floats: "1.0", "0.0", "-1.0".
+  return label > 0 ? "1.0" : (label < 0 ? "-1.0" : "0.0");
+}
+
+}  // namespace
+
+std::vector<int> LmcRecording::device_ids() const {
+  std::set<int> ids;
+  for (const auto& r : rows) ids.insert(r.device_id);
+  return {ids.begin(), ids.end()};
+}
+
+LmcRecording parse_lmc_recording(std::istream& in, const std::string& source_name) {
+  const std::string content = text::read_stream_bytes(in);
+  if (text::is_blank(content)) fail(source_name, 1, 0, "empty file: expected an LMC recording header ('Device ID …')");
+  text::require_text(content, source_name);
+  const auto lines = text::split_lines(content);
+  const HeaderInfo header = read_header(lines.front(), source_name);
+
+  LmcRecording rec;
+  RowParser parser(header, source_name);
+  ParsedRow row;
+  bool any_short_no_hand = false;
+  bool any_all_nan = false;
+  bool all_resample_stamps = true;  // Frame ID 0 and Frame Rate 100 on every row
+  long partial_rows = 0;
+  long first_partial_line = 0;
+  // Whether every line so far ends with the separator, as the authors' and our writers do. A
+  // last line that does not, with no final newline either, was cut off mid-field.
+  bool lines_end_with_separator = header.ends_with_separator;
+  const char separator = header.whitespace_separated ? ' ' : '\t';
+  rec.rows.reserve(lines.size());
+
+  for (size_t i = 1; i < lines.size(); ++i) {
+    const text::Line& line = lines[i];
+    if (text::is_blank(line.text)) continue;
+    const bool unterminated = !line.has_newline;
+    const bool ends_with_sep = line.text.back() == separator;
+    auto failure = parser.parse(line.text, row);
+    if (unterminated && (failure ? failure->short_row : (lines_end_with_separator && !ends_with_sep))) {
+      rec.warnings.push_back(format_error(ErrorLocation{source_name, line.number},
+                                          "last line is incomplete (no final newline" +
+                                              std::string(failure ? ", too few fields" : ", cut off mid-field") +
+                                              "); dropped it and kept the " + std::to_string(rec.rows.size()) +
+                                              " complete rows before it"));
+      break;
+    }
+    if (failure) fail(source_name, line.number, failure->column, failure->message);
+    lines_end_with_separator = lines_end_with_separator && ends_with_sep;
+    any_short_no_hand = any_short_no_hand || row.short_no_hand;
+    any_all_nan = any_all_nan || row.all_nan;
+    all_resample_stamps = all_resample_stamps && row.frame.frame_id == 0 && row.frame.frame_rate_hz == 100.0;
+    if (row.partial) {
+      if (partial_rows == 0) first_partial_line = line.number;
+      ++partial_rows;
+    }
+    rec.rows.push_back(row.frame);
+    if (header.style == ColumnStyle::kSplitNumbers) rec.visibility.push_back(row.labels);
+  }
+
+  if (partial_rows > 0) {
+    rec.warnings.push_back(format_error(
+        ErrorLocation{source_name, first_partial_line},
+        std::to_string(partial_rows) +
+            " row(s) have some coordinates missing (NaN) but not all; they are treated as 'no hand'"));
+  }
+
+  if (header.style == ColumnStyle::kSplitNumbers) {
+    rec.kind = RecordingKind::kRaytraced;
+  } else if (any_short_no_hand) {
+    rec.kind = RecordingKind::kRaw;  // only the raw writer ends no-hand rows after the timestamp
+  } else if (any_all_nan || (!rec.rows.empty() && all_resample_stamps)) {
+    // The resampler writes "nan,nan,nan" for no hand and stamps Frame ID 0, Frame Rate 100.
+    rec.kind = RecordingKind::kResampled;
+  } else {
+    rec.kind = RecordingKind::kRaw;
+  }
+  return rec;
+}
+
+LmcRecording read_lmc_recording(const std::filesystem::path& path) {
+  const std::string bytes = text::read_file_bytes(path);
+  std::istringstream in(bytes);
+  return parse_lmc_recording(in, path.string());
+}
+
+std::string lmc_recording_header(RecordingKind kind) {
+  std::string out;
+  if (kind == RecordingKind::kRaytraced) {
+    bool first = true;
+    for (const auto& name : split_column_names()) {
+      std::string padded;
+      for (const char c : name) padded += c == ' ' ? std::string("  ") : std::string(1, c);
+      append_padded(out, padded, first);
+      first = false;
+    }
+  } else {
+    for (const auto& name : triplet_column_names()) {
+      out += name;
+      out += '\t';
+    }
+  }
+  out += '\n';
+  return out;
+}
+
+std::string format_lmc_row(const HandFrame& frame, RecordingKind kind, const FingerLabels* labels) {
+  std::string out;
+  out.reserve(kind == RecordingKind::kRaytraced ? 1400 : 1100);
+  if (kind == RecordingKind::kRaytraced) {
+    std::string value;
+    const auto put_int = [&](std::int64_t v, bool first) {
+      value.clear();
+      text::append_int(value, v);
+      append_padded(out, value, first);
+    };
+    const auto put_double = [&](double v, bool float_style) {
+      value.clear();
+      text::append_double(value, v);
+      // The authors' coordinate columns are floats printed Python-style: 99.0, not 99.
+      if (float_style && value.find_first_of(".eni") == std::string::npos) value += ".0";
+      append_padded(out, value, false);
+    };
+    put_int(frame.device_id, true);
+    put_int(frame.frame_id, false);
+    put_double(frame.frame_rate_hz, false);
+    put_int(frame.timestamp_us, false);
+    for (const auto& p : frame.points) {
+      for (int a = 0; a < 3; ++a) put_double(frame.hand_present ? p[a] : kNaN, true);
+    }
+    for (int d = 0; d < kNumDigits; ++d) {
+      std::int8_t label = -1;
+      if (labels != nullptr) {
+        label = (*labels)[static_cast<size_t>(d)];
+      } else if (frame.hand_present) {
+        throw Error("raytraced row of device " + std::to_string(frame.device_id) + " at " +
+                    std::to_string(frame.timestamp_us) + " µs has a hand but no visibility labels");
+      }
+      append_padded(out, label_text(label), false);
+    }
+    out += '\n';
+    return out;
+  }
+  text::append_int(out, frame.device_id);
+  out += '\t';
+  text::append_int(out, frame.frame_id);
+  out += '\t';
+  text::append_double(out, frame.frame_rate_hz);
+  out += '\t';
+  text::append_int(out, frame.timestamp_us);
+  out += '\t';
+  if (frame.hand_present) {
+    for (const auto& p : frame.points) {
+      append_point_triplet(out, p);
+      out += '\t';
+    }
+  } else if (kind == RecordingKind::kResampled) {
+    for (int i = 0; i < kNumHandPoints; ++i) out += "nan,nan,nan\t";
+  }
+  out += '\n';
+  return out;
+}
+
+void write_lmc_recording(std::ostream& out, const LmcRecording& recording) {
+  if (recording.kind == RecordingKind::kRaytraced && recording.visibility.size() != recording.rows.size()) {
+    throw Error("raytraced recording has " + std::to_string(recording.rows.size()) + " rows but " +
+                std::to_string(recording.visibility.size()) + " visibility label sets");
+  }
+  out << lmc_recording_header(recording.kind);
+  for (size_t i = 0; i < recording.rows.size(); ++i) {
+    const FingerLabels* labels =
+        recording.kind == RecordingKind::kRaytraced ? &recording.visibility[i] : nullptr;
+    out << format_lmc_row(recording.rows[i], recording.kind, labels);
+  }
+}
+
+void save_lmc_recording(const std::filesystem::path& path, const LmcRecording& recording) {
+  std::ostringstream out;
+  write_lmc_recording(out, recording);
+  write_file_atomically(path, out.str());
+}
+
+}  // namespace lmc

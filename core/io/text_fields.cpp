@@ -1,0 +1,207 @@
+#include "core/io/text_fields.h"
+
+#include <charconv>
+#include <cmath>
+#include <fstream>
+#include <istream>
+#include <iterator>
+#include <sstream>
+#include <system_error>
+
+#include "core/common/error.h"
+
+namespace lmc::text {
+
+std::string read_file_bytes(const std::filesystem::path& path) {
+  std::error_code ec;
+  if (std::filesystem::is_directory(path, ec)) {
+    throw Error(ErrorLocation{path.string()}, "is a folder, not a file");
+  }
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw Error(ErrorLocation{path.string()}, "cannot open file for reading");
+  std::string bytes = read_stream_bytes(in);
+  if (in.bad()) throw Error(ErrorLocation{path.string()}, "read error");
+  return bytes;
+}
+
+std::string read_stream_bytes(std::istream& in) {
+  std::ostringstream buffer;
+  buffer << in.rdbuf();
+  return std::move(buffer).str();
+}
+
+namespace {
+
+// Length of the UTF-8 sequence starting at s[i], or 0 when it is invalid (overlong forms,
+// surrogates and code points above U+10FFFF count as invalid, per RFC 3629).
+size_t utf8_sequence_length(std::string_view s, size_t i) {
+  const auto byte = [&](size_t k) { return static_cast<unsigned char>(s[k]); };
+  const unsigned char c = byte(i);
+  if (c < 0x80) return 1;
+  size_t len = 0;
+  unsigned char lo = 0x80;
+  unsigned char hi = 0xBF;
+  if (c >= 0xC2 && c <= 0xDF) {
+    len = 2;
+  } else if (c >= 0xE0 && c <= 0xEF) {
+    len = 3;
+    if (c == 0xE0) lo = 0xA0;
+    if (c == 0xED) hi = 0x9F;
+  } else if (c >= 0xF0 && c <= 0xF4) {
+    len = 4;
+    if (c == 0xF0) lo = 0x90;
+    if (c == 0xF4) hi = 0x8F;
+  } else {
+    return 0;
+  }
+  if (i + len > s.size()) return 0;
+  if (byte(i + 1) < lo || byte(i + 1) > hi) return 0;
+  for (size_t k = 2; k < len; ++k) {
+    if (byte(i + k) < 0x80 || byte(i + k) > 0xBF) return 0;
+  }
+  return len;
+}
+
+}  // namespace
+
+void require_text(std::string_view content, const std::string& source_name) {
+  long line = 1;
+  size_t line_start = 0;
+  for (size_t i = 0; i < content.size();) {
+    const char c = content[i];
+    const auto column = static_cast<long>(i - line_start) + 1;
+    if (c == '\0') {
+      throw Error(ErrorLocation{source_name, line, column},
+                  "contains a NUL byte: this looks like a binary file, not a text recording");
+    }
+    const size_t len = utf8_sequence_length(content, i);
+    if (len == 0) {
+      throw Error(ErrorLocation{source_name, line, column},
+                  "invalid UTF-8 byte: this looks like a binary or non-UTF-8 file, not a text recording");
+    }
+    if (c == '\n') {
+      ++line;
+      line_start = i + 1;
+    }
+    i += len;
+  }
+}
+
+std::vector<Line> split_lines(std::string_view content) {
+  std::vector<Line> lines;
+  // A UTF-8 byte-order mark (some Windows editors add one) is not part of the first field.
+  if (content.substr(0, 3) == "\xEF\xBB\xBF") content.remove_prefix(3);
+  size_t start = 0;
+  long number = 1;
+  while (start < content.size()) {
+    const size_t end = content.find('\n', start);
+    const bool has_newline = end != std::string_view::npos;
+    std::string_view text = content.substr(start, has_newline ? end - start : std::string_view::npos);
+    if (!text.empty() && text.back() == '\r') text.remove_suffix(1);
+    lines.push_back(Line{text, number, has_newline});
+    if (!has_newline) break;
+    start = end + 1;
+    ++number;
+  }
+  return lines;
+}
+
+void split_fields(std::string_view line, char sep, std::vector<Field>& out) {
+  out.clear();
+  size_t start = 0;
+  while (true) {
+    const size_t end = line.find(sep, start);
+    const size_t len = end == std::string_view::npos ? std::string_view::npos : end - start;
+    out.push_back(Field{line.substr(start, len), static_cast<long>(start) + 1});
+    if (end == std::string_view::npos) break;
+    start = end + 1;
+  }
+}
+
+void split_whitespace(std::string_view line, std::vector<Field>& out) {
+  out.clear();
+  size_t i = 0;
+  while (i < line.size()) {
+    while (i < line.size() && (line[i] == ' ' || line[i] == '\t')) ++i;
+    if (i >= line.size()) break;
+    const size_t start = i;
+    while (i < line.size() && line[i] != ' ' && line[i] != '\t') ++i;
+    out.push_back(Field{line.substr(start, i - start), static_cast<long>(start) + 1});
+  }
+}
+
+std::string_view trim(std::string_view s) {
+  while (!s.empty() && (s.front() == ' ' || s.front() == '\t' || s.front() == '\r')) s.remove_prefix(1);
+  while (!s.empty() && (s.back() == ' ' || s.back() == '\t' || s.back() == '\r')) s.remove_suffix(1);
+  return s;
+}
+
+bool is_blank(std::string_view s) { return trim(s).empty(); }
+
+std::optional<double> parse_double(std::string_view s) {
+  s = trim(s);
+  // from_chars rejects a leading '+'; accept exactly one before a digit or '.'.
+  if (s.size() > 1 && s.front() == '+' && s[1] != '-' && s[1] != '+') s.remove_prefix(1);
+  if (s.empty()) return std::nullopt;
+  double value = 0.0;
+  const char* first = s.data();
+  const char* last = s.data() + s.size();
+  const auto [ptr, ec] = std::from_chars(first, last, value, std::chars_format::general);
+  if (ec != std::errc{} || ptr != last) return std::nullopt;
+  return value;
+}
+
+std::optional<std::int64_t> parse_int(std::string_view s) {
+  s = trim(s);
+  if (s.size() > 1 && s.front() == '+' && s[1] != '-' && s[1] != '+') s.remove_prefix(1);
+  if (s.empty()) return std::nullopt;
+  std::int64_t value = 0;
+  const char* last = s.data() + s.size();
+  const auto [ptr, ec] = std::from_chars(s.data(), last, value);
+  if (ec == std::errc{} && ptr == last) return value;
+  const auto d = parse_double(s);
+  constexpr double kExactLimit = 9007199254740992.0;  // 2^53: beyond it doubles skip integers
+  if (!d || !std::isfinite(*d) || std::fabs(*d) > kExactLimit || std::trunc(*d) != *d) return std::nullopt;
+  return static_cast<std::int64_t>(*d);
+}
+
+void append_double(std::string& out, double v) {
+  if (std::isnan(v)) {
+    out += "nan";  // never "-nan": every reader we care about spells it this way
+    return;
+  }
+  char buf[64];
+  const auto [ptr, ec] = std::to_chars(buf, buf + sizeof(buf), v);
+  (void)ec;  // 64 bytes always suffice for the shortest form of a double
+  out.append(buf, ptr);
+}
+
+void append_int(std::string& out, std::int64_t v) {
+  char buf[32];
+  const auto [ptr, ec] = std::to_chars(buf, buf + sizeof(buf), v);
+  (void)ec;
+  out.append(buf, ptr);
+}
+
+std::string format_double(double v) {
+  std::string s;
+  append_double(s, v);
+  return s;
+}
+
+std::string normalise_name(std::string_view s) {
+  std::string out;
+  bool pending_space = false;
+  for (const char c : trim(s)) {
+    if (c == ' ' || c == '\t') {
+      pending_space = true;
+      continue;
+    }
+    if (pending_space && !out.empty()) out += ' ';
+    pending_space = false;
+    out += (c >= 'A' && c <= 'Z') ? static_cast<char>(c - 'A' + 'a') : c;
+  }
+  return out;
+}
+
+}  // namespace lmc::text

@@ -1,0 +1,63 @@
+#pragma once
+// Small, strict building blocks for the study's delimited text formats (LMC recordings, TRC).
+// Strict means: a field is a number only if ALL of it is a number ("12abc" is rejected, never read
+// as 12), and numbers are written in the shortest form that reads back to the same double
+// (std::to_chars), so write→read round-trips exactly.
+#include <cstdint>
+#include <filesystem>
+#include <iosfwd>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace lmc::text {
+
+// One line of a file: its text without the line break (a trailing '\r' is removed too), its
+// 1-based number, and whether a '\n' ended it (false only for an unterminated last line).
+struct Line {
+  std::string_view text;
+  long number = 0;
+  bool has_newline = true;
+};
+
+// One field of a line with the 1-based character column where it starts.
+struct Field {
+  std::string_view text;
+  long column = 0;
+};
+
+// Whole input as bytes; throws lmc::Error naming `path` when it cannot be opened or read.
+std::string read_file_bytes(const std::filesystem::path& path);
+std::string read_stream_bytes(std::istream& in);
+
+// Throws lmc::Error (file, line, column) when `content` holds a NUL byte or is not valid UTF-8:
+// such input is a binary or foreign-encoded file, and parsing it would give garbage numbers.
+void require_text(std::string_view content, const std::string& source_name);
+
+std::vector<Line> split_lines(std::string_view content);
+
+// Splits at every `sep` (empty fields kept).
+void split_fields(std::string_view line, char sep, std::vector<Field>& out);
+// Splits at runs of spaces/tabs (no empty fields).
+void split_whitespace(std::string_view line, std::vector<Field>& out);
+
+std::string_view trim(std::string_view s);
+bool is_blank(std::string_view s);
+
+// The whole of `s` (surrounding spaces allowed) as a double: decimal or exponent form, "nan",
+// "NaN", "inf"; a leading '+' is accepted. nullopt for anything else, incl. out-of-range values.
+std::optional<double> parse_double(std::string_view s);
+// The whole of `s` as an integer; an integral decimal such as "3.0" is accepted too (some
+// writers, e.g. pandas, print integer columns that way) when it is exactly representable.
+std::optional<std::int64_t> parse_int(std::string_view s);
+
+// Appends the shortest round-trip form of v ("nan" for any NaN, "inf"/"-inf").
+void append_double(std::string& out, double v);
+void append_int(std::string& out, std::int64_t v);
+std::string format_double(double v);
+
+// Lower-case with runs of white space collapsed to one space (header comparison).
+std::string normalise_name(std::string_view s);
+
+}  // namespace lmc::text
