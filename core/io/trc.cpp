@@ -1,0 +1,307 @@
+#include "core/io/trc.h"
+
+#include <cmath>
+#include <istream>
+#include <limits>
+#include <map>
+#include <optional>
+#include <ostream>
+#include <sstream>
+
+#include "core/common/error.h"
+#include "core/io/atomic_write.h"
+#include "core/io/text_fields.h"
+
+namespace lmc {
+namespace {
+
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+constexpr int kHeaderLines = 5;  // PathFileType, keys, values, marker names, X1 Y1 Z1 … (field-notes §4.2)
+
+[[noreturn]] void fail(const std::string& source, long line, long column, const std::string& what) {
+  throw Error(ErrorLocation{source, line, column}, what);
+}
+
+std::string quote(std::string_view s) {
+  std::string out = "'";
+  const size_t n = std::min<size_t>(s.size(), 40);
+  for (size_t i = 0; i < n; ++i) {
+    const auto c = static_cast<unsigned char>(s[i]);
+    out += (c < 0x20 || c == 0x7F) ? '?' : static_cast<char>(c);
+  }
+  if (s.size() > n) out += "...";
+  return out + "'";
+}
+
+bool known_units(const std::string& units) { return units == "mm" || units == "m"; }
+
+// Header line 2 (keys) and 3 (values) as key → value field, keeping each value's column.
+std::map<std::string, text::Field> header_values(const text::Line& keys, const text::Line& values,
+                                                 const std::string& source) {
+  std::vector<text::Field> k;
+  std::vector<text::Field> v;
+  text::split_fields(keys.text, '\t', k);
+  text::split_fields(values.text, '\t', v);
+  while (!k.empty() && text::is_blank(k.back().text)) k.pop_back();
+  std::map<std::string, text::Field> out;
+  for (size_t i = 0; i < k.size(); ++i) {
+    const std::string key(text::trim(k[i].text));
+    if (i >= v.size() || text::is_blank(v[i].text)) {
+      fail(source, values.number, i < v.size() ? v[i].column : 0, "no value for header key '" + key + "'");
+    }
+    out[key] = text::Field{text::trim(v[i].text), v[i].column};
+  }
+  return out;
+}
+
+}  // namespace
+
+int TrcData::marker_index(const std::string& name) const {
+  for (size_t i = 0; i < marker_names.size(); ++i) {
+    if (marker_names[i] == name) return static_cast<int>(i);
+  }
+  return -1;
+}
+
+void TrcData::to_millimetres() {
+  if (units == "mm") return;
+  if (units != "m") throw Error("unknown TRC units '" + units + "' (expected mm or m)");
+  for (auto& frame : positions) {
+    for (auto& p : frame) p *= 1000.0;
+  }
+  units = "mm";
+}
+
+TrcData parse_trc(std::istream& in, const std::string& source_name) {
+  const std::string content = text::read_stream_bytes(in);
+  if (text::is_blank(content)) fail(source_name, 1, 0, "empty file: expected a TRC header ('PathFileType …')");
+  text::require_text(content, source_name);
+  const auto lines = text::split_lines(content);
+
+  std::vector<text::Field> fields;
+  text::split_fields(lines[0].text, '\t', fields);
+  if (text::trim(fields[0].text) != "PathFileType") {
+    fail(source_name, 1, 1, "not a TRC file: the first line must start with 'PathFileType', found " +
+                                quote(fields[0].text));
+  }
+  if (lines.size() < static_cast<size_t>(kHeaderLines)) {
+    fail(source_name, static_cast<long>(lines.size()), 0,
+         "TRC header is incomplete: expected " + std::to_string(kHeaderLines) + " header lines, found " +
+             std::to_string(lines.size()));
+  }
+
+  TrcData trc;
+  const text::Line& values_line = lines[2];
+  const auto header = header_values(lines[1], values_line, source_name);
+  const auto require = [&](const char* key) -> const text::Field& {
+    const auto it = header.find(key);
+    if (it == header.end()) fail(source_name, 2, 0, std::string("TRC header has no '") + key + "' key");
+    return it->second;
+  };
+  const auto rate_of = [&](const text::Field& f, const char* key) {
+    const auto v = text::parse_double(f.text);
+    if (!v || !std::isfinite(*v) || *v <= 0.0) {
+      fail(source_name, values_line.number, f.column,
+           std::string(key) + " must be a positive number, found " + quote(f.text));
+    }
+    return *v;
+  };
+  const auto int_of = [&](const text::Field& f, const char* key) {
+    const auto v = text::parse_int(f.text);
+    if (!v || *v < 0 || *v > std::numeric_limits<int>::max()) {
+      fail(source_name, values_line.number, f.column,
+           std::string(key) + " must be a non-negative integer, found " + quote(f.text));
+    }
+    return static_cast<int>(*v);
+  };
+
+  trc.data_rate_hz = rate_of(require("DataRate"), "DataRate");
+  const auto cam = header.find("CameraRate");
+  trc.camera_rate_hz = cam == header.end() ? trc.data_rate_hz : rate_of(cam->second, "CameraRate");
+  const text::Field& units = require("Units");
+  trc.units = std::string(units.text);
+  if (!known_units(trc.units)) {
+    fail(source_name, values_line.number, units.column,
+         "unknown units " + quote(units.text) + " (expected mm or m)");
+  }
+  const int header_markers = int_of(require("NumMarkers"), "NumMarkers");
+  const auto nf = header.find("NumFrames");
+  const std::optional<int> header_frames =
+      nf == header.end() ? std::nullopt : std::optional<int>(int_of(nf->second, "NumFrames"));
+  const auto start = header.find("OrigDataStartFrame");
+  trc.orig_data_start_frame = start == header.end() ? 1 : int_of(start->second, "OrigDataStartFrame");
+
+  // Line 4: Frame#, Time, then each marker name followed by two empty cells.
+  const text::Line& names_line = lines[3];
+  text::split_fields(names_line.text, '\t', fields);
+  if (fields.size() < 2 || text::normalise_name(fields[0].text) != "frame#" ||
+      text::normalise_name(fields[1].text) != "time") {
+    fail(source_name, names_line.number, 1, "expected the column line 'Frame#<tab>Time<tab><markers…>'");
+  }
+  for (size_t i = 2; i < fields.size(); ++i) {
+    if (text::is_blank(fields[i].text)) continue;
+    if ((i - 2) % 3 != 0) {
+      fail(source_name, names_line.number, fields[i].column,
+           "marker name " + quote(fields[i].text) + " is not at the start of an X/Y/Z column triple");
+    }
+    trc.marker_names.emplace_back(text::trim(fields[i].text));
+  }
+  const int markers = trc.marker_count();
+  if (markers != header_markers) {
+    trc.warnings.push_back(format_error(ErrorLocation{source_name, values_line.number},
+                                        "header says NumMarkers " + std::to_string(header_markers) +
+                                            " but the column line names " + std::to_string(markers) +
+                                            "; using the names"));
+  }
+  // Line 5: two empty cells, then X1 Y1 Z1 X2 …
+  text::split_fields(lines[4].text, '\t', fields);
+  if (markers > 0 && (fields.size() < 3 || text::normalise_name(fields[2].text) != "x1")) {
+    fail(source_name, lines[4].number, fields.size() >= 3 ? fields[2].column : 0,
+         "expected the coordinate line '<tab><tab>X1<tab>Y1<tab>Z1…'");
+  }
+
+  const size_t expected = 2 + 3 * static_cast<size_t>(markers);
+  long partial_samples = 0;
+  long zero_samples = 0;
+  // OpenSim expects a blank line after the X1/Y1 line; the study's file has none. Both are read.
+  for (size_t i = kHeaderLines; i < lines.size(); ++i) {
+    const text::Line& line = lines[i];
+    if (text::is_blank(line.text)) continue;
+    text::split_fields(line.text, '\t', fields);
+    while (fields.size() > expected && text::is_blank(fields.back().text)) fields.pop_back();
+    if (fields.size() != expected) {
+      if (!line.has_newline && fields.size() < expected) {
+        trc.warnings.push_back(format_error(
+            ErrorLocation{source_name, line.number},
+            "last line is incomplete (no final newline, " + std::to_string(fields.size()) + " of " +
+                std::to_string(expected) + " fields); dropped it and kept the " +
+                std::to_string(trc.positions.size()) + " complete rows before it"));
+        break;
+      }
+      fail(source_name, line.number, fields.size() > expected ? fields[expected].column : 0,
+           "row has " + std::to_string(fields.size()) + " fields; expected " + std::to_string(expected) +
+               " (Frame#, Time and 3 per marker for " + std::to_string(markers) + " markers)");
+    }
+    const auto frame = text::parse_int(fields[0].text);
+    if (!frame) fail(source_name, line.number, fields[0].column, "Frame# is not an integer: " + quote(fields[0].text));
+    const auto time = text::parse_double(fields[1].text);
+    if (!time || !std::isfinite(*time)) {
+      fail(source_name, line.number, fields[1].column, "Time is not a finite number: " + quote(fields[1].text));
+    }
+    std::vector<Eigen::Vector3d> row(static_cast<size_t>(markers));
+    for (int m = 0; m < markers; ++m) {
+      Eigen::Vector3d p;
+      int missing = 0;
+      for (int a = 0; a < 3; ++a) {
+        const text::Field& cell = fields[static_cast<size_t>(2 + 3 * m + a)];
+        if (text::is_blank(cell.text)) {
+          p[a] = kNaN;
+          ++missing;
+          continue;
+        }
+        const auto v = text::parse_double(cell.text);
+        if (!v || std::isinf(*v)) {
+          fail(source_name, line.number, cell.column,
+               "marker '" + trc.marker_names[static_cast<size_t>(m)] + "' " + static_cast<char>('X' + a) +
+                   " is not a number: " + quote(cell.text));
+        }
+        p[a] = *v;
+        missing += std::isnan(*v) ? 1 : 0;
+      }
+      if (missing > 0) {
+        partial_samples += missing < 3 ? 1 : 0;
+        p.setConstant(kNaN);
+      } else if (p.isZero(0.0)) {
+        // Some exporters write 0 0 0 for a gap (field-notes §4.2).
+        ++zero_samples;
+        p.setConstant(kNaN);
+      }
+      row[static_cast<size_t>(m)] = p;
+    }
+    trc.frame_numbers.push_back(static_cast<int>(*frame));
+    trc.times_s.push_back(*time);
+    trc.positions.push_back(std::move(row));
+  }
+
+  if (header_frames && *header_frames != trc.frame_count()) {
+    trc.warnings.push_back(format_error(ErrorLocation{source_name, values_line.number},
+                                        "header says NumFrames " + std::to_string(*header_frames) +
+                                            " but the file holds " + std::to_string(trc.frame_count()) +
+                                            " rows; using the rows"));
+  }
+  if (partial_samples > 0) {
+    trc.warnings.push_back(format_error(ErrorLocation{source_name},
+                                        std::to_string(partial_samples) +
+                                            " marker sample(s) had only some of X/Y/Z; read as missing"));
+  }
+  if (zero_samples > 0) {
+    trc.warnings.push_back(format_error(ErrorLocation{source_name},
+                                        std::to_string(zero_samples) +
+                                            " marker sample(s) were 0,0,0 (an exporter's gap); read as missing"));
+  }
+  return trc;
+}
+
+TrcData read_trc(const std::filesystem::path& path) {
+  const std::string bytes = text::read_file_bytes(path);
+  std::istringstream in(bytes);
+  return parse_trc(in, path.string());
+}
+
+void write_trc(std::ostream& out, const TrcData& trc, const std::string& path_field) {
+  if (!known_units(trc.units)) throw Error("cannot write TRC with unknown units '" + trc.units + "' (expected mm or m)");
+  const int frames = trc.frame_count();
+  const int markers = trc.marker_count();
+  for (int f = 0; f < frames; ++f) {
+    if (trc.positions[static_cast<size_t>(f)].size() != static_cast<size_t>(markers)) {
+      throw Error("TRC frame " + std::to_string(f) + " has " +
+                  std::to_string(trc.positions[static_cast<size_t>(f)].size()) + " positions for " +
+                  std::to_string(markers) + " markers");
+    }
+  }
+  const bool have_numbers = trc.frame_numbers.size() == static_cast<size_t>(frames);
+  const bool have_times = trc.times_s.size() == static_cast<size_t>(frames);
+
+  std::string s;
+  s += "PathFileType\t4\t(X/Y/Z)\t" + path_field + "\n";
+  s += "DataRate\tCameraRate\tNumFrames\tNumMarkers\tUnits\tOrigDataRate\tOrigDataStartFrame\tOrigNumFrames\n";
+  text::append_double(s, trc.data_rate_hz);
+  s += '\t';
+  text::append_double(s, trc.camera_rate_hz);
+  s += '\t' + std::to_string(frames) + '\t' + std::to_string(markers) + '\t' + trc.units + '\t';
+  text::append_double(s, trc.data_rate_hz);
+  s += '\t' + std::to_string(trc.orig_data_start_frame) + '\t' + std::to_string(frames) + "\t\n";
+  s += "Frame#\tTime\t";
+  for (const auto& name : trc.marker_names) s += name + "\t\t\t";
+  s += "\n\t\t";
+  for (int m = 1; m <= markers; ++m) {
+    const std::string k = std::to_string(m);
+    s += "X" + k + "\tY" + k + "\tZ" + k + "\t";
+  }
+  // The blank line OpenSim expects (field-notes §4.2); our reader accepts files with or without it.
+  s += "\n\n";
+  for (int f = 0; f < frames; ++f) {
+    const int number = have_numbers ? trc.frame_numbers[static_cast<size_t>(f)] : trc.orig_data_start_frame + f;
+    s += std::to_string(number);
+    s += '\t';
+    // Time of frame f = (f − OrigDataStartFrame)/DataRate when the caller gave none (field-notes §4.2).
+    text::append_double(s, have_times ? trc.times_s[static_cast<size_t>(f)]
+                                      : (number - trc.orig_data_start_frame) / trc.data_rate_hz);
+    for (const auto& p : trc.positions[static_cast<size_t>(f)]) {
+      for (int a = 0; a < 3; ++a) {
+        s += '\t';
+        if (!std::isnan(p[a])) text::append_double(s, p[a]);  // missing marker: empty cell
+      }
+    }
+    s += '\n';
+  }
+  out << s;
+}
+
+void save_trc(const std::filesystem::path& path, const TrcData& trc) {
+  std::ostringstream out;
+  write_trc(out, trc, path.string());
+  write_file_atomically(path, out.str());
+}
+
+}  // namespace lmc
