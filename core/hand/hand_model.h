@@ -75,11 +75,17 @@ struct HandGeometry {
   double hand_length_mm = 190.0;
   double hand_breadth_mm = 85.0;
   double forearm_length_mm = 255.0;  // wrist to elbow joint centre
+  // Unit direction from the wrist to the elbow in the canonical frame (straight forearm: +z).
+  Eigen::Vector3d elbow_direction = Eigen::Vector3d(0, 0, 1);
+  // The controller's palm position lies on the line wrist → mean of the four finger MCPs, this
+  // fraction of the way (measured on the study's recordings: about 0.7).
+  double palm_fraction = 0.7;
   // Metacarpal base (Meta) and MCP position of each digit in the palm frame (thumb: CMC; its MCP
   // position is derived from the metacarpal direction and length at zero angles).
   std::array<Eigen::Vector3d, kNumDigits> base_mm{};
   std::array<Eigen::Vector3d, kNumDigits> mcp_mm{};
-  // Phalanx lengths: proximal, middle, distal (thumb: proximal, distal, unused 0).
+  // Phalanx lengths: proximal, middle, distal (thumb: proximal, distal, unused 0). The thumb's
+  // metacarpal length is |mcp − base|.
   std::array<std::array<double, 3>, kNumDigits> phalanx_mm{};
   // Direction of each digit's proximal phalanx at zero angles (unit, canonical frame); encodes the
   // rest spread of the fingers and the thumb's rest orientation.
@@ -105,6 +111,9 @@ class HandModel {
   // The 30-point frame (world coordinates) for these angles at this placement. hand_present is
   // true; device bookkeeping fields are zero.
   HandFrame pose(const HandJointAngles& angles, const HandPlacement& placement = {}) const;
+  // The palm position (point 0) for straight joints in the canonical frame: where reference
+  // placements put the palm centre.
+  Eigen::Vector3d rest_palm_position() const;
 
  private:
   HandGeometry geometry_;

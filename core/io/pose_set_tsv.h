@@ -2,13 +2,14 @@
 // Pose-set files (`lmc poses -o poses.tsv`; read by every command that takes --poses).
 // Tab-separated text, UTF-8, '\n' line ends:
 //   line 1: "# lmc-poses 1" (format tag and version)
-//   lines starting with '#' after it: comments (the generator writes its settings there)
+//   lines starting with '#' after it, before the header: comments; "# description: <text>"
+//           carries PoseSet::description
 //   header: "frame\torientation\tmotion\tprogress\t" then the 30 points × x/y/z as
 //           "<hand point name>.x" … (names as in the study's headers, hand_frame.h)
 //   one row per frame: index (0-based), "horizontal"|"vertical", "open"|"index"|"thumb"|
 //           "wrist-flexion"|"wrist-extension", progress, then 90 numbers (mm, world frame;
-//           palm normal/direction are unit vectors) written with 17 significant digits so
-//           reading back gives the same doubles.
+//           palm normal/direction are unit vectors) in the shortest form that reads back
+//           as the same double (std::to_chars), so reading back gives the same numbers.
 #include <filesystem>
 #include <iosfwd>
 #include <string>

@@ -1,14 +1,184 @@
 #include "core/optimise/pso.h"
 
-namespace lmc {
+#include <tbb/global_control.h>
+#include <tbb/info.h>
+#include <tbb/task_arena.h>
 
-PsoResult run_pso(const Layout& start, const SearchSpace&, std::span<const PreparedFrame>, const PsoSettings&,
-                  const PsoProgressCallback&, std::stop_token) {
-  PsoResult r;
-  r.best_layout = start;
-  return r;
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <limits>
+#include <memory>
+#include <random>
+
+#include "core/common/error.h"
+#include "core/metric/placement_metric.h"
+#include "core/optimise/swarm_evaluator.h"
+#include "core/visibility/device_view.h"
+
+namespace lmc {
+namespace {
+
+double uniform01(std::mt19937_64& rng) { return static_cast<double>(rng() >> 11) * 0x1.0p-53; }
+
+}  // namespace
+
+PsoResult run_pso(const Layout& start, const SearchSpace& space, std::span<const PreparedFrame> frames,
+                  const PsoSettings& s, const PsoProgressCallback& progress, std::stop_token stop) {
+  const auto t0 = std::chrono::steady_clock::now();
+  if (const std::string problem = validate_layout(start); !problem.empty()) throw Error("start layout " + problem);
+  if (const std::string problem = space.validate(); !problem.empty()) throw Error(problem);
+  if (s.particles < 1 || s.particles > 100000) throw Error("particles must be 1…100000");
+  if (s.iterations < 0 || s.iterations > 1000000) throw Error("iterations must be 0…1000000");
+  if (!std::isfinite(s.w) || !std::isfinite(s.c1) || !std::isfinite(s.c2)) throw Error("w, c1, c2 must be finite");
+  if (s.threads < 0) throw Error("threads must be ≥ 0 (0 = all)");
+  if (frames.empty()) throw Error("the pose set is empty");
+
+  const int devices = start.device_count();
+  const auto nd = static_cast<size_t>(devices);
+  const auto np = static_cast<size_t>(s.particles);
+  const auto dims = space.dimensions(devices);
+  const size_t dim = dims.size();
+  const VisibilityLimits limits = make_limits(VisibilityParams::from_sensor(start.sensor, s.phalanx_radius_mm));
+
+  std::mt19937_64 rng(s.seed);
+  std::vector<double> x(np * dim), v(np * dim), pbest(np * dim), gbest(dim);
+  std::vector<double> pbest_cost(np, std::numeric_limits<double>::infinity());
+  double gbest_cost = std::numeric_limits<double>::infinity();
+  std::vector<double> lo(dim), hi(dim), start_x(dim);
+  for (size_t k = 0; k < dim; ++k) {
+    const auto [d, p] = dims[k];
+    const ParamBounds& b = space.bounds[static_cast<size_t>(p)];
+    lo[k] = b.min;
+    hi[k] = b.max;
+    start_x[k] = std::clamp(start.devices[static_cast<size_t>(d)].pose.get(p), b.min, b.max);
+  }
+  // Initial swarm, drawn particle by particle, dimension by dimension, on this thread.
+  for (size_t i = 0; i < np; ++i) {
+    for (size_t k = 0; k < dim; ++k) {
+      const double span = hi[k] - lo[k];
+      const double pos = lo[k] + uniform01(rng) * span;
+      const double vel = (2.0 * uniform01(rng) - 1.0) * 0.1 * span;
+      x[i * dim + k] = (i == 0 && s.start_from_layout) ? start_x[k] : pos;
+      v[i * dim + k] = vel;
+    }
+  }
+
+  auto layout_of = [&](const double* xi) {
+    Layout l = start;
+    for (size_t k = 0; k < dim; ++k) {
+      const auto [d, p] = dims[k];
+      l.devices[static_cast<size_t>(d)].pose.set(p, xi[k]);
+    }
+    return l;
+  };
+
+  std::unique_ptr<tbb::task_arena> arena;
+  arena = std::make_unique<tbb::task_arena>(s.threads > 0 ? s.threads : tbb::this_task_arena::max_concurrency());
+
+  std::vector<DeviceView> views(np * nd);
+  std::vector<std::int64_t> counts(np * (nd + 1));
+  std::vector<double> cost(np);
+  PsoResult result;
+  result.status = JobStatus::kCompleted;
+
+  // Evaluates the whole swarm; false when cancelled.
+  auto evaluate = [&]() {
+    for (size_t i = 0; i < np; ++i) {
+      const Layout l = layout_of(&x[i * dim]);
+      for (size_t d = 0; d < nd; ++d) views[i * nd + d] = DeviceView::from_device(l.devices[d]);
+    }
+    bool ok = false;
+    arena->execute([&] {
+      ok = worst_finger_histograms(views, s.particles, devices, frames, limits, counts, stop);
+    });
+    if (!ok) return false;
+    for (size_t i = 0; i < np; ++i) {
+      cost[i] = placement_metric(std::span<const std::int64_t>(counts).subspan(i * (nd + 1), nd + 1));
+    }
+    result.layout_evaluations += s.particles;
+    result.device_frame_evaluations += static_cast<std::int64_t>(np * nd * frames.size());
+    // Personal and global bests: strict improvement; ties keep the earlier (lower index) one.
+    for (size_t i = 0; i < np; ++i) {
+      if (cost[i] < pbest_cost[i]) {
+        pbest_cost[i] = cost[i];
+        std::copy_n(&x[i * dim], dim, &pbest[i * dim]);
+      }
+      if (cost[i] < gbest_cost) {
+        gbest_cost = cost[i];
+        std::copy_n(&x[i * dim], dim, gbest.begin());
+      }
+    }
+    return true;
+  };
+
+  auto report = [&](int iteration) {
+    result.best_cost_history.push_back(gbest_cost);
+    if (progress) {
+      progress(PsoProgress{iteration, s.iterations, gbest_cost, result.layout_evaluations,
+                           result.device_frame_evaluations});
+    }
+  };
+
+  bool cancelled = stop.stop_requested() || !evaluate();
+  if (!cancelled) report(0);
+  for (int it = 1; it <= s.iterations && !cancelled; ++it) {
+    if (stop.stop_requested()) {
+      cancelled = true;
+      break;
+    }
+    for (size_t i = 0; i < np; ++i) {
+      for (size_t k = 0; k < dim; ++k) {
+        const size_t ik = i * dim + k;
+        const double r1 = uniform01(rng);
+        const double r2 = uniform01(rng);
+        v[ik] = s.w * v[ik] + s.c1 * r1 * (pbest[ik] - x[ik]) + s.c2 * r2 * (gbest[k] - x[ik]);
+        x[ik] += v[ik];
+        // Boundary: clamp onto the wall and stop moving across it.
+        if (x[ik] < lo[k]) {
+          x[ik] = lo[k];
+          v[ik] = 0.0;
+        } else if (x[ik] > hi[k]) {
+          x[ik] = hi[k];
+          v[ik] = 0.0;
+        }
+      }
+    }
+    if (!evaluate()) {
+      cancelled = true;
+      break;
+    }
+    result.iterations_done = it;
+    report(it);
+  }
+
+  result.status = cancelled ? JobStatus::kCancelled : JobStatus::kCompleted;
+  if (std::isfinite(gbest_cost)) {
+    result.best_layout = layout_of(gbest.data());
+    result.best_cost = gbest_cost;
+  } else {
+    // Cancelled before the first evaluation finished: the best known layout is the start.
+    result.best_layout = start;
+    result.best_cost = std::numeric_limits<double>::infinity();
+  }
+  if (!cancelled) {
+    VisibilityTable table;
+    arena->execute([&] { table = compute_visibility(result.best_layout, frames, s.phalanx_radius_mm); });
+    result.best_coverage = compute_coverage(table);
+  }
+  result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  return result;
 }
 
-double layout_cost(const Layout&, std::span<const PreparedFrame>, double) { return 0.0; }
+double layout_cost(const Layout& layout, std::span<const PreparedFrame> frames, double phalanx_radius_mm) {
+  const int devices = layout.device_count();
+  if (devices < 1 || devices > kMaxDevices) throw Error("a layout needs 1 to 8 devices");
+  std::vector<DeviceView> views;
+  for (const auto& d : layout.devices) views.push_back(DeviceView::from_device(d));
+  std::vector<std::int64_t> counts(static_cast<size_t>(devices) + 1);
+  worst_finger_histograms(views, 1, devices, frames,
+                          make_limits(VisibilityParams::from_sensor(layout.sensor, phalanx_radius_mm)), counts);
+  return placement_metric(counts);
+}
 
 }  // namespace lmc

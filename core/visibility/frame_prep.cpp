@@ -1,20 +1,85 @@
 #include "core/visibility/frame_prep.h"
 
+#include <tbb/parallel_for.h>
+
+#include <Eigen/Dense>
+#include <cmath>
+
 namespace lmc {
 
 int ray_marker_hand_point(int k) {
   if (k == 0) return kElbow;
-  if (k == 17) return digit_point(4, 0);
-  if (k < 17) return digit_point((k - 1) / 4, 1 + (k - 1) % 4);
-  return digit_point(4, 1 + (k - 18));
+  if (k == 17) return digit_point(4, 0);         // pinky Meta
+  if (k < 17) return digit_point((k - 1) / 4, 1 + (k - 1) % 4);  // Proxi…End of thumb…ring
+  return digit_point(4, 1 + (k - 18));           // pinky Proxi…End
 }
 
-PreparedFrame prepare_frame(const HandFrame&) { return {}; }
+PreparedFrame prepare_frame(const HandFrame& frame) {
+  PreparedFrame fr;
+  if (!frame.hand_present) return fr;
+  std::array<Eigen::Vector3d, kNumRayMarkers> s;
+  for (int k = 0; k < kNumRayMarkers; ++k) {
+    const Eigen::Vector3d& p = frame.point(ray_marker_hand_point(k));
+    if (!p.allFinite()) return fr;
+    s[static_cast<size_t>(k)] = p;
+    fr.mx[static_cast<size_t>(k)] = p.x();
+    fr.my[static_cast<size_t>(k)] = p.y();
+    fr.mz[static_cast<size_t>(k)] = p.z();
+  }
+  // §3.1 approach vector a = (s1 + s17)/2 − s0.
+  const Eigen::Vector3d a = (s[1] + s[17]) / 2.0 - s[0];
+  fr.ax = a.x();
+  fr.ay = a.y();
+  fr.az = a.z();
+
+  // §3.3 palm points: u = unit(s1 − s9); P = {s5 + 3u, s9 + 3u, s13 + 3u, s18 + 3u, s1 − 5u, s17}.
+  Eigen::Vector3d u = s[1] - s[9];
+  const double ulen = u.norm();
+  u = ulen > 0.0 ? Eigen::Vector3d(u / ulen) : Eigen::Vector3d::Zero();
+  fr.palm_points = {s[5] + 3.0 * u, s[9] + 3.0 * u, s[13] + 3.0 * u, s[18] + 3.0 * u, s[1] - 5.0 * u, s[17]};
+  Eigen::Vector3d centroid = Eigen::Vector3d::Zero();
+  for (const auto& p : fr.palm_points) centroid += p;
+  centroid /= static_cast<double>(kNumPalmPoints);
+  Eigen::Matrix<double, kNumPalmPoints, 3> centred;
+  for (int i = 0; i < kNumPalmPoints; ++i) centred.row(i) = (fr.palm_points[static_cast<size_t>(i)] - centroid).transpose();
+  // Normal = right singular vector of the smallest singular value (JacobiSVD sorts decreasingly).
+  const Eigen::JacobiSVD<Eigen::Matrix<double, kNumPalmPoints, 3>> svd(centred, Eigen::ComputeFullV);
+  const Eigen::Vector3d normal = svd.matrixV().col(2);
+  fr.cx = centroid.x();
+  fr.cy = centroid.y();
+  fr.cz = centroid.z();
+  fr.nx = normal.x();
+  fr.ny = normal.y();
+  fr.nz = normal.z();
+  fr.hull = build_convex_hull(fr.palm_points);
+
+  // §3.4 phalanges: finger f's markers m0…m3 give three segments.
+  for (int f = 0; f < kNumDigits; ++f) {
+    for (int seg = 0; seg < 3; ++seg) {
+      const Eigen::Vector3d& b = s[static_cast<size_t>(finger_marker(f, seg))];
+      const Eigen::Vector3d& e = s[static_cast<size_t>(finger_marker(f, seg + 1))];
+      const Eigen::Vector3d dvec = e - b;
+      const double len = dvec.norm();
+      const Eigen::Vector3d w = len > 0.0 ? Eigen::Vector3d(dvec / len) : Eigen::Vector3d::Zero();
+      const size_t p = static_cast<size_t>(3 * f + seg);
+      fr.bx[p] = b.x();
+      fr.by[p] = b.y();
+      fr.bz[p] = b.z();
+      fr.wx[p] = w.x();
+      fr.wy[p] = w.y();
+      fr.wz[p] = w.z();
+      fr.len[p] = len;
+    }
+  }
+  fr.valid = true;
+  return fr;
+}
 
 std::vector<PreparedFrame> prepare_frames(std::span<const HandFrame> frames) {
-  std::vector<PreparedFrame> out;
-  out.reserve(frames.size());
-  for (const auto& f : frames) out.push_back(prepare_frame(f));
+  std::vector<PreparedFrame> out(frames.size());
+  tbb::parallel_for(tbb::blocked_range<size_t>(0, frames.size(), 64), [&](const tbb::blocked_range<size_t>& r) {
+    for (size_t j = r.begin(); j != r.end(); ++j) out[j] = prepare_frame(frames[j]);
+  });
   return out;
 }
 

@@ -1,0 +1,65 @@
+#include "core/optimise/swarm_evaluator.h"
+
+#include <tbb/blocked_range.h>
+#include <tbb/enumerable_thread_specific.h>
+#include <tbb/parallel_for.h>
+
+#include <algorithm>
+#include <vector>
+
+#include "core/common/error.h"
+#include "core/layout/layout.h"
+#include "core/metric/coverage.h"
+#include "core/visibility/visibility_kernel.h"
+
+namespace lmc {
+namespace {
+
+// Frames per task: small enough that a chunk's prepared frames stay in the core's L2 cache while
+// every layout and device runs over them.
+constexpr size_t kChunkFrames = 64;
+
+}  // namespace
+
+bool worst_finger_histograms(std::span<const DeviceView> views, int layouts, int devices,
+                             std::span<const PreparedFrame> frames, const VisibilityLimits& limits,
+                             std::span<std::int64_t> counts, std::stop_token stop) {
+  if (devices < 1 || devices > kMaxDevices || layouts < 0 ||
+      views.size() != static_cast<size_t>(layouts) * static_cast<size_t>(devices) ||
+      counts.size() != static_cast<size_t>(layouts) * static_cast<size_t>(devices + 1)) {
+    throw Error("worst_finger_histograms: inconsistent sizes");
+  }
+  const size_t hist_size = counts.size();
+  tbb::enumerable_thread_specific<std::vector<std::int64_t>> local([&] { return std::vector<std::int64_t>(hist_size, 0); });
+  const size_t n = frames.size();
+  const auto nd = static_cast<size_t>(devices);
+  tbb::parallel_for(tbb::blocked_range<size_t>(0, n, kChunkFrames), [&](const tbb::blocked_range<size_t>& r) {
+    if (stop.stop_requested()) return;
+    auto& hist = local.local();
+    FingerBits bits[kMaxDevices][kChunkFrames];
+    for (size_t begin = r.begin(); begin < r.end(); begin += kChunkFrames) {
+      const size_t end = std::min(r.end(), begin + kChunkFrames);
+      for (int l = 0; l < layouts; ++l) {
+        const auto ll = static_cast<size_t>(l);
+        for (size_t d = 0; d < nd; ++d) {
+          const DeviceView& view = views[ll * nd + d];
+          for (size_t j = begin; j < end; ++j) bits[d][j - begin] = visible_fingers(frames[j], view, limits);
+        }
+        std::int64_t* h = hist.data() + ll * (nd + 1);
+        for (size_t j = begin; j < end; ++j) {
+          FingerBits fb[kMaxDevices];
+          for (size_t d = 0; d < nd; ++d) fb[d] = bits[d][j - begin];
+          ++h[static_cast<size_t>(worst_finger_count(fb, devices))];
+        }
+      }
+    }
+  });
+  if (stop.stop_requested()) return false;
+  std::fill(counts.begin(), counts.end(), 0);
+  for (const auto& h : local) {
+    for (size_t i = 0; i < hist_size; ++i) counts[i] += h[i];
+  }
+  return true;
+}
+
+}  // namespace lmc

@@ -1,0 +1,23 @@
+#pragma once
+// Evaluates many layouts at once on a pose set, the PSO's inner loop: for each layout, the
+// histogram c_0…c_D of "devices that see the worst-covered finger" per frame
+// (reference-algorithms.md §4). Parallel over chunks of frames with oneTBB; the per-chunk integer
+// histograms are summed, so the result is identical for any thread count and chunking.
+#include <cstdint>
+#include <span>
+#include <stop_token>
+
+#include "core/visibility/device_view.h"
+#include "core/visibility/frame_prep.h"
+#include "core/visibility/visibility_params.h"
+
+namespace lmc {
+
+// `views` holds layouts × devices device views, layout-major. `counts` receives
+// layouts × (devices + 1) histograms, layout-major. Returns false (counts unspecified) when `stop`
+// was requested before the work finished.
+bool worst_finger_histograms(std::span<const DeviceView> views, int layouts, int devices,
+                             std::span<const PreparedFrame> frames, const VisibilityLimits& limits,
+                             std::span<std::int64_t> counts, std::stop_token stop = {});
+
+}  // namespace lmc

@@ -1,0 +1,89 @@
+#include "core/hand/reference_poses.h"
+
+#include <gtest/gtest.h>
+
+#include "core/io/layout_json.h"
+#include "core/visibility/device_view.h"
+#include "core/visibility/frame_prep.h"
+#include "core/visibility/visibility_explain.h"
+#include "core/visibility/visibility_kernel.h"
+#include "tests/support/reference_data.h"
+
+namespace lmc {
+namespace {
+
+TEST(ReferencePoses, PalmSits150mmAboveTheTableCentre) {
+  const HandModel model;
+  for (int o = 0; o < kNumHandOrientations; ++o) {
+    const HandFrame f = reference_pose(model, static_cast<HandOrientation>(o), HandMotion::kOpen);
+    EXPECT_NEAR(f.point(kPalm).x(), 0.0, 1e-9);
+    EXPECT_NEAR(f.point(kPalm).y(), 150.0, 1e-9);
+    EXPECT_NEAR(f.point(kPalm).z(), 0.0, 1e-9);
+  }
+}
+
+TEST(ReferencePoses, VerticalPalmFacesLeftThumbUp) {
+  const HandModel model;
+  const HandFrame h = reference_pose(model, HandOrientation::kHorizontal, HandMotion::kOpen);
+  const HandFrame v = reference_pose(model, HandOrientation::kVertical, HandMotion::kOpen);
+  EXPECT_NEAR(h.point(kPalmNormal).y(), -1.0, 1e-12);
+  EXPECT_NEAR(v.point(kPalmNormal).x(), -1.0, 1e-12);
+  EXPECT_GT(v.point(digit_point(0, 4)).y(), v.point(digit_point(4, 4)).y() + 40);  // thumb above pinky
+  EXPECT_GT(v.point(kElbow).z(), 200);
+}
+
+TEST(ReferencePoses, MotionsReachTheirRanges) {
+  const HandJointAngles idx = motion_angles(HandMotion::kIndexFlexion, 1.0);
+  EXPECT_EQ(idx.finger(Digit::kIndex).pip_flexion_deg, 100.0);
+  EXPECT_EQ(motion_angles(HandMotion::kIndexFlexion, 0.5).finger(Digit::kIndex).mcp_flexion_deg, 45.0);
+  EXPECT_EQ(motion_angles(HandMotion::kWristExtension, 1.0).wrist_flexion_deg, -70.0);
+  EXPECT_EQ(motion_angles(HandMotion::kOpen, 1.0), HandJointAngles{});
+  EXPECT_EQ(pose_label_name(HandOrientation::kVertical, HandMotion::kThumbFlexion), "vertical/thumb");
+  EXPECT_EQ(motion_from_name("wrist-extension"), HandMotion::kWristExtension);
+  EXPECT_EQ(orientation_from_name("sideways"), std::nullopt);
+}
+
+// The hand enters every device from the user's side (a·f ≥ 0 for a device at rest) and the
+// paper's layouts see the open hand: every finger is seen by at least one device — except the
+// initial layout with the vertical hand, which the paper reports fails ("This policy is not
+// satisfied in the initial configuration when doing vertical pose"): there the fingers stack
+// above each other and the middle finger hides behind the ring finger from every device. Every
+// device of the initial layout (right under the hand) has the hand in range and in view.
+TEST(ReferencePoses, PaperLayoutsSeeTheOpenHand) {
+  const HandModel model;
+  for (const char* preset : {"paper-initial", "paper-optimized"}) {
+    const Layout layout = load_layout_or_preset(test::asset_file(std::string("layouts/") + preset + ".json").string());
+    for (int o = 0; o < kNumHandOrientations; ++o) {
+      const PreparedFrame fr = prepare_frame(reference_pose(model, static_cast<HandOrientation>(o), HandMotion::kOpen));
+      const Eigen::Vector3d a(fr.ax, fr.ay, fr.az);
+      EXPECT_GT(a.dot(Eigen::Vector3d(0, 0, -1)), 0.0);
+      const VisibilityTable t = compute_visibility(layout, std::span<const PreparedFrame>(&fr, 1));
+      FingerBits any = 0;
+      for (int d = 0; d < t.devices; ++d) any |= t.at(d, 0);
+      std::string why;
+      for (int d = 0; d < t.devices && std::string(preset) == "paper-initial"; ++d) {
+        const auto ex = explain_visibility(fr, DeviceView::from_device(layout.devices[static_cast<size_t>(d)]),
+                                           make_limits(VisibilityParams::from_sensor(layout.sensor)));
+        for (int k = 0; k < kNumDigits; ++k) why += " | dev" + std::to_string(d) + " " + std::string(digit_name(k)) + ": " + describe(ex.fingers[static_cast<size_t>(k)]);
+      }
+      const bool initial_vertical = std::string(preset) == "paper-initial" && o == 1;
+      for (int d = 0; d < t.devices && std::string(preset) == "paper-initial"; ++d) {
+        const auto ex = explain_visibility(fr, DeviceView::from_device(layout.devices[static_cast<size_t>(d)]),
+                                           make_limits(VisibilityParams::from_sensor(layout.sensor)));
+        for (const auto& v : ex.fingers) {
+          EXPECT_TRUE(v.reason == HiddenReason::kVisible || v.reason == HiddenReason::kBehindFinger ||
+                      v.reason == HiddenReason::kBehindPalm)
+              << preset << " device " << d << ": " << describe(v);
+        }
+      }
+      if (initial_vertical) {
+        EXPECT_EQ(any & (1 << 2), 0) << "middle finger hidden from every device";
+        continue;
+      }
+      EXPECT_EQ(any, kAllFingersVisible) << preset << " " << orientation_name(static_cast<HandOrientation>(o)) << why;
+    }
+  }
+}
+
+}  // namespace
+}  // namespace lmc
