@@ -1,0 +1,230 @@
+#include "ui/model/layout_actions.h"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+
+namespace lmc::ui {
+namespace {
+
+bool valid_index(const UndoableLayoutDocument& doc, int index) {
+  return index >= 0 && index < doc.scratch().device_count();
+}
+
+std::string slot_of(const UndoableLayoutDocument& doc, int index) {
+  return doc.scratch().layout.devices[static_cast<size_t>(index)].slot;
+}
+
+ActionResult bad_index(int index) { return ActionResult::fail("no controller #" + std::to_string(index + 1)); }
+
+// Runs validate_layout on scratch; on failure rolls back and reports.
+ActionResult commit_checked(UndoableLayoutDocument& doc, const std::string& message) {
+  if (std::string why = validate_layout(doc.scratch().layout); !why.empty()) {
+    doc.rollback();
+    return ActionResult::fail(why);
+  }
+  doc.commit(message);
+  return ActionResult::success();
+}
+
+bool finite_pose(const DevicePose& p) {
+  for (int k = 0; k < kNumPoseParams; ++k) {
+    if (!std::isfinite(p.get(k))) return false;
+  }
+  return true;
+}
+
+}  // namespace
+
+ActionResult add_device(UndoableLayoutDocument& doc) {
+  doc.rollback();
+  LayoutDocument& d = doc.upd_scratch();
+  if (d.device_count() >= kMaxDevices) {
+    doc.rollback();
+    return ActionResult::fail("a layout holds at most " + std::to_string(kMaxDevices) + " controllers");
+  }
+  std::string slot;
+  for (int n = 1; n <= kMaxDevices + 1; ++n) {
+    slot = "LMC" + std::to_string(n);
+    if (d.layout.find_slot(slot) < 0) break;
+  }
+  LayoutDevice dev;
+  dev.slot = slot;
+  // Beside the right-most controller, so the new one is visible and not inside another.
+  double max_x = -150.0;
+  for (const auto& other : d.layout.devices) max_x = std::max(max_x, other.pose.x_mm);
+  dev.pose.x_mm = max_x + 120.0;
+  d.layout.devices.push_back(dev);
+  d.sync_locks();
+  return commit_checked(doc, "Add " + slot);
+}
+
+ActionResult remove_device(UndoableLayoutDocument& doc, int index) {
+  doc.rollback();
+  if (!valid_index(doc, index)) return bad_index(index);
+  if (doc.scratch().device_count() <= 1) return ActionResult::fail("a layout needs at least one controller");
+  const std::string slot = slot_of(doc, index);
+  LayoutDocument& d = doc.upd_scratch();
+  d.layout.devices.erase(d.layout.devices.begin() + index);
+  d.locks.erase(d.locks.begin() + index);
+  return commit_checked(doc, "Remove " + slot);
+}
+
+ActionResult rename_slot(UndoableLayoutDocument& doc, int index, const std::string& slot) {
+  doc.rollback();
+  if (!valid_index(doc, index)) return bad_index(index);
+  if (slot.empty()) return ActionResult::fail("a slot name cannot be empty");
+  const std::string old = slot_of(doc, index);
+  if (old == slot) return ActionResult::success();
+  const int clash = doc.scratch().layout.find_slot(slot);
+  if (clash >= 0 && clash != index) return ActionResult::fail("slot name '" + slot + "' is already used");
+  doc.upd_scratch().layout.devices[static_cast<size_t>(index)].slot = slot;
+  return commit_checked(doc, "Rename " + old + " to " + slot);
+}
+
+ActionResult assign_serial(UndoableLayoutDocument& doc, int index, const std::string& serial) {
+  doc.rollback();
+  if (!valid_index(doc, index)) return bad_index(index);
+  const std::string slot = slot_of(doc, index);
+  auto& dev = doc.upd_scratch().layout.devices[static_cast<size_t>(index)];
+  if (serial.empty()) {
+    dev.serial.reset();
+    return commit_checked(doc, "Clear serial of " + slot);
+  }
+  const int clash = doc.scratch().layout.find_serial(serial);
+  if (clash >= 0 && clash != index) {
+    doc.rollback();
+    return ActionResult::fail("serial '" + serial + "' is already bound to " + slot_of(doc, clash));
+  }
+  dev.serial = serial;
+  return commit_checked(doc, "Assign serial " + serial + " to " + slot);
+}
+
+ActionResult set_pose_param(UndoableLayoutDocument& doc, int index, int k, double value) {
+  doc.rollback();
+  if (!valid_index(doc, index)) return bad_index(index);
+  if (k < 0 || k >= kNumPoseParams) return ActionResult::fail("no pose parameter #" + std::to_string(k));
+  if (!std::isfinite(value)) return ActionResult::fail(std::string(pose_param_name(k)) + " must be a finite number");
+  const std::string slot = slot_of(doc, index);
+  doc.upd_scratch().layout.devices[static_cast<size_t>(index)].pose.set(k, value);
+  return commit_checked(doc, "Set " + slot + " " + pose_param_name(k));
+}
+
+ActionResult set_device_pose(UndoableLayoutDocument& doc, int index, const DevicePose& pose) {
+  if (ActionResult r = preview_device_pose(doc, index, pose); !r) return r;
+  commit_device_pose(doc, index, "Move");
+  return ActionResult::success();
+}
+
+ActionResult preview_device_pose(UndoableLayoutDocument& doc, int index, const DevicePose& pose) {
+  if (!valid_index(doc, index)) return bad_index(index);
+  if (!finite_pose(pose)) return ActionResult::fail("the pose is not finite");
+  doc.upd_scratch().layout.devices[static_cast<size_t>(index)].pose = pose;
+  return ActionResult::success();
+}
+
+bool commit_device_pose(UndoableLayoutDocument& doc, int index, const std::string& verb) {
+  if (!valid_index(doc, index)) {
+    doc.rollback();
+    return false;
+  }
+  return doc.commit(verb + " " + slot_of(doc, index));
+}
+
+void cancel_preview(UndoableLayoutDocument& doc) { doc.rollback(); }
+
+ActionResult set_device_lock(UndoableLayoutDocument& doc, int index, int k, bool locked) {
+  doc.rollback();
+  if (!valid_index(doc, index)) return bad_index(index);
+  if (k < 0 || k >= kNumPoseParams) return ActionResult::fail("no pose parameter #" + std::to_string(k));
+  doc.upd_scratch().sync_locks();
+  doc.upd_scratch().locks[static_cast<size_t>(index)].locked[static_cast<size_t>(k)] = locked;
+  doc.commit(std::string(locked ? "Lock " : "Unlock ") + slot_of(doc, index) + " " + pose_param_name(k));
+  return ActionResult::success();
+}
+
+ActionResult set_search_range(UndoableLayoutDocument& doc, int k, double lo, double hi) {
+  doc.rollback();
+  if (k < 0 || k >= kNumPoseParams) return ActionResult::fail("no pose parameter #" + std::to_string(k));
+  if (!std::isfinite(lo) || !std::isfinite(hi) || lo > hi) {
+    return ActionResult::fail(std::string("bounds for ") + pose_param_name(k) + " need finite lo <= hi");
+  }
+  doc.upd_scratch().bounds.range[static_cast<size_t>(k)] = ParamRange{lo, hi};
+  doc.commit(std::string("Set search bounds of ") + pose_param_name(k));
+  return ActionResult::success();
+}
+
+ActionResult set_pose_set_choice(UndoableLayoutDocument& doc, const PoseSetChoice& choice) {
+  doc.rollback();
+  if (choice.source == PoseSetChoice::Source::kMonteCarlo && (choice.frames < 1 || choice.frames > 1000000)) {
+    return ActionResult::fail("a Monte Carlo pose set needs 1 to 1,000,000 frames");
+  }
+  if (choice.source == PoseSetChoice::Source::kFile && choice.file.empty()) {
+    return ActionResult::fail("choose a pose-set file");
+  }
+  doc.upd_scratch().pose_set = choice;
+  doc.commit("Change pose set");
+  return ActionResult::success();
+}
+
+ActionResult set_sensor_model(UndoableLayoutDocument& doc, const SensorModel& sensor) {
+  doc.rollback();
+  doc.upd_scratch().layout.sensor = sensor;
+  return commit_checked(doc, "Change sensor model");
+}
+
+ActionResult replace_layout(UndoableLayoutDocument& doc, const Layout& layout, const std::string& what) {
+  doc.rollback();
+  if (std::string why = validate_layout(layout); !why.empty()) return ActionResult::fail(why);
+  LayoutDocument& d = doc.upd_scratch();
+  // Keep the user's locks for slots that exist in both layouts.
+  std::map<std::string, DeviceLocks> old_locks;
+  for (size_t i = 0; i < d.layout.devices.size() && i < d.locks.size(); ++i) {
+    old_locks[d.layout.devices[i].slot] = d.locks[i];
+  }
+  d.layout = layout;
+  d.locks.assign(layout.devices.size(), DeviceLocks{});
+  for (size_t i = 0; i < layout.devices.size(); ++i) {
+    if (auto it = old_locks.find(layout.devices[i].slot); it != old_locks.end()) d.locks[i] = it->second;
+  }
+  doc.commit(what);
+  return ActionResult::success();
+}
+
+ActionResult apply_layout(UndoableLayoutDocument& doc, const Layout& optimised) {
+  doc.rollback();
+  LayoutDocument& d = doc.upd_scratch();
+  int matched = 0;
+  for (auto& dev : d.layout.devices) {
+    const int j = optimised.find_slot(dev.slot);
+    if (j < 0) continue;
+    if (!finite_pose(optimised.devices[static_cast<size_t>(j)].pose)) {
+      doc.rollback();
+      return ActionResult::fail("the optimised pose of " + dev.slot + " is not finite");
+    }
+    dev.pose = optimised.devices[static_cast<size_t>(j)].pose;
+    ++matched;
+  }
+  if (matched == 0) {
+    doc.rollback();
+    return ActionResult::fail("the optimised layout shares no slot with the current one");
+  }
+  return commit_checked(doc, "Apply optimised layout");
+}
+
+Layout default_new_layout() {
+  Layout l;
+  l.name = "untitled";
+  const double xs[4] = {-60, 60, -60, 60};
+  const double zs[4] = {60, 60, -60, -60};
+  for (int i = 0; i < 4; ++i) {
+    LayoutDevice d;
+    d.slot = "LMC" + std::to_string(i + 1);
+    d.pose.x_mm = xs[i];
+    d.pose.z_mm = zs[i];
+    l.devices.push_back(d);
+  }
+  return l;
+}
+
+}  // namespace lmc::ui

@@ -1,0 +1,67 @@
+#pragma once
+// Everything a user can do to a layout document, as named actions (style.md §5.2). Each action
+// validates its input, edits the scratch copy and commits with a message naming the device, so
+// every edit is one undo step with a readable label ("Move LMC2"). A rejected action returns
+// its reason and leaves no commit (and no scratch edits).
+//
+// UI-only steps (file dialogs, confirmations) live in the tab; they call these afterwards.
+#include <optional>
+#include <string>
+
+#include "core/layout/layout.h"
+#include "ui/model/layout_document.h"
+#include "ui/model/undo_redo.h"
+
+namespace lmc::ui {
+
+using UndoableLayoutDocument = UndoRedo<LayoutDocument>;
+
+struct ActionResult {
+  bool ok = true;
+  std::string error;  // why it was rejected; empty when ok
+  explicit operator bool() const { return ok; }
+  static ActionResult success() { return {}; }
+  static ActionResult fail(std::string why) { return {false, std::move(why)}; }
+};
+
+// ---- devices ------------------------------------------------------------------------------
+// Adds a controller with the next free slot name ("LMC5"), placed beside the others. Max 8.
+ActionResult add_device(UndoableLayoutDocument& doc);
+// Removes device `index`. At least one controller must remain.
+ActionResult remove_device(UndoableLayoutDocument& doc, int index);
+// Renames a slot; the name must be non-empty and unique.
+ActionResult rename_slot(UndoableLayoutDocument& doc, int index, const std::string& slot);
+// Binds a serial number to a slot (empty string clears it); serials must be unique.
+ActionResult assign_serial(UndoableLayoutDocument& doc, int index, const std::string& serial);
+
+// ---- poses --------------------------------------------------------------------------------
+// Sets one pose parameter (k in {x, y, z, rx, ry, rz} order) and commits.
+ActionResult set_pose_param(UndoableLayoutDocument& doc, int index, int k, double value);
+// Sets a whole pose and commits ("Move LMC1", used by the inspector and tests).
+ActionResult set_device_pose(UndoableLayoutDocument& doc, int index, const DevicePose& pose);
+// Drag/slider pairing: write the pose into scratch every frame without a commit ...
+ActionResult preview_device_pose(UndoableLayoutDocument& doc, int index, const DevicePose& pose);
+// ... then commit once on release (one undo step per drag). `verb` names the gesture
+// ("Move", "Rotate", "Tilt"). Returns false when nothing changed (no commit).
+bool commit_device_pose(UndoableLayoutDocument& doc, int index, const std::string& verb);
+// Escape during a drag: throw the scratch edits away.
+void cancel_preview(UndoableLayoutDocument& doc);
+
+// ---- locks, bounds, pose set, sensor -----------------------------------------------------------
+ActionResult set_device_lock(UndoableLayoutDocument& doc, int index, int k, bool locked);
+ActionResult set_search_range(UndoableLayoutDocument& doc, int k, double lo, double hi);
+ActionResult set_pose_set_choice(UndoableLayoutDocument& doc, const PoseSetChoice& choice);
+ActionResult set_sensor_model(UndoableLayoutDocument& doc, const SensorModel& sensor);
+
+// ---- whole layouts ----------------------------------------------------------------------------
+// Replaces the layout (keeps locks where slots survive). `what` names it in the undo label:
+// "Load preset paper-optimized", "Open my-rig.json", "New layout".
+ActionResult replace_layout(UndoableLayoutDocument& doc, const Layout& layout, const std::string& what);
+// Applies an optimised layout: poses only, matched by slot; one undo step ("Apply optimised layout").
+ActionResult apply_layout(UndoableLayoutDocument& doc, const Layout& optimised);
+
+// The layout a "New" command starts from: four controllers in the paper's initial square
+// (reference-algorithms.md §1, ±60 mm), no serials.
+Layout default_new_layout();
+
+}  // namespace lmc::ui

@@ -1,0 +1,63 @@
+#pragma once
+// A *layout document* is what the user edits and saves in the Layout tab (style.md §5.2): the
+// layout itself plus the document-level choices that travel with it — which pose parameters the
+// optimiser may change per device (locks), the search bounds, and the pose set to evaluate on.
+// No selection, camera or caches: "if undo should not restore it, it is not document state".
+#include <array>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "core/layout/layout.h"
+
+namespace lmc::ui {
+
+// Per-parameter locks in DevicePose order {x, y, z, rx, ry, rz}; true = the optimiser and the
+// scene handles must leave that parameter alone.
+struct DeviceLocks {
+  std::array<bool, kNumPoseParams> locked{false, true, false, false, false, true};
+  bool operator==(const DeviceLocks&) const = default;
+};
+
+struct ParamRange {
+  double lo = 0, hi = 0;
+  bool operator==(const ParamRange&) const = default;
+};
+
+// Search box per pose parameter, shared by all devices. Defaults: the study's box
+// (reference-algorithms.md §5): x, z ∈ [−1000, 1000] mm, rx ∈ [−90, 90]°, ry ∈ [−180, 180]°;
+// y and rz are locked by default (the paper searched {x, z, rx, ry}).
+struct SearchBounds {
+  std::array<ParamRange, kNumPoseParams> range{ParamRange{-1000, 1000}, ParamRange{0, 300}, ParamRange{-1000, 1000},
+                                               ParamRange{-90, 90},     ParamRange{-180, 180}, ParamRange{-180, 180}};
+  bool operator==(const SearchBounds&) const = default;
+};
+
+// Which hand poses the tab shows and scores (reference-algorithms.md §5: the Monte Carlo set of
+// ten reference poses varied along the trial trajectories, or a file).
+struct PoseSetChoice {
+  enum class Source : int { kMonteCarlo = 0, kFile = 1 };
+  Source source = Source::kMonteCarlo;
+  int frames = 2000;
+  std::uint64_t seed = 1;
+  std::string file;
+  bool operator==(const PoseSetChoice&) const = default;
+};
+
+struct LayoutDocument {
+  Layout layout;
+  std::vector<DeviceLocks> locks;  // one per layout device, same order
+  SearchBounds bounds;
+  PoseSetChoice pose_set;
+
+  bool operator==(const LayoutDocument&) const = default;
+
+  int device_count() const { return layout.device_count(); }
+  // Keeps locks parallel to devices (after a load or an apply that changed the count).
+  void sync_locks() { locks.resize(layout.devices.size()); }
+};
+
+// A document holding `layout` with default locks, bounds and pose set.
+LayoutDocument make_document(Layout layout);
+
+}  // namespace lmc::ui

@@ -1,0 +1,232 @@
+#include "ui/model/layout_tab_state.h"
+
+#include <algorithm>
+#include <cmath>
+#include <thread>
+
+#include "core/common/error.h"
+#include "core/io/layout_json.h"
+
+namespace lmc::ui {
+
+LayoutTabState::LayoutTabState(LayoutDocument initial, StatusFn status)
+    : document_(std::move(initial)), status_(std::move(status)) {
+  saved_head_id_ = document_.head_id();
+  // Leave one core to the UI thread; the result does not depend on the thread count.
+  pso.threads = std::max(1, static_cast<int>(std::thread::hardware_concurrency()) - 1);
+}
+
+bool LayoutTabState::report(const ActionResult& r, const std::string& what) {
+  if (!r) {
+    set_status(what + ": " + r.error, true);
+    return false;
+  }
+  prune_selection();
+  return true;
+}
+
+void LayoutTabState::undo() {
+  if (!document_.can_undo()) return;
+  const std::string msg = document_.undo_message();
+  document_.undo();
+  prune_selection();
+  set_status("Undid " + msg);
+}
+
+void LayoutTabState::redo() {
+  if (!document_.can_redo()) return;
+  const std::string msg = document_.redo_message();
+  document_.redo();
+  prune_selection();
+  set_status("Redid " + msg);
+}
+
+std::string LayoutTabState::title() const {
+  std::string t = file_path_ ? file_path_->filename().string() : std::string("untitled layout");
+  if (unsaved()) t += " \xE2\x80\xA2";  // "•" marks unsaved changes
+  return t;
+}
+
+namespace {
+std::string error_text(const std::exception& e) {
+  if (const auto* le = dynamic_cast<const Error*>(&e)) return format_error(le->where(), le->what());
+  return e.what();
+}
+}  // namespace
+
+std::string LayoutTabState::open_file(const std::filesystem::path& path) {
+  try {
+    const Layout l = load_layout(path);
+    if (ActionResult r = replace_layout(document_, l, "Open " + path.filename().string()); !r) return r.error;
+    file_path_ = path;
+    saved_head_id_ = document_.head_id();
+    prune_selection();
+    set_status("Opened " + path.string());
+    return {};
+  } catch (const std::exception& e) {
+    const std::string msg = error_text(e);
+    set_status("Cannot open layout: " + msg, true);
+    return msg;
+  }
+}
+
+std::string LayoutTabState::save_to(const std::filesystem::path& path) {
+  try {
+    document_.rollback();  // never save a half-finished drag
+    save_layout(document_.head().layout, path);
+    file_path_ = path;
+    saved_head_id_ = document_.head_id();
+    set_status("Saved " + path.string());
+    return {};
+  } catch (const std::exception& e) {
+    const std::string msg = error_text(e);
+    set_status("Cannot save layout: " + msg, true);
+    return msg;
+  }
+}
+
+std::string LayoutTabState::load_preset(const std::string& name) {
+  try {
+    const Layout l = load_layout_or_preset(name);
+    if (ActionResult r = replace_layout(document_, l, "Load preset " + name); !r) return r.error;
+    // A preset is not a file of the user's: "Save" asks where to put it.
+    file_path_.reset();
+    prune_selection();
+    set_status("Loaded preset " + name);
+    return {};
+  } catch (const std::exception& e) {
+    const std::string msg = error_text(e);
+    set_status("Cannot load preset: " + msg, true);
+    return msg;
+  }
+}
+
+void LayoutTabState::new_layout() {
+  replace_layout(document_, default_new_layout(), "New layout");
+  file_path_.reset();
+  prune_selection();
+}
+
+void LayoutTabState::select(int device) {
+  selected = (device >= 0 && device < doc().device_count()) ? device : -1;
+}
+
+void LayoutTabState::prune_selection() {
+  if (selected >= doc().device_count()) selected = doc().device_count() - 1;
+  if (hovered >= doc().device_count()) hovered = -1;
+}
+
+const HandFrame* LayoutTabState::current_hand() const {
+  const PoseSetPtr p = poses.current();
+  if (!p || p->size() == 0) return nullptr;
+  const int j = std::clamp(timeline.frame, 0, p->size() - 1);
+  return &p->set.frames[static_cast<size_t>(j)];
+}
+
+ColourRange LayoutTabState::heatmap_range() const {
+  if (display.heatmap_fixed_range) return {0.0, 1.0};
+  const HeatmapGridPtr g = heatmap.latest();
+  if (!g || g->data_max <= g->data_min) return {0.0, 1.0};
+  return {g->data_min, g->data_max};
+}
+
+void LayoutTabState::refresh_timeline_frames() {
+  const PoseSetPtr p = poses.current();
+  const std::uint64_t v = p ? p->version : 0;
+  if (v == timeline_version_ && timeline_filters_[0] == timeline.orientation_filter &&
+      timeline_filters_[1] == timeline.motion_filter) {
+    return;
+  }
+  timeline_version_ = v;
+  timeline_filters_[0] = timeline.orientation_filter;
+  timeline_filters_[1] = timeline.motion_filter;
+  timeline_frames_.clear();
+  if (!p) return;
+  for (int j = 0; j < p->size(); ++j) {
+    const PoseLabel& l = p->set.labels[static_cast<size_t>(j)];
+    if (timeline.orientation_filter >= 0 && static_cast<int>(l.orientation) != timeline.orientation_filter) continue;
+    if (timeline.motion_filter >= 0 && static_cast<int>(l.motion) != timeline.motion_filter) continue;
+    timeline_frames_.push_back(j);
+  }
+  if (!timeline_frames_.empty() &&
+      !std::binary_search(timeline_frames_.begin(), timeline_frames_.end(), timeline.frame)) {
+    timeline.frame = timeline_frames_.front();
+  }
+}
+
+void LayoutTabState::update(double dt_seconds) {
+  poses.request(doc().pose_set);
+  poses.poll();
+  coverage.poll();
+  heatmap.poll();
+  optimiser.poll();
+  prune_selection();
+  refresh_timeline_frames();
+
+  // Playback walks the filtered frames.
+  if (timeline.playing && !timeline_frames_.empty()) {
+    timeline.play_accumulator_s += std::max(0.0, dt_seconds);
+    const double step = 1.0 / std::max(timeline.frames_per_second, 0.1);
+    int advance = 0;
+    while (timeline.play_accumulator_s >= step && advance < 1000) {
+      timeline.play_accumulator_s -= step;
+      ++advance;
+    }
+    if (advance > 0) {
+      auto it = std::lower_bound(timeline_frames_.begin(), timeline_frames_.end(), timeline.frame);
+      size_t pos = static_cast<size_t>(it - timeline_frames_.begin());
+      pos = (pos + static_cast<size_t>(advance)) % timeline_frames_.size();
+      timeline.frame = timeline_frames_[pos];
+    }
+  }
+
+  const PoseSetPtr p = poses.current();
+  if (p) {
+    coverage.request(layout(), p);
+    const int j = std::clamp(timeline.frame, 0, std::max(0, p->size() - 1));
+    if (p->size() > 0) {
+      frame_visibility_ = explain_frame(layout(), p->prepared[static_cast<size_t>(j)], display.show_rays ? selected : -1);
+    }
+    if (display.show_heatmap && selected >= 0) {
+      HeatmapRequest req;
+      req.layout = layout();
+      req.device = selected;
+      req.finger = display.heatmap_finger;
+      req.mode = display.heatmap_mode;
+      req.cells = display.heatmap_cells;
+      req.half_extent_mm = display.heatmap_half_extent_mm;
+      req.poses = p;
+      heatmap.request(req);
+    } else {
+      heatmap.clear();
+    }
+  } else {
+    frame_visibility_ = {};
+  }
+}
+
+bool LayoutTabState::start_optimiser() {
+  document_.rollback();
+  if (!optimiser.start(document_.head(), poses.current(), pso)) {
+    set_status("Cannot start the optimiser: " + optimiser.error(), true);
+    return false;
+  }
+  set_status("Optimiser started");
+  return true;
+}
+
+bool LayoutTabState::apply_optimised() {
+  const auto outcome = optimiser.outcome();
+  if (!outcome) return false;
+  if (!report(apply_layout(document_, outcome->pso.best_layout), "Apply optimised layout")) return false;
+  optimiser.discard();
+  set_status("Applied the optimised layout (Ctrl+Z to undo)");
+  return true;
+}
+
+bool LayoutTabState::busy() const {
+  return poses.loading() || !poses.current() || coverage.busy() || optimiser.running() ||
+         (display.show_heatmap && selected >= 0 && !heatmap.complete() && heatmap.error().empty());
+}
+
+}  // namespace lmc::ui

@@ -1,0 +1,126 @@
+#pragma once
+// Everything the Layout tab's panels share (style.md §5.3): the undoable document and its file,
+// selection and hover, the camera, the timeline, display settings, the derived-result caches and
+// the job handles. Panels read it through const accessors and change it through actions (ui/model/
+// layout_actions.h) or job controls. No ImGui and no GL here, so the tab's logic is testable with
+// plain gtest; update() is the frame's update step (poll jobs, refresh caches) and never blocks.
+#include <cstdint>
+#include <filesystem>
+#include <functional>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "core/optimise/pso.h"
+#include "ui/model/coverage_cache.h"
+#include "ui/model/frame_visibility.h"
+#include "ui/model/heatmap_cache.h"
+#include "ui/model/layout_actions.h"
+#include "ui/model/optimiser_job.h"
+#include "ui/model/pose_set_store.h"
+#include "ui/scene/colour_maps.h"
+#include "ui/scene/drag_controller.h"
+#include "ui/scene/orbit_camera.h"
+
+namespace lmc::ui {
+
+struct TimelineState {
+  int frame = 0;                 // index into the pose set (not into the filtered list)
+  bool playing = false;
+  double frames_per_second = 30;
+  int orientation_filter = -1;   // −1 any, else HandOrientation
+  int motion_filter = -1;        // −1 any, else HandMotion
+  double play_accumulator_s = 0;
+};
+
+struct DisplaySettings {
+  bool show_pyramids = true;
+  bool show_rays = false;
+  bool show_heatmap = true;
+  bool show_ghost = true;
+  int heatmap_finger = -1;  // −1 all five
+  HeatmapMode heatmap_mode = HeatmapMode::kShareVisible;
+  int heatmap_cells = 48;
+  double heatmap_half_extent_mm = 400;
+  bool heatmap_fixed_range = true;  // 0…100 % (comparable between fingers) or the data's range
+};
+
+class LayoutTabState {
+ public:
+  using StatusFn = std::function<void(const std::string&, bool is_error)>;
+  explicit LayoutTabState(LayoutDocument initial, StatusFn status = {});
+
+  // ---- document --------------------------------------------------------------------------------
+  const UndoableLayoutDocument& history() const { return document_; }
+  UndoableLayoutDocument& upd_history() { return document_; }
+  // What is on screen: the scratch copy, so a drag in progress shows live.
+  const LayoutDocument& doc() const { return document_.scratch(); }
+  const Layout& layout() const { return document_.scratch().layout; }
+  // Reports an action's outcome in the status line; returns ok.
+  bool report(const ActionResult& r, const std::string& what);
+  void undo();
+  void redo();
+
+  // ---- file -----------------------------------------------------------------------------------
+  const std::optional<std::filesystem::path>& file_path() const { return file_path_; }
+  bool unsaved() const { return document_.head_id() != saved_head_id_; }
+  std::string title() const;  // "paper-optimized.json •" / "untitled •"
+  // Each returns an empty string on success, else the error (with file and JSON path) to show.
+  std::string open_file(const std::filesystem::path& path);
+  std::string save_to(const std::filesystem::path& path);
+  std::string load_preset(const std::string& name);  // "paper-initial", "paper-optimized"
+  void new_layout();
+
+  // ---- selection ------------------------------------------------------------------------------
+  int selected = -1;
+  int hovered = -1;
+  HandleKind hovered_handle = HandleKind::kNone;
+  HandleKind active_handle = HandleKind::kNone;
+  void select(int device);
+  // Drops selection and hover that no longer exist (after undo, remove, open).
+  void prune_selection();
+
+  // ---- view -----------------------------------------------------------------------------------
+  OrbitCamera camera;
+  TimelineState timeline;
+  DisplaySettings display;
+  PsoSettings pso;
+
+  // ---- derived data ----------------------------------------------------------------------------
+  PoseSetStore poses;
+  CoverageCache coverage;
+  HeatmapCache heatmap;
+  OptimiserJob optimiser;
+  const FrameVisibility& frame_visibility() const { return frame_visibility_; }
+  const std::vector<int>& timeline_frames() const { return timeline_frames_; }  // after filters
+  // The hand on screen (world frame), or null while the pose set loads.
+  const HandFrame* current_hand() const;
+  ColourRange heatmap_range() const;
+
+  // Update step: poll jobs, advance the timeline by dt, refresh caches for the current document.
+  void update(double dt_seconds);
+  // Start / cancel / apply the optimiser (job controls).
+  bool start_optimiser();
+  void cancel_optimiser() { optimiser.cancel(); }
+  bool apply_optimised();
+  // True while background work that a screenshot should wait for is running.
+  bool busy() const;
+
+  void set_status(const std::string& text, bool is_error = false) const {
+    if (status_) status_(text, is_error);
+  }
+
+ private:
+  void refresh_timeline_frames();
+
+  UndoableLayoutDocument document_;
+  std::uint64_t saved_head_id_ = 0;
+  std::optional<std::filesystem::path> file_path_;
+  StatusFn status_;
+  FrameVisibility frame_visibility_;
+  std::vector<int> timeline_frames_;
+  std::uint64_t timeline_version_ = 0;
+  int timeline_filters_[2] = {-2, -2};
+};
+
+}  // namespace lmc::ui

@@ -1,0 +1,89 @@
+#include "ui/model/optimiser_job.h"
+
+#include <chrono>
+#include <thread>
+
+#include "core/visibility/visibility_kernel.h"
+
+namespace lmc::ui {
+
+LayoutEvaluation evaluate_layout(const Layout& layout, const LoadedPoseSet& poses) {
+  const VisibilityTable table = compute_visibility(layout, poses.prepared);
+  LayoutEvaluation e;
+  e.all = compute_coverage(table);
+  e.horizontal = compute_coverage(table, poses.horizontal);
+  e.vertical = compute_coverage(table, poses.vertical);
+  return e;
+}
+
+SearchSpace search_space_for(const LayoutDocument& doc) {
+  SearchSpace space;
+  for (int k = 0; k < kNumPoseParams; ++k) {
+    space.bounds[static_cast<size_t>(k)] = {doc.bounds.range[static_cast<size_t>(k)].lo,
+                                            doc.bounds.range[static_cast<size_t>(k)].hi};
+    bool any_free = false;
+    for (const auto& l : doc.locks) any_free = any_free || !l.locked[static_cast<size_t>(k)];
+    space.free[static_cast<size_t>(k)] = any_free;
+  }
+  space.locked.resize(doc.locks.size());
+  for (size_t d = 0; d < doc.locks.size(); ++d) space.locked[d] = doc.locks[d].locked;
+  return space;
+}
+
+bool OptimiserJob::start(const LayoutDocument& doc, const PoseSetPtr& poses, const PsoSettings& settings) {
+  error_.clear();
+  if (!poses || poses->size() == 0) {
+    error_ = "the pose set is not loaded yet";
+    return false;
+  }
+  const SearchSpace space = search_space_for(doc);
+  if (std::string why = space.validate(); !why.empty()) {
+    error_ = why;
+    return false;
+  }
+  if (space.dimensions(doc.device_count()).empty()) {
+    error_ = "every parameter of every controller is locked: nothing to search";
+    return false;
+  }
+  history_.clear();
+  discarded_ = false;
+  iterations_ = settings.iterations;
+  job_.start([layout = doc.layout, space, poses, settings](std::stop_token stop,
+                                                          JobChannel<OptimiserReport>& ch) {
+    ch.set_stage("Searching");
+    ch.set_progress(0, settings.iterations + 1);
+    OptimiserOutcome out;
+    out.pso = run_pso(
+        layout, space, poses->prepared, settings,
+        [&ch](const PsoProgress& p) {
+          ch.report({p.iteration, p.iterations, p.best_cost});
+          ch.set_progress(p.iteration + 1, p.iterations + 1);
+        },
+        stop);
+    ch.set_stage("Evaluating the candidate");
+    out.candidate = evaluate_layout(out.pso.best_layout, *poses);
+    return out;
+  });
+  return true;
+}
+
+void OptimiserJob::poll() {
+  for (const auto& r : job_.drain_reports()) {
+    if (r.iteration >= static_cast<int>(history_.size())) history_.resize(static_cast<size_t>(r.iteration) + 1, r.best_cost);
+    history_[static_cast<size_t>(r.iteration)] = r.best_cost;
+  }
+}
+
+void OptimiserJob::wait() {
+  while (job_.running()) std::this_thread::sleep_for(std::chrono::milliseconds(2));
+  poll();
+}
+
+std::shared_ptr<const OptimiserOutcome> OptimiserJob::outcome() const {
+  if (discarded_ || job_.running()) return nullptr;
+  return job_.result();
+}
+
+void OptimiserJob::discard() { discarded_ = true; }
+
+}  // namespace lmc::ui

@@ -1,0 +1,71 @@
+#pragma once
+// The placement search in the background (issue #4, style.md §5.5): start copies the document's
+// layout, locks, bounds and the prepared pose set into a worker that calls core's run_pso; the UI
+// keeps only the job channel. Cancelling cannot change the layout (the worker never had a
+// reference to it); applying the result goes through the apply_layout action, one undo step.
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "core/metric/coverage.h"
+#include "core/optimise/pso.h"
+#include "ui/model/jobs/background_job.h"
+#include "ui/model/layout_document.h"
+#include "ui/model/pose_set_store.h"
+
+namespace lmc::ui {
+
+// Coverage of one layout on the pose set: all frames and split by palm orientation.
+struct LayoutEvaluation {
+  Coverage all, horizontal, vertical;
+};
+LayoutEvaluation evaluate_layout(const Layout& layout, const LoadedPoseSet& poses);
+
+struct OptimiserReport {
+  int iteration = 0;
+  int iterations = 0;
+  double best_cost = 0;
+};
+
+struct OptimiserOutcome {
+  PsoResult pso;
+  LayoutEvaluation candidate;
+};
+
+// The search space the document describes: per-device locks, shared bounds; parameters locked
+// on every device are not searched at all.
+SearchSpace search_space_for(const LayoutDocument& doc);
+
+class OptimiserJob {
+ public:
+  // Starts a run on a copy of the inputs. Returns false (with error()) when the inputs are unusable.
+  bool start(const LayoutDocument& doc, const PoseSetPtr& poses, const PsoSettings& settings);
+  void cancel() { job_.cancel(); }
+  // Update step: drains progress into the convergence history.
+  void poll();
+  void wait();  // tests
+
+  JobState state() const { return job_.state(); }
+  bool running() const { return job_.running(); }
+  double fraction() const { return job_.fraction(); }
+  std::optional<double> eta_seconds() const { return job_.eta_seconds(); }
+  double elapsed_seconds() const { return job_.elapsed_seconds(); }
+  std::string error() const { return error_.empty() ? job_.error() : error_; }
+  const std::vector<double>& history() const { return history_; }  // best cost per iteration
+  // The finished (or cancelled: best so far) outcome; null while running or before a run.
+  std::shared_ptr<const OptimiserOutcome> outcome() const;
+  // Forget the last outcome (after Apply or Discard).
+  void discard();
+  int iterations_planned() const { return iterations_; }
+
+ private:
+  BackgroundJob<OptimiserOutcome, OptimiserReport> job_;
+  std::vector<double> history_;
+  std::string error_;
+  int iterations_ = 0;
+  bool discarded_ = false;
+};
+
+}  // namespace lmc::ui

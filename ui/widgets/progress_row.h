@@ -1,0 +1,15 @@
+#pragma once
+// A progress bar with the job's stage name, elapsed time and ETA, and a Cancel button.
+#include <optional>
+#include <string>
+
+namespace lmc::ui {
+
+// Returns true when Cancel was pressed this frame.
+bool draw_progress_row(const char* id, double fraction, const std::string& stage, double elapsed_s,
+                       std::optional<double> eta_s, bool cancellable = true);
+
+// "2 min 05 s", "12.3 s".
+std::string format_duration(double seconds);
+
+}  // namespace lmc::ui
