@@ -1,0 +1,118 @@
+// lmc process — recorded trials through the pipeline (issue #6): resample, visibility labels,
+// realign, fuse (reference = the study's Kalman filter, default = our smoother), measures, and the
+// comparison with Vicon. Per trial it writes fused points, per-frame measures, a summary JSON and
+// a text report laid out like the authors' result file.
+#include <chrono>
+#include <filesystem>
+#include <iostream>
+#include <nlohmann/json.hpp>
+#include <optional>
+
+#include "app/lmc/command.h"
+#include "core/common/error.h"
+#include "core/io/atomic_write.h"
+#include "core/processing/method_comparison.h"
+#include "core/processing/session.h"
+#include "core/results/trial_outputs.h"
+
+namespace {
+
+struct ProcessArgs {
+  std::string input;
+  std::string vicon;
+  std::string layout;
+  std::string method = "default";
+  std::string mapping;
+  std::string out;
+  double max_gap_ms = 50.0;
+  bool compare_methods = false;
+  bool quiet = false;
+};
+
+void run_process(const ProcessArgs& a) {
+  const auto t0 = std::chrono::steady_clock::now();
+  lmc::SessionOptions options;
+  options.process.method = lmc::fusion_method_from_name(a.method);
+  options.process.resample.max_gap_ms = a.max_gap_ms;
+  if (!a.layout.empty()) options.layout = a.layout;
+  if (!a.mapping.empty()) options.mapping = a.mapping;
+  options.out_dir = a.out;
+  options.compare_methods = a.compare_methods;
+
+  std::vector<std::string> notes;
+  const std::optional<std::filesystem::path> vicon =
+      a.vicon.empty() ? std::nullopt : std::optional<std::filesystem::path>(a.vicon);
+  const auto jobs = lmc::discover_trials(a.input, vicon, &notes);
+  if (jobs.empty()) throw lmc::Error(lmc::ErrorLocation(a.input), "no LMC recordings (LMC_*.txt, Interp_LMC_*.txt) found");
+  for (const auto& n : notes) std::cout << "note: " << n << "\n";
+
+  const auto outcomes = lmc::process_session(jobs, options);
+
+  int failed = 0;
+  lmc::MethodErrors ref_errors, def_errors;
+  int compared = 0;
+  nlohmann::json session = nlohmann::json::object();
+  session["format"] = "lmc-process-session";
+  session["method"] = a.method;
+  session["input"] = a.input;
+  session["trials"] = nlohmann::json::array();
+  for (size_t k = 0; k < outcomes.size(); ++k) {
+    const auto& o = outcomes[k];
+    nlohmann::json t{{"trial", o.trial}, {"ok", o.ok}, {"lmc_file", jobs[k].lmc.string()}};
+    if (o.ok) {
+      t["summary_file"] = o.trial + ".summary.json";
+      t["layout"] = o.layout_used;
+      t["warnings"] = o.warnings;
+      if (!a.quiet) {
+        std::cout << "ok      " << o.trial << "  (" << o.summary["frames"].get<int>() << " frames, layout " << o.layout_used
+                  << (o.has_vicon ? ", with Vicon" : ", no Vicon") << ")\n";
+        for (const auto& w : o.warnings) std::cout << "        warning: " << w << "\n";
+      }
+      if (a.compare_methods && o.has_vicon) {
+        ref_errors.merge(o.reference_errors);
+        def_errors.merge(o.default_errors);
+        ++compared;
+      }
+    } else {
+      ++failed;
+      t["error"] = o.error;
+      std::cout << "FAILED  " << o.trial << ": " << o.error << "\n";
+    }
+    session["trials"].push_back(t);
+  }
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  session["seconds"] = seconds;
+  std::filesystem::create_directories(a.out);
+  lmc::write_file_atomically(std::filesystem::path(a.out) / "session.json", session.dump(2) + "\n");
+  if (a.compare_methods) {
+    const std::string table = lmc::method_comparison_markdown(ref_errors, def_errors, compared);
+    lmc::write_file_atomically(std::filesystem::path(a.out) / "method_comparison.md", table);
+    std::cout << "\n" << table << "\n";
+  }
+  std::cout << "processed " << outcomes.size() - static_cast<size_t>(failed) << " of " << outcomes.size() << " trial(s) ("
+            << a.method << " method) in " << lmc::format_fixed(seconds, 3) << " s; outputs in " << a.out << "\n";
+  if (failed > 0) lmc::cli::command_exit_code() = 2;
+}
+
+void setup_process(CLI::App& app) {
+  auto a = std::make_shared<ProcessArgs>();
+  app.add_option("input", a->input, "A trial recording (raw or resampled LMC file) or a session folder")->required();
+  app.add_option("--vicon", a->vicon, "Vicon file (.trc/.c3d) for one trial, or a folder of them (default: next to the input)");
+  app.add_option("--layout", a->layout,
+                 "Layout preset or file (default: the recorder's sidecar, else paper-initial for Naiv_ trials and "
+                 "paper-optimized-as-processed for Opti_ trials)");
+  app.add_option("--method", a->method, "Fusion: reference (the study's Kalman filter) or default (our smoother)")
+      ->check(CLI::IsMember({"reference", "default"}));
+  app.add_option("--mapping", a->mapping, "Vicon → LMC point mapping (default assets/mappings/vicon-26-to-lmc.json)");
+  app.add_option("--max-gap-ms", a->max_gap_ms, "Longest gap the resampler interpolates across");
+  app.add_flag("--compare-methods", a->compare_methods,
+               "Also run the other method and print both methods' RMSE against the Vicon/truth files");
+  app.add_flag("-q,--quiet", a->quiet, "Only failures and the final line");
+  app.add_option("-o,--output", a->out, "Output folder")->required();
+  app.callback([a] { run_process(*a); });
+}
+
+const lmc::cli::CommandRegistration reg{"process", "Process recorded trials: fuse, measure, compare with Vicon", 40,
+                                        setup_process};
+
+}  // namespace

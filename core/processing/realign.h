@@ -1,0 +1,20 @@
+#pragma once
+// Stage 2 (reference-algorithms.md §1, §6.2): each device's points from its own frame into the
+// world frame with the trial's layout: p = R·p_d + t, then + offset. Recording device id k uses the
+// layout's k-th device (LMC1 = first). The palm normal and direction are directions, so they are
+// only rotated (the study's script pushed them through the full transform as if they were
+// points; no published measure uses them, so the published numbers are unaffected).
+#include <string>
+
+#include "core/layout/layout.h"
+#include "core/processing/hand_track.h"
+
+namespace lmc {
+
+// Throws lmc::Error when a device id has no device in the layout, naming both counts.
+void realign_to_world(GridTrial& grid, const Layout& layout, const std::string& layout_source = "layout");
+
+// Frame by frame, one device (exposed for the workbench and tests).
+void realign_track(HandTrack& track, const LayoutDevice& device);
+
+}  // namespace lmc

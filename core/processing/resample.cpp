@@ -1,0 +1,322 @@
+#include "core/processing/resample.h"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <numeric>
+#include <sstream>
+
+#include "core/common/error.h"
+
+namespace lmc {
+namespace {
+
+constexpr int kDims = kNumHandPoints * 3;
+constexpr size_t kMaxListedIssuesPerKind = 5;
+
+struct Sample {
+  std::int64_t t_us;  // after re-basing
+  long row;           // 1-based data row
+  const HandFrame* frame;
+  bool hand;
+};
+
+bool frame_has_hand(const HandFrame& f) { return f.hand_present && is_finite(f.point(kPalm)); }
+
+bool same_points(const HandFrame& a, const HandFrame& b) {
+  if (a.hand_present != b.hand_present) return false;
+  if (!a.hand_present) return true;
+  for (int i = 0; i < kNumHandPoints; ++i) {
+    if (a.point(i) != b.point(i)) return false;
+  }
+  return true;
+}
+
+std::string slot_name(int device_id) { return "LMC" + std::to_string(device_id); }
+
+void add_issue(ResampleReport* report, std::map<std::pair<int, int>, size_t>& listed, StreamIssue issue) {
+  if (report == nullptr) return;
+  auto& n = listed[{issue.device_id, static_cast<int>(issue.kind)}];
+  if (n++ < kMaxListedIssuesPerKind) report->issues.push_back(std::move(issue));
+}
+
+}  // namespace
+
+void cubic_spline_eval(const std::vector<double>& t, const std::vector<double>& y, int dims,
+                       const std::vector<double>& query_t, std::vector<double>& out) {
+  const size_t n = t.size();
+  if (n == 0) return;
+  const auto d = static_cast<size_t>(dims);
+  if (n == 1) {
+    for (size_t q = 0; q < query_t.size(); ++q) {
+      if (query_t[q] == t[0]) std::copy_n(y.begin(), d, out.begin() + static_cast<long>(q * d));
+    }
+    return;
+  }
+  // Second derivatives M with natural ends (M_0 = M_{n-1} = 0): tridiagonal system solved once
+  // for all `dims` right-hand sides (Thomas algorithm; the matrix is diagonally dominant).
+  std::vector<double> h(n - 1);
+  for (size_t k = 0; k + 1 < n; ++k) h[k] = t[k + 1] - t[k];
+  std::vector<double> m(n * d, 0.0);
+  if (n > 2) {
+    const size_t inner = n - 2;
+    std::vector<double> cprime(inner);
+    std::vector<double> denom(inner);
+    for (size_t i = 0; i < inner; ++i) {
+      const double a = h[i], b = 2.0 * (h[i] + h[i + 1]), c = h[i + 1];
+      denom[i] = b - (i > 0 ? a * cprime[i - 1] : 0.0);
+      cprime[i] = c / denom[i];
+    }
+    for (size_t i = 0; i < inner; ++i) {
+      const size_t k = i + 1;  // sample index
+      for (size_t c = 0; c < d; ++c) {
+        double rhs = 6.0 * ((y[(k + 1) * d + c] - y[k * d + c]) / h[k] - (y[k * d + c] - y[(k - 1) * d + c]) / h[k - 1]);
+        if (i > 0) rhs -= h[i] * m[k * d - d + c];  // a_i · d'_{i-1}, stored in m temporarily
+        m[k * d + c] = rhs / denom[i];
+      }
+    }
+    for (size_t i = inner - 1; i-- > 0;) {
+      const size_t k = i + 1;
+      for (size_t c = 0; c < d; ++c) m[k * d + c] -= cprime[i] * m[(k + 1) * d + c];
+    }
+  }
+  size_t seg = 0;
+  for (size_t q = 0; q < query_t.size(); ++q) {
+    const double tq = query_t[q];
+    if (tq < t.front() || tq > t.back()) continue;
+    while (seg + 2 < n && tq > t[seg + 1]) ++seg;
+    const double hs = h[seg];
+    const double a = t[seg + 1] - tq, b = tq - t[seg];
+    for (size_t c = 0; c < d; ++c) {
+      const double m0 = m[seg * d + c], m1 = m[(seg + 1) * d + c];
+      const double y0 = y[seg * d + c], y1 = y[(seg + 1) * d + c];
+      out[q * d + c] = (m0 * a * a * a + m1 * b * b * b) / (6.0 * hs) + (y0 / hs - m0 * hs / 6.0) * a +
+                       (y1 / hs - m1 * hs / 6.0) * b;
+    }
+  }
+}
+
+std::vector<std::string> ResampleReport::summary_lines() const {
+  std::vector<std::string> lines;
+  for (const auto& d : devices) {
+    std::ostringstream s;
+    bool any = false;
+    auto part = [&](int n, const char* what) {
+      if (n == 0) return;
+      s << (any ? ", " : "") << n << ' ' << what;
+      any = true;
+    };
+    part(d.out_of_order, "out-of-order row(s) (sorted by time)");
+    part(d.duplicates, "duplicate timestamp(s) (second row dropped)");
+    part(d.clock_resets, "clock reset(s) (stream split and re-based)");
+    part(d.gaps, "gap(s) longer than the interpolation limit (NaN there)");
+    if (any) lines.push_back(slot_name(d.device_id) + ": " + s.str());
+  }
+  return lines;
+}
+
+GridTrial resample_recording(const LmcRecording& recording, const ResampleOptions& options, ResampleReport* report) {
+  if (!(options.rate_hz > 0.0) || !(options.max_gap_ms > 0.0)) throw Error("resample: rate and gap limit must be positive");
+  const double step_us = 1e6 / options.rate_hz;
+  const auto gap_us = static_cast<std::int64_t>(std::llround(options.max_gap_ms * 1000.0));
+  const auto reset_us = static_cast<std::int64_t>(std::llround(options.clock_reset_ms * 1000.0));
+  std::map<std::pair<int, int>, size_t> listed;
+
+  const std::vector<int> ids = recording.device_ids();
+  std::vector<std::vector<Sample>> streams(ids.size());
+  std::vector<DeviceStreamStats> stats(ids.size());
+
+  for (size_t di = 0; di < ids.size(); ++di) {
+    const int id = ids[di];
+    auto& st = stats[di];
+    st.device_id = id;
+    auto& s = streams[di];
+    std::int64_t rebase = 0, prev = 0, running_max = 0;
+    std::vector<std::int64_t> steps;
+    bool first = true;
+    for (size_t r = 0; r < recording.rows.size(); ++r) {
+      const HandFrame& f = recording.rows[r];
+      if (f.device_id != id) continue;
+      const long row = static_cast<long>(r) + 1;
+      ++st.rows;
+      std::int64_t t = f.timestamp_us + rebase;
+      if (!first && t < prev - reset_us) {
+        // Clock reset: continue one typical interval after the latest time seen so far.
+        std::int64_t typical = 33333;
+        if (!steps.empty()) {
+          auto mid = steps.begin() + static_cast<long>(steps.size() / 2);
+          std::nth_element(steps.begin(), mid, steps.end());
+          typical = std::max<std::int64_t>(1, *mid);
+        }
+        const std::int64_t shift = running_max + typical - t;
+        rebase += shift;
+        t += shift;
+        ++st.clock_resets;
+        add_issue(report, listed,
+                  {StreamIssueKind::kClockReset, id, row, f.timestamp_us,
+                   slot_name(id) + " row " + std::to_string(row) + ": clock went back by " +
+                       std::to_string((prev - (t - shift)) / 1000) + " ms; stream split and re-based"});
+      } else if (!first && t < running_max) {
+        ++st.out_of_order;
+        add_issue(report, listed,
+                  {StreamIssueKind::kOutOfOrder, id, row, f.timestamp_us,
+                   slot_name(id) + " row " + std::to_string(row) + ": timestamp " + std::to_string(f.timestamp_us) +
+                       " is earlier than a previous row's; sorted"});
+      }
+      if (!first && t > prev) steps.push_back(t - prev);
+      running_max = first ? t : std::max(running_max, t);
+      prev = t;
+      first = false;
+      s.push_back({t, row, &f, frame_has_hand(f)});
+    }
+    std::stable_sort(s.begin(), s.end(), [](const Sample& a, const Sample& b) { return a.t_us < b.t_us; });
+    // Duplicates: keep the first row of a timestamp, drop and report the others.
+    std::vector<Sample> kept;
+    kept.reserve(s.size());
+    for (const Sample& smp : s) {
+      if (!kept.empty() && kept.back().t_us == smp.t_us) {
+        const bool same = same_points(*kept.back().frame, *smp.frame);
+        ++st.duplicates;
+        add_issue(report, listed,
+                  {same ? StreamIssueKind::kDuplicate : StreamIssueKind::kConflictingDuplicate, id, smp.row,
+                   smp.frame->timestamp_us,
+                   slot_name(id) + " row " + std::to_string(smp.row) + ": duplicate timestamp " +
+                       std::to_string(smp.frame->timestamp_us) + (same ? "" : " with different data") +
+                       "; row dropped"});
+        continue;
+      }
+      kept.push_back(smp);
+    }
+    s.swap(kept);
+    for (const Sample& smp : s) st.hand_rows += smp.hand ? 1 : 0;
+  }
+
+  // Grid: from the first hand sample of any device to the last.
+  bool any_hand = false;
+  std::int64_t t_start = 0, t_end = 0;
+  for (const auto& s : streams) {
+    for (const Sample& smp : s) {
+      if (!smp.hand) continue;
+      if (!any_hand) {
+        t_start = t_end = smp.t_us;
+        any_hand = true;
+      }
+      t_start = std::min(t_start, smp.t_us);
+      t_end = std::max(t_end, smp.t_us);
+    }
+  }
+  if (!any_hand) throw Error("resample: no device saw a hand in this recording");
+
+  GridTrial grid;
+  grid.start_us = t_start;
+  grid.step_us = step_us;
+  grid.frame_count = static_cast<int>(std::floor(static_cast<double>(t_end - t_start) / step_us + 1e-9)) + 1;
+  grid.devices.resize(ids.size());
+
+  for (size_t di = 0; di < ids.size(); ++di) {
+    auto& dev = grid.devices[di];
+    dev.device_id = ids[di];
+    dev.track = HandTrack(grid.frame_count);
+    const auto& s = streams[di];
+    auto& st = stats[di];
+    std::int64_t first_hand = -1, last_hand = -1;
+    // Walk pieces: maximal runs of hand samples with no hand-less row and no long gap inside.
+    size_t k = 0;
+    std::vector<double> pt, py, qt, qv;
+    std::vector<int> qf;
+    while (k < s.size()) {
+      if (!s[k].hand) {
+        ++k;
+        continue;
+      }
+      size_t end = k + 1;
+      while (end < s.size() && s[end].hand && s[end].t_us - s[end - 1].t_us <= gap_us) ++end;
+      if (end < s.size() && s[end].hand) {
+        ++st.gaps;
+        add_issue(report, listed,
+                  {StreamIssueKind::kGap, ids[di], s[end].row, s[end].frame->timestamp_us,
+                   slot_name(ids[di]) + " row " + std::to_string(s[end].row) + ": " +
+                       std::to_string((s[end].t_us - s[end - 1].t_us) / 1000) + " ms without a sample; not interpolated"});
+      }
+      if (first_hand < 0) first_hand = s[k].t_us;
+      last_hand = s[end - 1].t_us;
+      // Fit times are relative to the grid start, in seconds, for conditioning.
+      pt.clear();
+      py.clear();
+      for (size_t j = k; j < end; ++j) {
+        pt.push_back(static_cast<double>(s[j].t_us - t_start) * 1e-6);
+        for (int i = 0; i < kNumHandPoints; ++i) {
+          const Vec3& p = s[j].frame->point(i);
+          py.insert(py.end(), {p.x(), p.y(), p.z()});
+        }
+      }
+      const double step_s = step_us * 1e-6;
+      const auto f0 = static_cast<int>(std::ceil(pt.front() / step_s - 1e-9));
+      const auto f1 = static_cast<int>(std::floor(pt.back() / step_s + 1e-9));
+      qt.clear();
+      qf.clear();
+      for (int f = std::max(f0, 0); f <= std::min(f1, grid.frame_count - 1); ++f) {
+        double tq = f * step_s;
+        // A grid time within rounding of a sample end counts as inside.
+        tq = std::clamp(tq, pt.front(), pt.back());
+        qt.push_back(tq);
+        qf.push_back(f);
+      }
+      if (pt.size() == 1 && qt.empty()) {
+        // An isolated sample between grid times is placed on the nearest grid time.
+        const auto f = static_cast<int>(std::lround(pt.front() / step_s));
+        if (f >= 0 && f < grid.frame_count) {
+          qt.push_back(pt.front());
+          qf.push_back(f);
+        }
+      }
+      qv.assign(qt.size() * kDims, kNaN);
+      cubic_spline_eval(pt, py, kDims, qt, qv);
+      for (size_t q = 0; q < qf.size(); ++q) {
+        for (int i = 0; i < kNumHandPoints; ++i) {
+          dev.track.at(qf[q], i) = Vec3(qv[q * kDims + static_cast<size_t>(i) * 3], qv[q * kDims + static_cast<size_t>(i) * 3 + 1],
+                                        qv[q * kDims + static_cast<size_t>(i) * 3 + 2]);
+        }
+      }
+      k = end;
+    }
+    if (first_hand >= 0 && last_hand > first_hand) {
+      st.mean_rate_hz = (st.hand_rows - 1) / (static_cast<double>(last_hand - first_hand) * 1e-6);
+    }
+  }
+  if (report != nullptr) report->devices = std::move(stats);
+  return grid;
+}
+
+GridTrial grid_from_resampled(const LmcRecording& recording, std::vector<std::string>* warnings) {
+  const std::vector<int> ids = recording.device_ids();
+  std::vector<std::vector<const HandFrame*>> rows(ids.size());
+  for (const HandFrame& f : recording.rows) {
+    const auto it = std::lower_bound(ids.begin(), ids.end(), f.device_id);
+    rows[static_cast<size_t>(it - ids.begin())].push_back(&f);
+  }
+  GridTrial grid;
+  size_t n = 0;
+  for (const auto& r : rows) n = std::max(n, r.size());
+  grid.frame_count = static_cast<int>(n);
+  grid.step_us = 10000.0;
+  if (!recording.rows.empty()) grid.start_us = recording.rows.front().timestamp_us;
+  for (size_t di = 0; di < ids.size(); ++di) {
+    DeviceTrack dev;
+    dev.device_id = ids[di];
+    dev.track = HandTrack(grid.frame_count);
+    for (size_t f = 0; f < rows[di].size(); ++f) {
+      const HandFrame& hf = *rows[di][f];
+      if (!hf.hand_present) continue;
+      for (int i = 0; i < kNumHandPoints; ++i) dev.track.at(static_cast<int>(f), i) = hf.point(i);
+    }
+    if (rows[di].size() < n && warnings != nullptr) {
+      warnings->push_back(slot_name(ids[di]) + " has " + std::to_string(rows[di].size()) + " rows, others up to " +
+                          std::to_string(n) + "; its missing frames are NaN");
+    }
+    grid.devices.push_back(std::move(dev));
+  }
+  return grid;
+}
+
+}  // namespace lmc

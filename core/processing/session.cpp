@@ -1,0 +1,205 @@
+#include "core/processing/session.h"
+
+#include <tbb/parallel_for.h>
+
+#include <algorithm>
+#include <map>
+
+#include "core/common/error.h"
+#include "core/io/atomic_write.h"
+#include "core/io/c3d.h"
+#include "core/io/json_checked.h"
+#include "core/io/layout_json.h"
+#include "core/io/lmc_recording.h"
+#include "core/io/trc.h"
+#include "core/processing/trial_tag.h"
+#include "core/results/trial_outputs.h"
+
+namespace fs = std::filesystem;
+
+namespace lmc {
+namespace {
+
+bool ends_with(const std::string& s, const std::string& suffix) {
+  return s.size() >= suffix.size() && s.compare(s.size() - suffix.size(), suffix.size(), suffix) == 0;
+}
+
+// Rank of an LMC file kind: lower wins.
+int lmc_rank(const std::string& name) {
+  if (ends_with(name, ".raw.txt")) return 0;
+  if (ends_with(name, ".resampled.txt")) return 2;
+  if (ends_with(name, ".raytraced.txt")) return 3;
+  return 1;  // Interp_LMC_<trial>.txt / LMC_<trial>.txt
+}
+
+bool is_lmc_file(const std::string& name) {
+  if (!ends_with(name, ".txt")) return false;
+  // Our own outputs are never inputs.
+  for (const char* out : {".fused.txt", ".results.txt"}) {
+    if (ends_with(name, out)) return false;
+  }
+  return name.rfind("LMC_", 0) == 0 || name.rfind("Interp_LMC_", 0) == 0;
+}
+
+std::optional<fs::path> find_vicon(const fs::path& dir, const std::string& trial) {
+  for (const char* ext : {".trc", ".c3d", ".TRC", ".C3D"}) {
+    const fs::path p = dir / (trial + ext);
+    if (fs::exists(p)) return p;
+  }
+  return std::nullopt;
+}
+
+}  // namespace
+
+std::vector<TrialJob> discover_trials(const fs::path& input, const std::optional<fs::path>& vicon,
+                                      std::vector<std::string>* notes) {
+  std::vector<TrialJob> jobs;
+  if (!fs::exists(input)) throw Error(ErrorLocation(input.string()), "no such file or folder");
+  if (!fs::is_directory(input)) {
+    TrialJob j;
+    j.lmc = input;
+    j.trial = trial_name_of(input.filename().string());
+    if (vicon && !fs::is_directory(*vicon)) {
+      j.vicon = *vicon;
+    } else {
+      j.vicon = find_vicon(vicon ? *vicon : input.parent_path(), j.trial);
+    }
+    const fs::path side = input.parent_path() / ("LMC_" + j.trial + ".session.json");
+    if (fs::exists(side)) j.sidecar = side;
+    jobs.push_back(j);
+    return jobs;
+  }
+  if (vicon && !fs::is_directory(*vicon)) {
+    throw Error(ErrorLocation(vicon->string()), "--vicon must be a folder when the input is a session folder");
+  }
+  std::map<std::string, std::pair<int, fs::path>> best;
+  std::vector<fs::path> files;
+  for (const auto& e : fs::recursive_directory_iterator(input)) {
+    if (e.is_regular_file()) files.push_back(e.path());
+  }
+  std::sort(files.begin(), files.end());
+  for (const auto& p : files) {
+    const std::string name = p.filename().string();
+    if (!is_lmc_file(name)) continue;
+    const std::string trial = trial_name_of(name);
+    const int rank = lmc_rank(name);
+    auto it = best.find(trial);
+    if (it == best.end() || rank < it->second.first) {
+      if (it != best.end() && notes != nullptr) notes->push_back(trial + ": using " + name + " instead of " + it->second.second.filename().string());
+      best[trial] = {rank, p};
+    } else if (notes != nullptr) {
+      notes->push_back(trial + ": using " + it->second.second.filename().string() + ", ignoring " + name);
+    }
+  }
+  for (const auto& [trial, rp] : best) {
+    TrialJob j;
+    j.trial = trial;
+    j.lmc = rp.second;
+    j.vicon = find_vicon(vicon ? *vicon : rp.second.parent_path(), trial);
+    const fs::path side = rp.second.parent_path() / ("LMC_" + trial + ".session.json");
+    if (fs::exists(side)) j.sidecar = side;
+    jobs.push_back(j);
+  }
+  return jobs;
+}
+
+MarkerSeries load_vicon_markers(const fs::path& path) {
+  std::string ext = path.extension().string();
+  for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  if (ext == ".c3d") return read_c3d(path).to_marker_series(path.string());
+  TrcData trc = read_trc(path);
+  trc.to_millimetres();
+  MarkerSeries m;
+  m.names = trc.marker_names;
+  m.positions = std::move(trc.positions);
+  m.rate_hz = trc.data_rate_hz;
+  m.source = path.string();
+  return m;
+}
+
+Layout resolve_layout(const TrialJob& job, const std::optional<std::string>& layout, std::string* used) {
+  if (layout) {
+    if (used) *used = *layout;
+    return load_layout_or_preset(*layout);
+  }
+  if (job.sidecar) {
+    const auto j = read_json_file(*job.sidecar);
+    if (j.contains("layout") && j["layout"].is_object()) {
+      if (used) *used = job.sidecar->filename().string() + " (recorded layout)";
+      return layout_from_json(j["layout"], job.sidecar->string() + "#/layout");
+    }
+  }
+  const TrialTag tag = parse_trial_tag(job.trial);
+  const char* preset = nullptr;
+  if (tag.layout == "initial") preset = "paper-initial";
+  if (tag.layout == "optimized") preset = "paper-optimized-as-processed";
+  if (preset == nullptr) {
+    throw Error("no layout for trial '" + job.trial +
+                "': give --layout (the name is not Naiv_/Opti_… and there is no recorder sidecar)");
+  }
+  if (used) *used = preset;
+  return load_layout_or_preset(preset);
+}
+
+TrialOutcome process_job(const TrialJob& job, const SessionOptions& options, const ViconMapping& mapping) {
+  TrialOutcome out;
+  out.trial = job.trial;
+  try {
+    const Layout layout = resolve_layout(job, options.layout, &out.layout_used);
+    const LmcRecording rec = read_lmc_recording(job.lmc);
+    HandTrack vicon_track;
+    const HandTrack* vicon = nullptr;
+    if (job.vicon) {
+      const MarkerSeries markers = load_vicon_markers(*job.vicon);
+      if (std::abs(markers.rate_hz - 100.0) > 0.5) {
+        throw Error(ErrorLocation(job.vicon->string()),
+                    "Vicon rate is " + format_fixed(markers.rate_hz, 2) + " Hz; processing expects 100 Hz like the LMC grid");
+      }
+      vicon_track = apply_vicon_mapping(mapping, markers);
+      vicon = &vicon_track;
+      out.has_vicon = true;
+    } else {
+      out.warnings.push_back("no Vicon file (" + job.trial + ".trc or .c3d) next to it: LMC measures only");
+    }
+    TrialResult r = process_trial(job.trial, rec, layout, vicon, options.process);
+    r.lmc_source = job.lmc.string();
+    if (job.vicon) r.vicon_source = job.vicon->string();
+    for (const auto& w : r.warnings) out.warnings.push_back(w);
+    r.warnings = out.warnings;
+    out.summary = trial_summary_json(r);
+    out.summary["layout_source"] = out.layout_used;
+    if (!options.out_dir.empty()) {
+      write_trial_outputs(r, options.out_dir);
+      write_file_atomically(options.out_dir / (r.tag.trial + ".summary.json"), out.summary.dump(2) + "\n");
+    }
+    if (options.compare_methods && vicon != nullptr) {
+      MethodErrors mine = trial_errors(r);
+      ProcessOptions other = options.process;
+      other.method = options.process.method == FusionMethod::kReference ? FusionMethod::kDefault : FusionMethod::kReference;
+      const TrialResult r2 = process_trial(job.trial, rec, layout, vicon, other);
+      MethodErrors theirs = trial_errors(r2);
+      if (options.process.method == FusionMethod::kReference) {
+        out.reference_errors = mine;
+        out.default_errors = theirs;
+      } else {
+        out.default_errors = mine;
+        out.reference_errors = theirs;
+      }
+    }
+    out.ok = true;
+  } catch (const std::exception& e) {
+    out.ok = false;
+    out.error = e.what();
+  }
+  return out;
+}
+
+std::vector<TrialOutcome> process_session(const std::vector<TrialJob>& jobs, const SessionOptions& options) {
+  const ViconMapping mapping = options.mapping ? load_vicon_mapping(*options.mapping) : default_vicon_mapping();
+  if (!options.out_dir.empty()) fs::create_directories(options.out_dir);
+  std::vector<TrialOutcome> outcomes(jobs.size());
+  tbb::parallel_for(size_t{0}, jobs.size(), [&](size_t k) { outcomes[k] = process_job(jobs[k], options, mapping); });
+  return outcomes;
+}
+
+}  // namespace lmc

@@ -1,0 +1,64 @@
+#pragma once
+// A session folder (or one trial) through the pipeline, for `lmc process` and the workbench.
+// Trials are found by file name (trial_tag.h): LMC files `LMC_<trial>.raw.txt`,
+// `Interp_LMC_<trial>.txt`, `<…>.resampled.txt`, `<…>.raytraced.txt` (a raw file wins when a
+// trial has several), Vicon files `<trial>.trc` or `<trial>.c3d` in the same folder, and the
+// recorder's sidecar `LMC_<trial>.session.json` (its layout is used unless one is given).
+// Trials run in parallel (oneTBB), each on its own; a trial that fails gives a message and the
+// others still run. Results come back in trial-name order whatever the thread count.
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "core/io/vicon_mapping.h"
+#include "core/processing/method_comparison.h"
+#include "core/processing/trial_pipeline.h"
+
+namespace lmc {
+
+struct TrialJob {
+  std::string trial;
+  std::filesystem::path lmc;
+  std::optional<std::filesystem::path> vicon;
+  std::optional<std::filesystem::path> sidecar;
+};
+
+// `input` is an LMC file or a folder. `vicon` (optional) is a Vicon file (single trial) or a
+// folder to look in. Notes: files that look like trials but were skipped, and why.
+std::vector<TrialJob> discover_trials(const std::filesystem::path& input, const std::optional<std::filesystem::path>& vicon,
+                                      std::vector<std::string>* notes = nullptr);
+
+// Vicon markers from .trc or .c3d, in mm; throws lmc::Error naming the file.
+MarkerSeries load_vicon_markers(const std::filesystem::path& path);
+
+struct SessionOptions {
+  ProcessOptions process;
+  std::optional<std::string> layout;  // name or path; else sidecar, else by trial tag
+  std::optional<std::filesystem::path> mapping;
+  std::filesystem::path out_dir;      // empty: nothing written
+  bool compare_methods = false;       // also run the other method and collect errors vs truth
+};
+
+struct TrialOutcome {
+  std::string trial;
+  bool ok = false;
+  std::string error;                  // when !ok
+  std::vector<std::string> warnings;
+  nlohmann::json summary;             // trial_summary_json (ok only)
+  std::string layout_used;
+  bool has_vicon = false;
+  // compare_methods: errors of both methods against Vicon/truth.
+  MethodErrors reference_errors, default_errors;
+};
+
+// The layout for a trial: explicit name/path; else the sidecar's; else paper-initial for "Naiv"
+// trials and paper-optimized-as-processed for "Opti" ones (reproduces the authors' processing).
+Layout resolve_layout(const TrialJob& job, const std::optional<std::string>& layout, std::string* used);
+
+TrialOutcome process_job(const TrialJob& job, const SessionOptions& options, const ViconMapping& mapping);
+std::vector<TrialOutcome> process_session(const std::vector<TrialJob>& jobs, const SessionOptions& options);
+
+}  // namespace lmc

@@ -1,0 +1,71 @@
+#pragma once
+// One trial through every stage (reference-algorithms.md §6): resample → visibility labels (device
+// frame) → realign → fuse → measures → compare with Vicon. Each stage is its own unit
+// (resample.h, realign.h, visibility_labels.h, kalman_reference.h / fusion_smoother.h, measures.h,
+// compare.h); this file only strings them together and keeps the intermediates so the workbench
+// can show any of them.
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "core/io/lmc_recording.h"
+#include "core/layout/layout.h"
+#include "core/processing/compare.h"
+#include "core/processing/fusion_smoother.h"
+#include "core/processing/kalman_reference.h"
+#include "core/processing/measures.h"
+#include "core/processing/resample.h"
+#include "core/processing/trial_tag.h"
+#include "core/visibility/visibility_params.h"
+
+namespace lmc {
+
+enum class FusionMethod { kReference, kDefault };
+const char* fusion_method_name(FusionMethod m);  // "reference", "default"
+FusionMethod fusion_method_from_name(const std::string& name);  // throws lmc::Error
+
+struct ProcessOptions {
+  FusionMethod method = FusionMethod::kDefault;
+  ResampleOptions resample;
+  ReferenceKalmanParams kalman;
+  SmootherParams smoother;
+  VisibilityParams visibility{400.0, 150.0, 120.0, 10.0};  // recorded-trial analysis (§3)
+  bool trim_to_vicon = true;  // as the study: both series cut to the shorter before fusion (§6.6)
+  int max_lag_frames = 50;
+  double min_vicon_seconds = 1.0;  // a shorter Vicon file is rejected
+};
+
+struct TrialResult {
+  TrialTag tag;
+  std::string lmc_source, vicon_source;
+  FusionMethod method = FusionMethod::kDefault;
+  std::string layout_name;
+  RecordingKind input_kind = RecordingKind::kRaw;
+  std::vector<std::string> warnings;  // survivable problems, for the per-trial report
+  ResampleReport resample;
+
+  // Intermediates.
+  GridTrial device_frame;                          // after resampling (and trimming)
+  GridTrial world;                                 // after realignment
+  std::vector<std::vector<FingerLabels>> labels;   // [device][frame]
+  HandTrack fused;
+
+  // Measures.
+  std::vector<FrameMeasures> lmc_frames;
+  MeasureStats lmc_stats;
+  std::vector<VisibilityCounts> visibility;  // one per device
+
+  bool has_vicon = false;
+  HandTrack vicon;
+  std::vector<FrameMeasures> vicon_frames;
+  MeasureStats vicon_stats;
+  Comparison comparison;
+  int lmc_frames_before_trim = 0, vicon_frames_before_trim = 0;
+};
+
+// In memory. `vicon` (already mapped to the 30 points, 100 Hz) may be null. Throws lmc::Error
+// for problems that stop this trial (no hand at all, layout with too few devices, Vicon too short).
+TrialResult process_trial(const std::string& trial_name, const LmcRecording& recording, const Layout& layout,
+                          const HandTrack* vicon, const ProcessOptions& options);
+
+}  // namespace lmc

@@ -1,0 +1,30 @@
+#pragma once
+// What `lmc process` writes per trial (issue #6, "Commands and outputs"):
+//  * <trial>.fused.txt      fused points in the study's resampled-file layout (one "device", id 0,
+//                           100 Hz; no hand = nan,nan,nan), readable by read_lmc_recording;
+//  * <trial>.measures.tsv   per-frame segment/finger lengths and joint angles (LMC, and Vicon when
+//                           present) plus each device's five visibility labels;
+//  * <trial>.summary.json   statistics, visibility tables, comparison, warnings, provenance;
+//  * <trial>.results.txt    a text report laid out exactly like the authors' result file
+//                           (Subject1_Naiv.results.txt) so both can be compared side by side.
+#include <filesystem>
+#include <nlohmann/json_fwd.hpp>
+#include <string>
+
+#include "core/processing/trial_pipeline.h"
+
+namespace lmc {
+
+// The authors' layout: "%f" numbers, tab-separated, "%0.2f" visibility, their headings.
+std::string format_results_text(const TrialResult& r);
+std::string format_measures_tsv(const TrialResult& r);
+std::string format_fused_points(const TrialResult& r);
+nlohmann::json trial_summary_json(const TrialResult& r);
+
+// Writes the four files into `dir` (created if needed) atomically; returns the summary path.
+std::filesystem::path write_trial_outputs(const TrialResult& r, const std::filesystem::path& dir);
+
+// Python-style "%f"/"%.2f": NaN → "nan", ±inf → "inf"/"-inf".
+std::string format_fixed(double v, int decimals);
+
+}  // namespace lmc

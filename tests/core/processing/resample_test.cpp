@@ -1,0 +1,132 @@
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "core/common/error.h"
+#include "core/processing/resample.h"
+
+namespace lmc {
+namespace {
+
+HandFrame frame_at(int device, std::int64_t t_us, bool hand = true, double offset = 0.0) {
+  HandFrame f;
+  f.device_id = device;
+  f.timestamp_us = t_us;
+  f.hand_present = hand;
+  if (hand) {
+    const double t = static_cast<double>(t_us) * 1e-6;
+    for (int i = 0; i < kNumHandPoints; ++i) f.point(i) = Vec3(10.0 * t + i + offset, 200.0 - 5.0 * t, i * 0.5);
+  }
+  return f;
+}
+
+TEST(CubicSpline, ReproducesCubicInteriorAndLinearExactly) {
+  std::vector<double> t{0.0, 0.013, 0.05, 0.061, 0.1};
+  std::vector<double> y;
+  for (double v : t) y.push_back(3.0 - 2.0 * v);
+  std::vector<double> q{0.0, 0.01, 0.02, 0.1, 0.2};
+  std::vector<double> out(q.size(), -99.0);
+  cubic_spline_eval(t, y, 1, q, out);
+  for (size_t k = 0; k < 4; ++k) EXPECT_NEAR(out[k], 3.0 - 2.0 * q[k], 1e-12);
+  EXPECT_EQ(out[4], -99.0);  // outside: untouched
+}
+
+TEST(Resample, GridStartsAtFirstHandAndInterpolatesLinearMotion) {
+  LmcRecording rec;
+  rec.rows.push_back(frame_at(1, 1000000, false));  // no hand yet
+  for (std::int64_t t = 1'020'000; t <= 1'300'000; t += 33'000) rec.rows.push_back(frame_at(1, t));
+  for (std::int64_t t = 1'035'000; t <= 1'290'000; t += 41'000) rec.rows.push_back(frame_at(2, t));
+  ResampleReport report;
+  const GridTrial g = resample_recording(rec, {}, &report);
+  EXPECT_EQ(g.start_us, 1'020'000);
+  ASSERT_EQ(g.devices.size(), 2u);
+  EXPECT_EQ(g.frame_count, 27);  // 1.020 … 1.280 s: last sample of device 1 at 1.284 s
+  const auto& d1 = g.devices[0].track;
+  for (int f = 0; f < g.frame_count; ++f) {
+    const double t = 1.02 + 0.01 * f;
+    ASSERT_TRUE(d1.has_hand(f)) << f;
+    EXPECT_NEAR(d1.at(f, 3).x(), 10.0 * t + 3, 1e-9);
+  }
+  // Device 2 starts at 1.035 s: grid 1.02, 1.03 are NaN for it.
+  EXPECT_FALSE(g.devices[1].track.has_hand(0));
+  EXPECT_FALSE(g.devices[1].track.has_hand(1));
+  EXPECT_TRUE(g.devices[1].track.has_hand(2));
+  EXPECT_TRUE(report.summary_lines().empty());
+}
+
+TEST(Resample, GapsAndHandLossAreNaNNotBridged) {
+  LmcRecording rec;
+  for (std::int64_t t : {0, 30'000, 60'000}) rec.rows.push_back(frame_at(1, t));
+  for (std::int64_t t : {160'000, 190'000}) rec.rows.push_back(frame_at(1, t));  // 100 ms gap
+  rec.rows.push_back(frame_at(1, 220'000, false));                               // hand lost
+  for (std::int64_t t : {240'000, 270'000}) rec.rows.push_back(frame_at(1, t));
+  ResampleReport report;
+  const GridTrial g = resample_recording(rec, {}, &report);
+  const auto& tr = g.devices[0].track;
+  EXPECT_TRUE(tr.has_hand(6));
+  for (int f = 7; f <= 15; ++f) EXPECT_FALSE(tr.has_hand(f)) << f;
+  EXPECT_TRUE(tr.has_hand(16));
+  EXPECT_TRUE(tr.has_hand(19));
+  for (int f = 20; f <= 23; ++f) EXPECT_FALSE(tr.has_hand(f)) << f;  // across the hand-less row
+  EXPECT_TRUE(tr.has_hand(24));
+  ASSERT_EQ(report.devices.size(), 1u);
+  EXPECT_EQ(report.devices[0].gaps, 1);
+}
+
+TEST(Resample, ReportsOutOfOrderDuplicatesAndClockResets) {
+  LmcRecording rec;
+  rec.rows.push_back(frame_at(1, 100'000));
+  rec.rows.push_back(frame_at(1, 130'000));
+  rec.rows.push_back(frame_at(1, 120'000));  // out of order
+  rec.rows.push_back(frame_at(1, 130'000));  // duplicate, same data
+  rec.rows.push_back(frame_at(1, 160'000));
+  rec.rows.push_back(frame_at(1, 160'000, true, 5.0));  // duplicate, different data
+  rec.rows.push_back(frame_at(1, 5'000));                // clock reset (back by 155 ms > limit 100 ms)
+  rec.rows.push_back(frame_at(1, 35'000));
+  ResampleOptions o;
+  o.clock_reset_ms = 100.0;
+  ResampleReport report;
+  const GridTrial g = resample_recording(rec, o, &report);
+  ASSERT_EQ(report.devices.size(), 1u);
+  const auto& s = report.devices[0];
+  EXPECT_EQ(s.out_of_order, 1);
+  EXPECT_EQ(s.duplicates, 2);
+  EXPECT_EQ(s.clock_resets, 1);
+  const auto lines = report.summary_lines();
+  ASSERT_EQ(lines.size(), 1u);
+  EXPECT_NE(lines[0].find("LMC1"), std::string::npos);
+  EXPECT_NE(lines[0].find("clock reset"), std::string::npos);
+  bool conflicting = false;
+  for (const auto& i : report.issues) conflicting = conflicting || i.kind == StreamIssueKind::kConflictingDuplicate;
+  EXPECT_TRUE(conflicting);
+  // Re-based: the post-reset part continues after 160 ms (typical step 30 ms → 190 ms, 220 ms).
+  EXPECT_EQ(g.start_us, 100'000);
+  EXPECT_EQ(g.frame_count, 13);  // 100 … 220 ms
+}
+
+TEST(Resample, NoHandAnywhereIsAnError) {
+  LmcRecording rec;
+  rec.rows.push_back(frame_at(1, 0, false));
+  EXPECT_THROW(resample_recording(rec), Error);
+}
+
+TEST(Resample, ResampledRecordingRowsAreTheGrid) {
+  LmcRecording rec;
+  rec.kind = RecordingKind::kResampled;
+  for (int f = 0; f < 3; ++f) {
+    rec.rows.push_back(frame_at(1, 10'000 * f));
+    rec.rows.push_back(frame_at(2, 10'000 * f, f != 1));
+  }
+  rec.rows.push_back(frame_at(1, 30'000));
+  std::vector<std::string> warnings;
+  const GridTrial g = grid_from_resampled(rec, &warnings);
+  EXPECT_EQ(g.frame_count, 4);
+  EXPECT_FALSE(g.devices[1].track.has_hand(1));
+  EXPECT_FALSE(g.devices[1].track.has_hand(3));
+  EXPECT_TRUE(g.devices[0].track.has_hand(3));
+  ASSERT_EQ(warnings.size(), 1u);
+  EXPECT_NE(warnings[0].find("LMC2"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace lmc
