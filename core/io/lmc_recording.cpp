@@ -158,11 +158,12 @@ struct ParsedRow {
 
 class RowParser {
  public:
-  RowParser(const HeaderInfo& header, std::string source) : header_(header), source_(std::move(source)) {}
+  explicit RowParser(const HeaderInfo& header) : header_(header) {}
 
   // Returns a failure instead of throwing so the caller can treat a cut-off last line gently.
   std::optional<RowFailure> parse(std::string_view line, ParsedRow& row) {
     row = ParsedRow{};
+    line_length_ = static_cast<long>(line.size());
     if (header_.whitespace_separated) {
       text::split_whitespace(line, fields_);
     } else {
@@ -179,7 +180,9 @@ class RowParser {
     const size_t n = fields_.size();
     RowFailure f;
     f.short_row = n < expected;
-    f.column = n > expected ? fields_[expected].column : 0;
+    // Too many: point at the first extra field; too few: at the end of the line, where the next
+    // field was expected.
+    f.column = n > expected ? fields_[expected].column : line_length_ + 1;
     f.message = "row has " + std::to_string(n) + " fields; expected " + what;
     return f;
   }
@@ -295,8 +298,8 @@ class RowParser {
   }
 
   HeaderInfo header_;
-  std::string source_;
   std::vector<text::Field> fields_;
+  long line_length_ = 0;
 };
 
 void append_point_triplet(std::string& out, const Vec3& p) {
@@ -338,7 +341,7 @@ LmcRecording parse_lmc_recording(std::istream& in, const std::string& source_nam
   const HeaderInfo header = read_header(lines.front(), source_name);
 
   LmcRecording rec;
-  RowParser parser(header, source_name);
+  RowParser parser(header);
   ParsedRow row;
   bool any_short_no_hand = false;
   bool any_all_nan = false;

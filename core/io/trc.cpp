@@ -178,7 +178,8 @@ TrcData parse_trc(std::istream& in, const std::string& source_name) {
                 std::to_string(trc.positions.size()) + " complete rows before it"));
         break;
       }
-      fail(source_name, line.number, fields.size() > expected ? fields[expected].column : 0,
+      fail(source_name, line.number,
+           fields.size() > expected ? fields[expected].column : static_cast<long>(line.text.size()) + 1,
            "row has " + std::to_string(fields.size()) + " fields; expected " + std::to_string(expected) +
                " (Frame#, Time and 3 per marker for " + std::to_string(markers) + " markers)");
     }
