@@ -1,0 +1,68 @@
+#pragma once
+// One interface for every source of hand frames (simulated rig, replay, LeapC): a source runs
+// its own thread(s) and reports to a FrameSink (the hub) devices appearing and disappearing, keyed
+// by serial number, and one SourceFrame per tracking event of each device. Sources never decide
+// layout slots; the hub maps serial → slot (field-notes §2.3: identity by serial, never by index).
+#include <cstdint>
+#include <string>
+
+#include "core/hand/hand_frame.h"
+
+namespace lmc::devices {
+
+struct DeviceInfo {
+  std::string serial;
+  std::string backend;   // "sim", "replay", "leapc"
+  std::string model;     // "Leap Motion Controller", "simulated", ...
+};
+
+// One tracking event of one device, copied out of the backend's buffers.
+struct SourceFrame {
+  std::string serial;
+  // frame.device_id is the source's own device number; the hub rewrites it to the slot number.
+  // Coordinates are in the device's own frame (reference-algorithms.md §1).
+  HandFrame frame;
+  std::int64_t host_receive_ns = 0;  // host steady clock (or simulated host time), ns
+  HandType hand_type = HandType::kUnknown;
+  float confidence = -1.0F;  // < 0 when the backend does not know (LeapC documents it as unused)
+};
+
+enum class DeviceEventKind {
+  kAppeared,       // a device is streaming (or about to); `info` is filled
+  kLost,           // unplugged / closed / service lost
+  kFailure,        // device reported a failure status; it may keep streaming
+  kDroppedFrames,  // the service says it dropped `count` frames of this device
+  kNotice,         // anything the operator should read (low fps, bad transport, ...)
+};
+
+struct DeviceEvent {
+  DeviceEventKind kind = DeviceEventKind::kNotice;
+  DeviceInfo info;  // info.serial always set when the event is about one device
+  std::string message;
+  std::int64_t host_time_ns = 0;
+  std::int64_t count = 0;
+};
+
+class FrameSink {
+ public:
+  virtual ~FrameSink() = default;
+  virtual void on_device_event(const DeviceEvent& event) = 0;
+  virtual void on_frame(const SourceFrame& frame) = 0;
+};
+
+class FrameSource {
+ public:
+  virtual ~FrameSource() = default;
+  virtual std::string backend_name() const = 0;
+  // Starts delivering to `sink` from the source's own thread(s); returns immediately.
+  virtual void start(FrameSink& sink) = 0;
+  // Stops and joins; no callback runs after stop() returns. Safe to call twice.
+  virtual void stop() = 0;
+  // True for hardware-paced sources (their threads must never block). A simulated source run
+  // faster than real time returns false; the hub may then apply back-pressure instead of dropping.
+  virtual bool realtime() const { return true; }
+  // True when a finite source (replay, simulated trial) has delivered everything.
+  virtual bool finished() const { return false; }
+};
+
+}  // namespace lmc::devices

@@ -1,0 +1,57 @@
+#include "devices/record/byte_sink.h"
+
+#include <fcntl.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstring>
+
+#include "core/common/error.h"
+
+namespace lmc::devices {
+namespace {
+
+class FileSink final : public ByteSink {
+ public:
+  FileSink(int fd, std::filesystem::path path) : fd_(fd), path_(std::move(path)) {}
+  ~FileSink() override { close(); }
+
+  bool write(std::string_view data) override {
+    while (!data.empty()) {
+      const ssize_t n = ::write(fd_, data.data(), data.size());
+      if (n < 0) {
+        if (errno == EINTR) continue;
+        return fail("write");
+      }
+      data.remove_prefix(static_cast<size_t>(n));
+    }
+    return true;
+  }
+  bool sync() override { return ::fsync(fd_) == 0 || errno == EINVAL || errno == EROFS ? true : fail("fsync"); }
+  bool close() override {
+    if (fd_ < 0) return true;
+    const int rc = ::close(fd_);
+    fd_ = -1;
+    return rc == 0 ? true : fail("close");
+  }
+  std::string error() const override { return error_; }
+
+ private:
+  bool fail(const char* what) {
+    error_ = std::string(what) + " " + path_.string() + ": " + std::strerror(errno);
+    return false;
+  }
+  int fd_;
+  std::filesystem::path path_;
+  std::string error_;
+};
+
+}  // namespace
+
+std::unique_ptr<ByteSink> open_file_sink(const std::filesystem::path& path) {
+  const int fd = ::open(path.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
+  if (fd < 0) throw Error(ErrorLocation(path.string()), std::string("cannot create file: ") + std::strerror(errno));
+  return std::make_unique<FileSink>(fd, path);
+}
+
+}  // namespace lmc::devices

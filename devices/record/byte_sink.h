@@ -1,0 +1,24 @@
+#pragma once
+// Where the recorder's bytes go. The file implementation uses POSIX calls so a full disk or an
+// I/O error surfaces as errno text; tests inject a sink that fails after N bytes.
+#include <filesystem>
+#include <memory>
+#include <string>
+#include <string_view>
+
+namespace lmc::devices {
+
+class ByteSink {
+ public:
+  virtual ~ByteSink() = default;
+  // All of `data` or false (then error() says why; some bytes may have been written).
+  virtual bool write(std::string_view data) = 0;
+  virtual bool sync() = 0;  // to stable storage
+  virtual bool close() = 0;
+  virtual std::string error() const = 0;
+};
+
+// Creates (truncates) the file. Throws lmc::Error naming the path when it cannot be opened.
+std::unique_ptr<ByteSink> open_file_sink(const std::filesystem::path& path);
+
+}  // namespace lmc::devices

@@ -1,0 +1,294 @@
+#include "devices/record/recorder.h"
+
+#include <chrono>
+#include <utility>
+
+#include "core/common/error.h"
+#include "core/io/atomic_write.h"
+#include "core/io/layout_json.h"
+#include "core/io/lmc_recording.h"
+#include "devices/host_clock.h"
+#include "devices/record/trial_name.h"
+
+namespace lmc::devices {
+namespace {
+constexpr size_t kWriteChunkBytes = 1 << 20;
+}
+
+const char* recorder_state_name(RecorderState s) {
+  switch (s) {
+    case RecorderState::kIdle: return "idle";
+    case RecorderState::kRecording: return "recording";
+    case RecorderState::kStopped: return "stopped";
+    case RecorderState::kFailed: return "failed";
+  }
+  return "?";
+}
+
+SessionPaths session_paths(const std::filesystem::path& dir, const std::string& trial) {
+  require_valid_trial_name(trial);
+  // The study's naming: LMC_<trial>.raw.txt for the controllers, <trial>.trc for Vicon, so the
+  // two files of one trial pair up by name (reference-algorithms.md §7).
+  return {dir / ("LMC_" + trial + ".raw.txt"), dir / ("LMC_" + trial + ".session.json"), dir / (trial + ".trc")};
+}
+
+Recorder::Recorder(RecorderConfig config)
+    : config_(std::move(config)), queue_(config_.queue_capacity == 0 ? 1 : config_.queue_capacity) {
+  if (config_.flush_interval_ms <= 0 || config_.flush_interval_ms > 1000) config_.flush_interval_ms = 1000;
+}
+
+Recorder::~Recorder() {
+  if (thread_.joinable()) {
+    stop_requested_ = true;
+    thread_.join();
+  }
+}
+
+void Recorder::start() {
+  if (started_.exchange(true)) throw Error("recorder already started");
+  paths_ = session_paths(config_.output_dir, config_.trial);
+  std::error_code ec;
+  std::filesystem::create_directories(config_.output_dir, ec);
+  if (ec) throw Error(ErrorLocation(config_.output_dir.string()), "cannot create output folder: " + ec.message());
+  sink_ = config_.open_sink ? config_.open_sink(paths_.recording) : open_file_sink(paths_.recording);
+  if (!sink_) throw Error(ErrorLocation(paths_.recording.string()), "cannot create recording file");
+  host_start_utc_ = utc_now_iso8601();
+  host_start_ns_ = host_now_ns();
+  if (!sink_->write(lmc_recording_header(RecordingKind::kRaw)))
+    throw Error(ErrorLocation(paths_.recording.string()), "cannot write recording header: " + sink_->error());
+  // A sidecar exists from the first second on, so even a crashed session says what it was.
+  write_file_atomically(paths_.sidecar, sidecar_json("recording").dump(2) + "\n");
+  thread_ = std::thread([this] { run(); });
+}
+
+bool Recorder::offer(const HandFrame& frame, std::int64_t host_receive_ns, bool may_wait) {
+  if (failed_.load(std::memory_order_relaxed) || stop_requested_.load(std::memory_order_relaxed) || !started_) {
+    dropped_.fetch_add(1);
+    return false;
+  }
+  Item item{frame, host_receive_ns};
+  std::unique_lock lock(producer_mutex_);
+  bool pushed = queue_.try_push(item);
+  while (!pushed && may_wait && !failed_.load() && !stop_requested_.load()) {
+    lock.unlock();
+    std::this_thread::sleep_for(std::chrono::microseconds(200));
+    lock.lock();
+    pushed = queue_.try_push(item);
+  }
+  lock.unlock();
+  if (!pushed) {
+    dropped_.fetch_add(1);
+    std::lock_guard stats_lock(stats_mutex_);
+    ++stats_[frame.device_id].frames_dropped_queue;
+  }
+  return pushed;
+}
+
+void Recorder::device_event(const DeviceEvent& event, int device_id, const std::string& slot) {
+  std::lock_guard lock(stats_mutex_);
+  nlohmann::json e = {{"host_time_utc", utc_now_iso8601()},
+                      {"host_ns", event.host_time_ns},
+                      {"serial", event.info.serial},
+                      {"slot", slot},
+                      {"message", event.message}};
+  switch (event.kind) {
+    case DeviceEventKind::kAppeared: e["event"] = "appeared"; break;
+    case DeviceEventKind::kLost: e["event"] = "lost"; break;
+    case DeviceEventKind::kFailure: e["event"] = "failure"; break;
+    case DeviceEventKind::kDroppedFrames: e["event"] = "dropped_frames"; e["count"] = event.count; break;
+    case DeviceEventKind::kNotice: e["event"] = "notice"; break;
+  }
+  if (device_id > 0) {
+    auto& s = stats_[device_id];
+    s.device_id = device_id;
+    s.slot = slot;
+    if (!event.info.serial.empty()) s.serial = event.info.serial;
+    if (event.kind == DeviceEventKind::kLost) s.disconnects.push_back(e);
+    if (event.kind == DeviceEventKind::kAppeared && !s.disconnects.empty())
+      s.disconnects.back()["reconnected_host_time_utc"] = e["host_time_utc"];
+  }
+  if (events_.size() < 10000) events_.push_back(std::move(e));
+}
+
+void Recorder::note_vicon_packet(nlohmann::json packet) {
+  std::lock_guard lock(stats_mutex_);
+  vicon_packets_.push_back(std::move(packet));
+}
+
+void Recorder::note(const std::string& key, nlohmann::json value) {
+  std::lock_guard lock(stats_mutex_);
+  notes_[key] = std::move(value);
+}
+
+void Recorder::fail(const std::string& message) {
+  {
+    std::lock_guard lock(stats_mutex_);
+    if (error_.empty()) error_ = message;
+  }
+  failed_ = true;
+}
+
+void Recorder::write_item(const Item& item, std::string& buffer) {
+  const HandFrame& f = item.frame;
+  buffer += format_lmc_row(f, RecordingKind::kRaw);
+  std::lock_guard lock(stats_mutex_);
+  DeviceRecordStats& s = stats_[f.device_id];
+  s.device_id = f.device_id;
+  if (s.frames_written == 0) {
+    s.first_timestamp_us = f.timestamp_us;
+  } else {
+    if (f.timestamp_us - s.last_timestamp_us > config_.gap_threshold_us)
+      s.gaps.push_back({s.last_timestamp_us, f.timestamp_us});
+    auto it = last_frame_id_.find(f.device_id);
+    if (it != last_frame_id_.end() && f.frame_id > it->second + 1) s.frame_id_gaps += f.frame_id - it->second - 1;
+  }
+  last_frame_id_[f.device_id] = f.frame_id;
+  s.last_timestamp_us = f.timestamp_us;
+  ++s.frames_written;
+  if (f.hand_present) ++s.frames_with_hand;
+}
+
+bool Recorder::push_buffer(std::string& buffer) {
+  if (buffer.empty() || failed_) return !failed_;
+  // Count rows only once they reached the file, so "frames written" never overstates.
+  const bool ok = sink_->write(buffer);
+  buffer.clear();
+  if (!ok) {
+    fail("recording stopped: cannot write " + paths_.recording.string() + " (" + sink_->error() +
+         "); the rows written before this point are kept");
+  }
+  return ok;
+}
+
+void Recorder::run() {
+  std::string buffer;
+  buffer.reserve(kWriteChunkBytes + 4096);
+  std::int64_t pending_rows = 0;
+  auto last_push = std::chrono::steady_clock::now();
+  const auto interval = std::chrono::milliseconds(config_.flush_interval_ms);
+  Item item;
+  for (;;) {
+    const bool stopping = stop_requested_.load();
+    int popped = 0;
+    while (queue_.try_pop(item)) {
+      ++popped;
+      if (failed_) continue;  // keep draining so producers are not stuck; nothing more is written
+      write_item(item, buffer);
+      ++pending_rows;
+      if (buffer.size() >= kWriteChunkBytes) {
+        if (push_buffer(buffer)) written_ += pending_rows;
+        pending_rows = 0;
+      }
+    }
+    const auto now = std::chrono::steady_clock::now();
+    if (stopping || now - last_push >= interval) {
+      if (!failed_ && push_buffer(buffer)) written_ += pending_rows;
+      pending_rows = 0;
+      last_push = now;
+    }
+    if (stopping && queue_.size_approx() == 0) break;
+    if (popped == 0) std::this_thread::sleep_for(std::chrono::milliseconds(2));
+  }
+  if (!failed_) {
+    if (!sink_->sync()) fail("recording stopped: " + sink_->error());
+  }
+  if (!sink_->close() && !failed_) fail("recording stopped: " + sink_->error());
+}
+
+RecorderStatus Recorder::stop(const std::vector<std::pair<std::string, std::string>>& serial_to_slot) {
+  if (!started_) return status();
+  stop_requested_ = true;
+  if (thread_.joinable()) thread_.join();
+  {
+    std::lock_guard lock(stats_mutex_);
+    host_stop_utc_ = utc_now_iso8601();
+    host_stop_ns_ = host_now_ns();
+    if (!serial_to_slot.empty()) serial_to_slot_ = serial_to_slot;
+    for (const auto& [serial, slot] : serial_to_slot_) {
+      const int index = config_.layout.find_slot(slot);
+      if (index < 0) continue;
+      auto& s = stats_[index + 1];
+      s.device_id = index + 1;
+      s.slot = slot;
+      s.serial = serial;
+    }
+    for (auto& [id, s] : stats_) {
+      if (s.slot.empty() && id >= 1 && id <= config_.layout.device_count())
+        s.slot = config_.layout.devices[static_cast<size_t>(id - 1)].slot;
+    }
+  }
+  try {
+    write_file_atomically(paths_.sidecar, sidecar_json(failed_ ? "failed" : "completed").dump(2) + "\n");
+  } catch (const std::exception& e) {
+    fail(std::string("cannot write the session sidecar: ") + e.what());
+  }
+  return status();
+}
+
+RecorderStatus Recorder::status() const {
+  RecorderStatus st;
+  st.queue_depth = queue_.size_approx();
+  st.frames_written = written_.load();
+  st.frames_dropped = dropped_.load();
+  std::lock_guard lock(stats_mutex_);
+  st.devices = stats_;
+  st.error = error_;
+  if (failed_) st.state = RecorderState::kFailed;
+  else if (!started_) st.state = RecorderState::kIdle;
+  else if (stop_requested_ && !thread_.joinable()) st.state = RecorderState::kStopped;
+  else st.state = RecorderState::kRecording;
+  return st;
+}
+
+nlohmann::json Recorder::sidecar_json(const char* state) const {
+  std::lock_guard lock(stats_mutex_);
+  nlohmann::json j;
+  j["format"] = "lmc-session";
+  j["format_version"] = 1;
+  j["trial"] = config_.trial;
+  j["status"] = state;
+  j["software"] = {{"name", "lmc-workbench"}, {"version", LMC_VERSION}};
+  j["backend"] = config_.backend;
+  j["recording_file"] = paths_.recording.filename().string();
+  j["recording_format"] = "raw";
+  j["host_start_utc"] = host_start_utc_;
+  j["host_stop_utc"] = host_stop_utc_;
+  j["host_start_ns"] = host_start_ns_;
+  j["host_stop_ns"] = host_stop_ns_;
+  j["layout"] = layout_to_json(config_.layout);
+  nlohmann::json map = nlohmann::json::object();
+  for (const auto& [serial, slot] : serial_to_slot_) map[serial] = slot;
+  j["serial_to_slot"] = map;
+  nlohmann::json devices = nlohmann::json::array();
+  std::int64_t total = 0;
+  for (const auto& [id, s] : stats_) {
+    nlohmann::json gaps = nlohmann::json::array();
+    for (const auto& g : s.gaps)
+      gaps.push_back({{"from_timestamp_us", g.from_timestamp_us},
+                      {"to_timestamp_us", g.to_timestamp_us},
+                      {"duration_ms", static_cast<double>(g.to_timestamp_us - g.from_timestamp_us) / 1000.0}});
+    devices.push_back({{"device_id", id},
+                       {"slot", s.slot},
+                       {"serial", s.serial},
+                       {"frames_written", s.frames_written},
+                       {"frames_with_hand", s.frames_with_hand},
+                       {"frames_dropped_queue", s.frames_dropped_queue},
+                       {"frame_id_gaps", s.frame_id_gaps},
+                       {"first_timestamp_us", s.first_timestamp_us},
+                       {"last_timestamp_us", s.last_timestamp_us},
+                       {"gaps", gaps},
+                       {"disconnects", s.disconnects}});
+    total += s.frames_written;
+  }
+  j["devices"] = devices;
+  j["frames_written"] = total;
+  j["frames_dropped"] = dropped_.load();
+  j["vicon_packets"] = vicon_packets_;
+  j["events"] = events_;
+  if (!error_.empty()) j["error"] = error_;
+  for (const auto& [k, v] : notes_.items()) j[k] = v;
+  if (!config_.extra.empty()) j["extra"] = config_.extra;
+  return j;
+}
+
+}  // namespace lmc::devices

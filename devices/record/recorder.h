@@ -1,0 +1,141 @@
+#pragma once
+// The trial recorder (issue #5): every frame of every device goes to one file in the study's raw
+// format (core/io/lmc_recording.h, so existing tools read it) plus a JSON sidecar describing the
+// session (sessions/README.md). Frames arrive from device threads through a bounded SPSC queue
+// (style.md §5.5); a writer thread of its own formats and writes them, pushing its buffer to
+// the file at least once a second, so a crash loses at most the last second and leaves a
+// readable file. A write error (disk full) stops the recording with a clear message and keeps
+// everything written before it.
+#include <atomic>
+#include <cstdint>
+#include <filesystem>
+#include <functional>
+#include <map>
+#include <memory>
+#include <mutex>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "core/layout/layout.h"
+#include "devices/frame_consumer.h"
+#include "devices/record/byte_sink.h"
+#include "devices/spsc_queue.h"
+
+namespace lmc::devices {
+
+struct RecorderConfig {
+  std::filesystem::path output_dir;
+  std::string trial;  // checked with validate_trial_name
+  Layout layout;
+  std::string backend;
+  size_t queue_capacity = 8192;            // frames (≈17 s of four devices at 120 Hz)
+  std::int64_t flush_interval_ms = 250;     // buffer → file at least this often (≤ 1000)
+  std::int64_t gap_threshold_us = 250'000;  // a device silent this long is a gap in the sidecar
+  // Tests inject failing sinks; default opens the file.
+  std::function<std::unique_ptr<ByteSink>(const std::filesystem::path&)> open_sink;
+  nlohmann::json extra = nlohmann::json::object();  // e.g. the simulator's config and motion
+};
+
+struct SessionPaths {
+  std::filesystem::path recording;  // <dir>/LMC_<trial>.raw.txt
+  std::filesystem::path sidecar;    // <dir>/LMC_<trial>.session.json
+  std::filesystem::path truth_trc;  // <dir>/<trial>.trc (simulator ground truth / Vicon export)
+};
+SessionPaths session_paths(const std::filesystem::path& dir, const std::string& trial);
+
+struct GapRecord {
+  std::int64_t from_timestamp_us = 0;  // last frame before the gap (device clock)
+  std::int64_t to_timestamp_us = 0;    // first frame after it
+};
+
+struct DeviceRecordStats {
+  int device_id = 0;
+  std::string slot;
+  std::string serial;
+  std::int64_t frames_written = 0;
+  std::int64_t frames_with_hand = 0;
+  std::int64_t frames_dropped_queue = 0;   // offered while the queue was full
+  std::int64_t frame_id_gaps = 0;          // frames missing according to the device counter
+  std::int64_t first_timestamp_us = 0;
+  std::int64_t last_timestamp_us = 0;
+  std::vector<GapRecord> gaps;
+  std::vector<nlohmann::json> disconnects;  // {host_time_utc, host_ns, message, reconnected}
+};
+
+enum class RecorderState { kIdle, kRecording, kStopped, kFailed };
+
+struct RecorderStatus {
+  RecorderState state = RecorderState::kIdle;
+  std::string error;  // set when kFailed
+  std::int64_t frames_written = 0;
+  std::int64_t frames_dropped = 0;
+  size_t queue_depth = 0;
+  std::map<int, DeviceRecordStats> devices;  // by device id
+};
+
+class Recorder final : public FrameConsumer {
+ public:
+  explicit Recorder(RecorderConfig config);
+  ~Recorder() override;
+  Recorder(const Recorder&) = delete;
+  Recorder& operator=(const Recorder&) = delete;
+
+  // Creates the files (header + sidecar with status "recording") and starts the writer thread.
+  // Throws lmc::Error for a bad trial name or an uncreatable file.
+  void start();
+  // Drains the queue, writes, syncs and closes the file, writes the final sidecar atomically.
+  // `serial_to_slot` is the hub's final map. Returns the final status (kStopped or kFailed).
+  RecorderStatus stop(const std::vector<std::pair<std::string, std::string>>& serial_to_slot = {});
+
+  RecorderStatus status() const;
+  bool failed() const { return failed_.load(); }
+  const SessionPaths& paths() const { return paths_; }
+
+  // Records a Vicon trigger packet in the sidecar (any thread).
+  void note_vicon_packet(nlohmann::json packet);
+  // Adds a key to the sidecar (any thread, before stop).
+  void note(const std::string& key, nlohmann::json value);
+
+  // FrameConsumer (device threads).
+  bool offer(const HandFrame& frame, std::int64_t host_receive_ns, bool may_wait) override;
+  void device_event(const DeviceEvent& event, int device_id, const std::string& slot) override;
+
+ private:
+  struct Item {
+    HandFrame frame;
+    std::int64_t host_receive_ns = 0;
+  };
+  void run();
+  void write_item(const Item& item, std::string& buffer);
+  bool push_buffer(std::string& buffer);
+  void fail(const std::string& message);
+  nlohmann::json sidecar_json(const char* state) const;
+
+  RecorderConfig config_;
+  SessionPaths paths_;
+  std::unique_ptr<ByteSink> sink_;
+  SpscQueue<Item> queue_;
+  std::mutex producer_mutex_;  // serialises producers (several device threads); never taken by the writer
+  mutable std::mutex stats_mutex_;
+  std::map<int, DeviceRecordStats> stats_;
+  std::map<int, std::int64_t> last_frame_id_;
+  std::vector<nlohmann::json> vicon_packets_;
+  std::vector<nlohmann::json> events_;
+  nlohmann::json notes_ = nlohmann::json::object();
+  std::vector<std::pair<std::string, std::string>> serial_to_slot_;
+  std::string host_start_utc_, host_stop_utc_;
+  std::int64_t host_start_ns_ = 0, host_stop_ns_ = 0;
+  std::string error_;
+  std::atomic<bool> failed_{false};
+  std::atomic<bool> stop_requested_{false};
+  std::atomic<bool> started_{false};
+  std::atomic<std::int64_t> dropped_{0};
+  std::atomic<std::int64_t> written_{0};
+  std::thread thread_;
+};
+
+const char* recorder_state_name(RecorderState s);
+
+}  // namespace lmc::devices

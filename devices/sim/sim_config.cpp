@@ -1,0 +1,172 @@
+#include "devices/sim/sim_config.h"
+
+#include <filesystem>
+#include <nlohmann/json.hpp>
+
+#include "core/common/error.h"
+#include "core/io/json_checked.h"
+
+namespace lmc::devices {
+namespace {
+
+const char* calibration_name(SimConfig::Calibration c) {
+  switch (c) {
+    case SimConfig::Calibration::kLayout: return "layout";
+    case SimConfig::Calibration::kNone: return "none";
+    case SimConfig::Calibration::kCustom: return "custom";
+  }
+  return "layout";
+}
+
+}  // namespace
+
+void apply_motion_spec(SimConfig& c, const std::string& spec) {
+  std::string m = spec;
+  for (const char* prefix : {"horizontal/", "horizontal-", "vertical/", "vertical-"}) {
+    const std::string p = prefix;
+    if (m.rfind(p, 0) == 0) {
+      c.orientation = p[0] == 'h' ? HandOrientation::kHorizontal : HandOrientation::kVertical;
+      m = m.substr(p.size());
+      break;
+    }
+  }
+  if (m == "static" || m == "open") c.motion = HandMotion::kOpen;
+  else if (m == "index") c.motion = HandMotion::kIndexFlexion;
+  else if (m == "thumb") c.motion = HandMotion::kThumbFlexion;
+  else if (m == "wrist" || m == "wrist-flexion") c.motion = HandMotion::kWristFlexion;
+  else if (m == "wrist-extension") c.motion = HandMotion::kWristExtension;
+  else if (std::filesystem::exists(spec)) {
+    c.pose_set_path = spec;
+    return;
+  } else {
+    throw Error("unknown motion '" + spec +
+                "': use static, index, thumb or wrist (optionally horizontal/… or vertical/…), or a pose-set file");
+  }
+  c.pose_set_path.clear();
+}
+
+std::string motion_spec(const SimConfig& c) {
+  if (!c.pose_set_path.empty()) return c.pose_set_path;
+  std::string m;
+  switch (c.motion) {
+    case HandMotion::kOpen: m = "static"; break;
+    case HandMotion::kIndexFlexion: m = "index"; break;
+    case HandMotion::kThumbFlexion: m = "thumb"; break;
+    case HandMotion::kWristFlexion: m = "wrist"; break;
+    case HandMotion::kWristExtension: m = "wrist-extension"; break;
+  }
+  return std::string(orientation_name(c.orientation)) + "/" + m;
+}
+
+SimConfig sim_config_from_json(const nlohmann::json& j, const std::string& source) {
+  SimConfig c;
+  JsonReader r(j, source);
+  r.require_object();
+  if (r.has("seed")) c.seed = static_cast<std::uint64_t>(r.at("seed").integer());
+  if (r.has("motion")) {
+    try {
+      apply_motion_spec(c, r.string("motion"));
+    } catch (const Error& e) {
+      r.at("motion").fail(e.what());
+    }
+  }
+  c.pose_set_rate_hz = r.number_or("pose_set_rate_hz", c.pose_set_rate_hz);
+  c.motion_period_s = r.number_or("motion_period_s", c.motion_period_s);
+  c.sway_mm = r.number_or("sway_mm", c.sway_mm);
+  c.hand_length_mm = r.number_or("hand_length_mm", c.hand_length_mm);
+  c.hand_breadth_mm = r.number_or("hand_breadth_mm", c.hand_breadth_mm);
+  c.rate_min_hz = r.number_or("rate_min_hz", c.rate_min_hz);
+  c.rate_max_hz = r.number_or("rate_max_hz", c.rate_max_hz);
+  c.rate_wander = r.number_or("rate_wander", c.rate_wander);
+  c.latency_min_ms = r.number_or("latency_min_ms", c.latency_min_ms);
+  c.latency_max_ms = r.number_or("latency_max_ms", c.latency_max_ms);
+  if (r.has("noise")) c.noise = r.at("noise").boolean();
+  c.noise_sigma_mm = r.number_or("noise_sigma_mm", c.noise_sigma_mm);
+  if (r.has("fov_test")) c.fov_test = r.at("fov_test").boolean();
+  c.range_mm = r.number_or("range_mm", c.range_mm);
+  if (r.has("occlusion")) c.occlusion = r.at("occlusion").boolean();
+  c.phalanx_radius_mm = r.number_or("phalanx_radius_mm", c.phalanx_radius_mm);
+  c.internal_model_bias = r.number_or("internal_model_bias", c.internal_model_bias);
+  if (r.has("axis_cut")) c.axis_cut = r.at("axis_cut").boolean();
+  c.axis_cut_mm = r.number_or("axis_cut_mm", c.axis_cut_mm);
+  if (r.has("elbow_error")) c.elbow_error = r.at("elbow_error").boolean();
+  c.elbow_error_min_mm = r.number_or("elbow_error_min_mm", c.elbow_error_min_mm);
+  c.elbow_error_max_mm = r.number_or("elbow_error_max_mm", c.elbow_error_max_mm);
+  if (r.has("calibration")) {
+    const std::string cal = r.string("calibration");
+    if (cal == "layout") c.calibration = SimConfig::Calibration::kLayout;
+    else if (cal == "none") c.calibration = SimConfig::Calibration::kNone;
+    else if (cal == "custom") c.calibration = SimConfig::Calibration::kCustom;
+    else r.at("calibration").fail("expected \"layout\", \"none\" or \"custom\"");
+  }
+  if (r.has("calibration_offsets_mm")) {
+    JsonReader offs = r.at("calibration_offsets_mm");
+    offs.require_object();
+    for (const auto& [slot, v] : offs.json().items()) {
+      JsonReader e = offs.at(slot.c_str());
+      if (e.array_size() != 3) e.fail("expected [x, y, z]");
+      c.calibration_offsets_mm[slot] = {e.at(size_t{0}).number(), e.at(size_t{1}).number(), e.at(size_t{2}).number()};
+    }
+  }
+  if (r.has("unplugs")) {
+    JsonReader u = r.at("unplugs");
+    for (size_t i = 0; i < u.array_size(); ++i) {
+      JsonReader e = u.at(i);
+      c.unplugs.push_back({e.string("slot"), e.number("at_s"), e.number_or("duration_s", 1.0)});
+    }
+  }
+  c.serial_prefix = r.string_or("serial_prefix", c.serial_prefix);
+  c.truth_rate_hz = r.number_or("truth_rate_hz", c.truth_rate_hz);
+  if (r.has("device_clock_start_us"))
+    c.device_clock_start_us = static_cast<std::int64_t>(r.number("device_clock_start_us"));
+  if (!(c.rate_min_hz > 0) || c.rate_max_hz < c.rate_min_hz) r.fail("rate_min_hz must be > 0 and ≤ rate_max_hz");
+  if (c.latency_max_ms < c.latency_min_ms || c.latency_min_ms < 0) r.fail("latency_min_ms must be ≥ 0 and ≤ latency_max_ms");
+  if (c.elbow_error_max_mm < c.elbow_error_min_mm) r.fail("elbow_error_min_mm must be ≤ elbow_error_max_mm");
+  if (!(c.truth_rate_hz > 0)) r.at("truth_rate_hz").fail("must be > 0");
+  if (!(c.motion_period_s > 0)) r.at("motion_period_s").fail("must be > 0");
+  if (!(c.pose_set_rate_hz > 0)) r.at("pose_set_rate_hz").fail("must be > 0");
+  return c;
+}
+
+nlohmann::json sim_config_to_json(const SimConfig& c) {
+  nlohmann::json j;
+  j["seed"] = c.seed;
+  j["motion"] = motion_spec(c);
+  j["pose_set_rate_hz"] = c.pose_set_rate_hz;
+  j["motion_period_s"] = c.motion_period_s;
+  j["sway_mm"] = c.sway_mm;
+  j["hand_length_mm"] = c.hand_length_mm;
+  j["hand_breadth_mm"] = c.hand_breadth_mm;
+  j["rate_min_hz"] = c.rate_min_hz;
+  j["rate_max_hz"] = c.rate_max_hz;
+  j["rate_wander"] = c.rate_wander;
+  j["latency_min_ms"] = c.latency_min_ms;
+  j["latency_max_ms"] = c.latency_max_ms;
+  j["noise"] = c.noise;
+  j["noise_sigma_mm"] = c.noise_sigma_mm;
+  j["fov_test"] = c.fov_test;
+  j["range_mm"] = c.range_mm;
+  j["occlusion"] = c.occlusion;
+  j["phalanx_radius_mm"] = c.phalanx_radius_mm;
+  j["internal_model_bias"] = c.internal_model_bias;
+  j["axis_cut"] = c.axis_cut;
+  j["axis_cut_mm"] = c.axis_cut_mm;
+  j["elbow_error"] = c.elbow_error;
+  j["elbow_error_min_mm"] = c.elbow_error_min_mm;
+  j["elbow_error_max_mm"] = c.elbow_error_max_mm;
+  j["calibration"] = calibration_name(c.calibration);
+  nlohmann::json offs = nlohmann::json::object();
+  for (const auto& [slot, v] : c.calibration_offsets_mm) offs[slot] = {v.x(), v.y(), v.z()};
+  j["calibration_offsets_mm"] = offs;
+  nlohmann::json unplugs = nlohmann::json::array();
+  for (const auto& u : c.unplugs) unplugs.push_back({{"slot", u.slot}, {"at_s", u.at_s}, {"duration_s", u.duration_s}});
+  j["unplugs"] = unplugs;
+  j["serial_prefix"] = c.serial_prefix;
+  j["truth_rate_hz"] = c.truth_rate_hz;
+  j["device_clock_start_us"] = c.device_clock_start_us;
+  return j;
+}
+
+SimConfig load_sim_config(const std::string& path) { return sim_config_from_json(read_json_file(path), path); }
+
+}  // namespace lmc::devices

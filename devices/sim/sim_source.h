@@ -1,0 +1,49 @@
+#pragma once
+// Plays a SimRig as live devices: a thread delivers each event when its simulated time comes
+// (speed 1 = real time, 4 = four times faster) or as fast as the sink takes them (speed 0; not
+// hardware-paced, so realtime() is false and the hub may apply back-pressure).
+#include <atomic>
+#include <cstdint>
+#include <memory>
+#include <mutex>
+#include <thread>
+
+#include "devices/frame_source.h"
+#include "devices/sim/sim_rig.h"
+
+namespace lmc::devices {
+
+struct SimSourceOptions {
+  double speed = 1.0;       // 0: as fast as possible
+  double duration_s = 0.0;  // 0: forever
+};
+
+class SimSource final : public FrameSource {
+ public:
+  SimSource(Layout layout, SimConfig config, SimSourceOptions options = {});
+  ~SimSource() override;
+
+  std::string backend_name() const override { return "sim"; }
+  void start(FrameSink& sink) override;
+  void stop() override;
+  bool realtime() const override { return options_.speed > 0; }
+  bool finished() const override { return finished_.load(); }
+
+  const std::vector<DeviceInfo>& devices() const { return rig_->devices(); }
+  // Simulated seconds delivered so far.
+  double simulated_time_s() const { return sim_time_s_.load(); }
+  // Ground truth collected at the truth rate for the delivered span (call after stop()).
+  std::vector<HandFrame> truth_until(double seconds) const;
+  const SimRig& rig() const { return *rig_; }
+
+ private:
+  void run(FrameSink& sink);
+  std::unique_ptr<SimRig> rig_;
+  SimSourceOptions options_;
+  std::atomic<bool> stop_{false};
+  std::atomic<bool> finished_{false};
+  std::atomic<double> sim_time_s_{0};
+  std::thread thread_;
+};
+
+}  // namespace lmc::devices

@@ -1,0 +1,189 @@
+#include "devices/vicon/vicon_trigger.h"
+
+#include <arpa/inet.h>
+#include <netdb.h>
+#include <netinet/in.h>
+#include <poll.h>
+#include <sys/socket.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <chrono>
+#include <cstring>
+#include <set>
+
+#include "core/common/error.h"
+
+namespace lmc::devices {
+namespace {
+
+bool looks_numeric(const std::string& host) {
+  return !host.empty() && host.find_first_not_of("0123456789.") == std::string::npos;
+}
+
+}  // namespace
+
+ViconTriggerConfig parse_vicon_target(const std::string& spec) {
+  ViconTriggerConfig c;
+  const size_t colon = spec.rfind(':');
+  c.host = spec.substr(0, colon);
+  if (colon != std::string::npos) {
+    const std::string port = spec.substr(colon + 1);
+    int value = -1;
+    try {
+      size_t used = 0;
+      value = std::stoi(port, &used);
+      if (used != port.size()) value = -1;
+    } catch (const std::exception&) {
+      value = -1;
+    }
+    if (value <= 0 || value > 65535) throw Error("--vicon: '" + port + "' is not a UDP port (1-65535)");
+    c.port = static_cast<std::uint16_t>(value);
+  }
+  if (c.host.empty()) throw Error("--vicon: no host given (HOST or HOST:PORT)");
+  return c;
+}
+
+ViconTrigger::ViconTrigger(ViconTriggerConfig config) : config_(std::move(config)) {
+  addrinfo hints{};
+  hints.ai_family = AF_INET;
+  hints.ai_socktype = SOCK_DGRAM;
+  // Dotted numbers are never sent to a resolver: a typo such as 300.1.1.1 fails here.
+  if (looks_numeric(config_.host)) hints.ai_flags = AI_NUMERICHOST;
+  addrinfo* res = nullptr;
+  const std::string port = std::to_string(config_.port);
+  if (const int rc = getaddrinfo(config_.host.c_str(), port.c_str(), &hints, &res); rc != 0 || res == nullptr)
+    throw Error("Vicon trigger: cannot resolve host '" + config_.host + "': " + gai_strerror(rc));
+  sockaddr_in addr{};
+  std::memcpy(&addr, res->ai_addr, sizeof addr);
+  freeaddrinfo(res);
+  fd_ = ::socket(AF_INET, SOCK_DGRAM | SOCK_CLOEXEC, 0);
+  if (fd_ < 0) throw Error(std::string("Vicon trigger: cannot open a UDP socket: ") + std::strerror(errno));
+  const std::uint32_t ip = ntohl(addr.sin_addr.s_addr);
+  broadcast_ = ip == 0xFFFFFFFFu || (ip & 0xFFu) == 0xFFu;
+  if (broadcast_) {
+    const int on = 1;
+    if (setsockopt(fd_, SOL_SOCKET, SO_BROADCAST, &on, sizeof on) != 0) {
+      const std::string why = std::strerror(errno);
+      ::close(fd_);
+      throw Error("Vicon trigger: cannot enable broadcast: " + why);
+    }
+  }
+  if (::connect(fd_, reinterpret_cast<const sockaddr*>(&addr), sizeof addr) != 0) {
+    const std::string why = std::strerror(errno);
+    ::close(fd_);
+    throw Error("Vicon trigger: cannot reach " + target() + ": " + why);
+  }
+  if (config_.first_packet_id) {
+    next_id_ = *config_.first_packet_id;
+  } else {
+    // Seconds since epoch × 10 keeps IDs growing across sessions (field-notes §4.1).
+    const auto secs = std::chrono::duration_cast<std::chrono::seconds>(
+                          std::chrono::system_clock::now().time_since_epoch())
+                          .count();
+    next_id_ = static_cast<std::uint32_t>((secs * 10) & 0x7FFFFFFF);
+  }
+}
+
+ViconTrigger::~ViconTrigger() {
+  if (fd_ >= 0) ::close(fd_);
+}
+
+std::string ViconTrigger::target() const { return config_.host + ":" + std::to_string(config_.port); }
+
+ViconSendResult ViconTrigger::send_start(const std::string& trial_name) {
+  ViconMessage m;
+  m.type = ViconMessage::Type::kStart;
+  m.name = trial_name;
+  m.notes = config_.notes;
+  m.description = config_.description;
+  m.database_path = config_.database_path;
+  m.delay_ms = config_.delay_ms;
+  return send(std::move(m));
+}
+
+ViconSendResult ViconTrigger::send_stop(const std::string& trial_name, bool cancel) {
+  ViconMessage m;
+  m.type = ViconMessage::Type::kStop;
+  m.name = trial_name;
+  m.database_path = config_.database_path;
+  m.delay_ms = config_.delay_ms;
+  m.result = cancel ? "CANCEL" : "SUCCESS";
+  return send(std::move(m));
+}
+
+ViconSendResult ViconTrigger::send(ViconMessage message) {
+  message.packet_id = next_id_++;
+  ViconSendResult result;
+  const std::string payload = format_vicon_message(message);
+  result.message = std::move(message);
+  for (int i = 0; i < std::max(1, config_.repeats); ++i) {
+    if (i > 0 && config_.repeat_interval_ms > 0)
+      std::this_thread::sleep_for(std::chrono::milliseconds(config_.repeat_interval_ms));
+    ssize_t n = -1;
+    do {
+      n = ::send(fd_, payload.data(), payload.size(), 0);
+    } while (n < 0 && errno == EINTR);
+    if (n < 0) {
+      result.error = "Vicon trigger: sending to " + target() + " failed: " + std::strerror(errno);
+      return result;
+    }
+    if (static_cast<size_t>(n) != payload.size()) {
+      result.error = "Vicon trigger: short send to " + target();
+      return result;
+    }
+    ++result.datagrams_sent;
+  }
+  return result;
+}
+
+ViconListener::ViconListener(const std::string& bind_address, std::uint16_t port, Callback callback)
+    : callback_(std::move(callback)) {
+  fd_ = ::socket(AF_INET, SOCK_DGRAM | SOCK_CLOEXEC, 0);
+  if (fd_ < 0) throw Error(std::string("Vicon listener: cannot open a UDP socket: ") + std::strerror(errno));
+  const int on = 1;
+  setsockopt(fd_, SOL_SOCKET, SO_REUSEADDR, &on, sizeof on);
+  sockaddr_in addr{};
+  addr.sin_family = AF_INET;
+  addr.sin_port = htons(port);
+  if (inet_pton(AF_INET, bind_address.c_str(), &addr.sin_addr) != 1) {
+    ::close(fd_);
+    throw Error("Vicon listener: '" + bind_address + "' is not an IPv4 address");
+  }
+  if (::bind(fd_, reinterpret_cast<const sockaddr*>(&addr), sizeof addr) != 0) {
+    const std::string why = std::strerror(errno);
+    ::close(fd_);
+    throw Error("Vicon listener: cannot listen on " + bind_address + ":" + std::to_string(port) + ": " + why);
+  }
+  socklen_t len = sizeof addr;
+  getsockname(fd_, reinterpret_cast<sockaddr*>(&addr), &len);
+  port_ = ntohs(addr.sin_port);
+  thread_ = std::thread([this] { run(); });
+}
+
+ViconListener::~ViconListener() {
+  stop_ = true;
+  if (thread_.joinable()) thread_.join();
+  if (fd_ >= 0) ::close(fd_);
+}
+
+void ViconListener::run() {
+  std::set<std::uint32_t> seen;
+  char buf[65536];
+  while (!stop_) {
+    pollfd p{fd_, POLLIN, 0};
+    if (::poll(&p, 1, 50) <= 0) continue;
+    const ssize_t n = ::recv(fd_, buf, sizeof buf, 0);
+    if (n <= 0) continue;
+    ++received_;
+    auto m = parse_vicon_message(std::string_view(buf, static_cast<size_t>(n)));
+    if (!m) {
+      ++rejected_;
+      continue;
+    }
+    if (!seen.insert(m->packet_id).second) continue;  // a repeat
+    callback_(*m);
+  }
+}
+
+}  // namespace lmc::devices

@@ -1,0 +1,174 @@
+// Device hub: serial → slot mapping, statistics, snapshots, fan-out (issue #5).
+#include <atomic>
+#include <gtest/gtest.h>
+
+#include "devices/device_hub.h"
+
+namespace lmc::devices {
+namespace {
+
+Layout four_slots(std::optional<std::string> lmc3_serial = std::nullopt) {
+  Layout l;
+  l.name = "test";
+  for (int i = 1; i <= 4; ++i) {
+    LayoutDevice d;
+    d.slot = "LMC" + std::to_string(i);
+    d.pose.x_mm = 10.0 * i;
+    l.devices.push_back(d);
+  }
+  l.devices[2].serial = lmc3_serial;
+  return l;
+}
+
+DeviceEvent appeared(const std::string& serial) {
+  DeviceEvent e;
+  e.kind = DeviceEventKind::kAppeared;
+  e.info = {serial, "test", "fake"};
+  return e;
+}
+
+SourceFrame frame(const std::string& serial, std::int64_t id, std::int64_t host_ns, bool hand = true) {
+  SourceFrame f;
+  f.serial = serial;
+  f.frame.frame_id = id;
+  f.frame.timestamp_us = host_ns / 1000;
+  f.frame.hand_present = hand;
+  f.host_receive_ns = host_ns;
+  f.hand_type = HandType::kRight;
+  return f;
+}
+
+struct CollectingConsumer : FrameConsumer {
+  std::vector<HandFrame> frames;
+  std::vector<std::pair<int, DeviceEventKind>> events;
+  bool accept = true;
+  bool offer(const HandFrame& f, std::int64_t, bool) override {
+    if (accept) frames.push_back(f);
+    return accept;
+  }
+  void device_event(const DeviceEvent& e, int id, const std::string&) override { events.emplace_back(id, e.kind); }
+};
+
+TEST(DeviceHub, BoundSerialGoesToItsSlotOthersFillFreeSlotsInOrder) {
+  DeviceHub hub(four_slots("LP-333"));
+  hub.on_device_event(appeared("A1"));
+  hub.on_device_event(appeared("LP-333"));
+  hub.on_device_event(appeared("B2"));
+  const auto map = hub.serial_to_slot();
+  ASSERT_EQ(map.size(), 3u);
+  EXPECT_EQ(map[0], (std::pair<std::string, std::string>{"A1", "LMC1"}));
+  EXPECT_EQ(map[1], (std::pair<std::string, std::string>{"B2", "LMC2"}));
+  EXPECT_EQ(map[2], (std::pair<std::string, std::string>{"LP-333", "LMC3"}));
+}
+
+TEST(DeviceHub, UnknownSerialsAreListedForAssignmentWhenAutoAssignIsOff) {
+  HubOptions o;
+  o.auto_assign = false;
+  DeviceHub hub(four_slots("LP-333"), o);
+  CollectingConsumer c;
+  hub.set_consumer(&c);
+  hub.on_device_event(appeared("X9"));
+  hub.on_frame(frame("X9", 1, 1000));
+  auto snap = hub.snapshot();
+  ASSERT_EQ(snap.unassigned_serials, std::vector<std::string>{"X9"});
+  EXPECT_TRUE(c.frames.empty()) << "an unassigned device must never be recorded into a slot";
+  bool told = false;
+  for (const auto& m : hub.take_messages()) told = told || m.find("assign it to a slot") != std::string::npos;
+  EXPECT_TRUE(told);
+
+  EXPECT_NE(hub.assign("X9", "LMC9"), "");
+  EXPECT_NE(hub.assign("nobody", "LMC1"), "");
+  EXPECT_EQ(hub.assign("X9", "LMC2"), "");
+  hub.on_frame(frame("X9", 2, 2000));
+  ASSERT_EQ(c.frames.size(), 1u);
+  EXPECT_EQ(c.frames[0].device_id, 2);
+  snap = hub.snapshot();
+  EXPECT_TRUE(snap.unassigned_serials.empty());
+  EXPECT_EQ(snap.devices[0].slot, "LMC2");
+  EXPECT_EQ(hub.layout().devices[1].serial, std::optional<std::string>("X9"));
+}
+
+TEST(DeviceHub, ReassigningASlotUnassignsItsPreviousDevice) {
+  DeviceHub hub(four_slots());
+  hub.on_device_event(appeared("A"));
+  hub.on_device_event(appeared("B"));
+  EXPECT_EQ(hub.assign("B", "LMC1"), "");
+  auto snap = hub.snapshot();
+  ASSERT_EQ(snap.unassigned_serials, std::vector<std::string>{"A"});
+}
+
+TEST(DeviceHub, RateIsFramesInTheLastSecondAndAgeComesFromTheClock) {
+  std::atomic<std::int64_t> now{0};
+  HubOptions o;
+  o.clock = [&] { return now.load(); };
+  DeviceHub hub(four_slots(), o);
+  hub.on_device_event(appeared("A"));
+  // 30 frames over 1.5 s (every 50 ms): the last second holds 20 of them (t = 0.55 … 1.5 s).
+  for (int i = 0; i < 30; ++i) hub.on_frame(frame("A", 100 + i, (i + 1) * 50'000'000LL));
+  now = 1'500'000'000LL + 10'000'000LL;
+  const auto snap = hub.snapshot();
+  ASSERT_EQ(snap.devices.size(), 1u);
+  const DeviceStatus& s = snap.devices[0];
+  EXPECT_DOUBLE_EQ(s.rate_hz, 20.0);
+  EXPECT_NEAR(s.latest_frame_age_ms, 10.0, 1e-9);
+  EXPECT_EQ(s.frames_received, 30);
+  EXPECT_TRUE(s.hand_present);
+  EXPECT_EQ(s.hand_type, HandType::kRight);
+  ASSERT_TRUE(s.latest.has_value());
+  EXPECT_EQ(s.latest->frame_id, 129);
+  EXPECT_EQ(s.latest->device_id, 1);
+}
+
+TEST(DeviceHub, FrameIdGapsAndServiceDropsCountAsDropped) {
+  DeviceHub hub(four_slots());
+  hub.on_device_event(appeared("A"));
+  hub.on_frame(frame("A", 10, 1));
+  hub.on_frame(frame("A", 11, 2));
+  hub.on_frame(frame("A", 15, 3));  // 12, 13, 14 never arrived
+  DeviceEvent drop;
+  drop.kind = DeviceEventKind::kDroppedFrames;
+  drop.info.serial = "A";
+  drop.count = 2;
+  hub.on_device_event(drop);
+  EXPECT_EQ(hub.snapshot().devices[0].frames_dropped, 5);
+}
+
+TEST(DeviceHub, RecorderRefusalsAreCountedPerDevice) {
+  DeviceHub hub(four_slots());
+  CollectingConsumer c;
+  c.accept = false;
+  hub.set_consumer(&c);
+  hub.on_frame(frame("A", 1, 1));
+  hub.on_frame(frame("A", 2, 2));
+  EXPECT_EQ(hub.snapshot().devices[0].frames_dropped_recorder, 2);
+}
+
+TEST(DeviceHub, LostDeviceIsMarkedAndTheOperatorTold) {
+  DeviceHub hub(four_slots());
+  CollectingConsumer c;
+  hub.set_consumer(&c);
+  hub.on_device_event(appeared("A"));
+  hub.on_device_event(appeared("B"));
+  hub.take_messages();
+  DeviceEvent lost;
+  lost.kind = DeviceEventKind::kLost;
+  lost.info.serial = "B";
+  hub.on_device_event(lost);
+  auto snap = hub.snapshot();
+  EXPECT_FALSE(snap.devices[1].connected);
+  EXPECT_EQ(snap.devices[1].disconnects, 1);
+  auto msgs = hub.take_messages();
+  ASSERT_EQ(msgs.size(), 1u);
+  EXPECT_EQ(msgs[0], "LMC2 (B) disconnected");
+  hub.on_device_event(appeared("B"));
+  EXPECT_TRUE(hub.snapshot().devices[1].connected);
+  EXPECT_EQ(hub.snapshot().devices[1].slot, "LMC2") << "a re-plug keeps its slot (keyed by serial)";
+  msgs = hub.take_messages();
+  ASSERT_EQ(msgs.size(), 1u);
+  EXPECT_EQ(msgs[0], "LMC2 (B) reconnected");
+  ASSERT_EQ(c.events.size(), 4u);
+  EXPECT_EQ(c.events[2], (std::pair<int, DeviceEventKind>{2, DeviceEventKind::kLost}));
+}
+
+}  // namespace
+}  // namespace lmc::devices

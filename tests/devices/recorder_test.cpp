@@ -1,0 +1,317 @@
+// Recorder: loss-free recording, unplug, disk error, flushing, sidecar (issue #5).
+#include <atomic>
+#include <cerrno>
+#include <cstring>
+#include <fstream>
+#include <map>
+#include <thread>
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include "core/common/error.h"
+#include "core/io/layout_json.h"
+#include "core/io/lmc_recording.h"
+#include "devices/device_hub.h"
+#include "devices/record/recorder.h"
+#include "devices/record/trial_name.h"
+#include "devices/sim/sim_rig.h"
+#include "tests/support/reference_data.h"
+
+namespace lmc::devices {
+namespace {
+
+Layout paper_initial() { return load_layout(test::asset_file("layouts/paper-initial.json")); }
+
+std::map<int, std::int64_t> rows_per_device(const std::filesystem::path& file) {
+  std::map<int, std::int64_t> out;
+  for (const auto& r : read_lmc_recording(file).rows) ++out[r.device_id];
+  return out;
+}
+
+nlohmann::json read_json(const std::filesystem::path& p) {
+  std::ifstream in(p);
+  return nlohmann::json::parse(in);
+}
+
+// Plays a generated trial into the hub from the calling thread, as fast as it goes.
+void play(const SimTrial& trial, DeviceHub& hub) {
+  for (const auto& e : trial.events) {
+    if (e.is_frame) hub.on_frame(e.frame);
+    else hub.on_device_event(e.event);
+  }
+}
+
+TEST(TrialName, OnlySafeNamesBecomeFileNames) {
+  EXPECT_EQ(validate_trial_name("Naiv_Static101"), "");
+  EXPECT_EQ(validate_trial_name("s01-opt-index_3"), "");
+  for (const std::string& bad : std::vector<std::string>{"", "../etc", "a b", "x/y", "%s%n", "-rf", "trial.txt", "é", std::string(65, 'a')})
+    EXPECT_NE(validate_trial_name(bad), "") << bad;
+  EXPECT_THROW(session_paths("/tmp", "../../x"), Error);
+  const auto p = session_paths("/data", "Naiv_Static101");
+  EXPECT_EQ(p.recording, std::filesystem::path("/data/LMC_Naiv_Static101.raw.txt"));
+  EXPECT_EQ(p.truth_trc, std::filesystem::path("/data/Naiv_Static101.trc"));
+}
+
+TEST(Recorder, FourDevicesAt120HzFor60sLoseNoFrame) {
+  SimConfig sim;
+  sim.seed = 7;
+  sim.rate_min_hz = sim.rate_max_hz = 120.0;
+  // A still hand with visibility off keeps the 28 800-frame generation quick; not under test here.
+  sim.fov_test = sim.occlusion = false;
+  sim.sway_mm = 0;
+  const SimTrial trial = generate_sim_trial(paper_initial(), sim, 60.0);
+  std::int64_t emitted = 0;
+  for (const auto& [serial, n] : trial.frame_counts()) emitted += n;
+  ASSERT_NEAR(static_cast<double>(emitted), 4 * 120 * 60, 8);
+
+  const auto dir = test::scratch_dir("rec_lossfree");
+  HubOptions ho;
+  ho.backpressure = true;  // simulated time: the producer is not hardware-paced
+  DeviceHub hub(paper_initial(), ho);
+  RecorderConfig rc;
+  rc.output_dir = dir;
+  rc.trial = "lossfree";
+  rc.layout = paper_initial();
+  rc.backend = "sim";
+  rc.queue_capacity = 1024;  // small on purpose: the producer outruns the disk and must wait
+  Recorder rec(rc);
+  rec.start();
+  hub.set_consumer(&rec);
+  play(trial, hub);
+  hub.set_consumer(nullptr);
+  const RecorderStatus st = rec.stop(hub.serial_to_slot());
+  ASSERT_EQ(st.state, RecorderState::kStopped) << st.error;
+  EXPECT_EQ(st.frames_dropped, 0);
+  EXPECT_EQ(st.frames_written, emitted);
+
+  const auto rows = rows_per_device(rec.paths().recording);
+  const auto counts = trial.frame_counts();
+  const auto map = hub.serial_to_slot();
+  ASSERT_EQ(map.size(), 4u);
+  for (const auto& [serial, slot] : map) {
+    const int id = paper_initial().find_slot(slot) + 1;
+    std::int64_t n = 0;
+    for (const auto& [s, c] : counts)
+      if (s == serial) n = c;
+    EXPECT_EQ(rows.at(id), n) << slot;
+  }
+  const auto side = read_json(rec.paths().sidecar);
+  EXPECT_EQ(side["status"], "completed");
+  EXPECT_EQ(side["frames_written"].get<std::int64_t>(), emitted);
+  EXPECT_EQ(side["frames_dropped"].get<std::int64_t>(), 0);
+  ASSERT_EQ(side["devices"].size(), 4u);
+  for (const auto& d : side["devices"]) {
+    EXPECT_EQ(d["frames_written"].get<std::int64_t>(), rows.at(d["device_id"].get<int>()));
+    EXPECT_TRUE(d["gaps"].empty());
+    EXPECT_EQ(d["frame_id_gaps"], 0);
+  }
+}
+
+TEST(Recorder, ConcurrentRealtimeProducersWithRoomLoseNothing) {
+  const auto dir = test::scratch_dir("rec_mt");
+  RecorderConfig rc;
+  rc.output_dir = dir;
+  rc.trial = "mt";
+  rc.layout = paper_initial();
+  rc.queue_capacity = 20000;
+  Recorder rec(rc);
+  rec.start();
+  constexpr int kPerDevice = 3000;
+  std::vector<std::thread> producers;
+  std::atomic<int> refused{0};
+  for (int d = 1; d <= 4; ++d) {
+    producers.emplace_back([&, d] {
+      for (int i = 0; i < kPerDevice; ++i) {
+        HandFrame f;
+        f.device_id = d;
+        f.frame_id = i;
+        f.timestamp_us = 1000 + i * 8333LL;
+        f.hand_present = (i % 3) != 0;
+        for (int p = 0; p < kNumHandPoints; ++p) f.point(p) = Vec3(p, d, i);
+        if (!rec.offer(f, i, false)) ++refused;
+      }
+    });
+  }
+  for (auto& t : producers) t.join();
+  const auto st = rec.stop();
+  EXPECT_EQ(refused.load(), 0);
+  const auto rows = rows_per_device(rec.paths().recording);
+  for (int d = 1; d <= 4; ++d) EXPECT_EQ(rows.at(d), kPerDevice);
+  // Each device's rows stay in its own order.
+  std::map<int, std::int64_t> last;
+  for (const auto& r : read_lmc_recording(rec.paths().recording).rows) {
+    if (last.count(r.device_id)) {
+      EXPECT_EQ(r.frame_id, last[r.device_id] + 1);
+    }
+    last[r.device_id] = r.frame_id;
+  }
+  EXPECT_EQ(st.frames_written, 4 * kPerDevice);
+}
+
+TEST(Recorder, UnpluggedDeviceLeavesTheFileIntactWithTheGapRecorded) {
+  SimConfig sim;
+  sim.seed = 3;
+  sim.unplugs.push_back({"LMC2", 1.0, 0.8});
+  const SimTrial trial = generate_sim_trial(paper_initial(), sim, 3.0);
+  const auto dir = test::scratch_dir("rec_unplug");
+  HubOptions ho;
+  ho.backpressure = true;
+  DeviceHub hub(paper_initial(), ho);
+  RecorderConfig rc;
+  rc.output_dir = dir;
+  rc.trial = "unplug";
+  rc.layout = paper_initial();
+  Recorder rec(rc);
+  rec.start();
+  hub.set_consumer(&rec);
+  play(trial, hub);
+  hub.set_consumer(nullptr);
+  const auto st = rec.stop(hub.serial_to_slot());
+  ASSERT_EQ(st.state, RecorderState::kStopped) << st.error;
+
+  // The operator is told.
+  bool told = false;
+  for (const auto& m : hub.take_messages()) told = told || (m.find("LMC2") != std::string::npos && m.find("disconnected") != std::string::npos);
+  EXPECT_TRUE(told);
+  // The file holds every frame of every device, LMC2 included before and after the gap.
+  const auto rows = rows_per_device(rec.paths().recording);
+  std::int64_t emitted = 0;
+  for (const auto& [s, n] : trial.frame_counts()) emitted += n;
+  std::int64_t written = 0;
+  for (const auto& [id, n] : rows) written += n;
+  EXPECT_EQ(written, emitted);
+  const auto side = read_json(rec.paths().sidecar);
+  const nlohmann::json* lmc2 = nullptr;
+  for (const auto& d : side["devices"])
+    if (d["slot"] == "LMC2") lmc2 = &d;
+  ASSERT_NE(lmc2, nullptr);
+  ASSERT_EQ((*lmc2)["gaps"].size(), 1u);
+  const double gap_ms = (*lmc2)["gaps"][0]["duration_ms"].get<double>();
+  EXPECT_GT(gap_ms, 750.0);
+  EXPECT_LT(gap_ms, 950.0);
+  ASSERT_EQ((*lmc2)["disconnects"].size(), 1u);
+  EXPECT_TRUE((*lmc2)["disconnects"][0].contains("reconnected_host_time_utc"));
+  for (const auto& d : side["devices"])
+    if (d["slot"] != "LMC2") {
+      EXPECT_TRUE(d["gaps"].empty()) << d["slot"];
+    }
+}
+
+// Writes to the real file until `limit` bytes, then fails like a full disk.
+class FullDiskSink final : public ByteSink {
+ public:
+  FullDiskSink(std::unique_ptr<ByteSink> inner, size_t limit) : inner_(std::move(inner)), left_(limit) {}
+  bool write(std::string_view data) override {
+    if (data.size() > left_) {
+      inner_->write(data.substr(0, left_));
+      left_ = 0;
+      error_ = "write: No space left on device";
+      return false;
+    }
+    left_ -= data.size();
+    return inner_->write(data);
+  }
+  bool sync() override { return inner_->sync(); }
+  bool close() override { return inner_->close(); }
+  std::string error() const override { return error_; }
+
+ private:
+  std::unique_ptr<ByteSink> inner_;
+  size_t left_;
+  std::string error_;
+};
+
+TEST(Recorder, DiskFullStopsTheTrialWithAClearMessageAndKeepsWhatWasWritten) {
+  const auto dir = test::scratch_dir("rec_full");
+  RecorderConfig rc;
+  rc.output_dir = dir;
+  rc.trial = "full";
+  rc.layout = paper_initial();
+  rc.flush_interval_ms = 20;
+  rc.open_sink = [](const std::filesystem::path& p) { return std::make_unique<FullDiskSink>(open_file_sink(p), 64 * 1024); };
+  Recorder rec(rc);
+  rec.start();
+  SimConfig sim;
+  const SimTrial trial = generate_sim_trial(paper_initial(), sim, 20.0);
+  int offered = 0;
+  for (const auto& e : trial.events) {
+    if (!e.is_frame) continue;
+    HandFrame f = e.frame.frame;
+    rec.offer(f, e.frame.host_receive_ns, true);
+    ++offered;
+    if (offered % 200 == 0) std::this_thread::sleep_for(std::chrono::milliseconds(30));
+    if (rec.failed()) break;
+  }
+  const auto st = rec.stop();
+  ASSERT_EQ(st.state, RecorderState::kFailed);
+  EXPECT_NE(st.error.find("No space left on device"), std::string::npos) << st.error;
+  EXPECT_NE(st.error.find("LMC_full.raw.txt"), std::string::npos) << st.error;
+  EXPECT_EQ(std::filesystem::file_size(rec.paths().recording), 64u * 1024u);
+  // What was written is still a readable recording (the cut last line is dropped with a warning).
+  const LmcRecording back = read_lmc_recording(rec.paths().recording);
+  EXPECT_GT(back.rows.size(), 10u);
+  const auto side = read_json(rec.paths().sidecar);
+  EXPECT_EQ(side["status"], "failed");
+  EXPECT_NE(side["error"].get<std::string>().find("No space left"), std::string::npos);
+}
+
+TEST(Recorder, FileSinkReportsARealDeviceFullError) {
+  if (!std::filesystem::exists("/dev/full")) GTEST_SKIP() << "/dev/full is absent on this system";
+  auto sink = open_file_sink("/dev/full");
+  EXPECT_FALSE(sink->write("x\n"));
+  EXPECT_NE(sink->error().find("No space left on device"), std::string::npos) << sink->error();
+}
+
+TEST(Recorder, RowsReachTheFileWhileRecording) {
+  const auto dir = test::scratch_dir("rec_flush");
+  RecorderConfig rc;
+  rc.output_dir = dir;
+  rc.trial = "flush";
+  rc.layout = paper_initial();
+  rc.flush_interval_ms = 50;
+  Recorder rec(rc);
+  rec.start();
+  const auto header_size = std::filesystem::file_size(rec.paths().recording);
+  HandFrame f;
+  f.device_id = 1;
+  for (int i = 0; i < 5; ++i) {
+    f.frame_id = i;
+    rec.offer(f, i, false);
+  }
+  // Without stop(): the writer pushes its buffer within the flush interval (≤ 1 s by contract).
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(5);
+  while (std::filesystem::file_size(rec.paths().recording) == header_size && std::chrono::steady_clock::now() < deadline)
+    std::this_thread::sleep_for(std::chrono::milliseconds(10));
+  EXPECT_EQ(read_lmc_recording(rec.paths().recording).rows.size(), 5u);
+  // The sidecar already exists and says the trial is in progress.
+  EXPECT_EQ(read_json(rec.paths().sidecar)["status"], "recording");
+  rec.stop();
+  EXPECT_EQ(read_json(rec.paths().sidecar)["status"], "completed");
+}
+
+TEST(Recorder, SidecarDescribesTheSession) {
+  const auto dir = test::scratch_dir("rec_side");
+  RecorderConfig rc;
+  rc.output_dir = dir;
+  rc.trial = "side";
+  rc.layout = paper_initial();
+  rc.backend = "sim";
+  Recorder rec(rc);
+  rec.start();
+  rec.note_vicon_packet({{"type", "CaptureStart"}, {"packet_id", 5}});
+  rec.stop({{"SIM-1", "LMC1"}});
+  const auto j = read_json(rec.paths().sidecar);
+  EXPECT_EQ(j["trial"], "side");
+  EXPECT_EQ(j["backend"], "sim");
+  EXPECT_EQ(j["serial_to_slot"]["SIM-1"], "LMC1");
+  EXPECT_EQ(j["layout"]["name"], "paper-initial");
+  EXPECT_EQ(j["software"]["version"], LMC_VERSION);
+  EXPECT_EQ(j["vicon_packets"][0]["packet_id"], 5);
+  EXPECT_FALSE(j["host_start_utc"].get<std::string>().empty());
+  EXPECT_FALSE(j["host_stop_utc"].get<std::string>().empty());
+  EXPECT_EQ(j["recording_file"], "LMC_side.raw.txt");
+}
+
+}  // namespace
+}  // namespace lmc::devices

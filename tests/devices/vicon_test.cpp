@@ -1,0 +1,166 @@
+// Vicon UDP trigger: message format and, over real sockets on 127.0.0.1 only, the sender and
+// listener (reference-algorithms.md §7, field-notes §4.1).
+#include <arpa/inet.h>
+#include <netinet/in.h>
+#include <sys/socket.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <mutex>
+#include <thread>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "core/common/error.h"
+#include "devices/vicon/vicon_message.h"
+#include "devices/vicon/vicon_trigger.h"
+
+namespace lmc::devices {
+namespace {
+
+TEST(ViconMessage, StartHasEveryFieldAndIsNullTerminated) {
+  ViconMessage m;
+  m.name = "Naiv_Static101";
+  m.notes = "subject 1";
+  m.description = "static";
+  m.database_path = "D:/data";
+  m.delay_ms = 40;
+  m.packet_id = 7;
+  const std::string p = format_vicon_message(m);
+  ASSERT_FALSE(p.empty());
+  EXPECT_EQ(p.back(), '\0');
+  EXPECT_EQ(p.find('\0'), p.size() - 1);
+  EXPECT_NE(p.find("<CaptureStart><Name VALUE=\"Naiv_Static101\"/><Notes VALUE=\"subject 1\"/>"), std::string::npos);
+  EXPECT_NE(p.find("<Delay VALUE=\"40\"/><PacketID VALUE=\"7\"/></CaptureStart>"), std::string::npos);
+  auto back = parse_vicon_message(p);
+  ASSERT_TRUE(back.has_value());
+  EXPECT_EQ(*back, m);
+}
+
+TEST(ViconMessage, StopCarriesResultAndRoundTrips) {
+  ViconMessage m;
+  m.type = ViconMessage::Type::kStop;
+  m.name = "t1";
+  m.packet_id = 4000000000u;
+  m.result = "CANCEL";
+  const std::string p = format_vicon_message(m);
+  EXPECT_NE(p.find("<CaptureStop RESULT=\"CANCEL\">"), std::string::npos);
+  EXPECT_EQ(p.find("Notes"), std::string::npos);
+  auto back = parse_vicon_message(p);
+  ASSERT_TRUE(back.has_value());
+  EXPECT_EQ(*back, m);
+}
+
+TEST(ViconMessage, ValuesAreXmlEscaped) {
+  ViconMessage m;
+  m.name = "a\"b";
+  m.notes = "<x> & 'y'";
+  m.description = std::string("ctl\x01") + '\0' + "z";
+  const std::string p = format_vicon_message(m);
+  EXPECT_NE(p.find("Name VALUE=\"a&quot;b\""), std::string::npos);
+  EXPECT_NE(p.find("Notes VALUE=\"&lt;x&gt; &amp; &apos;y&apos;\""), std::string::npos);
+  EXPECT_EQ(p.find('\0'), p.size() - 1);  // an embedded NUL would cut the datagram
+  auto back = parse_vicon_message(p);
+  ASSERT_TRUE(back.has_value());
+  EXPECT_EQ(back->notes, "<x> & 'y'");
+  EXPECT_EQ(back->description, "ctlz");
+}
+
+TEST(ViconMessage, RejectsOtherDocuments) {
+  std::string why;
+  EXPECT_FALSE(parse_vicon_message("<Hello/>", &why).has_value());
+  EXPECT_NE(why.find("not a CaptureStart"), std::string::npos);
+  EXPECT_FALSE(parse_vicon_message("<CaptureStart><Name VALUE=\"x\"/>", &why).has_value());
+  EXPECT_FALSE(parse_vicon_message("<CaptureStart><Name VALUE=\"x\"/><PacketID VALUE=\"q\"/></CaptureStart>", &why));
+  EXPECT_NE(why.find("PacketID"), std::string::npos);
+}
+
+TEST(ViconTarget, ParsesHostAndPort) {
+  auto c = parse_vicon_target("127.0.0.1:9030");
+  EXPECT_EQ(c.host, "127.0.0.1");
+  EXPECT_EQ(c.port, 9030);
+  EXPECT_EQ(parse_vicon_target("127.0.0.1").port, 30);
+  EXPECT_THROW(parse_vicon_target("127.0.0.1:0"), Error);
+  EXPECT_THROW(parse_vicon_target("127.0.0.1:70000"), Error);
+  EXPECT_THROW(parse_vicon_target("127.0.0.1:x"), Error);
+  EXPECT_THROW(parse_vicon_target(":30"), Error);
+}
+
+TEST(ViconTrigger, MalformedNumericHostIsReportedWithoutALookup) {
+  ViconTriggerConfig c;
+  c.host = "300.1.1.1";
+  try {
+    ViconTrigger t(c);
+    FAIL() << "expected an error";
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("300.1.1.1"), std::string::npos);
+  }
+}
+
+TEST(ViconTrigger, LoopbackListenerReceivesStartAndStopEachRepeatedThreeTimes) {
+  std::mutex m;
+  std::vector<ViconMessage> got;
+  ViconListener listener("127.0.0.1", 0, [&](const ViconMessage& msg) {
+    std::lock_guard lock(m);
+    got.push_back(msg);
+  });
+  ASSERT_NE(listener.port(), 0);
+  ViconTriggerConfig c;
+  c.host = "127.0.0.1";
+  c.port = listener.port();
+  c.first_packet_id = 500;
+  c.database_path = "C:/Vicon/Session 1";
+  ViconTrigger trigger(c);
+  const auto start = trigger.send_start("Naiv_Index103");
+  ASSERT_TRUE(start.ok()) << start.error;
+  EXPECT_EQ(start.datagrams_sent, 3);
+  EXPECT_EQ(start.message.packet_id, 500u);
+  const auto stop = trigger.send_stop("Naiv_Index103");
+  ASSERT_TRUE(stop.ok()) << stop.error;
+  EXPECT_EQ(stop.message.packet_id, 501u);
+
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(3);
+  while (listener.datagrams_received() < 6 && std::chrono::steady_clock::now() < deadline)
+    std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  EXPECT_EQ(listener.datagrams_received(), 6);
+  EXPECT_EQ(listener.rejected(), 0);
+  std::lock_guard lock(m);
+  ASSERT_EQ(got.size(), 2u);  // repeats share a PacketID and are dropped by the receiver
+  EXPECT_EQ(got[0].type, ViconMessage::Type::kStart);
+  EXPECT_EQ(got[0].name, "Naiv_Index103");
+  EXPECT_EQ(got[0].database_path, "C:/Vicon/Session 1");
+  EXPECT_EQ(got[0].packet_id, 500u);
+  EXPECT_EQ(got[1].type, ViconMessage::Type::kStop);
+  EXPECT_EQ(got[1].result, "SUCCESS");
+  EXPECT_EQ(got[1].packet_id, 501u);
+}
+
+TEST(ViconTrigger, UnreachablePortIsReportedNotIgnored) {
+  // A loopback port nobody listens on: the kernel answers with "port unreachable", which a
+  // connected UDP socket reports on a following send.
+  const int probe = ::socket(AF_INET, SOCK_DGRAM, 0);
+  ASSERT_GE(probe, 0);
+  sockaddr_in addr{};
+  addr.sin_family = AF_INET;
+  addr.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
+  ASSERT_EQ(::bind(probe, reinterpret_cast<sockaddr*>(&addr), sizeof addr), 0);
+  socklen_t len = sizeof addr;
+  ::getsockname(probe, reinterpret_cast<sockaddr*>(&addr), &len);
+  const std::uint16_t port = ntohs(addr.sin_port);
+  ::close(probe);
+
+  ViconTriggerConfig c;
+  c.host = "127.0.0.1";
+  c.port = port;
+  c.repeats = 3;
+  c.repeat_interval_ms = 20;
+  ViconTrigger trigger(c);
+  std::string error;
+  for (int i = 0; i < 5 && error.empty(); ++i) error = trigger.send_start("t").error;
+  EXPECT_NE(error.find("refused"), std::string::npos) << error;
+  EXPECT_NE(error.find("127.0.0.1:" + std::to_string(port)), std::string::npos) << error;
+}
+
+}  // namespace
+}  // namespace lmc::devices
