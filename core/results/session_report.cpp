@@ -1,0 +1,187 @@
+#include "core/results/session_report.h"
+
+#include <cmath>
+#include <sstream>
+#include <tuple>
+
+#include "core/processing/hand_track.h"
+#include "core/processing/measures.h"
+#include "core/results/trial_outputs.h"
+
+namespace lmc {
+
+MeanSd mean_sd(const std::vector<double>& v) {
+  double s = 0, s2 = 0;
+  int n = 0;
+  for (double x : v) {
+    if (!std::isfinite(x)) continue;
+    s += x;
+    s2 += x * x;
+    ++n;
+  }
+  MeanSd r{kNaN, kNaN, n};
+  if (n > 0) r.mean = s / n;
+  if (n > 1) r.sd = std::sqrt(std::max(0.0, (s2 - s * s / n) / (n - 1)));
+  return r;
+}
+
+namespace {
+
+double num(const nlohmann::json& j) { return j.is_number() ? j.get<double>() : kNaN; }
+double at(const nlohmann::json& j, const char* key, size_t k) {
+  if (!j.contains(key) || !j[key].is_array() || k >= j[key].size()) return kNaN;
+  return num(j[key][k]);
+}
+
+std::string csv_cell(const std::string& s) {
+  if (s.find_first_of(",\"\n") == std::string::npos) return s;
+  std::string q = "\"";
+  for (char c : s) {
+    if (c == '"') q += '"';
+    q += c;
+  }
+  return q + "\"";
+}
+
+std::string f3(double v) { return format_fixed(v, 3); }
+std::string pm(const MeanSd& m, int d = 2) { return format_fixed(m.mean, d) + " ± " + format_fixed(m.sd, d); }
+
+using Group = std::tuple<std::string, std::string, std::string>;  // layout, pose, motion
+
+constexpr const char* kFingers[] = {"thumb", "index", "middle", "ring", "pinky"};
+
+}  // namespace
+
+SessionReport build_session_report(const std::vector<ReportInput>& inputs) {
+  SessionReport rep;
+  struct Acc {
+    std::vector<double> finger_lmc[kNumFingers], finger_vicon[kNumFingers], finger_diff[kNumFingers];
+    std::vector<double> rom_lmc[kNumAngles], rom_vicon[kNumAngles], rom_diff[kNumAngles], angle_diff[kNumAngles];
+    std::map<std::string, std::vector<double>> vis;  // device → per-finger rates
+    int trials = 0, with_vicon = 0;
+  };
+  std::map<Group, Acc> groups;
+  std::vector<double> all_finger_diff, all_rom_diff;
+  std::map<std::string, std::vector<double>> vis_by_layout;
+
+  std::ostringstream trials;
+  trials << "subject,trial,layout,pose,motion,repetition,method,frames,has_vicon";
+  for (const char* f : kFingers) trials << ",lmc_" << f << "_mm";
+  for (const char* f : kFingers) trials << ",vicon_" << f << "_mm";
+  for (int a = 0; a < kNumAngles; ++a) trials << ",lmc_rom_" << angle_name(a) << "_deg";
+  for (int a = 0; a < kNumAngles; ++a) trials << ",vicon_rom_" << angle_name(a) << "_deg";
+  trials << ",lag_frames,lag_correlation\n";
+
+  for (const auto& in : inputs) {
+    const auto& s = in.summary;
+    const auto& tag = s.value("tag", nlohmann::json::object());
+    const Group g{tag.value("layout", "unknown"), tag.value("pose", "unknown"), tag.value("motion", "unknown")};
+    Acc& acc = groups[g];
+    ++acc.trials;
+    ++rep.trials;
+    const bool vic = s.contains("vicon") && s["vicon"].is_object();
+    if (vic) {
+      ++acc.with_vicon;
+      ++rep.trials_with_vicon;
+    }
+    const auto& lmc = s.value("lmc", nlohmann::json::object());
+    const auto vicon = vic ? s["vicon"] : nlohmann::json::object();
+    for (size_t k = 0; k < kNumFingers; ++k) {
+      acc.finger_lmc[k].push_back(at(lmc, "finger_mean_mm", k));
+      if (vic) {
+        acc.finger_vicon[k].push_back(at(vicon, "finger_mean_mm", k));
+        const double d = at(lmc, "finger_mean_mm", k) - at(vicon, "finger_mean_mm", k);
+        acc.finger_diff[k].push_back(d);
+        all_finger_diff.push_back(d);
+      }
+    }
+    for (size_t k = 0; k < kNumAngles; ++k) {
+      acc.rom_lmc[k].push_back(at(lmc, "angle_rom_deg", k));
+      if (vic) {
+        acc.rom_vicon[k].push_back(at(vicon, "angle_rom_deg", k));
+        const double d = at(lmc, "angle_rom_deg", k) - at(vicon, "angle_rom_deg", k);
+        acc.rom_diff[k].push_back(d);
+        all_rom_diff.push_back(d);
+        if (s.contains("comparison")) acc.angle_diff[k].push_back(at(s["comparison"], "angle_diff_mean_deg", k));
+      }
+    }
+    if (s.contains("visibility")) {
+      for (const auto& d : s["visibility"]) {
+        const std::string dev = d.value("device", "?");
+        for (size_t k = 0; k < kNumDigits; ++k) {
+          const double r = at(d, "rate", k);
+          acc.vis[dev].push_back(r);
+          vis_by_layout[std::get<0>(g)].push_back(r);
+        }
+      }
+    }
+    trials << csv_cell(in.subject) << ',' << csv_cell(s.value("trial", "")) << ',' << std::get<0>(g) << ',' << std::get<1>(g)
+           << ',' << std::get<2>(g) << ',' << tag.value("repetition", 0) << ',' << s.value("method", "") << ','
+           << s.value("frames", 0) << ',' << (vic ? 1 : 0);
+    for (size_t k = 0; k < kNumFingers; ++k) trials << ',' << f3(at(lmc, "finger_mean_mm", k));
+    for (size_t k = 0; k < kNumFingers; ++k) trials << ',' << f3(vic ? at(vicon, "finger_mean_mm", k) : kNaN);
+    for (size_t k = 0; k < kNumAngles; ++k) trials << ',' << f3(at(lmc, "angle_rom_deg", k));
+    for (size_t k = 0; k < kNumAngles; ++k) trials << ',' << f3(vic ? at(vicon, "angle_rom_deg", k) : kNaN);
+    const auto lag = s.contains("comparison") ? s["comparison"].value("lag", nlohmann::json::object()) : nlohmann::json::object();
+    trials << ',' << (lag.value("valid", false) ? std::to_string(lag.value("frames", 0)) : std::string("nan")) << ','
+           << f3(lag.contains("correlation") ? num(lag["correlation"]) : kNaN) << '\n';
+  }
+  rep.trials_csv = trials.str();
+
+  std::ostringstream fl, ja, vis, md;
+  fl << "layout,pose,motion,finger,trials,lmc_mean_mm,lmc_sd_mm,vicon_mean_mm,vicon_sd_mm,diff_mean_mm,diff_sd_mm\n";
+  ja << "layout,pose,motion,joint,trials,lmc_rom_mean_deg,lmc_rom_sd_deg,vicon_rom_mean_deg,vicon_rom_sd_deg,rom_diff_mean_deg,"
+        "rom_diff_sd_deg,frame_angle_diff_mean_deg\n";
+  vis << "layout,pose,motion,device,values,rate_mean,rate_sd\n";
+
+  md << "# Processing report\n\n" << rep.trials << " trial(s), " << rep.trials_with_vicon << " with Vicon.\n\n";
+  md << "Differences are LMC − Vicon (the paper quotes Vicon − LMC for finger length).\n\n";
+  md << "* Finger length difference, all fingers and trials: " << pm(mean_sd(all_finger_diff)) << " mm (n = "
+     << mean_sd(all_finger_diff).n << ")\n";
+  md << "* Range-of-motion difference, all joints and trials: " << pm(mean_sd(all_rom_diff)) << "° (n = "
+     << mean_sd(all_rom_diff).n << ")\n";
+  for (const auto& [layout, v] : vis_by_layout) md << "* Visibility rate, layout " << layout << ": " << pm(mean_sd(v)) << "\n";
+  md << "\n## Finger length (mm): LMC, Vicon, LMC − Vicon (mean ± SD over trials)\n\n";
+  md << "| layout | pose | motion | n | finger | LMC | Vicon | LMC − Vicon |\n|---|---|---|---:|---|---:|---:|---:|\n";
+  for (const auto& [g, acc] : groups) {
+    const auto& [layout, pose, motion] = g;
+    for (size_t k = 0; k < kNumFingers; ++k) {
+      const MeanSd l = mean_sd(acc.finger_lmc[k]), v = mean_sd(acc.finger_vicon[k]), d = mean_sd(acc.finger_diff[k]);
+      fl << layout << ',' << pose << ',' << motion << ',' << kFingers[k] << ',' << acc.trials << ',' << f3(l.mean) << ','
+         << f3(l.sd) << ',' << f3(v.mean) << ',' << f3(v.sd) << ',' << f3(d.mean) << ',' << f3(d.sd) << '\n';
+      md << "| " << layout << " | " << pose << " | " << motion << " | " << acc.trials << " | " << kFingers[k] << " | " << pm(l)
+         << " | " << pm(v) << " | " << pm(d) << " |\n";
+    }
+  }
+  md << "\n## Range of motion (°): LMC, Vicon, LMC − Vicon (mean ± SD over trials)\n\n";
+  md << "| layout | pose | motion | joint | LMC | Vicon | LMC − Vicon |\n|---|---|---|---|---:|---:|---:|\n";
+  for (const auto& [g, acc] : groups) {
+    const auto& [layout, pose, motion] = g;
+    for (size_t k = 0; k < kNumAngles; ++k) {
+      const MeanSd l = mean_sd(acc.rom_lmc[k]), v = mean_sd(acc.rom_vicon[k]), d = mean_sd(acc.rom_diff[k]);
+      const MeanSd fa = mean_sd(acc.angle_diff[k]);
+      ja << layout << ',' << pose << ',' << motion << ',' << angle_name(static_cast<int>(k)) << ',' << acc.trials << ','
+         << f3(l.mean) << ',' << f3(l.sd) << ',' << f3(v.mean) << ',' << f3(v.sd) << ',' << f3(d.mean) << ',' << f3(d.sd) << ','
+         << f3(fa.mean) << '\n';
+      md << "| " << layout << " | " << pose << " | " << motion << " | " << angle_name(static_cast<int>(k)) << " | " << pm(l)
+         << " | " << pm(v) << " | " << pm(d) << " |\n";
+    }
+  }
+  md << "\n## Visibility rate per device (mean ± SD over fingers and trials; −1 = never saw the hand)\n\n";
+  md << "| layout | pose | motion | device | rate |\n|---|---|---|---|---:|\n";
+  for (const auto& [g, acc] : groups) {
+    const auto& [layout, pose, motion] = g;
+    for (const auto& [dev, v] : acc.vis) {
+      const MeanSd m = mean_sd(v);
+      vis << layout << ',' << pose << ',' << motion << ',' << dev << ',' << m.n << ',' << f3(m.mean) << ',' << f3(m.sd) << '\n';
+      md << "| " << layout << " | " << pose << " | " << motion << " | " << dev << " | " << pm(m) << " |\n";
+    }
+  }
+  rep.finger_length_csv = fl.str();
+  rep.joint_angle_csv = ja.str();
+  rep.visibility_csv = vis.str();
+  rep.markdown = md.str();
+  return rep;
+}
+
+}  // namespace lmc
