@@ -1,0 +1,393 @@
+// lmc info FILE [--json]: what is in a recording, a TRC file or a layout, before anyone feeds it
+// to processing. The file type is detected from the content, not the extension:
+//   JSON object with "format"   → layout (core/io/layout_json.h)
+//   first line "PathFileType…"  → TRC (core/io/trc.h)
+//   first line "Device ID…"     → LMC recording, any variant (core/io/lmc_recording.h)
+//
+// --json prints ONE object. Keys (rates in Hz, times in s, fractions 0..1; null when unknown):
+//   common:    file, type ("recording" | "trc" | "layout"), warnings [string]
+//   recording: variant ("raw" | "resampled" | "raytraced"), rows, hand_rows, device_count,
+//              device_ids [int], duration_s (first to last timestamp over all devices),
+//              devices [{id, rows, hand_rows, hand_fraction, duration_s, rate_median_hz,
+//                        rate_p5_hz, rate_p95_hz, reported_rate_median_hz,
+//                        visibility_fraction {thumb..pinky} (raytraced only: share of hand rows
+//                        labelled 1)}]
+//              Rates come from consecutive differences of the device's timestamps sorted by time
+//              (equal timestamps skipped); reported_rate is the median of the device's own
+//              Frame Rate column.
+//   trc:       markers, frames, data_rate_hz, camera_rate_hz, units, duration_s,
+//              marker_stats [{name, missing_fraction}] in file order, missing_fraction (all)
+//   layout:    name, description, device_count, sensor {range_mm, fov_long_deg, fov_short_deg},
+//              devices [{slot, serial (null if unset), pose {x,y,z,rx,ry,rz} (mm, deg),
+//                        offset_mm [x,y,z]}]
+#include <algorithm>
+#include <cmath>
+#include <iomanip>
+#include <iostream>
+#include <map>
+#include <memory>
+#include <nlohmann/json.hpp>
+#include <optional>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "app/lmc/command.h"
+#include "core/common/error.h"
+#include "core/io/json_checked.h"
+#include "core/io/layout_json.h"
+#include "core/io/lmc_recording.h"
+#include "core/io/text_fields.h"
+#include "core/io/trc.h"
+
+namespace {
+
+using nlohmann::json;
+
+constexpr const char* kJsonKeysHelp =
+    "--json prints one object. Keys: file, type (recording|trc|layout), warnings[]; recording: variant, rows, "
+    "hand_rows, device_count, device_ids[], duration_s, devices[{id, rows, hand_rows, hand_fraction, duration_s, "
+    "rate_median_hz, rate_p5_hz, rate_p95_hz, reported_rate_median_hz, visibility_fraction (raytraced)}]; trc: "
+    "markers, frames, data_rate_hz, camera_rate_hz, units, duration_s, missing_fraction, marker_stats[{name, "
+    "missing_fraction}]; layout: name, description, device_count, sensor{range_mm, fov_long_deg, fov_short_deg}, "
+    "devices[{slot, serial, pose{x,y,z,rx,ry,rz}, offset_mm[3]}]. Unknown values are null.";
+
+struct InfoOptions {
+  std::string file;
+  bool json = false;
+};
+
+// Linear-interpolated quantile (q in 0..1) of sorted values.
+double quantile(const std::vector<double>& sorted, double q) {
+  if (sorted.empty()) return std::nan("");
+  const double pos = q * static_cast<double>(sorted.size() - 1);
+  const auto lo = static_cast<size_t>(std::floor(pos));
+  const size_t hi = std::min(lo + 1, sorted.size() - 1);
+  return sorted[lo] + (pos - static_cast<double>(lo)) * (sorted[hi] - sorted[lo]);
+}
+
+json number_or_null(double v) { return std::isfinite(v) ? json(v) : json(nullptr); }
+
+std::string fixed(double v, int decimals) {
+  if (!std::isfinite(v)) return "-";
+  std::ostringstream s;
+  s << std::fixed << std::setprecision(decimals) << v;
+  return s.str();
+}
+
+const char* variant_name(lmc::RecordingKind k) {
+  switch (k) {
+    case lmc::RecordingKind::kRaw:
+      return "raw";
+    case lmc::RecordingKind::kResampled:
+      return "resampled";
+    case lmc::RecordingKind::kRaytraced:
+      return "raytraced";
+  }
+  return "unknown";
+}
+
+struct DeviceSummary {
+  int id = 0;
+  long rows = 0;
+  long hand_rows = 0;
+  double duration_s = std::nan("");
+  double rate_median_hz = std::nan("");
+  double rate_p5_hz = std::nan("");
+  double rate_p95_hz = std::nan("");
+  double reported_rate_median_hz = std::nan("");
+  std::optional<std::array<double, lmc::kNumDigits>> visibility_fraction;
+};
+
+std::vector<DeviceSummary> summarise_devices(const lmc::LmcRecording& rec) {
+  std::vector<DeviceSummary> out;
+  for (const int id : rec.device_ids()) {
+    DeviceSummary d;
+    d.id = id;
+    std::vector<std::int64_t> stamps;
+    std::vector<double> reported;
+    std::array<long, lmc::kNumDigits> visible{};
+    for (size_t r = 0; r < rec.rows.size(); ++r) {
+      const auto& row = rec.rows[r];
+      if (row.device_id != id) continue;
+      ++d.rows;
+      stamps.push_back(row.timestamp_us);
+      reported.push_back(row.frame_rate_hz);
+      if (!row.hand_present) continue;
+      ++d.hand_rows;
+      if (rec.kind == lmc::RecordingKind::kRaytraced) {
+        for (int f = 0; f < lmc::kNumDigits; ++f) visible[static_cast<size_t>(f)] += rec.visibility[r][static_cast<size_t>(f)] == 1;
+      }
+    }
+    std::sort(stamps.begin(), stamps.end());
+    std::sort(reported.begin(), reported.end());
+    d.reported_rate_median_hz = quantile(reported, 0.5);
+    if (stamps.size() >= 2) d.duration_s = static_cast<double>(stamps.back() - stamps.front()) * 1e-6;
+    // Rates from consecutive timestamp differences of this device's rows sorted by time; equal
+    // stamps (duplicates) carry no rate information.
+    std::vector<double> rates;
+    for (size_t i = 1; i < stamps.size(); ++i) {
+      const std::int64_t dt_us = stamps[i] - stamps[i - 1];
+      if (dt_us > 0) rates.push_back(1e6 / static_cast<double>(dt_us));
+    }
+    std::sort(rates.begin(), rates.end());
+    d.rate_median_hz = quantile(rates, 0.5);
+    d.rate_p5_hz = quantile(rates, 0.05);
+    d.rate_p95_hz = quantile(rates, 0.95);
+    if (rec.kind == lmc::RecordingKind::kRaytraced && d.hand_rows > 0) {
+      std::array<double, lmc::kNumDigits> frac{};
+      for (int f = 0; f < lmc::kNumDigits; ++f) {
+        frac[static_cast<size_t>(f)] = static_cast<double>(visible[static_cast<size_t>(f)]) / static_cast<double>(d.hand_rows);
+      }
+      d.visibility_fraction = frac;
+    }
+    out.push_back(d);
+  }
+  return out;
+}
+
+void print_warnings(std::ostream& out, const std::vector<std::string>& warnings) {
+  if (warnings.empty()) {
+    out << "warnings:   none\n";
+    return;
+  }
+  out << "warnings:   " << warnings.size() << "\n";
+  for (const auto& w : warnings) out << "  - " << w << "\n";
+}
+
+void info_recording(const std::string& file, bool as_json, std::ostream& out) {
+  const lmc::LmcRecording rec = lmc::read_lmc_recording(file);
+  const auto devices = summarise_devices(rec);
+  long hand_rows = 0;
+  std::int64_t t_min = 0;
+  std::int64_t t_max = 0;
+  for (size_t i = 0; i < rec.rows.size(); ++i) {
+    hand_rows += rec.rows[i].hand_present ? 1 : 0;
+    t_min = i == 0 ? rec.rows[i].timestamp_us : std::min(t_min, rec.rows[i].timestamp_us);
+    t_max = i == 0 ? rec.rows[i].timestamp_us : std::max(t_max, rec.rows[i].timestamp_us);
+  }
+  const double duration_s = rec.rows.size() >= 2 ? static_cast<double>(t_max - t_min) * 1e-6 : std::nan("");
+
+  if (as_json) {
+    json j;
+    j["file"] = file;
+    j["type"] = "recording";
+    j["variant"] = variant_name(rec.kind);
+    j["rows"] = rec.rows.size();
+    j["hand_rows"] = hand_rows;
+    j["device_count"] = devices.size();
+    j["device_ids"] = rec.device_ids();
+    j["duration_s"] = number_or_null(duration_s);
+    j["devices"] = json::array();
+    for (const auto& d : devices) {
+      json dj;
+      dj["id"] = d.id;
+      dj["rows"] = d.rows;
+      dj["hand_rows"] = d.hand_rows;
+      dj["hand_fraction"] = d.rows > 0 ? static_cast<double>(d.hand_rows) / static_cast<double>(d.rows) : 0.0;
+      dj["duration_s"] = number_or_null(d.duration_s);
+      dj["rate_median_hz"] = number_or_null(d.rate_median_hz);
+      dj["rate_p5_hz"] = number_or_null(d.rate_p5_hz);
+      dj["rate_p95_hz"] = number_or_null(d.rate_p95_hz);
+      dj["reported_rate_median_hz"] = number_or_null(d.reported_rate_median_hz);
+      if (d.visibility_fraction) {
+        json v;
+        for (int f = 0; f < lmc::kNumDigits; ++f) {
+          v[std::string(lmc::digit_name(f))] = (*d.visibility_fraction)[static_cast<size_t>(f)];
+        }
+        dj["visibility_fraction"] = v;
+      }
+      j["devices"].push_back(dj);
+    }
+    j["warnings"] = rec.warnings;
+    out << j.dump(2) << "\n";
+    return;
+  }
+
+  out << "file:       " << file << "\n";
+  out << "type:       LMC recording (" << variant_name(rec.kind) << ")\n";
+  out << "rows:       " << rec.rows.size() << " (" << hand_rows << " with a hand)\n";
+  out << "devices:    " << devices.size();
+  if (!devices.empty()) {
+    out << " (";
+    for (size_t i = 0; i < devices.size(); ++i) out << (i ? ", " : "") << devices[i].id;
+    out << ")";
+  }
+  out << "\n";
+  out << "duration:   " << fixed(duration_s, 3) << " s\n";
+  if (!devices.empty()) {
+    out << "\n";
+    const bool vis = rec.kind == lmc::RecordingKind::kRaytraced;
+    out << std::left << std::setw(8) << "device" << std::right << std::setw(7) << "rows" << std::setw(7) << "hand"
+        << std::setw(8) << "hand%" << std::setw(12) << "duration_s" << std::setw(13) << "rate_med_hz"
+        << std::setw(12) << "rate_p5_hz" << std::setw(13) << "rate_p95_hz" << std::setw(14) << "reported_hz";
+    if (vis) out << "  visible% thumb/index/middle/ring/pinky";
+    out << "\n";
+    for (const auto& d : devices) {
+      const double pct = d.rows > 0 ? 100.0 * static_cast<double>(d.hand_rows) / static_cast<double>(d.rows) : 0.0;
+      out << std::left << std::setw(8) << d.id << std::right << std::setw(7) << d.rows << std::setw(7) << d.hand_rows
+          << std::setw(8) << fixed(pct, 1) << std::setw(12) << fixed(d.duration_s, 3) << std::setw(13)
+          << fixed(d.rate_median_hz, 2) << std::setw(12) << fixed(d.rate_p5_hz, 2) << std::setw(13)
+          << fixed(d.rate_p95_hz, 2) << std::setw(14) << fixed(d.reported_rate_median_hz, 2);
+      if (vis && d.visibility_fraction) {
+        out << "  ";
+        for (int f = 0; f < lmc::kNumDigits; ++f) {
+          out << (f ? "/" : "") << fixed(100.0 * (*d.visibility_fraction)[static_cast<size_t>(f)], 0);
+        }
+      }
+      out << "\n";
+    }
+    out << "\n";
+  }
+  print_warnings(out, rec.warnings);
+}
+
+void info_trc(const std::string& file, bool as_json, std::ostream& out) {
+  const lmc::TrcData trc = lmc::read_trc(file);
+  const int frames = trc.frame_count();
+  std::vector<long> missing(static_cast<size_t>(trc.marker_count()), 0);
+  long missing_all = 0;
+  for (const auto& row : trc.positions) {
+    for (size_t m = 0; m < row.size(); ++m) {
+      const bool gone = row[m].array().isNaN().any();
+      missing[m] += gone ? 1 : 0;
+      missing_all += gone ? 1 : 0;
+    }
+  }
+  const auto fraction = [&](long n, long of) { return of > 0 ? static_cast<double>(n) / static_cast<double>(of) : 0.0; };
+  const double duration_s = trc.times_s.size() >= 2 ? trc.times_s.back() - trc.times_s.front() : std::nan("");
+  const long samples = static_cast<long>(frames) * trc.marker_count();
+
+  if (as_json) {
+    json j;
+    j["file"] = file;
+    j["type"] = "trc";
+    j["markers"] = trc.marker_count();
+    j["frames"] = frames;
+    j["data_rate_hz"] = trc.data_rate_hz;
+    j["camera_rate_hz"] = trc.camera_rate_hz;
+    j["units"] = trc.units;
+    j["duration_s"] = number_or_null(duration_s);
+    j["missing_fraction"] = fraction(missing_all, samples);
+    j["marker_stats"] = json::array();
+    for (int m = 0; m < trc.marker_count(); ++m) {
+      j["marker_stats"].push_back({{"name", trc.marker_names[static_cast<size_t>(m)]},
+                                   {"missing_fraction", fraction(missing[static_cast<size_t>(m)], frames)}});
+    }
+    j["warnings"] = trc.warnings;
+    out << j.dump(2) << "\n";
+    return;
+  }
+  out << "file:       " << file << "\n";
+  out << "type:       TRC marker file\n";
+  out << "markers:    " << trc.marker_count() << "\n";
+  out << "frames:     " << frames << "\n";
+  out << "rate:       " << trc.data_rate_hz << " Hz (camera " << trc.camera_rate_hz << " Hz)\n";
+  out << "units:      " << trc.units << "\n";
+  out << "duration:   " << fixed(duration_s, 3) << " s\n";
+  out << "missing:    " << fixed(100.0 * fraction(missing_all, samples), 1) << " % of marker samples\n\n";
+  size_t width = 6;
+  for (const auto& n : trc.marker_names) width = std::max(width, n.size());
+  out << std::left << std::setw(static_cast<int>(width) + 2) << "marker" << "missing%\n";
+  for (int m = 0; m < trc.marker_count(); ++m) {
+    out << std::left << std::setw(static_cast<int>(width) + 2) << trc.marker_names[static_cast<size_t>(m)] << std::right
+        << std::setw(8) << fixed(100.0 * fraction(missing[static_cast<size_t>(m)], frames), 1) << "\n";
+  }
+  out << "\n";
+  print_warnings(out, trc.warnings);
+}
+
+void info_layout(const std::string& file, const json& doc, bool as_json, std::ostream& out) {
+  const lmc::Layout layout = lmc::layout_from_json(doc, file);
+  if (as_json) {
+    json j;
+    j["file"] = file;
+    j["type"] = "layout";
+    j["name"] = layout.name;
+    j["description"] = layout.description;
+    j["device_count"] = layout.device_count();
+    j["sensor"] = {{"range_mm", layout.sensor.range_mm},
+                   {"fov_long_deg", layout.sensor.fov_long_deg},
+                   {"fov_short_deg", layout.sensor.fov_short_deg}};
+    j["devices"] = json::array();
+    for (const auto& d : layout.devices) {
+      j["devices"].push_back({{"slot", d.slot},
+                              {"serial", d.serial ? json(*d.serial) : json(nullptr)},
+                              {"pose",
+                               {{"x", d.pose.x_mm},
+                                {"y", d.pose.y_mm},
+                                {"z", d.pose.z_mm},
+                                {"rx", d.pose.rx_deg},
+                                {"ry", d.pose.ry_deg},
+                                {"rz", d.pose.rz_deg}}},
+                              {"offset_mm", {d.offset_mm.x(), d.offset_mm.y(), d.offset_mm.z()}}});
+    }
+    j["warnings"] = json::array();
+    out << j.dump(2) << "\n";
+    return;
+  }
+  out << "file:       " << file << "\n";
+  out << "type:       layout\n";
+  out << "name:       " << layout.name << "\n";
+  if (!layout.description.empty()) out << "about:      " << layout.description << "\n";
+  out << "sensor:     range " << layout.sensor.range_mm << " mm, field of view " << layout.sensor.fov_long_deg << "° x "
+      << layout.sensor.fov_short_deg << "°\n";
+  out << "devices:    " << layout.device_count() << "\n\n";
+  out << std::left << std::setw(7) << "slot" << std::setw(12) << "serial" << std::right;
+  for (const char* h : {"x_mm", "y_mm", "z_mm", "rx_deg", "ry_deg", "rz_deg", "off_x", "off_y", "off_z"}) {
+    out << std::setw(9) << h;
+  }
+  out << "\n";
+  for (const auto& d : layout.devices) {
+    out << std::left << std::setw(7) << d.slot << std::setw(12) << d.serial.value_or("-") << std::right;
+    for (const double v : {d.pose.x_mm, d.pose.y_mm, d.pose.z_mm, d.pose.rx_deg, d.pose.ry_deg, d.pose.rz_deg,
+                           d.offset_mm.x(), d.offset_mm.y(), d.offset_mm.z()}) {
+      out << std::setw(9) << fixed(v, 2);
+    }
+    out << "\n";
+  }
+}
+
+void run_info(const InfoOptions& opt) {
+  const std::string& file = opt.file;
+  const std::string bytes = lmc::text::read_file_bytes(file);
+  if (lmc::text::is_blank(bytes)) throw lmc::Error(lmc::ErrorLocation{file, 1}, "empty file: nothing to describe");
+  lmc::text::require_text(bytes, file);
+  std::string_view head(bytes);
+  if (head.substr(0, 3) == "\xEF\xBB\xBF") head.remove_prefix(3);
+  const size_t first = head.find_first_not_of(" \t\r\n");
+  if (head[first] == '{') {
+    const json doc = lmc::parse_json_text(bytes, file);
+    if (!doc.is_object() || !doc.contains("format")) {
+      throw lmc::Error(lmc::ErrorLocation{file, 0, 0, "/format"},
+                       "JSON file without \"format\": not a layout this version knows");
+    }
+    info_layout(file, doc, opt.json, std::cout);
+    return;
+  }
+  const std::string_view first_line = head.substr(0, head.find('\n'));
+  if (lmc::text::trim(first_line).rfind("PathFileType", 0) == 0) {
+    info_trc(file, opt.json, std::cout);
+    return;
+  }
+  if (lmc::text::normalise_name(first_line).rfind("device id", 0) == 0) {
+    info_recording(file, opt.json, std::cout);
+    return;
+  }
+  throw lmc::Error(lmc::ErrorLocation{file, 1, 1},
+                   "unrecognised file: expected a layout (JSON with \"format\"), a TRC file (first line "
+                   "'PathFileType …') or an LMC recording (header 'Device ID …')");
+}
+
+void setup_info(CLI::App& app) {
+  auto opt = std::make_shared<InfoOptions>();
+  app.add_option("file", opt->file, "Recording (.txt), TRC (.trc) or layout (.json); type detected from content")
+      ->required();
+  app.add_flag("--json", opt->json, "Print one JSON object instead of text");
+  app.footer(kJsonKeysHelp);
+  app.callback([opt] { run_info(*opt); });
+}
+
+const lmc::cli::CommandRegistration reg{"info", "Describe a recording, TRC or layout file", 10, setup_info};
+
+}  // namespace

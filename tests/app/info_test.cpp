@@ -1,0 +1,165 @@
+// Runs the real `lmc info` binary (LMC_CLI_PATH) on the study's files and on bad input.
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <regex>
+#include <sstream>
+#include <string>
+#include <sys/wait.h>
+
+#include "tests/support/reference_data.h"
+
+namespace {
+
+using ::testing::HasSubstr;
+
+struct RunResult {
+  int exit_code = -1;
+  std::string out;
+  std::string err;
+};
+
+std::string slurp(const std::filesystem::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+std::string shell_quote(const std::string& s) {
+  std::string q = "'";
+  for (const char c : s) q += c == '\'' ? std::string("'\\''") : std::string(1, c);
+  return q + "'";
+}
+
+RunResult run_lmc(const std::string& args, const std::string& scratch_name) {
+  const auto dir = lmc::test::scratch_dir(scratch_name);
+  const std::string cmd = shell_quote(LMC_CLI_PATH) + " " + args + " >" + shell_quote((dir / "out").string()) +
+                          " 2>" + shell_quote((dir / "err").string());
+  const int status = std::system(cmd.c_str());
+  RunResult r;
+  r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  r.out = slurp(dir / "out");
+  r.err = slurp(dir / "err");
+  return r;
+}
+
+TEST(LmcInfo, RawRecordingText) {
+  const auto path = lmc::test::reference_file("acquisition/LMC_Naiv_Static101.raw.txt");
+  LMC_REQUIRE_REFERENCE_FILE(path);
+  const RunResult r = run_lmc("info " + shell_quote(path.string()), "info_raw_text");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_THAT(r.out, HasSubstr("LMC recording (raw)"));
+  EXPECT_THAT(r.out, HasSubstr("devices:    4 (1, 2, 3, 4)"));
+  EXPECT_THAT(r.out, HasSubstr("rows:       500"));
+  // One table row per device: id, then its row count.
+  const std::pair<int, int> expected[] = {{1, 118}, {2, 121}, {3, 131}, {4, 130}};
+  for (const auto& [id, rows] : expected) {
+    const std::regex row("\\n" + std::to_string(id) + " +" + std::to_string(rows) + " ");
+    EXPECT_TRUE(std::regex_search(r.out, row)) << "device " << id << " with " << rows << " rows in:\n" << r.out;
+  }
+  EXPECT_THAT(r.out, HasSubstr("warnings:   none"));
+}
+
+TEST(LmcInfo, RawRecordingJson) {
+  const auto path = lmc::test::reference_file("acquisition/LMC_Naiv_Static101.raw.txt");
+  LMC_REQUIRE_REFERENCE_FILE(path);
+  const RunResult r = run_lmc("info --json " + shell_quote(path.string()), "info_raw_json");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j.at("type"), "recording");
+  EXPECT_EQ(j.at("variant"), "raw");
+  EXPECT_EQ(j.at("rows"), 500);
+  EXPECT_EQ(j.at("device_count"), 4);
+  EXPECT_EQ(j.at("device_ids"), nlohmann::json({1, 2, 3, 4}));
+  const int rows[] = {118, 121, 131, 130};
+  ASSERT_EQ(j.at("devices").size(), 4u);
+  int hand_rows = 0;
+  for (int i = 0; i < 4; ++i) {
+    const auto& d = j.at("devices")[static_cast<size_t>(i)];
+    EXPECT_EQ(d.at("id"), i + 1);
+    EXPECT_EQ(d.at("rows"), rows[i]);
+    hand_rows += d.at("hand_rows").get<int>();
+    const double median = d.at("rate_median_hz").get<double>();
+    EXPECT_LE(d.at("rate_p5_hz").get<double>(), median);
+    EXPECT_GE(d.at("rate_p95_hz").get<double>(), median);
+    // ~120 rows in ~5.1 s: a median between 15 and 60 Hz, as the table shows.
+    EXPECT_GT(median, 15.0);
+    EXPECT_LT(median, 60.0);
+  }
+  EXPECT_EQ(hand_rows, 500 - 32);  // 32 lines end after the timestamp (no hand)
+  EXPECT_EQ(j.at("hand_rows"), hand_rows);
+  EXPECT_NEAR(j.at("duration_s").get<double>(), 5.119, 0.001);
+  EXPECT_TRUE(j.at("warnings").empty());
+}
+
+TEST(LmcInfo, TrcJson) {
+  const auto path = lmc::test::reference_file("validation/Naiv_Static101.trc");
+  LMC_REQUIRE_REFERENCE_FILE(path);
+  const RunResult r = run_lmc("info --json " + shell_quote(path.string()), "info_trc_json");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j.at("type"), "trc");
+  EXPECT_EQ(j.at("markers"), 26);
+  EXPECT_EQ(j.at("frames"), 100);
+  EXPECT_EQ(j.at("units"), "mm");
+  EXPECT_EQ(j.at("data_rate_hz"), 100.0);
+  EXPECT_EQ(j.at("marker_stats")[0].at("name"), "Forearm1");
+  EXPECT_EQ(j.at("missing_fraction"), 0.0);
+  ASSERT_EQ(j.at("warnings").size(), 1u);
+  EXPECT_THAT(j.at("warnings")[0].get<std::string>(), HasSubstr("NumFrames 511"));
+}
+
+TEST(LmcInfo, TrcWithGapsText) {
+  const auto path = std::filesystem::path(LMC_SOURCE_DIR) / "tests/fixtures/io/trc_missing_markers.trc";
+  const RunResult r = run_lmc("info " + shell_quote(path.string()), "info_trc_text");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_THAT(r.out, HasSubstr("markers:    2"));
+  EXPECT_THAT(r.out, HasSubstr("frames:     4"));
+  EXPECT_TRUE(std::regex_search(r.out, std::regex("\\nWrist +50\\.0\\n"))) << r.out;  // 2 of 4 frames missing
+  EXPECT_TRUE(std::regex_search(r.out, std::regex("\\nTip +25\\.0\\n"))) << r.out;
+}
+
+TEST(LmcInfo, LayoutJson) {
+  const auto path = std::filesystem::path(LMC_SOURCE_DIR) / "assets/layouts/paper-initial.json";
+  const RunResult r = run_lmc("info --json " + shell_quote(path.string()), "info_layout_json");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j.at("type"), "layout");
+  EXPECT_EQ(j.at("device_count"), 4);
+  EXPECT_EQ(j.at("devices")[0].at("slot"), "LMC1");
+  EXPECT_EQ(j.at("devices")[0].at("pose").at("x"), -60.0);  // reference-algorithms.md §1 table
+  EXPECT_EQ(j.at("devices")[1].at("offset_mm")[0], -12.92);
+}
+
+TEST(LmcInfo, BadFileExitsOneWithFileNameOnStderr) {
+  const auto path = std::filesystem::path(LMC_SOURCE_DIR) / "tests/fixtures/io/raw_point_garbage.txt";
+  const RunResult r = run_lmc("info " + shell_quote(path.string()), "info_bad");
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_TRUE(r.out.empty()) << r.out;
+  EXPECT_THAT(r.err, HasSubstr(path.string() + ":3:94:"));
+  EXPECT_THAT(r.err, HasSubstr("'3x'"));
+}
+
+TEST(LmcInfo, UnknownAndBinaryFilesExitOne) {
+  const auto dir = lmc::test::scratch_dir("info_unknown_inputs");
+  {
+    std::ofstream(dir / "notes.txt") << "hello\n";
+    std::ofstream bin(dir / "blob.dat", std::ios::binary);
+    bin.write("\x89PNG\r\n\x1a\n\0\0", 10);
+  }
+  RunResult r = run_lmc("info " + shell_quote((dir / "notes.txt").string()), "info_unknown_a");
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_THAT(r.err, HasSubstr("notes.txt:1:1: unrecognised file"));
+  r = run_lmc("info " + shell_quote((dir / "blob.dat").string()), "info_unknown_b");
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_THAT(r.err, HasSubstr("blob.dat:1:1: invalid UTF-8"));
+  r = run_lmc("info " + shell_quote((dir / "missing.txt").string()), "info_unknown_c");
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_THAT(r.err, HasSubstr("missing.txt"));
+}
+
+}  // namespace
