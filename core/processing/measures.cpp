@@ -60,8 +60,10 @@ double joint_angle_deg(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& 
   const Vec3 u = b - a, v = d - c;
   const double div = u.norm() * v.norm();
   if (div == 0.0) return 0.0;
-  const double cosine = u.dot(v) / div;
-  return std::acos(cosine) * 180.0 / M_PI;  // NaN beyond ±1, as numpy
+  // A cosine a rounding step beyond ±1 (collinear segments) is clamped: numpy's arccos gave NaN
+  // there, which dropped exactly-straight frames from the statistics.
+  const double cosine = std::clamp(u.dot(v) / div, -1.0, 1.0);
+  return std::acos(cosine) * 180.0 / M_PI;
 }
 
 FrameMeasures measure_frame(const HandTrack& track, int frame) {

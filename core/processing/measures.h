@@ -33,8 +33,8 @@ struct FrameMeasures {
 };
 
 // Angle between the vectors a→b and c→d in degrees: 0 when either has zero length (as the study),
-// NaN when a point is NaN. The cosine is used as computed (a value a rounding step beyond ±1 gives
-// NaN, as numpy's arccos did; statistics skip NaN).
+// NaN when a point is NaN. The cosine is clamped to [−1, 1] (it leaves that range only by rounding;
+// the study's numpy gave NaN there and silently skipped such frames).
 double joint_angle_deg(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d);
 
 FrameMeasures measure_frame(const HandTrack& track, int frame);

@@ -206,6 +206,10 @@ GridTrial resample_recording(const LmcRecording& recording, const ResampleOption
     }
   }
   if (!any_hand) throw Error("resample: no device saw a hand in this recording");
+  if (options.grid_start_us) {
+    t_start = *options.grid_start_us;
+    if (t_end < t_start) throw Error("resample: every hand sample precedes the given grid start");
+  }
 
   GridTrial grid;
   grid.start_us = t_start;

@@ -16,6 +16,7 @@
 //    continues one typical frame interval after the last sample before it (file order is the only
 //    evidence of its real time), and the reset is reported.
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -28,6 +29,10 @@ struct ResampleOptions {
   double rate_hz = 100.0;
   double max_gap_ms = 50.0;       // no interpolation across a longer gap between two samples
   double clock_reset_ms = 500.0;  // a backwards jump larger than this is a clock reset
+  // When set, the grid starts here (device clock) instead of at the first hand sample: used when
+  // the recording knows when the Vicon trigger fired (the simulator's sidecar notes the device
+  // clock at ground-truth time zero), so grid frame f and Vicon frame f are the same instant.
+  std::optional<std::int64_t> grid_start_us;
 };
 
 enum class StreamIssueKind { kOutOfOrder, kDuplicate, kConflictingDuplicate, kClockReset, kGap };

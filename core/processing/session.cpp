@@ -161,7 +161,16 @@ TrialOutcome process_job(const TrialJob& job, const SessionOptions& options, con
     } else {
       out.warnings.push_back("no Vicon file (" + job.trial + ".trc or .c3d) next to it: LMC measures only");
     }
-    TrialResult r = process_trial(job.trial, rec, layout, vicon, options.process);
+    ProcessOptions popt = options.process;
+    if (job.sidecar && vicon != nullptr) {
+      // The simulator notes which device-clock time its ground truth's frame 0 is (sessions/README.md).
+      const auto side = read_json_file(*job.sidecar);
+      const auto gt = side.value("ground_truth", nlohmann::json::object());
+      if (gt.contains("device_clock_at_time_zero_us") && gt["device_clock_at_time_zero_us"].is_number()) {
+        popt.resample.grid_start_us = gt["device_clock_at_time_zero_us"].get<std::int64_t>();
+      }
+    }
+    TrialResult r = process_trial(job.trial, rec, layout, vicon, popt);
     r.lmc_source = job.lmc.string();
     if (job.vicon) r.vicon_source = job.vicon->string();
     for (const auto& w : r.warnings) out.warnings.push_back(w);
@@ -174,7 +183,7 @@ TrialOutcome process_job(const TrialJob& job, const SessionOptions& options, con
     }
     if (options.compare_methods && vicon != nullptr) {
       MethodErrors mine = trial_errors(r);
-      ProcessOptions other = options.process;
+      ProcessOptions other = popt;
       other.method = options.process.method == FusionMethod::kReference ? FusionMethod::kDefault : FusionMethod::kReference;
       const TrialResult r2 = process_trial(job.trial, rec, layout, vicon, other);
       MethodErrors theirs = trial_errors(r2);
