@@ -43,7 +43,7 @@ void LayoutTabState::redo() {
 
 std::string LayoutTabState::title() const {
   std::string t = file_path_ ? file_path_->filename().string() : std::string("untitled layout");
-  if (unsaved()) t += " \xE2\x80\xA2";  // "•" marks unsaved changes
+  if (unsaved()) t += " *";  // the usual unsaved-changes mark
   return t;
 }
 

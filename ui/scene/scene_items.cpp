@@ -111,7 +111,7 @@ void add_device(SceneList& out, const SceneInputs& in, int i) {
   box.flags = flags;
   out.items.push_back(box);
   // USB side marker: the cable leaves the controller at one short end; we mark the −x end
-  // (device frame) — an assumption to be checked against the lab's own controllers.
+  // (device frame) - an assumption to be checked against the lab's own controllers.
   SceneItem usb = box;
   usb.role = ItemRole::kDeviceUsbMarker;
   usb.a = Eigen::Vector3d(-kDeviceBoxHalfMm.x() - 4.0, -6.5, 0.0);

@@ -2,6 +2,8 @@
 
 #include <imgui.h>
 
+#include "ui/widgets/widget_anchors.h"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -10,7 +12,7 @@ namespace lmc::ui {
 
 std::string format_duration(double s) {
   char buf[48];
-  if (!std::isfinite(s) || s < 0) return "–";
+  if (!std::isfinite(s) || s < 0) return "-";
   if (s < 60) {
     std::snprintf(buf, sizeof buf, "%.1f s", s);
   } else {
@@ -21,7 +23,7 @@ std::string format_duration(double s) {
 }
 
 bool draw_progress_row(const char* id, double fraction, const std::string& stage, double elapsed_s,
-                       std::optional<double> eta_s, bool cancellable) {
+                       std::optional<double> eta_s, bool cancellable, WidgetAnchors* anchors) {
   ImGui::PushID(id);
   char overlay[160];
   std::snprintf(overlay, sizeof overlay, "%s  %.0f %%", stage.c_str(), std::clamp(fraction, 0.0, 1.0) * 100.0);
@@ -31,9 +33,10 @@ bool draw_progress_row(const char* id, double fraction, const std::string& stage
   if (cancellable) {
     ImGui::SameLine();
     cancel = ImGui::Button("Cancel");
+    if (anchors != nullptr) anchors->remember(std::string(id) + ".cancel");
   }
   ImGui::TextDisabled("elapsed %s · remaining %s", format_duration(elapsed_s).c_str(),
-                      eta_s ? format_duration(*eta_s).c_str() : "estimating…");
+                      eta_s ? format_duration(*eta_s).c_str() : "estimating...");
   ImGui::PopID();
   return cancel;
 }

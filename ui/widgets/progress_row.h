@@ -5,9 +5,12 @@
 
 namespace lmc::ui {
 
-// Returns true when Cancel was pressed this frame.
+class WidgetAnchors;
+
+// Returns true when Cancel was pressed this frame. With `anchors`, the Cancel button is recorded
+// as "<id>.cancel".
 bool draw_progress_row(const char* id, double fraction, const std::string& stage, double elapsed_s,
-                       std::optional<double> eta_s, bool cancellable = true);
+                       std::optional<double> eta_s, bool cancellable = true, WidgetAnchors* anchors = nullptr);
 
 // "2 min 05 s", "12.3 s".
 std::string format_duration(double seconds);

@@ -1,19 +1,297 @@
 #include "ui/tabs/layout/layout_tab.h"
 
-#include "ui/widgets/placeholder_panel.h"
+#include <epoxy/gl.h>
+#include <GLFW/glfw3.h>
+#include <imgui.h>
+
+#include <algorithm>
+#include <filesystem>
+
+#include "core/common/paths.h"
+#include "core/io/layout_json.h"
+#include "ui/scene/gl_scene_renderer.h"
+#include "ui/tabs/layout/coverage_panel.h"
+#include "ui/tabs/layout/heatmap_panel.h"
+#include "ui/tabs/layout/inspector_panel.h"
+#include "ui/tabs/layout/optimiser_panel.h"
+#include "ui/tabs/layout/scene_panel.h"
+#include "ui/tabs/layout/timeline_panel.h"
 
 namespace lmc::ui {
 namespace {
 
-class LayoutTab final : public Tab {
- public:
-  void draw() override {
-    draw_placeholder_panel("Layout", "Design where the controllers stand around the hand, see which fingers each one can see, and let the optimiser search for a better layout.", {"3D scene: table, controllers with their viewing pyramids, the hand from a pose set", "Drag and rotate controllers; inspector with locks; undo/redo", "Live per-finger visibility, coverage table and table heatmaps", "Particle-swarm optimiser in the background with progress, cancel and apply"});
+LayoutDocument initial_document() {
+  // Open on the paper's optimized layout: the first thing a lab sees is a real design.
+  try {
+    return make_document(load_layout_or_preset("paper-optimized"));
+  } catch (const std::exception&) {
+    return make_document(default_new_layout());
   }
-};
+}
+
+// GLFW key codes (the 1.86 GLFW backend indexes KeysDown by them); letters are their ASCII codes.
+constexpr int kKeyDelete = 261;
 
 }  // namespace
 
-std::unique_ptr<Tab> make_layout_tab(StatusSink&) { return std::make_unique<LayoutTab>(); }
+std::unique_ptr<Tab> make_layout_tab(StatusSink& status) { return std::make_unique<LayoutTab>(status); }
+
+LayoutTab::LayoutTab(StatusSink& status, std::unique_ptr<SceneRenderer> renderer)
+    : status_(status),
+      state_(std::make_shared<LayoutTabState>(initial_document(),
+                                              [this](const std::string& t, bool e) { status_.set_status(t, e); })),
+      renderer_(std::move(renderer)) {
+  scene_ = std::make_unique<ScenePanel>(state_, [this] { return this->renderer(); });
+  timeline_ = std::make_unique<TimelinePanel>(state_);
+  inspector_ = std::make_unique<InspectorPanel>(state_);
+  coverage_ = std::make_unique<CoveragePanel>(state_);
+  heatmap_ = std::make_unique<HeatmapPanel>(state_);
+  optimiser_ = std::make_unique<OptimiserPanel>(state_);
+  state_->select(0);
+}
+
+LayoutTab::~LayoutTab() = default;
+
+SceneRenderer* LayoutTab::renderer() {
+  if (!renderer_ && !renderer_failed_) {
+    if (glfwGetCurrentContext() == nullptr) {
+      renderer_failed_ = true;  // headless: no GL
+      return nullptr;
+    }
+    try {
+      renderer_ = std::make_unique<GlSceneRenderer>();
+    } catch (const std::exception& e) {
+      renderer_failed_ = true;
+      status_.set_status(std::string("3D view unavailable: ") + e.what(), true);
+    }
+  }
+  return renderer_.get();
+}
+
+void LayoutTab::update() { state_->update(static_cast<double>(ImGui::GetIO().DeltaTime)); }
+
+std::string LayoutTab::document_title() const { return state_->title(); }
+bool LayoutTab::has_unsaved_changes() const { return state_->unsaved(); }
+
+int LayoutTab::prepare_for_capture() {
+  state_->load_preset("paper-optimized");
+  state_->select(1);
+  state_->display.show_heatmap = true;
+  state_->display.heatmap_finger = 1;  // index: the finger the study's index-flexion trials move
+  state_->display.show_pyramids = true;
+  state_->display.show_rays = true;
+  scene_->frame_all();
+  return 4;
+}
+
+bool LayoutTab::busy_for_capture() const { return state_->busy(); }
+
+void LayoutTab::request(Pending action, std::string preset) {
+  pending_preset_ = std::move(preset);
+  if (state_->unsaved() && modals_enabled_) {
+    pending_ = action;
+    confirm_open_ = true;
+  } else {
+    run(action);
+  }
+}
+
+void LayoutTab::run(Pending action) {
+  switch (action) {
+    case Pending::kNew:
+      state_->new_layout();
+      state_->set_status("New layout");
+      break;
+    case Pending::kOpen: {
+      const auto dir = state_->file_path() ? state_->file_path()->parent_path() : std::filesystem::current_path();
+      browser_saving_ = false;
+      browser_.open(FileBrowser::Mode::kOpen, dir);
+      break;
+    }
+    case Pending::kPreset:
+      if (std::string err = state_->load_preset(pending_preset_); !err.empty()) {
+        error_message_ = err;
+        error_open_ = modals_enabled_;
+      }
+      break;
+    case Pending::kNone: break;
+  }
+  pending_ = Pending::kNone;
+}
+
+void LayoutTab::save(bool save_as) {
+  if (!save_as && state_->file_path()) {
+    if (std::string err = state_->save_to(*state_->file_path()); !err.empty()) {
+      error_message_ = err;
+      error_open_ = modals_enabled_;
+    }
+    return;
+  }
+  browser_saving_ = true;
+  const auto dir = state_->file_path() ? state_->file_path()->parent_path() : std::filesystem::current_path();
+  const std::string name = state_->file_path() ? state_->file_path()->filename().string()
+                                               : (state_->layout().name.empty() ? "layout" : state_->layout().name) + ".json";
+  browser_.open(FileBrowser::Mode::kSave, dir, name);
+}
+
+void LayoutTab::handle_shortcuts() {
+  ImGuiIO& io = ImGui::GetIO();
+  if (io.WantTextInput || ImGui::IsPopupOpen("", ImGuiPopupFlags_AnyPopupId)) return;
+  if (io.KeyCtrl) {
+    if (ImGui::IsKeyPressed('Z', true)) io.KeyShift ? state_->redo() : state_->undo();
+    if (ImGui::IsKeyPressed('Y', true)) state_->redo();
+    if (ImGui::IsKeyPressed('S', false)) save(io.KeyShift);
+    if (ImGui::IsKeyPressed('O', false)) request(Pending::kOpen);
+    if (ImGui::IsKeyPressed('N', false)) request(Pending::kNew);
+    return;
+  }
+  if (ImGui::IsKeyPressed('F', false)) scene_->frame_all();
+  if (ImGui::IsKeyPressed(kKeyDelete, false) && state_->selected >= 0) {
+    state_->report(remove_device(state_->upd_history(), state_->selected), "Remove controller");
+  }
+}
+
+void LayoutTab::draw_toolbar() {
+  LayoutTabState& s = *state_;
+  if (ImGui::Button("New")) request(Pending::kNew);
+  ImGui::SameLine();
+  if (ImGui::Button("Open...")) request(Pending::kOpen);
+  ImGui::SameLine();
+  if (ImGui::Button("Save")) save(false);
+  ImGui::SameLine();
+  if (ImGui::Button("Save as...")) save(true);
+  ImGui::SameLine();
+  if (ImGui::Button("Presets v")) ImGui::OpenPopup("##presets");
+  if (ImGui::BeginPopup("##presets")) {
+    if (ImGui::MenuItem("Paper: initial layout (2 × 2 square, ±60 mm)")) request(Pending::kPreset, "paper-initial");
+    if (ImGui::MenuItem("Paper: optimized layout (PSO result)")) request(Pending::kPreset, "paper-optimized");
+    ImGui::EndPopup();
+  }
+  ImGui::SameLine(0, 20);
+  ImGui::BeginDisabled(!s.history().can_undo());
+  const std::string undo_label = s.history().can_undo() ? "Undo " + s.history().undo_message() : std::string("Undo");
+  if (ImGui::Button((undo_label + "###undo").c_str())) s.undo();
+  ImGui::EndDisabled();
+  if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled)) ImGui::SetTooltip("Ctrl+Z");
+  ImGui::SameLine();
+  ImGui::BeginDisabled(!s.history().can_redo());
+  const std::string redo_label = s.history().can_redo() ? "Redo " + s.history().redo_message() : std::string("Redo");
+  if (ImGui::Button((redo_label + "###redo").c_str())) s.redo();
+  ImGui::EndDisabled();
+  if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled)) ImGui::SetTooltip("Ctrl+Shift+Z or Ctrl+Y");
+  ImGui::SameLine(0, 20);
+  ImGui::TextDisabled("%s", s.title().c_str());
+}
+
+void LayoutTab::draw_dialogs() {
+  if (auto chosen = browser_.draw()) {
+    const std::string err = browser_saving_ ? state_->save_to(*chosen) : state_->open_file(*chosen);
+    if (!err.empty()) {
+      error_message_ = err;
+      error_open_ = modals_enabled_;
+    }
+  }
+  if (confirm_open_) {
+    ImGui::OpenPopup("Discard unsaved changes?");
+    confirm_open_ = false;
+  }
+  if (ImGui::BeginPopupModal("Discard unsaved changes?", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) {
+    ImGui::TextUnformatted("The layout has changes that are not saved. Continue and lose them?");
+    if (ImGui::Button("Discard changes")) {
+      ImGui::CloseCurrentPopup();
+      run(pending_);
+    }
+    ImGui::SameLine();
+    if (ImGui::Button("Cancel")) {
+      pending_ = Pending::kNone;
+      ImGui::CloseCurrentPopup();
+    }
+    ImGui::EndPopup();
+  }
+  if (error_open_) {
+    ImGui::OpenPopup("Layout file problem");
+    error_open_ = false;
+  }
+  if (ImGui::BeginPopupModal("Layout file problem", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) {
+    ImGui::PushTextWrapPos(560.0f);
+    ImGui::TextColored(ImVec4(1, 0.5f, 0.45f, 1), "%s", error_message_.c_str());
+    ImGui::PopTextWrapPos();
+    if (ImGui::Button("OK", ImVec2(100, 0))) ImGui::CloseCurrentPopup();
+    ImGui::EndPopup();
+  }
+}
+
+void LayoutTab::draw() {
+  LayoutTabState& s = *state_;
+  handle_shortcuts();
+  draw_toolbar();
+
+  const ImVec2 avail = ImGui::GetContentRegionAvail();
+  right_width_ = std::clamp(right_width_, 320.0f, std::max(320.0f, avail.x - 300.0f));
+  const float splitter_w = 6.0f;
+  const float left_w = std::max(200.0f, avail.x - right_width_ - splitter_w);
+
+  ImGui::BeginChild("##left", ImVec2(left_w, avail.y), false, ImGuiWindowFlags_NoScrollbar | ImGuiWindowFlags_NoScrollWithMouse);
+  {
+    // View row above the scene.
+    if (ImGui::SmallButton("3D")) s.camera.set_named_view(NamedView::kPerspective);
+    ImGui::SameLine();
+    if (ImGui::SmallButton("Top")) s.camera.set_named_view(NamedView::kTop);
+    ImGui::SameLine();
+    if (ImGui::SmallButton("Front")) s.camera.set_named_view(NamedView::kFront);
+    ImGui::SameLine();
+    if (ImGui::SmallButton("Side")) s.camera.set_named_view(NamedView::kSide);
+    ImGui::SameLine();
+    if (ImGui::SmallButton("Frame all (F)")) scene_->frame_all();
+    ImGui::SameLine(0, 16);
+    ImGui::Checkbox("Pyramids", &s.display.show_pyramids);
+    ImGui::SameLine();
+    ImGui::Checkbox("Rays", &s.display.show_rays);
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("Lines from the selected controller to every finger marker:\ngreen clear, red blocked (hover one for the reason)");
+    ImGui::SameLine();
+    ImGui::Checkbox("Heatmap", &s.display.show_heatmap);
+    ImGui::SameLine();
+    ImGui::Checkbox("Ghost", &s.display.show_ghost);
+    const float timeline_h = ImGui::GetFrameHeightWithSpacing() + 6.0f;
+    const ImVec2 scene_size(ImGui::GetContentRegionAvail().x, ImGui::GetContentRegionAvail().y - timeline_h);
+    scene_->draw(scene_size);
+    ImGui::Spacing();
+    timeline_->draw();
+  }
+  ImGui::EndChild();
+
+  ImGui::SameLine(0, 0);
+  ImGui::InvisibleButton("##splitter", ImVec2(splitter_w, avail.y));
+  if (ImGui::IsItemActive()) right_width_ -= ImGui::GetIO().MouseDelta.x;
+  if (ImGui::IsItemHovered() || ImGui::IsItemActive()) ImGui::SetMouseCursor(ImGuiMouseCursor_ResizeEW);
+  ImGui::SameLine(0, 0);
+
+  ImGui::BeginChild("##right", ImVec2(0, avail.y), false);
+  {
+    const float coverage_h = std::min(300.0f, avail.y * 0.45f);
+    ImGui::BeginChild("##right_tabs", ImVec2(0, avail.y - coverage_h - 4), true);
+    if (ImGui::BeginTabBar("##layout_panels")) {
+      if (ImGui::BeginTabItem("Inspector")) {
+        inspector_->draw();
+        ImGui::EndTabItem();
+      }
+      if (ImGui::BeginTabItem("Heatmap")) {
+        heatmap_->draw();
+        ImGui::EndTabItem();
+      }
+      if (ImGui::BeginTabItem("Optimiser")) {
+        optimiser_->draw();
+        ImGui::EndTabItem();
+      }
+      ImGui::EndTabBar();
+    }
+    ImGui::EndChild();
+    ImGui::BeginChild("##coverage", ImVec2(0, 0), true);
+    coverage_->draw();
+    ImGui::EndChild();
+  }
+  ImGui::EndChild();
+  draw_dialogs();
+}
 
 }  // namespace lmc::ui

@@ -1,10 +1,77 @@
 #pragma once
+// The Layout tab (issue #4): design where the controllers stand, see which fingers each can see,
+// and let the optimiser search for a better layout. This class is the composition root: it builds
+// the shared LayoutTabState and one object per panel, arranges them (ImGui 1.86 has no docking:
+// child regions with a splitter), and owns the tab-level commands (file dialogs, shortcuts,
+// confirmations).
 #include <memory>
+#include <string>
 
+#include "ui/model/layout_tab_state.h"
+#include "ui/scene/scene_renderer.h"
 #include "ui/tabs/tab.h"
+#include "ui/widgets/file_browser.h"
 
 namespace lmc::ui {
 
+class ScenePanel;
+class TimelinePanel;
+class InspectorPanel;
+class CoveragePanel;
+class HeatmapPanel;
+class OptimiserPanel;
+
 std::unique_ptr<Tab> make_layout_tab(StatusSink& status);
+
+class LayoutTab final : public Tab {
+ public:
+  // `renderer` null: a GL renderer is created on first draw when a GL context is current (none in
+  // headless tests: the scene then draws a flat background).
+  LayoutTab(StatusSink& status, std::unique_ptr<SceneRenderer> renderer = nullptr);
+  ~LayoutTab() override;
+
+  void update() override;
+  void draw() override;
+  std::string document_title() const override;
+  bool has_unsaved_changes() const override;
+  int prepare_for_capture() override;
+  bool busy_for_capture() const override;
+
+  LayoutTabState& state() { return *state_; }
+  ScenePanel& scene_panel() { return *scene_; }
+  OptimiserPanel& optimiser_panel() { return *optimiser_; }
+  // Modal dialogs off (tests): errors go to the status line only.
+  void set_modals_enabled(bool on) { modals_enabled_ = on; }
+
+ private:
+  enum class Pending { kNone, kNew, kOpen, kPreset };
+  void draw_toolbar();
+  void handle_shortcuts();
+  void draw_dialogs();
+  void request(Pending action, std::string preset = {});
+  void run(Pending action);
+  void save(bool save_as);
+  SceneRenderer* renderer();
+
+  StatusSink& status_;
+  std::shared_ptr<LayoutTabState> state_;
+  std::unique_ptr<SceneRenderer> renderer_;
+  bool renderer_failed_ = false;
+  std::unique_ptr<ScenePanel> scene_;
+  std::unique_ptr<TimelinePanel> timeline_;
+  std::unique_ptr<InspectorPanel> inspector_;
+  std::unique_ptr<CoveragePanel> coverage_;
+  std::unique_ptr<HeatmapPanel> heatmap_;
+  std::unique_ptr<OptimiserPanel> optimiser_;
+  FileBrowser browser_{"Layout file"};
+  bool browser_saving_ = false;
+  float right_width_ = 470.0f;
+  Pending pending_ = Pending::kNone;
+  std::string pending_preset_;
+  bool confirm_open_ = false;
+  std::string error_message_;
+  bool error_open_ = false;
+  bool modals_enabled_ = true;
+};
 
 }  // namespace lmc::ui

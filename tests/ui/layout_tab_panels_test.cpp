@@ -1,0 +1,246 @@
+// Headless tests of the Layout tab's real ImGui panels: mouse and keys are fed through ImGuiIO,
+// frames are run without a renderer, and the scene panel gets a recording renderer.
+#include <gtest/gtest.h>
+
+#include <chrono>
+#include <thread>
+
+#include "tests/ui/headless_imgui.h"
+#include "ui/model/layout_actions.h"
+#include "ui/tabs/layout/layout_tab.h"
+#include "ui/tabs/layout/optimiser_panel.h"
+#include "ui/tabs/layout/scene_panel.h"
+
+namespace lmc::ui {
+namespace {
+
+using testing::HeadlessImGui;
+
+class RecordingRenderer final : public SceneRenderer {
+ public:
+  std::uintptr_t render(const SceneList& scene, const OrbitCamera&, int w, int h) override {
+    last = scene;
+    width = w;
+    height = h;
+    ++calls;
+    return 0;
+  }
+  SceneList last;
+  int width = 0, height = 0, calls = 0;
+};
+
+class SilentStatus final : public StatusSink {
+ public:
+  void set_status(const std::string& text, bool is_error) override {
+    last = text;
+    error = is_error;
+  }
+  std::string last;
+  bool error = false;
+};
+
+// A small pose set keeps every test fast (and under ASan).
+void use_small_pose_set(LayoutTabState& s, int frames) {
+  PoseSetChoice c;
+  c.frames = frames;
+  c.seed = 7;
+  ASSERT_TRUE(set_pose_set_choice(s.upd_history(), c));
+}
+
+struct TabFixture : ::testing::Test {
+  HeadlessImGui gui;
+  SilentStatus status;
+  RecordingRenderer* renderer = nullptr;
+  std::unique_ptr<LayoutTab> tab;
+
+  void SetUp() override {
+    auto r = std::make_unique<RecordingRenderer>();
+    renderer = r.get();
+    tab = std::make_unique<LayoutTab>(status, std::move(r));
+    tab->set_modals_enabled(false);
+    use_small_pose_set(tab->state(), 40);
+    tab->state().display.show_heatmap = false;
+    tab->state().display.show_pyramids = false;  // a clear line of sight to the boxes
+  }
+  std::function<void()> body() {
+    return [this] {
+      tab->update();
+      tab->draw();
+    };
+  }
+  // Screen position of the centre of device i's box, from last frame's camera and image rect.
+  ImVec2 device_on_screen(int i) {
+    ScenePanel& sp = tab->scene_panel();
+    const LayoutDevice& d = tab->state().layout().devices[static_cast<size_t>(i)];
+    const Eigen::Vector3d c = d.to_world(Eigen::Vector3d(0, -2, 0));
+    const auto p = tab->state().camera.project(c, sp.image_size().x, sp.image_size().y);
+    EXPECT_TRUE(p.has_value());
+    return ImVec2(sp.image_min().x + static_cast<float>(p->x()), sp.image_min().y + static_cast<float>(p->y()));
+  }
+};
+
+TEST_F(TabFixture, SceneIsRenderedAtThePanelSizeWithEveryController) {
+  gui.frames(3, body());
+  EXPECT_GT(renderer->calls, 0);
+  EXPECT_EQ(renderer->width, static_cast<int>(tab->scene_panel().image_size().x));
+  EXPECT_GT(renderer->width, 500);
+  EXPECT_EQ(renderer->last.count(ItemRole::kDevice), 4u);  // the paper's optimized layout
+}
+
+TEST_F(TabFixture, DraggingAControllerMovesItAndIsOneUndoStep) {
+  tab->state().camera.set_named_view(NamedView::kTop);
+  gui.frames(3, body());
+  const LayoutDocument before = tab->state().history().head();
+  const size_t commits = tab->state().history().undo_size();
+  const ImVec2 from = device_on_screen(2);
+  gui.drag(from, ImVec2(from.x + 80, from.y + 30), 8, body());
+
+  const auto& hist = tab->state().history();
+  EXPECT_EQ(hist.undo_size(), commits + 1) << "a drag is exactly one undo step";
+  EXPECT_EQ(hist.undo_message(), "Move LMC3");
+  EXPECT_EQ(tab->state().selected, 2) << "pressing on a controller selects it";
+  const DevicePose moved = hist.head().layout.devices[2].pose;
+  const DevicePose was = before.layout.devices[2].pose;
+  EXPECT_GT(moved.x_mm - was.x_mm, 20.0) << "dragged right in a top view: +x";
+  EXPECT_EQ(moved.y_mm, was.y_mm);
+  EXPECT_EQ(moved.rx_deg, was.rx_deg);
+  EXPECT_EQ(moved.ry_deg, was.ry_deg);
+  for (int i : {0, 1, 3}) EXPECT_EQ(hist.head().layout.devices[static_cast<size_t>(i)], before.layout.devices[static_cast<size_t>(i)]);
+  EXPECT_TRUE(tab->has_unsaved_changes());
+
+  // Ctrl+Z restores the exact pose; Ctrl+Shift+Z brings the move back.
+  gui.set_ctrl(true);
+  gui.tap_key('Z', body());
+  EXPECT_EQ(tab->state().history().head(), before);
+  gui.set_shift(true);
+  gui.tap_key('Z', body());
+  gui.set_shift(false);
+  gui.set_ctrl(false);
+  EXPECT_EQ(tab->state().history().head().layout.devices[2].pose, moved);
+  gui.set_ctrl(true);
+  gui.tap_key('Z', body());
+  gui.tap_key('Y', body());
+  gui.set_ctrl(false);
+  EXPECT_EQ(tab->state().history().head().layout.devices[2].pose, moved);
+}
+
+TEST_F(TabFixture, EscapeDuringADragPutsTheControllerBack) {
+  tab->state().camera.set_named_view(NamedView::kTop);
+  gui.frames(3, body());
+  const LayoutDocument before = tab->state().history().head();
+  const ImVec2 from = device_on_screen(3);
+  gui.move_to(from.x, from.y);
+  gui.frame(body());
+  gui.set_button(0, true);
+  gui.frame(body());
+  gui.move_to(from.x + 60, from.y);
+  gui.frame(body());
+  EXPECT_NE(tab->state().layout().devices[3].pose, before.layout.devices[3].pose) << "the drag previews live";
+  gui.tap_key(256, body());  // Escape
+  gui.set_button(0, false);
+  gui.frame(body());
+  EXPECT_EQ(tab->state().history().head(), before);
+  EXPECT_EQ(tab->state().doc(), before);
+}
+
+TEST_F(TabFixture, ClickingEmptySpaceClearsTheSelectionAndOrbitDragMovesOnlyTheCamera) {
+  gui.frames(3, body());
+  tab->state().select(0);
+  const ScenePanel& sp = tab->scene_panel();
+  const ImVec2 corner(sp.image_min().x + 15, sp.image_min().y + 15);
+  const double yaw = tab->state().camera.yaw_deg();
+  const size_t commits = tab->state().history().undo_size();
+  gui.drag(corner, ImVec2(corner.x + 100, corner.y), 5, body());
+  EXPECT_NE(tab->state().camera.yaw_deg(), yaw);
+  EXPECT_EQ(tab->state().history().undo_size(), commits);
+  EXPECT_EQ(tab->state().selected, 0) << "a drag is not a click";
+  gui.click(corner.x, corner.y, body());
+  EXPECT_EQ(tab->state().selected, -1);
+}
+
+// ---- optimiser panel on its own ----------------------------------------------------------------
+
+struct OptimiserFixture : ::testing::Test {
+  HeadlessImGui gui{900, 1000};
+  std::shared_ptr<LayoutTabState> state =
+      std::make_shared<LayoutTabState>(make_document(default_new_layout()));
+  OptimiserPanel panel{state};
+
+  void SetUp() override {
+    use_small_pose_set(*state, 30);
+    state->display.show_heatmap = false;
+    state->update(0.0);
+    state->poses.wait();
+    state->update(0.0);
+    ASSERT_TRUE(state->poses.current());
+  }
+  std::function<void()> body() {
+    return [this] {
+      state->update(1.0 / 60.0);
+      panel.draw();
+    };
+  }
+  void click(const std::string& anchor) {
+    gui.frame(body());
+    const auto c = panel.anchors().centre(anchor);
+    ASSERT_TRUE(c.has_value()) << anchor << " is not on screen";
+    gui.click(c->x, c->y, body());
+  }
+  void wait_until_idle() {
+    const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(60);
+    while (state->optimiser.running() && std::chrono::steady_clock::now() < deadline) {
+      std::this_thread::sleep_for(std::chrono::milliseconds(2));
+    }
+    gui.frame(body());
+  }
+};
+
+TEST_F(OptimiserFixture, StartThenCancelLeavesTheLayoutUnchanged) {
+  state->pso.particles = 8;
+  state->pso.iterations = 100000;  // far more than can finish before Cancel
+  const LayoutDocument before = state->history().head();
+  const size_t commits = state->history().undo_size();
+  click("start");
+  EXPECT_TRUE(state->optimiser.running() || state->optimiser.state() == JobState::kCancelled);
+  click("pso.cancel");
+  wait_until_idle();
+  EXPECT_EQ(state->optimiser.state(), JobState::kCancelled);
+  EXPECT_EQ(state->history().head(), before);
+  EXPECT_EQ(state->doc(), before);
+  EXPECT_EQ(state->history().undo_size(), commits);
+}
+
+TEST_F(OptimiserFixture, ApplyReplacesTheLayoutInOneUndoableStep) {
+  state->pso.particles = 6;
+  state->pso.iterations = 3;
+  const LayoutDocument before = state->history().head();
+  const size_t commits = state->history().undo_size();
+  click("start");
+  wait_until_idle();
+  ASSERT_EQ(state->optimiser.state(), JobState::kCompleted) << state->optimiser.error();
+  ASSERT_TRUE(state->optimiser.outcome());
+  EXPECT_FALSE(state->optimiser.history().empty()) << "the convergence plot has data";
+  const Layout candidate = state->optimiser.outcome()->pso.best_layout;
+  click("apply");
+  EXPECT_EQ(state->history().undo_size(), commits + 1);
+  EXPECT_EQ(state->history().undo_message(), "Apply optimised layout");
+  for (size_t i = 0; i < candidate.devices.size(); ++i) {
+    EXPECT_EQ(state->history().head().layout.devices[i].pose, candidate.devices[i].pose);
+  }
+  EXPECT_FALSE(state->optimiser.outcome()) << "applied candidates are not offered again";
+  state->undo();
+  EXPECT_EQ(state->history().head(), before);
+}
+
+TEST_F(OptimiserFixture, LockedParametersStayPutInTheCandidate) {
+  state->pso.particles = 6;
+  state->pso.iterations = 2;
+  for (int k = 0; k < kNumPoseParams; ++k) ASSERT_TRUE(set_device_lock(state->upd_history(), 0, k, true));
+  click("start");
+  wait_until_idle();
+  ASSERT_TRUE(state->optimiser.outcome()) << state->optimiser.error();
+  EXPECT_EQ(state->optimiser.outcome()->pso.best_layout.devices[0].pose, state->history().head().layout.devices[0].pose);
+}
+
+}  // namespace
+}  // namespace lmc::ui

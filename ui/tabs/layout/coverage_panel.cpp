@@ -1,0 +1,104 @@
+#include "ui/tabs/layout/coverage_panel.h"
+
+#include <imgui.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <string>
+
+#include "ui/scene/colour_maps.h"
+
+namespace lmc::ui {
+namespace {
+ImU32 cell_colour(double share, float alpha) {
+  const Rgba c = viridis(share);
+  return ImGui::ColorConvertFloat4ToU32(ImVec4(c.r, c.g, c.b, alpha));
+}
+}  // namespace
+
+void CoveragePanel::draw() {
+  LayoutTabState& s = *state_;
+  const CoverageSnapshotPtr snap = s.coverage.latest();
+  const PoseSetPtr poses = s.poses.current();
+  ImGui::TextUnformatted("Coverage");
+  ImGui::SameLine();
+  if (!poses) {
+    ImGui::TextDisabled(s.poses.error().empty() ? "- loading the pose set..." : "- pose set failed to load");
+    if (!s.poses.error().empty()) ImGui::TextColored(ImVec4(1, 0.45f, 0.4f, 1), "%s", s.poses.error().c_str());
+    return;
+  }
+  ImGui::TextDisabled("on %d frames (%s)%s", poses->size(), poses->set.description.c_str(),
+                      s.coverage.up_to_date() ? "" : "  · updating...");
+  if (!s.coverage.error().empty()) ImGui::TextColored(ImVec4(1, 0.45f, 0.4f, 1), "%s", s.coverage.error().c_str());
+  if (!snap || snap->all.devices == 0) return;
+  const Coverage& c = snap->all;
+  const Layout& l = s.layout();
+
+  const ImGuiTableFlags flags = ImGuiTableFlags_Borders | ImGuiTableFlags_RowBg | ImGuiTableFlags_SizingStretchSame;
+  if (ImGui::BeginTable("##coverage", kNumDigits + 1, flags)) {
+    ImGui::TableSetupColumn("seen by", ImGuiTableColumnFlags_WidthFixed, 86.0f);
+    for (int k = 0; k < kNumDigits; ++k) ImGui::TableSetupColumn(std::string(digit_name(k)).c_str());
+    ImGui::TableHeadersRow();
+    for (int d = 0; d < c.devices; ++d) {
+      ImGui::TableNextRow();
+      ImGui::TableSetColumnIndex(0);
+      const bool sel = d == s.selected;
+      const char* slot = d < l.device_count() ? l.devices[static_cast<size_t>(d)].slot.c_str() : "?";
+      if (sel) {
+        ImGui::TextColored(ImVec4(1.0f, 0.62f, 0.2f, 1.0f), "%s", slot);
+      } else {
+        ImGui::TextUnformatted(slot);
+      }
+      for (int k = 0; k < kNumDigits; ++k) {
+        ImGui::TableSetColumnIndex(k + 1);
+        const double f = c.device_finger_fraction(d, k);
+        ImGui::TableSetBgColor(ImGuiTableBgTarget_CellBg, cell_colour(f, 0.45f));
+        ImGui::Text("%5.1f %%", f * 100.0);
+      }
+    }
+    ImGui::TableNextRow();
+    ImGui::TableSetColumnIndex(0);
+    ImGui::TextColored(ImVec4(1.0f, 0.5f, 0.45f, 1.0f), "nobody");
+    for (int k = 0; k < kNumDigits; ++k) {
+      ImGui::TableSetColumnIndex(k + 1);
+      const double f = c.finger_unseen_fraction(k);
+      if (f > 0) ImGui::TableSetBgColor(ImGuiTableBgTarget_CellBg, IM_COL32(200, 50, 45, static_cast<int>(60 + 150 * std::min(1.0, f * 3))));
+      ImGui::Text("%5.1f %%", f * 100.0);
+      if (ImGui::IsItemHovered()) {
+        ImGui::SetTooltip("%lld of %lld frames: no controller sees the %s", static_cast<long long>(c.finger_unseen[static_cast<size_t>(k)]),
+                          static_cast<long long>(c.frames), std::string(digit_name(k)).c_str());
+      }
+    }
+    ImGui::EndTable();
+  }
+
+  ImGui::Text("M = %.4g", c.metric);
+  if (ImGui::IsItemHovered()) {
+    ImGui::SetTooltip("M = sum c_i / N^(i+1) over i < D (reference-algorithms.md §4): lower is better, 0 when every\n"
+                      "controller sees every finger in every frame. One frame with an unseen finger\n"
+                      "outweighs any number of frames seen by a single controller.");
+  }
+  ImGui::SameLine(0, 18);
+  ImGui::TextDisabled("horizontal M %.3g · vertical M %.3g", snap->horizontal.metric, snap->vertical.metric);
+
+  // c_i histogram: frames whose worst-seen finger is seen by exactly i controllers.
+  const float label_w = 46, full_w = std::max(60.0f, ImGui::GetContentRegionAvail().x - label_w - 120);
+  const std::int64_t n = std::max<std::int64_t>(1, c.frames);
+  for (size_t i = 0; i < c.c.size(); ++i) {
+    ImGui::Text("c_%zu", i);
+    ImGui::SameLine(label_w);
+    const ImVec2 p = ImGui::GetCursorScreenPos();
+    const float frac = static_cast<float>(c.c[i]) / static_cast<float>(n);
+    const float h = ImGui::GetTextLineHeight() - 2;
+    ImDrawList* dl = ImGui::GetWindowDrawList();
+    dl->AddRectFilled(ImVec2(p.x, p.y + 1), ImVec2(p.x + full_w, p.y + 1 + h), IM_COL32(40, 42, 48, 255), 2.0f);
+    const Rgba col = seen_count_colour(static_cast<int>(i));
+    dl->AddRectFilled(ImVec2(p.x, p.y + 1), ImVec2(p.x + full_w * frac, p.y + 1 + h),
+                      ImGui::ColorConvertFloat4ToU32(ImVec4(col.r, col.g, col.b, 0.9f)), 2.0f);
+    ImGui::Dummy(ImVec2(full_w, h));
+    ImGui::SameLine();
+    ImGui::Text("%6lld  %5.1f %%", static_cast<long long>(c.c[i]), frac * 100.0);
+  }
+}
+
+}  // namespace lmc::ui

@@ -1,0 +1,21 @@
+#pragma once
+// Controllers × fingers: the share of pose-set frames in which each controller sees each finger;
+// per finger the frames seen by nobody; the placement metric M and the c_0 … c_D histogram
+// (reference-algorithms.md §4). Read from the coverage cache, which recomputes only the column of
+// a controller that moved, so the table follows a drag.
+#include <memory>
+
+#include "ui/model/layout_tab_state.h"
+
+namespace lmc::ui {
+
+class CoveragePanel {
+ public:
+  explicit CoveragePanel(std::shared_ptr<LayoutTabState> state) : state_(std::move(state)) {}
+  void draw();
+
+ private:
+  std::shared_ptr<LayoutTabState> state_;
+};
+
+}  // namespace lmc::ui

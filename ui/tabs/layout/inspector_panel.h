@@ -1,0 +1,29 @@
+#pragma once
+// The list of controllers (select, add, remove) and every parameter of the selected one: slot
+// name, serial number, pose x, y, z, rx, ry, rz with a lock each (locks are document state: the
+// optimiser and the scene handles leave locked parameters alone), the calibration offset and the
+// shared sensor model. Slider edits preview live and commit once on release (one undo step).
+#include <memory>
+#include <string>
+
+#include "ui/model/layout_tab_state.h"
+
+namespace lmc::ui {
+
+class InspectorPanel {
+ public:
+  explicit InspectorPanel(std::shared_ptr<LayoutTabState> state) : state_(std::move(state)) {}
+  void draw();
+
+ private:
+  void draw_device(int index);
+  void draw_sensor();
+
+  std::shared_ptr<LayoutTabState> state_;
+  char slot_buf_[64] = {};
+  char serial_buf_[64] = {};
+  int buffers_for_ = -2;
+  std::uint64_t buffers_head_ = 0;
+};
+
+}  // namespace lmc::ui

@@ -1,0 +1,242 @@
+#include "ui/tabs/layout/optimiser_panel.h"
+
+#include <imgui.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <string>
+
+#include "ui/widgets/line_plot.h"
+#include "ui/widgets/progress_row.h"
+
+namespace lmc::ui {
+
+OptimiserPanel::OptimiserPanel(std::shared_ptr<LayoutTabState> state) : state_(std::move(state)) {}
+
+void OptimiserPanel::draw() {
+  anchors_.clear();
+  if (ImGui::CollapsingHeader("Pose set", ImGuiTreeNodeFlags_DefaultOpen)) draw_pose_set();
+  if (ImGui::CollapsingHeader("Search settings")) draw_settings();
+  draw_run();
+  draw_comparison();
+}
+
+void OptimiserPanel::draw_pose_set() {
+  LayoutTabState& s = *state_;
+  if (!choice_synced_ || (!ImGui::IsAnyItemActive() && !(edit_choice_ == s.doc().pose_set) && !browser_.is_open())) {
+    edit_choice_ = s.doc().pose_set;
+    std::snprintf(file_buf_, sizeof file_buf_, "%s", edit_choice_.file.c_str());
+    choice_synced_ = true;
+  }
+  int src = static_cast<int>(edit_choice_.source);
+  ImGui::RadioButton("Monte Carlo", &src, 0);
+  ImGui::SameLine();
+  ImGui::RadioButton("File", &src, 1);
+  edit_choice_.source = static_cast<PoseSetChoice::Source>(src);
+  if (edit_choice_.source == PoseSetChoice::Source::kMonteCarlo) {
+    ImGui::SetNextItemWidth(110);
+    ImGui::InputInt("frames", &edit_choice_.frames, 100, 1000);
+    edit_choice_.frames = std::clamp(edit_choice_.frames, 1, 1000000);
+    ImGui::SameLine();
+    ImGui::SetNextItemWidth(110);
+    ImGui::InputScalar("seed", ImGuiDataType_U64, &edit_choice_.seed);
+  } else {
+    ImGui::SetNextItemWidth(-90);
+    if (ImGui::InputTextWithHint("##file", "poses.tsv (from `lmc poses -o`)", file_buf_, sizeof file_buf_)) {
+      edit_choice_.file = file_buf_;
+    }
+    ImGui::SameLine();
+    if (ImGui::Button("Browse...")) browser_.open(FileBrowser::Mode::kOpen, std::filesystem::current_path());
+  }
+  if (auto chosen = browser_.draw()) {
+    edit_choice_.file = chosen->string();
+    std::snprintf(file_buf_, sizeof file_buf_, "%s", edit_choice_.file.c_str());
+  }
+  const bool differs = !(edit_choice_ == s.doc().pose_set);
+  ImGui::BeginDisabled(!differs);
+  if (ImGui::Button("Use this pose set")) s.report(set_pose_set_choice(s.upd_history(), edit_choice_), "Pose set");
+  ImGui::EndDisabled();
+  ImGui::SameLine();
+  if (s.poses.loading()) {
+    ImGui::TextDisabled("%s...", s.poses.stage().c_str());
+  } else if (const PoseSetPtr p = s.poses.current()) {
+    ImGui::TextDisabled("loaded: %d frames (%zu horizontal, %zu vertical)", p->size(), p->horizontal.size(), p->vertical.size());
+  }
+  if (!s.poses.error().empty()) {
+    ImGui::PushTextWrapPos(0.0f);
+    ImGui::TextColored(ImVec4(1, 0.45f, 0.4f, 1), "%s", s.poses.error().c_str());
+    ImGui::PopTextWrapPos();
+  }
+}
+
+void OptimiserPanel::draw_settings() {
+  LayoutTabState& s = *state_;
+  PsoSettings& p = s.pso;
+  ImGui::SetNextItemWidth(100);
+  ImGui::InputInt("particles", &p.particles);
+  p.particles = std::clamp(p.particles, 2, 1000);
+  ImGui::SameLine();
+  ImGui::SetNextItemWidth(100);
+  ImGui::InputInt("iterations", &p.iterations);
+  p.iterations = std::clamp(p.iterations, 1, 10000);
+  ImGui::SetNextItemWidth(80);
+  ImGui::InputDouble("w", &p.w, 0, 0, "%.2f");
+  ImGui::SameLine();
+  ImGui::SetNextItemWidth(80);
+  ImGui::InputDouble("c1", &p.c1, 0, 0, "%.2f");
+  ImGui::SameLine();
+  ImGui::SetNextItemWidth(80);
+  ImGui::InputDouble("c2", &p.c2, 0, 0, "%.2f");
+  ImGui::SetNextItemWidth(120);
+  ImGui::InputScalar("PSO seed", ImGuiDataType_U64, &p.seed);
+  ImGui::SameLine();
+  ImGui::Checkbox("start from the current layout", &p.start_from_layout);
+  if (ImGui::Button("Study defaults")) {
+    const int threads = p.threads;
+    p = PsoSettings{};
+    p.threads = threads;
+  }
+  if (ImGui::IsItemHovered()) ImGui::SetTooltip("30 particles, 100 iterations, w 0.9, c1 0.5, c2 0.3 (reference-algorithms.md §5)");
+
+  ImGui::Spacing();
+  ImGui::TextDisabled("Which controllers may move (locks per parameter are in the Inspector)");
+  const LayoutDocument& doc = s.doc();
+  for (int d = 0; d < doc.device_count(); ++d) {
+    bool moves = false;
+    for (int k = 0; k < kNumPoseParams; ++k) moves = moves || !doc.locks[static_cast<size_t>(d)].locked[static_cast<size_t>(k)];
+    ImGui::PushID(d);
+    if (d > 0) ImGui::SameLine();
+    if (ImGui::Checkbox(doc.layout.devices[static_cast<size_t>(d)].slot.c_str(), &moves)) {
+      // Moving again frees the study's four parameters; holding still locks all six.
+      for (int k = 0; k < kNumPoseParams; ++k) {
+        const bool lock = moves ? (k == 1 || k == 5) : true;
+        set_device_lock(s.upd_history(), d, k, lock);
+      }
+    }
+    ImGui::PopID();
+  }
+  ImGui::TextDisabled("Search bounds (shared by all controllers)");
+  if (ImGui::BeginTable("##bounds", 3, ImGuiTableFlags_SizingFixedFit)) {
+    for (int k = 0; k < kNumPoseParams; ++k) {
+      ImGui::TableNextRow();
+      ImGui::TableSetColumnIndex(0);
+      ImGui::TextUnformatted(pose_param_name(k));
+      ParamRange r = doc.bounds.range[static_cast<size_t>(k)];
+      ImGui::PushID(k);
+      ImGui::TableSetColumnIndex(1);
+      ImGui::SetNextItemWidth(90);
+      ImGui::InputDouble("##lo", &r.lo, 0, 0, "%.0f");
+      const bool lo_done = ImGui::IsItemDeactivatedAfterEdit();
+      ImGui::TableSetColumnIndex(2);
+      ImGui::SetNextItemWidth(90);
+      ImGui::InputDouble("##hi", &r.hi, 0, 0, "%.0f");
+      const bool hi_done = ImGui::IsItemDeactivatedAfterEdit();
+      if (lo_done || hi_done) s.report(set_search_range(s.upd_history(), k, r.lo, r.hi), "Bounds");
+      ImGui::PopID();
+    }
+    ImGui::EndTable();
+  }
+}
+
+void OptimiserPanel::draw_run() {
+  LayoutTabState& s = *state_;
+  OptimiserJob& job = s.optimiser;
+  ImGui::Separator();
+  if (job.running()) {
+    char stage[96];
+    const auto& h = job.history();
+    std::snprintf(stage, sizeof stage, "iteration %d of %d", h.empty() ? 0 : static_cast<int>(h.size()) - 1,
+                  job.iterations_planned());
+    if (draw_progress_row("pso", job.fraction(), stage, job.elapsed_seconds(), job.eta_seconds(), true, &anchors_)) {
+      s.cancel_optimiser();
+    }
+  } else {
+    ImGui::BeginDisabled(!s.poses.current());
+    if (ImGui::Button("Start optimiser", ImVec2(140, 0))) s.start_optimiser();
+    anchors_.remember("start");
+    ImGui::EndDisabled();
+    ImGui::SameLine();
+    ImGui::TextDisabled("%d particles × %d iterations", s.pso.particles, s.pso.iterations);
+  }
+  if (job.state() == JobState::kFailed) {
+    ImGui::PushTextWrapPos(0.0f);
+    ImGui::TextColored(ImVec4(1, 0.45f, 0.4f, 1), "Failed: %s", job.error().c_str());
+    ImGui::PopTextWrapPos();
+  }
+  if (!job.history().empty() || job.running()) {
+    LinePlotOptions o;
+    o.log_y = true;
+    o.height_px = 110;
+    o.x_extent = job.iterations_planned() + 1;
+    ImGui::TextDisabled("Best cost M per iteration");
+    draw_line_plot("convergence", job.history(), o);
+  }
+  const auto outcome = job.outcome();
+  if (!outcome) return;
+  const PsoResult& r = outcome->pso;
+  ImGui::Text("%s: best M = %.4g after %d iterations (%.1f s)",
+              r.status == lmc::JobStatus::kCancelled ? "Cancelled, best so far" : "Done", r.best_cost, r.iterations_done,
+              r.seconds);
+  ImGui::Checkbox("Show as ghost controllers", &s.display.show_ghost);
+  if (ImGui::Button("Apply", ImVec2(100, 0))) s.apply_optimised();
+  anchors_.remember("apply");
+  if (ImGui::IsItemHovered()) ImGui::SetTooltip("Replace the poses with the candidate's (one undo step)");
+  ImGui::SameLine();
+  if (ImGui::Button("Discard", ImVec2(100, 0))) job.discard();
+  anchors_.remember("discard");
+}
+
+void OptimiserPanel::draw_comparison() {
+  LayoutTabState& s = *state_;
+  const auto outcome = s.optimiser.outcome();
+  const CoverageSnapshotPtr cur = s.coverage.latest();
+  if (!outcome || !cur) return;
+  const LayoutEvaluation& cand = outcome->candidate;
+  ImGui::Spacing();
+  ImGui::TextUnformatted("Current vs candidate");
+  if (!ImGui::BeginTable("##compare", 4, ImGuiTableFlags_Borders | ImGuiTableFlags_RowBg | ImGuiTableFlags_SizingStretchSame)) return;
+  ImGui::TableSetupColumn("");
+  ImGui::TableSetupColumn("current");
+  ImGui::TableSetupColumn("candidate");
+  ImGui::TableSetupColumn("change");
+  ImGui::TableHeadersRow();
+  const auto row_num = [](const char* name, double a, double b, bool lower_better, bool percent) {
+    ImGui::TableNextRow();
+    ImGui::TableSetColumnIndex(0);
+    ImGui::TextUnformatted(name);
+    ImGui::TableSetColumnIndex(1);
+    percent ? ImGui::Text("%.1f %%", a * 100) : ImGui::Text("%.4g", a);
+    ImGui::TableSetColumnIndex(2);
+    percent ? ImGui::Text("%.1f %%", b * 100) : ImGui::Text("%.4g", b);
+    ImGui::TableSetColumnIndex(3);
+    const double diff = b - a;
+    const bool better = lower_better ? diff < 0 : diff > 0;
+    const ImVec4 col = diff == 0 ? ImVec4(0.7f, 0.7f, 0.7f, 1) : better ? ImVec4(0.4f, 0.9f, 0.45f, 1) : ImVec4(1, 0.45f, 0.4f, 1);
+    percent ? ImGui::TextColored(col, "%+.1f pt", diff * 100) : ImGui::TextColored(col, "%+.4g", diff);
+  };
+  row_num("M (all frames)", cur->all.metric, cand.all.metric, true, false);
+  const size_t nc = std::min(cur->all.c.size(), cand.all.c.size());
+  const double na = static_cast<double>(std::max<std::int64_t>(1, cur->all.frames));
+  const double nb = static_cast<double>(std::max<std::int64_t>(1, cand.all.frames));
+  for (size_t i = 0; i < nc; ++i) {
+    char name[32];
+    std::snprintf(name, sizeof name, "c_%zu (share)", i);
+    // Fewer frames in low c_i is better; the last (seen by all) is better when higher.
+    row_num(name, static_cast<double>(cur->all.c[i]) / na, static_cast<double>(cand.all.c[i]) / nb, i + 1 < nc, true);
+  }
+  for (int k = 0; k < kNumDigits; ++k) {
+    char name[48];
+    std::snprintf(name, sizeof name, "%s seen by >=1", std::string(digit_name(k)).c_str());
+    row_num(name, 1.0 - cur->all.finger_unseen_fraction(k), 1.0 - cand.all.finger_unseen_fraction(k), false, true);
+  }
+  row_num("M horizontal poses", cur->horizontal.metric, cand.horizontal.metric, true, false);
+  row_num("M vertical poses", cur->vertical.metric, cand.vertical.metric, true, false);
+  const auto c0 = [](const Coverage& c) {
+    return c.frames > 0 && !c.c.empty() ? static_cast<double>(c.c[0]) / static_cast<double>(c.frames) : 0.0;
+  };
+  row_num("c_0 horizontal", c0(cur->horizontal), c0(cand.horizontal), true, true);
+  row_num("c_0 vertical", c0(cur->vertical), c0(cand.vertical), true, true);
+  ImGui::EndTable();
+}
+
+}  // namespace lmc::ui

@@ -1,0 +1,36 @@
+#pragma once
+// The placement search from the workbench: pose set (Monte Carlo frames + seed, or a file), PSO
+// settings with the study's defaults, which controllers may move and within which bounds; Start
+// runs it in the background with progress, ETA, a live convergence plot (log scale) and Cancel.
+// The best layout is drawn as ghost controllers; Apply replaces the layout (one undo step); the
+// comparison table shows current vs candidate.
+#include <memory>
+
+#include "ui/model/layout_tab_state.h"
+#include "ui/widgets/file_browser.h"
+#include "ui/widgets/widget_anchors.h"
+
+namespace lmc::ui {
+
+class OptimiserPanel {
+ public:
+  explicit OptimiserPanel(std::shared_ptr<LayoutTabState> state);
+  void draw();
+  // Start, pso.cancel, Apply, Discard as last drawn (for headless tests).
+  const WidgetAnchors& anchors() const { return anchors_; }
+
+ private:
+  void draw_pose_set();
+  void draw_settings();
+  void draw_run();
+  void draw_comparison();
+
+  std::shared_ptr<LayoutTabState> state_;
+  PoseSetChoice edit_choice_;
+  bool choice_synced_ = false;
+  char file_buf_[512] = {};
+  FileBrowser browser_{"Choose a pose-set file", ".tsv"};
+  WidgetAnchors anchors_;
+};
+
+}  // namespace lmc::ui

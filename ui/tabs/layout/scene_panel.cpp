@@ -1,0 +1,317 @@
+#include "ui/tabs/layout/scene_panel.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+#include "core/hand/hand_frame.h"
+#include "ui/scene/colour_maps.h"
+
+namespace lmc::ui {
+namespace {
+
+ImU32 to_u32(const Rgba& c) { return ImGui::ColorConvertFloat4ToU32(ImVec4(c.r, c.g, c.b, c.a)); }
+
+double point_segment_px(const ImVec2& p, const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
+  const Eigen::Vector2d q(p.x, p.y), ab = b - a;
+  const double l2 = ab.squaredNorm();
+  const double t = l2 > 1e-9 ? std::clamp((q - a).dot(ab) / l2, 0.0, 1.0) : 0.0;
+  return (q - (a + t * ab)).norm();
+}
+
+const char* verb_for(HandleKind k) {
+  switch (k) {
+    case HandleKind::kYaw: return "Rotate";
+    case HandleKind::kTilt: return "Tilt";
+    default: return "Move";
+  }
+}
+
+}  // namespace
+
+ScenePanel::ScenePanel(std::shared_ptr<LayoutTabState> state, std::function<SceneRenderer*()> renderer)
+    : state_(std::move(state)), renderer_(std::move(renderer)) {}
+
+void ScenePanel::frame_all() { frame_requested_ = true; }
+
+Ray ScenePanel::mouse_ray() const {
+  const ImVec2 m = ImGui::GetIO().MousePos;
+  return state_->camera.ray_through_pixel(m.x - image_min_.x, m.y - image_min_.y, image_size_.x, image_size_.y);
+}
+
+int ScenePanel::pick_device(const Ray& ray) const {
+  int best = -1;
+  double best_t = 1e300;
+  const Layout& l = state_->layout();
+  for (int i = 0; i < l.device_count(); ++i) {
+    const LayoutDevice& d = l.devices[static_cast<size_t>(i)];
+    Eigen::Isometry3d t = d.pose.device_to_world();
+    t.translation() += d.offset_mm;
+    // A slightly larger box than drawn: 13 mm is thin to hit from the side.
+    if (const auto hit = intersect_oriented_box(ray, t, kDeviceBoxCentreMm, kDeviceBoxHalfMm + Eigen::Vector3d(4, 4, 4))) {
+      if (*hit < best_t) {
+        best_t = *hit;
+        best = i;
+      }
+    }
+  }
+  return best;
+}
+
+void ScenePanel::handle_input(bool hovered) {
+  LayoutTabState& s = *state_;
+  ImGuiIO& io = ImGui::GetIO();
+  const double w = image_size_.x, h = image_size_.y;
+  const ImVec2 m(io.MousePos.x - image_min_.x, io.MousePos.y - image_min_.y);
+
+  // Hover (only when no gesture is running).
+  if (gesture_ == Gesture::kNone) {
+    s.hovered = -1;
+    s.hovered_handle = HandleKind::kNone;
+    if (hovered) {
+      if (s.selected >= 0 && s.selected < s.doc().device_count()) {
+        const HandleHit hit = hover_handle(s.layout().devices[static_cast<size_t>(s.selected)],
+                                           s.doc().locks[static_cast<size_t>(s.selected)], s.camera, m.x, m.y, w, h);
+        s.hovered_handle = hit.kind;
+        if (hit.kind != HandleKind::kNone) s.hovered = s.selected;
+      }
+      if (s.hovered_handle == HandleKind::kNone) s.hovered = pick_device(mouse_ray());
+    }
+  }
+
+  // Press: handles, then controllers, then the camera.
+  if (gesture_ == Gesture::kNone && hovered && ImGui::IsMouseClicked(ImGuiMouseButton_Left)) {
+    press_pos_ = io.MousePos;
+    moved_ = false;
+    HandleKind kind = s.hovered_handle;
+    int device = s.hovered;
+    if (kind == HandleKind::kNone && device >= 0) {
+      s.select(device);
+      kind = HandleKind::kMove;
+    }
+    if (device >= 0) {
+      s.upd_history().rollback();
+      if (drag_.begin(kind, s.layout().devices[static_cast<size_t>(device)], s.doc().locks[static_cast<size_t>(device)],
+                      mouse_ray())) {
+        gesture_ = Gesture::kHandle;
+        drag_device_ = device;
+        s.active_handle = kind;
+      } else {
+        // Locked: the press only selects; dragging from it orbits.
+        gesture_ = Gesture::kOrbit;
+      }
+    } else {
+      gesture_ = Gesture::kOrbit;
+    }
+  } else if (gesture_ == Gesture::kNone && hovered &&
+             (ImGui::IsMouseClicked(ImGuiMouseButton_Right) || ImGui::IsMouseClicked(ImGuiMouseButton_Middle))) {
+    gesture_ = Gesture::kPan;
+  }
+
+  const float dx = io.MousePos.x - press_pos_.x, dy = io.MousePos.y - press_pos_.y;
+  switch (gesture_) {
+    case Gesture::kHandle: {
+      if (ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Escape), false)) {
+        cancel_preview(s.upd_history());
+        drag_.end();
+        gesture_ = Gesture::kNone;
+        s.active_handle = HandleKind::kNone;
+        s.set_status("Drag cancelled");
+        break;
+      }
+      if (io.MouseDown[ImGuiMouseButton_Left]) {
+        if (std::abs(dx) + std::abs(dy) > 2.0f) moved_ = true;
+        if (moved_) {
+          if (const auto pose = drag_.update(mouse_ray())) preview_device_pose(s.upd_history(), drag_device_, *pose);
+        }
+      } else {
+        if (commit_device_pose(s.upd_history(), drag_device_, verb_for(drag_.kind()))) {
+          s.set_status(s.history().undo_message() + " (Ctrl+Z to undo)");
+        } else {
+          s.upd_history().rollback();
+        }
+        drag_.end();
+        gesture_ = Gesture::kNone;
+        s.active_handle = HandleKind::kNone;
+      }
+      break;
+    }
+    case Gesture::kOrbit:
+      if (io.MouseDown[ImGuiMouseButton_Left]) {
+        if (std::abs(dx) + std::abs(dy) > 3.0f) moved_ = true;
+        if (moved_) s.camera.orbit(io.MouseDelta.x, io.MouseDelta.y);
+      } else {
+        if (!moved_ && s.hovered < 0) s.select(-1);  // a click on empty space clears the selection
+        gesture_ = Gesture::kNone;
+      }
+      break;
+    case Gesture::kPan:
+      if (io.MouseDown[ImGuiMouseButton_Right] || io.MouseDown[ImGuiMouseButton_Middle]) {
+        s.camera.pan(io.MouseDelta.x, io.MouseDelta.y, h);
+      } else {
+        gesture_ = Gesture::kNone;
+      }
+      break;
+    case Gesture::kNone: break;
+  }
+
+  if (hovered && io.MouseWheel != 0.0f) s.camera.zoom_towards(m.x, m.y, w, h, io.MouseWheel);
+}
+
+void ScenePanel::draw(ImVec2 size) {
+  LayoutTabState& s = *state_;
+  image_min_ = ImGui::GetCursorScreenPos();
+  image_size_ = ImVec2(std::max(size.x, 16.0f), std::max(size.y, 16.0f));
+  if (frame_requested_) {
+    frame_requested_ = false;
+    SceneInputs in;
+    in.layout = &s.layout();
+    in.hand = s.current_hand();
+    const SceneList probe = build_scene(in);
+    // Frame the controllers and the hand, and enough of the table to read its grid around them.
+    Eigen::Vector3d lo = probe.bounds_lo.cwiseMin(Eigen::Vector3d(-250, 0, -250));
+    Eigen::Vector3d hi = probe.bounds_hi.cwiseMax(Eigen::Vector3d(250, 0, 250));
+    s.camera.frame_bounds(lo, hi, image_size_.x / image_size_.y);
+  }
+
+  ImGui::InvisibleButton("##scene", image_size_,
+                         ImGuiButtonFlags_MouseButtonLeft | ImGuiButtonFlags_MouseButtonRight |
+                             ImGuiButtonFlags_MouseButtonMiddle);
+  const bool hovered = ImGui::IsItemHovered();
+  handle_input(hovered);
+
+  // Build after input so the picture shows this frame's edit.
+  SceneInputs in;
+  in.layout = &s.layout();
+  in.locks = &s.doc().locks;
+  in.selected = s.selected;
+  in.hovered = s.hovered;
+  in.hovered_handle = s.hovered_handle;
+  in.active_handle = s.active_handle;
+  in.hand = s.current_hand();
+  in.finger_seen_count = s.frame_visibility().seen_count;
+  in.show_pyramids = s.display.show_pyramids;
+  in.table_half_extent_mm = std::max(400.0, s.display.heatmap_half_extent_mm);
+  if (s.display.show_rays && s.selected >= 0) in.rays = &s.frame_visibility().rays;
+  HeatmapGridPtr grid;
+  if (s.display.show_heatmap && s.selected >= 0) {
+    grid = s.heatmap.latest();
+    if (grid && grid->device == s.selected) {
+      in.heatmap = grid.get();
+      in.heatmap_range = s.heatmap_range();
+    }
+  }
+  std::shared_ptr<const OptimiserOutcome> outcome = s.optimiser.outcome();
+  if (s.display.show_ghost && outcome) in.ghost = &outcome->pso.best_layout;
+  scene_ = build_scene(in);
+
+  SceneRenderer* r = renderer_ ? renderer_() : nullptr;
+  const std::uintptr_t tex =
+      r ? r->render(scene_, s.camera, static_cast<int>(image_size_.x), static_cast<int>(image_size_.y)) : 0;
+  ImDrawList* dl = ImGui::GetWindowDrawList();
+  const ImVec2 image_max(image_min_.x + image_size_.x, image_min_.y + image_size_.y);
+  if (tex != 0) {
+    dl->AddImage(reinterpret_cast<ImTextureID>(tex), image_min_, image_max, ImVec2(0, 1), ImVec2(1, 0));
+  } else {
+    dl->AddRectFilled(image_min_, image_max, IM_COL32(27, 29, 34, 255));
+  }
+  draw_overlays(dl);
+}
+
+void ScenePanel::draw_overlays(ImDrawList* dl) {
+  LayoutTabState& s = *state_;
+  const double w = image_size_.x, h = image_size_.y;
+  const ImVec2 image_max(image_min_.x + image_size_.x, image_min_.y + image_size_.y);
+  dl->PushClipRect(image_min_, image_max, true);
+  // Labels at projected positions, with a shadow so they read on any background.
+  for (const SceneLabel& l : scene_.labels) {
+    const auto p = s.camera.project(l.position, w, h);
+    if (!p) continue;
+    const ImVec2 size = ImGui::CalcTextSize(l.text.c_str());
+    const ImVec2 at(image_min_.x + static_cast<float>(p->x()) - size.x * 0.5f,
+                    image_min_.y + static_cast<float>(p->y()) - size.y * 0.5f);
+    if (l.emphasised) {
+      dl->AddRectFilled(ImVec2(at.x - 3, at.y - 1), ImVec2(at.x + size.x + 3, at.y + size.y + 1), IM_COL32(20, 20, 24, 190), 3.0f);
+    }
+    dl->AddText(ImVec2(at.x + 1, at.y + 1), IM_COL32(0, 0, 0, 200), l.text.c_str());
+    dl->AddText(at, to_u32(l.colour), l.text.c_str());
+  }
+
+  // Legend: finger colours (categorical, every category listed).
+  const float line = ImGui::GetTextLineHeight();
+  ImVec2 at(image_min_.x + 10, image_max.y - 10 - line * 1.6f);
+  const char* title = "Fingers:";
+  dl->AddRectFilled(ImVec2(at.x - 6, at.y - 6), ImVec2(at.x + 430, at.y + line + 6), IM_COL32(18, 19, 23, 200), 4.0f);
+  dl->AddText(at, IM_COL32(210, 212, 218, 255), title);
+  float x = at.x + ImGui::CalcTextSize(title).x + 10;
+  for (int c = 0; c < kSeenCountCategories; ++c) {
+    dl->AddRectFilled(ImVec2(x, at.y + 1), ImVec2(x + line - 2, at.y + line - 1), to_u32(seen_count_colour(c)), 2.0f);
+    x += line + 2;
+    const std::string label = seen_count_label(c);
+    dl->AddText(ImVec2(x, at.y), IM_COL32(210, 212, 218, 255), label.c_str());
+    x += ImGui::CalcTextSize(label.c_str()).x + 12;
+  }
+
+  // Heatmap colour bar (magnitude: sequential map with numbers).
+  if (s.display.show_heatmap && s.selected >= 0) {
+    const HeatmapGridPtr g = s.heatmap.latest();
+    const float bw = 220, bx = image_max.x - bw - 16, by = image_max.y - 14 - line * 2.6f;
+    dl->AddRectFilled(ImVec2(bx - 8, by - line - 10), ImVec2(image_max.x - 6, image_max.y - 6), IM_COL32(18, 19, 23, 200), 4.0f);
+    char head[128];
+    const std::string finger =
+        s.display.heatmap_finger < 0 ? std::string("all fingers") : std::string(digit_name(s.display.heatmap_finger));
+    std::snprintf(head, sizeof head, "%s, %s%s", s.display.heatmap_mode == HeatmapMode::kShareVisible ? "frames visible" : "frames added",
+                  finger.c_str(), (g && !g->fine) ? " (preview)" : "");
+    dl->AddText(ImVec2(bx, by - line - 4), IM_COL32(210, 212, 218, 255), head);
+    const ColourRange range = s.heatmap_range();
+    constexpr int kSteps = 44;
+    for (int i = 0; i < kSteps; ++i) {
+      const float x0 = bx + bw * i / kSteps, x1 = bx + bw * (i + 1) / kSteps + 0.5f;
+      const ImU32 a = to_u32(viridis(static_cast<double>(i) / kSteps)), b = to_u32(viridis(static_cast<double>(i + 1) / kSteps));
+      dl->AddRectFilledMultiColor(ImVec2(x0, by), ImVec2(x1, by + line * 0.8f), a, b, b, a);
+    }
+    char lo[24], mid[24], hi[24];
+    std::snprintf(lo, sizeof lo, "%.0f %%", range.lo * 100);
+    std::snprintf(mid, sizeof mid, "%.0f %%", 0.5 * (range.lo + range.hi) * 100);
+    std::snprintf(hi, sizeof hi, "%.0f %%", range.hi * 100);
+    const float ty = by + line * 0.9f;
+    dl->AddText(ImVec2(bx, ty), IM_COL32(200, 202, 208, 255), lo);
+    dl->AddText(ImVec2(bx + bw * 0.5f - ImGui::CalcTextSize(mid).x * 0.5f, ty), IM_COL32(200, 202, 208, 255), mid);
+    dl->AddText(ImVec2(bx + bw - ImGui::CalcTextSize(hi).x, ty), IM_COL32(200, 202, 208, 255), hi);
+  }
+  dl->PopClipRect();
+
+  // Tooltips: a ray's verdict, else the controller under the cursor.
+  if (gesture_ != Gesture::kNone || !ImGui::IsItemHovered()) return;
+  const ImVec2 m(ImGui::GetIO().MousePos.x - image_min_.x, ImGui::GetIO().MousePos.y - image_min_.y);
+  if (s.display.show_rays && s.selected >= 0 && s.hovered < 0) {
+    const auto& rays = s.frame_visibility().rays;
+    double best = 6.0;
+    int best_i = -1;
+    for (size_t i = 0; i < rays.size(); ++i) {
+      const auto a = s.camera.project(rays[i].from, w, h), b = s.camera.project(rays[i].to, w, h);
+      if (!a || !b) continue;
+      const double d = point_segment_px(m, *a, *b);
+      if (d < best) {
+        best = d;
+        best_i = static_cast<int>(i);
+      }
+    }
+    if (best_i >= 0) {
+      const FingerRay& r = rays[static_cast<size_t>(best_i)];
+      ImGui::SetTooltip("%s -> %s\n%s", s.layout().devices[static_cast<size_t>(s.selected)].slot.c_str(),
+                        std::string(hand_point_name(r.marker)).c_str(), r.reason.c_str());
+      return;
+    }
+  }
+  if (s.hovered >= 0 && s.hovered < s.layout().device_count()) {
+    const LayoutDevice& d = s.layout().devices[static_cast<size_t>(s.hovered)];
+    const char* hint = s.hovered_handle == HandleKind::kYaw    ? "drag the green ring to turn (ry)"
+                       : s.hovered_handle == HandleKind::kTilt ? "drag the red ring to tilt (rx)"
+                                                               : "drag to move on the table";
+    ImGui::SetTooltip("%s\nx %.1f  z %.1f mm · rx %.1f° ry %.1f°\n%s", d.slot.c_str(), d.pose.x_mm, d.pose.z_mm,
+                      d.pose.rx_deg, d.pose.ry_deg, hint);
+  }
+}
+
+}  // namespace lmc::ui

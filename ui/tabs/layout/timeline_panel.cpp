@@ -1,0 +1,58 @@
+#include "ui/tabs/layout/timeline_panel.h"
+
+#include <imgui.h>
+
+#include <algorithm>
+#include <string>
+
+#include "core/hand/reference_poses.h"
+
+namespace lmc::ui {
+
+void TimelinePanel::draw() {
+  LayoutTabState& s = *state_;
+  TimelineState& t = s.timeline;
+  const PoseSetPtr p = s.poses.current();
+  const auto& frames = s.timeline_frames();
+
+  if (ImGui::Button(t.playing ? "Pause" : "Play", ImVec2(56, 0))) t.playing = !t.playing;
+  ImGui::SameLine();
+  int pos = 0;
+  if (!frames.empty()) {
+    pos = static_cast<int>(std::lower_bound(frames.begin(), frames.end(), t.frame) - frames.begin());
+    pos = std::clamp(pos, 0, static_cast<int>(frames.size()) - 1);
+  }
+  const float right = 470;
+  ImGui::SetNextItemWidth(std::max(80.0f, ImGui::GetContentRegionAvail().x - right));
+  const int max_pos = std::max(0, static_cast<int>(frames.size()) - 1);
+  char overlay[128] = "loading pose set...";
+  if (p && !frames.empty()) {
+    const PoseLabel& l = p->set.labels[static_cast<size_t>(t.frame)];
+    std::snprintf(overlay, sizeof overlay, "frame %d  ·  %s  ·  %.0f %%", t.frame,
+                  pose_label_name(l.orientation, l.motion).c_str(), l.progress * 100.0);
+  } else if (p) {
+    std::snprintf(overlay, sizeof overlay, "no frames match the filters");
+  }
+  if (ImGui::SliderInt("##frame", &pos, 0, max_pos, overlay) && !frames.empty()) {
+    t.frame = frames[static_cast<size_t>(pos)];
+    t.playing = false;
+  }
+  ImGui::SameLine();
+  const char* orientations[] = {"any palm", "horizontal", "vertical"};
+  int o = t.orientation_filter + 1;
+  ImGui::SetNextItemWidth(110);
+  if (ImGui::Combo("##orientation", &o, orientations, 3)) t.orientation_filter = o - 1;
+  ImGui::SameLine();
+  const char* motions[] = {"any motion", "open", "index", "thumb", "wrist flexion", "wrist extension"};
+  int mo = t.motion_filter + 1;
+  ImGui::SetNextItemWidth(130);
+  if (ImGui::Combo("##motion", &mo, motions, 6)) t.motion_filter = mo - 1;
+  ImGui::SameLine();
+  ImGui::SetNextItemWidth(80);
+  float fps = static_cast<float>(t.frames_per_second);
+  if (ImGui::DragFloat("##fps", &fps, 0.5f, 1.0f, 240.0f, "%.0f fps")) t.frames_per_second = fps;
+  ImGui::SameLine();
+  ImGui::TextDisabled("%zu of %d", frames.size(), p ? p->size() : 0);
+}
+
+}  // namespace lmc::ui
