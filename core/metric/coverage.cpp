@@ -1,5 +1,7 @@
 #include "core/metric/coverage.h"
 
+#include "core/common/error.h"
+#include "core/layout/layout.h"
 #include "core/metric/placement_metric.h"
 
 namespace lmc {
@@ -16,13 +18,14 @@ double Coverage::finger_unseen_fraction(int finger) const {
 }
 
 Coverage compute_coverage(std::span<const std::span<const FingerBits>> cols, std::span<const int> subset) {
+  if (cols.size() > static_cast<size_t>(kMaxDevices)) throw Error("coverage: at most 8 devices");
   Coverage cov;
   cov.devices = static_cast<int>(cols.size());
   cov.c.assign(cols.size() + 1, 0);
   cov.device_finger_seen.assign(cols.size(), {});
   const size_t n_all = cols.empty() ? 0 : cols[0].size();
   const size_t n = subset.empty() ? n_all : subset.size();
-  FingerBits bits[16] = {};
+  FingerBits bits[kMaxDevices] = {};
   for (size_t jj = 0; jj < n; ++jj) {
     const size_t j = subset.empty() ? jj : static_cast<size_t>(subset[jj]);
     for (size_t d = 0; d < cols.size(); ++d) {

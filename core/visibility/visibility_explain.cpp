@@ -21,6 +21,8 @@ VisibilityExplanation explain_visibility(const PreparedFrame& fr, const DeviceVi
     if (r == vis::ViewResult::kOutOfView) return hide_all(HiddenReason::kOutOfView, k);
   }
   const double plane_num = vis::palm_plane_numerator(fr, d);
+  vis::PhalanxBlock pb;
+  vis::prepare_phalanges(fr, d, pb);
   ex.bits = kAllFingersVisible;
   for (int f = 0; f < kNumDigits; ++f) {
     FingerVerdict& verdict = ex.fingers[static_cast<size_t>(f)];
@@ -32,12 +34,11 @@ VisibilityExplanation explain_visibility(const PreparedFrame& fr, const DeviceVi
         verdict = {HiddenReason::kBehindPalm, k, -1, -1};
         break;
       }
+      const double vv = vx * vx + vy * vy + vz * vz;
       for (int p = 0; p < kNumPhalanges; ++p) {
         const int g = p / 3;
         if (g == f) continue;
-        const auto pp = static_cast<size_t>(p);
-        if (vis::phalanx_occludes(fr.bx[pp] - d.ox, fr.by[pp] - d.oy, fr.bz[pp] - d.oz, fr.wx[pp], fr.wy[pp],
-                                  fr.wz[pp], fr.len[pp], vx, vy, vz, lim.radius_sq)) {
+        if (vis::phalanx_occludes(pb, p, vx, vy, vz, vv, lim.radius_sq)) {
           verdict = {HiddenReason::kBehindFinger, k, g, p};
           break;
         }

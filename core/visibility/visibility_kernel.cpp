@@ -7,14 +7,24 @@
 namespace lmc {
 namespace {
 
-// Phalanges that may hide finger f: all but its own three (bit p = phalanx p).
-constexpr std::uint16_t other_phalanges(int f) {
-  return static_cast<std::uint16_t>(0x7FFF & ~(0x7u << (3 * f)));
+// Per finger f, lane mask of the phalanges that may hide it: all but its own three (and not the
+// dummy 16th lane).
+struct OtherMasks {
+  alignas(64) std::int64_t m[kNumDigits][vis::kPhalanxLanes];
+};
+constexpr OtherMasks make_other_masks() {
+  OtherMasks o{};
+  for (int f = 0; f < kNumDigits; ++f) {
+    for (int p = 0; p < vis::kPhalanxLanes; ++p) o.m[f][p] = (p < kNumPhalanges && p / 3 != f) ? -1 : 0;
+  }
+  return o;
 }
+constexpr OtherMasks kOtherMasks = make_other_masks();
 
-}  // namespace
-
-FingerBits visible_fingers(const PreparedFrame& fr, const DeviceView& d, const VisibilityLimits& lim) {
+// The kernel body; compiled twice (baseline and AVX2, see below). No fused multiply-add is
+// enabled, so both builds give bit-identical results (IEEE add/mul are exact per lane).
+[[gnu::always_inline]] inline FingerBits visible_fingers_body(const PreparedFrame& fr, const DeviceView& d,
+                                                            const VisibilityLimits& lim) {
   if (!fr.valid) return 0;
   // §3.1 approach direction.
   if (!vis::approach_ok(fr, d)) return 0;
@@ -23,33 +33,26 @@ FingerBits visible_fingers(const PreparedFrame& fr, const DeviceView& d, const V
     const auto kk = static_cast<size_t>(k);
     if (vis::marker_in_view(fr.mx[kk], fr.my[kk], fr.mz[kk], d, lim) != vis::ViewResult::kInside) return 0;
   }
-  // Device-relative phalanx bases, shared by all rays.
-  alignas(64) double ex[16], ey[16], ez[16];
-  for (int p = 0; p < kNumPhalanges; ++p) {
-    const auto pp = static_cast<size_t>(p);
-    ex[p] = fr.bx[pp] - d.ox;
-    ey[p] = fr.by[pp] - d.oy;
-    ez[p] = fr.bz[pp] - d.oz;
-  }
+  vis::PhalanxBlock pb;
+  vis::prepare_phalanges(fr, d, pb);
   const double plane_num = vis::palm_plane_numerator(fr, d);
   FingerBits bits = kAllFingersVisible;
   for (int f = 0; f < kNumDigits; ++f) {
-    const std::uint16_t others = other_phalanges(f);
+    const std::int64_t* others = kOtherMasks.m[f];
     for (int j = 0; j < 4; ++j) {
       const auto k = static_cast<size_t>(finger_marker(f, j));
       const double vx = fr.mx[k] - d.ox, vy = fr.my[k] - d.oy, vz = fr.mz[k] - d.oz;
       // §3.3 palm.
       bool hidden = vis::palm_occludes(fr, d, plane_num, vx, vy, vz);
-      // §3.4 other fingers: evaluate all 15 branch-free (vectorises), keep the others' bits.
+      // §3.4 other fingers: all 16 lanes branch-free (vectorises), masked to the other fingers.
       if (!hidden) {
-        unsigned hits = 0;
-        for (int p = 0; p < kNumPhalanges; ++p) {
-          const auto pp = static_cast<size_t>(p);
-          hits |= static_cast<unsigned>(vis::phalanx_occludes(ex[p], ey[p], ez[p], fr.wx[pp], fr.wy[pp], fr.wz[pp],
-                                                              fr.len[pp], vx, vy, vz, lim.radius_sq))
-                  << p;
+        const double vv = vx * vx + vy * vy + vz * vz;
+        std::int64_t any = 0;
+        for (int p = 0; p < vis::kPhalanxLanes; ++p) {
+          const std::int64_t hit = vis::phalanx_occludes(pb, p, vx, vy, vz, vv, lim.radius_sq) ? -1 : 0;
+          any |= hit & others[p];
         }
-        hidden = (hits & others) != 0;
+        hidden = any != 0;
       }
       if (hidden) {
         bits = static_cast<FingerBits>(bits & ~(1u << f));
@@ -58,6 +61,27 @@ FingerBits visible_fingers(const PreparedFrame& fr, const DeviceView& d, const V
     }
   }
   return bits;
+}
+
+FingerBits visible_fingers_baseline(const PreparedFrame& fr, const DeviceView& d, const VisibilityLimits& lim) {
+  return visible_fingers_body(fr, d, lim);
+}
+
+#if defined(__x86_64__) && defined(__GNUC__)
+[[gnu::target("avx2")]] FingerBits visible_fingers_avx2(const PreparedFrame& fr, const DeviceView& d,
+                                                       const VisibilityLimits& lim) {
+  return visible_fingers_body(fr, d, lim);
+}
+const bool kHasAvx2 = __builtin_cpu_supports("avx2");
+#endif
+
+}  // namespace
+
+FingerBits visible_fingers(const PreparedFrame& fr, const DeviceView& d, const VisibilityLimits& lim) {
+#if defined(__x86_64__) && defined(__GNUC__)
+  if (kHasAvx2) return visible_fingers_avx2(fr, d, lim);
+#endif
+  return visible_fingers_baseline(fr, d, lim);
 }
 
 void device_visibility(const DeviceView& device, std::span<const PreparedFrame> frames, const VisibilityLimits& limits,

@@ -50,25 +50,63 @@ inline bool palm_occludes(const PreparedFrame& fr, const DeviceView& d, double p
   return hull_contains(fr.hull, d.ox + t * vx, d.oy + t * vy, d.oz + t * vz);
 }
 
-// §3.4 for the ray o → m (v = m − o, not normalised) against one phalanx (e = b − o, unit w,
-// length len). With unit v̂ = v/D the study's conditions are d < r, 0 < t1 ≤ D, 0 < t2 < ℓ where
-// n̂ = v̂ × w, d = |n̂·e|/|n̂|, t1 = (w × n̂)·e / n̂·n̂, t2 = (v̂ × n̂)·e / n̂·n̂. With n = v × w = D·n̂ the
-// same conditions read (n·e)² < r²·n·n, 0 < (w × n)·e ≤ n·n and 0 < (v × n)·e < ℓ·n·n: no square
-// root, no division. Parallel lines (n = 0) do not occlude; nor does a zero-length phalanx (w = 0).
-inline bool phalanx_occludes(double ex, double ey, double ez, double wx, double wy, double wz, double len, double vx,
-                             double vy, double vz, double radius_sq) {
+// §3.4, the device-dependent part of each phalanx, computed once per (device, frame) and shared
+// by all rays: e = b − o, g = w × e, w·e, w·w, plus w and the length. 16 lanes (the 16th is a
+// zero-length dummy that never occludes) so the per-ray loop vectorises without a remainder.
+inline constexpr int kPhalanxLanes = 16;
+struct PhalanxBlock {
+  alignas(64) double ex[kPhalanxLanes], ey[kPhalanxLanes], ez[kPhalanxLanes];
+  alignas(64) double wx[kPhalanxLanes], wy[kPhalanxLanes], wz[kPhalanxLanes];
+  alignas(64) double gx[kPhalanxLanes], gy[kPhalanxLanes], gz[kPhalanxLanes];
+  alignas(64) double we[kPhalanxLanes], ww[kPhalanxLanes], len[kPhalanxLanes];
+};
+
+inline void prepare_phalanges(const PreparedFrame& fr, const DeviceView& d, PhalanxBlock& pb) {
+  for (int p = 0; p < kPhalanxLanes; ++p) {
+    if (p >= kNumPhalanges) {
+      pb.ex[p] = pb.ey[p] = pb.ez[p] = pb.wx[p] = pb.wy[p] = pb.wz[p] = 0.0;
+      pb.gx[p] = pb.gy[p] = pb.gz[p] = pb.we[p] = pb.ww[p] = pb.len[p] = 0.0;
+      continue;
+    }
+    const auto pp = static_cast<size_t>(p);
+    const double ex = fr.bx[pp] - d.ox, ey = fr.by[pp] - d.oy, ez = fr.bz[pp] - d.oz;
+    const double wx = fr.wx[pp], wy = fr.wy[pp], wz = fr.wz[pp];
+    pb.ex[p] = ex;
+    pb.ey[p] = ey;
+    pb.ez[p] = ez;
+    pb.wx[p] = wx;
+    pb.wy[p] = wy;
+    pb.wz[p] = wz;
+    pb.gx[p] = wy * ez - wz * ey;
+    pb.gy[p] = wz * ex - wx * ez;
+    pb.gz[p] = wx * ey - wy * ex;
+    pb.we[p] = wx * ex + wy * ey + wz * ez;
+    pb.ww[p] = wx * wx + wy * wy + wz * wz;
+    pb.len[p] = fr.len[pp];
+  }
+}
+
+// §3.4 for the ray o → m (v = m − o, not normalised, vv = v·v) against phalanx p of `pb`.
+// With unit v̂ = v/D the study's conditions are d < r, 0 < t1 ≤ D, 0 < t2 < ℓ where n̂ = v̂ × w,
+// d = |n̂·e|/|n̂|, t1 = (w × n̂)·e / n̂·n̂, t2 = (v̂ × n̂)·e / n̂·n̂. With n = v × w = D·n̂ they read
+//   (n·e)² < r²·n·n,   0 < (w × n)·e ≤ n·n,   0 < (v × n)·e < ℓ·n·n
+// (no square root, no division), and by the vector triple product
+//   n·e = v·(w × e) = v·g,   (w × n)·e = (v·e)(w·w) − (v·w)(w·e),   (v × n)·e = (v·w)(v·e) − (v·v)(w·e).
+// n·n is taken from the cross product itself so that parallel lines give exactly n = 0 and do not
+// occlude, as in the study; a zero-length phalanx (w = 0) never occludes either.
+inline bool phalanx_occludes(const PhalanxBlock& pb, int p, double vx, double vy, double vz, double vv,
+                             double radius_sq) {
+  const double wx = pb.wx[p], wy = pb.wy[p], wz = pb.wz[p];
   const double nx = vy * wz - vz * wy;
   const double ny = vz * wx - vx * wz;
   const double nz = vx * wy - vy * wx;
   const double nn = nx * nx + ny * ny + nz * nz;
-  const double ne = nx * ex + ny * ey + nz * ez;
-  // w × n
-  const double ax = wy * nz - wz * ny, ay = wz * nx - wx * nz, az = wx * ny - wy * nx;
-  // v × n
-  const double bx = vy * nz - vz * ny, by = vz * nx - vx * nz, bz = vx * ny - vy * nx;
-  const double t1 = ax * ex + ay * ey + az * ez;
-  const double t2 = bx * ex + by * ey + bz * ez;
-  return (nn > 0.0) & (ne * ne < radius_sq * nn) & (t1 > 0.0) & (t1 <= nn) & (t2 > 0.0) & (t2 < len * nn);
+  const double ne = vx * pb.gx[p] + vy * pb.gy[p] + vz * pb.gz[p];
+  const double ve = vx * pb.ex[p] + vy * pb.ey[p] + vz * pb.ez[p];
+  const double vw = vx * wx + vy * wy + vz * wz;
+  const double t1 = ve * pb.ww[p] - vw * pb.we[p];
+  const double t2 = vw * ve - vv * pb.we[p];
+  return (nn > 0.0) & (ne * ne < radius_sq * nn) & (t1 > 0.0) & (t1 <= nn) & (t2 > 0.0) & (t2 < pb.len[p] * nn);
 }
 
 }  // namespace lmc::vis

@@ -1,0 +1,168 @@
+// lmc optimize: search device placements with the particle swarm of reference-algorithms.md §5
+// (core/optimise/pso.h) on a pose set, save the best layout and print the same summary as
+// `lmc evaluate`.
+#include <unistd.h>
+
+#include <cmath>
+#include <cstdio>
+#include <iostream>
+#include <optional>
+#include <string>
+
+#include "app/lmc/command.h"
+#include "core/common/error.h"
+#include "core/hand/pose_source.h"
+#include "core/io/layout_json.h"
+#include "core/metric/coverage_report.h"
+#include "core/optimise/pso.h"
+#include "core/visibility/frame_prep.h"
+
+namespace {
+
+struct OptimizeOptions {
+  std::string poses = "mc";
+  int frames = lmc::kDefaultMonteCarloFrames;
+  std::uint64_t seed = lmc::kDefaultMonteCarloSeed;
+  std::string hand;
+  int devices = 4;
+  int particles = 30;
+  int iterations = 100;
+  double w = 0.9, c1 = 0.5, c2 = 0.3;
+  std::uint64_t pso_seed = 1;
+  int threads = 0;
+  std::string bounds;
+  double range_mm = 600.0;
+  double radius_mm = 10.0;
+  std::string start;
+  std::vector<std::string> locks;
+  std::string output;
+  bool json = false;
+  bool no_progress = false;
+};
+
+void apply_lock(lmc::SearchSpace& space, const lmc::Layout& layout, const std::string& spec) {
+  // SLOT or SLOT:param+param (e.g. LMC2 or LMC3:x+z)
+  const size_t colon = spec.find(':');
+  const std::string slot = spec.substr(0, colon);
+  const int d = layout.find_slot(slot);
+  if (d < 0) throw lmc::Error(lmc::ErrorLocation("--lock"), "no device with slot \"" + slot + "\" in the start layout");
+  if (colon == std::string::npos) {
+    space.lock_device(d);
+    return;
+  }
+  std::string rest = spec.substr(colon + 1);
+  size_t start = 0;
+  while (start <= rest.size()) {
+    const size_t plus = rest.find('+', start);
+    const std::string name = rest.substr(start, plus == std::string::npos ? std::string::npos : plus - start);
+    const int k = lmc::pose_param_from_name(name.c_str());
+    if (k < 0) throw lmc::Error(lmc::ErrorLocation("--lock"), "unknown parameter \"" + name + "\" in \"" + spec + "\"");
+    space.lock_param(d, k);
+    if (plus == std::string::npos) break;
+    start = plus + 1;
+  }
+}
+
+void setup_optimize(CLI::App& app) {
+  auto opt = std::make_shared<OptimizeOptions>();
+  app.add_option("--poses", opt->poses, "\"mc\" (Monte Carlo set) or a pose-set file from `lmc poses`");
+  app.add_option("--frames", opt->frames, "Frames of the Monte Carlo set")->check(CLI::Range(1, 10'000'000));
+  app.add_option("--seed", opt->seed, "Seed of the Monte Carlo set");
+  app.add_option("--hand", opt->hand, "Monte Carlo set with the hand of this LMC recording's first row");
+  app.add_option("--devices", opt->devices, "Number of devices when no --start layout is given")->check(CLI::Range(1, 8));
+  app.add_option("--particles", opt->particles, "Swarm size")->check(CLI::Range(1, 100000));
+  app.add_option("--iterations", opt->iterations, "PSO iterations")->check(CLI::Range(0, 1000000));
+  app.add_option("--w", opt->w, "Inertia weight");
+  app.add_option("--c1", opt->c1, "Cognitive coefficient");
+  app.add_option("--c2", opt->c2, "Social coefficient");
+  app.add_option("--pso-seed", opt->pso_seed, "Seed of the swarm");
+  app.add_option("--threads", opt->threads, "Worker threads (0 = all); the result does not depend on it")
+      ->check(CLI::NonNegativeNumber);
+  app.add_option("--bounds", opt->bounds,
+                 "Searched parameters and bounds, e.g. x=-400:400,z=-400:400,rx=-45:45,ry=-180:180 "
+                 "(default: the authors' box x,z ∈ [-1000,1000], rx ∈ [-90,90], ry ∈ [-180,180])");
+  app.add_option("--range-mm", opt->range_mm, "Sensor range (mm)")->check(CLI::PositiveNumber);
+  app.add_option("--radius-mm", opt->radius_mm, "Phalanx radius (mm)")->check(CLI::NonNegativeNumber);
+  app.add_option("--start", opt->start, "Start from this layout (file or preset); its devices are searched");
+  app.add_option("--lock", opt->locks, "Keep a device (SLOT) or some of its parameters (SLOT:x+rz) at the start value");
+  app.add_option("-o,--output", opt->output, "Write the best layout here (JSON)")->required();
+  app.add_flag("--json", opt->json, "Print the summary as JSON on stdout");
+  app.add_flag("--no-progress", opt->no_progress, "No progress bar on stderr");
+  app.callback([opt] {
+    lmc::Layout start;
+    const bool from_layout = !opt->start.empty();
+    if (from_layout) {
+      start = lmc::load_layout_or_preset(opt->start);
+    } else {
+      start = lmc::default_start_layout(opt->devices);
+    }
+    start.sensor.range_mm = opt->range_mm;
+    lmc::SearchSpace space = opt->bounds.empty() ? lmc::SearchSpace{} : lmc::parse_search_bounds(opt->bounds);
+    for (const auto& l : opt->locks) apply_lock(space, start, l);
+    if (!from_layout && !opt->locks.empty()) throw lmc::Error("--lock needs --start");
+
+    const auto hand = opt->hand.empty() ? std::nullopt : std::optional<std::string>(opt->hand);
+    const lmc::PoseSet poses = lmc::load_poses(opt->poses, opt->frames, opt->seed, hand);
+    const auto prepared = lmc::prepare_frames(poses.frames);
+
+    lmc::PsoSettings s;
+    s.particles = opt->particles;
+    s.iterations = opt->iterations;
+    s.w = opt->w;
+    s.c1 = opt->c1;
+    s.c2 = opt->c2;
+    s.seed = opt->pso_seed;
+    s.threads = opt->threads;
+    s.start_from_layout = from_layout;
+    s.phalanx_radius_mm = opt->radius_mm;
+
+    const bool bar = !opt->no_progress && isatty(STDERR_FILENO) != 0;
+    auto progress = [bar](const lmc::PsoProgress& p) {
+      if (!bar) return;
+      const int width = 30;
+      const int filled = p.iterations > 0 ? p.iteration * width / p.iterations : width;
+      std::fprintf(stderr, "\r[%s%s] %d/%d  best M %.6g  %lld evaluations", std::string(static_cast<size_t>(filled), '#').c_str(),
+                   std::string(static_cast<size_t>(width - filled), ' ').c_str(), p.iteration, p.iterations, p.best_cost,
+                   static_cast<long long>(p.device_frame_evaluations));
+      if (p.iteration == p.iterations) std::fprintf(stderr, "\n");
+      std::fflush(stderr);
+    };
+    const lmc::PsoResult r = lmc::run_pso(start, space, prepared, s, progress);
+    lmc::Layout best = r.best_layout;
+    best.name = "optimized";
+    best.description = "lmc optimize: " + std::to_string(s.particles) + " particles × " + std::to_string(s.iterations) +
+                       " iterations on " + poses.description + ", M = " + std::to_string(r.best_cost);
+    lmc::save_layout(best, opt->output);
+
+    std::vector<std::string> slots;
+    for (const auto& d : best.devices) slots.push_back(d.slot);
+    const double rate = r.seconds > 0 ? static_cast<double>(r.device_frame_evaluations) / r.seconds : 0.0;
+    if (opt->json) {
+      nlohmann::json j;
+      j["status"] = r.status == lmc::JobStatus::kCompleted ? "completed" : "cancelled";
+      j["layout"] = lmc::layout_to_json(best);
+      j["summary"] = lmc::coverage_to_json(r.best_coverage, slots);
+      j["best_cost_history"] = r.best_cost_history;
+      j["seconds"] = r.seconds;
+      j["layout_evaluations"] = r.layout_evaluations;
+      j["device_frame_evaluations"] = r.device_frame_evaluations;
+      j["device_frame_evaluations_per_second"] = rate;
+      std::cout << j.dump(2) << "\n";
+      return;
+    }
+    std::cout << "best layout (" << opt->output << "):\n";
+    for (const auto& d : best.devices) {
+      std::printf("  %-6s x %8.2f  y %8.2f  z %8.2f  rx %7.2f  ry %7.2f  rz %7.2f\n", d.slot.c_str(), d.pose.x_mm,
+                  d.pose.y_mm, d.pose.z_mm, d.pose.rx_deg, d.pose.ry_deg, d.pose.rz_deg);
+    }
+    std::fflush(stdout);
+    std::cout << "on " << poses.description << ":\n" << lmc::format_coverage(r.best_coverage, slots);
+    std::cout << "time " << r.seconds << " s, " << r.layout_evaluations << " layout evaluations, "
+              << r.device_frame_evaluations << " device-frame evaluations (" << rate << " per second)\n";
+  });
+}
+
+const lmc::cli::CommandRegistration reg{"optimize", "Search device placements with a particle swarm", 50,
+                                        setup_optimize};
+
+}  // namespace

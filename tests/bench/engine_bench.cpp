@@ -1,0 +1,108 @@
+// Google Benchmark cases for the placement engine's inner kernels (not timed tests).
+// Run: build/<release dir>/tests/lmc_benchmarks --benchmark_filter=Engine
+#include <benchmark/benchmark.h>
+
+#include <tbb/task_arena.h>
+
+#include <random>
+
+#include "core/hand/pose_set_generator.h"
+#include "core/io/layout_json.h"
+#include "core/metric/coverage.h"
+#include "core/optimise/search_space.h"
+#include "core/optimise/swarm_evaluator.h"
+#include "core/visibility/frame_prep.h"
+#include "core/visibility/visibility_explain.h"
+#include "core/visibility/visibility_kernel.h"
+
+namespace {
+
+const std::vector<lmc::PreparedFrame>& frames() {
+  static const std::vector<lmc::PreparedFrame> f = [] {
+    lmc::PoseSetSettings s;
+    s.frames = 10000;
+    return lmc::prepare_frames(lmc::generate_pose_set(lmc::HandModel(), s).frames);
+  }();
+  return f;
+}
+
+lmc::Layout preset(const char* name) { return lmc::load_layout_or_preset(name); }
+
+// One (device, frame) at a time through the batch kernel; the paper's initial layout has the hand
+// in range and view of every device, so every test runs.
+void BM_EngineVisibleFingersFullTests(benchmark::State& state) {
+  const auto& fr = frames();
+  const lmc::Layout layout = preset("paper-initial");
+  const auto limits = lmc::make_limits(lmc::VisibilityParams::from_sensor(layout.sensor));
+  std::vector<lmc::DeviceView> views;
+  for (const auto& d : layout.devices) views.push_back(lmc::DeviceView::from_device(d));
+  size_t j = 0;
+  for (auto _ : state) {
+    for (const auto& v : views) benchmark::DoNotOptimize(lmc::visible_fingers(fr[j], v, limits));
+    j = (j + 1) % fr.size();
+  }
+  state.SetItemsProcessed(state.iterations() * static_cast<int64_t>(views.size()));
+}
+BENCHMARK(BM_EngineVisibleFingersFullTests);
+
+void BM_EngineExplainVisibility(benchmark::State& state) {
+  const auto& fr = frames();
+  const lmc::Layout layout = preset("paper-initial");
+  const auto limits = lmc::make_limits(lmc::VisibilityParams::from_sensor(layout.sensor));
+  const auto view = lmc::DeviceView::from_device(layout.devices[0]);
+  size_t j = 0;
+  for (auto _ : state) {
+    benchmark::DoNotOptimize(lmc::explain_visibility(fr[j], view, limits));
+    j = (j + 1) % fr.size();
+  }
+  state.SetItemsProcessed(state.iterations());
+}
+BENCHMARK(BM_EngineExplainVisibility);
+
+void BM_EnginePrepareFrame(benchmark::State& state) {
+  lmc::PoseSetSettings s;
+  s.frames = 256;
+  const auto set = lmc::generate_pose_set(lmc::HandModel(), s);
+  size_t j = 0;
+  for (auto _ : state) {
+    benchmark::DoNotOptimize(lmc::prepare_frame(set.frames[j]));
+    j = (j + 1) % set.frames.size();
+  }
+  state.SetItemsProcessed(state.iterations());
+}
+BENCHMARK(BM_EnginePrepareFrame);
+
+// The PSO's inner loop on one thread: 30 random layouts × 4 devices × 10,000 frames per iteration.
+void BM_EngineSwarmHistogramsRandomLayouts(benchmark::State& state) {
+  const auto& fr = frames();
+  std::mt19937_64 rng(3);
+  const lmc::SearchSpace space;
+  std::vector<lmc::DeviceView> views;
+  for (int i = 0; i < 30 * 4; ++i) {
+    lmc::DevicePose p;
+    for (int k = 0; k < lmc::kNumPoseParams; ++k) {
+      const auto& b = space.bounds[static_cast<size_t>(k)];
+      if (space.free[static_cast<size_t>(k)]) p.set(k, b.min + (b.max - b.min) * static_cast<double>(rng() >> 11) * 0x1.0p-53);
+    }
+    views.push_back(lmc::DeviceView::from_pose(p));
+  }
+  const auto limits = lmc::make_limits({});
+  std::vector<std::int64_t> counts(30 * 5);
+  tbb::task_arena arena(1);
+  for (auto _ : state) {
+    arena.execute([&] { lmc::worst_finger_histograms(views, 30, 4, fr, limits, counts); });
+    benchmark::DoNotOptimize(counts.data());
+  }
+  state.SetItemsProcessed(state.iterations() * static_cast<int64_t>(views.size() * fr.size()));
+}
+BENCHMARK(BM_EngineSwarmHistogramsRandomLayouts)->Unit(benchmark::kMillisecond);
+
+void BM_EngineCoverageFromBits(benchmark::State& state) {
+  const auto& fr = frames();
+  const lmc::VisibilityTable table = lmc::compute_visibility(preset("paper-initial"), fr);
+  for (auto _ : state) benchmark::DoNotOptimize(lmc::compute_coverage(table).metric);
+  state.SetItemsProcessed(state.iterations() * static_cast<int64_t>(fr.size()));
+}
+BENCHMARK(BM_EngineCoverageFromBits);
+
+}  // namespace
