@@ -6,7 +6,6 @@
 #include <map>
 
 #include "core/common/error.h"
-#include "core/io/atomic_write.h"
 #include "core/io/c3d.h"
 #include "core/io/json_checked.h"
 #include "core/io/layout_json.h"
@@ -175,12 +174,9 @@ TrialOutcome process_job(const TrialJob& job, const SessionOptions& options, con
     if (job.vicon) r.vicon_source = job.vicon->string();
     for (const auto& w : r.warnings) out.warnings.push_back(w);
     r.warnings = out.warnings;
+    r.layout_source = out.layout_used;
     out.summary = trial_summary_json(r);
-    out.summary["layout_source"] = out.layout_used;
-    if (!options.out_dir.empty()) {
-      write_trial_outputs(r, options.out_dir);
-      write_file_atomically(options.out_dir / (r.tag.trial + ".summary.json"), out.summary.dump(2) + "\n");
-    }
+    if (!options.out_dir.empty()) write_trial_outputs(r, options.out_dir);
     if (options.compare_methods && vicon != nullptr) {
       MethodErrors mine = trial_errors(r);
       ProcessOptions other = popt;

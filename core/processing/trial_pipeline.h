@@ -40,6 +40,7 @@ struct TrialResult {
   std::string lmc_source, vicon_source;
   FusionMethod method = FusionMethod::kDefault;
   std::string layout_name;
+  std::string layout_source;  // where the layout came from (preset, file, recorder sidecar)
   RecordingKind input_kind = RecordingKind::kRaw;
   std::vector<std::string> warnings;  // survivable problems, for the per-trial report
   ResampleReport resample;

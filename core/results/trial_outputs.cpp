@@ -156,7 +156,7 @@ std::string format_fused_points(const TrialResult& r) {
   rec.kind = RecordingKind::kResampled;
   for (int f = 0; f < r.fused.frame_count; ++f) {
     HandFrame hf;
-    hf.device_id = 0;
+    hf.device_id = 1;  // one fused stream; the reader accepts ids 1…8 only
     hf.frame_id = 0;
     hf.frame_rate_hz = 100;
     hf.timestamp_us = r.device_frame.start_us + static_cast<std::int64_t>(std::llround(f * r.device_frame.step_us));
@@ -179,6 +179,7 @@ nlohmann::json trial_summary_json(const TrialResult& r) {
   j["vicon_file"] = r.has_vicon ? nlohmann::json(r.vicon_source) : nlohmann::json(nullptr);
   j["method"] = fusion_method_name(r.method);
   j["layout"] = r.layout_name;
+  j["layout_source"] = r.layout_source;
   j["input_kind"] = r.input_kind == RecordingKind::kRaw ? "raw" : r.input_kind == RecordingKind::kResampled ? "resampled" : "raytraced";
   j["frames"] = r.fused.frame_count;
   j["lmc_frames_before_trim"] = r.lmc_frames_before_trim;

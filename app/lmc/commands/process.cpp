@@ -65,7 +65,15 @@ void run_process(const ProcessArgs& a) {
       t["warnings"] = o.warnings;
       if (!a.quiet) {
         std::cout << "ok      " << o.trial << "  (" << o.summary["frames"].get<int>() << " frames, layout " << o.layout_used
-                  << (o.has_vicon ? ", with Vicon" : ", no Vicon") << ")\n";
+                  << (o.has_vicon ? ", with Vicon" : ", no Vicon");
+        if (o.summary.contains("comparison")) {
+          const auto& lag = o.summary["comparison"]["lag"];
+          if (lag.value("valid", false) && lag.value("frames", 0) != 0) {
+            std::cout << ", wrist lag " << lag["frames"].get<int>() << " frame(s) (r = " << lmc::format_fixed(lag["correlation"].get<double>(), 2)
+                      << ")";
+          }
+        }
+        std::cout << ")\n";
         for (const auto& w : o.warnings) std::cout << "        warning: " << w << "\n";
       }
       if (a.compare_methods && o.has_vicon) {
