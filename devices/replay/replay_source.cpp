@@ -44,7 +44,10 @@ ReplaySource::ReplaySource(const std::filesystem::path& path, ReplayOptions opti
   serial_of_id_.assign(static_cast<size_t>(max_id) + 1, {});
   for (const auto& [id, serial] : sidecar_serials(path))
     if (id >= 0 && id <= max_id) serial_of_id_[static_cast<size_t>(id)] = serial;
-  for (int id : rec.device_ids()) {
+  std::vector<bool> present(static_cast<size_t>(max_id) + 1, false);
+  for (const auto& r : rows_) present[static_cast<size_t>(std::max(0, r.device_id))] = true;
+  for (int id = 0; id <= max_id; ++id) {
+    if (!present[static_cast<size_t>(id)]) continue;
     auto& serial = serial_of_id_[static_cast<size_t>(id)];
     if (serial.empty()) serial = "REPLAY-LMC" + std::to_string(id);
     devices_.push_back({serial, "replay", "replay of " + path.filename().string()});

@@ -1,0 +1,185 @@
+// Runs the real `lmc record` binary: a simulated trial with ground truth that `lmc info` reads,
+// the Vicon trigger to a loopback listener, a replay, and refusals.
+#include <arpa/inet.h>
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+#include <netinet/in.h>
+#include <poll.h>
+#include <sys/socket.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cstdlib>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "tests/support/reference_data.h"
+
+namespace {
+
+using ::testing::HasSubstr;
+
+struct RunResult {
+  int exit_code = -1;
+  std::string out;
+  std::string err;
+};
+
+std::string slurp(const std::filesystem::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+std::string quote(const std::string& s) {
+  std::string q = "'";
+  for (const char c : s) q += c == '\'' ? std::string("'\\''") : std::string(1, c);
+  return q + "'";
+}
+
+RunResult run(const std::string& args, const std::filesystem::path& logs) {
+  std::filesystem::create_directories(logs);
+  const std::string cmd = quote(LMC_CLI_PATH) + " " + args + " >" + quote((logs / "out").string()) + " 2>" +
+                          quote((logs / "err").string());
+  const int status = std::system(cmd.c_str());
+  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, slurp(logs / "out"), slurp(logs / "err")};
+}
+
+nlohmann::json json_file(const std::filesystem::path& p) { return nlohmann::json::parse(slurp(p)); }
+
+TEST(LmcRecord, SimulatedTrialWritesRecordingSidecarAndTruthThatInfoReads) {
+  const auto dir = lmc::test::scratch_dir("record_sim");
+  const RunResult r = run("record --backend sim --layout paper-initial --trial S01_index_1 --seconds 4 --motion index "
+                          "--fast --seed 5 -o " + quote((dir / "session").string()),
+                          dir / "logs");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_THAT(r.out, HasSubstr("trial S01_index_1:"));
+  const auto rec = dir / "session" / "LMC_S01_index_1.raw.txt";
+  const auto side = dir / "session" / "LMC_S01_index_1.session.json";
+  const auto trc = dir / "session" / "S01_index_1.trc";
+  ASSERT_TRUE(std::filesystem::exists(rec));
+  ASSERT_TRUE(std::filesystem::exists(side));
+  ASSERT_TRUE(std::filesystem::exists(trc));
+
+  const RunResult info = run("info --json " + quote(rec.string()), dir / "info");
+  ASSERT_EQ(info.exit_code, 0) << info.err;
+  const auto ij = nlohmann::json::parse(info.out);
+  EXPECT_EQ(ij.at("variant"), "raw");
+  EXPECT_EQ(ij.at("device_ids"), nlohmann::json({1, 2, 3, 4}));
+  const auto sj = json_file(side);
+  EXPECT_EQ(sj.at("status"), "completed");
+  EXPECT_EQ(sj.at("trial"), "S01_index_1");
+  EXPECT_EQ(sj.at("frames_written"), ij.at("rows"));
+  EXPECT_EQ(sj.at("frames_dropped"), 0);
+  EXPECT_EQ(sj.at("serial_to_slot").size(), 4u);
+  EXPECT_EQ(sj.at("extra").at("simulator").at("seed"), 5);
+  EXPECT_EQ(sj.at("extra").at("simulator").at("motion"), "horizontal/index");
+  for (const auto& d : ij.at("devices")) {
+    // Each device streams at 11–34 Hz; its row count in the file equals the sidecar's.
+    EXPECT_GE(d.at("rows").get<int>(), 11 * 4 - 8);
+    EXPECT_LE(d.at("rows").get<int>(), 34 * 4 + 2);
+    bool found = false;
+    for (const auto& sd : sj.at("devices"))
+      if (sd.at("device_id") == d.at("id")) {
+        found = true;
+        EXPECT_EQ(sd.at("frames_written"), d.at("rows"));
+      }
+    EXPECT_TRUE(found);
+  }
+  const RunResult tinfo = run("info --json " + quote(trc.string()), dir / "tinfo");
+  ASSERT_EQ(tinfo.exit_code, 0) << tinfo.err;
+  const auto tj = nlohmann::json::parse(tinfo.out);
+  EXPECT_EQ(tj.at("type"), "trc");
+  EXPECT_EQ(tj.at("markers"), 26);
+  EXPECT_EQ(tj.at("frames"), 400);
+  EXPECT_EQ(tj.at("data_rate_hz"), 100.0);
+  EXPECT_EQ(sj.at("ground_truth").at("file"), "S01_index_1.trc");
+
+  // Same seed, same trial: the simulator is reproducible through the CLI too.
+  const RunResult again = run("record --backend sim --trial S01_index_1 --seconds 4 --motion index --fast --seed 5 "
+                              "--quiet -o " + quote((dir / "again").string()),
+                              dir / "logs2");
+  ASSERT_EQ(again.exit_code, 0) << again.err;
+  EXPECT_TRUE(slurp(dir / "again" / "LMC_S01_index_1.raw.txt") == slurp(rec));
+  // The TRC's first line names its own path; everything after it must match.
+  const std::string t1 = slurp(trc), t2 = slurp(dir / "again" / "S01_index_1.trc");
+  EXPECT_TRUE(t1.substr(t1.find('\n')) == t2.substr(t2.find('\n')));
+}
+
+TEST(LmcRecord, SendsTheViconTriggerToALoopbackListener) {
+  const int fd = ::socket(AF_INET, SOCK_DGRAM, 0);
+  ASSERT_GE(fd, 0);
+  sockaddr_in addr{};
+  addr.sin_family = AF_INET;
+  addr.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
+  ASSERT_EQ(::bind(fd, reinterpret_cast<sockaddr*>(&addr), sizeof addr), 0);
+  socklen_t len = sizeof addr;
+  ::getsockname(fd, reinterpret_cast<sockaddr*>(&addr), &len);
+  const int port = ntohs(addr.sin_port);
+
+  const auto dir = lmc::test::scratch_dir("record_vicon");
+  const RunResult r = run("record --backend sim --trial Vic_1 --seconds 1 --quiet --vicon 127.0.0.1:" +
+                              std::to_string(port) + " --vicon-database " + quote("D:/lab & co") + " -o " +
+                              quote((dir / "s").string()),
+                          dir / "logs");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  std::vector<std::string> packets;
+  char buf[4096];
+  pollfd p{fd, POLLIN, 0};
+  while (::poll(&p, 1, 200) > 0) {
+    const ssize_t n = ::recv(fd, buf, sizeof buf, 0);
+    if (n > 0) packets.emplace_back(buf, static_cast<size_t>(n));
+  }
+  ::close(fd);
+  ASSERT_EQ(packets.size(), 6u);
+  for (int i = 0; i < 6; ++i) {
+    const std::string& pk = packets[static_cast<size_t>(i)];
+    EXPECT_EQ(pk.back(), '\0');
+    EXPECT_THAT(pk, HasSubstr(i < 3 ? "<CaptureStart>" : "<CaptureStop RESULT=\"SUCCESS\">"));
+    EXPECT_THAT(pk, HasSubstr("<Name VALUE=\"Vic_1\"/>"));
+    EXPECT_THAT(pk, HasSubstr("<DatabasePath VALUE=\"D:/lab &amp; co\"/>"));
+  }
+  EXPECT_EQ(packets[0], packets[2]) << "repeats share the PacketID";
+  EXPECT_NE(packets[0], packets[3]);
+  const auto sj = json_file(dir / "s" / "LMC_Vic_1.session.json");
+  ASSERT_EQ(sj.at("vicon_packets").size(), 2u);
+  EXPECT_EQ(sj["vicon_packets"][0].at("type"), "CaptureStart");
+  EXPECT_EQ(sj["vicon_packets"][1].at("packet_id").get<long long>(),
+            sj["vicon_packets"][0].at("packet_id").get<long long>() + 1);
+}
+
+TEST(LmcRecord, ReplayKeepsEveryRowOfEveryDevice) {
+  const auto path = lmc::test::reference_file("acquisition/LMC_Naiv_Static101.raw.txt");
+  LMC_REQUIRE_REFERENCE_FILE(path);
+  const auto dir = lmc::test::scratch_dir("record_replay");
+  const RunResult r = run("record --backend " + quote("replay:" + path.string()) +
+                              " --trial again --seconds 30 --fast --quiet -o " + quote(dir.string()),
+                          dir / "logs");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const RunResult info = run("info --json " + quote((dir / "LMC_again.raw.txt").string()), dir / "info");
+  ASSERT_EQ(info.exit_code, 0) << info.err;
+  const auto j = nlohmann::json::parse(info.out);
+  const int rows[] = {118, 121, 131, 130};
+  ASSERT_EQ(j.at("devices").size(), 4u);
+  for (int i = 0; i < 4; ++i) EXPECT_EQ(j["devices"][static_cast<size_t>(i)].at("rows"), rows[i]);
+}
+
+TEST(LmcRecord, UnsafeTrialNamesAndExistingTrialsAreRefused) {
+  const auto dir = lmc::test::scratch_dir("record_refuse");
+  const RunResult bad = run("record --trial ../../etc/x --seconds 1 --fast -o " + quote(dir.string()), dir / "l1");
+  EXPECT_EQ(bad.exit_code, 1);
+  EXPECT_THAT(bad.err, HasSubstr("invalid trial name"));
+  EXPECT_FALSE(std::filesystem::exists(dir / "LMC_.raw.txt"));
+  const RunResult first = run("record --trial t1 --seconds 1 --fast --quiet -o " + quote(dir.string()), dir / "l2");
+  ASSERT_EQ(first.exit_code, 0) << first.err;
+  const RunResult second = run("record --trial t1 --seconds 1 --fast --quiet -o " + quote(dir.string()), dir / "l3");
+  EXPECT_EQ(second.exit_code, 1);
+  EXPECT_THAT(second.err, HasSubstr("exists"));
+}
+
+}  // namespace
