@@ -10,6 +10,7 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
+#include "core/io/c3d.h"
 #include "core/io/layout_json.h"
 #include "core/io/lmc_recording.h"
 #include "core/io/trc.h"
@@ -190,6 +191,28 @@ TEST_F(ProcessCli, SingleTrialWithExplicitViconAndBadArguments) {
   const std::string text = read_text(out / "Naiv_Index101.results.txt");
   EXPECT_NE(text.find("Visibility LMC4"), std::string::npos);
   EXPECT_NE(text.find("VICON Data"), std::string::npos);
+
+  // The same trial with its Vicon data as C3D (our writer, DEC integer storage) gives the same numbers.
+  const TrcData trc = read_trc(session_ / "Naiv_Index101.trc");
+  C3dData c3d;
+  c3d.labels = trc.marker_names;
+  c3d.positions = trc.positions;
+  C3dWriteOptions wo;
+  wo.processor = C3dProcessor::kDec;
+  wo.float_storage = false;
+  wo.int_scale = 0.01;
+  const auto c3d_dir = dir_ / "c3d";
+  std::filesystem::create_directories(c3d_dir);
+  std::filesystem::copy_file(session_ / "LMC_Naiv_Index101.raw.txt", c3d_dir / "LMC_Naiv_Index101.raw.txt");
+  save_c3d(c3d_dir / "Naiv_Index101.c3d", c3d, wo);
+  const RunResult rc = run("process " + c3d_dir.string() + " -o " + (dir_ / "one_c3d").string());
+  EXPECT_EQ(rc.code, 0) << rc.output;
+  const auto a = nlohmann::json::parse(read_text(out / "Naiv_Index101.summary.json"));
+  const auto b = nlohmann::json::parse(read_text(dir_ / "one_c3d" / "Naiv_Index101.summary.json"));
+  EXPECT_NE(b["vicon_file"].get<std::string>().find(".c3d"), std::string::npos);
+  for (int k = 0; k < 5; ++k) {
+    EXPECT_NEAR(a["vicon"]["finger_mean_mm"][k].get<double>(), b["vicon"]["finger_mean_mm"][k].get<double>(), 0.01) << k;
+  }
 
   const RunResult missing = run("process " + (dir_ / "nope").string() + " -o " + out.string());
   EXPECT_EQ(missing.code, 1);
