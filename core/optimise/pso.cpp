@@ -115,8 +115,10 @@ PsoResult run_pso(const Layout& start, const SearchSpace& space, std::span<const
   auto report = [&](int iteration) {
     result.best_cost_history.push_back(gbest_cost);
     if (progress) {
-      progress(PsoProgress{iteration, s.iterations, gbest_cost, result.layout_evaluations,
-                           result.device_frame_evaluations});
+      PsoProgress p{iteration, s.iterations, gbest_cost, result.layout_evaluations,
+                    result.device_frame_evaluations, {}};
+      if (std::isfinite(gbest_cost)) p.best_layout = layout_of(gbest.data());
+      progress(p);
     }
   };
 

@@ -50,6 +50,7 @@ struct PsoProgress {
   double best_cost = 0;
   std::int64_t layout_evaluations = 0;        // particles evaluated so far
   std::int64_t device_frame_evaluations = 0;  // (device, frame) visibility tests so far
+  Layout best_layout;  // the best layout so far (the workbench draws it as ghost controllers)
 };
 using PsoProgressCallback = std::function<void(const PsoProgress&)>;
 

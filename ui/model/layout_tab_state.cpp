@@ -42,7 +42,8 @@ void LayoutTabState::redo() {
 }
 
 std::string LayoutTabState::title() const {
-  std::string t = file_path_ ? file_path_->filename().string() : std::string("untitled layout");
+  std::string t = file_path_ ? file_path_->filename().string()
+                             : (layout().name.empty() ? std::string("untitled layout") : layout().name + " (not saved)");
   if (unsaved()) t += " *";  // the usual unsaved-changes mark
   return t;
 }

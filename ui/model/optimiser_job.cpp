@@ -46,6 +46,7 @@ bool OptimiserJob::start(const LayoutDocument& doc, const PoseSetPtr& poses, con
     return false;
   }
   history_.clear();
+  live_best_.reset();
   discarded_ = false;
   iterations_ = settings.iterations;
   job_.start([layout = doc.layout, space, poses, settings](std::stop_token stop,
@@ -56,7 +57,8 @@ bool OptimiserJob::start(const LayoutDocument& doc, const PoseSetPtr& poses, con
     out.pso = run_pso(
         layout, space, poses->prepared, settings,
         [&ch](const PsoProgress& p) {
-          ch.report({p.iteration, p.iterations, p.best_cost});
+          ch.report({p.iteration, p.iterations, p.best_cost,
+                     p.best_layout.devices.empty() ? nullptr : std::make_shared<const Layout>(p.best_layout)});
           ch.set_progress(p.iteration + 1, p.iterations + 1);
         },
         stop);
@@ -71,6 +73,7 @@ void OptimiserJob::poll() {
   for (const auto& r : job_.drain_reports()) {
     if (r.iteration >= static_cast<int>(history_.size())) history_.resize(static_cast<size_t>(r.iteration) + 1, r.best_cost);
     history_[static_cast<size_t>(r.iteration)] = r.best_cost;
+    if (r.best_layout) live_best_ = r.best_layout;
   }
 }
 
@@ -85,5 +88,13 @@ std::shared_ptr<const OptimiserOutcome> OptimiserJob::outcome() const {
 }
 
 void OptimiserJob::discard() { discarded_ = true; }
+
+std::shared_ptr<const Layout> OptimiserJob::best_so_far() const {
+  if (discarded_) return nullptr;
+  if (!job_.running()) {
+    if (const auto o = outcome()) return std::shared_ptr<const Layout>(o, &o->pso.best_layout);
+  }
+  return live_best_;
+}
 
 }  // namespace lmc::ui

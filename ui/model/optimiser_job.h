@@ -27,6 +27,7 @@ struct OptimiserReport {
   int iteration = 0;
   int iterations = 0;
   double best_cost = 0;
+  std::shared_ptr<const Layout> best_layout;  // best so far (immutable snapshot for the ghost)
 };
 
 struct OptimiserOutcome {
@@ -59,10 +60,13 @@ class OptimiserJob {
   // Forget the last outcome (after Apply or Discard).
   void discard();
   int iterations_planned() const { return iterations_; }
+  // Best layout so far while running (then the outcome's); null before the first iteration.
+  std::shared_ptr<const Layout> best_so_far() const;
 
  private:
   BackgroundJob<OptimiserOutcome, OptimiserReport> job_;
   std::vector<double> history_;
+  std::shared_ptr<const Layout> live_best_;
   std::string error_;
   int iterations_ = 0;
   bool discarded_ = false;

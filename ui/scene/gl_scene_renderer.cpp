@@ -165,6 +165,12 @@ GlSceneRenderer::GlSceneRenderer() {
     glGetProgramInfoLog(program_, sizeof log, nullptr, log);
     throw std::runtime_error(std::string("scene shader link: ") + log);
   }
+  // Software rasterisers (Mesa llvmpipe under Xvfb, softpipe) pay for every sample on the CPU:
+  // 4× MSAA there costs tens of milliseconds per frame, so they render without it.
+  if (const auto* renderer = reinterpret_cast<const char*>(glGetString(GL_RENDERER))) {
+    const std::string name(renderer);
+    if (name.find("llvmpipe") != std::string::npos || name.find("softpipe") != std::string::npos) samples_ = 0;
+  }
   u_vp_ = glGetUniformLocation(program_, "u_view_projection");
   u_view_dir_ = glGetUniformLocation(program_, "u_view_dir");
   glGenVertexArrays(1, &vao_);
@@ -256,7 +262,15 @@ std::uintptr_t GlSceneRenderer::render(const SceneList& scene, const OrbitCamera
   lines_.clear();
   translucent_.clear();
   translucent_lines_.clear();
+  xray_.clear();
   for (const SceneItem& it : scene.items) {
+    // The controllers' bodies hang below their origin, i.e. below the table plane (the study's
+    // y = 0 is the sensor's top face): an x-ray pass shows the hidden parts dimmed.
+    if (it.kind == ItemKind::kBox && (it.role == ItemRole::kDevice || it.role == ItemRole::kDeviceUsbMarker)) {
+      SceneItem ghost = it;
+      ghost.colour.a = 0.45f;
+      push_box(xray_, ghost);
+    }
     const bool translucent = (it.flags & (kFlagTranslucent | kFlagGhost)) != 0 || it.colour.a < 0.99f;
     if (it.kind == ItemKind::kSegment) {
       auto& dst = translucent ? translucent_lines_ : lines_;
@@ -306,6 +320,9 @@ std::uintptr_t GlSceneRenderer::render(const SceneList& scene, const OrbitCamera
   glDepthMask(GL_FALSE);
   draw(translucent_, GL_TRIANGLES);
   draw(translucent_lines_, GL_LINES);
+  glDepthFunc(GL_GREATER);
+  draw(xray_, GL_TRIANGLES);
+  glDepthFunc(GL_LEQUAL);
   glDepthMask(GL_TRUE);
 
   glBindVertexArray(0);

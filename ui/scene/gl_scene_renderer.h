@@ -36,7 +36,7 @@ class GlSceneRenderer final : public SceneRenderer {
   unsigned fbo_ = 0, texture_ = 0, depth_ = 0;
   int width_ = 0, height_ = 0, samples_ = 4;
   // Reused every frame: no allocation once warmed up.
-  std::vector<Vertex> opaque_, lines_, translucent_, translucent_lines_;
+  std::vector<Vertex> opaque_, lines_, translucent_, translucent_lines_, xray_;
 };
 
 }  // namespace lmc::ui

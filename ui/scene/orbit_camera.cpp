@@ -125,7 +125,7 @@ void OrbitCamera::set_named_view(NamedView view) {
     case NamedView::kTop: yaw_deg_ = 0.0; pitch_deg_ = kMaxPitch; break;
     case NamedView::kFront: yaw_deg_ = 0.0; pitch_deg_ = 8.0; break;
     case NamedView::kSide: yaw_deg_ = 90.0; pitch_deg_ = 8.0; break;
-    case NamedView::kPerspective: yaw_deg_ = 25.0; pitch_deg_ = 35.0; break;
+    case NamedView::kPerspective: yaw_deg_ = 20.0; pitch_deg_ = 50.0; break;
   }
 }
 

@@ -52,8 +52,8 @@ class OrbitCamera {
 
  private:
   Eigen::Vector3d target_;
-  double yaw_deg_ = 25.0;
-  double pitch_deg_ = 35.0;
+  double yaw_deg_ = 20.0;
+  double pitch_deg_ = 50.0;
   double distance_mm_ = 900.0;
   double fov_y_deg_ = 40.0;
 };

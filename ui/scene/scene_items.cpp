@@ -134,13 +134,13 @@ void add_device(SceneList& out, const SceneInputs& in, int i) {
     pyr.transform = t;
     pyr.size = in.layout->sensor.range_mm;
     pyr.b = Eigen::Vector3d(in.layout->sensor.fov_long_deg * 0.5, in.layout->sensor.fov_short_deg * 0.5, 0);
-    pyr.colour = device_hue(i, i == in.selected ? 0.16f : 0.07f);
+    pyr.colour = device_hue(i, i == in.selected ? 0.12f : 0.035f);
     pyr.id = i;
     pyr.flags = flags | kFlagTranslucent;
     out.items.push_back(pyr);
     const auto c = pyramid_corners(t, pyr.size, pyr.b.x(), pyr.b.y());
     const Eigen::Vector3d apex = t.translation();
-    const Rgba edge = device_hue(i, i == in.selected ? 0.9f : 0.45f);
+    const Rgba edge = device_hue(i, i == in.selected ? 0.85f : 0.3f);
     for (int k = 0; k < 4; ++k) {
       add_segment(out, ItemRole::kPyramid, apex, c[static_cast<size_t>(k)], edge, i, kFlagTranslucent);
       add_segment(out, ItemRole::kPyramid, c[static_cast<size_t>(k)], c[static_cast<size_t>((k + 1) % 4)], edge, i,

@@ -65,7 +65,7 @@ void InspectorPanel::draw_device(int index) {
   }
 
   static const char* kUnits[kNumPoseParams] = {"%.1f mm", "%.1f mm", "%.1f mm", "%.2f°", "%.2f°", "%.2f°"};
-  ImGui::TextDisabled("Pose (world, mm / degrees)          lock = the optimiser and handles keep it");
+  ImGui::TextDisabled("Pose (mm, degrees); ticked = locked");
   for (int k = 0; k < kNumPoseParams; ++k) {
     ImGui::PushID(k);
     bool locked = s.doc().locks[static_cast<size_t>(index)].locked[static_cast<size_t>(k)];
@@ -91,7 +91,7 @@ void InspectorPanel::draw_device(int index) {
     }
     ImGui::PopID();
   }
-  ImGui::TextDisabled("Calibration offset  %.2f, %.2f, %.2f mm (applied after the pose)", d.offset_mm.x(),
+  ImGui::TextDisabled("Offset %.2f, %.2f, %.2f mm (after the pose)", d.offset_mm.x(),
                       d.offset_mm.y(), d.offset_mm.z());
   ImGui::PopID();
 }

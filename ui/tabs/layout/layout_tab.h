@@ -4,8 +4,10 @@
 // the shared LayoutTabState and one object per panel, arranges them (ImGui 1.86 has no docking:
 // child regions with a splitter), and owns the tab-level commands (file dialogs, shortcuts,
 // confirmations).
+#include <chrono>
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "ui/model/layout_tab_state.h"
 #include "ui/scene/scene_renderer.h"
@@ -52,6 +54,20 @@ class LayoutTab final : public Tab {
   void run(Pending action);
   void save(bool save_as);
   SceneRenderer* renderer();
+
+  // Frame-time measurement (LMC_LAYOUT_FRAME_STATS=N with --capture): a scripted drag of the
+  // selected controller for N frames, timing update + draw of this tab (GL submission included).
+  void scripted_drag_step();
+  void report_frame_stats() const;
+  int stats_frames_wanted_ = 0;
+  int stats_frame_ = 0;
+  DevicePose stats_start_pose_;
+  std::vector<double> frame_ms_;
+  std::vector<double> interval_ms_;
+  std::chrono::steady_clock::time_point frame_start_{};
+  int coverage_updates_ = 0;
+  double update_ms_ = 0;
+  const void* last_snapshot_ = nullptr;
 
   StatusSink& status_;
   std::shared_ptr<LayoutTabState> state_;

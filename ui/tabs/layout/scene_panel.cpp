@@ -169,8 +169,8 @@ void ScenePanel::draw(ImVec2 size) {
     in.hand = s.current_hand();
     const SceneList probe = build_scene(in);
     // Frame the controllers and the hand, and enough of the table to read its grid around them.
-    Eigen::Vector3d lo = probe.bounds_lo.cwiseMin(Eigen::Vector3d(-250, 0, -250));
-    Eigen::Vector3d hi = probe.bounds_hi.cwiseMax(Eigen::Vector3d(250, 0, 250));
+    Eigen::Vector3d lo = probe.bounds_lo.cwiseMin(Eigen::Vector3d(-300, 0, -300));
+    Eigen::Vector3d hi = probe.bounds_hi.cwiseMax(Eigen::Vector3d(300, 0, 300));
     s.camera.frame_bounds(lo, hi, image_size_.x / image_size_.y);
   }
 
@@ -201,8 +201,8 @@ void ScenePanel::draw(ImVec2 size) {
       in.heatmap_range = s.heatmap_range();
     }
   }
-  std::shared_ptr<const OptimiserOutcome> outcome = s.optimiser.outcome();
-  if (s.display.show_ghost && outcome) in.ghost = &outcome->pso.best_layout;
+  const std::shared_ptr<const Layout> ghost = s.optimiser.best_so_far();
+  if (s.display.show_ghost && ghost) in.ghost = ghost.get();
   scene_ = build_scene(in);
 
   SceneRenderer* r = renderer_ ? renderer_() : nullptr;
