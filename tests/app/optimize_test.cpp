@@ -1,0 +1,105 @@
+// Runs the built `lmc optimize` (LMC_CLI_PATH) on small searches.
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+
+#include <cstdlib>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+#include <string>
+
+#include "tests/support/reference_data.h"
+
+namespace {
+
+struct CliRun {
+  int exit_code = -1;
+  std::string out;
+  std::string err;
+};
+
+std::string read_all(const std::filesystem::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+std::string quoted(const std::string& s) {
+  std::string q = "'";
+  for (const char c : s) q += c == '\'' ? std::string("'\\''") : std::string(1, c);
+  return q + "'";
+}
+
+// Runs the built `lmc` with `args`; stdout/stderr are captured in `dir`.
+CliRun lmc_run(const std::string& args, const std::filesystem::path& dir) {
+  const std::string cmd = quoted(LMC_CLI_PATH) + " " + args + " >" + quoted((dir / "stdout").string()) + " 2>" +
+                          quoted((dir / "stderr").string());
+  const int status = std::system(cmd.c_str());
+  CliRun r;
+  r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  r.out = read_all(dir / "stdout");
+  r.err = read_all(dir / "stderr");
+  return r;
+}
+
+}  // namespace
+
+#include "core/io/layout_json.h"
+
+namespace {
+
+TEST(LmcOptimize, SmallSearchWritesALayoutAndJsonSummary) {
+  const auto dir = lmc::test::scratch_dir("cli_optimize");
+  const auto out1 = dir / "l1.json", out2 = dir / "l2.json";
+  const std::string common = "optimize --frames 40 --particles 4 --iterations 2 --devices 3 "
+                             "--bounds x=-300:300,z=-300:300,rx=-45:45,ry=-90:90 --json --no-progress ";
+  const CliRun r1 = lmc_run(common + "--threads 1 -o " + quoted(out1.string()), dir);
+  ASSERT_EQ(r1.exit_code, 0) << r1.err;
+  const auto j = nlohmann::json::parse(r1.out);
+  EXPECT_EQ(j["status"], "completed");
+  EXPECT_EQ(j["summary"]["frames"], 40);
+  EXPECT_EQ(j["summary"]["c"].size(), 4u);
+  EXPECT_EQ(j["layout_evaluations"], 4 * 3);
+  EXPECT_EQ(j["best_cost_history"].size(), 3u);
+  const lmc::Layout l1 = lmc::load_layout(out1);
+  EXPECT_EQ(l1.device_count(), 3);
+  for (const auto& d : l1.devices) {
+    EXPECT_LE(std::abs(d.pose.x_mm), 300);
+    EXPECT_LE(std::abs(d.pose.rx_deg), 45);
+  }
+  // Same seed on two threads: the same layout.
+  const CliRun r2 = lmc_run(common + "--threads 2 -o " + quoted(out2.string()), dir);
+  ASSERT_EQ(r2.exit_code, 0) << r2.err;
+  EXPECT_EQ(lmc::load_layout(out2), l1);
+}
+
+TEST(LmcOptimize, TextSummaryAndLocks) {
+  const auto dir = lmc::test::scratch_dir("cli_optimize_text");
+  const auto out = dir / "l.json";
+  const CliRun r = lmc_run("optimize --frames 30 --particles 3 --iterations 1 --start paper-initial --lock LMC2 "
+                        "--lock LMC3:x+z -o " + quoted(out.string()),
+                        dir);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("M = "), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("c_0 = "), std::string::npos);
+  EXPECT_NE(r.out.find("seen by nobody"), std::string::npos);
+  EXPECT_NE(r.out.find("per second"), std::string::npos);
+  const lmc::Layout start = lmc::load_layout_or_preset("paper-initial");
+  const lmc::Layout got = lmc::load_layout(out);
+  EXPECT_EQ(got.devices[1].pose, start.devices[1].pose);
+  EXPECT_EQ(got.devices[2].pose.x_mm, start.devices[2].pose.x_mm);
+  EXPECT_EQ(got.devices[2].pose.z_mm, start.devices[2].pose.z_mm);
+}
+
+TEST(LmcOptimize, BadBoundsAreReported) {
+  const auto dir = lmc::test::scratch_dir("cli_optimize_bad");
+  const CliRun r = lmc_run("optimize --frames 10 --bounds x=9:1 -o " + quoted((dir / "l.json").string()), dir);
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_NE(r.err.find("--bounds"), std::string::npos) << r.err;
+  const CliRun r2 = lmc_run("optimize --frames 10 --start paper-initial --lock LMC9 -o " + quoted((dir / "l.json").string()), dir);
+  EXPECT_EQ(r2.exit_code, 1);
+  EXPECT_NE(r2.err.find("LMC9"), std::string::npos) << r2.err;
+}
+
+}  // namespace

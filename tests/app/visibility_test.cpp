@@ -1,0 +1,100 @@
+// Runs the built `lmc visibility` (LMC_CLI_PATH) on the studys validation trial.
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+
+#include <cstdlib>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+#include <string>
+
+#include "tests/support/reference_data.h"
+
+namespace {
+
+struct CliRun {
+  int exit_code = -1;
+  std::string out;
+  std::string err;
+};
+
+std::string read_all(const std::filesystem::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+std::string quoted(const std::string& s) {
+  std::string q = "'";
+  for (const char c : s) q += c == '\'' ? std::string("'\\''") : std::string(1, c);
+  return q + "'";
+}
+
+// Runs the built `lmc` with `args`; stdout/stderr are captured in `dir`.
+CliRun lmc_run(const std::string& args, const std::filesystem::path& dir) {
+  const std::string cmd = quoted(LMC_CLI_PATH) + " " + args + " >" + quoted((dir / "stdout").string()) + " 2>" +
+                          quoted((dir / "stderr").string());
+  const int status = std::system(cmd.c_str());
+  CliRun r;
+  r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  r.out = read_all(dir / "stdout");
+  r.err = read_all(dir / "stderr");
+  return r;
+}
+
+}  // namespace
+
+#include "core/io/lmc_recording.h"
+
+namespace {
+
+TEST(LmcVisibility, ReproducesTheAuthorsLabelsForAllRows) {
+  const auto input = lmc::test::reference_file("validation/Interp_LMC_Naiv_Static101.txt");
+  const auto expected = lmc::test::reference_file("validation/Interp_LMC_Naiv_Static101.raytraced.txt");
+  LMC_REQUIRE_REFERENCE_FILE(input);
+  LMC_REQUIRE_REFERENCE_FILE(expected);
+  const auto dir = lmc::test::scratch_dir("cli_visibility");
+  const auto out = dir / "labels.txt";
+  const CliRun r = lmc_run("visibility " + quoted(input.string()) + " -o " + quoted(out.string()), dir);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const lmc::LmcRecording got = lmc::read_lmc_recording(out);
+  const lmc::LmcRecording want = lmc::read_lmc_recording(expected);
+  ASSERT_EQ(got.visibility.size(), want.visibility.size());
+  int labels = 0;
+  for (size_t i = 0; i < got.visibility.size(); ++i) {
+    for (size_t k = 0; k < 5; ++k) {
+      EXPECT_EQ(got.visibility[i][k], want.visibility[i][k]) << "row " << i + 1;
+      ++labels;
+    }
+    EXPECT_EQ(got.rows[i].points, want.rows[i].points);
+  }
+  EXPECT_EQ(labels, 1000);
+}
+
+TEST(LmcVisibility, ShorterRangeHidesAndExplains) {
+  const auto input = lmc::test::reference_file("validation/Interp_LMC_Naiv_Static101.txt");
+  LMC_REQUIRE_REFERENCE_FILE(input);
+  const auto dir = lmc::test::scratch_dir("cli_visibility_range");
+  const auto out = dir / "labels.txt";
+  const CliRun r = lmc_run("visibility " + quoted(input.string()) + " --range-mm 250 --explain -o " + quoted(out.string()), dir);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("out of range"), std::string::npos);
+  const lmc::LmcRecording got = lmc::read_lmc_recording(out);
+  int hidden = 0;
+  for (const auto& l : got.visibility) hidden += l[0] == 0;
+  EXPECT_GT(hidden, 0);
+}
+
+TEST(LmcVisibility, BadInputNamesTheFile) {
+  const auto dir = lmc::test::scratch_dir("cli_visibility_bad");
+  {
+    std::ofstream bad(dir / "bad.txt");
+    bad << "not a recording\n1\t2\n";
+  }
+  const CliRun r = lmc_run("visibility " + quoted((dir / "bad.txt").string()) + " -o " + quoted((dir / "o.txt").string()), dir);
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_NE(r.err.find("bad.txt"), std::string::npos) << r.err;
+}
+
+}  // namespace
