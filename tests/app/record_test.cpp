@@ -9,6 +9,8 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <atomic>
+#include <chrono>
 #include <cstdlib>
 #include <fstream>
 #include <nlohmann/json.hpp>
@@ -151,6 +153,73 @@ TEST(LmcRecord, SendsTheViconTriggerToALoopbackListener) {
   EXPECT_EQ(sj["vicon_packets"][0].at("type"), "CaptureStart");
   EXPECT_EQ(sj["vicon_packets"][1].at("packet_id").get<long long>(),
             sj["vicon_packets"][0].at("packet_id").get<long long>() + 1);
+}
+
+// Sends `payload` to 127.0.0.1:port every 50 ms until `stop` (same PacketID: the listener keeps one).
+void send_until(int port, const std::string& payload, const std::atomic<bool>& stop) {
+  const int fd = ::socket(AF_INET, SOCK_DGRAM, 0);
+  sockaddr_in to{};
+  to.sin_family = AF_INET;
+  to.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
+  to.sin_port = htons(static_cast<uint16_t>(port));
+  while (!stop) {
+    ::sendto(fd, payload.data(), payload.size(), 0, reinterpret_cast<sockaddr*>(&to), sizeof to);
+    std::this_thread::sleep_for(std::chrono::milliseconds(50));
+  }
+  ::close(fd);
+}
+
+std::string capture_message(bool start, const std::string& name, int packet_id) {
+  std::string xml = R"(<?xml version="1.0" encoding="UTF-8" standalone="no" ?>)";
+  xml += start ? "<CaptureStart>" : "<CaptureStop RESULT=\"SUCCESS\">";
+  xml += "<Name VALUE=\"" + name + "\"/><DatabasePath VALUE=\"\"/><Delay VALUE=\"0\"/><PacketID VALUE=\"" +
+         std::to_string(packet_id) + "\"/>";
+  xml += start ? "</CaptureStart>" : "</CaptureStop>";
+  xml.push_back('\0');
+  return xml;
+}
+
+TEST(LmcRecord, ViconCaptureStartAndStopDriveTheTrial) {
+  // A free loopback port for lmc to listen on.
+  const int probe = ::socket(AF_INET, SOCK_DGRAM, 0);
+  sockaddr_in addr{};
+  addr.sin_family = AF_INET;
+  addr.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
+  ASSERT_EQ(::bind(probe, reinterpret_cast<sockaddr*>(&addr), sizeof addr), 0);
+  socklen_t len = sizeof addr;
+  ::getsockname(probe, reinterpret_cast<sockaddr*>(&addr), &len);
+  const int port = ntohs(addr.sin_port);
+  ::close(probe);
+
+  const auto dir = lmc::test::scratch_dir("record_listen");
+  RunResult r;
+  std::thread lmc([&] {
+    r = run("record --backend sim --seconds 20 --quiet --vicon-listen " + std::to_string(port) +
+                " --vicon-listen-address 127.0.0.1 -o " + quote((dir / "s").string()),
+            dir / "logs");
+  });
+  std::atomic<bool> stop_start{false};
+  std::thread starter([&] { send_until(port, capture_message(true, "Naiv_Thumb102", 900), stop_start); });
+  // Recording begins at the first CaptureStart lmc hears; give it a second of frames.
+  const auto side = dir / "s" / "LMC_Naiv_Thumb102.session.json";
+  for (int i = 0; i < 200 && !std::filesystem::exists(side); ++i) std::this_thread::sleep_for(std::chrono::milliseconds(25));
+  std::this_thread::sleep_for(std::chrono::milliseconds(1000));
+  stop_start = true;
+  starter.join();
+  std::atomic<bool> stop_stop{false};
+  std::thread stopper([&] { send_until(port, capture_message(false, "Naiv_Thumb102", 901), stop_stop); });
+  lmc.join();
+  stop_stop = true;
+  stopper.join();
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  ASSERT_TRUE(std::filesystem::exists(side));
+  const auto sj = json_file(side);
+  EXPECT_EQ(sj.at("status"), "completed");
+  EXPECT_EQ(sj.at("trial"), "Naiv_Thumb102");
+  EXPECT_EQ(sj.at("vicon_trigger_received").at("packet_id"), 900);
+  EXPECT_EQ(sj.at("vicon_stop_received").at("packet_id"), 901);
+  EXPECT_GT(sj.at("frames_written").get<int>(), 20);
+  EXPECT_TRUE(std::filesystem::exists(dir / "s" / "Naiv_Thumb102.trc"));
 }
 
 TEST(LmcRecord, ReplayKeepsEveryRowOfEveryDevice) {

@@ -7,7 +7,9 @@
 // frames written); device messages (disconnects, failures) are printed as they happen; stdout
 // gets a summary. With --vicon the Vicon capture trigger (CaptureStart when every device streams,
 // CaptureStop at the end, each sent --vicon-repeats times) goes to HOST:PORT. --fast runs the
-// simulator in simulated time, faster than real time. Ctrl-C stops the trial cleanly.
+// simulator in simulated time, faster than real time. --vicon-listen PORT instead waits for
+// Vicon's own CaptureStart (its Name becomes the trial name unless --trial is given) and records
+// until CaptureStop. Ctrl-C stops the trial cleanly.
 #include <atomic>
 #include <chrono>
 #include <csignal>
@@ -15,7 +17,9 @@
 #include <filesystem>
 #include <iomanip>
 #include <iostream>
+#include <cmath>
 #include <memory>
+#include <mutex>
 #include <nlohmann/json.hpp>
 #include <sstream>
 #include <string>
@@ -56,6 +60,8 @@ struct RecordOptions {
   bool fast = false;
   double speed = 1.0;
   double stream_timeout_s = 10.0;
+  int vicon_listen_port = 0;
+  std::string vicon_listen_address = "0.0.0.0";
   std::string out_dir;
   bool force = false;
   bool quiet = false;
@@ -81,10 +87,12 @@ void print_messages(DeviceHub& hub) {
 }
 
 void run_record(const RecordOptions& opt) {
-  require_valid_trial_name(opt.trial);
+  const bool listen = opt.vicon_listen_port > 0;
+  if (!listen || !opt.trial.empty()) require_valid_trial_name(opt.trial);
   if (!(opt.seconds > 0)) throw lmc::Error("--seconds must be > 0");
   const SourceSpec spec = parse_source_spec(opt.backend);
   if (opt.fast && spec.backend == "leapc") throw lmc::Error("--fast applies to sim and replay only");
+  if (opt.fast && listen) throw lmc::Error("--fast and --vicon-listen exclude each other (Vicon runs in real time)");
 
   SourceSettings settings;
   settings.layout = lmc::load_layout_or_preset(opt.layout);
@@ -92,12 +100,19 @@ void run_record(const RecordOptions& opt) {
   if (opt.seed >= 0) settings.sim.seed = static_cast<std::uint64_t>(opt.seed);
   if (!opt.motion.empty()) apply_motion_spec(settings.sim, opt.motion);
   settings.speed = opt.fast ? 0.0 : opt.speed;
-  settings.duration_s = spec.backend == "sim" ? opt.seconds : 0.0;
+  // In listen mode the trial starts whenever Vicon says so: the simulator runs until stopped.
+  settings.duration_s = spec.backend == "sim" && !listen ? opt.seconds : 0.0;
 
-  const SessionPaths paths = session_paths(opt.out_dir, opt.trial);
-  if (!opt.force)
-    for (const auto& p : {paths.recording, paths.sidecar, paths.truth_trc})
-      if (std::filesystem::exists(p)) throw lmc::Error(p.string() + " exists; choose another trial name or pass --force");
+  auto check_free = [&](const std::string& trial) {
+    const SessionPaths paths = session_paths(opt.out_dir, trial);
+    if (!opt.force)
+      for (const auto& p : {paths.recording, paths.sidecar, paths.truth_trc})
+        if (std::filesystem::exists(p)) throw lmc::Error(p.string() + " exists; choose another trial name or pass --force");
+    return paths;
+  };
+  std::string trial = opt.trial;
+  SessionPaths paths;
+  if (!trial.empty()) paths = check_free(trial);
 
   std::unique_ptr<ViconTrigger> vicon;
   if (!opt.vicon.empty()) {
@@ -108,6 +123,19 @@ void run_record(const RecordOptions& opt) {
     vc.description = opt.vicon_description;
     vicon = std::make_unique<ViconTrigger>(vc);
   }
+  // Vicon's own start/stop broadcasts (or another lab program's) drive the trial.
+  std::mutex vicon_in_mutex;
+  std::vector<ViconMessage> vicon_in;
+  std::unique_ptr<ViconListener> listener;
+  if (listen) {
+    listener = std::make_unique<ViconListener>(opt.vicon_listen_address, static_cast<std::uint16_t>(opt.vicon_listen_port),
+                                               [&](const ViconMessage& m) {
+                                                 std::lock_guard lock(vicon_in_mutex);
+                                                 vicon_in.push_back(m);
+                                               });
+    if (!opt.quiet)
+      std::cerr << "lmc record: waiting for CaptureStart on " << opt.vicon_listen_address << ":" << listener->port() << "\n";
+  }
 
   HubOptions hub_options;
   hub_options.backpressure = opt.fast;
@@ -116,20 +144,25 @@ void run_record(const RecordOptions& opt) {
   auto* sim = dynamic_cast<SimSource*>(source.get());
   hub.add_source(std::move(source));
 
-  RecorderConfig rc;
-  rc.output_dir = opt.out_dir;
-  rc.trial = opt.trial;
-  rc.layout = settings.layout;
-  rc.backend = spec.backend;
-  if (spec.backend == "sim") rc.extra["simulator"] = sim_config_to_json(settings.sim);
-  if (spec.backend == "replay") rc.extra["replay_of"] = spec.replay_path;
-  Recorder recorder(rc);
-  recorder.start();
-  hub.set_consumer(&recorder);
+  std::unique_ptr<Recorder> recorder;
+  double sim_time_at_start = 0;
+  auto begin_recording = [&] {
+    RecorderConfig rc;
+    rc.output_dir = opt.out_dir;
+    rc.trial = trial;
+    rc.layout = settings.layout;
+    rc.backend = spec.backend;
+    if (spec.backend == "sim") rc.extra["simulator"] = sim_config_to_json(settings.sim);
+    if (spec.backend == "replay") rc.extra["replay_of"] = spec.replay_path;
+    recorder = std::make_unique<Recorder>(rc);
+    recorder->start();
+    if (sim != nullptr) sim_time_at_start = sim->simulated_time_s();
+    hub.set_consumer(recorder.get());
+  };
+  if (!listen) begin_recording();
 
   g_interrupted = false;
   auto previous = std::signal(SIGINT, on_sigint);
-  const bool tty_status = !opt.quiet;
   const auto t0 = std::chrono::steady_clock::now();
   auto elapsed = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count(); };
   hub.start();
@@ -145,7 +178,7 @@ void run_record(const RecordOptions& opt) {
   bool vicon_started = false;
   auto send_vicon = [&](bool start) {
     if (!vicon) return;
-    const ViconSendResult r = start ? vicon->send_start(opt.trial) : vicon->send_stop(opt.trial);
+    const ViconSendResult r = start ? vicon->send_start(trial) : vicon->send_stop(trial);
     nlohmann::json p = {{"type", start ? "CaptureStart" : "CaptureStop"},
                         {"packet_id", r.message.packet_id},
                         {"target", vicon->target()},
@@ -153,7 +186,7 @@ void run_record(const RecordOptions& opt) {
                         {"host_time_utc", utc_now_iso8601()},
                         {"host_ns", host_now_ns()}};
     if (!r.ok()) p["error"] = r.error;
-    recorder.note_vicon_packet(p);
+    if (recorder) recorder->note_vicon_packet(p);
     if (!r.ok()) {
       std::cerr << "lmc record: " << r.error << "\n";
       if (failure.empty()) failure = r.error;
@@ -165,11 +198,45 @@ void run_record(const RecordOptions& opt) {
 
   double record_start_s = -1;
   double last_status = -1;
+  bool stop_from_vicon = false;
   for (;;) {
     std::this_thread::sleep_for(std::chrono::milliseconds(opt.fast ? 20 : 50));
     print_messages(hub);
     const double now = elapsed();
-    if (record_start_s < 0) {
+    if (listen) {
+      std::vector<ViconMessage> got;
+      {
+        std::lock_guard lock(vicon_in_mutex);
+        got.swap(vicon_in);
+      }
+      for (const auto& m : got) {
+        if (m.type == ViconMessage::Type::kStart && !recorder) {
+          if (opt.trial.empty()) {
+            if (auto why = validate_trial_name(m.name); !why.empty()) {
+              std::cerr << "lmc record: ignoring CaptureStart: its Name cannot be a trial name (" << why << ")\n";
+              continue;
+            }
+            trial = m.name;
+            try {
+              paths = check_free(trial);
+            } catch (const std::exception& e) {
+              failure = e.what();
+              break;
+            }
+          }
+          begin_recording();
+          recorder->note("vicon_trigger_received", {{"type", "CaptureStart"}, {"name", m.name}, {"packet_id", m.packet_id},
+                                                    {"host_time_utc", utc_now_iso8601()}});
+          record_start_s = now;
+          if (!opt.quiet) std::cerr << "lmc record: CaptureStart received: recording " << trial << "\n";
+        } else if (m.type == ViconMessage::Type::kStop && recorder) {
+          recorder->note("vicon_stop_received", {{"name", m.name}, {"packet_id", m.packet_id}, {"result", m.result},
+                                                 {"host_time_utc", utc_now_iso8601()}});
+          stop_from_vicon = true;
+        }
+      }
+      if (!failure.empty() || stop_from_vicon) break;
+    } else if (record_start_s < 0) {
       if (all_streaming() || hub.sources_finished()) {
         record_start_s = now;
         send_vicon(true);
@@ -180,49 +247,58 @@ void run_record(const RecordOptions& opt) {
         break;
       }
     }
-    if (recorder.failed()) {
-      failure = recorder.status().error;
+    if (recorder && recorder->failed()) {
+      failure = recorder->status().error;
       break;
     }
     if (g_interrupted) {
       std::cerr << "\nlmc record: interrupted; stopping the trial\n";
       break;
     }
-    if (tty_status && now - last_status >= 1.0) {
+    if (!opt.quiet && now - last_status >= 1.0) {
       last_status = now;
-      std::cerr << status_line(hub.snapshot(), recorder.status(), now) << "\n";
+      std::cerr << status_line(hub.snapshot(), recorder ? recorder->status() : RecorderStatus{}, now) << "\n";
     }
     if (hub.sources_finished()) break;
-    if (!opt.fast && spec.backend != "sim" && record_start_s >= 0 && now - record_start_s >= opt.seconds) break;
+    const bool timed = listen || (!opt.fast && spec.backend != "sim");
+    if (timed && record_start_s >= 0 && now - record_start_s >= opt.seconds) break;
     if (!failure.empty()) break;
   }
   hub.stop();
   hub.set_consumer(nullptr);
   print_messages(hub);
   std::signal(SIGINT, previous);
+  listener.reset();
   if (vicon_started) send_vicon(false);
+  if (!recorder) throw lmc::Error(failure.empty() ? "no CaptureStart received; nothing recorded" : failure);
 
-  double truth_seconds = 0;
+  double truth_from = 0, truth_seconds = 0;
   if (sim != nullptr) {
-    truth_seconds = sim->finished() ? opt.seconds : sim->simulated_time_s();
-    const auto truth = sim->truth_until(truth_seconds);
+    truth_from = sim_time_at_start;
+    truth_seconds = (sim->finished() ? opt.seconds : sim->simulated_time_s()) - truth_from;
+    auto truth = sim->truth_until(truth_from + truth_seconds);
+    const auto skip = static_cast<size_t>(std::ceil(truth_from * settings.sim.truth_rate_hz - 1e-9));
+    truth.erase(truth.begin(), truth.begin() + static_cast<std::ptrdiff_t>(std::min(skip, truth.size())));
     lmc::TrcData trc = truth_trc(truth, settings.sim.truth_rate_hz, sim->rig().marker_map());
+    const double first_s = static_cast<double>(skip) / settings.sim.truth_rate_hz;
     try {
       lmc::save_trc(paths.truth_trc, trc);
-      recorder.note("ground_truth", {{"file", paths.truth_trc.filename().string()},
-                                     {"rate_hz", settings.sim.truth_rate_hz},
-                                     {"frames", trc.frame_count()},
-                                     {"device_clock_at_time_zero_us", settings.sim.device_clock_start_us},
-                                     {"mapping", "assets/mappings/vicon-26-to-lmc.json (exact inverse)"}});
+      recorder->note("ground_truth",
+                     {{"file", paths.truth_trc.filename().string()},
+                      {"rate_hz", settings.sim.truth_rate_hz},
+                      {"frames", trc.frame_count()},
+                      {"device_clock_at_time_zero_us",
+                       settings.sim.device_clock_start_us + static_cast<std::int64_t>(std::llround(first_s * 1e6))},
+                      {"mapping", "assets/mappings/vicon-26-to-lmc.json (exact inverse)"}});
     } catch (const std::exception& e) {
       if (failure.empty()) failure = std::string("cannot write the ground truth: ") + e.what();
     }
   }
-  const RecorderStatus st = recorder.stop(hub.serial_to_slot());
+  const RecorderStatus st = recorder->stop(hub.serial_to_slot());
   if (failure.empty() && st.state == RecorderState::kFailed) failure = st.error;
 
   const HubSnapshot snap = hub.snapshot();
-  std::cout << "trial " << opt.trial << ": " << st.frames_written << " frames from " << st.devices.size()
+  std::cout << "trial " << trial << ": " << st.frames_written << " frames from " << st.devices.size()
             << " devices (" << spec.backend << ", layout " << settings.layout.name << ")\n";
   for (const auto& [id, d] : st.devices) {
     const double span_s = static_cast<double>(d.last_timestamp_us - d.first_timestamp_us) / 1e6;
@@ -250,7 +326,8 @@ void setup_record(CLI::App& app) {
   auto opt = std::make_shared<RecordOptions>();
   app.add_option("--backend", opt->backend, "sim, leapc or replay:FILE")->capture_default_str();
   app.add_option("--layout", opt->layout, "Layout file or preset name")->capture_default_str();
-  app.add_option("--trial", opt->trial, "Trial name: letters, digits, _ and -; names the files")->required();
+  app.add_option("--trial", opt->trial,
+                 "Trial name: letters, digits, _ and -; names the files (with --vicon-listen: default Vicon's Name)");
   app.add_option("--seconds", opt->seconds, "Trial length (simulated seconds with --fast)")->capture_default_str();
   app.add_option("--motion", opt->motion,
                  "Simulator motion: static, index, thumb, wrist (prefix horizontal/ or vertical/), or a pose-set file");
@@ -259,6 +336,9 @@ void setup_record(CLI::App& app) {
   app.add_option("--vicon-database", opt->vicon_database, "DatabasePath field of the trigger");
   app.add_option("--vicon-notes", opt->vicon_notes, "Notes field of CaptureStart");
   app.add_option("--vicon-description", opt->vicon_description, "Description field of CaptureStart");
+  app.add_option("--vicon-listen", opt->vicon_listen_port,
+                 "Wait for a Vicon CaptureStart on this UDP port, record until CaptureStop (or --seconds)");
+  app.add_option("--vicon-listen-address", opt->vicon_listen_address, "Address to listen on")->capture_default_str();
   app.add_option("--sim-config", opt->sim_config, "Simulator settings (JSON; every behaviour switchable)");
   app.add_option("--seed", opt->seed, "Simulator seed (overrides --sim-config)");
   app.add_flag("--fast", opt->fast, "Simulated time: run the simulator (or a replay) as fast as possible");
