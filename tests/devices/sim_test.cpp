@@ -7,7 +7,9 @@
 
 #include "core/common/error.h"
 #include "core/io/layout_json.h"
+#include "core/io/pose_set_tsv.h"
 #include "core/io/vicon_mapping.h"
+#include "core/hand/reference_poses.h"
 #include "core/visibility/frame_prep.h"
 #include "core/visibility/visibility_explain.h"
 #include "devices/sim/sim_config.h"
@@ -231,6 +233,30 @@ TEST(SimRig, GroundTruthTrcMapsBackToTheTruthHand) {
       EXPECT_LT((back.at(f, p) - t.truth[static_cast<size_t>(f)].point(p)).norm(), 1e-9) << f << " " << p;
     }
   }
+}
+
+TEST(SimRig, PoseSetFileIsPlayedInALoopWithInterpolation) {
+  const HandModel model;
+  PoseSet set;
+  set.frames.push_back(reference_pose(model, HandOrientation::kHorizontal, HandMotion::kOpen));
+  set.frames.push_back(reference_pose(model, HandOrientation::kHorizontal, HandMotion::kIndexFlexion));
+  set.labels.resize(2);
+  set.labels[1].motion = HandMotion::kIndexFlexion;
+  set.labels[1].progress = 1.0;
+  const auto path = test::scratch_dir("sim_poses") / "two.tsv";
+  save_pose_set(path, set);
+  SimConfig c = exact();
+  apply_motion_spec(c, path.string());
+  EXPECT_EQ(c.pose_set_path, path.string());
+  c.pose_set_rate_hz = 10.0;
+  SimRig rig(paper_initial(), c);
+  const HandFrame a = rig.truth_at(0.0), mid = rig.truth_at(0.05), b = rig.truth_at(0.1), loop = rig.truth_at(0.2);
+  const int tip = digit_point(Digit::kIndex, Joint::kEnd);
+  EXPECT_LT((a.point(tip) - set.frames[0].point(tip)).norm(), 1e-9);
+  EXPECT_LT((b.point(tip) - set.frames[1].point(tip)).norm(), 1e-9);
+  EXPECT_LT((mid.point(tip) - 0.5 * (a.point(tip) + b.point(tip))).norm(), 1e-9);
+  EXPECT_LT((loop.point(tip) - a.point(tip)).norm(), 1e-9);
+  EXPECT_GT((a.point(tip) - b.point(tip)).norm(), 50.0);
 }
 
 TEST(SimConfig, JsonRoundTripAndErrorsNameThePath) {

@@ -174,6 +174,11 @@ TEST_F(LeapcBackend, FailuresDropsAndServiceLossAreReported) {
   fake_leapc::connection_lost();
   ASSERT_TRUE(wait_for([&] { return drained() == 0 && !hub.snapshot().devices[0].connected; }));
   const auto msgs = hub.take_messages();
+  // When the service is back it announces the device again: the backend reopens and resubscribes.
+  fake_leapc::plug(5, "LP33333");
+  ASSERT_TRUE(wait_for([&] { return hub.snapshot().devices[0].connected; }));
+  EXPECT_EQ(fake_leapc::stats().subscribed, 2);
+  EXPECT_EQ(hub.snapshot().devices[0].slot, "LMC3");
   hub.stop();
   auto has = [&](const std::string& text) {
     for (const auto& m : msgs)
