@@ -18,6 +18,8 @@ void MethodErrors::merge(const MethodErrors& o) {
     angle_all[k].merge(o.angle_all[k]);
     angle_unseen[k].merge(o.angle_unseen[k]);
   }
+  truth_values += o.truth_values;
+  method_values += o.method_values;
 }
 
 ErrorAccumulator MethodErrors::finger_pooled(bool unseen) const {
@@ -32,7 +34,7 @@ ErrorAccumulator MethodErrors::angle_pooled(bool unseen) const {
   return a;
 }
 
-MethodErrors trial_errors(const TrialResult& r) {
+MethodErrors trial_errors(const TrialResult& r, const TrialResult* other) {
   MethodErrors m;
   if (!r.has_vicon) return m;
   const size_t frames = std::min(r.lmc_frames.size(), r.vicon_frames.size());
@@ -51,15 +53,20 @@ MethodErrors trial_errors(const TrialResult& r) {
     }
     const FrameMeasures& a = r.lmc_frames[f];
     const FrameMeasures& b = r.vicon_frames[f];
+    const FrameMeasures* o = other != nullptr && f < other->lmc_frames.size() ? &other->lmc_frames[f] : nullptr;
     for (size_t k = 0; k < kNumFingers; ++k) {
+      if (std::isfinite(b.finger_mm[k])) {
+        ++m.truth_values;
+        if (std::isfinite(a.finger_mm[k])) ++m.method_values;
+      }
       const double e = a.finger_mm[k] - b.finger_mm[k];
-      if (!std::isfinite(e)) continue;
+      if (!std::isfinite(e) || (o != nullptr && !std::isfinite(o->finger_mm[k]))) continue;
       m.finger_all[k].add(e);
       if (unseen[k]) m.finger_unseen[k].add(e);
     }
     for (size_t k = 0; k < kNumAngles; ++k) {
       const double e = a.angle_deg[k] - b.angle_deg[k];
-      if (!std::isfinite(e)) continue;
+      if (!std::isfinite(e) || (o != nullptr && !std::isfinite(o->angle_deg[k]))) continue;
       m.angle_all[k].add(e);
       const int finger = angle_finger[k];
       if (finger < 0 ? any_unseen : unseen[static_cast<size_t>(finger)]) m.angle_unseen[k].add(e);
@@ -72,6 +79,11 @@ std::string method_comparison_markdown(const MethodErrors& ref, const MethodErro
   std::ostringstream o;
   o << "RMSE against truth over " << trials << " trial(s), per frame (100 Hz). \"not seen\": frames where at least one\n"
     << "device could not see the finger (ray-traced label 0 or no hand).\n\n";
+  auto pct = [](const MethodErrors& m) {
+    return m.truth_values > 0 ? format_fixed(100.0 * static_cast<double>(m.method_values) / static_cast<double>(m.truth_values), 1) : std::string("nan");
+  };
+  o << "Both methods are scored on the same frames (where both give a value). Finger-length values given:\n"
+    << "reference " << pct(ref) << " %, default " << pct(def) << " % of the frames with truth.\n\n";
   o << "| measure | reference, all | default, all | reference, not seen | default, not seen | frames all / not seen |\n";
   o << "|---|---:|---:|---:|---:|---:|\n";
   auto line = [&](const std::string& name, const ErrorAccumulator& ra, const ErrorAccumulator& da,

@@ -30,14 +30,21 @@ struct ErrorAccumulator {
 struct MethodErrors {
   std::array<ErrorAccumulator, kNumFingers> finger_all{}, finger_unseen{};
   std::array<ErrorAccumulator, kNumAngles> angle_all{}, angle_unseen{};
+  // Coverage: (finger, frame) pairs with a truth value, and those where this method gave one.
+  long truth_values = 0, method_values = 0;
   void merge(const MethodErrors& o);
   // Pooled over fingers / angles.
   ErrorAccumulator finger_pooled(bool unseen) const;
   ErrorAccumulator angle_pooled(bool unseen) const;
 };
 
-// Errors of one processed trial (needs Vicon/truth). Frames where LMC or truth is NaN are skipped.
-MethodErrors trial_errors(const TrialResult& r);
+// Errors of one processed trial (needs Vicon/truth). Frames where LMC or truth is NaN are skipped;
+// with `other` (the same trial by the other method) also frames where the other method is NaN, so
+// both methods are scored on the same frames. (The reference filter can turn NaN for good: when
+// two devices' rolling variances are 0 — a clipped, constant coordinate — its update divides 0
+// by 0, as the study's did; the default method leaves NaN where no device saw the hand for longer
+// than the gap limit.)
+MethodErrors trial_errors(const TrialResult& r, const TrialResult* other = nullptr);
 
 // A Markdown table: rows = measure (finger lengths pooled and per finger, angles pooled and per
 // joint), columns = reference / default RMSE overall and on not-seen frames, with frame counts.

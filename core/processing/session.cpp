@@ -178,11 +178,11 @@ TrialOutcome process_job(const TrialJob& job, const SessionOptions& options, con
     out.summary = trial_summary_json(r);
     if (!options.out_dir.empty()) write_trial_outputs(r, options.out_dir);
     if (options.compare_methods && vicon != nullptr) {
-      MethodErrors mine = trial_errors(r);
       ProcessOptions other = popt;
       other.method = options.process.method == FusionMethod::kReference ? FusionMethod::kDefault : FusionMethod::kReference;
       const TrialResult r2 = process_trial(job.trial, rec, layout, vicon, other);
-      MethodErrors theirs = trial_errors(r2);
+      MethodErrors mine = trial_errors(r, &r2);
+      MethodErrors theirs = trial_errors(r2, &r);
       if (options.process.method == FusionMethod::kReference) {
         out.reference_errors = mine;
         out.default_errors = theirs;
