@@ -1,7 +1,7 @@
 #include "core/processing/trial_tag.h"
 
 #include <filesystem>
-#include <regex>
+#include <cctype>
 
 namespace lmc {
 
@@ -26,22 +26,42 @@ std::string trial_name_of(const std::string& file_name) {
   return s;
 }
 
+namespace {
+
+std::string lower(std::string s) {
+  for (char& c : s) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return s;
+}
+
+}  // namespace
+
+// Hand-written rather than std::regex: libstdc++'s regex trips -Wmaybe-uninitialized under the
+// sanitizer build, and the scheme is simple.
 TrialTag parse_trial_tag(const std::string& file_or_name) {
   TrialTag tag;
   tag.trial = trial_name_of(file_or_name);
-  static const std::regex scheme(R"(^(Naiv|Opti)_(Static|Index|Thumb|Wrist|Trial)([12])([0-9]{2})$)", std::regex::icase);
-  std::smatch m;
-  if (!std::regex_match(tag.trial, m, scheme)) {
-    static const std::regex layout_only(R"(^(Naiv|Opti)_.*)", std::regex::icase);
-    if (std::regex_match(tag.trial, m, layout_only)) tag.layout = (m[1].str()[0] == 'N' || m[1].str()[0] == 'n') ? "initial" : "optimized";
+  const auto us = tag.trial.find('_');
+  if (us == std::string::npos) return tag;
+  const std::string layout = lower(tag.trial.substr(0, us));
+  if (layout == "naiv") {
+    tag.layout = "initial";
+  } else if (layout == "opti") {
+    tag.layout = "optimized";
+  } else {
     return tag;
   }
-  tag.layout = (m[1].str()[0] == 'N' || m[1].str()[0] == 'n') ? "initial" : "optimized";
-  std::string motion = m[2].str();
-  for (char& c : motion) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  const std::string rest = tag.trial.substr(us + 1);
+  if (rest.size() < 4) return tag;
+  const std::string digits = rest.substr(rest.size() - 3);
+  const std::string motion = lower(rest.substr(0, rest.size() - 3));
+  for (char c : digits) {
+    if (!std::isdigit(static_cast<unsigned char>(c))) return tag;
+  }
+  if (digits[0] != '1' && digits[0] != '2') return tag;
+  if (motion != "static" && motion != "index" && motion != "thumb" && motion != "wrist" && motion != "trial") return tag;
   tag.motion = motion == "trial" ? "dynamic" : motion;
-  tag.pose = m[3].str() == "1" ? "horizontal" : "vertical";
-  tag.repetition = std::stoi(m[4].str());
+  tag.pose = digits[0] == '1' ? "horizontal" : "vertical";
+  tag.repetition = std::stoi(digits.substr(1));
   tag.parsed = true;
   return tag;
 }
