@@ -63,23 +63,29 @@ constexpr OtherMasks kOtherMasks = make_other_masks();
   return bits;
 }
 
-FingerBits visible_fingers_baseline(const PreparedFrame& fr, const DeviceView& d, const VisibilityLimits& lim) {
-  return visible_fingers_body(fr, d, lim);
-}
-
 #if defined(__x86_64__) && defined(__GNUC__)
 [[gnu::target("avx2")]] FingerBits visible_fingers_avx2(const PreparedFrame& fr, const DeviceView& d,
                                                        const VisibilityLimits& lim) {
   return visible_fingers_body(fr, d, lim);
 }
-const bool kHasAvx2 = __builtin_cpu_supports("avx2");
+bool has_avx2() {
+  static const bool yes = [] {
+    __builtin_cpu_init();  // needed when first used from a static initialiser
+    return __builtin_cpu_supports("avx2") != 0;
+  }();
+  return yes;
+}
 #endif
 
 }  // namespace
 
+FingerBits visible_fingers_baseline(const PreparedFrame& fr, const DeviceView& d, const VisibilityLimits& lim) {
+  return visible_fingers_body(fr, d, lim);
+}
+
 FingerBits visible_fingers(const PreparedFrame& fr, const DeviceView& d, const VisibilityLimits& lim) {
 #if defined(__x86_64__) && defined(__GNUC__)
-  if (kHasAvx2) return visible_fingers_avx2(fr, d, lim);
+  if (has_avx2()) return visible_fingers_avx2(fr, d, lim);
 #endif
   return visible_fingers_baseline(fr, d, lim);
 }

@@ -16,8 +16,11 @@ namespace lmc {
 using FingerBits = std::uint8_t;
 inline constexpr FingerBits kAllFingersVisible = 0x1F;
 
-// One (device, frame).
+// One (device, frame). On x86-64 CPUs with AVX2 this runs an AVX2 build of the same code (no
+// fused multiply-add, so the results are bit-identical to the baseline build).
 FingerBits visible_fingers(const PreparedFrame& frame, const DeviceView& device, const VisibilityLimits& limits);
+// The baseline (SSE2) build of the same kernel, for tests that check the two builds agree.
+FingerBits visible_fingers_baseline(const PreparedFrame& frame, const DeviceView& device, const VisibilityLimits& limits);
 
 // One device over many frames (the workbench caches these per-device columns).
 void device_visibility(const DeviceView& device, std::span<const PreparedFrame> frames,

@@ -9,6 +9,7 @@
 #include "core/hand/pose_set_generator.h"
 #include "core/io/layout_json.h"
 #include "core/metric/coverage.h"
+#include "core/optimise/pso.h"
 #include "core/optimise/search_space.h"
 #include "core/optimise/swarm_evaluator.h"
 #include "core/visibility/frame_prep.h"
@@ -104,5 +105,25 @@ void BM_EngineCoverageFromBits(benchmark::State& state) {
   state.SetItemsProcessed(state.iterations() * static_cast<int64_t>(fr.size()));
 }
 BENCHMARK(BM_EngineCoverageFromBits);
+
+}  // namespace
+
+namespace {
+
+// The search workload: 30 particles × 100 iterations, 4 devices, the authors' box, on the
+// default 10,000-frame Monte Carlo set, all threads. One iteration (it takes seconds).
+void BM_EngineSearch30x100(benchmark::State& state) {
+  const auto& fr = frames();
+  lmc::PsoSettings s;
+  s.particles = 30;
+  s.iterations = 100;
+  for (auto _ : state) {
+    const lmc::PsoResult r = lmc::run_pso(lmc::default_start_layout(4), lmc::SearchSpace{}, fr, s);
+    benchmark::DoNotOptimize(r.best_cost);
+    state.counters["best_cost"] = r.best_cost;
+    state.counters["evals_per_s"] = static_cast<double>(r.device_frame_evaluations) / r.seconds;
+  }
+}
+BENCHMARK(BM_EngineSearch30x100)->Iterations(1)->Unit(benchmark::kSecond)->UseRealTime();
 
 }  // namespace

@@ -247,6 +247,7 @@ TEST(Visibility, KernelAndExplainAgreeOnRandomPosesAndDevices) {
     for (const auto& fr : frames) {
       const auto ex = explain_visibility(fr, d, lim);
       ASSERT_EQ(ex.bits, visible_fingers(fr, d, lim));
+      ASSERT_EQ(ex.bits, visible_fingers_baseline(fr, d, lim));
       for (int k = 0; k < kNumDigits; ++k) {
         const auto& v = ex.fingers[static_cast<size_t>(k)];
         ++counts[static_cast<int>(v.reason)];
