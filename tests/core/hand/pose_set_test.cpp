@@ -38,7 +38,9 @@ TEST(PoseSetGenerator, CoversEveryLabelWithJitteredHandsAround150mm) {
     ++counts[static_cast<int>(l.orientation)][static_cast<int>(l.motion)];
     EXPECT_GE(l.progress, 0.0);
     EXPECT_LE(l.progress, 1.0);
-    if (l.motion == HandMotion::kOpen) EXPECT_EQ(l.progress, 0.0);
+    if (l.motion == HandMotion::kOpen) {
+      EXPECT_EQ(l.progress, 0.0);
+    }
     EXPECT_TRUE(set.frames[i].hand_present);
     if (l.motion == HandMotion::kOpen || l.motion == HandMotion::kIndexFlexion || l.motion == HandMotion::kThumbFlexion) {
       mean_y += set.frames[i].point(kPalm).y();

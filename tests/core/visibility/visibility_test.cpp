@@ -252,7 +252,9 @@ TEST(Visibility, KernelAndExplainAgreeOnRandomPosesAndDevices) {
         const auto& v = ex.fingers[static_cast<size_t>(k)];
         ++counts[static_cast<int>(v.reason)];
         EXPECT_EQ(v.visible(), ((ex.bits >> k) & 1) != 0);
-        if (v.reason == HiddenReason::kBehindFinger) EXPECT_NE(v.occluding_finger, k);
+        if (v.reason == HiddenReason::kBehindFinger) {
+          EXPECT_NE(v.occluding_finger, k);
+        }
       }
     }
   }
