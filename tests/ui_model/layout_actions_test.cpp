@@ -94,6 +94,16 @@ TEST(LayoutActions, LocksAreDocumentStateAndUndoable) {
   EXPECT_FALSE(doc.head().locks[0].locked[0]);
 }
 
+TEST(LayoutActions, MakingADeviceStayPutIsOneStep) {
+  auto doc = paper_square();
+  ASSERT_TRUE(set_device_movable(doc, 1, false));
+  EXPECT_EQ(doc.undo_size(), 1u);
+  EXPECT_EQ(doc.undo_message(), "LMC2 stays put");
+  for (bool l : doc.head().locks[1].locked) EXPECT_TRUE(l);
+  ASSERT_TRUE(set_device_movable(doc, 1, true));
+  EXPECT_EQ(doc.head().locks[1], DeviceLocks{});
+}
+
 TEST(LayoutActions, ApplyLayoutMatchesBySlotAndIsOneUndoStep) {
   auto doc = paper_square();
   const LayoutDocument before = doc.head();

@@ -143,6 +143,16 @@ ActionResult set_device_lock(UndoableLayoutDocument& doc, int index, int k, bool
   return ActionResult::success();
 }
 
+ActionResult set_device_movable(UndoableLayoutDocument& doc, int index, bool movable) {
+  doc.rollback();
+  if (!valid_index(doc, index)) return bad_index(index);
+  doc.upd_scratch().sync_locks();
+  DeviceLocks& l = doc.upd_scratch().locks[static_cast<size_t>(index)];
+  for (int k = 0; k < kNumPoseParams; ++k) l.locked[static_cast<size_t>(k)] = movable ? (k == 1 || k == 5) : true;
+  doc.commit(slot_of(doc, index) + (movable ? " may move" : " stays put"));
+  return ActionResult::success();
+}
+
 ActionResult set_search_range(UndoableLayoutDocument& doc, int k, double lo, double hi) {
   doc.rollback();
   if (k < 0 || k >= kNumPoseParams) return ActionResult::fail("no pose parameter #" + std::to_string(k));

@@ -49,6 +49,9 @@ void cancel_preview(UndoableLayoutDocument& doc);
 
 // ---- locks, bounds, pose set, sensor -----------------------------------------------------------
 ActionResult set_device_lock(UndoableLayoutDocument& doc, int index, int k, bool locked);
+// All six locks of one device in one step: `movable` frees the study's {x, z, rx, ry} (y and rz
+// stay locked), otherwise everything is locked ("LMC2 may move" / "LMC2 stays put").
+ActionResult set_device_movable(UndoableLayoutDocument& doc, int index, bool movable);
 ActionResult set_search_range(UndoableLayoutDocument& doc, int k, double lo, double hi);
 ActionResult set_pose_set_choice(UndoableLayoutDocument& doc, const PoseSetChoice& choice);
 ActionResult set_sensor_model(UndoableLayoutDocument& doc, const SensorModel& sensor);

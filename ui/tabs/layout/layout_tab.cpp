@@ -130,6 +130,17 @@ int LayoutTab::prepare_for_capture() {
   state_->display.show_pyramids = true;
   state_->display.show_rays = true;
   scene_->frame_all();
+  if (const char* panel = std::getenv("LMC_LAYOUT_PANEL")) {
+    capture_panel_ = panel;
+    capture_panel_frames_ = 2;
+  }
+  if (const char* env = std::getenv("LMC_LAYOUT_OPTIMISE"); env != nullptr && std::atoi(env) > 0) {
+    state_->pso.iterations = std::atoi(env);
+    state_->update(0.0);
+    state_->poses.wait();
+    state_->update(0.0);
+    state_->start_optimiser();
+  }
   if (const char* env = std::getenv("LMC_LAYOUT_FRAME_STATS"); env != nullptr && std::atoi(env) > 0) {
     stats_frames_wanted_ = std::atoi(env);
     stats_start_pose_ = state_->layout().devices[1].pose;
@@ -326,19 +337,24 @@ void LayoutTab::draw() {
     const float coverage_h = std::min(300.0f, avail.y * 0.45f);
     ImGui::BeginChild("##right_tabs", ImVec2(0, avail.y - coverage_h - 4), true);
     if (ImGui::BeginTabBar("##layout_panels")) {
-      if (ImGui::BeginTabItem("Inspector")) {
+      const auto flags_for = [this](const char* id) {
+        if (capture_panel_frames_ > 0 && capture_panel_ == id) return ImGuiTabItemFlags_SetSelected;
+        return ImGuiTabItemFlags_None;
+      };
+      if (ImGui::BeginTabItem("Inspector", nullptr, flags_for("inspector"))) {
         inspector_->draw();
         ImGui::EndTabItem();
       }
-      if (ImGui::BeginTabItem("Heatmap")) {
+      if (ImGui::BeginTabItem("Heatmap", nullptr, flags_for("heatmap"))) {
         heatmap_->draw();
         ImGui::EndTabItem();
       }
-      if (ImGui::BeginTabItem("Optimiser")) {
+      if (ImGui::BeginTabItem("Optimiser", nullptr, flags_for("optimiser"))) {
         optimiser_->draw();
         ImGui::EndTabItem();
       }
       ImGui::EndTabBar();
+      if (capture_panel_frames_ > 0) --capture_panel_frames_;
     }
     ImGui::EndChild();
     ImGui::BeginChild("##coverage", ImVec2(0, 0), true);

@@ -69,6 +69,12 @@ class LayoutTab final : public Tab {
   double update_ms_ = 0;
   const void* last_snapshot_ = nullptr;
 
+  // Screenshot options (read in prepare_for_capture): LMC_LAYOUT_PANEL=inspector|heatmap|optimiser
+  // picks the right-hand panel; LMC_LAYOUT_OPTIMISE=N runs an N-iteration search first so the
+  // ghost controllers and the comparison table are in the picture.
+  std::string capture_panel_;
+  int capture_panel_frames_ = 0;
+
   StatusSink& status_;
   std::shared_ptr<LayoutTabState> state_;
   std::unique_ptr<SceneRenderer> renderer_;

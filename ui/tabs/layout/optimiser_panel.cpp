@@ -107,11 +107,7 @@ void OptimiserPanel::draw_settings() {
     ImGui::PushID(d);
     if (d > 0) ImGui::SameLine();
     if (ImGui::Checkbox(doc.layout.devices[static_cast<size_t>(d)].slot.c_str(), &moves)) {
-      // Moving again frees the study's four parameters; holding still locks all six.
-      for (int k = 0; k < kNumPoseParams; ++k) {
-        const bool lock = moves ? (k == 1 || k == 5) : true;
-        set_device_lock(s.upd_history(), d, k, lock);
-      }
+      s.report(set_device_movable(s.upd_history(), d, moves), "Movable");
     }
     ImGui::PopID();
   }
