@@ -27,8 +27,12 @@ void CoveragePanel::draw() {
     if (!s.poses.error().empty()) ImGui::TextColored(ImVec4(1, 0.45f, 0.4f, 1), "%s", s.poses.error().c_str());
     return;
   }
-  ImGui::TextDisabled("on %d frames (%s)%s", poses->size(), poses->set.description.c_str(),
-                      s.coverage.up_to_date() ? "" : "  · updating...");
+  ImGui::TextDisabled("on %d pose-set frames", poses->size());
+  if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", poses->set.description.c_str());
+  if (!s.coverage.up_to_date()) {
+    ImGui::SameLine();
+    ImGui::TextColored(ImVec4(0.95f, 0.8f, 0.35f, 1.0f), "updating");
+  }
   if (!s.coverage.error().empty()) ImGui::TextColored(ImVec4(1, 0.45f, 0.4f, 1), "%s", s.coverage.error().c_str());
   if (!snap || snap->all.devices == 0) return;
   const Coverage& c = snap->all;

@@ -60,6 +60,9 @@ LayoutTab::~LayoutTab() {
 void LayoutTab::scripted_drag_step() {
   LayoutTabState& s = *state_;
   if (stats_frame_ >= stats_frames_wanted_ || s.selected < 0 || !s.poses.current()) return;
+  // Start once the heatmap and coverage have settled, so the figure is "dragging with live
+  // coverage", not "dragging while the first heatmap sweep is still running".
+  if (stats_frame_ == 0 && s.busy()) return;
   // A slow circle of 80 mm around the start position, as a hand on the mouse would do.
   const double t = stats_frame_ * 0.05;
   DevicePose p = stats_start_pose_;
@@ -130,6 +133,12 @@ int LayoutTab::prepare_for_capture() {
   state_->display.show_pyramids = true;
   state_->display.show_rays = true;
   scene_->frame_all();
+  if (const char* view = std::getenv("LMC_LAYOUT_PLAIN"); view != nullptr && view[0] == '1') {
+    // Controllers, hand and coverage only: for comparing frame times without the heavy overlays.
+    state_->display.show_pyramids = false;
+    state_->display.show_heatmap = false;
+    state_->display.show_rays = false;
+  }
   if (const char* panel = std::getenv("LMC_LAYOUT_PANEL")) {
     capture_panel_ = panel;
     capture_panel_frames_ = 2;
@@ -151,6 +160,7 @@ int LayoutTab::prepare_for_capture() {
 bool LayoutTab::busy_for_capture() const {
   return state_->busy() || (stats_frames_wanted_ > 0 && stats_frame_ < stats_frames_wanted_);
 }
+// care: the capture loop gives a tab at most 20 s; use a few hundred frames for the statistics.
 
 void LayoutTab::request(Pending action, std::string preset) {
   pending_preset_ = std::move(preset);
