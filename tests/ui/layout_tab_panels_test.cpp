@@ -8,6 +8,8 @@
 #include "tests/ui/headless_imgui.h"
 #include "ui/model/layout_actions.h"
 #include "ui/tabs/layout/layout_tab.h"
+#include "ui/tabs/layout/coverage_panel.h"
+#include "ui/tabs/layout/inspector_panel.h"
 #include "ui/tabs/layout/optimiser_panel.h"
 #include "ui/tabs/layout/scene_panel.h"
 
@@ -240,6 +242,64 @@ TEST_F(OptimiserFixture, LockedParametersStayPutInTheCandidate) {
   wait_until_idle();
   ASSERT_TRUE(state->optimiser.outcome()) << state->optimiser.error();
   EXPECT_EQ(state->optimiser.outcome()->pso.best_layout.devices[0].pose, state->history().head().layout.devices[0].pose);
+}
+
+// ---- inspector and coverage panels on their own ---------------------------------------------------
+
+struct InspectorFixture : ::testing::Test {
+  HeadlessImGui gui{700, 900};
+  std::shared_ptr<LayoutTabState> state = std::make_shared<LayoutTabState>(make_document(default_new_layout()));
+  InspectorPanel inspector{state};
+  std::function<void()> body() {
+    return [this] { inspector.draw(); };
+  }
+  void click(const std::string& anchor) {
+    gui.frame(body());
+    const auto c = inspector.anchors().centre(anchor);
+    ASSERT_TRUE(c.has_value()) << anchor << " is not on screen";
+    gui.click(c->x, c->y, body());
+  }
+};
+
+TEST_F(InspectorFixture, AddSelectsTheNewControllerAndRemoveTakesItAwayEachOneUndoStep) {
+  state->select(0);
+  click("add");
+  EXPECT_EQ(state->doc().device_count(), 5);
+  EXPECT_EQ(state->selected, 4);
+  EXPECT_EQ(state->history().undo_message(), "Add LMC5");
+  click("remove");
+  EXPECT_EQ(state->doc().device_count(), 4);
+  EXPECT_EQ(state->history().undo_size(), 2u);
+  EXPECT_EQ(state->selected, 3) << "the selection is pruned to an existing controller";
+}
+
+TEST_F(InspectorFixture, TheLockCheckboxLocksThatParameterOnly) {
+  state->select(1);
+  click("lock.0");
+  EXPECT_TRUE(state->history().head().locks[1].locked[0]);
+  EXPECT_FALSE(state->history().head().locks[0].locked[0]);
+  EXPECT_EQ(state->history().undo_message(), "Lock LMC2 x");
+}
+
+TEST(CoveragePanel, DrawsTheTableOnceCoverageIsIn) {
+  HeadlessImGui gui{700, 500};
+  auto state = std::make_shared<LayoutTabState>(make_document(default_new_layout()));
+  PoseSetChoice c;
+  c.frames = 30;
+  ASSERT_TRUE(set_pose_set_choice(state->upd_history(), c));
+  state->display.show_heatmap = false;
+  CoveragePanel panel{state};
+  state->update(0.0);
+  state->poses.wait();
+  state->update(0.0);
+  state->coverage.wait();
+  gui.frames(2, [&] {
+    state->update(1.0 / 60.0);
+    panel.draw();
+  });
+  ASSERT_TRUE(state->coverage.latest());
+  EXPECT_EQ(state->coverage.latest()->all.frames, 30);
+  EXPECT_EQ(state->coverage.latest()->all.devices, 4);
 }
 
 }  // namespace

@@ -33,6 +33,7 @@ void PoseSetStore::request(const PoseSetChoice& choice) {
   has_request_ = true;
   error_.clear();
   const std::uint64_t version = next_version_++;
+  job_.abandon_into(graveyard_);
   job_.start([choice, version](std::stop_token, JobChannel<int>& ch) {
     ch.set_stage(choice.source == PoseSetChoice::Source::kFile ? "Reading pose set" : "Generating pose set");
     return load_pose_set_for(choice, version);
@@ -40,6 +41,7 @@ void PoseSetStore::request(const PoseSetChoice& choice) {
 }
 
 void PoseSetStore::poll() {
+  graveyard_.reap();
   const JobState s = job_.state();
   if (s == JobState::kCompleted) {
     if (auto r = job_.result(); r && *r && (!current_ || (*r)->version != current_->version)) current_ = *r;

@@ -49,6 +49,7 @@ class PoseSetStore {
   bool has_request_ = false;
   std::uint64_t next_version_ = 1;
   std::string error_;
+  JobGraveyard graveyard_;  // a superseded load finishes here without blocking the frame
   BackgroundJob<PoseSetPtr, int> job_;
 };
 

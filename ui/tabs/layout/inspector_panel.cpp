@@ -7,6 +7,7 @@
 namespace lmc::ui {
 
 void InspectorPanel::draw() {
+  anchors_.clear();
   LayoutTabState& s = *state_;
   const Layout& l = s.layout();
   ImGui::TextDisabled("Controllers (%d of 1-%d)", l.device_count(), kMaxDevices);
@@ -23,10 +24,12 @@ void InspectorPanel::draw() {
   if (ImGui::Button("Add controller")) {
     if (s.report(add_device(s.upd_history()), "Add controller")) s.select(s.doc().device_count() - 1);
   }
+  anchors_.remember("add");
   ImGui::EndDisabled();
   ImGui::SameLine();
   ImGui::BeginDisabled(s.selected < 0 || l.device_count() <= 1);
   if (ImGui::Button("Remove selected")) s.report(remove_device(s.upd_history(), s.selected), "Remove controller");
+  anchors_.remember("remove");
   ImGui::EndDisabled();
 
   ImGui::Separator();
@@ -70,6 +73,7 @@ void InspectorPanel::draw_device(int index) {
     ImGui::PushID(k);
     bool locked = s.doc().locks[static_cast<size_t>(index)].locked[static_cast<size_t>(k)];
     if (ImGui::Checkbox("##lock", &locked)) s.report(set_device_lock(s.upd_history(), index, k, locked), "Lock");
+    anchors_.remember("lock." + std::to_string(k));
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("Lock %s: the optimiser and the scene handles leave it alone", pose_param_name(k));
     ImGui::SameLine();
     double v = d.pose.get(k);

@@ -7,6 +7,7 @@
 #include <string>
 
 #include "ui/model/layout_tab_state.h"
+#include "ui/widgets/widget_anchors.h"
 
 namespace lmc::ui {
 
@@ -14,12 +15,15 @@ class InspectorPanel {
  public:
   explicit InspectorPanel(std::shared_ptr<LayoutTabState> state) : state_(std::move(state)) {}
   void draw();
+  // "add", "remove", "lock.<k>" as last drawn (for headless tests).
+  const WidgetAnchors& anchors() const { return anchors_; }
 
  private:
   void draw_device(int index);
   void draw_sensor();
 
   std::shared_ptr<LayoutTabState> state_;
+  WidgetAnchors anchors_;
   char slot_buf_[64] = {};
   char serial_buf_[64] = {};
   int buffers_for_ = -2;
