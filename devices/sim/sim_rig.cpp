@@ -1,5 +1,6 @@
 #include "devices/sim/sim_rig.h"
 
+#include <Eigen/Geometry>
 #include <algorithm>
 #include <cmath>
 #include <map>

@@ -1,5 +1,6 @@
 #include "devices/sim/truth_markers.h"
 
+#include <Eigen/Geometry>
 #include <cmath>
 
 #include "core/common/error.h"
