@@ -194,6 +194,11 @@ Eigen::Vector3d HandModel::rest_palm_position() const {
   return g.palm_fraction * mean_mcp;
 }
 
+Eigen::Vector3d HandModel::palm_position(const HandJointAngles& a) const {
+  const Eigen::Matrix3d qw = rot_y(a.wrist_deviation_deg) * rot_x(-a.wrist_flexion_deg);
+  return qw * rest_palm_position();
+}
+
 HandFrame HandModel::pose(const HandJointAngles& a, const HandPlacement& placement) const {
   const HandGeometry& g = geometry_;
   HandFrame f;

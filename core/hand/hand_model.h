@@ -114,6 +114,9 @@ class HandModel {
   // The palm position (point 0) for straight joints in the canonical frame: where reference
   // placements put the palm centre.
   Eigen::Vector3d rest_palm_position() const;
+  // The palm position for these angles in the canonical frame (wrist at the origin): where a
+  // placement must put it so the palm centre lands on a target while the wrist bends.
+  Eigen::Vector3d palm_position(const HandJointAngles& angles) const;
 
  private:
   HandGeometry geometry_;

@@ -39,7 +39,6 @@ PoseSet generate_pose_set(const HandModel& model, const PoseSetSettings& s) {
   set.labels.reserve(static_cast<size_t>(s.frames));
   Rng rng(s.seed);
   const double deg = std::numbers::pi / 180.0;
-  const Eigen::Vector3d rest_palm = model.rest_palm_position();
   for (int i = 0; i < s.frames; ++i) {
     PoseLabel label;
     label.orientation = static_cast<HandOrientation>(rng.below(kNumHandOrientations));
@@ -63,7 +62,8 @@ PoseSet generate_pose_set(const HandModel& model, const PoseSetSettings& s) {
     pl.rotation = jitter * pl.rotation;
     const Eigen::Vector3d shift(rng.normal(), rng.normal(), rng.normal());
     const Eigen::Vector3d palm_target = Eigen::Vector3d(0.0, s.palm_height_mm, 0.0) + s.position_jitter_mm * shift;
-    pl.wrist_mm = palm_target - pl.rotation * rest_palm;
+    // The palm centre lands on the (jittered) target even when the wrist bends (reference_poses.h).
+    pl.wrist_mm = palm_target - pl.rotation * model.palm_position(angles);
     set.frames.push_back(model.pose(angles, pl));
     set.frames.back().frame_id = i;
     set.labels.push_back(label);

@@ -2,7 +2,8 @@
 // Monte Carlo pose sets (the paper's "Monte Carlo simulation of hand trajectories expected in
 // trials"): each sample picks an orientation and a trial motion uniformly, a progress along the
 // motion (uniform in [0, 1]), then adds per-joint noise and jitters the hand's position and
-// orientation. Deterministic for a seed (std::mt19937_64 and our own normal/uniform draws, so
+// orientation. The palm centre is placed palm_height_mm above the table centre (plus jitter) in
+// every pose, the wrist bending around it as in reference_poses.h. Deterministic for a seed (std::mt19937_64 and our own normal/uniform draws, so
 // the numbers do not depend on the standard library's distribution implementations).
 #include <cstdint>
 

@@ -68,7 +68,7 @@ HandJointAngles motion_angles(HandMotion motion, double progress) {
   return a;
 }
 
-HandPlacement reference_placement(const HandModel& model, HandOrientation orientation) {
+HandPlacement reference_placement(const HandModel& model, HandOrientation orientation, const HandJointAngles& angles) {
   HandPlacement pl;
   if (orientation == HandOrientation::kVertical) {
     // Roll −90° about the forearm axis (world z): palm normal −y → −x (the subject's left, who
@@ -76,13 +76,13 @@ HandPlacement reference_placement(const HandModel& model, HandOrientation orient
     pl.rotation = Eigen::AngleAxisd(-std::numbers::pi / 2.0, Eigen::Vector3d::UnitZ()).toRotationMatrix();
   }
   const Eigen::Vector3d palm_target(0.0, kReferencePalmHeight_mm, 0.0);
-  pl.wrist_mm = palm_target - pl.rotation * model.rest_palm_position();
+  pl.wrist_mm = palm_target - pl.rotation * model.palm_position(angles);
   return pl;
 }
 
 HandFrame reference_pose(const HandModel& model, HandOrientation orientation, HandMotion motion) {
-  return model.pose(motion_angles(motion, motion == HandMotion::kOpen ? 0.0 : 1.0),
-                    reference_placement(model, orientation));
+  const HandJointAngles angles = motion_angles(motion, motion == HandMotion::kOpen ? 0.0 : 1.0);
+  return model.pose(angles, reference_placement(model, orientation, angles));
 }
 
 }  // namespace lmc

@@ -43,12 +43,15 @@ struct MotionRanges {
 };
 const MotionRanges& motion_ranges();
 
-// The placement of the canonical hand frame for an orientation: the palm centre lands
-// kReferencePalmHeight_mm above the world origin; vertical = horizontal rolled −90° about the
-// forearm axis (palm to the subject's left, thumb up).
-HandPlacement reference_placement(const HandModel& model, HandOrientation orientation);
+// The placement of the canonical hand frame for an orientation and joint angles: the palm
+// centre (controller palm position) lands kReferencePalmHeight_mm above the world origin —
+// also while the wrist bends, so a flexed hand stays above the table as in the trials (the forearm
+// moves instead); vertical = horizontal rolled −90° about the forearm axis (palm to the subject's
+// left, thumb up).
+HandPlacement reference_placement(const HandModel& model, HandOrientation orientation,
+                                  const HandJointAngles& angles = {});
 
-// One of the ten reference poses, as a 30-point world frame.
+// One of the ten reference poses (full range for the motions), as a 30-point world frame.
 HandFrame reference_pose(const HandModel& model, HandOrientation orientation, HandMotion motion);
 
 }  // namespace lmc

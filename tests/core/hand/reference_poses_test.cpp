@@ -14,11 +14,17 @@ namespace {
 
 TEST(ReferencePoses, PalmSits150mmAboveTheTableCentre) {
   const HandModel model;
-  for (int o = 0; o < kNumHandOrientations; ++o) {
-    const HandFrame f = reference_pose(model, static_cast<HandOrientation>(o), HandMotion::kOpen);
+  for (int i = 0; i < kNumReferencePoses; ++i) {
+    const HandFrame f = reference_pose(model, static_cast<HandOrientation>(i / kNumHandMotions),
+                                       static_cast<HandMotion>(i % kNumHandMotions));
     EXPECT_NEAR(f.point(kPalm).x(), 0.0, 1e-9);
     EXPECT_NEAR(f.point(kPalm).y(), 150.0, 1e-9);
     EXPECT_NEAR(f.point(kPalm).z(), 0.0, 1e-9);
+    // Even the fully flexed wrist keeps every marker above the table.
+    for (int k = 0; k < kNumHandPoints; ++k) {
+      if (k == kPalmNormal || k == kPalmDirection) continue;  // unit vectors
+      EXPECT_GT(f.point(k).y(), 10.0) << hand_point_name(k) << " pose " << i;
+    }
   }
 }
 
