@@ -82,8 +82,12 @@ std::string status_line(const HubSnapshot& snap, const RecorderStatus& rec, doub
   return s.str();
 }
 
-void print_messages(DeviceHub& hub) {
-  for (const auto& m : hub.take_messages()) std::cerr << "lmc record: " << m << "\n";
+// Device messages go to stderr as they happen; --quiet keeps only the ones that need attention.
+void print_messages(DeviceHub& hub, bool quiet) {
+  for (const auto& m : hub.take_messages()) {
+    const bool routine = m.find(" connected (") != std::string::npos || m.find(" assigned to ") != std::string::npos;
+    if (!quiet || !routine) std::cerr << "lmc record: " << m << "\n";
+  }
 }
 
 void run_record(const RecordOptions& opt) {
@@ -201,7 +205,7 @@ void run_record(const RecordOptions& opt) {
   bool stop_from_vicon = false;
   for (;;) {
     std::this_thread::sleep_for(std::chrono::milliseconds(opt.fast ? 20 : 50));
-    print_messages(hub);
+    print_messages(hub, opt.quiet);
     const double now = elapsed();
     if (listen) {
       std::vector<ViconMessage> got;
@@ -266,7 +270,7 @@ void run_record(const RecordOptions& opt) {
   }
   hub.stop();
   hub.set_consumer(nullptr);
-  print_messages(hub);
+  print_messages(hub, opt.quiet);
   std::signal(SIGINT, previous);
   listener.reset();
   if (vicon_started) send_vicon(false);
