@@ -9,41 +9,23 @@
 #include <sstream>
 #include <string>
 
+#include "tests/support/cli_runner.h"
 #include "tests/support/reference_data.h"
 
 namespace {
 
 using ::testing::HasSubstr;
 
-struct RunResult {
-  int exit_code = -1;
-  std::string out;
-  std::string err;
-};
+using lmc::test::CliRun;
+using lmc::test::read_text_file;
+using lmc::test::run_lmc;
 
-std::string slurp(const std::filesystem::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
-std::string quote(const std::string& s) {
-  std::string q = "'";
-  for (const char c : s) q += c == '\'' ? std::string("'\\''") : std::string(1, c);
-  return q + "'";
-}
-
-RunResult run(const std::string& args, const std::string& scratch) {
-  const auto dir = lmc::test::scratch_dir(scratch);
-  const std::string cmd = quote(LMC_CLI_PATH) + " " + args + " >" + quote((dir / "out").string()) + " 2>" +
-                          quote((dir / "err").string());
-  const int status = std::system(cmd.c_str());
-  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, slurp(dir / "out"), slurp(dir / "err")};
+CliRun run(const std::string& args, const std::string& scratch) {
+  return run_lmc(args, lmc::test::scratch_dir(scratch));
 }
 
 TEST(LmcDevices, SimulatorListsFourSerialsInTheirSlots) {
-  const RunResult r = run("devices --backend sim --json", "devices_sim");
+  const CliRun r = run("devices --backend sim --json", "devices_sim");
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const auto j = nlohmann::json::parse(r.out);
   EXPECT_EQ(j.at("backend"), "sim");
@@ -55,7 +37,7 @@ TEST(LmcDevices, SimulatorListsFourSerialsInTheirSlots) {
     EXPECT_EQ(d.at("backend"), "sim");
     EXPECT_THAT(d.at("serial").get<std::string>(), HasSubstr("SIM-LMC" + std::to_string(i + 1)));
   }
-  const RunResult text = run("devices", "devices_sim_text");
+  const CliRun text = run("devices", "devices_sim_text");
   ASSERT_EQ(text.exit_code, 0) << text.err;
   EXPECT_THAT(text.out, HasSubstr("4 devices on backend sim (layout paper-initial)"));
   EXPECT_THAT(text.out, HasSubstr("SERIAL"));
@@ -64,7 +46,7 @@ TEST(LmcDevices, SimulatorListsFourSerialsInTheirSlots) {
 TEST(LmcDevices, ReplayListsTheRecordedDevices) {
   const auto path = lmc::test::reference_file("acquisition/LMC_Naiv_Static101.raw.txt");
   LMC_REQUIRE_REFERENCE_FILE(path);
-  const RunResult r = run("devices --json --backend " + quote("replay:" + path.string()), "devices_replay");
+  const CliRun r = run("devices --json --backend " + lmc::test::shell_quote("replay:" + path.string()), "devices_replay");
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const auto j = nlohmann::json::parse(r.out);
   ASSERT_EQ(j.at("devices").size(), 4u);
@@ -73,10 +55,10 @@ TEST(LmcDevices, ReplayListsTheRecordedDevices) {
 }
 
 TEST(LmcDevices, BadBackendOrMissingSdkIsAClearError) {
-  const RunResult r = run("devices --backend usb", "devices_bad");
+  const CliRun r = run("devices --backend usb", "devices_bad");
   EXPECT_EQ(r.exit_code, 1);
   EXPECT_THAT(r.err, HasSubstr("unknown backend 'usb'"));
-  const RunResult missing = run("devices --backend replay:/nonexistent/LMC_x.raw.txt", "devices_missing");
+  const CliRun missing = run("devices --backend replay:/nonexistent/LMC_x.raw.txt", "devices_missing");
   EXPECT_EQ(missing.exit_code, 1);
   EXPECT_THAT(missing.err, HasSubstr("/nonexistent/LMC_x.raw.txt"));
 }

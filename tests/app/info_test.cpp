@@ -10,30 +10,15 @@
 #include <string>
 #include <sys/wait.h>
 
+#include "tests/support/cli_runner.h"
 #include "tests/support/reference_data.h"
 
 namespace {
 
 using ::testing::HasSubstr;
+using lmc::test::CliRun;
+using lmc::test::read_text_file;
 
-struct RunResult {
-  int exit_code = -1;
-  std::string out;
-  std::string err;
-};
-
-std::string slurp(const std::filesystem::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
-std::string shell_quote(const std::string& s) {
-  std::string q = "'";
-  for (const char c : s) q += c == '\'' ? std::string("'\\''") : std::string(1, c);
-  return q + "'";
-}
 
 // The whitespace-separated words of the output line whose first word is `first` (empty when
 // there is none). std::regex is avoided: GCC 12 warns inside <regex> at -O1 (breaks -Werror).
@@ -49,22 +34,14 @@ std::vector<std::string> row_starting_with(const std::string& text, const std::s
   return {};
 }
 
-RunResult run_lmc(const std::string& args, const std::string& scratch_name) {
-  const auto dir = lmc::test::scratch_dir(scratch_name);
-  const std::string cmd = shell_quote(LMC_CLI_PATH) + " " + args + " >" + shell_quote((dir / "out").string()) +
-                          " 2>" + shell_quote((dir / "err").string());
-  const int status = std::system(cmd.c_str());
-  RunResult r;
-  r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  r.out = slurp(dir / "out");
-  r.err = slurp(dir / "err");
-  return r;
+CliRun run_in(const std::string& args, const std::string& scratch_name) {
+  return lmc::test::run_lmc(args, lmc::test::scratch_dir(scratch_name));
 }
 
 TEST(LmcInfo, RawRecordingText) {
   const auto path = lmc::test::reference_file("acquisition/LMC_Naiv_Static101.raw.txt");
   LMC_REQUIRE_REFERENCE_FILE(path);
-  const RunResult r = run_lmc("info " + shell_quote(path.string()), "info_raw_text");
+  const CliRun r = run_in("info " + lmc::test::shell_quote(path.string()), "info_raw_text");
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_THAT(r.out, HasSubstr("LMC recording (raw)"));
   EXPECT_THAT(r.out, HasSubstr("devices:    4 (1, 2, 3, 4)"));
@@ -82,7 +59,7 @@ TEST(LmcInfo, RawRecordingText) {
 TEST(LmcInfo, RawRecordingJson) {
   const auto path = lmc::test::reference_file("acquisition/LMC_Naiv_Static101.raw.txt");
   LMC_REQUIRE_REFERENCE_FILE(path);
-  const RunResult r = run_lmc("info --json " + shell_quote(path.string()), "info_raw_json");
+  const CliRun r = run_in("info --json " + lmc::test::shell_quote(path.string()), "info_raw_json");
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const auto j = nlohmann::json::parse(r.out);
   EXPECT_EQ(j.at("type"), "recording");
@@ -114,7 +91,7 @@ TEST(LmcInfo, RawRecordingJson) {
 TEST(LmcInfo, TrcJson) {
   const auto path = lmc::test::reference_file("validation/Naiv_Static101.trc");
   LMC_REQUIRE_REFERENCE_FILE(path);
-  const RunResult r = run_lmc("info --json " + shell_quote(path.string()), "info_trc_json");
+  const CliRun r = run_in("info --json " + lmc::test::shell_quote(path.string()), "info_trc_json");
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const auto j = nlohmann::json::parse(r.out);
   EXPECT_EQ(j.at("type"), "trc");
@@ -130,7 +107,7 @@ TEST(LmcInfo, TrcJson) {
 
 TEST(LmcInfo, TrcWithGapsText) {
   const auto path = std::filesystem::path(LMC_SOURCE_DIR) / "tests/fixtures/io/trc_missing_markers.trc";
-  const RunResult r = run_lmc("info " + shell_quote(path.string()), "info_trc_text");
+  const CliRun r = run_in("info " + lmc::test::shell_quote(path.string()), "info_trc_text");
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_THAT(r.out, HasSubstr("markers:    2"));
   EXPECT_THAT(r.out, HasSubstr("frames:     4"));
@@ -140,7 +117,7 @@ TEST(LmcInfo, TrcWithGapsText) {
 
 TEST(LmcInfo, LayoutJson) {
   const auto path = std::filesystem::path(LMC_SOURCE_DIR) / "assets/layouts/paper-initial.json";
-  const RunResult r = run_lmc("info --json " + shell_quote(path.string()), "info_layout_json");
+  const CliRun r = run_in("info --json " + lmc::test::shell_quote(path.string()), "info_layout_json");
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const auto j = nlohmann::json::parse(r.out);
   EXPECT_EQ(j.at("type"), "layout");
@@ -152,7 +129,7 @@ TEST(LmcInfo, LayoutJson) {
 
 TEST(LmcInfo, BadFileExitsOneWithFileNameOnStderr) {
   const auto path = std::filesystem::path(LMC_SOURCE_DIR) / "tests/fixtures/io/raw_point_garbage.txt";
-  const RunResult r = run_lmc("info " + shell_quote(path.string()), "info_bad");
+  const CliRun r = run_in("info " + lmc::test::shell_quote(path.string()), "info_bad");
   EXPECT_EQ(r.exit_code, 1);
   EXPECT_TRUE(r.out.empty()) << r.out;
   EXPECT_THAT(r.err, HasSubstr(path.string() + ":3:94:"));
@@ -166,13 +143,13 @@ TEST(LmcInfo, UnknownAndBinaryFilesExitOne) {
     std::ofstream bin(dir / "blob.dat", std::ios::binary);
     bin.write("\x89PNG\r\n\x1a\n\0\0", 10);
   }
-  RunResult r = run_lmc("info " + shell_quote((dir / "notes.txt").string()), "info_unknown_a");
+  CliRun r = run_in("info " + lmc::test::shell_quote((dir / "notes.txt").string()), "info_unknown_a");
   EXPECT_EQ(r.exit_code, 1);
   EXPECT_THAT(r.err, HasSubstr("notes.txt:1:1: unrecognised file"));
-  r = run_lmc("info " + shell_quote((dir / "blob.dat").string()), "info_unknown_b");
+  r = run_in("info " + lmc::test::shell_quote((dir / "blob.dat").string()), "info_unknown_b");
   EXPECT_EQ(r.exit_code, 1);
   EXPECT_THAT(r.err, HasSubstr("blob.dat:1:1: invalid UTF-8"));
-  r = run_lmc("info " + shell_quote((dir / "missing.txt").string()), "info_unknown_c");
+  r = run_in("info " + lmc::test::shell_quote((dir / "missing.txt").string()), "info_unknown_c");
   EXPECT_EQ(r.exit_code, 1);
   EXPECT_THAT(r.err, HasSubstr("missing.txt"));
 }

@@ -8,40 +8,14 @@
 #include <sstream>
 #include <string>
 
+#include "tests/support/cli_runner.h"
 #include "tests/support/reference_data.h"
 
 namespace {
 
-struct CliRun {
-  int exit_code = -1;
-  std::string out;
-  std::string err;
-};
-
-std::string read_all(const std::filesystem::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
-std::string quoted(const std::string& s) {
-  std::string q = "'";
-  for (const char c : s) q += c == '\'' ? std::string("'\\''") : std::string(1, c);
-  return q + "'";
-}
-
-// Runs the built `lmc` with `args`; stdout/stderr are captured in `dir`.
-CliRun lmc_run(const std::string& args, const std::filesystem::path& dir) {
-  const std::string cmd = quoted(LMC_CLI_PATH) + " " + args + " >" + quoted((dir / "stdout").string()) + " 2>" +
-                          quoted((dir / "stderr").string());
-  const int status = std::system(cmd.c_str());
-  CliRun r;
-  r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  r.out = read_all(dir / "stdout");
-  r.err = read_all(dir / "stderr");
-  return r;
-}
+using lmc::test::CliRun;
+using lmc::test::read_text_file;
+using lmc::test::run_lmc;
 
 }  // namespace
 
@@ -54,7 +28,7 @@ TEST(LmcOptimize, SmallSearchWritesALayoutAndJsonSummary) {
   const auto out1 = dir / "l1.json", out2 = dir / "l2.json";
   const std::string common = "optimize --frames 40 --particles 4 --iterations 2 --devices 3 "
                              "--bounds x=-300:300,z=-300:300,rx=-45:45,ry=-90:90 --json --no-progress ";
-  const CliRun r1 = lmc_run(common + "--threads 1 -o " + quoted(out1.string()), dir);
+  const CliRun r1 = run_lmc(common + "--threads 1 -o " + lmc::test::shell_quote(out1.string()), dir);
   ASSERT_EQ(r1.exit_code, 0) << r1.err;
   const auto j = nlohmann::json::parse(r1.out);
   EXPECT_EQ(j["status"], "completed");
@@ -69,7 +43,7 @@ TEST(LmcOptimize, SmallSearchWritesALayoutAndJsonSummary) {
     EXPECT_LE(std::abs(d.pose.rx_deg), 45);
   }
   // Same seed on two threads: the same layout.
-  const CliRun r2 = lmc_run(common + "--threads 2 -o " + quoted(out2.string()), dir);
+  const CliRun r2 = run_lmc(common + "--threads 2 -o " + lmc::test::shell_quote(out2.string()), dir);
   ASSERT_EQ(r2.exit_code, 0) << r2.err;
   EXPECT_EQ(lmc::load_layout(out2), l1);
 }
@@ -77,8 +51,8 @@ TEST(LmcOptimize, SmallSearchWritesALayoutAndJsonSummary) {
 TEST(LmcOptimize, TextSummaryAndLocks) {
   const auto dir = lmc::test::scratch_dir("cli_optimize_text");
   const auto out = dir / "l.json";
-  const CliRun r = lmc_run("optimize --frames 30 --particles 3 --iterations 1 --start paper-initial --lock LMC2 "
-                        "--lock LMC3:x+z -o " + quoted(out.string()),
+  const CliRun r = run_lmc("optimize --frames 30 --particles 3 --iterations 1 --start paper-initial --lock LMC2 "
+                        "--lock LMC3:x+z -o " + lmc::test::shell_quote(out.string()),
                         dir);
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_NE(r.out.find("M = "), std::string::npos) << r.out;
@@ -94,10 +68,10 @@ TEST(LmcOptimize, TextSummaryAndLocks) {
 
 TEST(LmcOptimize, BadBoundsAreReported) {
   const auto dir = lmc::test::scratch_dir("cli_optimize_bad");
-  const CliRun r = lmc_run("optimize --frames 10 --bounds x=9:1 -o " + quoted((dir / "l.json").string()), dir);
+  const CliRun r = run_lmc("optimize --frames 10 --bounds x=9:1 -o " + lmc::test::shell_quote((dir / "l.json").string()), dir);
   EXPECT_EQ(r.exit_code, 1);
   EXPECT_NE(r.err.find("--bounds"), std::string::npos) << r.err;
-  const CliRun r2 = lmc_run("optimize --frames 10 --start paper-initial --lock LMC9 -o " + quoted((dir / "l.json").string()), dir);
+  const CliRun r2 = run_lmc("optimize --frames 10 --start paper-initial --lock LMC9 -o " + lmc::test::shell_quote((dir / "l.json").string()), dir);
   EXPECT_EQ(r2.exit_code, 1);
   EXPECT_NE(r2.err.find("LMC9"), std::string::npos) << r2.err;
 }

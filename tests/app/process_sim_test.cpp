@@ -9,30 +9,18 @@
 #include <array>
 #include <cstdio>
 #include <fstream>
-#include <regex>
 #include <sstream>
 
+#include "tests/support/cli_runner.h"
 #include "tests/support/reference_data.h"
 
 namespace lmc {
 namespace {
 
-struct RunResult {
-  int code = 0;
-  std::string output;
-};
+using lmc::test::CliRun;
 
-RunResult run(const std::string& args) {
-  const std::string cmd = std::string(LMC_CLI_PATH) + " " + args + " 2>&1";
-  RunResult r;
-  FILE* p = popen(cmd.c_str(), "r");
-  if (p == nullptr) return r;
-  std::array<char, 4096> buf{};
-  while (fgets(buf.data(), static_cast<int>(buf.size()), p) != nullptr) r.output += buf.data();
-  const int status = pclose(p);
-  r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  return r;
-}
+// Both streams together: these tests look for per-trial messages wherever they were printed.
+CliRun run(const std::string& args) { return lmc::test::run_lmc(args); }
 
 // The four RMSE cells of a table row: reference all, default all, reference not seen, default not seen.
 std::array<double, 4> row_values(const std::string& table, const std::string& row_name) {
@@ -61,27 +49,27 @@ TEST(ProcessSim, DefaultMethodBeatsReferenceOnSimulatedTruth) {
     std::string trial, motion;
     s >> trial >> motion;
     const std::string layout = trial.rfind("Naiv", 0) == 0 ? "paper-initial" : "paper-optimized";
-    const RunResult r = run("record --backend sim --fast --quiet --seconds 3 --seed 7 --layout " + layout + " --trial " +
+    const CliRun r = run("record --backend sim --fast --quiet --seconds 3 --seed 7 --layout " + layout + " --trial " +
                             trial + " --motion " + motion + " -o " + session.string());
-    ASSERT_EQ(r.code, 0) << r.output;
+    ASSERT_EQ(r.exit_code, 0) << r.all();
   }
   const auto out = dir / "out";
-  const RunResult p = run("process " + session.string() + " --compare-methods -o " + out.string());
-  ASSERT_EQ(p.code, 0) << p.output;
-  EXPECT_NE(p.output.find("processed 2 of 2 trial(s)"), std::string::npos) << p.output;
-  EXPECT_NE(p.output.find("(recorded layout)"), std::string::npos) << p.output;
-  const auto fingers = row_values(p.output, "finger length, all fingers");
-  const auto angles = row_values(p.output, "joint angle, all joints");
-  EXPECT_LT(fingers[1], fingers[0]) << p.output;
-  EXPECT_LT(fingers[3], fingers[2]) << p.output;
-  EXPECT_LT(angles[1], angles[0]) << p.output;
-  EXPECT_LT(angles[3], angles[2]) << p.output;
+  const CliRun p = run("process " + session.string() + " --compare-methods -o " + out.string());
+  ASSERT_EQ(p.exit_code, 0) << p.all();
+  EXPECT_NE(p.all().find("processed 2 of 2 trial(s)"), std::string::npos) << p.all();
+  EXPECT_NE(p.all().find("(recorded layout)"), std::string::npos) << p.all();
+  const auto fingers = row_values(p.all(), "finger length, all fingers");
+  const auto angles = row_values(p.all(), "joint angle, all joints");
+  EXPECT_LT(fingers[1], fingers[0]) << p.all();
+  EXPECT_LT(fingers[3], fingers[2]) << p.all();
+  EXPECT_LT(angles[1], angles[0]) << p.all();
+  EXPECT_LT(angles[3], angles[2]) << p.all();
   // The default method is close to truth on this simulator (noise ≈1 mm, guesses down-weighted).
-  EXPECT_LT(fingers[1], 5.0) << p.output;
+  EXPECT_LT(fingers[1], 5.0) << p.all();
   EXPECT_TRUE(std::filesystem::exists(out / "method_comparison.md"));
 
-  const RunResult rep = run("report " + out.string() + " -o " + (dir / "report").string());
-  ASSERT_EQ(rep.code, 0) << rep.output;
+  const CliRun rep = run("report " + out.string() + " -o " + (dir / "report").string());
+  ASSERT_EQ(rep.exit_code, 0) << rep.all();
   std::ifstream md(dir / "report" / "report.md");
   std::stringstream text;
   text << md.rdbuf();

@@ -15,27 +15,16 @@
 #include "core/io/lmc_recording.h"
 #include "core/io/trc.h"
 #include "core/io/vicon_mapping.h"
+#include "tests/support/cli_runner.h"
 #include "tests/support/reference_data.h"
 
 namespace lmc {
 namespace {
 
-struct RunResult {
-  int code = 0;
-  std::string output;
-};
+using lmc::test::CliRun;
 
-RunResult run(const std::string& args) {
-  const std::string cmd = std::string(LMC_CLI_PATH) + " " + args + " 2>&1";
-  RunResult r;
-  FILE* p = popen(cmd.c_str(), "r");
-  if (p == nullptr) return r;
-  std::array<char, 4096> buf{};
-  while (fgets(buf.data(), static_cast<int>(buf.size()), p) != nullptr) r.output += buf.data();
-  const int status = pclose(p);
-  r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  return r;
-}
+// Both streams together: these tests look for per-trial messages wherever they were printed.
+CliRun run(const std::string& args) { return lmc::test::run_lmc(args); }
 
 std::string read_text(const std::filesystem::path& p) {
   std::ifstream in(p);
@@ -142,18 +131,18 @@ TEST_F(ProcessCli, SessionWithMalformedTrialsReportsEachAndProcessesTheRest) {
   add_trial("Naiv_Static104", 4, 0.0);       // no Vicon file
   add_trial("Naiv_Static105", 5, 2.0);       // five devices, layout has four
   const auto out = dir_ / "out";
-  const RunResult r = run("process " + session_.string() + " --method reference -o " + out.string());
-  EXPECT_EQ(r.code, 2) << r.output;
-  EXPECT_NE(r.output.find("ok      Naiv_Static101"), std::string::npos) << r.output;
-  EXPECT_NE(r.output.find("FAILED  Naiv_Static102: the Vicon file has 50 frames"), std::string::npos) << r.output;
-  EXPECT_NE(r.output.find("shorter than 1"), std::string::npos) << r.output;
-  EXPECT_NE(r.output.find("FAILED  Naiv_Static103"), std::string::npos) << r.output;
-  EXPECT_NE(r.output.find("'Index3_1' is missing in every frame"), std::string::npos) << r.output;
-  EXPECT_NE(r.output.find("ok      Naiv_Static104"), std::string::npos) << r.output;
-  EXPECT_NE(r.output.find("no Vicon file"), std::string::npos) << r.output;
-  EXPECT_NE(r.output.find("FAILED  Naiv_Static105"), std::string::npos) << r.output;
-  EXPECT_NE(r.output.find("has only 4"), std::string::npos) << r.output;
-  EXPECT_NE(r.output.find("processed 2 of 5 trial(s)"), std::string::npos) << r.output;
+  const CliRun r = run("process " + session_.string() + " --method reference -o " + out.string());
+  EXPECT_EQ(r.exit_code, 2) << r.all();
+  EXPECT_NE(r.all().find("ok      Naiv_Static101"), std::string::npos) << r.all();
+  EXPECT_NE(r.all().find("FAILED  Naiv_Static102: the Vicon file has 50 frames"), std::string::npos) << r.all();
+  EXPECT_NE(r.all().find("shorter than 1"), std::string::npos) << r.all();
+  EXPECT_NE(r.all().find("FAILED  Naiv_Static103"), std::string::npos) << r.all();
+  EXPECT_NE(r.all().find("'Index3_1' is missing in every frame"), std::string::npos) << r.all();
+  EXPECT_NE(r.all().find("ok      Naiv_Static104"), std::string::npos) << r.all();
+  EXPECT_NE(r.all().find("no Vicon file"), std::string::npos) << r.all();
+  EXPECT_NE(r.all().find("FAILED  Naiv_Static105"), std::string::npos) << r.all();
+  EXPECT_NE(r.all().find("has only 4"), std::string::npos) << r.all();
+  EXPECT_NE(r.all().find("processed 2 of 5 trial(s)"), std::string::npos) << r.all();
 
   // Outputs of the good trial.
   for (const char* suffix : {".results.txt", ".measures.tsv", ".fused.txt", ".summary.json"}) {
@@ -173,8 +162,8 @@ TEST_F(ProcessCli, SessionWithMalformedTrialsReportsEachAndProcessesTheRest) {
   EXPECT_FALSE(session["trials"][1]["ok"].get<bool>());
 
   // lmc report over it.
-  const RunResult rep = run("report " + out.string() + " -o " + (dir_ / "report").string());
-  EXPECT_EQ(rep.code, 0) << rep.output;
+  const CliRun rep = run("report " + out.string() + " -o " + (dir_ / "report").string());
+  EXPECT_EQ(rep.exit_code, 0) << rep.all();
   const std::string md = read_text(dir_ / "report" / "report.md");
   EXPECT_NE(md.find("2 trial(s), 1 with Vicon"), std::string::npos) << md;
   const std::string vis = read_text(dir_ / "report" / "visibility.csv");
@@ -184,10 +173,10 @@ TEST_F(ProcessCli, SessionWithMalformedTrialsReportsEachAndProcessesTheRest) {
 TEST_F(ProcessCli, SingleTrialWithExplicitViconAndBadArguments) {
   add_trial("Naiv_Index101", 4, 2.0);
   const auto out = dir_ / "one";
-  const RunResult r = run("process " + (session_ / "LMC_Naiv_Index101.raw.txt").string() + " --vicon " +
+  const CliRun r = run("process " + (session_ / "LMC_Naiv_Index101.raw.txt").string() + " --vicon " +
                           (session_ / "Naiv_Index101.trc").string() + " -o " + out.string());
-  EXPECT_EQ(r.code, 0) << r.output;
-  EXPECT_NE(r.output.find("processed 1 of 1 trial(s) (default method)"), std::string::npos) << r.output;
+  EXPECT_EQ(r.exit_code, 0) << r.all();
+  EXPECT_NE(r.all().find("processed 1 of 1 trial(s) (default method)"), std::string::npos) << r.all();
   const std::string text = read_text(out / "Naiv_Index101.results.txt");
   EXPECT_NE(text.find("Visibility LMC4"), std::string::npos);
   EXPECT_NE(text.find("VICON Data"), std::string::npos);
@@ -205,8 +194,8 @@ TEST_F(ProcessCli, SingleTrialWithExplicitViconAndBadArguments) {
   std::filesystem::create_directories(c3d_dir);
   std::filesystem::copy_file(session_ / "LMC_Naiv_Index101.raw.txt", c3d_dir / "LMC_Naiv_Index101.raw.txt");
   save_c3d(c3d_dir / "Naiv_Index101.c3d", c3d, wo);
-  const RunResult rc = run("process " + c3d_dir.string() + " -o " + (dir_ / "one_c3d").string());
-  EXPECT_EQ(rc.code, 0) << rc.output;
+  const CliRun rc = run("process " + c3d_dir.string() + " -o " + (dir_ / "one_c3d").string());
+  EXPECT_EQ(rc.exit_code, 0) << rc.all();
   const auto a = nlohmann::json::parse(read_text(out / "Naiv_Index101.summary.json"));
   const auto b = nlohmann::json::parse(read_text(dir_ / "one_c3d" / "Naiv_Index101.summary.json"));
   EXPECT_NE(b["vicon_file"].get<std::string>().find(".c3d"), std::string::npos);
@@ -214,15 +203,15 @@ TEST_F(ProcessCli, SingleTrialWithExplicitViconAndBadArguments) {
     EXPECT_NEAR(a["vicon"]["finger_mean_mm"][k].get<double>(), b["vicon"]["finger_mean_mm"][k].get<double>(), 0.01) << k;
   }
 
-  const RunResult missing = run("process " + (dir_ / "nope").string() + " -o " + out.string());
-  EXPECT_EQ(missing.code, 1);
-  EXPECT_NE(missing.output.find("no such file or folder"), std::string::npos) << missing.output;
-  const RunResult bad_method = run("process " + session_.string() + " --method magic -o " + out.string());
-  EXPECT_NE(bad_method.code, 0);
-  const RunResult no_layout = run("process " + (session_ / "LMC_Naiv_Index101.raw.txt").string() +
+  const CliRun missing = run("process " + (dir_ / "nope").string() + " -o " + out.string());
+  EXPECT_EQ(missing.exit_code, 1);
+  EXPECT_NE(missing.all().find("no such file or folder"), std::string::npos) << missing.all();
+  const CliRun bad_method = run("process " + session_.string() + " --method magic -o " + out.string());
+  EXPECT_NE(bad_method.exit_code, 0);
+  const CliRun no_layout = run("process " + (session_ / "LMC_Naiv_Index101.raw.txt").string() +
                                   " --layout does-not-exist -o " + out.string());
-  EXPECT_EQ(no_layout.code, 2) << no_layout.output;
-  EXPECT_NE(no_layout.output.find("FAILED  Naiv_Index101"), std::string::npos) << no_layout.output;
+  EXPECT_EQ(no_layout.exit_code, 2) << no_layout.all();
+  EXPECT_NE(no_layout.all().find("FAILED  Naiv_Index101"), std::string::npos) << no_layout.all();
 }
 
 }  // namespace

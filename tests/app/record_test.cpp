@@ -19,45 +19,25 @@
 #include <thread>
 #include <vector>
 
+#include "tests/support/cli_runner.h"
 #include "tests/support/reference_data.h"
 
 namespace {
 
 using ::testing::HasSubstr;
 
-struct RunResult {
-  int exit_code = -1;
-  std::string out;
-  std::string err;
-};
+using lmc::test::CliRun;
+using lmc::test::read_text_file;
+using lmc::test::run_lmc;
 
-std::string slurp(const std::filesystem::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
+CliRun run(const std::string& args, const std::filesystem::path& logs) { return run_lmc(args, logs); }
 
-std::string quote(const std::string& s) {
-  std::string q = "'";
-  for (const char c : s) q += c == '\'' ? std::string("'\\''") : std::string(1, c);
-  return q + "'";
-}
-
-RunResult run(const std::string& args, const std::filesystem::path& logs) {
-  std::filesystem::create_directories(logs);
-  const std::string cmd = quote(LMC_CLI_PATH) + " " + args + " >" + quote((logs / "out").string()) + " 2>" +
-                          quote((logs / "err").string());
-  const int status = std::system(cmd.c_str());
-  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, slurp(logs / "out"), slurp(logs / "err")};
-}
-
-nlohmann::json json_file(const std::filesystem::path& p) { return nlohmann::json::parse(slurp(p)); }
+nlohmann::json json_file(const std::filesystem::path& p) { return nlohmann::json::parse(read_text_file(p)); }
 
 TEST(LmcRecord, SimulatedTrialWritesRecordingSidecarAndTruthThatInfoReads) {
   const auto dir = lmc::test::scratch_dir("record_sim");
-  const RunResult r = run("record --backend sim --layout paper-initial --trial S01_index_1 --seconds 4 --motion index "
-                          "--fast --seed 5 -o " + quote((dir / "session").string()),
+  const CliRun r = run("record --backend sim --layout paper-initial --trial S01_index_1 --seconds 4 --motion index "
+                          "--fast --seed 5 -o " + lmc::test::shell_quote((dir / "session").string()),
                           dir / "logs");
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_THAT(r.out, HasSubstr("trial S01_index_1:"));
@@ -68,7 +48,7 @@ TEST(LmcRecord, SimulatedTrialWritesRecordingSidecarAndTruthThatInfoReads) {
   ASSERT_TRUE(std::filesystem::exists(side));
   ASSERT_TRUE(std::filesystem::exists(trc));
 
-  const RunResult info = run("info --json " + quote(rec.string()), dir / "info");
+  const CliRun info = run("info --json " + lmc::test::shell_quote(rec.string()), dir / "info");
   ASSERT_EQ(info.exit_code, 0) << info.err;
   const auto ij = nlohmann::json::parse(info.out);
   EXPECT_EQ(ij.at("variant"), "raw");
@@ -93,7 +73,7 @@ TEST(LmcRecord, SimulatedTrialWritesRecordingSidecarAndTruthThatInfoReads) {
       }
     EXPECT_TRUE(found);
   }
-  const RunResult tinfo = run("info --json " + quote(trc.string()), dir / "tinfo");
+  const CliRun tinfo = run("info --json " + lmc::test::shell_quote(trc.string()), dir / "tinfo");
   ASSERT_EQ(tinfo.exit_code, 0) << tinfo.err;
   const auto tj = nlohmann::json::parse(tinfo.out);
   EXPECT_EQ(tj.at("type"), "trc");
@@ -103,13 +83,13 @@ TEST(LmcRecord, SimulatedTrialWritesRecordingSidecarAndTruthThatInfoReads) {
   EXPECT_EQ(sj.at("ground_truth").at("file"), "S01_index_1.trc");
 
   // Same seed, same trial: the simulator is reproducible through the CLI too.
-  const RunResult again = run("record --backend sim --trial S01_index_1 --seconds 4 --motion index --fast --seed 5 "
-                              "--quiet -o " + quote((dir / "again").string()),
+  const CliRun again = run("record --backend sim --trial S01_index_1 --seconds 4 --motion index --fast --seed 5 "
+                              "--quiet -o " + lmc::test::shell_quote((dir / "again").string()),
                               dir / "logs2");
   ASSERT_EQ(again.exit_code, 0) << again.err;
-  EXPECT_TRUE(slurp(dir / "again" / "LMC_S01_index_1.raw.txt") == slurp(rec));
+  EXPECT_TRUE(read_text_file(dir / "again" / "LMC_S01_index_1.raw.txt") == read_text_file(rec));
   // The TRC's first line names its own path; everything after it must match.
-  const std::string t1 = slurp(trc), t2 = slurp(dir / "again" / "S01_index_1.trc");
+  const std::string t1 = read_text_file(trc), t2 = read_text_file(dir / "again" / "S01_index_1.trc");
   EXPECT_TRUE(t1.substr(t1.find('\n')) == t2.substr(t2.find('\n')));
 }
 
@@ -125,9 +105,9 @@ TEST(LmcRecord, SendsTheViconTriggerToALoopbackListener) {
   const int port = ntohs(addr.sin_port);
 
   const auto dir = lmc::test::scratch_dir("record_vicon");
-  const RunResult r = run("record --backend sim --trial Vic_1 --seconds 1 --quiet --vicon 127.0.0.1:" +
-                              std::to_string(port) + " --vicon-database " + quote("D:/lab & co") + " -o " +
-                              quote((dir / "s").string()),
+  const CliRun r = run("record --backend sim --trial Vic_1 --seconds 1 --quiet --vicon 127.0.0.1:" +
+                              std::to_string(port) + " --vicon-database " + lmc::test::shell_quote("D:/lab & co") + " -o " +
+                              lmc::test::shell_quote((dir / "s").string()),
                           dir / "logs");
   ASSERT_EQ(r.exit_code, 0) << r.err;
   std::vector<std::string> packets;
@@ -192,10 +172,10 @@ TEST(LmcRecord, ViconCaptureStartAndStopDriveTheTrial) {
   ::close(probe);
 
   const auto dir = lmc::test::scratch_dir("record_listen");
-  RunResult r;
+  CliRun r;
   std::thread lmc([&] {
     r = run("record --backend sim --seconds 20 --quiet --vicon-listen " + std::to_string(port) +
-                " --vicon-listen-address 127.0.0.1 -o " + quote((dir / "s").string()),
+                " --vicon-listen-address 127.0.0.1 -o " + lmc::test::shell_quote((dir / "s").string()),
             dir / "logs");
   });
   std::atomic<bool> stop_start{false};
@@ -226,11 +206,11 @@ TEST(LmcRecord, ReplayKeepsEveryRowOfEveryDevice) {
   const auto path = lmc::test::reference_file("acquisition/LMC_Naiv_Static101.raw.txt");
   LMC_REQUIRE_REFERENCE_FILE(path);
   const auto dir = lmc::test::scratch_dir("record_replay");
-  const RunResult r = run("record --backend " + quote("replay:" + path.string()) +
-                              " --trial again --seconds 30 --fast --quiet -o " + quote(dir.string()),
+  const CliRun r = run("record --backend " + lmc::test::shell_quote("replay:" + path.string()) +
+                              " --trial again --seconds 30 --fast --quiet -o " + lmc::test::shell_quote(dir.string()),
                           dir / "logs");
   ASSERT_EQ(r.exit_code, 0) << r.err;
-  const RunResult info = run("info --json " + quote((dir / "LMC_again.raw.txt").string()), dir / "info");
+  const CliRun info = run("info --json " + lmc::test::shell_quote((dir / "LMC_again.raw.txt").string()), dir / "info");
   ASSERT_EQ(info.exit_code, 0) << info.err;
   const auto j = nlohmann::json::parse(info.out);
   const int rows[] = {118, 121, 131, 130};
@@ -240,13 +220,13 @@ TEST(LmcRecord, ReplayKeepsEveryRowOfEveryDevice) {
 
 TEST(LmcRecord, UnsafeTrialNamesAndExistingTrialsAreRefused) {
   const auto dir = lmc::test::scratch_dir("record_refuse");
-  const RunResult bad = run("record --trial ../../etc/x --seconds 1 --fast -o " + quote(dir.string()), dir / "l1");
+  const CliRun bad = run("record --trial ../../etc/x --seconds 1 --fast -o " + lmc::test::shell_quote(dir.string()), dir / "l1");
   EXPECT_EQ(bad.exit_code, 1);
   EXPECT_THAT(bad.err, HasSubstr("invalid trial name"));
   EXPECT_FALSE(std::filesystem::exists(dir / "LMC_.raw.txt"));
-  const RunResult first = run("record --trial t1 --seconds 1 --fast --quiet -o " + quote(dir.string()), dir / "l2");
+  const CliRun first = run("record --trial t1 --seconds 1 --fast --quiet -o " + lmc::test::shell_quote(dir.string()), dir / "l2");
   ASSERT_EQ(first.exit_code, 0) << first.err;
-  const RunResult second = run("record --trial t1 --seconds 1 --fast --quiet -o " + quote(dir.string()), dir / "l3");
+  const CliRun second = run("record --trial t1 --seconds 1 --fast --quiet -o " + lmc::test::shell_quote(dir.string()), dir / "l3");
   EXPECT_EQ(second.exit_code, 1);
   EXPECT_THAT(second.err, HasSubstr("exists"));
 }

@@ -8,40 +8,14 @@
 #include <sstream>
 #include <string>
 
+#include "tests/support/cli_runner.h"
 #include "tests/support/reference_data.h"
 
 namespace {
 
-struct CliRun {
-  int exit_code = -1;
-  std::string out;
-  std::string err;
-};
-
-std::string read_all(const std::filesystem::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
-std::string quoted(const std::string& s) {
-  std::string q = "'";
-  for (const char c : s) q += c == '\'' ? std::string("'\\''") : std::string(1, c);
-  return q + "'";
-}
-
-// Runs the built `lmc` with `args`; stdout/stderr are captured in `dir`.
-CliRun lmc_run(const std::string& args, const std::filesystem::path& dir) {
-  const std::string cmd = quoted(LMC_CLI_PATH) + " " + args + " >" + quoted((dir / "stdout").string()) + " 2>" +
-                          quoted((dir / "stderr").string());
-  const int status = std::system(cmd.c_str());
-  CliRun r;
-  r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  r.out = read_all(dir / "stdout");
-  r.err = read_all(dir / "stderr");
-  return r;
-}
+using lmc::test::CliRun;
+using lmc::test::read_text_file;
+using lmc::test::run_lmc;
 
 }  // namespace
 
@@ -56,7 +30,7 @@ TEST(LmcVisibility, ReproducesTheAuthorsLabelsForAllRows) {
   LMC_REQUIRE_REFERENCE_FILE(expected);
   const auto dir = lmc::test::scratch_dir("cli_visibility");
   const auto out = dir / "labels.txt";
-  const CliRun r = lmc_run("visibility " + quoted(input.string()) + " -o " + quoted(out.string()), dir);
+  const CliRun r = run_lmc("visibility " + lmc::test::shell_quote(input.string()) + " -o " + lmc::test::shell_quote(out.string()), dir);
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const lmc::LmcRecording got = lmc::read_lmc_recording(out);
   const lmc::LmcRecording want = lmc::read_lmc_recording(expected);
@@ -77,7 +51,7 @@ TEST(LmcVisibility, ShorterRangeHidesAndExplains) {
   LMC_REQUIRE_REFERENCE_FILE(input);
   const auto dir = lmc::test::scratch_dir("cli_visibility_range");
   const auto out = dir / "labels.txt";
-  const CliRun r = lmc_run("visibility " + quoted(input.string()) + " --range-mm 250 --explain -o " + quoted(out.string()), dir);
+  const CliRun r = run_lmc("visibility " + lmc::test::shell_quote(input.string()) + " --range-mm 250 --explain -o " + lmc::test::shell_quote(out.string()), dir);
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_NE(r.out.find("out of range"), std::string::npos);
   const lmc::LmcRecording got = lmc::read_lmc_recording(out);
@@ -92,7 +66,7 @@ TEST(LmcVisibility, BadInputNamesTheFile) {
     std::ofstream bad(dir / "bad.txt");
     bad << "not a recording\n1\t2\n";
   }
-  const CliRun r = lmc_run("visibility " + quoted((dir / "bad.txt").string()) + " -o " + quoted((dir / "o.txt").string()), dir);
+  const CliRun r = run_lmc("visibility " + lmc::test::shell_quote((dir / "bad.txt").string()) + " -o " + lmc::test::shell_quote((dir / "o.txt").string()), dir);
   EXPECT_EQ(r.exit_code, 1);
   EXPECT_NE(r.err.find("bad.txt"), std::string::npos) << r.err;
 }

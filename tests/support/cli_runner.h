@@ -1,0 +1,57 @@
+#pragma once
+// Runs the built `lmc` binary (LMC_CLI_PATH) the way a user would, capturing stdout and stderr
+// separately. Shared by every test under tests/app/.
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+namespace lmc::test {
+
+struct CliRun {
+  int exit_code = -1;
+  std::string out;
+  std::string err;
+
+  std::string all() const { return out + err; }
+};
+
+inline std::string read_text_file(const std::filesystem::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+// Single-quotes `s` for /bin/sh (test paths may hold spaces).
+inline std::string shell_quote(const std::string& s) {
+  std::string q = "'";
+  for (const char c : s) q += c == '\'' ? std::string("'\\''") : std::string(1, c);
+  return q + "'";
+}
+
+// `lmc <args>`; the streams are kept as files in `log_dir` (created when missing). With no
+// `log_dir`, a fresh folder is made per call: ctest runs the tests of one binary as parallel
+// processes, so fixed names would race.
+inline CliRun run_lmc(const std::string& args, std::filesystem::path log_dir = {}) {
+  if (log_dir.empty()) {
+    std::string pattern = (std::filesystem::temp_directory_path() / "lmc_cli_XXXXXX").string();
+    if (::mkdtemp(pattern.data()) == nullptr) return {};
+    log_dir = pattern;
+  }
+  std::filesystem::create_directories(log_dir);
+  const std::string cmd = shell_quote(LMC_CLI_PATH) + " " + args + " >" + shell_quote((log_dir / "out").string()) +
+                          " 2>" + shell_quote((log_dir / "err").string());
+  const int status = std::system(cmd.c_str());
+  CliRun r;
+  r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  r.out = read_text_file(log_dir / "out");
+  r.err = read_text_file(log_dir / "err");
+  return r;
+}
+
+}  // namespace lmc::test
