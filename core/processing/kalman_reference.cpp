@@ -1,6 +1,8 @@
 #include "core/processing/kalman_reference.h"
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace lmc {
 
@@ -15,6 +17,19 @@ void rolling_variance(const double* x, int n, int window, double* out) {
       shift = x[i];
       break;
     }
+  }
+  // pandas (≥ 1.4) returns exactly 0 when every value in the window is the same (it counts the
+  // run of equal values): a coordinate clipped at the controller's ±250 mm cut is such a run, and
+  // the difference between 0 and a rounding residue decides whether the study's filter divides
+  // 0 by 0 there. run[j] = how many finite values up to j, NaN skipped, equal x[j];
+  // last_finite[j] = the last finite index ≤ j (−1 if none).
+  std::vector<int> run(static_cast<size_t>(n), 0), last_finite(static_cast<size_t>(n), -1);
+  for (int j = 0, prev = -1; j < n; ++j) {
+    if (std::isfinite(x[j])) {
+      run[static_cast<size_t>(j)] = prev >= 0 && x[prev] == x[j] ? run[static_cast<size_t>(prev)] + 1 : 1;
+      prev = j;
+    }
+    last_finite[static_cast<size_t>(j)] = prev;
   }
   double s1 = 0.0, s2 = 0.0;
   int count = 0;
@@ -31,8 +46,11 @@ void rolling_variance(const double* x, int n, int window, double* out) {
       add(i + after, 1.0);
       add(i - before - 1, -1.0);
     }
+    const int last = last_finite[static_cast<size_t>(std::min(i + after, n - 1))];
     if (count < 2) {
       out[i] = std::numeric_limits<double>::quiet_NaN();
+    } else if (last >= 0 && run[static_cast<size_t>(last)] >= count) {
+      out[i] = 0.0;
     } else {
       const double var = (s2 - s1 * s1 / count) / (count - 1);
       out[i] = var < 0.0 ? 0.0 : var;

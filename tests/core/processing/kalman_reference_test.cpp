@@ -35,6 +35,15 @@ TEST(RollingVariance, MatchesPandasCentredWindowWithNaN) {
   for (int i = 0; i < static_cast<int>(x.size()); ++i) {
     EXPECT_NEAR(out[static_cast<size_t>(i)], brute_variance(x, i), 1e-9) << i;
   }
+  // A window whose values are all the same (a clipped coordinate) has variance exactly 0, as in
+  // pandas, even after noisy values have slid out of the running sums.
+  std::vector<double> clipped(x.begin(), x.begin() + 40);
+  clipped.insert(clipped.end(), 40, 249.99999999999997);
+  clipped[60] = kNaN;
+  std::vector<double> cv(clipped.size());
+  rolling_variance(clipped.data(), static_cast<int>(clipped.size()), 30, cv.data());
+  for (int i = 55; i < 80; ++i) EXPECT_EQ(cv[static_cast<size_t>(i)], 0.0) << i;
+  EXPECT_GT(cv[40], 0.0);
   // Fewer than two values in the window → NaN.
   std::vector<double> lone{kNaN, 5.0, kNaN};
   std::vector<double> lo(3);
@@ -110,6 +119,21 @@ TEST(KalmanReference, MatchesMatrixFormWithNaNAndLateStart) {
   for (int i = 0; i < 5; ++i) EXPECT_TRUE(std::isnan(out[static_cast<size_t>(i)]));
   EXPECT_DOUBLE_EQ(out[5], s[1][5]);  // first device in order with a value initialises
   for (int i = 5; i < n; ++i) EXPECT_NEAR(out[static_cast<size_t>(i)], expected[static_cast<size_t>(i)], 1e-9) << i;
+}
+
+// Two devices whose coordinate sits on the ±250 mm cut (exactly constant): their rolling
+// variances are exactly 0, the first update leaves P = 0 and the second divides 0 by 0, so the
+// study's filter loses that coordinate from there on. One clipped device alone does no harm.
+TEST(KalmanReference, TwoClippedDevicesGiveNaNOneDoesNot) {
+  const int n = 60;
+  std::vector<double> a(n, 250.0), b(n, 250.0), c(n);
+  for (int i = 0; i < n; ++i) c[static_cast<size_t>(i)] = 240.0 + 0.5 * ((i % 3) - 1);
+  std::vector<double> out(n);
+  kalman_reference_1d({a.data(), b.data()}, n, out.data());
+  EXPECT_DOUBLE_EQ(out[0], 250.0);
+  for (int i = 1; i < n; ++i) EXPECT_TRUE(std::isnan(out[static_cast<size_t>(i)])) << i;
+  kalman_reference_1d({a.data(), c.data()}, n, out.data());
+  for (int i = 0; i < n; ++i) EXPECT_NEAR(out[static_cast<size_t>(i)], 250.0, 1e-9) << i;
 }
 
 TEST(KalmanReference, FusesAllThirtyPointsOfTracks) {
