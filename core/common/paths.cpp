@@ -25,4 +25,15 @@ std::filesystem::path asset_path(const std::filesystem::path& relative) {
   return p;
 }
 
+std::filesystem::path sessions_dir() {
+  if (const char* env = std::getenv("LMC_SESSIONS_DIR"); env != nullptr && *env != '\0') {
+    return env;
+  }
+  const std::filesystem::path in_project = std::filesystem::path(LMC_SOURCE_ASSETS_DIR).parent_path() / "sessions";
+  std::error_code ec;
+  if (std::filesystem::is_directory(in_project, ec)) return in_project;
+  const char* home = std::getenv("HOME");
+  return std::filesystem::path(home != nullptr && *home != '\0' ? home : ".") / "lmc-sessions";
+}
+
 }  // namespace lmc

@@ -14,6 +14,7 @@
 #include <filesystem>
 #include <string>
 
+#include "core/common/paths.h"
 #include "core/io/layout_json.h"
 #include "devices/source_factory.h"
 #include "devices/view/devices_view_model.h"
@@ -50,7 +51,7 @@ constexpr const char* kPresets[] = {"paper-initial", "paper-optimized", "paper-o
 class DevicesTab final : public Tab {
  public:
   explicit DevicesTab(StatusSink& status) : status_(status), vm_(initial_layout()) {
-    const std::string tmp = (std::filesystem::temp_directory_path() / "lmc-sessions").string();
+    const std::string tmp = sessions_dir().string();
     std::snprintf(folder_, sizeof folder_, "%s", tmp.c_str());
     std::snprintf(trial_, sizeof trial_, "%s", "test_trial_1");
   }
