@@ -164,8 +164,9 @@ TEST_F(TabFixture, ClickingEmptySpaceClearsTheSelectionAndOrbitDragMovesOnlyTheC
 
 struct OptimiserFixture : ::testing::Test {
   HeadlessImGui gui{900, 1000};
-  std::shared_ptr<LayoutTabState> state =
-      std::make_shared<LayoutTabState>(make_document(default_new_layout()));
+  SilentStatus status;
+  std::shared_ptr<LayoutTabState> state = std::make_shared<LayoutTabState>(
+      make_document(default_new_layout()), [this](const std::string& t, bool e) { status.set_status(t, e); });
   OptimiserPanel panel{state};
 
   void SetUp() override {
@@ -207,6 +208,7 @@ TEST_F(OptimiserFixture, StartThenCancelLeavesTheLayoutUnchanged) {
   click("pso.cancel");
   wait_until_idle();
   EXPECT_EQ(state->optimiser.state(), JobState::kCancelled);
+  EXPECT_EQ(status.last.rfind("Optimiser cancelled", 0), 0u) << status.last;
   EXPECT_EQ(state->history().head(), before);
   EXPECT_EQ(state->doc(), before);
   EXPECT_EQ(state->history().undo_size(), commits);
@@ -222,6 +224,7 @@ TEST_F(OptimiserFixture, ApplyReplacesTheLayoutInOneUndoableStep) {
   ASSERT_EQ(state->optimiser.state(), JobState::kCompleted) << state->optimiser.error();
   ASSERT_TRUE(state->optimiser.outcome());
   EXPECT_FALSE(state->optimiser.history().empty()) << "the convergence plot has data";
+  EXPECT_EQ(status.last.rfind("Optimiser finished: best M = ", 0), 0u) << status.last;
   const Layout candidate = state->optimiser.outcome()->pso.best_layout;
   click("apply");
   EXPECT_EQ(state->history().undo_size(), commits + 1);

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <thread>
 
 #include "core/common/error.h"
@@ -161,6 +162,7 @@ void LayoutTabState::update(double dt_seconds) {
   coverage.poll();
   heatmap.poll();
   optimiser.poll();
+  report_optimiser_end();
   prune_selection();
   refresh_timeline_frames();
 
@@ -214,6 +216,26 @@ bool LayoutTabState::start_optimiser() {
   }
   set_status("Optimiser started");
   return true;
+}
+
+void LayoutTabState::report_optimiser_end() {
+  const JobState now = optimiser.state();
+  if (now == last_optimiser_state_) return;
+  last_optimiser_state_ = now;
+  if (!job_finished(now)) return;
+  if (now == JobState::kFailed) {
+    set_status("Optimiser failed: " + optimiser.error(), true);
+    return;
+  }
+  const auto outcome = optimiser.outcome();
+  if (!outcome) {
+    set_status(now == JobState::kCancelled ? "Optimiser cancelled before its first iteration" : "Optimiser finished");
+    return;
+  }
+  char buf[160];
+  std::snprintf(buf, sizeof buf, "Optimiser %s: best M = %.4g; Apply or Discard it in the Optimiser panel",
+                now == JobState::kCancelled ? "cancelled" : "finished", outcome->pso.best_cost);
+  set_status(buf);
 }
 
 bool LayoutTabState::apply_optimised() {

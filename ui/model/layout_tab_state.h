@@ -112,8 +112,11 @@ class LayoutTabState {
 
  private:
   void refresh_timeline_frames();
+  // Tells the status bar once when a search ends, whichever panel is showing.
+  void report_optimiser_end();
 
   UndoableLayoutDocument document_;
+  JobState last_optimiser_state_ = JobState::kIdle;
   std::uint64_t saved_head_id_ = 0;
   std::optional<std::filesystem::path> file_path_;
   StatusFn status_;

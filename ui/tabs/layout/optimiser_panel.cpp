@@ -60,7 +60,7 @@ void OptimiserPanel::draw_pose_set() {
   if (s.poses.loading()) {
     ImGui::TextDisabled("%s...", s.poses.stage().c_str());
   } else if (const PoseSetPtr p = s.poses.current()) {
-    ImGui::TextDisabled("loaded: %d frames (%zu horizontal, %zu vertical)", p->size(), p->horizontal.size(), p->vertical.size());
+    ImGui::TextDisabled("%d frames: %zu horizontal, %zu vertical", p->size(), p->horizontal.size(), p->vertical.size());
   }
   if (!s.poses.error().empty()) {
     ImGui::PushTextWrapPos(0.0f);
