@@ -51,7 +51,7 @@ constexpr const char* kPresets[] = {"paper-initial", "paper-optimized", "paper-o
 class DevicesTab final : public Tab {
  public:
   explicit DevicesTab(StatusSink& status) : status_(status), vm_(initial_layout()) {
-    const std::string tmp = sessions_dir().string();
+    const std::string tmp = (sessions_dir() / "test-recordings").string();
     std::snprintf(folder_, sizeof folder_, "%s", tmp.c_str());
     std::snprintf(trial_, sizeof trial_, "%s", "test_trial_1");
   }
