@@ -109,16 +109,19 @@ std::vector<std::string> ResampleReport::summary_lines() const {
     part(d.out_of_order, "out-of-order row(s) (sorted by time)");
     part(d.duplicates, "duplicate timestamp(s) (second row dropped)");
     part(d.clock_resets, "clock reset(s) (stream split and re-based)");
-    part(d.gaps, "gap(s) longer than the interpolation limit (NaN there)");
+    const std::string gap_text = "gap(s) longer than the interpolation limit of " +
+                                 std::to_string(static_cast<long>(std::lround(d.gap_limit_ms))) + " ms (NaN there)";
+    part(d.gaps, gap_text.c_str());
     if (any) lines.push_back(slot_name(d.device_id) + ": " + s.str());
   }
   return lines;
 }
 
 GridTrial resample_recording(const LmcRecording& recording, const ResampleOptions& options, ResampleReport* report) {
-  if (!(options.rate_hz > 0.0) || !(options.max_gap_ms > 0.0)) throw Error("resample: rate and gap limit must be positive");
+  if (!(options.rate_hz > 0.0) || !(options.max_gap_ms > 0.0) || !(options.gap_frame_intervals > 0.0)) {
+    throw Error("resample: rate and gap limit must be positive");
+  }
   const double step_us = 1e6 / options.rate_hz;
-  const auto gap_us = static_cast<std::int64_t>(std::llround(options.max_gap_ms * 1000.0));
   const auto reset_us = static_cast<std::int64_t>(std::llround(options.clock_reset_ms * 1000.0));
   std::map<std::pair<int, int>, size_t> listed;
 
@@ -189,6 +192,17 @@ GridTrial resample_recording(const LmcRecording& recording, const ResampleOption
     }
     s.swap(kept);
     for (const Sample& smp : s) st.hand_rows += smp.hand ? 1 : 0;
+    std::vector<std::int64_t> hand_steps;
+    for (size_t j = 1; j < s.size(); ++j) {
+      if (s[j].hand && s[j - 1].hand) hand_steps.push_back(s[j].t_us - s[j - 1].t_us);
+    }
+    if (!hand_steps.empty()) {
+      auto mid = hand_steps.begin() + static_cast<long>(hand_steps.size() / 2);
+      std::nth_element(hand_steps.begin(), mid, hand_steps.end());
+      st.median_interval_ms = static_cast<double>(*mid) / 1000.0;
+    }
+    st.gap_limit_ms = options.max_gap_ms;
+    if (options.adaptive_gap) st.gap_limit_ms = std::max(st.gap_limit_ms, options.gap_frame_intervals * st.median_interval_ms);
   }
 
   // Grid: from the first hand sample of any device to the last.
@@ -223,6 +237,7 @@ GridTrial resample_recording(const LmcRecording& recording, const ResampleOption
     dev.track = HandTrack(grid.frame_count);
     const auto& s = streams[di];
     auto& st = stats[di];
+    const auto gap_us = static_cast<std::int64_t>(std::llround(st.gap_limit_ms * 1000.0));
     std::int64_t first_hand = -1, last_hand = -1;
     // Walk pieces: maximal runs of hand samples with no hand-less row and no long gap inside.
     size_t k = 0;

@@ -205,7 +205,9 @@ nlohmann::json trial_summary_json(const TrialResult& r) {
                        {"out_of_order", s.out_of_order},
                        {"duplicates", s.duplicates},
                        {"clock_resets", s.clock_resets},
-                       {"gaps", s.gaps}});
+                       {"gaps", s.gaps},
+                       {"gap_limit_ms", s.gap_limit_ms},
+                       {"median_interval_ms", s.median_interval_ms}});
   }
   j["streams"] = streams;
   if (r.has_vicon) {

@@ -25,6 +25,7 @@ struct ProcessArgs {
   std::string mapping;
   std::string out;
   double max_gap_ms = 50.0;
+  bool fixed_gap = false;
   bool compare_methods = false;
   bool quiet = false;
 };
@@ -34,6 +35,7 @@ void run_process(const ProcessArgs& a) {
   lmc::SessionOptions options;
   options.process.method = lmc::fusion_method_from_name(a.method);
   options.process.resample.max_gap_ms = a.max_gap_ms;
+  options.process.resample.adaptive_gap = !a.fixed_gap;
   if (!a.layout.empty()) options.layout = a.layout;
   if (!a.mapping.empty()) options.mapping = a.mapping;
   options.out_dir = a.out;
@@ -112,7 +114,11 @@ void setup_process(CLI::App& app) {
   app.add_option("--method", a->method, "Fusion: reference (the study's Kalman filter) or default (our smoother)")
       ->check(CLI::IsMember({"reference", "default"}));
   app.add_option("--mapping", a->mapping, "Vicon → LMC point mapping (default assets/mappings/vicon-26-to-lmc.json)");
-  app.add_option("--max-gap-ms", a->max_gap_ms, "Longest gap the resampler interpolates across");
+  app.add_option("--max-gap-ms", a->max_gap_ms,
+                 "Longest gap the resampler interpolates across; raised per device to 2.5× its median frame "
+                 "interval (a controller at 13 Hz normally has 77 ms between frames) unless --fixed-gap")
+      ->check(CLI::PositiveNumber);
+  app.add_flag("--fixed-gap", a->fixed_gap, "Use --max-gap-ms as it is for every device");
   app.add_flag("--compare-methods", a->compare_methods,
                "Also run the other method and print both methods' RMSE against the Vicon/truth files");
   app.add_flag("-q,--quiet", a->quiet, "Only failures and the final line");

@@ -73,6 +73,45 @@ TEST(Resample, GapsAndHandLossAreNaNNotBridged) {
   EXPECT_EQ(report.devices[0].gaps, 1);
 }
 
+// Four controllers on one bus stream at 11–34 Hz: 77 ms between frames is a device's normal
+// rhythm and is interpolated; a pause of several frames is still a gap. A 100 Hz device keeps the
+// 50 ms floor. --fixed-gap (adaptive_gap = false) applies 50 ms to every device.
+TEST(Resample, GapLimitFollowsEachDevicesOwnFrameRate) {
+  LmcRecording rec;
+  for (std::int64_t t = 0; t <= 770'000; t += 77'000) rec.rows.push_back(frame_at(1, t));      // 13 Hz
+  for (std::int64_t t = 1'000'000; t <= 1'231'000; t += 77'000) rec.rows.push_back(frame_at(1, t));  // after 230 ms
+  for (std::int64_t t = 0; t <= 300'000; t += 10'000) {
+    if (t < 100'000 || t > 150'000) rec.rows.push_back(frame_at(2, t));  // 100 Hz with a 60 ms hole
+  }
+  ResampleReport report;
+  const GridTrial g = resample_recording(rec, {}, &report);
+  ASSERT_EQ(report.devices.size(), 2u);
+  EXPECT_DOUBLE_EQ(report.devices[0].median_interval_ms, 77.0);
+  EXPECT_DOUBLE_EQ(report.devices[0].gap_limit_ms, 192.5);
+  EXPECT_DOUBLE_EQ(report.devices[1].gap_limit_ms, 50.0);
+  const auto& d1 = g.devices[0].track;
+  for (int f = 0; f <= 77; ++f) EXPECT_TRUE(d1.has_hand(f)) << f;  // 0 … 770 ms, no gap inside
+  for (int f = 78; f <= 99; ++f) EXPECT_FALSE(d1.has_hand(f)) << f;  // 230 ms pause
+  EXPECT_TRUE(d1.has_hand(100));
+  EXPECT_EQ(report.devices[0].gaps, 1);
+  const auto& d2 = g.devices[1].track;
+  EXPECT_TRUE(d2.has_hand(9));
+  for (int f = 10; f <= 15; ++f) EXPECT_FALSE(d2.has_hand(f)) << f;
+  EXPECT_TRUE(d2.has_hand(16));
+  EXPECT_EQ(report.devices[1].gaps, 1);
+  ASSERT_EQ(report.summary_lines().size(), 2u);
+  EXPECT_NE(report.summary_lines()[0].find("limit of 193 ms"), std::string::npos) << report.summary_lines()[0];
+
+  ResampleOptions fixed;
+  fixed.adaptive_gap = false;
+  ResampleReport strict;
+  const GridTrial gf = resample_recording(rec, fixed, &strict);
+  EXPECT_DOUBLE_EQ(strict.devices[0].gap_limit_ms, 50.0);
+  EXPECT_EQ(strict.devices[0].gaps, 14);  // every one of its 15 samples stands alone
+  EXPECT_FALSE(gf.devices[0].track.has_hand(1));
+  EXPECT_TRUE(gf.devices[0].track.has_hand(0));
+}
+
 TEST(Resample, ReportsOutOfOrderDuplicatesAndClockResets) {
   LmcRecording rec;
   rec.rows.push_back(frame_at(1, 100'000));
