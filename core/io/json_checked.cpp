@@ -16,6 +16,18 @@ void JsonReader::require_object() const {
   if (!j_.is_object()) fail("expected an object");
 }
 
+void JsonReader::only_keys(std::initializer_list<const char*> allowed) const {
+  require_object();
+  for (const auto& [key, value] : j_.items()) {
+    bool known = false;
+    for (const char* a : allowed) known = known || key == a;
+    if (known) continue;
+    std::string list;
+    for (const char* a : allowed) list += (list.empty() ? "" : ", ") + std::string(a);
+    throw Error(ErrorLocation{source_, 0, 0, path_ + "/" + key}, "unknown field (expected one of: " + list + ")");
+  }
+}
+
 JsonReader JsonReader::at(const char* key) const {
   require_object();
   const std::string child = path_ + "/" + key;

@@ -1,6 +1,7 @@
 #pragma once
 // Typed access to JSON values that reports the JSON path of anything missing or mistyped, so
 // every loader names the file and the exact field a user must fix.
+#include <initializer_list>
 #include <nlohmann/json.hpp>
 #include <string>
 
@@ -35,6 +36,9 @@ class JsonReader {
 
   [[noreturn]] void fail(const std::string& what) const;
   void require_object() const;
+  // Rejects keys outside `allowed`, naming the first one: a misspelt key ("rnage_mm") must not be
+  // dropped in silence while its default takes effect.
+  void only_keys(std::initializer_list<const char*> allowed) const;
 
  private:
   const nlohmann::json& j_;

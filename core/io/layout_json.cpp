@@ -1,6 +1,7 @@
 #include "core/io/layout_json.h"
 
 #include <nlohmann/json.hpp>
+#include <string_view>
 
 #include "core/common/paths.h"
 #include "core/io/atomic_write.h"
@@ -10,7 +11,7 @@ namespace lmc {
 
 Layout layout_from_json(const nlohmann::json& j, const std::string& source) {
   JsonReader root(j, source);
-  root.require_object();
+  root.only_keys({"format", "name", "description", "sensor", "devices"});
   const int format = root.at("format").integer();
   if (format != kLayoutFormatVersion) {
     root.at("format").fail("unsupported layout format " + std::to_string(format) + " (this build reads " +
@@ -21,7 +22,7 @@ Layout layout_from_json(const nlohmann::json& j, const std::string& source) {
   layout.description = root.string_or("description", "");
   if (root.has("sensor")) {
     const auto s = root.at("sensor");
-    s.require_object();
+    s.only_keys({"range_mm", "fov_long_deg", "fov_short_deg"});
     layout.sensor.range_mm = s.number_or("range_mm", layout.sensor.range_mm);
     layout.sensor.fov_long_deg = s.number_or("fov_long_deg", layout.sensor.fov_long_deg);
     layout.sensor.fov_short_deg = s.number_or("fov_short_deg", layout.sensor.fov_short_deg);
@@ -30,14 +31,18 @@ Layout layout_from_json(const nlohmann::json& j, const std::string& source) {
   const size_t n = devices.array_size();
   for (size_t i = 0; i < n; ++i) {
     const auto d = devices.at(i);
-    d.require_object();
+    d.only_keys({"slot", "serial", "pose", "offset"});
     LayoutDevice dev;
     dev.slot = d.string("slot");
     if (d.has("serial")) dev.serial = d.string("serial");
     const auto pose = d.at("pose");
-    pose.require_object();
+    pose.only_keys({"x", "y", "z", "rx", "ry", "rz"});
     for (int k = 0; k < kNumPoseParams; ++k) {
-      dev.pose.set(k, pose.number_or(pose_param_name(k), 0.0));
+      const char* key = pose_param_name(k);
+      // The study's layouts vary x, z, rx, ry with the controller flat on the table: y and rz may
+      // be left out (0). A key that is present must hold a number (null is not 0).
+      const bool optional = std::string_view(key) == "y" || std::string_view(key) == "rz";
+      dev.pose.set(k, optional && !pose.json().contains(key) ? 0.0 : pose.number(key));
     }
     if (d.has("offset")) {
       const auto off = d.at("offset");

@@ -79,8 +79,8 @@ void expect_rejected(const nlohmann::json& j, const std::string& path_fragment) 
 
 nlohmann::json good_layout() {
   return nlohmann::json::parse(R"({"format": 1, "name": "t", "devices": [
-      {"slot": "LMC1", "pose": {"x": 0, "z": 0}, "offset": [0, 0, 0]},
-      {"slot": "LMC2", "serial": "A1", "pose": {"x": 1}}]})");
+      {"slot": "LMC1", "pose": {"x": 0, "z": 0, "rx": 0, "ry": 0}, "offset": [0, 0, 0]},
+      {"slot": "LMC2", "serial": "A1", "pose": {"x": 1, "y": 0, "z": 0, "rx": 0, "ry": 0, "rz": 0}}]})");
 }
 
 TEST(LayoutJson, RejectsBadFilesNamingTheJsonPath) {
@@ -113,6 +113,30 @@ TEST(LayoutJson, RejectsBadFilesNamingTheJsonPath) {
   j = good_layout();
   j["devices"][0]["slot"] = "../../etc";
   expect_rejected(j, "/devices/0/slot");
+  // A misspelt or unknown key is named, never dropped while a default takes its place.
+  j = good_layout();
+  j["sensor"] = {{"range", 400}};
+  expect_rejected(j, "/sensor/range");
+  j = good_layout();
+  j["devices"][1]["pose"]["rq"] = 5;
+  expect_rejected(j, "/devices/1/pose/rq");
+  j = good_layout();
+  j["devices"][0]["offest"] = {1, 2, 3};
+  expect_rejected(j, "/devices/0/offest");
+  j = good_layout();
+  j["colour"] = "red";
+  expect_rejected(j, "/colour");
+  // x, z, rx, ry are required; null is not 0; y and rz may be left out (flat on the table).
+  j = good_layout();
+  j["devices"][1]["pose"].erase("z");
+  expect_rejected(j, "/devices/1/pose/z");
+  j = good_layout();
+  j["devices"][1]["pose"]["x"] = nullptr;
+  expect_rejected(j, "/devices/1/pose/x");
+  j = good_layout();
+  j["devices"][1]["pose"].erase("y");
+  j["devices"][1]["pose"].erase("rz");
+  EXPECT_EQ(layout_from_json(j, "flat.json").devices[1].pose.y_mm, 0.0);
 }
 
 TEST(LayoutValidation, RejectsNaNPoses) {
