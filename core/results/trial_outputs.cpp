@@ -46,9 +46,18 @@ void stats_block(std::ostringstream& o, const MeasureStats& s) {
   row(o, s.angle_rom);
 }
 
+// The authors' "Filename:" line is the file name without its extension. Our own stage suffixes
+// (`.raw`, `.resampled`, `.raytraced`) go too, so every variant of one trial names it the same.
 std::string stem_of(const std::string& path, const std::string& fallback) {
   if (path.empty()) return fallback;
-  return std::filesystem::path(path).stem().string();
+  std::string stem = std::filesystem::path(path).stem().string();
+  for (const std::string suffix : {".raw", ".resampled", ".raytraced"}) {
+    if (stem.size() > suffix.size() && stem.compare(stem.size() - suffix.size(), suffix.size(), suffix) == 0) {
+      stem.erase(stem.size() - suffix.size());
+      break;
+    }
+  }
+  return stem;
 }
 
 nlohmann::json arr(const double* v, size_t n) {

@@ -82,6 +82,12 @@ TEST(ReferenceParity, Subject1NaivStatic101MatchesAuthorsResults) {
   // The published headline numbers (reference-algorithms.md §9).
   EXPECT_NEAR(r.lmc_stats.finger_mean[0], 47.83, 0.005);
   EXPECT_NEAR(r.vicon_stats.finger_mean[2], 100.15, 0.005);
+  // The report names the trial as the authors' does, whichever stage of the file was given.
+  const std::string text = format_results_text(r);
+  EXPECT_EQ(text.substr(text.find('\n') + 1, 36), "Filename:\tInterp_LMC_Naiv_Static101\n");
+  r.lmc_source = (dir / "Interp_LMC_Naiv_Static101.raytraced.txt").string();
+  const std::string from_raytraced = format_results_text(r);
+  EXPECT_EQ(from_raytraced.substr(from_raytraced.find('\n') + 1, 36), "Filename:\tInterp_LMC_Naiv_Static101\n");
 }
 
 TEST(ReferenceParity, RawRecordingResamplesToPlausibleGrid) {
