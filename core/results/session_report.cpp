@@ -61,7 +61,7 @@ SessionReport build_session_report(const std::vector<ReportInput>& inputs) {
     int trials = 0, with_vicon = 0;
   };
   std::map<Group, Acc> groups;
-  std::vector<double> all_finger_diff, all_rom_diff;
+  std::vector<double> all_finger_diff, all_rom_diff, all_angle_diff;
   std::map<std::string, std::vector<double>> vis_by_layout;
 
   std::ostringstream trials;
@@ -102,7 +102,11 @@ SessionReport build_session_report(const std::vector<ReportInput>& inputs) {
         const double d = at(lmc, "angle_rom_deg", k) - at(vicon, "angle_rom_deg", k);
         acc.rom_diff[k].push_back(d);
         all_rom_diff.push_back(d);
-        if (s.contains("comparison")) acc.angle_diff[k].push_back(at(s["comparison"], "angle_diff_mean_deg", k));
+        if (s.contains("comparison")) {
+          const double d_angle = at(s["comparison"], "angle_diff_mean_deg", k);
+          acc.angle_diff[k].push_back(d_angle);
+          all_angle_diff.push_back(d_angle);
+        }
       }
     }
     if (s.contains("visibility")) {
@@ -131,13 +135,15 @@ SessionReport build_session_report(const std::vector<ReportInput>& inputs) {
   std::ostringstream fl, ja, vis, md;
   fl << "layout,pose,motion,finger,trials,lmc_mean_mm,lmc_sd_mm,vicon_mean_mm,vicon_sd_mm,diff_mean_mm,diff_sd_mm\n";
   ja << "layout,pose,motion,joint,trials,lmc_rom_mean_deg,lmc_rom_sd_deg,vicon_rom_mean_deg,vicon_rom_sd_deg,rom_diff_mean_deg,"
-        "rom_diff_sd_deg,frame_angle_diff_mean_deg\n";
+        "rom_diff_sd_deg,frame_angle_diff_mean_deg,frame_angle_diff_sd_deg\n";
   vis << "layout,pose,motion,device,values,rate_mean,rate_sd\n";
 
   md << "# Processing report\n\n" << rep.trials << " trial(s), " << rep.trials_with_vicon << " with Vicon.\n\n";
   md << "Differences are LMC − Vicon (the paper quotes Vicon − LMC for finger length).\n\n";
   md << "* Finger length difference, all fingers and trials: " << pm(mean_sd(all_finger_diff)) << " mm (n = "
      << mean_sd(all_finger_diff).n << ")\n";
+  md << "* Joint angle difference (per frame, averaged per trial), all joints and trials: " << pm(mean_sd(all_angle_diff))
+     << "° (n = " << mean_sd(all_angle_diff).n << ")\n";
   md << "* Range-of-motion difference, all joints and trials: " << pm(mean_sd(all_rom_diff)) << "° (n = "
      << mean_sd(all_rom_diff).n << ")\n";
   for (const auto& [layout, v] : vis_by_layout) md << "* Visibility rate, layout " << layout << ": " << pm(mean_sd(v)) << "\n";
@@ -153,8 +159,10 @@ SessionReport build_session_report(const std::vector<ReportInput>& inputs) {
          << " | " << pm(v) << " | " << pm(d) << " |\n";
     }
   }
-  md << "\n## Range of motion (°): LMC, Vicon, LMC − Vicon (mean ± SD over trials)\n\n";
-  md << "| layout | pose | motion | joint | LMC | Vicon | LMC − Vicon |\n|---|---|---|---|---:|---:|---:|\n";
+  md << "\n## Joint angles (°): range of motion LMC, Vicon, LMC − Vicon, and the angle difference LMC − Vicon per frame "
+        "averaged per trial (mean ± SD over trials)\n\n";
+  md << "| layout | pose | motion | joint | ROM LMC | ROM Vicon | ROM LMC − Vicon | angle LMC − Vicon |\n"
+        "|---|---|---|---|---:|---:|---:|---:|\n";
   for (const auto& [g, acc] : groups) {
     const auto& [layout, pose, motion] = g;
     for (size_t k = 0; k < kNumAngles; ++k) {
@@ -162,9 +170,9 @@ SessionReport build_session_report(const std::vector<ReportInput>& inputs) {
       const MeanSd fa = mean_sd(acc.angle_diff[k]);
       ja << layout << ',' << pose << ',' << motion << ',' << angle_name(static_cast<int>(k)) << ',' << acc.trials << ','
          << f3(l.mean) << ',' << f3(l.sd) << ',' << f3(v.mean) << ',' << f3(v.sd) << ',' << f3(d.mean) << ',' << f3(d.sd) << ','
-         << f3(fa.mean) << '\n';
+         << f3(fa.mean) << ',' << f3(fa.sd) << '\n';
       md << "| " << layout << " | " << pose << " | " << motion << " | " << angle_name(static_cast<int>(k)) << " | " << pm(l)
-         << " | " << pm(v) << " | " << pm(d) << " |\n";
+         << " | " << pm(v) << " | " << pm(d) << " | " << pm(fa) << " |\n";
     }
   }
   md << "\n## Visibility rate per device (mean ± SD over fingers and trials; −1 = never saw the hand)\n\n";

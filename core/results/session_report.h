@@ -4,6 +4,8 @@
 //  * finger length LMC and Vicon (per-trial mean), and the difference LMC − Vicon, mean ± SD over
 //    trials (the paper quotes Vicon − LMC as a positive number: 24.23 ± 6.35 mm);
 //  * range of motion per joint, LMC vs Vicon, and their difference, mean ± SD over trials;
+//  * the joint-angle difference LMC − Vicon per frame, averaged per trial, mean ± SD over trials
+//    (the paper's 29.49° ± 27.85° is of this kind);
 //  * visibility rate per device (mean over fingers and trials, −1 "never saw the hand" included as
 //    in the paper's 0.05 ± 0.55), mean ± SD.
 // Output: CSV tables plus a Markdown summary.
