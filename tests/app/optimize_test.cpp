@@ -8,6 +8,7 @@
 #include <sstream>
 #include <string>
 
+#include "core/io/layout_json.h"
 #include "tests/support/cli_runner.h"
 #include "tests/support/reference_data.h"
 
@@ -16,12 +17,6 @@ namespace {
 using lmc::test::CliRun;
 using lmc::test::read_text_file;
 using lmc::test::run_lmc;
-
-}  // namespace
-
-#include "core/io/layout_json.h"
-
-namespace {
 
 TEST(LmcOptimize, SmallSearchWritesALayoutAndJsonSummary) {
   const auto dir = lmc::test::scratch_dir("cli_optimize");
@@ -64,6 +59,19 @@ TEST(LmcOptimize, TextSummaryAndLocks) {
   EXPECT_EQ(got.devices[1].pose, start.devices[1].pose);
   EXPECT_EQ(got.devices[2].pose.x_mm, start.devices[2].pose.x_mm);
   EXPECT_EQ(got.devices[2].pose.z_mm, start.devices[2].pose.z_mm);
+}
+
+TEST(LmcOptimize, StartLayoutKeepsItsSensorRangeUnlessOverridden) {
+  const auto dir = lmc::test::scratch_dir("cli_optimize_range");
+  lmc::Layout start = lmc::load_layout_or_preset("paper-initial");
+  start.sensor.range_mm = 400.0;
+  lmc::save_layout(start, dir / "start.json");
+  const std::string common = "optimize --frames 20 --particles 2 --iterations 1 --no-progress --start " +
+                             lmc::test::shell_quote((dir / "start.json").string());
+  ASSERT_EQ(run_lmc(common + " -o " + lmc::test::shell_quote((dir / "a.json").string()), dir).exit_code, 0);
+  EXPECT_EQ(lmc::load_layout(dir / "a.json").sensor.range_mm, 400.0);
+  ASSERT_EQ(run_lmc(common + " --range-mm 550 -o " + lmc::test::shell_quote((dir / "b.json").string()), dir).exit_code, 0);
+  EXPECT_EQ(lmc::load_layout(dir / "b.json").sensor.range_mm, 550.0);
 }
 
 TEST(LmcOptimize, BadBoundsAreReported) {

@@ -31,7 +31,7 @@ struct OptimizeOptions {
   std::uint64_t pso_seed = 1;
   int threads = 0;
   std::string bounds;
-  double range_mm = 600.0;
+  double range_mm = 0.0;  // 0: the start layout's own range, or the study's 600 mm
   double radius_mm = 10.0;
   std::string start;
   std::vector<std::string> locks;
@@ -81,7 +81,8 @@ void setup_optimize(CLI::App& app) {
   app.add_option("--bounds", opt->bounds,
                  "Searched parameters and bounds, e.g. x=-400:400,z=-400:400,rx=-45:45,ry=-180:180 "
                  "(default: the authors' box x,z ∈ [-1000,1000], rx ∈ [-90,90], ry ∈ [-180,180])");
-  app.add_option("--range-mm", opt->range_mm, "Sensor range (mm)")->check(CLI::PositiveNumber);
+  app.add_option("--range-mm", opt->range_mm, "Sensor range (mm); default: the --start layout's, else 600 as in the study")
+      ->check(CLI::PositiveNumber);
   app.add_option("--radius-mm", opt->radius_mm, "Phalanx radius (mm)")->check(CLI::NonNegativeNumber);
   app.add_option("--start", opt->start, "Start from this layout (file or preset); its devices are searched");
   app.add_option("--lock", opt->locks, "Keep a device (SLOT) or some of its parameters (SLOT:x+rz) at the start value");
@@ -96,7 +97,11 @@ void setup_optimize(CLI::App& app) {
     } else {
       start = lmc::default_start_layout(opt->devices);
     }
-    start.sensor.range_mm = opt->range_mm;
+    if (opt->range_mm > 0) {
+      start.sensor.range_mm = opt->range_mm;
+    } else if (!from_layout) {
+      start.sensor.range_mm = 600.0;
+    }
     lmc::SearchSpace space = opt->bounds.empty() ? lmc::SearchSpace{} : lmc::parse_search_bounds(opt->bounds);
     for (const auto& l : opt->locks) apply_lock(space, start, l);
     if (!from_layout && !opt->locks.empty()) throw lmc::Error("--lock needs --start");
