@@ -48,6 +48,7 @@ LagEstimate estimate_lag(const HandTrack& lmc, const HandTrack& vicon, int max_l
       best.valid = true;
     }
   }
+  best.clear = best.valid && best.correlation >= 0.9 && std::abs(best.lag_frames) < max_lag_frames;
   return best;
 }
 

@@ -14,6 +14,9 @@ struct LagEstimate {
   bool valid = false;      // false when too few common frames or a flat trajectory
   int lag_frames = 0;      // > 0: LMC trails Vicon (lmc[f] ≈ vicon[f − lag])
   double correlation = 0;  // normalised cross-correlation at that lag (1 = identical shape)
+  // valid, r ≥ 0.9 and inside the search window (a best lag at ±max_lag means the true one may lie
+  // beyond it): a lag worth reporting to a person. Low-motion trials rarely give one.
+  bool clear = false;
 };
 
 // Normalised cross-correlation of the demeaned wrist (point 4) trajectories over lags

@@ -127,7 +127,7 @@ SessionReport build_session_report(const std::vector<ReportInput>& inputs) {
     for (size_t k = 0; k < kNumAngles; ++k) trials << ',' << f3(at(lmc, "angle_rom_deg", k));
     for (size_t k = 0; k < kNumAngles; ++k) trials << ',' << f3(vic ? at(vicon, "angle_rom_deg", k) : kNaN);
     const auto lag = s.contains("comparison") ? s["comparison"].value("lag", nlohmann::json::object()) : nlohmann::json::object();
-    trials << ',' << (lag.value("valid", false) ? std::to_string(lag.value("frames", 0)) : std::string("nan")) << ','
+    trials << ',' << (lag.value("clear", false) ? std::to_string(lag.value("frames", 0)) : std::string("nan")) << ','
            << f3(lag.contains("correlation") ? num(lag["correlation"]) : kNaN) << '\n';
   }
   rep.trials_csv = trials.str();

@@ -224,7 +224,7 @@ nlohmann::json trial_summary_json(const TrialResult& r) {
     j["vicon_frames_before_trim"] = r.vicon_frames_before_trim;
     const auto& c = r.comparison;
     j["comparison"] = {{"frames", c.frames},
-                       {"lag", {{"valid", c.lag.valid}, {"frames", c.lag.lag_frames}, {"ms", c.lag.lag_frames * 10},
+                       {"lag", {{"valid", c.lag.valid}, {"clear", c.lag.clear}, {"frames", c.lag.lag_frames}, {"ms", c.lag.lag_frames * 10},
                                 {"correlation", c.lag.correlation}}},
                        {"finger_diff_mean_mm", arr(c.finger_diff_mean)},
                        {"finger_diff_sd_mm", arr(c.finger_diff_sd)},

@@ -86,6 +86,11 @@ TEST(Compare, LagFromWristCrossCorrelation) {
   ASSERT_TRUE(lag.valid);
   EXPECT_EQ(lag.lag_frames, 7);  // a trails b by 7 frames
   EXPECT_GT(lag.correlation, 0.99);
+  EXPECT_TRUE(lag.clear);
+  // The same shift searched only up to ±5 frames ends on the window's edge: not a clear lag.
+  const LagEstimate edge = estimate_lag(a, b, 5);
+  EXPECT_EQ(edge.lag_frames, 5);
+  EXPECT_FALSE(edge.clear);
 }
 
 TEST(Compare, DifferencesAreLmcMinusVicon) {
