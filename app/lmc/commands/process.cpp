@@ -70,7 +70,7 @@ void run_process(const ProcessArgs& a) {
                   << (o.has_vicon ? ", with Vicon" : ", no Vicon");
         if (o.summary.contains("comparison")) {
           const auto& lag = o.summary["comparison"]["lag"];
-          if (lag.value("valid", false) && lag.value("frames", 0) != 0 && lag.value("correlation", 0.0) >= 0.9) {
+          if (lag.value("clear", false) && lag.value("frames", 0) != 0) {
             std::cout << ", wrist lag " << lag["frames"].get<int>() << " frame(s) (r = " << lmc::format_fixed(lag["correlation"].get<double>(), 2)
                       << ")";
           }
