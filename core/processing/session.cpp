@@ -155,6 +155,12 @@ TrialOutcome process_job(const TrialJob& job, const SessionOptions& options, con
                     "Vicon rate is " + format_fixed(markers.rate_hz, 2) + " Hz; processing expects 100 Hz like the LMC grid");
       }
       vicon_track = apply_vicon_mapping(mapping, markers);
+      if (vicon_track.frame_count < options.process.min_vicon_seconds * 100.0) {
+        throw Error(ErrorLocation(job.vicon->string()),
+                    "only " + std::to_string(vicon_track.frame_count) + " frames (" +
+                        format_fixed(vicon_track.frame_count / 100.0, 2) + " s at 100 Hz); a trial's Vicon capture must last at least " +
+                        format_fixed(options.process.min_vicon_seconds, 1) + " s");
+      }
       vicon = &vicon_track;
       out.has_vicon = true;
     } else {
