@@ -335,6 +335,8 @@ GridTrial grid_from_resampled(const LmcRecording& recording, std::vector<std::st
     }
     grid.devices.push_back(std::move(dev));
   }
+  const bool any_hand = std::any_of(recording.rows.begin(), recording.rows.end(), [](const HandFrame& f) { return f.hand_present; });
+  if (!any_hand && warnings != nullptr) warnings->push_back("no device saw the hand in any row: every LMC measure is NaN");
   return grid;
 }
 

@@ -165,6 +165,15 @@ TEST(Resample, ResampledRecordingRowsAreTheGrid) {
   EXPECT_TRUE(g.devices[0].track.has_hand(3));
   ASSERT_EQ(warnings.size(), 1u);
   EXPECT_NE(warnings[0].find("LMC2"), std::string::npos);
+
+  // A resampled file in which no device ever saw the hand still gives its grid, and says so.
+  LmcRecording empty;
+  empty.kind = RecordingKind::kResampled;
+  for (int f = 0; f < 3; ++f) empty.rows.push_back(frame_at(1, 10'000 * f, false));
+  std::vector<std::string> w2;
+  EXPECT_EQ(grid_from_resampled(empty, &w2).frame_count, 3);
+  ASSERT_EQ(w2.size(), 1u);
+  EXPECT_NE(w2[0].find("no device saw the hand"), std::string::npos);
 }
 
 }  // namespace
