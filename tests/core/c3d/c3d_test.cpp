@@ -16,6 +16,7 @@ namespace {
 // Minimal little-endian byte builder for hand-made Intel files.
 struct Bytes {
   std::vector<std::uint8_t> b;
+  bool dec = false;  // floats in DEC (VAX F) form: IEEE bits of 4·v, 16-bit words swapped
   void u8(int v) { b.push_back(static_cast<std::uint8_t>(v)); }
   void i16(int v) {
     const auto u = static_cast<std::uint16_t>(static_cast<std::int16_t>(v));
@@ -23,8 +24,10 @@ struct Bytes {
     u8(u >> 8);
   }
   void f32(float v) {
+    if (dec) v *= 4.0f;
     std::uint32_t u;
     std::memcpy(&u, &v, 4);
+    if (dec) u = (u << 16) | (u >> 16);
     for (int k = 0; k < 4; ++k) u8(static_cast<int>((u >> (8 * k)) & 0xFF));
   }
   void str(const std::string& s) { b.insert(b.end(), s.begin(), s.end()); }
@@ -55,8 +58,9 @@ std::vector<std::uint8_t> le16(int v) {
   t.i16(v);
   return t.b;
 }
-std::vector<std::uint8_t> lef(float v) {
+std::vector<std::uint8_t> lef(float v, bool dec = false) {
   Bytes t;
+  t.dec = dec;
   t.f32(v);
   return t.b;
 }
@@ -64,8 +68,9 @@ std::vector<std::uint8_t> lef(float v) {
 // Intel, integer storage (scale 0.5), 2 points, 3 frames, 2 analog samples per frame to skip;
 // point B missing in frame 2 (negative residual). Header POINT count deliberately disagrees (9):
 // the parameters are the master.
-std::vector<std::uint8_t> hand_made_int_file() {
+std::vector<std::uint8_t> hand_made_int_file(bool dec = false) {
   Bytes x;
+  x.dec = dec;
   x.u8(2);
   x.u8(0x50);
   x.i16(9);   // points (wrong on purpose)
@@ -81,18 +86,18 @@ std::vector<std::uint8_t> hand_made_int_file() {
   x.u8(1);
   x.u8(0x50);
   x.u8(1);   // one parameter block
-  x.u8(84);  // Intel
+  x.u8(dec ? 85 : 84);  // DEC or Intel (both store integers little-endian)
   group(x, "POINT", 1);
   param(x, "USED", 1, 2, {}, le16(2));
-  param(x, "SCALE", 1, 4, {}, lef(0.5f));
-  param(x, "RATE", 1, 4, {}, lef(100.0f));
+  param(x, "SCALE", 1, 4, {}, lef(0.5f, dec));
+  param(x, "RATE", 1, 4, {}, lef(100.0f, dec));
   param(x, "DATA_START", 1, 2, {}, le16(3));
   param(x, "FRAMES", 1, 2, {}, le16(3));
   param(x, "UNITS", 1, -1, {2}, {'m', 'm'});
   param(x, "LABELS", 1, -1, {4, 2}, {'A', ' ', ' ', ' ', 'S', ':', 'B', '\0'});
   group(x, "ANALOG", 2);
   param(x, "USED", 2, 2, {}, le16(1));
-  param(x, "RATE", 2, 4, {}, lef(200.0f));
+  param(x, "RATE", 2, 4, {}, lef(200.0f, dec));
   x.u8(0);
   x.u8(0);
   x.pad_to(1024);
@@ -139,6 +144,20 @@ TEST(C3d, ReadsHandMadeIntelIntegerFile) {
   // The mapping's "Subject:" prefix rule finds "B" in "S:B".
   const MarkerSeries m = d.to_marker_series("hand.c3d");
   EXPECT_EQ(m.names[1], "S:B");
+}
+
+// The same file as a DEC (VAX) machine writes it: only the floats (scale, rates) differ.
+TEST(C3d, ReadsHandMadeDecIntegerFile) {
+  const auto bytes = hand_made_int_file(true);
+  EXPECT_EQ(bytes[512 + 3], 85);
+  const C3dData d = parse_c3d(bytes, "dec.c3d");
+  EXPECT_EQ(d.processor, C3dProcessor::kDec);
+  EXPECT_FALSE(d.float_storage);
+  EXPECT_DOUBLE_EQ(d.point_rate_hz, 100.0);
+  ASSERT_EQ(d.frame_count(), 3);
+  EXPECT_DOUBLE_EQ(d.positions[2][0].y(), 4.0);  // 8 × scale 0.5
+  EXPECT_DOUBLE_EQ(d.positions[0][1].z(), 30.0);
+  EXPECT_TRUE(std::isnan(d.positions[1][1].x()));
 }
 
 TEST(C3d, ReadsHandMadeFloatFileInMetres) {
