@@ -239,9 +239,15 @@ void ScenePanel::draw_overlays(ImDrawList* dl) {
 
   // Legend: finger colours (categorical, every category listed).
   const float line = ImGui::GetTextLineHeight();
-  ImVec2 at(image_min_.x + 10, image_max.y - 10 - line * 1.6f);
   const char* title = "Fingers:";
-  dl->AddRectFilled(ImVec2(at.x - 6, at.y - 6), ImVec2(at.x + 430, at.y + line + 6), IM_COL32(18, 19, 23, 200), 4.0f);
+  float legend_w = ImGui::CalcTextSize(title).x + 10;
+  for (int c = 0; c < kSeenCountCategories; ++c) legend_w += line + 2 + ImGui::CalcTextSize(seen_count_label(c).c_str()).x + 12;
+  ImVec2 at(image_min_.x + 10, image_max.y - 10 - line * 1.6f);
+  // In a narrow scene the heatmap's colour bar (bottom right, 236 px) would cover the finger
+  // legend: stack the finger legend above it instead.
+  const bool heat_bar = s.display.show_heatmap && s.selected >= 0;
+  if (heat_bar && at.x + legend_w > image_max.x - 220 - 16 - 8) at.y -= line * 3.6f + 28;
+  dl->AddRectFilled(ImVec2(at.x - 6, at.y - 6), ImVec2(at.x + legend_w, at.y + line + 6), IM_COL32(18, 19, 23, 200), 4.0f);
   dl->AddText(at, IM_COL32(210, 212, 218, 255), title);
   float x = at.x + ImGui::CalcTextSize(title).x + 10;
   for (int c = 0; c < kSeenCountCategories; ++c) {
@@ -253,7 +259,7 @@ void ScenePanel::draw_overlays(ImDrawList* dl) {
   }
 
   // Heatmap colour bar (magnitude: sequential map with numbers).
-  if (s.display.show_heatmap && s.selected >= 0) {
+  if (heat_bar) {
     const HeatmapGridPtr g = s.heatmap.latest();
     const float bw = 220, bx = image_max.x - bw - 16, by = image_max.y - 14 - line * 2.6f;
     dl->AddRectFilled(ImVec2(bx - 8, by - line - 10), ImVec2(image_max.x - 6, image_max.y - 6), IM_COL32(18, 19, 23, 200), 4.0f);
