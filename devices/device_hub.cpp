@@ -99,6 +99,7 @@ void DeviceHub::try_auto_assign_locked(Device& d) {
     if (taken) continue;
     d.status.slot_index = static_cast<int>(i);
     d.status.slot = layout_.devices[i].slot;
+    d.auto_assigned = true;
     return;
   }
 }
@@ -123,6 +124,7 @@ std::string DeviceHub::assign(const std::string& serial, const std::string& slot
   layout_.devices[static_cast<size_t>(index)].serial = serial;
   target->status.slot_index = index;
   target->status.slot = slot;
+  target->auto_assigned = false;
   message_locked(serial + " assigned to " + slot);
   return {};
 }
@@ -162,8 +164,15 @@ void DeviceHub::on_device_event(const DeviceEvent& event) {
         case DeviceEventKind::kAppeared:
           if (!event.info.backend.empty()) s.backend = event.info.backend;
           if (!event.info.model.empty()) s.model = event.info.model;
-          if (!s.connected && s.disconnects > 0) message_locked(label(s) + " reconnected");
-          else message_locked(label(s) + " connected (" + s.backend + ")");
+          if (!s.connected && s.disconnects > 0) {
+            message_locked(label(s) + " reconnected");
+          } else if (d.auto_assigned && s.backend != "sim") {
+            // USB order is not table order: say that the slot is a guess until someone confirms it.
+            message_locked(label(s) + " connected (" + s.backend + "); its slot was given in order of appearance: "
+                           "check it is that controller, or pick its slot, then save the layout with its serials");
+          } else {
+            message_locked(label(s) + " connected (" + s.backend + ")");
+          }
           s.connected = true;
           if (s.slot_index < 0) try_auto_assign_locked(d);
           if (s.slot_index < 0) message_locked("serial " + s.serial + " is not in the layout: assign it to a slot");
@@ -237,6 +246,7 @@ HubSnapshot DeviceHub::snapshot() const {
     DeviceStatus s = d.status;
     if (s.frames_received > 0) {
       s.latest_frame_age_ms = static_cast<double>(now - d.last_receive_ns) / 1e6;
+      s.latest_host_receive_ns = d.last_receive_ns;
       // Rate: frames whose receive time lies in the last second before `now`.
       int count = 0;
       for (size_t k = 0; k < d.recent_count; ++k) {

@@ -29,6 +29,7 @@ struct DeviceStatus {
   bool connected = false;
   double rate_hz = 0.0;             // frames received during the last second
   double latest_frame_age_ms = -1;  // −1 before the first frame
+  std::int64_t latest_host_receive_ns = 0;  // host_now_ns() when the latest frame arrived (0 before)
   bool hand_present = false;
   HandType hand_type = HandType::kUnknown;
   std::int64_t frames_received = 0;
@@ -99,6 +100,7 @@ class DeviceHub final : public FrameSink {
     std::array<std::int64_t, 512> recent_ns{};  // ring of receive times for the 1 s rate
     size_t recent_head = 0;
     size_t recent_count = 0;
+    bool auto_assigned = false;  // slot given in order of appearance, not from the layout's serials
   };
   Device& device_for_locked(const std::string& serial);
   void try_auto_assign_locked(Device& d);

@@ -1,5 +1,6 @@
 // lmc — the headless face of the workbench engine, for batch work and tests.
 #include <algorithm>
+#include <csignal>
 #include <iostream>
 
 #include "app/lmc/command.h"
@@ -20,6 +21,11 @@ int& command_exit_code() {
 }  // namespace lmc::cli
 
 int main(int argc, char** argv) {
+#ifdef SIGXFSZ
+  // A file-size limit (ulimit -f) must not kill the program in the middle of a trial: ignored,
+  // the write fails with EFBIG and the recorder stops the trial with a clear message instead.
+  std::signal(SIGXFSZ, SIG_IGN);
+#endif
   CLI::App app{
       "lmc — design, record and analyse multi-Leap-Motion-Controller hand measurements.\n"
       "Every command prints its own help: lmc <command> --help"};

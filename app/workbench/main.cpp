@@ -1,5 +1,6 @@
 // lmc-workbench — the desktop workbench. `--capture DIR [--tab NAME]` renders tabs to PNG and exits.
 #include <CLI/CLI.hpp>
+#include <csignal>
 #include <filesystem>
 #include <iostream>
 
@@ -8,6 +9,11 @@
 #include "ui/platform/gl_window.h"
 
 int main(int argc, char** argv) {
+#ifdef SIGXFSZ
+  // A file-size limit (ulimit -f) must not kill the workbench while it records: ignored, the
+  // write fails with EFBIG and the recorder stops the trial with a clear message instead.
+  std::signal(SIGXFSZ, SIG_IGN);
+#endif
   CLI::App app{"LMC Workbench — design controller layouts, record trials and review results."};
   app.set_version_flag("--version", std::string("lmc-workbench ") + LMC_VERSION);
   std::string capture_dir;

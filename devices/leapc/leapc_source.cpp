@@ -32,6 +32,10 @@ void copy_hand(const LEAP_HAND& h, HandFrame& f) {
   }
 }
 
+// eLeapDevicePID_LMC2 appeared in LeapC.h with SDK 5.11.0 (an enum value, so it cannot be tested
+// with #ifdef): compare with its documented value so older 5.x SDKs still build.
+constexpr std::uint32_t kPidLeapMotionController2 = 0x1206;
+
 struct OpenDevice {
   LEAP_DEVICE handle = nullptr;
   std::string serial;
@@ -118,7 +122,8 @@ void LeapcSource::start(FrameSink& sink) {
     throw Error("LeapC: cannot open the connection (" + leapc_result_name(rs) + ")");
   }
   impl_->connection = connection;
-  if (options_.background_frames) LeapSetPolicyFlags(connection, eLeapPolicyFlag_BackgroundFrames, 0);
+  // Policies are set per device once each is opened (LeapSetPolicyFlagsEx in run()): on a
+  // multi-device-aware connection LeapSetPolicyFlags reaches only the primary device.
   stop_ = false;
   thread_ = std::thread([this, &sink] { run(sink); });
 }
@@ -199,12 +204,22 @@ void LeapcSource::run(FrameSink& sink) {
         if (const eLeapRS srs = LeapSubscribeEvents(im.connection, handle); srs != eLeapRS_Success) {
           notice(DeviceEventKind::kFailure, serial_text, "cannot subscribe to its events (" + leapc_result_name(srs) + "); service ≥ 5.4 needed");
         }
+        // Per device: keep its frames coming while another window has focus (service ≥ 5.4).
+        const eLeapRS prs = options_.background_frames
+                                ? LeapSetPolicyFlagsEx(im.connection, handle, eLeapPolicyFlag_BackgroundFrames, 0)
+                                : eLeapRS_Success;
         im.devices[ref.id] = {handle, serial_text};
         DeviceEvent e;
         e.kind = DeviceEventKind::kAppeared;
-        e.info = {serial_text, "leapc", info.pid == eLeapDevicePID_LMC2 ? "Leap Motion Controller 2" : "Leap Motion Controller"};
+        e.info = {serial_text, "leapc",
+                  static_cast<std::uint32_t>(info.pid) == kPidLeapMotionController2 ? "Leap Motion Controller 2"
+                                                                                   : "Leap Motion Controller"};
         e.host_time_ns = received_ns;
         sink.on_device_event(e);
+        if (prs != eLeapRS_Success)
+          notice(DeviceEventKind::kNotice, serial_text,
+                 "cannot set the background-frames policy (" + leapc_result_name(prs) +
+                     "); it may stop streaming while another window has focus");
         break;
       }
       case eLeapEventType_DeviceLost: {
@@ -219,7 +234,12 @@ void LeapcSource::run(FrameSink& sink) {
         break;
       }
       case eLeapEventType_DeviceFailure: {
-        const std::string* serial = serial_of(msg.device_id);
+        // The event names its device by handle (hDevice, "may be NULL"); else the message's id.
+        const std::string* serial = nullptr;
+        if (msg.device_failure_event->hDevice != nullptr)
+          for (const auto& [id, d] : im.devices)
+            if (d.handle == msg.device_failure_event->hDevice) serial = &d.serial;
+        if (serial == nullptr) serial = serial_of(msg.device_id);
         notice(DeviceEventKind::kFailure, serial ? *serial : "",
                (serial ? "" : "a device failed: ") + leapc_status_text(msg.device_failure_event->status));
         break;

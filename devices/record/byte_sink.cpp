@@ -24,6 +24,7 @@ class FileSink final : public ByteSink {
         return fail("write");
       }
       data.remove_prefix(static_cast<size_t>(n));
+      written_ += static_cast<std::uint64_t>(n);
     }
     return true;
   }
@@ -35,15 +36,21 @@ class FileSink final : public ByteSink {
     return rc == 0 ? true : fail("close");
   }
   std::string error() const override { return error_; }
+  std::uint64_t bytes_written() const override { return written_; }
 
  private:
   bool fail(const char* what) {
-    error_ = std::string(what) + " " + path_.string() + ": " + std::strerror(errno);
+    const int err = errno;
+    error_ = std::string(what) + " " + path_.string() + ": " + std::strerror(err);
+    // Say what the operator can do about the two everyday causes.
+    if (err == EFBIG) error_ += "; the file size limit (ulimit -f) was reached";
+    if (err == ENOSPC) error_ += "; the disk is full: free space or record to another disk";
     return false;
   }
   int fd_;
   std::filesystem::path path_;
   std::string error_;
+  std::uint64_t written_ = 0;
 };
 
 }  // namespace

@@ -1,6 +1,7 @@
 #pragma once
 // Where the recorder's bytes go. The file implementation uses POSIX calls so a full disk or an
 // I/O error surfaces as errno text; tests inject a sink that fails after N bytes.
+#include <cstdint>
 #include <filesystem>
 #include <memory>
 #include <string>
@@ -16,6 +17,9 @@ class ByteSink {
   virtual bool sync() = 0;  // to stable storage
   virtual bool close() = 0;
   virtual std::string error() const = 0;
+  // Bytes that reached the file so far, including those of a write that then failed; lets the
+  // recorder count exactly the complete rows a cut file holds. 0 when the sink cannot tell.
+  virtual std::uint64_t bytes_written() const { return 0; }
 };
 
 // Creates (truncates) the file. Throws lmc::Error naming the path when it cannot be opened.

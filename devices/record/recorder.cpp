@@ -21,6 +21,7 @@ const char* recorder_state_name(RecorderState s) {
     case RecorderState::kRecording: return "recording";
     case RecorderState::kStopped: return "stopped";
     case RecorderState::kFailed: return "failed";
+    case RecorderState::kAborted: return "aborted";
   }
   return "?";
 }
@@ -128,10 +129,13 @@ void Recorder::fail(const std::string& message) {
   failed_ = true;
 }
 
-void Recorder::write_item(const Item& item, std::string& buffer) {
+void Recorder::write_item(const Item& item, std::string& buffer, std::vector<PendingRow>& pending) {
   const HandFrame& f = item.frame;
   buffer += format_lmc_row(f, RecordingKind::kRaw);
-  std::lock_guard lock(stats_mutex_);
+  pending.push_back({f.device_id, f.frame_id, f.timestamp_us, f.hand_present, buffer.size()});
+}
+
+void Recorder::count_row(const PendingRow& f) {
   DeviceRecordStats& s = stats_[f.device_id];
   s.device_id = f.device_id;
   if (s.frames_written == 0) {
@@ -148,11 +152,25 @@ void Recorder::write_item(const Item& item, std::string& buffer) {
   if (f.hand_present) ++s.frames_with_hand;
 }
 
-bool Recorder::push_buffer(std::string& buffer) {
+bool Recorder::push_buffer(std::string& buffer, std::vector<PendingRow>& pending) {
   if (buffer.empty() || failed_) return !failed_;
-  // Count rows only once they reached the file, so "frames written" never overstates.
+  // Rows count (in the status and the sidecar) only once they reached the file, so "frames
+  // written" never overstates: after a failed write, only the complete rows that made it in.
+  const std::uint64_t before = sink_->bytes_written();
   const bool ok = sink_->write(buffer);
+  const std::uint64_t reached = ok ? buffer.size() : sink_->bytes_written() - before;
+  std::int64_t counted = 0;
+  {
+    std::lock_guard lock(stats_mutex_);
+    for (const auto& row : pending) {
+      if (row.end > reached) break;
+      count_row(row);
+      ++counted;
+    }
+  }
+  written_ += counted;
   buffer.clear();
+  pending.clear();
   if (!ok) {
     fail("recording stopped: cannot write " + paths_.recording.string() + " (" + sink_->error() +
          "); the rows written before this point are kept");
@@ -163,7 +181,7 @@ bool Recorder::push_buffer(std::string& buffer) {
 void Recorder::run() {
   std::string buffer;
   buffer.reserve(kWriteChunkBytes + 4096);
-  std::int64_t pending_rows = 0;
+  std::vector<PendingRow> pending;
   auto last_push = std::chrono::steady_clock::now();
   const auto interval = std::chrono::milliseconds(config_.flush_interval_ms);
   Item item;
@@ -173,17 +191,12 @@ void Recorder::run() {
     while (queue_.try_pop(item)) {
       ++popped;
       if (failed_) continue;  // keep draining so producers are not stuck; nothing more is written
-      write_item(item, buffer);
-      ++pending_rows;
-      if (buffer.size() >= kWriteChunkBytes) {
-        if (push_buffer(buffer)) written_ += pending_rows;
-        pending_rows = 0;
-      }
+      write_item(item, buffer, pending);
+      if (buffer.size() >= kWriteChunkBytes) push_buffer(buffer, pending);
     }
     const auto now = std::chrono::steady_clock::now();
     if (stopping || now - last_push >= interval) {
-      if (!failed_ && push_buffer(buffer)) written_ += pending_rows;
-      pending_rows = 0;
+      if (!failed_) push_buffer(buffer, pending);
       last_push = now;
     }
     if (stopping && queue_.size_approx() == 0) break;
@@ -195,12 +208,19 @@ void Recorder::run() {
   if (!sink_->close() && !failed_) fail("recording stopped: " + sink_->error());
 }
 
-RecorderStatus Recorder::stop(const std::vector<std::pair<std::string, std::string>>& serial_to_slot) {
+RecorderStatus Recorder::stop(const std::vector<std::pair<std::string, std::string>>& serial_to_slot,
+                              const std::string& abort_reason) {
   if (!started_) return status();
   stop_requested_ = true;
   if (thread_.joinable()) thread_.join();
   {
     std::lock_guard lock(stats_mutex_);
+    // A write error of our own is the first cause and keeps "failed"; otherwise the caller's
+    // reason makes the trial "aborted".
+    if (!abort_reason.empty() && !failed_ && !aborted_) {
+      error_ = abort_reason;
+      aborted_ = true;
+    }
     host_stop_utc_ = utc_now_iso8601();
     host_stop_ns_ = host_now_ns();
     if (!serial_to_slot.empty()) serial_to_slot_ = serial_to_slot;
@@ -218,7 +238,8 @@ RecorderStatus Recorder::stop(const std::vector<std::pair<std::string, std::stri
     }
   }
   try {
-    write_file_atomically(paths_.sidecar, sidecar_json(failed_ ? "failed" : "completed").dump(2) + "\n");
+    write_file_atomically(paths_.sidecar,
+                          sidecar_json(failed_ ? "failed" : aborted_ ? "aborted" : "completed").dump(2) + "\n");
   } catch (const std::exception& e) {
     fail(std::string("cannot write the session sidecar: ") + e.what());
   }
@@ -234,6 +255,7 @@ RecorderStatus Recorder::status() const {
   st.devices = stats_;
   st.error = error_;
   if (failed_) st.state = RecorderState::kFailed;
+  else if (aborted_) st.state = RecorderState::kAborted;
   else if (!started_) st.state = RecorderState::kIdle;
   else if (stop_requested_ && !thread_.joinable()) st.state = RecorderState::kStopped;
   else st.state = RecorderState::kRecording;

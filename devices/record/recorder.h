@@ -64,11 +64,14 @@ struct DeviceRecordStats {
   std::vector<nlohmann::json> disconnects;  // {host_time_utc, host_ns, message, reconnected}
 };
 
-enum class RecorderState { kIdle, kRecording, kStopped, kFailed };
+// kFailed: a write error stopped the recording; kAborted: the caller stopped the trial because
+// of an error elsewhere (Vicon refused the trigger, a device never streamed, …). Both keep every
+// row written and put the reason in `error` and in the sidecar.
+enum class RecorderState { kIdle, kRecording, kStopped, kFailed, kAborted };
 
 struct RecorderStatus {
   RecorderState state = RecorderState::kIdle;
-  std::string error;  // set when kFailed
+  std::string error;  // set when kFailed or kAborted
   std::int64_t frames_written = 0;
   std::int64_t frames_dropped = 0;
   size_t queue_depth = 0;
@@ -86,8 +89,12 @@ class Recorder final : public FrameConsumer {
   // Throws lmc::Error for a bad trial name or an uncreatable file.
   void start();
   // Drains the queue, writes, syncs and closes the file, writes the final sidecar atomically.
-  // `serial_to_slot` is the hub's final map. Returns the final status (kStopped or kFailed).
-  RecorderStatus stop(const std::vector<std::pair<std::string, std::string>>& serial_to_slot = {});
+  // `serial_to_slot` is the hub's final map. A non-empty `abort_reason` says the trial ended
+  // because of an error outside the recorder: the sidecar then says status "aborted" with that
+  // text as `error` (a write error of the recorder's own stays "failed"). Returns the final
+  // status (kStopped, kFailed or kAborted).
+  RecorderStatus stop(const std::vector<std::pair<std::string, std::string>>& serial_to_slot = {},
+                      const std::string& abort_reason = {});
 
   RecorderStatus status() const;
   bool failed() const { return failed_.load(); }
@@ -108,8 +115,17 @@ class Recorder final : public FrameConsumer {
     std::int64_t host_receive_ns = 0;
   };
   void run();
-  void write_item(const Item& item, std::string& buffer);
-  bool push_buffer(std::string& buffer);
+  // A formatted row waiting in the write buffer; its statistics count once it reached the file.
+  struct PendingRow {
+    int device_id = 0;
+    std::int64_t frame_id = 0;
+    std::int64_t timestamp_us = 0;
+    bool hand_present = false;
+    size_t end = 0;  // offset just past the row's newline in the buffer
+  };
+  void write_item(const Item& item, std::string& buffer, std::vector<PendingRow>& pending);
+  void count_row(const PendingRow& row);  // stats_mutex_ held
+  bool push_buffer(std::string& buffer, std::vector<PendingRow>& pending);
   void fail(const std::string& message);
   nlohmann::json sidecar_json(const char* state) const;
 
@@ -129,6 +145,7 @@ class Recorder final : public FrameConsumer {
   std::int64_t host_start_ns_ = 0, host_stop_ns_ = 0;
   std::string error_;
   std::atomic<bool> failed_{false};
+  std::atomic<bool> aborted_{false};
   std::atomic<bool> stop_requested_{false};
   std::atomic<bool> started_{false};
   std::atomic<std::int64_t> dropped_{0};

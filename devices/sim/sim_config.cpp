@@ -62,6 +62,13 @@ SimConfig sim_config_from_json(const nlohmann::json& j, const std::string& sourc
   SimConfig c;
   JsonReader r(j, source);
   r.require_object();
+  // A misspelt switch ("noize": false) must not leave the behaviour on in silence.
+  r.only_keys({"seed", "motion", "pose_set_rate_hz", "motion_period_s", "sway_mm", "hand_length_mm",
+               "hand_breadth_mm", "rate_min_hz", "rate_max_hz", "rate_wander", "latency_min_ms", "latency_max_ms",
+               "noise", "noise_sigma_mm", "fov_test", "range_mm", "occlusion", "phalanx_radius_mm",
+               "internal_model_bias", "axis_cut", "axis_cut_mm", "elbow_error", "elbow_error_min_mm",
+               "elbow_error_max_mm", "calibration", "calibration_offsets_mm", "unplugs", "serial_prefix",
+               "truth_rate_hz", "device_clock_start_us"});
   if (r.has("seed")) c.seed = static_cast<std::uint64_t>(r.at("seed").integer());
   if (r.has("motion")) {
     try {
@@ -112,6 +119,7 @@ SimConfig sim_config_from_json(const nlohmann::json& j, const std::string& sourc
     JsonReader u = r.at("unplugs");
     for (size_t i = 0; i < u.array_size(); ++i) {
       JsonReader e = u.at(i);
+      e.only_keys({"slot", "at_s", "duration_s"});
       c.unplugs.push_back({e.string("slot"), e.number("at_s"), e.number_or("duration_s", 1.0)});
     }
   }

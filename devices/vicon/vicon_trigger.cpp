@@ -3,16 +3,20 @@
 #include <arpa/inet.h>
 #include <netdb.h>
 #include <netinet/in.h>
+#include <fcntl.h>
 #include <poll.h>
+#include <sys/file.h>
 #include <sys/socket.h>
 #include <unistd.h>
 
 #include <cerrno>
 #include <chrono>
+#include <cstdlib>
 #include <cstring>
 #include <set>
 
 #include "core/common/error.h"
+#include "devices/host_clock.h"
 
 namespace lmc::devices {
 namespace {
@@ -21,7 +25,30 @@ bool looks_numeric(const std::string& host) {
   return !host.empty() && host.find_first_not_of("0123456789.") == std::string::npos;
 }
 
+constexpr std::uint32_t kMaxPacketId = 0x7FFFFFFF;  // kept positive for receivers that read an int
+
+// Seconds since the epoch × 10, so IDs grow across sessions even without the state file.
+std::uint32_t clock_packet_id() {
+  const auto secs =
+      std::chrono::duration_cast<std::chrono::seconds>(std::chrono::system_clock::now().time_since_epoch()).count();
+  return static_cast<std::uint32_t>((secs * 10) & kMaxPacketId);
+}
+
+std::string env_or_empty(const char* name) {
+  const char* v = std::getenv(name);
+  return v == nullptr ? std::string() : std::string(v);
+}
+
 }  // namespace
+
+std::filesystem::path default_packet_id_file() {
+  if (const std::string d = env_or_empty("LMC_STATE_DIR"); !d.empty()) return std::filesystem::path(d) / "vicon-packet-id";
+  if (const std::string d = env_or_empty("XDG_STATE_HOME"); !d.empty())
+    return std::filesystem::path(d) / "lmc-workbench" / "vicon-packet-id";
+  if (const std::string h = env_or_empty("HOME"); !h.empty())
+    return std::filesystem::path(h) / ".local" / "state" / "lmc-workbench" / "vicon-packet-id";
+  return {};
+}
 
 ViconTriggerConfig parse_vicon_target(const std::string& spec) {
   ViconTriggerConfig c;
@@ -77,12 +104,41 @@ ViconTrigger::ViconTrigger(ViconTriggerConfig config) : config_(std::move(config
   if (config_.first_packet_id) {
     next_id_ = *config_.first_packet_id;
   } else {
-    // Seconds since epoch × 10 keeps IDs growing across sessions (field-notes §4.1).
-    const auto secs = std::chrono::duration_cast<std::chrono::seconds>(
-                          std::chrono::system_clock::now().time_since_epoch())
-                          .count();
-    next_id_ = static_cast<std::uint32_t>((secs * 10) & 0x7FFFFFFF);
+    // Never reuse an ID (field-notes §4.1): the clock gives a growing base, the state file the
+    // IDs already used on this host (reserve_packet_id).
+    next_id_ = clock_packet_id();
+    id_file_ = config_.packet_id_file.empty() ? default_packet_id_file() : config_.packet_id_file;
   }
+}
+
+std::uint32_t ViconTrigger::reserve_packet_id(std::string& warning) {
+  if (config_.first_packet_id || id_file_.empty()) return next_id_++;
+  std::error_code ec;
+  std::filesystem::create_directories(id_file_.parent_path(), ec);
+  const int fd = ::open(id_file_.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
+  if (fd < 0) {
+    warning = "Vicon trigger: cannot use the PacketID file " + id_file_.string() + " (" + std::strerror(errno) +
+              "); PacketIDs come from the clock only and may repeat for sessions started in the same second";
+    return next_id_++;
+  }
+  // One writer at a time: two programs triggering at once still get different IDs.
+  while (::flock(fd, LOCK_EX) != 0 && errno == EINTR) {
+  }
+  char buf[32] = {};
+  const ssize_t n = ::pread(fd, buf, sizeof buf - 1, 0);
+  std::uint32_t id = next_id_;
+  if (n > 0) {
+    char* end = nullptr;
+    const unsigned long long last = std::strtoull(buf, &end, 10);
+    if (end != buf && last < kMaxPacketId && last + 1 > id) id = static_cast<std::uint32_t>(last + 1);
+  }
+  const std::string text = std::to_string(id) + "\n";
+  if (::ftruncate(fd, 0) != 0 || ::pwrite(fd, text.data(), text.size(), 0) != static_cast<ssize_t>(text.size()))
+    warning = "Vicon trigger: cannot update the PacketID file " + id_file_.string() + " (" + std::strerror(errno) + ")";
+  ::flock(fd, LOCK_UN);
+  ::close(fd);
+  next_id_ = id >= kMaxPacketId ? 0 : id + 1;
+  return id;
 }
 
 ViconTrigger::~ViconTrigger() {
@@ -113,8 +169,8 @@ ViconSendResult ViconTrigger::send_stop(const std::string& trial_name, bool canc
 }
 
 ViconSendResult ViconTrigger::send(ViconMessage message) {
-  message.packet_id = next_id_++;
   ViconSendResult result;
+  message.packet_id = reserve_packet_id(result.warning);
   const std::string payload = format_vicon_message(message);
   result.message = std::move(message);
   for (int i = 0; i < std::max(1, config_.repeats); ++i) {
@@ -132,6 +188,7 @@ ViconSendResult ViconTrigger::send(ViconMessage message) {
       result.error = "Vicon trigger: short send to " + target();
       return result;
     }
+    if (result.datagrams_sent == 0) result.first_datagram_host_ns = host_now_ns();
     ++result.datagrams_sent;
   }
   return result;

@@ -1,12 +1,15 @@
 #pragma once
 // Sends the Vicon capture trigger over UDP (reference-algorithms.md §7): CaptureStart when all
 // devices stream, CaptureStop at the end, each repeated (default 3 times, as the study did) with
-// the same PacketID so a receiver keeps one; PacketIDs increase per message and start from a
-// time-based base so they are never reused across sessions (Nexus drops IDs it has seen).
+// the same PacketID so a receiver keeps one; PacketIDs increase per message and are never reused
+// across sessions (Nexus drops IDs it has seen): each ID is max(time-based base, last ID any
+// trigger on this host used + 1), the last one kept in a small state file under a lock, so two
+// sessions started in the same second (or two programs at once) still get different IDs.
 // Unicast sockets are connected, so an ICMP "port unreachable" surfaces as an error on a later
 // send instead of vanishing; every failure is reported, never ignored.
 #include <atomic>
 #include <cstdint>
+#include <filesystem>
 #include <functional>
 #include <optional>
 #include <string>
@@ -25,8 +28,16 @@ struct ViconTriggerConfig {
   std::string notes;
   std::string description;
   int delay_ms = 0;
-  std::optional<std::uint32_t> first_packet_id;  // default: derived from the wall clock
+  // Given: IDs are exactly first, first + 1, … and nothing is persisted (tests). Default: see
+  // the top of this file.
+  std::optional<std::uint32_t> first_packet_id;
+  // Where the last PacketID used is kept; empty: default_packet_id_file().
+  std::filesystem::path packet_id_file;
 };
+
+// $LMC_STATE_DIR/vicon-packet-id, else $XDG_STATE_HOME/lmc-workbench/vicon-packet-id, else
+// ~/.local/state/lmc-workbench/vicon-packet-id; empty when none of these can be named.
+std::filesystem::path default_packet_id_file();
 
 // "HOST" or "HOST:PORT" (port default 30). Throws lmc::Error for a bad port.
 ViconTriggerConfig parse_vicon_target(const std::string& spec);
@@ -34,7 +45,9 @@ ViconTriggerConfig parse_vicon_target(const std::string& spec);
 struct ViconSendResult {
   ViconMessage message;
   int datagrams_sent = 0;
+  std::int64_t first_datagram_host_ns = 0;  // host_now_ns() right after the first datagram left (0: none)
   std::string error;  // empty when every repeat went out
+  std::string warning;  // e.g. the PacketID state file could not be used (IDs then come from the clock only)
   bool ok() const { return error.empty(); }
 };
 
@@ -57,7 +70,9 @@ class ViconTrigger {
   ViconTriggerConfig config_;
   int fd_ = -1;
   bool broadcast_ = false;
+  std::uint32_t reserve_packet_id(std::string& warning);
   std::uint32_t next_id_ = 0;
+  std::filesystem::path id_file_;
 };
 
 // Listens for capture start/stop datagrams (Vicon's own broadcast, or our trigger in tests) and

@@ -201,7 +201,7 @@ std::string DevicesViewModel::stop_recording() {
   const RecorderStatus st = recorder_->stop(hub_ ? hub_->serial_to_slot() : std::vector<std::pair<std::string, std::string>>{});
   const std::string file = recorder_->paths().recording.string();
   recorder_.reset();
-  std::string summary = st.state == RecorderState::kFailed
+  std::string summary = st.state == RecorderState::kFailed || st.state == RecorderState::kAborted
                             ? st.error
                             : "recorded " + std::to_string(st.frames_written) + " frames from " +
                                   std::to_string(st.devices.size()) + " devices to " + file;

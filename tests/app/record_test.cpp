@@ -30,7 +30,30 @@ using lmc::test::CliRun;
 using lmc::test::read_text_file;
 using lmc::test::run_lmc;
 
+// The Vicon trigger keeps the last PacketID it used in a state file; these tests keep theirs in a
+// folder of their own, never the user's (ctest runs these in parallel: the file is locked).
+const bool kPrivateStateDir = [] {
+  const auto dir = std::filesystem::temp_directory_path() / "lmc_test_state";
+  std::filesystem::create_directories(dir);
+  ::setenv("LMC_STATE_DIR", dir.c_str(), 1);
+  return true;
+}();
+
 CliRun run(const std::string& args, const std::filesystem::path& logs) { return run_lmc(args, logs); }
+
+// `lmc <args>` under `ulimit -f <blocks>` (the shell's file-size limit).
+CliRun run_with_file_limit(int blocks, const std::string& args, const std::filesystem::path& logs) {
+  std::filesystem::create_directories(logs);
+  const std::string inner = "ulimit -f " + std::to_string(blocks) + " && exec " + lmc::test::shell_quote(LMC_CLI_PATH) + " " + args;
+  const std::string cmd = "/bin/sh -c " + lmc::test::shell_quote(inner) + " >" + lmc::test::shell_quote((logs / "out").string()) +
+                          " 2>" + lmc::test::shell_quote((logs / "err").string());
+  const int status = std::system(cmd.c_str());
+  CliRun r;
+  r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  r.out = read_text_file(logs / "out");
+  r.err = read_text_file(logs / "err");
+  return r;
+}
 
 nlohmann::json json_file(const std::filesystem::path& p) { return nlohmann::json::parse(read_text_file(p)); }
 
@@ -131,8 +154,147 @@ TEST(LmcRecord, SendsTheViconTriggerToALoopbackListener) {
   const auto sj = json_file(dir / "s" / "LMC_Vic_1.session.json");
   ASSERT_EQ(sj.at("vicon_packets").size(), 2u);
   EXPECT_EQ(sj["vicon_packets"][0].at("type"), "CaptureStart");
-  EXPECT_EQ(sj["vicon_packets"][1].at("packet_id").get<long long>(),
-            sj["vicon_packets"][0].at("packet_id").get<long long>() + 1);
+  // Increasing (+1 unless another lmc on this host sent a packet in between: IDs are unique per host).
+  EXPECT_GT(sj["vicon_packets"][1].at("packet_id").get<long long>(),
+            sj["vicon_packets"][0].at("packet_id").get<long long>());
+
+  // Alignment: at CaptureStart every device's clock is tied to the host instant it was sent.
+  const auto& al = sj.at("vicon_alignment");
+  EXPECT_EQ(al.at("event"), "CaptureStart sent");
+  EXPECT_EQ(al.at("packet_id"), sj["vicon_packets"][0].at("packet_id"));
+  EXPECT_GE(al.at("host_ns").get<long long>(), sj.at("host_start_ns").get<long long>());
+  EXPECT_LE(al.at("host_ns").get<long long>(), sj.at("host_stop_ns").get<long long>());
+  ASSERT_EQ(al.at("devices").size(), 4u);
+  for (const auto& d : al.at("devices")) {
+    // Vicon starts only when every device streams, so each has a latest frame.
+    ASSERT_TRUE(d.at("latest_timestamp_us").is_number_integer()) << d.dump();
+    const long long latest = d.at("latest_timestamp_us").get<long long>();
+    const long long at_event = d.at("device_clock_at_event_us").get<long long>();
+    EXPECT_GE(d.at("host_ns_since_latest").get<long long>(), 0) << d.dump();
+    EXPECT_GE(at_event, latest);
+    EXPECT_LT(at_event - latest, 1'000'000) << "the latest frame is less than a second old";
+    EXPECT_EQ(at_event - latest, (d.at("host_ns_since_latest").get<long long>() + 500) / 1000);
+    // It lies within the device's recorded span (the recording started before CaptureStart).
+    bool found = false;
+    for (const auto& sd : sj.at("devices"))
+      if (sd.at("slot") == d.at("slot")) {
+        found = true;
+        EXPECT_GE(latest, sd.at("first_timestamp_us").get<long long>());
+        EXPECT_LE(latest, sd.at("last_timestamp_us").get<long long>());
+        EXPECT_EQ(sd.at("serial"), d.at("serial"));
+      }
+    EXPECT_TRUE(found) << d.dump();
+  }
+}
+
+TEST(LmcRecord, ARefusedViconTriggerAbortsTheTrialAndTheSidecarSaysWhy) {
+  // Nobody listens on the loopback discard port: the kernel refuses, a later send reports it.
+  const auto dir = lmc::test::scratch_dir("record_vicon_refused");
+  const CliRun r = run("record --backend sim --trial Refused --seconds 2 --quiet --vicon 127.0.0.1:9 -o " +
+                           lmc::test::shell_quote((dir / "s").string()),
+                       dir / "logs");
+  EXPECT_EQ(r.exit_code, 1) << r.err;
+  EXPECT_THAT(r.err, HasSubstr("refused"));
+  const auto side = dir / "s" / "LMC_Refused.session.json";
+  ASSERT_TRUE(std::filesystem::exists(side));
+  const auto sj = json_file(side);
+  EXPECT_EQ(sj.at("status"), "aborted");
+  EXPECT_THAT(sj.at("error").get<std::string>(), HasSubstr("refused"));
+  EXPECT_THAT(sj.at("error").get<std::string>(), HasSubstr("127.0.0.1:9"));
+  bool packet_error = false;
+  for (const auto& p : sj.at("vicon_packets")) packet_error = packet_error || p.contains("error");
+  EXPECT_TRUE(packet_error);
+  // lmc info reads the aborted sidecar and shows the reason.
+  const CliRun info = run("info " + lmc::test::shell_quote(side.string()), dir / "info");
+  ASSERT_EQ(info.exit_code, 0) << info.err;
+  EXPECT_THAT(info.out, HasSubstr("status:     aborted"));
+  EXPECT_THAT(info.out, HasSubstr("refused"));
+}
+
+TEST(LmcRecord, InfoDescribesTheSidecar) {
+  const auto dir = lmc::test::scratch_dir("record_info_sidecar");
+  const CliRun r = run("record --backend sim --layout paper-optimized --trial S02_thumb_1 --seconds 3 --motion thumb "
+                       "--fast --seed 3 --quiet -o " + lmc::test::shell_quote(dir.string()),
+                       dir / "logs");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto side = dir / "LMC_S02_thumb_1.session.json";
+  const auto sj = json_file(side);
+
+  const CliRun j = run("info --json " + lmc::test::shell_quote(side.string()), dir / "info_json");
+  ASSERT_EQ(j.exit_code, 0) << j.err;
+  const auto ij = nlohmann::json::parse(j.out);
+  EXPECT_EQ(ij.at("type"), "session");
+  EXPECT_EQ(ij.at("trial"), "S02_thumb_1");
+  EXPECT_EQ(ij.at("status"), "completed");
+  EXPECT_TRUE(ij.at("error").is_null());
+  EXPECT_EQ(ij.at("backend"), "sim");
+  EXPECT_EQ(ij.at("recording_file"), "LMC_S02_thumb_1.raw.txt");
+  EXPECT_EQ(ij.at("layout_name"), sj.at("layout").at("name"));
+  EXPECT_EQ(ij.at("layout_device_count"), 4);
+  EXPECT_EQ(ij.at("serial_to_slot"), sj.at("serial_to_slot"));
+  EXPECT_EQ(ij.at("serial_to_slot").size(), 4u);
+  EXPECT_EQ(ij.at("frames_written"), sj.at("frames_written"));
+  EXPECT_EQ(ij.at("frames_dropped"), 0);
+  EXPECT_EQ(ij.at("host_start_utc"), sj.at("host_start_utc"));
+  EXPECT_EQ(ij.at("host_stop_utc"), sj.at("host_stop_utc"));
+  EXPECT_GT(ij.at("duration_s").get<double>(), 0.0);
+  EXPECT_TRUE(ij.at("vicon_packets").empty());
+  EXPECT_EQ(ij.at("ground_truth").at("file"), "S02_thumb_1.trc");
+  EXPECT_TRUE(ij.at("warnings").empty()) << ij.at("warnings").dump();
+  ASSERT_EQ(ij.at("devices").size(), 4u);
+  long long sum = 0;
+  for (size_t i = 0; i < 4; ++i) {
+    const auto& d = ij.at("devices")[i];
+    const auto& sd = sj.at("devices")[i];
+    EXPECT_EQ(d.at("slot"), sd.at("slot"));
+    EXPECT_EQ(d.at("serial"), sd.at("serial"));
+    EXPECT_EQ(d.at("frames_written"), sd.at("frames_written"));
+    EXPECT_EQ(d.at("gaps"), 0);
+    EXPECT_EQ(d.at("disconnects"), 0);
+    sum += d.at("frames_written").get<long long>();
+  }
+  EXPECT_EQ(sum, sj.at("frames_written").get<long long>());
+
+  const CliRun t = run("info " + lmc::test::shell_quote(side.string()), dir / "info_text");
+  ASSERT_EQ(t.exit_code, 0) << t.err;
+  EXPECT_THAT(t.out, HasSubstr("type:       session sidecar"));
+  EXPECT_THAT(t.out, HasSubstr("trial:      S02_thumb_1"));
+  EXPECT_THAT(t.out, HasSubstr("status:     completed"));
+  EXPECT_THAT(t.out, HasSubstr("LMC4"));
+  EXPECT_THAT(t.out, HasSubstr(sj.at("serial_to_slot").begin().key()));
+  EXPECT_THAT(t.out, HasSubstr("warnings:   none"));
+  // A layout still reads as a layout.
+  const CliRun lay = run("info " + lmc::test::shell_quote(lmc::test::asset_file("layouts/paper-initial.json").string()),
+                         dir / "info_layout");
+  ASSERT_EQ(lay.exit_code, 0) << lay.err;
+  EXPECT_THAT(lay.out, HasSubstr("type:       layout"));
+}
+
+TEST(LmcRecord, AFileSizeLimitStopsTheTrialWithAClearMessageAndKeepsTheRows) {
+  // `ulimit -f`: without SIGXFSZ ignored the kernel would kill lmc mid-trial.
+  const auto dir = lmc::test::scratch_dir("record_ulimit");
+  const CliRun r = run_with_file_limit(200, "record --backend sim --trial big --seconds 120 --fast --quiet -o " +
+                                                lmc::test::shell_quote(dir.string()),
+                                       dir / "logs");
+  ASSERT_EQ(r.exit_code, 1) << "lmc must exit with an error, not die of a signal; stderr: " << r.err;
+  EXPECT_THAT(r.err, HasSubstr("File too large"));
+  EXPECT_THAT(r.err, HasSubstr("ulimit -f"));
+  EXPECT_THAT(r.err, HasSubstr("LMC_big.raw.txt"));
+  EXPECT_THAT(r.err, HasSubstr("kept"));
+  const auto rec = dir / "LMC_big.raw.txt";
+  ASSERT_TRUE(std::filesystem::exists(rec));
+  EXPECT_LE(std::filesystem::file_size(rec), 200u * 1024u);
+  // What reached the file is still a readable recording.
+  const CliRun info = run("info --json " + lmc::test::shell_quote(rec.string()), dir / "info");
+  ASSERT_EQ(info.exit_code, 0) << info.err;
+  const auto ij = nlohmann::json::parse(info.out);
+  EXPECT_GT(ij.at("rows").get<int>(), 50);
+  EXPECT_EQ(ij.at("device_count"), 4);
+  // The sidecar says the trial failed and why.
+  const auto sj = json_file(dir / "LMC_big.session.json");
+  EXPECT_EQ(sj.at("status"), "failed");
+  EXPECT_THAT(sj.at("error").get<std::string>(), HasSubstr("File too large"));
+  EXPECT_EQ(sj.at("frames_written"), ij.at("rows")) << "the sidecar counts the rows the file holds";
 }
 
 // Sends `payload` to 127.0.0.1:port every 50 ms until `stop` (same PacketID: the listener keeps one).
@@ -198,6 +360,13 @@ TEST(LmcRecord, ViconCaptureStartAndStopDriveTheTrial) {
   EXPECT_EQ(sj.at("trial"), "Naiv_Thumb102");
   EXPECT_EQ(sj.at("vicon_trigger_received").at("packet_id"), 900);
   EXPECT_EQ(sj.at("vicon_stop_received").at("packet_id"), 901);
+  // The instant CaptureStart arrived ties every device clock to the Vicon capture.
+  EXPECT_EQ(sj.at("vicon_alignment").at("event"), "CaptureStart received");
+  EXPECT_EQ(sj.at("vicon_alignment").at("packet_id"), 900);
+  EXPECT_EQ(sj.at("vicon_alignment").at("devices").size(), 4u);
+  const CliRun info = run("info " + lmc::test::shell_quote(side.string()), dir / "info");
+  ASSERT_EQ(info.exit_code, 0) << info.err;
+  EXPECT_THAT(info.out, HasSubstr("CaptureStart 'Naiv_Thumb102' PacketID 900 received"));
   EXPECT_GT(sj.at("frames_written").get<int>(), 20);
   EXPECT_TRUE(std::filesystem::exists(dir / "s" / "Naiv_Thumb102.trc"));
 }

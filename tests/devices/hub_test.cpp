@@ -59,6 +59,14 @@ TEST(DeviceHub, BoundSerialGoesToItsSlotOthersFillFreeSlotsInOrder) {
   EXPECT_EQ(map[0], (std::pair<std::string, std::string>{"A1", "LMC1"}));
   EXPECT_EQ(map[1], (std::pair<std::string, std::string>{"B2", "LMC2"}));
   EXPECT_EQ(map[2], (std::pair<std::string, std::string>{"LP-333", "LMC3"}));
+  // The guessed slots are announced as guesses; the bound serial is not.
+  std::string guessed;
+  for (const auto& m : hub.take_messages()) {
+    if (m.find("order of appearance") != std::string::npos) guessed += m + "\n";
+  }
+  EXPECT_NE(guessed.find("A1"), std::string::npos) << guessed;
+  EXPECT_NE(guessed.find("B2"), std::string::npos) << guessed;
+  EXPECT_EQ(guessed.find("LP-333"), std::string::npos) << guessed;
 }
 
 TEST(DeviceHub, UnknownSerialsAreListedForAssignmentWhenAutoAssignIsOff) {

@@ -6,6 +6,12 @@
 #include <map>
 #include <thread>
 
+#include <sys/resource.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <csignal>
+
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
@@ -13,6 +19,7 @@
 #include "core/io/layout_json.h"
 #include "core/io/lmc_recording.h"
 #include "devices/device_hub.h"
+#include "devices/record/clock_alignment.h"
 #include "devices/record/recorder.h"
 #include "devices/record/trial_name.h"
 #include "devices/sim/sim_rig.h"
@@ -230,6 +237,7 @@ class FullDiskSink final : public ByteSink {
   bool sync() override { return inner_->sync(); }
   bool close() override { return inner_->close(); }
   std::string error() const override { return error_; }
+  std::uint64_t bytes_written() const override { return inner_->bytes_written(); }
 
  private:
   std::unique_ptr<ByteSink> inner_;
@@ -269,6 +277,13 @@ TEST(Recorder, DiskFullStopsTheTrialWithAClearMessageAndKeepsWhatWasWritten) {
   const auto side = read_json(rec.paths().sidecar);
   EXPECT_EQ(side["status"], "failed");
   EXPECT_NE(side["error"].get<std::string>().find("No space left"), std::string::npos);
+  // The counts describe the file as it is: exactly its complete rows, per device too.
+  EXPECT_EQ(side["frames_written"].get<size_t>(), back.rows.size());
+  EXPECT_EQ(st.frames_written, static_cast<std::int64_t>(back.rows.size()));
+  std::map<int, std::int64_t> per_device;
+  for (const auto& r : back.rows) ++per_device[r.device_id];
+  for (const auto& d : side["devices"])
+    EXPECT_EQ(d["frames_written"].get<std::int64_t>(), per_device[d["device_id"].get<int>()]) << d["slot"];
 }
 
 TEST(Recorder, FileSinkReportsARealDeviceFullError) {
@@ -276,6 +291,153 @@ TEST(Recorder, FileSinkReportsARealDeviceFullError) {
   auto sink = open_file_sink("/dev/full");
   EXPECT_FALSE(sink->write("x\n"));
   EXPECT_NE(sink->error().find("No space left on device"), std::string::npos) << sink->error();
+}
+
+TEST(Recorder, FileSizeLimitIsAClearWriteErrorNotAKill) {
+  // ulimit -f: with SIGXFSZ ignored (as lmc and lmc-workbench do at start) the write fails with
+  // EFBIG and the sink says what happened. Run in a child: the limit is process-wide.
+  const auto dir = test::scratch_dir("rec_fsize");
+  const auto file = dir / "limited.txt";
+  const pid_t pid = ::fork();
+  ASSERT_GE(pid, 0);
+  if (pid == 0) {
+    std::signal(SIGXFSZ, SIG_IGN);
+    rlimit lim{};
+    lim.rlim_cur = 4096;
+    lim.rlim_max = 4096;
+    if (::setrlimit(RLIMIT_FSIZE, &lim) != 0) ::_exit(10);
+    auto sink = open_file_sink(file);
+    if (!sink->write(std::string(1000, 'a'))) ::_exit(11);  // fits
+    if (sink->write(std::string(8000, 'b'))) ::_exit(12);   // must fail, not kill
+    const std::string e = sink->error();
+    if (e.find("File too large") == std::string::npos) ::_exit(13);
+    if (e.find("ulimit -f") == std::string::npos) ::_exit(14);
+    if (e.find("limited.txt") == std::string::npos) ::_exit(15);
+    ::_exit(0);
+  }
+  int status = 0;
+  ASSERT_EQ(::waitpid(pid, &status, 0), pid);
+  ASSERT_TRUE(WIFEXITED(status)) << "killed by signal " << (WIFSIGNALED(status) ? WTERMSIG(status) : 0);
+  EXPECT_EQ(WEXITSTATUS(status), 0) << "10 setrlimit, 11 first write, 12 no failure, 13-15 message";
+  EXPECT_EQ(std::filesystem::file_size(file), 4096u) << "what fitted is kept";
+}
+
+TEST(Recorder, StopWithAReasonMarksTheTrialAborted) {
+  const auto dir = test::scratch_dir("rec_abort");
+  RecorderConfig rc;
+  rc.output_dir = dir;
+  rc.trial = "abort";
+  rc.layout = paper_initial();
+  Recorder rec(rc);
+  rec.start();
+  HandFrame f;
+  f.device_id = 1;
+  for (int i = 0; i < 3; ++i) {
+    f.frame_id = i;
+    f.timestamp_us = 1000 * i;
+    rec.offer(f, i, false);
+  }
+  const auto st = rec.stop({}, "Vicon trigger: sending to 127.0.0.1:9 failed: Connection refused");
+  EXPECT_EQ(st.state, RecorderState::kAborted);
+  EXPECT_STREQ(recorder_state_name(st.state), "aborted");
+  EXPECT_NE(st.error.find("Connection refused"), std::string::npos);
+  const auto side = read_json(rec.paths().sidecar);
+  EXPECT_EQ(side["status"], "aborted");
+  EXPECT_EQ(side["error"], "Vicon trigger: sending to 127.0.0.1:9 failed: Connection refused");
+  EXPECT_EQ(side["frames_written"], 3) << "the rows written are kept";
+  EXPECT_EQ(read_lmc_recording(rec.paths().recording).rows.size(), 3u);
+}
+
+TEST(Recorder, AWriteErrorStaysFailedWhateverTheAbortReason) {
+  const auto dir = test::scratch_dir("rec_fail_abort");
+  RecorderConfig rc;
+  rc.output_dir = dir;
+  rc.trial = "fa";
+  rc.layout = paper_initial();
+  rc.flush_interval_ms = 10;
+  // Room for the header and a few short rows.
+  const size_t limit = lmc_recording_header(RecordingKind::kRaw).size() + 100;
+  rc.open_sink = [limit](const std::filesystem::path& p) { return std::make_unique<FullDiskSink>(open_file_sink(p), limit); };
+  Recorder rec(rc);
+  rec.start();
+  HandFrame f;
+  f.device_id = 1;
+  for (int i = 0; i < 50 && !rec.failed(); ++i) {
+    f.frame_id = i;
+    rec.offer(f, i, true);
+    std::this_thread::sleep_for(std::chrono::milliseconds(2));
+  }
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(5);
+  while (!rec.failed() && std::chrono::steady_clock::now() < deadline) std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  ASSERT_TRUE(rec.failed());
+  const auto st = rec.stop({}, "something else went wrong later");
+  EXPECT_EQ(st.state, RecorderState::kFailed);
+  const auto side = read_json(rec.paths().sidecar);
+  EXPECT_EQ(side["status"], "failed");
+  EXPECT_NE(side["error"].get<std::string>().find("No space left"), std::string::npos) << side["error"];
+}
+
+TEST(ClockAlignment, EachDeviceClockIsExtrapolatedToTheViconInstant) {
+  HubSnapshot snap;
+  DeviceStatus a;
+  a.serial = "SIM-1";
+  a.slot = "LMC1";
+  a.slot_index = 0;
+  a.frames_received = 10;
+  a.latest_host_receive_ns = 5'000'000'000;
+  HandFrame fa;
+  fa.frame_id = 77;
+  fa.timestamp_us = 1'000'000;
+  a.latest = fa;
+  DeviceStatus silent;  // assigned, no frame yet
+  silent.serial = "SIM-2";
+  silent.slot = "LMC2";
+  silent.slot_index = 1;
+  DeviceStatus stray;  // unassigned: not recorded, not aligned
+  stray.serial = "X";
+  stray.frames_received = 3;
+  stray.latest_host_receive_ns = 4'000'000'000;
+  stray.latest = fa;
+  snap.devices = {a, silent, stray};
+  const auto j = clock_alignment_json(snap, "CaptureStart sent", 5'010'000'000, 1234, "2026-11-22T00:00:00.000Z");
+  EXPECT_EQ(j["event"], "CaptureStart sent");
+  EXPECT_EQ(j["packet_id"], 1234);
+  EXPECT_EQ(j["host_ns"], 5'010'000'000);
+  ASSERT_EQ(j["devices"].size(), 2u);
+  const auto& d = j["devices"][0];
+  EXPECT_EQ(d["device_id"], 1);
+  EXPECT_EQ(d["slot"], "LMC1");
+  EXPECT_EQ(d["serial"], "SIM-1");
+  EXPECT_EQ(d["latest_frame_id"], 77);
+  EXPECT_EQ(d["latest_timestamp_us"], 1'000'000);
+  EXPECT_EQ(d["latest_host_receive_ns"], 5'000'000'000);
+  EXPECT_EQ(d["host_ns_since_latest"], 10'000'000);
+  EXPECT_EQ(d["device_clock_at_event_us"], 1'010'000);  // 10 ms after the latest frame
+  EXPECT_EQ(j["devices"][1]["slot"], "LMC2");
+  EXPECT_TRUE(j["devices"][1]["latest_timestamp_us"].is_null());
+  EXPECT_TRUE(j["devices"][1]["device_clock_at_event_us"].is_null());
+}
+
+TEST(ClockAlignment, HubSnapshotCarriesTheLatestReceiveTime) {
+  Layout l = paper_initial();
+  HubOptions o;
+  std::int64_t now = 7'000'000'000;
+  o.clock = [&] { return now; };
+  DeviceHub hub(l, o);
+  DeviceEvent e;
+  e.kind = DeviceEventKind::kAppeared;
+  e.info.serial = "S1";
+  hub.on_device_event(e);
+  SourceFrame f;
+  f.serial = "S1";
+  f.host_receive_ns = 6'900'000'000;
+  f.frame.timestamp_us = 123'456;
+  hub.on_frame(f);
+  const auto snap = hub.snapshot();
+  ASSERT_FALSE(snap.devices.empty());
+  EXPECT_EQ(snap.devices[0].latest_host_receive_ns, 6'900'000'000);
+  const auto j = clock_alignment_json(snap, "CaptureStart received", now, 1, "");
+  EXPECT_EQ(j["devices"][0]["device_clock_at_event_us"], 123'456 + 100'000);
 }
 
 TEST(Recorder, RowsReachTheFileWhileRecording) {

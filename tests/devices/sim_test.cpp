@@ -285,5 +285,27 @@ TEST(SimConfig, JsonRoundTripAndErrorsNameThePath) {
   EXPECT_THROW(sim_config_from_json(nlohmann::json{{"rate_min_hz", 40}, {"rate_max_hz", 30}}, "cfg.json"), Error);
 }
 
+TEST(SimConfig, UnknownKeysAreRejectedWithTheirPath) {
+  // A misspelt switch must not leave the behaviour on in silence.
+  try {
+    sim_config_from_json(nlohmann::json{{"noize", false}}, "cfg.json");
+    FAIL() << "\"noize\" was accepted";
+  } catch (const Error& e) {
+    const std::string what = e.what();
+    EXPECT_NE(what.find("cfg.json"), std::string::npos) << what;
+    EXPECT_NE(what.find("/noize"), std::string::npos) << what;
+    EXPECT_NE(what.find("noise"), std::string::npos) << "the message lists the known keys: " << what;
+  }
+  try {
+    sim_config_from_json(nlohmann::json::parse(R"({"unplugs": [{"slot": "LMC1", "at_s": 1}, {"slot": "LMC2", "at": 2}]})"),
+                         "cfg.json");
+    FAIL() << "\"at\" inside an unplug was accepted";
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("/unplugs/1/at"), std::string::npos) << e.what();
+  }
+  // Every key the simulator writes into a sidecar reads back.
+  EXPECT_NO_THROW(sim_config_from_json(sim_config_to_json(SimConfig{}), "mem"));
+}
+
 }  // namespace
 }  // namespace lmc::devices

@@ -6,6 +6,7 @@
 #include <unistd.h>
 
 #include <chrono>
+#include <fstream>
 #include <mutex>
 #include <thread>
 #include <vector>
@@ -15,6 +16,7 @@
 #include "core/common/error.h"
 #include "devices/vicon/vicon_message.h"
 #include "devices/vicon/vicon_trigger.h"
+#include "tests/support/reference_data.h"
 
 namespace lmc::devices {
 namespace {
@@ -155,11 +157,102 @@ TEST(ViconTrigger, UnreachablePortIsReportedNotIgnored) {
   c.port = port;
   c.repeats = 3;
   c.repeat_interval_ms = 20;
+  c.packet_id_file = test::scratch_dir("vicon_unreachable") / "vicon-packet-id";  // not the user's state
   ViconTrigger trigger(c);
   std::string error;
   for (int i = 0; i < 5 && error.empty(); ++i) error = trigger.send_start("t").error;
   EXPECT_NE(error.find("refused"), std::string::npos) << error;
   EXPECT_NE(error.find("127.0.0.1:" + std::to_string(port)), std::string::npos) << error;
+}
+
+// A UDP socket on a free loopback port that swallows whatever arrives (no ICMP errors).
+struct Sink {
+  int fd = -1;
+  std::uint16_t port = 0;
+  Sink() {
+    fd = ::socket(AF_INET, SOCK_DGRAM, 0);
+    sockaddr_in addr{};
+    addr.sin_family = AF_INET;
+    addr.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
+    ::bind(fd, reinterpret_cast<sockaddr*>(&addr), sizeof addr);
+    socklen_t len = sizeof addr;
+    ::getsockname(fd, reinterpret_cast<sockaddr*>(&addr), &len);
+    port = ntohs(addr.sin_port);
+  }
+  ~Sink() { ::close(fd); }
+};
+
+TEST(ViconTrigger, PacketIdsNeverRepeatForSessionsStartedInTheSameSecond) {
+  Sink sink;
+  const auto file = test::scratch_dir("vicon_ids") / "state" / "vicon-packet-id";
+  ViconTriggerConfig c;
+  c.host = "127.0.0.1";
+  c.port = sink.port;
+  c.repeats = 1;
+  c.packet_id_file = file;
+  std::vector<std::uint32_t> ids;
+  // Three sessions back to back (well within one second), each with a start and a stop; the
+  // second and third even exist while the first is still open, as two programs would.
+  ViconTrigger a(c);
+  ViconTrigger b(c);
+  for (ViconTrigger* t : {&a, &b}) {
+    const auto start = t->send_start("t");
+    const auto stop = t->send_stop("t");
+    ASSERT_TRUE(start.ok() && stop.ok()) << start.error << stop.error;
+    EXPECT_TRUE(start.warning.empty()) << start.warning;
+    ids.push_back(start.message.packet_id);
+    ids.push_back(stop.message.packet_id);
+  }
+  {
+    ViconTrigger later(c);
+    ids.push_back(later.send_start("t").message.packet_id);
+    ids.push_back(later.send_stop("t").message.packet_id);
+  }
+  // Strictly increasing, so never repeated (a trigger made in the next second starts from the
+  // clock base, 10 further on; within one second each ID is the last + 1).
+  for (size_t i = 1; i < ids.size(); ++i) EXPECT_GT(ids[i], ids[i - 1]) << "IDs keep incrementing: " << i;
+  for (size_t i = 1; i < ids.size(); i += 2) EXPECT_EQ(ids[i], ids[i - 1] + 1) << "stop follows its start: " << i;
+  // The base comes from the clock (seconds × 10): a fresh state file starts there.
+  const auto secs =
+      std::chrono::duration_cast<std::chrono::seconds>(std::chrono::system_clock::now().time_since_epoch()).count();
+  const auto clock_id = static_cast<std::uint32_t>((secs * 10) & 0x7FFFFFFF);
+  EXPECT_LE(ids.front(), clock_id);
+  EXPECT_GE(ids.front() + 20, clock_id);
+  // The state file holds the last ID used.
+  std::ifstream in(file);
+  std::uint32_t last = 0;
+  in >> last;
+  EXPECT_EQ(last, ids.back());
+}
+
+TEST(ViconTrigger, AnUnusablePacketIdFileIsReportedAndSendingGoesOn) {
+  Sink sink;
+  const auto dir = test::scratch_dir("vicon_ids_bad");
+  ViconTriggerConfig c;
+  c.host = "127.0.0.1";
+  c.port = sink.port;
+  c.repeats = 1;
+  c.packet_id_file = dir;  // a folder, not a file
+  ViconTrigger t(c);
+  const auto r = t.send_start("t");
+  EXPECT_TRUE(r.ok()) << r.error;
+  EXPECT_NE(r.warning.find("PacketID file"), std::string::npos) << r.warning;
+  EXPECT_EQ(t.send_stop("t").message.packet_id, r.message.packet_id + 1);
+}
+
+TEST(ViconTrigger, GivenFirstPacketIdIsUsedAsIsAndNothingIsPersisted) {
+  Sink sink;
+  const auto file = test::scratch_dir("vicon_ids_given") / "vicon-packet-id";
+  ViconTriggerConfig c;
+  c.host = "127.0.0.1";
+  c.port = sink.port;
+  c.repeats = 1;
+  c.first_packet_id = 42;
+  c.packet_id_file = file;
+  ViconTrigger t(c);
+  EXPECT_EQ(t.send_start("t").message.packet_id, 42u);
+  EXPECT_EQ(t.send_stop("t").message.packet_id, 43u);
+  EXPECT_FALSE(std::filesystem::exists(file));
 }
 
 }  // namespace

@@ -1,11 +1,12 @@
 // lmc info FILE [--json]: what is in a recording, a TRC file or a layout, before anyone feeds it
 // to processing. The file type is detected from the content, not the extension:
-//   JSON object with "format"   → layout (core/io/layout_json.h)
+//   JSON object with "format": "lmc-session" → the recorder's sidecar LMC_<trial>.session.json
+//   other JSON object with "format" → layout (core/io/layout_json.h)
 //   first line "PathFileType…"  → TRC (core/io/trc.h)
 //   first line "Device ID…"     → LMC recording, any variant (core/io/lmc_recording.h)
 //
 // --json prints ONE object. Keys (rates in Hz, times in s, fractions 0..1; null when unknown):
-//   common:    file, type ("recording" | "trc" | "layout"), warnings [string]
+//   common:    file, type ("recording" | "trc" | "layout" | "session"), warnings [string]
 //   recording: variant ("raw" | "resampled" | "raytraced"), rows, hand_rows, device_count,
 //              device_ids [int], duration_s (first to last timestamp over all devices),
 //              devices [{id, rows, hand_rows, hand_fraction, duration_s, rate_median_hz,
@@ -20,8 +21,18 @@
 //   layout:    name, description, device_count, sensor {range_mm, fov_long_deg, fov_short_deg},
 //              devices [{slot, serial (null if unset), pose {x,y,z,rx,ry,rz} (mm, deg),
 //                        offset_mm [x,y,z]}]
+//   session:   trial, status ("recording" | "completed" | "failed" | "aborted"), error (null when
+//              none), backend, recording_file, layout_name, layout_device_count, host_start_utc,
+//              host_stop_utc, duration_s (host clock), serial_to_slot {serial: slot},
+//              frames_written, frames_dropped, devices [{device_id, slot, serial, frames_written,
+//              frames_with_hand, hand_fraction, frames_dropped_queue, frame_id_gaps, gaps,
+//              gap_ms, disconnects, first_timestamp_us, last_timestamp_us}],
+//              vicon_packets [{type, packet_id, target, datagrams_sent, error}],
+//              vicon_alignment, vicon_trigger_received, vicon_stop_received, stopped_by,
+//              ground_truth (each the sidecar's, or null)
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <iomanip>
 #include <iostream>
 #include <map>
@@ -50,7 +61,13 @@ constexpr const char* kJsonKeysHelp =
     "rate_median_hz, rate_p5_hz, rate_p95_hz, reported_rate_median_hz, visibility_fraction (raytraced)}]; trc: "
     "markers, frames, data_rate_hz, camera_rate_hz, units, duration_s, missing_fraction, marker_stats[{name, "
     "missing_fraction}]; layout: name, description, device_count, sensor{range_mm, fov_long_deg, fov_short_deg}, "
-    "devices[{slot, serial, pose{x,y,z,rx,ry,rz}, offset_mm[3]}]. Unknown values are null.";
+    "devices[{slot, serial, pose{x,y,z,rx,ry,rz}, offset_mm[3]}]; session (recorder sidecar): trial, status, error, "
+    "backend, recording_file, layout_name, layout_device_count, host_start_utc, host_stop_utc, duration_s, "
+    "serial_to_slot{}, frames_written, frames_dropped, devices[{device_id, slot, serial, frames_written, "
+    "frames_with_hand, hand_fraction, frames_dropped_queue, frame_id_gaps, gaps, gap_ms, disconnects, "
+    "first_timestamp_us, last_timestamp_us}], vicon_packets[{type, packet_id, target, datagrams_sent, error}], "
+    "vicon_alignment, vicon_trigger_received, vicon_stop_received, stopped_by, ground_truth. Unknown values are "
+    "null.";
 
 struct InfoOptions {
   std::string file;
@@ -348,6 +365,185 @@ void info_layout(const std::string& file, const json& doc, bool as_json, std::os
   }
 }
 
+// The recorder's sidecar (sessions/README.md). Read leniently: a sidecar of a crashed or older
+// recording may lack keys; what is missing is shown as "-" / null, never an error.
+json value_or_null(const json& obj, const char* key) {
+  return obj.is_object() && obj.contains(key) ? obj.at(key) : json(nullptr);
+}
+
+std::string text_of(const json& v) {
+  if (v.is_null()) return "-";
+  if (v.is_string()) return v.get<std::string>();
+  return v.dump();
+}
+
+std::int64_t int_of(const json& obj, const char* key) {
+  const json v = value_or_null(obj, key);
+  return v.is_number() ? v.get<std::int64_t>() : 0;
+}
+
+void info_session(const std::string& file, const json& doc, bool as_json, std::ostream& out) {
+  const json layout = value_or_null(doc, "layout");
+  const json layout_devices = value_or_null(layout, "devices");
+  const std::string status = text_of(value_or_null(doc, "status"));
+  const json start_ns = value_or_null(doc, "host_start_ns");
+  const json stop_ns = value_or_null(doc, "host_stop_ns");
+  double duration_s = std::nan("");
+  if (start_ns.is_number() && stop_ns.is_number() && stop_ns.get<std::int64_t>() > start_ns.get<std::int64_t>())
+    duration_s = static_cast<double>(stop_ns.get<std::int64_t>() - start_ns.get<std::int64_t>()) * 1e-9;
+  std::vector<std::string> warnings;
+  if (status == "recording")
+    warnings.push_back("status is still \"recording\": the program stopped before the trial was closed (crash?); "
+                       "the recording holds the rows written until then");
+  const json rec_file = value_or_null(doc, "recording_file");
+  if (rec_file.is_string()) {
+    const auto beside = std::filesystem::path(file).parent_path() / rec_file.get<std::string>();
+    if (!std::filesystem::exists(beside))
+      warnings.push_back("recording file " + beside.string() + " not found beside the sidecar");
+  }
+  json devices = json::array();
+  const json src_devices = value_or_null(doc, "devices");
+  if (src_devices.is_array()) {
+    for (const auto& d : src_devices) {
+      const std::int64_t written = int_of(d, "frames_written");
+      const std::int64_t hand = int_of(d, "frames_with_hand");
+      double gap_ms = 0;
+      const json gaps = value_or_null(d, "gaps");
+      if (gaps.is_array())
+        for (const auto& g : gaps) {
+          const json ms = value_or_null(g, "duration_ms");
+          gap_ms += ms.is_number() ? ms.get<double>() : 0.0;
+        }
+      const json disc = value_or_null(d, "disconnects");
+      devices.push_back(
+          {{"device_id", value_or_null(d, "device_id")},
+           {"slot", value_or_null(d, "slot")},
+           {"serial", value_or_null(d, "serial")},
+           {"frames_written", written},
+           {"frames_with_hand", hand},
+           {"hand_fraction", written > 0 ? json(static_cast<double>(hand) / static_cast<double>(written)) : json(nullptr)},
+           {"frames_dropped_queue", int_of(d, "frames_dropped_queue")},
+           {"frame_id_gaps", int_of(d, "frame_id_gaps")},
+           {"gaps", gaps.is_array() ? gaps.size() : 0},
+           {"gap_ms", gap_ms},
+           {"disconnects", disc.is_array() ? disc.size() : 0},
+           {"first_timestamp_us", value_or_null(d, "first_timestamp_us")},
+           {"last_timestamp_us", value_or_null(d, "last_timestamp_us")}});
+    }
+  }
+  json packets = json::array();
+  const json src_packets = value_or_null(doc, "vicon_packets");
+  if (src_packets.is_array())
+    for (const auto& p : src_packets)
+      packets.push_back({{"type", value_or_null(p, "type")},
+                         {"packet_id", value_or_null(p, "packet_id")},
+                         {"target", value_or_null(p, "target")},
+                         {"datagrams_sent", value_or_null(p, "datagrams_sent")},
+                         {"error", value_or_null(p, "error")}});
+  const json map_in = value_or_null(doc, "serial_to_slot");
+  const json serial_map = map_in.is_object() ? map_in : json::object();
+
+  if (as_json) {
+    json j;
+    j["file"] = file;
+    j["type"] = "session";
+    j["trial"] = value_or_null(doc, "trial");
+    j["status"] = value_or_null(doc, "status");
+    j["error"] = value_or_null(doc, "error");
+    j["backend"] = value_or_null(doc, "backend");
+    j["recording_file"] = rec_file;
+    j["layout_name"] = value_or_null(layout, "name");
+    j["layout_device_count"] = layout_devices.is_array() ? json(layout_devices.size()) : json(nullptr);
+    j["host_start_utc"] = value_or_null(doc, "host_start_utc");
+    j["host_stop_utc"] = value_or_null(doc, "host_stop_utc");
+    j["duration_s"] = number_or_null(duration_s);
+    j["serial_to_slot"] = serial_map;
+    j["frames_written"] = value_or_null(doc, "frames_written");
+    j["frames_dropped"] = value_or_null(doc, "frames_dropped");
+    j["devices"] = devices;
+    j["vicon_packets"] = packets;
+    j["vicon_alignment"] = value_or_null(doc, "vicon_alignment");
+    j["vicon_trigger_received"] = value_or_null(doc, "vicon_trigger_received");
+    j["vicon_stop_received"] = value_or_null(doc, "vicon_stop_received");
+    j["stopped_by"] = value_or_null(doc, "stopped_by");
+    j["ground_truth"] = value_or_null(doc, "ground_truth");
+    j["warnings"] = warnings;
+    out << j.dump(2) << "\n";
+    return;
+  }
+  out << "file:       " << file << "\n";
+  out << "type:       session sidecar (lmc-session " << text_of(value_or_null(doc, "format_version")) << ")\n";
+  out << "trial:      " << text_of(value_or_null(doc, "trial")) << "\n";
+  out << "status:     " << status << "\n";
+  if (const json err = value_or_null(doc, "error"); !err.is_null()) out << "error:      " << text_of(err) << "\n";
+  out << "backend:    " << text_of(value_or_null(doc, "backend")) << "\n";
+  out << "recording:  " << text_of(rec_file) << "\n";
+  out << "layout:     " << text_of(value_or_null(layout, "name")) << " ("
+      << (layout_devices.is_array() ? std::to_string(layout_devices.size()) : std::string("?")) << " devices)\n";
+  out << "started:    " << text_of(value_or_null(doc, "host_start_utc")) << "\n";
+  out << "stopped:    " << text_of(value_or_null(doc, "host_stop_utc"));
+  if (std::isfinite(duration_s)) out << " (" << fixed(duration_s, 3) << " s)";
+  out << "\n";
+  out << "frames:     " << text_of(value_or_null(doc, "frames_written")) << " written, "
+      << text_of(value_or_null(doc, "frames_dropped")) << " dropped\n";
+  out << "serials:    ";
+  if (serial_map.empty()) out << "-";
+  bool first_serial = true;
+  for (const auto& [serial, slot] : serial_map.items()) {
+    out << (first_serial ? "" : ", ") << serial << " -> " << text_of(slot);
+    first_serial = false;
+  }
+  out << "\n";
+  out << "vicon:      " << packets.size() << " trigger packet(s) sent";
+  for (const auto& p : packets) {
+    out << "\n  - " << text_of(p["type"]) << " PacketID " << text_of(p["packet_id"]) << " to " << text_of(p["target"])
+        << " (" << text_of(p["datagrams_sent"]) << "x)";
+    if (!p["error"].is_null()) out << " ERROR: " << text_of(p["error"]);
+  }
+  out << "\n";
+  for (const char* key : {"vicon_trigger_received", "vicon_stop_received"}) {
+    const json got = value_or_null(doc, key);
+    if (!got.is_object()) continue;
+    out << "vicon in:   " << (std::string(key) == "vicon_stop_received" ? "CaptureStop" : "CaptureStart") << " '"
+        << text_of(value_or_null(got, "name")) << "' PacketID " << text_of(value_or_null(got, "packet_id"))
+        << " received at " << text_of(value_or_null(got, "host_time_utc")) << "\n";
+  }
+  if (const json by = value_or_null(doc, "stopped_by"); !by.is_null()) out << "stopped by: " << text_of(by) << "\n";
+  const json align = value_or_null(doc, "vicon_alignment");
+  if (align.is_object()) {
+    out << "alignment:  " << text_of(value_or_null(align, "event")) << " at " << text_of(value_or_null(align, "host_time_utc"));
+    const json ad = value_or_null(align, "devices");
+    if (ad.is_array())
+      for (const auto& d : ad)
+        out << "\n  - " << text_of(value_or_null(d, "slot")) << ": device clock "
+            << text_of(value_or_null(d, "device_clock_at_event_us")) << " us (latest frame "
+            << text_of(value_or_null(d, "latest_timestamp_us")) << " us)";
+    out << "\n";
+  }
+  const json truth = value_or_null(doc, "ground_truth");
+  if (truth.is_object())
+    out << "truth:      " << text_of(value_or_null(truth, "file")) << ", " << text_of(value_or_null(truth, "frames"))
+        << " frames at " << text_of(value_or_null(truth, "rate_hz")) << " Hz, device clock at time 0 "
+        << text_of(value_or_null(truth, "device_clock_at_time_zero_us")) << " us\n";
+  if (!devices.empty()) {
+    out << "\n"
+        << std::left << std::setw(7) << "slot" << std::setw(22) << "serial" << std::right << std::setw(8) << "frames"
+        << std::setw(8) << "hand%" << std::setw(9) << "dropped" << std::setw(9) << "id_gaps" << std::setw(6) << "gaps"
+        << std::setw(10) << "gap_ms" << std::setw(13) << "disconnects"
+        << "\n";
+    for (const auto& d : devices) {
+      const double pct = d["hand_fraction"].is_number() ? 100.0 * d["hand_fraction"].get<double>() : std::nan("");
+      out << std::left << std::setw(7) << text_of(d["slot"]) << std::setw(22) << text_of(d["serial"]) << std::right
+          << std::setw(8) << text_of(d["frames_written"]) << std::setw(8) << fixed(pct, 1) << std::setw(9)
+          << text_of(d["frames_dropped_queue"]) << std::setw(9) << text_of(d["frame_id_gaps"]) << std::setw(6)
+          << text_of(d["gaps"]) << std::setw(10) << fixed(d["gap_ms"].get<double>(), 0) << std::setw(13)
+          << text_of(d["disconnects"]) << "\n";
+    }
+    out << "\n";
+  }
+  print_warnings(out, warnings);
+}
+
 void run_info(const InfoOptions& opt) {
   const std::string& file = opt.file;
   const std::string bytes = lmc::text::read_file_bytes(file);
@@ -360,7 +556,16 @@ void run_info(const InfoOptions& opt) {
     const json doc = lmc::parse_json_text(bytes, file);
     if (!doc.is_object() || !doc.contains("format")) {
       throw lmc::Error(lmc::ErrorLocation{file, 0, 0, "/format"},
-                       "JSON file without \"format\": not a layout this version knows");
+                       "JSON file without \"format\": not a layout or session sidecar this version knows");
+    }
+    if (doc.at("format") == "lmc-session") {
+      info_session(file, doc, opt.json, std::cout);
+      return;
+    }
+    if (doc.at("format").is_string()) {
+      throw lmc::Error(lmc::ErrorLocation{file, 0, 0, "/format"},
+                       "unknown JSON format \"" + doc.at("format").get<std::string>() +
+                           "\": expected a layout (format 1) or a session sidecar (\"lmc-session\")");
     }
     info_layout(file, doc, opt.json, std::cout);
     return;
@@ -381,13 +586,16 @@ void run_info(const InfoOptions& opt) {
 
 void setup_info(CLI::App& app) {
   auto opt = std::make_shared<InfoOptions>();
-  app.add_option("file", opt->file, "Recording (.txt), TRC (.trc) or layout (.json); type detected from content")
+  app.add_option("file", opt->file,
+                 "Recording (.txt), TRC (.trc), layout (.json) or session sidecar (LMC_<trial>.session.json); type "
+                 "detected from content")
       ->required();
   app.add_flag("--json", opt->json, "Print one JSON object instead of text");
   app.footer(kJsonKeysHelp);
   app.callback([opt] { run_info(*opt); });
 }
 
-const lmc::cli::CommandRegistration reg{"info", "Describe a recording, TRC or layout file", 10, setup_info};
+const lmc::cli::CommandRegistration reg{"info", "Describe a recording, TRC, layout or session sidecar file", 10,
+                                        setup_info};
 
 }  // namespace

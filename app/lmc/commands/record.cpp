@@ -9,7 +9,10 @@
 // CaptureStop at the end, each sent --vicon-repeats times) goes to HOST:PORT. --fast runs the
 // simulator in simulated time, faster than real time. --vicon-listen PORT instead waits for
 // Vicon's own CaptureStart (its Name becomes the trial name unless --trial is given) and records
-// until CaptureStop. Ctrl-C stops the trial cleanly.
+// until CaptureStop. Ctrl-C stops the trial cleanly. At CaptureStart (sent or received) every
+// device's latest frame goes into the sidecar's "vicon_alignment" (devices/README.md). A trial
+// ended by an error (Vicon refused, a device never streamed) keeps its rows and its sidecar says
+// "aborted" with the error; a write error (disk full, `ulimit -f`) says "failed".
 #include <atomic>
 #include <chrono>
 #include <csignal>
@@ -31,6 +34,7 @@
 #include "core/io/trc.h"
 #include "devices/device_hub.h"
 #include "devices/host_clock.h"
+#include "devices/record/clock_alignment.h"
 #include "devices/record/recorder.h"
 #include "devices/record/trial_name.h"
 #include "devices/sim/sim_source.h"
@@ -129,13 +133,14 @@ void run_record(const RecordOptions& opt) {
   }
   // Vicon's own start/stop broadcasts (or another lab program's) drive the trial.
   std::mutex vicon_in_mutex;
-  std::vector<ViconMessage> vicon_in;
+  std::vector<std::pair<ViconMessage, std::int64_t>> vicon_in;  // with the host time it arrived
   std::unique_ptr<ViconListener> listener;
   if (listen) {
     listener = std::make_unique<ViconListener>(opt.vicon_listen_address, static_cast<std::uint16_t>(opt.vicon_listen_port),
                                                [&](const ViconMessage& m) {
+                                                 const std::int64_t at = host_now_ns();
                                                  std::lock_guard lock(vicon_in_mutex);
-                                                 vicon_in.push_back(m);
+                                                 vicon_in.emplace_back(m, at);
                                                });
     if (!opt.quiet)
       std::cerr << "lmc record: waiting for CaptureStart on " << opt.vicon_listen_address << ":" << listener->port() << "\n";
@@ -182,7 +187,13 @@ void run_record(const RecordOptions& opt) {
   bool vicon_started = false;
   auto send_vicon = [&](bool start) {
     if (!vicon) return;
+    // Every device's latest frame just before CaptureStart leaves: with the send time it ties
+    // each device clock to the instant Vicon starts (sidecar "vicon_alignment").
+    const HubSnapshot before = hub.snapshot();
     const ViconSendResult r = start ? vicon->send_start(trial) : vicon->send_stop(trial);
+    if (start && recorder && r.datagrams_sent > 0)
+      recorder->note("vicon_alignment", clock_alignment_json(before, "CaptureStart sent", r.first_datagram_host_ns,
+                                                             r.message.packet_id, utc_now_iso8601()));
     nlohmann::json p = {{"type", start ? "CaptureStart" : "CaptureStop"},
                         {"packet_id", r.message.packet_id},
                         {"target", vicon->target()},
@@ -190,6 +201,10 @@ void run_record(const RecordOptions& opt) {
                         {"host_time_utc", utc_now_iso8601()},
                         {"host_ns", host_now_ns()}};
     if (!r.ok()) p["error"] = r.error;
+    if (!r.warning.empty()) {
+      p["warning"] = r.warning;
+      std::cerr << "lmc record: " << r.warning << "\n";
+    }
     if (recorder) recorder->note_vicon_packet(p);
     if (!r.ok()) {
       std::cerr << "lmc record: " << r.error << "\n";
@@ -208,12 +223,12 @@ void run_record(const RecordOptions& opt) {
     print_messages(hub, opt.quiet);
     const double now = elapsed();
     if (listen) {
-      std::vector<ViconMessage> got;
+      std::vector<std::pair<ViconMessage, std::int64_t>> got;
       {
         std::lock_guard lock(vicon_in_mutex);
         got.swap(vicon_in);
       }
-      for (const auto& m : got) {
+      for (const auto& [m, received_ns] : got) {
         if (m.type == ViconMessage::Type::kStart && !recorder) {
           if (opt.trial.empty()) {
             if (auto why = validate_trial_name(m.name); !why.empty()) {
@@ -229,6 +244,8 @@ void run_record(const RecordOptions& opt) {
             }
           }
           begin_recording();
+          recorder->note("vicon_alignment", clock_alignment_json(hub.snapshot(), "CaptureStart received", received_ns,
+                                                                 m.packet_id, utc_now_iso8601()));
           recorder->note("vicon_trigger_received", {{"type", "CaptureStart"}, {"name", m.name}, {"packet_id", m.packet_id},
                                                     {"host_time_utc", utc_now_iso8601()}});
           record_start_s = now;
@@ -257,6 +274,7 @@ void run_record(const RecordOptions& opt) {
     }
     if (g_interrupted) {
       std::cerr << "\nlmc record: interrupted; stopping the trial\n";
+      if (recorder) recorder->note("stopped_by", "operator (Ctrl-C)");
       break;
     }
     if (!opt.quiet && now - last_status >= 1.0) {
@@ -298,8 +316,10 @@ void run_record(const RecordOptions& opt) {
       if (failure.empty()) failure = std::string("cannot write the ground truth: ") + e.what();
     }
   }
-  const RecorderStatus st = recorder->stop(hub.serial_to_slot());
-  if (failure.empty() && st.state == RecorderState::kFailed) failure = st.error;
+  // An abort (Vicon refused the trigger, a device never streamed, …) makes the sidecar say
+  // "aborted" with the reason; a write error of the recorder's own stays "failed".
+  const RecorderStatus st = recorder->stop(hub.serial_to_slot(), failure);
+  if (failure.empty() && (st.state == RecorderState::kFailed || st.state == RecorderState::kAborted)) failure = st.error;
 
   const HubSnapshot snap = hub.snapshot();
   std::cout << "trial " << trial << ": " << st.frames_written << " frames from " << st.devices.size()
@@ -323,7 +343,10 @@ void run_record(const RecordOptions& opt) {
   if (sim != nullptr && std::filesystem::exists(paths.truth_trc))
     std::cout << "  truth:     " << paths.truth_trc.string() << " (" << truth_seconds << " s at "
               << settings.sim.truth_rate_hz << " Hz)\n";
-  if (!failure.empty()) throw lmc::Error(failure + " (the rows written so far are kept)");
+  if (!failure.empty()) {
+    if (failure.find("kept") == std::string::npos) failure += " (the rows written so far are kept)";
+    throw lmc::Error(failure);
+  }
 }
 
 void setup_record(CLI::App& app) {

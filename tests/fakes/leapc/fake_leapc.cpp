@@ -43,6 +43,9 @@ struct State {
   std::unique_ptr<Queued> current;  // the message the client holds until its next poll
   std::map<std::uint32_t, std::string> serials;  // plugged devices
   std::set<std::uint32_t> subscribed;
+  std::map<std::uint32_t, LEAP_DEVICE> opened;           // the client's open handles by device id
+  std::map<std::uint32_t, std::uint64_t> device_policy;  // LeapSetPolicyFlagsEx, by device id
+  std::map<std::uint32_t, eLeapRS> policy_ex_result;     // injected failures
   Stats stats;
   std::atomic<int> polling{0};
 };
@@ -78,6 +81,9 @@ void reset() {
   s.current.reset();
   s.serials.clear();
   s.subscribed.clear();
+  s.opened.clear();
+  s.device_policy.clear();
+  s.policy_ex_result.clear();
   s.stats = {};
 }
 
@@ -101,13 +107,30 @@ void unplug(std::uint32_t id) {
   push(std::move(q));
 }
 
-void device_failure(std::uint32_t id, eLeapDeviceStatus status) {
+void device_failure(std::uint32_t id, eLeapDeviceStatus status, bool with_handle, bool with_message_device_id) {
   auto q = std::make_unique<Queued>();
   q->type = eLeapEventType_DeviceFailure;
-  q->device_id = id;
+  q->device_id = with_message_device_id ? id : 0;
   q->failure.status = status;
   q->failure.hDevice = nullptr;  // "may be NULL" per the reference
+  if (with_handle) {
+    std::lock_guard lock(state().mutex);
+    auto it = state().opened.find(id);
+    if (it != state().opened.end()) q->failure.hDevice = it->second;
+  }
   push(std::move(q));
+}
+
+void fail_policy_ex(std::uint32_t id, eLeapRS rs) {
+  std::lock_guard lock(state().mutex);
+  if (rs == eLeapRS_Success) state().policy_ex_result.erase(id);
+  else state().policy_ex_result[id] = rs;
+}
+
+std::uint64_t device_policy(std::uint32_t id) {
+  std::lock_guard lock(state().mutex);
+  auto it = state().device_policy.find(id);
+  return it == state().device_policy.end() ? 0 : it->second;
 }
 
 void status_change(std::uint32_t id, std::uint32_t last_status, std::uint32_t status) {
@@ -224,6 +247,16 @@ eLeapRS LeapSetPolicyFlags(LEAP_CONNECTION c, uint64_t set, uint64_t clear) {
   return eLeapRS_Success;
 }
 
+eLeapRS LeapSetPolicyFlagsEx(LEAP_CONNECTION c, LEAP_DEVICE d, uint64_t set, uint64_t clear) {
+  if (c == nullptr || d == nullptr) return eLeapRS_InvalidArgument;
+  std::lock_guard lock(state().mutex);
+  ++state().stats.policy_ex_calls;
+  if (auto it = state().policy_ex_result.find(d->id); it != state().policy_ex_result.end()) return it->second;
+  auto& flags = state().device_policy[d->id];
+  flags = (flags | set) & ~clear;
+  return eLeapRS_Success;
+}
+
 eLeapRS LeapPollConnection(LEAP_CONNECTION c, uint32_t timeout, LEAP_CONNECTION_MESSAGE* evt) {
   auto& s = state();
   if (c == nullptr || evt == nullptr) return eLeapRS_InvalidArgument;
@@ -283,6 +316,7 @@ eLeapRS LeapOpenDevice(LEAP_DEVICE_REF ref, LEAP_DEVICE* out) {
   if (it == state().serials.end()) return eLeapRS_CannotOpenDevice;
   ++state().stats.devices_opened;
   *out = new _LEAP_DEVICE{ref.id, it->second};
+  state().opened[ref.id] = *out;
   return eLeapRS_Success;
 }
 
@@ -291,6 +325,7 @@ void LeapCloseDevice(LEAP_DEVICE d) {
   {
     std::lock_guard lock(state().mutex);
     ++state().stats.devices_closed;
+    if (auto it = state().opened.find(d->id); it != state().opened.end() && it->second == d) state().opened.erase(it);
   }
   delete d;
 }

@@ -17,7 +17,14 @@ void reset();
 // Service side.
 void plug(std::uint32_t device_id, const std::string& serial);  // queues a Device event
 void unplug(std::uint32_t device_id);                            // queues DeviceLost
-void device_failure(std::uint32_t device_id, eLeapDeviceStatus status);
+// A DeviceFailure event. `with_handle`: hDevice is the handle the client opened for the device
+// (the reference says it "may be NULL"); `with_message_device_id`: the message's device_id is set.
+void device_failure(std::uint32_t device_id, eLeapDeviceStatus status, bool with_handle = false,
+                    bool with_message_device_id = true);
+// The next LeapSetPolicyFlagsEx calls for this device return `rs` (eLeapRS_Success clears it).
+void fail_policy_ex(std::uint32_t device_id, eLeapRS rs);
+// Policy flags set on one device with LeapSetPolicyFlagsEx (0 when never set).
+std::uint64_t device_policy(std::uint32_t device_id);
 void status_change(std::uint32_t device_id, std::uint32_t last_status, std::uint32_t status);
 void dropped_frame(std::uint32_t device_id, std::int64_t frame_id);
 void connection_lost();
@@ -41,7 +48,8 @@ struct Stats {
   int tracking_delivered = 0;
   int tracking_suppressed = 0;  // queued for a device nobody subscribed to
   int concurrent_polls = 0;
-  std::uint64_t policy_set = 0;
+  std::uint64_t policy_set = 0;  // connection-wide flags (LeapSetPolicyFlags: the primary device only)
+  int policy_ex_calls = 0;       // LeapSetPolicyFlagsEx calls (per device)
   int pending = 0;  // queued messages not yet polled
 };
 Stats stats();

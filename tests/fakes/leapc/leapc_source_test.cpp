@@ -3,7 +3,9 @@
 // failures, dropped frames, a lost service connection (issue #5, field-notes §1.2).
 #include <chrono>
 #include <functional>
+#include <string>
 #include <thread>
+#include <vector>
 
 #include <gtest/gtest.h>
 
@@ -74,7 +76,13 @@ TEST_F(LeapcBackend, FourDevicesAreDiscoveredSubscribedAndMappedBySerial) {
   EXPECT_EQ(st.multi_device_aware, 1);
   EXPECT_EQ(st.devices_opened, 4);
   EXPECT_EQ(st.subscribed, 4);
-  EXPECT_EQ(st.policy_set & eLeapPolicyFlag_BackgroundFrames, static_cast<std::uint64_t>(eLeapPolicyFlag_BackgroundFrames));
+  // Background frames are requested per device (LeapSetPolicyFlagsEx): the connection-wide
+  // LeapSetPolicyFlags would reach only the primary device.
+  EXPECT_EQ(st.policy_ex_calls, 4);
+  for (const std::uint32_t id : {7u, 3u, 9u, 4u})
+    EXPECT_EQ(fake_leapc::device_policy(id) & eLeapPolicyFlag_BackgroundFrames,
+              static_cast<std::uint64_t>(eLeapPolicyFlag_BackgroundFrames))
+        << "device " << id;
 
   // Interleaved tracking: device id k sends hands whose palm encodes k.
   const std::uint32_t ids[] = {7, 3, 9, 4};
@@ -190,6 +198,51 @@ TEST_F(LeapcBackend, FailuresDropsAndServiceLossAreReported) {
   EXPECT_TRUE(has("low frame rate detected"));
   EXPECT_TRUE(has("connection to the Ultraleap service lost"));
   EXPECT_EQ(hub.snapshot().devices[0].frames_dropped, 2);
+}
+
+TEST_F(LeapcBackend, APolicyThatCannotBeSetIsReportedAndTheDeviceStillStreams) {
+  DeviceHub hub(layout_with_serials());
+  Recorded rec;
+  hub.set_consumer(&rec);
+  hub.add_source(std::make_unique<LeapcSource>());
+  hub.start();
+  fake_leapc::fail_policy_ex(2, eLeapRS_NotAvailable);
+  fake_leapc::plug(1, "LP11111");
+  fake_leapc::plug(2, "LP22222");
+  ASSERT_TRUE(wait_for([&] { return fake_leapc::stats().subscribed == 2; }));
+  fake_leapc::track(2, 1, 100, 0, {fake_leapc::make_hand(eLeapHandType_Right, 2)});
+  ASSERT_TRUE(wait_for([&] { return rec.size() == 1; }));
+  hub.stop();
+  EXPECT_EQ(fake_leapc::stats().policy_ex_calls, 2);
+  EXPECT_NE(fake_leapc::device_policy(1) & eLeapPolicyFlag_BackgroundFrames, 0u);
+  EXPECT_EQ(fake_leapc::device_policy(2), 0u);
+  bool told = false;
+  for (const auto& m : hub.take_messages())
+    told = told || (m.find("LP22222") != std::string::npos && m.find("background-frames policy") != std::string::npos &&
+                    m.find("eLeapRS_NotAvailable") != std::string::npos);
+  EXPECT_TRUE(told);
+}
+
+TEST_F(LeapcBackend, DeviceFailureIsMatchedByItsDeviceHandle) {
+  DeviceHub hub(layout_with_serials());
+  hub.add_source(std::make_unique<LeapcSource>());
+  hub.start();
+  fake_leapc::plug(5, "LP33333");
+  fake_leapc::plug(6, "LP44444");
+  ASSERT_TRUE(wait_for([&] { return fake_leapc::stats().subscribed == 2; }));
+  hub.take_messages();
+  // No device id on the message: only the event's hDevice says which controller failed.
+  fake_leapc::device_failure(6, eLeapDeviceStatus_BadTransport, /*with_handle=*/true, /*with_message_device_id=*/false);
+  ASSERT_TRUE(wait_for([&] { return drained() == 0; }));
+  std::vector<std::string> msgs;
+  ASSERT_TRUE(wait_for([&] {
+    for (auto& m : hub.take_messages()) msgs.push_back(m);
+    return !msgs.empty();
+  }));
+  hub.stop();
+  bool found = false;
+  for (const auto& m : msgs) found = found || m.find("LMC4 (LP44444) failure: bad transport") != std::string::npos;
+  EXPECT_TRUE(found) << (msgs.empty() ? std::string("no message") : msgs.front());
 }
 
 TEST(LeapcNames, ResultAndStatusText) {
