@@ -18,6 +18,7 @@
 #include "core/io/layout_json.h"
 #include "devices/source_factory.h"
 #include "devices/view/devices_view_model.h"
+#include "ui/widgets/file_browser.h"
 
 namespace lmc::ui {
 namespace {
@@ -157,12 +158,43 @@ class DevicesTab final : public Tab {
       ImGui::EndCombo();
     }
     ImGui::SameLine();
+    if (ImGui::Button("Open...")) layout_browser_.open(FileBrowser::Mode::kOpen, assets_dir() / "layouts");
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("Use a layout file of your own (its serials bind controllers to slots)");
+    ImGui::SameLine();
+    if (ImGui::Button("Save with serials...")) {
+      save_browser_.open(FileBrowser::Mode::kSave, sessions_dir(), vm_.layout().name + "-serials.json");
+    }
+    if (ImGui::IsItemHovered()) {
+      ImGui::SetTooltip("Write this layout with every controller's serial in its slot, so each controller returns to "
+                        "its slot next time");
+    }
+    if (const auto chosen = layout_browser_.draw()) use_layout_file(*chosen);
+    if (const auto chosen = save_browser_.draw()) {
+      try {
+        save_layout(vm_.layout(), *chosen);
+        status_.set_status("Saved " + chosen->string() + " with the serial of every assigned controller");
+      } catch (const std::exception& e) {
+        status_.set_status(e.what(), true);
+      }
+    }
+    ImGui::SameLine();
     if (!vm_.running()) {
       if (ImGui::Button("Start")) start(backend_spec());
     } else {
       if (ImGui::Button("Stop")) vm_.stop();
       ImGui::SameLine();
       ImGui::Text("%s running %.0f s", vm_.backend().c_str(), vm_.running_seconds());
+    }
+  }
+
+  void use_layout_file(const std::filesystem::path& path) {
+    try {
+      const bool was_running = vm_.running();
+      vm_.set_layout(load_layout(path));
+      status_.set_status("Devices use layout " + path.string());
+      if (was_running) start(backend_spec());
+    } catch (const std::exception& e) {
+      status_.set_status(e.what(), true);
     }
   }
 
@@ -321,6 +353,8 @@ class DevicesTab final : public Tab {
   char replay_[512] = "";
   char trial_[80] = "";
   char folder_[512] = "";
+  FileBrowser layout_browser_{"Open layout", ".json"};
+  FileBrowser save_browser_{"Save layout with serials", ".json"};
 };
 
 }  // namespace
