@@ -126,8 +126,8 @@ TrcData parse_trc(std::istream& in, const std::string& source_name) {
   }
   const int header_markers = int_of(require("NumMarkers"), "NumMarkers");
   const auto nf = header.find("NumFrames");
-  const std::optional<int> header_frames =
-      nf == header.end() ? std::nullopt : std::optional<int>(int_of(nf->second, "NumFrames"));
+  // −1: no NumFrames in the header (a plain int: GCC 12 warns falsely on an optional here at -O1).
+  const int header_frames = nf == header.end() ? -1 : int_of(nf->second, "NumFrames");
   const auto start = header.find("OrigDataStartFrame");
   trc.orig_data_start_frame = start == header.end() ? 1 : int_of(start->second, "OrigDataStartFrame");
 
@@ -224,9 +224,9 @@ TrcData parse_trc(std::istream& in, const std::string& source_name) {
     trc.positions.push_back(std::move(row));
   }
 
-  if (header_frames && *header_frames != trc.frame_count()) {
+  if (header_frames >= 0 && header_frames != trc.frame_count()) {
     trc.warnings.push_back(format_error(ErrorLocation{source_name, values_line.number},
-                                        "header says NumFrames " + std::to_string(*header_frames) +
+                                        "header says NumFrames " + std::to_string(header_frames) +
                                             " but the file holds " + std::to_string(trc.frame_count()) +
                                             " rows; using the rows"));
   }
