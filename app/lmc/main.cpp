@@ -40,6 +40,21 @@ int main(int argc, char** argv) {
     cmd.setup(*sub);
   }
 
+  // CLI11 alone would answer "A subcommand is required" for a misspelt command: name it instead.
+  if (argc < 2) {
+    std::cerr << app.help();
+    return 2;
+  }
+  if (const std::string first = argv[1]; !first.empty() && first[0] != '-') {
+    const bool known = std::any_of(registry.begin(), registry.end(), [&](const auto& c) { return c.name == first; });
+    if (!known) {
+      std::cerr << "lmc: unknown command '" << first << "'; commands:";
+      for (const auto& c : registry) std::cerr << ' ' << c.name;
+      std::cerr << " (lmc --help describes each)\n";
+      return 2;
+    }
+  }
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
