@@ -1,4 +1,4 @@
-// Runs the built `lmc bench` (LMC_CLI_PATH) on a tiny workload: checks the report, not speed.
+// Runs the built `lmc bench` (lmc::test::cli_path()) on a tiny workload: checks the report, not speed.
 #include <gtest/gtest.h>
 #include <sys/wait.h>
 

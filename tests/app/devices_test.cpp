@@ -1,4 +1,4 @@
-// Runs the real `lmc devices` binary (LMC_CLI_PATH) on the simulator, a replay and bad input.
+// Runs the real `lmc devices` binary (lmc::test::cli_path()) on the simulator, a replay and bad input.
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 #include <sys/wait.h>

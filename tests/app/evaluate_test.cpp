@@ -1,4 +1,4 @@
-// Runs the built `lmc evaluate` (LMC_CLI_PATH).
+// Runs the built `lmc evaluate` (lmc::test::cli_path()).
 #include <gtest/gtest.h>
 #include <sys/wait.h>
 

@@ -1,4 +1,4 @@
-// Runs the real `lmc info` binary (LMC_CLI_PATH) on the study's files and on bad input.
+// Runs the real `lmc info` binary (lmc::test::cli_path()) on the study's files and on bad input.
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
@@ -106,7 +106,7 @@ TEST(LmcInfo, TrcJson) {
 }
 
 TEST(LmcInfo, TrcWithGapsText) {
-  const auto path = std::filesystem::path(LMC_SOURCE_DIR) / "tests/fixtures/io/trc_missing_markers.trc";
+  const auto path = lmc::test::source_dir() / "tests/fixtures/io/trc_missing_markers.trc";
   const CliRun r = run_in("info " + lmc::test::shell_quote(path.string()), "info_trc_text");
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_THAT(r.out, HasSubstr("markers:    2"));
@@ -116,7 +116,7 @@ TEST(LmcInfo, TrcWithGapsText) {
 }
 
 TEST(LmcInfo, LayoutJson) {
-  const auto path = std::filesystem::path(LMC_SOURCE_DIR) / "assets/layouts/paper-initial.json";
+  const auto path = lmc::test::source_dir() / "assets/layouts/paper-initial.json";
   const CliRun r = run_in("info --json " + lmc::test::shell_quote(path.string()), "info_layout_json");
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const auto j = nlohmann::json::parse(r.out);
@@ -128,7 +128,7 @@ TEST(LmcInfo, LayoutJson) {
 }
 
 TEST(LmcInfo, BadFileExitsOneWithFileNameOnStderr) {
-  const auto path = std::filesystem::path(LMC_SOURCE_DIR) / "tests/fixtures/io/raw_point_garbage.txt";
+  const auto path = lmc::test::source_dir() / "tests/fixtures/io/raw_point_garbage.txt";
   const CliRun r = run_in("info " + lmc::test::shell_quote(path.string()), "info_bad");
   EXPECT_EQ(r.exit_code, 1);
   EXPECT_TRUE(r.out.empty()) << r.out;

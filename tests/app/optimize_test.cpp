@@ -1,4 +1,4 @@
-// Runs the built `lmc optimize` (LMC_CLI_PATH) on small searches.
+// Runs the built `lmc optimize` (lmc::test::cli_path()) on small searches.
 #include <gtest/gtest.h>
 #include <sys/wait.h>
 

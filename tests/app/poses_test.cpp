@@ -1,4 +1,4 @@
-// Runs the built `lmc poses` (LMC_CLI_PATH).
+// Runs the built `lmc poses` (lmc::test::cli_path()).
 #include <gtest/gtest.h>
 #include <sys/wait.h>
 

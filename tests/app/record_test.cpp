@@ -44,7 +44,7 @@ CliRun run(const std::string& args, const std::filesystem::path& logs) { return 
 // `lmc <args>` under `ulimit -f <blocks>` (the shell's file-size limit).
 CliRun run_with_file_limit(int blocks, const std::string& args, const std::filesystem::path& logs) {
   std::filesystem::create_directories(logs);
-  const std::string inner = "ulimit -f " + std::to_string(blocks) + " && exec " + lmc::test::shell_quote(LMC_CLI_PATH) + " " + args;
+  const std::string inner = "ulimit -f " + std::to_string(blocks) + " && exec " + lmc::test::shell_quote(lmc::test::cli_path().string()) + " " + args;
   const std::string cmd = "/bin/sh -c " + lmc::test::shell_quote(inner) + " >" + lmc::test::shell_quote((logs / "out").string()) +
                           " 2>" + lmc::test::shell_quote((logs / "err").string());
   const int status = std::system(cmd.c_str());

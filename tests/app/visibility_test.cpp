@@ -1,4 +1,4 @@
-// Runs the built `lmc visibility` (LMC_CLI_PATH) on the studys validation trial.
+// Runs the built `lmc visibility` (lmc::test::cli_path()) on the studys validation trial.
 #include <gtest/gtest.h>
 #include <sys/wait.h>
 

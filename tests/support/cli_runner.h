@@ -1,5 +1,5 @@
 #pragma once
-// Runs the built `lmc` binary (LMC_CLI_PATH) the way a user would, capturing stdout and stderr
+// Runs the built `lmc` binary (cli_path()) the way a user would, capturing stdout and stderr
 // separately. Shared by every test under tests/app/.
 #include <sys/wait.h>
 #include <unistd.h>
@@ -9,6 +9,8 @@
 #include <fstream>
 #include <sstream>
 #include <string>
+
+#include "tests/support/build_paths.h"
 
 namespace lmc::test {
 
@@ -44,7 +46,7 @@ inline CliRun run_lmc(const std::string& args, std::filesystem::path log_dir = {
     log_dir = pattern;
   }
   std::filesystem::create_directories(log_dir);
-  const std::string cmd = shell_quote(LMC_CLI_PATH) + " " + args + " >" + shell_quote((log_dir / "out").string()) +
+  const std::string cmd = shell_quote(cli_path().string()) + " " + args + " >" + shell_quote((log_dir / "out").string()) +
                           " 2>" + shell_quote((log_dir / "err").string());
   const int status = std::system(cmd.c_str());
   CliRun r;

@@ -6,11 +6,13 @@
 #include <filesystem>
 #include <string>
 
+#include "tests/support/build_paths.h"
+
 namespace lmc::test {
 
 inline std::filesystem::path reference_data_dir() {
   if (const char* env = std::getenv("LMC_REFERENCE_DATA_DIR"); env != nullptr && *env != '\0') return env;
-  return LMC_REFERENCE_DATA_DIR;
+  return default_reference_dir();
 }
 
 inline std::filesystem::path reference_file(const std::string& relative) {
@@ -18,7 +20,7 @@ inline std::filesystem::path reference_file(const std::string& relative) {
 }
 
 inline std::filesystem::path asset_file(const std::string& relative) {
-  return std::filesystem::path(LMC_TEST_ASSETS_DIR) / relative;
+  return test_assets_dir() / relative;
 }
 
 // A fresh, empty folder for one test's files.

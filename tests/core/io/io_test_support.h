@@ -10,11 +10,12 @@
 #include <string>
 
 #include "core/common/error.h"
+#include "tests/support/build_paths.h"
 
 namespace lmc::test {
 
 inline std::filesystem::path io_fixture(const std::string& name) {
-  return std::filesystem::path(LMC_SOURCE_DIR) / "tests" / "fixtures" / "io" / name;
+  return source_dir() / "tests" / "fixtures" / "io" / name;
 }
 
 // Runs `f`, expects an lmc::Error naming `file` (in the message and the location), `line` and

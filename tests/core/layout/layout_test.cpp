@@ -8,11 +8,12 @@
 #include "core/common/error.h"
 #include "core/io/layout_json.h"
 #include "core/layout/layout.h"
+#include "tests/support/build_paths.h"
 
 namespace lmc {
 namespace {
 
-std::filesystem::path asset(const std::string& rel) { return std::filesystem::path(LMC_TEST_ASSETS_DIR) / rel; }
+std::filesystem::path asset(const std::string& rel) { return lmc::test::test_assets_dir() / rel; }
 
 TEST(DevicePose, RotationIsRzRyRxAppliedXFirst) {
   DevicePose p;

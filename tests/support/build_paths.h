@@ -1,0 +1,16 @@
+#pragma once
+// Where the tests find the source tree, the assets, the reference data and the built programs.
+// The absolute paths are compiled into build_paths.cpp alone: as -D flags on every test file they
+// would make each compile depend on the checkout's folder, and ccache could not share work
+// between clones (CI builds a fresh clone).
+#include <filesystem>
+
+namespace lmc::test {
+
+std::filesystem::path source_dir();            // the repository root
+std::filesystem::path test_assets_dir();       // <source>/assets
+std::filesystem::path default_reference_dir(); // <source>/../shared/reference-data
+std::filesystem::path cli_path();              // the built `lmc`
+std::filesystem::path workbench_path();        // the built `lmc-workbench`
+
+}  // namespace lmc::test
