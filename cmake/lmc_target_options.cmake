@@ -18,8 +18,8 @@ function(lmc_target_options target)
                                              -fno-omit-frame-pointer)
     target_link_options(${target} PRIVATE -fsanitize=address,undefined)
   endif()
-  # No absolute paths here (they would tie every object to the checkout's folder and defeat
-  # ccache across clones): the assets path is compiled into core/common/paths.cpp alone.
+  # No absolute paths here (they would tie every object to the checkout's folder): the assets
+  # path is compiled into core/common/paths.cpp alone.
   target_compile_definitions(${target} PRIVATE LMC_VERSION="${PROJECT_VERSION}")
   # Parsing Eigen and nlohmann-json is about 40 % of compiling a typical file here: precompile them
   # once per target (CI builds from scratch on two cores and must stay well under 15 minutes).

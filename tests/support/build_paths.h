@@ -1,8 +1,7 @@
 #pragma once
 // Where the tests find the source tree, the assets, the reference data and the built programs.
 // The absolute paths are compiled into build_paths.cpp alone: as -D flags on every test file they
-// would make each compile depend on the checkout's folder, and ccache could not share work
-// between clones (CI builds a fresh clone).
+// would tie each object to the checkout's folder.
 #include <filesystem>
 
 namespace lmc::test {
