@@ -5,6 +5,16 @@
 
 namespace lmc {
 
+std::string without_stage_suffix(std::string stem) {
+  for (const std::string suffix : {".raw", ".resampled", ".raytraced"}) {
+    if (stem.size() > suffix.size() && stem.compare(stem.size() - suffix.size(), suffix.size(), suffix) == 0) {
+      stem.erase(stem.size() - suffix.size());
+      break;
+    }
+  }
+  return stem;
+}
+
 std::string trial_name_of(const std::string& file_name) {
   std::string s = std::filesystem::path(file_name).filename().string();
   // Strip extensions we know (possibly two: ".raw.txt").

@@ -28,4 +28,7 @@ TrialTag parse_trial_tag(const std::string& file_or_name);
 // `.raw`, `.resampled`, `.raytraced`, `.lmc` suffixes removed.
 std::string trial_name_of(const std::string& file_name);
 
+// `stem` without one trailing stage suffix (`.raw`, `.resampled`, `.raytraced`), prefixes kept.
+std::string without_stage_suffix(std::string stem);
+
 }  // namespace lmc

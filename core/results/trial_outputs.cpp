@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "core/io/atomic_write.h"
+#include "core/processing/trial_tag.h"
 
 namespace lmc {
 
@@ -50,14 +51,7 @@ void stats_block(std::ostringstream& o, const MeasureStats& s) {
 // (`.raw`, `.resampled`, `.raytraced`) go too, so every variant of one trial names it the same.
 std::string stem_of(const std::string& path, const std::string& fallback) {
   if (path.empty()) return fallback;
-  std::string stem = std::filesystem::path(path).stem().string();
-  for (const std::string suffix : {".raw", ".resampled", ".raytraced"}) {
-    if (stem.size() > suffix.size() && stem.compare(stem.size() - suffix.size(), suffix.size(), suffix) == 0) {
-      stem.erase(stem.size() - suffix.size());
-      break;
-    }
-  }
-  return stem;
+  return without_stage_suffix(std::filesystem::path(path).stem().string());
 }
 
 nlohmann::json arr(const double* v, size_t n) {

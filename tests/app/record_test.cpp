@@ -43,16 +43,7 @@ CliRun run(const std::string& args, const std::filesystem::path& logs) { return 
 
 // `lmc <args>` under `ulimit -f <blocks>` (the shell's file-size limit).
 CliRun run_with_file_limit(int blocks, const std::string& args, const std::filesystem::path& logs) {
-  std::filesystem::create_directories(logs);
-  const std::string inner = "ulimit -f " + std::to_string(blocks) + " && exec " + lmc::test::shell_quote(lmc::test::cli_path().string()) + " " + args;
-  const std::string cmd = "/bin/sh -c " + lmc::test::shell_quote(inner) + " >" + lmc::test::shell_quote((logs / "out").string()) +
-                          " 2>" + lmc::test::shell_quote((logs / "err").string());
-  const int status = std::system(cmd.c_str());
-  CliRun r;
-  r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  r.out = read_text_file(logs / "out");
-  r.err = read_text_file(logs / "err");
-  return r;
+  return run_lmc(args, logs, "ulimit -f " + std::to_string(blocks) + " &&");
 }
 
 nlohmann::json json_file(const std::filesystem::path& p) { return nlohmann::json::parse(read_text_file(p)); }

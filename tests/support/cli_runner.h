@@ -38,16 +38,18 @@ inline std::string shell_quote(const std::string& s) {
 
 // `lmc <args>`; the streams are kept as files in `log_dir` (created when missing). With no
 // `log_dir`, a fresh folder is made per call: ctest runs the tests of one binary as parallel
-// processes, so fixed names would race.
-inline CliRun run_lmc(const std::string& args, std::filesystem::path log_dir = {}) {
+// processes, so fixed names would race. `shell_prefix` runs first in the same shell (e.g.
+// "ulimit -f 200 &&" to give lmc a file-size limit).
+inline CliRun run_lmc(const std::string& args, std::filesystem::path log_dir = {}, const std::string& shell_prefix = {}) {
   if (log_dir.empty()) {
     std::string pattern = (std::filesystem::temp_directory_path() / "lmc_cli_XXXXXX").string();
     if (::mkdtemp(pattern.data()) == nullptr) return {};
     log_dir = pattern;
   }
   std::filesystem::create_directories(log_dir);
-  const std::string cmd = shell_quote(cli_path().string()) + " " + args + " >" + shell_quote((log_dir / "out").string()) +
-                          " 2>" + shell_quote((log_dir / "err").string());
+  const std::string inner = shell_prefix + (shell_prefix.empty() ? "" : " exec ") + shell_quote(cli_path().string()) + " " + args;
+  const std::string cmd = "/bin/sh -c " + shell_quote(inner) + " >" + shell_quote((log_dir / "out").string()) + " 2>" +
+                          shell_quote((log_dir / "err").string());
   const int status = std::system(cmd.c_str());
   CliRun r;
   r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
