@@ -1,0 +1,105 @@
+#pragma once
+// The recorder's sidecar `LMC_<trial>.session.json` as one type (sessions/README.md has the key
+// table). The recorder writes it with recorder_sidecar_to_json, and `lmc info`, processing, the
+// quality check and the session runner read it with read_recorder_sidecar, so the format has one
+// reader and one writer. Reading is lenient where a crash explains a gap (a sidecar left at
+// "recording" lacks the stop time and the final counts: those stay at their defaults and
+// `complete` is false) and strict where a value is present but wrong (a string where a number
+// belongs is an error naming the file and the JSON path).
+#include <cstdint>
+#include <filesystem>
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+namespace lmc {
+
+struct SidecarGap {
+  std::int64_t from_timestamp_us = 0;  // last frame before the silence (device clock)
+  std::int64_t to_timestamp_us = 0;    // first frame after it
+  double duration_ms() const { return static_cast<double>(to_timestamp_us - from_timestamp_us) / 1000.0; }
+};
+
+struct SidecarDisconnect {
+  std::string host_time_utc;
+  std::int64_t host_ns = 0;
+  std::string message;
+  std::string reconnected_host_time_utc;  // empty when it never came back during the trial
+};
+
+struct SidecarDevice {
+  int device_id = 0;  // slot number, LMC1 = 1
+  std::string slot;
+  std::string serial;
+  std::int64_t frames_written = 0;
+  std::int64_t frames_with_hand = 0;
+  std::int64_t frames_dropped_queue = 0;
+  std::int64_t frame_id_gaps = 0;
+  std::int64_t first_timestamp_us = 0;
+  std::int64_t last_timestamp_us = 0;
+  std::vector<SidecarGap> gaps;
+  std::vector<SidecarDisconnect> disconnects;
+};
+
+struct SidecarViconPacket {
+  std::string type;  // CaptureStart | CaptureStop
+  std::int64_t packet_id = 0;
+  std::string target;
+  int datagrams_sent = 0;
+  std::string host_time_utc;
+  std::int64_t host_ns = 0;
+  std::string error;    // sending failed
+  std::string warning;  // e.g. the PacketID state file could not be used
+};
+
+struct SidecarGroundTruth {
+  std::string file;  // T.trc beside the sidecar
+  double rate_hz = 0;
+  std::int64_t frames = 0;
+  std::int64_t device_clock_at_time_zero_us = 0;
+  std::string mapping;
+};
+
+struct RecorderSidecar {
+  int format_version = 1;
+  std::string trial;
+  std::string status;  // recording | completed | failed | aborted
+  std::string error;
+  std::string stopped_by;
+  std::string software_name, software_version;
+  std::string backend;  // sim | leapc | replay
+  std::string recording_file, recording_format;
+  std::string host_start_utc, host_stop_utc;
+  std::int64_t host_start_ns = 0, host_stop_ns = 0;
+  nlohmann::json layout;  // the full layout JSON (core/io/layout_json.h reads it)
+  std::vector<std::pair<std::string, std::string>> serial_to_slot;
+  std::vector<SidecarDevice> devices;
+  std::int64_t frames_written = 0, frames_dropped = 0;
+  std::vector<SidecarViconPacket> vicon_packets;
+  nlohmann::json vicon_trigger_received;  // null unless listen mode
+  nlohmann::json vicon_stop_received;
+  nlohmann::json vicon_alignment;  // null when no CaptureStart (devices/record/clock_alignment.h)
+  nlohmann::json events = nlohmann::json::array();
+  std::optional<SidecarGroundTruth> ground_truth;
+  nlohmann::json extra = nlohmann::json::object();
+  // Keys this version does not know, kept so a rewrite never drops what a newer writer added.
+  nlohmann::json unknown = nlohmann::json::object();
+
+  bool complete() const { return status != "recording"; }
+  double host_duration_s() const;  // NaN unless both host times are known and ordered
+  const SidecarDevice* device(int device_id) const;
+};
+
+// The JSON of the sidecar (keys as sessions/README.md lists them).
+nlohmann::json recorder_sidecar_to_json(const RecorderSidecar& sidecar);
+// `source` names the file in errors ("…/LMC_T.session.json#/devices/2/frames_written: …").
+RecorderSidecar recorder_sidecar_from_json(const nlohmann::json& j, const std::string& source);
+// Reads the file (limits and errors as read_json_file) and checks "format": "lmc-session".
+RecorderSidecar read_recorder_sidecar(const std::filesystem::path& path);
+// True when the JSON says it is a sidecar ("format": "lmc-session").
+bool is_recorder_sidecar(const nlohmann::json& j);
+
+}  // namespace lmc

@@ -1,0 +1,81 @@
+#pragma once
+// The quality verdict seconds after a trial (issue #10): per controller frames, rate, hand
+// presence, gaps and drops; how often each finger is seen by at least one controller (ray-traced
+// against the block's layout, the engine processing uses); the range of motion the trial's joint
+// reached; the Vicon trigger's fate. The verdict is pass, warn or fail with reasons in plain
+// words. Fail is only for recording faults (a controller missing or starved, the hand absent,
+// Vicon not triggered, a write error, a trial cut short): what the study measures (the initial
+// layout seeing a vertical hand poorly) is at most a warn and never a reason to redo.
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "core/io/lmc_recording.h"
+#include "core/io/recorder_sidecar.h"
+#include "core/layout/layout.h"
+#include "core/session/quality_thresholds.h"
+
+namespace lmc::session {
+
+struct DeviceQuality {
+  int device_id = 0;
+  std::string slot;
+  std::string serial;
+  std::int64_t frames = 0;
+  double median_rate_hz = 0;           // from consecutive device timestamps
+  double rate_p5_hz = 0, rate_p95_hz = 0;
+  double hand_fraction = 0;            // of its frames
+  double longest_gap_s = 0;            // longest silence between frames, or at either end
+  double longest_no_hand_s = 0;        // longest span of frames without a hand
+  std::int64_t frame_id_gaps = 0;
+  std::int64_t dropped = 0;            // frames the recorder could not keep up with
+  int disconnects = 0;
+};
+
+struct RomQuality {
+  std::string joint;        // as in the protocol (an angle name of core/processing/measures.h)
+  double expected_deg = 0;
+  double reached_deg = 0;   // 95th − 5th percentile of the fused angle over the trial (NaN if unknown)
+};
+
+struct ViconQuality {
+  bool expected = false;     // the trial was meant to trigger Vicon
+  bool start_sent = false;
+  bool stop_sent = false;
+  std::string error;         // first sending error
+  std::optional<bool> export_found;  // set when an export folder was configured
+  std::string export_file;
+};
+
+struct QualityReport {
+  std::string verdict = "pass";  // pass | warn | fail
+  std::vector<std::string> reasons;  // one line each, most serious first
+  double duration_s = 0;             // recorded span on the device clocks
+  double planned_s = 0;
+  std::vector<DeviceQuality> devices;
+  std::vector<double> finger_seen_fraction;  // thumb…pinky: frames seen by ≥ 1 controller
+  std::optional<RomQuality> rom;
+  ViconQuality vicon;
+};
+
+struct QualityInputs {
+  const LmcRecording* recording = nullptr;  // required
+  const RecorderSidecar* sidecar = nullptr; // required
+  Layout layout;                            // the block's layout (also in the sidecar)
+  double planned_s = 0;
+  QualityThresholds thresholds;
+  std::vector<RomExpectation> rom;          // dynamic trials: the joint and what it should reach
+  bool vicon_expected = false;
+  std::optional<std::filesystem::path> vicon_export_dir;  // where <trial>.trc / .c3d should appear
+};
+
+QualityReport assess_trial(const QualityInputs& in);
+
+nlohmann::json quality_to_json(const QualityReport& report);
+// Reads what quality_to_json wrote (the journal and the manifest keep it); `source` for errors.
+QualityReport quality_from_json(const nlohmann::json& j, const std::string& source);
+
+}  // namespace lmc::session
