@@ -5,11 +5,11 @@
 #include <functional>
 #include <string>
 
+#include "core/common/utc_time.h"  // utc_now_iso8601, shared with core
+
 namespace lmc::devices {
 
 std::int64_t host_now_ns();
-// "2026-11-22T01:23:45.678Z"
-std::string utc_now_iso8601();
 
 // Injectable clock (tests and simulated time pass their own).
 using HostClock = std::function<std::int64_t()>;

@@ -72,14 +72,28 @@ bool JsonReader::boolean() const {
 }
 
 nlohmann::json parse_json_text(const std::string& text, const std::string& source) {
+  // The parser itself is iterative, but copying and destroying a value recurse once per level:
+  // a few kilobytes of "[[[[…" would overflow the stack later, far from the file. Stop at the
+  // depth no file of ours comes near.
+  const auto depth_guard = [&](int depth, nlohmann::json::parse_event_t event, nlohmann::json&) {
+    if (depth > kMaxJsonDepth &&
+        (event == nlohmann::json::parse_event_t::object_start || event == nlohmann::json::parse_event_t::array_start))
+      throw Error(ErrorLocation{source}, "JSON nested deeper than " + std::to_string(kMaxJsonDepth) + " levels");
+    return true;
+  };
   try {
-    return nlohmann::json::parse(text);
+    return nlohmann::json::parse(text, depth_guard);
   } catch (const nlohmann::json::parse_error& e) {
     throw Error(ErrorLocation{source}, std::string("not valid JSON: ") + e.what());
   }
 }
 
 nlohmann::json read_json_file(const std::filesystem::path& path) {
+  std::error_code ec;
+  const auto size = std::filesystem::file_size(path, ec);
+  if (!ec && size > kMaxJsonFileBytes)
+    throw Error(ErrorLocation{path.string()}, "file is " + std::to_string(size >> 20) + " MB; JSON files of this program are at most " +
+                                                  std::to_string(kMaxJsonFileBytes >> 20) + " MB");
   std::ifstream in(path, std::ios::binary);
   if (!in) throw Error(ErrorLocation{path.string()}, "cannot open file");
   std::ostringstream ss;

@@ -1,6 +1,8 @@
 #pragma once
 // Typed access to JSON values that reports the JSON path of anything missing or mistyped, so
 // every loader names the file and the exact field a user must fix.
+#include <cstdint>
+#include <filesystem>
 #include <initializer_list>
 #include <nlohmann/json.hpp>
 #include <string>
@@ -46,7 +48,13 @@ class JsonReader {
   std::string path_;
 };
 
-// Parses text as JSON; a syntax error is reported with the file and the byte position.
+// Limits of every JSON file this program reads (layouts, sidecars, protocols, manifests are
+// kilobytes; journals are read line by line).
+inline constexpr int kMaxJsonDepth = 256;
+inline constexpr std::uintmax_t kMaxJsonFileBytes = 64u << 20;
+
+// Parses text as JSON; a syntax error is reported with the file and the byte position, nesting
+// deeper than kMaxJsonDepth is refused.
 nlohmann::json parse_json_text(const std::string& text, const std::string& source);
 nlohmann::json read_json_file(const std::filesystem::path& path);
 

@@ -128,6 +128,10 @@ Layout resolve_layout(const TrialJob& job, const std::optional<std::string>& lay
       return layout_from_json(j["layout"], job.sidecar->string() + "#/layout");
     }
   }
+  if (job.layout_json) {
+    if (used) *used = "the session's layout for this block";
+    return layout_from_json(*job.layout_json, job.trial + " (session manifest layout)");
+  }
   const TrialTag tag = parse_trial_tag(job.trial);
   const char* preset = nullptr;
   if (tag.layout == "initial") preset = "paper-initial";

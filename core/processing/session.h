@@ -24,6 +24,9 @@ struct TrialJob {
   std::filesystem::path lmc;
   std::optional<std::filesystem::path> vicon;
   std::optional<std::filesystem::path> sidecar;
+  // The layout the trial was recorded with, when its folder knows it (a subject session's
+  // manifest); used when neither --layout nor a sidecar gives one.
+  std::optional<nlohmann::json> layout_json;
 };
 
 // `input` is an LMC file or a folder. `vicon` (optional) is a Vicon file (single trial) or a

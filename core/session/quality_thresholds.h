@@ -10,7 +10,7 @@ namespace lmc::session {
 
 // A dynamic trial's joint and the range of motion the subject is asked to reach.
 struct RomExpectation {
-  std::string joint;        // an angle name of core/processing/measures.h, e.g. "Wrist", "Index_MCP"
+  std::string joint;        // an angle name of core/processing/measures.h: "wrist", "index_mcp", …
   double expected_deg = 0;  // the range the cue asks for (max − min over the trial)
 };
 

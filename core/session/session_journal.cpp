@@ -1,0 +1,91 @@
+#include "core/session/session_journal.h"
+
+#include <fcntl.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstring>
+#include <fstream>
+#include <sstream>
+
+#include "core/common/error.h"
+#include "core/io/json_checked.h"
+
+namespace fs = std::filesystem;
+
+namespace lmc::session {
+
+JournalWriter::JournalWriter(const fs::path& path, bool create) : path_(path) {
+  const int flags = O_WRONLY | O_APPEND | O_CLOEXEC | (create ? (O_CREAT | O_EXCL) : 0);
+  fd_ = ::open(path.c_str(), flags, 0644);
+  if (fd_ < 0) throw Error(ErrorLocation{path.string()}, std::string("cannot open the journal: ") + std::strerror(errno));
+}
+
+JournalWriter::~JournalWriter() {
+  if (fd_ >= 0) ::close(fd_);
+}
+
+JournalWriter::JournalWriter(JournalWriter&& other) noexcept : path_(std::move(other.path_)), fd_(other.fd_) {
+  other.fd_ = -1;
+}
+
+void JournalWriter::append(const nlohmann::json& event) {
+  // One write() of the whole line: with O_APPEND a line is never interleaved with another
+  // writer's, and a crash leaves at most this one line cut.
+  const std::string line = event.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace) + "\n";
+  const char* data = line.data();
+  size_t left = line.size();
+  while (left > 0) {
+    const ssize_t n = ::write(fd_, data, left);
+    if (n < 0) {
+      if (errno == EINTR) continue;
+      throw Error(ErrorLocation{path_.string()}, std::string("cannot append to the journal: ") + std::strerror(errno));
+    }
+    data += n;
+    left -= static_cast<size_t>(n);
+  }
+  if (::fsync(fd_) != 0)
+    throw Error(ErrorLocation{path_.string()}, std::string("cannot sync the journal: ") + std::strerror(errno));
+}
+
+JournalContents read_journal(const fs::path& path, std::uintmax_t max_bytes) {
+  std::error_code ec;
+  const std::uintmax_t size = fs::file_size(path, ec);
+  if (ec) throw Error(ErrorLocation{path.string()}, "cannot read the journal: " + ec.message());
+  if (size > max_bytes)
+    throw Error(ErrorLocation{path.string()}, "the journal is " + std::to_string(size >> 20) + " MB, more than any session writes");
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw Error(ErrorLocation{path.string()}, "cannot open the journal");
+  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  JournalContents out;
+  size_t pos = 0;
+  int line_no = 0;
+  while (pos < text.size()) {
+    ++line_no;
+    const size_t nl = text.find('\n', pos);
+    if (nl == std::string::npos) {
+      // No newline: the process died in the middle of this line. Everything before it stands.
+      out.cut_last_line = true;
+      out.warnings.push_back(path.string() + ":" + std::to_string(line_no) +
+                             ": a cut last line was ignored (the program stopped while writing it)");
+      break;
+    }
+    const std::string line = text.substr(pos, nl - pos);
+    pos = nl + 1;
+    if (line.empty()) continue;
+    nlohmann::json event;
+    try {
+      event = parse_json_text(line, path.string());
+    } catch (const Error&) {
+      event = nullptr;
+    }
+    if (!event.is_object())
+      throw Error(ErrorLocation{path.string(), line_no}, "this journal line is not a JSON object; the journal was edited or damaged");
+    out.events.push_back(std::move(event));
+    out.lines.push_back(line_no);
+    out.complete_bytes = pos;
+  }
+  return out;
+}
+
+}  // namespace lmc::session

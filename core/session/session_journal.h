@@ -1,0 +1,47 @@
+#pragma once
+// The append-only journal of a subject session, `journal.jsonl`: one JSON object a line, each
+// line written whole, flushed and fsynced before the call returns, so a state change that was
+// reported has reached the disk. Reading tolerates what a crash can leave — a cut last line is
+// dropped with a warning — and refuses what it cannot: a broken line in the middle is an error
+// naming the file and the line, never silently skipped.
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+namespace lmc::session {
+
+class JournalWriter {
+ public:
+  // Opens for appending (creates the file when `create`; then it must not exist yet).
+  JournalWriter(const std::filesystem::path& path, bool create);
+  ~JournalWriter();
+  JournalWriter(JournalWriter&& other) noexcept;
+  JournalWriter& operator=(JournalWriter&&) = delete;
+  JournalWriter(const JournalWriter&) = delete;
+  JournalWriter& operator=(const JournalWriter&) = delete;
+
+  // Writes one line and fsyncs. Throws lmc::Error naming the file (disk full, I/O error); the
+  // journal then still ends with a complete line or a cut one, which readers drop.
+  void append(const nlohmann::json& event);
+  const std::filesystem::path& path() const { return path_; }
+
+ private:
+  std::filesystem::path path_;
+  int fd_ = -1;
+};
+
+struct JournalContents {
+  std::vector<nlohmann::json> events;
+  std::vector<int> lines;              // the file line of each event (1-based), for messages
+  std::vector<std::string> warnings;
+  bool cut_last_line = false;          // a crash left a partial line at the end
+  std::uintmax_t complete_bytes = 0;   // bytes up to the end of the last complete line
+};
+
+// Reads every complete line. A journal larger than `max_bytes` is refused (it would be millions
+// of events: not a journal this program wrote).
+JournalContents read_journal(const std::filesystem::path& path, std::uintmax_t max_bytes = 256u << 20);
+
+}  // namespace lmc::session

@@ -1,0 +1,45 @@
+#include "core/session/session_trials.h"
+
+#include "core/session/session_folder.h"
+#include "core/session/trial_files.h"
+
+namespace fs = std::filesystem;
+
+namespace lmc::session {
+
+std::vector<TrialJob> accepted_trial_jobs(const fs::path& dir, const std::optional<fs::path>& vicon_dir,
+                                          std::vector<std::string>* notes) {
+  const SessionState state = read_session_state(dir);
+  std::vector<TrialJob> jobs;
+  for (const auto& t : state.trials) {
+    const std::string& name = t.plan.name;
+    if (t.status != TrialStatus::kAccepted) {
+      if (notes != nullptr) notes->push_back(name + ": " + trial_status_name(t.status) + ", not processed");
+      continue;
+    }
+    const TrialFiles files = trial_files(dir, name);
+    TrialJob job;
+    job.trial = name;
+    job.lmc = files.recording;
+    if (!fs::exists(job.lmc)) {
+      if (notes != nullptr) notes->push_back(name + ": accepted, but " + job.lmc.string() + " is missing");
+      continue;
+    }
+    if (fs::exists(files.sidecar)) job.sidecar = files.sidecar;
+    // The sidecar holds the layout the trial was recorded with; the manifest's copy of the
+    // block's layout stands in when a crash left no sidecar.
+    auto layout = state.setup.layouts.find(t.plan.layout_key);
+    if (layout != state.setup.layouts.end()) job.layout_json = layout->second;
+    for (const char* ext : {".trc", ".c3d", ".TRC", ".C3D"}) {
+      const fs::path p = (vicon_dir ? *vicon_dir : dir) / (name + ext);
+      if (fs::exists(p)) {
+        job.vicon = p;
+        break;
+      }
+    }
+    jobs.push_back(job);
+  }
+  return jobs;
+}
+
+}  // namespace lmc::session
