@@ -55,6 +55,7 @@ struct QualityReport {
   std::vector<std::string> reasons;  // one line each, most serious first
   double duration_s = 0;             // recorded span on the device clocks
   double planned_s = 0;
+  double hand_fraction = 0;          // of the trial's 10 ms instants, those some controller had a hand at
   std::vector<DeviceQuality> devices;
   std::vector<double> finger_seen_fraction;  // thumb…pinky: frames seen by ≥ 1 controller
   std::optional<RomQuality> rom;
