@@ -26,7 +26,9 @@ std::string fixed(double v, int decimals) {
   std::snprintf(buf, sizeof buf, "%.*f", decimals, v);
   return buf;
 }
-std::string secs(double s) { return fixed(s, 1) + " s"; }
+// Tenths of a second read well for long spans; a short gap keeps its hundredths so it never
+// prints below the threshold it crossed ("0.25 s", not "0.2 s").
+std::string secs(double s) { return fixed(s, s < 1.0 ? 2 : 1) + " s"; }
 std::string percent(double fraction) { return fixed(100.0 * fraction, 0) + " %"; }
 std::string degrees(double deg) { return fixed(deg, 0) + "°"; }
 std::string rate(double hz) { return fixed(hz, 1) + " frames/s"; }

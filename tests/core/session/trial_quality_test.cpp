@@ -58,10 +58,11 @@ struct Trial {
 };
 
 // Controller `id` streams from 0 to `seconds` at its period; `keep` drops rows (silence).
+// `period_us` 0 takes the controller's rate from kPeriodUs.
 void add_stream(Trial& trial, int id, double seconds, const HandAt& hand,
-                const std::function<bool(double)>& keep = [](double) { return true; }) {
+                const std::function<bool(double)>& keep = [](double) { return true; }, std::int64_t period_us = 0) {
   const LayoutDevice& device = trial.layout.devices[static_cast<size_t>(id - 1)];
-  const std::int64_t period = kPeriodUs[static_cast<size_t>(id - 1)];
+  const std::int64_t period = period_us > 0 ? period_us : kPeriodUs[static_cast<size_t>(id - 1)];
   std::int64_t frame_id = 1000 * id;
   for (std::int64_t t = 0; t < static_cast<std::int64_t>(seconds * kSecond); t += period) {
     const double t_s = static_cast<double>(t) * 1e-6;
@@ -188,6 +189,54 @@ TEST(TrialQuality, ControllerUnpluggedForGoodCountsItsSilenceToTheEnd) {
   EXPECT_NEAR(r.devices[3].longest_gap_s, 9.992 - 6.98, 1e-9);
   EXPECT_TRUE(has_reason(r, "LMC4 sent no frames for 3.0 s")) << all_reasons(r);
   EXPECT_EQ(r.verdict, "fail");
+}
+
+TEST(TrialQuality, StarvedControllerFailsAndSlowOneWarns) {
+  Trial trial;
+  const auto all = [](double) { return true; };
+  add_stream(trial, 1, 10.0, still_hand(HandOrientation::kHorizontal), all, 250'000);  // 4 frames/s
+  add_stream(trial, 2, 10.0, still_hand(HandOrientation::kHorizontal), all, 125'000);  // 8 frames/s
+  for (int id : {3, 4}) add_stream(trial, id, 10.0, still_hand(HandOrientation::kHorizontal));
+  interleave(trial);
+  finish(trial);
+  const QualityReport r = assess_trial(trial.inputs());
+  EXPECT_EQ(r.devices[0].frames, 40);
+  EXPECT_DOUBLE_EQ(r.devices[0].median_rate_hz, 4.0);
+  EXPECT_DOUBLE_EQ(r.devices[1].median_rate_hz, 8.0);
+  EXPECT_EQ(r.verdict, "fail");
+  EXPECT_EQ(r.reasons, (std::vector<std::string>{"LMC1 is starved: 4.0 frames/s (median)",
+                                                 "LMC1 sent no frames for 0.25 s",
+                                                 "LMC2 ran slowly: 8.0 frames/s (median)"}))
+      << all_reasons(r);
+}
+
+TEST(TrialQuality, RecorderDropsAndDisconnectsAreWarnings) {
+  Trial trial = clean_trial();
+  SidecarDevice& lmc2 = trial.sidecar.devices[1];
+  lmc2.frames_dropped_queue = 7;
+  lmc2.frame_id_gaps = 31;  // the service skipping frames on a shared bus: counted, not judged
+  SidecarDisconnect lost;
+  lost.message = "device lost (USB)";
+  lmc2.disconnects = {lost};
+  const QualityReport r = assess_trial(trial.inputs());
+  EXPECT_EQ(r.devices[1].dropped, 7);
+  EXPECT_EQ(r.devices[1].frame_id_gaps, 31);
+  EXPECT_EQ(r.devices[1].disconnects, 1);
+  EXPECT_EQ(r.verdict, "warn");
+  EXPECT_EQ(r.reasons, (std::vector<std::string>{"LMC2: the recorder dropped 7 frames (queue full)",
+                                                 "LMC2 disconnected 1 time and did not come back (device lost (USB))"}))
+      << all_reasons(r);
+}
+
+TEST(TrialQuality, RecordingFileShorterThanTheRecorderWroteWarns) {
+  Trial trial = clean_trial();
+  trial.sidecar.devices[3].frames_written = 510;
+  trial.recording.warnings = {"line 3502: truncated last line dropped"};
+  const QualityReport r = assess_trial(trial.inputs());
+  EXPECT_EQ(r.verdict, "warn");
+  EXPECT_EQ(r.reasons, (std::vector<std::string>{"recording file: line 3502: truncated last line dropped",
+                                                 "LMC4: 500 frames in the file, the recorder wrote 510"}))
+      << all_reasons(r);
 }
 
 TEST(TrialQuality, HandAbsentSpanGivesTheConstructedFractionAndFails) {
@@ -318,6 +367,19 @@ TEST(TrialQuality, ViconExpectedButNotTriggeredFails) {
   EXPECT_FALSE(r.vicon.start_sent);
   EXPECT_EQ(r.vicon.error, "sendto 192.168.10.2:30: Network is unreachable");
   EXPECT_EQ(r.reasons, std::vector<std::string>{"Vicon was not triggered: sendto 192.168.10.2:30: Network is unreachable"});
+}
+
+TEST(TrialQuality, ViconStartedButNotStoppedWarns) {
+  Trial trial = clean_trial();
+  trial.sidecar.vicon_packets = {packet("CaptureStart"), packet("CaptureStop", "sendto: Host is unreachable")};
+  QualityInputs in = trial.inputs();
+  in.vicon_expected = true;
+  const QualityReport r = assess_trial(in);
+  EXPECT_TRUE(r.vicon.start_sent);
+  EXPECT_FALSE(r.vicon.stop_sent);
+  EXPECT_EQ(r.verdict, "warn");
+  EXPECT_EQ(r.reasons, std::vector<std::string>{
+                           "Vicon was not stopped (no CaptureStop sent: sendto: Host is unreachable); stop its capture by hand"});
 }
 
 TEST(TrialQuality, ViconExportFolderIsCheckedForThePairedFile) {
