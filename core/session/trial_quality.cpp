@@ -10,6 +10,7 @@
 #include <cstdio>
 
 #include "core/common/error.h"
+#include "core/io/layout_json.h"
 #include "core/processing/measures.h"
 #include "core/session/trial_quality_parts.h"
 
@@ -20,6 +21,9 @@ namespace {
 // The grid that hand presence, finger visibility and range of motion are read on: 100 Hz, the
 // processing grid's rate (reference-algorithms.md §6.1).
 constexpr double kGridStepUs = 10000.0;
+// A backwards timestamp step larger than this is a clock reset, not USB reordering (the
+// resampler's default, resample.h).
+constexpr std::int64_t kClockResetUs = 500000;
 
 std::string fixed(double v, int decimals) {
   char buf[64];
@@ -183,6 +187,17 @@ QualityReport assess_trial(const QualityInputs& in) {
   judge_sidecar(sidecar, reasons);
   for (const std::string& w : rec.warnings) reasons.warn("recording file: " + w);
 
+  // The caller passes the block's layout; a caller that has only the sidecar gets the layout the
+  // recorder wrote into it.
+  Layout layout = in.layout;
+  if (layout.devices.empty() && sidecar.layout.is_object()) {
+    try {
+      layout = layout_from_json(sidecar.layout, "LMC_" + trial + ".session.json (layout)");
+    } catch (const Error& e) {
+      reasons.fail(std::string("the layout in the sidecar cannot be read: ") + e.what());
+    }
+  }
+
   // The trial's span on the device clocks (LeapGetNow is shared by every controller on a host).
   const std::vector<detail::DeviceRows> rows = detail::rows_by_device(rec);
   std::int64_t first_us = 0, last_us = 0;
@@ -199,13 +214,19 @@ QualityReport assess_trial(const QualityInputs& in) {
     reasons.fail("recorded " + secs(report.duration_s) + " of the planned " + secs(in.planned_s));
   }
 
+  // Timestamps from two clocks (a service restart mid-trial): the spans below are meaningless.
+  for (const detail::ClockJump& jump : detail::clock_jumps(rec, kClockResetUs)) {
+    reasons.fail(slot_name(layout, jump.device_id) + "'s clock jumped back " + secs(static_cast<double>(jump.back_us) * 1e-6) +
+                 " (the tracking service restarted?)");
+  }
+
   // Every layout slot is expected to deliver; a device the layout lacks is a set-up fault.
-  const int slots = std::max(in.layout.device_count(), rows.empty() ? 0 : rows.back().device_id);
+  const int slots = std::max(layout.device_count(), rows.empty() ? 0 : rows.back().device_id);
   for (int id = 1; id <= slots; ++id) {
     const auto it = std::find_if(rows.begin(), rows.end(), [id](const detail::DeviceRows& d) { return d.device_id == id; });
     DeviceQuality q = it != rows.end() ? detail::device_stream_quality(*it, first_us, last_us)
                                        : detail::device_stream_quality(detail::DeviceRows{id, {}}, first_us, last_us);
-    q.slot = slot_name(in.layout, id);
+    q.slot = slot_name(layout, id);
     const SidecarDevice* sd = sidecar_device(sidecar, id, q.slot);
     if (sd != nullptr) {
       q.serial = sd->serial;
@@ -213,9 +234,9 @@ QualityReport assess_trial(const QualityInputs& in) {
       q.dropped = sd->frames_dropped_queue;
       q.disconnects = static_cast<int>(sd->disconnects.size());
     }
-    if (id > in.layout.device_count()) {
-      reasons.fail("the recording has device " + std::to_string(id) + " but layout '" + in.layout.name + "' has only " +
-                   std::to_string(in.layout.device_count()));
+    if (id > layout.device_count()) {
+      reasons.fail("the recording has device " + std::to_string(id) + " but layout '" + layout.name + "' has only " +
+                   std::to_string(layout.device_count()));
     }
     judge_device(q, sd, t, reasons);
     report.devices.push_back(std::move(q));
@@ -248,7 +269,7 @@ QualityReport assess_trial(const QualityInputs& in) {
     if (angle < 0) {
       reasons.warn("range of motion not checked: unknown joint '" + want.joint + "'");
     } else {
-      rom.reached_deg = detail::reached_rom_deg(grid, traced, in.layout, angle);
+      rom.reached_deg = detail::reached_rom_deg(grid, traced, layout, angle);
       const std::string name = joint_words(angle_name(angle));
       if (!std::isfinite(rom.reached_deg)) {
         reasons.warn(name + " range of motion unknown: the hand was never tracked");

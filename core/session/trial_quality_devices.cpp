@@ -22,6 +22,21 @@ std::vector<DeviceRows> rows_by_device(const LmcRecording& recording) {
   return out;
 }
 
+std::vector<ClockJump> clock_jumps(const LmcRecording& recording, std::int64_t limit_us) {
+  std::map<int, std::int64_t> last_us, worst_us;
+  for (const HandFrame& row : recording.rows) {
+    const auto [it, first] = last_us.try_emplace(row.device_id, row.timestamp_us);
+    if (!first) {
+      const std::int64_t back = it->second - row.timestamp_us;
+      if (back > limit_us) worst_us[row.device_id] = std::max(worst_us[row.device_id], back);
+      it->second = row.timestamp_us;
+    }
+  }
+  std::vector<ClockJump> out;
+  for (const auto& [id, back] : worst_us) out.push_back(ClockJump{id, back});
+  return out;
+}
+
 double percentile(std::vector<double> values, double p) {
   if (values.empty()) return std::numeric_limits<double>::quiet_NaN();
   std::sort(values.begin(), values.end());

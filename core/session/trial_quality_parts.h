@@ -26,6 +26,15 @@ struct DeviceRows {
 // Every device id of the recording, ascending, each with its rows in time order.
 std::vector<DeviceRows> rows_by_device(const LmcRecording& recording);
 
+// A controller whose timestamps jump back by more than `limit_us` in file order: the tracking
+// service restarted and reset its clock (resample.h's clock reset). Sorted by time such a stream
+// interleaves two clocks, so every number drawn from it is wrong; the verdict says why instead.
+struct ClockJump {
+  int device_id = 0;
+  std::int64_t back_us = 0;  // the largest backward jump
+};
+std::vector<ClockJump> clock_jumps(const LmcRecording& recording, std::int64_t limit_us);
+
 // Frames, rates, hand fraction and gaps of one controller. The trial's first and last timestamps
 // (over all controllers) bound it, so silence at either end counts as a gap: a controller
 // unplugged mid-trial that never came back shows up here.

@@ -239,6 +239,31 @@ TEST(TrialQuality, RecordingFileShorterThanTheRecorderWroteWarns) {
       << all_reasons(r);
 }
 
+TEST(TrialQuality, ClockResetMidTrialFailsSayingSo) {
+  Trial trial = clean_trial();
+  // LMC3's service restarted at 6 s: its clock starts again near zero.
+  for (HandFrame& row : trial.recording.rows) {
+    if (row.device_id == 3 && row.timestamp_us >= kT0 + 6 * kSecond) row.timestamp_us -= kT0 - 2 * kSecond;
+  }
+  const QualityReport r = assess_trial(trial.inputs());
+  EXPECT_EQ(r.verdict, "fail");
+  ASSERT_FALSE(r.reasons.empty());
+  // In file order: 5.9875 s after kT0 on the old clock, then 8.0 s on the new one.
+  EXPECT_EQ(r.reasons.front(), "LMC3's clock jumped back 4998.0 s (the tracking service restarted?)")
+      << all_reasons(r);
+}
+
+TEST(TrialQuality, LayoutComesFromTheSidecarWhenNotGiven) {
+  Trial trial = clean_trial();
+  trial.sidecar.layout = layout_to_json(trial.layout);
+  QualityInputs in = trial.inputs();
+  in.layout = Layout{};
+  const QualityReport r = assess_trial(in);
+  EXPECT_EQ(r.verdict, "pass") << all_reasons(r);
+  EXPECT_EQ(r.devices[3].slot, "LMC4");
+  for (double f : r.finger_seen_fraction) EXPECT_DOUBLE_EQ(f, 1.0);
+}
+
 TEST(TrialQuality, HandAbsentSpanGivesTheConstructedFractionAndFails) {
   // Every controller keeps sending but reports no hand from 1.0 s to 9.5 s.
   Trial trial;
