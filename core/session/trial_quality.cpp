@@ -24,6 +24,9 @@ constexpr double kGridStepUs = 10000.0;
 // A backwards timestamp step larger than this is a clock reset, not USB reordering (the
 // resampler's default, resample.h).
 constexpr std::int64_t kClockResetUs = 500000;
+// A bound on the grid (one hour at 100 Hz): a stray timestamp far in the future must coarsen the
+// grid, not allocate gigabytes.
+constexpr double kMaxGridBins = 360000.0;
 
 std::string fixed(double v, int decimals) {
   char buf[64];
@@ -170,6 +173,14 @@ std::string joint_words(std::string_view angle) {
   return out;
 }
 
+// The verdict is the worst reason; fails are listed first.
+QualityReport finish(QualityReport report, Reasons reasons) {
+  report.verdict = !reasons.fails.empty() ? "fail" : !reasons.warns.empty() ? "warn" : "pass";
+  report.reasons = std::move(reasons.fails);
+  report.reasons.insert(report.reasons.end(), reasons.warns.begin(), reasons.warns.end());
+  return report;
+}
+
 }  // namespace
 
 QualityReport assess_trial(const QualityInputs& in) {
@@ -193,7 +204,7 @@ QualityReport assess_trial(const QualityInputs& in) {
   if (layout.devices.empty() && sidecar.layout.is_object()) {
     try {
       layout = layout_from_json(sidecar.layout, "LMC_" + trial + ".session.json (layout)");
-    } catch (const Error& e) {
+    } catch (const std::exception& e) {
       reasons.fail(std::string("the layout in the sidecar cannot be read: ") + e.what());
     }
   }
@@ -214,8 +225,11 @@ QualityReport assess_trial(const QualityInputs& in) {
     reasons.fail("recorded " + secs(report.duration_s) + " of the planned " + secs(in.planned_s));
   }
 
-  // Timestamps from two clocks (a service restart mid-trial): the spans below are meaningless.
-  for (const detail::ClockJump& jump : detail::clock_jumps(rec, kClockResetUs)) {
+  // Timestamps from two clocks (a service restart mid-trial): spans measured across them are
+  // meaningless, so that one reason replaces the gap and hand checks (the counts stay listed).
+  const std::vector<detail::ClockJump> jumps = detail::clock_jumps(rec, kClockResetUs);
+  const bool one_clock = jumps.empty();
+  for (const detail::ClockJump& jump : jumps) {
     reasons.fail(slot_name(layout, jump.device_id) + "'s clock jumped back " + secs(static_cast<double>(jump.back_us) * 1e-6) +
                  " (the tracking service restarted?)");
   }
@@ -238,15 +252,21 @@ QualityReport assess_trial(const QualityInputs& in) {
       reasons.fail("the recording has device " + std::to_string(id) + " but layout '" + layout.name + "' has only " +
                    std::to_string(layout.device_count()));
     }
-    judge_device(q, sd, t, reasons);
+    if (one_clock) judge_device(q, sd, t, reasons);
     report.devices.push_back(std::move(q));
+  }
+  if (!one_clock) {
+    report.vicon = vicon_quality(in, trial);
+    judge_vicon(report.vicon, in, trial, reasons);
+    return finish(std::move(report), std::move(reasons));
   }
 
   // Hand presence and finger visibility over every controller at once.
   std::vector<detail::TracedDevice> traced;
   traced.reserve(rows.size());
   for (const auto& d : rows) traced.push_back(detail::trace_device(d));
-  const detail::HeldGrid grid = detail::hold_on_grid(rows, first_us, last_us, kGridStepUs);
+  const double step_us = std::max(kGridStepUs, static_cast<double>(last_us - first_us) / kMaxGridBins);
+  const detail::HeldGrid grid = detail::hold_on_grid(rows, first_us, last_us, step_us);
   const detail::Coverage cov = detail::coverage(grid, traced);
   report.hand_fraction = cov.hand_fraction;
   if (any && cov.hand_fraction < t.fail_min_hand_fraction) {
@@ -283,11 +303,7 @@ QualityReport assess_trial(const QualityInputs& in) {
 
   report.vicon = vicon_quality(in, trial);
   judge_vicon(report.vicon, in, trial, reasons);
-
-  report.verdict = !reasons.fails.empty() ? "fail" : !reasons.warns.empty() ? "warn" : "pass";
-  report.reasons = std::move(reasons.fails);
-  report.reasons.insert(report.reasons.end(), reasons.warns.begin(), reasons.warns.end());
-  return report;
+  return finish(std::move(report), std::move(reasons));
 }
 
 }  // namespace lmc::session
