@@ -12,6 +12,7 @@
 #include "core/common/error.h"
 #include "core/hand/reference_poses.h"
 #include "core/io/layout_json.h"
+#include "core/io/lmc_recording.h"
 #include "core/processing/hand_track.h"
 #include "core/processing/measures.h"
 #include "tests/support/reference_data.h"
@@ -499,6 +500,36 @@ TEST(TrialQuality, JsonErrorsNameTheSourceAndPath) {
     EXPECT_NE(std::string(e.what()).find("S01/journal.json: at /vicon/exported: unknown field"), std::string::npos)
         << e.what();
   }
+}
+
+// The study's own raw recording (four controllers, the initial layout, a static horizontal hand):
+// a good trial by every measure, at the 11–34 Hz per controller four on one bus deliver.
+TEST(TrialQuality, PublishedStaticTrialPasses) {
+  const auto path = test::reference_file("acquisition/LMC_Naiv_Static101.raw.txt");
+  if (!std::filesystem::exists(path)) GTEST_SKIP() << "reference data not found: " << path;
+  const LmcRecording rec = read_lmc_recording(path);
+  RecorderSidecar sidecar;
+  sidecar.trial = "Naiv_Static101";
+  sidecar.status = "completed";
+  QualityInputs in;
+  in.recording = &rec;
+  in.sidecar = &sidecar;
+  in.layout = initial_layout();
+  in.planned_s = 5.0;  // the published excerpt is about five seconds long
+  const QualityReport r = assess_trial(in);
+  EXPECT_EQ(r.verdict, "pass") << all_reasons(r);
+  EXPECT_NEAR(r.duration_s, 5.118757, 1e-9);
+  ASSERT_EQ(r.devices.size(), 4u);
+  const std::array<std::int64_t, 4> frames{118, 121, 131, 130};
+  for (size_t d = 0; d < 4; ++d) {
+    EXPECT_EQ(r.devices[d].frames, frames[d]);
+    EXPECT_GT(r.devices[d].median_rate_hz, 25.0);
+    EXPECT_LT(r.devices[d].median_rate_hz, 30.0);
+    EXPECT_LT(r.devices[d].longest_gap_s, 0.1);
+  }
+  EXPECT_NEAR(r.devices[0].hand_fraction, 107.0 / 118.0, 1e-12);
+  EXPECT_GT(r.hand_fraction, 0.99);
+  for (double f : r.finger_seen_fraction) EXPECT_DOUBLE_EQ(f, 1.0);
 }
 
 }  // namespace
