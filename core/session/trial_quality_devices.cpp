@@ -15,8 +15,9 @@ std::vector<DeviceRows> rows_by_device(const LmcRecording& recording) {
   out.reserve(by_id.size());
   for (auto& [id, rows] : by_id) {
     // Stable: rows with equal timestamps (duplicates) keep their file order.
-    std::stable_sort(rows.begin(), rows.end(),
-                     [](const HandFrame* a, const HandFrame* b) { return a->timestamp_us < b->timestamp_us; });
+    std::stable_sort(rows.begin(), rows.end(), [](const HandFrame* a, const HandFrame* b) {
+      return a->timestamp_us < b->timestamp_us;
+    });
     out.push_back(DeviceRows{id, std::move(rows)});
   }
   return out;
@@ -49,7 +50,9 @@ double percentile(std::vector<double> values, double p) {
 
 namespace {
 
-double seconds(std::int64_t us) { return static_cast<double>(us) * 1e-6; }
+double seconds(std::int64_t us) {
+  return static_cast<double>(us) * 1e-6;
+}
 
 }  // namespace
 
@@ -77,7 +80,8 @@ DeviceQuality device_stream_quality(const DeviceRows& device, std::int64_t trial
   q.longest_gap_s = seconds(longest_gap_us);
   if (!intervals_us.empty()) {
     std::vector<double> rates(intervals_us.size());
-    std::transform(intervals_us.begin(), intervals_us.end(), rates.begin(), [](double dt) { return 1e6 / dt; });
+    std::transform(intervals_us.begin(), intervals_us.end(), rates.begin(),
+                   [](double dt) { return 1e6 / dt; });
     q.median_rate_hz = percentile(rates, 50);
     q.rate_p5_hz = percentile(rates, 5);
     q.rate_p95_hz = percentile(std::move(rates), 95);

@@ -55,12 +55,13 @@ struct HeldGrid {
   std::vector<int> row;  // row[bin * devices + device]
 
   int held(int bin, int device) const {
-    return row[static_cast<size_t>(bin) * static_cast<size_t>(devices) + static_cast<size_t>(device)];
+    return row[static_cast<size_t>(bin) * static_cast<size_t>(devices) +
+               static_cast<size_t>(device)];
   }
 };
 
-HeldGrid hold_on_grid(const std::vector<DeviceRows>& devices, std::int64_t first_us, std::int64_t last_us,
-                      double step_us);
+HeldGrid hold_on_grid(const std::vector<DeviceRows>& devices, std::int64_t first_us,
+                      std::int64_t last_us, double step_us);
 
 // One controller's rows as a track in its own frame, and the ray-traced labels of each row
 // (core/processing/visibility_labels.h: the engine processing uses).
@@ -88,7 +89,7 @@ int angle_index(const std::string& joint);
 // instant the per-coordinate median of the held rows that have a hand, realigned with the layout
 // (device id k is layout device k; a device the layout lacks is left out). NaN when the angle is
 // never known. `devices` is in the order of `grid`.
-double reached_rom_deg(const HeldGrid& grid, const std::vector<TracedDevice>& devices, const Layout& layout,
-                       int angle);
+double reached_rom_deg(const HeldGrid& grid, const std::vector<TracedDevice>& devices,
+                       const Layout& layout, int angle);
 
 }  // namespace lmc::session::detail
