@@ -29,7 +29,7 @@ struct DeviceQuality {
   double rate_p5_hz = 0, rate_p95_hz = 0;
   double hand_fraction = 0;            // of its frames
   double longest_gap_s = 0;            // longest silence between frames, or at either end
-  double longest_no_hand_s = 0;        // longest span of frames without a hand
+  double longest_no_hand_s = 0;        // longest run of frames without a hand (hand frame to hand frame)
   std::int64_t frame_id_gaps = 0;
   std::int64_t dropped = 0;            // frames the recorder could not keep up with
   int disconnects = 0;
@@ -55,8 +55,11 @@ struct QualityReport {
   std::vector<std::string> reasons;  // one line each, most serious first
   double duration_s = 0;             // recorded span on the device clocks
   double planned_s = 0;
+  double hand_fraction = 0;          // share of the trial's 10 ms instants at which some controller had the hand
   std::vector<DeviceQuality> devices;
-  std::vector<double> finger_seen_fraction;  // thumb…pinky: frames seen by ≥ 1 controller
+  // thumb…pinky: share of the instants with a hand at which ≥ 1 controller saw the finger
+  // (ray-traced label 1); NaN when no controller ever had the hand.
+  std::vector<double> finger_seen_fraction;
   std::optional<RomQuality> rom;
   ViconQuality vicon;
 };
@@ -64,7 +67,7 @@ struct QualityReport {
 struct QualityInputs {
   const LmcRecording* recording = nullptr;  // required
   const RecorderSidecar* sidecar = nullptr; // required
-  Layout layout;                            // the block's layout (also in the sidecar)
+  Layout layout;                            // the block's layout; when empty, the sidecar's
   double planned_s = 0;
   QualityThresholds thresholds;
   std::vector<RomExpectation> rom;          // dynamic trials: the joint and what it should reach
