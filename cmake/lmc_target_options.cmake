@@ -1,6 +1,6 @@
 # Strict warnings are applied per first-party target (never globally) so Debian's headers, included
 # as SYSTEM by their imported targets, stay quiet.
-function(lmc_target_options target)
+function(lmc_compile_flags target)
   target_compile_options(${target} PRIVATE
     -Wall -Wextra -Wpedantic
     -Wshadow                # shadowed locals hide bugs in long numeric loops
@@ -21,17 +21,50 @@ function(lmc_target_options target)
   # No absolute paths here (they would tie every object to the checkout's folder): the assets
   # path is compiled into core/common/paths.cpp alone.
   target_compile_definitions(${target} PRIVATE LMC_VERSION="${PROJECT_VERSION}")
-  # Parsing Eigen and nlohmann-json is about 40 % of compiling a typical file here: precompile them
-  # once per target (CI builds from scratch on two cores and must stay well under 15 minutes).
+endfunction()
+
+# Parsing Eigen and nlohmann-json is about 40 % of compiling a typical file here, so they are
+# precompiled. Not once per target (each precompiled header costs as much as several ordinary
+# files under ASan): one small holder target builds it and every first-party target reuses it
+# (REUSE_FROM). Reuse is only valid while all of them compile with the same flags, which is why
+# every target gets its flags from lmc_compile_flags above; per-target definitions such as lmc_ui's
+# GLFW_INCLUDE_NONE are fine because the precompiled headers never look at them.
+set(LMC_PCH_HEADERS
+    <Eigen/Dense> <nlohmann/json.hpp>
+    <algorithm> <array> <cmath> <filesystem> <functional> <memory> <string> <vector>)
+
+# lmc_add_pch_target(name HEADERS <h>... [LIBS lib...]): a precompiled-header holder. LIBS give the
+# holder the include paths (and usage definitions) the headers need.
+function(lmc_add_pch_target name)
+  cmake_parse_arguments(PARSE_ARGV 1 arg "" "" "HEADERS;LIBS")
+  set(anchor ${CMAKE_CURRENT_BINARY_DIR}/${name}_anchor.cpp)
+  file(CONFIGURE OUTPUT ${anchor} CONTENT "// Compiled only so that ${name} has a precompiled header to share.\n")
+  add_library(${name} OBJECT ${anchor})
+  target_link_libraries(${name} PRIVATE ${arg_LIBS})
+  lmc_compile_flags(${name})
+  target_precompile_headers(${name} PRIVATE ${arg_HEADERS})
+endfunction()
+
+if(LMC_PRECOMPILE_HEADERS)
+  lmc_add_pch_target(lmc_pch HEADERS ${LMC_PCH_HEADERS}
+                     LIBS Eigen3::Eigen nlohmann_json::nlohmann_json)
+endif()
+
+# lmc_target_options(target [PCH holder]): the flags above plus the shared precompiled header
+# (lmc_pch unless another holder, e.g. the tests' one with GoogleTest added, is named).
+function(lmc_target_options target)
+  cmake_parse_arguments(PARSE_ARGV 1 arg "" "PCH" "")
+  lmc_compile_flags(${target})
   if(LMC_PRECOMPILE_HEADERS)
-    target_precompile_headers(${target} PRIVATE
-      <Eigen/Dense> <nlohmann/json.hpp>
-      <algorithm> <array> <cmath> <filesystem> <functional> <memory> <string> <vector>)
+    if(NOT arg_PCH)
+      set(arg_PCH lmc_pch)
+    endif()
+    target_precompile_headers(${target} REUSE_FROM ${arg_PCH})
   endif()
 endfunction()
 
 # Executables and test binaries need the sanitizer runtime at link time even when only their
 # libraries were instrumented.
 function(lmc_executable_options target)
-  lmc_target_options(${target})
+  lmc_target_options(${ARGV})
 endfunction()
