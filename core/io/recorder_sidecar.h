@@ -11,6 +11,7 @@
 #include <map>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <nlohmann/json.hpp>
@@ -21,6 +22,7 @@ struct SidecarGap {
   std::int64_t from_timestamp_us = 0;  // last frame before the silence (device clock)
   std::int64_t to_timestamp_us = 0;    // first frame after it
   double duration_ms() const { return static_cast<double>(to_timestamp_us - from_timestamp_us) / 1000.0; }
+  nlohmann::json unknown = nlohmann::json::object();  // keys this version does not know (kept on rewrite)
 };
 
 struct SidecarDisconnect {
@@ -28,6 +30,9 @@ struct SidecarDisconnect {
   std::int64_t host_ns = 0;
   std::string message;
   std::string reconnected_host_time_utc;  // empty when it never came back during the trial
+  // The device event that was the disconnect ("lost"), and whose it was.
+  std::string event, serial, slot;
+  nlohmann::json unknown = nlohmann::json::object();
 };
 
 struct SidecarDevice {
@@ -42,6 +47,7 @@ struct SidecarDevice {
   std::int64_t last_timestamp_us = 0;
   std::vector<SidecarGap> gaps;
   std::vector<SidecarDisconnect> disconnects;
+  nlohmann::json unknown = nlohmann::json::object();
 };
 
 struct SidecarViconPacket {
@@ -53,6 +59,7 @@ struct SidecarViconPacket {
   std::int64_t host_ns = 0;
   std::string error;    // sending failed
   std::string warning;  // e.g. the PacketID state file could not be used
+  nlohmann::json unknown = nlohmann::json::object();
 };
 
 struct SidecarGroundTruth {
@@ -61,6 +68,7 @@ struct SidecarGroundTruth {
   std::int64_t frames = 0;
   std::int64_t device_clock_at_time_zero_us = 0;
   std::string mapping;
+  nlohmann::json unknown = nlohmann::json::object();
 };
 
 struct RecorderSidecar {
@@ -93,7 +101,15 @@ struct RecorderSidecar {
   const SidecarDevice* device(int device_id) const;
 };
 
-// The JSON of the sidecar (keys as sessions/README.md lists them).
+// Serial → slot as the sidecar writes it ({serial: slot}).
+nlohmann::json serial_to_slot_json(const std::vector<std::pair<std::string, std::string>>& map);
+nlohmann::json sidecar_ground_truth_to_json(const SidecarGroundTruth& truth);
+nlohmann::json sidecar_vicon_packet_to_json(const SidecarViconPacket& packet);
+// One packet as the recorder's callers describe it (keys as in vicon_packets[]); `source` names it in errors.
+SidecarViconPacket sidecar_vicon_packet_from_json(const nlohmann::json& j, const std::string& source);
+
+// The JSON of the sidecar (keys as sessions/README.md lists them). Optional keys (error,
+// stopped_by, the Vicon notes, ground_truth, extra) are written only when set.
 nlohmann::json recorder_sidecar_to_json(const RecorderSidecar& sidecar);
 // `source` names the file in errors ("…/LMC_T.session.json#/devices/2/frames_written: …").
 RecorderSidecar recorder_sidecar_from_json(const nlohmann::json& j, const std::string& source);

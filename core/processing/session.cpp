@@ -7,9 +7,9 @@
 
 #include "core/common/error.h"
 #include "core/io/c3d.h"
-#include "core/io/json_checked.h"
 #include "core/io/layout_json.h"
 #include "core/io/lmc_recording.h"
+#include "core/io/recorder_sidecar.h"
 #include "core/io/trc.h"
 #include "core/processing/trial_tag.h"
 #include "core/results/trial_outputs.h"
@@ -122,10 +122,10 @@ Layout resolve_layout(const TrialJob& job, const std::optional<std::string>& lay
     return load_layout_or_preset(*layout);
   }
   if (job.sidecar) {
-    const auto j = read_json_file(*job.sidecar);
-    if (j.contains("layout") && j["layout"].is_object()) {
+    const RecorderSidecar side = read_recorder_sidecar(*job.sidecar);
+    if (side.layout.is_object()) {
       if (used) *used = job.sidecar->filename().string() + " (recorded layout)";
-      return layout_from_json(j["layout"], job.sidecar->string() + "#/layout");
+      return layout_from_json(side.layout, job.sidecar->string() + "#/layout");
     }
   }
   if (job.layout_json) {
@@ -173,11 +173,8 @@ TrialOutcome process_job(const TrialJob& job, const SessionOptions& options, con
     ProcessOptions popt = options.process;
     if (job.sidecar && vicon != nullptr) {
       // The simulator notes which device-clock time its ground truth's frame 0 is (sessions/README.md).
-      const auto side = read_json_file(*job.sidecar);
-      const auto gt = side.value("ground_truth", nlohmann::json::object());
-      if (gt.contains("device_clock_at_time_zero_us") && gt["device_clock_at_time_zero_us"].is_number()) {
-        popt.resample.grid_start_us = gt["device_clock_at_time_zero_us"].get<std::int64_t>();
-      }
+      const RecorderSidecar side = read_recorder_sidecar(*job.sidecar);
+      if (side.ground_truth) popt.resample.grid_start_us = side.ground_truth->device_clock_at_time_zero_us;
     }
     TrialResult r = process_trial(job.trial, rec, layout, vicon, popt);
     r.lmc_source = job.lmc.string();

@@ -58,7 +58,7 @@ void Recorder::start() {
   if (!sink_->write(lmc_recording_header(RecordingKind::kRaw)))
     throw Error(ErrorLocation(paths_.recording.string()), "cannot write recording header: " + sink_->error());
   // A sidecar exists from the first second on, so even a crashed session says what it was.
-  write_file_atomically(paths_.sidecar, sidecar_json("recording").dump(2) + "\n");
+  write_file_atomically(paths_.sidecar, recorder_sidecar_to_json(sidecar("recording")).dump(2) + "\n");
   thread_ = std::thread([this] { run(); });
 }
 
@@ -111,9 +111,23 @@ void Recorder::device_event(const DeviceEvent& event, int device_id, const std::
   if (events_.size() < 10000) events_.push_back(std::move(e));
 }
 
-void Recorder::note_vicon_packet(nlohmann::json packet) {
+void Recorder::note_vicon_packet(SidecarViconPacket packet) {
   std::lock_guard lock(stats_mutex_);
   vicon_packets_.push_back(std::move(packet));
+}
+
+void Recorder::note_vicon_packet(const nlohmann::json& packet) {
+  note_vicon_packet(sidecar_vicon_packet_from_json(packet, "Vicon packet of trial " + config_.trial));
+}
+
+void Recorder::note_stopped_by(std::string what) {
+  std::lock_guard lock(stats_mutex_);
+  stopped_by_ = std::move(what);
+}
+
+void Recorder::note_ground_truth(SidecarGroundTruth truth) {
+  std::lock_guard lock(stats_mutex_);
+  ground_truth_ = std::move(truth);
 }
 
 void Recorder::note(const std::string& key, nlohmann::json value) {
@@ -238,8 +252,8 @@ RecorderStatus Recorder::stop(const std::vector<std::pair<std::string, std::stri
     }
   }
   try {
-    write_file_atomically(paths_.sidecar,
-                          sidecar_json(failed_ ? "failed" : aborted_ ? "aborted" : "completed").dump(2) + "\n");
+    const char* state = failed_ ? "failed" : aborted_ ? "aborted" : "completed";
+    write_file_atomically(paths_.sidecar, recorder_sidecar_to_json(sidecar(state)).dump(2) + "\n");
   } catch (const std::exception& e) {
     fail(std::string("cannot write the session sidecar: ") + e.what());
   }
@@ -262,55 +276,67 @@ RecorderStatus Recorder::status() const {
   return st;
 }
 
-nlohmann::json Recorder::sidecar_json(const char* state) const {
+RecorderSidecar Recorder::sidecar(const char* state) const {
   std::lock_guard lock(stats_mutex_);
-  nlohmann::json j;
-  j["format"] = "lmc-session";
-  j["format_version"] = 1;
-  j["trial"] = config_.trial;
-  j["status"] = state;
-  j["software"] = {{"name", "lmc-workbench"}, {"version", LMC_VERSION}};
-  j["backend"] = config_.backend;
-  j["recording_file"] = paths_.recording.filename().string();
-  j["recording_format"] = "raw";
-  j["host_start_utc"] = host_start_utc_;
-  j["host_stop_utc"] = host_stop_utc_;
-  j["host_start_ns"] = host_start_ns_;
-  j["host_stop_ns"] = host_stop_ns_;
-  j["layout"] = layout_to_json(config_.layout);
-  nlohmann::json map = nlohmann::json::object();
-  for (const auto& [serial, slot] : serial_to_slot_) map[serial] = slot;
-  j["serial_to_slot"] = map;
-  nlohmann::json devices = nlohmann::json::array();
-  std::int64_t total = 0;
+  RecorderSidecar sc;
+  sc.trial = config_.trial;
+  sc.status = state;
+  sc.error = error_;
+  sc.stopped_by = stopped_by_;
+  sc.software_name = "lmc-workbench";
+  sc.software_version = LMC_VERSION;
+  sc.backend = config_.backend;
+  sc.recording_file = paths_.recording.filename().string();
+  sc.recording_format = "raw";
+  sc.host_start_utc = host_start_utc_;
+  sc.host_stop_utc = host_stop_utc_;
+  sc.host_start_ns = host_start_ns_;
+  sc.host_stop_ns = host_stop_ns_;
+  sc.layout = layout_to_json(config_.layout);
+  sc.serial_to_slot = serial_to_slot_;
   for (const auto& [id, s] : stats_) {
-    nlohmann::json gaps = nlohmann::json::array();
-    for (const auto& g : s.gaps)
-      gaps.push_back({{"from_timestamp_us", g.from_timestamp_us},
-                      {"to_timestamp_us", g.to_timestamp_us},
-                      {"duration_ms", static_cast<double>(g.to_timestamp_us - g.from_timestamp_us) / 1000.0}});
-    devices.push_back({{"device_id", id},
-                       {"slot", s.slot},
-                       {"serial", s.serial},
-                       {"frames_written", s.frames_written},
-                       {"frames_with_hand", s.frames_with_hand},
-                       {"frames_dropped_queue", s.frames_dropped_queue},
-                       {"frame_id_gaps", s.frame_id_gaps},
-                       {"first_timestamp_us", s.first_timestamp_us},
-                       {"last_timestamp_us", s.last_timestamp_us},
-                       {"gaps", gaps},
-                       {"disconnects", s.disconnects}});
-    total += s.frames_written;
+    SidecarDevice d;
+    d.device_id = id;
+    d.slot = s.slot;
+    d.serial = s.serial;
+    d.frames_written = s.frames_written;
+    d.frames_with_hand = s.frames_with_hand;
+    d.frames_dropped_queue = s.frames_dropped_queue;
+    d.frame_id_gaps = s.frame_id_gaps;
+    d.first_timestamp_us = s.first_timestamp_us;
+    d.last_timestamp_us = s.last_timestamp_us;
+    for (const auto& g : s.gaps) {
+      SidecarGap gap;
+      gap.from_timestamp_us = g.from_timestamp_us;
+      gap.to_timestamp_us = g.to_timestamp_us;
+      d.gaps.push_back(gap);
+    }
+    for (const auto& e : s.disconnects) {
+      SidecarDisconnect x;
+      x.host_time_utc = e.value("host_time_utc", "");
+      x.host_ns = e.value("host_ns", std::int64_t{0});
+      x.message = e.value("message", "");
+      x.reconnected_host_time_utc = e.value("reconnected_host_time_utc", "");
+      x.event = e.value("event", "");
+      x.serial = e.value("serial", "");
+      x.slot = e.value("slot", "");
+      d.disconnects.push_back(std::move(x));
+    }
+    sc.frames_written += s.frames_written;
+    sc.devices.push_back(std::move(d));
   }
-  j["devices"] = devices;
-  j["frames_written"] = total;
-  j["frames_dropped"] = dropped_.load();
-  j["vicon_packets"] = vicon_packets_;
-  j["events"] = events_;
-  if (!error_.empty()) j["error"] = error_;
-  for (const auto& [k, v] : notes_.items()) j[k] = v;
-  if (!config_.extra.empty()) j["extra"] = config_.extra;
-  return j;
+  sc.frames_dropped = dropped_.load();
+  sc.vicon_packets = vicon_packets_;
+  sc.events = events_;
+  sc.ground_truth = ground_truth_;
+  for (const auto& [key, value] : notes_.items()) {
+    if (key == "vicon_alignment") sc.vicon_alignment = value;
+    else if (key == "vicon_trigger_received") sc.vicon_trigger_received = value;
+    else if (key == "vicon_stop_received") sc.vicon_stop_received = value;
+    else sc.unknown[key] = value;
+  }
+  sc.extra = config_.extra;
+  return sc;
 }
 
 }  // namespace lmc::devices

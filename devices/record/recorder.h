@@ -13,11 +13,13 @@
 #include <map>
 #include <memory>
 #include <mutex>
+#include <optional>
 #include <nlohmann/json.hpp>
 #include <string>
 #include <thread>
 #include <vector>
 
+#include "core/io/recorder_sidecar.h"
 #include "core/layout/layout.h"
 #include "devices/frame_consumer.h"
 #include "devices/record/byte_sink.h"
@@ -100,9 +102,16 @@ class Recorder final : public FrameConsumer {
   bool failed() const { return failed_.load(); }
   const SessionPaths& paths() const { return paths_; }
 
-  // Records a Vicon trigger packet in the sidecar (any thread).
-  void note_vicon_packet(nlohmann::json packet);
-  // Adds a key to the sidecar (any thread, before stop).
+  // Records a Vicon trigger packet in the sidecar (any thread). The JSON form takes the keys of
+  // the sidecar's vicon_packets[] and throws lmc::Error for a mistyped one.
+  void note_vicon_packet(SidecarViconPacket packet);
+  void note_vicon_packet(const nlohmann::json& packet);
+  // What ended the trial early (sidecar "stopped_by"; any thread, before stop).
+  void note_stopped_by(std::string what);
+  // The simulator's truth file (sidecar "ground_truth"; before stop).
+  void note_ground_truth(SidecarGroundTruth truth);
+  // A JSON-valued key of the sidecar: vicon_alignment, vicon_trigger_received,
+  // vicon_stop_received; any other key is kept beside them as a key this format does not know.
   void note(const std::string& key, nlohmann::json value);
 
   // FrameConsumer (device threads).
@@ -127,7 +136,7 @@ class Recorder final : public FrameConsumer {
   void count_row(const PendingRow& row);  // stats_mutex_ held
   bool push_buffer(std::string& buffer, std::vector<PendingRow>& pending);
   void fail(const std::string& message);
-  nlohmann::json sidecar_json(const char* state) const;
+  RecorderSidecar sidecar(const char* state) const;  // stats_mutex_ not held
 
   RecorderConfig config_;
   SessionPaths paths_;
@@ -137,9 +146,11 @@ class Recorder final : public FrameConsumer {
   mutable std::mutex stats_mutex_;
   std::map<int, DeviceRecordStats> stats_;
   std::map<int, std::int64_t> last_frame_id_;
-  std::vector<nlohmann::json> vicon_packets_;
+  std::vector<SidecarViconPacket> vicon_packets_;
   std::vector<nlohmann::json> events_;
   nlohmann::json notes_ = nlohmann::json::object();
+  std::string stopped_by_;
+  std::optional<SidecarGroundTruth> ground_truth_;
   std::vector<std::pair<std::string, std::string>> serial_to_slot_;
   std::string host_start_utc_, host_stop_utc_;
   std::int64_t host_start_ns_ = 0, host_stop_ns_ = 0;

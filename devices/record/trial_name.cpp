@@ -1,5 +1,7 @@
 #include "devices/record/trial_name.h"
 
+#include <algorithm>
+
 #include "core/common/error.h"
 
 namespace lmc::devices {
@@ -20,6 +22,25 @@ std::string validate_trial_name(const std::string& name) {
 
 void require_valid_trial_name(const std::string& name) {
   if (auto why = validate_trial_name(name); !why.empty()) throw Error("invalid trial name: " + why);
+}
+
+bool trial_files_exist(const std::filesystem::path& dir, const std::string& name) {
+  // The same three names as session_paths (recorder.h); a Vicon export already copied in as
+  // <name>.trc counts too, so a new trial never pairs up with another trial's ground truth.
+  std::error_code ec;
+  for (const std::string& file : {"LMC_" + name + ".raw.txt", "LMC_" + name + ".session.json", name + ".trc"})
+    if (std::filesystem::exists(dir / file, ec)) return true;
+  return false;
+}
+
+std::string next_free_trial_name(const std::filesystem::path& dir, const std::string& base) {
+  require_valid_trial_name(base);
+  if (!trial_files_exist(dir, base)) return base;
+  for (int n = 2;; ++n) {
+    const std::string suffix = "-" + std::to_string(n);
+    const std::string name = base.substr(0, std::min(base.size(), kMaxTrialNameLength - suffix.size())) + suffix;
+    if (!trial_files_exist(dir, name)) return name;
+  }
 }
 
 }  // namespace lmc::devices

@@ -30,6 +30,8 @@ class SimSource final : public FrameSource {
   bool finished() const override { return finished_.load(); }
 
   const std::vector<DeviceInfo>& devices() const { return rig_->devices(); }
+  // The simulated length it stops at (0: runs until stopped).
+  double duration_s() const { return options_.duration_s; }
   // Simulated seconds delivered so far.
   double simulated_time_s() const { return sim_time_s_.load(); }
   // Ground truth collected at the truth rate for the delivered span (call after stop()).

@@ -178,9 +178,17 @@ std::string DevicesViewModel::start_recording(const std::filesystem::path& dir, 
   if (!hub_) return "start a backend first";
   if (recorder_) return "already recording";
   if (auto why = validate_trial_name(trial); !why.empty()) return why;
+  // Never overwrite (the TrialEngine's rule): pressing Record again with the same name records
+  // <trial>-2, <trial>-3, … beside the earlier takes.
+  std::string name;
+  try {
+    name = next_free_trial_name(dir, trial);
+  } catch (const std::exception& e) {
+    return e.what();
+  }
   RecorderConfig rc;
   rc.output_dir = dir;
-  rc.trial = trial;
+  rc.trial = name;
   rc.layout = hub_->layout();
   rc.backend = backend_;
   try {
@@ -191,7 +199,9 @@ std::string DevicesViewModel::start_recording(const std::filesystem::path& dir, 
   } catch (const std::exception& e) {
     return e.what();
   }
-  messages_.push_back("recording " + trial + " to " + dir.string());
+  recording_trial_ = name;
+  messages_.push_back("recording " + name + " to " + dir.string() +
+                      (name == trial ? std::string() : " (" + trial + " is taken)"));
   return {};
 }
 

@@ -87,8 +87,12 @@ class DevicesViewModel {
   // True once every layout slot has streamed for at least a second (rates are meaningful).
   bool all_streaming() const;
 
-  // Test recording into `dir` (trial name checked). Errors come back as text.
+  // Test recording into `dir` (trial name checked). Never overwrites: when `trial` has files in
+  // `dir` the next free name (trial-2, trial-3, …; trial_name.h) is used, see recording_trial().
+  // Errors come back as text.
   std::string start_recording(const std::filesystem::path& dir, const std::string& trial);
+  // The name the current (or last) test recording got.
+  const std::string& recording_trial() const { return recording_trial_; }
   // Stops; returns a one-line summary (or the error).
   std::string stop_recording();
   bool recording() const { return recorder_ != nullptr; }
@@ -99,6 +103,7 @@ class DevicesViewModel {
   std::unique_ptr<DeviceHub> hub_;
   std::unique_ptr<Recorder> recorder_;
   std::string backend_;
+  std::string recording_trial_;
   std::int64_t started_ns_ = 0;
   std::vector<DeviceRow> rows_;
   std::vector<LiveHand> hands_;

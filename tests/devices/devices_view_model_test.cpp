@@ -1,12 +1,17 @@
 // Devices tab logic without ImGui: rows, world-frame hands, assignment, recording, projection.
 #include <chrono>
+#include <filesystem>
+#include <fstream>
 #include <functional>
+#include <sstream>
 #include <thread>
 
 #include <gtest/gtest.h>
 
+#include "core/common/error.h"
 #include "core/io/layout_json.h"
 #include "core/io/lmc_recording.h"
+#include "devices/record/trial_name.h"
 #include "devices/view/devices_view_model.h"
 #include "tests/support/reference_data.h"
 
@@ -14,6 +19,13 @@ namespace lmc::devices {
 namespace {
 
 Layout paper_initial() { return load_layout(test::asset_file("layouts/paper-initial.json")); }
+
+std::string read_text_file(const std::filesystem::path& p) {
+  std::ifstream in(p);
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
 
 bool wait_for(DevicesViewModel& vm, const std::function<bool()>& done, int timeout_ms = 5000) {
   const auto deadline = std::chrono::steady_clock::now() + std::chrono::milliseconds(timeout_ms);
@@ -98,6 +110,44 @@ TEST(DevicesViewModel, SlotAssignmentAndATestRecording) {
   const LmcRecording rec = read_lmc_recording(dir / "LMC_vm_trial.raw.txt");
   EXPECT_GT(rec.rows.size(), 4u);
   for (const auto& r : rec.rows) EXPECT_LE(r.device_id, 3) << "the unassigned device is not recorded";
+}
+
+TEST(DevicesViewModel, RecordingTwiceWithTheSameNameKeepsBothTakes) {
+  DevicesViewModel vm(paper_initial());
+  ASSERT_EQ(vm.start("sim"), "");
+  const auto dir = test::scratch_dir("vm_record_twice");
+  ASSERT_EQ(vm.start_recording(dir, "test"), "");
+  EXPECT_EQ(vm.recording_trial(), "test");
+  ASSERT_TRUE(wait_for(vm, [&] { return vm.recording_status()->frames_written > 0; }));
+  EXPECT_EQ(vm.stop_recording().rfind("recorded ", 0), 0u);
+  const std::string first = read_text_file(dir / "LMC_test.raw.txt");
+
+  ASSERT_EQ(vm.start_recording(dir, "test"), "");
+  EXPECT_EQ(vm.recording_trial(), "test-2");
+  EXPECT_EQ(vm.messages().back(), "recording test-2 to " + dir.string() + " (test is taken)");
+  vm.stop_recording();
+  EXPECT_EQ(read_text_file(dir / "LMC_test.raw.txt"), first) << "the first take is untouched";
+  EXPECT_TRUE(std::filesystem::exists(dir / "LMC_test-2.raw.txt"));
+  EXPECT_TRUE(std::filesystem::exists(dir / "LMC_test-2.session.json"));
+}
+
+TEST(TrialName, NextFreeNameSkipsEveryTakenFileKind) {
+  const auto dir = test::scratch_dir("next_free_trial_name");
+  EXPECT_EQ(next_free_trial_name(dir, "T"), "T");
+  std::ofstream(dir / "LMC_T.raw.txt") << "x";
+  EXPECT_EQ(next_free_trial_name(dir, "T"), "T-2");
+  std::ofstream(dir / "LMC_T-2.session.json") << "x";
+  std::ofstream(dir / "T-3.trc") << "x";
+  EXPECT_EQ(next_free_trial_name(dir, "T"), "T-4");
+  EXPECT_TRUE(trial_files_exist(dir, "T-3"));
+  EXPECT_FALSE(trial_files_exist(dir, "T-4"));
+  // A name at the length limit is shortened so that its suffix fits.
+  const std::string longest(kMaxTrialNameLength, 'a');
+  std::ofstream(dir / ("LMC_" + longest + ".raw.txt")) << "x";
+  const std::string next = next_free_trial_name(dir, longest);
+  EXPECT_EQ(next, std::string(kMaxTrialNameLength - 2, 'a') + "-2");
+  EXPECT_EQ(validate_trial_name(next), "");
+  EXPECT_THROW(next_free_trial_name(dir, "../x"), Error);
 }
 
 TEST(DevicesViewModel, UnknownBackendIsAnErrorMessage) {

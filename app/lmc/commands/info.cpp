@@ -48,6 +48,7 @@
 #include "core/io/json_checked.h"
 #include "core/io/layout_json.h"
 #include "core/io/lmc_recording.h"
+#include "core/io/recorder_sidecar.h"
 #include "core/io/text_fields.h"
 #include "core/io/trc.h"
 
@@ -365,8 +366,9 @@ void info_layout(const std::string& file, const json& doc, bool as_json, std::os
   }
 }
 
-// The recorder's sidecar (sessions/README.md). Read leniently: a sidecar of a crashed or older
-// recording may lack keys; what is missing is shown as "-" / null, never an error.
+// The recorder's sidecar (sessions/README.md), read through core/io/recorder_sidecar.h: lenient
+// for what a crashed or older recording leaves out (shown as "-" / null), an error for a value
+// of the wrong type.
 json value_or_null(const json& obj, const char* key) {
   return obj.is_object() && obj.contains(key) ? obj.at(key) : json(nullptr);
 }
@@ -377,115 +379,97 @@ std::string text_of(const json& v) {
   return v.dump();
 }
 
-std::int64_t int_of(const json& obj, const char* key) {
-  const json v = value_or_null(obj, key);
-  return v.is_number() ? v.get<std::int64_t>() : 0;
-}
+// An empty text field of the sidecar is an unknown value.
+json text_or_null(const std::string& s) { return s.empty() ? json(nullptr) : json(s); }
 
 void info_session(const std::string& file, const json& doc, bool as_json, std::ostream& out) {
-  const json layout = value_or_null(doc, "layout");
-  const json layout_devices = value_or_null(layout, "devices");
-  const std::string status = text_of(value_or_null(doc, "status"));
-  const json start_ns = value_or_null(doc, "host_start_ns");
-  const json stop_ns = value_or_null(doc, "host_stop_ns");
-  double duration_s = std::nan("");
-  if (start_ns.is_number() && stop_ns.is_number() && stop_ns.get<std::int64_t>() > start_ns.get<std::int64_t>())
-    duration_s = static_cast<double>(stop_ns.get<std::int64_t>() - start_ns.get<std::int64_t>()) * 1e-9;
+  const lmc::RecorderSidecar side = lmc::recorder_sidecar_from_json(doc, file);
+  const json layout_devices = value_or_null(side.layout, "devices");
+  const json layout_name = value_or_null(side.layout, "name");
+  const double duration_s = side.host_duration_s();
   std::vector<std::string> warnings;
-  if (status == "recording")
+  if (!side.complete())
     warnings.push_back("status is still \"recording\": the program stopped before the trial was closed (crash?); "
                        "the recording holds the rows written until then");
-  const json rec_file = value_or_null(doc, "recording_file");
-  if (rec_file.is_string()) {
-    const auto beside = std::filesystem::path(file).parent_path() / rec_file.get<std::string>();
+  const json rec_file = text_or_null(side.recording_file);
+  if (!side.recording_file.empty()) {
+    const auto beside = std::filesystem::path(file).parent_path() / side.recording_file;
     if (!std::filesystem::exists(beside))
       warnings.push_back("recording file " + beside.string() + " not found beside the sidecar");
   }
   json devices = json::array();
-  const json src_devices = value_or_null(doc, "devices");
-  if (src_devices.is_array()) {
-    for (const auto& d : src_devices) {
-      const std::int64_t written = int_of(d, "frames_written");
-      const std::int64_t hand = int_of(d, "frames_with_hand");
-      double gap_ms = 0;
-      const json gaps = value_or_null(d, "gaps");
-      if (gaps.is_array())
-        for (const auto& g : gaps) {
-          const json ms = value_or_null(g, "duration_ms");
-          gap_ms += ms.is_number() ? ms.get<double>() : 0.0;
-        }
-      const json disc = value_or_null(d, "disconnects");
-      devices.push_back(
-          {{"device_id", value_or_null(d, "device_id")},
-           {"slot", value_or_null(d, "slot")},
-           {"serial", value_or_null(d, "serial")},
-           {"frames_written", written},
-           {"frames_with_hand", hand},
-           {"hand_fraction", written > 0 ? json(static_cast<double>(hand) / static_cast<double>(written)) : json(nullptr)},
-           {"frames_dropped_queue", int_of(d, "frames_dropped_queue")},
-           {"frame_id_gaps", int_of(d, "frame_id_gaps")},
-           {"gaps", gaps.is_array() ? gaps.size() : 0},
-           {"gap_ms", gap_ms},
-           {"disconnects", disc.is_array() ? disc.size() : 0},
-           {"first_timestamp_us", value_or_null(d, "first_timestamp_us")},
-           {"last_timestamp_us", value_or_null(d, "last_timestamp_us")}});
-    }
+  for (const auto& d : side.devices) {
+    double gap_ms = 0;
+    for (const auto& g : d.gaps) gap_ms += g.duration_ms();
+    devices.push_back(
+        {{"device_id", d.device_id},
+         {"slot", d.slot},
+         {"serial", d.serial},
+         {"frames_written", d.frames_written},
+         {"frames_with_hand", d.frames_with_hand},
+         {"hand_fraction", d.frames_written > 0
+                               ? json(static_cast<double>(d.frames_with_hand) / static_cast<double>(d.frames_written))
+                               : json(nullptr)},
+         {"frames_dropped_queue", d.frames_dropped_queue},
+         {"frame_id_gaps", d.frame_id_gaps},
+         {"gaps", d.gaps.size()},
+         {"gap_ms", gap_ms},
+         {"disconnects", d.disconnects.size()},
+         {"first_timestamp_us", d.first_timestamp_us},
+         {"last_timestamp_us", d.last_timestamp_us}});
   }
   json packets = json::array();
-  const json src_packets = value_or_null(doc, "vicon_packets");
-  if (src_packets.is_array())
-    for (const auto& p : src_packets)
-      packets.push_back({{"type", value_or_null(p, "type")},
-                         {"packet_id", value_or_null(p, "packet_id")},
-                         {"target", value_or_null(p, "target")},
-                         {"datagrams_sent", value_or_null(p, "datagrams_sent")},
-                         {"error", value_or_null(p, "error")}});
-  const json map_in = value_or_null(doc, "serial_to_slot");
-  const json serial_map = map_in.is_object() ? map_in : json::object();
+  for (const auto& p : side.vicon_packets)
+    packets.push_back({{"type", text_or_null(p.type)},
+                       {"packet_id", p.packet_id},
+                       {"target", text_or_null(p.target)},
+                       {"datagrams_sent", p.datagrams_sent},
+                       {"error", text_or_null(p.error)}});
+  const json serial_map = lmc::serial_to_slot_json(side.serial_to_slot);
+  const json truth = side.ground_truth ? lmc::sidecar_ground_truth_to_json(*side.ground_truth) : json(nullptr);
 
   if (as_json) {
     json j;
     j["file"] = file;
     j["type"] = "session";
-    j["trial"] = value_or_null(doc, "trial");
-    j["status"] = value_or_null(doc, "status");
-    j["error"] = value_or_null(doc, "error");
-    j["backend"] = value_or_null(doc, "backend");
+    j["trial"] = text_or_null(side.trial);
+    j["status"] = text_or_null(side.status);
+    j["error"] = text_or_null(side.error);
+    j["backend"] = text_or_null(side.backend);
     j["recording_file"] = rec_file;
-    j["layout_name"] = value_or_null(layout, "name");
+    j["layout_name"] = layout_name;
     j["layout_device_count"] = layout_devices.is_array() ? json(layout_devices.size()) : json(nullptr);
-    j["host_start_utc"] = value_or_null(doc, "host_start_utc");
-    j["host_stop_utc"] = value_or_null(doc, "host_stop_utc");
+    j["host_start_utc"] = text_or_null(side.host_start_utc);
+    j["host_stop_utc"] = text_or_null(side.host_stop_utc);
     j["duration_s"] = number_or_null(duration_s);
     j["serial_to_slot"] = serial_map;
-    j["frames_written"] = value_or_null(doc, "frames_written");
-    j["frames_dropped"] = value_or_null(doc, "frames_dropped");
+    j["frames_written"] = side.frames_written;
+    j["frames_dropped"] = side.frames_dropped;
     j["devices"] = devices;
     j["vicon_packets"] = packets;
-    j["vicon_alignment"] = value_or_null(doc, "vicon_alignment");
-    j["vicon_trigger_received"] = value_or_null(doc, "vicon_trigger_received");
-    j["vicon_stop_received"] = value_or_null(doc, "vicon_stop_received");
-    j["stopped_by"] = value_or_null(doc, "stopped_by");
-    j["ground_truth"] = value_or_null(doc, "ground_truth");
+    j["vicon_alignment"] = side.vicon_alignment;
+    j["vicon_trigger_received"] = side.vicon_trigger_received;
+    j["vicon_stop_received"] = side.vicon_stop_received;
+    j["stopped_by"] = text_or_null(side.stopped_by);
+    j["ground_truth"] = truth;
     j["warnings"] = warnings;
     out << j.dump(2) << "\n";
     return;
   }
   out << "file:       " << file << "\n";
-  out << "type:       session sidecar (lmc-session " << text_of(value_or_null(doc, "format_version")) << ")\n";
-  out << "trial:      " << text_of(value_or_null(doc, "trial")) << "\n";
-  out << "status:     " << status << "\n";
-  if (const json err = value_or_null(doc, "error"); !err.is_null()) out << "error:      " << text_of(err) << "\n";
-  out << "backend:    " << text_of(value_or_null(doc, "backend")) << "\n";
+  out << "type:       session sidecar (lmc-session " << side.format_version << ")\n";
+  out << "trial:      " << text_of(text_or_null(side.trial)) << "\n";
+  out << "status:     " << text_of(text_or_null(side.status)) << "\n";
+  if (!side.error.empty()) out << "error:      " << side.error << "\n";
+  out << "backend:    " << text_of(text_or_null(side.backend)) << "\n";
   out << "recording:  " << text_of(rec_file) << "\n";
-  out << "layout:     " << text_of(value_or_null(layout, "name")) << " ("
+  out << "layout:     " << text_of(layout_name) << " ("
       << (layout_devices.is_array() ? std::to_string(layout_devices.size()) : std::string("?")) << " devices)\n";
-  out << "started:    " << text_of(value_or_null(doc, "host_start_utc")) << "\n";
-  out << "stopped:    " << text_of(value_or_null(doc, "host_stop_utc"));
+  out << "started:    " << text_of(text_or_null(side.host_start_utc)) << "\n";
+  out << "stopped:    " << text_of(text_or_null(side.host_stop_utc));
   if (std::isfinite(duration_s)) out << " (" << fixed(duration_s, 3) << " s)";
   out << "\n";
-  out << "frames:     " << text_of(value_or_null(doc, "frames_written")) << " written, "
-      << text_of(value_or_null(doc, "frames_dropped")) << " dropped\n";
+  out << "frames:     " << side.frames_written << " written, " << side.frames_dropped << " dropped\n";
   out << "serials:    ";
   if (serial_map.empty()) out << "-";
   bool first_serial = true;
@@ -501,15 +485,14 @@ void info_session(const std::string& file, const json& doc, bool as_json, std::o
     if (!p["error"].is_null()) out << " ERROR: " << text_of(p["error"]);
   }
   out << "\n";
-  for (const char* key : {"vicon_trigger_received", "vicon_stop_received"}) {
-    const json got = value_or_null(doc, key);
-    if (!got.is_object()) continue;
-    out << "vicon in:   " << (std::string(key) == "vicon_stop_received" ? "CaptureStop" : "CaptureStart") << " '"
-        << text_of(value_or_null(got, "name")) << "' PacketID " << text_of(value_or_null(got, "packet_id"))
-        << " received at " << text_of(value_or_null(got, "host_time_utc")) << "\n";
+  for (const json* got : {&side.vicon_trigger_received, &side.vicon_stop_received}) {
+    if (!got->is_object()) continue;
+    out << "vicon in:   " << (got == &side.vicon_stop_received ? "CaptureStop" : "CaptureStart") << " '"
+        << text_of(value_or_null(*got, "name")) << "' PacketID " << text_of(value_or_null(*got, "packet_id"))
+        << " received at " << text_of(value_or_null(*got, "host_time_utc")) << "\n";
   }
-  if (const json by = value_or_null(doc, "stopped_by"); !by.is_null()) out << "stopped by: " << text_of(by) << "\n";
-  const json align = value_or_null(doc, "vicon_alignment");
+  if (!side.stopped_by.empty()) out << "stopped by: " << side.stopped_by << "\n";
+  const json& align = side.vicon_alignment;
   if (align.is_object()) {
     out << "alignment:  " << text_of(value_or_null(align, "event")) << " at " << text_of(value_or_null(align, "host_time_utc"));
     const json ad = value_or_null(align, "devices");
@@ -520,7 +503,6 @@ void info_session(const std::string& file, const json& doc, bool as_json, std::o
             << text_of(value_or_null(d, "latest_timestamp_us")) << " us)";
     out << "\n";
   }
-  const json truth = value_or_null(doc, "ground_truth");
   if (truth.is_object())
     out << "truth:      " << text_of(value_or_null(truth, "file")) << ", " << text_of(value_or_null(truth, "frames"))
         << " frames at " << text_of(value_or_null(truth, "rate_hz")) << " Hz, device clock at time 0 "
@@ -558,7 +540,7 @@ void run_info(const InfoOptions& opt) {
       throw lmc::Error(lmc::ErrorLocation{file, 0, 0, "/format"},
                        "JSON file without \"format\": not a layout or session sidecar this version knows");
     }
-    if (doc.at("format") == "lmc-session") {
+    if (lmc::is_recorder_sidecar(doc)) {
       info_session(file, doc, opt.json, std::cout);
       return;
     }

@@ -12,30 +12,27 @@
 // until CaptureStop. Ctrl-C stops the trial cleanly. At CaptureStart (sent or received) every
 // device's latest frame goes into the sidecar's "vicon_alignment" (devices/README.md). A trial
 // ended by an error (Vicon refused, a device never streamed) keeps its rows and its sidecar says
-// "aborted" with the error; a write error (disk full, `ulimit -f`) says "failed".
+// "aborted" with the error; a write error (disk full, `ulimit -f`) says "failed". The trial itself
+// runs in devices/record/trial_engine.h; this file turns options into its config and its
+// snapshots into stderr lines.
 #include <atomic>
-#include <chrono>
 #include <csignal>
 #include <cstdio>
 #include <filesystem>
 #include <iomanip>
 #include <iostream>
-#include <cmath>
 #include <memory>
-#include <mutex>
 #include <nlohmann/json.hpp>
 #include <sstream>
+#include <stop_token>
 #include <string>
-#include <thread>
 
 #include "app/lmc/command.h"
 #include "core/common/error.h"
 #include "core/io/layout_json.h"
-#include "core/io/trc.h"
 #include "devices/device_hub.h"
-#include "devices/host_clock.h"
-#include "devices/record/clock_alignment.h"
 #include "devices/record/recorder.h"
+#include "devices/record/trial_engine.h"
 #include "devices/record/trial_name.h"
 #include "devices/sim/sim_source.h"
 #include "devices/source_factory.h"
@@ -87,11 +84,59 @@ std::string status_line(const HubSnapshot& snap, const RecorderStatus& rec, doub
 }
 
 // Device messages go to stderr as they happen; --quiet keeps only the ones that need attention.
-void print_messages(DeviceHub& hub, bool quiet) {
-  for (const auto& m : hub.take_messages()) {
-    const bool routine = m.find(" connected (") != std::string::npos || m.find(" assigned to ") != std::string::npos;
-    if (!quiet || !routine) std::cerr << "lmc record: " << m << "\n";
+bool routine(const std::string& m) {
+  return m.find(" connected (") != std::string::npos || m.find(" assigned to ") != std::string::npos;
+}
+
+// The options as a trial for the engine (devices/record/trial_engine.h), which runs it.
+TrialEngineConfig engine_config(const RecordOptions& opt, const SourceSpec& spec, const SourceSettings& settings) {
+  TrialEngineConfig c;
+  c.output_dir = opt.out_dir;
+  c.trial = opt.trial;
+  c.seconds = opt.seconds;
+  c.stream_timeout_s = opt.stream_timeout_s;
+  c.backend = spec.backend;
+  c.allow_overwrite = opt.force;
+  c.stopped_by = "operator (Ctrl-C)";
+  if (spec.backend == "sim") c.extra["simulator"] = sim_config_to_json(settings.sim);
+  if (spec.backend == "replay") c.extra["replay_of"] = spec.replay_path;
+  if (!opt.vicon.empty()) {
+    ViconTriggerConfig vc = parse_vicon_target(opt.vicon);
+    vc.repeats = opt.vicon_repeats;
+    vc.database_path = opt.vicon_database;
+    vc.notes = opt.vicon_notes;
+    vc.description = opt.vicon_description;
+    c.vicon = vc;
   }
+  if (opt.vicon_listen_port > 0)
+    c.vicon_listen = std::make_pair(opt.vicon_listen_address, static_cast<std::uint16_t>(opt.vicon_listen_port));
+  return c;
+}
+
+void print_summary(const TrialResult& r, const HubSnapshot& snap, const std::string& backend, const std::string& layout,
+                   double truth_rate_hz) {
+  const RecorderStatus& st = r.recorder;
+  std::cout << "trial " << r.trial << ": " << st.frames_written << " frames from " << st.devices.size() << " devices ("
+            << backend << ", layout " << layout << ")\n";
+  for (const auto& [id, d] : st.devices) {
+    const double span_s = static_cast<double>(d.last_timestamp_us - d.first_timestamp_us) / 1e6;
+    std::cout << "  " << std::left << std::setw(6) << d.slot << std::setw(22) << d.serial << std::right << std::setw(7)
+              << d.frames_written << " frames";
+    if (span_s > 0)
+      std::cout << std::fixed << std::setprecision(1) << std::setw(7)
+                << static_cast<double>(d.frames_written - 1) / span_s << " Hz";
+    if (d.frames_written > 0)
+      std::cout << std::setw(5) << (100 * d.frames_with_hand / d.frames_written) << "% hand";
+    if (!d.gaps.empty()) std::cout << "  " << d.gaps.size() << " gap(s)";
+    if (!d.disconnects.empty()) std::cout << "  " << d.disconnects.size() << " disconnect(s)";
+    if (d.frames_dropped_queue > 0) std::cout << "  " << d.frames_dropped_queue << " dropped";
+    std::cout << "\n";
+  }
+  for (const auto& s : snap.unassigned_serials) std::cout << "  unassigned device " << s << " (not recorded)\n";
+  std::cout << "  recording: " << r.paths.recording.string() << "\n  sidecar:   " << r.paths.sidecar.string() << "\n";
+  if (r.truth_seconds > 0 && std::filesystem::exists(r.paths.truth_trc))
+    std::cout << "  truth:     " << r.paths.truth_trc.string() << " (" << r.truth_seconds << " s at " << truth_rate_hz
+              << " Hz)\n";
 }
 
 void run_record(const RecordOptions& opt) {
@@ -111,239 +156,46 @@ void run_record(const RecordOptions& opt) {
   // In listen mode the trial starts whenever Vicon says so: the simulator runs until stopped.
   settings.duration_s = spec.backend == "sim" && !listen ? opt.seconds : 0.0;
 
-  auto check_free = [&](const std::string& trial) {
-    const SessionPaths paths = session_paths(opt.out_dir, trial);
-    if (!opt.force)
-      for (const auto& p : {paths.recording, paths.sidecar, paths.truth_trc})
-        if (std::filesystem::exists(p)) throw lmc::Error(p.string() + " exists; choose another trial name or pass --force");
-    return paths;
-  };
-  std::string trial = opt.trial;
-  SessionPaths paths;
-  if (!trial.empty()) paths = check_free(trial);
-
-  std::unique_ptr<ViconTrigger> vicon;
-  if (!opt.vicon.empty()) {
-    ViconTriggerConfig vc = parse_vicon_target(opt.vicon);
-    vc.repeats = opt.vicon_repeats;
-    vc.database_path = opt.vicon_database;
-    vc.notes = opt.vicon_notes;
-    vc.description = opt.vicon_description;
-    vicon = std::make_unique<ViconTrigger>(vc);
-  }
-  // Vicon's own start/stop broadcasts (or another lab program's) drive the trial.
-  std::mutex vicon_in_mutex;
-  std::vector<std::pair<ViconMessage, std::int64_t>> vicon_in;  // with the host time it arrived
-  std::unique_ptr<ViconListener> listener;
-  if (listen) {
-    listener = std::make_unique<ViconListener>(opt.vicon_listen_address, static_cast<std::uint16_t>(opt.vicon_listen_port),
-                                               [&](const ViconMessage& m) {
-                                                 const std::int64_t at = host_now_ns();
-                                                 std::lock_guard lock(vicon_in_mutex);
-                                                 vicon_in.emplace_back(m, at);
-                                               });
-    if (!opt.quiet)
-      std::cerr << "lmc record: waiting for CaptureStart on " << opt.vicon_listen_address << ":" << listener->port() << "\n";
-  }
-
+  const TrialEngineConfig config = engine_config(opt, spec, settings);
   HubOptions hub_options;
   hub_options.backpressure = opt.fast;
   DeviceHub hub(settings.layout, hub_options);
   std::unique_ptr<FrameSource> source = make_source(spec, settings);
-  auto* sim = dynamic_cast<SimSource*>(source.get());
+  const auto* sim = dynamic_cast<const SimSource*>(source.get());
   hub.add_source(std::move(source));
 
-  std::unique_ptr<Recorder> recorder;
-  double sim_time_at_start = 0;
-  auto begin_recording = [&] {
-    RecorderConfig rc;
-    rc.output_dir = opt.out_dir;
-    rc.trial = trial;
-    rc.layout = settings.layout;
-    rc.backend = spec.backend;
-    if (spec.backend == "sim") rc.extra["simulator"] = sim_config_to_json(settings.sim);
-    if (spec.backend == "replay") rc.extra["replay_of"] = spec.replay_path;
-    recorder = std::make_unique<Recorder>(rc);
-    recorder->start();
-    if (sim != nullptr) sim_time_at_start = sim->simulated_time_s();
-    hub.set_consumer(recorder.get());
-  };
-  if (!listen) begin_recording();
-
+  // Ctrl-C only sets a flag (all a signal handler may do); the status callback turns it into
+  // the engine's stop request.
+  std::stop_source stop;
   g_interrupted = false;
   auto previous = std::signal(SIGINT, on_sigint);
-  const auto t0 = std::chrono::steady_clock::now();
-  auto elapsed = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count(); };
-  hub.start();
-
-  // Vicon starts when every slot streams (the study's rule), so both files cover the same span.
-  auto all_streaming = [&] {
-    const auto snap = hub.snapshot();
-    int streaming = 0;
-    for (const auto& d : snap.devices) streaming += (d.slot_index >= 0 && d.frames_received > 0) ? 1 : 0;
-    return streaming >= settings.layout.device_count();
-  };
-  std::string failure;
-  bool vicon_started = false;
-  auto send_vicon = [&](bool start) {
-    if (!vicon) return;
-    // Every device's latest frame just before CaptureStart leaves: with the send time it ties
-    // each device clock to the instant Vicon starts (sidecar "vicon_alignment").
-    const HubSnapshot before = hub.snapshot();
-    const ViconSendResult r = start ? vicon->send_start(trial) : vicon->send_stop(trial);
-    if (start && recorder && r.datagrams_sent > 0)
-      recorder->note("vicon_alignment", clock_alignment_json(before, "CaptureStart sent", r.first_datagram_host_ns,
-                                                             r.message.packet_id, utc_now_iso8601()));
-    nlohmann::json p = {{"type", start ? "CaptureStart" : "CaptureStop"},
-                        {"packet_id", r.message.packet_id},
-                        {"target", vicon->target()},
-                        {"datagrams_sent", r.datagrams_sent},
-                        {"host_time_utc", utc_now_iso8601()},
-                        {"host_ns", host_now_ns()}};
-    if (!r.ok()) p["error"] = r.error;
-    if (!r.warning.empty()) {
-      p["warning"] = r.warning;
-      std::cerr << "lmc record: " << r.warning << "\n";
-    }
-    if (recorder) recorder->note_vicon_packet(p);
-    if (!r.ok()) {
-      std::cerr << "lmc record: " << r.error << "\n";
-      if (failure.empty()) failure = r.error;
-    } else if (!opt.quiet) {
-      std::cerr << "lmc record: Vicon " << (start ? "CaptureStart" : "CaptureStop") << " sent to " << vicon->target()
-                << " (PacketID " << r.message.packet_id << ", " << r.datagrams_sent << "×)\n";
-    }
-  };
-
-  double record_start_s = -1;
   double last_status = -1;
-  bool stop_from_vicon = false;
-  for (;;) {
-    std::this_thread::sleep_for(std::chrono::milliseconds(opt.fast ? 20 : 50));
-    print_messages(hub, opt.quiet);
-    const double now = elapsed();
-    if (listen) {
-      std::vector<std::pair<ViconMessage, std::int64_t>> got;
-      {
-        std::lock_guard lock(vicon_in_mutex);
-        got.swap(vicon_in);
-      }
-      for (const auto& [m, received_ns] : got) {
-        if (m.type == ViconMessage::Type::kStart && !recorder) {
-          if (opt.trial.empty()) {
-            if (auto why = validate_trial_name(m.name); !why.empty()) {
-              std::cerr << "lmc record: ignoring CaptureStart: its Name cannot be a trial name (" << why << ")\n";
-              continue;
-            }
-            trial = m.name;
-            try {
-              paths = check_free(trial);
-            } catch (const std::exception& e) {
-              failure = e.what();
-              break;
-            }
-          }
-          begin_recording();
-          recorder->note("vicon_alignment", clock_alignment_json(hub.snapshot(), "CaptureStart received", received_ns,
-                                                                 m.packet_id, utc_now_iso8601()));
-          recorder->note("vicon_trigger_received", {{"type", "CaptureStart"}, {"name", m.name}, {"packet_id", m.packet_id},
-                                                    {"host_time_utc", utc_now_iso8601()}});
-          record_start_s = now;
-          if (!opt.quiet) std::cerr << "lmc record: CaptureStart received: recording " << trial << "\n";
-        } else if (m.type == ViconMessage::Type::kStop && recorder) {
-          recorder->note("vicon_stop_received", {{"name", m.name}, {"packet_id", m.packet_id}, {"result", m.result},
-                                                 {"host_time_utc", utc_now_iso8601()}});
-          stop_from_vicon = true;
-        }
-      }
-      if (!failure.empty() || stop_from_vicon) break;
-    } else if (record_start_s < 0) {
-      if (all_streaming() || hub.sources_finished()) {
-        record_start_s = now;
-        send_vicon(true);
-        vicon_started = vicon != nullptr;
-      } else if (now > opt.stream_timeout_s) {
-        failure = "not every device of layout '" + settings.layout.name + "' streamed within " +
-                  std::to_string(static_cast<int>(opt.stream_timeout_s)) + " s";
-        break;
-      }
-    }
-    if (recorder && recorder->failed()) {
-      failure = recorder->status().error;
-      break;
-    }
-    if (g_interrupted) {
+  auto on_status = [&](const TrialSnapshot& s) {
+    for (const auto& m : s.new_notices)
+      if (!opt.quiet) std::cerr << "lmc record: " << m << "\n";
+    for (const auto& m : s.new_messages)
+      if (!opt.quiet || !routine(m)) std::cerr << "lmc record: " << m << "\n";
+    if (g_interrupted && !stop.stop_requested()) {
       std::cerr << "\nlmc record: interrupted; stopping the trial\n";
-      if (recorder) recorder->note("stopped_by", "operator (Ctrl-C)");
-      break;
+      stop.request_stop();
     }
-    if (!opt.quiet && now - last_status >= 1.0) {
-      last_status = now;
-      std::cerr << status_line(hub.snapshot(), recorder ? recorder->status() : RecorderStatus{}, now) << "\n";
+    const bool live = s.phase != TrialPhase::kFinishing && s.phase != TrialPhase::kDone;
+    if (!opt.quiet && live && s.elapsed_s - last_status >= 1.0) {
+      last_status = s.elapsed_s;
+      std::cerr << status_line(s.hub, s.recorder, s.elapsed_s) << "\n";
     }
-    if (hub.sources_finished()) break;
-    const bool timed = listen || (!opt.fast && spec.backend != "sim");
-    if (timed && record_start_s >= 0 && now - record_start_s >= opt.seconds) break;
-    if (!failure.empty()) break;
-  }
-  hub.stop();
-  hub.set_consumer(nullptr);
-  print_messages(hub, opt.quiet);
+  };
+  TrialEngine engine(hub, sim, config);
+  const TrialResult result = engine.run(stop.get_token(), on_status);
   std::signal(SIGINT, previous);
-  listener.reset();
-  if (vicon_started) send_vicon(false);
-  if (!recorder) throw lmc::Error(failure.empty() ? "no CaptureStart received; nothing recorded" : failure);
 
-  double truth_from = 0, truth_seconds = 0;
-  if (sim != nullptr) {
-    truth_from = sim_time_at_start;
-    truth_seconds = (sim->finished() ? opt.seconds : sim->simulated_time_s()) - truth_from;
-    auto truth = sim->truth_until(truth_from + truth_seconds);
-    const auto skip = static_cast<size_t>(std::ceil(truth_from * settings.sim.truth_rate_hz - 1e-9));
-    truth.erase(truth.begin(), truth.begin() + static_cast<std::ptrdiff_t>(std::min(skip, truth.size())));
-    lmc::TrcData trc = truth_trc(truth, settings.sim.truth_rate_hz, sim->rig().marker_map());
-    const double first_s = static_cast<double>(skip) / settings.sim.truth_rate_hz;
-    try {
-      lmc::save_trc(paths.truth_trc, trc);
-      recorder->note("ground_truth",
-                     {{"file", paths.truth_trc.filename().string()},
-                      {"rate_hz", settings.sim.truth_rate_hz},
-                      {"frames", trc.frame_count()},
-                      {"device_clock_at_time_zero_us",
-                       settings.sim.device_clock_start_us + static_cast<std::int64_t>(std::llround(first_s * 1e6))},
-                      {"mapping", "assets/mappings/vicon-26-to-lmc.json (exact inverse)"}});
-    } catch (const std::exception& e) {
-      if (failure.empty()) failure = std::string("cannot write the ground truth: ") + e.what();
-    }
-  }
-  // An abort (Vicon refused the trigger, a device never streamed, …) makes the sidecar say
-  // "aborted" with the reason; a write error of the recorder's own stays "failed".
-  const RecorderStatus st = recorder->stop(hub.serial_to_slot(), failure);
-  if (failure.empty() && (st.state == RecorderState::kFailed || st.state == RecorderState::kAborted)) failure = st.error;
-
-  const HubSnapshot snap = hub.snapshot();
-  std::cout << "trial " << trial << ": " << st.frames_written << " frames from " << st.devices.size()
-            << " devices (" << spec.backend << ", layout " << settings.layout.name << ")\n";
-  for (const auto& [id, d] : st.devices) {
-    const double span_s = static_cast<double>(d.last_timestamp_us - d.first_timestamp_us) / 1e6;
-    std::cout << "  " << std::left << std::setw(6) << d.slot << std::setw(22) << d.serial << std::right << std::setw(7)
-              << d.frames_written << " frames";
-    if (span_s > 0)
-      std::cout << std::fixed << std::setprecision(1) << std::setw(7)
-                << static_cast<double>(d.frames_written - 1) / span_s << " Hz";
-    if (d.frames_written > 0)
-      std::cout << std::setw(5) << (100 * d.frames_with_hand / d.frames_written) << "% hand";
-    if (!d.gaps.empty()) std::cout << "  " << d.gaps.size() << " gap(s)";
-    if (!d.disconnects.empty()) std::cout << "  " << d.disconnects.size() << " disconnect(s)";
-    if (d.frames_dropped_queue > 0) std::cout << "  " << d.frames_dropped_queue << " dropped";
-    std::cout << "\n";
-  }
-  for (const auto& s : snap.unassigned_serials) std::cout << "  unassigned device " << s << " (not recorded)\n";
-  std::cout << "  recording: " << paths.recording.string() << "\n  sidecar:   " << paths.sidecar.string() << "\n";
-  if (sim != nullptr && std::filesystem::exists(paths.truth_trc))
-    std::cout << "  truth:     " << paths.truth_trc.string() << " (" << truth_seconds << " s at "
-              << settings.sim.truth_rate_hz << " Hz)\n";
-  if (!failure.empty()) {
+  if (!result.existing.empty())
+    throw lmc::Error(result.existing.string() + " exists; choose another trial name or pass --force");
+  if (!result.recorded) throw lmc::Error(result.reason);
+  print_summary(result, hub.snapshot(), spec.backend, settings.layout.name,
+                sim != nullptr ? sim->rig().config().truth_rate_hz : 0.0);
+  if (result.outcome == TrialOutcome::kAborted || result.outcome == TrialOutcome::kFailed) {
+    std::string failure = result.reason;
     if (failure.find("kept") == std::string::npos) failure += " (the rows written so far are kept)";
     throw lmc::Error(failure);
   }

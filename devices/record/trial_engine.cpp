@@ -1,0 +1,416 @@
+#include "devices/record/trial_engine.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <mutex>
+#include <sstream>
+#include <thread>
+
+#include "core/common/error.h"
+#include "core/io/trc.h"
+#include "devices/host_clock.h"
+#include "devices/record/clock_alignment.h"
+#include "devices/record/trial_name.h"
+#include "devices/sim/truth_markers.h"
+
+namespace lmc::devices {
+
+const char* trial_outcome_name(TrialOutcome o) {
+  switch (o) {
+    case TrialOutcome::kCompleted: return "completed";
+    case TrialOutcome::kAborted: return "aborted";
+    case TrialOutcome::kFailed: return "failed";
+    case TrialOutcome::kInterrupted: return "interrupted";
+  }
+  return "?";
+}
+
+const char* trial_phase_name(TrialPhase p) {
+  switch (p) {
+    case TrialPhase::kWaitingForStreams: return "waiting_for_streams";
+    case TrialPhase::kWaitingForVicon: return "waiting_for_vicon";
+    case TrialPhase::kCountdown: return "countdown";
+    case TrialPhase::kRecording: return "recording";
+    case TrialPhase::kFinishing: return "finishing";
+    case TrialPhase::kDone: return "done";
+  }
+  return "?";
+}
+
+// The state of one run() call. Members are touched by the calling thread only, except `inbox`,
+// which the Vicon listener's thread fills.
+struct TrialEngine::Run {
+  using Clock = std::chrono::steady_clock;
+  static constexpr auto kPoll = std::chrono::milliseconds(20);
+  static constexpr auto kStatusEvery = std::chrono::milliseconds(100);
+
+  DeviceHub& hub;
+  const SimSource* sim;
+  const TrialEngineConfig& cfg;
+  std::stop_token stop;
+  const std::function<void(const TrialSnapshot&)>& on_status;
+
+  TrialResult result;
+  TrialPhase phase = TrialPhase::kWaitingForStreams;
+  std::string trial;
+  std::string message;
+  std::vector<std::string> pending_messages, pending_notices;
+  std::unique_ptr<Recorder> recorder;
+  std::unique_ptr<ViconTrigger> vicon;
+  std::unique_ptr<ViconListener> listener;
+  std::mutex inbox_mutex;
+  std::vector<std::pair<ViconMessage, std::int64_t>> inbox;  // with the host time it arrived
+  Clock::time_point t0 = Clock::now();
+  Clock::time_point last_report{};
+  double sim_time_at_start = 0;  // simulated time when the recorder started (truth starts there)
+  double countdown_from = 0, recording_from = 0, recording_until = -1;  // engine clock
+  bool recording_started = false;
+  bool vicon_start_sent = false;
+  bool vicon_stop_received = false;
+  int vicon_sent = 0;
+  bool interrupted = false;
+  bool hub_started_here = false;
+  std::string failure;  // first outside error: the trial ends "aborted" with it
+
+  Run(DeviceHub& h, const SimSource* s, const TrialEngineConfig& c, std::stop_token st,
+      const std::function<void(const TrialSnapshot&)>& cb)
+      : hub(h), sim(s), cfg(c), stop(std::move(st)), on_status(cb), trial(c.trial) {}
+
+  bool listen() const { return cfg.vicon_listen.has_value(); }
+  double wall_s() const { return std::chrono::duration<double>(Clock::now() - t0).count(); }
+  // Simulated seconds with a simulator (a --fast trial is exact), else wall-clock seconds.
+  double clock_s() const { return sim != nullptr ? sim->simulated_time_s() : wall_s(); }
+  bool sim_decides_length() const { return sim != nullptr && sim->duration_s() > 0; }
+
+  void say(std::string text) {
+    result.messages.push_back(text);
+    pending_messages.push_back(std::move(text));
+  }
+  void notice(std::string text) {
+    result.messages.push_back(text);
+    pending_notices.push_back(std::move(text));
+  }
+  void fail(const std::string& why) {
+    if (failure.empty()) failure = why;
+  }
+
+  double recording_s() const {
+    if (!recording_started) return 0;
+    return std::max(0.0, (recording_until >= 0 ? recording_until : clock_s()) - recording_from);
+  }
+
+  void report(bool force) {
+    for (auto& m : hub.take_messages()) say(std::move(m));
+    const auto now = Clock::now();
+    const bool news = !pending_messages.empty() || !pending_notices.empty();
+    if (!on_status) {
+      pending_messages.clear();
+      pending_notices.clear();
+      return;
+    }
+    if (!force && !news && now - last_report < kStatusEvery) return;
+    last_report = now;
+    TrialSnapshot s;
+    s.phase = phase;
+    s.trial = trial;
+    s.elapsed_s = wall_s();
+    if (phase == TrialPhase::kCountdown) s.countdown_remaining_s = std::max(0.0, cfg.countdown_s - (clock_s() - countdown_from));
+    s.recording_s = recording_s();
+    if (!sim_decides_length()) s.remaining_s = std::max(0.0, cfg.seconds - s.recording_s);
+    s.hub = hub.snapshot();
+    if (recorder) s.recorder = recorder->status();
+    s.vicon_packets_sent = vicon_sent;
+    s.message = message;
+    s.new_messages = std::move(pending_messages);
+    s.new_notices = std::move(pending_notices);
+    pending_messages.clear();
+    pending_notices.clear();
+    on_status(s);
+  }
+
+  void set_phase(TrialPhase p, std::string text) {
+    phase = p;
+    message = std::move(text);
+    report(true);
+  }
+
+  void tick() {
+    std::this_thread::sleep_for(kPoll);
+    report(false);
+  }
+
+  // Vicon starts when every slot streams (the study's rule), so both files cover the same span.
+  bool all_streaming() const {
+    const HubSnapshot snap = hub.snapshot();
+    size_t streaming = 0;
+    for (const auto& d : snap.devices) streaming += (d.slot_index >= 0 && d.frames_received > 0) ? 1 : 0;
+    return streaming >= snap.slots.size();
+  }
+
+  void refuse_existing(const std::string& name) {
+    if (cfg.allow_overwrite) return;
+    const SessionPaths paths = session_paths(cfg.output_dir, name);
+    for (const auto& p : {paths.recording, paths.sidecar, paths.truth_trc})
+      if (std::filesystem::exists(p)) {
+        result.existing = p;
+        throw Error(p.string() + " exists; choose another trial name");
+      }
+  }
+
+  void begin_recording() {
+    RecorderConfig rc;
+    rc.output_dir = cfg.output_dir;
+    rc.trial = trial;
+    rc.layout = hub.layout();
+    rc.backend = cfg.backend;
+    rc.extra = cfg.extra;
+    rc.open_sink = cfg.open_sink;
+    auto rec = std::make_unique<Recorder>(rc);
+    rec->start();
+    recorder = std::move(rec);
+    result.trial = trial;
+    result.paths = recorder->paths();
+    result.recorded = true;
+    if (sim != nullptr) sim_time_at_start = sim->simulated_time_s();
+    hub.set_consumer(recorder.get());
+  }
+
+  void send_vicon(bool start) {
+    // Every device's latest frame just before CaptureStart leaves: with the send time it ties
+    // each device clock to the instant Vicon starts (sidecar "vicon_alignment").
+    const HubSnapshot before = hub.snapshot();
+    const ViconSendResult r = start ? vicon->send_start(trial) : vicon->send_stop(trial);
+    if (start) vicon_start_sent = true;
+    if (start && recorder && r.datagrams_sent > 0)
+      recorder->note("vicon_alignment", clock_alignment_json(before, "CaptureStart sent", r.first_datagram_host_ns,
+                                                             r.message.packet_id, utc_now_iso8601()));
+    SidecarViconPacket p;
+    p.type = start ? "CaptureStart" : "CaptureStop";
+    p.packet_id = r.message.packet_id;
+    p.target = vicon->target();
+    p.datagrams_sent = r.datagrams_sent;
+    p.host_time_utc = utc_now_iso8601();
+    p.host_ns = host_now_ns();
+    p.error = r.error;
+    p.warning = r.warning;
+    if (recorder) recorder->note_vicon_packet(p);
+    if (r.datagrams_sent > 0) ++vicon_sent;
+    if (!r.warning.empty()) say(r.warning);
+    if (!r.ok()) {
+      say(r.error);
+      fail(r.error);
+    } else {
+      notice("Vicon " + p.type + " sent to " + p.target + " (PacketID " + std::to_string(p.packet_id) + ", " +
+             std::to_string(r.datagrams_sent) + "×)");
+    }
+  }
+
+  // Vicon's own start/stop broadcasts (listen mode), in the order they arrived.
+  void handle_vicon_inbox() {
+    if (!listener) return;
+    std::vector<std::pair<ViconMessage, std::int64_t>> got;
+    {
+      std::lock_guard lock(inbox_mutex);
+      got.swap(inbox);
+    }
+    for (const auto& [m, received_ns] : got) {
+      if (m.type == ViconMessage::Type::kStart && !recorder) {
+        if (cfg.trial.empty()) {
+          if (auto why = validate_trial_name(m.name); !why.empty()) {
+            say("ignoring CaptureStart: its Name cannot be a trial name (" + why + ")");
+            continue;
+          }
+          trial = m.name;
+          refuse_existing(trial);
+        }
+        begin_recording();
+        recorder->note("vicon_alignment", clock_alignment_json(hub.snapshot(), "CaptureStart received", received_ns,
+                                                               m.packet_id, utc_now_iso8601()));
+        recorder->note("vicon_trigger_received", {{"type", "CaptureStart"},
+                                                  {"name", m.name},
+                                                  {"packet_id", m.packet_id},
+                                                  {"host_time_utc", utc_now_iso8601()}});
+        notice("CaptureStart received: recording " + trial);
+      } else if (m.type == ViconMessage::Type::kStop && recorder) {
+        recorder->note("vicon_stop_received", {{"name", m.name},
+                                               {"packet_id", m.packet_id},
+                                               {"result", m.result},
+                                               {"host_time_utc", utc_now_iso8601()}});
+        vicon_stop_received = true;
+      }
+    }
+  }
+
+  // True when the trial must end now (the reason is in `failure` / `interrupted`).
+  bool must_end() {
+    handle_vicon_inbox();
+    if (recorder && recorder->failed()) {
+      fail(recorder->status().error);
+      return true;
+    }
+    if (!failure.empty() || vicon_stop_received) return true;
+    if (stop.stop_requested()) {
+      interrupted = true;
+      return true;
+    }
+    return false;
+  }
+
+  void execute() {
+    if (!(cfg.seconds > 0)) throw Error("the trial length must be > 0 s");
+    if (!listen() || !trial.empty()) {
+      require_valid_trial_name(trial);
+      refuse_existing(trial);
+    }
+    if (cfg.vicon) vicon = std::make_unique<ViconTrigger>(*cfg.vicon);
+    if (listen()) {
+      listener = std::make_unique<ViconListener>(cfg.vicon_listen->first, cfg.vicon_listen->second,
+                                                 [this](const ViconMessage& m) {
+                                                   const std::int64_t at = host_now_ns();
+                                                   std::lock_guard lock(inbox_mutex);
+                                                   inbox.emplace_back(m, at);
+                                                 });
+      result.listen_address = cfg.vicon_listen->first + ":" + std::to_string(listener->port());
+      notice("waiting for CaptureStart on " + result.listen_address);
+    }
+    // Recording starts before the devices do, so a simulated trial holds every frame from time 0
+    // (and the same seed gives the same file).
+    if (!listen()) begin_recording();
+    if (!hub.running()) {
+      hub.start();
+      hub_started_here = true;
+    }
+
+    if (listen()) {
+      set_phase(TrialPhase::kWaitingForVicon, "waiting for Vicon's CaptureStart");
+      while (!recorder) {
+        if (must_end()) return;
+        if (hub.sources_finished()) return;  // nothing more will stream
+        tick();
+      }
+    }
+
+    set_phase(TrialPhase::kWaitingForStreams, "waiting for every device to stream");
+    const double wait_from = wall_s();
+    while (!(all_streaming() || hub.sources_finished())) {
+      if (must_end()) return;
+      if (wall_s() - wait_from > cfg.stream_timeout_s) {
+        std::ostringstream why;
+        why << "not every device of layout '" << hub.layout().name << "' streamed within " << cfg.stream_timeout_s
+            << " s";
+        fail(why.str());
+        return;
+      }
+      tick();
+    }
+    if (vicon && !listen()) {
+      send_vicon(true);
+      if (must_end()) return;
+    }
+
+    if (cfg.countdown_s > 0) {
+      countdown_from = clock_s();
+      set_phase(TrialPhase::kCountdown, "countdown");
+      while (clock_s() - countdown_from < cfg.countdown_s) {
+        if (must_end()) return;
+        // A source that ended (a simulator's duration, a replay's last row) ends the trial in
+        // the recording phase below, so every trial that streamed passes through it.
+        if (hub.sources_finished()) break;
+        tick();
+      }
+    }
+
+    recording_from = clock_s();
+    recording_started = true;
+    set_phase(TrialPhase::kRecording, "recording " + trial);
+    for (;;) {
+      if (must_end() || hub.sources_finished()) break;
+      if (!sim_decides_length() && clock_s() - recording_from >= cfg.seconds) break;
+      tick();
+    }
+  }
+
+  void write_truth() {
+    const SimConfig& sc = sim->rig().config();
+    const double from = sim_time_at_start;
+    const double until = sim->finished() && sim->duration_s() > 0 ? sim->duration_s() : sim->simulated_time_s();
+    const double seconds = until - from;
+    auto truth = sim->truth_until(from + seconds);
+    // TRC frame i is simulated time i / rate: the file starts at the first truth frame at or
+    // after the recording's start.
+    const auto skip = static_cast<size_t>(std::ceil(from * sc.truth_rate_hz - 1e-9));
+    truth.erase(truth.begin(), truth.begin() + static_cast<std::ptrdiff_t>(std::min(skip, truth.size())));
+    const TrcData trc = truth_trc(truth, sc.truth_rate_hz, sim->rig().marker_map());
+    const double first_s = static_cast<double>(skip) / sc.truth_rate_hz;
+    save_trc(result.paths.truth_trc, trc);
+    SidecarGroundTruth gt;
+    gt.file = result.paths.truth_trc.filename().string();
+    gt.rate_hz = sc.truth_rate_hz;
+    gt.frames = trc.frame_count();
+    gt.device_clock_at_time_zero_us = sc.device_clock_start_us + static_cast<std::int64_t>(std::llround(first_s * 1e6));
+    gt.mapping = "assets/mappings/vicon-26-to-lmc.json (exact inverse)";
+    recorder->note_ground_truth(gt);
+    result.truth_seconds = seconds;
+  }
+
+  // Runs `step`; an exception becomes the trial's failure (when it has none yet), never an escape.
+  template <typename F>
+  void guarded(const char* what, F&& step) {
+    try {
+      step();
+    } catch (const std::exception& e) {
+      fail(std::string(what) + e.what());
+    } catch (...) {
+      fail(std::string(what) + "unknown error");
+    }
+  }
+
+  void finish() {
+    recording_until = clock_s();
+    guarded("", [&] { set_phase(TrialPhase::kFinishing, "finishing " + trial); });
+    // The engine's own hub stops first, so the simulator's truth covers exactly what was delivered.
+    if (hub_started_here) hub.stop();
+    hub.set_consumer(nullptr);
+    listener.reset();
+    if (vicon_start_sent) guarded("cannot send CaptureStop: ", [&] { send_vicon(false); });
+    if (recorder) {
+      if (interrupted) recorder->note_stopped_by(cfg.stopped_by);
+      if (sim != nullptr) guarded("cannot write the ground truth: ", [&] { write_truth(); });
+      // An outside error makes the sidecar say "aborted" with it; a write error of the
+      // recorder's own stays "failed".
+      result.recorder = recorder->stop(hub.serial_to_slot(), failure);
+      switch (result.recorder.state) {
+        case RecorderState::kFailed:
+          result.outcome = TrialOutcome::kFailed;
+          result.reason = result.recorder.error;
+          break;
+        case RecorderState::kAborted:
+          result.outcome = TrialOutcome::kAborted;
+          result.reason = failure;
+          break;
+        default:
+          result.outcome = interrupted ? TrialOutcome::kInterrupted : TrialOutcome::kCompleted;
+          if (interrupted) result.reason = "stopped by " + cfg.stopped_by;
+      }
+    } else {
+      result.outcome = interrupted && failure.empty() ? TrialOutcome::kInterrupted : TrialOutcome::kFailed;
+      result.reason = failure.empty() ? "no CaptureStart received; nothing recorded" : failure;
+    }
+    guarded("", [&] { set_phase(TrialPhase::kDone, std::string("trial ") + trial_outcome_name(result.outcome)); });
+  }
+};
+
+TrialEngine::TrialEngine(DeviceHub& hub, const SimSource* sim, TrialEngineConfig config)
+    : hub_(hub), sim_(sim), config_(std::move(config)) {}
+
+TrialEngine::~TrialEngine() = default;
+
+TrialResult TrialEngine::run(std::stop_token stop, const std::function<void(const TrialSnapshot&)>& on_status) {
+  Run r(hub_, sim_, config_, std::move(stop), on_status);
+  r.guarded("", [&] { r.execute(); });
+  r.finish();
+  return std::move(r.result);
+}
+
+}  // namespace lmc::devices

@@ -1,0 +1,111 @@
+#pragma once
+// One trial, start to finish (issue #5's orchestration, lifted out of `lmc record`): wait for
+// Vicon's CaptureStart (listen mode) → wait until every layout slot streams → send CaptureStart
+// (with the clock alignment note) → countdown → record for `seconds` or until stopped → send
+// CaptureStop → write the simulator's ground truth → finalise the sidecar. `lmc record`, the
+// session runner and the workbench drive the same class; none of them repeats the sequence.
+//
+// Time: when the hub plays a simulator (`sim` given), the countdown and the trial length are
+// simulated seconds, so `--fast` trials are exact and reproducible; a simulator with a duration
+// ends the trial when it finishes. Otherwise they are wall-clock seconds. The stream timeout is
+// always wall-clock (it is about hardware that never answers).
+//
+// Guarantees: never overwrites a trial's files (unless allow_overwrite); every row written is
+// kept whatever ends the trial; any error, also one thrown by a callback, ends as an outcome with
+// a reason instead of an exception; no printing (messages come back in snapshots and the
+// result). The engine starts the hub when it is not running and then stops it at the end; a hub
+// that was already running (the workbench's) keeps running. It installs its recorder as the
+// hub's consumer for the trial and removes it (sets none) at the end.
+#include <cstdint>
+#include <filesystem>
+#include <functional>
+#include <memory>
+#include <nlohmann/json.hpp>
+#include <optional>
+#include <stop_token>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "devices/device_hub.h"
+#include "devices/record/byte_sink.h"
+#include "devices/record/recorder.h"
+#include "devices/sim/sim_source.h"
+#include "devices/vicon/vicon_trigger.h"
+
+namespace lmc::devices {
+
+// kAborted: ended by an outside error (stream timeout, Vicon refused, truth not writable, a
+// throwing callback); kFailed: nothing could be recorded (name taken, bad config, socket) or the
+// recorder could not write; kInterrupted: stopped early by the stop token (the operator).
+enum class TrialOutcome { kCompleted, kAborted, kFailed, kInterrupted };
+const char* trial_outcome_name(TrialOutcome o);  // "completed" | "aborted" | "failed" | "interrupted"
+
+enum class TrialPhase { kWaitingForStreams, kWaitingForVicon, kCountdown, kRecording, kFinishing, kDone };
+const char* trial_phase_name(TrialPhase p);  // "waiting_for_streams", "waiting_for_vicon", "countdown", …
+
+struct TrialSnapshot {
+  TrialPhase phase = TrialPhase::kWaitingForStreams;
+  std::string trial;  // empty while listen mode waits for Vicon's Name
+  double elapsed_s = 0;              // wall-clock seconds since run() began
+  double countdown_remaining_s = 0;  // kCountdown
+  double recording_s = 0;            // trial seconds recorded (simulated with a simulator)
+  double remaining_s = 0;            // of `seconds` (0 when the simulator's end decides)
+  HubSnapshot hub;
+  RecorderStatus recorder;  // idle before the recorder starts
+  int vicon_packets_sent = 0;
+  std::string message;  // what is happening now, for a status line
+  // Since the previous snapshot: device messages and warnings/errors (always worth showing) and
+  // routine progress notes (Vicon trigger sent, CaptureStart received, …).
+  std::vector<std::string> new_messages;
+  std::vector<std::string> new_notices;
+};
+
+struct TrialEngineConfig {
+  std::filesystem::path output_dir;
+  std::string trial;  // listen mode: empty = Vicon's CaptureStart Name
+  double seconds = 5;
+  double countdown_s = 0;
+  double stream_timeout_s = 10;
+  std::string backend;  // written to the sidecar: sim | leapc | replay
+  std::optional<ViconTriggerConfig> vicon;                            // send CaptureStart/Stop
+  std::optional<std::pair<std::string, std::uint16_t>> vicon_listen;  // wait for Vicon's CaptureStart instead (address, port)
+  bool allow_overwrite = false;                                       // lmc record --force only
+  nlohmann::json extra = nlohmann::json::object();  // into the sidecar's extra (simulator config, session info…)
+  std::function<std::unique_ptr<ByteSink>(const std::filesystem::path&)> open_sink;  // tests
+  std::string stopped_by = "operator";  // sidecar "stopped_by" when the stop token ends the trial
+};
+
+struct TrialResult {
+  TrialOutcome outcome = TrialOutcome::kFailed;
+  std::string reason;  // empty when completed
+  std::string trial;
+  SessionPaths paths;  // empty when no trial name was known
+  RecorderStatus recorder;
+  double truth_seconds = 0;  // span of the simulator's ground truth file (0: none written)
+  std::vector<std::string> messages;  // every message and notice, in order
+  bool recorded = false;              // the recorder started: the files exist and hold the rows
+  std::filesystem::path existing;     // set when refused because this file of the trial exists
+  std::string listen_address;         // listen mode: where CaptureStart was awaited (port resolved)
+};
+
+class TrialEngine {
+ public:
+  // `hub` and `sim` (null unless the hub plays this simulator) must outlive run().
+  TrialEngine(DeviceHub& hub, const SimSource* sim, TrialEngineConfig config);
+  ~TrialEngine();
+  TrialEngine(const TrialEngine&) = delete;
+  TrialEngine& operator=(const TrialEngine&) = delete;
+
+  // Runs the trial on the calling thread; on_status is called from it on every phase change,
+  // every new message and otherwise about ten times a second.
+  TrialResult run(std::stop_token stop = {}, const std::function<void(const TrialSnapshot&)>& on_status = {});
+
+ private:
+  struct Run;
+  DeviceHub& hub_;
+  const SimSource* sim_;
+  TrialEngineConfig config_;
+};
+
+}  // namespace lmc::devices

@@ -1,0 +1,259 @@
+// TrialEngine: one trial from streams to sidecar, driven by the simulator in simulated time
+// (speed 0 with a duration), so lengths and truth frame counts are exact. Stops come from the
+// status callback at a known phase, never from a timer.
+#include "devices/record/trial_engine.h"
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <sstream>
+#include <stdexcept>
+
+#include "core/io/layout_json.h"
+#include "core/io/lmc_recording.h"
+#include "core/io/recorder_sidecar.h"
+#include "core/io/trc.h"
+#include "tests/support/reference_data.h"
+
+namespace lmc::devices {
+namespace {
+
+using ::testing::ElementsAre;
+using ::testing::HasSubstr;
+
+Layout paper_initial() { return load_layout(test::asset_file("layouts/paper-initial.json")); }
+
+// A hub playing a simulator of `sim_layout` (default: the hub's own) for `duration_s` simulated
+// seconds (0: until stopped) at `speed` (0: simulated time, as fast as the recorder takes it).
+struct SimHub {
+  DeviceHub hub;
+  const SimSource* sim = nullptr;
+  SimHub(const Layout& layout, double duration_s, double speed = 0.0, std::optional<Layout> sim_layout = {})
+      : hub(layout, options(speed)) {
+    SimConfig config;
+    config.seed = 7;
+    auto source = std::make_unique<SimSource>(sim_layout.value_or(layout), config, SimSourceOptions{speed, duration_s});
+    sim = source.get();
+    hub.add_source(std::move(source));
+  }
+  static HubOptions options(double speed) {
+    HubOptions o;
+    o.backpressure = speed == 0.0;  // simulated time: nothing is dropped
+    return o;
+  }
+};
+
+TrialEngineConfig config_for(const std::filesystem::path& dir, const std::string& trial, double seconds) {
+  TrialEngineConfig c;
+  c.output_dir = dir;
+  c.trial = trial;
+  c.seconds = seconds;
+  c.backend = "sim";
+  c.extra["session"] = "S01";
+  return c;
+}
+
+std::string read_text(const std::filesystem::path& p) {
+  std::ifstream in(p);
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+// The phases a run reported, each once, in the order first seen.
+std::vector<TrialPhase> distinct(const std::vector<TrialPhase>& seen) {
+  std::vector<TrialPhase> out;
+  for (const TrialPhase p : seen)
+    if (out.empty() || out.back() != p) out.push_back(p);
+  return out;
+}
+
+TEST(TrialEngine, ACompletedTrialWritesRecordingSidecarAndTruth) {
+  const auto dir = test::scratch_dir("trial_engine_completed");
+  SimHub sh(paper_initial(), 2.0);
+  TrialEngine engine(sh.hub, sh.sim, config_for(dir, "T1", 2.0));
+  const TrialResult r = engine.run();
+
+  EXPECT_EQ(r.outcome, TrialOutcome::kCompleted) << r.reason;
+  EXPECT_EQ(r.reason, "");
+  EXPECT_TRUE(r.recorded);
+  EXPECT_EQ(r.trial, "T1");
+  EXPECT_EQ(r.paths.recording, dir / "LMC_T1.raw.txt");
+  EXPECT_FALSE(sh.hub.running()) << "the engine started the hub, so it stops it";
+
+  const RecorderSidecar side = read_recorder_sidecar(r.paths.sidecar);
+  EXPECT_TRUE(side.complete());
+  EXPECT_EQ(side.status, "completed");
+  EXPECT_EQ(side.backend, "sim");
+  EXPECT_EQ(side.extra.at("session"), "S01");
+  EXPECT_EQ(side.stopped_by, "");
+  ASSERT_EQ(side.devices.size(), 4u);
+  EXPECT_EQ(side.serial_to_slot.size(), 4u);
+  EXPECT_EQ(side.frames_written, r.recorder.frames_written);
+  EXPECT_EQ(side.frames_dropped, 0);
+  const LmcRecording rec = read_lmc_recording(r.paths.recording);
+  EXPECT_EQ(static_cast<std::int64_t>(rec.rows.size()), side.frames_written) << "every row counted is in the file";
+  EXPECT_EQ(rec.device_ids(), (std::vector<int>{1, 2, 3, 4}));
+
+  // Two simulated seconds of truth at 100 Hz, starting at simulated time 0.
+  EXPECT_DOUBLE_EQ(r.truth_seconds, 2.0);
+  ASSERT_TRUE(side.ground_truth.has_value());
+  EXPECT_EQ(side.ground_truth->file, "T1.trc");
+  EXPECT_EQ(side.ground_truth->frames, 200);
+  EXPECT_EQ(side.ground_truth->device_clock_at_time_zero_us, SimConfig{}.device_clock_start_us);
+  EXPECT_EQ(read_trc(r.paths.truth_trc).frame_count(), 200);
+}
+
+TEST(TrialEngine, StatusReportsThePhasesInOrder) {
+  const auto dir = test::scratch_dir("trial_engine_phases");
+  SimHub sh(paper_initial(), 3.0);
+  TrialEngineConfig c = config_for(dir, "P1", 2.0);
+  c.countdown_s = 1.0;
+  TrialEngine engine(sh.hub, sh.sim, c);
+  std::vector<TrialPhase> seen;
+  std::vector<std::string> trials;
+  TrialSnapshot last;
+  const TrialResult r = engine.run({}, [&](const TrialSnapshot& s) {
+    seen.push_back(s.phase);
+    trials.push_back(s.trial);
+    last = s;
+  });
+  EXPECT_EQ(r.outcome, TrialOutcome::kCompleted) << r.reason;
+  EXPECT_THAT(distinct(seen), ElementsAre(TrialPhase::kWaitingForStreams, TrialPhase::kCountdown,
+                                          TrialPhase::kRecording, TrialPhase::kFinishing, TrialPhase::kDone));
+  for (const auto& t : trials) EXPECT_EQ(t, "P1");
+  EXPECT_EQ(last.phase, TrialPhase::kDone);
+  EXPECT_EQ(last.message, "trial completed");
+  EXPECT_EQ(last.hub.slots.size(), 4u);
+  EXPECT_EQ(std::string(trial_phase_name(TrialPhase::kCountdown)), "countdown");
+  EXPECT_EQ(std::string(trial_outcome_name(TrialOutcome::kInterrupted)), "interrupted");
+}
+
+TEST(TrialEngine, ASlotThatNeverStreamsAbortsTheTrialAndKeepsTheRows) {
+  const auto dir = test::scratch_dir("trial_engine_timeout");
+  // The hub expects four controllers; the simulator has only the first three. Real time, so the
+  // three stream while the engine waits for the fourth.
+  Layout three = paper_initial();
+  three.devices.pop_back();
+  SimHub sh(paper_initial(), 0.0, 1.0, three);
+  TrialEngineConfig c = config_for(dir, "Silent", 5.0);
+  c.stream_timeout_s = 0.3;
+  TrialEngine engine(sh.hub, sh.sim, c);
+  const TrialResult r = engine.run();
+
+  EXPECT_EQ(r.outcome, TrialOutcome::kAborted);
+  EXPECT_THAT(r.reason, HasSubstr("not every device of layout 'paper-initial' streamed within 0.3 s"));
+  EXPECT_TRUE(r.recorded);
+  EXPECT_FALSE(sh.hub.running());
+  const RecorderSidecar side = read_recorder_sidecar(r.paths.sidecar);
+  EXPECT_EQ(side.status, "aborted");
+  EXPECT_EQ(side.error, r.reason);
+  EXPECT_EQ(static_cast<std::int64_t>(read_lmc_recording(r.paths.recording).rows.size()), side.frames_written);
+  for (const auto& d : side.devices) EXPECT_LE(d.device_id, 3) << "the silent slot has no rows";
+}
+
+TEST(TrialEngine, TheStopTokenInterruptsTheTrialAndKeepsItsRows) {
+  const auto dir = test::scratch_dir("trial_engine_stop");
+  SimHub sh(paper_initial(), 30.0);
+  TrialEngineConfig c = config_for(dir, "Stopped", 30.0);
+  c.stopped_by = "operator (test)";
+  TrialEngine engine(sh.hub, sh.sim, c);
+  std::stop_source stop;
+  const TrialResult r = engine.run(stop.get_token(), [&](const TrialSnapshot& s) {
+    if (s.phase == TrialPhase::kRecording) stop.request_stop();
+  });
+  EXPECT_EQ(r.outcome, TrialOutcome::kInterrupted);
+  EXPECT_EQ(r.reason, "stopped by operator (test)");
+  const RecorderSidecar side = read_recorder_sidecar(r.paths.sidecar);
+  EXPECT_EQ(side.status, "completed") << "an early stop keeps a valid trial";
+  EXPECT_EQ(side.stopped_by, "operator (test)");
+  EXPECT_EQ(static_cast<std::int64_t>(read_lmc_recording(r.paths.recording).rows.size()), side.frames_written);
+  // The truth covers what the simulator delivered before the stop, not the planned 30 s.
+  ASSERT_TRUE(side.ground_truth.has_value());
+  EXPECT_LT(r.truth_seconds, 30.0);
+  EXPECT_EQ(side.ground_truth->frames, read_trc(r.paths.truth_trc).frame_count());
+}
+
+TEST(TrialEngine, StoppedWhileWaitingForViconNothingIsRecorded) {
+  const auto dir = test::scratch_dir("trial_engine_listen_stop");
+  SimHub sh(paper_initial(), 0.0, 1.0);
+  TrialEngineConfig c = config_for(dir, "", 5.0);
+  c.vicon_listen = std::make_pair(std::string("127.0.0.1"), std::uint16_t{0});
+  TrialEngine engine(sh.hub, sh.sim, c);
+  std::stop_source stop;
+  std::vector<std::string> notices;
+  const TrialResult r = engine.run(stop.get_token(), [&](const TrialSnapshot& s) {
+    for (const auto& n : s.new_notices) notices.push_back(n);
+    if (s.phase == TrialPhase::kWaitingForVicon) stop.request_stop();
+  });
+  EXPECT_EQ(r.outcome, TrialOutcome::kInterrupted);
+  EXPECT_FALSE(r.recorded);
+  EXPECT_EQ(r.reason, "no CaptureStart received; nothing recorded");
+  EXPECT_THAT(r.listen_address, HasSubstr("127.0.0.1:"));
+  ASSERT_FALSE(notices.empty());
+  EXPECT_EQ(notices.front(), "waiting for CaptureStart on " + r.listen_address);
+  EXPECT_TRUE(std::filesystem::is_empty(dir));
+}
+
+TEST(TrialEngine, RefusesToOverwriteAnExistingTrial) {
+  const auto dir = test::scratch_dir("trial_engine_refuse");
+  // Any one of the trial's three files makes the name taken, a Vicon export too.
+  for (const std::string file : {"LMC_Taken.raw.txt", "LMC_Taken.session.json", "Taken.trc"}) {
+    std::filesystem::remove_all(dir);
+    std::filesystem::create_directories(dir);
+    std::ofstream(dir / file) << "keep me\n";
+    SimHub sh(paper_initial(), 1.0);
+    TrialEngine engine(sh.hub, sh.sim, config_for(dir, "Taken", 1.0));
+    const TrialResult r = engine.run();
+    EXPECT_EQ(r.outcome, TrialOutcome::kFailed) << file;
+    EXPECT_FALSE(r.recorded);
+    EXPECT_EQ(r.existing, dir / file);
+    EXPECT_THAT(r.reason, HasSubstr("exists"));
+    EXPECT_EQ(read_text(dir / file), "keep me\n");
+    EXPECT_EQ(std::distance(std::filesystem::directory_iterator(dir), std::filesystem::directory_iterator{}), 1)
+        << "nothing else was created for " << file;
+    EXPECT_FALSE(sh.hub.running());
+  }
+  // lmc record --force: the same name is recorded over.
+  SimHub sh(paper_initial(), 1.0);
+  TrialEngineConfig c = config_for(dir, "Taken", 1.0);
+  c.allow_overwrite = true;
+  const TrialResult r = TrialEngine(sh.hub, sh.sim, c).run();
+  EXPECT_EQ(r.outcome, TrialOutcome::kCompleted) << r.reason;
+  EXPECT_NE(read_text(dir / "Taken.trc"), "keep me\n");
+}
+
+TEST(TrialEngine, AThrowingCallbackAbortsTheTrialWithItsReasonAndKeepsTheRows) {
+  const auto dir = test::scratch_dir("trial_engine_throw");
+  SimHub sh(paper_initial(), 2.0);
+  TrialEngine engine(sh.hub, sh.sim, config_for(dir, "Thrown", 2.0));
+  const TrialResult r = engine.run({}, [](const TrialSnapshot& s) {
+    if (s.phase == TrialPhase::kRecording) throw std::runtime_error("display gone");
+  });
+  EXPECT_EQ(r.outcome, TrialOutcome::kAborted);
+  EXPECT_EQ(r.reason, "display gone");
+  const RecorderSidecar side = read_recorder_sidecar(r.paths.sidecar);
+  EXPECT_EQ(side.status, "aborted");
+  EXPECT_EQ(side.error, "display gone");
+  EXPECT_EQ(static_cast<std::int64_t>(read_lmc_recording(r.paths.recording).rows.size()), side.frames_written);
+}
+
+TEST(TrialEngine, AHubThatWasRunningKeepsRunning) {
+  const auto dir = test::scratch_dir("trial_engine_shared_hub");
+  // The workbench's hub: real time, forever, already started; the engine times the trial in
+  // simulated seconds and stops it on the token at the recording phase.
+  SimHub sh(paper_initial(), 0.0, 1.0);
+  sh.hub.start();
+  TrialEngine engine(sh.hub, sh.sim, config_for(dir, "Shared", 60.0));
+  std::stop_source stop;
+  const TrialResult r = engine.run(stop.get_token(), [&](const TrialSnapshot& s) {
+    if (s.phase == TrialPhase::kRecording) stop.request_stop();
+  });
+  EXPECT_EQ(r.outcome, TrialOutcome::kInterrupted) << r.reason;
+  EXPECT_TRUE(sh.hub.running());
+  sh.hub.stop();
+}
+
+}  // namespace
+}  // namespace lmc::devices
