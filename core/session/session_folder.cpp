@@ -7,6 +7,8 @@
 #include <cerrno>
 #include <cstring>
 #include <fstream>
+#include <utility>
+#include <vector>
 
 #include "core/common/error.h"
 #include "core/common/paths.h"
@@ -154,13 +156,17 @@ SessionFolder SessionFolder::open(const fs::path& dir) {
     SessionState state = replay(dir, journal);
     SessionFolder folder(dir, std::move(state), JournalWriter(path, false), lock);
     folder.record({{"type", "session_opened"}, {"software_version", LMC_VERSION}, {"pid", static_cast<int>(::getpid())}});
-    for (const auto& t : folder.state().trials) {
-      if (t.status != TrialStatus::kRecording) continue;
-      folder.recovered_.push_back(t.plan.name);
+    // Collected first: record() replaces the state the loop would otherwise be walking.
+    std::vector<std::pair<int, int>> cut_off;  // trial index, attempt
+    for (const auto& t : folder.state().trials)
+      if (t.status == TrialStatus::kRecording) cut_off.emplace_back(t.plan.index, t.attempts.back().number);
+    for (const auto& [index, attempt] : cut_off) {
+      const std::string name = folder.state().trials.at(static_cast<size_t>(index)).plan.name;
+      folder.recovered_.push_back(name);
       folder.record({{"type", "trial_interrupted"},
-                     {"trial", t.plan.index},
-                     {"name", t.plan.name},
-                     {"attempt", t.attempts.back().number},
+                     {"trial", index},
+                     {"name", name},
+                     {"attempt", attempt},
                      {"reason", "the program stopped while recording (crash, kill or power loss); the rows written "
                                 "until then are kept"}});
     }

@@ -64,7 +64,7 @@ TEST(SessionFolder, CreateWritesManifestJournalAndPlan) {
 
 TEST(SessionFolder, RefusesUnsafeSubjectIdsAndLeavesNothingBehind) {
   const fs::path dir = test::fresh_test_dir("session");
-  for (const std::string bad : {std::string("../x"), std::string("a/b"), std::string("a\0b", 3), std::string(200, 'a'),
+  for (const std::string& bad : {std::string("../x"), std::string("a/b"), std::string("a\0b", 3), std::string(200, 'a'),
                                 std::string(""), std::string("-x")}) {
     try {
       SessionFolder::create(dir, quick_spec(bad));
