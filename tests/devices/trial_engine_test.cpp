@@ -17,7 +17,7 @@
 #include "tests/support/reference_data.h"
 
 namespace lmc::devices {
-namespace {
+namespace trial_engine_test {  // named: test files share unity batches
 
 using ::testing::ElementsAre;
 using ::testing::HasSubstr;
@@ -255,5 +255,5 @@ TEST(TrialEngine, AHubThatWasRunningKeepsRunning) {
   sh.hub.stop();
 }
 
-}  // namespace
+}  // namespace trial_engine_test
 }  // namespace lmc::devices

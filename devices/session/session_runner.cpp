@@ -1,0 +1,268 @@
+#include "devices/session/session_runner.h"
+
+#include <cmath>
+#include <sstream>
+
+#include "core/common/error.h"
+#include "core/io/json_checked.h"
+#include "core/io/layout_json.h"
+#include "core/io/lmc_recording.h"
+#include "core/io/recorder_sidecar.h"
+#include "core/session/trial_files.h"
+#include "devices/device_hub.h"
+#include "devices/record/recorder.h"
+#include "devices/session/stream_probe.h"
+#include "devices/source_factory.h"
+#include "devices/vicon/vicon_trigger.h"
+
+namespace fs = std::filesystem;
+
+namespace lmc::devices {
+
+using session::PlannedTrial;
+using session::QualityReport;
+using session::TrialType;
+
+struct SessionRunner::Rig {
+  std::unique_ptr<DeviceHub> hub;
+  const SimSource* sim = nullptr;
+};
+
+std::string AttemptResult::verdict() const { return quality ? quality->verdict : std::string("fail"); }
+
+SessionRunner::SessionRunner(session::SessionFolder& folder, SessionRunOptions options)
+    : folder_(folder), options_(std::move(options)) {
+  const auto& state = folder_.state();
+  protocol_ = state.protocol;
+  for (const auto& t : state.trials) plan_.push_back(t.plan);
+  for (const auto& [key, json] : state.setup.layouts)
+    layouts_[key] = layout_from_json(json, (folder_.dir() / "session.json").string() + "#/layouts/" + key);
+  const SourceSpec spec = parse_source_spec(options_.backend);
+  if (options_.fast && spec.backend == "leapc") throw Error("--fast applies to the simulated rig and replays only");
+  // The simulated subject has the real subject's hand size when the manifest knows it.
+  if (state.subject().hand_length_mm) options_.sim.hand_length_mm = *state.subject().hand_length_mm;
+  if (state.subject().hand_breadth_mm) options_.sim.hand_breadth_mm = *state.subject().hand_breadth_mm;
+}
+
+SessionRunner::~SessionRunner() = default;
+
+const Layout& SessionRunner::layout_for(int i) const {
+  const std::string& key = plan_.at(static_cast<size_t>(i)).layout_key;
+  auto it = layouts_.find(key);
+  if (it == layouts_.end()) throw Error("the session's manifest has no layout for block '" + key + "'");
+  return it->second;
+}
+
+bool SessionRunner::needs_preflight(int i) const {
+  return !cleared_blocks_.contains(plan_.at(static_cast<size_t>(i)).layout_key);
+}
+
+std::unique_ptr<SessionRunner::Rig> SessionRunner::make_rig(int i, double duration_s, std::uint64_t seed) const {
+  const SourceSpec spec = parse_source_spec(options_.backend);
+  const PlannedTrial& p = plan_.at(static_cast<size_t>(i));
+  SourceSettings settings;
+  settings.layout = layout_for(i);
+  settings.sim = options_.sim;
+  settings.sim.seed = seed;
+  apply_motion_spec(settings.sim, p.sim_motion);
+  settings.speed = options_.fast ? 0.0 : 1.0;
+  settings.duration_s = spec.backend == "sim" ? duration_s : 0.0;
+  HubOptions hub_options;
+  hub_options.backpressure = options_.fast;
+  auto rig = std::make_unique<Rig>();
+  rig->hub = std::make_unique<DeviceHub>(settings.layout, hub_options);
+  std::unique_ptr<FrameSource> source = make_source(spec, settings);
+  rig->sim = dynamic_cast<const SimSource*>(source.get());
+  rig->hub->add_source(std::move(source));
+  return rig;
+}
+
+std::uint64_t SessionRunner::bytes_still_needed(int from) const {
+  std::uint64_t bytes = 0;
+  const auto& trials = folder_.state().trials;
+  for (size_t k = static_cast<size_t>(std::max(from, 0)); k < plan_.size(); ++k) {
+    if (trials[k].status == session::TrialStatus::kAccepted) continue;
+    const TrialType& type = protocol_.trial_types.at(static_cast<size_t>(plan_[k].trial_type));
+    bytes += estimated_trial_bytes(layout_for(static_cast<int>(k)).device_count(), type.duration_s);
+  }
+  return bytes;
+}
+
+PreflightReport SessionRunner::preflight(int i, std::stop_token stop) {
+  const PlannedTrial& p = plan_.at(static_cast<size_t>(i));
+  PreflightInputs in;
+  in.block = p.layout_key;
+  in.layout = layout_for(i);
+  in.folder = folder_.dir();
+  in.bytes_needed = bytes_still_needed(i);
+  in.min_rate_hz = protocol_.trial_types.at(static_cast<size_t>(p.trial_type)).quality.fail_min_rate_hz;
+  in.vicon_target = vicon_target();
+  // The probe listens to the controllers for a moment: a rig of its own for the simulator and
+  // replays (their trial rigs are made per trial), the block's hub for real controllers.
+  std::unique_ptr<Rig> probe_rig;
+  DeviceHub* hub = nullptr;
+  try {
+    if (parse_source_spec(options_.backend).backend == "leapc") {
+      if (hardware_block_ != p.layout_key) {
+        hardware_rig_.reset();
+        hardware_rig_ = make_rig(i, 0, options_.sim.seed);
+        hardware_rig_->hub->start();
+        hardware_block_ = p.layout_key;
+      }
+      hub = hardware_rig_->hub.get();
+    } else {
+      probe_rig = make_rig(i, 2.0, options_.sim.seed);
+      probe_rig->hub->start();
+      hub = probe_rig->hub.get();
+    }
+    const auto timeout = std::chrono::milliseconds(static_cast<int>(options_.preflight_timeout_s * 1000));
+    in.slots = probe_streams(*hub, timeout, 20, stop);
+  } catch (const std::exception& e) {
+    PreflightReport r;
+    r.block = p.layout_key;
+    r.layout_name = in.layout.name;
+    r.items.push_back({"controllers", false, std::string("cannot start the ") + options_.backend + " backend: " + e.what()});
+    folder_.preflight(r.block, false, preflight_to_json(r));
+    return r;
+  }
+  if (probe_rig) probe_rig->hub->stop();
+  PreflightReport report = evaluate_preflight(in);
+  folder_.preflight(report.block, report.ok(), preflight_to_json(report));
+  if (report.ok()) cleared_blocks_.insert(p.layout_key);
+  return report;
+}
+
+void SessionRunner::override_preflight(int i, const std::string& reason) {
+  const std::string& block = plan_.at(static_cast<size_t>(i)).layout_key;
+  folder_.preflight_override(block, reason);
+  cleared_blocks_.insert(block);
+}
+
+AttemptResult SessionRunner::run_trial(int i, std::stop_token stop,
+                                       const std::function<void(const TrialSnapshot&)>& on_status) {
+  const PlannedTrial& p = plan_.at(static_cast<size_t>(i));
+  const TrialType& type = protocol_.trial_types.at(static_cast<size_t>(p.trial_type));
+  const auto& trial_state = folder_.state().trials.at(static_cast<size_t>(i));
+  if (trial_state.status == session::TrialStatus::kAccepted)
+    throw Error("trial " + p.name + " is accepted; redo it first to record it again");
+  // Files of an earlier attempt still under the trial's name go under superseded/ first:
+  // nothing recorded is ever overwritten.
+  if (!trial_state.attempts.empty() && trial_state.attempts.back().superseded_dir.empty()) folder_.redo(i);
+
+  AttemptResult result;
+  result.trial = i;
+  // Journal first: if this process dies from here on, the next run finds the trial interrupted.
+  result.attempt = folder_.trial_started(i);
+
+  TrialEngineConfig config;
+  config.output_dir = folder_.dir();
+  config.trial = p.name;
+  config.seconds = type.duration_s;
+  config.countdown_s = options_.fast ? 0.0 : options_.countdown_s;
+  config.stream_timeout_s = options_.stream_timeout_s;
+  const auto& vicon = folder_.state().setup.vicon;
+  if (auto target = vicon_target()) {
+    ViconTriggerConfig vc = parse_vicon_target(*target);
+    if (vicon.contains("database_path")) vc.database_path = vicon["database_path"].get<std::string>();
+    vc.description = type.operator_cue;
+    config.vicon = vc;
+  }
+  config.backend = parse_source_spec(options_.backend).backend;
+  config.extra["session"] = {{"subject", folder_.state().subject().subject_id},
+                             {"attempt", result.attempt},
+                             {"protocol", protocol_.name},
+                             {"block", p.layout_key}};
+
+  TrialResult tr;
+  try {
+    const std::uint64_t seed = options_.sim.seed + 7919ULL * static_cast<std::uint64_t>(i) +
+                               104729ULL * static_cast<std::uint64_t>(result.attempt - 1);
+    std::unique_ptr<Rig> trial_rig;
+    Rig* rig = nullptr;
+    if (hardware_rig_ && hardware_block_ == p.layout_key) {
+      rig = hardware_rig_.get();
+    } else {
+      trial_rig = make_rig(i, type.duration_s, seed);
+      rig = trial_rig.get();
+    }
+    if (rig->sim != nullptr) config.extra["simulator"] = sim_config_to_json(options_.sim);
+    TrialEngine engine(*rig->hub, rig->sim, config);
+    tr = engine.run(stop, on_status);
+  } catch (const std::exception& e) {
+    tr.outcome = TrialOutcome::kFailed;
+    tr.reason = e.what();
+  }
+  result.outcome = trial_outcome_name(tr.outcome);
+  result.reason = tr.reason;
+  folder_.trial_stopped(i, result.outcome, result.reason);
+
+  // The verdict, seconds after the trial: the same recording and sidecar processing will read.
+  const TrialFiles paths = trial_files(folder_.dir(), p.name);
+  try {
+    if (fs::exists(paths.recording) && fs::exists(paths.sidecar)) {
+      const LmcRecording recording = read_lmc_recording(paths.recording);
+      const RecorderSidecar sidecar = read_recorder_sidecar(paths.sidecar);
+      session::QualityInputs in;
+      in.recording = &recording;
+      in.sidecar = &sidecar;
+      in.layout = layout_for(i);
+      in.planned_s = type.duration_s;
+      in.thresholds = type.quality;
+      in.rom = type.rom;
+      in.vicon_expected = config.vicon.has_value();
+      in.vicon_export_dir = options_.vicon_export_dir;
+      result.quality = session::assess_trial(in);
+    }
+  } catch (const std::exception& e) {
+    QualityReport q;
+    q.verdict = "fail";
+    q.reasons.push_back(std::string("the recording cannot be read back: ") + e.what());
+    result.quality = q;
+  }
+  if (!result.quality) {
+    QualityReport q;
+    q.verdict = "fail";
+    q.reasons.push_back("nothing was recorded: " + (result.reason.empty() ? std::string("no file") : result.reason));
+    result.quality = q;
+  }
+  if (result.outcome != "completed" && result.quality->verdict != "fail") {
+    // An attempt that did not complete is a recording fault whatever its data look like.
+    result.quality->reasons.insert(result.quality->reasons.begin(), "the trial " + result.outcome + ": " + result.reason);
+    result.quality->verdict = "fail";
+  }
+  folder_.trial_verdict(i, session::quality_to_json(*result.quality));
+  return result;
+}
+
+std::optional<std::string> SessionRunner::vicon_target() const {
+  const auto& vicon = folder_.state().setup.vicon;
+  if (!vicon.is_object() || !vicon.contains("host")) return std::nullopt;
+  std::string target = vicon["host"].get<std::string>();
+  if (vicon.contains("port")) target += ":" + std::to_string(vicon["port"].get<int>());
+  return target;
+}
+
+void SessionRunner::accept(int i) { folder_.trial_accepted(i); }
+
+void SessionRunner::redo(int i) { folder_.redo(i); }
+
+void SessionRunner::note(int i, const std::string& text) { folder_.note(i, text); }
+
+std::string SessionRunner::block_instructions(int i) const {
+  const Layout& layout = layout_for(i);
+  const PlannedTrial& p = plan_.at(static_cast<size_t>(i));
+  std::ostringstream s;
+  s << "Set up layout '" << layout.name << "' (block " << p.layout_key << "):";
+  s.setf(std::ios::fixed);
+  s.precision(0);
+  for (const auto& d : layout.devices) {
+    const DevicePose& pose = d.pose;
+    s << "\n  " << d.slot;
+    if (d.serial) s << " (" << *d.serial << ")";
+    s << " at x " << pose.x_mm << " mm, z " << pose.z_mm << " mm, tilt rx " << pose.rx_deg << "°, turn ry " << pose.ry_deg
+      << "°";
+  }
+  return s.str();
+}
+
+}  // namespace lmc::devices

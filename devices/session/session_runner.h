@@ -1,0 +1,98 @@
+#pragma once
+// Runs a subject session (issue #10): the protocol's trials in order, each through the one trial
+// engine, a pre-flight before the first trial and after every layout change, a quality verdict
+// seconds after each trial, redo, and resume after a crash. Every state change goes through the
+// session folder's journal first, so whatever happens to this process, the folder says what was
+// recorded and what is still to do. No terminal or UI here: `lmc session run` and the Record tab
+// drive it and show its snapshots.
+#include <atomic>
+#include <functional>
+#include <map>
+#include <memory>
+#include <mutex>
+#include <optional>
+#include <set>
+#include <stop_token>
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+#include "core/session/protocol.h"
+#include "core/session/session_folder.h"
+#include "core/session/trial_quality.h"
+#include "devices/record/trial_engine.h"
+#include "devices/session/preflight.h"
+#include "devices/sim/sim_config.h"
+
+namespace lmc::devices {
+
+struct SessionRunOptions {
+  std::string backend = "sim";   // sim | leapc | replay:FILE
+  bool fast = false;             // simulated time (sim and replay only)
+  SimConfig sim;                 // the simulated rig's base settings (motion comes from the protocol)
+  double stream_timeout_s = 10;
+  double countdown_s = 0;
+  double preflight_timeout_s = 5;
+  std::optional<std::filesystem::path> vicon_export_dir;  // where Vicon writes <trial>.trc/.c3d
+};
+
+// What happened to one attempt, as the runner journaled it.
+struct AttemptResult {
+  int trial = -1;
+  int attempt = 0;
+  std::string outcome;          // completed | aborted | failed | interrupted
+  std::string reason;
+  std::optional<session::QualityReport> quality;  // absent when nothing could be assessed
+  std::string verdict() const;  // the quality verdict, or "fail" when there is none
+};
+
+class SessionRunner {
+ public:
+  SessionRunner(session::SessionFolder& folder, SessionRunOptions options);
+  ~SessionRunner();
+  SessionRunner(const SessionRunner&) = delete;
+  SessionRunner& operator=(const SessionRunner&) = delete;
+
+  const session::SessionFolder& folder() const { return folder_; }
+  const session::Protocol& protocol() const { return protocol_; }
+  const std::vector<session::PlannedTrial>& plan() const { return plan_; }
+
+  // True when trial `i` starts a block whose pre-flight has not passed (or been overridden) yet.
+  bool needs_preflight(int i) const;
+  // Runs (and journals) the pre-flight for the block of trial `i`.
+  PreflightReport preflight(int i, std::stop_token stop = {});
+  // The operator goes ahead despite red lines; the reason is journaled.
+  void override_preflight(int i, const std::string& reason);
+
+  // Records trial `i` once (a new attempt), assesses it and journals every step. Throws only for
+  // a programming error; device and disk trouble end the attempt with its outcome and reason.
+  AttemptResult run_trial(int i, std::stop_token stop = {},
+                          const std::function<void(const TrialSnapshot&)>& on_status = {});
+  // The operator keeps the last attempt of trial `i`.
+  void accept(int i);
+  // The last attempt of trial `i` goes under superseded/; the trial is pending again.
+  void redo(int i);
+  void note(int i, const std::string& text);
+
+  // What the operator sets up before trial `i`'s block: the layout's name and each controller's
+  // target position, in words.
+  std::string block_instructions(int i) const;
+
+ private:
+  struct Rig;
+  std::unique_ptr<Rig> make_rig(int i, double duration_s, std::uint64_t seed) const;
+  const Layout& layout_for(int i) const;
+  std::uint64_t bytes_still_needed(int from) const;
+  std::optional<std::string> vicon_target() const;  // "HOST[:PORT]" when the session triggers Vicon
+
+  session::SessionFolder& folder_;
+  SessionRunOptions options_;
+  session::Protocol protocol_;
+  std::vector<session::PlannedTrial> plan_;
+  std::map<std::string, Layout> layouts_;  // by layout key, from the manifest
+  std::set<std::string> cleared_blocks_;   // pre-flight passed or overridden in this run
+  std::unique_ptr<Rig> hardware_rig_;      // leapc: one hub per block, kept across its trials
+  std::string hardware_block_;
+};
+
+}  // namespace lmc::devices
