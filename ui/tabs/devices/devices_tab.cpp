@@ -38,8 +38,6 @@ class DevicesTab final : public Tab {
     const std::string tmp = (sessions_dir() / "test-recordings").string();
     std::snprintf(folder_, sizeof folder_, "%s", tmp.c_str());
     std::snprintf(trial_, sizeof trial_, "%s", "test_trial_1");
-    // The live view starts where the tab's own camera used to: looking at the hand over the table.
-    camera_.set(Eigen::Vector3d(0, 110, 40), 35, 30, 560);
   }
 
   void update() override {
@@ -315,7 +313,7 @@ class DevicesTab final : public Tab {
 
   StatusSink& status_;
   DevicesViewModel vm_;
-  OrbitCamera camera_;
+  OrbitCamera camera_;  // starts on the Layout tab's default view, which shows every controller
   std::uint64_t seen_messages_ = 0;
   double seconds_ = DevicesViewModel::kDefaultTrialSeconds;
   bool auto_started_ = false;
