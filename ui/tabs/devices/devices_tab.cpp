@@ -10,7 +10,7 @@
 #include <imgui.h>
 
 #include <algorithm>
-#include <cmath>
+#include <optional>
 #include <cstdint>
 #include <cstdio>
 #include <filesystem>
