@@ -10,10 +10,10 @@
 #include <imgui.h>
 
 #include <algorithm>
-#include <optional>
 #include <cstdint>
 #include <cstdio>
 #include <filesystem>
+#include <optional>
 #include <string>
 
 #include "core/common/paths.h"
