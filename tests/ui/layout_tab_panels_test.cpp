@@ -6,6 +6,7 @@
 #include <thread>
 
 #include "tests/ui/headless_imgui.h"
+#include "ui/model/current_layout.h"
 #include "ui/model/layout_actions.h"
 #include "ui/tabs/layout/layout_tab.h"
 #include "ui/tabs/layout/coverage_panel.h"
@@ -303,6 +304,26 @@ TEST(CoveragePanel, DrawsTheTableOnceCoverageIsIn) {
   ASSERT_TRUE(state->coverage.latest());
   EXPECT_EQ(state->coverage.latest()->all.frames, 30);
   EXPECT_EQ(state->coverage.latest()->all.devices, 4);
+}
+
+// The workbench's one layout (issue #10): the live rig follows what the Layout tab has committed,
+// never a drag in progress (that would restart the rig every frame).
+TEST(LayoutTabSharedLayout, PublishesTheCommittedLayoutNotADragInProgress) {
+  HeadlessImGui gui;
+  SilentStatus status;
+  CurrentLayout shared;
+  LayoutTab tab(status, std::make_unique<RecordingRenderer>(), &shared);
+  EXPECT_EQ(shared.get(), tab.state().history().head().layout) << "published from the start";
+  const auto published = shared.version();
+  DevicePose p = tab.state().layout().devices[1].pose;
+  p.x_mm += 50;
+  ASSERT_TRUE(preview_device_pose(tab.state().upd_history(), 1, p).ok);
+  gui.frames(2, [&] { tab.update(); });
+  EXPECT_EQ(shared.version(), published);
+  ASSERT_TRUE(commit_device_pose(tab.state().upd_history(), 1, "Move"));
+  gui.frames(2, [&] { tab.update(); });
+  EXPECT_EQ(shared.version(), published + 1);
+  EXPECT_EQ(shared.get().devices[1].pose.x_mm, p.x_mm);
 }
 
 }  // namespace

@@ -10,7 +10,7 @@ namespace lmc::ui {
 
 WorkbenchShell::WorkbenchShell() {
   for (const auto& info : tab_registry()) {
-    tabs_.push_back(info.make(*this));
+    tabs_.push_back(info.make(*this, *context_));
     ids_.push_back(info.id);
   }
   active_id_ = ids_.empty() ? std::string() : ids_.front();

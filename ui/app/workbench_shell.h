@@ -1,11 +1,13 @@
 #pragma once
 // The workbench's frame: main menu, tab bar, status bar and the optional frame-time readout.
-// It owns the tabs (from the registry) and knows nothing about what they draw.
+// It owns the tabs (from the registry) and what they share (WorkbenchContext: the one layout and
+// the one live rig), and knows nothing about what they draw.
 #include <chrono>
 #include <memory>
 #include <string>
 #include <vector>
 
+#include "ui/model/workbench_context.h"
 #include "ui/tabs/tab.h"
 
 namespace lmc::ui {
@@ -37,6 +39,8 @@ class WorkbenchShell final : public StatusSink {
   void draw_status_bar(float height);
   void draw_quit_prompt();
 
+  // Before tabs_: the tabs hold references into it, so it is destroyed after them.
+  std::unique_ptr<WorkbenchContext> context_ = std::make_unique<WorkbenchContext>();
   std::vector<std::unique_ptr<Tab>> tabs_;
   std::vector<std::string> ids_;
   std::string active_id_;

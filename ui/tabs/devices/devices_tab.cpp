@@ -1,65 +1,60 @@
 // The Devices tab (issue #5): every connected controller (or the simulated rig) with serial,
 // slot (assign by dropdown), backend, status, rate, hand present and latest frame age; a live 3-D
 // view of every device's hand realigned into the world frame, one colour per device, so a
-// misplaced controller shows at a glance; start/stop of a test recording. All logic lives in
-// devices/view/devices_view_model.h; this file only draws (ImGui draw list + the view model's own
-// small perspective camera, independent of the Layout tab's GL renderer).
+// misplaced controller shows at a glance; start/stop of a test recording through the one trial
+// engine. It drives the workbench's live rig (shared with the Record tab) with the layout open in
+// the Layout tab. All logic lives in ui/model/devices/devices_view_model.h; this file only draws
+// (ImGui draw list through the shared orbit camera and hand bones of ui/scene).
 #include "ui/tabs/devices/devices_tab.h"
 
 #include <imgui.h>
 
 #include <algorithm>
-#include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <filesystem>
+#include <optional>
 #include <string>
 
 #include "core/common/paths.h"
 #include "core/io/layout_json.h"
 #include "devices/source_factory.h"
-#include "devices/view/devices_view_model.h"
+#include "ui/model/devices/devices_view_model.h"
+#include "ui/scene/orbit_camera.h"
+#include "ui/scene/scene_items.h"
 #include "ui/widgets/file_browser.h"
 
 namespace lmc::ui {
 namespace {
 
-using devices::DevicesViewModel;
-
 ImU32 colour_u32(int index, float alpha = 1.0F) {
-  const auto c = devices::device_colour(index);
+  const auto c = device_colour(index);
   return ImGui::ColorConvertFloat4ToU32(ImVec4(c[0], c[1], c[2], alpha));
 }
 
-Layout initial_layout() {
-  try {
-    return load_layout_or_preset("paper-initial");
-  } catch (const std::exception&) {
-    Layout l;
-    l.name = "four devices";
-    for (int i = 0; i < 4; ++i) {
-      LayoutDevice d;
-      d.slot = "LMC" + std::to_string(i + 1);
-      d.pose.x_mm = i % 2 == 0 ? -60 : 60;
-      d.pose.z_mm = i < 2 ? 60 : -60;
-      l.devices.push_back(d);
-    }
-    return l;
-  }
-}
-
-constexpr const char* kPresets[] = {"paper-initial", "paper-optimized", "paper-optimized-as-processed"};
-
 class DevicesTab final : public Tab {
  public:
-  explicit DevicesTab(StatusSink& status) : status_(status), vm_(initial_layout()) {
+  DevicesTab(StatusSink& status, WorkbenchContext& context) : status_(status), vm_(context.rig()) {
     const std::string tmp = (sessions_dir() / "test-recordings").string();
     std::snprintf(folder_, sizeof folder_, "%s", tmp.c_str());
     std::snprintf(trial_, sizeof trial_, "%s", "test_trial_1");
   }
 
   void update() override {
-    if (!vm_.running()) return;
     vm_.refresh();
+    // Layout restarts and trial outcomes reach the status bar whichever tab started them.
+    const auto& log = vm_.messages();
+    const std::uint64_t fresh = std::min<std::uint64_t>(vm_.rig().messages_total() - seen_messages_, log.size());
+    for (size_t i = log.size() - static_cast<size_t>(fresh); i < log.size(); ++i) {
+      if (log[i].rfind("layout changed", 0) == 0) status_.set_status("Devices: " + log[i]);
+    }
+    seen_messages_ = vm_.rig().messages_total();
+    if (const std::string summary = vm_.take_recording_summary(); !summary.empty()) {
+      // "trial NAME completed|interrupted|aborted|failed…": only the last two are errors.
+      const bool ok = summary.find(" completed") != std::string::npos || summary.find(" interrupted") != std::string::npos;
+      status_.set_status(summary, !ok);
+    }
+    if (!vm_.running()) return;
     // With the SDK present, LeapC is tried first; without controllers the simulated rig takes over.
     if (fallback_pending_ && vm_.running_seconds() > 3.0) {
       fallback_pending_ = false;
@@ -67,11 +62,6 @@ class DevicesTab final : public Tab {
         status_.set_status("no controller found: running the simulated rig");
         start("sim");
       }
-    }
-    if (was_recording_ && !vm_.recording()) {
-      was_recording_ = false;
-      const std::string& last = vm_.messages().empty() ? std::string() : vm_.messages().back();
-      status_.set_status(last, last.find("recorded") != 0);
     }
   }
 
@@ -142,24 +132,10 @@ class DevicesTab final : public Tab {
     ImGui::SameLine();
     ImGui::TextUnformatted("Layout");
     ImGui::SameLine();
-    ImGui::SetNextItemWidth(220);
-    if (ImGui::BeginCombo("##layout", vm_.layout().name.c_str())) {
-      for (const char* preset : kPresets) {
-        if (ImGui::Selectable(preset, vm_.layout().name == preset)) {
-          try {
-            const bool was_running = vm_.running();
-            vm_.set_layout(load_layout_or_preset(preset));
-            if (was_running) start(backend_spec());
-          } catch (const std::exception& e) {
-            status_.set_status(e.what(), true);
-          }
-        }
-      }
-      ImGui::EndCombo();
+    ImGui::TextColored(ImVec4(0.6F, 0.85F, 1.0F, 1.0F), "%s", vm_.layout().name.c_str());
+    if (ImGui::IsItemHovered()) {
+      ImGui::SetTooltip("The layout open in the Layout tab: open, edit or pick a preset there and the rig follows");
     }
-    ImGui::SameLine();
-    if (ImGui::Button("Open...")) layout_browser_.open(FileBrowser::Mode::kOpen, assets_dir() / "layouts");
-    if (ImGui::IsItemHovered()) ImGui::SetTooltip("Use a layout file of your own (its serials bind controllers to slots)");
     ImGui::SameLine();
     if (ImGui::Button("Save with serials...")) {
       save_browser_.open(FileBrowser::Mode::kSave, sessions_dir(), vm_.layout().name + "-serials.json");
@@ -168,7 +144,6 @@ class DevicesTab final : public Tab {
       ImGui::SetTooltip("Write this layout with every controller's serial in its slot, so each controller returns to "
                         "its slot next time");
     }
-    if (const auto chosen = layout_browser_.draw()) use_layout_file(*chosen);
     if (const auto chosen = save_browser_.draw()) {
       try {
         save_layout(vm_.layout(), *chosen);
@@ -184,17 +159,6 @@ class DevicesTab final : public Tab {
       if (ImGui::Button("Stop")) vm_.stop();
       ImGui::SameLine();
       ImGui::Text("%s running %.0f s", vm_.backend().c_str(), vm_.running_seconds());
-    }
-  }
-
-  void use_layout_file(const std::filesystem::path& path) {
-    try {
-      const bool was_running = vm_.running();
-      vm_.set_layout(load_layout(path));
-      status_.set_status("Devices use layout " + path.string());
-      if (was_running) start(backend_spec());
-    } catch (const std::exception& e) {
-      status_.set_status(e.what(), true);
     }
   }
 
@@ -263,26 +227,28 @@ class DevicesTab final : public Tab {
     ImGui::SetNextItemWidth(260);
     ImGui::InputText("##folder", folder_, sizeof folder_);
     ImGui::SameLine();
+    ImGui::SetNextItemWidth(90);
+    ImGui::InputDouble("s##seconds", &seconds_, 0, 0, "%.0f");
+    seconds_ = std::clamp(seconds_, 1.0, 3600.0);
+    ImGui::SameLine();
     if (!vm_.recording()) {
       if (ImGui::Button("Record")) {
-        const std::string err = vm_.start_recording(folder_, trial_);
-        if (err.empty()) {
-          was_recording_ = true;
-          status_.set_status(std::string("recording ") + trial_);
-        } else {
-          status_.set_status(err, true);
-        }
+        const std::string err = vm_.start_recording(folder_, trial_, seconds_);
+        if (err.empty()) status_.set_status("recording " + vm_.recording_trial());
+        else status_.set_status(err, true);
       }
     } else {
-      if (ImGui::Button("Stop recording")) {
-        const std::string summary = vm_.stop_recording();
-        was_recording_ = false;
-        status_.set_status(summary, summary.rfind("recorded", 0) != 0);
-      }
-      if (auto st = vm_.recording_status()) {
-        ImGui::SameLine();
-        ImGui::Text("%lld frames written, %lld dropped", static_cast<long long>(st->frames_written),
-                    static_cast<long long>(st->frames_dropped));
+      if (ImGui::Button("Stop recording")) vm_.stop_recording();
+    }
+    if (auto p = vm_.recording_progress()) {
+      ImGui::SameLine();
+      if (vm_.recording()) {
+        ImGui::Text("%s: %s, %.1f s recorded, %lld frames written, %lld dropped", p->trial.c_str(), p->phase.c_str(),
+                    p->recording_s, static_cast<long long>(p->frames_written),
+                    static_cast<long long>(p->frames_dropped));
+      } else {
+        ImGui::TextDisabled("last: %s, %.1f s, %lld frames", p->trial.c_str(), p->recording_s,
+                            static_cast<long long>(p->frames_written));
       }
     }
   }
@@ -292,15 +258,17 @@ class DevicesTab final : public Tab {
     const ImVec2 origin = ImGui::GetCursorScreenPos();
     const ImVec2 size = ImGui::GetContentRegionAvail();
     ImGui::InvisibleButton("live_canvas", ImVec2(std::max(size.x, 1.0F), std::max(size.y, 1.0F)));
-    if (ImGui::IsItemActive() && ImGui::IsMouseDragging(ImGuiMouseButton_Left)) {
-      const ImVec2 d = ImGui::GetIO().MouseDelta;
-      camera_.yaw_deg -= d.x * 0.3;
-      camera_.pitch_deg = std::clamp(camera_.pitch_deg + d.y * 0.3, -10.0, 89.0);
+    const ImGuiIO& io = ImGui::GetIO();
+    if (ImGui::IsItemActive() && ImGui::IsMouseDragging(ImGuiMouseButton_Left)) camera_.orbit(io.MouseDelta.x, io.MouseDelta.y);
+    if (ImGui::IsItemHovered() && io.MouseWheel != 0) {
+      camera_.zoom_towards(io.MousePos.x - origin.x, io.MousePos.y - origin.y, size.x, size.y, io.MouseWheel);
     }
-    if (ImGui::IsItemHovered() && ImGui::GetIO().MouseWheel != 0)
-      camera_.distance_mm = std::clamp(camera_.distance_mm * std::pow(0.9, ImGui::GetIO().MouseWheel), 200.0, 3000.0);
     dl->AddRectFilled(origin, ImVec2(origin.x + size.x, origin.y + size.y), IM_COL32(24, 26, 30, 255));
-    auto proj = [&](const Eigen::Vector3d& w) { return camera_.project(w, origin.x, origin.y, size.x, size.y); };
+    auto proj = [&](const Eigen::Vector3d& w) -> std::optional<Eigen::Vector2d> {
+      auto p = camera_.project(w, size.x, size.y);
+      if (p) *p += Eigen::Vector2d(origin.x, origin.y);
+      return p;
+    };
     auto line = [&](const Eigen::Vector3d& a, const Eigen::Vector3d& b, ImU32 col, float thickness) {
       auto pa = proj(a);
       auto pb = proj(b);
@@ -333,8 +301,8 @@ class DevicesTab final : public Tab {
     // Every device's hand in the world frame: where the hands disagree, a device is misplaced.
     for (const auto& h : vm_.hands()) {
       const ImU32 col = colour_u32(h.colour);
-      for (const auto& [a, b] : devices::hand_bones())
-        line(h.world[static_cast<size_t>(a)], h.world[static_cast<size_t>(b)], col, 2.0F);
+      for (const BoneSpec& b : hand_bones())
+        line(h.world[static_cast<size_t>(b.from)], h.world[static_cast<size_t>(b.to)], col, 2.0F);
       if (auto p = proj(h.world[kPalm]))
         dl->AddCircleFilled(ImVec2(static_cast<float>(p->x()), static_cast<float>(p->y())), 4.0F, col);
     }
@@ -345,20 +313,22 @@ class DevicesTab final : public Tab {
 
   StatusSink& status_;
   DevicesViewModel vm_;
-  devices::ViewCamera camera_;
+  OrbitCamera camera_;  // starts on the Layout tab's default view, which shows every controller
+  std::uint64_t seen_messages_ = 0;
+  double seconds_ = DevicesViewModel::kDefaultTrialSeconds;
   bool auto_started_ = false;
   bool fallback_pending_ = false;
-  bool was_recording_ = false;
   int backend_choice_ = 0;
   char replay_[512] = "";
   char trial_[80] = "";
   char folder_[512] = "";
-  FileBrowser layout_browser_{"Open layout", ".json"};
   FileBrowser save_browser_{"Save layout with serials", ".json"};
 };
 
 }  // namespace
 
-std::unique_ptr<Tab> make_devices_tab(StatusSink& status) { return std::make_unique<DevicesTab>(status); }
+std::unique_ptr<Tab> make_devices_tab(StatusSink& status, WorkbenchContext& context) {
+  return std::make_unique<DevicesTab>(status, context);
+}
 
 }  // namespace lmc::ui

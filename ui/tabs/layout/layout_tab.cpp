@@ -12,6 +12,7 @@
 
 #include "core/common/paths.h"
 #include "core/io/layout_json.h"
+#include "ui/model/workbench_context.h"
 #include "ui/scene/gl_scene_renderer.h"
 #include "ui/tabs/layout/coverage_panel.h"
 #include "ui/tabs/layout/heatmap_panel.h"
@@ -37,10 +38,13 @@ constexpr int kKeyDelete = 261;
 
 }  // namespace
 
-std::unique_ptr<Tab> make_layout_tab(StatusSink& status) { return std::make_unique<LayoutTab>(status); }
+std::unique_ptr<Tab> make_layout_tab(StatusSink& status, WorkbenchContext& context) {
+  return std::make_unique<LayoutTab>(status, nullptr, &context.layout());
+}
 
-LayoutTab::LayoutTab(StatusSink& status, std::unique_ptr<SceneRenderer> renderer)
+LayoutTab::LayoutTab(StatusSink& status, std::unique_ptr<SceneRenderer> renderer, CurrentLayout* shared)
     : status_(status),
+      shared_layout_(shared),
       state_(std::make_shared<LayoutTabState>(initial_document(),
                                               [this](const std::string& t, bool e) { status_.set_status(t, e); })),
       renderer_(std::move(renderer)) {
@@ -51,6 +55,7 @@ LayoutTab::LayoutTab(StatusSink& status, std::unique_ptr<SceneRenderer> renderer
   heatmap_ = std::make_unique<HeatmapPanel>(state_);
   optimiser_ = std::make_unique<OptimiserPanel>(state_);
   state_->select(0);
+  if (shared_layout_ != nullptr) shared_layout_->publish(state_->history().head().layout);
 }
 
 LayoutTab::~LayoutTab() {
@@ -117,6 +122,8 @@ void LayoutTab::update() {
   frame_start_ = now;
   if (stats_frames_wanted_ > 0) scripted_drag_step();
   state_->update(static_cast<double>(ImGui::GetIO().DeltaTime));
+  // The committed layout, not the scratch copy: a drag in progress would restart the rig every frame.
+  if (shared_layout_ != nullptr) shared_layout_->publish(state_->history().head().layout);
   if (stats_frames_wanted_ > 0) {
     update_ms_ += std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - frame_start_).count();
   }

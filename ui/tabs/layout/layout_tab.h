@@ -23,13 +23,18 @@ class CoveragePanel;
 class HeatmapPanel;
 class OptimiserPanel;
 
-std::unique_ptr<Tab> make_layout_tab(StatusSink& status);
+class CurrentLayout;
+class WorkbenchContext;
+
+std::unique_ptr<Tab> make_layout_tab(StatusSink& status, WorkbenchContext& context);
 
 class LayoutTab final : public Tab {
  public:
   // `renderer` null: a GL renderer is created on first draw when a GL context is current (none in
   // headless tests: the scene then draws a flat background).
-  LayoutTab(StatusSink& status, std::unique_ptr<SceneRenderer> renderer = nullptr);
+  // `shared` (the workbench's one layout; null in tests) receives every committed document, so
+  // the live rig streams with what this tab has open.
+  LayoutTab(StatusSink& status, std::unique_ptr<SceneRenderer> renderer = nullptr, CurrentLayout* shared = nullptr);
   ~LayoutTab() override;
 
   void update() override;
@@ -76,6 +81,7 @@ class LayoutTab final : public Tab {
   int capture_panel_frames_ = 0;
 
   StatusSink& status_;
+  CurrentLayout* shared_layout_ = nullptr;
   std::shared_ptr<LayoutTabState> state_;
   std::unique_ptr<SceneRenderer> renderer_;
   bool renderer_failed_ = false;

@@ -1,0 +1,117 @@
+#include "ui/model/devices/devices_view_model.h"
+
+#include <Eigen/Geometry>
+
+#include "devices/device_hub.h"
+#include "devices/record/trial_engine.h"
+
+namespace lmc::ui {
+namespace {
+constexpr double kStalledMs = 500.0;  // no frame for this long while connected: something is wrong
+}  // namespace
+
+std::array<float, 3> device_colour(int index) {
+  static const std::array<std::array<float, 3>, 8> colours = {{{0.90F, 0.30F, 0.25F},
+                                                               {0.25F, 0.65F, 0.95F},
+                                                               {0.35F, 0.80F, 0.35F},
+                                                               {0.95F, 0.75F, 0.20F},
+                                                               {0.75F, 0.45F, 0.90F},
+                                                               {0.20F, 0.85F, 0.80F},
+                                                               {0.95F, 0.50F, 0.75F},
+                                                               {0.70F, 0.70F, 0.70F}}};
+  return colours[static_cast<size_t>(((index % 8) + 8) % 8)];
+}
+
+DevicesViewModel::DevicesViewModel(LiveRig& rig) : rig_(rig) {}
+
+std::string DevicesViewModel::start(const std::string& backend, const devices::SimConfig& sim) {
+  rows_.clear();
+  hands_.clear();
+  all_streaming_ = false;
+  return rig_.start(backend, sim);
+}
+
+void DevicesViewModel::stop() {
+  rig_.stop();
+  rows_.clear();
+  hands_.clear();
+  all_streaming_ = false;
+}
+
+void DevicesViewModel::refresh() {
+  rig_.poll();
+  rows_.clear();
+  hands_.clear();
+  all_streaming_ = false;
+  const devices::DeviceHub* hub = rig_.hub();
+  if (hub == nullptr) return;
+  const devices::HubSnapshot snap = hub->snapshot();
+  const Layout& hub_layout = hub->layout();
+  int streaming_slots = 0;
+  for (const devices::DeviceStatus& s : snap.devices) {
+    DeviceRow r;
+    r.serial = s.serial;
+    r.slot = s.slot;
+    r.slot_index = s.slot_index;
+    r.backend = s.backend;
+    r.rate_hz = s.rate_hz;
+    r.age_ms = s.latest_frame_age_ms;
+    r.hand_present = s.hand_present;
+    r.frames = s.frames_received;
+    r.dropped = s.frames_dropped + s.frames_dropped_recorder;
+    r.colour = s.slot_index >= 0 ? s.slot_index : 7;
+    if (!s.connected) r.status = "disconnected";
+    else if (s.slot_index < 0) r.status = "unassigned";
+    else if (s.frames_received == 0) r.status = "waiting";
+    else if (r.age_ms > kStalledMs) r.status = "stalled";
+    else r.status = s.hand_present ? "streaming" : "no hand";
+    // The study saw 11–34 Hz with four devices; below that, suspect USB bandwidth or power.
+    r.warn = r.status == "disconnected" || r.status == "stalled" || (s.connected && s.frames_received > 0 && r.rate_hz < 10);
+    if (s.slot_index >= 0 && s.connected && s.frames_received > 0 && r.age_ms <= kStalledMs) ++streaming_slots;
+    if (s.slot_index >= 0 && s.hand_present && s.latest && s.connected &&
+        s.slot_index < hub_layout.device_count()) {
+      LiveHand h;
+      h.colour = s.slot_index;
+      h.slot = s.slot;
+      const LayoutDevice& ld = hub_layout.devices[static_cast<size_t>(s.slot_index)];
+      for (int p = 0; p < kNumHandPoints; ++p) {
+        const Vec3& q = s.latest->point(p);
+        h.world[static_cast<size_t>(p)] =
+            (p == kPalmNormal || p == kPalmDirection) ? Vec3(ld.pose.rotation() * q) : ld.to_world(q);
+      }
+      hands_.push_back(h);
+    }
+    rows_.push_back(std::move(r));
+  }
+  all_streaming_ = streaming_slots >= hub_layout.device_count() && running_seconds() >= 1.2;
+}
+
+std::vector<std::string> DevicesViewModel::slot_choices() const {
+  std::vector<std::string> out;
+  for (const auto& d : layout().devices) out.push_back(d.slot);
+  return out;
+}
+
+std::string DevicesViewModel::assign(const std::string& serial, const std::string& slot) {
+  return rig_.assign(serial, slot);
+}
+
+std::string DevicesViewModel::start_recording(const std::filesystem::path& dir, const std::string& trial,
+                                              double seconds) {
+  return rig_.start_trial(dir, trial, seconds);
+}
+
+std::optional<RecordingProgress> DevicesViewModel::recording_progress() const {
+  const auto& snap = rig_.trial().snapshot();
+  if (!snap) return std::nullopt;
+  RecordingProgress p;
+  p.trial = snap->trial.empty() ? rig_.trial_name() : snap->trial;
+  p.phase = devices::trial_phase_name(snap->phase);
+  p.recording_s = snap->recording_s;
+  p.remaining_s = snap->remaining_s;
+  p.frames_written = snap->recorder.frames_written;
+  p.frames_dropped = snap->recorder.frames_dropped;
+  return p;
+}
+
+}  // namespace lmc::ui

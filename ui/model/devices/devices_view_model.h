@@ -1,0 +1,103 @@
+#pragma once
+// Non-drawing logic of the workbench's Devices tab (issues #5, #10): a client of the workbench's
+// live rig (LiveRig, shared with the Record tab). It turns hub snapshots into table rows and
+// world-frame hands for the live view and drives the rig's test recording (the one TrialEngine on
+// a worker thread). No ImGui here, so tests drive it directly; the tab only draws, with the
+// shared scene camera (ui/scene/orbit_camera.h) and bones (ui/scene/scene_items.h).
+#include <array>
+#include <cstdint>
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "core/hand/hand_frame.h"
+#include "core/layout/layout.h"
+#include "devices/sim/sim_config.h"
+#include "ui/model/devices/live_rig.h"
+
+namespace lmc::ui {
+
+struct DeviceRow {
+  std::string serial;
+  std::string slot;  // empty: unassigned
+  int slot_index = -1;
+  std::string backend;
+  std::string status;  // "streaming", "no hand", "stalled", "disconnected", "unassigned"
+  double rate_hz = 0;
+  double age_ms = -1;
+  bool hand_present = false;
+  std::int64_t frames = 0;
+  std::int64_t dropped = 0;
+  int colour = 0;  // index into device_colour()
+  bool warn = false;
+};
+
+// One device's latest hand, realigned into the world frame (pose + offset).
+struct LiveHand {
+  int colour = 0;
+  std::string slot;
+  std::array<Vec3, kNumHandPoints> world{};
+};
+
+// Where the current (or last) test recording is, from the engine's latest status.
+struct RecordingProgress {
+  std::string trial;
+  std::string phase;  // trial_phase_name(): "waiting_for_streams", "recording", …
+  double recording_s = 0;
+  double remaining_s = 0;
+  std::int64_t frames_written = 0;
+  std::int64_t frames_dropped = 0;
+};
+
+// RGB in 0..1, one distinct colour per slot (LMC1 … LMC8).
+std::array<float, 3> device_colour(int index);
+
+class DevicesViewModel {
+ public:
+  static constexpr double kDefaultTrialSeconds = 10;
+
+  explicit DevicesViewModel(LiveRig& rig);
+
+  LiveRig& rig() { return rig_; }
+  // The rig's layout: the workbench's (Layout tab) with the controllers' serial bindings.
+  const Layout& layout() const { return rig_.layout(); }
+  // Starts a backend ("sim", "leapc", "replay:FILE") on the shared rig; stops the previous one.
+  // Returns an error text (empty when fine).
+  std::string start(const std::string& backend, const devices::SimConfig& sim = {});
+  void stop();
+  bool running() const { return rig_.running(); }
+  const std::string& backend() const { return rig_.backend(); }
+  double running_seconds() const { return rig_.running_seconds(); }
+
+  // Polls the rig (layout changes, trial status) and pulls a fresh snapshot; once per UI frame.
+  void refresh();
+  const std::vector<DeviceRow>& rows() const { return rows_; }
+  const std::vector<LiveHand>& hands() const { return hands_; }
+  const std::vector<std::string>& messages() const { return rig_.messages(); }
+  std::vector<std::string> slot_choices() const;
+  std::string assign(const std::string& serial, const std::string& slot);
+  // True once every layout slot has streamed for at least a second (rates are meaningful).
+  bool all_streaming() const { return all_streaming_; }
+
+  // Test recording of `seconds` into `dir` through the rig's trial engine (trial name checked).
+  // Never overwrites: when `trial` has files in `dir` the next free name (trial-2, trial-3, …) is
+  // used, see recording_trial(). Errors come back as text.
+  std::string start_recording(const std::filesystem::path& dir, const std::string& trial,
+                              double seconds = kDefaultTrialSeconds);
+  // Asks the engine to stop: the trial ends "interrupted", keeping every row written.
+  void stop_recording() { rig_.stop_trial(); }
+  bool recording() const { return rig_.recording(); }
+  const std::string& recording_trial() const { return rig_.trial_name(); }
+  std::optional<RecordingProgress> recording_progress() const;
+  // How the last trial ended, once ("" otherwise): outcome, reason, frames and file.
+  std::string take_recording_summary() { return rig_.take_trial_summary(); }
+
+ private:
+  LiveRig& rig_;
+  std::vector<DeviceRow> rows_;
+  std::vector<LiveHand> hands_;
+  bool all_streaming_ = false;
+};
+
+}  // namespace lmc::ui
