@@ -11,7 +11,7 @@ const std::vector<TabInfo>& tab_registry() {
   static const std::vector<TabInfo> tabs = {
       {"layout", "Layout", [](StatusSink& s, WorkbenchContext& c) { return make_layout_tab(s, c); }},
       {"devices", "Devices", [](StatusSink& s, WorkbenchContext& c) { return make_devices_tab(s, c); }},
-      {"record", "Record", [](StatusSink& s, WorkbenchContext&) { return make_record_tab(s); }},
+      {"record", "Record", [](StatusSink& s, WorkbenchContext& c) { return make_record_tab(s, c); }},
       {"review", "Review", [](StatusSink& s, WorkbenchContext&) { return make_review_tab(s); }},
   };
   return tabs;

@@ -1,0 +1,117 @@
+#pragma once
+// The Record tab's state (issue #11), without ImGui: one subject session folder, the session
+// runner that records it, and the one piece of work that may run at a time (a pre-flight or a
+// trial) on a worker thread. The tab reads this and calls its actions; it never touches the folder,
+// the runner or a device.
+//
+// Threading: while the worker runs, only it touches the runner and the folder (their journal
+// writes are not shared); the UI thread reads `state()`, a copy refreshed whenever the worker is
+// idle, and the latest trial snapshot the worker published. Every action refuses (returns a reason)
+// while the worker is busy, so the two never meet.
+//
+// The rules are the CLI's (`lmc session run`): a pass or warn verdict accepts the trial; a fail
+// waits for the operator, who redoes it or accepts it anyway (journaled); a redo keeps the earlier
+// attempt under superseded/.
+#include <filesystem>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "core/session/session_folder.h"
+#include "devices/record/trial_engine.h"
+#include "devices/session/session_runner.h"
+#include "ui/model/jobs/background_job.h"
+
+namespace lmc::ui {
+
+// What the operator chooses for recording (not part of the session folder).
+struct RecordSettings {
+  std::string backend = "sim";  // sim | leapc | replay:FILE
+  bool fast = false;            // simulated time (sim and replay only)
+  double countdown_s = 3;       // seconds between Start and the first recorded second
+  devices::SimConfig sim;
+};
+
+// What the worker did, for poll().
+struct RecordWorkResult {
+  std::optional<devices::PreflightReport> preflight;
+  std::optional<devices::AttemptResult> attempt;
+};
+
+class RecordSessionModel {
+ public:
+  RecordSessionModel();
+  ~RecordSessionModel();
+  RecordSessionModel(const RecordSessionModel&) = delete;
+  RecordSessionModel& operator=(const RecordSessionModel&) = delete;
+
+  // ---- the session ---------------------------------------------------------------------------
+  // Both return an error text ("" when done). A session already open is closed first.
+  std::string create(const std::filesystem::path& dir, const session::NewSessionSpec& spec, const RecordSettings& settings);
+  std::string open(const std::filesystem::path& dir, const RecordSettings& settings);
+  void close();
+  bool has_session() const { return folder_ != nullptr; }
+  const std::filesystem::path& dir() const { return dir_; }
+  // A copy of the folder's state (refreshed whenever the worker is idle). Valid while has_session().
+  const session::SessionState& state() const { return state_; }
+  // Trials found cut off when the session was opened: the plain notice the operator reads first.
+  const std::vector<std::string>& recovered() const { return recovered_; }
+  const RecordSettings& settings() const { return settings_; }
+
+  // ---- where we are -----------------------------------------------------------------------------
+  // The trial Start records next: the selected one, else the first not accepted (-1: all done).
+  int current_trial() const;
+  void select(int i);  // -1 clears the selection (back to the protocol's order)
+  int accepted_count() const { return has_session() ? state_.count(session::TrialStatus::kAccepted) : 0; }
+  bool finished() const { return has_session() && state_.next_trial() < 0; }
+  const session::TrialType& trial_type(int i) const;
+  // Plain words: which layout to set up for the current trial's block, with target positions.
+  std::string block_instructions() const;
+
+  // ---- pre-flight ---------------------------------------------------------------------------------
+  bool needs_preflight() const;  // the current trial's block has not been cleared in this run
+  std::string start_preflight();
+  std::string override_preflight(const std::string& reason);
+  const std::optional<devices::PreflightReport>& last_preflight() const { return last_preflight_; }
+
+  // ---- trials -------------------------------------------------------------------------------------
+  // Records the current trial (a new attempt). Refused while busy or before the pre-flight.
+  std::string start_trial();
+  void stop_trial();  // the trial ends as interrupted; its rows are kept
+  bool busy() const { return job_.running(); }
+  bool recording() const { return busy() && recording_trial_ >= 0; }
+  int recording_trial() const { return recording_trial_; }
+  // The latest status of the trial being recorded (phase, countdown, per-device rows).
+  const std::optional<devices::TrialSnapshot>& live() const { return live_; }
+  // The last attempt this run recorded, with its verdict; and which trial it was.
+  const std::optional<devices::AttemptResult>& last_attempt() const { return last_attempt_; }
+  // Keeps the last attempt despite a fail verdict (the operator's decision, journaled as a note).
+  std::string accept_last();
+  // Records trial `i` again: its current attempt moves under superseded/ (i = -1: the last one).
+  std::string redo(int i = -1);
+
+  // Once a frame: takes the worker's snapshots and, when it finished, its result (accepting a
+  // pass or warn, refreshing the state). Returns one line for the status bar when something ended.
+  std::string poll();
+
+ private:
+  std::string adopt(session::SessionFolder folder, const RecordSettings& settings);
+  void refresh_state();
+
+  std::unique_ptr<session::SessionFolder> folder_;
+  std::unique_ptr<devices::SessionRunner> runner_;
+  std::filesystem::path dir_;
+  session::SessionState state_;
+  std::vector<std::string> recovered_;
+  RecordSettings settings_;
+  int selected_ = -1;
+  int recording_trial_ = -1;
+  std::optional<devices::TrialSnapshot> live_;
+  std::optional<devices::PreflightReport> last_preflight_;
+  std::optional<devices::AttemptResult> last_attempt_;
+  bool job_handled_ = true;  // the finished job's result was taken by poll()
+  BackgroundJob<RecordWorkResult, devices::TrialSnapshot> job_;  // last: joined first
+};
+
+}  // namespace lmc::ui

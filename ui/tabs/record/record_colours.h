@@ -1,0 +1,45 @@
+#pragma once
+// How a trial's status and a verdict look in the Record tab: one icon, one colour and one word
+// each, so the trial list, the verdict and the subject screen agree.
+#include <imgui.h>
+
+#include <string>
+
+#include "core/session/session_state.h"
+
+namespace lmc::ui {
+
+struct StatusLook {
+  const char* icon;  // ASCII: the default font has no symbols
+  const char* word;
+  ImVec4 colour;
+};
+
+inline ImVec4 verdict_colour(const std::string& verdict) {
+  if (verdict == "pass") return {0.35F, 0.85F, 0.4F, 1.0F};
+  if (verdict == "warn") return {1.0F, 0.75F, 0.2F, 1.0F};
+  if (verdict == "fail") return {1.0F, 0.3F, 0.3F, 1.0F};
+  return {0.6F, 0.6F, 0.6F, 1.0F};
+}
+
+inline StatusLook trial_status_look(const session::TrialState& t, bool recording_now) {
+  using session::TrialStatus;
+  const ImVec4 grey{0.55F, 0.55F, 0.55F, 1.0F};
+  if (recording_now || t.status == TrialStatus::kRecording) return {"(o)", "recording", {1.0F, 0.25F, 0.25F, 1.0F}};
+  const std::string verdict = t.attempts.empty() ? std::string() : t.attempts.back().verdict();
+  switch (t.status) {
+    case TrialStatus::kPending:
+      return t.attempts.empty() ? StatusLook{" - ", "pending", grey} : StatusLook{" ~ ", "to record again", grey};
+    case TrialStatus::kInterrupted: return {" ! ", "interrupted", {1.0F, 0.55F, 0.2F, 1.0F}};
+    case TrialStatus::kFailed: return {" x ", "fail", verdict_colour("fail")};
+    case TrialStatus::kRecorded: return {" ? ", "recorded", verdict_colour(verdict)};
+    case TrialStatus::kAccepted:
+      return verdict == "warn" ? StatusLook{" v ", "accepted (warn)", verdict_colour("warn")}
+             : verdict == "fail" ? StatusLook{" v ", "accepted by the operator (fail)", verdict_colour("fail")}
+                                 : StatusLook{" v ", "accepted (pass)", verdict_colour("pass")};
+    default: break;
+  }
+  return {" ? ", "?", grey};
+}
+
+}  // namespace lmc::ui

@@ -1,0 +1,195 @@
+#include "ui/tabs/record/record_trial_panel.h"
+
+#include <imgui.h>
+
+#include <algorithm>
+#include <cstdio>
+
+#include "ui/tabs/record/record_colours.h"
+
+namespace lmc::ui {
+namespace {
+
+const ImVec4 kRed{1.0F, 0.3F, 0.3F, 1.0F};
+const ImVec4 kGreen{0.35F, 0.85F, 0.4F, 1.0F};
+
+void big_text(const std::string& text, float scale) {
+  ImGui::SetWindowFontScale(scale);
+  ImGui::TextWrapped("%s", text.c_str());
+  ImGui::SetWindowFontScale(1.0F);
+}
+
+bool big_button(const char* label, ImVec4 colour) {
+  ImGui::PushStyleColor(ImGuiCol_Button, colour);
+  ImGui::SetWindowFontScale(1.4F);
+  const bool pressed = ImGui::Button(label, ImVec2(260, 52));
+  ImGui::SetWindowFontScale(1.0F);
+  ImGui::PopStyleColor();
+  return pressed;
+}
+
+// The study's recording cue: a big red circle the subject cannot miss.
+void recording_circle(bool counting_down) {
+  ImDrawList* dl = ImGui::GetWindowDrawList();
+  const ImVec2 p = ImGui::GetCursorScreenPos();
+  const float r = 34.0F;
+  const ImU32 fill = counting_down ? IM_COL32(120, 120, 120, 255) : IM_COL32(230, 40, 40, 255);
+  dl->AddCircleFilled(ImVec2(p.x + r, p.y + r), r, fill, 48);
+  ImGui::Dummy(ImVec2(2 * r + 8, 2 * r));
+}
+
+void device_strips(const devices::HubSnapshot& hub) {
+  if (!ImGui::BeginTable("strips", 5, ImGuiTableFlags_BordersInnerH | ImGuiTableFlags_SizingFixedFit)) return;
+  ImGui::TableSetupColumn("Slot");
+  ImGui::TableSetupColumn("Controller");
+  ImGui::TableSetupColumn("Rate");
+  ImGui::TableSetupColumn("Hand");
+  ImGui::TableSetupColumn("Frame age");
+  ImGui::TableHeadersRow();
+  for (const auto& d : hub.devices) {
+    if (d.slot.empty()) continue;
+    ImGui::TableNextRow();
+    ImGui::TableNextColumn();
+    ImGui::TextUnformatted(d.slot.c_str());
+    ImGui::TableNextColumn();
+    ImGui::TextUnformatted(d.serial.c_str());
+    ImGui::TableNextColumn();
+    if (!d.connected) ImGui::TextColored(kRed, "LOST");
+    else ImGui::Text("%.0f Hz", d.rate_hz);
+    ImGui::TableNextColumn();
+    if (d.hand_present) ImGui::TextColored(kGreen, "hand");
+    else ImGui::TextColored(kRed, "no hand");
+    ImGui::TableNextColumn();
+    if (d.latest_frame_age_ms < 0) ImGui::TextDisabled("-");
+    else ImGui::Text("%.0f ms", d.latest_frame_age_ms);
+  }
+  ImGui::EndTable();
+}
+
+TrialPanelAction preflight_section(const RecordSessionModel& model, TrialPanelInput& input) {
+  TrialPanelAction action = TrialPanelAction::kNone;
+  ImGui::TextWrapped("%s", model.block_instructions().c_str());
+  ImGui::Spacing();
+  if (const auto& report = model.last_preflight()) {
+    ImGui::Text("Pre-flight for layout '%s':", report->layout_name.c_str());
+    for (const auto& item : report->items) {
+      ImGui::TextColored(item.ok ? kGreen : kRed, item.ok ? " ok  " : " FAIL");
+      ImGui::SameLine();
+      ImGui::TextWrapped("%s: %s", item.check.c_str(), item.detail.c_str());
+    }
+    ImGui::Spacing();
+  }
+  if (model.busy()) {
+    ImGui::TextUnformatted("Checking the controllers, Vicon, disk and folder…");
+    return action;
+  }
+  if (big_button("Run pre-flight", ImVec4(0.2F, 0.4F, 0.7F, 1.0F))) action = TrialPanelAction::kPreflight;
+  if (model.last_preflight() && !model.last_preflight()->ok()) {
+    ImGui::Spacing();
+    ImGui::PushItemWidth(360);
+    ImGui::InputTextWithHint("##reason", "why go ahead anyway (journaled)", input.override_reason,
+                             sizeof input.override_reason);
+    ImGui::PopItemWidth();
+    ImGui::SameLine();
+    if (ImGui::Button("Override")) action = TrialPanelAction::kOverride;
+  }
+  return action;
+}
+
+void verdict_section(const RecordSessionModel& model, TrialPanelAction& action) {
+  const auto& a = model.last_attempt();
+  if (!a) return;
+  const auto& name = model.state().trials.at(static_cast<size_t>(a->trial)).plan.name;
+  ImGui::Separator();
+  ImGui::Text("%s, attempt %d: %s", name.c_str(), a->attempt, a->outcome.c_str());
+  ImGui::SameLine();
+  ImGui::TextColored(verdict_colour(a->verdict()), "  %s", a->verdict().c_str());
+  if (a->quality) {
+    for (const auto& why : a->quality->reasons) ImGui::BulletText("%s", why.c_str());
+    if (a->quality->reasons.empty()) ImGui::BulletText("every check passed");
+  }
+  const bool accepted = model.state().trials.at(static_cast<size_t>(a->trial)).status == session::TrialStatus::kAccepted;
+  if (!accepted && ImGui::Button("Accept anyway (Enter)")) action = TrialPanelAction::kAccept;
+  if (!accepted) ImGui::SameLine();
+  if (ImGui::Button("Redo this trial (R)")) action = TrialPanelAction::kRedo;
+  if (accepted) {
+    ImGui::SameLine();
+    ImGui::TextDisabled("accepted; R records it again and keeps this attempt under superseded/");
+  }
+}
+
+}  // namespace
+
+TrialPanelAction draw_record_trial_panel(const RecordSessionModel& model, TrialPanelInput& input) {
+  TrialPanelAction action = TrialPanelAction::kNone;
+  const auto& state = model.state();
+  for (const auto& name : model.recovered())
+    ImGui::TextColored(ImVec4(1.0F, 0.6F, 0.2F, 1.0F),
+                       "%s was cut off while recording (the program stopped). Its rows are kept under superseded/ "
+                       "and it is recorded again below.",
+                       name.c_str());
+
+  const int i = model.recording() ? model.recording_trial() : model.current_trial();
+  if (i < 0) {
+    big_text("Every trial is accepted. The session is complete.", 1.5F);
+    ImGui::TextWrapped("Folder: %s — process it with `lmc process %s -o OUT`.", model.dir().string().c_str(),
+                       model.dir().string().c_str());
+    verdict_section(model, action);
+    return action;
+  }
+  const auto& trial = state.trials.at(static_cast<size_t>(i));
+  const auto& type = model.trial_type(i);
+  const auto& pose = state.protocol.poses.at(static_cast<size_t>(trial.plan.pose));
+  ImGui::TextDisabled("Trial %d of %zu  ·  layout %s  ·  palm %s  ·  %.0f s", i + 1, state.trials.size(),
+                      trial.plan.layout_key.c_str(), pose.key.c_str(), type.duration_s);
+  big_text(trial.plan.name, 2.0F);
+  ImGui::TextWrapped("Operator: %s", type.operator_cue.c_str());
+  ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0F, 0.9F, 0.5F, 1.0F));
+  big_text("Subject: " + type.subject_cue, 1.4F);
+  ImGui::PopStyleColor();
+  ImGui::Spacing();
+
+  if (model.recording()) {
+    const auto& live = model.live();
+    const bool counting = live && live->phase == devices::TrialPhase::kCountdown;
+    recording_circle(counting || !live || live->phase == devices::TrialPhase::kWaitingForStreams);
+    ImGui::SameLine();
+    ImGui::BeginGroup();
+    if (!live) {
+      big_text("starting…", 1.4F);
+    } else if (live->phase == devices::TrialPhase::kWaitingForStreams) {
+      big_text("waiting for every controller", 1.4F);
+    } else if (counting) {
+      char text[64];
+      std::snprintf(text, sizeof text, "starts in %.0f s", std::max(0.0, live->countdown_remaining_s));
+      big_text(text, 1.6F);
+    } else {
+      char text[96];
+      std::snprintf(text, sizeof text, "RECORDING  %.1f s  ·  %.1f s left", live->recording_s, live->remaining_s);
+      big_text(text, 1.6F);
+      const float f = type.duration_s > 0 ? static_cast<float>(live->recording_s / type.duration_s) : 0.0F;
+      ImGui::ProgressBar(std::clamp(f, 0.0F, 1.0F), ImVec2(360, 0));
+    }
+    ImGui::EndGroup();
+    if (big_button("Stop (Space)", ImVec4(0.7F, 0.15F, 0.15F, 1.0F))) action = TrialPanelAction::kStop;
+    if (live) {
+      ImGui::Text("Frames written %lld · Vicon packets sent %d", static_cast<long long>(live->recorder.frames_written),
+                  live->vicon_packets_sent);
+      device_strips(live->hub);
+    }
+    return action;
+  }
+
+  if (model.needs_preflight()) {
+    const TrialPanelAction a = preflight_section(model, input);
+    verdict_section(model, action);
+    return a != TrialPanelAction::kNone ? a : action;
+  }
+  if (!model.busy() && big_button("Start (Space)", ImVec4(0.15F, 0.55F, 0.25F, 1.0F))) action = TrialPanelAction::kStart;
+  if (trial.attempts.size() > 0 && trial.status != session::TrialStatus::kAccepted)
+    ImGui::TextDisabled("attempt %zu of this trial", trial.attempts.size() + 1);
+  verdict_section(model, action);
+  return action;
+}
+
+}  // namespace lmc::ui

@@ -1,0 +1,21 @@
+#pragma once
+// The Record tab's main panel (issue #11): the current trial's name, cue and length; the
+// pre-flight checklist before a block (green and red lines, override with a typed reason); while
+// recording a big red circle, the countdown, elapsed and remaining time and a strip per controller
+// (rate, hand, frame age); after a trial its verdict with reasons and Accept / Redo. Draws and
+// reports the button pressed; the keyboard is the tab's.
+#include <string>
+
+#include "ui/model/record/record_session_model.h"
+
+namespace lmc::ui {
+
+enum class TrialPanelAction { kNone, kPreflight, kOverride, kStart, kStop, kAccept, kRedo };
+
+struct TrialPanelInput {
+  char override_reason[200] = "";
+};
+
+TrialPanelAction draw_record_trial_panel(const RecordSessionModel& model, TrialPanelInput& input);
+
+}  // namespace lmc::ui
