@@ -91,13 +91,13 @@ PoseSetPtr small_pose_set() {
   return p;
 }
 
-Layout paper_square() { return default_new_layout(); }
+Layout square_layout() { return default_new_layout(); }
 
 TEST(CoverageCache, MatchesADirectComputationAndRecomputesOnlyTheMovedColumn) {
   const PoseSetPtr poses = small_pose_set();
   ASSERT_EQ(poses->size(), 60);
   CoverageCache cache;
-  Layout l = paper_square();
+  Layout l = square_layout();
   cache.request(l, poses);
   cache.wait();
   ASSERT_TRUE(cache.latest());
@@ -120,7 +120,7 @@ TEST(CoverageCache, MatchesADirectComputationAndRecomputesOnlyTheMovedColumn) {
 TEST(HeatmapSweep, ACellAtTheControllersOwnSpotEqualsItsCoverage) {
   const PoseSetPtr poses = small_pose_set();
   HeatmapRequest req;
-  req.layout = paper_square();
+  req.layout = square_layout();
   req.device = 0;
   req.finger = 1;  // index
   req.poses = poses;
@@ -140,7 +140,7 @@ TEST(HeatmapSweep, ACellAtTheControllersOwnSpotEqualsItsCoverage) {
 
 TEST(HeatmapSweep, ForOneFingerFramesAddedNeverExceedFramesVisible) {
   HeatmapRequest req;
-  req.layout = paper_square();
+  req.layout = square_layout();
   req.device = 1;
   req.finger = 2;
   req.poses = small_pose_set();
@@ -152,7 +152,7 @@ TEST(HeatmapSweep, ForOneFingerFramesAddedNeverExceedFramesVisible) {
 
 TEST(HeatmapCache, MovingTheSweptControllerDoesNotRestartButAnotherDoes) {
   HeatmapRequest a;
-  a.layout = paper_square();
+  a.layout = square_layout();
   a.device = 0;
   a.poses = small_pose_set();
   HeatmapRequest b = a;
@@ -168,7 +168,7 @@ TEST(HeatmapCache, MovingTheSweptControllerDoesNotRestartButAnotherDoes) {
 TEST(HeatmapCache, PublishesCoarseThenFineGrids) {
   HeatmapCache cache;
   HeatmapRequest req;
-  req.layout = paper_square();
+  req.layout = square_layout();
   req.device = 0;
   req.cells = 8;
   req.poses = small_pose_set();
@@ -184,7 +184,7 @@ TEST(HeatmapCache, PublishesCoarseThenFineGrids) {
 
 TEST(FrameVisibility, CountsAgreeWithTheBitsAndRaysCarryReasons) {
   const PoseSetPtr poses = small_pose_set();
-  const Layout l = paper_square();
+  const Layout l = square_layout();
   const FrameVisibility fv = explain_frame(l, poses->prepared[0], 1);
   ASSERT_EQ(fv.per_device.size(), 4u);
   for (int k = 0; k < 5; ++k) {
@@ -205,7 +205,7 @@ TEST(FrameVisibility, CountsAgreeWithTheBitsAndRaysCarryReasons) {
 }
 
 TEST(LayoutTabState, UnsavedMarkFollowsTheSavedCommitAndSelectionIsPruned) {
-  LayoutTabState s(make_document(paper_square()));
+  LayoutTabState s(make_document(square_layout()));
   EXPECT_FALSE(s.unsaved());
   s.select(3);
   ASSERT_TRUE(remove_device(s.upd_history(), 3));
@@ -227,10 +227,14 @@ TEST(LayoutTabState, OpeningABadFileNamesTheJsonPathAndChangesNothing) {
                "devices": [{"slot": "LMC1", "serial": null, "pose": {"x": "left", "y": 0, "z": 0, "rx": 0, "ry": 0, "rz": 0},
                             "offset": [0, 0, 0]}]})";
   }
-  LayoutTabState s(make_document(paper_square()));
+  LayoutTabState s(make_document(square_layout()));
   const LayoutDocument before = s.history().head();
   const std::string err = s.open_file(path);
   EXPECT_NE(err.find("/devices/0/pose/x"), std::string::npos) << err;
+  // Path and JSON pointer exactly once (issue #14: "bad.json: at …: bad.json: at …: …").
+  const std::string where = path.string() + ": at /devices/0/pose/x: ";
+  EXPECT_EQ(err.find(where), err.rfind(where)) << err;
+  EXPECT_EQ(err.find("at /devices"), err.rfind("at /devices")) << err;
   EXPECT_EQ(s.history().head(), before);
   EXPECT_FALSE(s.history().can_undo());
   std::filesystem::remove_all(dir);
@@ -239,7 +243,7 @@ TEST(LayoutTabState, OpeningABadFileNamesTheJsonPathAndChangesNothing) {
 TEST(LayoutTabState, SaveThenOpenRoundTripsTheLayout) {
   const auto dir = std::filesystem::temp_directory_path() / "lmc_ui_model_roundtrip";
   std::filesystem::create_directories(dir);
-  LayoutTabState s(make_document(paper_square()));
+  LayoutTabState s(make_document(square_layout()));
   ASSERT_TRUE(set_pose_param(s.upd_history(), 1, 3, 22.5));
   ASSERT_TRUE(s.save_to(dir / "rig.json").empty());
   EXPECT_FALSE(s.unsaved());
