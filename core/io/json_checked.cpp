@@ -1,14 +1,14 @@
 #include "core/io/json_checked.h"
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <limits>
 #include <set>
+#include <sstream>
 #include <utility>
 #include <vector>
-#include <algorithm>
-#include <sstream>
 
 namespace lmc {
 
