@@ -171,8 +171,16 @@ class Reader {
     out.first_frame = h_first;
     if (has("POINT", "FRAMES")) {
       const Param& p = get("POINT", "FRAMES");
-      frames = p.type == 4 ? static_cast<long>(std::lround(number("POINT", "FRAMES", c)))
-                           : static_cast<long>(static_cast<std::uint16_t>(integer("POINT", "FRAMES", c)));
+      if (p.type == 4) {
+        // A float count (used past 65535 frames) can say anything; beyond 2^32 it is no count.
+        const double v = number("POINT", "FRAMES", c);
+        if (!std::isfinite(v) || v < 0.0 || v > 4294967295.0) {
+          fail(p.offset, "POINT:FRAMES is " + std::to_string(v) + "; implausible frame count");
+        }
+        frames = static_cast<long>(std::lround(v));
+      } else {
+        frames = static_cast<long>(static_cast<std::uint16_t>(integer("POINT", "FRAMES", c)));
+      }
     }
     if (has("TRIAL", "ACTUAL_START_FIELD") && has("TRIAL", "ACTUAL_END_FIELD")) {
       const auto s = words("TRIAL", "ACTUAL_START_FIELD", c), e = words("TRIAL", "ACTUAL_END_FIELD", c);
@@ -191,7 +199,17 @@ class Reader {
       if (channels == 0) {
         analog = 0;
       } else if (arate > 0.0) {
-        analog = channels * static_cast<int>(std::lround(arate / out.point_rate_hz));
+        // In floating point first: a hostile ANALOG:RATE / POINT:RATE ratio overflows int (and
+        // lround) long before it is compared with anything. Every sample takes at least two bytes,
+        // so more samples per frame than the file has bytes cannot be real.
+        const double per_frame = static_cast<double>(channels) * std::round(arate / out.point_rate_hz);
+        if (!std::isfinite(per_frame) || per_frame > static_cast<double>(b_.size())) {
+          fail(0, "ANALOG:USED (" + std::to_string(channels) + ") x ANALOG:RATE (" + std::to_string(arate) +
+                      ") / POINT:RATE (" + std::to_string(out.point_rate_hz) +
+                      ") claims more analog samples per frame than the file has bytes (" +
+                      std::to_string(b_.size()) + "); implausible");
+        }
+        analog = static_cast<int>(per_frame);
       }
     }
     out.analog_per_frame = analog;
@@ -216,6 +234,13 @@ class Reader {
     const size_t frame_bytes = (static_cast<size_t>(used) * 4 + static_cast<size_t>(std::max(analog, 0))) * word;
     const size_t dstart = static_cast<size_t>(data_start - 1) * kBlock;
     if (dstart > b_.size()) fail(16, "data section (block " + std::to_string(data_start) + ") lies past the end of the file");
+    if (frame_bytes == 0 && frames > 0 && static_cast<size_t>(frames) > b_.size()) {
+      // Frames without points or analog samples take no bytes, so the file's size cannot bound
+      // them; a claim of more frames than the file has bytes is a corrupt or hostile count (each
+      // frame would still cost memory to hold).
+      fail(0, "claims " + std::to_string(frames) + " frames but has no points or analog samples, and only " +
+                  std::to_string(b_.size()) + " bytes; implausible frame count");
+    }
     if (frame_bytes > 0) {
       const long available = static_cast<long>((b_.size() - dstart) / frame_bytes);
       if (available < frames) {

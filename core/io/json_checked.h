@@ -53,8 +53,9 @@ class JsonReader {
 inline constexpr int kMaxJsonDepth = 256;
 inline constexpr std::uintmax_t kMaxJsonFileBytes = 64u << 20;
 
-// Parses text as JSON; a syntax error is reported with the file and the byte position, nesting
-// deeper than kMaxJsonDepth is refused.
+// Parses text as JSON; a syntax error is reported with the file, line and column, nesting deeper
+// than kMaxJsonDepth is refused, and a number beyond a double (1e400) or a key repeated in one
+// object is an lmc::Error naming the file and the JSON pointer (never the library's own text).
 nlohmann::json parse_json_text(const std::string& text, const std::string& source);
 nlohmann::json read_json_file(const std::filesystem::path& path);
 

@@ -26,6 +26,11 @@ constexpr std::array<char, 3> kAxes = {'x', 'y', 'z'};
 // The study's rig has four controllers; the recorder supports up to eight (one LeapC connection).
 constexpr int kMaxDeviceId = 8;
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+// Plausibility limits (issue #14). A controller sees ~0.6 m; a coordinate beyond 10 m (in mm) is
+// a corrupt or hostile value, and 1e308 turned every fused frame into NaN downstream. Timestamps
+// beyond 2^53 µs (≈ 285 years) are no clock reading, and would overflow the resampler's arithmetic.
+constexpr double kMaxAbsCoordinateMm = 10000.0;
+constexpr std::int64_t kMaxAbsTimestampUs = std::int64_t{1} << 53;
 
 // How the columns are laid out in the file.
 enum class ColumnStyle {
@@ -209,6 +214,10 @@ class RowParser {
     }
     const auto ts = text::parse_int(fields_[3].text);
     if (!ts) return RowFailure{fields_[3].column, "Time Stamp is not an integer (µs): " + quote(fields_[3].text)};
+    if (*ts > kMaxAbsTimestampUs || *ts < -kMaxAbsTimestampUs) {
+      return RowFailure{fields_[3].column, "Time Stamp " + quote(fields_[3].text) +
+                                               " µs is implausible (beyond ±2^53 µs, about 285 years)"};
+    }
     frame.device_id = static_cast<int>(*id);
     frame.frame_id = *frame_id;
     frame.frame_rate_hz = *rate;
@@ -244,6 +253,11 @@ class RowParser {
           return RowFailure{column, "point '" + std::string(hand_point_name(p)) + "' " + kAxes[static_cast<size_t>(a)] +
                                         " is not a number: " + quote(part)};
         }
+        if (auto bad = implausible_coordinate(*v, column,
+                                              "point '" + std::string(hand_point_name(p)) + "' " + kAxes[static_cast<size_t>(a)],
+                                              part)) {
+          return bad;
+        }
         row.frame.points[static_cast<size_t>(p)][a] = *v;
         finite += std::isfinite(*v) ? 1 : 0;
         if (!last) {
@@ -269,6 +283,11 @@ class RowParser {
                                             kAxes[static_cast<size_t>(c % 3)] + "' is not a number: " +
                                             quote(field.text)};
       }
+      if (auto bad = implausible_coordinate(*v, field.column,
+                                            "'" + std::string(hand_point_name(c / 3)) + "." + kAxes[static_cast<size_t>(c % 3)] + "'",
+                                            field.text)) {
+        return bad;
+      }
       row.frame.points[static_cast<size_t>(c / 3)][c % 3] = *v;
       finite += std::isfinite(*v) ? 1 : 0;
     }
@@ -282,6 +301,21 @@ class RowParser {
       row.labels[static_cast<size_t>(d)] = static_cast<std::int8_t>(*v);
     }
     classify(row, finite);
+    return std::nullopt;
+  }
+
+  // NaN is how the formats write "missing"; infinity and magnitudes no controller can measure are
+  // refused with the value, so they cannot pass as a hand or as "missing".
+  static std::optional<RowFailure> implausible_coordinate(double v, long column, const std::string& what,
+                                                          std::string_view text) {
+    if (std::isinf(v)) {
+      return RowFailure{column, what + " is infinite: " + quote(text) + " (a missing coordinate is written nan)"};
+    }
+    if (std::isfinite(v) && std::fabs(v) > kMaxAbsCoordinateMm) {
+      return RowFailure{column, what + " = " + quote(text) + " mm is implausible (more than " +
+                                    std::to_string(static_cast<int>(kMaxAbsCoordinateMm / 1000.0)) +
+                                    " m from the controller)"};
+    }
     return std::nullopt;
   }
 
@@ -341,6 +375,7 @@ LmcRecording parse_lmc_recording(std::istream& in, const std::string& source_nam
   const HeaderInfo header = read_header(lines.front(), source_name);
 
   LmcRecording rec;
+  rec.source = source_name;
   RowParser parser(header);
   ParsedRow row;
   bool any_short_no_hand = false;
@@ -378,6 +413,7 @@ LmcRecording parse_lmc_recording(std::istream& in, const std::string& source_nam
       ++partial_rows;
     }
     rec.rows.push_back(row.frame);
+    rec.lines.push_back(line.number);
     if (header.style == ColumnStyle::kSplitNumbers) rec.visibility.push_back(row.labels);
   }
 

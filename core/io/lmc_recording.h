@@ -27,6 +27,10 @@ struct LmcRecording {
   std::vector<HandFrame> rows;          // in file order (not sorted by time)
   std::vector<FingerLabels> visibility;  // one per row when kind == kRaytraced, else empty
   std::vector<std::string> warnings;     // problems that were survivable, e.g. a truncated last line
+  // Where the rows came from, so later stages can name file and line: the reader fills both
+  // (`lines` holds each row's 1-based file line); recordings built in code may leave them empty.
+  std::string source;
+  std::vector<long> lines;
 
   // Device ids present, ascending.
   std::vector<int> device_ids() const;

@@ -190,6 +190,7 @@ TrcData parse_trc(std::istream& in, const std::string& source_name) {
       fail(source_name, line.number, fields[1].column, "Time is not a finite number: " + quote(fields[1].text));
     }
     std::vector<Eigen::Vector3d> row(static_cast<size_t>(markers));
+    const double max_coordinate = trc.units == "m" ? 100.0 : 100000.0;
     for (int m = 0; m < markers; ++m) {
       Eigen::Vector3d p;
       int missing = 0;
@@ -201,10 +202,14 @@ TrcData parse_trc(std::istream& in, const std::string& source_name) {
           continue;
         }
         const auto v = text::parse_double(cell.text);
-        if (!v || std::isinf(*v)) {
+        const std::string what = "marker '" + trc.marker_names[static_cast<size_t>(m)] + "' " + static_cast<char>('X' + a);
+        if (!v) fail(source_name, line.number, cell.column, what + " is not a number: " + quote(cell.text));
+        // Issue #14: infinity is no gap (a gap is blank or NaN), and a magnitude no capture volume
+        // holds (1e308) would turn every later computation into NaN or overflow.
+        if (std::isinf(*v)) fail(source_name, line.number, cell.column, what + " is infinite: " + quote(cell.text));
+        if (std::fabs(*v) > max_coordinate) {
           fail(source_name, line.number, cell.column,
-               "marker '" + trc.marker_names[static_cast<size_t>(m)] + "' " + static_cast<char>('X' + a) +
-                   " is not a number: " + quote(cell.text));
+               what + " = " + quote(cell.text) + " " + trc.units + " is implausible (more than 100 m from the lab origin)");
         }
         p[a] = *v;
         missing += std::isnan(*v) ? 1 : 0;

@@ -34,10 +34,84 @@ bool same_points(const HandFrame& a, const HandFrame& b) {
 
 std::string slot_name(int device_id) { return "LMC" + std::to_string(device_id); }
 
+// Timestamps after re-basing stay within ±2^62 µs, so the difference of any two fits in int64.
+constexpr std::int64_t kMaxRebasedUs = std::int64_t{1} << 62;
+
+// Names the row of a recording in errors: the file and line when the reader recorded them.
+class RowPlace {
+ public:
+  explicit RowPlace(const LmcRecording& r) : r_(r) {}
+  [[noreturn]] void fail(long row, const std::string& what) const {
+    const auto i = static_cast<size_t>(row - 1);
+    const long line = r_.lines.size() == r_.rows.size() && i < r_.lines.size() ? r_.lines[i] : 0;
+    const std::string where = line > 0 ? "" : "row " + std::to_string(row) + ": ";
+    if (r_.source.empty() && line == 0) throw Error("resample: " + where + what);
+    throw Error(ErrorLocation(r_.source.empty() ? std::string("<recording>") : r_.source, line), where + what);
+  }
+
+ private:
+  const LmcRecording& r_;
+};
+
+std::int64_t add_checked(std::int64_t a, std::int64_t b, const RowPlace& place, long row) {
+  std::int64_t out = 0;
+  if (__builtin_add_overflow(a, b, &out) || out > kMaxRebasedUs || out < -kMaxRebasedUs) {
+    place.fail(row, "timestamp arithmetic leaves the plausible range (|t| > 2^62 µs); the time stamps are corrupt");
+  }
+  return out;
+}
+
 void add_issue(ResampleReport* report, std::map<std::pair<int, int>, size_t>& listed, StreamIssue issue) {
   if (report == nullptr) return;
   auto& n = listed[{issue.device_id, static_cast<int>(issue.kind)}];
   if (n++ < kMaxListedIssuesPerKind) report->issues.push_back(std::move(issue));
+}
+
+// A grid this long would need gigabytes per device whatever the recording says.
+constexpr long kMaxGridFrames = 100'000'000;
+
+// Refuses a grid far longer than the rows can fill (issue #14: one row whose timestamp jumped by
+// 10^4 s made a 10 s recording ask for a multi-GB grid). The recorder writes every frame a
+// controller sends, hand or not, at 10–120 Hz per controller; a recording that averages less than
+// one row per `max_seconds_per_row` over more than `min_plausible_span_s` has a corrupt clock.
+// The message names the largest forward jump, which is where the clock went wrong.
+void check_plausible_span(const LmcRecording& recording, const std::vector<std::vector<Sample>>& streams,
+                          std::int64_t t_start, std::int64_t t_end, const ResampleOptions& options,
+                          const RowPlace& place) {
+  const double span_s = (static_cast<double>(t_end) - static_cast<double>(t_start)) * 1e-6;
+  const double limit_s = options.min_plausible_span_s + options.max_seconds_per_row * static_cast<double>(recording.rows.size());
+  if (span_s <= limit_s) return;
+  // Every sample inside the grid's span, all devices, in time order; the grid start counts as one.
+  std::vector<std::pair<std::int64_t, const Sample*>> all;
+  for (const auto& s : streams) {
+    for (const Sample& smp : s) {
+      if (smp.t_us >= t_start && smp.t_us <= t_end) all.emplace_back(smp.t_us, &smp);
+    }
+  }
+  std::sort(all.begin(), all.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+  std::int64_t prev = t_start;
+  double worst_s = -1.0;
+  const Sample* worst = nullptr;
+  for (const auto& [t, smp] : all) {
+    const double jump_s = static_cast<double>(t - prev) * 1e-6;
+    if (jump_s > worst_s) {
+      worst_s = jump_s;
+      worst = smp;
+    }
+    prev = t;
+  }
+  std::ostringstream msg;
+  msg.precision(6);
+  msg << "the hand samples span " << span_s << " s but the file has only " << recording.rows.size()
+      << " rows (at most " << limit_s << " s is plausible: " << options.min_plausible_span_s << " s + "
+      << options.max_seconds_per_row << " s per row); ";
+  if (worst == nullptr) {
+    msg << "the grid start lies far before the first sample";
+    throw Error("resample: " + msg.str());
+  }
+  msg << slot_name(worst->frame->device_id) << "'s timestamp " << worst->frame->timestamp_us << " µs jumps " << worst_s
+      << " s past the sample before it; refusing to build a " << span_s << " s grid";
+  place.fail(worst->row, msg.str());
 }
 
 }  // namespace
@@ -125,6 +199,7 @@ GridTrial resample_recording(const LmcRecording& recording, const ResampleOption
   const auto reset_us = static_cast<std::int64_t>(std::llround(options.clock_reset_ms * 1000.0));
   std::map<std::pair<int, int>, size_t> listed;
 
+  const RowPlace place(recording);
   const std::vector<int> ids = recording.device_ids();
   std::vector<std::vector<Sample>> streams(ids.size());
   std::vector<DeviceStreamStats> stats(ids.size());
@@ -142,8 +217,8 @@ GridTrial resample_recording(const LmcRecording& recording, const ResampleOption
       if (f.device_id != id) continue;
       const long row = static_cast<long>(r) + 1;
       ++st.rows;
-      std::int64_t t = f.timestamp_us + rebase;
-      if (!first && t < prev - reset_us) {
+      std::int64_t t = add_checked(f.timestamp_us, rebase, place, row);
+      if (!first && t < add_checked(prev, -reset_us, place, row)) {
         // Clock reset: continue one typical interval after the latest time seen so far.
         std::int64_t typical = 33333;
         if (!steps.empty()) {
@@ -151,9 +226,9 @@ GridTrial resample_recording(const LmcRecording& recording, const ResampleOption
           std::nth_element(steps.begin(), mid, steps.end());
           typical = std::max<std::int64_t>(1, *mid);
         }
-        const std::int64_t shift = running_max + typical - t;
-        rebase += shift;
-        t += shift;
+        const std::int64_t shift = add_checked(add_checked(running_max, typical, place, row), -t, place, row);
+        rebase = add_checked(rebase, shift, place, row);
+        t = add_checked(t, shift, place, row);
         ++st.clock_resets;
         add_issue(report, listed,
                   {StreamIssueKind::kClockReset, id, row, f.timestamp_us,
@@ -222,13 +297,20 @@ GridTrial resample_recording(const LmcRecording& recording, const ResampleOption
   if (!any_hand) throw Error("resample: no device saw a hand in this recording");
   if (options.grid_start_us) {
     t_start = *options.grid_start_us;
+    if (t_start > kMaxRebasedUs || t_start < -kMaxRebasedUs) throw Error("resample: the given grid start is out of range");
     if (t_end < t_start) throw Error("resample: every hand sample precedes the given grid start");
   }
+  check_plausible_span(recording, streams, t_start, t_end, options, place);
 
   GridTrial grid;
   grid.start_us = t_start;
   grid.step_us = step_us;
-  grid.frame_count = static_cast<int>(std::floor(static_cast<double>(t_end - t_start) / step_us + 1e-9)) + 1;
+  const double frames = std::floor(static_cast<double>(t_end - t_start) / step_us + 1e-9) + 1.0;
+  if (!(frames <= static_cast<double>(kMaxGridFrames))) {
+    throw Error("resample: a grid of " + std::to_string(frames) + " frames at " + std::to_string(options.rate_hz) +
+                " Hz is too large (at most " + std::to_string(kMaxGridFrames) + ")");
+  }
+  grid.frame_count = static_cast<int>(frames);
   grid.devices.resize(ids.size());
 
   for (size_t di = 0; di < ids.size(); ++di) {

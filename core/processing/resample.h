@@ -41,6 +41,11 @@ struct ResampleOptions {
   // the recording knows when the Vicon trigger fired (the simulator's sidecar notes the device
   // clock at ground-truth time zero), so grid frame f and Vicon frame f are the same instant.
   std::optional<std::int64_t> grid_start_us;
+  // Plausibility of the span (issue #14): the hand samples may span at most
+  // min_plausible_span_s + max_seconds_per_row × rows; beyond it a timestamp jumped (the error
+  // names the row) and the grid would cost memory out of all proportion to the file.
+  double min_plausible_span_s = 60.0;
+  double max_seconds_per_row = 0.25;
 };
 
 enum class StreamIssueKind { kOutOfOrder, kDuplicate, kConflictingDuplicate, kClockReset, kGap };

@@ -1,6 +1,7 @@
 #include "devices/record/byte_sink.h"
 
 #include <fcntl.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <cerrno>
@@ -37,6 +38,13 @@ class FileSink final : public ByteSink {
   }
   std::string error() const override { return error_; }
   std::uint64_t bytes_written() const override { return written_; }
+  // An unlinked file keeps accepting writes into an inode no folder holds; only the link count
+  // of the open descriptor shows it (issue #14: a trial ran on into a deleted folder).
+  std::string lost() const override {
+    struct stat st {};
+    if (fd_ < 0 || ::fstat(fd_, &st) != 0 || st.st_nlink > 0) return {};
+    return path_.string() + " was deleted while recording (was its folder removed?)";
+  }
 
  private:
   bool fail(const char* what) {

@@ -20,6 +20,9 @@ class ByteSink {
   // Bytes that reached the file so far, including those of a write that then failed; lets the
   // recorder count exactly the complete rows a cut file holds. 0 when the sink cannot tell.
   virtual std::uint64_t bytes_written() const { return 0; }
+  // Why bytes written now would not be kept, though writes still succeed: the file was deleted
+  // (its folder removed) while open. Empty while all is well or when the sink cannot tell.
+  virtual std::string lost() const { return {}; }
 };
 
 // Creates (truncates) the file. Throws lmc::Error naming the path when it cannot be opened.

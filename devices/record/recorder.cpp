@@ -211,6 +211,12 @@ void Recorder::run() {
     const auto now = std::chrono::steady_clock::now();
     if (stopping || now - last_push >= interval) {
       if (!failed_) push_buffer(buffer, pending);
+      // At least once a second (the flush interval): a deleted file must end the trial, not
+      // let it run on as if its rows were kept.
+      if (!failed_) {
+        if (const std::string why = sink_->lost(); !why.empty())
+          fail("recording stopped: " + why + "; the rows written to it went with it, nothing of this trial is kept");
+      }
       last_push = now;
     }
     if (stopping && queue_.size_approx() == 0) break;
@@ -255,7 +261,15 @@ RecorderStatus Recorder::stop(const std::vector<std::pair<std::string, std::stri
     const char* state = failed_ ? "failed" : aborted_ ? "aborted" : "completed";
     write_file_atomically(paths_.sidecar, recorder_sidecar_to_json(sidecar(state)).dump(2) + "\n");
   } catch (const std::exception& e) {
-    fail(std::string("cannot write the session sidecar: ") + e.what());
+    // Never swallowed (issue #14): with a full disk the sidecar on disk still says "recording"
+    // with no frames, so the status must say so even when another error came first.
+    const std::string why = std::string("cannot write the session sidecar (") + e.what() +
+                            "); the sidecar on disk still says 'recording'";
+    {
+      std::lock_guard lock(stats_mutex_);
+      error_ = error_.empty() ? why : error_ + "; and " + why;
+    }
+    failed_ = true;
   }
   return status();
 }

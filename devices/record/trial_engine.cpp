@@ -68,6 +68,7 @@ struct TrialEngine::Run {
   bool recording_started = false;
   bool vicon_start_sent = false;
   bool vicon_stop_received = false;
+  std::string vicon_start_name;  // listen mode: the Name of the CaptureStart that began the trial
   int vicon_sent = 0;
   bool interrupted = false;
   bool hub_started_here = false;
@@ -148,14 +149,20 @@ struct TrialEngine::Run {
     return streaming >= snap.slots.size();
   }
 
-  void refuse_existing(const std::string& name) {
-    if (cfg.allow_overwrite) return;
+  // The first of the trial's files that already exists (none with allow_overwrite).
+  std::optional<std::filesystem::path> existing_file(const std::string& name) const {
+    if (cfg.allow_overwrite) return std::nullopt;
     const SessionPaths paths = session_paths(cfg.output_dir, name);
     for (const auto& p : {paths.recording, paths.sidecar, paths.truth_trc})
-      if (std::filesystem::exists(p)) {
-        result.existing = p;
-        throw Error(p.string() + " exists; choose another trial name");
-      }
+      if (std::filesystem::exists(p)) return p;
+    return std::nullopt;
+  }
+
+  void refuse_existing(const std::string& name) {
+    if (const auto p = existing_file(name)) {
+      result.existing = *p;
+      throw Error(p->string() + " exists; choose another trial name");
+    }
   }
 
   void begin_recording() {
@@ -221,9 +228,16 @@ struct TrialEngine::Run {
             say("ignoring CaptureStart: its Name cannot be a trial name (" + why + ")");
             continue;
           }
+          // One CaptureStart naming a trial that is already on disk is refused, not the whole
+          // listen session: the operator renames the trial in Nexus and starts again (issue #14).
+          if (const auto taken = existing_file(m.name)) {
+            say("ignoring CaptureStart '" + m.name + "': " + taken->string() +
+                " exists; waiting for a CaptureStart with another trial name");
+            continue;
+          }
           trial = m.name;
-          refuse_existing(trial);
         }
+        vicon_start_name = m.name;
         begin_recording();
         recorder->note("vicon_alignment", clock_alignment_json(hub.snapshot(), "CaptureStart received", received_ns,
                                                                m.packet_id, utc_now_iso8601()));
@@ -233,6 +247,13 @@ struct TrialEngine::Run {
                                                   {"host_time_utc", utc_now_iso8601()}});
         notice("CaptureStart received: recording " + trial);
       } else if (m.type == ViconMessage::Type::kStop && recorder) {
+        // Another capture's CaptureStop (a second Nexus, a stale broadcast) must not end this
+        // trial; a Stop without a Name, or after a Start without one, is taken as ours.
+        if (!m.name.empty() && !vicon_start_name.empty() && m.name != vicon_start_name) {
+          say("ignoring CaptureStop for '" + m.name + "' (PacketID " + std::to_string(m.packet_id) + "): recording '" +
+              vicon_start_name + "'");
+          continue;
+        }
         recorder->note("vicon_stop_received", {{"name", m.name},
                                                {"packet_id", m.packet_id},
                                                {"result", m.result},

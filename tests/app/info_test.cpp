@@ -10,6 +10,7 @@
 #include <string>
 #include <sys/wait.h>
 
+#include "core/io/lmc_recording.h"
 #include "tests/support/cli_runner.h"
 #include "tests/support/reference_data.h"
 
@@ -125,6 +126,29 @@ TEST(LmcInfo, LayoutJson) {
   EXPECT_EQ(j.at("devices")[0].at("slot"), "LMC1");
   EXPECT_EQ(j.at("devices")[0].at("pose").at("x"), -60.0);  // reference-algorithms.md §1 table
   EXPECT_EQ(j.at("devices")[1].at("offset_mm")[0], -12.92);
+}
+
+// Issue #14: a row whose timestamp jumps by 10^4 s was reported as a 10,000 s recording without
+// a word; `lmc process` refuses such a file, and `lmc info` says why beforehand.
+TEST(LmcInfo, WarnsAboutImplausibleDuration) {
+  const auto dir = lmc::test::scratch_dir("info_time_jump_input");
+  const auto path = dir / "jump.raw.txt";
+  std::string text = lmc::lmc_recording_header(lmc::RecordingKind::kRaw);
+  lmc::HandFrame f;
+  f.device_id = 1;
+  f.frame_rate_hz = 30.0;
+  for (int k = 0; k < 10; ++k) {
+    f.frame_id = k;
+    f.timestamp_us = 33'333 * k;
+    text += lmc::format_lmc_row(f, lmc::RecordingKind::kRaw);
+  }
+  f.timestamp_us = 10'000'000'000;
+  text += lmc::format_lmc_row(f, lmc::RecordingKind::kRaw);
+  std::ofstream(path) << text;
+  const CliRun r = run_in("info " + lmc::test::shell_quote(path.string()), "info_time_jump");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_THAT(r.out, HasSubstr("is implausible for 11 rows"));
+  EXPECT_THAT(r.out, HasSubstr("a timestamp likely jumps"));
 }
 
 TEST(LmcInfo, BadFileExitsOneWithFileNameOnStderr) {

@@ -377,6 +377,83 @@ TEST(Recorder, AWriteErrorStaysFailedWhateverTheAbortReason) {
   EXPECT_NE(side["error"].get<std::string>().find("No space left"), std::string::npos) << side["error"];
 }
 
+// Issue #14: the output folder removed mid-trial went unnoticed (the trial ran on into a deleted
+// file); the recorder now notices within its flush interval and fails with that cause.
+TEST(Recorder, OutputFolderDeletedMidTrialFailsTheTrial) {
+  const auto dir = test::scratch_dir("rec_folder_gone") / "trial_folder";
+  RecorderConfig rc;
+  rc.output_dir = dir;
+  rc.trial = "gone";
+  rc.layout = paper_initial();
+  rc.flush_interval_ms = 20;
+  Recorder rec(rc);
+  rec.start();
+  HandFrame f;
+  f.device_id = 1;
+  for (int i = 0; i < 5; ++i) {
+    f.frame_id = i;
+    f.timestamp_us = 1000 * i;
+    rec.offer(f, i, true);
+  }
+  std::filesystem::remove_all(dir);
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(10);  // a hang guard only
+  for (int i = 5; !rec.failed() && std::chrono::steady_clock::now() < deadline; ++i) {
+    f.frame_id = i;
+    f.timestamp_us = 1000 * i;
+    rec.offer(f, i, true);
+    std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  }
+  ASSERT_TRUE(rec.failed());
+  const auto st = rec.stop();
+  EXPECT_EQ(st.state, RecorderState::kFailed);
+  EXPECT_NE(st.error.find("LMC_gone.raw.txt was deleted while recording"), std::string::npos) << st.error;
+  // The final sidecar cannot be written into a folder that is gone: said too, not swallowed.
+  EXPECT_NE(st.error.find("cannot write the session sidecar"), std::string::npos) << st.error;
+}
+
+// Writes nowhere and never fails: the recording "file" is fine, only the sidecar can fail.
+class MemorySink final : public ByteSink {
+ public:
+  bool write(std::string_view data) override {
+    bytes_ += data.size();
+    return true;
+  }
+  bool sync() override { return true; }
+  bool close() override { return true; }
+  std::string error() const override { return {}; }
+  std::uint64_t bytes_written() const override { return bytes_; }
+
+ private:
+  std::uint64_t bytes_ = 0;
+};
+
+// Issue #14 (64 KB tmpfs): the raw file was fine but the final sidecar could not be written; it
+// stayed "recording" with 0 frames and nothing said so.
+TEST(Recorder, ASidecarWriteErrorIsReportedEvenAfterAnotherError) {
+  for (const std::string abort_reason : {"", "the Vicon trigger failed"}) {
+    const auto dir = test::scratch_dir("rec_sidecar_fail") / "trial_folder";
+    RecorderConfig rc;
+    rc.output_dir = dir;
+    rc.trial = "side";
+    rc.layout = paper_initial();
+    rc.open_sink = [](const std::filesystem::path&) { return std::make_unique<MemorySink>(); };
+    Recorder rec(rc);
+    rec.start();
+    HandFrame f;
+    f.device_id = 1;
+    rec.offer(f, 1, true);
+    std::filesystem::remove_all(dir);  // the sidecar's temporary file cannot be created now
+    const auto st = rec.stop({}, abort_reason);
+    EXPECT_EQ(st.state, RecorderState::kFailed) << abort_reason;
+    EXPECT_NE(st.error.find("cannot write the session sidecar"), std::string::npos) << st.error;
+    EXPECT_NE(st.error.find("LMC_side.session.json"), std::string::npos) << st.error;
+    EXPECT_NE(st.error.find("still says 'recording'"), std::string::npos) << st.error;
+    if (!abort_reason.empty()) {
+      EXPECT_EQ(st.error.rfind(abort_reason, 0), 0u) << "the first cause stays first: " << st.error;
+    }
+  }
+}
+
 TEST(ClockAlignment, EachDeviceClockIsExtrapolatedToTheViconInstant) {
   HubSnapshot snap;
   DeviceStatus a;

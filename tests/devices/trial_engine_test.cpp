@@ -6,6 +6,8 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <chrono>
 #include <fstream>
 #include <sstream>
 #include <stdexcept>
@@ -22,7 +24,7 @@ namespace trial_engine_test {  // named: test files share unity batches
 using ::testing::ElementsAre;
 using ::testing::HasSubstr;
 
-Layout paper_initial() { return load_layout(test::asset_file("layouts/paper-initial.json")); }
+Layout paper_initial_layout() { return load_layout(test::asset_file("layouts/paper-initial.json")); }
 
 // A hub playing a simulator of `sim_layout` (default: the hub's own) for `duration_s` simulated
 // seconds (0: until stopped) at `speed` (0: simulated time, as fast as the recorder takes it).
@@ -71,7 +73,7 @@ std::vector<TrialPhase> distinct(const std::vector<TrialPhase>& seen) {
 
 TEST(TrialEngine, ACompletedTrialWritesRecordingSidecarAndTruth) {
   const auto dir = test::scratch_dir("trial_engine_completed");
-  SimHub sh(paper_initial(), 2.0);
+  SimHub sh(paper_initial_layout(), 2.0);
   TrialEngine engine(sh.hub, sh.sim, config_for(dir, "T1", 2.0));
   const TrialResult r = engine.run();
 
@@ -107,7 +109,7 @@ TEST(TrialEngine, ACompletedTrialWritesRecordingSidecarAndTruth) {
 
 TEST(TrialEngine, StatusReportsThePhasesInOrder) {
   const auto dir = test::scratch_dir("trial_engine_phases");
-  SimHub sh(paper_initial(), 3.0);
+  SimHub sh(paper_initial_layout(), 3.0);
   TrialEngineConfig c = config_for(dir, "P1", 2.0);
   c.countdown_s = 1.0;
   TrialEngine engine(sh.hub, sh.sim, c);
@@ -134,9 +136,9 @@ TEST(TrialEngine, ASlotThatNeverStreamsAbortsTheTrialAndKeepsTheRows) {
   const auto dir = test::scratch_dir("trial_engine_timeout");
   // The hub expects four controllers; the simulator has only the first three. Real time, so the
   // three stream while the engine waits for the fourth.
-  Layout three = paper_initial();
+  Layout three = paper_initial_layout();
   three.devices.pop_back();
-  SimHub sh(paper_initial(), 0.0, 1.0, three);
+  SimHub sh(paper_initial_layout(), 0.0, 1.0, three);
   TrialEngineConfig c = config_for(dir, "Silent", 5.0);
   c.stream_timeout_s = 0.3;
   TrialEngine engine(sh.hub, sh.sim, c);
@@ -155,7 +157,7 @@ TEST(TrialEngine, ASlotThatNeverStreamsAbortsTheTrialAndKeepsTheRows) {
 
 TEST(TrialEngine, TheStopTokenInterruptsTheTrialAndKeepsItsRows) {
   const auto dir = test::scratch_dir("trial_engine_stop");
-  SimHub sh(paper_initial(), 30.0);
+  SimHub sh(paper_initial_layout(), 30.0);
   TrialEngineConfig c = config_for(dir, "Stopped", 30.0);
   c.stopped_by = "operator (test)";
   TrialEngine engine(sh.hub, sh.sim, c);
@@ -177,7 +179,7 @@ TEST(TrialEngine, TheStopTokenInterruptsTheTrialAndKeepsItsRows) {
 
 TEST(TrialEngine, StoppedWhileWaitingForViconNothingIsRecorded) {
   const auto dir = test::scratch_dir("trial_engine_listen_stop");
-  SimHub sh(paper_initial(), 0.0, 1.0);
+  SimHub sh(paper_initial_layout(), 0.0, 1.0);
   TrialEngineConfig c = config_for(dir, "", 5.0);
   c.vicon_listen = std::make_pair(std::string("127.0.0.1"), std::uint16_t{0});
   TrialEngine engine(sh.hub, sh.sim, c);
@@ -196,6 +198,59 @@ TEST(TrialEngine, StoppedWhileWaitingForViconNothingIsRecorded) {
   EXPECT_TRUE(std::filesystem::is_empty(dir));
 }
 
+// Issue #14, Vicon listen mode: a CaptureStart naming a trial already on disk is refused on its
+// own (the session keeps listening), and another capture's CaptureStop does not end this trial.
+TEST(TrialEngine, ListenModeSkipsATakenNameAndIgnoresAnotherTrialsStop) {
+  const auto dir = test::scratch_dir("trial_engine_listen_names");
+  std::ofstream(dir / "Taken.trc") << "keep me\n";
+  SimHub sh(paper_initial_layout(), 0.0, 1.0);
+  TrialEngineConfig c = config_for(dir, "", 30.0);
+  c.vicon_listen = std::make_pair(std::string("127.0.0.1"), std::uint16_t{0});
+  TrialEngine engine(sh.hub, sh.sim, c);
+  std::stop_source stop;
+  std::unique_ptr<ViconTrigger> vicon;
+  std::vector<std::string> messages;
+  int step = 0;
+  const auto seen = [&](const std::string& fragment) {
+    return std::any_of(messages.begin(), messages.end(), [&](const std::string& m) { return m.find(fragment) != std::string::npos; });
+  };
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(40);  // a hang guard only
+  const std::string waiting = "waiting for CaptureStart on 127.0.0.1:";
+  const TrialResult r = engine.run(stop.get_token(), [&](const TrialSnapshot& s) {
+    for (const auto& m : s.new_messages) messages.push_back(m);
+    for (const auto& n : s.new_notices) {
+      if (vicon || n.rfind(waiting, 0) != 0) continue;
+      ViconTriggerConfig vc;
+      vc.host = "127.0.0.1";
+      vc.port = static_cast<std::uint16_t>(std::stoi(n.substr(waiting.size())));
+      vc.first_packet_id = 700;  // nothing persisted
+      vicon = std::make_unique<ViconTrigger>(vc);
+      EXPECT_TRUE(vicon->send_start("Taken").ok());
+      EXPECT_TRUE(vicon->send_start("Fresh").ok());
+      step = 1;
+    }
+    if (step == 1 && s.phase == TrialPhase::kRecording && s.recording_s > 0.2) {
+      EXPECT_TRUE(vicon->send_stop("Other").ok());
+      step = 2;
+    }
+    if (step == 2 && seen("ignoring CaptureStop for 'Other'")) {
+      EXPECT_TRUE(vicon->send_stop("Fresh").ok());
+      step = 3;
+    }
+    if (std::chrono::steady_clock::now() > deadline) stop.request_stop();
+  });
+  EXPECT_EQ(r.outcome, TrialOutcome::kCompleted) << r.reason;
+  EXPECT_EQ(r.trial, "Fresh");
+  EXPECT_EQ(step, 3);
+  EXPECT_TRUE(seen("ignoring CaptureStart 'Taken': " + (dir / "Taken.trc").string() + " exists")) << ::testing::PrintToString(messages);
+  EXPECT_TRUE(seen("ignoring CaptureStop for 'Other'")) << ::testing::PrintToString(messages);
+  EXPECT_EQ(read_text(dir / "Taken.trc"), "keep me\n");
+  const RecorderSidecar side = read_recorder_sidecar(r.paths.sidecar);
+  EXPECT_EQ(side.status, "completed");
+  EXPECT_EQ(side.vicon_stop_received.at("name"), "Fresh");
+  EXPECT_EQ(side.vicon_trigger_received.at("name"), "Fresh");
+}
+
 TEST(TrialEngine, RefusesToOverwriteAnExistingTrial) {
   const auto dir = test::scratch_dir("trial_engine_refuse");
   // Any one of the trial's three files makes the name taken, a Vicon export too.
@@ -203,7 +258,7 @@ TEST(TrialEngine, RefusesToOverwriteAnExistingTrial) {
     std::filesystem::remove_all(dir);
     std::filesystem::create_directories(dir);
     std::ofstream(dir / file) << "keep me\n";
-    SimHub sh(paper_initial(), 1.0);
+    SimHub sh(paper_initial_layout(), 1.0);
     TrialEngine engine(sh.hub, sh.sim, config_for(dir, "Taken", 1.0));
     const TrialResult r = engine.run();
     EXPECT_EQ(r.outcome, TrialOutcome::kFailed) << file;
@@ -216,7 +271,7 @@ TEST(TrialEngine, RefusesToOverwriteAnExistingTrial) {
     EXPECT_FALSE(sh.hub.running());
   }
   // lmc record --force: the same name is recorded over.
-  SimHub sh(paper_initial(), 1.0);
+  SimHub sh(paper_initial_layout(), 1.0);
   TrialEngineConfig c = config_for(dir, "Taken", 1.0);
   c.allow_overwrite = true;
   const TrialResult r = TrialEngine(sh.hub, sh.sim, c).run();
@@ -226,7 +281,7 @@ TEST(TrialEngine, RefusesToOverwriteAnExistingTrial) {
 
 TEST(TrialEngine, AThrowingCallbackAbortsTheTrialWithItsReasonAndKeepsTheRows) {
   const auto dir = test::scratch_dir("trial_engine_throw");
-  SimHub sh(paper_initial(), 2.0);
+  SimHub sh(paper_initial_layout(), 2.0);
   TrialEngine engine(sh.hub, sh.sim, config_for(dir, "Thrown", 2.0));
   const TrialResult r = engine.run({}, [](const TrialSnapshot& s) {
     if (s.phase == TrialPhase::kRecording) throw std::runtime_error("display gone");
@@ -243,7 +298,7 @@ TEST(TrialEngine, AHubThatWasRunningKeepsRunning) {
   const auto dir = test::scratch_dir("trial_engine_shared_hub");
   // The workbench's hub: real time, forever, already started; the engine times the trial in
   // simulated seconds and stops it on the token at the recording phase.
-  SimHub sh(paper_initial(), 0.0, 1.0);
+  SimHub sh(paper_initial_layout(), 0.0, 1.0);
   sh.hub.start();
   TrialEngine engine(sh.hub, sh.sim, config_for(dir, "Shared", 60.0));
   std::stop_source stop;

@@ -231,6 +231,10 @@ TEST(LayoutTabState, OpeningABadFileNamesTheJsonPathAndChangesNothing) {
   const LayoutDocument before = s.history().head();
   const std::string err = s.open_file(path);
   EXPECT_NE(err.find("/devices/0/pose/x"), std::string::npos) << err;
+  // Path and JSON pointer exactly once (issue #14: "bad.json: at …: bad.json: at …: …").
+  const std::string where = path.string() + ": at /devices/0/pose/x: ";
+  EXPECT_EQ(err.find(where), err.rfind(where)) << err;
+  EXPECT_EQ(err.find("at /devices"), err.rfind("at /devices")) << err;
   EXPECT_EQ(s.history().head(), before);
   EXPECT_FALSE(s.history().can_undo());
   std::filesystem::remove_all(dir);

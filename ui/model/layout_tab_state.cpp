@@ -50,10 +50,9 @@ std::string LayoutTabState::title() const {
 }
 
 namespace {
-std::string error_text(const std::exception& e) {
-  if (const auto* le = dynamic_cast<const Error*>(&e)) return format_error(le->where(), le->what());
-  return e.what();
-}
+// lmc::Error's what() already starts with "file: at /json/path: " (its constructor formats the
+// location in); formatting the location again printed it twice (issue #14).
+std::string error_text(const std::exception& e) { return e.what(); }
 }  // namespace
 
 std::string LayoutTabState::open_file(const std::filesystem::path& path) {

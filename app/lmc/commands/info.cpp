@@ -51,6 +51,7 @@
 #include "core/io/recorder_sidecar.h"
 #include "core/io/text_fields.h"
 #include "core/io/trc.h"
+#include "core/processing/resample.h"
 
 namespace {
 
@@ -184,7 +185,23 @@ void info_recording(const std::string& file, bool as_json, std::ostream& out) {
     t_min = i == 0 ? rec.rows[i].timestamp_us : std::min(t_min, rec.rows[i].timestamp_us);
     t_max = i == 0 ? rec.rows[i].timestamp_us : std::max(t_max, rec.rows[i].timestamp_us);
   }
-  const double duration_s = rec.rows.size() >= 2 ? static_cast<double>(t_max - t_min) * 1e-6 : std::nan("");
+  // In double: timestamps of a hostile file may lie far apart (the reader bounds them to ±2^53 µs).
+  const double duration_s =
+      rec.rows.size() >= 2 ? (static_cast<double>(t_max) - static_cast<double>(t_min)) * 1e-6 : std::nan("");
+  std::vector<std::string> warnings = rec.warnings;
+  {
+    // The resampler's plausibility rule (ResampleOptions): the recorder writes every controller
+    // frame, so far fewer rows than seconds means a timestamp jumped; say so before `lmc process`
+    // refuses the file.
+    const lmc::ResampleOptions limits;
+    const double plausible_s = limits.min_plausible_span_s + limits.max_seconds_per_row * static_cast<double>(rec.rows.size());
+    if (duration_s > plausible_s) {
+      std::ostringstream w;
+      w << "duration " << duration_s << " s is implausible for " << rec.rows.size() << " rows (at most " << plausible_s
+        << " s expected): a timestamp likely jumps; lmc process will refuse this recording";
+      warnings.push_back(w.str());
+    }
+  }
 
   if (as_json) {
     json j;
@@ -217,7 +234,7 @@ void info_recording(const std::string& file, bool as_json, std::ostream& out) {
       }
       j["devices"].push_back(dj);
     }
-    j["warnings"] = rec.warnings;
+    j["warnings"] = warnings;
     out << j.dump(2) << "\n";
     return;
   }
@@ -257,7 +274,7 @@ void info_recording(const std::string& file, bool as_json, std::ostream& out) {
     }
     out << "\n";
   }
-  print_warnings(out, rec.warnings);
+  print_warnings(out, warnings);
 }
 
 void info_trc(const std::string& file, bool as_json, std::ostream& out) {

@@ -309,6 +309,60 @@ TEST(C3d, RejectsMalformedFiles) {
   EXPECT_THROW(parse_c3d(bad_offset, "bad.c3d"), Error);
 }
 
+// Issue #14: a 1 KB file with zero points whose POINT:FRAMES (float) claims 10^8 frames made the
+// reader allocate gigabytes; huge analog counts overflowed int. Both are now refused by size.
+std::vector<std::uint8_t> hostile_file(int points, float frames, float analog_rate) {
+  Bytes x;
+  x.u8(2);
+  x.u8(0x50);
+  x.i16(points);
+  x.i16(0);
+  x.i16(1);
+  x.i16(1);
+  x.i16(0);
+  x.f32(-1.0f);
+  x.i16(3);
+  x.i16(0);
+  x.f32(100.0f);
+  x.pad_to(512);
+  x.u8(1);
+  x.u8(0x50);
+  x.u8(1);
+  x.u8(84);
+  group(x, "POINT", 1);
+  param(x, "USED", 1, 2, {}, le16(points));
+  param(x, "SCALE", 1, 4, {}, lef(-1.0f));
+  param(x, "RATE", 1, 4, {}, lef(100.0f));
+  param(x, "DATA_START", 1, 2, {}, le16(3));
+  param(x, "FRAMES", 1, 4, {}, lef(frames));
+  group(x, "ANALOG", 2);
+  param(x, "USED", 2, 2, {}, le16(analog_rate > 0.0f ? 60000 : 0));
+  param(x, "RATE", 2, 4, {}, lef(analog_rate > 0.0f ? analog_rate : 100.0f));
+  x.u8(0);
+  x.u8(0);
+  x.pad_to(1024);
+  return x.b;
+}
+
+TEST(C3d, RejectsFrameCountsTheFileCannotHold) {
+  const auto no_points = hostile_file(0, 1e8f, 0.0f);
+  ASSERT_EQ(no_points.size(), 1024u);
+  expect_error(no_points, "implausible frame count");
+  expect_error(hostile_file(0, 1e30f, 0.0f), "implausible frame count");
+  expect_error(hostile_file(0, -5.0f, 0.0f), "implausible frame count");
+  // With points, frames × points × bytes per point must fit in the data section.
+  expect_error(hostile_file(1, 1e8f, 0.0f), "data section ends after 0 of 100000000 frames");
+  // A few empty frames in a small file are harmless and still read.
+  const C3dData few = parse_c3d(hostile_file(0, 3.0f, 0.0f), "few.c3d");
+  EXPECT_EQ(few.frame_count(), 3);
+}
+
+TEST(C3d, RejectsAnalogCountsThatWouldOverflow) {
+  // 60000 channels × (3e38 Hz / 100 Hz) samples per frame: far beyond int and the file.
+  expect_error(hostile_file(1, 1.0f, 3e38f), "more analog samples per frame than the file has bytes");
+  expect_error(hostile_file(1, 1.0f, 1e9f), "implausible");
+}
+
 TEST(C3d, SaveAndReadFile) {
   const auto dir = test::scratch_dir("c3d_save");
   const C3dData in = sample_data(2, 3);

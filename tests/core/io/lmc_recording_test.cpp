@@ -23,8 +23,8 @@ using test::same_double;
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
-// A hand frame whose coordinates exercise the formatter: long fractions, negative zero, tiny and
-// huge magnitudes.
+// A hand frame whose coordinates exercise the formatter: long fractions, negative zero, tiny
+// magnitudes and magnitudes just inside the reader's 10 m limit.
 HandFrame make_frame(int device, std::int64_t frame_id, double rate, std::int64_t ts, bool hand, int seed) {
   HandFrame f;
   f.device_id = device;
@@ -38,7 +38,7 @@ HandFrame make_frame(int device, std::int64_t frame_id, double rate, std::int64_
       double v = std::sin(k * 0.731) * 250.0 + 1.0 / (k + 3.0);
       if (k % 41 == 0) v = -0.0;
       if (k % 53 == 0) v = 1e-300 * (k + 1);
-      if (k % 59 == 0) v = -2.5e15 / (k + 1);
+      if (k % 59 == 0) v = -9999.999999999998 / (1.0 + k * 1e-9);  // near the 10 m plausibility limit
       f.points[static_cast<size_t>(i)][a] = hand ? v : kNaN;
     }
   }
@@ -79,7 +79,8 @@ TEST(LmcRecordingRoundTrip, RawWithNoHandRowsFractionalRatesAndEightDevices) {
   rec.kind = RecordingKind::kRaw;
   rec.rows.push_back(make_frame(2, 494, 0.0, 2998371808, false, 1));
   rec.rows.push_back(make_frame(1, 497, 69.6427, 2998394550, true, 2));
-  rec.rows.push_back(make_frame(8, 12, 66.6533, std::numeric_limits<std::int64_t>::max(), true, 3));
+  // The largest timestamp the reader accepts (2^53 µs); beyond it is refused (ImplausibleTimestampIsRefused).
+  rec.rows.push_back(make_frame(8, 12, 66.6533, std::int64_t{1} << 53, true, 3));
   rec.rows.push_back(make_frame(4, -1, 1.0 / 3.0, -5, false, 4));
   const LmcRecording back = round_trip(rec);
   EXPECT_EQ(back.kind, RecordingKind::kRaw);
@@ -210,6 +211,45 @@ TEST(LmcRecordingErrors, PointWithGarbageComponent) {
 TEST(LmcRecordingErrors, DeviceIdOutOfRange) {
   const auto path = io_fixture("raw_device_out_of_range.txt").string();
   expect_error_at([&] { read_lmc_recording(path); }, path, 2, 1, "Device ID 9 is outside 1..8");
+}
+
+// Issue #14: 1e308 passed as a coordinate (and turned fused frames into NaN), inf was reported as
+// "missing (NaN)", an INT64 timestamp overflowed the resampler. Each is refused with its value.
+std::string raw_text_with(const std::string& coordinate, const std::string& timestamp = "1000") {
+  HandFrame f;
+  f.device_id = 1;
+  f.frame_id = 7;
+  f.frame_rate_hz = 60.0;
+  f.timestamp_us = 1000;
+  f.hand_present = true;
+  for (auto& p : f.points) p = Vec3(1.0, 2.0, 3.0);
+  std::string row = format_lmc_row(f, RecordingKind::kRaw);
+  const size_t at = row.find("\t1,2,3\t");
+  row.replace(at, 7, "\t1," + coordinate + ",3\t");
+  row.replace(row.find("\t1000\t"), 6, "\t" + timestamp + "\t");
+  return lmc_recording_header(RecordingKind::kRaw) + format_lmc_row(f, RecordingKind::kRaw) + row;
+}
+
+void expect_recording_error(const std::string& text, const std::string& fragment) {
+  std::istringstream in(text);
+  expect_error_at([&] { parse_lmc_recording(in, "hostile.txt"); }, "hostile.txt", 3, 0, fragment);
+}
+
+TEST(LmcRecordingErrors, ImplausibleCoordinatesAreRefusedWithTheirValue) {
+  expect_recording_error(raw_text_with("1e308"), "point 'Palm Position' y = '1e308' mm is implausible (more than 10 m");
+  expect_recording_error(raw_text_with("-10000.5"), "'-10000.5' mm is implausible");
+  expect_recording_error(raw_text_with("inf"), "point 'Palm Position' y is infinite: 'inf'");
+  expect_recording_error(raw_text_with("-infinity"), "is infinite");
+  // Inside the limit and NaN ("missing") still read.
+  std::istringstream ok(raw_text_with("-9999.5"));
+  EXPECT_EQ(parse_lmc_recording(ok, "ok.txt").rows.size(), 2u);
+}
+
+TEST(LmcRecordingErrors, ImplausibleTimestampIsRefused) {
+  expect_recording_error(raw_text_with("2", "9223372036854775807"), "Time Stamp '9223372036854775807' µs is implausible");
+  expect_recording_error(raw_text_with("2", "-9007199254740993"), "is implausible");
+  std::istringstream ok(raw_text_with("2", "9007199254740992"));
+  EXPECT_EQ(parse_lmc_recording(ok, "ok.txt").rows.size(), 2u);
 }
 
 TEST(LmcRecordingErrors, EmptyFile) {

@@ -117,6 +117,27 @@ TEST(TrcErrors, NonNumericCell) {
   expect_error_at([&] { read_trc(path); }, path, 8, 23, "marker 'Tip' Y is not a number: '22x'");
 }
 
+// Issue #14: infinity was read as a gap and 1e308 as a position; both are refused with the value.
+TEST(TrcErrors, InfiniteOrImplausibleCoordinateIsRefused) {
+  const auto trc_with = [](const std::string& cell, const std::string& units) {
+    return "PathFileType\t3\t(X/Y/Z)\th.trc\n"
+           "DataRate\tCameraRate\tNumFrames\tNumMarkers\tUnits\tOrigDataRate\tOrigDataStartFrame\tOrigNumFrames\n"
+           "100\t100\t2\t1\t" + units + "\t100\t1\t2\n"
+           "Frame#\tTime\tTip\t\t\n"
+           "\t\tX1\tY1\tZ1\n"
+           "1\t0\t1\t2\t3\n"
+           "2\t0.01\t1\t" + cell + "\t3\n";
+  };
+  const auto parse = [](const std::string& text) {
+    std::istringstream in(text);
+    return parse_trc(in, "hostile.trc");
+  };
+  expect_error_at([&] { parse(trc_with("1e308", "mm")); }, "hostile.trc", 7, 0, "marker 'Tip' Y = '1e308' mm is implausible");
+  expect_error_at([&] { parse(trc_with("-200", "m")); }, "hostile.trc", 7, 0, "'-200' m is implausible");
+  expect_error_at([&] { parse(trc_with("inf", "mm")); }, "hostile.trc", 7, 0, "marker 'Tip' Y is infinite: 'inf'");
+  EXPECT_EQ(parse(trc_with("-99999", "mm")).frame_count(), 2);  // inside 100 m
+}
+
 TEST(TrcErrors, NotATrcFileAndEmptyFile) {
   const auto path = io_fixture("raw_non_numeric.txt").string();
   expect_error_at([&] { read_trc(path); }, path, 1, 1, "not a TRC file");

@@ -1,9 +1,12 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <limits>
+#include <sstream>
 
 #include "core/common/error.h"
 #include "core/processing/resample.h"
+#include "core/io/lmc_recording.h"
 
 namespace lmc {
 namespace {
@@ -174,6 +177,51 @@ TEST(Resample, ResampledRecordingRowsAreTheGrid) {
   EXPECT_EQ(grid_from_resampled(empty, &w2).frame_count, 3);
   ASSERT_EQ(w2.size(), 1u);
   EXPECT_NE(w2[0].find("no device saw the hand"), std::string::npos);
+}
+
+// Issue #14: one row whose timestamp jumps by 10^4 s made a 10 s recording ask for a grid of
+// several GB; the resampler refuses it, naming the file and the line of the jump.
+TEST(ResampleLimits, TimestampJumpIsRefusedWithFileAndLine) {
+  LmcRecording rec;
+  for (std::int64_t t = 0; t <= 10'000'000; t += 33'333) rec.rows.push_back(frame_at(1, t));
+  for (const std::int64_t t : {10'000'000'000, 10'000'033'333}) {  // 10^4 s later, hand where it was
+    HandFrame far = frame_at(1, 10'000'000);
+    far.timestamp_us = t;
+    rec.rows.push_back(far);
+  }
+  std::stringstream text;
+  write_lmc_recording(text, rec);
+  const LmcRecording read = parse_lmc_recording(text, "jump.txt");
+  // Header on line 1, so row r is line r + 1: the jump (second-last row) is on line rows.size().
+  const long jump_line = static_cast<long>(read.rows.size());
+  try {
+    resample_recording(read);
+    FAIL() << "a 10^4 s grid was built";
+  } catch (const Error& e) {
+    const std::string what = e.what();
+    EXPECT_EQ(e.where().file, "jump.txt");
+    EXPECT_EQ(e.where().line, jump_line) << what;
+    EXPECT_NE(what.find("jumps 9990"), std::string::npos) << what;
+    EXPECT_NE(what.find("refusing"), std::string::npos) << what;
+  }
+  // The same recording without the jump still resamples.
+  rec.rows.resize(rec.rows.size() - 2);
+  EXPECT_GT(resample_recording(rec).frame_count, 990);
+}
+
+TEST(ResampleLimits, Int64TimestampsAreAnErrorNotOverflow) {
+  for (const std::int64_t extreme : {std::numeric_limits<std::int64_t>::max(), std::numeric_limits<std::int64_t>::min()}) {
+    LmcRecording rec;
+    rec.rows.push_back(frame_at(1, 0));
+    rec.rows.push_back(frame_at(1, 33'000));
+    rec.rows.push_back(frame_at(1, extreme, false));
+    rec.rows.push_back(frame_at(1, 66'000));
+    EXPECT_THROW(resample_recording(rec), Error) << extreme;
+  }
+  // Alternating extremes: each "clock reset" re-bases further; the arithmetic must stay checked.
+  LmcRecording saw;
+  for (int k = 0; k < 200; ++k) saw.rows.push_back(frame_at(1, (k % 2 == 0 ? 1 : -1) * (std::int64_t{1} << 53)));
+  EXPECT_THROW(resample_recording(saw), Error);
 }
 
 }  // namespace
