@@ -3,6 +3,7 @@
 #include <csignal>
 #include <filesystem>
 #include <iostream>
+#include <utility>
 
 #include "ui/app/capture.h"
 #include "ui/app/workbench_shell.h"
@@ -20,7 +21,13 @@ int main(int argc, char** argv) {
   std::vector<std::string> capture_tabs;
   int width = 1280, height = 800;
   app.add_option("--capture", capture_dir, "Render tabs to PNG files in this folder, then exit");
-  app.add_option("--tab", capture_tabs, "With --capture: which tabs (layout, devices, record, review); default all");
+  app.add_option("--tab", capture_tabs,
+                 "With --capture: which tabs (layout, devices, record, review); default all. Otherwise the tab shown first");
+  std::string session, backend = "sim";
+  bool fast = false;
+  app.add_option("--session", session, "Open (resume) this subject session folder in the Record tab");
+  app.add_option("--backend", backend, "With --session: sim or leapc")->check(CLI::IsMember({"sim", "leapc"}));
+  app.add_flag("--fast", fast, "With --session and the simulated rig: simulated time (demos, tests)");
   app.add_option("--size", width, "Window width in pixels")->check(CLI::Range(640, 7680));
   app.add_option("--height", height, "Window height in pixels")->check(CLI::Range(480, 4320));
   CLI11_PARSE(app, argc, argv);
@@ -29,7 +36,13 @@ int main(int argc, char** argv) {
     if (!capture_dir.empty()) {
       return lmc::ui::run_capture(capture_dir, capture_tabs, width, height);
     }
-    return lmc::ui::run_interactive(width, height);
+    lmc::ui::ShellStartup startup;
+    if (!capture_tabs.empty()) startup.tab = capture_tabs.front();
+    if (!session.empty()) {
+      startup.record = lmc::ui::RecordStartup{session, backend, fast};
+      if (startup.tab.empty()) startup.tab = "record";
+    }
+    return lmc::ui::run_interactive(width, height, std::move(startup));
   } catch (const std::exception& e) {
     std::cerr << "lmc-workbench: " << e.what() << "\n";
     return 1;

@@ -4,6 +4,7 @@
 #include <filesystem>
 #include <iostream>
 #include <thread>
+#include <utility>
 
 #include "ui/app/workbench_shell.h"
 #include "ui/platform/gl_window.h"
@@ -11,9 +12,9 @@
 
 namespace lmc::ui {
 
-int run_interactive(int width, int height) {
+int run_interactive(int width, int height, ShellStartup startup) {
   GlWindow window(WindowOptions{width, height, true, "LMC Workbench"});
-  WorkbenchShell shell;
+  WorkbenchShell shell(std::move(startup));
   std::string title;
   while (!shell.quit_requested()) {
     if (window.should_close()) {

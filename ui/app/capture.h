@@ -3,9 +3,11 @@
 #include <string>
 #include <vector>
 
+#include "ui/app/workbench_shell.h"
+
 namespace lmc::ui {
 
-int run_interactive(int width, int height);
+int run_interactive(int width, int height, ShellStartup startup = {});
 // Renders each requested tab (all when empty) in a hidden window to DIR/<tab>.png; returns 0
 // when every PNG was written, 2 for an unknown tab name.
 int run_capture(const std::string& dir, const std::vector<std::string>& tab_ids, int width, int height);

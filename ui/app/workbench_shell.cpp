@@ -3,17 +3,20 @@
 #include <imgui.h>
 
 #include <cstdio>
+#include <utility>
 
 #include "ui/tabs/tab_registry.h"
 
 namespace lmc::ui {
 
-WorkbenchShell::WorkbenchShell() {
+WorkbenchShell::WorkbenchShell(ShellStartup startup) {
+  context_->record_startup() = std::move(startup.record);
   for (const auto& info : tab_registry()) {
     tabs_.push_back(info.make(*this, *context_));
     ids_.push_back(info.id);
   }
   active_id_ = ids_.empty() ? std::string() : ids_.front();
+  if (!startup.tab.empty()) select_tab(startup.tab);
 }
 
 WorkbenchShell::~WorkbenchShell() = default;

@@ -4,17 +4,25 @@
 // the one live rig), and knows nothing about what they draw.
 #include <chrono>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
+#include "ui/model/workbench_context.h"
 #include "ui/model/workbench_context.h"
 #include "ui/tabs/tab.h"
 
 namespace lmc::ui {
 
+// What the command line asks of the shell at start-up.
+struct ShellStartup {
+  std::string tab;  // the tab shown first ("" = the first)
+  std::optional<RecordStartup> record;
+};
+
 class WorkbenchShell final : public StatusSink {
  public:
-  WorkbenchShell();
+  explicit WorkbenchShell(ShellStartup startup = {});
   ~WorkbenchShell() override;
 
   // One frame: update every tab, then draw the shell and the active tab (full viewport).

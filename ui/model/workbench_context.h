@@ -3,10 +3,22 @@
 // builds: the one layout (published by the Layout tab) and the one live rig (the device hub the
 // Devices and Record tabs both drive). Declared before the tabs in the shell, so it outlives them.
 // UI thread only.
+#include <filesystem>
+#include <optional>
+#include <string>
+
 #include "ui/model/current_layout.h"
 #include "ui/model/devices/live_rig.h"
 
 namespace lmc::ui {
+
+// `lmc-workbench --session DIR [--backend B] [--fast]`: the Record tab opens (resumes) this
+// session at start-up.
+struct RecordStartup {
+  std::filesystem::path session;
+  std::string backend = "sim";
+  bool fast = false;
+};
 
 class WorkbenchContext {
  public:
@@ -17,10 +29,13 @@ class WorkbenchContext {
   CurrentLayout& layout() { return layout_; }
   const CurrentLayout& layout() const { return layout_; }
   LiveRig& rig() { return rig_; }
+  // Set by the shell before the tabs are built; the Record tab takes it once.
+  std::optional<RecordStartup>& record_startup() { return record_startup_; }
 
  private:
   CurrentLayout layout_;
   LiveRig rig_;  // after layout_: it reads it until destroyed
+  std::optional<RecordStartup> record_startup_;
 };
 
 }  // namespace lmc::ui

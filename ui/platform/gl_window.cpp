@@ -8,6 +8,7 @@
 #include <backends/imgui_impl_opengl3.h>
 #include <stb_image_write.h>
 
+#include <algorithm>
 #include <cstdlib>
 #include <filesystem>
 #include <stdexcept>
@@ -18,6 +19,39 @@ namespace lmc::ui {
 namespace {
 
 std::string g_last_glfw_error;
+
+// ImGui 1.86 reads key state once per frame (io.KeysDown), so a press and its release between two
+// frames vanish: at 13–16 fps under software rendering a quick Ctrl+Z tap worked 1 time in 7, and
+// the Record tab is driven from the keyboard. A release that arrives in the same frame as its
+// press is therefore held back and delivered at the start of the next frame, after ImGui has seen
+// the key down once. (One window only, so file-level state is enough.)
+struct HeldRelease {
+  GLFWwindow* window;
+  int key, scancode, mods;
+};
+GLFWkeyfun g_imgui_key_callback = nullptr;
+std::vector<int> g_pressed_this_frame;
+std::vector<HeldRelease> g_held_releases;
+
+void on_key(GLFWwindow* window, int key, int scancode, int action, int mods) {
+  const bool pressed_now =
+      std::find(g_pressed_this_frame.begin(), g_pressed_this_frame.end(), key) != g_pressed_this_frame.end();
+  if (action == GLFW_RELEASE && pressed_now) {
+    g_held_releases.push_back({window, key, scancode, mods});
+    return;
+  }
+  if (action == GLFW_PRESS) g_pressed_this_frame.push_back(key);
+  if (g_imgui_key_callback) g_imgui_key_callback(window, key, scancode, action, mods);
+}
+
+// Called before polling: the releases held back last frame reach ImGui now.
+void deliver_held_releases() {
+  std::vector<HeldRelease> held;
+  held.swap(g_held_releases);
+  g_pressed_this_frame.clear();
+  for (const auto& r : held)
+    if (g_imgui_key_callback) g_imgui_key_callback(r.window, r.key, r.scancode, GLFW_RELEASE, r.mods);
+}
 
 void on_glfw_error(int code, const char* description) {
   g_last_glfw_error = "GLFW error " + std::to_string(code) + ": " + (description ? description : "");
@@ -73,10 +107,14 @@ GlWindow::GlWindow(const WindowOptions& options) {
   style.FrameRounding = 3.0f;
   style.TabRounding = 3.0f;
   ImGui_ImplGlfw_InitForOpenGL(window_, true);
+  // After ImGui's backend installed its callbacks: ours runs first and forwards to it.
+  g_imgui_key_callback = glfwSetKeyCallback(window_, on_key);
   ImGui_ImplOpenGL3_Init("#version 330 core");
 }
 
 GlWindow::~GlWindow() {
+  if (window_) glfwSetKeyCallback(window_, g_imgui_key_callback);
+  g_imgui_key_callback = nullptr;
   ImGui_ImplOpenGL3_Shutdown();
   ImGui_ImplGlfw_Shutdown();
   ImGui::DestroyContext();
@@ -89,6 +127,7 @@ void GlWindow::set_should_close(bool close) { glfwSetWindowShouldClose(window_, 
 void GlWindow::set_title(const std::string& title) { glfwSetWindowTitle(window_, title.c_str()); }
 
 void GlWindow::begin_frame() {
+  deliver_held_releases();
   glfwPollEvents();
   ImGui_ImplOpenGL3_NewFrame();
   ImGui_ImplGlfw_NewFrame();

@@ -14,6 +14,7 @@
 
 #include "core/session/session_folder.h"
 #include "ui/model/record/record_session_model.h"
+#include "ui/model/workbench_context.h"
 #include "ui/tabs/record/record_setup_panel.h"
 #include "ui/tabs/record/record_trial_list_panel.h"
 #include "ui/tabs/record/record_trial_panel.h"
@@ -23,9 +24,22 @@ namespace {
 
 class RecordTab final : public Tab {
  public:
-  explicit RecordTab(StatusSink& status) : status_(status) {}
+  RecordTab(StatusSink& status, WorkbenchContext& context) : status_(status) {
+    if (auto& startup = context.record_startup()) {
+      std::snprintf(form_.open_folder, sizeof form_.open_folder, "%s", startup->session.string().c_str());
+      form_.backend = startup->backend == "leapc" ? 1 : 0;
+      form_.fast = startup->fast;
+      open_at_start_ = true;
+      startup.reset();
+    }
+  }
 
   void update() override {
+    if (open_at_start_) {
+      open_at_start_ = false;
+      open();
+      if (!error_.empty()) status_.set_status("Record: " + error_, true);
+    }
     if (const std::string line = model_.poll(); !line.empty()) {
       const bool bad = line.find(": fail") != std::string::npos || line.find("failed") != std::string::npos;
       status_.set_status(line, bad);
@@ -150,10 +164,13 @@ class RecordTab final : public Tab {
   TrialPanelInput panel_;
   std::string error_;
   bool capture_ = false;
+  bool open_at_start_ = false;
 };
 
 }  // namespace
 
-std::unique_ptr<Tab> make_record_tab(StatusSink& status, WorkbenchContext&) { return std::make_unique<RecordTab>(status); }
+std::unique_ptr<Tab> make_record_tab(StatusSink& status, WorkbenchContext& context) {
+  return std::make_unique<RecordTab>(status, context);
+}
 
 }  // namespace lmc::ui
