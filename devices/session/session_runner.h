@@ -56,6 +56,9 @@ class SessionRunner {
   const session::SessionFolder& folder() const { return folder_; }
   const session::Protocol& protocol() const { return protocol_; }
   const std::vector<session::PlannedTrial>& plan() const { return plan_; }
+  // The layout of trial `i`'s block, as the manifest keeps it (fixed after construction, so any
+  // thread may read it while a trial runs).
+  const Layout& layout(int i) const { return layout_for(i); }
 
   // True when trial `i` starts a block whose pre-flight has not passed (or been overridden) yet.
   bool needs_preflight(int i) const;

@@ -10,18 +10,6 @@ namespace {
 constexpr double kStalledMs = 500.0;  // no frame for this long while connected: something is wrong
 }  // namespace
 
-std::array<float, 3> device_colour(int index) {
-  static const std::array<std::array<float, 3>, 8> colours = {{{0.90F, 0.30F, 0.25F},
-                                                               {0.25F, 0.65F, 0.95F},
-                                                               {0.35F, 0.80F, 0.35F},
-                                                               {0.95F, 0.75F, 0.20F},
-                                                               {0.75F, 0.45F, 0.90F},
-                                                               {0.20F, 0.85F, 0.80F},
-                                                               {0.95F, 0.50F, 0.75F},
-                                                               {0.70F, 0.70F, 0.70F}}};
-  return colours[static_cast<size_t>(((index % 8) + 8) % 8)];
-}
-
 DevicesViewModel::DevicesViewModel(LiveRig& rig) : rig_(rig) {}
 
 std::string DevicesViewModel::start(const std::string& backend, const devices::SimConfig& sim) {
@@ -68,19 +56,7 @@ void DevicesViewModel::refresh() {
     // The study saw 11–34 Hz with four devices; below that, suspect USB bandwidth or power.
     r.warn = r.status == "disconnected" || r.status == "stalled" || (s.connected && s.frames_received > 0 && r.rate_hz < 10);
     if (s.slot_index >= 0 && s.connected && s.frames_received > 0 && r.age_ms <= kStalledMs) ++streaming_slots;
-    if (s.slot_index >= 0 && s.hand_present && s.latest && s.connected &&
-        s.slot_index < hub_layout.device_count()) {
-      LiveHand h;
-      h.colour = s.slot_index;
-      h.slot = s.slot;
-      const LayoutDevice& ld = hub_layout.devices[static_cast<size_t>(s.slot_index)];
-      for (int p = 0; p < kNumHandPoints; ++p) {
-        const Vec3& q = s.latest->point(p);
-        h.world[static_cast<size_t>(p)] =
-            (p == kPalmNormal || p == kPalmDirection) ? Vec3(ld.pose.rotation() * q) : ld.to_world(q);
-      }
-      hands_.push_back(h);
-    }
+    if (auto h = live_hand(s, hub_layout)) hands_.push_back(std::move(*h));
     rows_.push_back(std::move(r));
   }
   all_streaming_ = streaming_slots >= hub_layout.device_count() && running_seconds() >= 1.2;

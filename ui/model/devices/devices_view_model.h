@@ -14,6 +14,7 @@
 #include "core/hand/hand_frame.h"
 #include "core/layout/layout.h"
 #include "devices/sim/sim_config.h"
+#include "ui/model/devices/live_hands.h"
 #include "ui/model/devices/live_rig.h"
 
 namespace lmc::ui {
@@ -33,13 +34,6 @@ struct DeviceRow {
   bool warn = false;
 };
 
-// One device's latest hand, realigned into the world frame (pose + offset).
-struct LiveHand {
-  int colour = 0;
-  std::string slot;
-  std::array<Vec3, kNumHandPoints> world{};
-};
-
 // Where the current (or last) test recording is, from the engine's latest status.
 struct RecordingProgress {
   std::string trial;
@@ -49,9 +43,6 @@ struct RecordingProgress {
   std::int64_t frames_written = 0;
   std::int64_t frames_dropped = 0;
 };
-
-// RGB in 0..1, one distinct colour per slot (LMC1 … LMC8).
-std::array<float, 3> device_colour(int index);
 
 class DevicesViewModel {
  public:

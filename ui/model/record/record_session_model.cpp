@@ -188,8 +188,22 @@ std::string RecordSessionModel::redo(int i) {
   return {};
 }
 
+const Layout* RecordSessionModel::current_layout() const {
+  const int i = recording() ? recording_trial_ : current_trial();
+  if (!runner_ || i < 0) return nullptr;
+  return &runner_->layout(i);
+}
+
 std::string RecordSessionModel::poll() {
-  for (auto& s : job_.drain_reports()) live_ = std::move(s);
+  bool fresh = false;
+  for (auto& s : job_.drain_reports()) {
+    live_ = std::move(s);
+    fresh = true;
+  }
+  if (fresh && live_) {
+    const Layout* layout = current_layout();
+    live_hands_ = layout ? ui::live_hands(live_->hub, *layout) : std::vector<LiveHand>{};
+  }
   const JobState js = job_.state();
   if (job_handled_ || !job_finished(js) || !folder_) return {};
   job_handled_ = true;
@@ -223,6 +237,7 @@ std::string RecordSessionModel::poll() {
   }
   recording_trial_ = -1;
   live_.reset();
+  live_hands_.clear();
   refresh_state();
   return line;
 }

@@ -21,6 +21,7 @@
 #include "core/session/session_folder.h"
 #include "devices/record/trial_engine.h"
 #include "devices/session/session_runner.h"
+#include "ui/model/devices/live_hands.h"
 #include "ui/model/jobs/background_job.h"
 
 namespace lmc::ui {
@@ -84,6 +85,10 @@ class RecordSessionModel {
   int recording_trial() const { return recording_trial_; }
   // The latest status of the trial being recorded (phase, countdown, per-device rows).
   const std::optional<devices::TrialSnapshot>& live() const { return live_; }
+  // Each controller's latest hand in the world frame (live_hands.h), while recording.
+  const std::vector<LiveHand>& live_hands() const { return live_hands_; }
+  // The layout of the current (or recording) trial's block; null without a session.
+  const Layout* current_layout() const;
   // The last attempt this run recorded, with its verdict; and which trial it was.
   const std::optional<devices::AttemptResult>& last_attempt() const { return last_attempt_; }
   // Keeps the last attempt despite a fail verdict (the operator's decision, journaled as a note).
@@ -108,6 +113,7 @@ class RecordSessionModel {
   int selected_ = -1;
   int recording_trial_ = -1;
   std::optional<devices::TrialSnapshot> live_;
+  std::vector<LiveHand> live_hands_;
   std::optional<devices::PreflightReport> last_preflight_;
   std::optional<devices::AttemptResult> last_attempt_;
   bool job_handled_ = true;  // the finished job's result was taken by poll()

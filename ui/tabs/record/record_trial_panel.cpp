@@ -6,6 +6,7 @@
 #include <cstdio>
 
 #include "ui/tabs/record/record_colours.h"
+#include "ui/widgets/live_hands_view.h"
 
 namespace lmc::ui {
 namespace {
@@ -118,6 +119,16 @@ void verdict_section(const RecordSessionModel& model, TrialPanelAction& action) 
   }
 }
 
+// The block's controllers where the layout puts them and, while recording, each one's hand.
+void live_view(const RecordSessionModel& model, TrialPanelInput& input) {
+  const Layout* layout = model.current_layout();
+  if (!layout) return;
+  ImGui::Spacing();
+  draw_live_hands_view("record_live", input.camera, *layout, model.live_hands(),
+                       "Layout '" + layout->name + "' in the world frame (mm); while recording, each controller's hand "
+                       "in its colour.");
+}
+
 }  // namespace
 
 TrialPanelAction draw_record_trial_panel(const RecordSessionModel& model, TrialPanelInput& input) {
@@ -177,18 +188,21 @@ TrialPanelAction draw_record_trial_panel(const RecordSessionModel& model, TrialP
                   live->vicon_packets_sent);
       device_strips(live->hub);
     }
+    live_view(model, input);
     return action;
   }
 
   if (model.needs_preflight()) {
     const TrialPanelAction a = preflight_section(model, input);
     verdict_section(model, action);
+    live_view(model, input);
     return a != TrialPanelAction::kNone ? a : action;
   }
   if (!model.busy() && big_button("Start (Space)", ImVec4(0.15F, 0.55F, 0.25F, 1.0F))) action = TrialPanelAction::kStart;
   if (trial.attempts.size() > 0 && trial.status != session::TrialStatus::kAccepted)
     ImGui::TextDisabled("attempt %zu of this trial", trial.attempts.size() + 1);
   verdict_section(model, action);
+  live_view(model, input);
   return action;
 }
 

@@ -7,6 +7,7 @@
 #include <string>
 
 #include "ui/model/record/record_session_model.h"
+#include "ui/scene/orbit_camera.h"
 
 namespace lmc::ui {
 
@@ -14,6 +15,7 @@ enum class TrialPanelAction { kNone, kPreflight, kOverride, kStart, kStop, kAcce
 
 struct TrialPanelInput {
   char override_reason[200] = "";
+  OrbitCamera camera;  // the live view's
 };
 
 TrialPanelAction draw_record_trial_panel(const RecordSessionModel& model, TrialPanelInput& input);

@@ -1,0 +1,78 @@
+#include "ui/widgets/live_hands_view.h"
+
+#include <imgui.h>
+
+#include <algorithm>
+#include <optional>
+
+#include "ui/scene/colour_maps.h"
+#include "ui/scene/scene_items.h"
+
+namespace lmc::ui {
+namespace {
+
+ImU32 slot_colour(int index, float alpha = 1.0F) {
+  const auto c = device_colour(index);
+  return ImGui::ColorConvertFloat4ToU32(ImVec4(c[0], c[1], c[2], alpha));
+}
+
+}  // namespace
+
+void draw_live_hands_view(const char* id, OrbitCamera& camera, const Layout& layout, const std::vector<LiveHand>& hands,
+                          const std::string& caption) {
+  ImDrawList* dl = ImGui::GetWindowDrawList();
+  const ImVec2 origin = ImGui::GetCursorScreenPos();
+  const ImVec2 size = ImGui::GetContentRegionAvail();
+  ImGui::InvisibleButton(id, ImVec2(std::max(size.x, 1.0F), std::max(size.y, 1.0F)));
+  const ImGuiIO& io = ImGui::GetIO();
+  if (ImGui::IsItemActive() && ImGui::IsMouseDragging(ImGuiMouseButton_Left)) camera.orbit(io.MouseDelta.x, io.MouseDelta.y);
+  if (ImGui::IsItemHovered() && io.MouseWheel != 0) {
+    camera.zoom_towards(io.MousePos.x - origin.x, io.MousePos.y - origin.y, size.x, size.y, io.MouseWheel);
+  }
+  dl->AddRectFilled(origin, ImVec2(origin.x + size.x, origin.y + size.y), IM_COL32(24, 26, 30, 255));
+  auto proj = [&](const Eigen::Vector3d& w) -> std::optional<Eigen::Vector2d> {
+    auto p = camera.project(w, size.x, size.y);
+    if (p) *p += Eigen::Vector2d(origin.x, origin.y);
+    return p;
+  };
+  auto line = [&](const Eigen::Vector3d& a, const Eigen::Vector3d& b, ImU32 col, float thickness) {
+    auto pa = proj(a);
+    auto pb = proj(b);
+    if (pa && pb)
+      dl->AddLine(ImVec2(static_cast<float>(pa->x()), static_cast<float>(pa->y())),
+                  ImVec2(static_cast<float>(pb->x()), static_cast<float>(pb->y())), col, thickness);
+  };
+  dl->PushClipRect(origin, ImVec2(origin.x + size.x, origin.y + size.y), true);
+  // The table top (y = 0), 50 mm grid, world axes at the origin.
+  for (int k = -300; k <= 300; k += 50) {
+    const ImU32 col = k == 0 ? IM_COL32(90, 90, 100, 255) : IM_COL32(55, 58, 65, 255);
+    line({static_cast<double>(k), 0, -300}, {static_cast<double>(k), 0, 300}, col, 1.0F);
+    line({-300, 0, static_cast<double>(k)}, {300, 0, static_cast<double>(k)}, col, 1.0F);
+  }
+  line({0, 0, 0}, {60, 0, 0}, IM_COL32(220, 80, 80, 255), 2.0F);
+  line({0, 0, 0}, {0, 60, 0}, IM_COL32(80, 220, 80, 255), 2.0F);
+  line({0, 0, 0}, {0, 0, 60}, IM_COL32(80, 120, 240, 255), 2.0F);
+  // Each controller: its 80 × 30 mm top face where the layout puts it, plus a short view axis.
+  for (size_t i = 0; i < layout.devices.size(); ++i) {
+    const LayoutDevice& d = layout.devices[i];
+    const ImU32 col = slot_colour(static_cast<int>(i));
+    const Eigen::Vector3d c[4] = {d.to_world({-40, 0, -15}), d.to_world({40, 0, -15}), d.to_world({40, 0, 15}),
+                                  d.to_world({-40, 0, 15})};
+    for (int k = 0; k < 4; ++k) line(c[k], c[(k + 1) % 4], col, 2.0F);
+    line(d.to_world({0, 0, 0}), d.to_world({0, 40, 0}), col, 1.0F);
+    if (auto p = proj(d.to_world({0, 0, 25})))
+      dl->AddText(ImVec2(static_cast<float>(p->x()) - 14, static_cast<float>(p->y())), col, d.slot.c_str());
+  }
+  // Every device's hand in the world frame: where the hands disagree, a device is misplaced.
+  for (const auto& h : hands) {
+    const ImU32 col = slot_colour(h.colour);
+    for (const BoneSpec& b : hand_bones())
+      line(h.world[static_cast<size_t>(b.from)], h.world[static_cast<size_t>(b.to)], col, 2.0F);
+    if (auto p = proj(h.world[kPalm]))
+      dl->AddCircleFilled(ImVec2(static_cast<float>(p->x()), static_cast<float>(p->y())), 4.0F, col);
+  }
+  dl->PopClipRect();
+  dl->AddText(ImVec2(origin.x + 8, origin.y + 6), IM_COL32(200, 200, 210, 255), caption.c_str());
+}
+
+}  // namespace lmc::ui

@@ -1,0 +1,19 @@
+#pragma once
+// A live 3-D view of the rig in the world frame: the table grid, the world axes, every
+// controller's top face where the layout puts it, and each controller's latest hand in its slot's
+// colour. Drag to orbit, wheel to zoom. Shared by the Devices and Record tabs; it only draws what
+// it is given (the hands come from live_hands(), ui/model/devices/live_hands.h).
+#include <string>
+#include <vector>
+
+#include "core/layout/layout.h"
+#include "ui/model/devices/live_hands.h"
+#include "ui/scene/orbit_camera.h"
+
+namespace lmc::ui {
+
+// Fills the remaining content region. `id` must be unique in the window.
+void draw_live_hands_view(const char* id, OrbitCamera& camera, const Layout& layout, const std::vector<LiveHand>& hands,
+                          const std::string& caption);
+
+}  // namespace lmc::ui
