@@ -93,6 +93,24 @@ TEST(StatsIcc, TwoWayRandomIntervalFollowsSatterthwaite) {
   }
 }
 
+TEST(StatsIcc, IntervalsMatchTheRPsychPackageOnTheSameTable) {
+  // psych::ICC on Shrout & Fleiss's table prints these bounds (lower to 3 decimals, upper to 2):
+  // an independent implementation of the same S&F / McGraw & Wong formulas.
+  const IccResult r = icc(shrout_fleiss_table());
+  EXPECT_NEAR(r.icc1_1.ci.low, -0.133, 5e-4);
+  EXPECT_NEAR(r.icc1_1.ci.high, 0.72, 5e-3);
+  EXPECT_NEAR(r.icc2_1.ci.low, 0.019, 5e-4);
+  EXPECT_NEAR(r.icc2_1.ci.high, 0.76, 5e-3);
+  EXPECT_NEAR(r.icc3_1.ci.low, 0.342, 5e-4);
+  EXPECT_NEAR(r.icc3_1.ci.high, 0.95, 5e-3);
+  EXPECT_NEAR(r.icc1_k.ci.low, -0.884, 5e-4);
+  EXPECT_NEAR(r.icc1_k.ci.high, 0.91, 5e-3);
+  EXPECT_NEAR(r.icc2_k.ci.low, 0.071, 5e-4);
+  EXPECT_NEAR(r.icc2_k.ci.high, 0.93, 5e-3);
+  EXPECT_NEAR(r.icc3_k.ci.low, 0.676, 5e-4);
+  EXPECT_NEAR(r.icc3_k.ci.high, 0.99, 5e-3);
+}
+
 TEST(StatsIcc, HandComputedAgreementVersusConsistency) {
   // Rater 2 reads exactly 1 more than rater 1: perfect consistency, imperfect absolute agreement.
   // BMS = 8, JMS = 1.5, EMS = 0, WMS = 0.5 → ICC(3,1) = 1, ICC(2,1) = 8/9, ICC(1,1) = 7.5/8.5.
