@@ -27,7 +27,9 @@ double spearman_brown(double single, double k) { return k * single / (1.0 + (k -
 void exact_f_interval(double f0, double df1, double df2, double k, IccEstimate& single, IccEstimate& average) {
   const double fl = f0 / f_quantile(0.975, df1, df2);
   const double fu = f0 * f_quantile(0.975, df2, df1);
-  single.ci = {(fl - 1.0) / (fl + k - 1.0), (fu - 1.0) / (fu + k - 1.0)};
+  // F0 is +inf when the error mean square is 0 (perfect consistency): the bound's limit is then 1.
+  const auto single_bound = [k](double f) { return std::isinf(f) ? 1.0 : (f - 1.0) / (f + k - 1.0); };
+  single.ci = {single_bound(fl), single_bound(fu)};
   average.ci = {1.0 - 1.0 / fl, 1.0 - 1.0 / fu};
   for (IccEstimate* e : {&single, &average}) {
     e->f_value = f0;
@@ -100,16 +102,19 @@ IccResult icc(const Eigen::MatrixXd& ratings) {
   // ICC(2,·): S&F's approximate interval, Satterthwaite's df v built from the single-measure estimate.
   {
     const double rho = r.icc2_1.value;
-    const double fj = jms / ems;
-    const double a = k * rho;
-    const double b = n * (1.0 + (k - 1.0) * rho) - k * rho;
-    const double v = df_error * (a * fj + b) * (a * fj + b) / (df_rows * a * a * fj * fj + b * b);
+    // McGraw & Wong's form of Satterthwaite's df (the same v as S&F's): it stays finite when
+    // EMS = 0, where v becomes JMS's own df.
+    const double a = k * rho / (n * (1.0 - rho));
+    const double b = 1.0 + k * rho * (n - 1.0) / (n * (1.0 - rho));
+    const double v = (a * jms + b * ems) * (a * jms + b * ems) /
+                     ((a * jms) * (a * jms) / df_cols + (b * ems) * (b * ems) / df_error);
     const double f_star = f_quantile(0.975, df_rows, v);
     const double f_star2 = f_quantile(0.975, v, df_rows);
     const double low = n * (bms - f_star * ems) / (f_star * (k * jms + (k * n - k - n) * ems) + n * bms);
     const double high = n * (f_star2 * bms - ems) / (k * jms + (k * n - k - n) * ems + n * f_star2 * bms);
-    r.icc2_1.ci = {low, high};
-    r.icc2_k.ci = {spearman_brown(low, k), spearman_brown(high, k)};
+    // Perfect agreement (ρ = 1: EMS = JMS = 0) leaves v undefined; the interval's limit is [1, 1].
+    r.icc2_1.ci = rho == 1.0 ? Interval{1.0, 1.0} : Interval{low, high};
+    r.icc2_k.ci = {spearman_brown(r.icc2_1.ci.low, k), spearman_brown(r.icc2_1.ci.high, k)};
     for (IccEstimate* e : {&r.icc2_1, &r.icc2_k}) {
       e->f_value = bms / ems;
       e->f_df1 = df_rows;

@@ -126,6 +126,27 @@ TEST(StatsIcc, HandComputedAgreementVersusConsistency) {
   EXPECT_NEAR(r.icc2_1.value, 8.0 / 9.0, 1e-12);
   EXPECT_NEAR(r.icc1_1.value, 7.5 / 8.5, 1e-12);
   EXPECT_NEAR(r.icc2_k.value, 8.0 / 8.5, 1e-12);
+  // EMS = 0: consistency is certain, its interval degenerates to [1, 1]; absolute agreement keeps a
+  // finite interval (Satterthwaite's df falls back to JMS's k − 1 = 1).
+  EXPECT_DOUBLE_EQ(r.icc3_1.ci.low, 1.0);
+  EXPECT_DOUBLE_EQ(r.icc3_1.ci.high, 1.0);
+  EXPECT_DOUBLE_EQ(r.icc3_k.ci.low, 1.0);
+  const double fs = f975(2.0, 1.0);  // F*(n − 1, v = 1)
+  EXPECT_NEAR(r.icc2_1.ci.low, 3.0 * 8.0 / (fs * 2.0 * 1.5 + 3.0 * 8.0), 1e-9);
+  EXPECT_LT(r.icc2_1.ci.low, r.icc2_1.value);
+  EXPECT_GT(r.icc2_1.ci.high, r.icc2_1.value);
+}
+
+TEST(StatsIcc, PerfectAgreementHasDegenerateIntervalsNotNaN) {
+  Eigen::MatrixXd x(3, 2);
+  x << 1, 1, 4, 4, 6, 6;
+  const IccResult r = icc(x);
+  ASSERT_TRUE(r.ok()) << r.reason;
+  for (const IccEstimate* e : {&r.icc1_1, &r.icc2_1, &r.icc3_1, &r.icc1_k, &r.icc2_k, &r.icc3_k}) {
+    EXPECT_DOUBLE_EQ(e->value, 1.0) << e->form;
+    EXPECT_DOUBLE_EQ(e->ci.low, 1.0) << e->form;
+    EXPECT_DOUBLE_EQ(e->ci.high, 1.0) << e->form;
+  }
 }
 
 TEST(StatsIcc, RowsWithMissingValuesAreDroppedAndCounted) {
