@@ -38,6 +38,13 @@ BlandAltmanResult bland_altman(std::span<const double> a, std::span<const double
   return r;
 }
 
+std::vector<BlandAltmanPoint> bland_altman_points(std::span<const double> a, std::span<const double> b) {
+  const PairedValues p = complete_pairs(a, b);
+  std::vector<BlandAltmanPoint> points(p.a.size());
+  for (std::size_t i = 0; i < points.size(); ++i) points[i] = {(p.a[i] + p.b[i]) / 2.0, p.a[i] - p.b[i]};
+  return points;
+}
+
 void to_json(nlohmann::json& j, const BlandAltmanResult& r) {
   j = nlohmann::json{{"method", r.method},
                      {"n_used", r.n_used},

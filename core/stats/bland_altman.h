@@ -15,6 +15,7 @@
 #include <nlohmann/json_fwd.hpp>
 #include <span>
 #include <string>
+#include <vector>
 
 #include "core/stats/interval.h"
 
@@ -41,6 +42,16 @@ struct BlandAltmanResult {
 
 // Throws lmc::Error when a and b differ in length. Fewer than 2 complete pairs: NaN and a reason.
 BlandAltmanResult bland_altman(std::span<const double> a, std::span<const double> b);
+
+// One point of a Bland–Altman plot: x = (A + B)/2, y = A − B.
+struct BlandAltmanPoint {
+  double mean = kNaN;
+  double difference = kNaN;
+};
+
+// The plot's points for the complete pairs, in input order (incomplete pairs are left out, as in
+// bland_altman()). Throws lmc::Error when a and b differ in length.
+std::vector<BlandAltmanPoint> bland_altman_points(std::span<const double> a, std::span<const double> b);
 
 void to_json(nlohmann::json& j, const BlandAltmanResult& r);
 

@@ -43,6 +43,17 @@ TEST(StatsBlandAltman, HandComputedBiasLimitsAndIntervals) {
   EXPECT_TRUE(std::isnan(r.within_subject_sd));  // not part of the simple form
 }
 
+TEST(StatsBlandAltman, PlotPointsAreMeanAndDifferenceOfCompletePairs) {
+  const std::vector<double> a = {11, kMissing, 14};
+  const std::vector<double> b = {10, 10, 10};
+  const std::vector<BlandAltmanPoint> p = bland_altman_points(a, b);
+  ASSERT_EQ(p.size(), 2u);
+  EXPECT_DOUBLE_EQ(p[0].mean, 10.5);
+  EXPECT_DOUBLE_EQ(p[0].difference, 1.0);
+  EXPECT_DOUBLE_EQ(p[1].mean, 12.0);
+  EXPECT_DOUBLE_EQ(p[1].difference, 4.0);
+}
+
 TEST(StatsBlandAltman, FewerThanTwoPairsIsNaNWithAReason) {
   const std::vector<double> a = {1.0, kMissing};
   const std::vector<double> b = {2.0, 2.0};
