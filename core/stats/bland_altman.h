@@ -22,21 +22,23 @@
 namespace lmc::stats {
 
 struct BlandAltmanResult {
-  std::string method;          // the form and the interval method used (also exported)
-  std::size_t n_used = 0;      // complete pairs (observations) used
-  std::size_t n_skipped = 0;   // pairs with a missing value on either side
-  std::size_t n_subjects = 0;  // subjects with at least one complete pair (= n_used in the simple form)
-  double bias = kNaN;           // mean of A − B
-  double sd_difference = kNaN;  // SD of A − B (repeated form: sqrt(between² + within²))
-  double loa_low = kNaN;        // bias − z·sd_difference
-  double loa_high = kNaN;       // bias + z·sd_difference
-  Interval bias_ci;             // 95 %
-  Interval loa_low_ci;          // 95 %
-  Interval loa_high_ci;         // 95 %
-  double within_subject_sd = kNaN;   // repeated form only: sqrt(s²_dw)
-  double between_subject_sd = kNaN;  // repeated form only: sqrt(s²_db), 0 when its estimate is negative
-  double loa_multiplier = kNaN;      // z_{0.975}
-  std::string reason;  // why the numbers are NaN; empty when they are valid
+  std::string method;         // the form and the interval method used (also exported)
+  std::size_t n_used = 0;     // complete pairs (observations) used
+  std::size_t n_skipped = 0;  // pairs with a missing value on either side
+  // subjects with at least one complete pair (= n_used in the simple form)
+  std::size_t n_subjects = 0;
+  double bias = kNaN;               // mean of A − B
+  double sd_difference = kNaN;      // SD of A − B (repeated form: sqrt(between² + within²))
+  double loa_low = kNaN;            // bias − z·sd_difference
+  double loa_high = kNaN;           // bias + z·sd_difference
+  Interval bias_ci;                 // 95 %
+  Interval loa_low_ci;              // 95 %
+  Interval loa_high_ci;             // 95 %
+  double within_subject_sd = kNaN;  // repeated form only: sqrt(s²_dw)
+  // repeated form only: sqrt(s²_db), 0 when its estimate (MS_b − MS_w)/c is negative
+  double between_subject_sd = kNaN;
+  double loa_multiplier = kNaN;  // z_{0.975}
+  std::string reason;            // why the numbers are NaN; empty when they are valid
   bool ok() const { return reason.empty(); }
 };
 
@@ -51,7 +53,8 @@ struct BlandAltmanPoint {
 
 // The plot's points for the complete pairs, in input order (incomplete pairs are left out, as in
 // bland_altman()). Throws lmc::Error when a and b differ in length.
-std::vector<BlandAltmanPoint> bland_altman_points(std::span<const double> a, std::span<const double> b);
+std::vector<BlandAltmanPoint> bland_altman_points(std::span<const double> a,
+                                                  std::span<const double> b);
 
 void to_json(nlohmann::json& j, const BlandAltmanResult& r);
 

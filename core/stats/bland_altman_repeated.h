@@ -21,8 +21,8 @@
 //           widened, if needed, to contain the truncated estimate.
 //
 // Reduction to the simple form: if every subject has the same number of repeats m and the repeats
-// of a subject are identical, then s²_dw = 0, c = m and s²_db = the variance of the subject means, so
-// bias, SD, the limits and the bias CI equal bland_altman() on one difference per subject; the
+// of a subject are identical, then s²_dw = 0, c = m and s²_db = the variance of the subject means,
+// so bias, SD, the limits and the bias CI equal bland_altman() on one difference per subject; the
 // limit CIs then come from the χ²(n − 1) interval of s² (MOVER) instead of sqrt(3 s²/n). With one
 // observation per subject (all m_i = 1) everything except the limit CIs equals bland_altman() too.
 #include <nlohmann/json_fwd.hpp>

@@ -4,6 +4,8 @@
 
 namespace lmc::stats {
 
-void to_json(nlohmann::json& j, const Interval& ci) { j = nlohmann::json{{"low", ci.low}, {"high", ci.high}}; }
+void to_json(nlohmann::json& j, const Interval& ci) {
+  j = nlohmann::json{{"low", ci.low}, {"high", ci.high}};
+}
 
 }  // namespace lmc::stats

@@ -9,7 +9,9 @@
 namespace lmc::stats {
 
 // True for a value that can enter a statistic (finite); NaN marks missing data throughout core/.
-inline bool is_usable(double v) { return std::isfinite(v); }
+inline bool is_usable(double v) {
+  return std::isfinite(v);
+}
 
 struct PairedValues {
   std::vector<double> a;  // the complete pairs, in input order

@@ -12,7 +12,8 @@
 namespace lmc::stats {
 
 PearsonResult pearson(std::span<const double> a, std::span<const double> b, double level) {
-  if (!(level > 0.0 && level < 1.0)) throw Error("confidence level must be in (0, 1), got " + std::to_string(level));
+  if (!(level > 0.0 && level < 1.0))
+    throw Error("confidence level must be in (0, 1), got " + std::to_string(level));
   const PairedValues p = complete_pairs(a, b);
   PearsonResult out;
   out.level = level;
@@ -20,7 +21,8 @@ PearsonResult pearson(std::span<const double> a, std::span<const double> b, doub
   out.n_skipped = p.n_skipped;
   const std::size_t n = p.a.size();
   if (n < 3) {
-    out.reason = "fewer than 3 complete pairs (" + std::to_string(n) + "): r is undefined or trivially ±1";
+    out.reason =
+        "fewer than 3 complete pairs (" + std::to_string(n) + "): r is undefined or trivially ±1";
     return out;
   }
   const double ma = mean_of(p.a), mb = mean_of(p.b);
@@ -47,8 +49,12 @@ PearsonResult pearson(std::span<const double> a, std::span<const double> b, doub
 }
 
 void to_json(nlohmann::json& j, const PearsonResult& r) {
-  j = nlohmann::json{{"n_used", r.n_used}, {"n_skipped", r.n_skipped}, {"r", r.r},
-                     {"ci", r.ci},         {"level", r.level},         {"reason", r.reason},
+  j = nlohmann::json{{"n_used", r.n_used},
+                     {"n_skipped", r.n_skipped},
+                     {"r", r.r},
+                     {"ci", r.ci},
+                     {"level", r.level},
+                     {"reason", r.reason},
                      {"method", "Pearson r; CI by Fisher z transform"}};
 }
 

@@ -16,7 +16,7 @@ struct PearsonResult {
   std::size_t n_used = 0;
   std::size_t n_skipped = 0;
   double r = kNaN;
-  Interval ci;         // 95 % unless another level was asked for
+  Interval ci;  // 95 % unless another level was asked for
   double level = 0.95;
   std::string reason;  // why r or its interval is NaN; empty when both are valid
   bool ok() const { return reason.empty(); }

@@ -12,8 +12,12 @@ namespace lmc::stats {
 namespace {
 
 // Checked here so Boost's domain errors (which throw) are never reached.
-bool valid_p(double p) { return std::isfinite(p) && p > 0.0 && p < 1.0; }
-bool valid_df(double df) { return std::isfinite(df) && df > 0.0; }
+bool valid_p(double p) {
+  return std::isfinite(p) && p > 0.0 && p < 1.0;
+}
+bool valid_df(double df) {
+  return std::isfinite(df) && df > 0.0;
+}
 
 }  // namespace
 
@@ -41,7 +45,8 @@ double f_upper_tail(double f, double df1, double df2) {
   if (std::isnan(f) || !valid_df(df1) || !valid_df(df2)) return kNaN;
   if (f <= 0.0) return 1.0;
   if (std::isinf(f)) return 0.0;
-  return boost::math::cdf(boost::math::complement(boost::math::fisher_f_distribution<double>(df1, df2), f));
+  return boost::math::cdf(
+      boost::math::complement(boost::math::fisher_f_distribution<double>(df1, df2), f));
 }
 
 }  // namespace lmc::stats

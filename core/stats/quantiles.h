@@ -9,10 +9,10 @@
 
 namespace lmc::stats {
 
-double normal_quantile(double p);                          // standard normal
-double t_quantile(double p, double df);                    // Student's t
-double f_quantile(double p, double df1, double df2);       // Fisher's F(df1, df2)
-double chi_squared_quantile(double p, double df);          // χ²(df)
-double f_upper_tail(double f, double df1, double df2);     // P(F(df1, df2) > f), for F-test p values
+double normal_quantile(double p);                       // standard normal
+double t_quantile(double p, double df);                 // Student's t
+double f_quantile(double p, double df1, double df2);    // Fisher's F(df1, df2)
+double chi_squared_quantile(double p, double df);       // χ²(df)
+double f_upper_tail(double f, double df1, double df2);  // P(F(df1, df2) > f), for F-test p values
 
 }  // namespace lmc::stats

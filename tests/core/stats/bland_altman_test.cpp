@@ -13,8 +13,12 @@ namespace lmc::stats::bland_altman_test {
 
 constexpr double kMissing = std::numeric_limits<double>::quiet_NaN();
 
-double z975() { return boost::math::quantile(boost::math::normal_distribution<double>(), 0.975); }
-double t975(double df) { return boost::math::quantile(boost::math::students_t_distribution<double>(df), 0.975); }
+double z975() {
+  return boost::math::quantile(boost::math::normal_distribution<double>(), 0.975);
+}
+double t975(double df) {
+  return boost::math::quantile(boost::math::students_t_distribution<double>(df), 0.975);
+}
 
 TEST(StatsBlandAltman, HandComputedBiasLimitsAndIntervals) {
   // Differences A − B = 1, 3, 5, 7 (plus two incomplete pairs): bias 4, s² = (9+1+1+9)/3 = 20/3.

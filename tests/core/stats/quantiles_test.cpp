@@ -6,7 +6,8 @@
 
 namespace lmc::stats::quantiles_test {
 
-// Values from printed tables (to the digits shown): the wrappers must hand Boost the right arguments.
+// Values from printed tables (to the digits shown): the wrappers must hand Boost the right
+// arguments.
 TEST(StatsQuantiles, MatchPrintedTables) {
   EXPECT_NEAR(normal_quantile(0.975), 1.959964, 1e-6);
   EXPECT_NEAR(t_quantile(0.975, 9.0), 2.262157, 1e-6);
