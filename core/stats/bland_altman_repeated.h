@@ -10,7 +10,7 @@
 //   SD    = sqrt(s²_db + s²_dw),  bias = mean of all N differences,  limits = bias ± z_{0.975}·SD.
 // c is the average number of observations per subject corrected for unequal m_i; c ≥ 1 always.
 //
-// Confidence intervals (approximate; B&A 2007 give none):
+// Confidence intervals (approximate):
 //   bias:   bias ± t_{0.975, n−1} · sqrt(s²_db Σ m_i²/N² + s²_dw/N)   (variance of the grand mean
 //           under the random-subject model, subjects as the unit of replication)
 //   limits: MOVER, the method of variance estimates recovery (Zou 2013, Stat Methods Med Res
@@ -19,6 +19,10 @@
 //           into an interval [L, U] for SD², and again combines the bias interval with
 //           [z·√L, z·√U] for each limit. When s²_db is truncated at 0 the variance interval is
 //           widened, if needed, to contain the truncated estimate.
+//           Zou writes SD² as (variance of the subject means) + (1 − 1/m_h)·MS_within with m_h the
+//           harmonic mean of m_i; with equal m_i that is the same sum and the same interval. With
+//           unequal m_i this module keeps B&A 2007's ANOVA estimate (c in place of m_h) so the
+//           interval is built around the SD it reports. The bias uses t(n − 1), not z.
 //
 // Reduction to the simple form: if every subject has the same number of repeats m and the repeats
 // of a subject are identical, then s²_dw = 0, c = m and s²_db = the variance of the subject means,
