@@ -1,0 +1,122 @@
+#include "core/stats/bland_altman_repeated.h"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <vector>
+
+#include "core/stats/paired_values.h"
+#include "core/stats/quantiles.h"
+
+namespace lmc::stats {
+namespace {
+
+// A scaled mean square coef·MS with df degrees of freedom and its exact 95 % χ² interval.
+struct VarianceTerm {
+  double value = 0.0;
+  double low = 0.0;
+  double high = 0.0;
+};
+
+VarianceTerm chi_squared_term(double coef, double ms, double df) {
+  VarianceTerm t;
+  t.value = coef * ms;
+  if (df <= 0.0 || t.value == 0.0) {
+    t.low = t.high = t.value;
+    return t;
+  }
+  t.low = t.value * df / chi_squared_quantile(0.975, df);
+  t.high = t.value * df / chi_squared_quantile(0.025, df);
+  return t;
+}
+
+}  // namespace
+
+BlandAltmanResult bland_altman_repeated(std::span<const PairedObservation> observations) {
+  BlandAltmanResult r;
+  r.method =
+      "Bland & Altman 2007 repeated measures (true value varies); bias CI t(n-1) on variance "
+      "components; "
+      "limit CIs by MOVER (Zou 2013)";
+  r.loa_multiplier = normal_quantile(0.975);
+
+  // Differences per subject; groups are in order of first appearance, the map only finds them.
+  std::map<std::string, std::size_t> index;
+  std::vector<std::vector<double>> groups;
+  for (const PairedObservation& o : observations) {
+    if (!is_usable(o.a) || !is_usable(o.b)) {
+      ++r.n_skipped;
+      continue;
+    }
+    const auto [it, inserted] = index.emplace(o.subject, groups.size());
+    if (inserted) groups.emplace_back();
+    groups[it->second].push_back(o.a - o.b);
+    ++r.n_used;
+  }
+  r.n_subjects = groups.size();
+  if (r.n_used < 2 || groups.size() < 2) {
+    r.reason = "needs at least 2 subjects with complete pairs (" + std::to_string(groups.size()) +
+               " subjects, " + std::to_string(r.n_used) + " pairs usable)";
+    return r;
+  }
+
+  const auto n = static_cast<double>(groups.size());
+  const auto N = static_cast<double>(r.n_used);
+  double sum = 0.0, sum_m2 = 0.0;
+  for (const auto& g : groups) {
+    for (const double d : g) sum += d;
+    sum_m2 += static_cast<double>(g.size()) * static_cast<double>(g.size());
+  }
+  r.bias = sum / N;
+  double ss_between = 0.0, ss_within = 0.0;
+  for (const auto& g : groups) {
+    double gsum = 0.0;
+    for (const double d : g) gsum += d;
+    const double gmean = gsum / static_cast<double>(g.size());
+    ss_between += static_cast<double>(g.size()) * (gmean - r.bias) * (gmean - r.bias);
+    for (const double d : g) ss_within += (d - gmean) * (d - gmean);
+  }
+  const double df_between = n - 1.0;
+  const double df_within = N - n;  // 0 when every subject has one observation
+  const double ms_between = ss_between / df_between;
+  const double ms_within = df_within > 0.0 ? ss_within / df_within : 0.0;
+  const double c = (N * N - sum_m2) / (df_between * N);
+
+  const double var_within = ms_within;
+  const double var_between = std::max(0.0, (ms_between - ms_within) / c);
+  const double var_total = var_between + var_within;
+  r.within_subject_sd = std::sqrt(var_within);
+  r.between_subject_sd = std::sqrt(var_between);
+  r.sd_difference = std::sqrt(var_total);
+  r.loa_low = r.bias - r.loa_multiplier * r.sd_difference;
+  r.loa_high = r.bias + r.loa_multiplier * r.sd_difference;
+
+  const double t = t_quantile(0.975, df_between);
+  const double se_bias = std::sqrt(var_between * sum_m2 / (N * N) + var_within / N);
+  r.bias_ci = {r.bias - t * se_bias, r.bias + t * se_bias};
+
+  // MOVER for SD² = MS_between/c + (1 − 1/c)·MS_within (the untruncated estimate).
+  const VarianceTerm tb = chi_squared_term(1.0 / c, ms_between, df_between);
+  const VarianceTerm tw = chi_squared_term(1.0 - 1.0 / c, ms_within, df_within);
+  const double var_sum = tb.value + tw.value;
+  double var_low = var_sum - std::hypot(tb.value - tb.low, tw.value - tw.low);
+  double var_high = var_sum + std::hypot(tb.high - tb.value, tw.high - tw.value);
+  var_low = std::max(0.0, std::min(var_low, var_total));
+  var_high = std::max(var_high, var_total);
+
+  const double z = r.loa_multiplier;
+  const double zs = z * r.sd_difference;
+  const double zs_low = z * std::sqrt(var_low);
+  const double zs_high = z * std::sqrt(var_high);
+  const double bias_down = r.bias - r.bias_ci.low;
+  const double bias_up = r.bias_ci.high - r.bias;
+  // Upper limit = bias + zσ: both parts move it the same way.
+  r.loa_high_ci = {r.loa_high - std::hypot(bias_down, zs - zs_low),
+                   r.loa_high + std::hypot(bias_up, zs_high - zs)};
+  // Lower limit = bias − zσ: a larger σ moves it down.
+  r.loa_low_ci = {r.loa_low - std::hypot(bias_down, zs_high - zs),
+                  r.loa_low + std::hypot(bias_up, zs - zs_low)};
+  return r;
+}
+
+}  // namespace lmc::stats

@@ -1,0 +1,19 @@
+#pragma once
+// A two-sided confidence interval. Both ends are NaN when it cannot be computed (too few values,
+// zero variance where the method divides by it); the result that holds it says why in `reason`.
+#include <limits>
+#include <nlohmann/json_fwd.hpp>
+
+namespace lmc::stats {
+
+inline constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+
+struct Interval {
+  double low = kNaN;
+  double high = kNaN;
+};
+
+// {"low": …, "high": …}; NaN is written as JSON null (nlohmann's rule), never as 0.
+void to_json(nlohmann::json& j, const Interval& ci);
+
+}  // namespace lmc::stats
