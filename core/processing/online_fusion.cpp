@@ -41,13 +41,39 @@ void OnlineFusion::reset() {
     s.labels.fill(-1);
     s.t_s = 0.0;
     s.ever = false;
+    s.hand = false;
+    s.z.fill(kNaN);
+    s.var.fill(kNaN);
   }
   kf_.fill(CvKalman{});
+  prior_.fill(CvKalman{});
   state_t_.fill(0.0);
   meas_t_.fill(0.0);
   live_.fill(false);
+  started_.fill(false);
   latest_s_ = 0.0;
   any_frame_ = false;
+}
+
+bool OnlineFusion::combine(int lane, double t, double& z, double& r) const {
+  double wsum = 0.0, zsum = 0.0;
+  for (const Slot& s : slots_) {
+    const double y = s.z[static_cast<size_t>(lane)];
+    if (!s.hand || !std::isfinite(y)) continue;
+    const double age = t > s.t_s ? t - s.t_s : 0.0;
+    if (age > kStaleAfterS + kTimeEpsS) continue;
+    // An older sample says less about now: the model's process noise over `age` widens it. It is
+    // not carried forward with the filter's velocity: a measurement that depends on the state
+    // feeds the velocity back into itself and diverged on the recorded trial. At age 0 this is
+    // exactly the offline combination.
+    const double var = s.var[static_cast<size_t>(lane / 3)] + params_.accel_psd * age * age * age / 3.0;
+    wsum += 1.0 / var;
+    zsum += y / var;
+  }
+  if (!(wsum > 0.0)) return false;
+  z = zsum / wsum;
+  r = 1.0 / wsum;
+  return true;
 }
 
 void OnlineFusion::add(const HandFrame& frame, int slot_index, double t_s) {
@@ -60,56 +86,65 @@ void OnlineFusion::add(const HandFrame& frame, int slot_index, double t_s) {
   any_frame_ = true;
 
   Slot& slot = slots_[static_cast<size_t>(slot_index)];
-  // A frame older than the slot's latest (crossed in delivery) must not replace newer labels.
-  const bool newest_for_slot = !slot.ever || t_s >= slot.t_s;
+  // A frame older than the slot's latest (crossed in delivery) must not replace newer data.
+  if (slot.ever && t_s < slot.t_s) return;
   const bool hand = frame.hand_present && is_finite(frame.point(kPalm));
 
   // 1. Ray tracing in the device's own frame, exactly as visibility_labels does for a track.
-  FingerLabels labels;
   if (hand) {
     const PreparedFrame prepared = prepare_frame(frame);
-    labels = frame_visibility_labels(prepared, true, limits_);
+    slot.labels = frame_visibility_labels(prepared, true, limits_);
   } else {
-    labels = frame_visibility_labels(PreparedFrame{}, false, limits_);
+    static const PreparedFrame kNoHand{};  // nothing to prepare: the rule gives the "no hand" row
+    slot.labels = frame_visibility_labels(kNoHand, false, limits_);
   }
-  if (newest_for_slot) {
-    slot.labels = labels;
-    slot.t_s = t_s;
-    slot.ever = true;
-  }
+  slot.t_s = t_s;
+  slot.ever = true;
+  slot.hand = hand;
   if (!hand) return;
 
   // 2. Variance factors before realignment (axis cuts are device-frame coordinates).
   std::array<float, kNumHandPoints> quality;
-  frame_quality(frame.points, &labels, params_, quality);
+  frame_quality(frame.points, &slot.labels, params_, quality);
 
-  // 3. Into the world frame.
+  // 3. Into the world frame; the slot keeps it as its latest sample.
   std::array<Vec3, kNumHandPoints> world = frame.points;
   realign_frame(world, slot.rotation, slot.shift);
+  for (int i = 0; i < kNumHandPoints; ++i) {
+    slot.var[static_cast<size_t>(i)] = base_var_ * static_cast<double>(quality[static_cast<size_t>(i)]);
+    for (int c = 0; c < 3; ++c) slot.z[static_cast<size_t>(3 * i + c)] = world[static_cast<size_t>(i)][c];
+  }
 
-  // 4. Predict to t_s and update, lane by lane. A lane unseen for longer than the gap limit (a
-  // stretch the offline fuser would leave NaN) restarts at rest from this measurement.
+  // 4. Lanes this frame measured: predict to t_s (a new instant) or redo the update at the
+  // current one, with every device's latest sample.
   const double restart_gap_s = max_gap_s_ + params_.dt_s + kTimeEpsS;
   for (int lane = 0; lane < kLanes; ++lane) {
-    const int point = lane / 3;
-    const double z = world[static_cast<size_t>(point)][lane % 3];
-    if (!std::isfinite(z)) continue;
-    const double r = base_var_ * static_cast<double>(quality[static_cast<size_t>(point)]);
     const auto l = static_cast<size_t>(lane);
-    CvKalman& kf = kf_[l];
-    if (!live_[l] || t_s - meas_t_[l] > restart_gap_s) {
-      kf.start(z, r);
-      state_t_[l] = t_s;
-      meas_t_[l] = t_s;
+    if (!std::isfinite(slot.z[l])) continue;
+    const bool restart = !live_[l] || t_s - meas_t_[l] > restart_gap_s;
+    if (t_s > meas_t_[l] || !live_[l]) meas_t_[l] = t_s;
+    double z = 0.0, r = 0.0;
+    if (restart || (started_[l] && t_s <= state_t_[l])) {
+      // A (re)start at rest from the devices' combination at this instant: redone, not updated,
+      // when the next device of the same instant arrives, as the offline fuser starts from the
+      // combined first step.
+      if (restart) state_t_[l] = t_s;
+      if (!combine(lane, state_t_[l], z, r)) continue;
+      kf_[l].start(z, r);
+      prior_[l] = kf_[l];
       live_[l] = true;
+      started_[l] = true;
       continue;
     }
     if (t_s > state_t_[l]) {
-      kf.predict(t_s - state_t_[l], params_.accel_psd);
+      prior_[l] = kf_[l];
+      prior_[l].predict(t_s - state_t_[l], params_.accel_psd);
       state_t_[l] = t_s;
+      started_[l] = false;
     }
-    kf.update(z, r);
-    if (t_s > meas_t_[l]) meas_t_[l] = t_s;
+    CvKalman next = prior_[l];
+    if (combine(lane, state_t_[l], z, r)) next.update(z, r);
+    kf_[l] = next;
   }
 }
 
@@ -128,7 +163,7 @@ FusedHand OnlineFusion::current_at(double t_s) const {
     out.points[static_cast<size_t>(lane / 3)][lane % 3] = v;
   }
   for (const Slot& s : slots_) {
-    if (!s.ever || t_s - s.t_s > kSeenWindowS + kTimeEpsS) continue;
+    if (!s.ever || t_s - s.t_s > kStaleAfterS + kTimeEpsS) continue;
     for (int k = 0; k < kNumDigits; ++k) out.seen_by[static_cast<size_t>(k)] += s.labels[static_cast<size_t>(k)] == 1 ? 1 : 0;
   }
   out.has_hand = is_finite(out.points[kPalm]);

@@ -5,18 +5,25 @@
 //  1. ray-traces the frame in the device's own frame (visibility_labels.h, frame_visibility_labels);
 //  2. turns labels and axis cuts into variance factors (fusion_smoother.h, frame_quality);
 //  3. realigns the points with the slot's pose and offset (realign.h, realign_frame);
-//  4. predicts each point and coordinate's constant-velocity Kalman filter (cv_kalman.h) to the
-//     frame's time and updates it with the measurement and its variance.
-// Devices arrive one at a time: updating sequentially with each device's measurement at the same
-// instant equals the offline inverse-variance combination, so four devices on one grid time give
-// exactly the offline forward filter. What differs from the offline result, on purpose:
-//  * no backward (RTS) pass, so the output lags a moving hand slightly (tests report how much);
-//  * a frame older than a point's filter state (devices' frames cross in delivery) updates at
-//    the state's time instead of rewinding it;
-//  * after a point has been unseen for longer than max_gap_frames·dt_s it is NaN, and it restarts
-//    from its next measurement at rest (the velocity from before a long gap is stale).
-// add() and current() never allocate; one OnlineFusion is not thread-safe (the tab owns one on
-// its worker thread and publishes FusedHand copies).
+//  4. per point and coordinate, predicts the constant-velocity Kalman filter (cv_kalman.h) to the
+//     frame's time and updates it with the inverse-variance combination of every device's latest
+//     sample, as the offline fuser combines the devices at each grid step.
+// Why combine the latest samples instead of updating with the arriving device alone: controllers
+// disagree by several millimetres (calibration, internal-model guesses) and stream at different
+// rates; updated one device at a time, the responsive filter would jump towards each arriving
+// device in turn (on the published static trial: 6.6 mm RMS from the offline result, jitter a
+// viewer sees). A held sample's variance grows with its age by the model's process noise (it is
+// not moved with the filter's velocity: that feedback diverged); it stops counting kStaleAfterS
+// after its device's latest frame, or at once when the device reports no hand.
+// Every update happens at one instant per point: a second frame at the same time (the next device
+// of the same tracking event) redoes that instant's update with the new combination, so four
+// devices on one grid time give exactly the offline forward filter. Differences from the offline
+// result, on purpose: no backward (RTS) pass, so the output lags a moving hand slightly (tests
+// report how much); a frame older than a point's state joins the update at the state's time
+// instead of rewinding it; a point unseen by every device for longer than max_gap_frames·dt_s is
+// NaN, and restarts at rest from its next measurement (the velocity from before a long gap is
+// stale). add() and current() never allocate; one OnlineFusion is not thread-safe (the tab owns
+// one on its worker thread and publishes FusedHand copies).
 #include <array>
 #include <cstdint>
 #include <vector>
@@ -33,15 +40,15 @@ struct FusedHand {
   double t_s = 0.0;  // the time the points are predicted to (shared device clock)
   std::array<Vec3, kNumHandPoints> points{};  // world frame; NaN where no device saw the point recently
   // Per finger (thumb … pinky): how many controllers' latest frames, no older than
-  // OnlineFusion::kSeenWindowS, see it by the ray tracer.
+  // OnlineFusion::kStaleAfterS, see it by the ray tracer.
   std::array<int, kNumDigits> seen_by{};
   bool has_hand = false;  // the fused palm position is finite
 };
 
 class OnlineFusion {
  public:
-  // A device's latest frame counts for seen_by while it is at most this old.
-  static constexpr double kSeenWindowS = 0.1;
+  // A device's latest frame counts (for seen_by and in the combination) while at most this old.
+  static constexpr double kStaleAfterS = 0.1;
 
   // Throws lmc::Error when the layout is invalid (validate_layout) or params are not positive.
   explicit OnlineFusion(const Layout& layout, SmootherParams params = {},
@@ -76,7 +83,14 @@ class OnlineFusion {
     FingerLabels labels{};
     double t_s = 0.0;
     bool ever = false;
+    bool hand = false;                          // the latest frame had a hand: its samples count
+    std::array<double, kLanes> z{};             // latest world-frame sample per lane (NaN: none)
+    std::array<double, kNumHandPoints> var{};   // its variance per point (base × quality factor)
   };
+
+  // The inverse-variance combination at time t of every slot's fresh sample of `lane`, each
+  // widened by its age. False when no slot has one.
+  bool combine(int lane, double t, double& z, double& r) const;
 
   SmootherParams params_;
   VisibilityLimits limits_{};
@@ -87,10 +101,12 @@ class OnlineFusion {
   bool any_frame_ = false;
 
   // Filter state per lane (structure of arrays: the update loop walks them in order).
-  std::array<CvKalman, kLanes> kf_{};
-  std::array<double, kLanes> state_t_{};  // time the state refers to
-  std::array<double, kLanes> meas_t_{};   // time of the lane's latest measurement
+  std::array<CvKalman, kLanes> kf_{};     // after the update at state_t_
+  std::array<CvKalman, kLanes> prior_{};  // predicted to state_t_, before its update (for redoing it)
+  std::array<double, kLanes> state_t_{};  // the instant of the lane's latest update
+  std::array<double, kLanes> meas_t_{};   // time of the lane's latest measurement from any device
   std::array<bool, kLanes> live_{};       // false: never measured or lost (restart at the next one)
+  std::array<bool, kLanes> started_{};    // the update at state_t_ was a (re)start
 };
 
 }  // namespace lmc
