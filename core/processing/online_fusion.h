@@ -55,9 +55,10 @@ class OnlineFusion {
                         VisibilityParams vis = recorded_trial_visibility_params());
 
   // One device frame in device coordinates from layout.devices[slot_index], at t_s seconds on the
-  // clock all devices share. A frame without a hand (or with a non-finite palm) only updates
-  // that device's labels; non-finite coordinates are skipped. Throws lmc::Error for a slot out of
-  // range or a non-finite time.
+  // clock all devices share. A frame without a hand (or with a non-finite palm) sets that
+  // device's labels to −1 and withdraws its samples; non-finite coordinates are skipped; a frame
+  // older than the slot's latest (crossed in delivery) is ignored. Throws lmc::Error for a slot
+  // out of range or a non-finite time.
   void add(const HandFrame& device_frame, int slot_index, double t_s);
 
   // The fused hand predicted to the latest time added (current_at(latest_time_s())).
@@ -68,7 +69,7 @@ class OnlineFusion {
   FusedHand current_at(double t_s) const;
 
   double latest_time_s() const { return latest_s_; }
-  // The latest labels of a slot (−1 everywhere before its first frame) and when they arrived.
+  // The latest labels of a slot (−1 everywhere before its first frame).
   const FingerLabels& slot_labels(int slot_index) const { return slots_[static_cast<size_t>(slot_index)].labels; }
   int slot_count() const { return static_cast<int>(slots_.size()); }
   // Forgets every filter and label (a new trial).
