@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include "core/processing/cv_kalman.h"
+
 namespace lmc {
 namespace {
 
@@ -10,29 +12,36 @@ int point_finger(int i) { return i >= kFirstDigitPoint ? (i - kFirstDigitPoint) 
 
 }  // namespace
 
+void frame_quality(std::span<const Vec3, kNumHandPoints> v, const FingerLabels* row, const SmootherParams& p,
+                   std::span<float, kNumHandPoints> out) {
+  const double cut = p.axis_cut_mm - p.axis_cut_margin_mm;
+  bool any_visible = row == nullptr;
+  if (row != nullptr) {
+    for (int k = 0; k < kNumDigits; ++k) any_visible = any_visible || (*row)[static_cast<size_t>(k)] == 1;
+  }
+  for (int i = 0; i < kNumHandPoints; ++i) {
+    double factor = 1.0;
+    const int finger = point_finger(i);
+    if (row != nullptr) {
+      const bool visible = finger >= 0 ? (*row)[static_cast<size_t>(finger)] == 1 : any_visible;
+      if (!visible) factor *= p.hidden_factor;
+    }
+    if (i != kPalmNormal && i != kPalmDirection) {
+      const Vec3& x = v[static_cast<size_t>(i)];
+      if (std::abs(x.x()) >= cut || std::abs(x.y()) >= cut || std::abs(x.z()) >= cut) factor *= p.axis_cut_factor;
+    }
+    if (i == kElbow) factor *= p.elbow_factor;
+    out[static_cast<size_t>(i)] = static_cast<float>(factor);
+  }
+}
+
 std::vector<float> sample_quality(const HandTrack& t, const std::vector<FingerLabels>& labels, const SmootherParams& p) {
   std::vector<float> q(static_cast<size_t>(t.frame_count) * kNumHandPoints, 1.0f);
-  const double cut = p.axis_cut_mm - p.axis_cut_margin_mm;
   for (int f = 0; f < t.frame_count; ++f) {
-    const FingerLabels* row = labels.empty() ? nullptr : &labels[static_cast<size_t>(f)];
-    bool any_visible = row == nullptr;
-    if (row != nullptr) {
-      for (int k = 0; k < kNumDigits; ++k) any_visible = any_visible || (*row)[static_cast<size_t>(k)] == 1;
-    }
-    for (int i = 0; i < kNumHandPoints; ++i) {
-      double factor = 1.0;
-      const int finger = point_finger(i);
-      if (row != nullptr) {
-        const bool visible = finger >= 0 ? (*row)[static_cast<size_t>(finger)] == 1 : any_visible;
-        if (!visible) factor *= p.hidden_factor;
-      }
-      if (i != kPalmNormal && i != kPalmDirection) {
-        const Vec3& v = t.at(f, i);
-        if (std::abs(v.x()) >= cut || std::abs(v.y()) >= cut || std::abs(v.z()) >= cut) factor *= p.axis_cut_factor;
-      }
-      if (i == kElbow) factor *= p.elbow_factor;
-      q[static_cast<size_t>(f) * kNumHandPoints + static_cast<size_t>(i)] = static_cast<float>(factor);
-    }
+    const size_t base = static_cast<size_t>(f) * kNumHandPoints;
+    frame_quality(std::span<const Vec3, kNumHandPoints>(t.points.data() + base, kNumHandPoints),
+                  labels.empty() ? nullptr : &labels[static_cast<size_t>(f)], p,
+                  std::span<float, kNumHandPoints>(q.data() + base, kNumHandPoints));
   }
   return q;
 }
@@ -83,35 +92,19 @@ HandTrack fuse_default(const std::vector<const HandTrack*>& devices, const std::
       }
       if (first < 0) continue;  // never measured: stays NaN
       // Forward filter from the first measurement.
-      double x0 = st[static_cast<size_t>(first)].z, x1 = 0.0;
-      double p00 = st[static_cast<size_t>(first)].r, p01 = 0.0, p11 = 1.0e4;  // (100 mm/s)² initial velocity spread
+      CvKalman kf;
+      kf.start(st[static_cast<size_t>(first)].z, st[static_cast<size_t>(first)].r);
       for (int f = first; f <= last; ++f) {
         auto& s = st[static_cast<size_t>(f)];
         if (f > first) {
-          x0 += dt * x1;
-          const double n00 = p00 + 2.0 * dt * p01 + dt * dt * p11 + q00;
-          const double n01 = p01 + dt * p11 + q01;
-          const double n11 = p11 + q11;
-          p00 = n00;
-          p01 = n01;
-          p11 = n11;
-          if (std::isfinite(s.r)) {
-            const double sv = p00 + s.r;
-            const double k0 = p00 / sv, k1 = p01 / sv;
-            const double inn = s.z - x0;
-            x0 += k0 * inn;
-            x1 += k1 * inn;
-            const double m00 = (1.0 - k0) * p00, m01 = (1.0 - k0) * p01, m11 = p11 - k1 * p01;
-            p00 = m00;
-            p01 = m01;
-            p11 = m11;
-          }
+          kf.predict(dt, p.accel_psd);
+          if (std::isfinite(s.r)) kf.update(s.z, s.r);
         }
-        s.x0 = x0;
-        s.x1 = x1;
-        s.p00 = p00;
-        s.p01 = p01;
-        s.p11 = p11;
+        s.x0 = kf.x0;
+        s.x1 = kf.x1;
+        s.p00 = kf.p00;
+        s.p01 = kf.p01;
+        s.p11 = kf.p11;
       }
       // Backward (RTS) pass: smoothed state overwrites the filtered one.
       for (int f = last - 1; f >= first; --f) {

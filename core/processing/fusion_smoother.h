@@ -11,6 +11,7 @@
 //  * the elbow (the study found it systematically wrong) gets `elbow_factor`.
 // Frames where no device has had a value for more than `max_gap_frames` stay NaN (the reference
 // filter would coast on its last velocity there). NaN from any device at any time is skipped.
+#include <span>
 #include <vector>
 
 #include "core/io/lmc_recording.h"
@@ -34,6 +35,12 @@ struct SmootherParams {
 // device's track before realignment; `labels` its visibility labels (may be empty: all visible).
 std::vector<float> sample_quality(const HandTrack& device_frame, const std::vector<FingerLabels>& labels,
                                   const SmootherParams& params = {});
+
+// The per-frame rule of sample_quality, shared with the online fuser (online_fusion.h) so live and
+// offline weights cannot drift apart: one frame's 30 device-frame entries and its labels (null:
+// all visible) → 30 variance factors.
+void frame_quality(std::span<const Vec3, kNumHandPoints> device_points, const FingerLabels* labels,
+                   const SmootherParams& params, std::span<float, kNumHandPoints> out);
 
 // Fuses realigned tracks. `quality[d]` may be null (factor 1 everywhere).
 HandTrack fuse_default(const std::vector<const HandTrack*>& devices, const std::vector<const std::vector<float>*>& quality,

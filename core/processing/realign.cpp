@@ -4,18 +4,22 @@
 
 namespace lmc {
 
+void realign_frame(std::span<Vec3, kNumHandPoints> points, const Eigen::Matrix3d& r, const Eigen::Vector3d& shift) {
+  for (int i = 0; i < kNumHandPoints; ++i) {
+    Vec3& p = points[static_cast<size_t>(i)];
+    if (i == kPalmNormal || i == kPalmDirection) {
+      p = r * p;
+    } else {
+      p = r * p + shift;
+    }
+  }
+}
+
 void realign_track(HandTrack& track, const LayoutDevice& device) {
   const Eigen::Matrix3d r = device.pose.rotation();
   const Eigen::Vector3d shift = device.pose.translation() + device.offset_mm;
   for (int f = 0; f < track.frame_count; ++f) {
-    for (int i = 0; i < kNumHandPoints; ++i) {
-      Vec3& p = track.at(f, i);
-      if (i == kPalmNormal || i == kPalmDirection) {
-        p = r * p;
-      } else {
-        p = r * p + shift;
-      }
-    }
+    realign_frame(std::span<Vec3, kNumHandPoints>(&track.at(f, 0), kNumHandPoints), r, shift);
   }
 }
 

@@ -4,6 +4,7 @@
 // layout's k-th device (LMC1 = first). The palm normal and direction are directions, so they are
 // only rotated (the study's script pushed them through the full transform as if they were
 // points; no published measure uses them, so the published numbers are unaffected).
+#include <span>
 #include <string>
 
 #include "core/layout/layout.h"
@@ -16,5 +17,11 @@ void realign_to_world(GridTrial& grid, const Layout& layout, const std::string& 
 
 // Frame by frame, one device (exposed for the workbench and tests).
 void realign_track(HandTrack& track, const LayoutDevice& device);
+
+// The per-frame math behind both (shared with the online fuser, online_fusion.h): one frame's 30
+// entries in place, points p ← R·p + shift, the palm normal and direction p ← R·p. `rotation` =
+// device.pose.rotation(), `shift` = device.pose.translation() + device.offset_mm.
+void realign_frame(std::span<Vec3, kNumHandPoints> points, const Eigen::Matrix3d& rotation,
+                   const Eigen::Vector3d& shift);
 
 }  // namespace lmc

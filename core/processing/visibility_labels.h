@@ -8,6 +8,7 @@
 
 #include "core/io/lmc_recording.h"
 #include "core/processing/hand_track.h"
+#include "core/visibility/frame_prep.h"
 #include "core/visibility/visibility_params.h"
 
 namespace lmc {
@@ -17,5 +18,11 @@ VisibilityParams recorded_trial_visibility_params();
 
 std::vector<FingerLabels> visibility_labels(const HandTrack& device_frame_track,
                                             const VisibilityParams& params = recorded_trial_visibility_params());
+
+// The per-frame rule behind visibility_labels, shared with the online fuser (online_fusion.h) so
+// live and offline labels cannot drift apart: `frame` is prepared from the device-frame points,
+// `hand` says whether the row has a hand (the palm position is finite), `limits` =
+// make_limits(params).
+FingerLabels frame_visibility_labels(const PreparedFrame& frame, bool hand, const VisibilityLimits& limits);
 
 }  // namespace lmc
