@@ -8,7 +8,6 @@
 #include <backends/imgui_impl_opengl3.h>
 #include <stb_image_write.h>
 
-#include <algorithm>
 #include <cstdlib>
 #include <filesystem>
 #include <stdexcept>
@@ -34,9 +33,9 @@ std::vector<int> g_pressed_this_frame;
 std::vector<HeldRelease> g_held_releases;
 
 void on_key(GLFWwindow* window, int key, int scancode, int action, int mods) {
-  const bool pressed_now =
-      std::find(g_pressed_this_frame.begin(), g_pressed_this_frame.end(), key) != g_pressed_this_frame.end();
-  if (action == GLFW_RELEASE && pressed_now) {
+  // Once a key went down this frame, every later release waits too, in order: Ctrl+Q typed
+  // quickly (Q down, Q up, Ctrl up in one frame) must reach ImGui as Q with Ctrl still held.
+  if (action == GLFW_RELEASE && !g_pressed_this_frame.empty()) {
     g_held_releases.push_back({window, key, scancode, mods});
     return;
   }

@@ -19,7 +19,7 @@ ImU32 slot_colour(int index, float alpha = 1.0F) {
 }  // namespace
 
 void draw_live_hands_view(const char* id, OrbitCamera& camera, const Layout& layout, const std::vector<LiveHand>& hands,
-                          const std::string& caption) {
+                          const std::string& caption, const FusedHand* fused) {
   ImDrawList* dl = ImGui::GetWindowDrawList();
   const ImVec2 origin = ImGui::GetCursorScreenPos();
   const ImVec2 size = ImGui::GetContentRegionAvail();
@@ -70,6 +70,15 @@ void draw_live_hands_view(const char* id, OrbitCamera& camera, const Layout& lay
       line(h.world[static_cast<size_t>(b.from)], h.world[static_cast<size_t>(b.to)], col, 2.0F);
     if (auto p = proj(h.world[kPalm]))
       dl->AddCircleFilled(ImVec2(static_cast<float>(p->x()), static_cast<float>(p->y())), 4.0F, col);
+  }
+  if (fused != nullptr && fused->has_hand) {
+    for (const BoneSpec& b : hand_bones()) {
+      const Vec3& a = fused->points[static_cast<size_t>(b.from)];
+      const Vec3& c = fused->points[static_cast<size_t>(b.to)];
+      if (!a.allFinite() || !c.allFinite()) continue;
+      const Rgba rgba = b.digit >= 0 ? seen_count_colour(fused->seen_by[static_cast<size_t>(b.digit)]) : Rgba{0.9F, 0.9F, 0.9F, 1.0F};
+      line(a, c, ImGui::ColorConvertFloat4ToU32(ImVec4(rgba.r, rgba.g, rgba.b, 1.0F)), 5.0F);
+    }
   }
   dl->PopClipRect();
   dl->AddText(ImVec2(origin.x + 8, origin.y + 6), IM_COL32(200, 200, 210, 255), caption.c_str());

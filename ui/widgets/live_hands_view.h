@@ -7,13 +7,16 @@
 #include <vector>
 
 #include "core/layout/layout.h"
+#include "core/processing/online_fusion.h"
 #include "ui/model/devices/live_hands.h"
 #include "ui/scene/orbit_camera.h"
 
 namespace lmc::ui {
 
-// Fills the remaining content region. `id` must be unique in the window.
+// Fills the remaining content region. `id` must be unique in the window. With `fused`, the fused
+// hand is drawn thick over the controllers' thin ones, each finger in the colour of how many
+// controllers see it now (the Layout tab's seen-by colours: a finger seen by nobody is red).
 void draw_live_hands_view(const char* id, OrbitCamera& camera, const Layout& layout, const std::vector<LiveHand>& hands,
-                          const std::string& caption);
+                          const std::string& caption, const FusedHand* fused = nullptr);
 
 }  // namespace lmc::ui

@@ -1,5 +1,6 @@
 #include "ui/model/record/record_session_model.h"
 
+#include <chrono>
 #include <utility>
 
 namespace lmc::ui {
@@ -188,6 +189,36 @@ std::string RecordSessionModel::redo(int i) {
   return {};
 }
 
+// Feeds each controller's newest frame from the engine's status snapshot into the causal fusion.
+// Snapshots come about ten times a second, so this is the fused hand as the operator sees it,
+// not every frame (a per-frame fusion on its own thread is the next step, issue #11).
+void RecordSessionModel::fuse_snapshot(const devices::HubSnapshot& hub) {
+  const Layout* layout = current_layout();
+  if (!layout) return;
+  if (!fusion_) {
+    fusion_ = std::make_unique<OnlineFusion>(*layout);
+    fused_frame_ids_.assign(static_cast<size_t>(layout->device_count()), -1);
+  }
+  const auto t0 = std::chrono::steady_clock::now();
+  bool added = false;
+  for (const auto& d : hub.devices) {
+    if (d.slot_index < 0 || d.slot_index >= layout->device_count() || !d.latest || !d.connected) continue;
+    auto& last = fused_frame_ids_[static_cast<size_t>(d.slot_index)];
+    if (d.latest->frame_id == last) continue;
+    last = d.latest->frame_id;
+    try {
+      fusion_->add(*d.latest, d.slot_index, static_cast<double>(d.latest->timestamp_us) * 1e-6);
+      added = true;
+    } catch (const std::exception&) {
+      // A frame the fusion refuses (non-finite time) is left out of the live view only; the
+      // recording keeps it and the verdict judges it.
+    }
+  }
+  if (!added) return;
+  live_fused_ = fusion_->current();
+  fusion_step_ms_ = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+}
+
 const Layout* RecordSessionModel::current_layout() const {
   const int i = recording() ? recording_trial_ : current_trial();
   if (!runner_ || i < 0) return nullptr;
@@ -203,6 +234,7 @@ std::string RecordSessionModel::poll() {
   if (fresh && live_) {
     const Layout* layout = current_layout();
     live_hands_ = layout ? ui::live_hands(live_->hub, *layout) : std::vector<LiveHand>{};
+    fuse_snapshot(live_->hub);
   }
   const JobState js = job_.state();
   if (job_handled_ || !job_finished(js) || !folder_) return {};
@@ -238,6 +270,8 @@ std::string RecordSessionModel::poll() {
   recording_trial_ = -1;
   live_.reset();
   live_hands_.clear();
+  live_fused_.reset();
+  fusion_.reset();
   refresh_state();
   return line;
 }

@@ -18,6 +18,7 @@
 #include <string>
 #include <vector>
 
+#include "core/processing/online_fusion.h"
 #include "core/session/session_folder.h"
 #include "devices/record/trial_engine.h"
 #include "devices/session/session_runner.h"
@@ -87,6 +88,10 @@ class RecordSessionModel {
   const std::optional<devices::TrialSnapshot>& live() const { return live_; }
   // Each controller's latest hand in the world frame (live_hands.h), while recording.
   const std::vector<LiveHand>& live_hands() const { return live_hands_; }
+  // The controllers fused into one hand while recording (the causal default fusion, fingers with
+  // how many controllers see them now), and what one fusion step cost on this machine.
+  const std::optional<FusedHand>& live_fused() const { return live_fused_; }
+  double fusion_step_ms() const { return fusion_step_ms_; }
   // The layout of the current (or recording) trial's block; null without a session.
   const Layout* current_layout() const;
   // The last attempt this run recorded, with its verdict; and which trial it was.
@@ -114,6 +119,11 @@ class RecordSessionModel {
   int recording_trial_ = -1;
   std::optional<devices::TrialSnapshot> live_;
   std::vector<LiveHand> live_hands_;
+  void fuse_snapshot(const devices::HubSnapshot& hub);
+  std::unique_ptr<OnlineFusion> fusion_;          // per trial, with its block's layout
+  std::vector<std::int64_t> fused_frame_ids_;    // per slot: the last frame fed to the fusion
+  std::optional<FusedHand> live_fused_;
+  double fusion_step_ms_ = 0;
   std::optional<devices::PreflightReport> last_preflight_;
   std::optional<devices::AttemptResult> last_attempt_;
   bool job_handled_ = true;  // the finished job's result was taken by poll()

@@ -72,12 +72,14 @@ class RecordTab final : public Tab {
   }
 
   int prepare_for_capture() override {
-    // A quick session on the simulated rig in simulated time, recorded up to the first verdict,
-    // so the capture shows the trial list, the next trial's cue and a verdict.
     capture_ = true;
     return 4;
   }
-  bool busy_for_capture() const override { return capture_ && !model_.last_attempt(); }
+  bool busy_for_capture() const override {
+    const bool mid_second_trial = model_.last_attempt() && model_.recording() && model_.live() &&
+                                  model_.live()->recording_s > 1.5 && model_.live_fused();
+    return capture_ && !mid_second_trial;
+  }
 
  private:
   void create() {
@@ -139,23 +141,27 @@ class RecordTab final : public Tab {
     if (ImGui::IsKeyPressed('R', false)) act(TrialPanelAction::kRedo);
   }
 
+  // --capture: a quick session on the simulated rig in real time (no countdown). The first trial
+  // is recorded to its verdict, then the picture is taken 1.5 s into the second, so it shows the
+  // trial list with a verdict, the cue, the red circle, the controller strips and the fused hand.
   void drive_capture() {
     if (!model_.has_session()) {
       const auto dir = std::filesystem::temp_directory_path() / ("lmc-record-capture-" + std::to_string(::getpid()));
       std::filesystem::remove_all(dir);
       form_.protocol = 1;
-      form_.fast = true;
-      std::snprintf(form_.folder, sizeof form_.folder, "%s", dir.string().c_str());
-      create();
+      RecordSettings settings = form_.settings();
+      settings.fast = false;
+      settings.countdown_s = 0;
+      error_ = model_.create(dir, form_.spec(), settings);
       return;
     }
-    if (model_.busy() || model_.last_attempt()) return;
+    if (model_.busy()) return;
     if (model_.needs_preflight()) {
       if (!model_.last_preflight()) model_.start_preflight();
       else model_.override_preflight("screenshot");
       return;
     }
-    model_.start_trial();
+    if (!model_.finished()) model_.start_trial();
   }
 
   StatusSink& status_;

@@ -124,9 +124,21 @@ void live_view(const RecordSessionModel& model, TrialPanelInput& input) {
   const Layout* layout = model.current_layout();
   if (!layout) return;
   ImGui::Spacing();
+  const auto& fused = model.live_fused();
+  if (fused) {
+    ImGui::TextDisabled("Fused hand: fingers by how many controllers see them now (red none, orange 1, yellow 2, green 3+) "
+                        "· fusion step %.2f ms", model.fusion_step_ms());
+    int unseen = 0;
+    for (int n : fused->seen_by) unseen += n == 0 ? 1 : 0;
+    if (unseen > 0 && fused->has_hand) {
+      ImGui::SameLine();
+      ImGui::TextColored(kRed, "  %d finger(s) seen by no controller", unseen);
+    }
+  }
   draw_live_hands_view("record_live", input.camera, *layout, model.live_hands(),
-                       "Layout '" + layout->name + "' in the world frame (mm); while recording, each controller's hand "
-                       "in its colour.");
+                       "Layout '" + layout->name + "' in the world frame (mm): each controller's hand in its colour, "
+                       "the fused hand thick.",
+                       fused ? &*fused : nullptr);
 }
 
 }  // namespace
