@@ -87,7 +87,7 @@ const std::vector<ShortcutRow>& shortcut_rows() {
       {"Layout", "F", "Frame everything in the 3D view"},
       {"Layout", "Esc", "During a drag: put the controller back"},
       {"Layout", "Delete", "Remove the selected controller"},
-      {"Layout", "Double-click / Ctrl+click", "Type a value into an Inspector field"},
+      {"Layout", "Click a pose field", "Type a value (sensor fields: double-click); drag to change it live"},
       {"Record", "Space", "Start the trial (pre-flight first when needed); stop it while recording"},
       {"Record", "Enter", "Accept a trial whose verdict is fail"},
       {"Record", "R", "Redo the last trial"},
