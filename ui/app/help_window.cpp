@@ -13,7 +13,7 @@ constexpr const char* kWalkthrough[] = {
     "F frames everything; 3D / Top / Front / Side give fixed views.",
     "Click a controller to select it. Drag its box to move it, the green ring to turn it, the red "
     "ring to tilt it; Esc puts it back. The Inspector holds every parameter with a lock the handles "
-    "and the optimiser honour (drag a value, or double-click it to type).",
+    "and the optimiser honour (drag a pose value, or click it to type one).",
     "Scrub or Play the timeline. Fingers are coloured by how many controllers see them: red none, "
     "orange 1, yellow 2, green 3+. Tick Rays and hover a red line to read what blocks it.",
     "The Coverage panel shows controllers x fingers, frames seen by nobody and the metric M "
@@ -102,6 +102,7 @@ void HelpWindow::draw() {
   ImGui::SetNextWindowPos(ImVec2(vp->WorkPos.x + vp->WorkSize.x * 0.5f, vp->WorkPos.y + vp->WorkSize.y * 0.5f),
                           ImGuiCond_Appearing, ImVec2(0.5f, 0.5f));
   if (select_pending_) ImGui::SetNextWindowFocus();
+  ImGui::SetNextWindowBgAlpha(1.0f);  // text to read: the tab underneath must not show through
   if (ImGui::Begin("Help###lmc_help", &open_, ImGuiWindowFlags_NoCollapse | ImGuiWindowFlags_NoSavedSettings)) {
     if (ImGui::BeginTabBar("##help_sections")) {
       const auto flags_for = [this](Section s) {
