@@ -10,6 +10,7 @@
 #include "tests/support/reference_data.h"
 #include "tests/ui/headless_imgui.h"
 #include "ui/app/help_window.h"
+#include "ui/app/workbench_shell.h"
 #include "ui/app/tab_status_sink.h"
 #include "ui/model/layout_actions.h"
 #include "ui/tabs/layout/inspector_panel.h"
@@ -138,6 +139,41 @@ TEST(InspectorTyping, ASingleClickOnAPoseFieldStartsTyping) {
   gui.frames(3, body);  // the focus request lands one frame later, text input the next
   EXPECT_TRUE(ImGui::GetIO().WantTextInput) << "one click, no drag: the field takes typing";
   EXPECT_EQ(state->history().undo_size(), 0u) << "a click alone changes nothing";
+}
+
+TEST(WorkbenchShellHeadless, TracksRecentFilesAndDropsTheHintOnTheFirstClick) {
+  HeadlessImGui gui;
+  const auto dir = test::scratch_dir("shell_headless_recent");
+  ShellStartup startup;
+  startup.recent_files_path = dir / "recent_files.json";
+  WorkbenchShell shell(std::move(startup));
+  const auto frame = [&] {
+    ImGui::NewFrame();
+    shell.frame();
+    ImGui::Render();
+  };
+  frame();
+  EXPECT_TRUE(shell.status_board().shown(shell.active_tab_id()).is_hint);
+  EXPECT_TRUE(shell.recent_files().entries().empty());
+
+  const auto file = dir / "mine.json";
+  save_layout(default_new_layout(), file);
+  ASSERT_EQ(shell.tab(0).document_kind(), "layout");
+  shell.tab(0).open_document(file);
+  frame();
+  ASSERT_EQ(shell.recent_files().entries().size(), 1u) << "a file the tab opened joins the recent list";
+  EXPECT_EQ(shell.recent_files().entries()[0].kind, "layout");
+  EXPECT_EQ(RecentFiles::load(dir / "recent_files.json").entries(), shell.recent_files().entries());
+
+  gui.move_to(640, 400);
+  gui.set_button(0, true);
+  frame();
+  gui.set_button(0, false);
+  frame();
+  EXPECT_FALSE(shell.status_board().hint_showing()) << "the first click ends the newcomer's hint";
+  ASSERT_TRUE(shell.status_board().latest("layout").has_value());
+  EXPECT_EQ(shell.status_board().shown("layout").text, "Opened " + file.string());
+  EXPECT_NE(shell.status_board().shown("review").text, "Opened " + file.string()) << "not on another tab";
 }
 
 }  // namespace shell_pieces_test
