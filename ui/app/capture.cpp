@@ -1,6 +1,7 @@
 #include "ui/app/capture.h"
 
 #include <chrono>
+#include <cstdlib>
 #include <filesystem>
 #include <iostream>
 #include <thread>
@@ -8,12 +9,16 @@
 
 #include "ui/app/workbench_shell.h"
 #include "ui/platform/gl_window.h"
+#include "ui/platform/user_config.h"
 #include "ui/tabs/tab_registry.h"
 
 namespace lmc::ui {
 
 int run_interactive(int width, int height, ShellStartup startup) {
   GlWindow window(WindowOptions{width, height, true, "LMC Workbench"});
+  if (startup.recent_files_path.empty()) {
+    if (const auto dir = user_config_dir(); !dir.empty()) startup.recent_files_path = dir / "recent_files.json";
+  }
   WorkbenchShell shell(std::move(startup));
   std::string title;
   while (!shell.quit_requested()) {
@@ -48,7 +53,15 @@ int run_capture(const std::string& dir, const std::vector<std::string>& tab_ids,
   }
   std::filesystem::create_directories(dir);
   GlWindow window(WindowOptions{width, height, false, "LMC Workbench"});
-  WorkbenchShell shell;
+  WorkbenchShell shell;  // no recent-files path: a capture never touches the user's list
+  // LMC_CAPTURE_HELP=walkthrough|shortcuts|about (1 = walkthrough) shows the Help window over
+  // every capture: menus are closed in captures, so this is the only way to look at it.
+  if (const char* help = std::getenv("LMC_CAPTURE_HELP"); help != nullptr && *help != '\0' && std::string(help) != "0") {
+    const std::string which = help;
+    shell.open_help(which == "shortcuts" ? HelpWindow::Section::kShortcuts
+                    : which == "about"   ? HelpWindow::Section::kAbout
+                                         : HelpWindow::Section::kWalkthrough);
+  }
   for (const auto& id : ids) {
     size_t index = 0;
     for (size_t i = 0; i < tab_registry().size(); ++i) {

@@ -3,17 +3,23 @@
 #include <imgui.h>
 
 #include <cstdio>
+#include <filesystem>
+#include <system_error>
 #include <utility>
 
 #include "ui/tabs/tab_registry.h"
 
 namespace lmc::ui {
 
-WorkbenchShell::WorkbenchShell(ShellStartup startup) {
+WorkbenchShell::WorkbenchShell(ShellStartup startup) : recent_files_path_(std::move(startup.recent_files_path)) {
   context_->record_startup() = std::move(startup.record);
+  if (!recent_files_path_.empty()) recent_ = RecentFiles::load(recent_files_path_);
   for (const auto& info : tab_registry()) {
-    tabs_.push_back(info.make(*this, *context_));
+    // Each tab reports under its own id: its messages stay with it when another tab is shown.
+    sinks_.push_back(std::make_unique<TabStatusSink>(status_, info.id));
+    tabs_.push_back(info.make(*sinks_.back(), *context_));
     ids_.push_back(info.id);
+    last_document_paths_.push_back(tabs_.back()->document_path());
   }
   active_id_ = ids_.empty() ? std::string() : ids_.front();
   if (!startup.tab.empty()) select_tab(startup.tab);
@@ -21,9 +27,32 @@ WorkbenchShell::WorkbenchShell(ShellStartup startup) {
 
 WorkbenchShell::~WorkbenchShell() = default;
 
-void WorkbenchShell::set_status(const std::string& text, bool is_error) {
-  status_text_ = text;
-  status_is_error_ = is_error;
+int WorkbenchShell::tab_index(const std::string& id) const {
+  for (size_t i = 0; i < ids_.size(); ++i) {
+    if (ids_[i] == id) return static_cast<int>(i);
+  }
+  return -1;
+}
+
+int WorkbenchShell::document_tab() const {
+  const int active = tab_index(active_id_);
+  if (active >= 0 && !tabs_[static_cast<size_t>(active)]->document_kind().empty()) return active;
+  for (size_t i = 0; i < tabs_.size(); ++i) {
+    if (!tabs_[i]->document_kind().empty()) return static_cast<int>(i);
+  }
+  return -1;
+}
+
+void WorkbenchShell::track_recent_files() {
+  for (size_t i = 0; i < tabs_.size(); ++i) {
+    auto path = tabs_[i]->document_path();
+    if (path == last_document_paths_[i]) continue;
+    last_document_paths_[i] = path;
+    if (!path || !recent_.add(*path, tabs_[i]->document_kind()) || recent_files_path_.empty()) continue;
+    if (const std::string err = recent_.save(recent_files_path_); !err.empty()) {
+      status_.post(ids_[i], "Recent files not kept: " + err, true);
+    }
+  }
 }
 
 bool WorkbenchShell::select_tab(const std::string& id) {
@@ -65,6 +94,7 @@ std::string WorkbenchShell::window_title() const {
 void WorkbenchShell::frame() {
   const auto start = std::chrono::steady_clock::now();
   for (auto& t : tabs_) t->update();
+  handle_shell_keys();
 
   const ImGuiViewport* vp = ImGui::GetMainViewport();
   ImGui::SetNextWindowPos(vp->WorkPos);
@@ -99,26 +129,82 @@ void WorkbenchShell::frame() {
   ImGui::End();
   draw_quit_prompt();
 
-  if (show_about_) {
-    ImGui::SetNextWindowSize(ImVec2(460, 0), ImGuiCond_Appearing);
-    if (ImGui::Begin("About LMC Workbench", &show_about_, ImGuiWindowFlags_NoCollapse)) {
-      ImGui::Text("LMC Workbench %s", LMC_VERSION);
-      ImGui::PushTextWrapPos(0.0f);
-      ImGui::TextUnformatted(
-          "Design, record and analyse hand measurements with several Ultraleap Leap Motion "
-          "Controllers. The same engine runs headless as the `lmc` command.");
-      ImGui::PopTextWrapPos();
-    }
-    ImGui::End();
-  }
+  help_.draw();
+  track_recent_files();
   frame_cpu_ms_ = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   last_frame_start_ = start;
+}
+
+void WorkbenchShell::handle_shell_keys() {
+  ImGuiIO& io = ImGui::GetIO();
+  // The newcomer's hint stays until the first thing the user does, whatever it is.
+  if (status_.hint_showing()) {
+    bool acted = io.InputQueueCharacters.Size > 0;
+    for (int b = 0; b < IM_ARRAYSIZE(io.MouseClicked); ++b) acted = acted || io.MouseClicked[b];
+    for (int k = 0; k < IM_ARRAYSIZE(io.KeysDown); ++k) acted = acted || io.KeysDownDuration[k] == 0.0f;
+    if (acted) status_.dismiss_hint();
+  }
+  // ImGui 1.86 has no ImGuiKey_Q; its GLFW backend indexes KeysDown by GLFW key code ('Q', F1 = 290).
+  constexpr int kKeyF1 = 290;
+  if (io.KeyCtrl && ImGui::IsKeyPressed('Q', false)) request_quit();
+  if (ImGui::IsKeyPressed(kKeyF1, false)) open_help();
+}
+
+void WorkbenchShell::draw_file_menu() {
+  const int doc = document_tab();
+  Tab* target = doc >= 0 ? tabs_[static_cast<size_t>(doc)].get() : nullptr;
+  const std::string kind = target ? target->document_kind() : std::string("document");
+  // The tab's own shortcuts only act while it is showing, so only then are they advertised.
+  const bool keys_live = doc >= 0 && ids_[static_cast<size_t>(doc)] == active_id_;
+  const auto shortcut = [&](const char* keys) { return keys_live ? keys : nullptr; };
+  const auto send = [&](FileCommand command) {
+    select_tab(ids_[static_cast<size_t>(doc)]);
+    target->handle_file_command(command);
+  };
+  ImGui::BeginDisabled(target == nullptr);
+  if (ImGui::MenuItem(("New " + kind).c_str(), shortcut("Ctrl+N"))) send(FileCommand::kNew);
+  if (ImGui::MenuItem(("Open " + kind + "...").c_str(), shortcut("Ctrl+O"))) send(FileCommand::kOpen);
+  ImGui::EndDisabled();
+  if (ImGui::BeginMenu("Open recent", !recent_.entries().empty())) {
+    for (size_t i = 0; i < recent_.entries().size(); ++i) {
+      const RecentFile& entry = recent_.entries()[i];
+      const int owner = [&] {
+        for (size_t t = 0; t < tabs_.size(); ++t) {
+          if (tabs_[t]->document_kind() == entry.kind) return static_cast<int>(t);
+        }
+        return -1;
+      }();
+      std::error_code ec;
+      const bool exists = std::filesystem::is_regular_file(entry.path, ec);
+      ImGui::PushID(static_cast<int>(i));
+      const std::string label = entry.path.filename().string() + (exists ? "" : "  (missing)");
+      if (ImGui::MenuItem(label.c_str(), nullptr, false, exists && owner >= 0)) {
+        select_tab(ids_[static_cast<size_t>(owner)]);
+        tabs_[static_cast<size_t>(owner)]->open_document(entry.path);
+      }
+      if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled)) ImGui::SetTooltip("%s", entry.path.string().c_str());
+      ImGui::PopID();
+    }
+    ImGui::Separator();
+    if (ImGui::MenuItem("Clear list")) {
+      recent_ = RecentFiles();
+      if (!recent_files_path_.empty()) (void)recent_.save(recent_files_path_);
+    }
+    ImGui::EndMenu();
+  }
+  ImGui::Separator();
+  ImGui::BeginDisabled(target == nullptr);
+  if (ImGui::MenuItem(("Save " + kind).c_str(), shortcut("Ctrl+S"))) send(FileCommand::kSave);
+  if (ImGui::MenuItem(("Save " + kind + " as...").c_str(), shortcut("Ctrl+Shift+S"))) send(FileCommand::kSaveAs);
+  ImGui::EndDisabled();
+  ImGui::Separator();
+  if (ImGui::MenuItem("Quit", "Ctrl+Q")) request_quit();
 }
 
 void WorkbenchShell::draw_menu() {
   if (!ImGui::BeginMenuBar()) return;
   if (ImGui::BeginMenu("File")) {
-    if (ImGui::MenuItem("Quit", "Ctrl+Q")) request_quit();
+    draw_file_menu();
     ImGui::EndMenu();
   }
   if (ImGui::BeginMenu("View")) {
@@ -130,22 +216,25 @@ void WorkbenchShell::draw_menu() {
     ImGui::EndMenu();
   }
   if (ImGui::BeginMenu("Help")) {
-    if (ImGui::MenuItem("About")) show_about_ = true;
+    if (ImGui::MenuItem("Getting started", "F1")) open_help(HelpWindow::Section::kWalkthrough);
+    if (ImGui::MenuItem("Keyboard shortcuts")) open_help(HelpWindow::Section::kShortcuts);
+    ImGui::Separator();
+    if (ImGui::MenuItem("About")) open_help(HelpWindow::Section::kAbout);
     ImGui::EndMenu();
   }
-  ImGuiIO& io = ImGui::GetIO();
-  // ImGui 1.86 has no ImGuiKey_Q; its GLFW backend indexes KeysDown by GLFW key code ('Q').
-  if (io.KeyCtrl && ImGui::IsKeyPressed('Q', false)) request_quit();
   ImGui::EndMenuBar();
 }
 
 void WorkbenchShell::draw_status_bar(float height) {
   ImGui::Separator();
   ImGui::BeginChild("##status", ImVec2(0, height - 6.0f), false, ImGuiWindowFlags_NoScrollbar);
-  if (status_is_error_) {
-    ImGui::TextColored(ImVec4(1.0f, 0.45f, 0.4f, 1.0f), "%s", status_text_.c_str());
+  const StatusLine line = status_.shown(active_id_);
+  if (line.is_error) {
+    ImGui::TextColored(ImVec4(1.0f, 0.45f, 0.4f, 1.0f), "%s", line.text.c_str());
+  } else if (line.is_hint) {
+    ImGui::TextColored(ImVec4(0.55f, 0.8f, 1.0f, 1.0f), "%s", line.text.c_str());
   } else {
-    ImGui::TextUnformatted(status_text_.c_str());
+    ImGui::TextUnformatted(line.text.c_str());
   }
   if (show_frame_time_) {
     char buf[96];

@@ -14,6 +14,8 @@
 #include <string>
 #include <vector>
 
+#include "ui/platform/user_config.h"
+
 namespace lmc::ui {
 namespace {
 
@@ -56,20 +58,10 @@ void on_glfw_error(int code, const char* description) {
   g_last_glfw_error = "GLFW error " + std::to_string(code) + ": " + (description ? description : "");
 }
 
-// ImGui's layout file belongs to the user, not the repository: $XDG_CONFIG_HOME/lmc-workbench.
+// ImGui's layout file belongs to the user, not the repository.
 std::string user_ini_path() {
-  std::filesystem::path base;
-  if (const char* xdg = std::getenv("XDG_CONFIG_HOME"); xdg && *xdg) {
-    base = xdg;
-  } else if (const char* home = std::getenv("HOME"); home && *home) {
-    base = std::filesystem::path(home) / ".config";
-  } else {
-    return {};
-  }
-  std::error_code ec;
-  std::filesystem::create_directories(base / "lmc-workbench", ec);
-  if (ec) return {};
-  return (base / "lmc-workbench" / "imgui.ini").string();
+  const auto dir = user_config_dir();
+  return dir.empty() ? std::string() : (dir / "imgui.ini").string();
 }
 
 }  // namespace

@@ -2,12 +2,17 @@
 // A workbench tab: one area of the product (Layout, Devices, Record, Review). The shell calls
 // update() every frame before any drawing (poll jobs, drain device snapshots, refresh caches),
 // then draw() inside the tab's region. draw() only emits ImGui calls.
+#include <filesystem>
 #include <memory>
+#include <optional>
 #include <string>
 
 namespace lmc::ui {
 
 class StatusSink;
+
+// What the shell's File menu asks of the tab that owns a document.
+enum class FileCommand { kNew, kOpen, kSave, kSaveAs };
 
 class Tab {
  public:
@@ -18,6 +23,14 @@ class Tab {
   virtual std::string document_title() const { return {}; }
   // True when quitting would lose work; the shell then asks before closing.
   virtual bool has_unsaved_changes() const { return false; }
+  // ---- the File menu (the shell forwards; the tab keeps its own dialogs and prompts) --------
+  // The kind of document the tab opens and saves ("layout"); empty when it has none.
+  virtual std::string document_kind() const { return {}; }
+  virtual void handle_file_command(FileCommand /*command*/) {}
+  // Opens a known file (a recent entry), asking first when work would be lost.
+  virtual void open_document(const std::filesystem::path& /*path*/) {}
+  // The file the document was last read from or written to (feeds the recent list).
+  virtual std::optional<std::filesystem::path> document_path() const { return std::nullopt; }
   // Called before a --capture screenshot so the tab shows representative content
   // (e.g. start the simulated rig, load the paper layout). Returns frames to wait.
   virtual int prepare_for_capture() { return 2; }

@@ -68,7 +68,7 @@ void InspectorPanel::draw_device(int index) {
   }
 
   static const char* kUnits[kNumPoseParams] = {"%.1f mm", "%.1f mm", "%.1f mm", "%.2f°", "%.2f°", "%.2f°"};
-  ImGui::TextDisabled("Pose (mm, degrees); ticked = locked");
+  ImGui::TextDisabled("Pose (mm, degrees): drag, or click to type; ticked = locked");
   for (int k = 0; k < kNumPoseParams; ++k) {
     ImGui::PushID(k);
     bool locked = s.doc().locks[static_cast<size_t>(index)].locked[static_cast<size_t>(k)];
@@ -79,10 +79,21 @@ void InspectorPanel::draw_device(int index) {
     double v = d.pose.get(k);
     ImGui::SetNextItemWidth(200);
     const float speed = k < 3 ? 1.0f : 0.25f;
+    if (type_into_pose_ == k) {
+      ImGui::SetKeyboardFocusHere();  // on a drag field this starts text input
+      type_into_pose_ = -1;
+    }
     if (ImGui::DragScalar(pose_param_name(k), ImGuiDataType_Double, &v, speed, nullptr, nullptr, kUnits[k])) {
       DevicePose p = d.pose;
       p.set(k, v);
       preview_device_pose(s.upd_history(), index, p);
+    }
+    anchors_.remember("pose." + std::to_string(k));
+    if (ImGui::IsItemHovered() && !ImGui::IsItemActive()) ImGui::SetTooltip("Drag to change, or click to type a value");
+    const float threshold = ImGui::GetIO().MouseDragThreshold;
+    if (ImGui::IsItemDeactivated() && !ImGui::IsItemDeactivatedAfterEdit() && !ImGui::GetIO().WantTextInput &&
+        ImGui::GetIO().MouseDragMaxDistanceSqr[0] < threshold * threshold) {
+      type_into_pose_ = k;
     }
     if (ImGui::IsItemDeactivatedAfterEdit()) {
       if (commit_device_pose(s.upd_history(), index, std::string("Set ") + pose_param_name(k) + " of")) {
@@ -121,7 +132,9 @@ void InspectorPanel::draw_sensor() {
     const SensorModel edited = s.doc().layout.sensor;
     s.report(set_sensor_model(s.upd_history(), edited), "Sensor model");
   }
-  if (ImGui::IsItemHovered()) ImGui::SetTooltip("Study defaults: 600 mm, 150° × 120° (reference-algorithms.md §3)");
+  if (ImGui::IsItemHovered()) {
+    ImGui::SetTooltip("Study defaults: 600 mm, 150° × 120° (reference-algorithms.md §3)\nDrag to change; double-click to type");
+  }
 }
 
 }  // namespace lmc::ui

@@ -2,7 +2,8 @@
 // The list of controllers (select, add, remove) and every parameter of the selected one: slot
 // name, serial number, pose x, y, z, rx, ry, rz with a lock each (locks are document state: the
 // optimiser and the scene handles leave locked parameters alone), the calibration offset and the
-// shared sensor model. Slider edits preview live and commit once on release (one undo step).
+// shared sensor model. Slider edits preview live and commit once on release (one undo step); a
+// single click without dragging types a value into a pose field.
 #include <memory>
 #include <string>
 
@@ -15,7 +16,7 @@ class InspectorPanel {
  public:
   explicit InspectorPanel(std::shared_ptr<LayoutTabState> state) : state_(std::move(state)) {}
   void draw();
-  // "add", "remove", "lock.<k>" as last drawn (for headless tests).
+  // "add", "remove", "lock.<k>", "pose.<k>" as last drawn (for headless tests).
   const WidgetAnchors& anchors() const { return anchors_; }
 
  private:
@@ -28,6 +29,9 @@ class InspectorPanel {
   char serial_buf_[64] = {};
   int buffers_for_ = -2;
   std::uint64_t buffers_head_ = 0;
+  // A click on a pose field that did not drag it opens it for typing on the next frame (ImGui
+  // 1.86 only types into a drag field on double-click or Ctrl+click, which nobody guesses).
+  int type_into_pose_ = -1;
 };
 
 }  // namespace lmc::ui

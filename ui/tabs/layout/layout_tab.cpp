@@ -131,6 +131,22 @@ void LayoutTab::update() {
 
 std::string LayoutTab::document_title() const { return state_->title(); }
 bool LayoutTab::has_unsaved_changes() const { return state_->unsaved(); }
+std::optional<std::filesystem::path> LayoutTab::document_path() const { return state_->file_path(); }
+
+// The File menu runs exactly what the toolbar and the shortcuts run.
+void LayoutTab::handle_file_command(FileCommand command) {
+  switch (command) {
+    case FileCommand::kNew: request(Pending::kNew); break;
+    case FileCommand::kOpen: request(Pending::kOpen); break;
+    case FileCommand::kSave: save(false); break;
+    case FileCommand::kSaveAs: save(true); break;
+  }
+}
+
+void LayoutTab::open_document(const std::filesystem::path& path) {
+  pending_path_ = path;
+  request(Pending::kOpenPath);
+}
 
 int LayoutTab::prepare_for_capture() {
   state_->load_preset("paper-optimized");
@@ -191,6 +207,12 @@ void LayoutTab::run(Pending action) {
       browser_.open(FileBrowser::Mode::kOpen, dir);
       break;
     }
+    case Pending::kOpenPath:
+      if (std::string err = state_->open_file(pending_path_); !err.empty()) {
+        error_message_ = err;
+        error_open_ = modals_enabled_;
+      }
+      break;
     case Pending::kPreset:
       if (std::string err = state_->load_preset(pending_preset_); !err.empty()) {
         error_message_ = err;
@@ -304,81 +326,70 @@ void LayoutTab::draw_dialogs() {
   }
 }
 
+void LayoutTab::draw_scene_side() {
+  LayoutTabState& s = *state_;
+  // View row above the scene.
+  if (ImGui::SmallButton("3D")) s.camera.set_named_view(NamedView::kPerspective);
+  ImGui::SameLine();
+  if (ImGui::SmallButton("Top")) s.camera.set_named_view(NamedView::kTop);
+  ImGui::SameLine();
+  if (ImGui::SmallButton("Front")) s.camera.set_named_view(NamedView::kFront);
+  ImGui::SameLine();
+  if (ImGui::SmallButton("Side")) s.camera.set_named_view(NamedView::kSide);
+  ImGui::SameLine();
+  if (ImGui::SmallButton("Frame all (F)")) scene_->frame_all();
+  ImGui::SameLine(0, 16);
+  ImGui::Checkbox("Pyramids", &s.display.show_pyramids);
+  ImGui::SameLine();
+  ImGui::Checkbox("Rays", &s.display.show_rays);
+  if (ImGui::IsItemHovered()) ImGui::SetTooltip("Lines from the selected controller to every finger marker:\ngreen clear, red blocked (hover one for the reason)");
+  ImGui::SameLine();
+  ImGui::Checkbox("Heatmap", &s.display.show_heatmap);
+  ImGui::SameLine();
+  ImGui::Checkbox("Ghost", &s.display.show_ghost);
+  const float timeline_h = ImGui::GetFrameHeightWithSpacing() + 6.0f;
+  const ImVec2 scene_size(ImGui::GetContentRegionAvail().x, ImGui::GetContentRegionAvail().y - timeline_h);
+  scene_->draw(scene_size);
+  ImGui::Spacing();
+  timeline_->draw();
+}
+
+void LayoutTab::draw_panel_side() {
+  const float avail_y = ImGui::GetContentRegionAvail().y;
+  const float coverage_h = std::min(300.0f, avail_y * 0.45f);
+  ImGui::BeginChild("##right_tabs", ImVec2(0, avail_y - coverage_h - 4), true);
+  if (ImGui::BeginTabBar("##layout_panels")) {
+    const auto flags_for = [this](const char* id) {
+      if (capture_panel_frames_ > 0 && capture_panel_ == id) return ImGuiTabItemFlags_SetSelected;
+      return ImGuiTabItemFlags_None;
+    };
+    if (ImGui::BeginTabItem("Inspector", nullptr, flags_for("inspector"))) {
+      inspector_->draw();
+      ImGui::EndTabItem();
+    }
+    if (ImGui::BeginTabItem("Heatmap", nullptr, flags_for("heatmap"))) {
+      heatmap_->draw();
+      ImGui::EndTabItem();
+    }
+    if (ImGui::BeginTabItem("Optimiser", nullptr, flags_for("optimiser"))) {
+      optimiser_->draw();
+      ImGui::EndTabItem();
+    }
+    ImGui::EndTabBar();
+    if (capture_panel_frames_ > 0) --capture_panel_frames_;
+  }
+  ImGui::EndChild();
+  ImGui::BeginChild("##coverage", ImVec2(0, 0), true);
+  coverage_->draw();
+  ImGui::EndChild();
+}
+
 void LayoutTab::draw() {
   LayoutTabState& s = *state_;
   handle_shortcuts();
   draw_toolbar();
 
-  const ImVec2 avail = ImGui::GetContentRegionAvail();
-  right_width_ = std::clamp(right_width_, 320.0f, std::max(320.0f, avail.x - 300.0f));
-  const float splitter_w = 6.0f;
-  const float left_w = std::max(200.0f, avail.x - right_width_ - splitter_w);
-
-  ImGui::BeginChild("##left", ImVec2(left_w, avail.y), false, ImGuiWindowFlags_NoScrollbar | ImGuiWindowFlags_NoScrollWithMouse);
-  {
-    // View row above the scene.
-    if (ImGui::SmallButton("3D")) s.camera.set_named_view(NamedView::kPerspective);
-    ImGui::SameLine();
-    if (ImGui::SmallButton("Top")) s.camera.set_named_view(NamedView::kTop);
-    ImGui::SameLine();
-    if (ImGui::SmallButton("Front")) s.camera.set_named_view(NamedView::kFront);
-    ImGui::SameLine();
-    if (ImGui::SmallButton("Side")) s.camera.set_named_view(NamedView::kSide);
-    ImGui::SameLine();
-    if (ImGui::SmallButton("Frame all (F)")) scene_->frame_all();
-    ImGui::SameLine(0, 16);
-    ImGui::Checkbox("Pyramids", &s.display.show_pyramids);
-    ImGui::SameLine();
-    ImGui::Checkbox("Rays", &s.display.show_rays);
-    if (ImGui::IsItemHovered()) ImGui::SetTooltip("Lines from the selected controller to every finger marker:\ngreen clear, red blocked (hover one for the reason)");
-    ImGui::SameLine();
-    ImGui::Checkbox("Heatmap", &s.display.show_heatmap);
-    ImGui::SameLine();
-    ImGui::Checkbox("Ghost", &s.display.show_ghost);
-    const float timeline_h = ImGui::GetFrameHeightWithSpacing() + 6.0f;
-    const ImVec2 scene_size(ImGui::GetContentRegionAvail().x, ImGui::GetContentRegionAvail().y - timeline_h);
-    scene_->draw(scene_size);
-    ImGui::Spacing();
-    timeline_->draw();
-  }
-  ImGui::EndChild();
-
-  ImGui::SameLine(0, 0);
-  ImGui::InvisibleButton("##splitter", ImVec2(splitter_w, avail.y));
-  if (ImGui::IsItemActive()) right_width_ -= ImGui::GetIO().MouseDelta.x;
-  if (ImGui::IsItemHovered() || ImGui::IsItemActive()) ImGui::SetMouseCursor(ImGuiMouseCursor_ResizeEW);
-  ImGui::SameLine(0, 0);
-
-  ImGui::BeginChild("##right", ImVec2(0, avail.y), false);
-  {
-    const float coverage_h = std::min(300.0f, avail.y * 0.45f);
-    ImGui::BeginChild("##right_tabs", ImVec2(0, avail.y - coverage_h - 4), true);
-    if (ImGui::BeginTabBar("##layout_panels")) {
-      const auto flags_for = [this](const char* id) {
-        if (capture_panel_frames_ > 0 && capture_panel_ == id) return ImGuiTabItemFlags_SetSelected;
-        return ImGuiTabItemFlags_None;
-      };
-      if (ImGui::BeginTabItem("Inspector", nullptr, flags_for("inspector"))) {
-        inspector_->draw();
-        ImGui::EndTabItem();
-      }
-      if (ImGui::BeginTabItem("Heatmap", nullptr, flags_for("heatmap"))) {
-        heatmap_->draw();
-        ImGui::EndTabItem();
-      }
-      if (ImGui::BeginTabItem("Optimiser", nullptr, flags_for("optimiser"))) {
-        optimiser_->draw();
-        ImGui::EndTabItem();
-      }
-      ImGui::EndTabBar();
-      if (capture_panel_frames_ > 0) --capture_panel_frames_;
-    }
-    ImGui::EndChild();
-    ImGui::BeginChild("##coverage", ImVec2(0, 0), true);
-    coverage_->draw();
-    ImGui::EndChild();
-  }
-  ImGui::EndChild();
+  split_.draw([this] { draw_scene_side(); }, [this] { draw_panel_side(); });
   draw_dialogs();
   if (stats_frames_wanted_ > 0 && stats_frame_ > 0 && stats_frame_ <= stats_frames_wanted_ &&
       frame_start_.time_since_epoch().count() != 0) {

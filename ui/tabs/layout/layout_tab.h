@@ -5,7 +5,9 @@
 // child regions with a splitter), and owns the tab-level commands (file dialogs, shortcuts,
 // confirmations).
 #include <chrono>
+#include <filesystem>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -13,6 +15,7 @@
 #include "ui/scene/scene_renderer.h"
 #include "ui/tabs/tab.h"
 #include "ui/widgets/file_browser.h"
+#include "ui/widgets/split_panels.h"
 
 namespace lmc::ui {
 
@@ -41,6 +44,10 @@ class LayoutTab final : public Tab {
   void draw() override;
   std::string document_title() const override;
   bool has_unsaved_changes() const override;
+  std::string document_kind() const override { return "layout"; }
+  void handle_file_command(FileCommand command) override;
+  void open_document(const std::filesystem::path& path) override;
+  std::optional<std::filesystem::path> document_path() const override;
   int prepare_for_capture() override;
   bool busy_for_capture() const override;
 
@@ -51,8 +58,10 @@ class LayoutTab final : public Tab {
   void set_modals_enabled(bool on) { modals_enabled_ = on; }
 
  private:
-  enum class Pending { kNone, kNew, kOpen, kPreset };
+  enum class Pending { kNone, kNew, kOpen, kOpenPath, kPreset };
   void draw_toolbar();
+  void draw_scene_side();  // view buttons, the 3D scene and the timeline
+  void draw_panel_side();  // Inspector / Heatmap / Optimiser above Coverage
   void handle_shortcuts();
   void draw_dialogs();
   void request(Pending action, std::string preset = {});
@@ -93,9 +102,10 @@ class LayoutTab final : public Tab {
   std::unique_ptr<OptimiserPanel> optimiser_;
   FileBrowser browser_{"Layout file"};
   bool browser_saving_ = false;
-  float right_width_ = 470.0f;
+  SplitPanels split_{470.0f};
   Pending pending_ = Pending::kNone;
   std::string pending_preset_;
+  std::filesystem::path pending_path_;
   bool confirm_open_ = false;
   std::string error_message_;
   bool error_open_ = false;
