@@ -27,10 +27,8 @@ const char* recorder_state_name(RecorderState s) {
 }
 
 SessionPaths session_paths(const std::filesystem::path& dir, const std::string& trial) {
-  require_valid_trial_name(trial);
-  // The study's naming: LMC_<trial>.raw.txt for the controllers, <trial>.trc for Vicon, so the
-  // two files of one trial pair up by name (reference-algorithms.md §7).
-  return {dir / ("LMC_" + trial + ".raw.txt"), dir / ("LMC_" + trial + ".session.json"), dir / (trial + ".trc")};
+  require_valid_trial_name(trial);  // a name from outside becomes a file name only after this
+  return trial_files(dir, trial);
 }
 
 Recorder::Recorder(RecorderConfig config)

@@ -21,6 +21,7 @@
 
 #include "core/io/recorder_sidecar.h"
 #include "core/layout/layout.h"
+#include "core/session/trial_files.h"
 #include "devices/frame_consumer.h"
 #include "devices/record/byte_sink.h"
 #include "devices/spsc_queue.h"
@@ -40,11 +41,8 @@ struct RecorderConfig {
   nlohmann::json extra = nlohmann::json::object();  // e.g. the simulator's config and motion
 };
 
-struct SessionPaths {
-  std::filesystem::path recording;  // <dir>/LMC_<trial>.raw.txt
-  std::filesystem::path sidecar;    // <dir>/LMC_<trial>.session.json
-  std::filesystem::path truth_trc;  // <dir>/<trial>.trc (simulator ground truth / Vicon export)
-};
+// The trial's three files; the naming rule lives in one place (core/session/trial_files.h).
+using SessionPaths = TrialFiles;
 SessionPaths session_paths(const std::filesystem::path& dir, const std::string& trial);
 
 struct GapRecord {

@@ -4,9 +4,11 @@
 #include <filesystem>
 #include <string>
 
+#include "core/common/safe_name.h"
+
 namespace lmc::devices {
 
-inline constexpr size_t kMaxTrialNameLength = 64;
+inline constexpr size_t kMaxTrialNameLength = kMaxSafeNameLength;  // one rule: core/common/safe_name.h
 
 // Empty when fine, else what is wrong (for the operator).
 std::string validate_trial_name(const std::string& name);
