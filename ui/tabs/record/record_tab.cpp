@@ -103,8 +103,11 @@ class RecordTab final : public Tab {
     const auto& st = model_.state();
     ImGui::Text("Subject %s  ·  protocol %s  ·  %d of %zu trials accepted  ·  %s", st.subject().subject_id.c_str(),
                 st.protocol.name.c_str(), model_.accepted_count(), st.trials.size(), model_.dir().string().c_str());
-    ImGui::SameLine(ImGui::GetWindowWidth() - 90);
-    if (!model_.busy() && ImGui::SmallButton("Close")) model_.close();
+    // Close only between trials; without it the key hint below must keep its own line.
+    if (!model_.busy()) {
+      ImGui::SameLine(ImGui::GetWindowWidth() - 90);
+      if (ImGui::SmallButton("Close")) model_.close();
+    }
     ImGui::TextDisabled("Space: start / stop   Enter: accept a failed trial anyway   R: redo the last trial");
   }
 
