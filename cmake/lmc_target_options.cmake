@@ -55,6 +55,10 @@ endif()
 function(lmc_target_options target)
   cmake_parse_arguments(PARSE_ARGV 1 arg "" "PCH" "")
   lmc_compile_flags(${target})
+  # Batches of files compiled as one (unity build): Eigen's and the JSON library's templates are
+  # then instantiated once per batch instead of once per file, which is most of the compile time
+  # under ASan/UBSan. Names in anonymous namespaces must therefore be unique within a target.
+  set_target_properties(${target} PROPERTIES UNITY_BUILD ${LMC_UNITY} UNITY_BUILD_BATCH_SIZE 8)
   if(LMC_PRECOMPILE_HEADERS)
     if(NOT arg_PCH)
       set(arg_PCH lmc_pch)

@@ -5,22 +5,27 @@
 #include <cmath>
 #include <numbers>
 
+#include "core/common/angles.h"
 #include "core/common/error.h"
 
 namespace lmc {
 namespace {
 
-constexpr double kDeg = std::numbers::pi / 180.0;
-
-Eigen::Matrix3d rot_x(double deg) { return Eigen::AngleAxisd(deg * kDeg, Eigen::Vector3d::UnitX()).toRotationMatrix(); }
-Eigen::Matrix3d rot_y(double deg) { return Eigen::AngleAxisd(deg * kDeg, Eigen::Vector3d::UnitY()).toRotationMatrix(); }
-Eigen::Matrix3d rot_z(double deg) { return Eigen::AngleAxisd(deg * kDeg, Eigen::Vector3d::UnitZ()).toRotationMatrix(); }
+Eigen::Matrix3d rot_x(double deg) {
+  return Eigen::AngleAxisd(deg * kRadPerDeg, Eigen::Vector3d::UnitX()).toRotationMatrix();
+}
+Eigen::Matrix3d rot_y(double deg) {
+  return Eigen::AngleAxisd(deg * kRadPerDeg, Eigen::Vector3d::UnitY()).toRotationMatrix();
+}
+Eigen::Matrix3d rot_z(double deg) {
+  return Eigen::AngleAxisd(deg * kRadPerDeg, Eigen::Vector3d::UnitZ()).toRotationMatrix();
+}
 
 // Rotation A with A·(0, 0, −1) = r and A's y axis as close to +y as the yaw/pitch split allows:
 // A = Ry(yaw)·Rx(pitch), yaw = atan2(−r.x, −r.z), pitch = asin(r.y).
 Eigen::Matrix3d aim(const Eigen::Vector3d& r) {
-  const double yaw = std::atan2(-r.x(), -r.z()) / kDeg;
-  const double pitch = std::asin(std::clamp(r.y(), -1.0, 1.0)) / kDeg;
+  const double yaw = std::atan2(-r.x(), -r.z()) / kRadPerDeg;
+  const double pitch = std::asin(std::clamp(r.y(), -1.0, 1.0)) / kRadPerDeg;
   return rot_y(yaw) * rot_x(pitch);
 }
 

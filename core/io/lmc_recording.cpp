@@ -10,6 +10,7 @@
 #include <sstream>
 
 #include "core/common/error.h"
+#include "core/common/nan.h"
 #include "core/io/atomic_write.h"
 #include "core/io/text_fields.h"
 
@@ -25,7 +26,6 @@ constexpr int kSplitColumns = kMetaColumns + 3 * kNumHandPoints + kNumDigits;  /
 constexpr std::array<char, 3> kAxes = {'x', 'y', 'z'};
 // The study's rig has four controllers; the recorder supports up to eight (one LeapC connection).
 constexpr int kMaxDeviceId = 8;
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 // Plausibility limits (issue #14). A controller sees ~0.6 m; a coordinate beyond 10 m (in mm) is
 // a corrupt or hostile value, and 1e308 turned every fused frame into NaN downstream. Timestamps
 // beyond 2^53 µs (≈ 285 years) are no clock reading, and would overflow the resampler's arithmetic.
@@ -62,27 +62,12 @@ std::vector<std::string> split_column_names() {
   return names;
 }
 
-// A short, printable excerpt of a field for error messages.
-std::string quote(std::string_view s) {
-  std::string out = "'";
-  const size_t n = std::min<size_t>(s.size(), 40);
-  for (size_t i = 0; i < n; ++i) {
-    const auto c = static_cast<unsigned char>(s[i]);
-    out += (c < 0x20 || c == 0x7F) ? '?' : static_cast<char>(c);
-  }
-  if (s.size() > n) out += "...";
-  return out + "'";
-}
-
-[[noreturn]] void fail(const std::string& source, long line, long column, const std::string& what) {
-  throw Error(ErrorLocation{source, line, column}, what);
-}
-
 HeaderInfo read_header(const text::Line& line, const std::string& source) {
   HeaderInfo info;
   const std::string_view t = line.text;
   if (text::is_blank(t)) {
-    fail(source, line.number, 1, "first line is empty: expected the header, starting with 'Device ID'");
+    text::fail_at(source, line.number, 1,
+                  "first line is empty: expected the header, starting with 'Device ID'");
   }
   std::vector<text::Field> fields;
   if (t.find('\t') != std::string_view::npos) {
@@ -90,8 +75,9 @@ HeaderInfo read_header(const text::Line& line, const std::string& source) {
     text::split_fields(t, '\t', fields);
     while (!fields.empty() && text::is_blank(fields.back().text)) fields.pop_back();
     if (text::normalise_name(fields.front().text) != "device id") {
-      fail(source, line.number, 1,
-           "not an LMC recording: the header must start with 'Device ID', found " + quote(fields.front().text));
+      text::fail_at(source, line.number, 1,
+                    "not an LMC recording: the header must start with 'Device ID', found " +
+                        text::quoted_excerpt(fields.front().text));
     }
     std::vector<std::string> expected;
     if (fields.size() == static_cast<size_t>(kPointColumns)) {
@@ -101,15 +87,17 @@ HeaderInfo read_header(const text::Line& line, const std::string& source) {
       expected = split_column_names();
       info.style = ColumnStyle::kSplitNumbers;
     } else {
-      fail(source, line.number, 0,
-           "header has " + std::to_string(fields.size()) + " columns; expected " + std::to_string(kPointColumns) +
-               " (raw or resampled recording) or " + std::to_string(kSplitColumns) + " (raytraced)");
+      text::fail_at(source, line.number, 0,
+                    "header has " + std::to_string(fields.size()) + " columns; expected " +
+                        std::to_string(kPointColumns) + " (raw or resampled recording) or " +
+                        std::to_string(kSplitColumns) + " (raytraced)");
     }
     for (size_t i = 0; i < fields.size(); ++i) {
       if (text::normalise_name(fields[i].text) != text::normalise_name(expected[i])) {
-        fail(source, line.number, fields[i].column,
-             "header column " + std::to_string(i + 1) + " is " + quote(fields[i].text) + ", expected '" +
-                 expected[i] + "'");
+        text::fail_at(source, line.number, fields[i].column,
+                      "header column " + std::to_string(i + 1) + " is " +
+                          text::quoted_excerpt(fields[i].text) + ", expected '" + expected[i] +
+                          "'");
       }
     }
     return info;
@@ -128,19 +116,21 @@ HeaderInfo read_header(const text::Line& line, const std::string& source) {
   }
   if (fields.size() < 2 || text::normalise_name(fields[0].text) != "device" ||
       text::normalise_name(fields[1].text) != "id") {
-    fail(source, line.number, fields.empty() ? 1 : fields[0].column,
-         "not an LMC recording: the header must start with 'Device ID'");
+    text::fail_at(source, line.number, fields.empty() ? 1 : fields[0].column,
+                  "not an LMC recording: the header must start with 'Device ID'");
   }
   for (size_t i = 0; i < std::min(fields.size(), words.size()); ++i) {
     if (text::normalise_name(fields[i].text) != words[i]) {
-      fail(source, line.number, fields[i].column,
-           "unexpected header word " + quote(fields[i].text) + ", expected '" + words[i] + "'");
+      text::fail_at(source, line.number, fields[i].column,
+                    "unexpected header word " + text::quoted_excerpt(fields[i].text) +
+                        ", expected '" + words[i] + "'");
     }
   }
   if (fields.size() != words.size()) {
-    fail(source, line.number, 0,
-         "space-separated header has " + std::to_string(fields.size()) + " words; a raytraced recording has " +
-             std::to_string(words.size()) + " (" + std::to_string(kSplitColumns) + " columns)");
+    text::fail_at(source, line.number, 0,
+                  "space-separated header has " + std::to_string(fields.size()) +
+                      " words; a raytraced recording has " + std::to_string(words.size()) + " (" +
+                      std::to_string(kSplitColumns) + " columns)");
   }
   return info;
 }
@@ -200,23 +190,30 @@ class RowParser {
                                : "99 (4 bookkeeping, 90 coordinates, 5 visibility labels)");
     }
     const auto id = text::parse_int(fields_[0].text);
-    if (!id) return RowFailure{fields_[0].column, "Device ID is not an integer: " + quote(fields_[0].text)};
+    if (!id)
+      return RowFailure{fields_[0].column,
+                        "Device ID is not an integer: " + text::quoted_excerpt(fields_[0].text)};
     if (*id < 1 || *id > kMaxDeviceId) {
       return RowFailure{fields_[0].column,
                         "Device ID " + std::to_string(*id) + " is outside 1.." + std::to_string(kMaxDeviceId)};
     }
     const auto frame_id = text::parse_int(fields_[1].text);
-    if (!frame_id) return RowFailure{fields_[1].column, "Frame ID is not an integer: " + quote(fields_[1].text)};
+    if (!frame_id)
+      return RowFailure{fields_[1].column,
+                        "Frame ID is not an integer: " + text::quoted_excerpt(fields_[1].text)};
     const auto rate = text::parse_double(fields_[2].text);
     if (!rate || !std::isfinite(*rate) || *rate < 0.0) {
-      return RowFailure{fields_[2].column,
-                        "Frame Rate is not a finite non-negative number: " + quote(fields_[2].text)};
+      return RowFailure{fields_[2].column, "Frame Rate is not a finite non-negative number: " +
+                                               text::quoted_excerpt(fields_[2].text)};
     }
     const auto ts = text::parse_int(fields_[3].text);
-    if (!ts) return RowFailure{fields_[3].column, "Time Stamp is not an integer (µs): " + quote(fields_[3].text)};
+    if (!ts)
+      return RowFailure{fields_[3].column, "Time Stamp is not an integer (µs): " +
+                                               text::quoted_excerpt(fields_[3].text)};
     if (*ts > kMaxAbsTimestampUs || *ts < -kMaxAbsTimestampUs) {
-      return RowFailure{fields_[3].column, "Time Stamp " + quote(fields_[3].text) +
-                                               " µs is implausible (beyond ±2^53 µs, about 285 years)"};
+      return RowFailure{fields_[3].column,
+                        "Time Stamp " + text::quoted_excerpt(fields_[3].text) +
+                            " µs is implausible (beyond ±2^53 µs, about 285 years)"};
     }
     frame.device_id = static_cast<int>(*id);
     frame.frame_id = *frame_id;
@@ -245,13 +242,14 @@ class RowParser {
         if (last != (comma == std::string_view::npos)) {
           return RowFailure{field.column, "point '" + std::string(hand_point_name(p)) +
                                               "' must be 3 comma-separated numbers x,y,z, found " +
-                                              quote(field.text)};
+                                              text::quoted_excerpt(field.text)};
         }
         const std::string_view part = last ? rest : rest.substr(0, comma);
         const auto v = text::parse_double(part);
         if (!v) {
-          return RowFailure{column, "point '" + std::string(hand_point_name(p)) + "' " + kAxes[static_cast<size_t>(a)] +
-                                        " is not a number: " + quote(part)};
+          return RowFailure{column, "point '" + std::string(hand_point_name(p)) + "' " +
+                                        kAxes[static_cast<size_t>(a)] +
+                                        " is not a number: " + text::quoted_excerpt(part)};
         }
         if (auto bad = implausible_coordinate(*v, column,
                                               "point '" + std::string(hand_point_name(p)) + "' " + kAxes[static_cast<size_t>(a)],
@@ -279,9 +277,10 @@ class RowParser {
       const text::Field& field = fields_[static_cast<size_t>(kMetaColumns + c)];
       const auto v = text::parse_double(field.text);
       if (!v) {
-        return RowFailure{field.column, "'" + std::string(hand_point_name(c / 3)) + "." +
-                                            kAxes[static_cast<size_t>(c % 3)] + "' is not a number: " +
-                                            quote(field.text)};
+        return RowFailure{field.column,
+                          "'" + std::string(hand_point_name(c / 3)) + "." +
+                              kAxes[static_cast<size_t>(c % 3)] +
+                              "' is not a number: " + text::quoted_excerpt(field.text)};
       }
       if (auto bad = implausible_coordinate(*v, field.column,
                                             "'" + std::string(hand_point_name(c / 3)) + "." + kAxes[static_cast<size_t>(c % 3)] + "'",
@@ -296,7 +295,8 @@ class RowParser {
       const auto v = text::parse_double(field.text);
       if (!v || (*v != 1.0 && *v != 0.0 && *v != -1.0)) {
         return RowFailure{field.column, "visibility_" + std::string(digit_name(d)) +
-                                            " must be 1, 0 or -1, found " + quote(field.text)};
+                                            " must be 1, 0 or -1, found " +
+                                            text::quoted_excerpt(field.text)};
       }
       row.labels[static_cast<size_t>(d)] = static_cast<std::int8_t>(*v);
     }
@@ -309,10 +309,12 @@ class RowParser {
   static std::optional<RowFailure> implausible_coordinate(double v, long column, const std::string& what,
                                                           std::string_view text) {
     if (std::isinf(v)) {
-      return RowFailure{column, what + " is infinite: " + quote(text) + " (a missing coordinate is written nan)"};
+      return RowFailure{column, what + " is infinite: " + text::quoted_excerpt(text) +
+                                    " (a missing coordinate is written nan)"};
     }
     if (std::isfinite(v) && std::fabs(v) > kMaxAbsCoordinateMm) {
-      return RowFailure{column, what + " = " + quote(text) + " mm is implausible (more than " +
+      return RowFailure{column, what + " = " + text::quoted_excerpt(text) +
+                                    " mm is implausible (more than " +
                                     std::to_string(static_cast<int>(kMaxAbsCoordinateMm / 1000.0)) +
                                     " m from the controller)"};
     }
@@ -369,7 +371,9 @@ std::vector<int> LmcRecording::device_ids() const {
 
 LmcRecording parse_lmc_recording(std::istream& in, const std::string& source_name) {
   const std::string content = text::read_stream_bytes(in);
-  if (text::is_blank(content)) fail(source_name, 1, 0, "empty file: expected an LMC recording header ('Device ID …')");
+  if (text::is_blank(content))
+    text::fail_at(source_name, 1, 0,
+                  "empty file: expected an LMC recording header ('Device ID …')");
   text::require_text(content, source_name);
   const auto lines = text::split_lines(content);
   const HeaderInfo header = read_header(lines.front(), source_name);
@@ -403,7 +407,7 @@ LmcRecording parse_lmc_recording(std::istream& in, const std::string& source_nam
                                               " complete rows before it"));
       break;
     }
-    if (failure) fail(source_name, line.number, failure->column, failure->message);
+    if (failure) text::fail_at(source_name, line.number, failure->column, failure->message);
     lines_end_with_separator = lines_end_with_separator && ends_with_sep;
     any_short_no_hand = any_short_no_hand || row.short_no_hand;
     any_all_nan = any_all_nan || row.all_nan;

@@ -169,7 +169,7 @@ json disconnect_to_json(const SidecarDisconnect& d) {
   return j;
 }
 
-json device_to_json(const SidecarDevice& d) {
+json sidecar_device_to_json(const SidecarDevice& d) {
   json j = with_unknown(d.unknown);
   j["device_id"] = d.device_id;
   j["slot"] = d.slot;
@@ -248,7 +248,7 @@ json recorder_sidecar_to_json(const RecorderSidecar& s) {
   j["layout"] = s.layout;
   j["serial_to_slot"] = serial_to_slot_json(s.serial_to_slot);
   j["devices"] = json::array();
-  for (const auto& d : s.devices) j["devices"].push_back(device_to_json(d));
+  for (const auto& d : s.devices) j["devices"].push_back(sidecar_device_to_json(d));
   j["frames_written"] = s.frames_written;
   j["frames_dropped"] = s.frames_dropped;
   j["vicon_packets"] = json::array();

@@ -204,4 +204,19 @@ std::string normalise_name(std::string_view s) {
   return out;
 }
 
+std::string quoted_excerpt(std::string_view s) {
+  std::string out = "'";
+  const size_t n = std::min<size_t>(s.size(), 40);
+  for (size_t i = 0; i < n; ++i) {
+    const auto c = static_cast<unsigned char>(s[i]);
+    out += (c < 0x20 || c == 0x7F) ? '?' : static_cast<char>(c);
+  }
+  if (s.size() > n) out += "...";
+  return out + "'";
+}
+
+void fail_at(const std::string& source, long line, long column, const std::string& what) {
+  throw Error(ErrorLocation{source, line, column}, what);
+}
+
 }  // namespace lmc::text

@@ -37,6 +37,14 @@ void require_text(std::string_view content, const std::string& source_name);
 
 std::vector<Line> split_lines(std::string_view content);
 
+// A short, printable excerpt of a field for error messages: at most 40 characters, control
+// characters shown as '?', in single quotes.
+std::string quoted_excerpt(std::string_view s);
+
+// Throws lmc::Error at file:line:column; the one way the text readers report a bad field.
+[[noreturn]] void fail_at(const std::string& source, long line, long column,
+                          const std::string& what);
+
 // Splits at every `sep` (empty fields kept).
 void split_fields(std::string_view line, char sep, std::vector<Field>& out);
 // Splits at runs of spaces/tabs (no empty fields).

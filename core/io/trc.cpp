@@ -9,29 +9,14 @@
 #include <sstream>
 
 #include "core/common/error.h"
+#include "core/common/nan.h"
 #include "core/io/atomic_write.h"
 #include "core/io/text_fields.h"
 
 namespace lmc {
 namespace {
 
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 constexpr int kHeaderLines = 5;  // PathFileType, keys, values, marker names, X1 Y1 Z1 … (field-notes §4.2)
-
-[[noreturn]] void fail(const std::string& source, long line, long column, const std::string& what) {
-  throw Error(ErrorLocation{source, line, column}, what);
-}
-
-std::string quote(std::string_view s) {
-  std::string out = "'";
-  const size_t n = std::min<size_t>(s.size(), 40);
-  for (size_t i = 0; i < n; ++i) {
-    const auto c = static_cast<unsigned char>(s[i]);
-    out += (c < 0x20 || c == 0x7F) ? '?' : static_cast<char>(c);
-  }
-  if (s.size() > n) out += "...";
-  return out + "'";
-}
 
 bool known_units(const std::string& units) { return units == "mm" || units == "m"; }
 
@@ -47,7 +32,8 @@ std::map<std::string, text::Field> header_values(const text::Line& keys, const t
   for (size_t i = 0; i < k.size(); ++i) {
     const std::string key(text::trim(k[i].text));
     if (i >= v.size() || text::is_blank(v[i].text)) {
-      fail(source, values.number, i < v.size() ? v[i].column : 0, "no value for header key '" + key + "'");
+      text::fail_at(source, values.number, i < v.size() ? v[i].column : 0,
+                    "no value for header key '" + key + "'");
     }
     out[key] = text::Field{text::trim(v[i].text), v[i].column};
   }
@@ -74,20 +60,22 @@ void TrcData::to_millimetres() {
 
 TrcData parse_trc(std::istream& in, const std::string& source_name) {
   const std::string content = text::read_stream_bytes(in);
-  if (text::is_blank(content)) fail(source_name, 1, 0, "empty file: expected a TRC header ('PathFileType …')");
+  if (text::is_blank(content))
+    text::fail_at(source_name, 1, 0, "empty file: expected a TRC header ('PathFileType …')");
   text::require_text(content, source_name);
   const auto lines = text::split_lines(content);
 
   std::vector<text::Field> fields;
   text::split_fields(lines[0].text, '\t', fields);
   if (text::trim(fields[0].text) != "PathFileType") {
-    fail(source_name, 1, 1, "not a TRC file: the first line must start with 'PathFileType', found " +
-                                quote(fields[0].text));
+    text::fail_at(source_name, 1, 1,
+                  "not a TRC file: the first line must start with 'PathFileType', found " +
+                      text::quoted_excerpt(fields[0].text));
   }
   if (lines.size() < static_cast<size_t>(kHeaderLines)) {
-    fail(source_name, static_cast<long>(lines.size()), 0,
-         "TRC header is incomplete: expected " + std::to_string(kHeaderLines) + " header lines, found " +
-             std::to_string(lines.size()));
+    text::fail_at(source_name, static_cast<long>(lines.size()), 0,
+                  "TRC header is incomplete: expected " + std::to_string(kHeaderLines) +
+                      " header lines, found " + std::to_string(lines.size()));
   }
 
   TrcData trc;
@@ -95,22 +83,25 @@ TrcData parse_trc(std::istream& in, const std::string& source_name) {
   const auto header = header_values(lines[1], values_line, source_name);
   const auto require = [&](const char* key) -> const text::Field& {
     const auto it = header.find(key);
-    if (it == header.end()) fail(source_name, 2, 0, std::string("TRC header has no '") + key + "' key");
+    if (it == header.end())
+      text::fail_at(source_name, 2, 0, std::string("TRC header has no '") + key + "' key");
     return it->second;
   };
   const auto rate_of = [&](const text::Field& f, const char* key) {
     const auto v = text::parse_double(f.text);
     if (!v || !std::isfinite(*v) || *v <= 0.0) {
-      fail(source_name, values_line.number, f.column,
-           std::string(key) + " must be a positive number, found " + quote(f.text));
+      text::fail_at(
+          source_name, values_line.number, f.column,
+          std::string(key) + " must be a positive number, found " + text::quoted_excerpt(f.text));
     }
     return *v;
   };
   const auto int_of = [&](const text::Field& f, const char* key) {
     const auto v = text::parse_int(f.text);
     if (!v || *v < 0 || *v > std::numeric_limits<int>::max()) {
-      fail(source_name, values_line.number, f.column,
-           std::string(key) + " must be a non-negative integer, found " + quote(f.text));
+      text::fail_at(source_name, values_line.number, f.column,
+                    std::string(key) + " must be a non-negative integer, found " +
+                        text::quoted_excerpt(f.text));
     }
     return static_cast<int>(*v);
   };
@@ -121,8 +112,8 @@ TrcData parse_trc(std::istream& in, const std::string& source_name) {
   const text::Field& units = require("Units");
   trc.units = std::string(units.text);
   if (!known_units(trc.units)) {
-    fail(source_name, values_line.number, units.column,
-         "unknown units " + quote(units.text) + " (expected mm or m)");
+    text::fail_at(source_name, values_line.number, units.column,
+                  "unknown units " + text::quoted_excerpt(units.text) + " (expected mm or m)");
   }
   const int header_markers = int_of(require("NumMarkers"), "NumMarkers");
   const auto nf = header.find("NumFrames");
@@ -136,13 +127,15 @@ TrcData parse_trc(std::istream& in, const std::string& source_name) {
   text::split_fields(names_line.text, '\t', fields);
   if (fields.size() < 2 || text::normalise_name(fields[0].text) != "frame#" ||
       text::normalise_name(fields[1].text) != "time") {
-    fail(source_name, names_line.number, 1, "expected the column line 'Frame#<tab>Time<tab><markers…>'");
+    text::fail_at(source_name, names_line.number, 1,
+                  "expected the column line 'Frame#<tab>Time<tab><markers…>'");
   }
   for (size_t i = 2; i < fields.size(); ++i) {
     if (text::is_blank(fields[i].text)) continue;
     if ((i - 2) % 3 != 0) {
-      fail(source_name, names_line.number, fields[i].column,
-           "marker name " + quote(fields[i].text) + " is not at the start of an X/Y/Z column triple");
+      text::fail_at(source_name, names_line.number, fields[i].column,
+                    "marker name " + text::quoted_excerpt(fields[i].text) +
+                        " is not at the start of an X/Y/Z column triple");
     }
     trc.marker_names.emplace_back(text::trim(fields[i].text));
   }
@@ -156,8 +149,8 @@ TrcData parse_trc(std::istream& in, const std::string& source_name) {
   // Line 5: two empty cells, then X1 Y1 Z1 X2 …
   text::split_fields(lines[4].text, '\t', fields);
   if (markers > 0 && (fields.size() < 3 || text::normalise_name(fields[2].text) != "x1")) {
-    fail(source_name, lines[4].number, fields.size() >= 3 ? fields[2].column : 0,
-         "expected the coordinate line '<tab><tab>X1<tab>Y1<tab>Z1…'");
+    text::fail_at(source_name, lines[4].number, fields.size() >= 3 ? fields[2].column : 0,
+                  "expected the coordinate line '<tab><tab>X1<tab>Y1<tab>Z1…'");
   }
 
   const size_t expected = 2 + 3 * static_cast<size_t>(markers);
@@ -178,16 +171,21 @@ TrcData parse_trc(std::istream& in, const std::string& source_name) {
                 std::to_string(trc.positions.size()) + " complete rows before it"));
         break;
       }
-      fail(source_name, line.number,
-           fields.size() > expected ? fields[expected].column : static_cast<long>(line.text.size()) + 1,
-           "row has " + std::to_string(fields.size()) + " fields; expected " + std::to_string(expected) +
-               " (Frame#, Time and 3 per marker for " + std::to_string(markers) + " markers)");
+      text::fail_at(source_name, line.number,
+                    fields.size() > expected ? fields[expected].column
+                                             : static_cast<long>(line.text.size()) + 1,
+                    "row has " + std::to_string(fields.size()) + " fields; expected " +
+                        std::to_string(expected) + " (Frame#, Time and 3 per marker for " +
+                        std::to_string(markers) + " markers)");
     }
     const auto frame = text::parse_int(fields[0].text);
-    if (!frame) fail(source_name, line.number, fields[0].column, "Frame# is not an integer: " + quote(fields[0].text));
+    if (!frame)
+      text::fail_at(source_name, line.number, fields[0].column,
+                    "Frame# is not an integer: " + text::quoted_excerpt(fields[0].text));
     const auto time = text::parse_double(fields[1].text);
     if (!time || !std::isfinite(*time)) {
-      fail(source_name, line.number, fields[1].column, "Time is not a finite number: " + quote(fields[1].text));
+      text::fail_at(source_name, line.number, fields[1].column,
+                    "Time is not a finite number: " + text::quoted_excerpt(fields[1].text));
     }
     std::vector<Eigen::Vector3d> row(static_cast<size_t>(markers));
     const double max_coordinate = trc.units == "m" ? 100.0 : 100000.0;
@@ -203,13 +201,18 @@ TrcData parse_trc(std::istream& in, const std::string& source_name) {
         }
         const auto v = text::parse_double(cell.text);
         const std::string what = "marker '" + trc.marker_names[static_cast<size_t>(m)] + "' " + static_cast<char>('X' + a);
-        if (!v) fail(source_name, line.number, cell.column, what + " is not a number: " + quote(cell.text));
+        if (!v)
+          text::fail_at(source_name, line.number, cell.column,
+                        what + " is not a number: " + text::quoted_excerpt(cell.text));
         // Issue #14: infinity is no gap (a gap is blank or NaN), and a magnitude no capture volume
         // holds (1e308) would turn every later computation into NaN or overflow.
-        if (std::isinf(*v)) fail(source_name, line.number, cell.column, what + " is infinite: " + quote(cell.text));
+        if (std::isinf(*v))
+          text::fail_at(source_name, line.number, cell.column,
+                        what + " is infinite: " + text::quoted_excerpt(cell.text));
         if (std::fabs(*v) > max_coordinate) {
-          fail(source_name, line.number, cell.column,
-               what + " = " + quote(cell.text) + " " + trc.units + " is implausible (more than 100 m from the lab origin)");
+          text::fail_at(source_name, line.number, cell.column,
+                        what + " = " + text::quoted_excerpt(cell.text) + " " + trc.units +
+                            " is implausible (more than 100 m from the lab origin)");
         }
         p[a] = *v;
         missing += std::isnan(*v) ? 1 : 0;

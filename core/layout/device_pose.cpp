@@ -4,10 +4,11 @@
 #include <cstring>
 #include <numbers>
 
+#include "core/common/angles.h"
+
 namespace lmc {
 
 namespace {
-constexpr double kDegToRad = std::numbers::pi / 180.0;
 constexpr const char* kParamNames[kNumPoseParams] = {"x", "y", "z", "rx", "ry", "rz"};
 }  // namespace
 
@@ -36,9 +37,9 @@ void DevicePose::set(int k, double value) {
 Eigen::Matrix3d DevicePose::rotation() const {
   using Eigen::AngleAxisd;
   using Eigen::Vector3d;
-  return (AngleAxisd(rz_deg * kDegToRad, Vector3d::UnitZ()) *
-          AngleAxisd(ry_deg * kDegToRad, Vector3d::UnitY()) *
-          AngleAxisd(rx_deg * kDegToRad, Vector3d::UnitX()))
+  return (AngleAxisd(rz_deg * kRadPerDeg, Vector3d::UnitZ()) *
+          AngleAxisd(ry_deg * kRadPerDeg, Vector3d::UnitY()) *
+          AngleAxisd(rx_deg * kRadPerDeg, Vector3d::UnitX()))
       .toRotationMatrix();
 }
 

@@ -6,7 +6,7 @@
 namespace lmc {
 namespace {
 
-std::string slot_name(const std::vector<std::string>& slots, int d) {
+std::string device_label(const std::vector<std::string>& slots, int d) {
   if (d < static_cast<int>(slots.size())) return slots[static_cast<size_t>(d)];
   return "device " + std::to_string(d + 1);
 }
@@ -22,7 +22,7 @@ std::string count8(double v) {
   std::snprintf(buf, sizeof buf, "%8.0f", v);
   return buf;
 }
-std::string percent(double v) {
+std::string percent_cell(double v) {
   char buf[64];
   std::snprintf(buf, sizeof buf, "%6.2f%%", v);
   return buf;
@@ -44,12 +44,12 @@ std::string format_coverage(const Coverage& cov, const std::vector<std::string>&
     const double frac = cov.frames > 0 ? static_cast<double>(cov.c[i]) / static_cast<double>(cov.frames) : 0.0;
     const int bar = static_cast<int>(frac * 40.0 + 0.5);
     out += "    c_" + std::to_string(i) + " = " + count8(static_cast<double>(cov.c[i])) + "  " +
-           percent(100.0 * frac) + "  " + std::string(static_cast<size_t>(bar), '#') + "\n";
+           percent_cell(100.0 * frac) + "  " + std::string(static_cast<size_t>(bar), '#') + "\n";
   }
   out += "  coverage (fraction of frames in which the device sees the finger):\n";
   out += "    device          thumb   index  middle    ring   pinky\n";
   for (int d = 0; d < cov.devices; ++d) {
-    std::string name = slot_name(slots, d);
+    std::string name = device_label(slots, d);
     name.resize(std::max<size_t>(name.size(), 12), ' ');
     out += "    " + name;
     for (int k = 0; k < kNumDigits; ++k) out += frac3(cov.device_finger_fraction(d, k));
@@ -70,7 +70,7 @@ nlohmann::json coverage_to_json(const Coverage& cov, const std::vector<std::stri
   nlohmann::json devices = nlohmann::json::array();
   for (int d = 0; d < cov.devices; ++d) {
     nlohmann::json e;
-    e["slot"] = slot_name(slots, d);
+    e["slot"] = device_label(slots, d);
     for (int k = 0; k < kNumDigits; ++k) e[std::string(digit_name(k))] = cov.device_finger_fraction(d, k);
     devices.push_back(e);
   }

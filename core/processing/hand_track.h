@@ -10,11 +10,10 @@
 #include <limits>
 #include <vector>
 
+#include "core/common/nan.h"
 #include "core/hand/hand_frame.h"
 
 namespace lmc {
-
-inline constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 inline bool is_finite(const Vec3& v) { return std::isfinite(v.x()) && std::isfinite(v.y()) && std::isfinite(v.z()); }
 

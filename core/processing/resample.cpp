@@ -32,7 +32,9 @@ bool same_points(const HandFrame& a, const HandFrame& b) {
   return true;
 }
 
-std::string slot_name(int device_id) { return "LMC" + std::to_string(device_id); }
+std::string lmc_label(int device_id) {
+  return "LMC" + std::to_string(device_id);
+}
 
 // Timestamps after re-basing stay within ±2^62 µs, so the difference of any two fits in int64.
 constexpr std::int64_t kMaxRebasedUs = std::int64_t{1} << 62;
@@ -109,8 +111,9 @@ void check_plausible_span(const LmcRecording& recording, const std::vector<std::
     msg << "the grid start lies far before the first sample";
     throw Error("resample: " + msg.str());
   }
-  msg << slot_name(worst->frame->device_id) << "'s timestamp " << worst->frame->timestamp_us << " µs jumps " << worst_s
-      << " s past the sample before it; refusing to build a " << span_s << " s grid";
+  msg << lmc_label(worst->frame->device_id) << "'s timestamp " << worst->frame->timestamp_us
+      << " µs jumps " << worst_s << " s past the sample before it; refusing to build a " << span_s
+      << " s grid";
   place.fail(worst->row, msg.str());
 }
 
@@ -186,7 +189,7 @@ std::vector<std::string> ResampleReport::summary_lines() const {
     const std::string gap_text = "gap(s) longer than the interpolation limit of " +
                                  std::to_string(static_cast<long>(std::lround(d.gap_limit_ms))) + " ms (NaN there)";
     part(d.gaps, gap_text.c_str());
-    if (any) lines.push_back(slot_name(d.device_id) + ": " + s.str());
+    if (any) lines.push_back(lmc_label(d.device_id) + ": " + s.str());
   }
   return lines;
 }
@@ -230,16 +233,18 @@ GridTrial resample_recording(const LmcRecording& recording, const ResampleOption
         rebase = add_checked(rebase, shift, place, row);
         t = add_checked(t, shift, place, row);
         ++st.clock_resets;
-        add_issue(report, listed,
-                  {StreamIssueKind::kClockReset, id, row, f.timestamp_us,
-                   slot_name(id) + " row " + std::to_string(row) + ": clock went back by " +
-                       std::to_string((prev - (t - shift)) / 1000) + " ms; stream split and re-based"});
+        add_issue(
+            report, listed,
+            {StreamIssueKind::kClockReset, id, row, f.timestamp_us,
+             lmc_label(id) + " row " + std::to_string(row) + ": clock went back by " +
+                 std::to_string((prev - (t - shift)) / 1000) + " ms; stream split and re-based"});
       } else if (!first && t < running_max) {
         ++st.out_of_order;
-        add_issue(report, listed,
-                  {StreamIssueKind::kOutOfOrder, id, row, f.timestamp_us,
-                   slot_name(id) + " row " + std::to_string(row) + ": timestamp " + std::to_string(f.timestamp_us) +
-                       " is earlier than a previous row's; sorted"});
+        add_issue(
+            report, listed,
+            {StreamIssueKind::kOutOfOrder, id, row, f.timestamp_us,
+             lmc_label(id) + " row " + std::to_string(row) + ": timestamp " +
+                 std::to_string(f.timestamp_us) + " is earlier than a previous row's; sorted"});
       }
       if (!first && t > prev) steps.push_back(t - prev);
       running_max = first ? t : std::max(running_max, t);
@@ -256,11 +261,11 @@ GridTrial resample_recording(const LmcRecording& recording, const ResampleOption
         const bool same = same_points(*kept.back().frame, *smp.frame);
         ++st.duplicates;
         add_issue(report, listed,
-                  {same ? StreamIssueKind::kDuplicate : StreamIssueKind::kConflictingDuplicate, id, smp.row,
-                   smp.frame->timestamp_us,
-                   slot_name(id) + " row " + std::to_string(smp.row) + ": duplicate timestamp " +
-                       std::to_string(smp.frame->timestamp_us) + (same ? "" : " with different data") +
-                       "; row dropped"});
+                  {same ? StreamIssueKind::kDuplicate : StreamIssueKind::kConflictingDuplicate, id,
+                   smp.row, smp.frame->timestamp_us,
+                   lmc_label(id) + " row " + std::to_string(smp.row) + ": duplicate timestamp " +
+                       std::to_string(smp.frame->timestamp_us) +
+                       (same ? "" : " with different data") + "; row dropped"});
         continue;
       }
       kept.push_back(smp);
@@ -336,8 +341,9 @@ GridTrial resample_recording(const LmcRecording& recording, const ResampleOption
         ++st.gaps;
         add_issue(report, listed,
                   {StreamIssueKind::kGap, ids[di], s[end].row, s[end].frame->timestamp_us,
-                   slot_name(ids[di]) + " row " + std::to_string(s[end].row) + ": " +
-                       std::to_string((s[end].t_us - s[end - 1].t_us) / 1000) + " ms without a sample; not interpolated"});
+                   lmc_label(ids[di]) + " row " + std::to_string(s[end].row) + ": " +
+                       std::to_string((s[end].t_us - s[end - 1].t_us) / 1000) +
+                       " ms without a sample; not interpolated"});
       }
       if (first_hand < 0) first_hand = s[k].t_us;
       last_hand = s[end - 1].t_us;
@@ -412,8 +418,9 @@ GridTrial grid_from_resampled(const LmcRecording& recording, std::vector<std::st
       for (int i = 0; i < kNumHandPoints; ++i) dev.track.at(static_cast<int>(f), i) = hf.point(i);
     }
     if (rows[di].size() < n && warnings != nullptr) {
-      warnings->push_back(slot_name(ids[di]) + " has " + std::to_string(rows[di].size()) + " rows, others up to " +
-                          std::to_string(n) + "; its missing frames are NaN");
+      warnings->push_back(lmc_label(ids[di]) + " has " + std::to_string(rows[di].size()) +
+                          " rows, others up to " + std::to_string(n) +
+                          "; its missing frames are NaN");
     }
     grid.devices.push_back(std::move(dev));
   }

@@ -38,7 +38,7 @@ std::string fixed(double v, int decimals) {
 std::string secs(double s) {
   return fixed(s, s < 1.0 ? 2 : 1) + " s";
 }
-std::string percent(double fraction) {
+std::string percent_text(double fraction) {
   return fixed(100.0 * fraction, 0) + " %";
 }
 std::string degrees(double deg) {
@@ -55,7 +55,7 @@ struct Reasons {
   void warn(std::string r) { warns.push_back(std::move(r)); }
 };
 
-std::string slot_name(const Layout& layout, int device_id) {
+std::string layout_slot_name(const Layout& layout, int device_id) {
   if (device_id >= 1 && device_id <= layout.device_count()) {
     const std::string& slot = layout.devices[static_cast<size_t>(device_id - 1)].slot;
     if (!slot.empty()) return slot;
@@ -109,7 +109,7 @@ void judge_device(const DeviceQuality& q, const SidecarDevice* sd, const Quality
   // One controller losing the hand is often the layout at work (a vertical hand edge-on to a
   // controller): another may have seen it, and the hand-absent check below judges the whole.
   if (q.hand_fraction < t.warn_min_hand_fraction) {
-    reasons.warn(s + " saw the hand in " + percent(q.hand_fraction) + " of its frames");
+    reasons.warn(s + " saw the hand in " + percent_text(q.hand_fraction) + " of its frames");
   } else if (q.longest_no_hand_s >= t.fail_max_gap_s) {  // reported frames, no hand
     reasons.warn(s + " saw no hand for " + secs(q.longest_no_hand_s));
   }
@@ -249,7 +249,7 @@ QualityReport assess_trial(const QualityInputs& in) {
   const std::vector<detail::ClockJump> jumps = detail::clock_jumps(rec, kClockResetUs);
   const bool one_clock = jumps.empty();
   for (const detail::ClockJump& jump : jumps) {
-    reasons.fail(slot_name(layout, jump.device_id) + "'s clock jumped back " +
+    reasons.fail(layout_slot_name(layout, jump.device_id) + "'s clock jumped back " +
                  secs(static_cast<double>(jump.back_us) * 1e-6) +
                  " (the tracking service restarted?)");
   }
@@ -262,7 +262,7 @@ QualityReport assess_trial(const QualityInputs& in) {
     DeviceQuality q = it != rows.end() ? detail::device_stream_quality(*it, first_us, last_us)
                                        : detail::device_stream_quality(detail::DeviceRows{id, {}},
                                                                        first_us, last_us);
-    q.slot = slot_name(layout, id);
+    q.slot = layout_slot_name(layout, id);
     const SidecarDevice* sd = sidecar_device(sidecar, id, q.slot);
     if (sd != nullptr) {
       q.serial = sd->serial;
@@ -293,7 +293,7 @@ QualityReport assess_trial(const QualityInputs& in) {
   const detail::Coverage cov = detail::coverage(grid, traced);
   report.hand_fraction = cov.hand_fraction;
   if (any && cov.hand_fraction < t.fail_min_hand_fraction) {
-    reasons.fail("no controller saw the hand in " + percent(1.0 - cov.hand_fraction) +
+    reasons.fail("no controller saw the hand in " + percent_text(1.0 - cov.hand_fraction) +
                  " of the trial");
   }
   report.finger_seen_fraction.assign(cov.finger_seen.begin(), cov.finger_seen.end());
@@ -301,7 +301,7 @@ QualityReport assess_trial(const QualityInputs& in) {
     const double unseen = 1.0 - cov.finger_seen[static_cast<size_t>(k)];
     if (std::isfinite(unseen) && unseen > t.warn_max_finger_unseen) {
       reasons.warn(std::string(digit_name(k)) + " finger unseen by every controller in " +
-                   percent(unseen) + " of frames");
+                   percent_text(unseen) + " of frames");
     }
   }
 

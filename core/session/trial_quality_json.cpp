@@ -28,7 +28,7 @@ std::int64_t count(const JsonReader& r, const char* key) {
   return v.json().get<std::int64_t>();
 }
 
-json device_to_json(const DeviceQuality& d) {
+json quality_device_to_json(const DeviceQuality& d) {
   return json{{"device_id", d.device_id},
               {"slot", d.slot},
               {"serial", d.serial},
@@ -96,7 +96,7 @@ json quality_to_json(const QualityReport& report) {
         number_or_null(report.finger_seen_fraction[k]);
   }
   json devices = json::array();
-  for (const DeviceQuality& d : report.devices) devices.push_back(device_to_json(d));
+  for (const DeviceQuality& d : report.devices) devices.push_back(quality_device_to_json(d));
   json rom = nullptr;
   if (report.rom) {
     rom = json{{"joint", report.rom->joint},

@@ -4,9 +4,9 @@
 #include <limits>
 #include <nlohmann/json_fwd.hpp>
 
-namespace lmc::stats {
+#include "core/common/nan.h"
 
-inline constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+namespace lmc::stats {
 
 struct Interval {
   double low = kNaN;

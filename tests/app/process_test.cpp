@@ -19,7 +19,7 @@
 #include "tests/support/reference_data.h"
 
 namespace lmc {
-namespace {
+namespace process_test {
 
 using lmc::test::CliRun;
 
@@ -215,5 +215,5 @@ TEST_F(ProcessCli, SingleTrialWithExplicitViconAndBadArguments) {
   EXPECT_NE(no_layout.all().find("FAILED  Naiv_Index101"), std::string::npos) << no_layout.all();
 }
 
-}  // namespace
+}  // namespace process_test
 }  // namespace lmc

@@ -22,7 +22,7 @@
 #include "tests/support/cli_runner.h"
 #include "tests/support/reference_data.h"
 
-namespace {
+namespace record_test {
 
 using ::testing::HasSubstr;
 
@@ -391,4 +391,4 @@ TEST(LmcRecord, UnsafeTrialNamesAndExistingTrialsAreRefused) {
   EXPECT_THAT(second.err, HasSubstr("exists"));
 }
 
-}  // namespace
+}  // namespace record_test

@@ -26,7 +26,7 @@
 #include "tests/support/reference_data.h"
 
 namespace lmc::devices {
-namespace {
+namespace recorder_test {
 
 Layout paper_initial() { return load_layout(test::asset_file("layouts/paper-initial.json")); }
 
@@ -567,5 +567,5 @@ TEST(Recorder, SidecarDescribesTheSession) {
   EXPECT_EQ(j["recording_file"], "LMC_side.raw.txt");
 }
 
-}  // namespace
+}  // namespace recorder_test
 }  // namespace lmc::devices

@@ -17,7 +17,7 @@
 #include "tests/support/reference_data.h"
 
 namespace lmc::devices {
-namespace {
+namespace sim_test {
 
 Layout paper_initial() { return load_layout(test::asset_file("layouts/paper-initial.json")); }
 
@@ -307,5 +307,5 @@ TEST(SimConfig, UnknownKeysAreRejectedWithTheirPath) {
   EXPECT_NO_THROW(sim_config_from_json(sim_config_to_json(SimConfig{}), "mem"));
 }
 
-}  // namespace
+}  // namespace sim_test
 }  // namespace lmc::devices

@@ -3,7 +3,7 @@
 #include <gtest/gtest.h>
 
 namespace lmc::ui {
-namespace {
+namespace layout_actions_test {
 
 UndoableLayoutDocument paper_square() { return UndoableLayoutDocument(make_document(default_new_layout())); }
 
@@ -150,5 +150,5 @@ TEST(UndoRedo, HeadIdReturnsAfterUndoRedoAndCommitClearsRedo) {
   EXPECT_FALSE(u.commit("nothing changed"));
 }
 
-}  // namespace
+}  // namespace layout_actions_test
 }  // namespace lmc::ui

@@ -4,9 +4,10 @@
 #include <cmath>
 #include <numbers>
 
+#include "core/common/angles.h"
+
 namespace lmc::ui {
 namespace {
-constexpr double kDeg = std::numbers::pi / 180.0;
 constexpr double kMinDistance = 20.0;
 constexpr double kMaxDistance = 20000.0;
 constexpr double kMaxPitch = 89.5;  // straight down would make "up" degenerate
@@ -22,8 +23,8 @@ void OrbitCamera::set(const Eigen::Vector3d& target, double yaw_deg, double pitc
 }
 
 Eigen::Vector3d OrbitCamera::eye() const {
-  const double cp = std::cos(pitch_deg_ * kDeg), sp = std::sin(pitch_deg_ * kDeg);
-  const double cy = std::cos(yaw_deg_ * kDeg), sy = std::sin(yaw_deg_ * kDeg);
+  const double cp = std::cos(pitch_deg_ * kRadPerDeg), sp = std::sin(pitch_deg_ * kRadPerDeg);
+  const double cy = std::cos(yaw_deg_ * kRadPerDeg), sy = std::sin(yaw_deg_ * kRadPerDeg);
   return target_ + distance_mm_ * Eigen::Vector3d(cp * sy, sp, cp * cy);
 }
 
@@ -31,7 +32,7 @@ Eigen::Vector3d OrbitCamera::forward() const { return (target_ - eye()).normaliz
 
 Eigen::Vector3d OrbitCamera::right() const {
   // Horizontal by construction: perpendicular to the yaw direction.
-  const double cy = std::cos(yaw_deg_ * kDeg), sy = std::sin(yaw_deg_ * kDeg);
+  const double cy = std::cos(yaw_deg_ * kRadPerDeg), sy = std::sin(yaw_deg_ * kRadPerDeg);
   return Eigen::Vector3d(cy, 0.0, -sy);
 }
 
@@ -53,7 +54,7 @@ Eigen::Matrix4d OrbitCamera::projection(double aspect) const {
   // Near/far follow the distance so the depth buffer keeps its precision at every zoom.
   const double n = std::max(1.0, distance_mm_ * 0.02);
   const double f = distance_mm_ * 6.0 + 3000.0;
-  const double t = 1.0 / std::tan(fov_y_deg_ * kDeg * 0.5);
+  const double t = 1.0 / std::tan(fov_y_deg_ * kRadPerDeg * 0.5);
   Eigen::Matrix4d p = Eigen::Matrix4d::Zero();
   p(0, 0) = t / std::max(aspect, 1e-6);
   p(1, 1) = t;
@@ -65,7 +66,7 @@ Eigen::Matrix4d OrbitCamera::projection(double aspect) const {
 
 Ray OrbitCamera::ray_through_pixel(double px, double py, double w, double h) const {
   const double aspect = w / std::max(h, 1.0);
-  const double t = std::tan(fov_y_deg_ * kDeg * 0.5);
+  const double t = std::tan(fov_y_deg_ * kRadPerDeg * 0.5);
   const double ndc_x = (2.0 * px / std::max(w, 1.0)) - 1.0;
   const double ndc_y = 1.0 - (2.0 * py / std::max(h, 1.0));
   Ray r;
@@ -78,7 +79,7 @@ std::optional<Eigen::Vector2d> OrbitCamera::project(const Eigen::Vector3d& world
   const Eigen::Vector3d d = world - eye();
   const double z = d.dot(forward());
   if (z <= 1e-6) return std::nullopt;
-  const double t = std::tan(fov_y_deg_ * kDeg * 0.5);
+  const double t = std::tan(fov_y_deg_ * kRadPerDeg * 0.5);
   const double aspect = w / std::max(h, 1.0);
   const double ndc_x = d.dot(right()) / (z * t * aspect);
   const double ndc_y = d.dot(up()) / (z * t);
@@ -92,7 +93,8 @@ void OrbitCamera::orbit(double dx_px, double dy_px) {
 
 void OrbitCamera::pan(double dx_px, double dy_px, double viewport_h) {
   // World size of one pixel at the target's depth.
-  const double mm_per_px = 2.0 * distance_mm_ * std::tan(fov_y_deg_ * kDeg * 0.5) / std::max(viewport_h, 1.0);
+  const double mm_per_px =
+      2.0 * distance_mm_ * std::tan(fov_y_deg_ * kRadPerDeg * 0.5) / std::max(viewport_h, 1.0);
   target_ += (-dx_px * right() + dy_px * up()) * mm_per_px;
 }
 
@@ -113,7 +115,7 @@ void OrbitCamera::zoom_towards(double px, double py, double w, double h, double 
 void OrbitCamera::frame_bounds(const Eigen::Vector3d& lo, const Eigen::Vector3d& hi, double aspect) {
   const Eigen::Vector3d centre = 0.5 * (lo + hi);
   const double radius = std::max(0.5 * (hi - lo).norm(), 10.0);
-  const double half_v = fov_y_deg_ * kDeg * 0.5;
+  const double half_v = fov_y_deg_ * kRadPerDeg * 0.5;
   const double half_h = std::atan(std::tan(half_v) * std::max(aspect, 1e-3));
   const double half = std::min(half_v, half_h);
   target_ = centre;

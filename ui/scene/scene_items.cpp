@@ -5,10 +5,10 @@
 #include <cstdio>
 #include <numbers>
 
+#include "core/common/angles.h"
+
 namespace lmc::ui {
 namespace {
-
-constexpr double kDeg = std::numbers::pi / 180.0;
 
 const Rgba kDeviceColour{0.55f, 0.60f, 0.70f, 1.0f};
 const Rgba kSelectedColour{1.00f, 0.62f, 0.20f, 1.0f};
@@ -222,7 +222,8 @@ std::array<Eigen::Vector3d, 4> pyramid_corners(const Eigen::Isometry3d& device_t
                                                double half_long_deg, double half_short_deg) {
   // Corner directions (±tan α, 1, ±tan β) in the device frame, scaled so each edge is as long as
   // the range: the pyramid is drawn "up to the sensor range" along its edges.
-  const double tx = std::tan(half_long_deg * kDeg), tz = std::tan(half_short_deg * kDeg);
+  const double tx = std::tan(half_long_deg * kRadPerDeg),
+               tz = std::tan(half_short_deg * kRadPerDeg);
   const double sx[4] = {-1, 1, 1, -1}, sz[4] = {-1, -1, 1, 1};
   std::array<Eigen::Vector3d, 4> c;
   for (int k = 0; k < 4; ++k) {

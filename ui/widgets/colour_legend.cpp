@@ -4,10 +4,9 @@
 
 #include <cstdio>
 
+#include "ui/widgets/imgui_colour.h"
+
 namespace lmc::ui {
-namespace {
-ImU32 to_u32(const Rgba& c) { return ImGui::ColorConvertFloat4ToU32(ImVec4(c.r, c.g, c.b, c.a)); }
-}  // namespace
 
 void draw_categorical_legend(const std::vector<LegendEntry>& entries) {
   const float swatch = ImGui::GetTextLineHeight();

@@ -146,6 +146,7 @@ void setup_bench(CLI::App& app) {
   });
 }
 
-const lmc::cli::CommandRegistration reg{"bench", "Measure visibility throughput and search time", 90, setup_bench};
+const lmc::cli::CommandRegistration bench_command{
+    "bench", "Measure visibility throughput and search time", 90, setup_bench};
 
 }  // namespace

@@ -83,6 +83,7 @@ void setup_devices(CLI::App& app) {
   app.callback([opt] { run_devices(*opt); });
 }
 
-const lmc::cli::CommandRegistration reg{"devices", "List controllers (serial, slot, backend)", 20, setup_devices};
+const lmc::cli::CommandRegistration devices_command{
+    "devices", "List controllers (serial, slot, backend)", 20, setup_devices};
 
 }  // namespace

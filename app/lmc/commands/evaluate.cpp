@@ -88,7 +88,7 @@ void setup_evaluate(CLI::App& app) {
   });
 }
 
-const lmc::cli::CommandRegistration reg{"evaluate", "Placement metric and coverage of a layout on a pose set", 51,
-                                        setup_evaluate};
+const lmc::cli::CommandRegistration evaluate_command{
+    "evaluate", "Placement metric and coverage of a layout on a pose set", 51, setup_evaluate};
 
 }  // namespace

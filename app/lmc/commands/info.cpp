@@ -594,7 +594,7 @@ void setup_info(CLI::App& app) {
   app.callback([opt] { run_info(*opt); });
 }
 
-const lmc::cli::CommandRegistration reg{"info", "Describe a recording, TRC, layout or session sidecar file", 10,
-                                        setup_info};
+const lmc::cli::CommandRegistration info_command{
+    "info", "Describe a recording, TRC, layout or session sidecar file", 10, setup_info};
 
 }  // namespace

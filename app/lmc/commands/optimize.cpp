@@ -167,7 +167,7 @@ void setup_optimize(CLI::App& app) {
   });
 }
 
-const lmc::cli::CommandRegistration reg{"optimize", "Search device placements with a particle swarm", 50,
-                                        setup_optimize};
+const lmc::cli::CommandRegistration optimize_command{
+    "optimize", "Search device placements with a particle swarm", 50, setup_optimize};
 
 }  // namespace

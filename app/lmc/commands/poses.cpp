@@ -58,6 +58,7 @@ void setup_poses(CLI::App& app) {
   });
 }
 
-const lmc::cli::CommandRegistration reg{"poses", "Generate a seeded Monte Carlo hand pose set", 30, setup_poses};
+const lmc::cli::CommandRegistration poses_command{
+    "poses", "Generate a seeded Monte Carlo hand pose set", 30, setup_poses};
 
 }  // namespace

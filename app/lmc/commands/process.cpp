@@ -134,7 +134,7 @@ void setup_process(CLI::App& app) {
   app.callback([a] { run_process(*a); });
 }
 
-const lmc::cli::CommandRegistration reg{"process", "Process recorded trials: fuse, measure, compare with Vicon", 40,
-                                        setup_process};
+const lmc::cli::CommandRegistration process_command{
+    "process", "Process recorded trials: fuse, measure, compare with Vicon", 40, setup_process};
 
 }  // namespace

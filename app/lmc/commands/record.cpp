@@ -15,19 +15,19 @@
 // "aborted" with the error; a write error (disk full, `ulimit -f`) says "failed". The trial itself
 // runs in devices/record/trial_engine.h; this file turns options into its config and its
 // snapshots into stderr lines.
-#include <atomic>
-#include <csignal>
 #include <cstdio>
 #include <filesystem>
 #include <iomanip>
 #include <iostream>
 #include <memory>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <sstream>
 #include <stop_token>
 #include <string>
 
 #include "app/lmc/command.h"
+#include "app/lmc/sigint_flag.h"
 #include "core/common/error.h"
 #include "core/io/layout_json.h"
 #include "devices/device_hub.h"
@@ -41,9 +41,6 @@
 namespace {
 
 using namespace lmc::devices;
-
-std::atomic<bool> g_interrupted{false};
-extern "C" void on_sigint(int) { g_interrupted = true; }
 
 struct RecordOptions {
   std::string backend = "sim";
@@ -68,7 +65,8 @@ struct RecordOptions {
   bool quiet = false;
 };
 
-std::string status_line(const HubSnapshot& snap, const RecorderStatus& rec, double elapsed_s) {
+std::string record_status_line(const HubSnapshot& snap, const RecorderStatus& rec,
+                               double elapsed_s) {
   std::ostringstream s;
   s << std::fixed << std::setprecision(1) << std::setw(6) << elapsed_s << " s ";
   for (const auto& d : snap.devices) {
@@ -167,27 +165,26 @@ void run_record(const RecordOptions& opt) {
   // Ctrl-C only sets a flag (all a signal handler may do); the status callback turns it into
   // the engine's stop request.
   std::stop_source stop;
-  g_interrupted = false;
-  auto previous = std::signal(SIGINT, on_sigint);
+  std::optional<lmc::cli::ScopedSigint> sigint(std::in_place);
   double last_status = -1;
   auto on_status = [&](const TrialSnapshot& s) {
     for (const auto& m : s.new_notices)
       if (!opt.quiet) std::cerr << "lmc record: " << m << "\n";
     for (const auto& m : s.new_messages)
       if (!opt.quiet || !routine(m)) std::cerr << "lmc record: " << m << "\n";
-    if (g_interrupted && !stop.stop_requested()) {
+    if (lmc::cli::sigint_raised() && !stop.stop_requested()) {
       std::cerr << "\nlmc record: interrupted; stopping the trial\n";
       stop.request_stop();
     }
     const bool live = s.phase != TrialPhase::kFinishing && s.phase != TrialPhase::kDone;
     if (!opt.quiet && live && s.elapsed_s - last_status >= 1.0) {
       last_status = s.elapsed_s;
-      std::cerr << status_line(s.hub, s.recorder, s.elapsed_s) << "\n";
+      std::cerr << record_status_line(s.hub, s.recorder, s.elapsed_s) << "\n";
     }
   };
   TrialEngine engine(hub, sim, config);
   const TrialResult result = engine.run(stop.get_token(), on_status);
-  std::signal(SIGINT, previous);
+  sigint.reset();
 
   if (!result.existing.empty())
     throw lmc::Error(result.existing.string() + " exists; choose another trial name or pass --force");
@@ -230,6 +227,7 @@ void setup_record(CLI::App& app) {
   app.callback([opt] { run_record(*opt); });
 }
 
-const lmc::cli::CommandRegistration reg{"record", "Record a trial from the devices (headless)", 21, setup_record};
+const lmc::cli::CommandRegistration record_command{
+    "record", "Record a trial from the devices (headless)", 21, setup_record};
 
 }  // namespace

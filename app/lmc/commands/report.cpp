@@ -59,7 +59,7 @@ void setup_report(CLI::App& app) {
   app.callback([a] { run_report(*a); });
 }
 
-const lmc::cli::CommandRegistration reg{"report", "Aggregate processed trials across sessions: CSV + Markdown", 45,
-                                        setup_report};
+const lmc::cli::CommandRegistration report_command{
+    "report", "Aggregate processed trials across sessions: CSV + Markdown", 45, setup_report};
 
 }  // namespace

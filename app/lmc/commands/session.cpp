@@ -6,17 +6,17 @@
 // The folder's journal is the truth (sessions/README.md); this file only talks to the operator.
 #include <unistd.h>
 
-#include <atomic>
 #include <chrono>
-#include <csignal>
 #include <filesystem>
 #include <iomanip>
 #include <iostream>
+#include <optional>
 #include <sstream>
 #include <string>
 #include <thread>
 
 #include "app/lmc/command.h"
+#include "app/lmc/sigint_flag.h"
 #include "core/common/error.h"
 #include "core/common/paths.h"
 #include "core/session/protocol.h"
@@ -31,9 +31,6 @@ namespace fs = std::filesystem;
 using namespace lmc::devices;
 using lmc::session::SessionFolder;
 using lmc::session::TrialStatus;
-
-std::atomic<bool> g_interrupted{false};
-extern "C" void on_session_sigint(int) { g_interrupted = true; }
 
 // ---- new ------------------------------------------------------------------------------------
 
@@ -141,7 +138,7 @@ struct RunArgs {
   double countdown_s = 3, stream_timeout_s = 10;
 };
 
-std::string status_line(const TrialSnapshot& s, const std::string& trial) {
+std::string trial_status_line(const TrialSnapshot& s, const std::string& trial) {
   std::ostringstream o;
   o << std::fixed << std::setprecision(1) << trial << "  ";
   switch (s.phase) {
@@ -177,7 +174,7 @@ class InterruptWatch {
   explicit InterruptWatch(std::stop_source& source)
       : thread_([&source](std::stop_token own) {
           while (!own.stop_requested()) {
-            if (g_interrupted.exchange(false)) source.request_stop();
+            if (lmc::cli::take_sigint()) source.request_stop();
             std::this_thread::sleep_for(std::chrono::milliseconds(20));
           }
         }) {}
@@ -196,7 +193,7 @@ AttemptResult run_one(SessionRunner& runner, int i, bool quiet) {
     const auto now = std::chrono::steady_clock::now();
     if (quiet || now - last < std::chrono::milliseconds(500)) return;
     last = now;
-    std::cerr << "\r" << status_line(s, name) << "\033[K" << std::flush;
+    std::cerr << "\r" << trial_status_line(s, name) << "\033[K" << std::flush;
   });
   if (!quiet) std::cerr << "\r\033[K";
   print_verdict(r, name);
@@ -253,7 +250,7 @@ int run_auto(SessionRunner& runner, SessionFolder& folder, const RunArgs& a) {
     bool ok = false;
     for (int tries = 0; tries < 2 && !ok; ++tries) {
       const AttemptResult r = run_one(runner, i, a.quiet);
-      if (r.outcome == "interrupted" && g_interrupted) return 130;
+      if (r.outcome == "interrupted" && lmc::cli::sigint_raised()) return 130;
       ok = r.verdict() != "fail";
       if (ok) runner.accept(i);
     }
@@ -296,7 +293,7 @@ int run_interactive(SessionRunner& runner, SessionFolder& folder, const RunArgs&
     const AttemptResult r = run_one(runner, i, a.quiet);
     last = i;
     if (r.verdict() != "fail") runner.accept(i);
-    g_interrupted = false;
+    lmc::cli::clear_sigint();
   }
 }
 
@@ -313,10 +310,9 @@ void run_run(const RunArgs& a) {
   SessionRunner runner(folder, options);
   announce_resume(folder);
 
-  g_interrupted = false;
-  auto previous = std::signal(SIGINT, on_session_sigint);
+  std::optional<lmc::cli::ScopedSigint> sigint(std::in_place);
   const int code = a.automatic ? run_auto(runner, folder, a) : run_interactive(runner, folder, a);
-  std::signal(SIGINT, previous);
+  sigint.reset();
   std::cout << "\n";
   print_status(folder.state(), folder.dir());
   lmc::cli::command_exit_code() = code;
@@ -370,6 +366,7 @@ void setup_session(CLI::App& app) {
   });
 }
 
-const lmc::cli::CommandRegistration reg{"session", "Create, run and inspect subject sessions (the protocol)", 22, setup_session};
+const lmc::cli::CommandRegistration session_command{
+    "session", "Create, run and inspect subject sessions (the protocol)", 22, setup_session};
 
 }  // namespace

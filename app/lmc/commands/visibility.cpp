@@ -74,7 +74,8 @@ void setup_visibility(CLI::App& app) {
   });
 }
 
-const lmc::cli::CommandRegistration reg{"visibility", "Label a recording's rows with ray-traced finger visibility",
-                                        40, setup_visibility};
+const lmc::cli::CommandRegistration visibility_command{
+    "visibility", "Label a recording's rows with ray-traced finger visibility", 40,
+    setup_visibility};
 
 }  // namespace

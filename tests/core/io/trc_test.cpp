@@ -12,7 +12,7 @@
 #include "tests/support/reference_data.h"
 
 namespace lmc {
-namespace {
+namespace trc_test {
 
 using ::testing::HasSubstr;
 using test::expect_error_at;
@@ -181,5 +181,5 @@ TEST(TrcReference, ViconStaticTrial) {
   EXPECT_THAT(trc.warnings[0], HasSubstr("NumFrames 511 but the file holds 100 rows"));
 }
 
-}  // namespace
+}  // namespace trc_test
 }  // namespace lmc

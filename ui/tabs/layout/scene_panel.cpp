@@ -6,11 +6,10 @@
 
 #include "core/hand/hand_frame.h"
 #include "ui/scene/colour_maps.h"
+#include "ui/widgets/imgui_colour.h"
 
 namespace lmc::ui {
 namespace {
-
-ImU32 to_u32(const Rgba& c) { return ImGui::ColorConvertFloat4ToU32(ImVec4(c.r, c.g, c.b, c.a)); }
 
 double point_segment_px(const ImVec2& p, const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
   const Eigen::Vector2d q(p.x, p.y), ab = b - a;
