@@ -40,6 +40,7 @@ TEST(RecordSetupForm, OffersTheShippedProtocolsAndStartsOnTheStudy) {
     if (p.name != "quick") continue;
     quick_listed = true;
     EXPECT_NE(p.label.find("2 trials, 1 layout"), std::string::npos) << p.label;
+    EXPECT_NE(p.description.find("demos"), std::string::npos) << p.description;
   }
   EXPECT_TRUE(quick_listed);
   EXPECT_FALSE(check_setup_form(f).any()) << check_setup_form(f).first();

@@ -19,15 +19,18 @@ OrbitCamera pictogram_camera(const MotionPictogram& p, double aspect) {
   Eigen::Vector3d lo = Eigen::Vector3d::Constant(1e9), hi = Eigen::Vector3d::Constant(-1e9);
   for (const HandFrame* f : {&p.start, &p.end}) {
     for (int i = 0; i < kNumHandPoints; ++i) {
-      if (i == kPalmNormal || i == kPalmDirection) continue;
+      // The hand fills the box; the forearm runs out of it (the elbow is far from the motion).
+      if (i == kPalmNormal || i == kPalmDirection || i == kElbow) continue;
       lo = lo.cwiseMin(f->point(i));
       hi = hi.cwiseMax(f->point(i));
     }
   }
   OrbitCamera cam;
   const bool vertical = p.orientation == HandOrientation::kVertical;
-  cam.set(0.5 * (lo + hi), vertical ? 35.0 : 65.0, vertical ? 55.0 : 18.0, 600.0);
+  cam.set(0.5 * (lo + hi), vertical ? -25.0 : -55.0, vertical ? 60.0 : 42.0, 600.0);
   cam.frame_bounds(lo, hi, aspect);
+  // frame_bounds fits the box's bounding sphere; a hand is long and flat, so come closer.
+  cam.set(cam.target(), cam.yaw_deg(), cam.pitch_deg(), 0.9 * cam.distance_mm());
   return cam;
 }
 

@@ -14,15 +14,19 @@ namespace fs = std::filesystem;
 std::vector<ProtocolChoice> protocol_choices() {
   std::vector<ProtocolChoice> out;
   for (const auto& name : session::shipped_protocol_names()) {
-    ProtocolChoice c{name, name};
+    ProtocolChoice c;
+    c.name = name;
+    c.label = name;
     try {
       const session::Protocol p = session::load_protocol(name);
       const size_t trials = p.layouts.size() * p.poses.size() * p.trial_types.size() * static_cast<size_t>(p.repetitions);
       c.label = name + ": " + std::to_string(trials) + " trials, " + std::to_string(p.layouts.size()) + " layout" +
                 (p.layouts.size() == 1 ? "" : "s");
-      if (!p.description.empty()) c.label += " (" + p.description + ")";
+      c.description = p.description;
     } catch (const std::exception& e) {
-      c.label = name + ": cannot be read (" + std::string(e.what()) + ")";
+      c.label = name + ": cannot be read";
+      c.description = e.what();
+      c.readable = false;
     }
     out.push_back(std::move(c));
   }
@@ -89,8 +93,8 @@ SetupFormProblems check_setup_form(const RecordSetupForm& f) {
   if (f.hand_length_mm != 0.0F) p.hand_length = session::hand_size_problem(f.hand_length_mm);
   if (f.hand_breadth_mm != 0.0F) p.hand_breadth = session::hand_size_problem(f.hand_breadth_mm);
   if (f.protocol_name().empty()) p.protocol = "no protocol found in assets/protocols/";
-  else if (f.protocols[static_cast<size_t>(f.protocol)].label.find("cannot be read") != std::string::npos)
-    p.protocol = f.protocols[static_cast<size_t>(f.protocol)].label;
+  else if (const auto& chosen = f.protocols[static_cast<size_t>(f.protocol)]; !chosen.readable)
+    p.protocol = chosen.label + ": " + chosen.description;
   if (f.vicon[0] != '\0') {
     try {
       (void)devices::parse_vicon_target(f.vicon);

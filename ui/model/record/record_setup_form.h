@@ -18,7 +18,9 @@ namespace lmc::ui {
 // One shipped protocol: its name and a line saying what it records.
 struct ProtocolChoice {
   std::string name;   // "study"
-  std::string label;  // "study: 80 trials, 2 layouts (…description…)"
+  std::string label;        // "study: 80 trials, 2 layouts"
+  std::string description;  // the protocol's own words, or why it cannot be read
+  bool readable = true;
 };
 // assets/protocols/*.json, sorted by name; a file that does not load is listed with its error.
 std::vector<ProtocolChoice> protocol_choices();

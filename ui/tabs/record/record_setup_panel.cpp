@@ -45,13 +45,16 @@ SetupAction draw_record_setup_panel(RecordSetupForm& f, const SetupFormProblems&
   ImGui::InputText("Operator", f.operator_name, sizeof f.operator_name);
   ImGui::InputText("Notes", f.notes, sizeof f.notes);
   const char* current = f.protocols.empty() ? "(none shipped)" : f.protocols[static_cast<size_t>(f.protocol)].label.c_str();
-  ImGui::PushItemWidth(560);
   if (ImGui::BeginCombo("Protocol", current)) {
     for (size_t i = 0; i < f.protocols.size(); ++i)
       if (ImGui::Selectable(f.protocols[i].label.c_str(), static_cast<int>(i) == f.protocol)) f.protocol = static_cast<int>(i);
     ImGui::EndCombo();
   }
-  ImGui::PopItemWidth();
+  if (problems.protocol.empty() && !f.protocols.empty()) {
+    ImGui::PushTextWrapPos(ImGui::GetCursorPosX() + 760.0F);
+    ImGui::TextDisabled("  %s", f.protocols[static_cast<size_t>(f.protocol)].description.c_str());
+    ImGui::PopTextWrapPos();
+  }
   problem_line(problems.protocol);
   ImGui::InputText("Vicon trigger", f.vicon, sizeof f.vicon);
   hint("(HOST[:PORT]; empty: no Vicon)");

@@ -204,7 +204,11 @@ class RecordTab final : public Tab {
       RecordSettings settings = form_.settings();
       settings.fast = false;
       settings.countdown_s = 0;
-      error_ = model_.create(dir, form_.spec(), settings);
+      session::NewSessionSpec spec = form_.spec();
+      // Trials of 6 s instead of the quick protocol's 3: the pictures taken mid-trial (the tab,
+      // the subject screen) all fall inside one trial even at software rendering's frame rate.
+      spec.duration_override_s = 6.0;
+      error_ = model_.create(dir, spec, settings);
       return;
     }
     if (model_.busy()) return;

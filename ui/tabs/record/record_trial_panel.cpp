@@ -167,7 +167,7 @@ TrialPanelAction draw_record_trial_panel(const RecordSessionModel& model, TrialP
   const int i = model.recording() ? model.recording_trial() : model.current_trial();
   if (i < 0) {
     big_text("Every trial is accepted. The session is complete.", 1.5F);
-    ImGui::TextWrapped("Folder: %s — process it with `lmc process %s -o OUT`.", model.dir().string().c_str(),
+    ImGui::TextWrapped("Folder: %s. Process it with `lmc process %s -o OUT`.", model.dir().string().c_str(),
                        model.dir().string().c_str());
     verdict_section(model, action);
     return action;

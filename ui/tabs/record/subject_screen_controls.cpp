@@ -22,7 +22,7 @@ void draw_subject_screen_controls(SubjectScreenLink& link) {
     ImGui::TextColored(ImVec4(1.0F, 0.4F, 0.35F, 1.0F), "%s", link.problem.c_str());
   } else if (link.open && n == 1 && !link.windowed) {
     ImGui::SameLine();
-    ImGui::TextDisabled("(one monitor: it covers this window; tick 'windowed' or press F2 to close it)");
+    ImGui::TextDisabled("(covers this monitor)");
   }
 }
 
