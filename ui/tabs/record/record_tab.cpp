@@ -50,7 +50,8 @@ class RecordTab final : public Tab {
       const bool bad = line.find(": fail") != std::string::npos || line.find("failed") != std::string::npos;
       status_.set_status(line, bad);
     }
-    if (capture_) drive_capture();
+    // The session is driven for the mid-trial and verdict pictures; later ones stage it by hand.
+    if (capture_ && capture_stage_ != "record-resume") drive_capture();
     // The subject screen follows the session every frame, whichever tab is shown.
     subject_.view = build_subject_view(subject_view_inputs(model_), ImGui::GetTime());
   }
@@ -91,10 +92,20 @@ class RecordTab final : public Tab {
     return 4;
   }
   std::vector<std::string> extra_captures() const override {
-    return {"record-trial", "subject-screen", "record-verdict", "record-setup"};
+    return {"record-trial", "subject-screen", "record-verdict", "record-resume", "record-setup"};
   }
   void prepare_extra_capture(const std::string& name) override {
     capture_stage_ = name;
+    if (name == "record-resume") {
+      // The session opened again with its last trial to record once more: the resume notice,
+      // the layout to set up and the pre-flight's checklist.
+      const std::filesystem::path dir = model_.dir();
+      const RecordSettings settings = model_.settings();
+      model_.redo(1);
+      model_.close();
+      error_ = model_.open(dir, settings);
+      if (error_.empty()) model_.start_preflight();
+    }
     if (name == "record-setup") {
       model_.close();
       capture_ = false;
@@ -116,6 +127,7 @@ class RecordTab final : public Tab {
     if (capture_stage_ == "record" || capture_stage_ == "record-trial") return !mid_second_trial;
     if (capture_stage_ == "subject-screen") return !(model_.recording() && subject_.shown);
     if (capture_stage_ == "record-verdict") return model_.busy() || !model_.finished();
+    if (capture_stage_ == "record-resume") return model_.busy() || (model_.has_session() && !model_.last_preflight());
     return false;
   }
 

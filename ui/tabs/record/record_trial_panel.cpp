@@ -69,19 +69,22 @@ void device_strips(const devices::HubSnapshot& hub) {
   ImGui::EndTable();
 }
 
+// A green or red line per check, with its reason.
+void preflight_checklist(const devices::PreflightReport& report) {
+  ImGui::Text("Pre-flight for layout '%s':", report.layout_name.c_str());
+  for (const auto& item : report.items) {
+    ImGui::TextColored(item.ok ? kGreen : kRed, item.ok ? " ok  " : " FAIL");
+    ImGui::SameLine();
+    ImGui::TextWrapped("%s: %s", item.check.c_str(), item.detail.c_str());
+  }
+  ImGui::Spacing();
+}
+
 TrialPanelAction preflight_section(const RecordSessionModel& model, TrialPanelInput& input) {
   TrialPanelAction action = TrialPanelAction::kNone;
   ImGui::TextWrapped("%s", model.block_instructions().c_str());
   ImGui::Spacing();
-  if (const auto& report = model.last_preflight()) {
-    ImGui::Text("Pre-flight for layout '%s':", report->layout_name.c_str());
-    for (const auto& item : report->items) {
-      ImGui::TextColored(item.ok ? kGreen : kRed, item.ok ? " ok  " : " FAIL");
-      ImGui::SameLine();
-      ImGui::TextWrapped("%s: %s", item.check.c_str(), item.detail.c_str());
-    }
-    ImGui::Spacing();
-  }
+  if (const auto& report = model.last_preflight()) preflight_checklist(*report);
   if (model.busy()) {
     ImGui::TextUnformatted("Checking the controllers, Vicon, disk and folder…");
     return action;
@@ -243,6 +246,9 @@ TrialPanelAction draw_record_trial_panel(const RecordSessionModel& model, TrialP
     live_view(model, input);
     return a != TrialPanelAction::kNone ? a : action;
   }
+  // The checklist that enabled Start stays in view until the block's first trial of this run.
+  if (const auto& report = model.last_preflight(); report && report->ok() && !model.last_attempt())
+    preflight_checklist(*report);
   if (!model.busy()) {
     if (big_button("Start (Space)", ImVec4(0.15F, 0.55F, 0.25F, 1.0F))) action = TrialPanelAction::kStart;
     input.anchors.remember("start");
