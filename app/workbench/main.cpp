@@ -28,6 +28,12 @@ int main(int argc, char** argv) {
   app.add_option("--session", session, "Open (resume) this subject session folder in the Record tab");
   app.add_option("--backend", backend, "With --session: sim or leapc")->check(CLI::IsMember({"sim", "leapc"}));
   app.add_flag("--fast", fast, "With --session and the simulated rig: simulated time (demos, tests)");
+  std::string subject_screen;
+  CLI::Option* subject_screen_opt =
+      app.add_option("--subject-screen", subject_screen,
+                     "Open the Record tab's subject screen at start-up: on monitor MONITOR (0 = the primary; default "
+                     "the last one) or, with 'window', as a plain window (one-monitor bench)")
+          ->expected(0, 1);
   app.add_option("--size", width, "Window width in pixels")->check(CLI::Range(640, 7680));
   app.add_option("--height", height, "Window height in pixels")->check(CLI::Range(480, 4320));
   CLI11_PARSE(app, argc, argv);
@@ -37,6 +43,14 @@ int main(int argc, char** argv) {
       return lmc::ui::run_capture(capture_dir, capture_tabs, width, height);
     }
     lmc::ui::ShellStartup startup;
+    if (subject_screen_opt->count() > 0) {
+      std::string error;
+      startup.subject_screen = lmc::ui::parse_subject_screen_arg(subject_screen, error);
+      if (!startup.subject_screen) {
+        std::cerr << "lmc-workbench: " << error << "\n";
+        return 2;
+      }
+    }
     if (!capture_tabs.empty()) startup.tab = capture_tabs.front();
     if (!session.empty()) {
       startup.record = lmc::ui::RecordStartup{session, backend, fast};

@@ -85,4 +85,10 @@ HandFrame reference_pose(const HandModel& model, HandOrientation orientation, Ha
   return model.pose(angles, reference_placement(model, orientation, angles));
 }
 
+HandFrame motion_pose(const HandModel& model, HandOrientation orientation, HandMotion motion, double progress) {
+  HandFrame f = model.pose(motion_angles(motion, std::clamp(progress, 0.0, 1.0)), reference_placement(model, orientation));
+  f.hand_present = true;
+  return f;
+}
+
 }  // namespace lmc

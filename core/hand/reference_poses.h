@@ -54,4 +54,10 @@ HandPlacement reference_placement(const HandModel& model, HandOrientation orient
 // One of the ten reference poses (full range for the motions), as a 30-point world frame.
 HandFrame reference_pose(const HandModel& model, HandOrientation orientation, HandMotion motion);
 
+// The hand `progress` of the way through `motion` (0 = open hand, 1 = end of range), placed as
+// the simulated rig places it during a trial: the open hand's placement, kept while the joints
+// move (so a bending wrist swings the hand, not the forearm). For the Record tab's pictogram of
+// what the subject is asked to do.
+HandFrame motion_pose(const HandModel& model, HandOrientation orientation, HandMotion motion, double progress);
+
 }  // namespace lmc

@@ -150,13 +150,20 @@ fs::path protocol_path(const std::string& name_or_path) {
   const fs::path shipped = assets_dir() / "protocols" / (name_or_path + ".json");
   if (!fs::exists(shipped)) {
     std::string known;
-    std::error_code ec;
-    for (const auto& e : fs::directory_iterator(assets_dir() / "protocols", ec))
-      if (e.path().extension() == ".json") known += (known.empty() ? "" : ", ") + e.path().stem().string();
+    for (const auto& name : shipped_protocol_names()) known += (known.empty() ? "" : ", ") + name;
     throw Error("no protocol named '" + name_or_path + "' (shipped: " + (known.empty() ? "none found" : known) +
                 "; or give a .json path)");
   }
   return shipped;
+}
+
+std::vector<std::string> shipped_protocol_names() {
+  std::vector<std::string> names;
+  std::error_code ec;
+  for (const auto& e : fs::directory_iterator(assets_dir() / "protocols", ec))
+    if (e.path().extension() == ".json") names.push_back(e.path().stem().string());
+  std::sort(names.begin(), names.end());
+  return names;
 }
 
 Protocol load_protocol(const std::string& name_or_path) {

@@ -68,6 +68,9 @@ nlohmann::json protocol_to_json(const Protocol& protocol);
 Protocol load_protocol(const std::string& name_or_path);
 // The file a name resolves to (for error messages and for resolving relative layout paths).
 std::filesystem::path protocol_path(const std::string& name_or_path);
+// The names of assets/protocols/*.json, sorted ("quick", "study"): what `protocol_path` accepts
+// as a name, and what the Record tab offers.
+std::vector<std::string> shipped_protocol_names();
 
 // The study's block order — layout → pose → motion → repetitions — or, with a seed, the same
 // blocks with the order of layouts, of poses within each layout and of motions within each pose

@@ -47,13 +47,18 @@ std::optional<double> optional_size_mm(const JsonReader& r, const char* key) {
   if (!r.has(key)) return std::nullopt;
   const JsonReader v = r.at(key);
   const double mm = v.number();
-  // Adult hands are 150–230 mm long and 65–105 mm broad; the bounds only catch typing slips
-  // (cm for mm, a swapped field), not unusual hands.
-  if (!(mm >= 30 && mm <= 400)) v.fail("a hand size in mm between 30 and 400 was expected");
+  if (auto why = hand_size_problem(mm); !why.empty()) v.fail(why);
   return mm;
 }
 
 }  // namespace
+
+std::string hand_size_problem(double mm) {
+  // Adult hands are 150–230 mm long and 65–105 mm broad; the bounds only catch typing slips
+  // (cm for mm, a swapped field), not unusual hands.
+  if (!(mm >= 30 && mm <= 400)) return "a hand size in mm between 30 and 400 was expected";
+  return {};
+}
 
 SessionSetup session_setup_from_json(const nlohmann::json& j, const std::string& source) {
   const JsonReader r(j, source);

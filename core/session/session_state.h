@@ -40,6 +40,10 @@ struct TrialState {
   const AttemptState* last_attempt() const { return attempts.empty() ? nullptr : &attempts.back(); }
 };
 
+// Empty when `mm` is a plausible hand length or breadth, else why not (the one rule for the
+// manifest reader and the Record tab's form).
+std::string hand_size_problem(double mm);
+
 struct SubjectInfo {
   std::string subject_id;                 // pseudonymous; a safe name (core/common/safe_name.h)
   std::string handedness = "right";       // right | left

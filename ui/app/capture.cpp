@@ -7,6 +7,7 @@
 #include <thread>
 #include <utility>
 
+#include "ui/app/subject_screen.h"
 #include "ui/app/workbench_shell.h"
 #include "ui/platform/gl_window.h"
 #include "ui/platform/user_config.h"
@@ -20,6 +21,7 @@ int run_interactive(int width, int height, ShellStartup startup) {
     if (const auto dir = user_config_dir(); !dir.empty()) startup.recent_files_path = dir / "recent_files.json";
   }
   WorkbenchShell shell(std::move(startup));
+  SubjectScreen subject(window.handle());
   std::string title;
   while (!shell.quit_requested()) {
     if (window.should_close()) {
@@ -30,6 +32,7 @@ int run_interactive(int width, int height, ShellStartup startup) {
     shell.frame();
     window.end_frame();
     window.present();
+    subject.frame(shell.context().subject_screen());
     if (const std::string t = shell.window_title(); t != title) {
       title = t;
       window.set_title(title);
@@ -62,35 +65,61 @@ int run_capture(const std::string& dir, const std::vector<std::string>& tab_ids,
                     : which == "about"   ? HelpWindow::Section::kAbout
                                          : HelpWindow::Section::kWalkthrough);
   }
+  // The subject screen renders hidden at the main window's size, so its picture is checked like
+  // the others.
+  SubjectScreen subject(window.handle(), width, height);
+  const auto draw_frame = [&]() {
+    window.begin_frame();
+    shell.frame();
+    window.end_frame();
+    window.present();
+    subject.frame(shell.context().subject_screen());
+  };
+  // Let the tab settle: layout needs a couple of frames; background work (a heatmap, a simulated
+  // rig, a trial) gets up to 20 s to finish so the picture shows real content.
+  const auto settle = [&](Tab& tab, int settle_frames) {
+    const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(20);
+    int frames = 0;
+    while (frames < settle_frames + 3 || (tab.busy_for_capture() && std::chrono::steady_clock::now() < deadline)) {
+      draw_frame();
+      ++frames;
+      if (tab.busy_for_capture()) std::this_thread::sleep_for(std::chrono::milliseconds(15));
+    }
+  };
+  int status = 0;
+  const auto take = [&](const std::string& name) {
+    const auto path = (std::filesystem::path(dir) / (name + ".png")).string();
+    window.begin_frame();
+    shell.frame();
+    window.end_frame();
+    const bool of_subject = name.rfind("subject-screen", 0) == 0;
+    if (!of_subject) window.save_png(path);
+    window.present();
+    subject.frame(shell.context().subject_screen(), of_subject ? path : std::string());
+    if (of_subject && !subject.shown()) {
+      std::cerr << "lmc-workbench: the subject screen was not open (" << shell.context().subject_screen().problem
+                << "), so " << path << " was not written\n";
+      status = 1;
+      return;
+    }
+    std::cout << "wrote " << path << "\n";
+  };
   for (const auto& id : ids) {
     size_t index = 0;
     for (size_t i = 0; i < tab_registry().size(); ++i) {
       if (tab_registry()[i].id == id) index = i;
     }
+    Tab& tab = shell.tab(index);
     shell.select_tab(id);
-    const int settle_frames = shell.tab(index).prepare_for_capture();
-    // Let the tab settle: layout needs a couple of frames; background work (a heatmap, a
-    // simulated rig) gets up to 20 s to finish so the picture shows real content.
-    const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(20);
-    int frames = 0;
-    while (frames < settle_frames + 3 ||
-           (shell.tab(index).busy_for_capture() && std::chrono::steady_clock::now() < deadline)) {
-      window.begin_frame();
-      shell.frame();
-      window.end_frame();
-      window.present();
-      ++frames;
-      if (shell.tab(index).busy_for_capture()) std::this_thread::sleep_for(std::chrono::milliseconds(15));
+    settle(tab, tab.prepare_for_capture());
+    take(id);
+    for (const auto& extra : tab.extra_captures()) {
+      tab.prepare_extra_capture(extra);
+      settle(tab, 2);
+      take(extra);
     }
-    window.begin_frame();
-    shell.frame();
-    window.end_frame();
-    const auto path = (std::filesystem::path(dir) / (id + ".png")).string();
-    window.save_png(path);
-    window.present();
-    std::cout << "wrote " << path << "\n";
   }
-  return 0;
+  return status;
 }
 
 }  // namespace lmc::ui

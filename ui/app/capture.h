@@ -8,8 +8,9 @@
 namespace lmc::ui {
 
 int run_interactive(int width, int height, ShellStartup startup = {});
-// Renders each requested tab (all when empty) in a hidden window to DIR/<tab>.png; returns 0
-// when every PNG was written, 2 for an unknown tab name.
+// Renders each requested tab (all when empty) in a hidden window to DIR/<tab>.png, plus the
+// tab's extra pictures (Tab::extra_captures: DIR/<name>.png); returns 0 when every PNG was
+// written, 1 when one could not be, 2 for an unknown tab name.
 int run_capture(const std::string& dir, const std::vector<std::string>& tab_ids, int width, int height);
 
 }  // namespace lmc::ui

@@ -91,6 +91,7 @@ const std::vector<ShortcutRow>& shortcut_rows() {
       {"Record", "Space", "Start the trial (pre-flight first when needed); stop it while recording"},
       {"Record", "Enter", "Accept a trial whose verdict is fail"},
       {"Record", "R", "Redo the last trial"},
+      {"Record", "F2", "Open or close the subject screen (cue, countdown, red circle, pictogram)"},
   };
   return rows;
 }

@@ -23,6 +23,8 @@ namespace lmc::ui {
 struct ShellStartup {
   std::string tab;  // the tab shown first ("" = the first)
   std::optional<RecordStartup> record;
+  // `--subject-screen [MONITOR|window]`: the Record tab's subject screen opens at start-up.
+  std::optional<SubjectScreenRequest> subject_screen;
   // Where the recent-files list is kept; empty = nothing is read or written (captures, tests).
   std::filesystem::path recent_files_path;
 };
@@ -49,6 +51,8 @@ class WorkbenchShell final {
   const std::string& active_tab_id() const { return active_id_; }
   const StatusBoard& status_board() const { return status_; }
   const RecentFiles& recent_files() const { return recent_; }
+  // What the tabs share; the window loop reads the subject screen's link from it.
+  WorkbenchContext& context() { return *context_; }
 
   std::string window_title() const;
   bool quit_requested() const { return quit_requested_; }

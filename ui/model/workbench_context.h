@@ -9,6 +9,7 @@
 
 #include "ui/model/current_layout.h"
 #include "ui/model/devices/live_rig.h"
+#include "ui/model/record/subject_screen_link.h"
 
 namespace lmc::ui {
 
@@ -31,11 +32,14 @@ class WorkbenchContext {
   LiveRig& rig() { return rig_; }
   // Set by the shell before the tabs are built; the Record tab takes it once.
   std::optional<RecordStartup>& record_startup() { return record_startup_; }
+  // The Record tab's subject screen: what it shows and whether it is open (subject_screen_link.h).
+  SubjectScreenLink& subject_screen() { return subject_screen_; }
 
  private:
   CurrentLayout layout_;
   LiveRig rig_;  // after layout_: it reads it until destroyed
   std::optional<RecordStartup> record_startup_;
+  SubjectScreenLink subject_screen_;
 };
 
 }  // namespace lmc::ui

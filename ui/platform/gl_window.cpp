@@ -147,9 +147,9 @@ int GlWindow::framebuffer_height() const {
   return h;
 }
 
-void GlWindow::save_png(const std::string& path) const {
-  const int w = framebuffer_width();
-  const int h = framebuffer_height();
+void GlWindow::save_png(const std::string& path) const { write_back_buffer_png(path, framebuffer_width(), framebuffer_height()); }
+
+void write_back_buffer_png(const std::string& path, int w, int h) {
   std::vector<unsigned char> pixels(static_cast<size_t>(w) * static_cast<size_t>(h) * 3);
   glPixelStorei(GL_PACK_ALIGNMENT, 1);
   glReadBuffer(GL_BACK);

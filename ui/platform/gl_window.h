@@ -39,4 +39,7 @@ class GlWindow {
   std::string ini_path_;
 };
 
+// The current GL context's back buffer (w × h) → PNG. Throws on failure.
+void write_back_buffer_png(const std::string& path, int width, int height);
+
 }  // namespace lmc::ui

@@ -6,6 +6,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <vector>
 
 namespace lmc::ui {
 
@@ -36,6 +37,11 @@ class Tab {
   virtual int prepare_for_capture() { return 2; }
   // True while the tab's background work should be allowed to finish before a capture.
   virtual bool busy_for_capture() const { return false; }
+  // More pictures --capture takes of this tab after its own, in order (file names without
+  // ".png"); a name starting "subject-screen" is taken from the subject screen's window.
+  virtual std::vector<std::string> extra_captures() const { return {}; }
+  // Moves the tab towards extra picture `name`; the capture then waits while busy_for_capture().
+  virtual void prepare_extra_capture(const std::string& /*name*/) {}
 };
 
 // What tabs may tell the shell: one line in the status bar.

@@ -21,6 +21,7 @@
 #include "core/common/paths.h"
 #include "core/session/protocol.h"
 #include "core/session/session_folder.h"
+#include "devices/session/new_session_spec.h"
 #include "devices/session/session_runner.h"
 #include "devices/sim/sim_config.h"
 #include "devices/vicon/vicon_trigger.h"
@@ -55,22 +56,19 @@ void print_plan(const SessionFolder& folder) {
 }
 
 void run_new(const NewArgs& a) {
-  lmc::session::NewSessionSpec spec;
-  spec.subject.subject_id = a.subject;
-  spec.subject.handedness = a.handedness;
-  if (a.hand_length_mm > 0) spec.subject.hand_length_mm = a.hand_length_mm;
-  if (a.hand_breadth_mm > 0) spec.subject.hand_breadth_mm = a.hand_breadth_mm;
-  spec.operator_name = a.operator_name;
-  spec.notes = a.notes;
-  spec.protocol = a.protocol;
-  // A short version of a protocol for demos and rehearsals; the manifest keeps what was used.
-  if (a.seconds > 0) spec.duration_override_s = a.seconds;
-  if (!a.vicon.empty()) {
-    const ViconTriggerConfig vc = parse_vicon_target(a.vicon);
-    spec.vicon = {{"host", vc.host}, {"port", vc.port}};
-    if (!a.vicon_database.empty()) spec.vicon["database_path"] = a.vicon_database;
-  }
-  if (a.counterbalance >= 0) spec.counterbalance_seed = static_cast<std::uint64_t>(a.counterbalance);
+  NewSessionFields fields;
+  fields.subject = a.subject;
+  fields.handedness = a.handedness;
+  fields.hand_length_mm = a.hand_length_mm;
+  fields.hand_breadth_mm = a.hand_breadth_mm;
+  fields.operator_name = a.operator_name;
+  fields.notes = a.notes;
+  fields.protocol = a.protocol;
+  fields.vicon = a.vicon;
+  fields.vicon_database = a.vicon_database;
+  fields.seconds = a.seconds;
+  fields.counterbalance = a.counterbalance;
+  const lmc::session::NewSessionSpec spec = new_session_spec(fields);
   const fs::path dir = a.out.empty() ? lmc::session::default_session_dir(a.subject) : fs::path(a.out);
   const SessionFolder folder = SessionFolder::create(dir, spec);
   print_plan(folder);

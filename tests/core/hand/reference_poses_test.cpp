@@ -91,5 +91,31 @@ TEST(ReferencePoses, PaperLayoutsSeeTheOpenHand) {
   }
 }
 
+
+TEST(ReferencePoses, MotionPoseGoesFromTheOpenHandToTheEndOfRangeAtTheSimulatorsPlacement) {
+  const HandModel model;
+  const HandFrame open = motion_pose(model, HandOrientation::kHorizontal, HandMotion::kIndexFlexion, 0.0);
+  const HandFrame flexed = motion_pose(model, HandOrientation::kHorizontal, HandMotion::kIndexFlexion, 1.0);
+  const HandFrame half = motion_pose(model, HandOrientation::kHorizontal, HandMotion::kIndexFlexion, 0.5);
+  EXPECT_TRUE(open.hand_present);
+  // Placed like the simulated rig's trial hand: the open hand's placement throughout.
+  const HandFrame sim_open = model.pose(motion_angles(HandMotion::kOpen, 0.0), reference_placement(model, HandOrientation::kHorizontal));
+  for (int k = 0; k < kNumHandPoints; ++k) EXPECT_NEAR((open.point(k) - sim_open.point(k)).norm(), 0.0, 1e-9) << k;
+  // The index tip curls towards the palm; the middle finger and the palm stay where they were.
+  const int index_tip = digit_point(Digit::kIndex, Joint::kEnd);
+  const int middle_tip = digit_point(Digit::kMiddle, Joint::kEnd);
+  const double open_gap = (open.point(index_tip) - open.point(kPalm)).norm();
+  const double flexed_gap = (flexed.point(index_tip) - flexed.point(kPalm)).norm();
+  EXPECT_LT(flexed_gap, open_gap - 40.0);
+  const double half_gap = (half.point(index_tip) - half.point(kPalm)).norm();
+  EXPECT_LT(half_gap, open_gap);
+  EXPECT_GT(half_gap, flexed_gap);
+  EXPECT_NEAR((flexed.point(middle_tip) - open.point(middle_tip)).norm(), 0.0, 1e-9);
+  EXPECT_NEAR((flexed.point(kPalm) - open.point(kPalm)).norm(), 0.0, 1e-9);
+  // Progress outside [0, 1] is held at the ends.
+  const HandFrame beyond = motion_pose(model, HandOrientation::kHorizontal, HandMotion::kIndexFlexion, 1.7);
+  EXPECT_NEAR((beyond.point(index_tip) - flexed.point(index_tip)).norm(), 0.0, 1e-9);
+}
+
 }  // namespace
 }  // namespace lmc

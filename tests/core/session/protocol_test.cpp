@@ -1,4 +1,5 @@
 #include "core/session/protocol.h"
+#include "core/session/session_state.h"
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
@@ -151,6 +152,24 @@ TEST(Protocol, UnknownNameListsTheShippedOnes) {
     EXPECT_THAT(e.what(), HasSubstr("quick"));
     EXPECT_THAT(e.what(), HasSubstr("study"));
   }
+}
+
+
+TEST(Protocol, ShippedNamesListTheAssetsProtocolsSorted) {
+  const auto names = shipped_protocol_names();
+  ASSERT_GE(names.size(), 2U);
+  EXPECT_TRUE(std::is_sorted(names.begin(), names.end()));
+  EXPECT_NE(std::find(names.begin(), names.end(), "quick"), names.end());
+  EXPECT_NE(std::find(names.begin(), names.end(), "study"), names.end());
+  for (const auto& n : names) EXPECT_NO_THROW(load_protocol(n)) << n;
+}
+
+TEST(Protocol, HandSizeRuleIsTheManifestsOne) {
+  EXPECT_EQ(hand_size_problem(186), "");
+  EXPECT_EQ(hand_size_problem(30), "");
+  EXPECT_NE(hand_size_problem(18.6), "");  // cm typed for mm
+  EXPECT_NE(hand_size_problem(0), "");
+  EXPECT_NE(hand_size_problem(1860), "");
 }
 
 }  // namespace

@@ -3,6 +3,8 @@
 #include <chrono>
 #include <utility>
 
+#include "ui/model/record/resume_notice.h"
+
 namespace lmc::ui {
 
 RecordSessionModel::RecordSessionModel() = default;
@@ -12,7 +14,7 @@ RecordSessionModel::~RecordSessionModel() {
   job_.cancel_and_join();
 }
 
-std::string RecordSessionModel::adopt(session::SessionFolder folder, const RecordSettings& settings) {
+std::string RecordSessionModel::adopt(session::SessionFolder folder, const RecordSettings& settings, bool resumed) {
   folder_ = std::make_unique<session::SessionFolder>(std::move(folder));
   try {
     devices::SessionRunOptions options;
@@ -33,6 +35,7 @@ std::string RecordSessionModel::adopt(session::SessionFolder folder, const Recor
   last_preflight_.reset();
   last_attempt_.reset();
   refresh_state();
+  resume_notice_ = resumed ? ui::resume_notice(state_, recovered_) : std::vector<std::string>{};
   return {};
 }
 
@@ -41,7 +44,7 @@ std::string RecordSessionModel::create(const std::filesystem::path& dir, const s
   if (busy()) return "a trial or pre-flight is running; stop it first";
   close();
   try {
-    return adopt(session::SessionFolder::create(dir, spec), settings);
+    return adopt(session::SessionFolder::create(dir, spec), settings, false);
   } catch (const std::exception& e) {
     return e.what();
   }
@@ -51,7 +54,7 @@ std::string RecordSessionModel::open(const std::filesystem::path& dir, const Rec
   if (busy()) return "a trial or pre-flight is running; stop it first";
   close();
   try {
-    return adopt(session::SessionFolder::open(dir), settings);
+    return adopt(session::SessionFolder::open(dir), settings, true);
   } catch (const std::exception& e) {
     return e.what();
   }
@@ -63,6 +66,7 @@ void RecordSessionModel::close() {
   folder_.reset();
   state_ = {};
   recovered_.clear();
+  resume_notice_.clear();
   recording_trial_ = -1;
   selected_ = -1;
 }

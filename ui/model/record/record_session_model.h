@@ -59,6 +59,9 @@ class RecordSessionModel {
   const session::SessionState& state() const { return state_; }
   // Trials found cut off when the session was opened: the plain notice the operator reads first.
   const std::vector<std::string>& recovered() const { return recovered_; }
+  // Set when an existing folder was opened (not created): what happened and where it continues
+  // (resume_notice.h). Empty for a new session.
+  const std::vector<std::string>& resume_notice() const { return resume_notice_; }
   const RecordSettings& settings() const { return settings_; }
 
   // ---- where we are -----------------------------------------------------------------------------
@@ -106,7 +109,7 @@ class RecordSessionModel {
   std::string poll();
 
  private:
-  std::string adopt(session::SessionFolder folder, const RecordSettings& settings);
+  std::string adopt(session::SessionFolder folder, const RecordSettings& settings, bool resumed);
   void refresh_state();
 
   std::unique_ptr<session::SessionFolder> folder_;
@@ -114,6 +117,7 @@ class RecordSessionModel {
   std::filesystem::path dir_;
   session::SessionState state_;
   std::vector<std::string> recovered_;
+  std::vector<std::string> resume_notice_;
   RecordSettings settings_;
   int selected_ = -1;
   int recording_trial_ = -1;

@@ -2,70 +2,78 @@
 
 #include <imgui.h>
 
-#include <array>
-
-#include "devices/vicon/vicon_trigger.h"
+#include <algorithm>
+#include <cstdio>
 
 namespace lmc::ui {
 namespace {
 
-constexpr std::array<const char*, 2> kProtocols = {"study", "quick"};
-constexpr std::array<const char*, 2> kBackends = {"sim", "leapc"};
+const ImVec4 kProblem{1.0F, 0.4F, 0.35F, 1.0F};
+
+// The field's problem, in red right under it (nothing when it is fine).
+void problem_line(const std::string& problem) {
+  if (problem.empty()) return;
+  ImGui::PushStyleColor(ImGuiCol_Text, kProblem);
+  ImGui::TextWrapped("  %s", problem.c_str());
+  ImGui::PopStyleColor();
+}
+
+void hint(const char* text) {
+  ImGui::SameLine();
+  ImGui::TextDisabled("%s", text);
+}
 
 }  // namespace
 
-session::NewSessionSpec RecordSetupForm::spec() const {
-  session::NewSessionSpec s;
-  s.subject.subject_id = subject;
-  s.subject.handedness = handedness == 0 ? "right" : "left";
-  if (hand_length_mm > 0) s.subject.hand_length_mm = hand_length_mm;
-  if (hand_breadth_mm > 0) s.subject.hand_breadth_mm = hand_breadth_mm;
-  s.operator_name = operator_name;
-  s.notes = notes;
-  s.protocol = kProtocols.at(static_cast<size_t>(protocol));
-  if (vicon[0] != '\0') {
-    // The same parser as `lmc session new --vicon`, so both accept and refuse the same text.
-    const devices::ViconTriggerConfig vc = devices::parse_vicon_target(vicon);
-    s.vicon = {{"host", vc.host}, {"port", vc.port}};
-  }
-  return s;
-}
-
-RecordSettings RecordSetupForm::settings() const {
-  RecordSettings r;
-  r.backend = kBackends.at(static_cast<size_t>(backend));
-  r.fast = fast && backend == 0;
-  r.countdown_s = r.fast ? 0.0 : 3.0;
-  return r;
-}
-
-SetupAction draw_record_setup_panel(RecordSetupForm& f, const std::string& error) {
+SetupAction draw_record_setup_panel(RecordSetupForm& f, const SetupFormProblems& problems,
+                                    const std::vector<SessionListing>& sessions, const std::string& error,
+                                    WidgetAnchors* anchors) {
   SetupAction action = SetupAction::kNone;
   ImGui::TextUnformatted("New subject session");
   ImGui::Separator();
   ImGui::PushItemWidth(260);
   ImGui::InputText("Subject id", f.subject, sizeof f.subject);
-  ImGui::SameLine();
-  ImGui::TextDisabled("(pseudonymous: letters, digits, _ and -)");
+  hint("(pseudonymous: letters, digits, _ and -)");
+  problem_line(problems.subject);
   ImGui::Combo("Hand", &f.handedness, "right\0left\0");
   ImGui::InputFloat("Hand length (mm)", &f.hand_length_mm, 0, 0, "%.0f");
-  ImGui::SameLine();
-  ImGui::TextDisabled("(optional; wrist crease to middle fingertip)");
+  hint("(optional, 0 = not measured; wrist crease to middle fingertip)");
+  problem_line(problems.hand_length);
   ImGui::InputFloat("Hand breadth (mm)", &f.hand_breadth_mm, 0, 0, "%.0f");
+  hint("(optional; across the knuckles)");
+  problem_line(problems.hand_breadth);
   ImGui::InputText("Operator", f.operator_name, sizeof f.operator_name);
   ImGui::InputText("Notes", f.notes, sizeof f.notes);
-  ImGui::Combo("Protocol", &f.protocol, "study (80 trials, 2 layouts)\0quick (2 short trials, demo)\0");
+  const char* current = f.protocols.empty() ? "(none shipped)" : f.protocols[static_cast<size_t>(f.protocol)].label.c_str();
+  if (ImGui::BeginCombo("Protocol", current)) {
+    for (size_t i = 0; i < f.protocols.size(); ++i)
+      if (ImGui::Selectable(f.protocols[i].label.c_str(), static_cast<int>(i) == f.protocol)) f.protocol = static_cast<int>(i);
+    ImGui::EndCombo();
+  }
+  if (problems.protocol.empty() && !f.protocols.empty()) {
+    ImGui::PushTextWrapPos(ImGui::GetCursorPosX() + 760.0F);
+    ImGui::TextDisabled("  %s", f.protocols[static_cast<size_t>(f.protocol)].description.c_str());
+    ImGui::PopTextWrapPos();
+  }
+  problem_line(problems.protocol);
   ImGui::InputText("Vicon trigger", f.vicon, sizeof f.vicon);
-  ImGui::SameLine();
-  ImGui::TextDisabled("(HOST[:PORT]; empty: no Vicon)");
+  hint("(HOST[:PORT]; empty: no Vicon)");
+  problem_line(problems.vicon);
+  ImGui::InputText("Vicon database", f.vicon_database, sizeof f.vicon_database);
+  hint("(optional: where Nexus stores the trials)");
+  problem_line(problems.vicon_database);
   ImGui::InputText("Folder", f.folder, sizeof f.folder);
-  ImGui::SameLine();
-  ImGui::TextDisabled("(empty: sessions/<subject>-<date>)");
+  hint("(empty: sessions/<subject>-<date>)");
+  problem_line(problems.folder);
   ImGui::Separator();
   ImGui::Combo("Controllers", &f.backend, "simulated rig\0Leap Motion controllers (LeapC)\0");
   if (f.backend == 0) ImGui::Checkbox("Simulated time (as fast as the machine can)", &f.fast);
   ImGui::PopItemWidth();
+  ImGui::BeginDisabled(problems.any());
   if (ImGui::Button("Create session and go to pre-flight", ImVec2(300, 0))) action = SetupAction::kCreate;
+  if (anchors) anchors->remember("create");
+  ImGui::EndDisabled();
+  if (problems.any()) hint("(fix the red lines first)");
 
   ImGui::Spacing();
   ImGui::Spacing();
@@ -75,10 +83,32 @@ SetupAction draw_record_setup_panel(RecordSetupForm& f, const std::string& error
   ImGui::InputText("Session folder", f.open_folder, sizeof f.open_folder);
   ImGui::PopItemWidth();
   ImGui::SameLine();
+  ImGui::BeginDisabled(f.open_folder[0] == '\0');
   if (ImGui::Button("Open")) action = SetupAction::kOpen;
+  if (anchors) anchors->remember("open");
+  ImGui::EndDisabled();
+  ImGui::SameLine();
+  if (ImGui::SmallButton("Refresh list")) action = SetupAction::kRefreshSessions;
+  if (sessions.empty()) ImGui::TextDisabled("No sessions in the sessions folder yet.");
+  const float list_h = std::min(160.0F, 8.0F + ImGui::GetTextLineHeightWithSpacing() * static_cast<float>(sessions.size()));
+  if (!sessions.empty() && ImGui::BeginChild("sessions", ImVec2(0, list_h), true)) {
+    for (const auto& s : sessions) {
+      char label[700];
+      if (!s.problem.empty())
+        std::snprintf(label, sizeof label, "%s   cannot be read: %s", s.dir.filename().string().c_str(), s.problem.c_str());
+      else
+        std::snprintf(label, sizeof label, "%s   %s, %s, %d of %d accepted%s", s.dir.filename().string().c_str(),
+                      s.subject.c_str(), s.protocol.c_str(), s.accepted, s.total,
+                      s.interrupted > 0 ? ", a trial was cut off" : "");
+      if (ImGui::Selectable(label, s.dir.string() == f.open_folder))
+        std::snprintf(f.open_folder, sizeof f.open_folder, "%s", s.dir.string().c_str());
+      if (ImGui::IsItemHovered() && ImGui::IsMouseDoubleClicked(ImGuiMouseButton_Left)) action = SetupAction::kOpen;
+    }
+  }
+  if (!sessions.empty()) ImGui::EndChild();
   if (!error.empty()) {
     ImGui::Spacing();
-    ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0F, 0.35F, 0.3F, 1.0F));
+    ImGui::PushStyleColor(ImGuiCol_Text, kProblem);
     ImGui::TextWrapped("%s", error.c_str());
     ImGui::PopStyleColor();
   }

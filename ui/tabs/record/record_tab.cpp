@@ -11,20 +11,26 @@
 #include <cstdio>
 #include <filesystem>
 #include <string>
+#include <vector>
 
+#include "core/common/paths.h"
 #include "core/session/session_folder.h"
 #include "ui/model/record/record_session_model.h"
+#include "ui/model/record/record_setup_form.h"
+#include "ui/model/record/subject_view.h"
 #include "ui/model/workbench_context.h"
 #include "ui/tabs/record/record_setup_panel.h"
 #include "ui/tabs/record/record_trial_list_panel.h"
 #include "ui/tabs/record/record_trial_panel.h"
+#include "ui/tabs/record/subject_screen_controls.h"
 
 namespace lmc::ui {
 namespace {
 
 class RecordTab final : public Tab {
  public:
-  RecordTab(StatusSink& status, WorkbenchContext& context) : status_(status) {
+  RecordTab(StatusSink& status, WorkbenchContext& context) : status_(status), subject_(context.subject_screen()) {
+    sessions_ = list_sessions(sessions_dir());
     if (auto& startup = context.record_startup()) {
       std::snprintf(form_.open_folder, sizeof form_.open_folder, "%s", startup->session.string().c_str());
       form_.backend = startup->backend == "leapc" ? 1 : 0;
@@ -44,18 +50,24 @@ class RecordTab final : public Tab {
       const bool bad = line.find(": fail") != std::string::npos || line.find("failed") != std::string::npos;
       status_.set_status(line, bad);
     }
-    if (capture_) drive_capture();
+    // The session is driven for the mid-trial and verdict pictures; later ones stage it by hand.
+    if (capture_ && capture_stage_ != "record-resume") drive_capture();
+    // The subject screen follows the session every frame, whichever tab is shown.
+    subject_.view = build_subject_view(subject_view_inputs(model_), ImGui::GetTime());
   }
 
   void draw() override {
     if (!model_.has_session()) {
+      draw_subject_screen_controls(subject_);
       ImGui::BeginChild("setup", ImVec2(0, 0), false);
-      switch (draw_record_setup_panel(form_, error_)) {
+      switch (draw_record_setup_panel(form_, check_setup_form(form_), sessions_, error_)) {
         case SetupAction::kCreate: create(); break;
         case SetupAction::kOpen: open(); break;
+        case SetupAction::kRefreshSessions: sessions_ = list_sessions(sessions_dir()); break;
         case SetupAction::kNone: break;
       }
       ImGui::EndChild();
+      subject_screen_key();
       return;
     }
     draw_header();
@@ -71,23 +83,62 @@ class RecordTab final : public Tab {
     keys();
   }
 
+  // --capture: record.png and record-trial.png mid-trial with the live fused hand, the subject
+  // screen at that moment, then the verdict once the trial ends, then the set-up form.
   int prepare_for_capture() override {
     capture_ = true;
+    capture_stage_ = "record";
+    subject_.open = true;  // rendered hidden beside the main window from now on
     return 4;
   }
+  std::vector<std::string> extra_captures() const override {
+    return {"record-trial", "subject-screen", "record-verdict", "record-resume", "record-setup"};
+  }
+  void prepare_extra_capture(const std::string& name) override {
+    capture_stage_ = name;
+    if (name == "record-resume") {
+      // The session opened again with its last trial to record once more: the resume notice,
+      // the layout to set up and the pre-flight's checklist.
+      const std::filesystem::path dir = model_.dir();
+      const RecordSettings settings = model_.settings();
+      model_.redo(1);
+      model_.close();
+      error_ = model_.open(dir, settings);
+      if (error_.empty()) model_.start_preflight();
+    }
+    if (name == "record-setup") {
+      model_.close();
+      capture_ = false;
+      // A filled-in form, as an operator would leave it before pressing Create.
+      std::snprintf(form_.subject, sizeof form_.subject, "%s", "S07");
+      form_.hand_length_mm = 186;
+      form_.hand_breadth_mm = 84;
+      std::snprintf(form_.operator_name, sizeof form_.operator_name, "%s", "A. Operator");
+      std::snprintf(form_.notes, sizeof form_.notes, "%s", "right-handed, no hand injuries");
+      std::snprintf(form_.vicon, sizeof form_.vicon, "%s", "192.168.10.2:30");
+      form_.select_protocol("study");
+      sessions_ = list_sessions(sessions_dir());
+    }
+  }
   bool busy_for_capture() const override {
+    if (!capture_) return false;
     const bool mid_second_trial = model_.last_attempt() && model_.recording() && model_.live() &&
                                   model_.live()->recording_s > 1.5 && model_.live_fused();
-    return capture_ && !mid_second_trial;
+    if (capture_stage_ == "record" || capture_stage_ == "record-trial") return !mid_second_trial;
+    if (capture_stage_ == "subject-screen") return !(model_.recording() && subject_.shown);
+    if (capture_stage_ == "record-verdict") return model_.busy() || !model_.finished();
+    if (capture_stage_ == "record-resume") return model_.busy() || (model_.has_session() && !model_.last_preflight());
+    return false;
   }
 
  private:
   void create() {
+    if (const std::string why = check_setup_form(form_).first(); !why.empty()) {
+      error_ = why;
+      return;
+    }
     try {
-      const session::NewSessionSpec spec = form_.spec();
-      const std::filesystem::path dir =
-          form_.folder[0] != '\0' ? std::filesystem::path(form_.folder) : session::default_session_dir(form_.subject);
-      error_ = model_.create(dir, spec, form_.settings());
+      error_ = model_.create(form_.new_session_dir(), form_.spec(), form_.settings());
     } catch (const std::exception& e) {
       error_ = e.what();
     }
@@ -106,9 +157,18 @@ class RecordTab final : public Tab {
     // Close only between trials; without it the key hint below must keep its own line.
     if (!model_.busy()) {
       ImGui::SameLine(ImGui::GetWindowWidth() - 90);
-      if (ImGui::SmallButton("Close")) model_.close();
+      if (ImGui::SmallButton("Close")) {
+        model_.close();
+        sessions_ = list_sessions(sessions_dir());
+      }
     }
     ImGui::TextDisabled("Space: start / stop   Enter: accept a failed trial anyway   R: redo the last trial");
+    ImGui::SameLine();
+    draw_subject_screen_controls(subject_);
+  }
+
+  void subject_screen_key() {
+    if (!ImGui::GetIO().WantTextInput && ImGui::IsKeyPressed(kSubjectScreenKey, false)) subject_.open = !subject_.open;
   }
 
   void act(TrialPanelAction a) {
@@ -131,6 +191,7 @@ class RecordTab final : public Tab {
   void keys() {
     // Typing a reason or a note must not start a trial.
     if (ImGui::GetIO().WantTextInput) return;
+    subject_screen_key();
     if (ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Space), false)) {
       if (model_.recording()) act(TrialPanelAction::kStop);
       else if (model_.needs_preflight()) act(TrialPanelAction::kPreflight);
@@ -151,11 +212,15 @@ class RecordTab final : public Tab {
     if (!model_.has_session()) {
       const auto dir = std::filesystem::temp_directory_path() / ("lmc-record-capture-" + std::to_string(::getpid()));
       std::filesystem::remove_all(dir);
-      form_.protocol = 1;
+      form_.select_protocol("quick");
       RecordSettings settings = form_.settings();
       settings.fast = false;
       settings.countdown_s = 0;
-      error_ = model_.create(dir, form_.spec(), settings);
+      session::NewSessionSpec spec = form_.spec();
+      // Trials of 6 s instead of the quick protocol's 3: the pictures taken mid-trial (the tab,
+      // the subject screen) all fall inside one trial even at software rendering's frame rate.
+      spec.duration_override_s = 6.0;
+      error_ = model_.create(dir, spec, settings);
       return;
     }
     if (model_.busy()) return;
@@ -170,9 +235,12 @@ class RecordTab final : public Tab {
   StatusSink& status_;
   RecordSessionModel model_;
   RecordSetupForm form_;
+  std::vector<SessionListing> sessions_;  // for "resume": the sessions folder's contents
+  SubjectScreenLink& subject_;
   TrialPanelInput panel_;
   std::string error_;
   bool capture_ = false;
+  std::string capture_stage_;
   bool open_at_start_ = false;
 };
 

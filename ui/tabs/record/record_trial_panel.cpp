@@ -5,7 +5,9 @@
 #include <algorithm>
 #include <cstdio>
 
+#include "ui/model/record/motion_pictogram.h"
 #include "ui/tabs/record/record_colours.h"
+#include "ui/widgets/hand_pictogram.h"
 #include "ui/widgets/live_hands_view.h"
 
 namespace lmc::ui {
@@ -67,24 +69,35 @@ void device_strips(const devices::HubSnapshot& hub) {
   ImGui::EndTable();
 }
 
+// A green or red line per check, with its reason.
+void preflight_checklist(const devices::PreflightReport& report) {
+  ImGui::Text("Pre-flight for layout '%s':", report.layout_name.c_str());
+  for (const auto& item : report.items) {
+    ImGui::TextColored(item.ok ? kGreen : kRed, item.ok ? " ok  " : " FAIL");
+    ImGui::SameLine();
+    ImGui::TextWrapped("%s: %s", item.check.c_str(), item.detail.c_str());
+  }
+  ImGui::Spacing();
+}
+
 TrialPanelAction preflight_section(const RecordSessionModel& model, TrialPanelInput& input) {
   TrialPanelAction action = TrialPanelAction::kNone;
   ImGui::TextWrapped("%s", model.block_instructions().c_str());
   ImGui::Spacing();
-  if (const auto& report = model.last_preflight()) {
-    ImGui::Text("Pre-flight for layout '%s':", report->layout_name.c_str());
-    for (const auto& item : report->items) {
-      ImGui::TextColored(item.ok ? kGreen : kRed, item.ok ? " ok  " : " FAIL");
-      ImGui::SameLine();
-      ImGui::TextWrapped("%s: %s", item.check.c_str(), item.detail.c_str());
-    }
-    ImGui::Spacing();
-  }
+  if (const auto& report = model.last_preflight()) preflight_checklist(*report);
   if (model.busy()) {
     ImGui::TextUnformatted("Checking the controllers, Vicon, disk and folder…");
     return action;
   }
-  if (big_button("Run pre-flight", ImVec4(0.2F, 0.4F, 0.7F, 1.0F))) action = TrialPanelAction::kPreflight;
+  if (big_button("Run pre-flight (Space)", ImVec4(0.2F, 0.4F, 0.7F, 1.0F))) action = TrialPanelAction::kPreflight;
+  input.anchors.remember("preflight");
+  ImGui::SameLine();
+  ImGui::BeginDisabled();
+  if (big_button("Start (Space)", ImVec4(0.15F, 0.55F, 0.25F, 1.0F))) action = TrialPanelAction::kStart;
+  input.anchors.remember("start");
+  ImGui::EndDisabled();
+  ImGui::TextDisabled("Start is enabled when every pre-flight line is green, or after an override with a typed reason "
+                      "(journaled).");
   if (model.last_preflight() && !model.last_preflight()->ok()) {
     ImGui::Spacing();
     ImGui::PushItemWidth(360);
@@ -93,6 +106,7 @@ TrialPanelAction preflight_section(const RecordSessionModel& model, TrialPanelIn
     ImGui::PopItemWidth();
     ImGui::SameLine();
     if (ImGui::Button("Override")) action = TrialPanelAction::kOverride;
+    input.anchors.remember("override");
   }
   return action;
 }
@@ -146,16 +160,17 @@ void live_view(const RecordSessionModel& model, TrialPanelInput& input) {
 TrialPanelAction draw_record_trial_panel(const RecordSessionModel& model, TrialPanelInput& input) {
   TrialPanelAction action = TrialPanelAction::kNone;
   const auto& state = model.state();
-  for (const auto& name : model.recovered())
-    ImGui::TextColored(ImVec4(1.0F, 0.6F, 0.2F, 1.0F),
-                       "%s was cut off while recording (the program stopped). Its rows are kept under superseded/ "
-                       "and it is recorded again below.",
-                       name.c_str());
+  // The plain notice of a resumed session, until the first trial of this run is recorded.
+  if (!model.last_attempt()) {
+    ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0F, 0.6F, 0.2F, 1.0F));
+    for (const auto& line : model.resume_notice()) ImGui::TextWrapped("%s", line.c_str());
+    ImGui::PopStyleColor();
+  }
 
   const int i = model.recording() ? model.recording_trial() : model.current_trial();
   if (i < 0) {
     big_text("Every trial is accepted. The session is complete.", 1.5F);
-    ImGui::TextWrapped("Folder: %s — process it with `lmc process %s -o OUT`.", model.dir().string().c_str(),
+    ImGui::TextWrapped("Folder: %s. Process it with `lmc process %s -o OUT`.", model.dir().string().c_str(),
                        model.dir().string().c_str());
     verdict_section(model, action);
     return action;
@@ -165,11 +180,29 @@ TrialPanelAction draw_record_trial_panel(const RecordSessionModel& model, TrialP
   const auto& pose = state.protocol.poses.at(static_cast<size_t>(trial.plan.pose));
   ImGui::TextDisabled("Trial %d of %zu  ·  layout %s  ·  palm %s  ·  %.0f s", i + 1, state.trials.size(),
                       trial.plan.layout_key.c_str(), pose.key.c_str(), type.duration_s);
+  // The cues on the left, the motion's pictogram (what the subject screen shows) on the right.
+  const ImVec2 cue_top = ImGui::GetCursorScreenPos();
+  const float pictogram_w = 230.0F, pictogram_h = 150.0F;
+  const float cue_width = ImGui::GetContentRegionAvail().x - pictogram_w - 12.0F;
+  ImGui::PushTextWrapPos(ImGui::GetCursorPosX() + cue_width);
   big_text(trial.plan.name, 2.0F);
   ImGui::TextWrapped("Operator: %s", type.operator_cue.c_str());
   ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0F, 0.9F, 0.5F, 1.0F));
   big_text("Subject: " + type.subject_cue, 1.4F);
   ImGui::PopStyleColor();
+  // Overridden in this run (a pre-flight that passed since says nothing more).
+  if (const auto it = state.preflight_override.find(trial.plan.layout_key);
+      it != state.preflight_override.end() && !(model.last_preflight() && model.last_preflight()->ok()))
+    ImGui::TextColored(ImVec4(1.0F, 0.75F, 0.2F, 1.0F), "Pre-flight overridden: %s (journaled)", it->second.c_str());
+  ImGui::PopTextWrapPos();
+  const float cue_bottom = ImGui::GetCursorScreenPos().y;
+  if (const auto pictogram = motion_pictogram(trial.plan.sim_motion, ImGui::GetTime(),
+                                              state.subject().hand_length_mm.value_or(0.0),
+                                              state.subject().hand_breadth_mm.value_or(0.0))) {
+    ImGui::SetCursorScreenPos(ImVec2(cue_top.x + cue_width + 12.0F, cue_top.y));
+    draw_hand_pictogram(*pictogram, ImVec2(pictogram_w, pictogram_h));
+  }
+  ImGui::SetCursorScreenPos(ImVec2(cue_top.x, std::max(cue_bottom, cue_top.y + pictogram_h + 4.0F)));
   ImGui::Spacing();
 
   if (model.recording()) {
@@ -213,7 +246,13 @@ TrialPanelAction draw_record_trial_panel(const RecordSessionModel& model, TrialP
     live_view(model, input);
     return a != TrialPanelAction::kNone ? a : action;
   }
-  if (!model.busy() && big_button("Start (Space)", ImVec4(0.15F, 0.55F, 0.25F, 1.0F))) action = TrialPanelAction::kStart;
+  // The checklist that enabled Start stays in view until the block's first trial of this run.
+  if (const auto& report = model.last_preflight(); report && report->ok() && !model.last_attempt())
+    preflight_checklist(*report);
+  if (!model.busy()) {
+    if (big_button("Start (Space)", ImVec4(0.15F, 0.55F, 0.25F, 1.0F))) action = TrialPanelAction::kStart;
+    input.anchors.remember("start");
+  }
   if (trial.attempts.size() > 0 && trial.status != session::TrialStatus::kAccepted)
     ImGui::TextDisabled("attempt %zu of this trial", trial.attempts.size() + 1);
   verdict_section(model, action);

@@ -8,6 +8,7 @@
 
 #include "ui/model/record/record_session_model.h"
 #include "ui/scene/orbit_camera.h"
+#include "ui/widgets/widget_anchors.h"
 
 namespace lmc::ui {
 
@@ -16,6 +17,7 @@ enum class TrialPanelAction { kNone, kPreflight, kOverride, kStart, kStop, kAcce
 struct TrialPanelInput {
   char override_reason[200] = "";
   OrbitCamera camera;  // the live view's
+  WidgetAnchors anchors;  // "preflight", "start", "override" as drawn (headless tests click them)
 };
 
 TrialPanelAction draw_record_trial_panel(const RecordSessionModel& model, TrialPanelInput& input);

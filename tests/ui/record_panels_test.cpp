@@ -1,0 +1,110 @@
+// Headless tests of the Record tab's set-up panel, pre-flight section and subject screen: clicks
+// go through ImGuiIO to the real panels, which are drawn without a renderer.
+#include <gtest/gtest.h>
+
+#include <cstdio>
+#include <filesystem>
+
+#include "tests/core/session/session_test_support.h"
+#include "tests/ui/headless_imgui.h"
+#include "ui/model/record/record_session_model.h"
+#include "ui/model/record/record_setup_form.h"
+#include "ui/model/record/subject_view.h"
+#include "ui/tabs/record/record_setup_panel.h"
+#include "ui/tabs/record/record_trial_panel.h"
+#include "ui/tabs/record/subject_screen_panel.h"
+
+namespace lmc::ui {
+namespace record_panels_test {  // named: test files share unity batches
+
+namespace fs = std::filesystem;
+using testing::HeadlessImGui;
+
+TEST(RecordSetupPanel, CreateStaysDisabledUntilTheSubjectIdIsSafe) {
+  HeadlessImGui gui;
+  RecordSetupForm form;
+  std::snprintf(form.subject, sizeof form.subject, "%s", "S 01/x");
+  WidgetAnchors anchors;
+  SetupAction action = SetupAction::kNone;
+  const auto body = [&] {
+    const SetupAction a = draw_record_setup_panel(form, check_setup_form(form), {}, "", &anchors);
+    if (a != SetupAction::kNone) action = a;
+  };
+  gui.frame(body);
+  ASSERT_TRUE(anchors.centre("create"));
+  const ImVec2 create = *anchors.centre("create");
+  gui.click(create.x, create.y, body);
+  EXPECT_EQ(action, SetupAction::kNone);  // refused: the form says why under the field
+  std::snprintf(form.subject, sizeof form.subject, "%s", "S01");
+  gui.frame(body);
+  const ImVec2 create_now = *anchors.centre("create");
+  gui.click(create_now.x, create_now.y, body);
+  EXPECT_EQ(action, SetupAction::kCreate);
+}
+
+TEST(RecordTrialPanel, StartIsEnabledOnlyAfterThePreflightOrAnOverrideWithAReason) {
+  const fs::path dir = test::fresh_test_dir("record_panels");
+  RecordSessionModel model;
+  session::NewSessionSpec spec;
+  spec.subject.subject_id = "S01";
+  spec.protocol = "quick";
+  RecordSettings settings;
+  settings.fast = true;
+  settings.countdown_s = 0;
+  ASSERT_EQ(model.create(dir, spec, settings), "");
+  HeadlessImGui gui;
+  TrialPanelInput input;
+  TrialPanelAction action = TrialPanelAction::kNone;
+  const auto body = [&] {
+    const TrialPanelAction a = draw_record_trial_panel(model, input);
+    if (a != TrialPanelAction::kNone) action = a;
+  };
+  gui.frame(body);
+  ASSERT_TRUE(input.anchors.centre("start"));
+  ImVec2 start = *input.anchors.centre("start");
+  gui.click(start.x, start.y, body);
+  EXPECT_EQ(action, TrialPanelAction::kNone);  // drawn, but disabled before the pre-flight
+  EXPECT_NE(model.override_preflight(""), "");  // no reason, no override
+  EXPECT_TRUE(model.needs_preflight());
+  ASSERT_EQ(model.override_preflight("controllers checked by hand"), "");
+  gui.frame(body);
+  start = *input.anchors.centre("start");
+  gui.click(start.x, start.y, body);
+  EXPECT_EQ(action, TrialPanelAction::kStart);
+  EXPECT_EQ(model.start_trial(), "");  // and the model agrees
+  model.close();
+  fs::remove_all(dir);
+}
+
+// True when the frame drew a vertex of exactly this colour (the red circle's).
+bool drew_colour(ImU32 colour) {
+  const ImDrawData* data = ImGui::GetDrawData();
+  for (int l = 0; l < data->CmdListsCount; ++l)
+    for (const ImDrawVert& v : data->CmdLists[l]->VtxBuffer)
+      if (v.col == colour) return true;
+  return false;
+}
+
+TEST(SubjectScreenPanel, DrawsTheBigRedCircleOnlyWhileRecording) {
+  HeadlessImGui gui(1280, 800);
+  SubjectFonts fonts;
+  fonts.normal = fonts.large = fonts.huge = ImGui::GetIO().Fonts->Fonts[0];
+  session::TrialType type;
+  type.duration_s = 3;
+  type.subject_cue = "Bend your index finger";
+  SubjectViewInputs in;
+  in.has_session = true;
+  in.type = &type;
+  in.sim_motion = "horizontal/index";
+  const ImU32 red = IM_COL32(230, 30, 30, 255);
+  const SubjectView ready = build_subject_view(in, 0);
+  gui.frame([&] { draw_subject_screen(ready, fonts); });
+  EXPECT_FALSE(drew_colour(red));
+  in.phase = devices::TrialPhase::kRecording;
+  const SubjectView recording = build_subject_view(in, 0);
+  gui.frame([&] { draw_subject_screen(recording, fonts); });
+  EXPECT_TRUE(drew_colour(red));
+}
+
+}  // namespace record_panels_test
+}  // namespace lmc::ui

@@ -1,0 +1,274 @@
+// The Record tab's set-up form, resume notice, subject screen view and motion pictogram, without
+// ImGui: each form field refused by the core rule it mirrors, the spec built like `lmc session
+// new`'s, the plain notice of an interrupted session, and what the subject sees at each stage.
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+
+#include <gtest/gtest.h>
+
+#include "core/session/session_folder.h"
+#include "core/session/trial_files.h"
+#include "tests/core/session/session_test_support.h"
+#include "ui/model/record/motion_pictogram.h"
+#include "ui/model/record/record_session_model.h"
+#include "ui/model/record/record_setup_form.h"
+#include "ui/model/record/resume_notice.h"
+#include "ui/model/record/subject_screen_link.h"
+#include "ui/model/record/subject_view.h"
+
+namespace lmc::ui {
+namespace record_setup_and_subject_view_test {  // named: test files share unity batches
+
+namespace fs = std::filesystem;
+
+void set(char* field, size_t size, const std::string& text) { std::snprintf(field, size, "%s", text.c_str()); }
+
+RecordSettings fast_sim() {
+  RecordSettings s;
+  s.fast = true;
+  s.countdown_s = 0;
+  return s;
+}
+
+TEST(RecordSetupForm, OffersTheShippedProtocolsAndStartsOnTheStudy) {
+  const RecordSetupForm f;
+  ASSERT_GE(f.protocols.size(), 2U);
+  EXPECT_EQ(f.protocol_name(), "study");
+  bool quick_listed = false;
+  for (const auto& p : f.protocols) {
+    if (p.name != "quick") continue;
+    quick_listed = true;
+    EXPECT_NE(p.label.find("2 trials, 1 layout"), std::string::npos) << p.label;
+    EXPECT_NE(p.description.find("demos"), std::string::npos) << p.description;
+  }
+  EXPECT_TRUE(quick_listed);
+  EXPECT_FALSE(check_setup_form(f).any()) << check_setup_form(f).first();
+}
+
+TEST(RecordSetupForm, EachFieldIsRefusedByTheRuleTheFolderUses) {
+  RecordSetupForm f;
+  set(f.subject, sizeof f.subject, "../escape");
+  EXPECT_NE(check_setup_form(f).subject.find("subject id"), std::string::npos);
+  set(f.subject, sizeof f.subject, "");
+  EXPECT_NE(check_setup_form(f).subject, "");
+  set(f.subject, sizeof f.subject, "S01");
+  f.hand_length_mm = 18.6F;  // centimetres typed
+  EXPECT_NE(check_setup_form(f).hand_length.find("between 30 and 400"), std::string::npos);
+  f.hand_length_mm = 186;
+  f.hand_breadth_mm = -4;
+  EXPECT_NE(check_setup_form(f).hand_breadth, "");
+  f.hand_breadth_mm = 0;  // not measured
+  EXPECT_EQ(check_setup_form(f).hand_breadth, "");
+  set(f.vicon, sizeof f.vicon, "10.0.0.2:abc");
+  EXPECT_NE(check_setup_form(f).vicon.find("not a UDP port"), std::string::npos);
+  set(f.vicon, sizeof f.vicon, "");
+  set(f.vicon_database, sizeof f.vicon_database, "D:/Lab/Study");
+  EXPECT_NE(check_setup_form(f).vicon_database.find("Vicon target"), std::string::npos);
+  EXPECT_THROW((void)f.spec(), std::exception);  // the shared builder refuses it too
+  set(f.vicon, sizeof f.vicon, "10.0.0.2:31");
+  const fs::path busy = test::fresh_test_dir("setup_form");
+  fs::create_directories(busy);
+  std::ofstream(busy / "something.txt") << "x";
+  set(f.folder, sizeof f.folder, busy.string());
+  EXPECT_NE(check_setup_form(f).folder.find("not an empty folder"), std::string::npos);
+  EXPECT_EQ(check_setup_form(f).first(), check_setup_form(f).folder);
+  set(f.folder, sizeof f.folder, (busy / "new").string());
+  EXPECT_FALSE(check_setup_form(f).any()) << check_setup_form(f).first();
+  // The spec is the one `lmc session new` builds for the same text.
+  const session::NewSessionSpec spec = f.spec();
+  EXPECT_EQ(spec.subject.subject_id, "S01");
+  EXPECT_EQ(spec.subject.hand_length_mm.value_or(0), 186);
+  EXPECT_FALSE(spec.subject.hand_breadth_mm.has_value());
+  EXPECT_EQ(spec.protocol, "study");
+  EXPECT_EQ(spec.vicon.at("host"), "10.0.0.2");
+  EXPECT_EQ(spec.vicon.at("port"), 31);
+  EXPECT_EQ(spec.vicon.at("database_path"), "D:/Lab/Study");
+  EXPECT_EQ(f.new_session_dir(), busy / "new");
+  fs::remove_all(busy);
+}
+
+TEST(RecordSetupForm, ListsSessionsWithTheirProgressNewestFirst) {
+  const fs::path root = test::fresh_test_dir("setup_list");
+  fs::create_directories(root / "not-a-session");
+  {
+    session::NewSessionSpec spec;
+    spec.subject.subject_id = "S02";
+    spec.protocol = "quick";
+    auto a = session::SessionFolder::create(root / "S02-a", spec);
+    a.trial_started(0);
+  }  // cut off while recording
+  const auto listed = list_sessions(root);
+  ASSERT_EQ(listed.size(), 1U);
+  EXPECT_EQ(listed[0].subject, "S02");
+  EXPECT_EQ(listed[0].protocol, "quick");
+  EXPECT_EQ(listed[0].total, 2);
+  EXPECT_EQ(listed[0].accepted, 0);
+  EXPECT_EQ(listed[0].interrupted, 1);
+  EXPECT_TRUE(list_sessions(root / "missing").empty());
+  fs::remove_all(root);
+}
+
+TEST(RecordResumeNotice, AnInterruptedSessionSaysWhatHappenedAndWhereItContinues) {
+  const fs::path dir = test::fresh_test_dir("resume_notice");
+  {
+    session::NewSessionSpec spec;
+    spec.subject.subject_id = "S03";
+    spec.protocol = "quick";
+    auto f = session::SessionFolder::create(dir, spec);
+    f.trial_started(0);
+    std::ofstream(lmc::trial_files(dir, "Naiv_Static101").recording) << "partial\n";
+  }  // the process "dies" mid-trial
+  RecordSessionModel m;
+  ASSERT_EQ(m.open(dir, fast_sim()), "");
+  const auto& notice = m.resume_notice();
+  ASSERT_EQ(notice.size(), 2U);
+  EXPECT_NE(notice[0].find("Naiv_Static101 was cut off while recording"), std::string::npos) << notice[0];
+  EXPECT_NE(notice[0].find("superseded/Naiv_Static101.attempt1/"), std::string::npos) << notice[0];
+  EXPECT_NE(notice[1].find("0 of 2 trials accepted"), std::string::npos) << notice[1];
+  EXPECT_NE(notice[1].find("continues with trial 1 of 2, Naiv_Static101 (layout Naiv)"), std::string::npos) << notice[1];
+  m.close();
+  // A session opened again with nothing cut off still says where it continues; a new one says nothing.
+  ASSERT_EQ(m.open(dir, fast_sim()), "");
+  ASSERT_EQ(m.resume_notice().size(), 1U);
+  m.close();
+  RecordSessionModel fresh;
+  session::NewSessionSpec spec;
+  spec.subject.subject_id = "S04";
+  spec.protocol = "quick";
+  ASSERT_EQ(fresh.create(test::fresh_test_dir("resume_notice_new"), spec, fast_sim()), "");
+  EXPECT_TRUE(fresh.resume_notice().empty());
+  const fs::path fresh_dir = fresh.dir();
+  fresh.close();
+  fs::remove_all(fresh_dir);
+  fs::remove_all(dir);
+}
+
+TEST(RecordResumeNotice, ACompleteSessionSaysNothingIsLeft) {
+  session::SessionState st;
+  EXPECT_NE(resume_notice(st, {}).back().find("nothing is left to record"), std::string::npos);
+}
+
+TEST(MotionPictogram, AnimatesBetweenTheTrialMotionsStartAndEnd) {
+  EXPECT_DOUBLE_EQ(pictogram_progress(0.0), 0.0);   // holds the start
+  EXPECT_DOUBLE_EQ(pictogram_progress(1.6), 1.0);   // holds the end
+  EXPECT_NEAR(pictogram_progress(1.125), 0.5, 1e-9);  // half-way out
+  EXPECT_NEAR(pictogram_progress(2.625), 0.5, 1e-9);  // half-way back
+  EXPECT_DOUBLE_EQ(pictogram_progress(3.0), 0.0);   // one cycle
+  const auto p = motion_pictogram("horizontal/index", 1.125);
+  ASSERT_TRUE(p);
+  EXPECT_EQ(p->motion, HandMotion::kIndexFlexion);
+  EXPECT_EQ(p->orientation, HandOrientation::kHorizontal);
+  const int tip = digit_point(Digit::kIndex, Joint::kEnd);
+  const double travel = (p->end.point(tip) - p->start.point(tip)).norm();
+  EXPECT_GT(travel, 50.0);
+  EXPECT_GT((p->now.point(tip) - p->start.point(tip)).norm(), 0.2 * travel);
+  EXPECT_GT((p->now.point(tip) - p->end.point(tip)).norm(), 0.2 * travel);
+  const auto still = motion_pictogram("vertical/static", 1.125);
+  ASSERT_TRUE(still);
+  EXPECT_EQ(still->orientation, HandOrientation::kVertical);
+  EXPECT_NEAR((still->end.point(tip) - still->start.point(tip)).norm(), 0.0, 1e-9);
+  EXPECT_FALSE(motion_pictogram("juggling", 0.0));
+  // The subject's own hand size when it was measured.
+  const auto big = motion_pictogram("horizontal/index", 0.0, 230, 100);
+  ASSERT_TRUE(big);
+  EXPECT_GT((big->start.point(tip) - big->start.point(kPalm)).norm(), (p->start.point(tip) - p->start.point(kPalm)).norm());
+}
+
+session::TrialType index_type() {
+  session::TrialType t;
+  t.key = "Index";
+  t.sim_motion = "index";
+  t.duration_s = 3;
+  t.subject_cue = "Bend your index finger";
+  return t;
+}
+
+TEST(SubjectView, ShowsTheRedCircleOnlyWhileRecordingAndNothingForTheOperator) {
+  const session::TrialType type = index_type();
+  session::ProtocolPose pose;
+  pose.key = "horizontal";
+  pose.cue = "palm facing down";
+  SubjectViewInputs in;
+  EXPECT_EQ(build_subject_view(in, 0).stage, SubjectStage::kNoSession);
+  in.has_session = true;
+  in.type = &type;
+  in.pose = &pose;
+  in.sim_motion = "horizontal/index";
+  SubjectView v = build_subject_view(in, 0);
+  EXPECT_EQ(v.stage, SubjectStage::kGetReady);
+  EXPECT_FALSE(v.red_circle);
+  EXPECT_EQ(v.cue, "Bend your index finger");
+  EXPECT_EQ(v.pose_cue, "palm facing down");
+  ASSERT_TRUE(v.pictogram);
+  EXPECT_EQ(v.pictogram->motion, HandMotion::kIndexFlexion);
+
+  in.phase = devices::TrialPhase::kWaitingForStreams;
+  v = build_subject_view(in, 0);
+  EXPECT_EQ(v.stage, SubjectStage::kWaiting);
+  EXPECT_FALSE(v.red_circle);
+
+  in.phase = devices::TrialPhase::kCountdown;
+  in.countdown_remaining_s = 2.3;
+  v = build_subject_view(in, 0);
+  EXPECT_EQ(v.stage, SubjectStage::kCountdown);
+  EXPECT_EQ(v.headline, "3");
+  EXPECT_FALSE(v.red_circle);
+  in.countdown_remaining_s = 0.01;
+  EXPECT_EQ(build_subject_view(in, 0).headline, "1");  // never "0" before recording
+
+  in.phase = devices::TrialPhase::kRecording;
+  in.recording_s = 0.6;
+  v = build_subject_view(in, 0);
+  EXPECT_EQ(v.stage, SubjectStage::kRecording);
+  EXPECT_TRUE(v.red_circle);
+  EXPECT_EQ(v.time_text, "3 s left");
+  in.recording_s = 2.2;
+  EXPECT_EQ(build_subject_view(in, 0).time_text, "1 s left");
+
+  in.phase.reset();
+  in.finished = true;
+  v = build_subject_view(in, 0);
+  EXPECT_EQ(v.stage, SubjectStage::kDone);
+  EXPECT_FALSE(v.red_circle);
+  EXPECT_FALSE(v.pictogram);
+}
+
+TEST(SubjectView, FollowsTheRecordModelsSession) {
+  const fs::path dir = test::fresh_test_dir("subject_view");
+  RecordSessionModel m;
+  EXPECT_EQ(build_subject_view(subject_view_inputs(m), 0).stage, SubjectStage::kNoSession);
+  session::NewSessionSpec spec;
+  spec.subject.subject_id = "S05";
+  spec.protocol = "quick";
+  ASSERT_EQ(m.create(dir, spec, fast_sim()), "");
+  const SubjectView v = build_subject_view(subject_view_inputs(m), 0);
+  EXPECT_EQ(v.stage, SubjectStage::kGetReady);
+  EXPECT_EQ(v.cue, m.trial_type(0).subject_cue);
+  EXPECT_EQ(v.pose_cue, "palm facing down");
+  ASSERT_TRUE(v.pictogram);
+  EXPECT_EQ(v.pictogram->motion, HandMotion::kOpen);  // the quick protocol starts static
+  m.select(1);
+  EXPECT_EQ(build_subject_view(subject_view_inputs(m), 0).pictogram->motion, HandMotion::kIndexFlexion);
+  m.close();
+  fs::remove_all(dir);
+}
+
+TEST(SubjectScreenArg, MonitorNumberWindowOrNothing) {
+  std::string error;
+  auto r = parse_subject_screen_arg("", error);
+  ASSERT_TRUE(r);
+  EXPECT_EQ(r->monitor, -1);
+  EXPECT_FALSE(r->windowed);
+  r = parse_subject_screen_arg("1", error);
+  ASSERT_TRUE(r);
+  EXPECT_EQ(r->monitor, 1);
+  r = parse_subject_screen_arg("window", error);
+  ASSERT_TRUE(r);
+  EXPECT_TRUE(r->windowed);
+  EXPECT_FALSE(parse_subject_screen_arg("left", error));
+  EXPECT_NE(error.find("'left'"), std::string::npos);
+}
+
+}  // namespace record_setup_and_subject_view_test
+}  // namespace lmc::ui

@@ -1,0 +1,35 @@
+#pragma once
+// Keeps the subject screen's window (ui/platform/subject_window.h) in step with what the Record
+// tab asks for through the workbench context's SubjectScreenLink: opens it on the chosen monitor,
+// moves it when the choice changes, closes it, and draws the tab's SubjectView in it each frame.
+// The window loop (interactive and --capture) calls frame() after the main window's frame.
+#include <memory>
+#include <string>
+
+#include "ui/model/record/subject_screen_link.h"
+#include "ui/platform/subject_window.h"
+
+struct GLFWwindow;
+
+namespace lmc::ui {
+
+class SubjectScreen {
+ public:
+  // `hidden_width/height` > 0: --capture (a hidden window of that size, whatever the monitor).
+  explicit SubjectScreen(GLFWwindow* main_window, int hidden_width = 0, int hidden_height = 0);
+  ~SubjectScreen();
+  SubjectScreen(const SubjectScreen&) = delete;
+  SubjectScreen& operator=(const SubjectScreen&) = delete;
+
+  // Opens, moves or closes the window to match `link`, then draws a frame (and writes it to
+  // `png_path` when given). Reports back through `link` (monitors, shown, problem).
+  void frame(SubjectScreenLink& link, const std::string& png_path = {});
+  bool shown() const { return window_ != nullptr; }
+
+ private:
+  GLFWwindow* main_;
+  int hidden_width_, hidden_height_;
+  std::unique_ptr<SubjectWindow> window_;
+};
+
+}  // namespace lmc::ui

@@ -1,0 +1,142 @@
+#include "ui/model/record/record_setup_form.h"
+
+#include <algorithm>
+#include <system_error>
+
+#include "core/common/safe_name.h"
+#include "core/session/protocol.h"
+#include "core/session/session_state.h"
+#include "devices/vicon/vicon_trigger.h"
+
+namespace lmc::ui {
+namespace fs = std::filesystem;
+
+std::vector<ProtocolChoice> protocol_choices() {
+  std::vector<ProtocolChoice> out;
+  for (const auto& name : session::shipped_protocol_names()) {
+    ProtocolChoice c;
+    c.name = name;
+    c.label = name;
+    try {
+      const session::Protocol p = session::load_protocol(name);
+      const size_t trials = p.layouts.size() * p.poses.size() * p.trial_types.size() * static_cast<size_t>(p.repetitions);
+      c.label = name + ": " + std::to_string(trials) + " trials, " + std::to_string(p.layouts.size()) + " layout" +
+                (p.layouts.size() == 1 ? "" : "s");
+      c.description = p.description;
+    } catch (const std::exception& e) {
+      c.label = name + ": cannot be read";
+      c.description = e.what();
+      c.readable = false;
+    }
+    out.push_back(std::move(c));
+  }
+  return out;
+}
+
+RecordSetupForm::RecordSetupForm() : protocols(protocol_choices()) { select_protocol("study"); }
+
+bool RecordSetupForm::select_protocol(const std::string& name) {
+  for (size_t i = 0; i < protocols.size(); ++i) {
+    if (protocols[i].name == name) {
+      protocol = static_cast<int>(i);
+      return true;
+    }
+  }
+  return false;
+}
+
+std::string RecordSetupForm::protocol_name() const {
+  return protocol >= 0 && protocol < static_cast<int>(protocols.size()) ? protocols[static_cast<size_t>(protocol)].name
+                                                                          : std::string();
+}
+
+devices::NewSessionFields RecordSetupForm::fields() const {
+  devices::NewSessionFields f;
+  f.subject = subject;
+  f.handedness = handedness == 0 ? "right" : "left";
+  f.hand_length_mm = hand_length_mm;
+  f.hand_breadth_mm = hand_breadth_mm;
+  f.operator_name = operator_name;
+  f.notes = notes;
+  f.protocol = protocol_name();
+  f.vicon = vicon;
+  f.vicon_database = vicon_database;
+  return f;
+}
+
+session::NewSessionSpec RecordSetupForm::spec() const { return devices::new_session_spec(fields()); }
+
+fs::path RecordSetupForm::new_session_dir() const {
+  return folder[0] != '\0' ? fs::path(folder) : session::default_session_dir(subject);
+}
+
+RecordSettings RecordSetupForm::settings() const {
+  RecordSettings r;
+  r.backend = backend == 1 ? "leapc" : "sim";
+  r.fast = fast && backend == 0;
+  r.countdown_s = r.fast ? 0.0 : 3.0;
+  return r;
+}
+
+bool SetupFormProblems::any() const { return !first().empty(); }
+
+std::string SetupFormProblems::first() const {
+  for (const std::string* p : {&subject, &hand_length, &hand_breadth, &protocol, &vicon, &vicon_database, &folder})
+    if (!p->empty()) return *p;
+  return {};
+}
+
+SetupFormProblems check_setup_form(const RecordSetupForm& f) {
+  SetupFormProblems p;
+  p.subject = safe_name_problem(f.subject, "subject id");
+  // 0 means "not measured"; anything else goes through the manifest's own rule.
+  if (f.hand_length_mm != 0.0F) p.hand_length = session::hand_size_problem(f.hand_length_mm);
+  if (f.hand_breadth_mm != 0.0F) p.hand_breadth = session::hand_size_problem(f.hand_breadth_mm);
+  if (f.protocol_name().empty()) p.protocol = "no protocol found in assets/protocols/";
+  else if (const auto& chosen = f.protocols[static_cast<size_t>(f.protocol)]; !chosen.readable)
+    p.protocol = chosen.label + ": " + chosen.description;
+  if (f.vicon[0] != '\0') {
+    try {
+      (void)devices::parse_vicon_target(f.vicon);
+    } catch (const std::exception& e) {
+      p.vicon = e.what();
+    }
+  } else if (f.vicon_database[0] != '\0') {
+    p.vicon_database = "a Vicon database needs a Vicon target (HOST[:PORT]) above";
+  }
+  if (f.folder[0] != '\0') {
+    std::error_code ec;
+    const fs::path dir(f.folder);
+    if (fs::exists(dir, ec) && !(fs::is_directory(dir, ec) && fs::is_empty(dir, ec)))
+      p.folder = dir.string() + " exists and is not an empty folder; a new session needs a folder of its own";
+  }
+  return p;
+}
+
+std::vector<SessionListing> list_sessions(const fs::path& root) {
+  std::vector<SessionListing> out;
+  std::error_code ec;
+  for (const auto& e : fs::directory_iterator(root, ec)) {
+    if (!e.is_directory(ec) || !session::is_session_folder(e.path())) continue;
+    SessionListing s;
+    s.dir = e.path();
+    s.journal_written = fs::last_write_time(e.path() / session::kJournalFile, ec);
+    try {
+      const session::SessionState st = session::read_session_state(e.path());
+      s.subject = st.subject().subject_id;
+      s.protocol = st.protocol.name;
+      s.total = static_cast<int>(st.trials.size());
+      s.accepted = st.count(session::TrialStatus::kAccepted);
+      s.interrupted = st.count(session::TrialStatus::kInterrupted);
+    } catch (const std::exception& ex) {
+      s.problem = ex.what();
+    }
+    out.push_back(std::move(s));
+  }
+  std::sort(out.begin(), out.end(), [](const SessionListing& a, const SessionListing& b) {
+    return a.journal_written > b.journal_written;
+  });
+  return out;
+}
+
+}  // namespace lmc::ui

@@ -1,0 +1,74 @@
+#pragma once
+// The Record tab's set-up form as data (issue #11): a new subject session (subject, hand, optional
+// hand sizes, operator, notes, protocol from assets/protocols/, Vicon target and database, folder)
+// or an existing session folder to resume, and how to record (backend, simulated time). The
+// panel draws these fields and shows check_setup_form()'s problem under each; the spec is built
+// by the same function `lmc session new` uses (devices/session/new_session_spec.h), and every
+// check calls the core rule it mirrors, so the form refuses exactly what the folder would.
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "core/session/session_folder.h"
+#include "devices/session/new_session_spec.h"
+#include "ui/model/record/record_session_model.h"
+
+namespace lmc::ui {
+
+// One shipped protocol: its name and a line saying what it records.
+struct ProtocolChoice {
+  std::string name;   // "study"
+  std::string label;        // "study: 80 trials, 2 layouts"
+  std::string description;  // the protocol's own words, or why it cannot be read
+  bool readable = true;
+};
+// assets/protocols/*.json, sorted by name; a file that does not load is listed with its error.
+std::vector<ProtocolChoice> protocol_choices();
+
+struct RecordSetupForm {
+  RecordSetupForm();  // reads the protocol choices; "study" selected when shipped
+
+  char subject[65] = "S01";
+  int handedness = 0;  // 0 right, 1 left
+  float hand_length_mm = 0, hand_breadth_mm = 0;  // 0: not measured
+  char operator_name[64] = "";
+  char notes[256] = "";
+  std::vector<ProtocolChoice> protocols;
+  int protocol = 0;  // index into protocols
+  char vicon[128] = "";
+  char vicon_database[256] = "";
+  char folder[512] = "";  // empty: sessions/<subject>-<time>
+  char open_folder[512] = "";
+  int backend = 0;  // 0 sim, 1 leapc
+  bool fast = false;
+
+  bool select_protocol(const std::string& name);
+  std::string protocol_name() const;  // "" when none is shipped
+  devices::NewSessionFields fields() const;
+  // Throws lmc::Error (the form's problems are checked first by the tab).
+  session::NewSessionSpec spec() const;
+  std::filesystem::path new_session_dir() const;  // the folder, or the default for the subject
+  RecordSettings settings() const;
+};
+
+// What is wrong with each field (empty: fine). Create stays disabled while any is set.
+struct SetupFormProblems {
+  std::string subject, hand_length, hand_breadth, protocol, vicon, vicon_database, folder;
+  bool any() const;
+  std::string first() const;  // the first problem, for the status line
+};
+SetupFormProblems check_setup_form(const RecordSetupForm& form);
+
+// A session folder found under a sessions directory, for the "resume" list.
+struct SessionListing {
+  std::filesystem::path dir;
+  std::string subject, protocol;
+  int accepted = 0, total = 0, interrupted = 0;
+  std::string problem;  // set when the folder could not be read (the rest is empty)
+  std::filesystem::file_time_type journal_written{};
+};
+// Every subject session directly under `root`, the one whose journal was written last first.
+// Read-only: nothing is locked or repaired.
+std::vector<SessionListing> list_sessions(const std::filesystem::path& root);
+
+}  // namespace lmc::ui

@@ -1,0 +1,24 @@
+#include "ui/model/record/subject_screen_link.h"
+
+#include <cctype>
+
+namespace lmc::ui {
+
+std::optional<SubjectScreenRequest> parse_subject_screen_arg(const std::string& arg, std::string& error) {
+  SubjectScreenRequest r;
+  if (arg.empty()) return r;
+  if (arg == "window") {
+    r.windowed = true;
+    return r;
+  }
+  bool digits = arg.size() <= 2;
+  for (char ch : arg) digits = digits && std::isdigit(static_cast<unsigned char>(ch)) != 0;
+  if (!digits) {
+    error = "--subject-screen: '" + arg + "' is neither a monitor number (0 = the primary) nor 'window'";
+    return std::nullopt;
+  }
+  r.monitor = std::stoi(arg);
+  return r;
+}
+
+}  // namespace lmc::ui

@@ -1,0 +1,34 @@
+#pragma once
+// What the Record tab and the subject screen's window share (issue #11), kept in the workbench
+// context: the tab publishes the view and the operator's choice (open, which monitor, windowed);
+// the platform side opens or closes the window to match, fills in the monitors it sees and says
+// why it could not open one. UI thread only.
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "ui/model/record/subject_view.h"
+
+namespace lmc::ui {
+
+struct SubjectScreenLink {
+  // ---- set by the Record tab ----
+  SubjectView view;
+  bool open = false;
+  int monitor = -1;  // index into monitors; -1: the last (on a two-monitor bench, not the operator's)
+  bool windowed = false;
+  // ---- set by the window's side ----
+  std::vector<std::string> monitors;
+  bool shown = false;    // a window is up and drawing
+  std::string problem;   // why the last attempt to open it failed ("" = none)
+};
+
+// `lmc-workbench --subject-screen [MONITOR|window]`: a number picks the monitor (0 = the primary;
+// none: the last), "window" a plain window. nullopt with `error` set for anything else.
+struct SubjectScreenRequest {
+  int monitor = -1;
+  bool windowed = false;
+};
+std::optional<SubjectScreenRequest> parse_subject_screen_arg(const std::string& arg, std::string& error);
+
+}  // namespace lmc::ui

@@ -1,0 +1,157 @@
+#include "ui/platform/subject_window.h"
+
+// epoxy must come before GLFW so GLFW does not pull in a system GL header first.
+#include <epoxy/gl.h>
+#include <GLFW/glfw3.h>
+#include <imgui.h>
+#include <backends/imgui_impl_glfw.h>
+#include <backends/imgui_impl_opengl3.h>
+
+#include <filesystem>
+#include <stdexcept>
+
+#include "ui/platform/gl_window.h"
+
+namespace lmc::ui {
+namespace {
+
+// A font that stays sharp when large: DejaVu Sans Bold from Debian's fonts-dejavu-core when it is
+// installed, else ImGui's built-in bitmap font scaled (readable, but coarse).
+constexpr const char* kBoldFont = "/usr/share/fonts/truetype/dejavu/DejaVuSans-Bold.ttf";
+
+ImFont* add_font(ImGuiIO& io, float size_px) {
+  std::error_code ec;
+  if (std::filesystem::exists(kBoldFont, ec)) {
+    if (ImFont* f = io.Fonts->AddFontFromFileTTF(kBoldFont, size_px)) return f;
+  }
+  ImFontConfig config;
+  config.SizePixels = size_px;
+  return io.Fonts->AddFontDefault(&config);
+}
+
+// Keeps the caller's GL and ImGui contexts and puts them back when the frame is done.
+class ContextSwitch {
+ public:
+  ContextSwitch(GLFWwindow* window, ImGuiContext* imgui)
+      : gl_(glfwGetCurrentContext()), imgui_(ImGui::GetCurrentContext()) {
+    glfwMakeContextCurrent(window);
+    ImGui::SetCurrentContext(imgui);
+  }
+  ~ContextSwitch() {
+    ImGui::SetCurrentContext(imgui_);
+    glfwMakeContextCurrent(gl_);
+  }
+  ContextSwitch(const ContextSwitch&) = delete;
+  ContextSwitch& operator=(const ContextSwitch&) = delete;
+
+ private:
+  GLFWwindow* gl_;
+  ImGuiContext* imgui_;
+};
+
+}  // namespace
+
+std::vector<MonitorInfo> list_monitors() {
+  std::vector<MonitorInfo> out;
+  int count = 0;
+  GLFWmonitor** monitors = glfwGetMonitors(&count);
+  for (int i = 0; i < count; ++i) {
+    MonitorInfo m;
+    const char* name = glfwGetMonitorName(monitors[i]);
+    glfwGetMonitorPos(monitors[i], &m.x, &m.y);
+    if (const GLFWvidmode* mode = glfwGetVideoMode(monitors[i])) {
+      m.width = mode->width;
+      m.height = mode->height;
+    }
+    m.name = std::string(name ? name : "monitor") + " (" + std::to_string(m.width) + "x" + std::to_string(m.height) +
+             (i == 0 ? ", primary)" : ")");
+    out.push_back(std::move(m));
+  }
+  return out;
+}
+
+SubjectWindow::SubjectWindow(GLFWwindow* share, const SubjectWindowOptions& options) : options_(options) {
+  const std::vector<MonitorInfo> monitors = list_monitors();
+  MonitorInfo where{"", 0, 0, 1024, 640};
+  if (!monitors.empty()) {
+    const size_t i = options.monitor >= 0 && options.monitor < static_cast<int>(monitors.size())
+                         ? static_cast<size_t>(options.monitor)
+                         : monitors.size() - 1;
+    where = monitors[i];
+  }
+  int w = where.width, h = where.height;
+  if (!options.visible) {
+    w = options.width;
+    h = options.height;
+  } else if (options.windowed) {
+    w = 1024;
+    h = 640;
+  }
+  glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 3);
+  glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 3);
+  glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);
+  glfwWindowHint(GLFW_OPENGL_FORWARD_COMPAT, GLFW_TRUE);
+  glfwWindowHint(GLFW_VISIBLE, GLFW_FALSE);  // shown once placed
+  // Borderless over the whole monitor rather than an exclusive full-screen mode: no mode switch,
+  // and the operator's window on the other monitor is left alone.
+  glfwWindowHint(GLFW_DECORATED, options.windowed || !options.visible ? GLFW_TRUE : GLFW_FALSE);
+  // The operator drives the session from the keyboard: the subject screen must not take focus.
+  glfwWindowHint(GLFW_FOCUSED, GLFW_FALSE);
+  glfwWindowHint(GLFW_FOCUS_ON_SHOW, GLFW_FALSE);
+  window_ = glfwCreateWindow(w, h, "LMC Workbench — subject screen", nullptr, share);
+  glfwDefaultWindowHints();
+  if (window_ == nullptr) throw std::runtime_error("cannot open the subject screen window (GLFW could not create it)");
+  if (options.visible) {
+    glfwSetWindowPos(window_, where.x + (options.windowed ? 40 : 0), where.y + (options.windowed ? 40 : 0));
+    glfwShowWindow(window_);
+  }
+
+  GLFWwindow* previous_gl = glfwGetCurrentContext();
+  ImGuiContext* previous_imgui = ImGui::GetCurrentContext();
+  glfwMakeContextCurrent(window_);
+  glfwSwapInterval(0);  // the main window waits for the display; this one must not wait again
+  // A context with a font atlas of its own: the main window's keeps its small font.
+  imgui_ = ImGui::CreateContext();
+  ImGui::SetCurrentContext(imgui_);
+  ImGuiIO& io = ImGui::GetIO();
+  io.IniFilename = nullptr;
+  ImGui::StyleColorsDark();
+  fonts_.normal = add_font(io, 28.0F);
+  fonts_.large = add_font(io, 56.0F);
+  fonts_.huge = add_font(io, 150.0F);
+  ImGui_ImplGlfw_InitForOpenGL(window_, false);  // no callbacks: no controls, no input
+  ImGui_ImplOpenGL3_Init("#version 330 core");
+  ImGui::SetCurrentContext(previous_imgui);
+  glfwMakeContextCurrent(previous_gl);
+}
+
+SubjectWindow::~SubjectWindow() {
+  {
+    ContextSwitch to(window_, imgui_);
+    ImGui_ImplOpenGL3_Shutdown();
+    ImGui_ImplGlfw_Shutdown();
+  }
+  ImGui::DestroyContext(imgui_);
+  glfwDestroyWindow(window_);
+}
+
+bool SubjectWindow::closed_by_user() const { return glfwWindowShouldClose(window_) != 0; }
+
+void SubjectWindow::frame(const std::function<void(const SubjectFonts&)>& body, const std::string& png_path) {
+  ContextSwitch to(window_, imgui_);
+  ImGui_ImplOpenGL3_NewFrame();
+  ImGui_ImplGlfw_NewFrame();
+  ImGui::NewFrame();
+  body(fonts_);
+  ImGui::Render();
+  int w = 0, h = 0;
+  glfwGetFramebufferSize(window_, &w, &h);
+  glViewport(0, 0, w, h);
+  glClearColor(0.0F, 0.0F, 0.0F, 1.0F);
+  glClear(GL_COLOR_BUFFER_BIT);
+  ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
+  if (!png_path.empty()) write_back_buffer_png(png_path, w, h);
+  glfwSwapBuffers(window_);
+}
+
+}  // namespace lmc::ui

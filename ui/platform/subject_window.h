@@ -1,0 +1,61 @@
+#pragma once
+// The subject screen's window (issue #11): a second GLFW window, borderless and covering one
+// monitor (or a plain window for a one-monitor bench), with its own Dear ImGui context — ImGui 1.86
+// has no multi-viewport — and its own large fonts. Its GL context shares objects with the main
+// window's, so textures made there can be shown here. It never takes the keyboard focus from the
+// operator's window and installs no input callbacks: the subject screen has no controls.
+#include <functional>
+#include <string>
+#include <vector>
+
+struct GLFWwindow;
+struct ImGuiContext;
+struct ImFont;
+
+namespace lmc::ui {
+
+struct MonitorInfo {
+  std::string name;  // "HDMI-1 (1920×1080)"
+  int x = 0, y = 0, width = 0, height = 0;
+};
+// The monitors GLFW sees now (GLFW must be initialised: the main window exists). The first is
+// the primary one.
+std::vector<MonitorInfo> list_monitors();
+
+struct SubjectWindowOptions {
+  int monitor = -1;       // index into list_monitors(); -1 or out of range: the last one
+  bool windowed = false;  // a decorated 1024 × 640 window instead of covering the monitor
+  bool visible = true;    // false for --capture
+  int width = 0, height = 0;  // with !visible: the picture's size
+};
+
+struct SubjectFonts {
+  ImFont* normal = nullptr;
+  ImFont* large = nullptr;  // the cue
+  ImFont* huge = nullptr;   // the countdown and headline
+};
+
+class SubjectWindow {
+ public:
+  // Throws std::runtime_error with GLFW's message when the window cannot be made.
+  SubjectWindow(GLFWwindow* share, const SubjectWindowOptions& options);
+  ~SubjectWindow();
+  SubjectWindow(const SubjectWindow&) = delete;
+  SubjectWindow& operator=(const SubjectWindow&) = delete;
+
+  // True once the operator closed the (windowed) subject screen with its title bar.
+  bool closed_by_user() const;
+  const SubjectWindowOptions& options() const { return options_; }
+  // One frame: makes this window's GL and ImGui contexts current, runs `body` inside its ImGui
+  // frame, renders; writes the picture to `png_path` when given; swaps; then puts the caller's
+  // GL and ImGui contexts back.
+  void frame(const std::function<void(const SubjectFonts&)>& body, const std::string& png_path = {});
+
+ private:
+  GLFWwindow* window_ = nullptr;
+  ImGuiContext* imgui_ = nullptr;
+  SubjectFonts fonts_;
+  SubjectWindowOptions options_;
+};
+
+}  // namespace lmc::ui

@@ -1,0 +1,14 @@
+#pragma once
+// One line in the Record tab for the subject screen (issue #11): the toggle with its shortcut
+// (F2), which monitor it covers, a windowed option for a one-monitor bench, and why it could not
+// open. Changes only the operator's choice in the link; the window follows it.
+#include "ui/model/record/subject_screen_link.h"
+
+namespace lmc::ui {
+
+// GLFW's key code for F2 (ImGui 1.86 has no named function keys; io.KeysDown uses GLFW codes).
+inline constexpr int kSubjectScreenKey = 291;
+
+void draw_subject_screen_controls(SubjectScreenLink& link);
+
+}  // namespace lmc::ui
