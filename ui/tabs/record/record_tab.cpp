@@ -1,7 +1,7 @@
 // The Record tab (issue #11): one subject session at the bench. Set up or resume, pre-flight per
 // layout block, then trial after trial with the cue, a big red circle while recording, a strip per
 // controller, and a verdict with one-key redo. Keyboard: Space starts / stops, Enter accepts a
-// failed trial anyway, R redoes the last one. All state and rules live in RecordSessionModel
+// failed trial anyway, R redoes the last one, N adds a note, Esc aborts the running trial. All state and rules live in RecordSessionModel
 // (ui/model/record/); this file lays out the panels and maps keys and buttons to its actions.
 #include "ui/tabs/record/record_tab.h"
 
@@ -24,7 +24,7 @@ namespace {
 
 class RecordTab final : public Tab {
  public:
-  RecordTab(StatusSink& status, WorkbenchContext& context) : status_(status) {
+  RecordTab(StatusSink& status, WorkbenchContext& context) : status_(status), model_(&context.rig()) {
     if (auto& startup = context.record_startup()) {
       std::snprintf(form_.open_folder, sizeof form_.open_folder, "%s", startup->session.string().c_str());
       form_.backend = startup->backend == "leapc" ? 1 : 0;
@@ -87,7 +87,7 @@ class RecordTab final : public Tab {
       const session::NewSessionSpec spec = form_.spec();
       const std::filesystem::path dir =
           form_.folder[0] != '\0' ? std::filesystem::path(form_.folder) : session::default_session_dir(form_.subject);
-      error_ = model_.create(dir, spec, form_.settings());
+      error_ = model_.create(dir, spec, settings());
     } catch (const std::exception& e) {
       error_ = e.what();
     }
@@ -95,8 +95,16 @@ class RecordTab final : public Tab {
   }
 
   void open() {
-    error_ = model_.open(form_.open_folder, form_.settings());
+    error_ = model_.open(form_.open_folder, settings());
     if (error_.empty()) status_.set_status("Record: session " + model_.dir().string() + " opened");
+  }
+
+  // Real controllers are opened once, by the workbench's live rig: the session records through
+  // its hub (the Devices tab keeps showing the same controllers and the same fused hand).
+  RecordSettings settings() const {
+    RecordSettings s = form_.settings();
+    s.share_rig_hub = s.backend == "leapc";
+    return s;
   }
 
   void draw_header() {
@@ -108,7 +116,7 @@ class RecordTab final : public Tab {
       ImGui::SameLine(ImGui::GetWindowWidth() - 90);
       if (ImGui::SmallButton("Close")) model_.close();
     }
-    ImGui::TextDisabled("Space: start / stop   Enter: accept a failed trial anyway   R: redo the last trial");
+    ImGui::TextDisabled("Space: start / stop   Esc: abort   Enter: accept a failed trial anyway   R: redo the last trial   N: note");
   }
 
   void act(TrialPanelAction a) {
@@ -122,6 +130,18 @@ class RecordTab final : public Tab {
         break;
       case TrialPanelAction::kStart: why = model_.start_trial(); break;
       case TrialPanelAction::kStop: model_.stop_trial(); break;
+      case TrialPanelAction::kAbort:
+        why = model_.abort_trial();
+        if (why.empty()) status_.set_status("Record: trial aborted; it is kept, marked aborted, and waits for a redo (R)");
+        break;
+      case TrialPanelAction::kNote:
+        why = model_.add_note(panel_.note.text);
+        if (why.empty()) {
+          status_.set_status(std::string("Record: note ") + (model_.busy() ? "kept; journaled when the trial ends: " : "journaled: ") +
+                             panel_.note.text);
+          panel_.note = {};
+        }
+        break;
       case TrialPanelAction::kAccept: why = model_.accept_last(); break;
       case TrialPanelAction::kRedo: why = model_.redo(); break;
     }
@@ -136,6 +156,8 @@ class RecordTab final : public Tab {
       else if (model_.needs_preflight()) act(TrialPanelAction::kPreflight);
       else act(TrialPanelAction::kStart);
     }
+    if (ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Escape), false) && model_.recording()) act(TrialPanelAction::kAbort);
+    if (ImGui::IsKeyPressed('N', false)) open_note(panel_.note);
     if (model_.busy()) return;
     if (ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Enter), false) && model_.last_attempt() &&
         model_.last_attempt()->verdict() == "fail")

@@ -7,15 +7,17 @@
 #include <string>
 
 #include "ui/model/record/record_session_model.h"
+#include "ui/tabs/record/record_verdict_panel.h"
 #include "ui/scene/orbit_camera.h"
 
 namespace lmc::ui {
 
-enum class TrialPanelAction { kNone, kPreflight, kOverride, kStart, kStop, kAccept, kRedo };
+enum class TrialPanelAction { kNone, kPreflight, kOverride, kStart, kStop, kAbort, kAccept, kRedo, kNote };
 
 struct TrialPanelInput {
   char override_reason[200] = "";
   OrbitCamera camera;  // the live view's
+  NoteInput note;      // N: the one-line note (kNote when submitted)
 };
 
 TrialPanelAction draw_record_trial_panel(const RecordSessionModel& model, TrialPanelInput& input);
