@@ -11,6 +11,7 @@
 
 #include <gtest/gtest.h>
 
+#include "core/io/layout_json.h"
 #include "core/session/session_folder.h"
 #include "tests/core/session/session_test_support.h"
 #include "ui/model/devices/fusion_readout.h"
@@ -116,6 +117,7 @@ TEST(RecordLiveFusion, ARealTimeTrialShowsTheFusedHandAndItsLatencyThenEscAborts
 TEST(RecordLiveFusion, ASharedRigSessionRecordsThroughTheWorkbenchsHubAndGivesItBack) {
   const fs::path dir = test::fresh_test_dir("record_shared");
   WorkbenchContext context;
+  context.layout().publish(load_layout_or_preset("paper-initial"));  // as the Layout tab would
   LiveRig& rig = context.rig();
   RecordSessionModel m(&rig);
   RecordSettings settings = real_time_sim();

@@ -33,9 +33,9 @@ void draw_timeline_plot(const char* id, std::span<const TimelineSeries> series, 
     return p1.y - pad - (o.height_px - 2 * pad) * static_cast<float>(f);
   };
   char buf[64];
-  std::snprintf(buf, sizeof buf, o.y_format, o.y_max);
+  std::snprintf(buf, sizeof buf, "%.*f", o.y_decimals, o.y_max);
   dl->AddText(ImVec2(p0.x + 4, p0.y + 2), IM_COL32(170, 175, 185, 255), buf);
-  std::snprintf(buf, sizeof buf, o.y_format, o.y_min);
+  std::snprintf(buf, sizeof buf, "%.*f", o.y_decimals, o.y_min);
   dl->AddText(ImVec2(p0.x + 4, p1.y - ImGui::GetTextLineHeight() - 2), IM_COL32(170, 175, 185, 255), buf);
   std::snprintf(buf, sizeof buf, "%.1f s", o.slice_s * static_cast<double>(n));
   dl->AddText(ImVec2(right - ImGui::CalcTextSize(buf).x, p1.y - ImGui::GetTextLineHeight() - 2),

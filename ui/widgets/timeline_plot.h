@@ -20,7 +20,7 @@ struct TimelineSeries {
 struct TimelinePlotOptions {
   double slice_s = 1.0;  // x: value k is at k·slice_s seconds
   double y_min = 0, y_max = 1;
-  const char* y_format = "%.0f";  // the y range's labels
+  int y_decimals = 0;  // of the y range's labels
   float height_px = 90;
 };
 

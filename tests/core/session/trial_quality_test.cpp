@@ -621,7 +621,9 @@ TEST(TrialQuality, TimelineOfThePublishedStaticTrialAgreesWithItsFigures) {
   // Every finger seen by some controller at every instant with a hand (finger_seen_fraction 1.0).
   for (int s = 0; s < t.slices(); ++s) {
     const double w = t.worst_finger_seen_by[static_cast<size_t>(s)];
-    if (!std::isnan(w)) EXPECT_GE(w, 1.0) << "slice " << s;
+    if (!std::isnan(w)) {
+      EXPECT_GE(w, 1.0) << "slice " << s;
+    }
   }
 }
 

@@ -3,6 +3,7 @@
 #include <imgui.h>
 
 #include <cmath>
+#include <cstdio>
 #include <string>
 #include <vector>
 
@@ -57,7 +58,6 @@ void timeline(const session::QualityTimeline& t) {
   TimelinePlotOptions o;
   o.slice_s = t.slice_s;
   o.height_px = 60;
-  o.y_format = "%.0f";
   ImGui::TextDisabled("Hand present per controller (0–1)");
   draw_timeline_plot("hand_present", hands, o);
   o.y_max = kNumDigits;
