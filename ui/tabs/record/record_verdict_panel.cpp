@@ -25,7 +25,7 @@ std::string percent(double f) {
 void key_figures(const session::QualityReport& q) {
   ImGui::Text("Recorded %.1f of %.1f s  ·  hand present %s", q.duration_s, q.planned_s, percent(q.hand_fraction).c_str());
   if (!q.finger_seen_fraction.empty()) {
-    std::string line = "Seen by ≥ 1 controller:";
+    std::string line = "Seen by at least 1 controller:";
     for (size_t k = 0; k < q.finger_seen_fraction.size() && k < kNumDigits; ++k)
       line += "  " + std::string(digit_name(static_cast<int>(k))) + " " + percent(q.finger_seen_fraction[k]);
     ImGui::TextUnformatted(line.c_str());
@@ -39,10 +39,10 @@ void key_figures(const session::QualityReport& q) {
   }
   if (!devices.empty()) ImGui::TextUnformatted(devices.c_str());
   if (q.rom && std::isfinite(q.rom->reached_deg))
-    ImGui::Text("%s moved through %.0f° of %.0f° expected", q.rom->joint.c_str(), q.rom->reached_deg, q.rom->expected_deg);
+    ImGui::Text("%s moved through %.0f of %.0f degrees expected", q.rom->joint.c_str(), q.rom->reached_deg, q.rom->expected_deg);
 }
 
-// Each controller's hand presence (0–1) and fingers seen (0–5) over the trial, one colour per
+// Each controller's hand presence (0-1) and fingers seen (0-5) over the trial, one colour per
 // slot as in the live view; the worst finger's seen-by count in white.
 void timeline(const session::QualityTimeline& t) {
   if (t.slices() < 2) return;
@@ -58,11 +58,11 @@ void timeline(const session::QualityTimeline& t) {
   TimelinePlotOptions o;
   o.slice_s = t.slice_s;
   o.height_px = 60;
-  ImGui::TextDisabled("Hand present per controller (0–1)");
+  ImGui::TextDisabled("Hand present per controller (0-1)");
   draw_timeline_plot("hand_present", hands, o);
   o.y_max = kNumDigits;
   o.height_px = 80;
-  ImGui::TextDisabled("Fingers each controller sees (0–5); white: how many controllers see the least-seen finger");
+  ImGui::TextDisabled("Fingers each controller sees (0-5); white: how many controllers see the least-seen finger");
   draw_timeline_plot("seen_by", fingers, o);
 }
 
