@@ -5,7 +5,8 @@
 #include "ui/model/devices/live_hands.h"
 
 namespace lmc::ui {
-namespace {
+// Named, not anonymous: main compiles libraries in unity batches, where two files' kRed would meet.
+namespace device_strips {
 
 const ImVec4 kRed{1.0F, 0.3F, 0.3F, 1.0F};
 const ImVec4 kGreen{0.35F, 0.85F, 0.4F, 1.0F};
@@ -31,14 +32,14 @@ void vicon_line(const devices::TrialSnapshot& live) {
   }
 }
 
-}  // namespace
+}  // namespace device_strips
 
 void draw_record_device_strips(const devices::TrialSnapshot& live) {
   ImGui::Text("Frames written %lld", static_cast<long long>(live.recorder.frames_written));
   ImGui::SameLine();
   ImGui::TextDisabled("  ·  ");
   ImGui::SameLine();
-  vicon_line(live);
+  device_strips::vicon_line(live);
   if (!ImGui::BeginTable("strips", 6, ImGuiTableFlags_BordersInnerH | ImGuiTableFlags_SizingFixedFit)) return;
   ImGui::TableSetupColumn("Slot");
   ImGui::TableSetupColumn("Controller");
@@ -56,18 +57,18 @@ void draw_record_device_strips(const devices::TrialSnapshot& live) {
     ImGui::TableNextColumn();
     ImGui::TextUnformatted(d.serial.c_str());
     ImGui::TableNextColumn();
-    if (!d.connected) ImGui::TextColored(kRed, "LOST");
+    if (!d.connected) ImGui::TextColored(device_strips::kRed, "LOST");
     else ImGui::Text("%.0f Hz", d.rate_hz);
     ImGui::TableNextColumn();
-    if (d.hand_present) ImGui::TextColored(kGreen, "hand");
-    else ImGui::TextColored(kRed, "no hand");
+    if (d.hand_present) ImGui::TextColored(device_strips::kGreen, "hand");
+    else ImGui::TextColored(device_strips::kRed, "no hand");
     ImGui::TableNextColumn();
     if (d.latest_frame_age_ms < 0) ImGui::TextDisabled("-");
-    else if (d.latest_frame_age_ms > kStaleFrameMs) ImGui::TextColored(kRed, "%.0f ms", d.latest_frame_age_ms);
+    else if (d.latest_frame_age_ms > device_strips::kStaleFrameMs) ImGui::TextColored(device_strips::kRed, "%.0f ms", d.latest_frame_age_ms);
     else ImGui::Text("%.0f ms", d.latest_frame_age_ms);
     ImGui::TableNextColumn();
     const long long dropped = static_cast<long long>(d.frames_dropped + d.frames_dropped_recorder);
-    if (dropped > 0) ImGui::TextColored(kAmber, "%lld", dropped);
+    if (dropped > 0) ImGui::TextColored(device_strips::kAmber, "%lld", dropped);
     else ImGui::TextDisabled("0");
   }
   ImGui::EndTable();

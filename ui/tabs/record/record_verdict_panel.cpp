@@ -13,7 +13,8 @@
 #include "ui/widgets/timeline_plot.h"
 
 namespace lmc::ui {
-namespace {
+// Named, not anonymous: main compiles libraries in unity batches, where two files' kRed would meet.
+namespace verdict_panel {
 
 std::string percent(double f) {
   if (!std::isfinite(f)) return "-";
@@ -66,7 +67,7 @@ void timeline(const session::QualityTimeline& t) {
   draw_timeline_plot("seen_by", fingers, o);
 }
 
-}  // namespace
+}  // namespace verdict_panel
 
 VerdictAction draw_record_verdict_panel(const RecordSessionModel& model, NoteInput& note) {
   VerdictAction action = VerdictAction::kNone;
@@ -82,7 +83,7 @@ VerdictAction draw_record_verdict_panel(const RecordSessionModel& model, NoteInp
   if (a->quality) {
     for (const auto& why : a->quality->reasons) ImGui::BulletText("%s", why.c_str());
     if (a->quality->reasons.empty()) ImGui::BulletText("every check passed");
-    key_figures(*a->quality);
+    verdict_panel::key_figures(*a->quality);
   }
   const bool accepted = trial.status == session::TrialStatus::kAccepted;
   if (!model.busy()) {
@@ -97,7 +98,7 @@ VerdictAction draw_record_verdict_panel(const RecordSessionModel& model, NoteInp
     ImGui::TextDisabled("accepted; R records it again and keeps this attempt under superseded/");
   }
   for (const auto& n : trial.notes) ImGui::TextDisabled("note: %s", n.c_str());
-  if (a->quality) timeline(a->quality->timeline);
+  if (a->quality) verdict_panel::timeline(a->quality->timeline);
   return action;
 }
 
