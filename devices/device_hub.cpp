@@ -65,6 +65,17 @@ void DeviceHub::set_consumer(FrameConsumer* consumer) {
   consumer_ = consumer;
 }
 
+void DeviceHub::add_tap(FrameTap* tap) {
+  if (tap == nullptr) return;
+  std::lock_guard tap_lock(tap_mutex_);
+  if (std::find(taps_.begin(), taps_.end(), tap) == taps_.end()) taps_.push_back(tap);
+}
+
+void DeviceHub::remove_tap(FrameTap* tap) {
+  std::lock_guard tap_lock(tap_mutex_);
+  std::erase(taps_, tap);
+}
+
 std::string DeviceHub::label(const DeviceStatus& s) {
   return s.slot.empty() ? "device " + s.serial : s.slot + " (" + s.serial + ")";
 }
@@ -234,6 +245,9 @@ void DeviceHub::on_frame(const SourceFrame& frame) {
     std::lock_guard lock(mutex_);
     ++device_for_locked(frame.serial).status.frames_dropped_recorder;
   }
+  // After the recorder: the live view never delays a frame on its way to the disk.
+  std::lock_guard tap_lock(tap_mutex_);
+  for (FrameTap* t : taps_) t->tap(out);
 }
 
 HubSnapshot DeviceHub::snapshot() const {

@@ -16,6 +16,7 @@
 #include "core/layout/layout.h"
 #include "devices/frame_consumer.h"
 #include "devices/frame_source.h"
+#include "devices/frame_tap.h"
 #include "devices/host_clock.h"
 
 namespace lmc::devices {
@@ -74,6 +75,10 @@ class DeviceHub final : public FrameSink {
 
   // The recorder (or nullptr). The consumer must outlive its registration.
   void set_consumer(FrameConsumer* consumer);
+  // Display-only listeners (frame_tap.h), called after the consumer for every assigned frame.
+  // A tap must outlive its registration; remove_tap() returns once no device thread is inside it.
+  void add_tap(FrameTap* tap);
+  void remove_tap(FrameTap* tap);
 
   // Binds a serial to a slot (the slot's previous device, if any, becomes unassigned). Returns
   // an empty string on success, else why not.
@@ -114,6 +119,8 @@ class DeviceHub final : public FrameSink {
   std::deque<Device> devices_;  // deque: stable addresses
   std::deque<std::string> messages_;
   FrameConsumer* consumer_ = nullptr;
+  std::mutex tap_mutex_;  // held only around tap calls, never with mutex_ or consumer_mutex_
+  std::vector<FrameTap*> taps_;
   std::vector<std::unique_ptr<FrameSource>> sources_;
   bool running_ = false;
 };

@@ -27,6 +27,9 @@ constexpr std::int64_t kClockResetUs = 500000;
 // A bound on the grid (one hour at 100 Hz): a stray timestamp far in the future must coarsen the
 // grid, not allocate gigabytes.
 constexpr double kMaxGridBins = 360000.0;
+// Slices of the verdict's plot: about two pixel columns each in the Record tab's small plot; a
+// 5 s trial gives 42 ms slices, a 60 s one half a second.
+constexpr int kTimelineSlices = 120;
 
 std::string fixed(double v, int decimals) {
   char buf[64];
@@ -297,6 +300,7 @@ QualityReport assess_trial(const QualityInputs& in) {
                  " of the trial");
   }
   report.finger_seen_fraction.assign(cov.finger_seen.begin(), cov.finger_seen.end());
+  report.timeline = detail::timeline(grid, traced, kTimelineSlices);
   for (int k = 0; k < kNumDigits; ++k) {
     const double unseen = 1.0 - cov.finger_seen[static_cast<size_t>(k)];
     if (std::isfinite(unseen) && unseen > t.warn_max_finger_unseen) {

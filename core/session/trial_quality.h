@@ -50,6 +50,20 @@ struct ViconQuality {
   std::string export_file;
 };
 
+// The trial over time, for the verdict's plot: the recorded span cut into equal slices. Kept in
+// memory with the report only (quality_to_json leaves it out: the journal stays small, and the
+// recording it comes from is in the session folder).
+struct QualityTimeline {
+  double slice_s = 0;
+  std::vector<int> device_ids;                    // one per series below, ascending
+  std::vector<std::vector<double>> hand_present;  // [device][slice]: share of the slice's instants its latest row had a hand
+  std::vector<std::vector<double>> fingers_seen;  // [device][slice]: mean number of fingers (0–5) it saw (ray-traced)
+  // [slice]: over the slice's instants with a hand, the mean of how many controllers saw the
+  // least-seen finger (0: some finger seen by nobody); NaN when no controller had the hand.
+  std::vector<double> worst_finger_seen_by;
+  int slices() const { return static_cast<int>(worst_finger_seen_by.size()); }
+};
+
 struct QualityReport {
   std::string verdict = "pass";  // pass | warn | fail
   std::vector<std::string> reasons;  // one line each, most serious first
@@ -62,6 +76,7 @@ struct QualityReport {
   std::vector<double> finger_seen_fraction;
   std::optional<RomQuality> rom;
   ViconQuality vicon;
+  QualityTimeline timeline;  // empty when the controllers' clocks jumped (no common time axis)
 };
 
 struct QualityInputs {

@@ -13,6 +13,7 @@
 #include "core/layout/layout.h"
 #include "core/processing/hand_track.h"
 #include "core/session/trial_quality.h"
+#include "core/stats/percentile.h"
 
 namespace lmc::session::detail {
 
@@ -42,7 +43,7 @@ DeviceQuality device_stream_quality(const DeviceRows& device, std::int64_t trial
                                     std::int64_t trial_last_us);
 
 // Linear-interpolation percentile (numpy's default) of unsorted values; NaN when empty.
-double percentile(std::vector<double> values, double p);
+using stats::percentile;
 
 // Sample-and-hold grid: at each grid instant, for each controller, the index of its latest row
 // at or before that instant, or −1 when it has none or that row is stale (older than the hold
@@ -80,6 +81,10 @@ struct Coverage {
   std::array<double, kNumDigits> finger_seen{};
 };
 Coverage coverage(const HeldGrid& grid, const std::vector<TracedDevice>& devices);
+
+// The grid cut into `slices` equal parts (fewer when the grid has fewer instants), each summed
+// into QualityTimeline's series. `devices` is in the order of `grid`.
+QualityTimeline timeline(const HeldGrid& grid, const std::vector<TracedDevice>& devices, int slices);
 
 // The measures.h angle index of a protocol joint name ("Wrist", "Index_MCP", "index mcp" …;
 // case, spaces and dashes ignored), or −1.

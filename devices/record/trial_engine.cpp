@@ -68,6 +68,7 @@ struct TrialEngine::Run {
   bool recording_started = false;
   bool vicon_start_sent = false;
   bool vicon_stop_received = false;
+  bool vicon_start_received = false;  // listen mode
   std::string vicon_start_name;  // listen mode: the Name of the CaptureStart that began the trial
   int vicon_sent = 0;
   bool interrupted = false;
@@ -122,6 +123,11 @@ struct TrialEngine::Run {
     s.hub = hub.snapshot();
     if (recorder) s.recorder = recorder->status();
     s.vicon_packets_sent = vicon_sent;
+    s.vicon_sending = cfg.vicon.has_value();
+    s.vicon_listening = listen();
+    s.vicon_listen_address = result.listen_address;
+    s.vicon_start_received = vicon_start_received;
+    s.vicon_stop_received = vicon_stop_received;
     s.message = message;
     s.new_messages = std::move(pending_messages);
     s.new_notices = std::move(pending_notices);
@@ -238,6 +244,7 @@ struct TrialEngine::Run {
           trial = m.name;
         }
         vicon_start_name = m.name;
+        vicon_start_received = true;
         begin_recording();
         recorder->note("vicon_alignment", clock_alignment_json(hub.snapshot(), "CaptureStart received", received_ns,
                                                                m.packet_id, utc_now_iso8601()));

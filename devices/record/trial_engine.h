@@ -54,6 +54,12 @@ struct TrialSnapshot {
   HubSnapshot hub;
   RecorderStatus recorder;  // idle before the recorder starts
   int vicon_packets_sent = 0;
+  // Vicon: whether CaptureStart/Stop are sent, or awaited (listen mode), and what came so far.
+  bool vicon_sending = false;
+  bool vicon_listening = false;
+  std::string vicon_listen_address;  // listen mode: where CaptureStart is awaited
+  bool vicon_start_received = false;
+  bool vicon_stop_received = false;
   std::string message;  // what is happening now, for a status line
   // Since the previous snapshot: device messages and warnings/errors (always worth showing) and
   // routine progress notes (Vicon trigger sent, CaptureStart received, …).

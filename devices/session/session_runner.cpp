@@ -25,8 +25,29 @@ using session::TrialType;
 
 struct SessionRunner::Rig {
   std::unique_ptr<DeviceHub> hub;
+  DeviceHub* hub_ref = nullptr;  // a hub the caller owns (SessionRunOptions::external_hub)
   const SimSource* sim = nullptr;
+  DeviceHub& get() const { return hub ? *hub : *hub_ref; }
 };
+
+namespace {
+
+// Frames carry the hub's slot numbers; the session reads them by its own layout's slots.
+std::string slots_differ(const Layout& hub_layout, const Layout& session_layout) {
+  std::vector<std::string> a, b;
+  for (const auto& d : hub_layout.devices) a.push_back(d.slot);
+  for (const auto& d : session_layout.devices) b.push_back(d.slot);
+  if (a == b) return {};
+  auto join = [](const std::vector<std::string>& v) {
+    std::string out;
+    for (const auto& s : v) out += (out.empty() ? "" : ", ") + s;
+    return out;
+  };
+  return "the running controllers' layout '" + hub_layout.name + "' has slots " + join(a) + "; the session's layout '" +
+         session_layout.name + "' has " + join(b) + ": open a layout with the session's slots in the Layout tab";
+}
+
+}  // namespace
 
 std::string AttemptResult::verdict() const { return quality ? quality->verdict : std::string("fail"); }
 
@@ -102,7 +123,10 @@ PreflightReport SessionRunner::preflight(int i, std::stop_token stop) {
   std::unique_ptr<Rig> probe_rig;
   DeviceHub* hub = nullptr;
   try {
-    if (parse_source_spec(options_.backend).backend == "leapc") {
+    if (options_.external_hub != nullptr) {
+      if (auto why = slots_differ(options_.external_hub->layout(), in.layout); !why.empty()) throw Error(why);
+      hub = options_.external_hub;
+    } else if (parse_source_spec(options_.backend).backend == "leapc") {
       if (hardware_block_ != p.layout_key) {
         hardware_rig_.reset();
         hardware_rig_ = make_rig(i, 0, options_.sim.seed);
@@ -138,8 +162,26 @@ void SessionRunner::override_preflight(int i, const std::string& reason) {
   cleared_blocks_.insert(block);
 }
 
+namespace {
+
+// Keeps a tap on a hub for one scope, whatever ends it.
+class TapAttachment {
+ public:
+  TapAttachment(DeviceHub& hub, FrameTap* tap) : hub_(hub), tap_(tap) { hub_.add_tap(tap_); }
+  ~TapAttachment() { hub_.remove_tap(tap_); }
+  TapAttachment(const TapAttachment&) = delete;
+  TapAttachment& operator=(const TapAttachment&) = delete;
+
+ private:
+  DeviceHub& hub_;
+  FrameTap* tap_;
+};
+
+}  // namespace
+
 AttemptResult SessionRunner::run_trial(int i, std::stop_token stop,
-                                       const std::function<void(const TrialSnapshot&)>& on_status) {
+                                       const std::function<void(const TrialSnapshot&)>& on_status, FrameTap* live_tap,
+                                       const std::function<std::string()>& abort_reason) {
   const PlannedTrial& p = plan_.at(static_cast<size_t>(i));
   const TrialType& type = protocol_.trial_types.at(static_cast<size_t>(p.trial_type));
   const auto& trial_state = folder_.state().trials.at(static_cast<size_t>(i));
@@ -179,18 +221,29 @@ AttemptResult SessionRunner::run_trial(int i, std::stop_token stop,
                                104729ULL * static_cast<std::uint64_t>(result.attempt - 1);
     std::unique_ptr<Rig> trial_rig;
     Rig* rig = nullptr;
-    if (hardware_rig_ && hardware_block_ == p.layout_key) {
+    Rig external;  // non-owning: the hub is the caller's
+    if (options_.external_hub != nullptr) {
+      external.hub_ref = options_.external_hub;
+      rig = &external;
+    } else if (hardware_rig_ && hardware_block_ == p.layout_key) {
       rig = hardware_rig_.get();
     } else {
       trial_rig = make_rig(i, type.duration_s, seed);
       rig = trial_rig.get();
     }
     if (rig->sim != nullptr) config.extra["simulator"] = sim_config_to_json(options_.sim);
-    TrialEngine engine(*rig->hub, rig->sim, config);
+    TapAttachment tap(rig->get(), live_tap);
+    TrialEngine engine(rig->get(), rig->sim, config);
     tr = engine.run(stop, on_status);
   } catch (const std::exception& e) {
     tr.outcome = TrialOutcome::kFailed;
     tr.reason = e.what();
+  }
+  if (tr.outcome == TrialOutcome::kInterrupted && abort_reason) {
+    if (std::string why = abort_reason(); !why.empty()) {
+      tr.outcome = TrialOutcome::kAborted;
+      tr.reason = std::move(why);
+    }
   }
   result.outcome = trial_outcome_name(tr.outcome);
   result.reason = tr.reason;

@@ -20,6 +20,8 @@
 #include "core/session/protocol.h"
 #include "core/session/session_folder.h"
 #include "core/session/trial_quality.h"
+#include "devices/device_hub.h"
+#include "devices/frame_tap.h"
 #include "devices/record/trial_engine.h"
 #include "devices/session/preflight.h"
 #include "devices/sim/sim_config.h"
@@ -34,6 +36,11 @@ struct SessionRunOptions {
   double countdown_s = 0;
   double preflight_timeout_s = 5;
   std::optional<std::filesystem::path> vicon_export_dir;  // where Vicon writes <trial>.trc/.c3d
+  // A hub someone else owns and keeps running (the workbench's live rig), used for every
+  // pre-flight and trial instead of opening the backend again: two LeapC connections to the same
+  // controllers would fight over them. Its layout's slot names must be the session's, in order
+  // (the pre-flight says so when they are not); it must outlive the runner.
+  DeviceHub* external_hub = nullptr;
 };
 
 // What happened to one attempt, as the runner journaled it.
@@ -69,8 +76,13 @@ class SessionRunner {
 
   // Records trial `i` once (a new attempt), assesses it and journals every step. Throws only for
   // a programming error; device and disk trouble end the attempt with its outcome and reason.
+  // `live_tap` (the live fused hand, frame_tap.h) sees every frame of the trial's hub while it
+  // records; it must be built for layout(i) and is detached before run_trial returns.
+  // `abort_reason`, asked once when the stop token ended the trial: a non-empty answer journals
+  // the attempt as aborted with that reason instead of interrupted (the operator's Esc).
   AttemptResult run_trial(int i, std::stop_token stop = {},
-                          const std::function<void(const TrialSnapshot&)>& on_status = {});
+                          const std::function<void(const TrialSnapshot&)>& on_status = {},
+                          FrameTap* live_tap = nullptr, const std::function<std::string()>& abort_reason = {});
   // The operator keeps the last attempt of trial `i`.
   void accept(int i);
   // The last attempt of trial `i` goes under superseded/; the trial is pending again.

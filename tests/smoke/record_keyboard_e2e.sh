@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
 # The Record tab driven as an operator would, with real key presses (issue #11): a `quick`
 # session on the simulated rig is opened in the real window under Xvfb, then xdotool presses
-# Space (pre-flight), Space (first trial), R (redo it), Space (again), Space (second trial) and
-# Ctrl+Q. Afterwards the session folder must say: every trial accepted, the redone attempt kept
+# Space (pre-flight), Space (first trial), R (redo it), Space (again), Space (second trial), N with
+# a typed note and Enter, and Ctrl+Q. Afterwards the session folder must say: every trial accepted, the redone attempt kept
 # under superseded/, and the journal holds the redo. Each step waits for the journal, not a clock.
 set -eu
 lmc=${1:?usage: record_keyboard_e2e.sh LMC LMC_WORKBENCH WORK_DIR}
@@ -49,6 +49,10 @@ press space; wait_for '"type":"trial_accepted"' 2 "the first trial, again"
 sleep 0.5
 press space; wait_for '"type":"trial_accepted"' 3 "the second trial"
 sleep 0.5
+press n; sleep 0.5
+xdotool type --delay 30 "glove slipped"
+press Return; wait_for '"text":"glove slipped"' 1 "the note"
+sleep 0.5
 press ctrl+q
 for _ in $(seq 100); do kill -0 $pid 2>/dev/null || break; sleep 0.1; done
 if kill -0 $pid 2>/dev/null; then echo "Ctrl+Q did not close the workbench"; exit 1; fi
@@ -71,5 +75,7 @@ kept = os.path.join(session, first, "LMC_Naiv_Static101.raw.txt")
 assert os.path.getsize(kept) > 0, kept
 assert os.path.exists(os.path.join(session, "LMC_Naiv_Static101.raw.txt"))
 assert os.path.exists(os.path.join(session, "LMC_Naiv_Index101.raw.txt"))
-print("record tab e2e: 2 trials accepted by keyboard, 1 redo kept under", first)
+notes = [json.loads(l) for l in open(os.path.join(session, "journal.jsonl")) if '"type":"note"' in l]
+assert [n["text"] for n in notes] == ["glove slipped"], notes
+print("record tab e2e: 2 trials accepted by keyboard, 1 redo kept under", first, "and a note typed after N")
 EOF

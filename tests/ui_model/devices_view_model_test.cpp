@@ -241,5 +241,32 @@ TEST(DevicesViewModel, UnknownBackendIsAnErrorMessage) {
   EXPECT_NE(f.vm.messages().back().find("cannot start bluetooth"), std::string::npos);
 }
 
+// The Devices tab shows the same fused hand as the Record tab: the rig's hub feeds a live fusion
+// worker (devices/fusion/live_fusion.h) with every frame.
+TEST(DevicesViewModel, TheRigsControllersAreFusedIntoOneHandWithItsLatency) {
+  RigFixture f;
+  DevicesViewModel& vm = f.vm;
+  EXPECT_FALSE(vm.fused());
+  ASSERT_EQ(vm.start("sim"), "");
+  ASSERT_TRUE(refresh_until(vm, [&] {
+    return vm.fused() && vm.fused()->has_hand && vm.fusion_stats().window_frames > 20 && vm.hands().size() >= 2;
+  }, 30.0));
+  // The fused palm lies among the controllers' own palms (they agree within 20 mm, test above).
+  const Vec3 fused_palm = vm.fused()->points[kPalm];
+  EXPECT_LT((fused_palm - vm.hands()[0].world[kPalm]).norm(), 30.0);
+  for (int n : vm.fused()->seen_by) {
+    EXPECT_GE(n, 0);
+    EXPECT_LE(n, 4);
+  }
+  const devices::LiveFusionStats& s = vm.fusion_stats();
+  EXPECT_EQ(s.frames_refused, 0);
+  EXPECT_LE(s.latency_p50_ms, s.latency_p95_ms);
+  EXPECT_LE(s.latency_p95_ms, s.latency_max_ms);
+  vm.stop();
+  vm.refresh();
+  EXPECT_FALSE(vm.fused());
+  EXPECT_EQ(f.context.rig().fusion(), nullptr);
+}
+
 }  // namespace
 }  // namespace lmc::ui

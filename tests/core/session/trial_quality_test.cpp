@@ -559,5 +559,73 @@ TEST(TrialQuality, PublishedStaticTrialPasses) {
   for (double f : r.finger_seen_fraction) EXPECT_DOUBLE_EQ(f, 1.0);
 }
 
+// The verdict's plot: hand presence and fingers seen per controller over the trial, on the
+// same grid as the figures beside it.
+TEST(TrialQuality, TimelineShowsWhenEachControllerHadTheHand) {
+  Trial trial;
+  const HandFrame pose = reference_pose(HandModel(), HandOrientation::kHorizontal, HandMotion::kOpen);
+  const HandAt hand = [pose](double t) {
+    return t < 1.0 || t >= 9.5 ? std::optional<HandFrame>(pose) : std::nullopt;
+  };
+  for (int id = 1; id <= 4; ++id) add_stream(trial, id, 10.0, hand);
+  interleave(trial);
+  finish(trial);
+  const QualityReport r = assess_trial(trial.inputs());
+  const QualityTimeline& t = r.timeline;
+  // 1000 grid instants (10 ms, 0.00 … 9.99 s) in 120 slices of 8⅓ instants.
+  ASSERT_EQ(t.slices(), 120);
+  EXPECT_NEAR(t.slice_s, 10.0 / 120.0, 1e-12);
+  ASSERT_EQ(t.device_ids, (std::vector<int>{1, 2, 3, 4}));
+  ASSERT_EQ(t.hand_present.size(), 4U);
+  for (size_t d = 0; d < 4; ++d) {
+    EXPECT_DOUBLE_EQ(t.hand_present[d][0], 1.0) << d;    // 0.00–0.07 s: the hand
+    EXPECT_DOUBLE_EQ(t.hand_present[d][60], 0.0) << d;   // 5.00–5.07 s: none
+    EXPECT_DOUBLE_EQ(t.hand_present[d][119], 1.0) << d;  // 9.91–9.99 s: the hand again
+    EXPECT_DOUBLE_EQ(t.fingers_seen[d][60], 0.0) << d;
+    EXPECT_GE(t.fingers_seen[d][0], 0.0);
+    EXPECT_LE(t.fingers_seen[d][0], 5.0);
+  }
+  EXPECT_TRUE(std::isnan(t.worst_finger_seen_by[60]));  // no hand: no finger count
+  // A still hand: the same controllers see the least-seen finger at every instant with a hand.
+  EXPECT_DOUBLE_EQ(t.worst_finger_seen_by[0], t.worst_finger_seen_by[119]);
+  EXPECT_EQ(t.worst_finger_seen_by[0], std::round(t.worst_finger_seen_by[0]));
+  // Every finger was seen by ≥ 1 controller whenever there was a hand (the figures say so too).
+  const double least = *std::min_element(r.finger_seen_fraction.begin(), r.finger_seen_fraction.end());
+  EXPECT_EQ(least == 1.0, t.worst_finger_seen_by[0] >= 1.0);
+}
+
+TEST(TrialQuality, TimelineOfThePublishedStaticTrialAgreesWithItsFigures) {
+  const auto path = test::reference_file("acquisition/LMC_Naiv_Static101.raw.txt");
+  if (!std::filesystem::exists(path)) GTEST_SKIP() << "reference data not found: " << path;
+  const LmcRecording rec = read_lmc_recording(path);
+  RecorderSidecar sidecar;
+  sidecar.trial = "Naiv_Static101";
+  sidecar.status = "completed";
+  QualityInputs in;
+  in.recording = &rec;
+  in.sidecar = &sidecar;
+  in.layout = initial_layout();
+  in.planned_s = 5.0;
+  const QualityReport r = assess_trial(in);
+  const QualityTimeline& t = r.timeline;
+  ASSERT_EQ(t.slices(), 120);
+  EXPECT_NEAR(t.slice_s * 120, 5.12, 0.01);  // 512 instants of 10 ms
+  ASSERT_EQ(t.device_ids, (std::vector<int>{1, 2, 3, 4}));
+  for (size_t d = 0; d < 4; ++d) {
+    // The mean over the trial is the device's share of instants with a hand: close to its share
+    // of frames with a hand (107 of 118 for LMC1).
+    double mean = 0;
+    for (double v : t.hand_present[d]) mean += v / t.slices();
+    EXPECT_NEAR(mean, r.devices[d].hand_fraction, 0.05) << d;
+  }
+  // Every finger seen by some controller at every instant with a hand (finger_seen_fraction 1.0).
+  for (int s = 0; s < t.slices(); ++s) {
+    const double w = t.worst_finger_seen_by[static_cast<size_t>(s)];
+    if (!std::isnan(w)) {
+      EXPECT_GE(w, 1.0) << "slice " << s;
+    }
+  }
+}
+
 }  // namespace
 }  // namespace lmc::session

@@ -30,9 +30,15 @@ void DevicesViewModel::refresh() {
   rig_.poll();
   rows_.clear();
   hands_.clear();
+  fused_.reset();
+  fusion_stats_ = {};
   all_streaming_ = false;
   const devices::DeviceHub* hub = rig_.hub();
   if (hub == nullptr) return;
+  if (const devices::LiveFusion* fusion = rig_.fusion()) {
+    fused_ = fusion->latest();
+    fusion_stats_ = fusion->stats();
+  }
   const devices::HubSnapshot snap = hub->snapshot();
   const Layout& hub_layout = hub->layout();
   int streaming_slots = 0;

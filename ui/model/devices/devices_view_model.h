@@ -65,6 +65,10 @@ class DevicesViewModel {
   void refresh();
   const std::vector<DeviceRow>& rows() const { return rows_; }
   const std::vector<LiveHand>& hands() const { return hands_; }
+  // The rig's controllers fused into one hand (the Record tab's live fusion, on the rig's hub)
+  // and its latency; nullopt / empty stats while the rig is stopped.
+  const std::optional<FusedHand>& fused() const { return fused_; }
+  const devices::LiveFusionStats& fusion_stats() const { return fusion_stats_; }
   const std::vector<std::string>& messages() const { return rig_.messages(); }
   std::vector<std::string> slot_choices() const;
   std::string assign(const std::string& serial, const std::string& slot);
@@ -88,6 +92,8 @@ class DevicesViewModel {
   LiveRig& rig_;
   std::vector<DeviceRow> rows_;
   std::vector<LiveHand> hands_;
+  std::optional<FusedHand> fused_;
+  devices::LiveFusionStats fusion_stats_;
   bool all_streaming_ = false;
 };
 

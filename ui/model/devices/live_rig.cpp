@@ -40,9 +40,13 @@ std::string summary_of(const devices::TrialResult& r) {
 LiveRig::LiveRig(const CurrentLayout& layout)
     : current_(layout), layout_version_(layout.version()), layout_(layout.get()) {}
 
-LiveRig::~LiveRig() { stop(); }
+LiveRig::~LiveRig() {
+  lent_ = false;  // whoever borrowed the hub is gone by now (the shell destroys the tabs first)
+  stop();
+}
 
 std::string LiveRig::start(const std::string& backend, const devices::SimConfig& sim) {
+  if (lent_) return "the Record tab's session records through the running controllers; close it first";
   stop();
   // A start always uses the workbench's latest layout, even before the first poll() saw it.
   if (current_.version() != layout_version_) {
@@ -57,6 +61,12 @@ std::string LiveRig::start(const std::string& backend, const devices::SimConfig&
     settings.sim = sim;
     auto hub = std::make_unique<devices::DeviceHub>(layout_);
     hub->add_source(devices::make_source(spec, settings));
+    try {
+      fusion_ = std::make_unique<devices::LiveFusion>(hub->layout());
+      hub->add_tap(fusion_.get());
+    } catch (const std::exception& e) {
+      say(std::string("no live fused hand for layout '") + layout_.name + "': " + e.what());
+    }
     hub->start();
     hub_ = std::move(hub);
     backend_ = backend;
@@ -71,6 +81,10 @@ std::string LiveRig::start(const std::string& backend, const devices::SimConfig&
 }
 
 void LiveRig::stop() {
+  if (lent_) {
+    say("the Record tab's session records through the running controllers: they keep running until it is closed");
+    return;
+  }
   // The trial's worker records from the hub: it ends (keeping what it wrote) before the hub goes.
   if (trial_.running()) {
     trial_.cancel_and_join();
@@ -79,8 +93,10 @@ void LiveRig::stop() {
   if (hub_) {
     layout_ = hub_->layout();  // keep the bindings for the next start
     hub_->stop();
+    if (fusion_) hub_->remove_tap(fusion_.get());
     for (auto& m : hub_->take_messages()) say(std::move(m));
     hub_.reset();
+    fusion_.reset();
     say("stopped " + backend_);
   }
 }
@@ -107,7 +123,7 @@ void LiveRig::poll() {
     layout_change_pending_ = true;
     if (trial_.running()) say("layout changed to '" + current_.get().name + "': the rig follows when the trial ends");
   }
-  if (layout_change_pending_ && !trial_.running()) apply_layout_change();
+  if (layout_change_pending_ && !trial_.running() && !lent_) apply_layout_change();
   // Outside a trial the engine is not draining the hub's messages: the rig does.
   if (hub_ && !trial_.running()) {
     for (auto& m : hub_->take_messages()) say(std::move(m));
@@ -130,6 +146,30 @@ void LiveRig::apply_layout_change() {
   if (start(backend, sim).empty()) say("layout changed to '" + layout_.name + "': restarted " + backend);
 }
 
+devices::DeviceHub* LiveRig::lend(const std::string& backend, std::string& error) {
+  if (lent_) {
+    error = "the controllers are already lent to a session";
+    return nullptr;
+  }
+  if (trial_.running()) {
+    error = "the Devices tab is recording " + trial_.trial() + "; stop it first";
+    return nullptr;
+  }
+  if (!hub_ || backend_ != backend) {
+    error = start(backend, sim_config_);
+    if (!error.empty()) return nullptr;
+  }
+  lent_ = true;
+  say("the Record tab's session records through " + backend_);
+  return hub_.get();
+}
+
+void LiveRig::give_back() {
+  if (!lent_) return;
+  lent_ = false;
+  say("the Record tab's session gave the controllers back");
+}
+
 void LiveRig::say(std::string text) {
   ++messages_total_;
   messages_.push_back(std::move(text));
@@ -138,6 +178,7 @@ void LiveRig::say(std::string text) {
 
 std::string LiveRig::start_trial(const std::filesystem::path& dir, const std::string& trial, double seconds) {
   if (!hub_) return "start a backend first";
+  if (lent_) return "the Record tab's session records through these controllers; record there";
   if (trial_.running()) return "already recording " + trial_.trial();
   if (auto why = devices::validate_trial_name(trial); !why.empty()) return why;
   // Never overwrite (the TrialEngine's rule): pressing Record again with the same name records

@@ -19,6 +19,7 @@
 
 #include "core/layout/layout.h"
 #include "devices/device_hub.h"
+#include "devices/fusion/live_fusion.h"
 #include "devices/sim/sim_config.h"
 #include "ui/model/current_layout.h"
 #include "ui/model/devices/trial_job.h"
@@ -44,6 +45,9 @@ class LiveRig {
   // The shared hub (null while stopped): every client reads the same controllers through it.
   devices::DeviceHub* hub() { return hub_.get(); }
   const devices::DeviceHub* hub() const { return hub_.get(); }
+  // The live fused hand of the rig's controllers (devices/fusion/live_fusion.h: every frame of
+  // the hub on a worker thread of its own); null while stopped or when the layout cannot be fused.
+  const devices::LiveFusion* fusion() const { return fusion_.get(); }
   // The layout the rig streams with: the workbench's plus the serials bound to its slots.
   const Layout& layout() const { return hub_ ? hub_->layout() : layout_; }
   // Binds a controller to a slot (the binding becomes part of the rig's layout).
@@ -56,6 +60,15 @@ class LiveRig {
   const std::vector<std::string>& messages() const { return messages_; }
   // How many messages were ever said: a client that saw N shows the last (total − N) as new.
   std::uint64_t messages_total() const { return messages_total_; }
+
+  // ---- lending the hub ----------------------------------------------------------------------------
+  // The Record tab records a session through this hub (one LeapC connection for the whole
+  // workbench): while lent, start(), stop(), a test recording and a layout restart are refused or
+  // wait, so the hub stays valid and nobody else installs a recorder on it. lend() starts
+  // `backend` when the rig runs another (or none) and returns the hub, or null with `error` set.
+  devices::DeviceHub* lend(const std::string& backend, std::string& error);
+  void give_back();
+  bool lent() const { return lent_; }
 
   // ---- trial --------------------------------------------------------------------------------
   // Records `trial` into `dir` through the TrialEngine (the rig's layout, `seconds` long). Never
@@ -79,6 +92,7 @@ class LiveRig {
   std::uint64_t layout_version_ = 0;
   bool layout_change_pending_ = false;
   Layout layout_;  // the workbench's layout with this rig's serial bindings
+  std::unique_ptr<devices::LiveFusion> fusion_;  // before hub_: outlives its registration on it
   std::unique_ptr<devices::DeviceHub> hub_;
   std::string backend_;
   devices::SimConfig sim_config_;
@@ -86,6 +100,7 @@ class LiveRig {
   std::vector<std::string> messages_;
   std::uint64_t messages_total_ = 0;
   bool trial_reported_ = true;
+  bool lent_ = false;
   std::string trial_summary_;
   TrialJob trial_;  // after hub_: destroyed (joined) before the hub it records from
 };

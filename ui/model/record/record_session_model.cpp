@@ -1,18 +1,22 @@
 #include "ui/model/record/record_session_model.h"
 
-#include <chrono>
 #include <utility>
 
 #include "ui/model/record/resume_notice.h"
+#include "core/common/error.h"
+#include "ui/model/devices/live_rig.h"
 
 namespace lmc::ui {
+namespace {
 
-RecordSessionModel::RecordSessionModel() = default;
+// The journaled reason of a trial the operator aborted (Esc): the attempt is kept and redone.
+constexpr const char* kAbortedByOperator = "aborted by the operator";
 
-RecordSessionModel::~RecordSessionModel() {
-  // The worker uses the runner and the folder: stop and join it before they go.
-  job_.cancel_and_join();
-}
+}  // namespace
+
+RecordSessionModel::RecordSessionModel(LiveRig* rig) : rig_(rig) {}
+
+RecordSessionModel::~RecordSessionModel() { close(); }
 
 std::string RecordSessionModel::adopt(session::SessionFolder folder, const RecordSettings& settings, bool resumed) {
   folder_ = std::make_unique<session::SessionFolder>(std::move(folder));
@@ -22,9 +26,17 @@ std::string RecordSessionModel::adopt(session::SessionFolder folder, const Recor
     options.fast = settings.fast;
     options.sim = settings.sim;
     options.countdown_s = settings.countdown_s;
+    if (settings.share_rig_hub) {
+      if (rig_ == nullptr) throw Error("no live rig to record through");
+      std::string why;
+      options.external_hub = rig_->lend(settings.backend, why);
+      if (options.external_hub == nullptr) throw Error("cannot use the " + settings.backend + " controllers: " + why);
+      rig_borrowed_ = true;
+    }
     runner_ = std::make_unique<devices::SessionRunner>(*folder_, options);
   } catch (const std::exception& e) {
     folder_.reset();  // releases the folder's lock
+    give_back_rig();
     return e.what();
   }
   settings_ = settings;
@@ -60,9 +72,17 @@ std::string RecordSessionModel::open(const std::filesystem::path& dir, const Rec
   }
 }
 
+void RecordSessionModel::give_back_rig() {
+  if (rig_borrowed_ && rig_ != nullptr) rig_->give_back();
+  rig_borrowed_ = false;
+}
+
 void RecordSessionModel::close() {
+  // The worker uses the runner, the folder, the live fusion and a lent hub: it ends first.
   job_.cancel_and_join();
+  live_fusion_.reset();
   runner_.reset();
+  give_back_rig();
   folder_.reset();
   state_ = {};
   recovered_.clear();
@@ -141,14 +161,26 @@ std::string RecordSessionModel::start_trial() {
     return state_.trials[static_cast<size_t>(i)].plan.name + " is accepted; redo it (R) to record it again";
   if (runner_->needs_preflight(i)) return "run the pre-flight for this layout first (or override it with a reason)";
   devices::SessionRunner* runner = runner_.get();
+  try {
+    live_fusion_ = std::make_unique<devices::LiveFusion>(runner_->layout(i));
+  } catch (const std::exception& e) {
+    return "the block's layout cannot be fused live: " + std::string(e.what());
+  }
   recording_trial_ = i;
   live_.reset();
+  live_fused_.reset();
+  fusion_stats_ = {};
+  abort_requested_ = false;
   // Shown as recording at once; the folder's own state says so when the worker is done.
   state_.trials[static_cast<size_t>(i)].status = session::TrialStatus::kRecording;
   job_handled_ = false;
-  job_.start([runner, i](std::stop_token stop, JobChannel<devices::TrialSnapshot>& channel) {
+  devices::LiveFusion* fusion = live_fusion_.get();
+  const std::atomic<bool>* aborting = &abort_requested_;
+  job_.start([runner, i, fusion, aborting](std::stop_token stop, JobChannel<devices::TrialSnapshot>& channel) {
     RecordWorkResult r;
-    r.attempt = runner->run_trial(i, stop, [&channel](const devices::TrialSnapshot& s) { channel.report(s); });
+    r.attempt = runner->run_trial(
+        i, stop, [&channel](const devices::TrialSnapshot& s) { channel.report(s); }, fusion,
+        [aborting] { return aborting->load() ? std::string(kAbortedByOperator) : std::string(); });
     return r;
   });
   return {};
@@ -156,6 +188,49 @@ std::string RecordSessionModel::start_trial() {
 
 void RecordSessionModel::stop_trial() {
   if (recording()) job_.cancel();
+}
+
+std::string RecordSessionModel::abort_trial() {
+  if (!recording()) return "no trial is recording";
+  abort_requested_ = true;
+  job_.cancel();
+  return {};
+}
+
+int RecordSessionModel::note_trial() const {
+  if (!has_session()) return -1;
+  if (recording()) return recording_trial_;
+  if (last_attempt_) return last_attempt_->trial;
+  return current_trial();
+}
+
+std::string RecordSessionModel::add_note(const std::string& text) {
+  if (!has_session()) return "open or create a session first";
+  const auto first = text.find_first_not_of(" \t");
+  if (first == std::string::npos) return "the note is empty";
+  const auto last = text.find_last_not_of(" \t");
+  const std::string line = text.substr(first, last - first + 1);
+  if (line.find('\n') != std::string::npos) return "a note is one line";
+  const int i = note_trial();
+  if (i < 0) return "no trial to note";
+  pending_notes_.emplace_back(i, line);
+  // The worker owns the folder while it runs: the note waits for it (poll() writes it).
+  if (busy()) return {};
+  write_pending_notes();
+  return std::exchange(last_note_error_, {});
+}
+
+void RecordSessionModel::write_pending_notes() {
+  for (const auto& [i, line] : pending_notes_) {
+    try {
+      runner_->note(i, line);
+    } catch (const std::exception& e) {
+      // Kept in the status line: the operator reads that the note did not reach the journal.
+      last_note_error_ = "note not journaled: " + std::string(e.what());
+    }
+  }
+  pending_notes_.clear();
+  refresh_state();
 }
 
 std::string RecordSessionModel::accept_last() {
@@ -193,36 +268,6 @@ std::string RecordSessionModel::redo(int i) {
   return {};
 }
 
-// Feeds each controller's newest frame from the engine's status snapshot into the causal fusion.
-// Snapshots come about ten times a second, so this is the fused hand as the operator sees it,
-// not every frame (a per-frame fusion on its own thread is the next step, issue #11).
-void RecordSessionModel::fuse_snapshot(const devices::HubSnapshot& hub) {
-  const Layout* layout = current_layout();
-  if (!layout) return;
-  if (!fusion_) {
-    fusion_ = std::make_unique<OnlineFusion>(*layout);
-    fused_frame_ids_.assign(static_cast<size_t>(layout->device_count()), -1);
-  }
-  const auto t0 = std::chrono::steady_clock::now();
-  bool added = false;
-  for (const auto& d : hub.devices) {
-    if (d.slot_index < 0 || d.slot_index >= layout->device_count() || !d.latest || !d.connected) continue;
-    auto& last = fused_frame_ids_[static_cast<size_t>(d.slot_index)];
-    if (d.latest->frame_id == last) continue;
-    last = d.latest->frame_id;
-    try {
-      fusion_->add(*d.latest, d.slot_index, static_cast<double>(d.latest->timestamp_us) * 1e-6);
-      added = true;
-    } catch (const std::exception&) {
-      // A frame the fusion refuses (non-finite time) is left out of the live view only; the
-      // recording keeps it and the verdict judges it.
-    }
-  }
-  if (!added) return;
-  live_fused_ = fusion_->current();
-  fusion_step_ms_ = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
-}
-
 const Layout* RecordSessionModel::current_layout() const {
   const int i = recording() ? recording_trial_ : current_trial();
   if (!runner_ || i < 0) return nullptr;
@@ -238,7 +283,10 @@ std::string RecordSessionModel::poll() {
   if (fresh && live_) {
     const Layout* layout = current_layout();
     live_hands_ = layout ? ui::live_hands(live_->hub, *layout) : std::vector<LiveHand>{};
-    fuse_snapshot(live_->hub);
+  }
+  if (live_fusion_ && recording()) {
+    live_fused_ = live_fusion_->latest();
+    fusion_stats_ = live_fusion_->stats();
   }
   const JobState js = job_.state();
   if (job_handled_ || !job_finished(js) || !folder_) return {};
@@ -275,7 +323,9 @@ std::string RecordSessionModel::poll() {
   live_.reset();
   live_hands_.clear();
   live_fused_.reset();
-  fusion_.reset();
+  live_fusion_.reset();  // the worker has detached it from the hub: joins its thread
+  if (!pending_notes_.empty()) write_pending_notes();
+  if (!last_note_error_.empty()) line += (line.empty() ? "" : "; ") + std::exchange(last_note_error_, {});
   refresh_state();
   return line;
 }

@@ -12,6 +12,7 @@
 // The rules are the CLI's (`lmc session run`): a pass or warn verdict accepts the trial; a fail
 // waits for the operator, who redoes it or accepts it anyway (journaled); a redo keeps the earlier
 // attempt under superseded/.
+#include <atomic>
 #include <filesystem>
 #include <memory>
 #include <optional>
@@ -20,6 +21,7 @@
 
 #include "core/processing/online_fusion.h"
 #include "core/session/session_folder.h"
+#include "devices/fusion/live_fusion.h"
 #include "devices/record/trial_engine.h"
 #include "devices/session/session_runner.h"
 #include "ui/model/devices/live_hands.h"
@@ -33,6 +35,10 @@ struct RecordSettings {
   bool fast = false;            // simulated time (sim and replay only)
   double countdown_s = 3;       // seconds between Start and the first recorded second
   devices::SimConfig sim;
+  // Record through the workbench's live rig (LiveRig::lend) instead of opening the backend again:
+  // the tab sets it for leapc, where a second connection would fight the Devices tab's for the
+  // same controllers. Needs the model to be given the rig.
+  bool share_rig_hub = false;
 };
 
 // What the worker did, for poll().
@@ -41,9 +47,13 @@ struct RecordWorkResult {
   std::optional<devices::AttemptResult> attempt;
 };
 
+class LiveRig;
+
 class RecordSessionModel {
  public:
-  RecordSessionModel();
+  // `rig` (optional, must outlive the model): the workbench's live rig, lent for sessions whose
+  // settings share its hub.
+  explicit RecordSessionModel(LiveRig* rig = nullptr);
   ~RecordSessionModel();
   RecordSessionModel(const RecordSessionModel&) = delete;
   RecordSessionModel& operator=(const RecordSessionModel&) = delete;
@@ -84,6 +94,9 @@ class RecordSessionModel {
   // Records the current trial (a new attempt). Refused while busy or before the pre-flight.
   std::string start_trial();
   void stop_trial();  // the trial ends as interrupted; its rows are kept
+  // Esc: the trial ends as aborted by the operator (journaled so; its rows are kept, the verdict
+  // is fail and the trial waits for a redo). Returns why not when nothing records.
+  std::string abort_trial();
   bool busy() const { return job_.running(); }
   bool recording() const { return busy() && recording_trial_ >= 0; }
   int recording_trial() const { return recording_trial_; }
@@ -91,10 +104,12 @@ class RecordSessionModel {
   const std::optional<devices::TrialSnapshot>& live() const { return live_; }
   // Each controller's latest hand in the world frame (live_hands.h), while recording.
   const std::vector<LiveHand>& live_hands() const { return live_hands_; }
-  // The controllers fused into one hand while recording (the causal default fusion, fingers with
-  // how many controllers see them now), and what one fusion step cost on this machine.
+  // The controllers fused into one hand while recording: every frame of the trial's hub goes
+  // through the causal default fusion on a worker thread of its own (devices/fusion/live_fusion.h),
+  // fingers with how many controllers see them now; and its latency from a frame's arrival at
+  // the hub to the fused hand (p50/p95/max over the latest frames).
   const std::optional<FusedHand>& live_fused() const { return live_fused_; }
-  double fusion_step_ms() const { return fusion_step_ms_; }
+  const devices::LiveFusionStats& fusion_stats() const { return fusion_stats_; }
   // The layout of the current (or recording) trial's block; null without a session.
   const Layout* current_layout() const;
   // The last attempt this run recorded, with its verdict; and which trial it was.
@@ -103,6 +118,11 @@ class RecordSessionModel {
   std::string accept_last();
   // Records trial `i` again: its current attempt moves under superseded/ (i = -1: the last one).
   std::string redo(int i = -1);
+  // N: a one-line note on the trial being recorded, else the last one recorded, else the current
+  // one, journaled with it. While a trial records the note waits and is journaled as soon as the
+  // worker is done with the folder (nothing the operator types is lost).
+  std::string add_note(const std::string& text);
+  int note_trial() const;  // the trial add_note() writes to (-1: none)
 
   // Once a frame: takes the worker's snapshots and, when it finished, its result (accepting a
   // pass or warn, refreshing the state). Returns one line for the status bar when something ended.
@@ -112,6 +132,8 @@ class RecordSessionModel {
   std::string adopt(session::SessionFolder folder, const RecordSettings& settings, bool resumed);
   void refresh_state();
 
+  LiveRig* rig_ = nullptr;
+  bool rig_borrowed_ = false;
   std::unique_ptr<session::SessionFolder> folder_;
   std::unique_ptr<devices::SessionRunner> runner_;
   std::filesystem::path dir_;
@@ -123,11 +145,14 @@ class RecordSessionModel {
   int recording_trial_ = -1;
   std::optional<devices::TrialSnapshot> live_;
   std::vector<LiveHand> live_hands_;
-  void fuse_snapshot(const devices::HubSnapshot& hub);
-  std::unique_ptr<OnlineFusion> fusion_;          // per trial, with its block's layout
-  std::vector<std::int64_t> fused_frame_ids_;    // per slot: the last frame fed to the fusion
+  void write_pending_notes();
+  void give_back_rig();
+  std::unique_ptr<devices::LiveFusion> live_fusion_;  // per trial, with its block's layout
   std::optional<FusedHand> live_fused_;
-  double fusion_step_ms_ = 0;
+  devices::LiveFusionStats fusion_stats_;
+  std::atomic<bool> abort_requested_{false};  // read by the worker when the trial stops
+  std::vector<std::pair<int, std::string>> pending_notes_;  // typed while the worker held the folder
+  std::string last_note_error_;
   std::optional<devices::PreflightReport> last_preflight_;
   std::optional<devices::AttemptResult> last_attempt_;
   bool job_handled_ = true;  // the finished job's result was taken by poll()

@@ -75,6 +75,9 @@ RecordSettings RecordSetupForm::settings() const {
   r.backend = backend == 1 ? "leapc" : "sim";
   r.fast = fast && backend == 0;
   r.countdown_s = r.fast ? 0.0 : 3.0;
+  // Real controllers are already open in the Devices tab's rig: a second LeapC connection to the
+  // same devices would fight it, so sessions record through that hub.
+  r.share_rig_hub = r.backend == "leapc";
   return r;
 }
 

@@ -20,6 +20,7 @@
 #include "core/io/layout_json.h"
 #include "devices/source_factory.h"
 #include "ui/model/devices/devices_view_model.h"
+#include "ui/model/devices/fusion_readout.h"
 #include "ui/scene/orbit_camera.h"
 #include "ui/scene/scene_items.h"
 #include "ui/widgets/file_browser.h"
@@ -255,8 +256,11 @@ class DevicesTab final : public Tab {
   }
 
   void draw_live_view() {
+    if (vm_.running()) ImGui::TextDisabled("%s", fusion_latency_line(vm_.fusion_stats()).c_str());
     draw_live_hands_view("live_canvas", camera_, vm_.layout(), vm_.hands(),
-                         "World frame (mm), one colour per device. Drag to orbit, wheel to zoom.");
+                         "World frame (mm), one colour per device; the fused hand thick, fingers by how many controllers "
+                         "see them (red none, orange 1, yellow 2, green 3+). Drag to orbit, wheel to zoom.",
+                         vm_.fused() ? &*vm_.fused() : nullptr);
   }
 
   StatusSink& status_;

@@ -1,7 +1,7 @@
 // The Record tab (issue #11): one subject session at the bench. Set up or resume, pre-flight per
 // layout block, then trial after trial with the cue, a big red circle while recording, a strip per
 // controller, and a verdict with one-key redo. Keyboard: Space starts / stops, Enter accepts a
-// failed trial anyway, R redoes the last one. All state and rules live in RecordSessionModel
+// failed trial anyway, R redoes the last one, N adds a note, Esc aborts the running trial. All state and rules live in RecordSessionModel
 // (ui/model/record/); this file lays out the panels and maps keys and buttons to its actions.
 #include "ui/tabs/record/record_tab.h"
 
@@ -29,7 +29,8 @@ namespace {
 
 class RecordTab final : public Tab {
  public:
-  RecordTab(StatusSink& status, WorkbenchContext& context) : status_(status), subject_(context.subject_screen()) {
+  RecordTab(StatusSink& status, WorkbenchContext& context)
+      : status_(status), model_(&context.rig()), subject_(context.subject_screen()) {
     sessions_ = list_sessions(sessions_dir());
     if (auto& startup = context.record_startup()) {
       std::snprintf(form_.open_folder, sizeof form_.open_folder, "%s", startup->session.string().c_str());
@@ -150,6 +151,8 @@ class RecordTab final : public Tab {
     if (error_.empty()) status_.set_status("Record: session " + model_.dir().string() + " opened");
   }
 
+  // Real controllers are opened once, by the workbench's live rig: the session records through
+  // its hub (the Devices tab keeps showing the same controllers and the same fused hand).
   void draw_header() {
     const auto& st = model_.state();
     ImGui::Text("Subject %s  ·  protocol %s  ·  %d of %zu trials accepted  ·  %s", st.subject().subject_id.c_str(),
@@ -162,7 +165,7 @@ class RecordTab final : public Tab {
         sessions_ = list_sessions(sessions_dir());
       }
     }
-    ImGui::TextDisabled("Space: start / stop   Enter: accept a failed trial anyway   R: redo the last trial");
+    ImGui::TextDisabled("Space: start / stop   Esc: abort   Enter: accept a failed trial anyway   R: redo   N: note");
     ImGui::SameLine();
     draw_subject_screen_controls(subject_);
   }
@@ -182,6 +185,18 @@ class RecordTab final : public Tab {
         break;
       case TrialPanelAction::kStart: why = model_.start_trial(); break;
       case TrialPanelAction::kStop: model_.stop_trial(); break;
+      case TrialPanelAction::kAbort:
+        why = model_.abort_trial();
+        if (why.empty()) status_.set_status("Record: trial aborted; it is kept, marked aborted, and waits for a redo (R)");
+        break;
+      case TrialPanelAction::kNote:
+        why = model_.add_note(panel_.note.text);
+        if (why.empty()) {
+          status_.set_status(std::string("Record: note ") + (model_.busy() ? "kept; journaled when the trial ends: " : "journaled: ") +
+                             panel_.note.text);
+          panel_.note = {};
+        }
+        break;
       case TrialPanelAction::kAccept: why = model_.accept_last(); break;
       case TrialPanelAction::kRedo: why = model_.redo(); break;
     }
@@ -197,6 +212,8 @@ class RecordTab final : public Tab {
       else if (model_.needs_preflight()) act(TrialPanelAction::kPreflight);
       else act(TrialPanelAction::kStart);
     }
+    if (ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Escape), false) && model_.recording()) act(TrialPanelAction::kAbort);
+    if (ImGui::IsKeyPressed('N', false)) open_note(panel_.note);
     if (model_.busy()) return;
     if (ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Enter), false) && model_.last_attempt() &&
         model_.last_attempt()->verdict() == "fail")

@@ -8,6 +8,8 @@
 #include "ui/model/record/motion_pictogram.h"
 #include "ui/tabs/record/record_colours.h"
 #include "ui/widgets/hand_pictogram.h"
+#include "ui/model/devices/fusion_readout.h"
+#include "ui/tabs/record/record_device_strips.h"
 #include "ui/widgets/live_hands_view.h"
 
 namespace lmc::ui {
@@ -41,34 +43,6 @@ void recording_circle(bool counting_down) {
   ImGui::Dummy(ImVec2(2 * r + 8, 2 * r));
 }
 
-void device_strips(const devices::HubSnapshot& hub) {
-  if (!ImGui::BeginTable("strips", 5, ImGuiTableFlags_BordersInnerH | ImGuiTableFlags_SizingFixedFit)) return;
-  ImGui::TableSetupColumn("Slot");
-  ImGui::TableSetupColumn("Controller");
-  ImGui::TableSetupColumn("Rate");
-  ImGui::TableSetupColumn("Hand");
-  ImGui::TableSetupColumn("Frame age");
-  ImGui::TableHeadersRow();
-  for (const auto& d : hub.devices) {
-    if (d.slot.empty()) continue;
-    ImGui::TableNextRow();
-    ImGui::TableNextColumn();
-    ImGui::TextUnformatted(d.slot.c_str());
-    ImGui::TableNextColumn();
-    ImGui::TextUnformatted(d.serial.c_str());
-    ImGui::TableNextColumn();
-    if (!d.connected) ImGui::TextColored(kRed, "LOST");
-    else ImGui::Text("%.0f Hz", d.rate_hz);
-    ImGui::TableNextColumn();
-    if (d.hand_present) ImGui::TextColored(kGreen, "hand");
-    else ImGui::TextColored(kRed, "no hand");
-    ImGui::TableNextColumn();
-    if (d.latest_frame_age_ms < 0) ImGui::TextDisabled("-");
-    else ImGui::Text("%.0f ms", d.latest_frame_age_ms);
-  }
-  ImGui::EndTable();
-}
-
 // A green or red line per check, with its reason.
 void preflight_checklist(const devices::PreflightReport& report) {
   ImGui::Text("Pre-flight for layout '%s':", report.layout_name.c_str());
@@ -89,11 +63,11 @@ TrialPanelAction preflight_section(const RecordSessionModel& model, TrialPanelIn
     ImGui::TextUnformatted("Checking the controllers, Vicon, disk and folder…");
     return action;
   }
-  if (big_button("Run pre-flight (Space)", ImVec4(0.2F, 0.4F, 0.7F, 1.0F))) action = TrialPanelAction::kPreflight;
+  if (big_button("Run pre-flight  [Space]", ImVec4(0.2F, 0.4F, 0.7F, 1.0F))) action = TrialPanelAction::kPreflight;
   input.anchors.remember("preflight");
   ImGui::SameLine();
   ImGui::BeginDisabled();
-  if (big_button("Start (Space)", ImVec4(0.15F, 0.55F, 0.25F, 1.0F))) action = TrialPanelAction::kStart;
+  if (big_button("Start  [Space]", ImVec4(0.15F, 0.55F, 0.25F, 1.0F))) action = TrialPanelAction::kStart;
   input.anchors.remember("start");
   ImGui::EndDisabled();
   ImGui::TextDisabled("Start is enabled when every pre-flight line is green, or after an override with a typed reason "
@@ -111,26 +85,14 @@ TrialPanelAction preflight_section(const RecordSessionModel& model, TrialPanelIn
   return action;
 }
 
-void verdict_section(const RecordSessionModel& model, TrialPanelAction& action) {
-  const auto& a = model.last_attempt();
-  if (!a) return;
-  const auto& name = model.state().trials.at(static_cast<size_t>(a->trial)).plan.name;
-  ImGui::Separator();
-  ImGui::Text("%s, attempt %d: %s", name.c_str(), a->attempt, a->outcome.c_str());
-  ImGui::SameLine();
-  ImGui::TextColored(verdict_colour(a->verdict()), "  %s", a->verdict().c_str());
-  if (a->quality) {
-    for (const auto& why : a->quality->reasons) ImGui::BulletText("%s", why.c_str());
-    if (a->quality->reasons.empty()) ImGui::BulletText("every check passed");
+// The verdict (record_verdict_panel.h) and the note line, as this panel's actions.
+void verdict_section(const RecordSessionModel& model, TrialPanelInput& input, TrialPanelAction& action) {
+  switch (draw_record_verdict_panel(model, input.note)) {
+    case VerdictAction::kAccept: action = TrialPanelAction::kAccept; break;
+    case VerdictAction::kRedo: action = TrialPanelAction::kRedo; break;
+    case VerdictAction::kNone: break;
   }
-  const bool accepted = model.state().trials.at(static_cast<size_t>(a->trial)).status == session::TrialStatus::kAccepted;
-  if (!accepted && ImGui::Button("Accept anyway (Enter)")) action = TrialPanelAction::kAccept;
-  if (!accepted) ImGui::SameLine();
-  if (ImGui::Button("Redo this trial (R)")) action = TrialPanelAction::kRedo;
-  if (accepted) {
-    ImGui::SameLine();
-    ImGui::TextDisabled("accepted; R records it again and keeps this attempt under superseded/");
-  }
+  if (draw_note_line(model, input.note)) action = TrialPanelAction::kNote;
 }
 
 // The block's controllers where the layout puts them and, while recording, each one's hand.
@@ -140,8 +102,8 @@ void live_view(const RecordSessionModel& model, TrialPanelInput& input) {
   ImGui::Spacing();
   const auto& fused = model.live_fused();
   if (fused) {
-    ImGui::TextDisabled("Fused hand: fingers by how many controllers see them now (red none, orange 1, yellow 2, green 3+) "
-                        "· fusion step %.2f ms", model.fusion_step_ms());
+    ImGui::TextDisabled("Fused hand: fingers by how many controllers see them now (red none, orange 1, yellow 2, green 3+)");
+    ImGui::TextDisabled("%s", fusion_latency_line(model.fusion_stats()).c_str());
     int unseen = 0;
     for (int n : fused->seen_by) unseen += n == 0 ? 1 : 0;
     if (unseen > 0 && fused->has_hand) {
@@ -172,7 +134,7 @@ TrialPanelAction draw_record_trial_panel(const RecordSessionModel& model, TrialP
     big_text("Every trial is accepted. The session is complete.", 1.5F);
     ImGui::TextWrapped("Folder: %s. Process it with `lmc process %s -o OUT`.", model.dir().string().c_str(),
                        model.dir().string().c_str());
-    verdict_section(model, action);
+    verdict_section(model, input, action);
     return action;
   }
   const auto& trial = state.trials.at(static_cast<size_t>(i));
@@ -230,19 +192,20 @@ TrialPanelAction draw_record_trial_panel(const RecordSessionModel& model, TrialP
       ImGui::ProgressBar(std::clamp(f, 0.0F, 1.0F), ImVec2(360, 0));
     }
     ImGui::EndGroup();
-    if (big_button("Stop (Space)", ImVec4(0.7F, 0.15F, 0.15F, 1.0F))) action = TrialPanelAction::kStop;
-    if (live) {
-      ImGui::Text("Frames written %lld · Vicon packets sent %d", static_cast<long long>(live->recorder.frames_written),
-                  live->vicon_packets_sent);
-      device_strips(live->hub);
-    }
+    if (big_button("Stop  [Space]", ImVec4(0.7F, 0.15F, 0.15F, 1.0F))) action = TrialPanelAction::kStop;
+    ImGui::SameLine();
+    if (ImGui::Button("Abort  [Esc]", ImVec2(160, 52))) action = TrialPanelAction::kAbort;
+    ImGui::SameLine();
+    if (ImGui::Button("Note  [N]", ImVec2(120, 52))) open_note(input.note);
+    if (draw_note_line(model, input.note)) action = TrialPanelAction::kNote;
+    if (live) draw_record_device_strips(*live);
     live_view(model, input);
     return action;
   }
 
   if (model.needs_preflight()) {
     const TrialPanelAction a = preflight_section(model, input);
-    verdict_section(model, action);
+    verdict_section(model, input, action);
     live_view(model, input);
     return a != TrialPanelAction::kNone ? a : action;
   }
@@ -250,12 +213,12 @@ TrialPanelAction draw_record_trial_panel(const RecordSessionModel& model, TrialP
   if (const auto& report = model.last_preflight(); report && report->ok() && !model.last_attempt())
     preflight_checklist(*report);
   if (!model.busy()) {
-    if (big_button("Start (Space)", ImVec4(0.15F, 0.55F, 0.25F, 1.0F))) action = TrialPanelAction::kStart;
+    if (big_button("Start  [Space]", ImVec4(0.15F, 0.55F, 0.25F, 1.0F))) action = TrialPanelAction::kStart;
     input.anchors.remember("start");
   }
   if (trial.attempts.size() > 0 && trial.status != session::TrialStatus::kAccepted)
     ImGui::TextDisabled("attempt %zu of this trial", trial.attempts.size() + 1);
-  verdict_section(model, action);
+  verdict_section(model, input, action);
   live_view(model, input);
   return action;
 }

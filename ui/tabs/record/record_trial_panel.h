@@ -7,17 +7,19 @@
 #include <string>
 
 #include "ui/model/record/record_session_model.h"
+#include "ui/tabs/record/record_verdict_panel.h"
 #include "ui/scene/orbit_camera.h"
 #include "ui/widgets/widget_anchors.h"
 
 namespace lmc::ui {
 
-enum class TrialPanelAction { kNone, kPreflight, kOverride, kStart, kStop, kAccept, kRedo };
+enum class TrialPanelAction { kNone, kPreflight, kOverride, kStart, kStop, kAbort, kAccept, kRedo, kNote };
 
 struct TrialPanelInput {
   char override_reason[200] = "";
   OrbitCamera camera;  // the live view's
   WidgetAnchors anchors;  // "preflight", "start", "override" as drawn (headless tests click them)
+  NoteInput note;      // N: the one-line note (kNote when submitted)
 };
 
 TrialPanelAction draw_record_trial_panel(const RecordSessionModel& model, TrialPanelInput& input);
