@@ -32,6 +32,9 @@ struct CalibrationValidationCase {
   double consensus_mm = 0, consensus_deg = 0;        // without Vicon, relative to the anchor
   double vicon_seconds = 0, consensus_seconds = 0;   // calibrate() alone, wall time
   bool vicon_ok = false, consensus_ok = false;
+  // Controllers the calibration left as they were (their injected error took the hand out of their
+  // view, so they have no samples): not scored, counted here and named in `warnings`.
+  int vicon_unfitted = 0, consensus_unfitted = 0;
   std::vector<std::string> warnings;                 // any warning is unexpected here
 };
 
