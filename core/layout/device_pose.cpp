@@ -1,5 +1,6 @@
 #include "core/layout/device_pose.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <numbers>
@@ -41,6 +42,24 @@ Eigen::Matrix3d DevicePose::rotation() const {
           AngleAxisd(ry_deg * kRadPerDeg, Vector3d::UnitY()) *
           AngleAxisd(rx_deg * kRadPerDeg, Vector3d::UnitX()))
       .toRotationMatrix();
+}
+
+void DevicePose::set_rotation(const Eigen::Matrix3d& r) {
+  // R = Rz(c)·Ry(b)·Rx(a): R(2,0) = −sin b, R(2,1) = cos b·sin a, R(2,2) = cos b·cos a,
+  // R(1,0) = sin c·cos b, R(0,0) = cos c·cos b.
+  // atan2 rather than asin(−R(2,0)): asin loses half the digits near ±90°.
+  const double cb = std::sqrt(r(2, 1) * r(2, 1) + r(2, 2) * r(2, 2));
+  const double b = std::atan2(-r(2, 0), cb);
+  double a = 0, c = 0;
+  if (cb > 1e-9) {
+    a = std::atan2(r(2, 1), r(2, 2));
+    c = std::atan2(r(1, 0), r(0, 0));
+  } else {
+    a = std::atan2(-r(1, 2), r(1, 1));  // with c = 0, row 1 of Ry·Rx is (0, cos a, −sin a)
+  }
+  rx_deg = a / kDegToRad;
+  ry_deg = b / kDegToRad;
+  rz_deg = c / kDegToRad;
 }
 
 Eigen::Isometry3d DevicePose::device_to_world() const {

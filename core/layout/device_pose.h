@@ -16,6 +16,9 @@ struct DevicePose {
   void set(int k, double value);
 
   Eigen::Matrix3d rotation() const;
+  // Sets rx, ry, rz so that rotation() == r (r must be a rotation). At ry = ±90° (gimbal lock)
+  // rz is set to 0 and rx takes the whole turn about the remaining axis.
+  void set_rotation(const Eigen::Matrix3d& r);
   Eigen::Vector3d translation() const { return {x_mm, y_mm, z_mm}; }
   Eigen::Isometry3d device_to_world() const;
 

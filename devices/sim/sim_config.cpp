@@ -67,7 +67,8 @@ SimConfig sim_config_from_json(const nlohmann::json& j, const std::string& sourc
                "hand_breadth_mm", "rate_min_hz", "rate_max_hz", "rate_wander", "latency_min_ms", "latency_max_ms",
                "noise", "noise_sigma_mm", "fov_test", "range_mm", "occlusion", "phalanx_radius_mm",
                "internal_model_bias", "axis_cut", "axis_cut_mm", "elbow_error", "elbow_error_min_mm",
-               "elbow_error_max_mm", "calibration", "calibration_offsets_mm", "unplugs", "serial_prefix",
+               "elbow_error_max_mm", "calibration", "calibration_offsets_mm", "calibration_rotations_deg",
+               "calibration_random_translation_mm", "calibration_random_rotation_deg", "unplugs", "serial_prefix",
                "truth_rate_hz", "device_clock_start_us"});
   if (r.has("seed")) c.seed = static_cast<std::uint64_t>(r.at("seed").integer());
   if (r.has("motion")) {
@@ -115,6 +116,20 @@ SimConfig sim_config_from_json(const nlohmann::json& j, const std::string& sourc
       c.calibration_offsets_mm[slot] = {e.at(size_t{0}).number(), e.at(size_t{1}).number(), e.at(size_t{2}).number()};
     }
   }
+  if (r.has("calibration_rotations_deg")) {
+    JsonReader rots = r.at("calibration_rotations_deg");
+    rots.require_object();
+    for (const auto& [slot, v] : rots.json().items()) {
+      JsonReader e = rots.at(slot.c_str());
+      if (e.array_size() != 3) e.fail("expected [rx, ry, rz] in degrees");
+      c.calibration_rotations_deg[slot] = {e.at(size_t{0}).number(), e.at(size_t{1}).number(), e.at(size_t{2}).number()};
+    }
+  }
+  c.calibration_random_translation_mm = r.number_or("calibration_random_translation_mm", c.calibration_random_translation_mm);
+  c.calibration_random_rotation_deg = r.number_or("calibration_random_rotation_deg", c.calibration_random_rotation_deg);
+  if (c.calibration_random_translation_mm < 0) r.at("calibration_random_translation_mm").fail("must be ≥ 0");
+  if (c.calibration_random_rotation_deg < 0 || c.calibration_random_rotation_deg > 180)
+    r.at("calibration_random_rotation_deg").fail("must be between 0 and 180");
   if (r.has("unplugs")) {
     JsonReader u = r.at("unplugs");
     for (size_t i = 0; i < u.array_size(); ++i) {
@@ -166,6 +181,11 @@ nlohmann::json sim_config_to_json(const SimConfig& c) {
   nlohmann::json offs = nlohmann::json::object();
   for (const auto& [slot, v] : c.calibration_offsets_mm) offs[slot] = {v.x(), v.y(), v.z()};
   j["calibration_offsets_mm"] = offs;
+  nlohmann::json rots = nlohmann::json::object();
+  for (const auto& [slot, v] : c.calibration_rotations_deg) rots[slot] = {v.x(), v.y(), v.z()};
+  j["calibration_rotations_deg"] = rots;
+  j["calibration_random_translation_mm"] = c.calibration_random_translation_mm;
+  j["calibration_random_rotation_deg"] = c.calibration_random_rotation_deg;
   nlohmann::json unplugs = nlohmann::json::array();
   for (const auto& u : c.unplugs) unplugs.push_back({{"slot", u.slot}, {"at_s", u.at_s}, {"duration_s", u.duration_s}});
   j["unplugs"] = unplugs;

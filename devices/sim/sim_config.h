@@ -12,6 +12,14 @@
 // offset = c, i.e. the layout offset IS the calibration error processing must undo. With
 // calibration "layout" (default) c = the layout's offset; "none" sets c = 0; "custom" takes
 // `calibration_offsets_mm` per slot.
+//
+// Rotation error (issue #13): the device also stands turned by E about its own origin, so it
+// reports p_d = (E·R)ᵀ·(p_true − t − c) and only a transform with rotation E·R reproduces the
+// truth. E comes from `calibration_rotations_deg` per slot (rx, ry, rz as a layout pose's angles,
+// E = Rz·Ry·Rx) in any mode; none by default. On top of either, `calibration_random_translation_mm`
+// and `calibration_random_rotation_deg` (0 by default) add a seeded random error per device:
+// a uniform direction with a length uniform in [0, N] mm, a uniform axis with an angle uniform in
+// [0, M]°. SimRig::true_device_to_world() gives the resulting transform.
 #include <cstdint>
 #include <map>
 #include <nlohmann/json_fwd.hpp>
@@ -64,6 +72,9 @@ struct SimConfig {
   enum class Calibration { kLayout, kNone, kCustom };
   Calibration calibration = Calibration::kLayout;
   std::map<std::string, Eigen::Vector3d> calibration_offsets_mm;  // kCustom, by slot
+  std::map<std::string, Eigen::Vector3d> calibration_rotations_deg;  // any mode, by slot: (rx, ry, rz)
+  double calibration_random_translation_mm = 0;  // seeded random error per device, up to this length
+  double calibration_random_rotation_deg = 0;    // and up to this angle
   std::vector<SimUnplug> unplugs;
   std::string serial_prefix = "SIM";
 

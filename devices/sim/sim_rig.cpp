@@ -110,9 +110,31 @@ SimRig::SimRig(Layout layout, SimConfig config)
         break;
       }
     }
-    d->r = ld.pose.rotation();
+    // Rotation error about the device's own origin (sim_config.h), drawn from a stream of its
+    // own so that the rates, noise and elbow of a configuration without it do not change.
+    Eigen::Matrix3d turn = Eigen::Matrix3d::Identity();
+    if (auto it = config_.calibration_rotations_deg.find(ld.slot); it != config_.calibration_rotations_deg.end()) {
+      DevicePose angles;
+      angles.rx_deg = it->second.x();
+      angles.ry_deg = it->second.y();
+      angles.rz_deg = it->second.z();
+      turn = angles.rotation();
+    }
+    if (config_.calibration_random_translation_mm > 0 || config_.calibration_random_rotation_deg > 0) {
+      std::mt19937_64 cal(mix(config_.seed, 200 + i));
+      std::normal_distribution<double> gauss(0, 1);
+      std::uniform_real_distribution<double> u01(0, 1);
+      const Vec3 dir = Vec3(gauss(cal), gauss(cal), gauss(cal)).normalized();
+      d->calibration += dir * (u01(cal) * config_.calibration_random_translation_mm);
+      const Vec3 axis = Vec3(gauss(cal), gauss(cal), gauss(cal)).normalized();
+      const double angle = u01(cal) * config_.calibration_random_rotation_deg * std::numbers::pi / 180.0;
+      turn = Eigen::AngleAxisd(angle, axis).toRotationMatrix() * turn;
+    }
+    d->r = turn * ld.pose.rotation();
     d->origin = ld.pose.translation() + d->calibration;
-    d->view = DeviceView::from_pose(ld.pose, d->calibration);
+    DevicePose true_pose = ld.pose;
+    true_pose.set_rotation(d->r);
+    d->view = DeviceView::from_pose(true_pose, d->calibration);
     std::uniform_real_distribution<double> rate(config_.rate_min_hz, config_.rate_max_hz);
     d->rate_hz = rate(d->rng);
     std::uniform_real_distribution<double> u01(0, 1);
@@ -136,6 +158,14 @@ SimRig::SimRig(Layout layout, SimConfig config)
 SimRig::~SimRig() = default;
 
 Eigen::Vector3d SimRig::calibration_error(int device) const { return devices_.at(static_cast<size_t>(device))->calibration; }
+
+Eigen::Isometry3d SimRig::true_device_to_world(int device) const {
+  const Device& d = *devices_.at(static_cast<size_t>(device));
+  Eigen::Isometry3d t = Eigen::Isometry3d::Identity();
+  t.linear() = d.r;
+  t.translation() = d.origin;
+  return t;
+}
 
 HandFrame SimRig::truth_at(double t) const {
   if (still_truth_) return *still_truth_;

@@ -4,6 +4,7 @@
 // yields the rig's events in time order forever; generate_sim_trial() collects a whole trial
 // deterministically, far faster than real time (recorder tests, `lmc record --fast`, simulated
 // sessions with known truth for processing). SimSource (sim_source.h) plays a rig live.
+#include <Eigen/Geometry>
 #include <array>
 #include <cstdint>
 #include <memory>
@@ -44,6 +45,9 @@ class SimRig {
   const std::vector<DeviceInfo>& devices() const { return infos_; }
   // Calibration error c of device i (see sim_config.h): the offset processing must apply.
   Eigen::Vector3d calibration_error(int device) const;
+  // Where device i really stands: p_world = R·p_device + t with the rotation error included
+  // (sim_config.h); with no rotation error R is the layout's and t = pose + calibration_error.
+  Eigen::Isometry3d true_device_to_world(int device) const;
 
   SimEvent next();
   // The truth hand (world frame, consistent with the marker mapping) at time t.

@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 namespace lmc::ui {
 namespace layout_actions_test {
 
@@ -117,6 +119,27 @@ TEST(LayoutActions, ApplyLayoutMatchesBySlotAndIsOneUndoStep) {
   EXPECT_EQ(doc.undo_size(), 1u);
   EXPECT_EQ(doc.undo_message(), "Apply optimised layout");
   doc.undo();
+  EXPECT_EQ(doc.head(), before);
+}
+
+TEST(LayoutActions, ApplyCalibrationSetsPosesOffsetsAndNameInOneUndoStep) {
+  auto doc = paper_square();
+  const LayoutDocument before = doc.head();
+  Layout calibrated = before.layout;
+  calibrated.name = "untitled (calibrated)";
+  calibrated.description = "Calibrated 4 of 4 controllers from trial T";
+  calibrated.devices[2].pose.ry_deg = 3.5;
+  calibrated.devices[2].offset_mm = Eigen::Vector3d(4, -2, 11);
+  ASSERT_TRUE(apply_calibration(doc, calibrated));
+  EXPECT_EQ(doc.head().layout, calibrated);
+  EXPECT_EQ(doc.undo_size(), 1u);
+  EXPECT_EQ(doc.undo_message(), "Apply calibration");
+  doc.undo();
+  EXPECT_EQ(doc.head(), before);
+  calibrated.devices[1].offset_mm.x() = std::nan("");
+  const ActionResult bad = apply_calibration(doc, calibrated);
+  EXPECT_FALSE(bad);
+  EXPECT_EQ(bad.error, "the calibrated pose of LMC2 is not finite");
   EXPECT_EQ(doc.head(), before);
 }
 

@@ -222,6 +222,31 @@ ActionResult apply_layout(UndoableLayoutDocument& doc, const Layout& optimised) 
   return commit_checked(doc, "Apply optimised layout");
 }
 
+ActionResult apply_calibration(UndoableLayoutDocument& doc, const Layout& calibrated) {
+  doc.rollback();
+  LayoutDocument& d = doc.upd_scratch();
+  int matched = 0;
+  for (auto& dev : d.layout.devices) {
+    const int j = calibrated.find_slot(dev.slot);
+    if (j < 0) continue;
+    const LayoutDevice& c = calibrated.devices[static_cast<size_t>(j)];
+    if (!finite_pose(c.pose) || !c.offset_mm.allFinite()) {
+      doc.rollback();
+      return ActionResult::fail("the calibrated pose of " + dev.slot + " is not finite");
+    }
+    dev.pose = c.pose;
+    dev.offset_mm = c.offset_mm;
+    ++matched;
+  }
+  if (matched == 0) {
+    doc.rollback();
+    return ActionResult::fail("the calibrated layout shares no slot with the current one");
+  }
+  d.layout.name = calibrated.name;
+  d.layout.description = calibrated.description;
+  return commit_checked(doc, "Apply calibration");
+}
+
 Layout default_new_layout() {
   Layout l;
   l.name = "untitled";

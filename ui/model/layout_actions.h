@@ -63,6 +63,11 @@ ActionResult replace_layout(UndoableLayoutDocument& doc, const Layout& layout, c
 // Applies an optimised layout: poses only, matched by slot; one undo step ("Apply optimised layout").
 ActionResult apply_layout(UndoableLayoutDocument& doc, const Layout& optimised);
 
+// Applies a calibrated layout (core/calibration/calibrated_layout.h): every matched slot's pose
+// and offset, and the name and description that say where the calibration came from; one undo
+// step ("Apply calibration").
+ActionResult apply_calibration(UndoableLayoutDocument& doc, const Layout& calibrated);
+
 // The layout a "New" command starts from: four controllers in the paper's initial square
 // (reference-algorithms.md §1, ±60 mm), no serials.
 Layout default_new_layout();
