@@ -4,6 +4,7 @@
 #include <limits>
 #include <numbers>
 
+#include "core/common/angles.h"
 #include "core/results/trial_outputs.h"
 
 namespace lmc::calibration {
@@ -27,7 +28,7 @@ int ResidualSums::count_all() const {
 }
 
 double transform_distance_mm(const RigidTransform& a, const RigidTransform& b) {
-  const double turn_rad = rotation_angle_deg(a.r.transpose() * b.r) * std::numbers::pi / 180.0;
+  const double turn_rad = rotation_angle_deg(a.r.transpose() * b.r) * kRadPerDeg;
   return std::max((a.t - b.t).norm(), 100.0 * turn_rad);
 }
 

@@ -4,6 +4,8 @@
 #include <cmath>
 #include <numbers>
 
+#include "core/common/angles.h"
+
 namespace lmc::calibration {
 
 SampleTable::SampleTable(const std::vector<DeviceSamples>& samples, int frames)
@@ -70,7 +72,7 @@ std::vector<RigidTransform> anchor_to_nominal(const std::vector<RigidTransform>&
 namespace {
 
 double change_mm(const RigidTransform& a, const RigidTransform& b) {
-  const double turn_rad = rotation_angle_deg(a.r.transpose() * b.r) * std::numbers::pi / 180.0;
+  const double turn_rad = rotation_angle_deg(a.r.transpose() * b.r) * kRadPerDeg;
   return std::max((a.t - b.t).norm(), 100.0 * turn_rad);
 }
 

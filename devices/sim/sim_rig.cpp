@@ -6,6 +6,7 @@
 #include <map>
 #include <numbers>
 
+#include "core/common/angles.h"
 #include "core/common/error.h"
 #include "core/hand/reference_poses.h"
 #include "core/io/pose_set_tsv.h"
@@ -127,7 +128,7 @@ SimRig::SimRig(Layout layout, SimConfig config)
       const Vec3 dir = Vec3(gauss(cal), gauss(cal), gauss(cal)).normalized();
       d->calibration += dir * (u01(cal) * config_.calibration_random_translation_mm);
       const Vec3 axis = Vec3(gauss(cal), gauss(cal), gauss(cal)).normalized();
-      const double angle = u01(cal) * config_.calibration_random_rotation_deg * std::numbers::pi / 180.0;
+      const double angle = u01(cal) * config_.calibration_random_rotation_deg * kRadPerDeg;
       turn = Eigen::AngleAxisd(angle, axis).toRotationMatrix() * turn;
     }
     d->r = turn * ld.pose.rotation();

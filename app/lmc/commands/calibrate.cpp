@@ -140,7 +140,7 @@ void setup_calibrate(CLI::App& app) {
   app.callback([a] { run_calibrate(*a); });
 }
 
-const lmc::cli::CommandRegistration reg{"calibrate", "Calibrate the controllers from a short trial of a still hand", 42,
+const lmc::cli::CommandRegistration calibrate_command{"calibrate", "Calibrate the controllers from a short trial of a still hand", 42,
                                         setup_calibrate};
 
 }  // namespace
