@@ -57,9 +57,9 @@ void DevicePose::set_rotation(const Eigen::Matrix3d& r) {
   } else {
     a = std::atan2(-r(1, 2), r(1, 1));  // with c = 0, row 1 of Ry·Rx is (0, cos a, −sin a)
   }
-  rx_deg = a / kDegToRad;
-  ry_deg = b / kDegToRad;
-  rz_deg = c / kDegToRad;
+  rx_deg = a / kRadPerDeg;
+  ry_deg = b / kRadPerDeg;
+  rz_deg = c / kRadPerDeg;
 }
 
 Eigen::Isometry3d DevicePose::device_to_world() const {

@@ -76,7 +76,9 @@ class LiveRig {
   // text, empty when the trial started.
   std::string start_trial(const std::filesystem::path& dir, const std::string& trial, double seconds);
   void stop_trial() { trial_.request_stop(); }
-  bool recording() const { return trial_.running(); }
+  // True from start_trial until poll() has reported the ended trial (its summary and messages):
+  // a caller that sees false can always take the summary, even if the job ended mid-poll.
+  bool recording() const { return trial_.running() || (job_finished(trial_.state()) && !trial_reported_); }
   const TrialJob& trial() const { return trial_; }
   // The name the current (or last) trial got.
   const std::string& trial_name() const { return trial_.trial(); }
