@@ -81,7 +81,9 @@ void draw_live_hands_view(const char* id, OrbitCamera& camera, const Layout& lay
     }
   }
   dl->PopClipRect();
-  dl->AddText(ImVec2(origin.x + 8, origin.y + 6), IM_COL32(200, 200, 210, 255), caption.c_str());
+  // Wrapped to the canvas: a caption wider than a narrow view must not run off under the next panel.
+  dl->AddText(ImGui::GetFont(), ImGui::GetFontSize(), ImVec2(origin.x + 8, origin.y + 6), IM_COL32(200, 200, 210, 255),
+              caption.c_str(), nullptr, std::max(size.x - 16.0F, 1.0F));
 }
 
 }  // namespace lmc::ui

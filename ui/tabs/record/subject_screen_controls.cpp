@@ -17,12 +17,15 @@ void draw_subject_screen_controls(SubjectScreenLink& link) {
   }
   ImGui::SameLine();
   ImGui::Checkbox("windowed", &link.windowed);
+  constexpr const char* kCoversHint = "(covers this monitor)";
+  if (ImGui::IsItemHovered()) ImGui::SetTooltip("Off: the subject screen fills the chosen monitor. On: a plain window.");
   if (!link.problem.empty()) {
-    ImGui::SameLine();
-    ImGui::TextColored(ImVec4(1.0F, 0.4F, 0.35F, 1.0F), "%s", link.problem.c_str());
+    ImGui::TextColored(ImVec4(1.0F, 0.4F, 0.35F, 1.0F), "%s", link.problem.c_str());  // own line: it must be read whole
   } else if (link.open && n == 1 && !link.windowed) {
+    // Only where it fits: the line is shared with the tab's key hint.
     ImGui::SameLine();
-    ImGui::TextDisabled("(covers this monitor)");
+    if (ImGui::GetContentRegionAvail().x >= ImGui::CalcTextSize(kCoversHint).x) ImGui::TextDisabled("%s", kCoversHint);
+    else ImGui::NewLine();
   }
 }
 
