@@ -110,6 +110,24 @@ TEST(RecordSessionModel, RedoKeepsTheEarlierAttemptAndRecordsTheTrialAgain) {
   fs::remove_all(dir);
 }
 
+TEST(RecordSessionModel, RedoTakesTheRecordedTrialPickedInTheListBeforeTheLastOne) {
+  const fs::path dir = test::fresh_test_dir("record_model");
+  RecordSessionModel m;
+  ASSERT_EQ(m.create(dir, quick(), fast_sim()), "");
+  clear_preflight(m);
+  record_current(m);
+  record_current(m);
+  ASSERT_TRUE(m.finished());
+  ASSERT_EQ(m.last_attempt()->trial, 1);
+  m.select(0);  // the operator clicks the first trial, then presses R
+  ASSERT_EQ(m.redo(), "");
+  EXPECT_EQ(m.state().trials[0].status, session::TrialStatus::kPending);
+  EXPECT_EQ(m.state().trials[1].status, session::TrialStatus::kAccepted);
+  EXPECT_EQ(m.current_trial(), 0);
+  m.close();
+  fs::remove_all(dir);
+}
+
 TEST(RecordSessionModel, StopInterruptsTheTrialKeepsItsRowsAndWaitsForTheOperator) {
   const fs::path dir = test::fresh_test_dir("record_model");
   RecordSessionModel m;

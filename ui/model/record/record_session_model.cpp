@@ -253,8 +253,12 @@ std::string RecordSessionModel::redo(int i) {
   if (busy()) return "a trial is running";
   if (!has_session()) return "no session";
   if (i < 0) {
-    if (!last_attempt_) return "no trial recorded in this run yet";
-    i = last_attempt_->trial;
+    // A recorded trial the operator picked in the list comes first: any trial can be redone.
+    const bool picked_recorded = selected_ >= 0 && selected_ < static_cast<int>(state_.trials.size()) &&
+                                 !state_.trials[static_cast<size_t>(selected_)].attempts.empty();
+    if (picked_recorded) i = selected_;
+    else if (last_attempt_) i = last_attempt_->trial;
+    else return "no trial recorded in this run yet; pick a recorded trial in the list to redo it";
   }
   if (i >= static_cast<int>(state_.trials.size())) return "no such trial";
   if (state_.trials[static_cast<size_t>(i)].attempts.empty()) return state_.trials[static_cast<size_t>(i)].plan.name + " has not been recorded yet";

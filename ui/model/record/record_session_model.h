@@ -116,7 +116,8 @@ class RecordSessionModel {
   const std::optional<devices::AttemptResult>& last_attempt() const { return last_attempt_; }
   // Keeps the last attempt despite a fail verdict (the operator's decision, journaled as a note).
   std::string accept_last();
-  // Records trial `i` again: its current attempt moves under superseded/ (i = -1: the last one).
+  // Records trial `i` again: its current attempt moves under superseded/ (i = -1: the trial picked
+  // in the list if it has been recorded, else the last one recorded in this run).
   std::string redo(int i = -1);
   // N: a one-line note on the trial being recorded, else the last one recorded, else the current
   // one, journaled with it. While a trial records the note waits and is journaled as soon as the

@@ -10,13 +10,29 @@ namespace lmc::ui {
 
 int draw_record_trial_list(const session::SessionState& state, int current, int recording) {
   int clicked = -1;
+  // Grouped as the protocol records them: layout, then palm pose and motion (a sub-heading each time
+  // either changes, so a counterbalanced order still reads correctly).
   std::string block;
+  int pose = -1, motion = -1;
   for (const auto& t : state.trials) {
     if (t.plan.layout_key != block) {
       block = t.plan.layout_key;
+      pose = motion = -1;
       ImGui::Spacing();
       ImGui::TextDisabled("Layout %s", block.c_str());
       ImGui::Separator();
+    }
+    if (t.plan.pose != pose || t.plan.trial_type != motion) {
+      pose = t.plan.pose;
+      motion = t.plan.trial_type;
+      const auto& poses = state.protocol.poses;
+      const auto& types = state.protocol.trial_types;
+      const bool known = pose >= 0 && static_cast<size_t>(pose) < poses.size() && motion >= 0 &&
+                         static_cast<size_t>(motion) < types.size();
+      if (known) {
+        ImGui::TextDisabled("  %s, %s", poses[static_cast<size_t>(pose)].key.c_str(),
+                            types[static_cast<size_t>(motion)].key.c_str());
+      }
     }
     const bool is_recording = t.plan.index == recording;
     const StatusLook look = trial_status_look(t, is_recording);
