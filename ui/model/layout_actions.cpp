@@ -201,47 +201,46 @@ ActionResult replace_layout(UndoableLayoutDocument& doc, const Layout& layout, c
   return ActionResult::success();
 }
 
-ActionResult apply_layout(UndoableLayoutDocument& doc, const Layout& optimised) {
+namespace {
+
+// What apply_layout and apply_calibration share: copy each matching slot's placement from `source`
+// into the document (the offset too when `with_offsets`), refusing non-finite values and a source
+// that shares no slot. `noun` names the source in messages ("optimised", "calibrated"). Leaves the
+// scratch open for the caller to finish and commit.
+ActionResult copy_placements_by_slot(UndoableLayoutDocument& doc, const Layout& source, bool with_offsets,
+                                     const std::string& noun) {
   doc.rollback();
   LayoutDocument& d = doc.upd_scratch();
   int matched = 0;
   for (auto& dev : d.layout.devices) {
-    const int j = optimised.find_slot(dev.slot);
+    const int j = source.find_slot(dev.slot);
     if (j < 0) continue;
-    if (!finite_pose(optimised.devices[static_cast<size_t>(j)].pose)) {
+    const LayoutDevice& c = source.devices[static_cast<size_t>(j)];
+    if (!finite_pose(c.pose) || (with_offsets && !c.offset_mm.allFinite())) {
       doc.rollback();
-      return ActionResult::fail("the optimised pose of " + dev.slot + " is not finite");
+      return ActionResult::fail("the " + noun + " pose of " + dev.slot + " is not finite");
     }
-    dev.pose = optimised.devices[static_cast<size_t>(j)].pose;
+    dev.pose = c.pose;
+    if (with_offsets) dev.offset_mm = c.offset_mm;
     ++matched;
   }
   if (matched == 0) {
     doc.rollback();
-    return ActionResult::fail("the optimised layout shares no slot with the current one");
+    return ActionResult::fail("the " + noun + " layout shares no slot with the current one");
   }
+  return ActionResult::success();
+}
+
+}  // namespace
+
+ActionResult apply_layout(UndoableLayoutDocument& doc, const Layout& optimised) {
+  if (ActionResult r = copy_placements_by_slot(doc, optimised, false, "optimised"); !r.ok) return r;
   return commit_checked(doc, "Apply optimised layout");
 }
 
 ActionResult apply_calibration(UndoableLayoutDocument& doc, const Layout& calibrated) {
-  doc.rollback();
+  if (ActionResult r = copy_placements_by_slot(doc, calibrated, true, "calibrated"); !r.ok) return r;
   LayoutDocument& d = doc.upd_scratch();
-  int matched = 0;
-  for (auto& dev : d.layout.devices) {
-    const int j = calibrated.find_slot(dev.slot);
-    if (j < 0) continue;
-    const LayoutDevice& c = calibrated.devices[static_cast<size_t>(j)];
-    if (!finite_pose(c.pose) || !c.offset_mm.allFinite()) {
-      doc.rollback();
-      return ActionResult::fail("the calibrated pose of " + dev.slot + " is not finite");
-    }
-    dev.pose = c.pose;
-    dev.offset_mm = c.offset_mm;
-    ++matched;
-  }
-  if (matched == 0) {
-    doc.rollback();
-    return ActionResult::fail("the calibrated layout shares no slot with the current one");
-  }
   d.layout.name = calibrated.name;
   d.layout.description = calibrated.description;
   return commit_checked(doc, "Apply calibration");

@@ -7,11 +7,10 @@
 
 #include "ui/scene/orbit_camera.h"
 #include "ui/scene/scene_items.h"
+#include "ui/widgets/imgui_colour.h"
 
 namespace lmc::ui {
 namespace {
-
-ImU32 to_u32(const Rgba& c, float alpha) { return ImGui::ColorConvertFloat4ToU32(ImVec4(c.r, c.g, c.b, c.a * alpha)); }
 
 // A view that shows each motion's movement: fingers and the wrist bend about axes across the hand,
 // so a view from the side shows them; with the palm turned to the side (vertical), from above.

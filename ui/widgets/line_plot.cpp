@@ -7,18 +7,17 @@
 #include <cstdio>
 #include <limits>
 
+#include "ui/widgets/plot_frame.h"
+
 namespace lmc::ui {
 
 void draw_line_plot(const char* id, std::span<const double> values, const LinePlotOptions& o) {
   ImGui::PushID(id);
-  const float width = std::max(60.0f, ImGui::GetContentRegionAvail().x);
-  const ImVec2 p0 = ImGui::GetCursorScreenPos();
-  const ImVec2 p1(p0.x + width, p0.y + o.height_px);
-  ImDrawList* dl = ImGui::GetWindowDrawList();
-  dl->AddRectFilled(p0, p1, IM_COL32(24, 26, 30, 255), 3.0f);
-  dl->AddRect(p0, p1, IM_COL32(80, 84, 92, 255), 3.0f);
-  ImGui::InvisibleButton("plot", ImVec2(width, o.height_px));
-  const bool hovered = ImGui::IsItemHovered();
+  const PlotFrame frame = begin_plot_frame(o.height_px, 60.0F);
+  ImDrawList* dl = frame.draw;
+  const ImVec2 p0 = frame.p0, p1 = frame.p1;
+  const float width = frame.width;
+  const bool hovered = frame.hovered;
 
   const auto tr = [&](double v) { return o.log_y ? std::log10(v) : v; };
   const auto usable = [&](double v) { return std::isfinite(v) && (!o.log_y || v > 0); };
@@ -52,11 +51,10 @@ void draw_line_plot(const char* id, std::span<const double> values, const LinePl
       have_prev = true;
     }
     if (have_prev) dl->AddCircleFilled(prev, 3.0f, IM_COL32(90, 200, 255, 255));
-    char buf[64];
-    std::snprintf(buf, sizeof buf, "%.4g", o.log_y ? std::pow(10.0, hi) : hi);
-    dl->AddText(ImVec2(p0.x + 4, p0.y + 2), IM_COL32(170, 175, 185, 255), buf);
-    std::snprintf(buf, sizeof buf, "%.4g", o.log_y ? std::pow(10.0, lo) : lo);
-    dl->AddText(ImVec2(p0.x + 4, p1.y - ImGui::GetTextLineHeight() - 2), IM_COL32(170, 175, 185, 255), buf);
+    char top[64], bottom[64];
+    std::snprintf(top, sizeof top, "%.4g", o.log_y ? std::pow(10.0, hi) : hi);
+    std::snprintf(bottom, sizeof bottom, "%.4g", o.log_y ? std::pow(10.0, lo) : lo);
+    draw_y_range_labels(frame, top, bottom);
     if (o.log_y) dl->AddText(ImVec2(p1.x - 60, p0.y + 2), IM_COL32(120, 125, 135, 255), "log scale");
     if (hovered && !values.empty()) {
       const float t = (ImGui::GetIO().MousePos.x - p0.x - pad) / (width - 2 * pad);

@@ -7,16 +7,9 @@
 
 #include "ui/scene/colour_maps.h"
 #include "ui/scene/scene_items.h"
+#include "ui/widgets/imgui_colour.h"
 
 namespace lmc::ui {
-namespace {
-
-ImU32 slot_colour(int index, float alpha = 1.0F) {
-  const auto c = device_colour(index);
-  return ImGui::ColorConvertFloat4ToU32(ImVec4(c[0], c[1], c[2], alpha));
-}
-
-}  // namespace
 
 void draw_live_hands_view(const char* id, OrbitCamera& camera, const Layout& layout, const std::vector<LiveHand>& hands,
                           const std::string& caption, const FusedHand* fused) {
@@ -55,7 +48,7 @@ void draw_live_hands_view(const char* id, OrbitCamera& camera, const Layout& lay
   // Each controller: its 80 × 30 mm top face where the layout puts it, plus a short view axis.
   for (size_t i = 0; i < layout.devices.size(); ++i) {
     const LayoutDevice& d = layout.devices[i];
-    const ImU32 col = slot_colour(static_cast<int>(i));
+    const ImU32 col = device_colour_u32(static_cast<int>(i));
     const Eigen::Vector3d c[4] = {d.to_world({-40, 0, -15}), d.to_world({40, 0, -15}), d.to_world({40, 0, 15}),
                                   d.to_world({-40, 0, 15})};
     for (int k = 0; k < 4; ++k) line(c[k], c[(k + 1) % 4], col, 2.0F);
@@ -65,7 +58,7 @@ void draw_live_hands_view(const char* id, OrbitCamera& camera, const Layout& lay
   }
   // Every device's hand in the world frame: where the hands disagree, a device is misplaced.
   for (const auto& h : hands) {
-    const ImU32 col = slot_colour(h.colour);
+    const ImU32 col = device_colour_u32(h.colour);
     for (const BoneSpec& b : hand_bones())
       line(h.world[static_cast<size_t>(b.from)], h.world[static_cast<size_t>(b.to)], col, 2.0F);
     if (auto p = proj(h.world[kPalm]))
@@ -77,7 +70,7 @@ void draw_live_hands_view(const char* id, OrbitCamera& camera, const Layout& lay
       const Vec3& c = fused->points[static_cast<size_t>(b.to)];
       if (!a.allFinite() || !c.allFinite()) continue;
       const Rgba rgba = b.digit >= 0 ? seen_count_colour(fused->seen_by[static_cast<size_t>(b.digit)]) : Rgba{0.9F, 0.9F, 0.9F, 1.0F};
-      line(a, c, ImGui::ColorConvertFloat4ToU32(ImVec4(rgba.r, rgba.g, rgba.b, 1.0F)), 5.0F);
+      line(a, c, to_u32(Rgba{rgba.r, rgba.g, rgba.b, 1.0F}), 5.0F);
     }
   }
   dl->PopClipRect();

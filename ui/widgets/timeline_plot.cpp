@@ -6,18 +6,16 @@
 #include <cmath>
 #include <cstdio>
 
+#include "ui/widgets/plot_frame.h"
+
 namespace lmc::ui {
 
 void draw_timeline_plot(const char* id, std::span<const TimelineSeries> series, const TimelinePlotOptions& o) {
   ImGui::PushID(id);
-  const float width = std::max(80.0F, ImGui::GetContentRegionAvail().x);
-  const ImVec2 p0 = ImGui::GetCursorScreenPos();
-  const ImVec2 p1(p0.x + width, p0.y + o.height_px);
-  ImDrawList* dl = ImGui::GetWindowDrawList();
-  dl->AddRectFilled(p0, p1, IM_COL32(24, 26, 30, 255), 3.0F);
-  dl->AddRect(p0, p1, IM_COL32(80, 84, 92, 255), 3.0F);
-  ImGui::InvisibleButton("plot", ImVec2(width, o.height_px));
-  const bool hovered = ImGui::IsItemHovered();
+  const PlotFrame frame = begin_plot_frame(o.height_px, 80.0F);
+  ImDrawList* dl = frame.draw;
+  const ImVec2 p0 = frame.p0, p1 = frame.p1;
+  const bool hovered = frame.hovered;
 
   size_t n = 0;
   for (const auto& s : series) n = std::max(n, s.values.size());
@@ -32,11 +30,10 @@ void draw_timeline_plot(const char* id, std::span<const TimelineSeries> series, 
     const double f = std::clamp((v - o.y_min) / span, 0.0, 1.0);
     return p1.y - pad - (o.height_px - 2 * pad) * static_cast<float>(f);
   };
-  char buf[64];
-  std::snprintf(buf, sizeof buf, "%.*f", o.y_decimals, o.y_max);
-  dl->AddText(ImVec2(p0.x + 4, p0.y + 2), IM_COL32(170, 175, 185, 255), buf);
-  std::snprintf(buf, sizeof buf, "%.*f", o.y_decimals, o.y_min);
-  dl->AddText(ImVec2(p0.x + 4, p1.y - ImGui::GetTextLineHeight() - 2), IM_COL32(170, 175, 185, 255), buf);
+  char top[32], bottom[32], buf[64];
+  std::snprintf(top, sizeof top, "%.*f", o.y_decimals, o.y_max);
+  std::snprintf(bottom, sizeof bottom, "%.*f", o.y_decimals, o.y_min);
+  draw_y_range_labels(frame, top, bottom);
   std::snprintf(buf, sizeof buf, "%.1f s", o.slice_s * static_cast<double>(n));
   dl->AddText(ImVec2(right - ImGui::CalcTextSize(buf).x, p1.y - ImGui::GetTextLineHeight() - 2),
               IM_COL32(120, 125, 135, 255), buf);

@@ -25,14 +25,10 @@
 #include "ui/scene/scene_items.h"
 #include "ui/widgets/file_browser.h"
 #include "ui/widgets/live_hands_view.h"
+#include "ui/widgets/imgui_colour.h"
 
 namespace lmc::ui {
 namespace {
-
-ImU32 colour_u32(int index, float alpha = 1.0F) {
-  const auto c = device_colour(index);
-  return ImGui::ColorConvertFloat4ToU32(ImVec4(c[0], c[1], c[2], alpha));
-}
 
 class DevicesTab final : public Tab {
  public:
@@ -183,7 +179,7 @@ class DevicesTab final : public Tab {
       ImGui::TableNextColumn();
       const ImVec2 p = ImGui::GetCursorScreenPos();
       ImGui::GetWindowDrawList()->AddRectFilled(ImVec2(p.x, p.y + 2), ImVec2(p.x + 14, p.y + 14),
-                                                colour_u32(r.colour, r.slot.empty() ? 0.3F : 1.0F));
+                                                device_colour_u32(r.colour, r.slot.empty() ? 0.3F : 1.0F));
       ImGui::Dummy(ImVec2(14, 14));
       ImGui::TableNextColumn();
       ImGui::TextUnformatted(r.serial.c_str());
