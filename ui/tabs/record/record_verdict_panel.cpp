@@ -10,6 +10,7 @@
 #include "core/hand/hand_frame.h"
 #include "ui/model/devices/live_hands.h"
 #include "ui/tabs/record/record_colours.h"
+#include "ui/widgets/colour_legend.h"
 #include "ui/widgets/timeline_plot.h"
 
 namespace lmc::ui {
@@ -40,7 +41,8 @@ void key_figures(const session::QualityReport& q) {
   }
   if (!devices.empty()) ImGui::TextUnformatted(devices.c_str());
   if (q.rom && std::isfinite(q.rom->reached_deg))
-    ImGui::Text("%s moved through %.0f of %.0f degrees expected", q.rom->joint.c_str(), q.rom->reached_deg, q.rom->expected_deg);
+    ImGui::Text("%s moved through %.0f degrees; the protocol expects %.0f", q.rom->joint.c_str(), q.rom->reached_deg,
+                q.rom->expected_deg);
 }
 
 // Each controller's hand presence (0-1) and fingers seen (0-5) over the trial, one colour per
@@ -49,16 +51,20 @@ void timeline(const session::QualityTimeline& t) {
   if (t.slices() < 2) return;
   std::vector<TimelineSeries> hands;
   std::vector<TimelineSeries> fingers;
+  std::vector<LegendEntry> legend;  // which colour is which controller: the plots are read without hovering
   for (size_t d = 0; d < t.device_ids.size(); ++d) {
     const std::string slot = "LMC" + std::to_string(t.device_ids[d]);
     const auto rgb = device_colour(t.device_ids[d] - 1);
     hands.push_back({slot + " hand", rgb, t.hand_present[d]});
     fingers.push_back({slot + " fingers seen", rgb, t.fingers_seen[d]});
+    legend.push_back({Rgba{rgb[0], rgb[1], rgb[2], 1.0F}, slot});
   }
   fingers.push_back({"least-seen finger: controllers", {1, 1, 1}, t.worst_finger_seen_by, 2.5F});
   TimelinePlotOptions o;
   o.slice_s = t.slice_s;
   o.height_px = 60;
+  legend.push_back({Rgba{1, 1, 1, 1}, "least-seen finger"});
+  draw_categorical_legend(legend);
   ImGui::TextDisabled("Hand present per controller (0-1)");
   draw_timeline_plot("hand_present", hands, o);
   o.y_max = kNumDigits;
