@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <chrono>
+#include <cmath>
 #include <functional>
 #include <thread>
 
@@ -18,8 +19,6 @@
 #include "ui/scene/calibration_ghosts.h"
 
 namespace calibration_step_test {
-
-using lmc::ui::CalibrationStage;
 
 // Polls the rig and the step until `done` holds (the workers run under sanitizers in CI).
 bool update_until(lmc::ui::LiveRig& rig, lmc::ui::CalibrationStep& step, const std::function<bool()>& done) {
@@ -76,7 +75,7 @@ TEST(CalibrationGhosts, CurrentControllersAreGhostsAndCalibratedOnesSolidWithALi
     EXPECT_EQ(ghost, it.role == ItemRole::kGhost);
     if (it.kind == ItemKind::kSegment) {
       EXPECT_EQ(it.id, 1);
-      EXPECT_NEAR((it.b - it.a).norm(), 13.0, 1e-9);
+      EXPECT_NEAR((it.b - it.a).norm(), (calibrated.devices[1].offset_mm - current.devices[1].offset_mm).norm(), 1e-9);
     }
     if (it.kind != ItemKind::kBox) continue;
     const lmc::Layout& l = ghost ? current : calibrated;
@@ -100,13 +99,13 @@ TEST(CalibrationStep, RecordedTrialGoesThroughResultApplyUndoAndDiscard) {
   calibration_step_test::Bench b(layout);
   const auto file = calibration_step_test::simulated_trial_file(layout, "calibration_step_apply");
   auto& step = b.step;
-  EXPECT_EQ(step.stage(), CalibrationStage::kIdle);
+  EXPECT_EQ(step.stage(), lmc::ui::CalibrationStage::kIdle);
   EXPECT_TRUE(step.ghosts().empty());
   ASSERT_EQ(step.calibrate_file(file, layout, {}), "");
-  EXPECT_EQ(step.stage(), CalibrationStage::kCalibrating);
+  EXPECT_EQ(step.stage(), lmc::ui::CalibrationStage::kCalibrating);
   EXPECT_NE(step.calibrate_file(file, layout, {}), "") << "one calibration at a time";
   ASSERT_TRUE(calibration_step_test::update_until(b.context.rig(), step, [&] { return !step.busy(); }));
-  ASSERT_EQ(step.stage(), CalibrationStage::kResult) << step.message();
+  ASSERT_EQ(step.stage(), lmc::ui::CalibrationStage::kResult) << step.message();
   ASSERT_NE(step.outcome(), nullptr);
   EXPECT_EQ(step.outcome()->trial, "Calibration");
 
@@ -118,7 +117,9 @@ TEST(CalibrationStep, RecordedTrialGoesThroughResultApplyUndoAndDiscard) {
     EXPECT_TRUE(r.fitted) << r.slot;
     EXPECT_GT(r.samples, 100) << r.slot;
     EXPECT_LT(r.after_mm, r.before_mm) << r.slot;
-    if (r.slot != "LMC2") EXPECT_LT(r.turned_deg, rows[1].turned_deg) << r.slot;
+    if (r.slot != "LMC2") {
+      EXPECT_LT(r.turned_deg, rows[1].turned_deg) << r.slot;
+    }
   }
   EXPECT_GT(rows[1].turned_deg, 3.0);
   EXPECT_LT(step.outcome()->result.disagreement_after_mm, 0.5 * step.outcome()->result.disagreement_before_mm);
@@ -130,12 +131,12 @@ TEST(CalibrationStep, RecordedTrialGoesThroughResultApplyUndoAndDiscard) {
 
   // Apply: one undo step in the document; no editor: refused with a reason.
   EXPECT_FALSE(step.apply(nullptr));
-  EXPECT_EQ(step.stage(), CalibrationStage::kResult);
+  EXPECT_EQ(step.stage(), lmc::ui::CalibrationStage::kResult);
   auto doc = lmc::ui::UndoableLayoutDocument(lmc::ui::make_document(layout));
   lmc::ui::DocumentLayoutEditor editor(doc);
   const auto before = doc.head();
   ASSERT_TRUE(step.apply(&editor));
-  EXPECT_EQ(step.stage(), CalibrationStage::kApplied);
+  EXPECT_EQ(step.stage(), lmc::ui::CalibrationStage::kApplied);
   EXPECT_TRUE(step.ghosts().empty()) << "applied: the view shows the layout itself again";
   EXPECT_EQ(doc.undo_size(), 1u);
   EXPECT_EQ(doc.head().layout.name, "paper-initial (calibrated)");
@@ -147,7 +148,7 @@ TEST(CalibrationStep, RecordedTrialGoesThroughResultApplyUndoAndDiscard) {
   // Ctrl+Z: the document is back where it was and the result waits again.
   ASSERT_TRUE(step.undo_apply(&editor));
   EXPECT_EQ(doc.head(), before);
-  EXPECT_EQ(step.stage(), CalibrationStage::kResult);
+  EXPECT_EQ(step.stage(), lmc::ui::CalibrationStage::kResult);
   EXPECT_FALSE(step.undo_apply(&editor)) << "nothing applied to undo";
 
   // Another change after Apply: Ctrl+Z here leaves it alone.
@@ -157,7 +158,7 @@ TEST(CalibrationStep, RecordedTrialGoesThroughResultApplyUndoAndDiscard) {
   EXPECT_EQ(doc.head().layout.devices[0].slot, "LMC1b");
 
   step.discard();
-  EXPECT_EQ(step.stage(), CalibrationStage::kIdle);
+  EXPECT_EQ(step.stage(), lmc::ui::CalibrationStage::kIdle);
   EXPECT_EQ(step.outcome(), nullptr);
   EXPECT_TRUE(step.ghosts().empty());
 }
@@ -170,7 +171,7 @@ TEST(CalibrationStep, SaveWritesALayoutThatReadsBackToTheCorrectedPoses) {
   EXPECT_NE(step.save(file.parent_path() / "nothing.json"), "") << "no result yet";
   ASSERT_EQ(step.calibrate_file(file, layout, {}), "");
   ASSERT_TRUE(calibration_step_test::update_until(b.context.rig(), step, [&] { return !step.busy(); }));
-  ASSERT_EQ(step.stage(), CalibrationStage::kResult) << step.message();
+  ASSERT_EQ(step.stage(), lmc::ui::CalibrationStage::kResult) << step.message();
   EXPECT_EQ(step.suggested_file_name(), "paper-initial-calibrated.json");
   const auto out = file.parent_path() / step.suggested_file_name();
   ASSERT_EQ(step.save(out), "");
@@ -185,8 +186,9 @@ TEST(CalibrationStep, SaveWritesALayoutThatReadsBackToTheCorrectedPoses) {
     const Eigen::Vector3d p(10, 20, 30);
     EXPECT_NEAR((back.devices[d].to_world(p) - want.devices[d].to_world(p)).norm(), 0.0, 1e-6) << want.devices[d].slot;
   }
-  // LMC2's saved pose differs from the nominal one: the correction was written, not the input.
-  const Eigen::Vector3d p(0, 200, 0);
+  // LMC2's saved pose differs from the nominal one: the correction was written, not the input
+  // (LMC2 was turned about its y axis, so a point off that axis shows it).
+  const Eigen::Vector3d p(100, 200, 50);
   EXPECT_GT((back.devices[1].to_world(p) - layout.devices[1].to_world(p)).norm(), 5.0);
 }
 
@@ -197,20 +199,20 @@ TEST(CalibrationStep, CancelWhileCalibratingDropsTheResultAndAMissingFileSaysWhi
   auto& step = b.step;
   ASSERT_EQ(step.calibrate_file(file, layout, {}), "");
   step.cancel();
-  EXPECT_EQ(step.stage(), CalibrationStage::kIdle);
+  EXPECT_EQ(step.stage(), lmc::ui::CalibrationStage::kIdle);
   EXPECT_EQ(step.message(), "calibration cancelled");
   // However long the worker takes to return, its result never counts.
   for (int i = 0; i < 50; ++i) {
     step.update();
     std::this_thread::sleep_for(std::chrono::milliseconds(2));
   }
-  EXPECT_EQ(step.stage(), CalibrationStage::kIdle);
+  EXPECT_EQ(step.stage(), lmc::ui::CalibrationStage::kIdle);
   EXPECT_EQ(step.outcome(), nullptr);
 
   const auto missing = file.parent_path() / "LMC_Nothing.raw.txt";
   ASSERT_EQ(step.calibrate_file(missing, layout, {}), "");
   ASSERT_TRUE(calibration_step_test::update_until(b.context.rig(), step, [&] { return !step.busy(); }));
-  EXPECT_EQ(step.stage(), CalibrationStage::kIdle);
+  EXPECT_EQ(step.stage(), lmc::ui::CalibrationStage::kIdle);
   EXPECT_TRUE(step.message_is_error());
   EXPECT_NE(step.message().find("LMC_Nothing.raw.txt"), std::string::npos) << step.message();
 
@@ -234,16 +236,18 @@ TEST(CalibrationStep, RecordsAStillHandOnTheSimulatedRigThenCalibratesIt) {
   ASSERT_EQ(rig.start("sim", sim), "");
   // 2 s keep the test short; the tab records 5 s.
   ASSERT_EQ(step.record(dir, {}, 2.0), "");
-  EXPECT_EQ(step.stage(), CalibrationStage::kRecording);
+  EXPECT_EQ(step.stage(), lmc::ui::CalibrationStage::kRecording);
   EXPECT_FALSE(step.activity().empty());
-  ASSERT_TRUE(calibration_step_test::update_until(rig, step, [&] { return step.stage() != CalibrationStage::kRecording; }));
+  ASSERT_TRUE(calibration_step_test::update_until(rig, step, [&] { return step.stage() != lmc::ui::CalibrationStage::kRecording; }));
   ASSERT_TRUE(calibration_step_test::update_until(rig, step, [&] { return !step.busy(); }));
-  ASSERT_EQ(step.stage(), CalibrationStage::kResult) << step.message();
+  ASSERT_EQ(step.stage(), lmc::ui::CalibrationStage::kResult) << step.message();
   EXPECT_TRUE(std::filesystem::exists(dir / "LMC_Calibration.raw.txt"));
   const auto rows = step.rows();
   ASSERT_EQ(rows.size(), 4u);
   for (const auto& r : rows) {
-    if (r.slot != "LMC3") EXPECT_LT(r.turned_deg, rows[2].turned_deg) << r.slot;
+    if (r.slot != "LMC3") {
+      EXPECT_LT(r.turned_deg, rows[2].turned_deg) << r.slot;
+    }
   }
   // Serials bound on the rig are part of the layout the trial was recorded with.
   EXPECT_EQ(step.nominal().devices.size(), 4u);
@@ -259,7 +263,7 @@ TEST(CalibrationStep, CancelWhileRecordingEndsTheTrialAndReturnsToIdle) {
   ASSERT_EQ(step.record(dir, {}, 60.0), "");
   step.cancel();
   ASSERT_TRUE(calibration_step_test::update_until(rig, step, [&] { return !step.busy(); }));
-  EXPECT_EQ(step.stage(), CalibrationStage::kIdle);
+  EXPECT_EQ(step.stage(), lmc::ui::CalibrationStage::kIdle);
   EXPECT_FALSE(step.message_is_error());
   EXPECT_NE(step.message().find("cancelled"), std::string::npos) << step.message();
   EXPECT_EQ(step.outcome(), nullptr);
@@ -274,7 +278,7 @@ TEST(CalibrationStep, TheSharedRealTrialCalibratesAndTheControllersAgreeBetter) 
   auto& step = b.step;
   ASSERT_EQ(step.calibrate_file(file, layout, {}), "");
   ASSERT_TRUE(calibration_step_test::update_until(b.context.rig(), step, [&] { return !step.busy(); }));
-  ASSERT_EQ(step.stage(), CalibrationStage::kResult) << step.message();
+  ASSERT_EQ(step.stage(), lmc::ui::CalibrationStage::kResult) << step.message();
   const auto& r = step.outcome()->result;
   // The figures of the README's "Calibrating controllers" (paper-initial with the authors'
   // offsets 5.2 mm, calibrated without Vicon 2.0 mm).

@@ -179,7 +179,6 @@ void DevicesCalibratePanel::draw_result() {
   ImGui::PopStyleColor();
 
   if (step_.stage() == CalibrationStage::kResult) {
-    ImGui::TextDisabled("3D view: outlines where the layout puts the controllers now, solid where the calibration puts them.");
     if (ImGui::Button("Apply")) {
       const ActionResult a = step_.apply(layout_.editor());
       if (!a) report(a.error, true);
