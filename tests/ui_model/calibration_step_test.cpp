@@ -81,6 +81,13 @@ TEST(CalibrationGhosts, CurrentControllersAreGhostsAndCalibratedOnesSolidWithALi
     const lmc::Layout& l = ghost ? current : calibrated;
     const auto origin = it.transform.translation();
     EXPECT_NEAR((origin - l.devices[static_cast<size_t>(it.id)].to_world(Eigen::Vector3d::Zero())).norm(), 0.0, 1e-9);
+    // The top face is the controller's glass: y = 0 in its own frame, 80 × 30 mm around its origin.
+    Eigen::Vector3d centre = Eigen::Vector3d::Zero();
+    for (const auto& c : lmc::ui::box_top_face(it)) centre += c / 4.0;
+    EXPECT_NEAR((centre - origin).norm(), 0.0, 1e-9);
+    const auto face = lmc::ui::box_top_face(it);
+    EXPECT_NEAR((face[1] - face[0]).norm(), 80.0, 1e-9);
+    EXPECT_NEAR((face[2] - face[1]).norm(), 30.0, 1e-9);
     // Every box edge is one of the controller's three dimensions (80 × 13 × 30 mm).
     for (const auto& e : lmc::ui::box_edges(it)) {
       const double len = (e[1] - e[0]).norm();
@@ -150,6 +157,15 @@ TEST(CalibrationStep, RecordedTrialGoesThroughResultApplyUndoAndDiscard) {
   EXPECT_EQ(doc.head(), before);
   EXPECT_EQ(step.stage(), lmc::ui::CalibrationStage::kResult);
   EXPECT_FALSE(step.undo_apply(&editor)) << "nothing applied to undo";
+
+  // Applied, then undone in the Layout tab: the step notices and the result waits again.
+  ASSERT_TRUE(step.apply(&editor));
+  step.notice_layout(doc.head().layout);
+  EXPECT_EQ(step.stage(), lmc::ui::CalibrationStage::kApplied) << "the layout holds the calibration";
+  doc.undo();
+  step.notice_layout(doc.head().layout);
+  EXPECT_EQ(step.stage(), lmc::ui::CalibrationStage::kResult);
+  EXPECT_NE(step.message().find("no longer holds"), std::string::npos) << step.message();
 
   // Another change after Apply: Ctrl+Z here leaves it alone.
   ASSERT_TRUE(step.apply(&editor));

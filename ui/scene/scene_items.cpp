@@ -270,6 +270,12 @@ std::array<std::array<Eigen::Vector3d, 2>, 12> box_edges(const SceneItem& box) {
   return out;
 }
 
+std::array<Eigen::Vector3d, 4> box_top_face(const SceneItem& box) {
+  const Eigen::Vector3d& h = box.b;
+  const auto corner = [&](double sx, double sz) { return box.transform * (box.a + Eigen::Vector3d(sx * h.x(), h.y(), sz * h.z())); };
+  return {corner(-1, -1), corner(1, -1), corner(1, 1), corner(-1, 1)};
+}
+
 SceneList build_scene(const SceneInputs& in) {
   SceneList out;
   out.items.reserve(4096);

@@ -66,6 +66,15 @@ void draw_live_hands_view(const char* id, OrbitCamera& camera, const Layout& lay
         continue;
       }
       if (it.kind != ItemKind::kBox) continue;
+      if (!ghost) {
+        // The solid box's glass filled, so it reads as the controller and the outline as its shadow.
+        ImVec2 face[4];
+        int n = 0;
+        for (const auto& c : box_top_face(it)) {
+          if (auto p = proj(c)) face[n++] = ImVec2(static_cast<float>(p->x()), static_cast<float>(p->y()));
+        }
+        if (n == 4) dl->AddConvexPolyFilled(face, 4, to_u32(it.colour, 0.45F));
+      }
       for (const auto& e : box_edges(it)) line(e[0], e[1], col, ghost ? 1.0F : 2.5F);
       if (ghost || it.id < 0 || it.id >= layout.device_count()) continue;
       if (auto p = proj(it.transform * Eigen::Vector3d(0, 0, 25)))

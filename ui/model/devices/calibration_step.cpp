@@ -195,6 +195,21 @@ void CalibrationStep::discard() {
   message_is_error_ = false;
 }
 
+void CalibrationStep::notice_layout(const Layout& committed) {
+  if (stage_ != CalibrationStage::kApplied || !outcome_) return;
+  for (const auto& c : outcome_->calibrated.devices) {
+    const int i = committed.find_slot(c.slot);
+    if (i >= 0 && committed.devices[static_cast<size_t>(i)].pose == c.pose &&
+        committed.devices[static_cast<size_t>(i)].offset_mm == c.offset_mm) {
+      continue;
+    }
+    stage_ = CalibrationStage::kResult;
+    message_ = "the layout no longer holds this calibration (undone or edited in the Layout tab): Apply again or Discard";
+    message_is_error_ = false;
+    return;
+  }
+}
+
 std::string CalibrationStep::save(const std::filesystem::path& path) const {
   if (!outcome_) return "no calibration result to save";
   try {

@@ -3,7 +3,7 @@
 //
 //   idle ─record()──────────▶ recording ─trial ends─▶ calibrating ─job ends─▶ result ─apply()─▶ applied
 //   idle ─calibrate_file()──────────────────────────▶ calibrating              result ─discard()─▶ idle
-//   recording / calibrating ─cancel()─▶ idle          applied ─undo_apply()─▶ result
+//   recording / calibrating ─cancel()─▶ idle          applied ─undo_apply() or notice_layout()─▶ result
 //
 // The 5 s still-hand trial is the rig's own test recording (LiveRig::start_trial, the one
 // TrialEngine on a worker): this class never opens a device. Calibration runs on a worker
@@ -86,6 +86,9 @@ class CalibrationStep {
   // when the editor's last step is something else (nothing is undone then).
   bool undo_apply(LayoutEditor* editor);
   void discard();
+  // Once a frame with the document's committed layout: when it no longer holds the applied
+  // corrections (undone in the Layout tab, or a controller moved since), the result waits again.
+  void notice_layout(const Layout& committed);
   // Writes the calibrated layout (atomic, core/io/layout_json.h); error text or empty.
   std::string save(const std::filesystem::path& path) const;
   // "paper-initial-calibrated.json"

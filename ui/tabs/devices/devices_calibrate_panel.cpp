@@ -31,6 +31,7 @@ void DevicesCalibratePanel::report(const std::string& text, bool is_error) { sta
 
 void DevicesCalibratePanel::update() {
   step_.update();
+  step_.notice_layout(layout_.editor() != nullptr ? layout_.editor()->committed() : layout_.get());
   if (step_.message() != last_message_) {
     last_message_ = step_.message();
     if (!last_message_.empty()) report(last_message_, step_.message_is_error());

@@ -42,7 +42,7 @@ class DevicesCalibratePanel {
   std::vector<SceneItem> ghosts_;
   std::string last_message_;
   char vicon_[512] = "";
-  bool anchor_to_layout_ = true;
+  bool anchor_to_layout_ = false;  // as lmc calibrate: off unless asked
   FileBrowser trial_browser_{"Calibrate from a recorded trial", ".txt"};
   FileBrowser save_browser_{"Save calibrated layout", ".json"};
 };

@@ -121,8 +121,8 @@ class DevicesTab final : public Tab {
     return (vm_.running() && !vm_.all_streaming()) || calibrate_.step().busy();
   }
 
-  // devices-calibrate: a finished calibration on the simulated rig with injected errors (two
-  // controllers turned, every controller shifted a little), so the corrections and the ghost
+  // devices-calibrate: a finished calibration on the simulated rig with injected errors (three
+  // controllers turned, every controller shifted up to 15 mm), so the corrections and the ghost
   // controllers show.
   std::vector<std::string> extra_captures() const override { return {"devices-calibrate"}; }
 
@@ -131,7 +131,8 @@ class DevicesTab final : public Tab {
     devices::SimConfig sim;
     sim.calibration_rotations_deg["LMC2"] = Eigen::Vector3d(0, 6, 0);
     sim.calibration_rotations_deg["LMC3"] = Eigen::Vector3d(4, 0, 0);
-    sim.calibration_random_translation_mm = 25;
+    sim.calibration_rotations_deg["LMC4"] = Eigen::Vector3d(0, 0, -3);
+    sim.calibration_random_translation_mm = 15;
     if (const std::string err = vm_.start("sim", sim); !err.empty()) {
       status_.set_status("Devices: " + err, true);
       return;
