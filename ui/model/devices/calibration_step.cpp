@@ -129,14 +129,14 @@ std::string CalibrationStep::activity() const {
   switch (stage_) {
     case CalibrationStage::kIdle: return {};
     case CalibrationStage::kRecording: {
-      if (cancelling_) return "cancelling the recording…";
+      if (cancelling_) return "cancelling the recording...";
       const auto& snap = rig_.trial().snapshot();
-      if (!snap || snap->phase == devices::TrialPhase::kWaitingForStreams) return "waiting for every controller to stream…";
+      if (!snap || snap->phase == devices::TrialPhase::kWaitingForStreams) return "waiting for every controller to stream...";
       if (snap->phase != devices::TrialPhase::kRecording) return std::string(devices::trial_phase_name(snap->phase));
       return "hold the hand still and open: " + format_fixed(std::max(0.0, seconds_ - snap->recording_s), 1) + " s left";
     }
-    case CalibrationStage::kCalibrating: return job_.stage().empty() ? "calibrating…" : job_.stage() + "…";
-    case CalibrationStage::kResult: return "result ready: Apply, Save layout… or Discard";
+    case CalibrationStage::kCalibrating: return job_.stage().empty() ? "calibrating..." : job_.stage() + "...";
+    case CalibrationStage::kResult: return "result ready: Apply, Save layout... or Discard";
     case CalibrationStage::kApplied: return "applied to the layout (Ctrl+Z undoes it)";
   }
   return {};
