@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <string>
 
 #include "core/common/paths.h"
@@ -20,6 +21,16 @@ std::string mm_text(double v) {
   char buf[32];
   std::snprintf(buf, sizeof buf, "%.1f", v);
   return buf;
+}
+
+// Where the file browsers open: the calibration trials' folder once something was recorded there,
+// else the sessions folder, else the working folder (a browser on a missing folder lists nothing).
+std::filesystem::path browse_start() {
+  std::error_code ec;
+  for (const auto& dir : {sessions_dir() / "calibration", sessions_dir()}) {
+    if (std::filesystem::is_directory(dir, ec)) return dir;
+  }
+  return std::filesystem::current_path(ec);
 }
 
 }  // namespace
@@ -102,7 +113,7 @@ void DevicesCalibratePanel::draw_start() {
   }
   ImGui::SameLine();
   if (ImGui::Button("Calibrate from a recorded trial...")) {
-    trial_browser_.open(FileBrowser::Mode::kOpen, sessions_dir() / "calibration");
+    trial_browser_.open(FileBrowser::Mode::kOpen, browse_start());
   }
   if (ImGui::IsItemHovered()) {
     ImGui::SetTooltip("An LMC recording of a still hand (e.g. LMC_Calibration.raw.txt), recorded with the layout open now");
@@ -192,7 +203,7 @@ void DevicesCalibratePanel::draw_result() {
   }
   ImGui::SameLine();
   if (ImGui::Button("Save layout...")) {
-    save_browser_.open(FileBrowser::Mode::kSave, sessions_dir(), step_.suggested_file_name());
+    save_browser_.open(FileBrowser::Mode::kSave, browse_start(), step_.suggested_file_name());
   }
   if (ImGui::IsItemHovered()) {
     ImGui::SetTooltip("Write the calibrated layout (its description names the trial and the date) to a file");
