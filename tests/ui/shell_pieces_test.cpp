@@ -45,6 +45,7 @@ TEST(HelpWindow, ListsEveryShortcutTheCodeHandles) {
     EXPECT_TRUE(has("Layout", k)) << k;
   }
   for (const char* k : {"Space", "Enter", "R"}) EXPECT_TRUE(has("Record", k)) << k;
+  EXPECT_TRUE(has("Devices", "Ctrl+Z"));
 }
 
 TEST(HelpWindow, DrawsEachSectionWhenOpenAndNothingWhenClosed) {

@@ -36,7 +36,9 @@ TEST(CalibrationJob, CalibratesARecordedTrialAndAppliesAsOneUndoStep) {
   lmc::save_lmc_recording(file, rec);
 
   lmc::ui::CalibrationJob job;
-  job.start(file, layout, "Calibration01");
+  lmc::calibration::TrialCalibrationRequest request;
+  request.trial = file;
+  job.start(request, layout);
   ASSERT_TRUE(calibration_job_test::wait_until([&] { return lmc::ui::job_finished(job.state()); }));
   ASSERT_EQ(job.state(), lmc::ui::JobState::kCompleted) << job.error();
   const auto outcome = job.outcome();

@@ -88,6 +88,7 @@ const std::vector<ShortcutRow>& shortcut_rows() {
       {"Layout", "Esc", "During a drag: put the controller back"},
       {"Layout", "Delete", "Remove the selected controller"},
       {"Layout", "Click a pose field", "Type a value (sensor fields: double-click); drag to change it live"},
+      {"Devices", "Ctrl+Z", "Undo an applied calibration"},
       {"Record", "Space", "Start the trial (pre-flight first when needed); stop it while recording"},
       {"Record", "Enter", "Accept a trial whose verdict is fail"},
       {"Record", "R", "Redo the last trial"},

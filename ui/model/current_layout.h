@@ -2,11 +2,14 @@
 // The workbench's one layout (issue #10): the Layout tab publishes its committed document here and
 // every other client (the live rig of the Devices and Record tabs) reads it, so the whole
 // workbench streams, realigns and records with the layout the operator has open. A version number
-// tells readers that it changed without comparing layouts every frame. UI thread only.
+// tells readers that it changed without comparing layouts every frame. The document's owner also
+// registers its editor (layout_editor.h), through which another tab changes the layout as an
+// undo step of the owner's history. UI thread only.
 #include <cstdint>
 #include <utility>
 
 #include "core/layout/layout.h"
+#include "ui/model/layout_editor.h"
 
 namespace lmc::ui {
 
@@ -23,10 +26,14 @@ class CurrentLayout {
     layout_ = layout;
     ++version_;
   }
+  // The document owner's editor; null while no tab owns the document (then edits are refused).
+  LayoutEditor* editor() const { return editor_; }
+  void set_editor(LayoutEditor* editor) { editor_ = editor; }
 
  private:
   Layout layout_;
   std::uint64_t version_ = 0;
+  LayoutEditor* editor_ = nullptr;
 };
 
 }  // namespace lmc::ui

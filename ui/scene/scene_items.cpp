@@ -28,12 +28,6 @@ Rgba device_hue(int i, float alpha) {
   return {h[0], h[1], h[2], alpha};
 }
 
-Eigen::Isometry3d device_transform(const LayoutDevice& d) {
-  Eigen::Isometry3d t = d.pose.device_to_world();
-  t.translation() += d.offset_mm;
-  return t;
-}
-
 void add_segment(SceneList& out, ItemRole role, const Eigen::Vector3d& a, const Eigen::Vector3d& b, Rgba c,
                  int id = -1, std::uint32_t flags = kFlagNone) {
   SceneItem it;
@@ -251,6 +245,35 @@ const std::vector<BoneSpec>& hand_bones() {
 
 size_t SceneList::count(ItemRole role) const {
   return static_cast<size_t>(std::count_if(items.begin(), items.end(), [&](const SceneItem& i) { return i.role == role; }));
+}
+
+Eigen::Isometry3d device_transform(const LayoutDevice& d) {
+  Eigen::Isometry3d t = d.pose.device_to_world();
+  t.translation() += d.offset_mm;
+  return t;
+}
+
+std::array<std::array<Eigen::Vector3d, 2>, 12> box_edges(const SceneItem& box) {
+  std::array<Eigen::Vector3d, 8> c;
+  for (int k = 0; k < 8; ++k) {
+    const Eigen::Vector3d sign((k & 1) ? 1.0 : -1.0, (k & 2) ? 1.0 : -1.0, (k & 4) ? 1.0 : -1.0);
+    c[static_cast<size_t>(k)] = box.transform * (box.a + sign.cwiseProduct(box.b));
+  }
+  // Corners differing in exactly one bit share an edge.
+  std::array<std::array<Eigen::Vector3d, 2>, 12> out;
+  size_t n = 0;
+  for (int k = 0; k < 8; ++k) {
+    for (const int bit : {1, 2, 4}) {
+      if ((k & bit) == 0) out[n++] = {c[static_cast<size_t>(k)], c[static_cast<size_t>(k | bit)]};
+    }
+  }
+  return out;
+}
+
+std::array<Eigen::Vector3d, 4> box_top_face(const SceneItem& box) {
+  const Eigen::Vector3d& h = box.b;
+  const auto corner = [&](double sx, double sz) { return box.transform * (box.a + Eigen::Vector3d(sx * h.x(), h.y(), sz * h.z())); };
+  return {corner(-1, -1), corner(1, -1), corner(1, 1), corner(-1, 1)};
 }
 
 SceneList build_scene(const SceneInputs& in) {

@@ -87,6 +87,14 @@ struct SceneList {
 
 SceneList build_scene(const SceneInputs& in);
 
+// A controller's device-to-world transform as drawn: the pose, then the offset (layout.h).
+Eigen::Isometry3d device_transform(const LayoutDevice& d);
+// The 12 edges of a kBox item in the world frame (for views that draw outlines, not solids).
+std::array<std::array<Eigen::Vector3d, 2>, 12> box_edges(const SceneItem& box);
+// The corners of a kBox item's top face (+y of its own frame: a controller's glass), in order
+// around the face, world frame.
+std::array<Eigen::Vector3d, 4> box_top_face(const SceneItem& box);
+
 // The four far corners of a viewing pyramid (world), each at `range_mm` from the apex along its edge.
 std::array<Eigen::Vector3d, 4> pyramid_corners(const Eigen::Isometry3d& device_to_world, double range_mm,
                                                double half_long_deg, double half_short_deg);

@@ -12,7 +12,7 @@
 namespace lmc::ui {
 
 void draw_live_hands_view(const char* id, OrbitCamera& camera, const Layout& layout, const std::vector<LiveHand>& hands,
-                          const std::string& caption, const FusedHand* fused) {
+                          const std::string& caption, const FusedHand* fused, const std::vector<SceneItem>* controllers) {
   ImDrawList* dl = ImGui::GetWindowDrawList();
   const ImVec2 origin = ImGui::GetCursorScreenPos();
   const ImVec2 size = ImGui::GetContentRegionAvail();
@@ -45,16 +45,42 @@ void draw_live_hands_view(const char* id, OrbitCamera& camera, const Layout& lay
   line({0, 0, 0}, {60, 0, 0}, IM_COL32(220, 80, 80, 255), 2.0F);
   line({0, 0, 0}, {0, 60, 0}, IM_COL32(80, 220, 80, 255), 2.0F);
   line({0, 0, 0}, {0, 0, 60}, IM_COL32(80, 120, 240, 255), 2.0F);
-  // Each controller: its 80 × 30 mm top face where the layout puts it, plus a short view axis.
-  for (size_t i = 0; i < layout.devices.size(); ++i) {
-    const LayoutDevice& d = layout.devices[i];
-    const ImU32 col = device_colour_u32(static_cast<int>(i));
-    const Eigen::Vector3d c[4] = {d.to_world({-40, 0, -15}), d.to_world({40, 0, -15}), d.to_world({40, 0, 15}),
-                                  d.to_world({-40, 0, 15})};
-    for (int k = 0; k < 4; ++k) line(c[k], c[(k + 1) % 4], col, 2.0F);
-    line(d.to_world({0, 0, 0}), d.to_world({0, 40, 0}), col, 1.0F);
-    if (auto p = proj(d.to_world({0, 0, 25})))
-      dl->AddText(ImVec2(static_cast<float>(p->x()) - 14, static_cast<float>(p->y())), col, d.slot.c_str());
+  if (controllers == nullptr) {
+    // Each controller: its 80 × 30 mm top face where the layout puts it, plus a short view axis.
+    for (size_t i = 0; i < layout.devices.size(); ++i) {
+      const LayoutDevice& d = layout.devices[i];
+      const ImU32 col = device_colour_u32(static_cast<int>(i));
+      const Eigen::Vector3d c[4] = {d.to_world({-40, 0, -15}), d.to_world({40, 0, -15}), d.to_world({40, 0, 15}),
+                                    d.to_world({-40, 0, 15})};
+      for (int k = 0; k < 4; ++k) line(c[k], c[(k + 1) % 4], col, 2.0F);
+      line(d.to_world({0, 0, 0}), d.to_world({0, 40, 0}), col, 1.0F);
+      if (auto p = proj(d.to_world({0, 0, 25})))
+        dl->AddText(ImVec2(static_cast<float>(p->x()) - 14, static_cast<float>(p->y())), col, d.slot.c_str());
+    }
+  } else {
+    for (const SceneItem& it : *controllers) {
+      const bool ghost = (it.flags & kFlagGhost) != 0;
+      const ImU32 col = to_u32(it.colour);
+      if (it.kind == ItemKind::kSegment) {
+        line(it.a, it.b, col, 2.0F);
+        continue;
+      }
+      if (it.kind != ItemKind::kBox) continue;
+      if (!ghost) {
+        // The solid box's glass filled, so it reads as the controller and the outline as its shadow.
+        ImVec2 face[4];
+        int n = 0;
+        for (const auto& c : box_top_face(it)) {
+          if (auto p = proj(c)) face[n++] = ImVec2(static_cast<float>(p->x()), static_cast<float>(p->y()));
+        }
+        if (n == 4) dl->AddConvexPolyFilled(face, 4, to_u32(it.colour, 0.45F));
+      }
+      for (const auto& e : box_edges(it)) line(e[0], e[1], col, ghost ? 1.0F : 2.5F);
+      if (ghost || it.id < 0 || it.id >= layout.device_count()) continue;
+      if (auto p = proj(it.transform * Eigen::Vector3d(0, 0, 25)))
+        dl->AddText(ImVec2(static_cast<float>(p->x()) - 14, static_cast<float>(p->y())), col,
+                    layout.devices[static_cast<size_t>(it.id)].slot.c_str());
+    }
   }
   // Every device's hand in the world frame: where the hands disagree, a device is misplaced.
   for (const auto& h : hands) {

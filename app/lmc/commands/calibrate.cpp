@@ -9,7 +9,7 @@
 #include <optional>
 
 #include "app/lmc/command.h"
-#include "core/calibration/calibrate.h"
+#include "core/calibration/calibrate_trial.h"
 #include "core/calibration/calibrated_layout.h"
 #include "core/common/error.h"
 #include "core/common/utc_time.h"
@@ -33,16 +33,6 @@ struct CalibrateArgs {
   int validate_sim = 0;
   bool anchor_to_layout = false;
 };
-
-lmc::HandTrack load_vicon_track(const fs::path& path, const std::string& mapping_path) {
-  const lmc::MarkerSeries markers = lmc::load_vicon_markers(path);
-  if (std::abs(markers.rate_hz - 100.0) > 0.5) {
-    throw lmc::Error(lmc::ErrorLocation(path.string()), "Vicon rate is " + lmc::format_fixed(markers.rate_hz, 2) +
-                                                            " Hz; calibration expects 100 Hz like the LMC grid");
-  }
-  const lmc::ViconMapping mapping = mapping_path.empty() ? lmc::default_vicon_mapping() : lmc::load_vicon_mapping(mapping_path);
-  return lmc::apply_vicon_mapping(mapping, markers);
-}
 
 void run_validation(const CalibrateArgs& a) {
   const lmc::Layout layout = lmc::load_layout_or_preset(a.layout.empty() ? "paper-initial" : a.layout);
@@ -76,41 +66,21 @@ void run_calibrate(const CalibrateArgs& a) {
   if (a.trial.empty()) throw lmc::Error("give a calibration trial (an LMC recording file), or --validate-sim N");
   if (a.layout.empty()) throw lmc::Error("give --layout: the layout the trial was recorded with (a preset name or a file)");
   if (a.out.empty()) throw lmc::Error("give -o FILE: where to write the calibrated layout");
-  const fs::path trial(a.trial);
-  if (!fs::exists(trial)) throw lmc::Error(lmc::ErrorLocation(a.trial), "no such file");
-  if (fs::is_directory(trial)) throw lmc::Error(lmc::ErrorLocation(a.trial), "is a folder; give one LMC recording file");
   const lmc::Layout layout = lmc::load_layout_or_preset(a.layout);
-  const std::optional<fs::path> vicon_path = a.vicon.empty() ? std::nullopt : std::optional<fs::path>(a.vicon);
-  if (vicon_path && !fs::is_regular_file(*vicon_path)) throw lmc::Error(lmc::ErrorLocation(a.vicon), "no such Vicon file (.trc or .c3d)");
-  const lmc::TrialJob job = lmc::discover_trials(trial, vicon_path).front();
-  if (!vicon_path && job.vicon) {
-    std::cout << "note: " << job.vicon->string() << " lies next to the trial; calibrating without it (pass --vicon to use it)\n";
-  }
-
-  const lmc::LmcRecording rec = lmc::read_lmc_recording(trial);
-  for (const auto& w : rec.warnings) std::cout << "warning: " << a.trial << ": " << w << "\n";
-  std::optional<lmc::HandTrack> vicon;
-  if (vicon_path) vicon = load_vicon_track(*vicon_path, a.mapping);
-  lmc::calibration::InputOptions options;
-  if (vicon && job.sidecar) {
-    const lmc::RecorderSidecar side = lmc::read_recorder_sidecar(*job.sidecar);
-    options.resample.grid_start_us = lmc::calibration::vicon_time_zero_us(side, a.vicon_delay_ms);
-    if (!options.resample.grid_start_us)
-      std::cout << "note: " << job.sidecar->string() << " has no Vicon alignment: the grid starts at the first hand sample\n";
-  }
-  const auto input = lmc::calibration::prepare_calibration_input(rec, vicon ? &*vicon : nullptr, options);
-  for (const auto& n : input.notes) std::cout << "note: " << n << "\n";
-  lmc::calibration::CalibrationResult result;
-  try {
-    lmc::calibration::CalibrationOptions copt;
-    copt.anchor_vicon_to_layout = a.anchor_to_layout;
-    result = lmc::calibration::calibrate(input, layout, copt);
-  } catch (const lmc::Error& e) {
-    throw lmc::Error(lmc::ErrorLocation(a.trial), e.what());
-  }
+  lmc::calibration::TrialCalibrationRequest request;
+  request.trial = a.trial;
+  if (!a.vicon.empty()) request.vicon = fs::path(a.vicon);
+  request.mapping = a.mapping;
+  request.vicon_delay_ms = a.vicon_delay_ms;
+  request.anchor_to_layout = a.anchor_to_layout;
+  request.when_utc = lmc::utc_now_iso8601();
+  const lmc::calibration::TrialCalibration cal = lmc::calibration::calibrate_trial(request, layout);
+  for (const auto& w : cal.file_warnings) std::cout << "warning: " << w << "\n";
+  for (const auto& n : cal.notes) std::cout << "note: " << n << "\n";
+  const lmc::calibration::CalibrationResult& result = cal.result;
   std::cout << lmc::calibration::residual_table(result);
 
-  const lmc::Layout out = lmc::calibration::calibrated_layout(layout, result, {job.trial, a.vicon, lmc::utc_now_iso8601()});
+  const lmc::Layout& out = cal.calibrated;
   lmc::write_file_atomically(a.out, lmc::layout_to_json(out).dump(2) + "\n");
   int fitted = 0;
   for (const auto& d : result.devices) fitted += d.fitted ? 1 : 0;

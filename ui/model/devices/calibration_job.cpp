@@ -4,23 +4,22 @@
 
 #include "core/calibration/calibrated_layout.h"
 #include "core/common/utc_time.h"
-#include "core/io/lmc_recording.h"
 
 namespace lmc::ui {
 
-void CalibrationJob::start(std::filesystem::path recording, Layout layout, std::string trial_name) {
-  job_.start([file = std::move(recording), nominal = std::move(layout), trial = std::move(trial_name)](
-                 std::stop_token, JobChannel<NoReport>& channel) {
-    // Each stage takes a fraction of a second: no cancellation points inside them.
-    channel.set_stage("reading " + file.filename().string());
-    const LmcRecording rec = read_lmc_recording(file);
-    channel.set_stage("resampling and ray tracing");
-    const auto input = calibration::prepare_calibration_input(rec, nullptr, {});
-    channel.set_stage("calibrating");
+void CalibrationJob::start(calibration::TrialCalibrationRequest request, Layout layout) {
+  if (request.when_utc.empty()) request.when_utc = utc_now_iso8601();
+  job_.start([req = std::move(request), nominal = std::move(layout)](std::stop_token, JobChannel<NoReport>& channel) {
+    // Reading, ray tracing and fitting take a fraction of a second: no cancellation points inside.
+    channel.set_stage("calibrating from " + req.trial.filename().string() + (req.vicon ? " against Vicon" : ""));
+    calibration::TrialCalibration cal = calibration::calibrate_trial(req, nominal);
     CalibrationOutcome out;
-    out.result = calibration::calibrate(input, nominal);
-    out.calibrated = calibration::calibrated_layout(nominal, out.result, {trial, "", utc_now_iso8601()});
-    out.table = calibration::residual_table(out.result);
+    out.trial = std::move(cal.trial);
+    out.table = calibration::residual_table(cal.result);
+    out.result = std::move(cal.result);
+    out.calibrated = std::move(cal.calibrated);
+    out.file_warnings = std::move(cal.file_warnings);
+    out.notes = std::move(cal.notes);
     return out;
   });
 }

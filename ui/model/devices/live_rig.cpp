@@ -29,7 +29,8 @@ std::string summary_of(const devices::TrialResult& r) {
   s << "trial " << r.trial << " " << devices::trial_outcome_name(r.outcome);
   if (!r.reason.empty()) s << ": " << r.reason;
   if (r.recorded) {
-    s << " — " << r.recorder.frames_written << " frames from " << r.recorder.devices.size() << " devices in "
+    // Plain punctuation: the workbench's default font has Latin-1 glyphs only (an em dash shows as "?").
+    s << "; " << r.recorder.frames_written << " frames from " << r.recorder.devices.size() << " devices in "
       << r.paths.recording.string();
   }
   return s.str();

@@ -2,9 +2,10 @@
 // slot (assign by dropdown), backend, status, rate, hand present and latest frame age; a live 3-D
 // view of every device's hand realigned into the world frame, one colour per device, so a
 // misplaced controller shows at a glance; start/stop of a test recording through the one trial
-// engine. It drives the workbench's live rig (shared with the Record tab) with the layout open in
-// the Layout tab. All logic lives in ui/model/devices/devices_view_model.h; this file only draws
-// (ImGui draw list through the shared orbit camera and hand bones of ui/scene).
+// engine; the Calibrate step (devices_calibrate_panel.h) above the device log. It drives the
+// workbench's live rig (shared with the Record tab) with the layout open in the Layout tab. All
+// logic lives in ui/model/devices/devices_view_model.h; this file only draws (ImGui draw list
+// through the shared orbit camera and hand bones of ui/scene).
 #include "ui/tabs/devices/devices_tab.h"
 
 #include <imgui.h>
@@ -15,14 +16,17 @@
 #include <filesystem>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "core/common/paths.h"
 #include "core/io/layout_json.h"
+#include "devices/sim/sim_config.h"
 #include "devices/source_factory.h"
 #include "ui/model/devices/devices_view_model.h"
 #include "ui/model/devices/fusion_readout.h"
 #include "ui/scene/orbit_camera.h"
 #include "ui/scene/scene_items.h"
+#include "ui/tabs/devices/devices_calibrate_panel.h"
 #include "ui/widgets/file_browser.h"
 #include "ui/widgets/live_hands_view.h"
 #include "ui/widgets/imgui_colour.h"
@@ -32,7 +36,8 @@ namespace {
 
 class DevicesTab final : public Tab {
  public:
-  DevicesTab(StatusSink& status, WorkbenchContext& context) : status_(status), vm_(context.rig()) {
+  DevicesTab(StatusSink& status, WorkbenchContext& context)
+      : status_(status), vm_(context.rig()), calibrate_(status, context) {
     const std::string tmp = (sessions_dir() / "test-recordings").string();
     std::snprintf(folder_, sizeof folder_, "%s", tmp.c_str());
     std::snprintf(trial_, sizeof trial_, "%s", "test_trial_1");
@@ -47,6 +52,7 @@ class DevicesTab final : public Tab {
       if (log[i].rfind("layout changed", 0) == 0) status_.set_status("Devices: " + log[i]);
     }
     seen_messages_ = vm_.rig().messages_total();
+    calibrate_.update();
     if (const std::string summary = vm_.take_recording_summary(); !summary.empty()) {
       // "trial NAME completed|interrupted|aborted|failed…": only the last two are errors.
       const bool ok = summary.find(" completed") != std::string::npos || summary.find(" interrupted") != std::string::npos;
@@ -79,17 +85,28 @@ class DevicesTab final : public Tab {
     ImGui::Separator();
     draw_recording_row();
     const ImVec2 avail = ImGui::GetContentRegionAvail();
-    const float log_width = std::max(260.0F, avail.x * 0.28F);
-    ImGui::BeginChild("live_view", ImVec2(avail.x - log_width - 8.0F, avail.y), true,
+    const float side_width = std::max(380.0F, avail.x * 0.36F);
+    ImGui::BeginChild("live_view", ImVec2(avail.x - side_width - 8.0F, avail.y), true,
                       ImGuiWindowFlags_NoScrollbar | ImGuiWindowFlags_NoScrollWithMouse);
     draw_live_view();
     ImGui::EndChild();
     ImGui::SameLine();
-    ImGui::BeginChild("device_log", ImVec2(0, avail.y), true);
+    ImGui::BeginGroup();
+    // The Calibrate step above the log: its result table needs most of the height while shown.
+    const CalibrationStage stage = calibrate_.step().stage();
+    const bool result = stage == CalibrationStage::kResult || stage == CalibrationStage::kApplied;
+    const float line = ImGui::GetFrameHeightWithSpacing();
+    const float calibrate_height = result ? std::max(avail.y * 0.72F, avail.y - 6.0F * line) : 5.0F * line;
+    ImGui::BeginChild("calibrate", ImVec2(side_width, calibrate_height), true);
+    calibrate_.draw();
+    ImGui::EndChild();
+    ImGui::BeginChild("device_log", ImVec2(side_width, 0), true);
     ImGui::TextDisabled("Device messages");
     for (const auto& m : vm_.messages()) ImGui::TextWrapped("%s", m.c_str());
     if (ImGui::GetScrollY() >= ImGui::GetScrollMaxY()) ImGui::SetScrollHereY(1.0F);
     ImGui::EndChild();
+    ImGui::EndGroup();
+    handle_shortcuts();
   }
 
   int prepare_for_capture() override {
@@ -100,7 +117,31 @@ class DevicesTab final : public Tab {
     return 30;
   }
 
-  bool busy_for_capture() const override { return vm_.running() && !vm_.all_streaming(); }
+  bool busy_for_capture() const override {
+    return (vm_.running() && !vm_.all_streaming()) || calibrate_.step().busy();
+  }
+
+  // devices-calibrate: a finished calibration on the simulated rig with injected errors (three
+  // controllers turned, every controller shifted up to 15 mm), so the corrections and the ghost
+  // controllers show.
+  std::vector<std::string> extra_captures() const override { return {"devices-calibrate"}; }
+
+  void prepare_extra_capture(const std::string& name) override {
+    if (name != "devices-calibrate") return;
+    devices::SimConfig sim;
+    sim.calibration_rotations_deg["LMC2"] = Eigen::Vector3d(0, 6, 0);
+    sim.calibration_rotations_deg["LMC3"] = Eigen::Vector3d(4, 0, 0);
+    sim.calibration_rotations_deg["LMC4"] = Eigen::Vector3d(0, 0, -3);
+    sim.calibration_random_translation_mm = 15;
+    if (const std::string err = vm_.start("sim", sim); !err.empty()) {
+      status_.set_status("Devices: " + err, true);
+      return;
+    }
+    const auto dir = std::filesystem::temp_directory_path() / "lmc-capture-calibration";
+    std::error_code ec;
+    std::filesystem::remove_all(dir, ec);
+    if (const std::string err = calibrate_.step().record(dir, {}); !err.empty()) status_.set_status(err, true);
+  }
 
  private:
   void start(const std::string& backend) {
@@ -253,10 +294,20 @@ class DevicesTab final : public Tab {
 
   void draw_live_view() {
     if (vm_.running()) ImGui::TextDisabled("%s", fusion_latency_line(vm_.fusion_stats()).c_str());
-    draw_live_hands_view("live_canvas", camera_, vm_.layout(), vm_.hands(),
-                         "World frame (mm), one colour per device; the fused hand thick, fingers by how many controllers "
-                         "see them (red none, orange 1, yellow 2, green 3+). Drag to orbit, wheel to zoom.",
-                         vm_.fused() ? &*vm_.fused() : nullptr);
+    const auto& ghosts = calibrate_.ghosts();
+    const std::string caption =
+        ghosts.empty() ? "World frame (mm), one colour per device; the fused hand thick, fingers by how many controllers "
+                         "see them (red none, orange 1, yellow 2, green 3+). Drag to orbit, wheel to zoom."
+                       : "Calibration result: thin outlines = where the layout puts each controller now, bold boxes = "
+                         "where the calibration puts it, a line joins the two. Drag to orbit, wheel to zoom.";
+    draw_live_hands_view("live_canvas", camera_, vm_.layout(), vm_.hands(), caption, vm_.fused() ? &*vm_.fused() : nullptr,
+                         ghosts.empty() ? nullptr : &ghosts);
+  }
+
+  void handle_shortcuts() {
+    const ImGuiIO& io = ImGui::GetIO();
+    if (io.WantTextInput || ImGui::IsPopupOpen("", ImGuiPopupFlags_AnyPopupId)) return;
+    if (io.KeyCtrl && !io.KeyShift && ImGui::IsKeyPressed('Z', false)) calibrate_.undo_shortcut();
   }
 
   StatusSink& status_;
@@ -271,6 +322,7 @@ class DevicesTab final : public Tab {
   char trial_[80] = "";
   char folder_[512] = "";
   FileBrowser save_browser_{"Save layout with serials", ".json"};
+  DevicesCalibratePanel calibrate_;  // after vm_: its step records through the same rig
 };
 
 }  // namespace

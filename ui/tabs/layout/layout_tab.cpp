@@ -12,6 +12,7 @@
 
 #include "core/common/paths.h"
 #include "core/io/layout_json.h"
+#include "ui/model/layout_editor.h"
 #include "ui/model/workbench_context.h"
 #include "ui/scene/gl_scene_renderer.h"
 #include "ui/tabs/layout/coverage_panel.h"
@@ -32,6 +33,25 @@ LayoutDocument initial_document() {
     return make_document(default_new_layout());
   }
 }
+
+// Other tabs' edits (the Devices tab's Calibrate step) go through this tab's state, so selection
+// and the status line follow an applied or undone calibration as they follow this tab's own edits.
+class StateLayoutEditor final : public LayoutEditor {
+ public:
+  explicit StateLayoutEditor(LayoutTabState& state) : state_(state) {}
+  const Layout& committed() const override { return state_.history().head().layout; }
+  ActionResult apply_calibration(const Layout& calibrated) override {
+    ActionResult r = ui::apply_calibration(state_.upd_history(), calibrated);
+    state_.report(r, "Apply calibration");
+    return r;
+  }
+  bool can_undo() const override { return state_.history().can_undo(); }
+  std::string undo_message() const override { return state_.history().undo_message(); }
+  void undo() override { state_.undo(); }
+
+ private:
+  LayoutTabState& state_;
+};
 
 // GLFW key codes (the 1.86 GLFW backend indexes KeysDown by them); letters are their ASCII codes.
 constexpr int kKeyDelete = 261;
@@ -55,10 +75,15 @@ LayoutTab::LayoutTab(StatusSink& status, std::unique_ptr<SceneRenderer> renderer
   heatmap_ = std::make_unique<HeatmapPanel>(state_);
   optimiser_ = std::make_unique<OptimiserPanel>(state_);
   state_->select(0);
-  if (shared_layout_ != nullptr) shared_layout_->publish(state_->history().head().layout);
+  if (shared_layout_ != nullptr) {
+    shared_layout_->publish(state_->history().head().layout);
+    editor_ = std::make_unique<StateLayoutEditor>(*state_);
+    shared_layout_->set_editor(editor_.get());
+  }
 }
 
 LayoutTab::~LayoutTab() {
+  if (shared_layout_ != nullptr && shared_layout_->editor() == editor_.get()) shared_layout_->set_editor(nullptr);
   if (stats_frames_wanted_ > 0) report_frame_stats();
 }
 

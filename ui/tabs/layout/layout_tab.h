@@ -27,6 +27,7 @@ class HeatmapPanel;
 class OptimiserPanel;
 
 class CurrentLayout;
+class LayoutEditor;
 class WorkbenchContext;
 
 std::unique_ptr<Tab> make_layout_tab(StatusSink& status, WorkbenchContext& context);
@@ -92,6 +93,7 @@ class LayoutTab final : public Tab {
   StatusSink& status_;
   CurrentLayout* shared_layout_ = nullptr;
   std::shared_ptr<LayoutTabState> state_;
+  std::unique_ptr<LayoutEditor> editor_;  // registered in shared_layout_ for the other tabs' edits
   std::unique_ptr<SceneRenderer> renderer_;
   bool renderer_failed_ = false;
   std::unique_ptr<ScenePanel> scene_;
