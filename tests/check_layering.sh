@@ -13,6 +13,24 @@ fi
 if [ -n "$bad_model" ]; then
   echo "ui/model/ must not include ImGui or GL headers:"; echo "$bad_model"; status=1
 fi
+# Inside core, data flows one way: a folder includes only folders before it in this list (files
+# and the hand model first; processing before what reports on it). A new folder joins the list.
+core_order=(common stats geometry layout hand visibility metric optimise io processing results calibration session)
+for ((i = 0; i < ${#core_order[@]}; i++)); do
+  folder=${core_order[$i]}
+  [ -d "$root/core/$folder" ] || continue
+  later=("${core_order[@]:$((i + 1))}")
+  [ ${#later[@]} -gt 0 ] || continue
+  alternatives=$(IFS='|'; echo "${later[*]}")
+  back=$(grep -RInE "#[[:space:]]*include[[:space:]]*\"core/($alternatives)/" "$root/core/$folder" --include='*.h' --include='*.cpp' 2>/dev/null)
+  if [ -n "$back" ]; then
+    echo "core/$folder may include only core/{${core_order[*]:0:$i}} (core's data flow runs one way):"; echo "$back"; status=1
+  fi
+done
+for d in "$root"/core/*/; do
+  name=$(basename "$d")
+  [[ " ${core_order[*]} " == *" $name "* ]] || { echo "core/$name is not in check_layering.sh's core order: add it"; status=1; }
+done
 n=$(find "$root/core" -name '*.h' -o -name '*.cpp' | wc -l)
 echo "checked $n core files: $([ $status -eq 0 ] && echo clean || echo VIOLATIONS)"
 exit $status

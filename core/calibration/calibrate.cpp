@@ -1,7 +1,7 @@
 #include "core/calibration/calibrate.h"
 
 #include "core/common/error.h"
-#include "core/results/trial_outputs.h"
+#include "core/common/number_format.h"
 
 namespace lmc::calibration {
 namespace {

@@ -4,7 +4,7 @@
 #include <iomanip>
 #include <sstream>
 
-#include "core/results/trial_outputs.h"
+#include "core/common/number_format.h"
 
 namespace lmc::calibration {
 

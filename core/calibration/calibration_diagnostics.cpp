@@ -5,7 +5,7 @@
 #include <numbers>
 
 #include "core/common/angles.h"
-#include "core/results/trial_outputs.h"
+#include "core/common/number_format.h"
 
 namespace lmc::calibration {
 

@@ -10,7 +10,7 @@
 
 #include "core/io/lmc_recording.h"
 #include "core/io/recorder_sidecar.h"
-#include "core/processing/hand_track.h"
+#include "core/hand/hand_track.h"
 #include "core/processing/resample.h"
 #include "core/visibility/visibility_params.h"
 

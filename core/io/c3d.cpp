@@ -15,6 +15,7 @@ namespace lmc {
 namespace {
 
 constexpr size_t kBlock = 512;
+constexpr std::uint8_t kC3dKey = 0x50;  // the second byte of every C3D file
 
 // Byte-order aware access to the file's numbers.
 class Codec {
@@ -118,7 +119,7 @@ class Reader {
 
   C3dData read() {
     if (b_.size() < kBlock) fail(0, "file is " + std::to_string(b_.size()) + " bytes, too short for a C3D header (512)");
-    if (b_[1] != 0x50) fail(1, "not a C3D file (second byte is " + std::to_string(b_[1]) + ", expected 0x50)");
+    if (b_[1] != kC3dKey) fail(1, "not a C3D file (second byte is " + std::to_string(b_[1]) + ", expected 0x50)");
     const size_t param_block = b_[0];
     if (param_block < 2) fail(0, "parameter section block number " + std::to_string(param_block) + " is invalid");
     const size_t pstart = (param_block - 1) * kBlock;
@@ -469,7 +470,18 @@ C3dData parse_c3d(const std::vector<std::uint8_t>& bytes, const std::string& sou
 C3dData read_c3d(const std::filesystem::path& path) {
   std::ifstream in(path, std::ios::binary);
   if (!in) throw Error(ErrorLocation(path.string()), "cannot open C3D file");
-  std::vector<std::uint8_t> bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  // The header block first: a file that is not a C3D (a 2 GB file of garbage) is refused by the
+  // parser's own signature check on that block alone, before the rest is read.
+  std::vector<std::uint8_t> bytes(kBlock);
+  in.read(reinterpret_cast<char*>(bytes.data()), static_cast<std::streamsize>(kBlock));
+  bytes.resize(static_cast<size_t>(in.gcount()));
+  if (bytes.size() < kBlock || bytes[1] != kC3dKey) return parse_c3d(bytes, path.string());
+  std::error_code ec;
+  const auto size = std::filesystem::file_size(path, ec);
+  if (!ec) bytes.reserve(static_cast<size_t>(size));
+  std::vector<char> chunk(1 << 16);
+  while (in.read(chunk.data(), static_cast<std::streamsize>(chunk.size())) || in.gcount() > 0)
+    bytes.insert(bytes.end(), chunk.begin(), chunk.begin() + in.gcount());
   return parse_c3d(bytes, path.string());
 }
 
@@ -521,7 +533,7 @@ std::vector<std::uint8_t> write_c3d_bytes(const C3dData& data, const C3dWriteOpt
   // Header block.
   std::vector<std::uint8_t> header;
   header.push_back(2);
-  header.push_back(0x50);
+  header.push_back(kC3dKey);
   c.put_i16(header, static_cast<std::int16_t>(static_cast<std::uint16_t>(points)));
   c.put_i16(header, 0);  // analog samples per frame
   c.put_i16(header, static_cast<std::int16_t>(static_cast<std::uint16_t>(std::max(data.first_frame, 1))));
@@ -535,7 +547,7 @@ std::vector<std::uint8_t> write_c3d_bytes(const C3dData& data, const C3dWriteOpt
   out.insert(out.end(), header.begin(), header.end());
   // Parameter blocks.
   out.push_back(1);
-  out.push_back(0x50);
+  out.push_back(kC3dKey);
   out.push_back(static_cast<std::uint8_t>(pblocks));
   out.push_back(static_cast<std::uint8_t>(options.processor));
   out.insert(out.end(), records.begin(), records.end());

@@ -370,8 +370,11 @@ std::vector<int> LmcRecording::device_ids() const {
 }
 
 LmcRecording parse_lmc_recording(std::istream& in, const std::string& source_name) {
-  const std::string content = text::read_stream_bytes(in);
-  if (text::is_blank(content))
+  return parse_lmc_recording_text(text::read_stream_bytes(in), source_name);
+}
+
+LmcRecording parse_lmc_recording_text(std::string_view content, const std::string& source_name) {
+  if (text::is_blank(text::without_bom(content)))
     text::fail_at(source_name, 1, 0,
                   "empty file: expected an LMC recording header ('Device ID …')");
   text::require_text(content, source_name);
@@ -442,9 +445,11 @@ LmcRecording parse_lmc_recording(std::istream& in, const std::string& source_nam
 }
 
 LmcRecording read_lmc_recording(const std::filesystem::path& path) {
-  const std::string bytes = text::read_file_bytes(path);
-  std::istringstream in(bytes);
-  return parse_lmc_recording(in, path.string());
+  const std::string source = path.string();
+  const std::string bytes = text::read_text_file(path, "an LMC recording", [&](std::string_view first_line) {
+    if (!text::is_blank(first_line)) (void)read_header(text::Line{first_line, 1, true}, source);
+  });
+  return parse_lmc_recording_text(bytes, source);
 }
 
 std::string lmc_recording_header(RecordingKind kind) {

@@ -11,6 +11,7 @@
 #include <filesystem>
 #include <iosfwd>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "core/hand/hand_frame.h"
@@ -41,6 +42,7 @@ struct LmcRecording {
 // the complete rows before it are kept.
 LmcRecording read_lmc_recording(const std::filesystem::path& path);
 LmcRecording parse_lmc_recording(std::istream& in, const std::string& source_name);
+LmcRecording parse_lmc_recording_text(std::string_view content, const std::string& source_name);
 
 // Writes `recording` in the variant given by recording.kind; numbers are written so that
 // reading them back gives the same doubles.

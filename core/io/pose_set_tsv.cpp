@@ -11,6 +11,7 @@
 
 #include "core/common/error.h"
 #include "core/io/atomic_write.h"
+#include "core/io/text_fields.h"
 
 namespace lmc {
 namespace {
@@ -93,6 +94,17 @@ void save_pose_set(const std::filesystem::path& path, const PoseSet& set) {
   write_file_atomically(path, os.str());
 }
 
+namespace {
+
+// The one rule for a pose set's first line, used before a file is read and by the parser.
+void check_pose_set_first_line(std::string_view line, const std::string& source) {
+  if (!line.empty() && line.back() == '\r') line.remove_suffix(1);
+  if (line != kMagic)
+    throw Error(ErrorLocation(source, 1, 1), "not a pose set: the first line must be \"" + std::string(kMagic) + "\"");
+}
+
+}  // namespace
+
 PoseSet parse_pose_set(std::istream& in, const std::string& source) {
   PoseSet set;
   std::string line;
@@ -105,8 +117,7 @@ PoseSet parse_pose_set(std::istream& in, const std::string& source) {
     throw fail(0, "empty file; expected a pose set starting with \"" + std::string(kMagic) + "\"");
   }
   ++line_no;
-  if (!line.empty() && line.back() == '\r') line.pop_back();
-  if (line != kMagic) throw fail(1, "not a pose set: the first line must be \"" + std::string(kMagic) + "\"");
+  check_pose_set_first_line(line, source);
   // Comments, then the header.
   const std::string expected_header = header_line();
   while (true) {
@@ -181,9 +192,10 @@ PoseSet parse_pose_set(std::istream& in, const std::string& source) {
 }
 
 PoseSet load_pose_set(const std::filesystem::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw Error(ErrorLocation(path.string()), "cannot open pose set file");
-  return parse_pose_set(in, path.string());
+  const std::string source = path.string();
+  std::istringstream in(text::read_text_file(
+      path, "a pose set", [&](std::string_view first_line) { check_pose_set_first_line(first_line, source); }));
+  return parse_pose_set(in, source);
 }
 
 }  // namespace lmc

@@ -1,5 +1,6 @@
 #include "core/io/text_fields.h"
 
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <fstream>
@@ -7,6 +8,7 @@
 #include <iterator>
 #include <sstream>
 #include <system_error>
+#include <vector>
 
 #include "core/common/error.h"
 
@@ -21,6 +23,41 @@ std::string read_file_bytes(const std::filesystem::path& path) {
   if (!in) throw Error(ErrorLocation{path.string()}, "cannot open file for reading");
   std::string bytes = read_stream_bytes(in);
   if (in.bad()) throw Error(ErrorLocation{path.string()}, "read error");
+  return bytes;
+}
+
+std::string read_text_file(const std::filesystem::path& path, const std::string& expected,
+                           const std::function<void(std::string_view first_line)>& check_header) {
+  std::error_code ec;
+  if (std::filesystem::is_directory(path, ec)) throw Error(ErrorLocation{path.string()}, "is a folder, not a file");
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw Error(ErrorLocation{path.string()}, "cannot open file for reading");
+  const auto size = std::filesystem::file_size(path, ec);
+  std::string bytes(ec ? kMaxHeaderLineBytes : std::min<std::uintmax_t>(size, kMaxHeaderLineBytes), '\0');
+  in.read(bytes.data(), static_cast<std::streamsize>(bytes.size()));
+  bytes.resize(static_cast<size_t>(in.gcount()));
+  if (in.bad()) throw Error(ErrorLocation{path.string()}, "read error");
+  const size_t newline = bytes.find('\n');
+  const bool more = !in.eof() && in.peek() != std::char_traits<char>::eof();
+  // What was read must be text before anything else is said about it (a binary file is named as
+  // one); when the file goes on, the check stops short of a UTF-8 sequence the chunk may have cut.
+  const size_t last_newline = bytes.rfind('\n');
+  const size_t checked = !more ? bytes.size() : last_newline != std::string::npos ? last_newline : bytes.size() - std::min<size_t>(bytes.size(), 3);
+  require_text(std::string_view(bytes).substr(0, checked), path.string());
+  if (newline == std::string::npos && more)
+    throw Error(ErrorLocation{path.string(), 1},
+                "the first line is longer than " + std::to_string(kMaxHeaderLineBytes / 1024) + " KB: not " + expected);
+  // A blank file is left to the parser, which names what it expected.
+  if (!more && is_blank(without_bom(bytes))) return bytes;
+  check_header(without_bom(std::string_view(bytes).substr(0, newline)));
+  if (more) {
+    // Read the rest into the same buffer: one copy of the file in memory.
+    if (!ec) bytes.reserve(static_cast<size_t>(size));
+    std::vector<char> chunk(1 << 16);
+    while (in.read(chunk.data(), static_cast<std::streamsize>(chunk.size())) || in.gcount() > 0)
+      bytes.append(chunk.data(), static_cast<size_t>(in.gcount()));
+    if (in.bad()) throw Error(ErrorLocation{path.string()}, "read error");
+  }
   return bytes;
 }
 
@@ -87,10 +124,15 @@ void require_text(std::string_view content, const std::string& source_name) {
   }
 }
 
-std::vector<Line> split_lines(std::string_view content) {
-  std::vector<Line> lines;
+std::string_view without_bom(std::string_view content) {
   // A UTF-8 byte-order mark (some Windows editors add one) is not part of the first field.
   if (content.substr(0, 3) == "\xEF\xBB\xBF") content.remove_prefix(3);
+  return content;
+}
+
+std::vector<Line> split_lines(std::string_view content) {
+  std::vector<Line> lines;
+  content = without_bom(content);
   size_t start = 0;
   long number = 1;
   while (start < content.size()) {

@@ -5,6 +5,7 @@
 // (std::to_chars), so write→read round-trips exactly.
 #include <cstdint>
 #include <filesystem>
+#include <functional>
 #include <iosfwd>
 #include <optional>
 #include <string>
@@ -31,10 +32,20 @@ struct Field {
 std::string read_file_bytes(const std::filesystem::path& path);
 std::string read_stream_bytes(std::istream& in);
 
+// A text file whose first line must be a header: the first line is read (at most
+// kMaxHeaderLineBytes), checked to be text and handed to `check_header` (which throws naming the
+// problem) before the rest is read. So a 2 GB file of garbage, or a 200 MB file of one line, is
+// refused at once, and a file that is read costs its own size in memory, once.
+inline constexpr size_t kMaxHeaderLineBytes = 64 * 1024;
+std::string read_text_file(const std::filesystem::path& path, const std::string& expected,
+                           const std::function<void(std::string_view first_line)>& check_header);
+
 // Throws lmc::Error (file, line, column) when `content` holds a NUL byte or is not valid UTF-8:
 // such input is a binary or foreign-encoded file, and parsing it would give garbage numbers.
 void require_text(std::string_view content, const std::string& source_name);
 
+// `content` without a leading UTF-8 byte-order mark; split_lines drops it the same way.
+std::string_view without_bom(std::string_view content);
 std::vector<Line> split_lines(std::string_view content);
 
 // A short, printable excerpt of a field for error messages: at most 40 characters, control

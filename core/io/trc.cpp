@@ -58,20 +58,33 @@ void TrcData::to_millimetres() {
   units = "mm";
 }
 
-TrcData parse_trc(std::istream& in, const std::string& source_name) {
-  const std::string content = text::read_stream_bytes(in);
-  if (text::is_blank(content))
-    text::fail_at(source_name, 1, 0, "empty file: expected a TRC header ('PathFileType …')");
-  text::require_text(content, source_name);
-  const auto lines = text::split_lines(content);
+namespace {
 
+// The one rule for a TRC's first line, used before the rest of a file is read and by the parser.
+void check_trc_first_line(std::string_view line, const std::string& source_name) {
   std::vector<text::Field> fields;
-  text::split_fields(lines[0].text, '\t', fields);
+  text::split_fields(line, '\t', fields);
   if (text::trim(fields[0].text) != "PathFileType") {
     text::fail_at(source_name, 1, 1,
                   "not a TRC file: the first line must start with 'PathFileType', found " +
                       text::quoted_excerpt(fields[0].text));
   }
+}
+
+}  // namespace
+
+TrcData parse_trc(std::istream& in, const std::string& source_name) {
+  return parse_trc_text(text::read_stream_bytes(in), source_name);
+}
+
+TrcData parse_trc_text(std::string_view content, const std::string& source_name) {
+  if (text::is_blank(text::without_bom(content)))
+    text::fail_at(source_name, 1, 0, "empty file: expected a TRC header ('PathFileType …')");
+  text::require_text(content, source_name);
+  const auto lines = text::split_lines(content);
+
+  check_trc_first_line(lines[0].text, source_name);
+  std::vector<text::Field> fields;
   if (lines.size() < static_cast<size_t>(kHeaderLines)) {
     text::fail_at(source_name, static_cast<long>(lines.size()), 0,
                   "TRC header is incomplete: expected " + std::to_string(kHeaderLines) +
@@ -252,9 +265,10 @@ TrcData parse_trc(std::istream& in, const std::string& source_name) {
 }
 
 TrcData read_trc(const std::filesystem::path& path) {
-  const std::string bytes = text::read_file_bytes(path);
-  std::istringstream in(bytes);
-  return parse_trc(in, path.string());
+  const std::string source = path.string();
+  const std::string bytes = text::read_text_file(
+      path, "a TRC file", [&](std::string_view first_line) { check_trc_first_line(first_line, source); });
+  return parse_trc_text(bytes, source);
 }
 
 void write_trc(std::ostream& out, const TrcData& trc, const std::string& path_field) {

@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <iosfwd>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace lmc {
@@ -32,6 +33,7 @@ struct TrcData {
 
 TrcData read_trc(const std::filesystem::path& path);
 TrcData parse_trc(std::istream& in, const std::string& source_name);
+TrcData parse_trc_text(std::string_view content, const std::string& source_name);
 void write_trc(std::ostream& out, const TrcData& trc, const std::string& path_field = "");
 void save_trc(const std::filesystem::path& path, const TrcData& trc);  // atomic
 

@@ -11,7 +11,7 @@
 #include <utility>
 #include <vector>
 
-#include "core/processing/hand_track.h"
+#include "core/hand/hand_track.h"
 
 namespace lmc {
 

@@ -8,7 +8,7 @@
 // rolling(30, center=True, min_periods=1).var()). Output is NaN before the start.
 #include <vector>
 
-#include "core/processing/hand_track.h"
+#include "core/hand/hand_track.h"
 
 namespace lmc {
 

@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "core/io/lmc_recording.h"
-#include "core/processing/hand_track.h"
+#include "core/hand/hand_track.h"
 
 namespace lmc {
 

@@ -3,7 +3,7 @@
 #include <cmath>
 #include <sstream>
 
-#include "core/results/trial_outputs.h"
+#include "core/common/number_format.h"
 
 namespace lmc {
 

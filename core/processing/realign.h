@@ -8,7 +8,7 @@
 #include <string>
 
 #include "core/layout/layout.h"
-#include "core/processing/hand_track.h"
+#include "core/hand/hand_track.h"
 
 namespace lmc {
 

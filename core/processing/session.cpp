@@ -6,13 +6,14 @@
 #include <map>
 
 #include "core/common/error.h"
+#include "core/common/number_format.h"
 #include "core/io/c3d.h"
 #include "core/io/layout_json.h"
 #include "core/io/lmc_recording.h"
 #include "core/io/recorder_sidecar.h"
 #include "core/io/trc.h"
+#include "core/processing/trial_summary.h"
 #include "core/processing/trial_tag.h"
-#include "core/results/trial_outputs.h"
 
 namespace fs = std::filesystem;
 
@@ -183,7 +184,7 @@ TrialOutcome process_job(const TrialJob& job, const SessionOptions& options, con
     r.warnings = out.warnings;
     r.layout_source = out.layout_used;
     out.summary = trial_summary_json(r);
-    if (!options.out_dir.empty()) write_trial_outputs(r, options.out_dir);
+    if (options.on_result) options.on_result(r);
     if (options.compare_methods && vicon != nullptr) {
       ProcessOptions other = popt;
       other.method = options.process.method == FusionMethod::kReference ? FusionMethod::kDefault : FusionMethod::kReference;
@@ -208,7 +209,6 @@ TrialOutcome process_job(const TrialJob& job, const SessionOptions& options, con
 
 std::vector<TrialOutcome> process_session(const std::vector<TrialJob>& jobs, const SessionOptions& options) {
   const ViconMapping mapping = options.mapping ? load_vicon_mapping(*options.mapping) : default_vicon_mapping();
-  if (!options.out_dir.empty()) fs::create_directories(options.out_dir);
   std::vector<TrialOutcome> outcomes(jobs.size());
   tbb::parallel_for(size_t{0}, jobs.size(), [&](size_t k) { outcomes[k] = process_job(jobs[k], options, mapping); });
   return outcomes;

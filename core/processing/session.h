@@ -7,6 +7,7 @@
 // Trials run in parallel (oneTBB), each on its own; a trial that fails gives a message and the
 // others still run. Results come back in trial-name order whatever the thread count.
 #include <filesystem>
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -41,7 +42,10 @@ struct SessionOptions {
   ProcessOptions process;
   std::optional<std::string> layout;  // name or path; else sidecar, else by trial tag
   std::optional<std::filesystem::path> mapping;
-  std::filesystem::path out_dir;      // empty: nothing written
+  // Called with each trial's whole result as soon as it is processed (from the worker threads, so
+  // it must be thread-safe): `lmc process` writes the trial's files there (core/results), which
+  // processing itself knows nothing of.
+  std::function<void(const TrialResult&)> on_result;
   bool compare_methods = false;       // also run the other method and collect errors vs truth
 };
 

@@ -4,7 +4,8 @@
 #include <sstream>
 #include <tuple>
 
-#include "core/processing/hand_track.h"
+#include "core/common/number_format.h"
+#include "core/hand/hand_track.h"
 #include "core/processing/measures.h"
 #include "core/results/trial_outputs.h"
 

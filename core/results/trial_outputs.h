@@ -19,12 +19,8 @@ namespace lmc {
 std::string format_results_text(const TrialResult& r);
 std::string format_measures_tsv(const TrialResult& r);
 std::string format_fused_points(const TrialResult& r);
-nlohmann::json trial_summary_json(const TrialResult& r);
 
 // Writes the four files into `dir` (created if needed) atomically; returns the summary path.
 std::filesystem::path write_trial_outputs(const TrialResult& r, const std::filesystem::path& dir);
-
-// Python-style "%f"/"%.2f": NaN → "nan", ±inf → "inf"/"-inf".
-std::string format_fixed(double v, int decimals);
 
 }  // namespace lmc

@@ -62,21 +62,20 @@ bool lock_is_held(const fs::path& dir) {
   return held;
 }
 
-SessionState replay(const fs::path& dir, const JournalContents& journal) {
-  const fs::path path = dir / kJournalFile;
-  if (journal.events.empty()) throw Error(ErrorLocation{path.string()}, "the journal has no complete line: not a session");
-  SessionState st;
-  for (size_t k = 0; k < journal.events.size(); ++k)
-    apply_journal_event(st, journal.events[k], path.string() + ":" + std::to_string(journal.lines[k]));
-  for (const auto& w : journal.warnings) st.warnings.push_back(w);
-  return st;
-}
-
 std::string attempt_dir_name(const std::string& trial, int attempt) {
   return trial + ".attempt" + std::to_string(attempt);
 }
 
 }  // namespace
+
+SessionState state_from_journal(const JournalContents& journal, const std::string& source) {
+  if (journal.events.empty()) throw Error(ErrorLocation{source}, "the journal has no complete line: not a session");
+  SessionState st;
+  for (size_t k = 0; k < journal.events.size(); ++k)
+    apply_journal_event(st, journal.events[k], source + ":" + std::to_string(journal.lines[k]));
+  for (const auto& w : journal.warnings) st.warnings.push_back(w);
+  return st;
+}
 
 fs::path default_session_dir(const std::string& subject_id) {
   require_safe_name(subject_id, "subject id");
@@ -153,7 +152,7 @@ SessionFolder SessionFolder::open(const fs::path& dir) {
       if (::truncate(path.c_str(), static_cast<off_t>(journal.complete_bytes)) != 0)
         throw Error(ErrorLocation{path.string()}, std::string("cannot cut the journal's broken last line: ") + std::strerror(errno));
     }
-    SessionState state = replay(dir, journal);
+    SessionState state = state_from_journal(journal, path.string());
     SessionFolder folder(dir, std::move(state), JournalWriter(path, false), lock);
     folder.record({{"type", "session_opened"}, {"software_version", LMC_VERSION}, {"pid", static_cast<int>(::getpid())}});
     // Collected first: record() replaces the state the loop would otherwise be walking.
@@ -285,7 +284,8 @@ void SessionFolder::device_event(const std::string& slot, const std::string& mes
 SessionState read_session_state(const fs::path& dir) {
   if (!is_session_folder(dir))
     throw Error(ErrorLocation{dir.string()}, std::string("not a subject session (no ") + kJournalFile + ")");
-  SessionState st = replay(dir, read_journal(dir / kJournalFile));
+  const fs::path journal = dir / kJournalFile;
+  SessionState st = state_from_journal(read_journal(journal), journal.string());
   if (!lock_is_held(dir)) {
     for (auto& t : st.trials) {
       if (t.status != TrialStatus::kRecording) continue;

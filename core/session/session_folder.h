@@ -32,6 +32,10 @@ struct NewSessionSpec {
 // The default folder of a new session: <sessions dir>/<subject>-<UTC date-time>.
 std::filesystem::path default_session_dir(const std::string& subject_id);
 
+// The session's state as its journal's events make it (the journal wins over the manifest);
+// `source` names the journal in messages. Opening a folder and the fuzzer both use this.
+SessionState state_from_journal(const JournalContents& journal, const std::string& source);
+
 class SessionFolder {
  public:
   // Creates `dir` (which must not exist or be empty), copies the protocol and every layout it

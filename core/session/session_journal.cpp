@@ -56,7 +56,11 @@ JournalContents read_journal(const fs::path& path, std::uintmax_t max_bytes) {
     throw Error(ErrorLocation{path.string()}, "the journal is " + std::to_string(size >> 20) + " MB, more than any session writes");
   std::ifstream in(path, std::ios::binary);
   if (!in) throw Error(ErrorLocation{path.string()}, "cannot open the journal");
-  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  return parse_journal_text(text, path.string());
+}
+
+JournalContents parse_journal_text(std::string_view text, const std::string& source) {
   JournalContents out;
   size_t pos = 0;
   int line_no = 0;
@@ -66,21 +70,21 @@ JournalContents read_journal(const fs::path& path, std::uintmax_t max_bytes) {
     if (nl == std::string::npos) {
       // No newline: the process died in the middle of this line. Everything before it stands.
       out.cut_last_line = true;
-      out.warnings.push_back(path.string() + ":" + std::to_string(line_no) +
+      out.warnings.push_back(source + ":" + std::to_string(line_no) +
                              ": a cut last line was ignored (the program stopped while writing it)");
       break;
     }
-    const std::string line = text.substr(pos, nl - pos);
+    const std::string line(text.substr(pos, nl - pos));
     pos = nl + 1;
     if (line.empty()) continue;
     nlohmann::json event;
     try {
-      event = parse_json_text(line, path.string());
+      event = parse_json_text(line, source);
     } catch (const Error&) {
       event = nullptr;
     }
     if (!event.is_object())
-      throw Error(ErrorLocation{path.string(), line_no}, "this journal line is not a JSON object; the journal was edited or damaged");
+      throw Error(ErrorLocation{source, line_no}, "this journal line is not a JSON object; the journal was edited or damaged");
     out.events.push_back(std::move(event));
     out.lines.push_back(line_no);
     out.complete_bytes = pos;

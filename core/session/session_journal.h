@@ -6,6 +6,7 @@
 // naming the file and the line, never silently skipped.
 #include <filesystem>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include <nlohmann/json.hpp>
@@ -43,5 +44,7 @@ struct JournalContents {
 // Reads every complete line. A journal larger than `max_bytes` is refused (it would be millions
 // of events: not a journal this program wrote).
 JournalContents read_journal(const std::filesystem::path& path, std::uintmax_t max_bytes = 256u << 20);
+// The same from text already in memory; `source` names it in messages (the fuzzer feeds this).
+JournalContents parse_journal_text(std::string_view text, const std::string& source);
 
 }  // namespace lmc::session

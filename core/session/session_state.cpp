@@ -163,7 +163,7 @@ void apply_journal_event(SessionState& st, const nlohmann::json& event, const st
   const std::string utc = e.string_or("utc", "");
   if (type == "session_created") {
     if (st.events != 0) e.at("type").fail("session_created appears after the first line");
-    st = initial_state(session_setup_from_json(event.at("setup"), where + "#/setup"), where + "#/setup");
+    st = initial_state(session_setup_from_json(e.at("setup").json(), where + "#/setup"), where + "#/setup");
   } else if (st.events == 0) {
     e.at("type").fail("the journal must start with session_created");
   } else if (type == "preflight") {

@@ -11,7 +11,7 @@
 
 #include "core/io/lmc_recording.h"
 #include "core/layout/layout.h"
-#include "core/processing/hand_track.h"
+#include "core/hand/hand_track.h"
 #include "core/session/trial_quality.h"
 #include "core/stats/percentile.h"
 

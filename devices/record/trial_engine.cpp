@@ -60,6 +60,7 @@ struct TrialEngine::Run {
   std::unique_ptr<ViconTrigger> vicon;
   std::unique_ptr<ViconListener> listener;
   std::mutex inbox_mutex;
+  int rejected_reported = 0;  // listener->rejected() already said
   std::vector<std::pair<ViconMessage, std::int64_t>> inbox;  // with the host time it arrived
   Clock::time_point t0 = Clock::now();
   Clock::time_point last_report{};
@@ -222,6 +223,13 @@ struct TrialEngine::Run {
   // Vicon's own start/stop broadcasts (listen mode), in the order they arrived.
   void handle_vicon_inbox() {
     if (!listener) return;
+    // Datagrams that are not capture messages (another program on the port, a damaged packet)
+    // change nothing, but the operator hears of them once per burst.
+    if (const int rejected = listener->rejected(); rejected > rejected_reported) {
+      say("ignored " + std::to_string(rejected - rejected_reported) + " datagram(s) on " + result.listen_address +
+          " that are not Vicon capture messages (latest: " + listener->last_rejection() + ")");
+      rejected_reported = rejected;
+    }
     std::vector<std::pair<ViconMessage, std::int64_t>> got;
     {
       std::lock_guard lock(inbox_mutex);

@@ -4,7 +4,7 @@
 #include <chrono>
 #include <sstream>
 
-#include "core/results/trial_outputs.h"
+#include "core/common/number_format.h"
 #include "devices/sim/sim_rig.h"
 
 namespace lmc::devices {

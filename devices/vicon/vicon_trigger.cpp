@@ -224,6 +224,11 @@ ViconListener::~ViconListener() {
   if (fd_ >= 0) ::close(fd_);
 }
 
+std::string ViconListener::last_rejection() const {
+  std::lock_guard lock(rejection_mutex_);
+  return last_rejection_;
+}
+
 void ViconListener::run() {
   std::set<std::uint32_t> seen;
   char buf[65536];
@@ -233,8 +238,13 @@ void ViconListener::run() {
     const ssize_t n = ::recv(fd_, buf, sizeof buf, 0);
     if (n <= 0) continue;
     ++received_;
-    auto m = parse_vicon_message(std::string_view(buf, static_cast<size_t>(n)));
+    std::string why;
+    auto m = parse_vicon_message(std::string_view(buf, static_cast<size_t>(n)), &why);
     if (!m) {
+      {
+        std::lock_guard lock(rejection_mutex_);
+        last_rejection_ = std::to_string(n) + " bytes: " + why;
+      }
       ++rejected_;
       continue;
     }

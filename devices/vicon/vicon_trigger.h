@@ -11,6 +11,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <functional>
+#include <mutex>
 #include <optional>
 #include <string>
 #include <thread>
@@ -89,6 +90,9 @@ class ViconListener {
   std::uint16_t port() const { return port_; }
   int datagrams_received() const { return received_.load(); }
   int rejected() const { return rejected_.load(); }
+  // Why the latest rejected datagram was not a capture message, with its size ("412 bytes: …"),
+  // so the operator learns what else is sending to the port.
+  std::string last_rejection() const;
 
  private:
   void run();
@@ -98,6 +102,8 @@ class ViconListener {
   std::atomic<bool> stop_{false};
   std::atomic<int> received_{0};
   std::atomic<int> rejected_{0};
+  mutable std::mutex rejection_mutex_;
+  std::string last_rejection_;
   std::thread thread_;
 };
 

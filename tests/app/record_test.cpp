@@ -312,17 +312,61 @@ std::string capture_message(bool start, const std::string& name, int packet_id) 
   return xml;
 }
 
-TEST(LmcRecord, ViconCaptureStartAndStopDriveTheTrial) {
-  // A free loopback port for lmc to listen on.
+// A free loopback UDP port for lmc to listen on.
+int free_udp_port() {
   const int probe = ::socket(AF_INET, SOCK_DGRAM, 0);
   sockaddr_in addr{};
   addr.sin_family = AF_INET;
   addr.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
-  ASSERT_EQ(::bind(probe, reinterpret_cast<sockaddr*>(&addr), sizeof addr), 0);
+  if (::bind(probe, reinterpret_cast<sockaddr*>(&addr), sizeof addr) != 0) return -1;
   socklen_t len = sizeof addr;
   ::getsockname(probe, reinterpret_cast<sockaddr*>(&addr), &len);
-  const int port = ntohs(addr.sin_port);
   ::close(probe);
+  return ntohs(addr.sin_port);
+}
+
+// Fault drill (issue #14): 64 KB of garbage, the largest datagram UDP carries, arrives on the
+// listen port before and during the trial. The trial records as if it had not, and lmc says what
+// it ignored.
+TEST(LmcRecord, GarbageDatagramsOnTheListenPortAreIgnoredAndSaid) {
+  const int port = free_udp_port();
+  ASSERT_GT(port, 0);
+  const auto dir = lmc::test::scratch_dir("record_listen_garbage");
+  CliRun r;
+  std::thread lmc([&] {
+    r = run("record --backend sim --seconds 20 --vicon-listen " + std::to_string(port) +
+                " --vicon-listen-address 127.0.0.1 -o " + lmc::test::shell_quote((dir / "s").string()),
+            dir / "logs");
+  });
+  std::string garbage(65507, '\0');
+  for (size_t i = 0; i < garbage.size(); ++i) garbage[i] = static_cast<char>((i * 2654435761u) >> 13);
+  std::atomic<bool> stop_garbage{false};
+  std::thread noise([&] { send_until(port, garbage, stop_garbage); });
+  std::atomic<bool> stop_start{false};
+  std::thread starter([&] { send_until(port, capture_message(true, "Naiv_Index103", 700), stop_start); });
+  const auto side = dir / "s" / "LMC_Naiv_Index103.session.json";
+  for (int i = 0; i < 400 && !std::filesystem::exists(side); ++i) std::this_thread::sleep_for(std::chrono::milliseconds(25));
+  std::this_thread::sleep_for(std::chrono::milliseconds(1000));
+  stop_start = true;
+  starter.join();
+  std::atomic<bool> stop_stop{false};
+  std::thread stopper([&] { send_until(port, capture_message(false, "Naiv_Index103", 701), stop_stop); });
+  lmc.join();
+  stop_stop = stop_garbage = true;
+  stopper.join();
+  noise.join();
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto sj = json_file(side);
+  EXPECT_EQ(sj.at("status"), "completed");
+  EXPECT_EQ(sj.at("vicon_trigger_received").at("packet_id"), 700);
+  EXPECT_EQ(sj.at("vicon_stop_received").at("packet_id"), 701);
+  EXPECT_GT(sj.at("frames_written").get<int>(), 20);
+  EXPECT_THAT(r.all(), HasSubstr("that are not Vicon capture messages (latest: 65507 bytes: "));
+}
+
+TEST(LmcRecord, ViconCaptureStartAndStopDriveTheTrial) {
+  const int port = free_udp_port();
+  ASSERT_GT(port, 0);
 
   const auto dir = lmc::test::scratch_dir("record_listen");
   CliRun r;

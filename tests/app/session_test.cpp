@@ -24,7 +24,9 @@ namespace session_cli_test {  // named: test files share unity batches
 namespace fs = std::filesystem;
 using ::testing::HasSubstr;
 using lmc::test::CliRun;
+using lmc::test::complete_rows;
 using lmc::test::run_lmc;
+using lmc::test::spawn_lmc;
 using lmc::test::shell_quote;
 
 const bool kPrivateStateDir = [] {
@@ -118,28 +120,6 @@ TEST(LmcSession, WholeStudyProtocolWithShortTrialsGivesEightyAcceptedTrialsPaire
   EXPECT_EQ(st["trials"][20]["name"], "Naiv_Static201");
   EXPECT_EQ(st["trials"][40]["name"], "Opti_Static101");
   EXPECT_EQ(st["trials"][79]["name"], "Opti_Wrist205");
-}
-
-// Starts `lmc args` as a child process (not waited for); its output goes to files in `logs`.
-pid_t spawn_lmc(const std::string& args, const fs::path& logs) {
-  fs::create_directories(logs);
-  const std::string cmd = "exec " + shell_quote(lmc::test::cli_path().string()) + " " + args + " >" +
-                          q(logs / "out") + " 2>" + q(logs / "err") + " </dev/null";
-  const pid_t pid = ::fork();
-  if (pid == 0) {
-    ::execl("/bin/sh", "sh", "-c", cmd.c_str(), static_cast<char*>(nullptr));
-    ::_exit(127);
-  }
-  return pid;
-}
-
-// Rows in a raw file that are complete lines.
-size_t complete_rows(const fs::path& raw) {
-  std::ifstream in(raw);
-  size_t rows = 0;
-  std::string line;
-  while (std::getline(in, line)) rows += in.eof() ? 0 : 1;
-  return rows > 0 ? rows - 1 : 0;  // header
 }
 
 TEST(LmcSession, KillMidTrialLosesAtMostASecondAndTheNextRunResumes) {

@@ -40,14 +40,17 @@ inline std::string shell_quote(const std::string& s) {
 // `log_dir`, a fresh folder is made per call: ctest runs the tests of one binary as parallel
 // processes, so fixed names would race. `shell_prefix` runs first in the same shell (e.g.
 // "ulimit -f 200 &&" to give lmc a file-size limit).
-inline CliRun run_lmc(const std::string& args, std::filesystem::path log_dir = {}, const std::string& shell_prefix = {}) {
+// `launcher` runs lmc through another program (e.g. "setpriv --reuid=65534 …" to run it unprivileged).
+inline CliRun run_lmc(const std::string& args, std::filesystem::path log_dir = {}, const std::string& shell_prefix = {},
+                      const std::string& launcher = {}) {
   if (log_dir.empty()) {
     std::string pattern = (std::filesystem::temp_directory_path() / "lmc_cli_XXXXXX").string();
     if (::mkdtemp(pattern.data()) == nullptr) return {};
     log_dir = pattern;
   }
   std::filesystem::create_directories(log_dir);
-  const std::string inner = shell_prefix + (shell_prefix.empty() ? "" : " exec ") + shell_quote(cli_path().string()) + " " + args;
+  const std::string inner = shell_prefix + (shell_prefix.empty() ? "" : " exec ") + (launcher.empty() ? "" : launcher + " ") +
+                            shell_quote(cli_path().string()) + " " + args;
   const std::string cmd = "/bin/sh -c " + shell_quote(inner) + " >" + shell_quote((log_dir / "out").string()) + " 2>" +
                           shell_quote((log_dir / "err").string());
   const int status = std::system(cmd.c_str());
@@ -56,6 +59,30 @@ inline CliRun run_lmc(const std::string& args, std::filesystem::path log_dir = {
   r.out = read_text_file(log_dir / "out");
   r.err = read_text_file(log_dir / "err");
   return r;
+}
+
+// Starts `lmc args` as a child process, not waited for (the caller kills or waits for it); its
+// streams go to files in `logs`.
+inline pid_t spawn_lmc(const std::string& args, const std::filesystem::path& logs) {
+  std::filesystem::create_directories(logs);
+  const std::string cmd = "exec " + shell_quote(cli_path().string()) + " " + args + " >" +
+                          shell_quote((logs / "out").string()) + " 2>" + shell_quote((logs / "err").string()) +
+                          " </dev/null";
+  const pid_t pid = ::fork();
+  if (pid == 0) {
+    ::execl("/bin/sh", "sh", "-c", cmd.c_str(), static_cast<char*>(nullptr));
+    ::_exit(127);
+  }
+  return pid;
+}
+
+// Complete rows (lines ending in a newline) of a recording, not counting its header line.
+inline size_t complete_rows(const std::filesystem::path& raw) {
+  std::ifstream in(raw);
+  size_t rows = 0;
+  std::string line;
+  while (std::getline(in, line)) rows += in.eof() ? 0 : 1;
+  return rows > 0 ? rows - 1 : 0;
 }
 
 }  // namespace lmc::test

@@ -21,7 +21,7 @@
 #include <random>
 
 #include "app/lmc/command.h"
-#include "core/hand/pose_source.h"
+#include "core/io/pose_source.h"
 #include "core/io/layout_json.h"
 #include "core/optimise/pso.h"
 #include "core/optimise/swarm_evaluator.h"

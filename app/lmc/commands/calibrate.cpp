@@ -12,6 +12,7 @@
 #include "core/calibration/calibrate_trial.h"
 #include "core/calibration/calibrated_layout.h"
 #include "core/common/error.h"
+#include "core/common/number_format.h"
 #include "core/common/utc_time.h"
 #include "core/io/atomic_write.h"
 #include "core/io/layout_json.h"

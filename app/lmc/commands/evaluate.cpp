@@ -6,7 +6,7 @@
 #include <string>
 
 #include "app/lmc/command.h"
-#include "core/hand/pose_source.h"
+#include "core/io/pose_source.h"
 #include "core/io/layout_json.h"
 #include "core/metric/coverage.h"
 #include "core/metric/coverage_report.h"

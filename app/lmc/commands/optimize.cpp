@@ -11,7 +11,7 @@
 
 #include "app/lmc/command.h"
 #include "core/common/error.h"
-#include "core/hand/pose_source.h"
+#include "core/io/pose_source.h"
 #include "core/io/layout_json.h"
 #include "core/metric/coverage_report.h"
 #include "core/optimise/pso.h"

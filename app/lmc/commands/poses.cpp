@@ -6,7 +6,7 @@
 
 #include "app/lmc/command.h"
 #include "core/hand/pose_set_generator.h"
-#include "core/hand/pose_source.h"
+#include "core/io/pose_source.h"
 #include "core/io/pose_set_tsv.h"
 
 namespace {

@@ -10,6 +10,7 @@
 
 #include "app/lmc/command.h"
 #include "core/common/error.h"
+#include "core/common/number_format.h"
 #include "core/io/atomic_write.h"
 #include "core/processing/method_comparison.h"
 #include "core/processing/session.h"
@@ -40,7 +41,8 @@ void run_process(const ProcessArgs& a) {
   options.process.resample.adaptive_gap = !a.fixed_gap;
   if (!a.layout.empty()) options.layout = a.layout;
   if (!a.mapping.empty()) options.mapping = a.mapping;
-  options.out_dir = a.out;
+  std::filesystem::create_directories(a.out);
+  options.on_result = [&](const lmc::TrialResult& r) { lmc::write_trial_outputs(r, a.out); };
   options.compare_methods = a.compare_methods;
 
   std::vector<std::string> notes;

@@ -10,6 +10,7 @@
 #include <sstream>
 
 #include "core/common/error.h"
+#include "core/common/nan.h"
 #include "tests/core/io/io_test_support.h"
 #include "tests/support/reference_data.h"
 
@@ -20,8 +21,6 @@ using ::testing::HasSubstr;
 using test::expect_error_at;
 using test::io_fixture;
 using test::same_double;
-
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 // A hand frame whose coordinates exercise the formatter: long fractions, negative zero, tiny
 // magnitudes and magnitudes just inside the reader's 10 m limit.

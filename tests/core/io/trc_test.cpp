@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "core/common/error.h"
+#include "core/common/nan.h"
 #include "tests/core/io/io_test_support.h"
 #include "tests/support/reference_data.h"
 
@@ -19,7 +20,6 @@ using test::expect_error_at;
 using test::io_fixture;
 using test::same_double;
 
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 TEST(TrcRead, MissingMarkersEmptyNanAndBlankLine) {
   const auto path = io_fixture("trc_missing_markers.trc");

@@ -13,7 +13,7 @@
 #include "core/hand/reference_poses.h"
 #include "core/io/layout_json.h"
 #include "core/io/lmc_recording.h"
-#include "core/processing/hand_track.h"
+#include "core/hand/hand_track.h"
 #include "core/processing/measures.h"
 #include "tests/support/reference_data.h"
 

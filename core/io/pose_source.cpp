@@ -1,4 +1,4 @@
-#include "core/hand/pose_source.h"
+#include "core/io/pose_source.h"
 
 #include "core/common/error.h"
 #include "core/hand/pose_set_generator.h"
