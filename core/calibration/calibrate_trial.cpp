@@ -5,11 +5,11 @@
 #include "core/calibration/calibrated_layout.h"
 #include "core/calibration/calibration_input.h"
 #include "core/common/error.h"
+#include "core/common/number_format.h"
 #include "core/io/lmc_recording.h"
 #include "core/io/recorder_sidecar.h"
 #include "core/io/vicon_mapping.h"
 #include "core/processing/session.h"
-#include "core/results/trial_outputs.h"
 
 namespace lmc::calibration {
 namespace {

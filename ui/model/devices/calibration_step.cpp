@@ -4,8 +4,8 @@
 #include <cctype>
 #include <utility>
 
+#include "core/common/number_format.h"
 #include "core/io/layout_json.h"
-#include "core/results/trial_outputs.h"
 #include "ui/scene/calibration_ghosts.h"
 
 namespace lmc::ui {
