@@ -26,6 +26,12 @@ constexpr const char* kSource = "fuzz-input";
 
 std::istringstream as_stream(std::string_view bytes) { return std::istringstream(std::string(bytes)); }
 
+// The study's marker mapping, read from the assets once (it is not the input under test).
+const ViconMapping& study_mapping() {
+  static const ViconMapping mapping = default_vicon_mapping();
+  return mapping;
+}
+
 // The recording as `lmc process` takes it: parsed, then put on the 100 Hz grid (the resampler is
 // where a jumping timestamp once asked for gigabytes).
 void lmc_recording(std::string_view bytes) {
@@ -44,13 +50,13 @@ void trc(std::string_view bytes) {
   series.positions = data.positions;
   series.rate_hz = data.data_rate_hz;
   series.source = kSource;
-  (void)apply_vicon_mapping(default_vicon_mapping(), series);
+  (void)apply_vicon_mapping(study_mapping(), series);
 }
 
 void c3d(std::string_view bytes) {
   const std::vector<std::uint8_t> raw(bytes.begin(), bytes.end());
   const C3dData data = parse_c3d(raw, kSource);
-  (void)apply_vicon_mapping(default_vicon_mapping(), data.to_marker_series(kSource));
+  (void)apply_vicon_mapping(study_mapping(), data.to_marker_series(kSource));
 }
 
 void layout_json(std::string_view bytes) { (void)layout_from_json(parse_json_text(std::string(bytes), kSource), kSource); }
