@@ -78,6 +78,7 @@ PsoResult run_pso(const Layout& start, const SearchSpace& space, std::span<const
 
   std::vector<DeviceView> views(np * nd);
   std::vector<std::int64_t> counts(np * (nd + 1));
+  std::vector<LayoutTally> tallies(s.metric == PlacementMetricKind::kRobust ? np : 0, LayoutTally(devices));
   std::vector<double> cost(np);
   PsoResult result;
   result.status = JobStatus::kCompleted;
@@ -89,12 +90,18 @@ PsoResult run_pso(const Layout& start, const SearchSpace& space, std::span<const
       for (size_t d = 0; d < nd; ++d) views[i * nd + d] = DeviceView::from_device(l.devices[d]);
     }
     bool ok = false;
-    arena->execute([&] {
-      ok = worst_finger_histograms(views, s.particles, devices, frames, limits, counts, stop);
-    });
-    if (!ok) return false;
-    for (size_t i = 0; i < np; ++i) {
-      cost[i] = placement_metric(std::span<const std::int64_t>(counts).subspan(i * (nd + 1), nd + 1));
+    if (s.metric == PlacementMetricKind::kStudy) {
+      arena->execute([&] { ok = worst_finger_histograms(views, s.particles, devices, frames, limits, counts, stop); });
+      if (!ok) return false;
+      for (size_t i = 0; i < np; ++i) {
+        cost[i] = placement_metric(std::span<const std::int64_t>(counts).subspan(i * (nd + 1), nd + 1));
+      }
+    } else {
+      arena->execute([&] { ok = layout_tallies(views, s.particles, devices, frames, limits, s.axis_cut_mm, tallies, stop); });
+      if (!ok) return false;
+      for (size_t i = 0; i < np; ++i) {
+        cost[i] = robust_terms(tallies[i], footprint_overlap_share(layout_of(&x[i * dim])), s.weights).total;
+      }
     }
     result.layout_evaluations += s.particles;
     result.device_frame_evaluations += static_cast<std::int64_t>(np * nd * frames.size());
@@ -167,6 +174,9 @@ PsoResult run_pso(const Layout& start, const SearchSpace& space, std::span<const
     VisibilityTable table;
     arena->execute([&] { table = compute_visibility(result.best_layout, frames, s.phalanx_radius_mm); });
     result.best_coverage = compute_coverage(table);
+    arena->execute([&] {
+      result.best_terms = layout_robust_terms(result.best_layout, frames, s.weights, s.phalanx_radius_mm, s.axis_cut_mm);
+    });
   }
   result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   return result;
@@ -181,6 +191,15 @@ double layout_cost(const Layout& layout, std::span<const PreparedFrame> frames, 
   worst_finger_histograms(views, 1, devices, frames,
                           make_limits(VisibilityParams::from_sensor(layout.sensor, phalanx_radius_mm)), counts);
   return placement_metric(counts);
+}
+
+RobustTerms layout_robust_terms(const Layout& layout, std::span<const PreparedFrame> frames, const RobustWeights& weights,
+                                double phalanx_radius_mm, double axis_cut_mm, std::span<const int> frame_subset) {
+  std::vector<DeviceView> views;
+  for (const auto& d : layout.devices) views.push_back(DeviceView::from_device(d));
+  const LayoutTally t = tally_layout(views, frames, make_limits(VisibilityParams::from_sensor(layout.sensor, phalanx_radius_mm)),
+                                     axis_cut_mm, frame_subset);
+  return robust_terms(t, footprint_overlap_share(layout), weights);
 }
 
 }  // namespace lmc

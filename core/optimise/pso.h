@@ -24,6 +24,7 @@
 
 #include "core/layout/layout.h"
 #include "core/metric/coverage.h"
+#include "core/metric/robust_metric.h"
 #include "core/optimise/search_space.h"
 #include "core/visibility/frame_prep.h"
 #include "core/visibility/visibility_params.h"
@@ -40,6 +41,11 @@ struct PsoSettings {
   int threads = 0;  // 0 = all hardware threads; the result does not depend on it
   bool start_from_layout = false;
   double phalanx_radius_mm = 10.0;
+  // The cost the swarm minimises: the study's M (the reference, bit for bit what run_pso always
+  // did) or the robust metric R of robust_metric.h with these weights.
+  PlacementMetricKind metric = PlacementMetricKind::kStudy;
+  RobustWeights weights;
+  double axis_cut_mm = kAxisCutMm;
 };
 
 enum class JobStatus : int { kCompleted = 0, kCancelled = 1 };
@@ -59,6 +65,7 @@ struct PsoResult {
   Layout best_layout;
   double best_cost = 0;
   Coverage best_coverage;            // of best_layout on the pose set
+  RobustTerms best_terms;            // every term of the robust metric for best_layout (also after a study search)
   std::vector<double> best_cost_history;  // best cost after the initial swarm and each iteration
   int iterations_done = 0;
   std::int64_t layout_evaluations = 0;
@@ -76,5 +83,11 @@ PsoResult run_pso(const Layout& start, const SearchSpace& space, std::span<const
 // The cost (M) of one layout on prepared frames; the building block of run_pso, exposed for tests
 // and benchmarks. Uses oneTBB over frames.
 double layout_cost(const Layout& layout, std::span<const PreparedFrame> frames, double phalanx_radius_mm = 10.0);
+
+// Every robust term of one layout (what `lmc evaluate` prints and the search minimises with
+// PlacementMetricKind::kRobust). With `frame_subset`, only those frames.
+RobustTerms layout_robust_terms(const Layout& layout, std::span<const PreparedFrame> frames,
+                                const RobustWeights& weights = {}, double phalanx_radius_mm = 10.0,
+                                double axis_cut_mm = kAxisCutMm, std::span<const int> frame_subset = {});
 
 }  // namespace lmc

@@ -115,4 +115,12 @@ Layout default_start_layout(int devices, const SensorModel& sensor) {
   return l;
 }
 
+SearchSpace table_search_space() {
+  SearchSpace s;
+  const double half = kTableHalfExtentMm - 40.0;  // half a controller's 80 mm length
+  s.bounds[0] = {-half, half};
+  s.bounds[2] = {-half, half};
+  return s;
+}
+
 }  // namespace lmc

@@ -47,6 +47,12 @@ struct SearchSpace {
 // named parameters. Throws lmc::Error naming the offending item.
 SearchSpace parse_search_bounds(const std::string& spec);
 
+// The table top the workbench draws: x, z within ±400 mm of the set-up's centre.
+inline constexpr double kTableHalfExtentMm = 400.0;
+// The robust search's default (issue #15): the paper's four parameters, with x and z keeping every
+// controller whole on the table (centre within ±(400 − 40) mm), rx ∈ [−90, 90]°, ry ∈ [−180, 180]°.
+SearchSpace table_search_space();
+
 // A starting layout of `devices` devices (1–8) under the hand: in a row along x, 120 mm apart,
 // at the table centre, all looking up, sensor model `sensor`; slots LMC1….
 Layout default_start_layout(int devices, const SensorModel& sensor = {});

@@ -62,4 +62,44 @@ bool worst_finger_histograms(std::span<const DeviceView> views, int layouts, int
   return true;
 }
 
+bool layout_tallies(std::span<const DeviceView> views, int layouts, int devices, std::span<const PreparedFrame> frames,
+                    const VisibilityLimits& limits, double axis_cut_mm, std::span<LayoutTally> tallies,
+                    std::stop_token stop) {
+  if (devices < 1 || devices > kMaxDevices || layouts < 0 ||
+      views.size() != static_cast<size_t>(layouts) * static_cast<size_t>(devices) ||
+      tallies.size() != static_cast<size_t>(layouts)) {
+    throw Error("layout_tallies: inconsistent sizes");
+  }
+  using Tallies = std::vector<LayoutTally>;
+  tbb::enumerable_thread_specific<Tallies> local([&] { return Tallies(static_cast<size_t>(layouts), LayoutTally(devices)); });
+  const size_t n = frames.size();
+  const auto nd = static_cast<size_t>(devices);
+  tbb::parallel_for(tbb::blocked_range<size_t>(0, n, kChunkFrames), [&](const tbb::blocked_range<size_t>& r) {
+    if (stop.stop_requested()) return;
+    auto& mine = local.local();
+    FingerBits bits[kMaxDevices][kChunkFrames];
+    for (size_t begin = r.begin(); begin < r.end(); begin += kChunkFrames) {
+      const size_t end = std::min(r.end(), begin + kChunkFrames);
+      for (int l = 0; l < layouts; ++l) {
+        const auto ll = static_cast<size_t>(l);
+        const std::span<const DeviceView> layout_views = views.subspan(ll * nd, nd);
+        for (size_t d = 0; d < nd; ++d) {
+          for (size_t j = begin; j < end; ++j) bits[d][j - begin] = visible_fingers(frames[j], layout_views[d], limits);
+        }
+        for (size_t j = begin; j < end; ++j) {
+          FingerBits fb[kMaxDevices];
+          for (size_t d = 0; d < nd; ++d) fb[d] = bits[d][j - begin];
+          tally_frame(frames[j], layout_views, fb, limits, axis_cut_mm, mine[ll]);
+        }
+      }
+    }
+  });
+  if (stop.stop_requested()) return false;
+  for (auto& t : tallies) t = LayoutTally(devices);
+  for (const auto& mine : local) {
+    for (size_t l = 0; l < tallies.size(); ++l) tallies[l].add(mine[l]);
+  }
+  return true;
+}
+
 }  // namespace lmc

@@ -7,6 +7,7 @@
 #include <span>
 #include <stop_token>
 
+#include "core/metric/layout_tally.h"
 #include "core/visibility/device_view.h"
 #include "core/visibility/frame_prep.h"
 #include "core/visibility/visibility_params.h"
@@ -19,5 +20,12 @@ namespace lmc {
 bool worst_finger_histograms(std::span<const DeviceView> views, int layouts, int devices,
                              std::span<const PreparedFrame> frames, const VisibilityLimits& limits,
                              std::span<std::int64_t> counts, std::stop_token stop = {});
+
+// The robust metric's inner loop: the full tally of each layout (layout_tally.h) instead of the
+// histogram alone. `tallies` holds `layouts` entries, each made for `devices` devices. Exact for
+// any thread count (integer sums). Returns false when `stop` was requested before the end.
+bool layout_tallies(std::span<const DeviceView> views, int layouts, int devices, std::span<const PreparedFrame> frames,
+                    const VisibilityLimits& limits, double axis_cut_mm, std::span<LayoutTally> tallies,
+                    std::stop_token stop = {});
 
 }  // namespace lmc

@@ -40,6 +40,26 @@ TEST(LmcEvaluate, SplitsByOrientationOnAPoseFile) {
   EXPECT_NE(t.out.find("vertical poses:"), std::string::npos);
 }
 
+TEST(LmcEvaluate, RobustTermsAndWhatEachControllerContributes) {
+  const auto dir = lmc::test::scratch_dir("cli_evaluate_robust");
+  const CliRun r = run_lmc("evaluate --layout paper-optimized --frames 300 --json", dir);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  for (const char* split : {"all", "horizontal", "vertical"}) {
+    EXPECT_EQ(j["robust_terms"][split]["M"], j[split]["metric"]) << split;
+  }
+  ASSERT_EQ(j["controllers"].size(), 4u);
+  // As published, the paper's optimized layout has LMC1 looking away from the hand (issue #15).
+  EXPECT_EQ(j["controllers"][0]["slot"], "LMC1");
+  EXPECT_EQ(j["controllers"][0]["seeing_share"], 0.0);
+  EXPECT_EQ(j["controllers"][0]["counts"], false);
+  EXPECT_EQ(j["controllers"][3]["counts"], true);
+  const CliRun t = run_lmc("evaluate --layout paper-optimized --frames 300", dir);
+  ASSERT_EQ(t.exit_code, 0) << t.err;
+  EXPECT_NE(t.out.find("NO: the layout is as good without it"), std::string::npos) << t.out;
+  EXPECT_NE(t.out.find("axis cut"), std::string::npos) << t.out;
+}
+
 TEST(LmcEvaluate, UnknownLayoutIsAnError) {
   const auto dir = lmc::test::scratch_dir("cli_evaluate_bad");
   const CliRun r = run_lmc("evaluate --layout no-such-layout --frames 5", dir);

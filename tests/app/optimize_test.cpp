@@ -43,6 +43,42 @@ TEST(LmcOptimize, SmallSearchWritesALayoutAndJsonSummary) {
   EXPECT_EQ(lmc::load_layout(out2), l1);
 }
 
+TEST(LmcOptimize, RobustIsTheDefaultAndSaysWhatMadeTheLayout) {
+  const auto dir = lmc::test::scratch_dir("cli_optimize_robust");
+  const auto out = dir / "robust.json", study = dir / "study.json";
+  const std::string common = "optimize --frames 40 --particles 4 --iterations 2 --devices 3 --json --no-progress ";
+  const CliRun r = run_lmc(common + "--starts 2 -o " + lmc::test::shell_quote(out.string()), dir);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["metric"], "robust");
+  ASSERT_EQ(j["starts"].size(), 2u);
+  EXPECT_EQ(j["starts"][0]["seed"], 1);
+  EXPECT_EQ(j["starts"][1]["seed"], 2);
+  EXPECT_EQ(j["layout_evaluations"], 2 * 4 * 3);
+  const auto& terms = j["robust_terms"];
+  for (const char* key : {"M", "redundancy", "participation", "axis_cut", "centring", "footprint", "R"}) {
+    EXPECT_TRUE(terms.contains(key)) << key;
+  }
+  EXPECT_EQ(terms["R"], j["starts"][j["best_start"].get<int>()]["best_cost"]);
+  const lmc::Layout l = lmc::load_layout(out);
+  EXPECT_EQ(l.name, "optimized-robust");
+  EXPECT_NE(l.description.find("--metric robust"), std::string::npos) << l.description;
+  // Robust searches default to the table: every controller whole on the ±400 mm table top.
+  for (const auto& d : l.devices) {
+    EXPECT_LE(std::abs(d.pose.x_mm), 360);
+    EXPECT_LE(std::abs(d.pose.z_mm), 360);
+  }
+  const CliRun s = run_lmc(common + "--metric study -o " + lmc::test::shell_quote(study.string()), dir);
+  ASSERT_EQ(s.exit_code, 0) << s.err;
+  const auto js = nlohmann::json::parse(s.out);
+  EXPECT_EQ(js["metric"], "study");
+  EXPECT_EQ(js["robust_terms"]["M"], js["summary"]["metric"]);
+  EXPECT_EQ(lmc::load_layout(study).name, "optimized-study");
+  const CliRun bad = run_lmc(common + "--metric best -o " + lmc::test::shell_quote(study.string()), dir);
+  EXPECT_NE(bad.exit_code, 0);
+  EXPECT_NE(bad.err.find("--metric"), std::string::npos) << bad.err;
+}
+
 TEST(LmcOptimize, TextSummaryAndLocks) {
   const auto dir = lmc::test::scratch_dir("cli_optimize_text");
   const auto out = dir / "l.json";

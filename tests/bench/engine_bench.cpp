@@ -73,11 +73,13 @@ void BM_EnginePrepareFrame(benchmark::State& state) {
 }
 BENCHMARK(BM_EnginePrepareFrame);
 
-// The PSO's inner loop on one thread: 30 random layouts × 4 devices × 10,000 frames per iteration.
-void BM_EngineSwarmHistogramsRandomLayouts(benchmark::State& state) {
-  const auto& fr = frames();
+// 30 random layouts × 4 devices. Arg 0: the authors' box (most devices see nothing, so the kernel
+// exits early); arg 1: the table area x, z ∈ ±400 mm, rx ∈ ±45° (most devices see the hand,
+// where the robust metric's extra per-pair work happens).
+std::vector<lmc::DeviceView> random_swarm_views(int box) {
   std::mt19937_64 rng(3);
-  const lmc::SearchSpace space;
+  lmc::SearchSpace space;
+  if (box == 1) space = lmc::parse_search_bounds("x=-400:400,z=-400:400,rx=-45:45,ry=-180:180");
   std::vector<lmc::DeviceView> views;
   for (int i = 0; i < 30 * 4; ++i) {
     lmc::DevicePose p;
@@ -87,6 +89,13 @@ void BM_EngineSwarmHistogramsRandomLayouts(benchmark::State& state) {
     }
     views.push_back(lmc::DeviceView::from_pose(p));
   }
+  return views;
+}
+
+// The PSO's inner loop on one thread: 30 random layouts × 4 devices × 10,000 frames per iteration.
+void BM_EngineSwarmHistogramsRandomLayouts(benchmark::State& state) {
+  const auto& fr = frames();
+  const auto views = random_swarm_views(static_cast<int>(state.range(0)));
   const auto limits = lmc::make_limits({});
   std::vector<std::int64_t> counts(30 * 5);
   tbb::task_arena arena(1);
@@ -96,7 +105,23 @@ void BM_EngineSwarmHistogramsRandomLayouts(benchmark::State& state) {
   }
   state.SetItemsProcessed(state.iterations() * static_cast<int64_t>(views.size() * fr.size()));
 }
-BENCHMARK(BM_EngineSwarmHistogramsRandomLayouts)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_EngineSwarmHistogramsRandomLayouts)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond);
+
+// The same swarm through the robust metric's evaluator (issue #15: its extra terms may cost at
+// most 10 % over the histograms above).
+void BM_EngineSwarmTalliesRandomLayouts(benchmark::State& state) {
+  const auto& fr = frames();
+  const auto views = random_swarm_views(static_cast<int>(state.range(0)));
+  const auto limits = lmc::make_limits({});
+  std::vector<lmc::LayoutTally> tallies(30, lmc::LayoutTally(4));
+  tbb::task_arena arena(1);
+  for (auto _ : state) {
+    arena.execute([&] { lmc::layout_tallies(views, 30, 4, fr, limits, lmc::kAxisCutMm, tallies); });
+    benchmark::DoNotOptimize(tallies.data());
+  }
+  state.SetItemsProcessed(state.iterations() * static_cast<int64_t>(views.size() * fr.size()));
+}
+BENCHMARK(BM_EngineSwarmTalliesRandomLayouts)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond);
 
 void BM_EngineCoverageFromBits(benchmark::State& state) {
   const auto& fr = frames();

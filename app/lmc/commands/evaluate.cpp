@@ -9,7 +9,9 @@
 #include "core/io/pose_source.h"
 #include "core/io/layout_json.h"
 #include "core/metric/coverage.h"
+#include "core/metric/controller_contribution.h"
 #include "core/metric/coverage_report.h"
+#include "core/metric/robust_terms_report.h"
 #include "core/visibility/frame_prep.h"
 #include "core/visibility/visibility_kernel.h"
 
@@ -63,6 +65,21 @@ void setup_evaluate(CLI::App& app) {
     };
     const auto horizontal = split(horizontal_idx);
     const auto vertical = split(vertical_idx);
+    // The robust metric's terms and each controller's contribution (issue #15), same splits.
+    const lmc::RobustWeights weights;
+    std::vector<lmc::DeviceView> views;
+    for (const auto& d : layout.devices) views.push_back(lmc::DeviceView::from_device(d));
+    const auto limits = lmc::make_limits(lmc::VisibilityParams::from_sensor(layout.sensor, opt->radius_mm));
+    const double footprint = lmc::footprint_overlap_share(layout);
+    auto terms_of = [&](const std::vector<int>& idx, bool whole) {
+      if (!whole && idx.empty()) return lmc::RobustTerms{};
+      return lmc::robust_terms(lmc::tally_layout(views, prepared, limits, lmc::kAxisCutMm, idx), footprint, weights);
+    };
+    const lmc::LayoutTally all_tally = lmc::tally_layout(views, prepared, limits, lmc::kAxisCutMm);
+    const lmc::RobustTerms all_terms = lmc::robust_terms(all_tally, footprint, weights);
+    const lmc::RobustTerms horizontal_terms = terms_of(horizontal_idx, false);
+    const lmc::RobustTerms vertical_terms = terms_of(vertical_idx, false);
+    const auto contributions = lmc::controller_contributions(table, all_tally, slots);
     if (opt->json) {
       nlohmann::json j;
       j["layout"] = layout.name;
@@ -72,6 +89,21 @@ void setup_evaluate(CLI::App& app) {
       j["all"] = lmc::coverage_to_json(all, slots);
       j["horizontal"] = lmc::coverage_to_json(horizontal, slots);
       j["vertical"] = lmc::coverage_to_json(vertical, slots);
+      j["robust_terms"] = {{"all", lmc::robust_terms_to_json(all_terms, weights)},
+                           {"horizontal", lmc::robust_terms_to_json(horizontal_terms, weights)},
+                           {"vertical", lmc::robust_terms_to_json(vertical_terms, weights)}};
+      nlohmann::json cj = nlohmann::json::array();
+      for (const auto& c : contributions) {
+        cj.push_back({{"slot", c.slot},
+                      {"seeing_share", c.seeing_share},
+                      {"sole_share", c.sole_share},
+                      {"axis_cut_share", c.cut_share},
+                      {"off_centre", c.off_centre},
+                      {"metric_without", c.metric_without},
+                      {"redundant_share_without", c.redundant_without},
+                      {"counts", c.counts}});
+      }
+      j["controllers"] = cj;
       j["seconds"] = seconds;
       std::cout << j.dump(2) << "\n";
       return;
@@ -82,6 +114,18 @@ void setup_evaluate(CLI::App& app) {
     std::cout << "all frames:\n" << lmc::format_coverage(all, slots);
     std::cout << "horizontal poses:\n" << lmc::format_coverage(horizontal, slots);
     std::cout << "vertical poses:\n" << lmc::format_coverage(vertical, slots);
+    std::cout << lmc::format_robust_terms_split({"all", "horizontal", "vertical"},
+                                                {all_terms, horizontal_terms, vertical_terms}, weights);
+    std::printf("what each controller contributes (all frames; M %.6f, every finger seen by >= 2 in %.1f %%):\n",
+                all.metric, 100.0 * lmc::redundant_share(all.c));
+    std::printf("  %-6s %8s %8s %9s %10s %11s %13s  %s\n", "slot", "seeing", "sole", "axis cut", "off-centre",
+                "M without", ">=2 without", "counts");
+    for (const auto& c : contributions) {
+      std::printf("  %-6s %7.1f%% %7.1f%% %8.1f%% %10.3f %11.6f %12.1f%%  %s\n", c.slot.c_str(), 100 * c.seeing_share,
+                  100 * c.sole_share, 100 * c.cut_share, c.off_centre, c.metric_without, 100 * c.redundant_without,
+                  c.counts ? "yes" : "NO: the layout is as good without it");
+    }
+    std::fflush(stdout);
     const double evals = static_cast<double>(table.devices) * static_cast<double>(table.frames);
     std::cout << "time " << seconds << " s (" << (seconds > 0 ? evals / seconds : 0.0)
               << " device-frame evaluations/s incl. frame preparation)\n";

@@ -14,6 +14,8 @@
 #include "core/io/pose_source.h"
 #include "core/io/layout_json.h"
 #include "core/metric/coverage_report.h"
+#include "core/metric/robust_terms_report.h"
+#include "core/optimise/multi_start.h"
 #include "core/optimise/pso.h"
 #include "core/visibility/frame_prep.h"
 
@@ -38,6 +40,9 @@ struct OptimizeOptions {
   std::string output;
   bool json = false;
   bool no_progress = false;
+  std::string metric = "robust";
+  int starts = 1;
+  lmc::RobustWeights weights;
 };
 
 void apply_lock(lmc::SearchSpace& space, const lmc::Layout& layout, const std::string& spec) {
@@ -80,13 +85,30 @@ void setup_optimize(CLI::App& app) {
       ->check(CLI::NonNegativeNumber);
   app.add_option("--bounds", opt->bounds,
                  "Searched parameters and bounds, e.g. x=-400:400,z=-400:400,rx=-45:45,ry=-180:180 "
-                 "(default: the authors' box x,z ∈ [-1000,1000], rx ∈ [-90,90], ry ∈ [-180,180])");
+                 "(default with --metric study: the authors' box x,z ∈ [-1000,1000], rx ∈ [-90,90], ry ∈ [-180,180]; "
+                 "with --metric robust: the table, x,z ∈ [-360,360])");
   app.add_option("--range-mm", opt->range_mm, "Sensor range (mm); default: the --start layout's, else 600 as in the study")
       ->check(CLI::PositiveNumber);
   app.add_option("--radius-mm", opt->radius_mm, "Phalanx radius (mm)")->check(CLI::NonNegativeNumber);
   app.add_option("--start", opt->start, "Start from this layout (file or preset); its devices are searched");
   app.add_option("--lock", opt->locks, "Keep a device (SLOT) or some of its parameters (SLOT:x+rz) at the start value");
   app.add_option("-o,--output", opt->output, "Write the best layout here (JSON)")->required();
+  app.add_option("--metric", opt->metric,
+                 "study: the study's M alone (the reference); robust: M, then the tie-breakers of "
+                 "core/metric/robust_metric.h (default)")
+      ->check(CLI::IsMember({"study", "robust"}));
+  app.add_option("--starts", opt->starts, "Independent swarms (seeds --pso-seed, +1, ...); the best wins")
+      ->check(CLI::Range(1, 64));
+  app.add_option("--w-redundancy", opt->weights.redundancy, "Robust metric: weight of the redundancy term (0 = off)")
+      ->check(CLI::NonNegativeNumber);
+  app.add_option("--w-participation", opt->weights.participation, "Robust metric: weight of the participation term")
+      ->check(CLI::NonNegativeNumber);
+  app.add_option("--w-axis-cut", opt->weights.axis_cut, "Robust metric: weight of the axis-cut term")
+      ->check(CLI::NonNegativeNumber);
+  app.add_option("--w-centring", opt->weights.centring, "Robust metric: weight of the centring term")
+      ->check(CLI::NonNegativeNumber);
+  app.add_option("--w-footprint", opt->weights.footprint, "Robust metric: weight of the footprint-overlap term")
+      ->check(CLI::NonNegativeNumber);
   app.add_flag("--json", opt->json, "Print the summary as JSON on stdout");
   app.add_flag("--no-progress", opt->no_progress, "No progress bar on stderr");
   app.callback([opt] {
@@ -102,7 +124,10 @@ void setup_optimize(CLI::App& app) {
     } else if (!from_layout) {
       start.sensor.range_mm = 600.0;
     }
-    lmc::SearchSpace space = opt->bounds.empty() ? lmc::SearchSpace{} : lmc::parse_search_bounds(opt->bounds);
+    // The study's metric searches the authors' box (the reference); the robust one the table.
+    const lmc::SearchSpace default_space =
+        opt->metric == "study" ? lmc::SearchSpace{} : lmc::table_search_space();
+    lmc::SearchSpace space = opt->bounds.empty() ? default_space : lmc::parse_search_bounds(opt->bounds);
     for (const auto& l : opt->locks) apply_lock(space, start, l);
     if (!from_layout && !opt->locks.empty()) throw lmc::Error("--lock needs --start");
 
@@ -120,37 +145,65 @@ void setup_optimize(CLI::App& app) {
     s.threads = opt->threads;
     s.start_from_layout = from_layout;
     s.phalanx_radius_mm = opt->radius_mm;
+    s.metric = lmc::placement_metric_from_name(opt->metric, "--metric");
+    s.weights = opt->weights;
+    const char* cost_name = s.metric == lmc::PlacementMetricKind::kStudy ? "M" : "R";
 
     const bool bar = !opt->no_progress && isatty(STDERR_FILENO) != 0;
-    auto progress = [bar](const lmc::PsoProgress& p) {
+    auto progress = [bar, cost_name](const lmc::MultiStartProgress& m) {
       if (!bar) return;
+      const lmc::PsoProgress& p = m.pso;
       const int width = 30;
       const int filled = p.iterations > 0 ? p.iteration * width / p.iterations : width;
-      std::fprintf(stderr, "\r[%s%s] %d/%d  best M %.6g  %lld evaluations", std::string(static_cast<size_t>(filled), '#').c_str(),
-                   std::string(static_cast<size_t>(width - filled), ' ').c_str(), p.iteration, p.iterations, p.best_cost,
-                   static_cast<long long>(p.device_frame_evaluations));
+      std::fprintf(stderr, "\rstart %d/%d [%s%s] %d/%d  best %s %.6g  %lld evaluations", m.start + 1, m.starts,
+                   std::string(static_cast<size_t>(filled), '#').c_str(),
+                   std::string(static_cast<size_t>(width - filled), ' ').c_str(), p.iteration, p.iterations, cost_name,
+                   p.best_cost, static_cast<long long>(p.device_frame_evaluations));
       if (p.iteration == p.iterations) std::fprintf(stderr, "\n");
       std::fflush(stderr);
     };
-    const lmc::PsoResult r = lmc::run_pso(start, space, prepared, s, progress);
+    const lmc::MultiStartResult multi = lmc::run_multi_start(start, space, prepared, s, opt->starts, progress);
+    const lmc::PsoResult& r = multi.runs.at(static_cast<size_t>(multi.best));
     lmc::Layout best = r.best_layout;
-    best.name = "optimized";
-    best.description = "lmc optimize: " + std::to_string(s.particles) + " particles × " + std::to_string(s.iterations) +
-                       " iterations on " + poses.description + ", M = " + std::to_string(r.best_cost);
+    // A searched layout says what made it (issue #15): not the start's name and description.
+    best.name = "optimized-" + opt->metric;
+    best.description = "lmc optimize --metric " + opt->metric + ": " + std::to_string(opt->starts) + " start(s) of " +
+                       std::to_string(s.particles) + " particles × " + std::to_string(s.iterations) +
+                       " iterations (seed " + std::to_string(multi.seeds.at(static_cast<size_t>(multi.best))) + ") on " +
+                       poses.description + ", " + cost_name + " = " + std::to_string(r.best_cost);
     lmc::save_layout(best, opt->output);
+    double seconds = 0;
+    std::int64_t layout_evaluations = 0, device_frame_evaluations = 0;
+    for (const auto& run : multi.runs) {
+      seconds += run.seconds;
+      layout_evaluations += run.layout_evaluations;
+      device_frame_evaluations += run.device_frame_evaluations;
+    }
 
     std::vector<std::string> slots;
     for (const auto& d : best.devices) slots.push_back(d.slot);
-    const double rate = r.seconds > 0 ? static_cast<double>(r.device_frame_evaluations) / r.seconds : 0.0;
+    const double rate = seconds > 0 ? static_cast<double>(device_frame_evaluations) / seconds : 0.0;
     if (opt->json) {
       nlohmann::json j;
       j["status"] = r.status == lmc::JobStatus::kCompleted ? "completed" : "cancelled";
+      j["metric"] = opt->metric;
       j["layout"] = lmc::layout_to_json(best);
       j["summary"] = lmc::coverage_to_json(r.best_coverage, slots);
+      j["robust_terms"] = lmc::robust_terms_to_json(r.best_terms, s.weights);
       j["best_cost_history"] = r.best_cost_history;
-      j["seconds"] = r.seconds;
-      j["layout_evaluations"] = r.layout_evaluations;
-      j["device_frame_evaluations"] = r.device_frame_evaluations;
+      nlohmann::json starts = nlohmann::json::array();
+      for (size_t k = 0; k < multi.runs.size(); ++k) {
+        starts.push_back({{"seed", multi.seeds[k]},
+                          {"best_cost", multi.runs[k].best_cost},
+                          {"best_cost_history", multi.runs[k].best_cost_history},
+                          {"layout", lmc::layout_to_json(multi.runs[k].best_layout)}});
+      }
+      j["starts"] = starts;
+      j["best_start"] = multi.best;
+      j["runners_up"] = multi.runners_up;
+      j["seconds"] = seconds;
+      j["layout_evaluations"] = layout_evaluations;
+      j["device_frame_evaluations"] = device_frame_evaluations;
       j["device_frame_evaluations_per_second"] = rate;
       std::cout << j.dump(2) << "\n";
       return;
@@ -162,8 +215,19 @@ void setup_optimize(CLI::App& app) {
     }
     std::fflush(stdout);
     std::cout << "on " << poses.description << ":\n" << lmc::format_coverage(r.best_coverage, slots);
-    std::cout << "time " << r.seconds << " s, " << r.layout_evaluations << " layout evaluations, "
-              << r.device_frame_evaluations << " device-frame evaluations (" << rate << " per second)\n";
+    std::cout << lmc::format_robust_terms(r.best_terms, s.weights);
+    if (multi.runs.size() > 1) {
+      std::cout << "starts (best first):\n";
+      std::printf("  seed %llu  %s %.6g  (best)\n", static_cast<unsigned long long>(multi.seeds[static_cast<size_t>(multi.best)]),
+                  cost_name, r.best_cost);
+      for (const int k : multi.runners_up) {
+        std::printf("  seed %llu  %s %.6g  (a different layout)\n",
+                    static_cast<unsigned long long>(multi.seeds[static_cast<size_t>(k)]), cost_name,
+                    multi.runs[static_cast<size_t>(k)].best_cost);
+      }
+    }
+    std::cout << "time " << seconds << " s, " << layout_evaluations << " layout evaluations, " << device_frame_evaluations
+              << " device-frame evaluations (" << rate << " per second)\n";
   });
 }
 

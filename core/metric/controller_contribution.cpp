@@ -1,0 +1,61 @@
+#include "core/metric/controller_contribution.h"
+
+#include "core/metric/coverage.h"
+#include "core/metric/placement_metric.h"
+
+namespace lmc {
+namespace {
+
+double contribution_share(std::int64_t part, std::int64_t whole) {
+  return whole > 0 ? static_cast<double>(part) / static_cast<double>(whole) : 0.0;
+}
+
+}  // namespace
+
+double redundant_share(std::span<const std::int64_t> c) {
+  std::int64_t all = 0, redundant = 0;
+  for (size_t i = 0; i < c.size(); ++i) {
+    all += c[i];
+    if (i >= 2) redundant += c[i];
+  }
+  return contribution_share(redundant, all);
+}
+
+std::vector<ControllerContribution> controller_contributions(const VisibilityTable& table, const LayoutTally& tally,
+                                                             const std::vector<std::string>& slots,
+                                                             std::span<const int> subset) {
+  std::vector<ControllerContribution> out;
+  const Coverage all = compute_coverage(table, subset);
+  const double m_all = all.metric;
+  const double s2_all = redundant_share(all.c);
+  for (int d = 0; d < table.devices; ++d) {
+    const auto dd = static_cast<size_t>(d);
+    ControllerContribution c;
+    c.slot = dd < slots.size() ? slots[dd] : "device " + std::to_string(d + 1);
+    c.seeing_share = contribution_share(tally.device_seeing_frames[dd], tally.frames);
+    c.sole_share = contribution_share(tally.device_sole_frames[dd], tally.frames);
+    c.cut_share = contribution_share(tally.device_cut_frames[dd], tally.device_seeing_frames[dd]);
+    c.off_centre = tally.device_seeing_frames[dd] > 0
+                       ? static_cast<double>(tally.device_off_centre[dd]) / kOffCentreScale /
+                             static_cast<double>(tally.device_seeing_frames[dd])
+                       : 1.0;
+    if (table.devices > 1) {
+      std::vector<std::span<const FingerBits>> cols;
+      for (int e = 0; e < table.devices; ++e) {
+        if (e != d) cols.push_back(table.device_column(e));
+      }
+      const Coverage without = compute_coverage(std::span<const std::span<const FingerBits>>(cols), subset);
+      c.metric_without = without.metric;
+      c.redundant_without = redundant_share(without.c);
+    } else {
+      // Without its only controller nothing is seen: every frame has an unseen finger.
+      c.metric_without = tally.frames > 0 ? 1.0 : 0.0;
+      c.redundant_without = 0.0;
+    }
+    c.counts = c.metric_without > m_all || c.redundant_without < s2_all;
+    out.push_back(c);
+  }
+  return out;
+}
+
+}  // namespace lmc

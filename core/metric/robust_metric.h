@@ -1,0 +1,64 @@
+#pragma once
+// The robust placement metric (issue #15): the study's M first, then tie-breakers with explicit
+// weights that make every controller count. Lower is better, like M:
+//
+//   R = M + w_redundancy · (1 − S2)            S2: share of frames in which every finger is seen by ≥ 2 controllers
+//         + w_participation · P                P: mean over controllers of max(0, 0.2 − s_d)/0.2, s_d the share of
+//                                                 frames in which controller d sees at least one finger
+//         + w_axis_cut · A                     A: share of seeing (controller, frame) pairs with a seen marker
+//                                                 beyond ±250 mm on an axis of that controller (the paper's axis cut)
+//         + w_centring · C                     C: mean off-centre of the palm in the seeing controllers' pyramids
+//                                                 (0 on the viewing axis, 1 on the edge; layout_tally.h)
+//         + w_footprint · F                    F: share of controller pairs whose footprints (80 × 30 mm boxes
+//                                                 projected on the table) overlap
+//
+// Each term is switched off by a weight of 0; with every weight 0, R = M exactly. Why these
+// weights: participation and footprint are near-constraints (a parked or overlapping controller
+// costs more than any M). Redundancy and centring are tie-breakers: one frame in a hundred with an
+// unseen finger adds 0.01 to M, as much as redundancy changes when S2 moves by 20 percentage points.
+// The axis cut trades against M: on the 10,000-frame Monte Carlo set no layout with a useful M
+// keeps every seen marker within 250 mm (even paper-initial, M 0.52, has 5.7 % of seeing pairs
+// beyond it), so its weight sets how much M a lab gives for fewer cut coordinates.
+#include <string>
+#include <vector>
+
+#include "core/layout/layout.h"
+#include "core/metric/layout_tally.h"
+
+namespace lmc {
+
+enum class PlacementMetricKind : int { kStudy = 0, kRobust = 1 };
+const char* placement_metric_name(PlacementMetricKind kind);  // "study", "robust"
+// Parses "study" / "robust"; throws lmc::Error naming `what` otherwise.
+PlacementMetricKind placement_metric_from_name(const std::string& name, const std::string& what);
+
+struct RobustWeights {
+  double redundancy = 0.05;
+  double participation = 1.0;  // a parked controller costs 0.25 (with four): more than any M
+  double axis_cut = 0.2;
+  double centring = 0.01;
+  double footprint = 1.0;      // overlapping controllers cannot be built: nearly a constraint
+  double participation_floor = 0.2;  // a controller should see some finger in at least this share of frames
+  bool operator==(const RobustWeights&) const = default;
+};
+
+// The raw value of each term and the total.
+struct RobustTerms {
+  double metric_m = 0;        // the study's M
+  double redundancy = 0;      // 1 − S2
+  double participation = 0;   // P
+  double axis_cut = 0;        // A
+  double centring = 0;        // C
+  double footprint = 0;       // F
+  double total = 0;           // R
+};
+
+// Footprint corners on the table (world x, z) of one device: its 80 × 30 mm top face.
+inline constexpr double kControllerLengthMm = 80.0;
+inline constexpr double kControllerWidthMm = 30.0;
+bool footprints_overlap(const LayoutDevice& a, const LayoutDevice& b);
+double footprint_overlap_share(const Layout& layout);
+
+RobustTerms robust_terms(const LayoutTally& tally, double footprint_share, const RobustWeights& weights);
+
+}  // namespace lmc

@@ -1,0 +1,150 @@
+#include "core/metric/robust_metric.h"
+
+#include <gtest/gtest.h>
+#include <tbb/global_control.h>
+
+#include "core/hand/pose_set_generator.h"
+#include "core/layout/layout.h"
+#include "core/metric/controller_contribution.h"
+#include "core/metric/coverage.h"
+#include "core/metric/layout_tally.h"
+#include "core/metric/placement_metric.h"
+#include "core/optimise/search_space.h"
+#include "core/visibility/visibility_kernel.h"
+
+namespace lmc {
+namespace robust_metric_test {
+
+const std::vector<PreparedFrame>& robust_frames() {
+  static const std::vector<PreparedFrame> f = [] {
+    PoseSetSettings s;
+    s.frames = 200;
+    s.seed = 5;
+    return prepare_frames(generate_pose_set(HandModel(), s).frames);
+  }();
+  return f;
+}
+
+std::vector<DeviceView> views_of(const Layout& l) {
+  std::vector<DeviceView> v;
+  for (const auto& d : l.devices) v.push_back(DeviceView::from_device(d));
+  return v;
+}
+
+LayoutTally tally_of(const Layout& l) {
+  return tally_layout(views_of(l), robust_frames(), make_limits(VisibilityParams::from_sensor(l.sensor)));
+}
+
+TEST(RobustMetric, WithEveryWeightZeroItIsTheStudysMetricExactly) {
+  const Layout l = default_start_layout(4);
+  const LayoutTally t = tally_of(l);
+  const Coverage cov = compute_coverage(compute_visibility(l, robust_frames()));
+  EXPECT_EQ(t.c, cov.c);
+  EXPECT_EQ(t.frames, 200);
+  const RobustWeights zero{0, 0, 0, 0, 0, 0.2};
+  const RobustTerms r = robust_terms(t, footprint_overlap_share(l), zero);
+  EXPECT_EQ(r.total, placement_metric(cov.c));
+  EXPECT_EQ(r.metric_m, cov.metric);
+}
+
+TEST(RobustMetric, TheTallyIsTheSameOnOneOrTwoThreads) {
+  Layout l = default_start_layout(4);
+  l.devices[3].pose.x_mm = 230;  // some seen markers beyond the cut
+  l.devices[1].pose.rx_deg = 25;
+  LayoutTally one, two;
+  {
+    tbb::global_control c(tbb::global_control::max_allowed_parallelism, 1);
+    one = tally_of(l);
+  }
+  {
+    tbb::global_control c(tbb::global_control::max_allowed_parallelism, 2);
+    two = tally_of(l);
+  }
+  EXPECT_EQ(one.c, two.c);
+  EXPECT_EQ(one.device_seeing_frames, two.device_seeing_frames);
+  EXPECT_EQ(one.device_sole_frames, two.device_sole_frames);
+  EXPECT_EQ(one.device_cut_frames, two.device_cut_frames);
+  EXPECT_EQ(one.device_off_centre, two.device_off_centre);
+  EXPECT_GT(one.cut_pairs(), 0);
+}
+
+TEST(RobustMetric, AParkedControllerCostsAQuarterOfParticipationAndDoesNotCount) {
+  Layout l = default_start_layout(4);
+  l.devices[0].pose.x_mm = 5000;  // far off the table: sees nothing
+  const LayoutTally t = tally_of(l);
+  EXPECT_EQ(t.device_seeing_frames[0], 0);
+  const RobustTerms r = robust_terms(t, footprint_overlap_share(l), RobustWeights{});
+  EXPECT_DOUBLE_EQ(r.participation, 0.25);
+  const auto contributions =
+      controller_contributions(compute_visibility(l, robust_frames()), t, {"LMC1", "LMC2", "LMC3", "LMC4"});
+  ASSERT_EQ(contributions.size(), 4u);
+  EXPECT_FALSE(contributions[0].counts);
+  EXPECT_EQ(contributions[0].seeing_share, 0.0);
+  EXPECT_EQ(contributions[0].off_centre, 1.0);
+  for (size_t d = 1; d < 4; ++d) EXPECT_TRUE(contributions[d].counts) << contributions[d].slot;
+}
+
+TEST(RobustMetric, SeenMarkersBeyondTheAxisCutCountOnlyForSeenFingers) {
+  PreparedFrame f;
+  for (int k = 0; k < kNumRayMarkers; ++k) {
+    f.mx[static_cast<size_t>(k)] = 0;
+    f.my[static_cast<size_t>(k)] = 100;
+    f.mz[static_cast<size_t>(k)] = 0;
+  }
+  const auto tip = static_cast<size_t>(finger_marker(1, 3));  // index fingertip
+  f.mx[tip] = 300;
+  const DeviceView at_origin = DeviceView::identity();
+  EXPECT_TRUE(seen_marker_beyond_cut(f, at_origin, 0b00010, kAxisCutMm));   // index seen
+  EXPECT_FALSE(seen_marker_beyond_cut(f, at_origin, 0b00001, kAxisCutMm));  // thumb only
+  EXPECT_FALSE(seen_marker_beyond_cut(f, at_origin, 0b00010, 400.0));
+  // 300 mm along the world x is 300 mm along the device's z once the device is turned by 90°
+  // about y: still beyond the cut.
+  DevicePose turned;
+  turned.ry_deg = 90;
+  EXPECT_TRUE(seen_marker_beyond_cut(f, DeviceView::from_pose(turned), 0b00010, kAxisCutMm));
+}
+
+TEST(RobustMetric, OffCentreIsZeroOnTheAxisAndHalfInTheMiddleOfASide) {
+  PreparedFrame f;
+  const VisibilityLimits lim = make_limits(VisibilityParams{});
+  f.cx = 0, f.cy = 150, f.cz = 0;
+  EXPECT_DOUBLE_EQ(off_centre_penalty(f, DeviceView::identity(), lim), 0.0);
+  f.cx = 150 * lim.tan_half_long;  // on the side plane along x
+  EXPECT_NEAR(off_centre_penalty(f, DeviceView::identity(), lim), 0.5, 1e-12);
+  f.cz = 150 * lim.tan_half_short;  // the edge
+  EXPECT_NEAR(off_centre_penalty(f, DeviceView::identity(), lim), 1.0, 1e-12);
+  f.cy = -10;  // below the controller
+  EXPECT_EQ(off_centre_penalty(f, DeviceView::identity(), lim), 1.0);
+}
+
+TEST(RobustMetric, FootprintsOverlapWhenTheBoxesOnTheTableDo) {
+  Layout l = default_start_layout(2);
+  l.devices[0].pose = {};
+  l.devices[1].pose = {};
+  EXPECT_TRUE(footprints_overlap(l.devices[0], l.devices[1]));
+  l.devices[1].pose.x_mm = 56;  // 80 mm long: ends at 40 and starts at 16
+  EXPECT_TRUE(footprints_overlap(l.devices[0], l.devices[1]));
+  l.devices[1].pose.ry_deg = 90;  // now 30 mm wide along x: 41…71
+  EXPECT_FALSE(footprints_overlap(l.devices[0], l.devices[1]));
+  l.devices[1].pose = {};
+  l.devices[1].pose.z_mm = 31;  // 30 mm deep: apart by a millimetre
+  EXPECT_FALSE(footprints_overlap(l.devices[0], l.devices[1]));
+  EXPECT_EQ(footprint_overlap_share(l), 0.0);
+  l.devices[1].offset_mm = {0, 0, -10};  // the calibration offset moves the real controller
+  EXPECT_TRUE(footprints_overlap(l.devices[0], l.devices[1]));
+  EXPECT_EQ(footprint_overlap_share(l), 1.0);
+}
+
+TEST(RobustMetric, MetricNamesParseAndUnknownOnesAreNamed) {
+  EXPECT_EQ(placement_metric_from_name("study", "--metric"), PlacementMetricKind::kStudy);
+  EXPECT_EQ(placement_metric_from_name("robust", "--metric"), PlacementMetricKind::kRobust);
+  try {
+    placement_metric_from_name("best", "--metric");
+    FAIL();
+  } catch (const std::exception& e) {
+    EXPECT_NE(std::string(e.what()).find("--metric: unknown metric \"best\""), std::string::npos) << e.what();
+  }
+}
+
+}  // namespace robust_metric_test
+}  // namespace lmc
