@@ -27,8 +27,11 @@ struct ParamRange {
 // Search box per pose parameter, shared by all devices. Defaults: the study's box
 // (reference-algorithms.md §5): x, z ∈ [−1000, 1000] mm, rx ∈ [−90, 90]°, ry ∈ [−180, 180]°;
 // y and rz are locked by default (the paper searched {x, z, rx, ry}).
+// Default: the table drawn in the scene (core's table_search_space: every controller whole on the
+// ±400 mm table top), not the authors' ±1000 mm box, which let the search park a controller off
+// the table (issue #15).
 struct SearchBounds {
-  std::array<ParamRange, kNumPoseParams> range{ParamRange{-1000, 1000}, ParamRange{0, 300}, ParamRange{-1000, 1000},
+  std::array<ParamRange, kNumPoseParams> range{ParamRange{-360, 360}, ParamRange{0, 300}, ParamRange{-360, 360},
                                                ParamRange{-90, 90},     ParamRange{-180, 180}, ParamRange{-180, 180}};
   bool operator==(const SearchBounds&) const = default;
 };

@@ -15,6 +15,8 @@ LayoutTabState::LayoutTabState(LayoutDocument initial, StatusFn status)
   saved_head_id_ = document_.head_id();
   // Leave one core to the UI thread; the result does not depend on the thread count.
   pso.threads = std::max(1, static_cast<int>(std::thread::hardware_concurrency()) - 1);
+  // The Optimiser panel searches with the robust metric unless the user picks the study's (issue #15).
+  pso.metric = PlacementMetricKind::kRobust;
 }
 
 bool LayoutTabState::report(const ActionResult& r, const std::string& what) {

@@ -72,6 +72,16 @@ void OptimiserPanel::draw_pose_set() {
 void OptimiserPanel::draw_settings() {
   LayoutTabState& s = *state_;
   PsoSettings& p = s.pso;
+  int metric = static_cast<int>(p.metric);
+  ImGui::SetNextItemWidth(220);
+  if (ImGui::Combo("metric", &metric, "study: M only (the reference)\0robust: M, then every controller counts\0")) {
+    p.metric = static_cast<PlacementMetricKind>(metric);
+  }
+  if (ImGui::IsItemHovered()) {
+    ImGui::SetTooltip("robust = M + tie-breakers: redundancy (fingers seen by 2+ controllers), participation\n"
+                      "(each controller sees a finger in 20 %% of frames), axis cut (seen markers within 250 mm),\n"
+                      "centring, footprints that do not overlap. lmc evaluate prints every term.");
+  }
   ImGui::SetNextItemWidth(100);
   ImGui::InputInt("particles", &p.particles);
   p.particles = std::clamp(p.particles, 2, 1000);
@@ -93,7 +103,7 @@ void OptimiserPanel::draw_settings() {
   ImGui::Checkbox("start from the current layout", &p.start_from_layout);
   if (ImGui::Button("Study defaults")) {
     const int threads = p.threads;
-    p = PsoSettings{};
+    p = PsoSettings{};  // the study's metric and swarm settings
     p.threads = threads;
   }
   if (ImGui::IsItemHovered()) ImGui::SetTooltip("30 particles, 100 iterations, w 0.9, c1 0.5, c2 0.3 (reference-algorithms.md §5)");
@@ -164,15 +174,15 @@ void OptimiserPanel::draw_run() {
     o.log_y = true;
     o.height_px = 110;
     o.x_extent = job.iterations_planned() + 1;
-    ImGui::TextDisabled("Best cost M per iteration");
+    ImGui::TextDisabled("Best cost %s per iteration", s.pso.metric == PlacementMetricKind::kStudy ? "M" : "R (robust)");
     draw_line_plot("convergence", job.history(), o);
   }
   const auto outcome = job.outcome();
   if (!outcome) return;
   const PsoResult& r = outcome->pso;
-  ImGui::Text("%s: best M = %.4g after %d iterations (%.1f s)",
-              r.status == lmc::JobStatus::kCancelled ? "Cancelled, best so far" : "Done", r.best_cost, r.iterations_done,
-              r.seconds);
+  ImGui::Text("%s: best %s = %.4g after %d iterations (%.1f s)",
+              r.status == lmc::JobStatus::kCancelled ? "Cancelled, best so far" : "Done",
+              s.pso.metric == PlacementMetricKind::kStudy ? "M" : "R", r.best_cost, r.iterations_done, r.seconds);
   ImGui::Checkbox("Show as ghost controllers", &s.display.show_ghost);
   if (ImGui::Button("Apply", ImVec2(100, 0))) s.apply_optimised();
   anchors_.remember("apply");
