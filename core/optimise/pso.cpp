@@ -82,6 +82,7 @@ PsoResult run_pso(const Layout& start, const SearchSpace& space, std::span<const
   std::vector<double> cost(np);
   PsoResult result;
   result.status = JobStatus::kCompleted;
+  result.metric = s.metric;
 
   // Evaluates the whole swarm; false when cancelled.
   auto evaluate = [&]() {

@@ -63,7 +63,8 @@ using PsoProgressCallback = std::function<void(const PsoProgress&)>;
 struct PsoResult {
   JobStatus status = JobStatus::kCompleted;
   Layout best_layout;
-  double best_cost = 0;
+  double best_cost = 0;              // M or R, as `metric` says
+  PlacementMetricKind metric = PlacementMetricKind::kStudy;
   Coverage best_coverage;            // of best_layout on the pose set
   RobustTerms best_terms;            // every term of the robust metric for best_layout (also after a study search)
   std::vector<double> best_cost_history;  // best cost after the initial swarm and each iteration

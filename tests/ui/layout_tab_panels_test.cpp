@@ -225,7 +225,9 @@ TEST_F(OptimiserFixture, ApplyReplacesTheLayoutInOneUndoableStep) {
   ASSERT_EQ(state->optimiser.state(), JobState::kCompleted) << state->optimiser.error();
   ASSERT_TRUE(state->optimiser.outcome());
   EXPECT_FALSE(state->optimiser.history().empty()) << "the convergence plot has data";
-  EXPECT_EQ(status.last.rfind("Optimiser finished: best M = ", 0), 0u) << status.last;
+  // The panel searches with the robust metric by default and says so.
+  EXPECT_EQ(status.last.rfind("Optimiser finished: best R = ", 0), 0u) << status.last;
+  EXPECT_EQ(state->optimiser.outcome()->pso.metric, PlacementMetricKind::kRobust);
   const Layout candidate = state->optimiser.outcome()->pso.best_layout;
   click("apply");
   EXPECT_EQ(state->history().undo_size(), commits + 1);
@@ -233,6 +235,8 @@ TEST_F(OptimiserFixture, ApplyReplacesTheLayoutInOneUndoableStep) {
   for (size_t i = 0; i < candidate.devices.size(); ++i) {
     EXPECT_EQ(state->history().head().layout.devices[i].pose, candidate.devices[i].pose);
   }
+  EXPECT_EQ(state->history().head().layout.name, "optimized-robust");
+  EXPECT_NE(state->history().head().layout.description.find("robust metric"), std::string::npos);
   EXPECT_FALSE(state->optimiser.outcome()) << "applied candidates are not offered again";
   state->undo();
   EXPECT_EQ(state->history().head(), before);

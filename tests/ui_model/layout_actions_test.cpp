@@ -113,8 +113,13 @@ TEST(LayoutActions, ApplyLayoutMatchesBySlotAndIsOneUndoStep) {
   optimised.devices[3].pose.x_mm = 178.88;
   optimised.devices[3].pose.ry_deg = 12.38;
   std::swap(optimised.devices[0], optimised.devices[3]);  // order must not matter
+  optimised.name = "optimized-robust";
+  optimised.description = "Optimiser panel, robust metric: 30 particles x 100 iterations";
   ASSERT_TRUE(apply_layout(doc, optimised));
   EXPECT_DOUBLE_EQ(doc.head().layout.devices[3].pose.x_mm, 178.88);
+  // The applied layout says what made it (issue #15), not the start's name.
+  EXPECT_EQ(doc.head().layout.name, "optimized-robust");
+  EXPECT_EQ(doc.head().layout.description, optimised.description);
   EXPECT_EQ(doc.head().layout.devices[3].slot, "LMC4");
   EXPECT_EQ(doc.undo_size(), 1u);
   EXPECT_EQ(doc.undo_message(), "Apply optimised layout");

@@ -235,6 +235,11 @@ ActionResult copy_placements_by_slot(UndoableLayoutDocument& doc, const Layout& 
 
 ActionResult apply_layout(UndoableLayoutDocument& doc, const Layout& optimised) {
   if (ActionResult r = copy_placements_by_slot(doc, optimised, false, "optimised"); !r.ok) return r;
+  // A searched layout carries what made it (the optimiser job names it); keep the old name and
+  // description only when the candidate has none.
+  LayoutDocument& d = doc.upd_scratch();
+  if (!optimised.name.empty()) d.layout.name = optimised.name;
+  if (!optimised.description.empty()) d.layout.description = optimised.description;
   return commit_checked(doc, "Apply optimised layout");
 }
 

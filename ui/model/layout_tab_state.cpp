@@ -233,9 +233,15 @@ void LayoutTabState::report_optimiser_end() {
     set_status(now == JobState::kCancelled ? "Optimiser cancelled before its first iteration" : "Optimiser finished");
     return;
   }
-  char buf[160];
-  std::snprintf(buf, sizeof buf, "Optimiser %s: best M = %.4g; Apply or Discard it in the Optimiser panel",
-                now == JobState::kCancelled ? "cancelled" : "finished", outcome->pso.best_cost);
+  char buf[200];
+  const PsoResult& r = outcome->pso;
+  if (r.metric == PlacementMetricKind::kStudy) {
+    std::snprintf(buf, sizeof buf, "Optimiser %s: best M = %.4g; Apply or Discard it in the Optimiser panel",
+                  now == JobState::kCancelled ? "cancelled" : "finished", r.best_cost);
+  } else {
+    std::snprintf(buf, sizeof buf, "Optimiser %s: best R = %.4g (M %.4g); Apply or Discard it in the Optimiser panel",
+                  now == JobState::kCancelled ? "cancelled" : "finished", r.best_cost, r.best_terms.metric_m);
+  }
   set_status(buf);
 }
 

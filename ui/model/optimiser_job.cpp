@@ -62,6 +62,15 @@ bool OptimiserJob::start(const LayoutDocument& doc, const PoseSetPtr& poses, con
           ch.set_progress(p.iteration + 1, p.iterations + 1);
         },
         stop);
+    // The candidate says what made it, so a saved result is not mistaken for the layout it
+    // started from (issue #15: "paper-optimized" stayed in the file after Apply and Save).
+    const char* metric = placement_metric_name(settings.metric);
+    out.pso.best_layout.name = std::string("optimized-") + metric;
+    out.pso.best_layout.description = std::string("Optimiser panel, ") + metric + " metric: " +
+                                      std::to_string(settings.particles) + " particles x " +
+                                      std::to_string(settings.iterations) + " iterations, swarm seed " +
+                                      std::to_string(settings.seed) + ", on " + poses->set.description +
+                                      ", from " + layout.name + "; cost " + std::to_string(out.pso.best_cost);
     ch.set_stage("Evaluating the candidate");
     out.candidate = evaluate_layout(out.pso.best_layout, *poses);
     return out;

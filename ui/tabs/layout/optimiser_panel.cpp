@@ -182,7 +182,7 @@ void OptimiserPanel::draw_run() {
   const PsoResult& r = outcome->pso;
   ImGui::Text("%s: best %s = %.4g after %d iterations (%.1f s)",
               r.status == lmc::JobStatus::kCancelled ? "Cancelled, best so far" : "Done",
-              s.pso.metric == PlacementMetricKind::kStudy ? "M" : "R", r.best_cost, r.iterations_done, r.seconds);
+              r.metric == PlacementMetricKind::kStudy ? "M" : "R", r.best_cost, r.iterations_done, r.seconds);
   ImGui::Checkbox("Show as ghost controllers", &s.display.show_ghost);
   if (ImGui::Button("Apply", ImVec2(100, 0))) s.apply_optimised();
   anchors_.remember("apply");
