@@ -52,4 +52,33 @@ Coverage compute_coverage(const VisibilityTable& table, std::span<const int> sub
   return compute_coverage(std::span<const std::span<const FingerBits>>(cols), subset);
 }
 
+namespace {
+
+Coverage empty_coverage(int devices) {
+  Coverage c;
+  c.devices = devices;
+  c.c.assign(static_cast<size_t>(devices) + 1, 0);
+  c.device_finger_seen.assign(static_cast<size_t>(devices), {});
+  return c;
+}
+
+}  // namespace
+
+OrientationCoverage coverage_by_orientation(std::span<const std::span<const FingerBits>> cols,
+                                            std::span<const int> horizontal, std::span<const int> vertical) {
+  const int devices = static_cast<int>(cols.size());
+  OrientationCoverage out;
+  out.all = compute_coverage(cols);
+  out.horizontal = horizontal.empty() ? empty_coverage(devices) : compute_coverage(cols, horizontal);
+  out.vertical = vertical.empty() ? empty_coverage(devices) : compute_coverage(cols, vertical);
+  return out;
+}
+
+OrientationCoverage coverage_by_orientation(const VisibilityTable& table, std::span<const int> horizontal,
+                                            std::span<const int> vertical) {
+  std::vector<std::span<const FingerBits>> cols;
+  for (int d = 0; d < table.devices; ++d) cols.push_back(table.device_column(d));
+  return coverage_by_orientation(std::span<const std::span<const FingerBits>>(cols), horizontal, vertical);
+}
+
 }  // namespace lmc

@@ -37,6 +37,18 @@ Coverage compute_coverage(const VisibilityTable& table, std::span<const int> fra
 Coverage compute_coverage(std::span<const std::span<const FingerBits>> device_columns,
                           std::span<const int> frame_subset = {});
 
+// Coverage of all frames and of each palm orientation's frames (the split the paper reports and
+// `lmc evaluate`, the Coverage panel and the Optimiser's comparison all show). An orientation
+// with no frames gets an empty Coverage (0 frames), never all frames: compute_coverage reads an
+// empty subset as "all".
+struct OrientationCoverage {
+  Coverage all, horizontal, vertical;
+};
+OrientationCoverage coverage_by_orientation(std::span<const std::span<const FingerBits>> device_columns,
+                                            std::span<const int> horizontal, std::span<const int> vertical);
+OrientationCoverage coverage_by_orientation(const VisibilityTable& table, std::span<const int> horizontal,
+                                            std::span<const int> vertical);
+
 // Number of devices that see the worst-covered finger, given the bits of each device for one
 // frame: min over fingers of the per-finger counts.
 inline int worst_finger_count(const FingerBits* bits, int devices) {

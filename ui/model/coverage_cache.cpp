@@ -38,9 +38,10 @@ CoverageSnapshotPtr compute_coverage_snapshot(const Layout& layout, const PoseSe
   }
   std::vector<std::span<const FingerBits>> spans;
   for (const auto& c : snap->columns) spans.emplace_back(*c);
-  snap->all = compute_coverage(spans);
-  snap->horizontal = compute_coverage(spans, poses->horizontal);
-  snap->vertical = compute_coverage(spans, poses->vertical);
+  OrientationCoverage split = coverage_by_orientation(spans, poses->horizontal, poses->vertical);
+  snap->all = std::move(split.all);
+  snap->horizontal = std::move(split.horizontal);
+  snap->vertical = std::move(split.vertical);
   return snap;
 }
 

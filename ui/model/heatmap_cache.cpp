@@ -5,10 +5,6 @@
 #include <limits>
 #include <vector>
 
-#include "core/visibility/device_view.h"
-#include "core/visibility/visibility_kernel.h"
-#include "core/visibility/visibility_params.h"
-
 namespace lmc::ui {
 
 bool HeatmapRequest::same_sweep(const HeatmapRequest& o) const {
@@ -30,65 +26,17 @@ bool HeatmapRequest::same_sweep(const HeatmapRequest& o) const {
 
 HeatmapGridPtr sweep_heatmap(const HeatmapRequest& req, int cells, std::stop_token stop,
                              JobChannel<HeatmapGridPtr>* channel, long long done_before, long long total) {
+  static const std::vector<PreparedFrame> no_frames;
+  const HeatmapSpec spec{req.device, req.finger, req.mode, cells, req.half_extent_mm};
+  const auto row_done = [&](int rows) {
+    if (channel != nullptr) channel->set_progress(done_before + static_cast<long long>(rows) * cells, total);
+  };
+  auto swept = sweep_placement_heatmap(req.layout, req.poses ? std::span<const PreparedFrame>(req.poses->prepared)
+                                                             : std::span<const PreparedFrame>(no_frames),
+                                       spec, stop, row_done);
+  if (!swept) return nullptr;
   auto grid = std::make_shared<HeatmapGrid>();
-  grid->nx = grid->nz = cells;
-  grid->x_lo_mm = grid->z_lo_mm = -req.half_extent_mm;
-  grid->x_hi_mm = grid->z_hi_mm = req.half_extent_mm;
-  grid->device = req.device;
-  grid->finger = req.finger;
-  grid->mode = req.mode;
-  grid->value.assign(static_cast<size_t>(cells) * static_cast<size_t>(cells), std::numeric_limits<float>::quiet_NaN());
-  if (!req.poses || req.device < 0 || req.device >= req.layout.device_count()) return grid;
-  const auto& frames = req.poses->prepared;
-  const size_t n = frames.size();
-  if (n == 0) return grid;
-  const VisibilityLimits limits = make_limits(VisibilityParams::from_sensor(req.layout.sensor));
-
-  // Fingers no other controller sees, per frame (only the "added" mode needs them).
-  std::vector<FingerBits> missing(n, kAllFingersVisible);
-  if (req.mode == HeatmapMode::kFramesAdded) {
-    std::vector<FingerBits> column(n);
-    std::vector<FingerBits> others(n, 0);
-    for (int d = 0; d < req.layout.device_count(); ++d) {
-      if (d == req.device) continue;
-      device_visibility(DeviceView::from_device(req.layout.devices[static_cast<size_t>(d)]), frames, limits, column);
-      for (size_t j = 0; j < n; ++j) others[j] |= column[j];
-      if (stop.stop_requested()) return nullptr;
-    }
-    for (size_t j = 0; j < n; ++j) missing[j] = static_cast<FingerBits>(~others[j] & kAllFingersVisible);
-  }
-  const FingerBits want = req.finger < 0 ? kAllFingersVisible : static_cast<FingerBits>(1u << req.finger);
-
-  LayoutDevice dev = req.layout.devices[static_cast<size_t>(req.device)];
-  double lo = 1.0, hi = 0.0;
-  for (int iz = 0; iz < cells; ++iz) {
-    if (stop.stop_requested()) return nullptr;
-    for (int ix = 0; ix < cells; ++ix) {
-      // The device origin (pose + offset) stands over the cell centre.
-      dev.pose.x_mm = grid->cell_x_mm(ix) - dev.offset_mm.x();
-      dev.pose.z_mm = grid->cell_z_mm(iz) - dev.offset_mm.z();
-      const DeviceView view = DeviceView::from_device(dev);
-      long long count = 0;
-      for (size_t j = 0; j < n; ++j) {
-        const FingerBits bits = visible_fingers(frames[j], view, limits);
-        if (req.mode == HeatmapMode::kShareVisible) {
-          count += (bits & want) == want;
-        } else {
-          // Added: the wanted fingers that nobody else sees are all seen by this controller
-          // (for "all": the frame leaves c_0 thanks to it).
-          const FingerBits need = missing[j] & want;
-          count += need != 0 && (bits & need) == need;
-        }
-      }
-      const double share = static_cast<double>(count) / static_cast<double>(n);
-      grid->value[static_cast<size_t>(iz * cells + ix)] = static_cast<float>(share);
-      lo = std::min(lo, share);
-      hi = std::max(hi, share);
-    }
-    if (channel != nullptr) channel->set_progress(done_before + static_cast<long long>(iz + 1) * cells, total);
-  }
-  grid->data_min = lo;
-  grid->data_max = hi;
+  static_cast<PlacementHeatmap&>(*grid) = std::move(*swept);
   return grid;
 }
 

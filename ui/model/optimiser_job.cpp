@@ -8,12 +8,7 @@
 namespace lmc::ui {
 
 LayoutEvaluation evaluate_layout(const Layout& layout, const LoadedPoseSet& poses) {
-  const VisibilityTable table = compute_visibility(layout, poses.prepared);
-  LayoutEvaluation e;
-  e.all = compute_coverage(table);
-  e.horizontal = compute_coverage(table, poses.horizontal);
-  e.vertical = compute_coverage(table, poses.vertical);
-  return e;
+  return coverage_by_orientation(compute_visibility(layout, poses.prepared), poses.horizontal, poses.vertical);
 }
 
 SearchSpace search_space_for(const LayoutDocument& doc) {

@@ -17,10 +17,8 @@
 
 namespace lmc::ui {
 
-// Coverage of one layout on the pose set: all frames and split by palm orientation.
-struct LayoutEvaluation {
-  Coverage all, horizontal, vertical;
-};
+// Coverage of one layout on the pose set: all frames and split by palm orientation (core's split).
+using LayoutEvaluation = OrientationCoverage;
 LayoutEvaluation evaluate_layout(const Layout& layout, const LoadedPoseSet& poses);
 
 struct OptimiserReport {

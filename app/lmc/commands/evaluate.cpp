@@ -49,22 +49,12 @@ void setup_evaluate(CLI::App& app) {
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     std::vector<std::string> slots;
     for (const auto& d : layout.devices) slots.push_back(d.slot);
-    const auto all = lmc::compute_coverage(table);
     const auto horizontal_idx = poses.indices_with(lmc::HandOrientation::kHorizontal);
     const auto vertical_idx = poses.indices_with(lmc::HandOrientation::kVertical);
-    // An empty subset means "all frames" to compute_coverage; report an empty split as such.
-    auto split = [&](const std::vector<int>& idx) {
-      if (idx.empty()) {
-        lmc::Coverage c;
-        c.devices = table.devices;
-        c.c.assign(static_cast<size_t>(table.devices) + 1, 0);
-        c.device_finger_seen.assign(static_cast<size_t>(table.devices), {});
-        return c;
-      }
-      return lmc::compute_coverage(table, idx);
-    };
-    const auto horizontal = split(horizontal_idx);
-    const auto vertical = split(vertical_idx);
+    const lmc::OrientationCoverage split = lmc::coverage_by_orientation(table, horizontal_idx, vertical_idx);
+    const lmc::Coverage& all = split.all;
+    const lmc::Coverage& horizontal = split.horizontal;
+    const lmc::Coverage& vertical = split.vertical;
     // The robust metric's terms and each controller's contribution (issue #15), same splits.
     const lmc::RobustWeights weights;
     std::vector<lmc::DeviceView> views;
