@@ -1,6 +1,8 @@
 #include "core/hand/hand_frame.h"
 
 #include <array>
+#include <cctype>
+#include <string>
 
 namespace lmc {
 namespace {
@@ -29,6 +31,22 @@ std::optional<int> hand_point_from_name(std::string_view name) {
     if (kNames[static_cast<size_t>(i)] == name) return i;
   }
   return std::nullopt;
+}
+
+std::string hand_point_words(int i) {
+  if (i < 0 || i >= kNumHandPoints) return {};
+  constexpr int kFirstFingerPoint = 5;
+  constexpr std::array<std::string_view, 5> kSegmentWords = {"base", "knuckle", "middle joint", "last joint", "tip"};
+  if (i < kFirstFingerPoint) {
+    std::string words(kNames[static_cast<size_t>(i)]);
+    for (auto& c : words) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    return words;
+  }
+  const int digit = (i - kFirstFingerPoint) / 5, segment = (i - kFirstFingerPoint) % 5;
+  std::string words(kDigitNames[static_cast<size_t>(digit)]);
+  if (digit > 0) words += " finger";
+  return words + " " + std::string(kSegmentWords[static_cast<size_t>(segment)]) + " (" +
+         std::string(kNames[static_cast<size_t>(i)]) + ")";
 }
 
 std::string_view digit_name(int digit) {

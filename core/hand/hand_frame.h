@@ -48,6 +48,10 @@ std::string_view hand_point_name(int i);
 std::optional<int> hand_point_from_name(std::string_view name);
 // "thumb", "index", "middle", "ring", "pinky".
 std::string_view digit_name(int digit);
+// A hand point in words for people, with the file name after it: "ring finger tip (Finger4_End)",
+// "thumb knuckle (Finger1_Proxi)", "palm position". The files' FingerN numbering starts at the
+// thumb, which reads as a contradiction next to a finger's name unless both are shown together.
+std::string hand_point_words(int i);
 
 enum class HandType : int { kUnknown = -1, kLeft = 0, kRight = 1 };
 

@@ -70,15 +70,19 @@ void add_table(SceneList& out, const SceneInputs& in) {
   add_segment(out, ItemRole::kAxis, {0, 0, -e}, {0, 0, e}, {0.35f, 0.55f, 0.95f, 1.0f});
   add_segment(out, ItemRole::kAxis, {0, 0, 0}, {0, 100, 0}, {0.40f, 0.85f, 0.40f, 1.0f});
   const Rgba label{0.70f, 0.72f, 0.76f, 1.0f};
+  // Rulers: x values along the back edge (away from the subject: the workbench's legends sit
+  // along the bottom of the view), z values along the right edge. The two meet at the back-right
+  // corner, whose value is written once, by the x ruler. Each ruler's title sits beside its own
+  // numbers, in its axis's colour (issue #15: they sat at the ends of the other ruler).
   for (int i = -n; i <= n; i += 2) {
     if (i == 0) continue;
     char buf[32];
     std::snprintf(buf, sizeof buf, "%+.0f", i * step);
-    out.labels.push_back({Eigen::Vector3d(i * step, 0, e + 18), buf, label, false});
-    out.labels.push_back({Eigen::Vector3d(e + 24, 0, i * step), buf, label, false});
+    out.labels.push_back({Eigen::Vector3d(i * step, 0, -e - 18), buf, label, false});
+    if (i != -n) out.labels.push_back({Eigen::Vector3d(e + 24, 0, i * step), buf, label, false});
   }
-  out.labels.push_back({Eigen::Vector3d(e + 40, 0, 0), "x mm", {0.95f, 0.45f, 0.45f, 1.0f}, true});
-  out.labels.push_back({Eigen::Vector3d(0, 0, e + 40), "z mm (subject)", {0.45f, 0.65f, 1.0f, 1.0f}, true});
+  out.labels.push_back({Eigen::Vector3d(0, 0, -e - 44), "x mm", {0.95f, 0.45f, 0.45f, 1.0f}, true});
+  out.labels.push_back({Eigen::Vector3d(e + 60, 0, 0), "z mm (+ subject)", {0.45f, 0.65f, 1.0f, 1.0f}, true});
   out.labels.push_back({Eigen::Vector3d(0, 110, 0), "y", {0.45f, 0.90f, 0.45f, 1.0f}, true});
 }
 

@@ -187,6 +187,12 @@ int LayoutTab::prepare_for_capture() {
     state_->display.show_heatmap = false;
     state_->display.show_rays = false;
   }
+  if (const char* view = std::getenv("LMC_LAYOUT_VIEW")) {  // top, front or side (default: 3D)
+    const std::string v = view;
+    if (v == "top") state_->camera.set_named_view(NamedView::kTop);
+    if (v == "front") state_->camera.set_named_view(NamedView::kFront);
+    if (v == "side") state_->camera.set_named_view(NamedView::kSide);
+  }
   if (const char* panel = std::getenv("LMC_LAYOUT_PANEL")) {
     capture_panel_ = panel;
     capture_panel_frames_ = 2;

@@ -1,11 +1,15 @@
 #include "ui/tabs/layout/scene_panel.h"
 
+#include <imgui_internal.h>  // SetItemUsingMouseWheel (1.86 keeps it internal)
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <vector>
 
 #include "core/hand/hand_frame.h"
 #include "ui/scene/colour_maps.h"
+#include "ui/scene/label_spreading.h"
 #include "ui/widgets/imgui_colour.h"
 
 namespace lmc::ui {
@@ -176,6 +180,9 @@ void ScenePanel::draw(ImVec2 size) {
   ImGui::InvisibleButton("##scene", image_size_,
                          ImGuiButtonFlags_MouseButtonLeft | ImGuiButtonFlags_MouseButtonRight |
                              ImGuiButtonFlags_MouseButtonMiddle);
+  // The wheel zooms the view; without this ImGui also hands it to the tab's window, which then
+  // scrolled by its 2 px of overflow (issue #15).
+  ImGui::SetItemUsingMouseWheel();
   const bool hovered = ImGui::IsItemHovered();
   handle_input(hovered);
 
@@ -222,13 +229,24 @@ void ScenePanel::draw_overlays(ImDrawList* dl) {
   const double w = image_size_.x, h = image_size_.y;
   const ImVec2 image_max(image_min_.x + image_size_.x, image_min_.y + image_size_.y);
   dl->PushClipRect(image_min_, image_max, true);
-  // Labels at projected positions, with a shadow so they read on any background.
+  // Labels at projected positions, spread so none prints over another, with a shadow so they
+  // read on any background.
+  std::vector<const SceneLabel*> shown;
+  std::vector<LabelBox> boxes;
   for (const SceneLabel& l : scene_.labels) {
     const auto p = s.camera.project(l.position, w, h);
     if (!p) continue;
     const ImVec2 size = ImGui::CalcTextSize(l.text.c_str());
-    const ImVec2 at(image_min_.x + static_cast<float>(p->x()) - size.x * 0.5f,
-                    image_min_.y + static_cast<float>(p->y()) - size.y * 0.5f);
+    shown.push_back(&l);
+    // The box holds the text and the 3 px backing an emphasised label gets on either side.
+    boxes.push_back({image_min_.x + static_cast<float>(p->x()) - size.x * 0.5f - 3.0f,
+                     image_min_.y + static_cast<float>(p->y()) - size.y * 0.5f - 1.0f, size.x + 6.0f, size.y + 2.0f});
+  }
+  boxes = spread_labels(std::move(boxes), 1.0f);
+  for (size_t i = 0; i < shown.size(); ++i) {
+    const SceneLabel& l = *shown[i];
+    const ImVec2 size(boxes[i].width - 6.0f, boxes[i].height - 2.0f);
+    const ImVec2 at(boxes[i].x + 3.0f, boxes[i].y + 1.0f);
     if (l.emphasised) {
       dl->AddRectFilled(ImVec2(at.x - 3, at.y - 1), ImVec2(at.x + size.x + 3, at.y + size.y + 1), IM_COL32(20, 20, 24, 190), 3.0f);
     }
@@ -305,7 +323,7 @@ void ScenePanel::draw_overlays(ImDrawList* dl) {
     if (best_i >= 0) {
       const FingerRay& r = rays[static_cast<size_t>(best_i)];
       ImGui::SetTooltip("%s -> %s\n%s", s.layout().devices[static_cast<size_t>(s.selected)].slot.c_str(),
-                        std::string(hand_point_name(r.marker)).c_str(), r.reason.c_str());
+                        hand_point_words(r.marker).c_str(), r.reason.c_str());
       return;
     }
   }

@@ -8,6 +8,20 @@
 #include "core/hand/reference_poses.h"
 
 namespace lmc::ui {
+namespace {
+
+const char* timeline_motion_words(HandMotion m) {
+  switch (m) {
+    case HandMotion::kOpen: return "open hand";
+    case HandMotion::kIndexFlexion: return "index flexion";
+    case HandMotion::kThumbFlexion: return "thumb flexion";
+    case HandMotion::kWristFlexion: return "wrist flexion";
+    case HandMotion::kWristExtension: return "wrist extension";
+  }
+  return "motion";
+}
+
+}  // namespace
 
 void TimelinePanel::draw() {
   LayoutTabState& s = *state_;
@@ -28,8 +42,14 @@ void TimelinePanel::draw() {
   char overlay[128] = "loading pose set...";
   if (p && !frames.empty()) {
     const PoseLabel& l = p->set.labels[static_cast<size_t>(t.frame)];
-    std::snprintf(overlay, sizeof overlay, "frame %d  ·  %s  ·  %.0f %%", t.frame,
-                  pose_label_name(l.orientation, l.motion).c_str(), l.progress * 100.0);
+    // Words rather than the pose set's "horizontal/thumb" keys (issue #15).
+    const char* palm = l.orientation == HandOrientation::kHorizontal ? "palm down" : "palm left";
+    if (l.motion == HandMotion::kOpen) {
+      std::snprintf(overlay, sizeof overlay, "frame %d: %s, open hand", t.frame, palm);
+    } else {
+      std::snprintf(overlay, sizeof overlay, "frame %d: %s, %s at %.0f %%", t.frame, palm,
+                    timeline_motion_words(l.motion), l.progress * 100.0);
+    }
   } else if (p) {
     std::snprintf(overlay, sizeof overlay, "no frames match the filters");
   }
