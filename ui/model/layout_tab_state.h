@@ -43,6 +43,7 @@ struct DisplaySettings {
   int heatmap_cells = 48;
   double heatmap_half_extent_mm = 400;
   bool heatmap_fixed_range = true;  // 0…100 % (comparable between fingers) or the data's range
+  bool show_search_box = false;     // the Optimiser panel is open: draw its x/z bounds on the table
 };
 
 class LayoutTabState {

@@ -285,6 +285,14 @@ SceneList build_scene(const SceneInputs& in) {
   out.items.reserve(4096);
   if (in.heatmap != nullptr && in.heatmap->nx > 0) add_heatmap(out, in);
   add_table(out, in);
+  if (in.search_box != nullptr) {
+    const auto& b = *in.search_box;
+    const Rgba box_colour{1.0f, 0.80f, 0.25f, 0.95f};
+    const double y = 0.5;  // just above the table so the grid does not hide it
+    const Eigen::Vector3d c[4] = {{b[0], y, b[2]}, {b[1], y, b[2]}, {b[1], y, b[3]}, {b[0], y, b[3]}};
+    for (int k = 0; k < 4; ++k) add_segment(out, ItemRole::kSearchBox, c[k], c[(k + 1) % 4], box_colour);
+    out.labels.push_back({Eigen::Vector3d(b[0] + 70, y, b[2] + 14), "search area", box_colour, false});
+  }
   Eigen::AlignedBox3d bounds;
   bounds.extend(Eigen::Vector3d(-150, 0, -150));
   bounds.extend(Eigen::Vector3d(150, 50, 150));

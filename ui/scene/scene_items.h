@@ -38,7 +38,7 @@ enum ItemFlags : std::uint32_t {
 };
 
 // What an item stands for, so tests and tooltips can find it.
-enum class ItemRole : int { kTable, kAxis, kDevice, kDeviceUsbMarker, kPyramid, kHandle, kHand, kFinger, kRay, kHeatmap, kGhost };
+enum class ItemRole : int { kTable, kAxis, kDevice, kDeviceUsbMarker, kPyramid, kHandle, kHand, kFinger, kRay, kHeatmap, kGhost, kSearchBox };
 
 struct SceneItem {
   ItemKind kind = ItemKind::kSegment;
@@ -73,6 +73,9 @@ struct SceneInputs {
   const HeatmapGrid* heatmap = nullptr;
   ColourRange heatmap_range;
   bool show_pyramids = true;
+  // Where the optimiser may put controllers (x and z bounds: x_lo, x_hi, z_lo, z_hi, mm), drawn
+  // as a rectangle on the table while the Optimiser panel is open; null = not drawn.
+  const std::array<double, 4>* search_box = nullptr;
   double table_half_extent_mm = 400;
   double grid_step_mm = 50;
 };

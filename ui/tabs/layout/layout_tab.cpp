@@ -394,18 +394,27 @@ void LayoutTab::draw_panel_side() {
       if (capture_panel_frames_ > 0 && capture_panel_ == id) return ImGuiTabItemFlags_SetSelected;
       return ImGuiTabItemFlags_None;
     };
+    // Each panel scrolls inside its own child so the tab strip above it stays in view.
     if (ImGui::BeginTabItem("Inspector", nullptr, flags_for("inspector"))) {
+      ImGui::BeginChild("##inspector_body");
       inspector_->draw();
+      ImGui::EndChild();
       ImGui::EndTabItem();
     }
     if (ImGui::BeginTabItem("Heatmap", nullptr, flags_for("heatmap"))) {
+      ImGui::BeginChild("##heatmap_body");
       heatmap_->draw();
+      ImGui::EndChild();
       ImGui::EndTabItem();
     }
+    bool optimiser_open = false;
     if (ImGui::BeginTabItem("Optimiser", nullptr, flags_for("optimiser"))) {
+      optimiser_open = true;
       optimiser_->draw();
       ImGui::EndTabItem();
     }
+    // While the Optimiser panel is open the scene shows where the search may put controllers.
+    state_->display.show_search_box = optimiser_open;
     ImGui::EndTabBar();
     if (capture_panel_frames_ > 0) --capture_panel_frames_;
   }

@@ -15,10 +15,17 @@ OptimiserPanel::OptimiserPanel(std::shared_ptr<LayoutTabState> state) : state_(s
 
 void OptimiserPanel::draw() {
   anchors_.clear();
+  // Start / progress / Apply / Discard stay at the bottom of the panel whatever is expanded above
+  // them (issue #15: with Search settings open they fell below the panel); the rest scrolls.
+  const float line = ImGui::GetFrameHeightWithSpacing();
+  const float footer_h = state_->optimiser.outcome() ? 3.0f * line + 4.0f : line + 4.0f;
+  ImGui::BeginChild("##optimiser_body", ImVec2(0, -footer_h));
   if (ImGui::CollapsingHeader("Pose set", ImGuiTreeNodeFlags_DefaultOpen)) draw_pose_set();
   if (ImGui::CollapsingHeader("Search settings")) draw_settings();
-  draw_run();
+  draw_convergence();
   draw_comparison();
+  ImGui::EndChild();
+  draw_run();
 }
 
 void OptimiserPanel::draw_pose_set() {
@@ -147,7 +154,6 @@ void OptimiserPanel::draw_settings() {
 void OptimiserPanel::draw_run() {
   LayoutTabState& s = *state_;
   OptimiserJob& job = s.optimiser;
-  ImGui::Separator();
   if (job.running()) {
     char stage[96];
     const auto& h = job.history();
@@ -169,27 +175,33 @@ void OptimiserPanel::draw_run() {
     ImGui::TextColored(ImVec4(1, 0.45f, 0.4f, 1), "Failed: %s", job.error().c_str());
     ImGui::PopTextWrapPos();
   }
-  if (!job.history().empty() || job.running()) {
-    LinePlotOptions o;
-    o.log_y = true;
-    o.height_px = 110;
-    o.x_extent = job.iterations_planned() + 1;
-    ImGui::TextDisabled("Best cost %s per iteration", s.pso.metric == PlacementMetricKind::kStudy ? "M" : "R (robust)");
-    draw_line_plot("convergence", job.history(), o);
-  }
   const auto outcome = job.outcome();
   if (!outcome) return;
   const PsoResult& r = outcome->pso;
   ImGui::Text("%s: best %s = %.4g after %d iterations (%.1f s)",
               r.status == lmc::JobStatus::kCancelled ? "Cancelled, best so far" : "Done",
               r.metric == PlacementMetricKind::kStudy ? "M" : "R", r.best_cost, r.iterations_done, r.seconds);
-  ImGui::Checkbox("Show as ghost controllers", &s.display.show_ghost);
   if (ImGui::Button("Apply", ImVec2(100, 0))) s.apply_optimised();
   anchors_.remember("apply");
   if (ImGui::IsItemHovered()) ImGui::SetTooltip("Replace the poses with the candidate's (one undo step)");
   ImGui::SameLine();
   if (ImGui::Button("Discard", ImVec2(100, 0))) job.discard();
   anchors_.remember("discard");
+  ImGui::SameLine();
+  ImGui::Checkbox("ghost", &s.display.show_ghost);
+  if (ImGui::IsItemHovered()) ImGui::SetTooltip("Show the candidate as ghost controllers in the 3D view");
+}
+
+void OptimiserPanel::draw_convergence() {
+  LayoutTabState& s = *state_;
+  const OptimiserJob& job = s.optimiser;
+  if (job.history().empty() && !job.running()) return;
+  LinePlotOptions o;
+  o.log_y = true;
+  o.height_px = 110;
+  o.x_extent = job.iterations_planned() + 1;
+  ImGui::TextDisabled("Best cost %s per iteration", s.pso.metric == PlacementMetricKind::kStudy ? "M" : "R (robust)");
+  draw_line_plot("convergence", job.history(), o);
 }
 
 void OptimiserPanel::draw_comparison() {
@@ -200,11 +212,13 @@ void OptimiserPanel::draw_comparison() {
   const LayoutEvaluation& cand = outcome->candidate;
   ImGui::Spacing();
   ImGui::TextUnformatted("Current vs candidate");
-  if (!ImGui::BeginTable("##compare", 4, ImGuiTableFlags_Borders | ImGuiTableFlags_RowBg | ImGuiTableFlags_SizingStretchSame)) return;
+  // The label column fits its longest label; the numbers share the rest. Green is better and red
+  // worse whichever way the number moved (issue #15: an improvement showed in red).
+  if (!ImGui::BeginTable("##compare", 4, ImGuiTableFlags_Borders | ImGuiTableFlags_RowBg | ImGuiTableFlags_SizingFixedFit)) return;
   ImGui::TableSetupColumn("");
-  ImGui::TableSetupColumn("current");
-  ImGui::TableSetupColumn("candidate");
-  ImGui::TableSetupColumn("change");
+  ImGui::TableSetupColumn("current", ImGuiTableColumnFlags_WidthStretch);
+  ImGui::TableSetupColumn("candidate", ImGuiTableColumnFlags_WidthStretch);
+  ImGui::TableSetupColumn("change", ImGuiTableColumnFlags_WidthStretch);
   ImGui::TableHeadersRow();
   const auto row_num = [](const char* name, double a, double b, bool lower_better, bool percent) {
     ImGui::TableNextRow();
@@ -220,28 +234,39 @@ void OptimiserPanel::draw_comparison() {
     const ImVec4 col = diff == 0 ? ImVec4(0.7f, 0.7f, 0.7f, 1) : better ? ImVec4(0.4f, 0.9f, 0.45f, 1) : ImVec4(1, 0.45f, 0.4f, 1);
     percent ? ImGui::TextColored(col, "%+.1f pt", diff * 100) : ImGui::TextColored(col, "%+.4g", diff);
   };
-  row_num("M (all frames)", cur->all.metric, cand.all.metric, true, false);
+  row_num("M, all frames", cur->all.metric, cand.all.metric, true, false);
+  row_num("M, palm down", cur->horizontal.metric, cand.horizontal.metric, true, false);
+  row_num("M, palm left", cur->vertical.metric, cand.vertical.metric, true, false);
+  // Cumulative shares read one way: more frames with every finger seen by >= i controllers is
+  // better for every i (the c_i histogram itself is not: moving frames from c_1 to c_2 is good).
+  const auto at_least = [](const Coverage& c, size_t i) {
+    std::int64_t n = 0;
+    for (size_t k = i; k < c.c.size(); ++k) n += c.c[k];
+    return c.frames > 0 ? static_cast<double>(n) / static_cast<double>(c.frames) : 0.0;
+  };
   const size_t nc = std::min(cur->all.c.size(), cand.all.c.size());
-  const double na = static_cast<double>(std::max<std::int64_t>(1, cur->all.frames));
-  const double nb = static_cast<double>(std::max<std::int64_t>(1, cand.all.frames));
-  for (size_t i = 0; i < nc; ++i) {
-    char name[32];
-    std::snprintf(name, sizeof name, "c_%zu (share)", i);
-    // Fewer frames in low c_i is better; the last (seen by all) is better when higher.
-    row_num(name, static_cast<double>(cur->all.c[i]) / na, static_cast<double>(cand.all.c[i]) / nb, i + 1 < nc, true);
+  for (size_t i = 1; i < nc; ++i) {
+    char name[48];
+    std::snprintf(name, sizeof name, "all fingers, %zu+ ctrl.", i);
+    row_num(name, at_least(cur->all, i), at_least(cand.all, i), false, true);
   }
   for (int k = 0; k < kNumDigits; ++k) {
     char name[48];
-    std::snprintf(name, sizeof name, "%s seen by >=1", std::string(digit_name(k)).c_str());
+    std::snprintf(name, sizeof name, "%s seen", std::string(digit_name(k)).c_str());
     row_num(name, 1.0 - cur->all.finger_unseen_fraction(k), 1.0 - cand.all.finger_unseen_fraction(k), false, true);
   }
-  row_num("M horizontal poses", cur->horizontal.metric, cand.horizontal.metric, true, false);
-  row_num("M vertical poses", cur->vertical.metric, cand.vertical.metric, true, false);
-  const auto c0 = [](const Coverage& c) {
-    return c.frames > 0 && !c.c.empty() ? static_cast<double>(c.c[0]) / static_cast<double>(c.frames) : 0.0;
-  };
-  row_num("c_0 horizontal", c0(cur->horizontal), c0(cand.horizontal), true, true);
-  row_num("c_0 vertical", c0(cur->vertical), c0(cand.vertical), true, true);
+  for (int d = 0; d < cand.all.devices && d < cur->all.devices; ++d) {
+    // The share of frames in which this controller sees its best finger: 0 means it is idle.
+    double a = 0, b = 0;
+    for (int k = 0; k < kNumDigits; ++k) {
+      a = std::max(a, cur->all.device_finger_fraction(d, k));
+      b = std::max(b, cand.all.device_finger_fraction(d, k));
+    }
+    char name[48];
+    std::snprintf(name, sizeof name, "%s, best finger",
+                  s.layout().devices[static_cast<size_t>(d)].slot.c_str());
+    row_num(name, a, b, false, true);
+  }
   ImGui::EndTable();
 }
 

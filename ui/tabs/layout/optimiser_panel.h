@@ -22,7 +22,8 @@ class OptimiserPanel {
  private:
   void draw_pose_set();
   void draw_settings();
-  void draw_run();
+  void draw_run();          // the footer: Start or progress, then the result with Apply / Discard
+  void draw_convergence();
   void draw_comparison();
 
   std::shared_ptr<LayoutTabState> state_;

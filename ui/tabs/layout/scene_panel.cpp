@@ -3,6 +3,7 @@
 #include <imgui_internal.h>  // SetItemUsingMouseWheel (1.86 keeps it internal)
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <vector>
@@ -199,6 +200,9 @@ void ScenePanel::draw(ImVec2 size) {
   in.show_pyramids = s.display.show_pyramids;
   in.table_half_extent_mm = std::max(400.0, s.display.heatmap_half_extent_mm);
   if (s.display.show_rays && s.selected >= 0) in.rays = &s.frame_visibility().rays;
+  const std::array<double, 4> search_box = {s.doc().bounds.range[0].lo, s.doc().bounds.range[0].hi,
+                                            s.doc().bounds.range[2].lo, s.doc().bounds.range[2].hi};
+  if (s.display.show_search_box) in.search_box = &search_box;
   HeatmapGridPtr grid;
   if (s.display.show_heatmap && s.selected >= 0) {
     grid = s.heatmap.latest();
