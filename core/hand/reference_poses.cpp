@@ -38,6 +38,21 @@ std::optional<HandMotion> motion_from_name(std::string_view name) {
   return std::nullopt;
 }
 
+std::string_view orientation_words(HandOrientation o) {
+  return o == HandOrientation::kHorizontal ? "palm down" : "palm left";
+}
+
+std::string_view motion_words(HandMotion m) {
+  switch (m) {
+    case HandMotion::kOpen: return "open hand";
+    case HandMotion::kIndexFlexion: return "index flexion";
+    case HandMotion::kThumbFlexion: return "thumb flexion";
+    case HandMotion::kWristFlexion: return "wrist flexion";
+    case HandMotion::kWristExtension: return "wrist extension";
+  }
+  return "motion";
+}
+
 std::string pose_label_name(HandOrientation o, HandMotion m) {
   return std::string(orientation_name(o)) + "/" + std::string(motion_name(m));
 }

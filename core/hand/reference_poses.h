@@ -28,6 +28,11 @@ std::optional<HandOrientation> orientation_from_name(std::string_view name);
 std::optional<HandMotion> motion_from_name(std::string_view name);
 // "horizontal/open", "vertical/thumb", ...
 std::string pose_label_name(HandOrientation o, HandMotion m);
+// Words for people (tables, the timeline): "palm down" / "palm left" (the study's horizontal and
+// vertical: palm facing down, palm facing left) and "open hand", "index flexion", "thumb flexion",
+// "wrist flexion", "wrist extension".
+std::string_view orientation_words(HandOrientation o);
+std::string_view motion_words(HandMotion m);
 
 // Where the reference hand sits: palm centre this high above the table centre (world y up).
 inline constexpr double kReferencePalmHeight_mm = 150.0;

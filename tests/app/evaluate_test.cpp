@@ -58,6 +58,12 @@ TEST(LmcEvaluate, RobustTermsAndWhatEachControllerContributes) {
   ASSERT_EQ(t.exit_code, 0) << t.err;
   EXPECT_NE(t.out.find("NO: the layout is as good without it"), std::string::npos) << t.out;
   EXPECT_NE(t.out.find("axis cut"), std::string::npos) << t.out;
+  const auto report = dir / "report";
+  const CliRun w = run_lmc("evaluate --layout paper-optimized --frames 300 --report " + lmc::test::shell_quote(report.string()), dir);
+  ASSERT_EQ(w.exit_code, 0) << w.err;
+  const std::string md = lmc::test::read_text_file(report / "report.md");
+  EXPECT_NE(md.find("**LMC1 does not count**"), std::string::npos) << md;
+  EXPECT_NE(md.find("## Coverage per reference pose"), std::string::npos) << md;
 }
 
 TEST(LmcEvaluate, UnknownLayoutIsAnError) {

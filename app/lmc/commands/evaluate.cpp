@@ -1,6 +1,7 @@
 // lmc evaluate: the placement metric and coverage of a fixed layout on a pose set, for all frames
 // and split by hand orientation (horizontal / vertical) — the same summary `lmc optimize` prints.
 #include <chrono>
+#include <filesystem>
 #include <iostream>
 #include <optional>
 #include <string>
@@ -9,7 +10,9 @@
 #include "core/io/pose_source.h"
 #include "core/io/layout_json.h"
 #include "core/metric/coverage.h"
+#include "core/io/atomic_write.h"
 #include "core/metric/controller_contribution.h"
+#include "core/metric/layout_report.h"
 #include "core/metric/coverage_report.h"
 #include "core/metric/robust_terms_report.h"
 #include "core/visibility/frame_prep.h"
@@ -26,6 +29,7 @@ struct EvaluateOptions {
   double range_mm = 0;  // 0: the layout's own sensor model
   double radius_mm = 10.0;
   bool json = false;
+  std::string report_dir;
 };
 
 void setup_evaluate(CLI::App& app) {
@@ -38,6 +42,9 @@ void setup_evaluate(CLI::App& app) {
   app.add_option("--range-mm", opt->range_mm, "Override the layout's sensor range (mm)")->check(CLI::PositiveNumber);
   app.add_option("--radius-mm", opt->radius_mm, "Phalanx radius (mm)")->check(CLI::NonNegativeNumber);
   app.add_flag("--json", opt->json, "Print JSON (keys: see core/metric/coverage_report.h) instead of text");
+  app.add_option("--report", opt->report_dir,
+                 "Also write a one-page layout report (report.md) into this folder: verdict, metric terms, what "
+                 "each controller contributes, coverage per reference pose");
   app.callback([opt] {
     lmc::Layout layout = lmc::load_layout_or_preset(opt->layout);
     if (opt->range_mm > 0) layout.sensor.range_mm = opt->range_mm;
@@ -49,27 +56,23 @@ void setup_evaluate(CLI::App& app) {
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     std::vector<std::string> slots;
     for (const auto& d : layout.devices) slots.push_back(d.slot);
-    const auto horizontal_idx = poses.indices_with(lmc::HandOrientation::kHorizontal);
-    const auto vertical_idx = poses.indices_with(lmc::HandOrientation::kVertical);
-    const lmc::OrientationCoverage split = lmc::coverage_by_orientation(table, horizontal_idx, vertical_idx);
-    const lmc::Coverage& all = split.all;
-    const lmc::Coverage& horizontal = split.horizontal;
-    const lmc::Coverage& vertical = split.vertical;
-    // The robust metric's terms and each controller's contribution (issue #15), same splits.
-    const lmc::RobustWeights weights;
-    std::vector<lmc::DeviceView> views;
-    for (const auto& d : layout.devices) views.push_back(lmc::DeviceView::from_device(d));
-    const auto limits = lmc::make_limits(lmc::VisibilityParams::from_sensor(layout.sensor, opt->radius_mm));
-    const double footprint = lmc::footprint_overlap_share(layout);
-    auto terms_of = [&](const std::vector<int>& idx, bool whole) {
-      if (!whole && idx.empty()) return lmc::RobustTerms{};
-      return lmc::robust_terms(lmc::tally_layout(views, prepared, limits, lmc::kAxisCutMm, idx), footprint, weights);
-    };
-    const lmc::LayoutTally all_tally = lmc::tally_layout(views, prepared, limits, lmc::kAxisCutMm);
-    const lmc::RobustTerms all_terms = lmc::robust_terms(all_tally, footprint, weights);
-    const lmc::RobustTerms horizontal_terms = terms_of(horizontal_idx, false);
-    const lmc::RobustTerms vertical_terms = terms_of(vertical_idx, false);
-    const auto contributions = lmc::controller_contributions(table, all_tally, slots);
+    // Coverage split by orientation, the robust terms and each controller's contribution: the
+    // layout report's numbers (core/metric/layout_report.h), computed once for text, JSON and --report.
+    const lmc::LayoutReport report = lmc::build_layout_report(layout, poses, prepared, lmc::RobustWeights{}, opt->radius_mm);
+    const lmc::Coverage& all = report.coverage.all;
+    const lmc::Coverage& horizontal = report.coverage.horizontal;
+    const lmc::Coverage& vertical = report.coverage.vertical;
+    const lmc::RobustWeights& weights = report.weights;
+    const lmc::RobustTerms& all_terms = report.terms_all;
+    const lmc::RobustTerms& horizontal_terms = report.terms_horizontal;
+    const lmc::RobustTerms& vertical_terms = report.terms_vertical;
+    const auto& contributions = report.controllers;
+    if (!opt->report_dir.empty()) {
+      std::filesystem::create_directories(opt->report_dir);
+      const auto md = std::filesystem::path(opt->report_dir) / "report.md";
+      lmc::write_file_atomically(md, lmc::format_layout_report_markdown(report));
+      std::cerr << "wrote " << md.string() << "\n";
+    }
     if (opt->json) {
       nlohmann::json j;
       j["layout"] = layout.name;

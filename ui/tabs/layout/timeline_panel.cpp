@@ -8,20 +8,6 @@
 #include "core/hand/reference_poses.h"
 
 namespace lmc::ui {
-namespace {
-
-const char* timeline_motion_words(HandMotion m) {
-  switch (m) {
-    case HandMotion::kOpen: return "open hand";
-    case HandMotion::kIndexFlexion: return "index flexion";
-    case HandMotion::kThumbFlexion: return "thumb flexion";
-    case HandMotion::kWristFlexion: return "wrist flexion";
-    case HandMotion::kWristExtension: return "wrist extension";
-  }
-  return "motion";
-}
-
-}  // namespace
 
 void TimelinePanel::draw() {
   LayoutTabState& s = *state_;
@@ -43,12 +29,12 @@ void TimelinePanel::draw() {
   if (p && !frames.empty()) {
     const PoseLabel& l = p->set.labels[static_cast<size_t>(t.frame)];
     // Words rather than the pose set's "horizontal/thumb" keys (issue #15).
-    const char* palm = l.orientation == HandOrientation::kHorizontal ? "palm down" : "palm left";
+    const std::string palm(orientation_words(l.orientation)), motion(motion_words(l.motion));
     if (l.motion == HandMotion::kOpen) {
-      std::snprintf(overlay, sizeof overlay, "frame %d: %s, open hand", t.frame, palm);
+      std::snprintf(overlay, sizeof overlay, "frame %d: %s, %s", t.frame, palm.c_str(), motion.c_str());
     } else {
-      std::snprintf(overlay, sizeof overlay, "frame %d: %s, %s at %.0f %%", t.frame, palm,
-                    timeline_motion_words(l.motion), l.progress * 100.0);
+      std::snprintf(overlay, sizeof overlay, "frame %d: %s, %s at %.0f %%", t.frame, palm.c_str(), motion.c_str(),
+                    l.progress * 100.0);
     }
   } else if (p) {
     std::snprintf(overlay, sizeof overlay, "no frames match the filters");

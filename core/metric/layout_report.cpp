@@ -1,0 +1,153 @@
+#include "core/metric/layout_report.h"
+
+
+#include "core/common/number_format.h"
+#include "core/hand/reference_poses.h"
+#include "core/metric/layout_tally.h"
+#include "core/visibility/visibility_kernel.h"
+
+namespace lmc {
+namespace {
+
+std::string report_percent(double share) { return format_fixed(100.0 * share, 1) + " %"; }
+
+// A weight as typed: 0.05, 1, 0.2 (no trailing zeros).
+std::string report_weight(double w) {
+  std::string s = format_fixed(w, 3);
+  while (!s.empty() && s.back() == '0') s.pop_back();
+  if (!s.empty() && s.back() == '.') s.pop_back();
+  return s;
+}
+
+}  // namespace
+
+LayoutReport build_layout_report(const Layout& layout, const PoseSet& poses, std::span<const PreparedFrame> prepared,
+                                 const RobustWeights& weights, double phalanx_radius_mm) {
+  LayoutReport r;
+  r.layout_name = layout.name;
+  r.layout_description = layout.description;
+  r.poses_description = poses.description;
+  r.weights = weights;
+  for (const auto& d : layout.devices) r.slots.push_back(d.slot);
+  const VisibilityTable table = compute_visibility(layout, prepared, phalanx_radius_mm);
+  const std::vector<int> horizontal = poses.indices_with(HandOrientation::kHorizontal);
+  const std::vector<int> vertical = poses.indices_with(HandOrientation::kVertical);
+  r.coverage = coverage_by_orientation(table, horizontal, vertical);
+
+  std::vector<DeviceView> views;
+  for (const auto& d : layout.devices) views.push_back(DeviceView::from_device(d));
+  const VisibilityLimits limits = make_limits(VisibilityParams::from_sensor(layout.sensor, phalanx_radius_mm));
+  const double footprint = footprint_overlap_share(layout);
+  const LayoutTally all = tally_layout(views, prepared, limits, kAxisCutMm);
+  r.terms_all = robust_terms(all, footprint, weights);
+  if (!horizontal.empty()) r.terms_horizontal = robust_terms(tally_layout(views, prepared, limits, kAxisCutMm, horizontal), footprint, weights);
+  if (!vertical.empty()) r.terms_vertical = robust_terms(tally_layout(views, prepared, limits, kAxisCutMm, vertical), footprint, weights);
+  r.controllers = controller_contributions(table, all, r.slots);
+  for (size_t i = 0; i < layout.devices.size(); ++i) {
+    for (size_t j = i + 1; j < layout.devices.size(); ++j) {
+      if (footprints_overlap(layout.devices[i], layout.devices[j])) r.overlapping_pairs.push_back(r.slots[i] + " and " + r.slots[j]);
+    }
+  }
+
+  for (int o = 0; o < kNumHandOrientations; ++o) {
+    for (int m = 0; m < kNumHandMotions; ++m) {
+      PoseCoverageRow row;
+      row.orientation = static_cast<HandOrientation>(o);
+      row.motion = static_cast<HandMotion>(m);
+      std::array<std::int64_t, kNumDigits> one{}, two{};
+      for (int j = 0; j < poses.size(); ++j) {
+        const PoseLabel& l = poses.labels[static_cast<size_t>(j)];
+        if (l.orientation != row.orientation || l.motion != row.motion) continue;
+        ++row.frames;
+        for (int k = 0; k < kNumDigits; ++k) {
+          int seeing = 0;
+          for (int d = 0; d < table.devices; ++d) seeing += (table.at(d, j) >> k) & 1;
+          one[static_cast<size_t>(k)] += seeing >= 1;
+          two[static_cast<size_t>(k)] += seeing >= 2;
+        }
+      }
+      if (row.frames == 0) continue;
+      for (size_t k = 0; k < static_cast<size_t>(kNumDigits); ++k) {
+        row.seen_by_one[k] = static_cast<double>(one[k]) / row.frames;
+        row.seen_by_two[k] = static_cast<double>(two[k]) / row.frames;
+      }
+      r.poses.push_back(row);
+    }
+  }
+  return r;
+}
+
+std::string format_layout_report_markdown(const LayoutReport& r) {
+  std::string md = "# Layout report: " + r.layout_name + "\n\n";
+  if (!r.layout_description.empty()) md += r.layout_description + "\n\n";
+  md += "Pose set: " + r.poses_description + ". Written by `lmc evaluate --report` (core/metric/layout_report.h).\n\n";
+
+  md += "## Verdict\n\n";
+  int idle = 0;
+  for (const auto& c : r.controllers) idle += c.counts ? 0 : 1;
+  md += "* M (the study's metric, lower is better): **" + format_fixed(r.terms_all.metric_m, 4) + "**; robust R: " +
+        format_fixed(r.terms_all.total, 4) + ".\n";
+  md += "* Every finger seen by at least two controllers in " + report_percent(redundant_share(r.coverage.all.c)) +
+        " of frames; some finger seen by none in " +
+        report_percent(r.coverage.all.frames > 0 ? static_cast<double>(r.coverage.all.c[0]) / r.coverage.all.frames : 0) +
+        ".\n";
+  if (idle == 0) {
+    md += "* Every controller counts: the layout is measurably worse without any one of them.\n";
+  } else {
+    for (const auto& c : r.controllers) {
+      if (!c.counts) md += "* **" + c.slot + " does not count**: the layout is as good without it (it sees some finger in " + report_percent(c.seeing_share) + " of frames).\n";
+    }
+  }
+  for (const auto& pair : r.overlapping_pairs) {
+    md += "* **" + pair + " overlap** on the table (their 80 x 30 mm footprints, offsets included): this layout cannot be built as written.\n";
+  }
+  md += "* Seen markers beyond the axis cut (250 mm on an axis of the controller that sees them): " +
+        report_percent(r.terms_all.axis_cut) + " of seeing controller-frames.\n\n";
+
+  md += "## Metric terms\n\n| term | weight | all | palm down | palm left |\n|---|---:|---:|---:|---:|\n";
+  struct TermRow {
+    const char* name;
+    double weight;
+    double RobustTerms::*field;
+  };
+  const TermRow rows[] = {{"M", 1.0, &RobustTerms::metric_m},
+                          {"redundancy (1 - share with every finger seen by 2+)", r.weights.redundancy, &RobustTerms::redundancy},
+                          {"participation shortfall", r.weights.participation, &RobustTerms::participation},
+                          {"axis cut", r.weights.axis_cut, &RobustTerms::axis_cut},
+                          {"centring (0 on axis)", r.weights.centring, &RobustTerms::centring},
+                          {"footprint overlap", r.weights.footprint, &RobustTerms::footprint},
+                          {"R", 0.0, &RobustTerms::total}};
+  for (const TermRow& t : rows) {
+    md += std::string("| ") + t.name + " | " + (t.field == &RobustTerms::total ? "" : report_weight(t.weight)) + " | " +
+          format_fixed(r.terms_all.*(t.field), 4) + " | " + format_fixed(r.terms_horizontal.*(t.field), 4) + " | " +
+          format_fixed(r.terms_vertical.*(t.field), 4) + " |\n";
+  }
+
+  md += "\n## What each controller contributes\n\n"
+        "| controller | sees some finger | only one seeing some finger | seen frames beyond the axis cut | palm off-centre | M without it | every finger 2+ without it | counts |\n"
+        "|---|---:|---:|---:|---:|---:|---:|---|\n";
+  for (const auto& c : r.controllers) {
+    md += "| " + c.slot + " | " + report_percent(c.seeing_share) + " | " + report_percent(c.sole_share) + " | " +
+          report_percent(c.cut_share) + " | " + format_fixed(c.off_centre, 3) + " | " +
+          format_fixed(c.metric_without, 4) + " | " + report_percent(c.redundant_without) + " | " +
+          (c.counts ? "yes" : "**no**") + " |\n";
+  }
+
+  md += "\n## Coverage per reference pose\n\nShare of the pose's frames in which each finger is seen by at least one "
+        "controller (and, after the slash, by two or more).\n\n| pose | frames |";
+  for (int k = 0; k < kNumDigits; ++k) md += " " + std::string(digit_name(k)) + " |";
+  md += "\n|---|---:|";
+  for (int k = 0; k < kNumDigits; ++k) md += "---:|";
+  md += "\n";
+  for (const auto& p : r.poses) {
+    md += "| " + std::string(orientation_words(p.orientation)) + ", " + std::string(motion_words(p.motion)) + " | " +
+          std::to_string(p.frames) + " |";
+    for (size_t k = 0; k < static_cast<size_t>(kNumDigits); ++k) {
+      md += " " + format_fixed(100.0 * p.seen_by_one[k], 0) + " / " + format_fixed(100.0 * p.seen_by_two[k], 0) + " % |";
+    }
+    md += "\n";
+  }
+  return md;
+}
+
+}  // namespace lmc
