@@ -1,6 +1,7 @@
 #include "core/session/protocol.h"
 
 #include <algorithm>
+#include <cstdio>
 #include <set>
 
 #include "core/common/error.h"
@@ -71,7 +72,7 @@ TrialType trial_type_from_json(const JsonReader& r, const QualityThresholds& def
 Protocol protocol_from_json(const nlohmann::json& j, const std::string& source) {
   const JsonReader r(j, source);
   r.only_keys({"format", "format_version", "name", "description", "repetitions", "layouts", "poses", "quality",
-               "trial_types"});
+               "trial_types", "calibration"});
   if (r.string("format") != kFormat) r.at("format").fail(std::string("expected \"") + kFormat + "\"");
   if (r.at("format_version").integer() != 1) r.at("format_version").fail("this version reads format_version 1");
   Protocol p;
@@ -114,6 +115,19 @@ Protocol protocol_from_json(const nlohmann::json& j, const std::string& source) 
     if (!seen.insert("type:" + t.key).second) types.at(i).at("key").fail("trial type key '" + t.key + "' appears twice");
     p.trial_types.push_back(std::move(t));
   }
+  if (r.has("calibration")) {
+    const JsonReader c = r.at("calibration");
+    c.only_keys({"duration_s", "operator_cue", "subject_cue"});
+    CalibrationStep step;
+    if (c.has("duration_s")) {
+      const JsonReader d = c.at("duration_s");
+      step.duration_s = d.number();
+      if (!(step.duration_s >= 2 && step.duration_s <= 60)) d.fail("must be 2…60 s (a still hand for a few seconds)");
+    }
+    step.operator_cue = c.string_or("operator_cue", step.operator_cue);
+    step.subject_cue = c.string_or("subject_cue", step.subject_cue);
+    p.calibration = step;
+  }
   // Every name the plan will produce must be a valid file name; check once, here, so an error
   // names the protocol file rather than surfacing mid-session.
   for (const PlannedTrial& t : plan_trials(p))
@@ -140,7 +154,18 @@ nlohmann::json protocol_to_json(const Protocol& p) {
                                 {"rom", rom},
                                 {"quality", quality_thresholds_to_json(t.quality)}});
   }
+  if (p.calibration) {
+    j["calibration"] = {{"duration_s", p.calibration->duration_s},
+                        {"operator_cue", p.calibration->operator_cue},
+                        {"subject_cue", p.calibration->subject_cue}};
+  }
   return j;
+}
+
+std::string calibration_trial_name(const std::string& layout_key, int attempt) {
+  char digits[8];
+  std::snprintf(digits, sizeof digits, "%02d", std::clamp(attempt, 0, 99));
+  return "Calib_" + layout_key + digits;
 }
 
 fs::path protocol_path(const std::string& name_or_path) {

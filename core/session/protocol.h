@@ -40,9 +40,19 @@ struct TrialType {
   QualityThresholds quality;
 };
 
+// An optional calibration at the start of every layout block (issue #13): a short trial of a
+// still open hand from which the block's controllers are calibrated (core/calibration) before
+// its first trial; the result becomes the block's layout in the manifest.
+struct CalibrationStep {
+  double duration_s = 5;   // 2…60
+  std::string operator_cue = "Check every controller sees the hand; keep the hand still";
+  std::string subject_cue = "Hold your open hand still above the controllers";
+};
+
 struct Protocol {
   std::string name;          // "study", "quick"
   std::string description;
+  std::optional<CalibrationStep> calibration;  // absent: blocks start without one
   std::vector<ProtocolLayout> layouts;
   std::vector<ProtocolPose> poses;
   std::vector<TrialType> trial_types;
@@ -63,6 +73,10 @@ struct PlannedTrial {
 // Parses and validates; `source` names the file in errors ("study.json#/trial_types/2/duration_s").
 Protocol protocol_from_json(const nlohmann::json& j, const std::string& source);
 nlohmann::json protocol_to_json(const Protocol& protocol);
+
+// The name of a block's calibration trial, attempt `attempt` (1…99): "Calib_<layout key>NN". It
+// cannot be a plan name (those are <key>_<type>…), so the two never share files.
+std::string calibration_trial_name(const std::string& layout_key, int attempt);
 
 // A path, or a name of assets/protocols/ ("study", "quick").
 Protocol load_protocol(const std::string& name_or_path);

@@ -212,6 +212,32 @@ void SessionFolder::preflight_override(const std::string& block, const std::stri
   record({{"type", "preflight_override"}, {"block", block}, {"reason", reason}});
 }
 
+int SessionFolder::calibration_started(const std::string& block) {
+  if (!state_.protocol.calibration) throw Error("the session's protocol has no calibration step");
+  if (!state_.setup.layouts.contains(block)) throw Error("the session has no layout block '" + block + "'");
+  const auto it = state_.calibration.find(block);
+  const int attempt = (it == state_.calibration.end() ? 0 : it->second.attempt) + 1;
+  if (attempt > 99) throw Error("block " + block + " has been calibrated 99 times; keep its nominal layout");
+  record({{"type", "calibration_started"},
+          {"block", block},
+          {"attempt", attempt},
+          {"trial", calibration_trial_name(block, attempt)}});
+  return attempt;
+}
+
+void SessionFolder::calibration_applied(const std::string& block, int attempt, const nlohmann::json& layout,
+                                        const nlohmann::json& summary) {
+  record({{"type", "calibration_applied"}, {"block", block}, {"attempt", attempt}, {"layout", layout}, {"summary", summary}});
+}
+
+void SessionFolder::calibration_kept_nominal(const std::string& block, const std::string& reason,
+                                             const nlohmann::json& summary) {
+  if (reason.empty()) throw Error("keeping the nominal layout needs a reason (it goes into the journal)");
+  nlohmann::json e = {{"type", "calibration_kept_nominal"}, {"block", block}, {"reason", reason}};
+  if (!summary.is_null()) e["summary"] = summary;
+  record(e);
+}
+
 int SessionFolder::trial_started(int i) {
   require_trial(i);
   const auto& t = state_.trials[static_cast<size_t>(i)];

@@ -70,6 +70,15 @@ class SessionFolder {
   void note(int i, const std::string& text);  // i = -1: a note on the whole session
   void device_event(const std::string& slot, const std::string& message);
 
+  // A block's calibration step (Protocol::calibration). Started returns the new attempt's number;
+  // its trial files are named calibration_trial_name(block, attempt), never reused. Applied makes
+  // `layout` the block's layout in the manifest (the nominal one is kept beside it); kept-nominal
+  // goes back to the layout the block was created with.
+  int calibration_started(const std::string& block);
+  void calibration_applied(const std::string& block, int attempt, const nlohmann::json& layout,
+                           const nlohmann::json& summary);
+  void calibration_kept_nominal(const std::string& block, const std::string& reason, const nlohmann::json& summary);
+
  private:
   SessionFolder(std::filesystem::path dir, SessionState state, JournalWriter journal, int lock_fd);
   void write_manifest() const;

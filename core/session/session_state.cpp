@@ -147,6 +147,13 @@ TrialState& event_trial(SessionState& st, const JsonReader& e) {
   return t;
 }
 
+// The block a calibration event is about, checked against the protocol's layouts.
+std::string calibration_block(const SessionState& st, const JsonReader& e) {
+  const std::string block = e.string("block");
+  if (!st.setup.layouts.contains(block)) e.at("block").fail("the session has no layout block '" + block + "'");
+  return block;
+}
+
 AttemptState& event_attempt(TrialState& t, const JsonReader& e) {
   const JsonReader a = e.at("attempt");
   const int n = a.integer();
@@ -207,6 +214,32 @@ void apply_journal_event(SessionState& st, const nlohmann::json& event, const st
   } else if (type == "note") {
     if (e.has("trial")) event_trial(st, e).notes.push_back(e.string("text"));
     else st.setup.notes += (st.setup.notes.empty() ? "" : "\n") + e.string("text");
+  } else if (type == "calibration_started") {
+    const std::string block = calibration_block(st, e);
+    BlockCalibrationState& c = st.calibration[block];
+    c.status = "recording";
+    c.attempt = e.at("attempt").integer();
+    c.trial = e.string("trial");
+    c.summary = nullptr;
+    c.reason.clear();
+  } else if (type == "calibration_applied") {
+    const std::string block = calibration_block(st, e);
+    const JsonReader layout = e.at("layout");
+    layout_from_json(layout.json(), where + "#/layout");  // validates it before it replaces the block's
+    if (!st.nominal_layouts.contains(block)) st.nominal_layouts[block] = st.setup.layouts[block];
+    st.setup.layouts[block] = layout.json();
+    BlockCalibrationState& c = st.calibration[block];
+    c.status = "applied";
+    c.attempt = e.at("attempt").integer();
+    c.summary = e.has("summary") ? e.at("summary").json() : nlohmann::json(nullptr);
+  } else if (type == "calibration_kept_nominal") {
+    const std::string block = calibration_block(st, e);
+    // Back to the layout the block was created with, whatever an earlier calibration applied.
+    if (auto it = st.nominal_layouts.find(block); it != st.nominal_layouts.end()) st.setup.layouts[block] = it->second;
+    BlockCalibrationState& c = st.calibration[block];
+    c.status = "nominal";
+    c.reason = e.string_or("reason", "");
+    if (e.has("summary")) c.summary = e.at("summary").json();
   } else if (type == "device_event" || type == "session_opened") {
     // Kept in the journal for the record; they do not change where trials stand.
   } else {
@@ -249,6 +282,17 @@ nlohmann::json session_manifest_json(const SessionState& st) {
   nlohmann::json overrides = nlohmann::json::object();
   for (const auto& [block, reason] : st.preflight_override) overrides[block] = reason;
   j["preflight_override"] = overrides;
+  if (st.protocol.calibration) {
+    nlohmann::json cal = nlohmann::json::object();
+    for (const auto& [block, c] : st.calibration) {
+      cal[block] = {{"status", c.status}, {"attempt", c.attempt}, {"trial", c.trial}, {"summary", c.summary}};
+      if (!c.reason.empty()) cal[block]["reason"] = c.reason;
+    }
+    j["calibration"] = cal;
+    nlohmann::json nominal = nlohmann::json::object();
+    for (const auto& [block, layout] : st.nominal_layouts) nominal[block] = layout;
+    j["nominal_layouts"] = nominal;
+  }
   j["journal_events"] = st.events;
   j["updated_utc"] = st.last_event_utc;
   return j;

@@ -68,12 +68,26 @@ nlohmann::json session_setup_to_json(const SessionSetup& setup);
 // Validates (subject id, handedness, sizes, protocol, one layout per block); errors name `source`.
 SessionSetup session_setup_from_json(const nlohmann::json& j, const std::string& source);
 
+// Where a block's calibration step (Protocol::calibration) stands. `recording` after a crash means
+// the step was cut off: it is done again. The block's layout in setup.layouts is the calibrated
+// one once `applied`; the layout it was calibrated from stays in SessionState::nominal_layouts.
+struct BlockCalibrationState {
+  std::string status;      // "" (not yet) | recording | applied | nominal (the operator kept the nominal layout)
+  int attempt = 0;         // the latest attempt (its trial is calibration_trial_name(block, attempt))
+  std::string trial;
+  nlohmann::json summary;  // per controller: correction, residual before/after, warnings (null until fitted)
+  std::string reason;      // why the nominal layout was kept
+  bool done() const { return status == "applied" || status == "nominal"; }
+};
+
 struct SessionState {
   SessionSetup setup;
   Protocol protocol;  // parsed from setup.protocol
   std::vector<TrialState> trials;  // the plan, in order
   std::map<std::string, nlohmann::json> preflight;  // block → its latest pre-flight report
   std::map<std::string, std::string> preflight_override;  // block → the operator's reason
+  std::map<std::string, BlockCalibrationState> calibration;  // block → its calibration step
+  std::map<std::string, nlohmann::json> nominal_layouts;     // block → its layout before calibration
   int events = 0;                  // journal events applied
   std::string last_event_utc;
   std::vector<std::string> warnings;  // e.g. a cut last journal line that was ignored

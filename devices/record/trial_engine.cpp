@@ -176,7 +176,7 @@ struct TrialEngine::Run {
     RecorderConfig rc;
     rc.output_dir = cfg.output_dir;
     rc.trial = trial;
-    rc.layout = hub.layout();
+    rc.layout = cfg.sidecar_layout ? *cfg.sidecar_layout : hub.layout();
     rc.backend = cfg.backend;
     rc.extra = cfg.extra;
     rc.open_sink = cfg.open_sink;

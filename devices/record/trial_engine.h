@@ -78,6 +78,9 @@ struct TrialEngineConfig {
   std::optional<std::pair<std::string, std::uint16_t>> vicon_listen;  // wait for Vicon's CaptureStart instead (address, port)
   bool allow_overwrite = false;                                       // lmc record --force only
   nlohmann::json extra = nlohmann::json::object();  // into the sidecar's extra (simulator config, session info…)
+  // The layout the sidecar records (what processing realigns with) when it is not the hub's: a
+  // session block's calibrated layout, while the hub keeps the one the controllers were set up by.
+  std::optional<Layout> sidecar_layout;
   std::function<std::unique_ptr<ByteSink>(const std::filesystem::path&)> open_sink;  // tests
   std::string stopped_by = "operator";  // sidecar "stopped_by" when the stop token ends the trial
 };

@@ -3,6 +3,8 @@
 #include <cmath>
 #include <sstream>
 
+#include "core/calibration/calibrated_layout.h"
+#include "core/calibration/calibration_summary.h"
 #include "core/common/error.h"
 #include "core/io/json_checked.h"
 #include "core/io/layout_json.h"
@@ -74,18 +76,31 @@ const Layout& SessionRunner::layout_for(int i) const {
   return it->second;
 }
 
+Layout SessionRunner::nominal_layout_for(int i) const {
+  const std::string& key = plan_.at(static_cast<size_t>(i)).layout_key;
+  const auto& nominal = folder_.state().nominal_layouts;
+  if (auto it = nominal.find(key); it != nominal.end())
+    return layout_from_json(it->second, (folder_.dir() / "session.json").string() + "#/nominal_layouts/" + key);
+  return layout_for(i);
+}
+
 bool SessionRunner::needs_preflight(int i) const {
   return !cleared_blocks_.contains(plan_.at(static_cast<size_t>(i)).layout_key);
 }
 
-std::unique_ptr<SessionRunner::Rig> SessionRunner::make_rig(int i, double duration_s, std::uint64_t seed) const {
+std::unique_ptr<SessionRunner::Rig> SessionRunner::make_rig(int i, double duration_s, std::uint64_t seed,
+                                                            const std::string& motion) const {
   const SourceSpec spec = parse_source_spec(options_.backend);
   const PlannedTrial& p = plan_.at(static_cast<size_t>(i));
   SourceSettings settings;
-  settings.layout = layout_for(i);
+  // The controllers stand where the block's layout was set up; a calibration changes what the
+  // session believes about them, not where they are (the simulator's truth stays put).
+  settings.layout = nominal_layout_for(i);
   settings.sim = options_.sim;
   settings.sim.seed = seed;
-  apply_motion_spec(settings.sim, p.sim_motion);
+  // One placement error for the whole session (sim_config.h): the controllers do not move between trials.
+  settings.sim.calibration_seed = options_.sim.calibration_seed.value_or(options_.sim.seed);
+  apply_motion_spec(settings.sim, motion.empty() ? p.sim_motion : motion);
   settings.speed = options_.fast ? 0.0 : 1.0;
   settings.duration_s = spec.backend == "sim" ? duration_s : 0.0;
   HubOptions hub_options;
@@ -210,6 +225,9 @@ AttemptResult SessionRunner::run_trial(int i, std::stop_token stop,
     config.vicon = vc;
   }
   config.backend = parse_source_spec(options_.backend).backend;
+  // A calibrated block's trials carry the calibrated layout in their sidecars, so processing
+  // realigns them with it (the hub keeps the layout the controllers were set up by).
+  if (folder_.state().nominal_layouts.contains(p.layout_key)) config.sidecar_layout = layout_for(i);
   config.extra["session"] = {{"subject", folder_.state().subject().subject_id},
                              {"attempt", result.attempt},
                              {"protocol", protocol_.name},
@@ -300,6 +318,110 @@ void SessionRunner::accept(int i) { folder_.trial_accepted(i); }
 void SessionRunner::redo(int i) { folder_.redo(i); }
 
 void SessionRunner::note(int i, const std::string& text) { folder_.note(i, text); }
+
+bool SessionRunner::needs_calibration(int i) const {
+  if (!protocol_.calibration) return false;
+  const auto& cal = folder_.state().calibration;
+  const auto it = cal.find(plan_.at(static_cast<size_t>(i)).layout_key);
+  return it == cal.end() || !it->second.done();
+}
+
+BlockCalibration SessionRunner::calibrate_block(int i, std::stop_token stop,
+                                                const std::function<void(const TrialSnapshot&)>& on_status) {
+  if (!protocol_.calibration) throw Error("the session's protocol has no calibration step");
+  const PlannedTrial& p = plan_.at(static_cast<size_t>(i));
+  const session::CalibrationStep& step = *protocol_.calibration;
+  BlockCalibration out;
+  out.trial = i;
+  out.block = p.layout_key;
+  // Journal first: a process that dies from here on leaves the step "recording", done again on resume.
+  out.attempt = folder_.calibration_started(p.layout_key);
+  out.trial_name = session::calibration_trial_name(p.layout_key, out.attempt);
+  // The block's layout as created: a second calibration starts from it, not from the first's result.
+  const Layout nominal = nominal_layout_for(i);
+
+  TrialEngineConfig config;
+  config.output_dir = folder_.dir();
+  config.trial = out.trial_name;
+  config.seconds = step.duration_s;
+  config.countdown_s = options_.fast ? 0.0 : options_.countdown_s;
+  config.stream_timeout_s = options_.stream_timeout_s;
+  if (auto target = vicon_target()) {
+    ViconTriggerConfig vc = parse_vicon_target(*target);
+    const auto& vicon = folder_.state().setup.vicon;
+    if (vicon.contains("database_path")) vc.database_path = vicon["database_path"].get<std::string>();
+    vc.description = step.operator_cue;
+    config.vicon = vc;
+  }
+  config.backend = parse_source_spec(options_.backend).backend;
+  config.extra["session"] = {{"subject", folder_.state().subject().subject_id},
+                             {"attempt", out.attempt},
+                             {"protocol", protocol_.name},
+                             {"block", p.layout_key},
+                             {"calibration", true}};
+  TrialResult tr;
+  try {
+    std::unique_ptr<Rig> own_rig;
+    Rig* rig = nullptr;
+    Rig external;
+    if (options_.external_hub != nullptr) {
+      external.hub_ref = options_.external_hub;
+      rig = &external;
+    } else if (hardware_rig_ && hardware_block_ == p.layout_key) {
+      rig = hardware_rig_.get();
+    } else {
+      // The simulated subject holds the trial's palm pose still (the step's cue).
+      own_rig = make_rig(i, step.duration_s, options_.sim.seed + 31ULL * static_cast<std::uint64_t>(out.attempt),
+                         protocol_.poses.at(static_cast<size_t>(p.pose)).key + "/static");
+      rig = own_rig.get();
+    }
+    if (rig->sim != nullptr) config.extra["simulator"] = sim_config_to_json(options_.sim);
+    TrialEngine engine(rig->get(), rig->sim, config);
+    tr = engine.run(stop, on_status);
+  } catch (const std::exception& e) {
+    tr.outcome = TrialOutcome::kFailed;
+    tr.reason = e.what();
+  }
+  if (tr.outcome != TrialOutcome::kCompleted) {
+    out.failure = "the calibration trial " + std::string(trial_outcome_name(tr.outcome)) +
+                  (tr.reason.empty() ? std::string() : ": " + tr.reason);
+    return out;
+  }
+  try {
+    calibration::TrialCalibrationRequest request;
+    const TrialFiles files = trial_files(folder_.dir(), out.trial_name);
+    request.trial = files.recording;
+    // The trial's Vicon file: where Vicon exports, else beside the recording (where the simulator
+    // writes its truth and where a lab may copy the export).
+    for (const fs::path& dir : {options_.vicon_export_dir.value_or(fs::path()), folder_.dir()}) {
+      if (dir.empty() || request.vicon) continue;
+      if (const fs::path trc = dir / (out.trial_name + ".trc"); fs::exists(trc)) request.vicon = trc;
+    }
+    out.fit = calibration::calibrate_trial(request, nominal);
+    out.summary = calibration::calibration_summary_json(out.fit->result);
+    out.residual_table = calibration::residual_table(out.fit->result);
+    out.warnings = out.fit->result.all_warnings();
+    for (const auto& w : out.fit->file_warnings) out.warnings.push_back(w);
+  } catch (const std::exception& e) {
+    out.fit.reset();
+    out.failure = std::string("the calibration trial cannot be calibrated: ") + e.what();
+  }
+  return out;
+}
+
+void SessionRunner::apply_calibration(const BlockCalibration& c) {
+  if (!c.ok()) throw Error("block " + c.block + " has no calibration to apply: " + c.failure);
+  folder_.calibration_applied(c.block, c.attempt, layout_to_json(c.fit->calibrated), c.summary);
+  layouts_[c.block] = c.fit->calibrated;
+  // The controllers moved on paper: the block's pre-flight still holds (same rig, same slots).
+}
+
+void SessionRunner::keep_nominal_layout(int i, const std::string& reason, const BlockCalibration* c) {
+  const std::string& block = plan_.at(static_cast<size_t>(i)).layout_key;
+  folder_.calibration_kept_nominal(block, reason, c != nullptr ? c->summary : nlohmann::json(nullptr));
+  const auto& layouts = folder_.state().setup.layouts;
+  layouts_[block] = layout_from_json(layouts.at(block), (folder_.dir() / "session.json").string() + "#/layouts/" + block);
+}
 
 std::string SessionRunner::block_instructions(int i) const {
   const Layout& layout = layout_for(i);

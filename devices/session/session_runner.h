@@ -17,6 +17,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "core/calibration/calibrate_trial.h"
 #include "core/session/protocol.h"
 #include "core/session/session_folder.h"
 #include "core/session/trial_quality.h"
@@ -41,6 +42,20 @@ struct SessionRunOptions {
   // controllers would fight over them. Its layout's slot names must be the session's, in order
   // (the pre-flight says so when they are not); it must outlive the runner.
   DeviceHub* external_hub = nullptr;
+};
+
+// A block's calibration step as the runner did it: recorded, fitted, not yet applied.
+struct BlockCalibration {
+  int trial = -1;              // the plan trial whose block this is
+  std::string block;
+  int attempt = 0;
+  std::string trial_name;      // Calib_<block>NN
+  std::string failure;         // why there is no fit (the recording failed, too little hand): empty when fitted
+  std::optional<calibration::TrialCalibration> fit;
+  nlohmann::json summary;      // calibration_summary_json of the fit (null without one)
+  std::string residual_table;  // calibration::residual_table, for people
+  std::vector<std::string> warnings;  // every warning a person must see before applying
+  bool ok() const { return fit.has_value(); }
 };
 
 // What happened to one attempt, as the runner journaled it.
@@ -89,14 +104,31 @@ class SessionRunner {
   void redo(int i);
   void note(int i, const std::string& text);
 
+  // The calibration step (Protocol::calibration, issue #13). True when trial `i`'s block has one
+  // and it is not done (applied, or the nominal layout kept) in this session's journal. Run it
+  // after the block's pre-flight and before its first trial.
+  bool needs_calibration(int i) const;
+  // Journals the start, records a still open hand for the protocol's duration as trial
+  // Calib_<block>NN (the same trial engine and files as any trial) and calibrates it against the
+  // block's nominal layout: with the trial's Vicon file (<trial>.trc in vicon_export_dir or the
+  // session folder) when there is one, else the controllers against each other. Applies nothing: the operator looks first.
+  BlockCalibration calibrate_block(int i, std::stop_token stop = {},
+                                   const std::function<void(const TrialSnapshot&)>& on_status = {});
+  // The fit becomes the block's layout (journaled; the next trials record with it).
+  void apply_calibration(const BlockCalibration& c);
+  // The block keeps its nominal layout; the reason (and the fit, if any) are journaled.
+  void keep_nominal_layout(int i, const std::string& reason, const BlockCalibration* c = nullptr);
+
   // What the operator sets up before trial `i`'s block: the layout's name and each controller's
   // target position, in words.
   std::string block_instructions(int i) const;
 
  private:
   struct Rig;
-  std::unique_ptr<Rig> make_rig(int i, double duration_s, std::uint64_t seed) const;
+  // The rig for trial `i`'s block; `motion` overrides the trial's simulated motion ("horizontal/static").
+  std::unique_ptr<Rig> make_rig(int i, double duration_s, std::uint64_t seed, const std::string& motion = {}) const;
   const Layout& layout_for(int i) const;
+  Layout nominal_layout_for(int i) const;  // before any calibration of the block
   std::uint64_t bytes_still_needed(int from) const;
   std::optional<std::string> vicon_target() const;  // "HOST[:PORT]" when the session triggers Vicon
 

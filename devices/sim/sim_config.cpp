@@ -63,7 +63,7 @@ SimConfig sim_config_from_json(const nlohmann::json& j, const std::string& sourc
   JsonReader r(j, source);
   r.require_object();
   // A misspelt switch ("noize": false) must not leave the behaviour on in silence.
-  r.only_keys({"seed", "motion", "pose_set_rate_hz", "motion_period_s", "sway_mm", "hand_length_mm",
+  r.only_keys({"seed", "calibration_seed", "motion", "pose_set_rate_hz", "motion_period_s", "sway_mm", "hand_length_mm",
                "hand_breadth_mm", "rate_min_hz", "rate_max_hz", "rate_wander", "latency_min_ms", "latency_max_ms",
                "noise", "noise_sigma_mm", "fov_test", "range_mm", "occlusion", "phalanx_radius_mm",
                "internal_model_bias", "axis_cut", "axis_cut_mm", "elbow_error", "elbow_error_min_mm",
@@ -71,6 +71,7 @@ SimConfig sim_config_from_json(const nlohmann::json& j, const std::string& sourc
                "calibration_random_translation_mm", "calibration_random_rotation_deg", "unplugs", "serial_prefix",
                "truth_rate_hz", "device_clock_start_us"});
   if (r.has("seed")) c.seed = static_cast<std::uint64_t>(r.at("seed").integer());
+  if (r.has("calibration_seed")) c.calibration_seed = static_cast<std::uint64_t>(r.at("calibration_seed").integer());
   if (r.has("motion")) {
     try {
       apply_motion_spec(c, r.string("motion"));
@@ -154,6 +155,7 @@ SimConfig sim_config_from_json(const nlohmann::json& j, const std::string& sourc
 nlohmann::json sim_config_to_json(const SimConfig& c) {
   nlohmann::json j;
   j["seed"] = c.seed;
+  if (c.calibration_seed) j["calibration_seed"] = *c.calibration_seed;
   j["motion"] = motion_spec(c);
   j["pose_set_rate_hz"] = c.pose_set_rate_hz;
   j["motion_period_s"] = c.motion_period_s;

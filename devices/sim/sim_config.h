@@ -41,6 +41,10 @@ struct SimUnplug {
 
 struct SimConfig {
   std::uint64_t seed = 1;
+  // Seed of the random calibration error alone (default: `seed`). A session gives every trial its
+  // own `seed` but one calibration seed, so its controllers stand in the same wrong places in every
+  // trial, as real ones do between calibrations.
+  std::optional<std::uint64_t> calibration_seed;
   // Motion: one of the study's motions, or a pose-set file played in a loop.
   HandOrientation orientation = HandOrientation::kHorizontal;
   HandMotion motion = HandMotion::kOpen;

@@ -122,7 +122,7 @@ SimRig::SimRig(Layout layout, SimConfig config)
       turn = angles.rotation();
     }
     if (config_.calibration_random_translation_mm > 0 || config_.calibration_random_rotation_deg > 0) {
-      std::mt19937_64 cal(mix(config_.seed, 200 + i));
+      std::mt19937_64 cal(mix(config_.calibration_seed.value_or(config_.seed), 200 + i));
       std::normal_distribution<double> gauss(0, 1);
       std::uniform_real_distribution<double> u01(0, 1);
       const Vec3 dir = Vec3(gauss(cal), gauss(cal), gauss(cal)).normalized();

@@ -17,6 +17,7 @@
 
 #include "core/io/lmc_recording.h"
 #include "tests/support/cli_runner.h"
+#include "core/common/paths.h"
 #include "tests/support/reference_data.h"
 
 namespace session_cli_test {  // named: test files share unity batches
@@ -164,6 +165,42 @@ TEST(LmcSession, KillMidTrialLosesAtMostASecondAndTheNextRunResumes) {
   EXPECT_TRUE(journaled);
   const auto manifest = nlohmann::json::parse(lmc::test::read_text_file(session / "session.json"));
   EXPECT_EQ(manifest["trials"][0]["status"], "accepted");
+}
+
+TEST(LmcSession, ACalibratingProtocolCalibratesEachBlockFirstOrSkipsItWhenTold) {
+  const auto dir = lmc::test::scratch_dir("session_calibrating");
+  nlohmann::json protocol = nlohmann::json::parse(std::ifstream(lmc::assets_dir() / "protocols" / "quick.json"));
+  protocol["name"] = "quick-calibrated";
+  protocol["calibration"] = {{"duration_s", 3}};
+  const fs::path protocol_file = dir / "quick-calibrated.json";
+  std::ofstream(protocol_file) << protocol.dump();
+  const fs::path sim = dir / "sim.json";
+  std::ofstream(sim) << R"({"calibration_random_translation_mm": 25, "calibration_random_rotation_deg": 3})";
+  for (const bool skip : {false, true}) {
+    const fs::path session = dir / (skip ? "S02" : "S01");
+    CliRun r = run_lmc("session new --subject " + std::string(skip ? "S02" : "S01") + " --protocol " + q(protocol_file) +
+                           " --seconds 1 -o " + q(session),
+                       dir / "new");
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    r = run_lmc("session run " + q(session) + " --auto --fast --quiet --sim-config " + q(sim) +
+                    (skip ? " --skip-calibration 'rehearsal'" : ""),
+                dir / "run");
+    ASSERT_EQ(r.exit_code, 0) << r.err << r.out;
+    const nlohmann::json st = status_of(session, dir / "status");
+    const auto& cal = st.at("calibration").at("Naiv");
+    if (skip) {
+      EXPECT_EQ(cal.at("status"), "nominal");
+      EXPECT_THAT(cal.at("reason").get<std::string>(), HasSubstr("rehearsal"));
+      EXPECT_FALSE(fs::exists(session / "LMC_Calib_Naiv01.raw.txt"));
+    } else {
+      EXPECT_THAT(r.out, HasSubstr("Residuals, RMS mm before > after calibration (against Vicon)"));
+      EXPECT_EQ(cal.at("status"), "applied") << r.out;
+      EXPECT_EQ(cal.at("trial"), "Calib_Naiv01");
+      EXPECT_TRUE(fs::exists(session / "LMC_Calib_Naiv01.raw.txt"));
+      EXPECT_THAT(r.out, HasSubstr("calibration of block Naiv: applied (Calib_Naiv01)"));
+    }
+    for (const auto& t : st.at("trials")) EXPECT_EQ(t.at("status"), "accepted") << t.dump();
+  }
 }
 
 TEST(LmcSession, SubjectIdsThatCouldEscapeTheFolderAreRefused) {

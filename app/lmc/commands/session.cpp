@@ -97,7 +97,11 @@ nlohmann::json status_json(const lmc::session::SessionState& st, const fs::path&
                       {"attempt_history", attempts},
                       {"qc", qc}});
   }
+  nlohmann::json calibration = nlohmann::json::object();
+  for (const auto& [block, c] : st.calibration)
+    calibration[block] = {{"status", c.status}, {"attempt", c.attempt}, {"trial", c.trial}, {"reason", c.reason}, {"summary", c.summary}};
   return {{"subject", st.subject().subject_id},
+          {"calibration", calibration},
           {"protocol", st.protocol.name},
           {"folder", dir.string()},
           {"next_trial", st.next_trial() < 0 ? nlohmann::json(nullptr) : nlohmann::json(st.trials[static_cast<size_t>(st.next_trial())].plan.name)},
@@ -121,6 +125,12 @@ void print_status(const lmc::session::SessionState& st, const fs::path& dir) {
     }
     std::cout << "\n";
   }
+  for (const auto& [block, c] : st.calibration) {
+    std::cout << "calibration of block " << block << ": " << (c.status.empty() ? "not yet" : c.status);
+    if (c.attempt > 0) std::cout << " (" << c.trial << ")";
+    if (!c.reason.empty()) std::cout << ": " << c.reason;
+    std::cout << "\n";
+  }
   std::cout << accepted << " of " << j["trials"].size() << " trials accepted";
   if (!j["next_trial"].is_null()) std::cout << "; next: " << j["next_trial"].get<std::string>();
   std::cout << "\n";
@@ -130,7 +140,7 @@ void print_status(const lmc::session::SessionState& st, const fs::path& dir) {
 // ---- run ------------------------------------------------------------------------------------
 
 struct RunArgs {
-  std::string dir, backend = "sim", sim_config, override_reason, vicon_export;
+  std::string dir, backend = "sim", sim_config, override_reason, vicon_export, skip_calibration;
   bool fast = false, automatic = false, quiet = false;
   long long seed = -1;
   double countdown_s = 3, stream_timeout_s = 10;
@@ -225,6 +235,70 @@ bool clear_preflight(SessionRunner& runner, int i, const RunArgs& a, bool intera
   }
 }
 
+// The block's calibration step when the protocol has one and it is not done (issue #13). --auto
+// applies a fit without warnings, calibrates once more otherwise, and then keeps the nominal
+// layout saying why; interactively the operator reads the residual table and decides. False when
+// the operator stops.
+bool clear_calibration(SessionRunner& runner, int i, const RunArgs& a, bool interactive) {
+  if (!runner.needs_calibration(i)) return true;
+  const std::string block = runner.plan()[static_cast<size_t>(i)].layout_key;
+  if (!a.skip_calibration.empty()) {
+    runner.keep_nominal_layout(i, "calibration skipped: " + a.skip_calibration);
+    std::cout << "block " << block << ": calibration skipped (" << a.skip_calibration << "), nominal layout kept\n";
+    return true;
+  }
+  const auto& step = *runner.protocol().calibration;
+  for (int tries = 0;; ++tries) {
+    std::cout << "\ncalibration of block " << block << " (" << step.duration_s << " s)\n  operator: " << step.operator_cue
+              << "\n  subject:  " << step.subject_cue << "\n";
+    if (interactive) {
+      std::cout << "Enter: record · n: keep the nominal layout · q: stop\n> " << std::flush;
+      std::string line;
+      if (!std::getline(std::cin, line) || line == "q") return false;
+      if (line == "n") {
+        runner.keep_nominal_layout(i, "the operator kept the nominal layout");
+        return true;
+      }
+    }
+    std::stop_source stop;
+    InterruptWatch watch(stop);
+    const BlockCalibration c = runner.calibrate_block(i, stop.get_token());
+    if (!c.ok()) {
+      std::cout << c.trial_name << ": no calibration: " << c.failure << "\n";
+      if (lmc::cli::sigint_raised()) return false;
+    } else {
+      std::cout << c.trial_name << ":\n" << c.residual_table;
+    }
+    if (interactive) {
+      std::cout << (c.ok() ? "a: apply · " : "") << "Enter: calibrate again · n: keep the nominal layout · q: stop\n> "
+                << std::flush;
+      std::string line;
+      if (!std::getline(std::cin, line) || line == "q") return false;
+      if (line == "a" && c.ok()) {
+        runner.apply_calibration(c);
+        std::cout << "block " << block << " now records with '" << c.fit->calibrated.name << "'\n";
+        return true;
+      }
+      if (line == "n") {
+        runner.keep_nominal_layout(i, "the operator kept the nominal layout", &c);
+        return true;
+      }
+      continue;
+    }
+    if (c.ok() && c.warnings.empty()) {
+      runner.apply_calibration(c);
+      std::cout << "block " << block << " now records with '" << c.fit->calibrated.name << "'\n";
+      return true;
+    }
+    if (tries >= 1) {
+      const std::string why = c.ok() ? "warnings after two attempts: " + c.warnings.front() : c.failure;
+      runner.keep_nominal_layout(i, "automatic run: " + why, c.ok() ? &c : nullptr);
+      std::cout << "block " << block << ": nominal layout kept (" << why << ")\n";
+      return true;
+    }
+  }
+}
+
 void announce_resume(const SessionFolder& folder) {
   const auto& st = folder.state();
   int accepted = 0;
@@ -245,6 +319,7 @@ int run_auto(SessionRunner& runner, SessionFolder& folder, const RunArgs& a) {
     const int i = static_cast<int>(k);
     if (folder.state().trials[k].status == TrialStatus::kAccepted) continue;
     if (!clear_preflight(runner, i, a, false)) return 3;
+    if (!clear_calibration(runner, i, a, false)) return 130;
     bool ok = false;
     for (int tries = 0; tries < 2 && !ok; ++tries) {
       const AttemptResult r = run_one(runner, i, a.quiet);
@@ -266,6 +341,7 @@ int run_interactive(SessionRunner& runner, SessionFolder& folder, const RunArgs&
       return 0;
     }
     if (!clear_preflight(runner, i, a, true)) return 3;
+    if (!clear_calibration(runner, i, a, true)) return 0;
     const auto& plan = runner.plan()[static_cast<size_t>(i)];
     const auto& type = runner.protocol().trial_types[static_cast<size_t>(plan.trial_type)];
     std::cout << "\nnext: " << plan.name << " (" << i + 1 << " of " << runner.plan().size() << ", " << type.duration_s
@@ -348,6 +424,8 @@ void setup_session(CLI::App& app) {
   cmd_run->add_option("--stream-timeout", r->stream_timeout_s, "Abort a trial when not every controller streams within this many s")->capture_default_str();
   cmd_run->add_option("--vicon-export", r->vicon_export, "Folder where Vicon saves its files: each verdict says whether the trial's file appeared");
   cmd_run->add_option("--override-preflight", r->override_reason, "Go ahead although the pre-flight fails; the reason is journaled");
+  cmd_run->add_option("--skip-calibration", r->skip_calibration,
+                      "When the protocol calibrates each block: keep the nominal layouts instead; the reason is journaled");
   cmd_run->add_flag("--quiet", r->quiet, "No live status line");
   cmd_run->callback([r] { run_run(*r); });
 

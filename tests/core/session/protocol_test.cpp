@@ -172,5 +172,30 @@ TEST(Protocol, HandSizeRuleIsTheManifestsOne) {
   EXPECT_NE(hand_size_problem(1860), "");
 }
 
+TEST(Protocol, ACalibrationStepIsOptionalValidatedAndRoundTrips) {
+  nlohmann::json j = protocol_to_json(load_protocol("quick"));
+  EXPECT_FALSE(j.contains("calibration")) << "protocols without the step stay as they were";
+  EXPECT_FALSE(protocol_from_json(j, "quick.json").calibration.has_value());
+  j["calibration"] = {{"duration_s", 5}, {"subject_cue", "still, please"}};
+  const Protocol p = protocol_from_json(j, "quick.json");
+  ASSERT_TRUE(p.calibration.has_value());
+  EXPECT_DOUBLE_EQ(p.calibration->duration_s, 5.0);
+  EXPECT_EQ(p.calibration->subject_cue, "still, please");
+  EXPECT_FALSE(p.calibration->operator_cue.empty());
+  EXPECT_EQ(protocol_to_json(p), protocol_to_json(protocol_from_json(protocol_to_json(p), "again.json")));
+  j["calibration"]["duration_s"] = 0.5;
+  try {
+    protocol_from_json(j, "quick.json");
+    FAIL();
+  } catch (const Error& e) {
+    EXPECT_THAT(e.what(), HasSubstr("quick.json"));
+    EXPECT_THAT(e.what(), HasSubstr("/calibration/duration_s"));
+  }
+  j["calibration"] = {{"seconds", 5}};
+  EXPECT_THROW(protocol_from_json(j, "quick.json"), Error);
+  EXPECT_EQ(calibration_trial_name("Naiv", 1), "Calib_Naiv01");
+  EXPECT_EQ(calibration_trial_name("Opti", 12), "Calib_Opti12");
+}
+
 }  // namespace
 }  // namespace lmc::session
