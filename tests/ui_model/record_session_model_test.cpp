@@ -190,5 +190,35 @@ TEST(RecordSessionModel, OverrideNeedsAReasonAndIsJournaled) {
   fs::remove_all(dir);
 }
 
+TEST(RecordSessionModel, ACalibratingProtocolCalibratesTheBlockBeforeItsFirstTrial) {
+  const fs::path dir = test::fresh_test_dir("record_model_calibration");
+  session::NewSessionSpec spec = quick("S09");
+  spec.protocol = "study-calibrated";  // 5 s still hand before each block
+  spec.duration_override_s = 1.0;
+  RecordSettings settings = fast_sim();
+  settings.sim.calibration_random_translation_mm = 20;
+  RecordSessionModel m;
+  ASSERT_EQ(m.create(dir, spec, settings), "");
+  EXPECT_FALSE(m.needs_calibration()) << "the pre-flight comes first";
+  clear_preflight(m);
+  ASSERT_TRUE(m.needs_calibration());
+  EXPECT_NE(m.start_trial(), "") << "a trial waits for the block's calibration";
+  ASSERT_EQ(m.start_calibration(), "");
+  EXPECT_TRUE(m.calibrating());
+  poll_until(m, [&] { return !m.busy() && m.pending_calibration().has_value(); });
+  ASSERT_TRUE(m.pending_calibration());
+  ASSERT_TRUE(m.pending_calibration()->ok()) << m.pending_calibration()->failure;
+  EXPECT_EQ(m.pending_calibration()->trial_name, "Calib_Naiv01");
+  EXPECT_NE(m.keep_nominal_layout("  "), "") << "keeping the nominal layout needs a reason";
+  ASSERT_EQ(m.apply_calibration(), "");
+  EXPECT_FALSE(m.pending_calibration());
+  EXPECT_FALSE(m.needs_calibration());
+  EXPECT_EQ(m.state().calibration.at("Naiv").status, "applied");
+  ASSERT_NE(m.current_layout(), nullptr);
+  EXPECT_NE(m.current_layout()->name.find("calibrated"), std::string::npos) << m.current_layout()->name;
+  record_current(m);
+  EXPECT_EQ(m.last_attempt()->outcome, "completed");
+}
+
 }  // namespace record_model_test
 }  // namespace lmc::ui

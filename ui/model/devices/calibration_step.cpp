@@ -142,10 +142,9 @@ std::string CalibrationStep::activity() const {
   return {};
 }
 
-std::vector<CalibrationRow> CalibrationStep::rows() const {
+std::vector<CalibrationRow> calibration_rows(const calibration::CalibrationResult& result) {
   std::vector<CalibrationRow> out;
-  if (!outcome_) return out;
-  for (const auto& d : outcome_->result.devices) {
+  for (const auto& d : result.devices) {
     CalibrationRow r;
     r.slot = d.slot;
     r.fitted = d.fitted;
@@ -158,6 +157,11 @@ std::vector<CalibrationRow> CalibrationStep::rows() const {
     out.push_back(std::move(r));
   }
   return out;
+}
+
+std::vector<CalibrationRow> CalibrationStep::rows() const {
+  if (!outcome_) return {};
+  return calibration_rows(outcome_->result);
 }
 
 std::vector<SceneItem> CalibrationStep::ghosts() const {

@@ -42,6 +42,10 @@ struct CalibrationRow {
   std::vector<std::string> warnings;
 };
 
+// The table's lines for a calibration result (the Devices tab's step and the Record tab's block
+// calibration show the same table).
+std::vector<CalibrationRow> calibration_rows(const calibration::CalibrationResult& result);
+
 // How to read the residuals, in the README's words ("Calibrating controllers").
 const char* calibration_residuals_explanation();
 

@@ -160,6 +160,7 @@ std::string RecordSessionModel::start_trial() {
   if (state_.trials[static_cast<size_t>(i)].status == session::TrialStatus::kAccepted)
     return state_.trials[static_cast<size_t>(i)].plan.name + " is accepted; redo it (R) to record it again";
   if (runner_->needs_preflight(i)) return "run the pre-flight for this layout first (or override it with a reason)";
+  if (runner_->needs_calibration(i)) return "calibrate this layout first (or keep its nominal layout, with a reason)";
   devices::SessionRunner* runner = runner_.get();
   try {
     live_fusion_ = std::make_unique<devices::LiveFusion>(runner_->layout(i));
@@ -186,8 +187,63 @@ std::string RecordSessionModel::start_trial() {
   return {};
 }
 
+bool RecordSessionModel::needs_calibration() const {
+  if (!has_session() || busy()) return false;
+  const int i = current_trial();
+  return i >= 0 && !runner_->needs_preflight(i) && runner_->needs_calibration(i);
+}
+
+std::string RecordSessionModel::start_calibration() {
+  if (!has_session()) return "open or create a session first";
+  if (busy()) return "a trial or pre-flight is running";
+  const int i = current_trial();
+  if (i < 0) return "every trial is accepted";
+  if (runner_->needs_preflight(i)) return "run the pre-flight for this layout first (or override it with a reason)";
+  if (!runner_->needs_calibration(i)) return "this layout needs no calibration";
+  devices::SessionRunner* runner = runner_.get();
+  pending_calibration_.reset();
+  calibrating_ = true;
+  live_.reset();
+  job_handled_ = false;
+  job_.start([runner, i](std::stop_token stop, JobChannel<devices::TrialSnapshot>& channel) {
+    RecordWorkResult r;
+    r.calibration = runner->calibrate_block(i, stop, [&channel](const devices::TrialSnapshot& s) { channel.report(s); });
+    return r;
+  });
+  return {};
+}
+
+std::string RecordSessionModel::apply_calibration() {
+  if (busy()) return "a trial or pre-flight is running";
+  if (!pending_calibration_) return "no calibration to apply";
+  if (!pending_calibration_->ok()) return "the calibration failed: " + pending_calibration_->failure;
+  try {
+    runner_->apply_calibration(*pending_calibration_);
+  } catch (const std::exception& e) {
+    return e.what();
+  }
+  pending_calibration_.reset();
+  refresh_state();
+  return {};
+}
+
+std::string RecordSessionModel::keep_nominal_layout(const std::string& reason) {
+  if (busy()) return "a trial or pre-flight is running";
+  const int i = current_trial();
+  if (i < 0) return "every trial is accepted";
+  if (reason.find_first_not_of(" \t") == std::string::npos) return "say why the nominal layout is kept (it is journaled)";
+  try {
+    runner_->keep_nominal_layout(i, reason, pending_calibration_ ? &*pending_calibration_ : nullptr);
+  } catch (const std::exception& e) {
+    return e.what();
+  }
+  pending_calibration_.reset();
+  refresh_state();
+  return {};
+}
+
 void RecordSessionModel::stop_trial() {
-  if (recording()) job_.cancel();
+  if (recording() || calibrating()) job_.cancel();
 }
 
 std::string RecordSessionModel::abort_trial() {
@@ -304,6 +360,12 @@ std::string RecordSessionModel::poll() {
       line = result->preflight->ok() ? "pre-flight passed for layout '" + result->preflight->layout_name + "'"
                                      : "pre-flight failed: " + result->preflight->failures().front();
     }
+    if (result->calibration) {
+      pending_calibration_ = result->calibration;
+      const auto& c = *result->calibration;
+      line = c.ok() ? c.trial_name + ": calibrated; read the residuals, then Apply or calibrate again"
+                    : c.trial_name + ": " + c.failure;
+    }
     if (result->attempt) {
       last_attempt_ = result->attempt;
       const auto& a = *result->attempt;
@@ -324,6 +386,7 @@ std::string RecordSessionModel::poll() {
     }
   }
   recording_trial_ = -1;
+  calibrating_ = false;
   live_.reset();
   live_hands_.clear();
   live_fused_.reset();

@@ -45,6 +45,7 @@ struct RecordSettings {
 struct RecordWorkResult {
   std::optional<devices::PreflightReport> preflight;
   std::optional<devices::AttemptResult> attempt;
+  std::optional<devices::BlockCalibration> calibration;
 };
 
 class LiveRig;
@@ -89,6 +90,18 @@ class RecordSessionModel {
   std::string start_preflight();
   std::string override_preflight(const std::string& reason);
   const std::optional<devices::PreflightReport>& last_preflight() const { return last_preflight_; }
+
+  // ---- the block's calibration (protocols with a calibration step, issue #13) ------------------------
+  // True after the block's pre-flight when its calibration is not done: Start then records the
+  // still-hand calibration trial instead of the block's first trial.
+  bool needs_calibration() const;
+  bool calibrating() const { return busy() && calibrating_; }
+  // Records and fits the block's calibration trial on the worker. The result waits in
+  // pending_calibration() for the operator: apply it, calibrate again, or keep the nominal layout.
+  std::string start_calibration();
+  const std::optional<devices::BlockCalibration>& pending_calibration() const { return pending_calibration_; }
+  std::string apply_calibration();
+  std::string keep_nominal_layout(const std::string& reason);
 
   // ---- trials -------------------------------------------------------------------------------------
   // Records the current trial (a new attempt). Refused while busy or before the pre-flight.
@@ -156,6 +169,8 @@ class RecordSessionModel {
   std::string last_note_error_;
   std::optional<devices::PreflightReport> last_preflight_;
   std::optional<devices::AttemptResult> last_attempt_;
+  std::optional<devices::BlockCalibration> pending_calibration_;
+  bool calibrating_ = false;
   bool job_handled_ = true;  // the finished job's result was taken by poll()
   BackgroundJob<RecordWorkResult, devices::TrialSnapshot> job_;  // last: joined first
 };

@@ -8,6 +8,7 @@
 #include <string>
 
 #include "core/common/paths.h"
+#include "ui/widgets/calibration_result_view.h"
 #include "ui/widgets/imgui_colour.h"
 
 namespace lmc::ui {
@@ -15,13 +16,6 @@ namespace {
 
 const ImVec4 kWarningRed(1.0F, 0.38F, 0.33F, 1.0F);
 const ImVec4 kGood(0.55F, 0.9F, 0.55F, 1.0F);
-
-std::string mm_text(double v) {
-  if (!std::isfinite(v)) return "-";
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.1f", v);
-  return buf;
-}
 
 // Where the file browsers open: the calibration trials' folder once something was recorded there,
 // else the sessions folder, else the working folder (a browser on a missing folder lists nothing).
@@ -139,56 +133,7 @@ void DevicesCalibratePanel::draw_progress() {
 void DevicesCalibratePanel::draw_result() {
   const auto outcome = step_.outcome();
   if (!outcome) return;
-  const auto& r = outcome->result;
-  ImGui::TextWrapped("Trial %s, %s", outcome->trial.c_str(),
-                     r.with_vicon ? "against Vicon" : "controllers against each other (no Vicon)");
-  const ImGuiTableFlags flags = ImGuiTableFlags_RowBg | ImGuiTableFlags_BordersInnerV | ImGuiTableFlags_SizingFixedFit;
-  if (ImGui::BeginTable("calibration", 5, flags)) {
-    ImGui::TableSetupColumn("Slot");
-    ImGui::TableSetupColumn("Samples");
-    ImGui::TableSetupColumn("RMS mm");
-    ImGui::TableSetupColumn("Moved mm");
-    ImGui::TableSetupColumn("Turned deg");
-    ImGui::TableHeadersRow();
-    const auto rows = step_.rows();
-    for (size_t i = 0; i < rows.size(); ++i) {
-      const CalibrationRow& row = rows[i];
-      ImGui::TableNextRow();
-      ImGui::TableNextColumn();
-      ImGui::TextColored(ImGui::ColorConvertU32ToFloat4(device_colour_u32(static_cast<int>(i))), "%s", row.slot.c_str());
-      ImGui::TableNextColumn();
-      ImGui::Text("%d", row.samples);
-      ImGui::TableNextColumn();
-      const std::string rms = mm_text(row.before_mm) + " > " + mm_text(row.after_mm);
-      ImGui::TextUnformatted(rms.c_str());
-      ImGui::TableNextColumn();
-      if (row.fitted) {
-        ImGui::Text("%.1f", row.moved_mm);
-        ImGui::TableNextColumn();
-        ImGui::Text("%.2f", row.turned_deg);
-      } else {
-        ImGui::TextColored(kWarningRed, "not");
-        ImGui::TableNextColumn();
-        ImGui::TextColored(kWarningRed, "calibrated");
-      }
-    }
-    ImGui::EndTable();
-  }
-  const std::string disagreement = "Disagreement between controllers: " + mm_text(r.disagreement_before_mm) + " > " +
-                                   mm_text(r.disagreement_after_mm) + " mm RMS";
-  ImGui::TextUnformatted(disagreement.c_str());
-  const auto warnings = r.all_warnings();
-  if (warnings.empty()) ImGui::TextColored(kGood, "No warnings.");
-  for (const auto& w : outcome->file_warnings) ImGui::TextColored(kWarningRed, "%s", w.c_str());
-  for (const auto& w : warnings) {
-    ImGui::PushStyleColor(ImGuiCol_Text, kWarningRed);
-    ImGui::TextWrapped("%s", w.c_str());
-    ImGui::PopStyleColor();
-  }
-  ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyle().Colors[ImGuiCol_TextDisabled]);
-  ImGui::TextWrapped("%s", calibration_residuals_explanation());
-  for (const auto& n : outcome->notes) ImGui::TextWrapped("note: %s", n.c_str());
-  ImGui::PopStyleColor();
+  draw_calibration_result(outcome->trial, outcome->result, outcome->file_warnings, outcome->notes);
 
   if (step_.stage() == CalibrationStage::kResult) {
     if (ImGui::Button("Apply")) {

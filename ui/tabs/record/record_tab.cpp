@@ -93,7 +93,7 @@ class RecordTab final : public Tab {
     return 4;
   }
   std::vector<std::string> extra_captures() const override {
-    return {"record-trial", "subject-screen", "record-verdict", "record-resume", "record-setup"};
+    return {"record-trial", "subject-screen", "record-verdict", "record-resume", "record-calibration", "record-setup"};
   }
   void prepare_extra_capture(const std::string& name) override {
     capture_stage_ = name;
@@ -106,6 +106,20 @@ class RecordTab final : public Tab {
       model_.close();
       error_ = model_.open(dir, settings);
       if (error_.empty()) model_.start_preflight();
+    }
+    if (name == "record-calibration") {
+      // A protocol that calibrates each block, on a simulated rig whose controllers stand up to
+      // 25 mm and 3 degrees away from the layout: the residual table after the still-hand trial.
+      model_.close();
+      const auto dir = std::filesystem::temp_directory_path() / ("lmc-record-calibration-capture-" + std::to_string(::getpid()));
+      std::filesystem::remove_all(dir);
+      form_.select_protocol("study-calibrated");
+      RecordSettings settings = form_.settings();
+      settings.fast = true;
+      settings.countdown_s = 0;
+      settings.sim.calibration_random_translation_mm = 25;
+      settings.sim.calibration_random_rotation_deg = 3;
+      error_ = model_.create(dir, form_.spec(), settings);
     }
     if (name == "record-setup") {
       model_.close();
@@ -129,6 +143,7 @@ class RecordTab final : public Tab {
     if (capture_stage_ == "subject-screen") return !(model_.recording() && subject_.shown);
     if (capture_stage_ == "record-verdict") return model_.busy() || !model_.finished();
     if (capture_stage_ == "record-resume") return model_.busy() || (model_.has_session() && !model_.last_preflight());
+    if (capture_stage_ == "record-calibration") return model_.busy() || !model_.pending_calibration();
     return false;
   }
 
@@ -185,6 +200,15 @@ class RecordTab final : public Tab {
         break;
       case TrialPanelAction::kStart: why = model_.start_trial(); break;
       case TrialPanelAction::kStop: model_.stop_trial(); break;
+      case TrialPanelAction::kCalibrate: why = model_.start_calibration(); break;
+      case TrialPanelAction::kApplyCalibration:
+        why = model_.apply_calibration();
+        if (why.empty()) status_.set_status("Record: calibration applied; the block records with the calibrated layout");
+        break;
+      case TrialPanelAction::kKeepNominal:
+        why = model_.keep_nominal_layout(panel_.nominal_reason);
+        if (why.empty()) status_.set_status(std::string("Record: nominal layout kept: ") + panel_.nominal_reason);
+        break;
       case TrialPanelAction::kAbort:
         why = model_.abort_trial();
         if (why.empty()) status_.set_status("Record: trial aborted; it is kept, marked aborted, and waits for a redo (R)");
@@ -208,13 +232,20 @@ class RecordTab final : public Tab {
     if (ImGui::GetIO().WantTextInput) return;
     subject_screen_key();
     if (ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Space), false)) {
-      if (model_.recording()) act(TrialPanelAction::kStop);
+      if (model_.recording() || model_.calibrating()) act(TrialPanelAction::kStop);
       else if (model_.needs_preflight()) act(TrialPanelAction::kPreflight);
-      else act(TrialPanelAction::kStart);
+      else if (model_.needs_calibration() && !model_.pending_calibration()) act(TrialPanelAction::kCalibrate);
+      else if (!model_.pending_calibration()) act(TrialPanelAction::kStart);
     }
     if (ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Escape), false) && model_.recording()) act(TrialPanelAction::kAbort);
     if (ImGui::IsKeyPressed('N', false)) open_note(panel_.note);
     if (model_.busy()) return;
+    if (const auto& c = model_.pending_calibration()) {
+      // A calibration waiting for the operator: Enter applies it, R records it again.
+      if (ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Enter), false) && c->ok()) act(TrialPanelAction::kApplyCalibration);
+      if (ImGui::IsKeyPressed('R', false)) act(TrialPanelAction::kCalibrate);
+      return;
+    }
     if (ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Enter), false) && model_.last_attempt() &&
         model_.last_attempt()->verdict() == "fail")
       act(TrialPanelAction::kAccept);
@@ -244,6 +275,12 @@ class RecordTab final : public Tab {
     if (model_.needs_preflight()) {
       if (!model_.last_preflight()) model_.start_preflight();
       else model_.override_preflight("screenshot");
+      return;
+    }
+    // A block calibration (protocols with the step) is recorded, then left for the picture.
+    if (model_.pending_calibration()) return;
+    if (model_.needs_calibration()) {
+      model_.start_calibration();
       return;
     }
     if (!model_.finished()) model_.start_trial();

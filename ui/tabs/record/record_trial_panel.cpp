@@ -6,6 +6,7 @@
 #include <cstdio>
 
 #include "ui/model/record/motion_pictogram.h"
+#include "ui/tabs/record/record_calibration_panel.h"
 #include "ui/tabs/record/record_colours.h"
 #include "ui/widgets/hand_pictogram.h"
 #include "ui/model/devices/fusion_readout.h"
@@ -208,6 +209,11 @@ TrialPanelAction draw_record_trial_panel(const RecordSessionModel& model, TrialP
     verdict_section(model, input, action);
     live_view(model, input);
     return a != TrialPanelAction::kNone ? a : action;
+  }
+  if (model.needs_calibration() || model.calibrating() || model.pending_calibration()) {
+    action = draw_block_calibration(model, input);
+    live_view(model, input);
+    return action;
   }
   // The checklist that enabled Start stays in view until the block's first trial of this run.
   if (const auto& report = model.last_preflight(); report && report->ok() && !model.last_attempt())

@@ -13,10 +13,14 @@
 
 namespace lmc::ui {
 
-enum class TrialPanelAction { kNone, kPreflight, kOverride, kStart, kStop, kAbort, kAccept, kRedo, kNote };
+enum class TrialPanelAction {
+  kNone, kPreflight, kOverride, kStart, kStop, kAbort, kAccept, kRedo, kNote,
+  kCalibrate, kApplyCalibration, kKeepNominal  // the block's calibration step (record_calibration_panel.h)
+};
 
 struct TrialPanelInput {
   char override_reason[200] = "";
+  char nominal_reason[200] = "";  // why a block keeps its nominal layout instead of a calibration
   OrbitCamera camera;  // the live view's
   WidgetAnchors anchors;  // "preflight", "start", "override" as drawn (headless tests click them)
   NoteInput note;      // N: the one-line note (kNote when submitted)
