@@ -1,0 +1,49 @@
+#include "ui/model/plot/axis_ticks.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace lmc::ui {
+
+std::vector<double> nice_ticks(double lo, double hi, int target) {
+  std::vector<double> out;
+  if (!(hi > lo) || !std::isfinite(lo) || !std::isfinite(hi) || target < 1) return out;
+  const double raw = (hi - lo) / target;
+  const double power = std::pow(10.0, std::floor(std::log10(raw)));
+  // The round step whose tick count comes closest to `target`.
+  double step = power, best = std::numeric_limits<double>::infinity();
+  for (const double m : {1.0, 2.0, 5.0, 10.0}) {
+    const double miss = std::abs((hi - lo) / (m * power) - target);
+    if (miss < best) {
+      best = miss;
+      step = m * power;
+    }
+  }
+  const double first = std::ceil(lo / step) * step;
+  for (double v = first; v <= hi + step * 1e-9; v += step) out.push_back(std::abs(v) < step * 1e-9 ? 0.0 : v);
+  return out;
+}
+
+std::pair<double, double> fit_y_range(std::span<const std::span<const double>> xs,
+                                      std::span<const std::span<const double>> ys, double x_lo, double x_hi,
+                                      double margin) {
+  double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+  for (size_t s = 0; s < xs.size() && s < ys.size(); ++s) {
+    const auto& x = xs[s];
+    const auto& y = ys[s];
+    const size_t begin = static_cast<size_t>(std::lower_bound(x.begin(), x.end(), x_lo) - x.begin());
+    const size_t end = static_cast<size_t>(std::upper_bound(x.begin(), x.end(), x_hi) - x.begin());
+    for (size_t i = begin; i < end && i < y.size(); ++i) {
+      if (!std::isfinite(y[i])) continue;
+      lo = std::min(lo, y[i]);
+      hi = std::max(hi, y[i]);
+    }
+  }
+  if (!(hi >= lo)) return {0.0, 1.0};
+  if (hi == lo) return {lo - 1.0, hi + 1.0};
+  const double pad = (hi - lo) * margin;
+  return {lo - pad, hi + pad};
+}
+
+}  // namespace lmc::ui
