@@ -31,7 +31,7 @@ TEST(MinMaxDecimation, EveryColumnHoldsTheBruteForceMinimumAndMaximum) {
   std::vector<double> mn(columns, 1e300), mx(columns, -1e300);
   for (int i = 0; i < n; ++i) {
     const double xi = x[static_cast<size_t>(i)];
-    if (xi < lo || xi >= hi) continue;
+    if (xi < lo || xi > hi) continue;
     const int c = std::min(columns - 1, static_cast<int>((xi - lo) * columns / (hi - lo)));
     mn[static_cast<size_t>(c)] = std::min(mn[static_cast<size_t>(c)], y[static_cast<size_t>(i)]);
     mx[static_cast<size_t>(c)] = std::max(mx[static_cast<size_t>(c)], y[static_cast<size_t>(i)]);
@@ -44,7 +44,7 @@ TEST(MinMaxDecimation, EveryColumnHoldsTheBruteForceMinimumAndMaximum) {
       EXPECT_TRUE(cols[static_cast<size_t>(c)].joins_previous) << c;
     }
   }
-  // The spike at sample 4321 (x = 43.21) lies outside [100, 900): not shown; inside, it would be.
+  // The spike at sample 4321 (x = 43.21) lies outside [100, 900]: not shown; inside, it would be.
   const auto all = decimate_min_max(x, y, 0, 1000, columns);
   float top = -1e30f;
   for (const auto& c : all) top = std::max(top, c.y_max);
@@ -69,6 +69,12 @@ TEST(MinMaxDecimation, MissingValuesAreGapsNeverBridgedAndNeverZero) {
   EXPECT_FALSE(cols[3].joins_previous) << "NaN between column 1 and 3: the line breaks";
   EXPECT_FLOAT_EQ(cols[3].y_first, 7.0f);
   EXPECT_FLOAT_EQ(cols[3].y_last, 8.0f);
+}
+
+TEST(MinMaxDecimation, TheSampleOnTheRightEdgeIsDrawn) {
+  const std::vector<double> x = {0, 1, 2, 3, 4}, y = {5, 4, 3, 2, 1};
+  const auto cols = decimate_min_max(x, y, 0.0, 4.0, 4);
+  EXPECT_FLOAT_EQ(cols[3].y_last, 1.0f) << "x = 4, the view's right edge, belongs to the last column";
 }
 
 TEST(MinMaxDecimation, DegenerateInputsGiveEmptyColumns) {
@@ -105,8 +111,13 @@ TEST(LinkedXRange, ZoomPanAndResetMoveEveryPlotTogetherInsideTheExtent) {
   EXPECT_EQ(r.lo(), 0);
   EXPECT_EQ(r.hi(), 100);
   EXPECT_EQ(r.cursor, 71.0) << "the shared cursor survives a reset";
-  r.set_extent(0, 200);  // more data arrived: the view keeps its place
-  EXPECT_EQ(r.hi(), 100);
+  r.set_extent(0, 200);  // more data arrived while everything was shown: still everything
+  EXPECT_EQ(r.hi(), 200);
+  r.zoom(50, 0.5);
+  const double lo = r.lo(), hi = r.hi();
+  r.set_extent(0, 300);  // more data while zoomed in: the view keeps its place
+  EXPECT_EQ(r.lo(), lo);
+  EXPECT_EQ(r.hi(), hi);
 }
 
 TEST(AxisTicks, RoundStepsAcrossTheRangeAndAFittedYRange) {

@@ -1,6 +1,6 @@
 #pragma once
-// A small plot of several series over time on one fixed y range (line_plot.h draws one series
-// against its index, scaled to its data): the Record tab's verdict draws each controller's hand
+// A small plot of several series over time on one fixed y range, without zoom (series_plot.h is
+// the full plot with linked zoom and a fitted y): the Record tab's verdict draws each controller's hand
 // presence and finger visibility over the trial with it. Non-finite values leave a gap; hovering
 // reads every series at that time.
 #include <array>

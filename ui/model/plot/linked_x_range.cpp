@@ -6,11 +6,13 @@ namespace lmc::ui {
 
 void LinkedXRange::set_extent(double lo, double hi) {
   if (!(hi > lo)) hi = lo + 1.0;  // one sample or none: a unit range rather than a division by zero
-  const bool first = !has_extent_;
+  // A view showing all the data keeps showing all of it as the data grow (a live convergence
+  // curve); a zoomed or panned view keeps its place.
+  const bool following = !has_extent_ || (lo_ == extent_lo_ && hi_ == extent_hi_);
   extent_lo_ = lo;
   extent_hi_ = hi;
   has_extent_ = true;
-  if (first) {
+  if (following) {
     lo_ = lo;
     hi_ = hi;
   }

@@ -8,7 +8,8 @@ namespace lmc::ui {
 
 class LinkedXRange {
  public:
-  // The data's extent: what reset() returns to. A first call also shows it.
+  // The data's extent: what reset() returns to. A view that showed the whole old extent shows the
+  // whole new one; a zoomed or panned view keeps its place.
   void set_extent(double lo, double hi);
   double lo() const { return lo_; }
   double hi() const { return hi_; }

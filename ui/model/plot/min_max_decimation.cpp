@@ -10,7 +10,8 @@ std::vector<PlotColumn> decimate_min_max(std::span<const double> x, std::span<co
   std::vector<PlotColumn> out(static_cast<size_t>(std::max(columns, 0)));
   if (columns <= 0 || !(x_hi > x_lo) || x.size() != y.size()) return out;
   const size_t begin = static_cast<size_t>(std::lower_bound(x.begin(), x.end(), x_lo) - x.begin());
-  const size_t end = static_cast<size_t>(std::lower_bound(x.begin(), x.end(), x_hi) - x.begin());
+  // The last sample of a series usually sits exactly on the view's right edge: it belongs in.
+  const size_t end = static_cast<size_t>(std::upper_bound(x.begin(), x.end(), x_hi) - x.begin());
   const double width = (x_hi - x_lo) / columns;
   // A NaN between the previous finite sample and the next one breaks the line.
   bool gap_since_data = begin > 0 && !std::isfinite(y[begin - 1]);
@@ -19,10 +20,12 @@ std::vector<PlotColumn> decimate_min_max(std::span<const double> x, std::span<co
   for (int c = 0; c < columns && i < end; ++c) {
     // The column's samples are one contiguous run of the sorted x: find its end by binary search
     // (cheap next to the run itself), then a tight min/max loop without per-sample bookkeeping.
-    const double column_hi = c + 1 == columns ? x_hi : x_lo + (c + 1) * width;
-    const size_t stop = static_cast<size_t>(std::lower_bound(x.begin() + static_cast<std::ptrdiff_t>(i),
-                                                             x.begin() + static_cast<std::ptrdiff_t>(end), column_hi) -
-                                            x.begin());
+    const double column_hi = x_lo + (c + 1) * width;
+    const size_t stop = c + 1 == columns
+                            ? end
+                            : static_cast<size_t>(std::lower_bound(x.begin() + static_cast<std::ptrdiff_t>(i),
+                                                                   x.begin() + static_cast<std::ptrdiff_t>(end), column_hi) -
+                                                  x.begin());
     if (stop == i) continue;
     PlotColumn& col = out[static_cast<size_t>(c)];
     double mn = INFINITY, mx = -INFINITY;

@@ -6,7 +6,7 @@
 #include <cstdio>
 #include <string>
 
-#include "ui/widgets/line_plot.h"
+#include "ui/widgets/series_plot.h"
 #include "ui/widgets/progress_row.h"
 
 namespace lmc::ui {
@@ -196,12 +196,15 @@ void OptimiserPanel::draw_convergence() {
   LayoutTabState& s = *state_;
   const OptimiserJob& job = s.optimiser;
   if (job.history().empty() && !job.running()) return;
-  LinePlotOptions o;
+  const auto& history = job.history();
+  convergence_x_.resize(history.size());
+  for (size_t i = 0; i < history.size(); ++i) convergence_x_[i] = static_cast<double>(i);
+  SeriesPlotOptions o;
   o.log_y = true;
   o.height_px = 110;
-  o.x_extent = job.iterations_planned() + 1;
-  ImGui::TextDisabled("Best cost %s per iteration", s.pso.metric == PlacementMetricKind::kStudy ? "M" : "R (robust)");
-  draw_line_plot("convergence", job.history(), o);
+  o.x_label = "iteration";
+  o.y_label = s.pso.metric == PlacementMetricKind::kStudy ? "best cost M (log scale)" : "best cost R (log scale)";
+  convergence_.draw("convergence", {{"best so far", convergence_x_, history, 1}}, o);
 }
 
 void OptimiserPanel::draw_comparison() {

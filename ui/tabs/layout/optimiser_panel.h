@@ -8,6 +8,7 @@
 
 #include "ui/model/layout_tab_state.h"
 #include "ui/widgets/file_browser.h"
+#include "ui/widgets/series_plot.h"
 #include "ui/widgets/widget_anchors.h"
 
 namespace lmc::ui {
@@ -32,6 +33,8 @@ class OptimiserPanel {
   char file_buf_[512] = {};
   FileBrowser browser_{"Choose a pose-set file", ".tsv"};
   WidgetAnchors anchors_;
+  SeriesPlot convergence_;              // best cost per iteration (ui/widgets/series_plot.h)
+  std::vector<double> convergence_x_;   // 0, 1, 2, … (the iterations)
 };
 
 }  // namespace lmc::ui
