@@ -5,6 +5,7 @@
 
 #include "core/common/error.h"
 #include "core/io/json_checked.h"
+#include "core/io/text_fields.h"
 
 namespace lmc::devices {
 namespace {
@@ -35,12 +36,14 @@ void apply_motion_spec(SimConfig& c, const std::string& spec) {
   else if (m == "thumb") c.motion = HandMotion::kThumbFlexion;
   else if (m == "wrist" || m == "wrist-flexion") c.motion = HandMotion::kWristFlexion;
   else if (m == "wrist-extension") c.motion = HandMotion::kWristExtension;
-  else if (std::filesystem::exists(spec)) {
+  else if (std::error_code ec; std::filesystem::exists(spec, ec)) {
     c.pose_set_path = spec;
     return;
   } else {
-    throw Error("unknown motion '" + spec +
-                "': use static, index, thumb or wrist (optionally horizontal/… or vertical/…), or a pose-set file");
+    // Not a file either (a name too long for a path is simply not one: the throwing overload of
+    // exists() escaped as a filesystem_error, found by the fuzzer). The message quotes the start.
+    throw Error("unknown motion " + text::quoted_excerpt(spec) +
+                ": use static, index, thumb or wrist (optionally horizontal/… or vertical/…), or a pose-set file");
   }
   c.pose_set_path.clear();
 }
