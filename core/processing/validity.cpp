@@ -1,5 +1,6 @@
 #include "core/processing/validity.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 
@@ -21,6 +22,24 @@ std::string validity_row(const std::string& label, const double* values, int n) 
   return line + "\n";
 }
 
+// Mean and RMS of LMC − Vicon over the frames both have (NaN skipped); untouched without any.
+template <typename Measure>
+void validity_bias_rmse(const TrialResult& r, Measure measure, double& bias, double& rmse) {
+  const size_t n = std::min(r.lmc_frames.size(), r.vicon_frames.size());
+  double sum = 0, sq = 0;
+  int count = 0;
+  for (size_t j = 0; j < n; ++j) {
+    const double d = measure(r.lmc_frames[j]) - measure(r.vicon_frames[j]);
+    if (!std::isfinite(d)) continue;
+    sum += d;
+    sq += d * d;
+    ++count;
+  }
+  if (count == 0) return;
+  bias = sum / count;
+  rmse = std::sqrt(sq / count);
+}
+
 }  // namespace
 
 MethodValidity method_validity(const TrialResult& r) {
@@ -35,36 +54,13 @@ MethodValidity method_validity(const TrialResult& r) {
   v.angle_bias.fill(kNaN);
   v.angle_rmse.fill(kNaN);
   if (r.has_vicon) {
-    const size_t n = std::min(r.lmc_frames.size(), r.vicon_frames.size());
     for (int f = 0; f < kNumFingers; ++f) {
-      double sum = 0, sq = 0;
-      int count = 0;
-      for (size_t j = 0; j < n; ++j) {
-        const double d = r.lmc_frames[j].finger_mm[static_cast<size_t>(f)] - r.vicon_frames[j].finger_mm[static_cast<size_t>(f)];
-        if (!std::isfinite(d)) continue;
-        sum += d;
-        sq += d * d;
-        ++count;
-      }
-      if (count > 0) {
-        v.finger_bias[static_cast<size_t>(f)] = sum / count;
-        v.finger_rmse[static_cast<size_t>(f)] = std::sqrt(sq / count);
-      }
+      validity_bias_rmse(r, [f](const FrameMeasures& m) { return m.finger_mm[static_cast<size_t>(f)]; },
+                         v.finger_bias[static_cast<size_t>(f)], v.finger_rmse[static_cast<size_t>(f)]);
     }
     for (int a = 0; a < kNumAngles; ++a) {
-      double sum = 0, sq = 0;
-      int count = 0;
-      for (size_t j = 0; j < n; ++j) {
-        const double d = r.lmc_frames[j].angle_deg[static_cast<size_t>(a)] - r.vicon_frames[j].angle_deg[static_cast<size_t>(a)];
-        if (!std::isfinite(d)) continue;
-        sum += d;
-        sq += d * d;
-        ++count;
-      }
-      if (count > 0) {
-        v.angle_bias[static_cast<size_t>(a)] = sum / count;
-        v.angle_rmse[static_cast<size_t>(a)] = std::sqrt(sq / count);
-      }
+      validity_bias_rmse(r, [a](const FrameMeasures& m) { return m.angle_deg[static_cast<size_t>(a)]; },
+                         v.angle_bias[static_cast<size_t>(a)], v.angle_rmse[static_cast<size_t>(a)]);
     }
   }
   v.consensus = consensus_report(r.world.devices, r.labels, r.fused);

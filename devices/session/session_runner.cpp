@@ -211,27 +211,10 @@ AttemptResult SessionRunner::run_trial(int i, std::stop_token stop,
   // Journal first: if this process dies from here on, the next run finds the trial interrupted.
   result.attempt = folder_.trial_started(i);
 
-  TrialEngineConfig config;
-  config.output_dir = folder_.dir();
-  config.trial = p.name;
-  config.seconds = type.duration_s;
-  config.countdown_s = options_.fast ? 0.0 : options_.countdown_s;
-  config.stream_timeout_s = options_.stream_timeout_s;
-  const auto& vicon = folder_.state().setup.vicon;
-  if (auto target = vicon_target()) {
-    ViconTriggerConfig vc = parse_vicon_target(*target);
-    if (vicon.contains("database_path")) vc.database_path = vicon["database_path"].get<std::string>();
-    vc.description = type.operator_cue;
-    config.vicon = vc;
-  }
-  config.backend = parse_source_spec(options_.backend).backend;
+  TrialEngineConfig config = engine_config(p.name, type.duration_s, type.operator_cue, result.attempt, p.layout_key);
   // A calibrated block's trials carry the calibrated layout in their sidecars, so processing
   // realigns them with it (the hub keeps the layout the controllers were set up by).
   if (folder_.state().nominal_layouts.contains(p.layout_key)) config.sidecar_layout = layout_for(i);
-  config.extra["session"] = {{"subject", folder_.state().subject().subject_id},
-                             {"attempt", result.attempt},
-                             {"protocol", protocol_.name},
-                             {"block", p.layout_key}};
 
   TrialResult tr;
   try {
@@ -305,6 +288,29 @@ AttemptResult SessionRunner::run_trial(int i, std::stop_token stop,
   return result;
 }
 
+TrialEngineConfig SessionRunner::engine_config(const std::string& name, double seconds, const std::string& operator_cue,
+                                               int attempt, const std::string& block) const {
+  TrialEngineConfig config;
+  config.output_dir = folder_.dir();
+  config.trial = name;
+  config.seconds = seconds;
+  config.countdown_s = options_.fast ? 0.0 : options_.countdown_s;
+  config.stream_timeout_s = options_.stream_timeout_s;
+  if (auto target = vicon_target()) {
+    ViconTriggerConfig vc = parse_vicon_target(*target);
+    const auto& vicon = folder_.state().setup.vicon;
+    if (vicon.contains("database_path")) vc.database_path = vicon["database_path"].get<std::string>();
+    vc.description = operator_cue;
+    config.vicon = vc;
+  }
+  config.backend = parse_source_spec(options_.backend).backend;
+  config.extra["session"] = {{"subject", folder_.state().subject().subject_id},
+                             {"attempt", attempt},
+                             {"protocol", protocol_.name},
+                             {"block", block}};
+  return config;
+}
+
 std::optional<std::string> SessionRunner::vicon_target() const {
   const auto& vicon = folder_.state().setup.vicon;
   if (!vicon.is_object() || !vicon.contains("host")) return std::nullopt;
@@ -340,25 +346,8 @@ BlockCalibration SessionRunner::calibrate_block(int i, std::stop_token stop,
   // The block's layout as created: a second calibration starts from it, not from the first's result.
   const Layout nominal = nominal_layout_for(i);
 
-  TrialEngineConfig config;
-  config.output_dir = folder_.dir();
-  config.trial = out.trial_name;
-  config.seconds = step.duration_s;
-  config.countdown_s = options_.fast ? 0.0 : options_.countdown_s;
-  config.stream_timeout_s = options_.stream_timeout_s;
-  if (auto target = vicon_target()) {
-    ViconTriggerConfig vc = parse_vicon_target(*target);
-    const auto& vicon = folder_.state().setup.vicon;
-    if (vicon.contains("database_path")) vc.database_path = vicon["database_path"].get<std::string>();
-    vc.description = step.operator_cue;
-    config.vicon = vc;
-  }
-  config.backend = parse_source_spec(options_.backend).backend;
-  config.extra["session"] = {{"subject", folder_.state().subject().subject_id},
-                             {"attempt", out.attempt},
-                             {"protocol", protocol_.name},
-                             {"block", p.layout_key},
-                             {"calibration", true}};
+  TrialEngineConfig config = engine_config(out.trial_name, step.duration_s, step.operator_cue, out.attempt, p.layout_key);
+  config.extra["session"]["calibration"] = true;
   TrialResult tr;
   try {
     std::unique_ptr<Rig> own_rig;

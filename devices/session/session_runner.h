@@ -131,6 +131,10 @@ class SessionRunner {
   Layout nominal_layout_for(int i) const;  // before any calibration of the block
   std::uint64_t bytes_still_needed(int from) const;
   std::optional<std::string> vicon_target() const;  // "HOST[:PORT]" when the session triggers Vicon
+  // The trial engine's settings for one recording of this session (a trial or a calibration trial):
+  // folder, timing, the Vicon trigger with the cue as its description, the session's sidecar notes.
+  TrialEngineConfig engine_config(const std::string& name, double seconds, const std::string& operator_cue,
+                                  int attempt, const std::string& block) const;
 
   session::SessionFolder& folder_;
   SessionRunOptions options_;
