@@ -4,9 +4,11 @@
 #include <sstream>
 #include <tuple>
 
+#include "core/common/csv_cell.h"
 #include "core/common/number_format.h"
 #include "core/hand/hand_track.h"
 #include "core/processing/measures.h"
+#include "core/results/summary_fields.h"
 #include "core/results/trial_outputs.h"
 
 namespace lmc {
@@ -29,20 +31,7 @@ MeanSd mean_sd(const std::vector<double>& v) {
 namespace {
 
 double num(const nlohmann::json& j) { return j.is_number() ? j.get<double>() : kNaN; }
-double at(const nlohmann::json& j, const char* key, size_t k) {
-  if (!j.contains(key) || !j[key].is_array() || k >= j[key].size()) return kNaN;
-  return num(j[key][k]);
-}
-
-std::string csv_cell(const std::string& s) {
-  if (s.find_first_of(",\"\n") == std::string::npos) return s;
-  std::string q = "\"";
-  for (char c : s) {
-    if (c == '"') q += '"';
-    q += c;
-  }
-  return q + "\"";
-}
+double at(const nlohmann::json& j, const char* key, size_t k) { return summary_element(j, key, k); }
 
 std::string f3(double v) { return format_fixed(v, 3); }
 std::string pm(const MeanSd& m, int d = 2) { return format_fixed(m.mean, d) + " ± " + format_fixed(m.sd, d); }
@@ -80,7 +69,7 @@ SessionReport build_session_report(const std::vector<ReportInput>& inputs) {
     Acc& acc = groups[g];
     ++acc.trials;
     ++rep.trials;
-    const bool vic = s.contains("vicon") && s["vicon"].is_object();
+    const bool vic = summary_has_vicon(s);
     if (vic) {
       ++acc.with_vicon;
       ++rep.trials_with_vicon;
@@ -110,14 +99,10 @@ SessionReport build_session_report(const std::vector<ReportInput>& inputs) {
         }
       }
     }
-    if (s.contains("visibility")) {
-      for (const auto& d : s["visibility"]) {
-        const std::string dev = d.value("device", "?");
-        for (size_t k = 0; k < kNumDigits; ++k) {
-          const double r = at(d, "rate", k);
-          acc.vis[dev].push_back(r);
-          vis_by_layout[std::get<0>(g)].push_back(r);
-        }
+    for (const auto& d : summary_visibility(s)) {
+      for (const double r : d.rates) {
+        acc.vis[d.device].push_back(r);
+        vis_by_layout[std::get<0>(g)].push_back(r);
       }
     }
     trials << csv_cell(in.subject) << ',' << csv_cell(s.value("trial", "")) << ',' << std::get<0>(g) << ',' << std::get<1>(g)
