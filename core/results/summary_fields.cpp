@@ -10,7 +10,9 @@ bool summary_has_vicon(const nlohmann::json& summary) {
 }
 
 double summary_element(const nlohmann::json& stats, const char* key, std::size_t k) {
-  if (!stats.is_object() || !stats.contains(key) || !stats[key].is_array() || k >= stats[key].size()) return kNaN;
+  if (!stats.is_object() || !stats.contains(key) || !stats[key].is_array() ||
+      k >= stats[key].size())
+    return kNaN;
   const auto& v = stats[key][k];
   return v.is_number() ? v.get<double>() : kNaN;
 }
@@ -21,7 +23,8 @@ std::vector<DeviceVisibility> summary_visibility(const nlohmann::json& summary) 
   for (const auto& d : summary["visibility"]) {
     DeviceVisibility v;
     v.device = d.is_object() ? d.value("device", "?") : "?";
-    for (std::size_t k = 0; k < static_cast<std::size_t>(kNumDigits); ++k) v.rates.push_back(summary_element(d, "rate", k));
+    for (std::size_t k = 0; k < static_cast<std::size_t>(kNumDigits); ++k)
+      v.rates.push_back(summary_element(d, "rate", k));
     out.push_back(std::move(v));
   }
   return out;

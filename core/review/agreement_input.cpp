@@ -35,8 +35,10 @@ const std::array<AgreementMeasure, kAgreementMeasures>& agreement_measures() {
 AgreementTrial agreement_trial(std::string subject, nlohmann::json summary) {
   AgreementTrial t;
   t.subject = std::move(subject);
-  const auto tag = summary.is_object() ? summary.value("tag", nlohmann::json::object()) : nlohmann::json::object();
-  if (summary.is_object() && summary.contains("trial") && summary["trial"].is_string()) t.trial = summary["trial"].get<std::string>();
+  const auto tag = summary.is_object() ? summary.value("tag", nlohmann::json::object())
+                                       : nlohmann::json::object();
+  if (summary.is_object() && summary.contains("trial") && summary["trial"].is_string())
+    t.trial = summary["trial"].get<std::string>();
   t.layout = tag.value("layout", "unknown");
   t.pose = tag.value("pose", "unknown");
   t.motion = tag.value("motion", "unknown");

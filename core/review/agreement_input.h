@@ -30,10 +30,10 @@ AgreementTrial agreement_trial(std::string subject, nlohmann::json summary);
 inline constexpr std::size_t kAgreementMeasures = 11;
 
 struct AgreementMeasure {
-  std::string name;        // "finger_length_thumb", "rom_index_mcp", …
-  std::string quantity;    // "finger length" / "range of motion"
-  std::string part;        // "thumb", "index_mcp", …
-  std::string unit;        // "mm" / "deg"
+  std::string name;              // "finger_length_thumb", "rom_index_mcp", …
+  std::string quantity;          // "finger length" / "range of motion"
+  std::string part;              // "thumb", "index_mcp", …
+  std::string unit;              // "mm" / "deg"
   const char* summary_key = "";  // the summary's statistics key, read from "lmc" and "vicon"
   std::size_t index = 0;         // element of that array
 };

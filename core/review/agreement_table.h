@@ -55,9 +55,9 @@ struct MeasureAgreement {
 };
 
 struct AgreementGroup {
-  std::string layout;  // "all" in the pooled group
-  std::string pose;    // "all" in the pooled group
-  std::size_t n_trials = 0;    // trials with Vicon in the group
+  std::string layout;        // "all" in the pooled group
+  std::string pose;          // "all" in the pooled group
+  std::size_t n_trials = 0;  // trials with Vicon in the group
   std::size_t n_subjects = 0;
   std::vector<MeasureAgreement> measures;  // in agreement_measures() order
 };
@@ -68,7 +68,8 @@ struct AgreementTable {
   std::size_t trials_without_vicon = 0;
 };
 
-AgreementTable agreement_table(const std::vector<AgreementTrial>& trials, const AgreementOptions& options = {});
+AgreementTable agreement_table(const std::vector<AgreementTrial>& trials,
+                               const AgreementOptions& options = {});
 
 // One header row, then one row per group × measure. Missing numbers are empty cells (never 0);
 // the Bland–Altman method and the ICC form are written out so the table says how it was computed.

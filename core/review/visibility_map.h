@@ -18,11 +18,11 @@ struct VisibilityCell {
   std::string device;  // "LMC1" … "LMC4"
   std::string motion;
   std::string layout;
-  std::size_t trials = 0;       // trials that listed this device
-  int values = 0;               // rates averaged (fingers × trials, nulls left out)
-  std::size_t never_saw = 0;    // of those, rates of −1 (the device never saw the hand)
-  double rate_mean = kNaN;      // NaN when no value
-  double rate_sd = kNaN;        // NaN with fewer than 2 values
+  std::size_t trials = 0;     // trials that listed this device
+  int values = 0;             // rates averaged (fingers × trials, nulls left out)
+  std::size_t never_saw = 0;  // of those, rates of −1 (the device never saw the hand)
+  double rate_mean = kNaN;    // NaN when no value
+  double rate_sd = kNaN;      // NaN with fewer than 2 values
 };
 
 struct VisibilityMap {
