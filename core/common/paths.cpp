@@ -36,4 +36,27 @@ std::filesystem::path sessions_dir() {
   return std::filesystem::path(home != nullptr && *home != '\0' ? home : ".") / "lmc-sessions";
 }
 
+std::filesystem::path user_cache_dir() {
+  if (const char* env = std::getenv("LMC_CACHE_DIR"); env != nullptr && *env != '\0') return env;
+  if (const char* xdg = std::getenv("XDG_CACHE_HOME"); xdg != nullptr && *xdg != '\0') {
+    return std::filesystem::path(xdg) / "lmc-workbench";
+  }
+  if (const char* home = std::getenv("HOME"); home != nullptr && *home != '\0') {
+    return std::filesystem::path(home) / ".cache" / "lmc-workbench";
+  }
+  return {};
+}
+
+std::filesystem::path study_sample_dir() {
+  std::error_code ec;
+  if (const char* env = std::getenv("LMC_REFERENCE_DATA_DIR"); env != nullptr && *env != '\0') {
+    const auto dir = std::filesystem::path(env) / "validation";
+    return std::filesystem::is_directory(dir, ec) ? dir : std::filesystem::path();
+  }
+  // assets/ → the checkout → its parent, where ../shared sits beside the checkout.
+  const auto dir = std::filesystem::path(LMC_SOURCE_ASSETS_DIR).parent_path().parent_path() / "shared" / "reference-data" /
+                   "validation";
+  return std::filesystem::is_directory(dir, ec) ? dir : std::filesystem::path();
+}
+
 }  // namespace lmc

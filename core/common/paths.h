@@ -16,4 +16,14 @@ std::filesystem::path asset_path(const std::filesystem::path& relative);
 // installed copy whose source tree is gone.
 std::filesystem::path sessions_dir();
 
+// Where derived results may be cached (the Review tab's processed trials): $LMC_CACHE_DIR if set,
+// else $XDG_CACHE_HOME/lmc-workbench, else ~/.cache/lmc-workbench. Never inside a session folder:
+// what a lab keeps and what can be thrown away stay apart. Empty when there is no home at all.
+std::filesystem::path user_cache_dir();
+
+// The study's published sample trial (reference-data/validation: Naiv_Static101 with its Vicon
+// file) when it is on this machine: $LMC_REFERENCE_DATA_DIR/validation, else ../shared beside the
+// source tree. Empty when absent; it is data we read, never ship.
+std::filesystem::path study_sample_dir();
+
 }  // namespace lmc

@@ -3,6 +3,7 @@
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
+#include <atomic>
 #include <map>
 
 #include "core/common/error.h"
@@ -210,7 +211,19 @@ TrialOutcome process_job(const TrialJob& job, const SessionOptions& options, con
 std::vector<TrialOutcome> process_session(const std::vector<TrialJob>& jobs, const SessionOptions& options) {
   const ViconMapping mapping = options.mapping ? load_vicon_mapping(*options.mapping) : default_vicon_mapping();
   std::vector<TrialOutcome> outcomes(jobs.size());
-  tbb::parallel_for(size_t{0}, jobs.size(), [&](size_t k) { outcomes[k] = process_job(jobs[k], options, mapping); });
+  std::atomic<int> done{0};
+  const int total = static_cast<int>(jobs.size());
+  tbb::parallel_for(size_t{0}, jobs.size(), [&](size_t k) {
+    if (options.stop.stop_requested()) {
+      outcomes[k].trial = jobs[k].trial;
+      outcomes[k].cancelled = true;
+      outcomes[k].error = "cancelled before it was processed";
+    } else {
+      outcomes[k] = process_job(jobs[k], options, mapping);
+    }
+    const int now = ++done;
+    if (options.on_progress) options.on_progress(now, total);
+  });
   return outcomes;
 }
 

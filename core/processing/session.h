@@ -9,6 +9,7 @@
 #include <filesystem>
 #include <functional>
 #include <optional>
+#include <stop_token>
 #include <string>
 #include <vector>
 
@@ -47,6 +48,11 @@ struct SessionOptions {
   // processing itself knows nothing of.
   std::function<void(const TrialResult&)> on_result;
   bool compare_methods = false;       // also run the other method and collect errors vs truth
+  // The workbench runs a batch on a worker thread: once `stop` is requested, trials not yet
+  // started are left out (outcome "cancelled"); the ones running finish (a trial takes well under a
+  // second). `on_progress(done, total)` is called after each trial, from the worker threads.
+  std::stop_token stop;
+  std::function<void(int done, int total)> on_progress;
 };
 
 struct TrialOutcome {
@@ -59,6 +65,7 @@ struct TrialOutcome {
   bool has_vicon = false;
   // compare_methods: errors of both methods against Vicon/truth.
   MethodErrors reference_errors, default_errors;
+  bool cancelled = false;             // left out because the batch was stopped (ok is false)
 };
 
 // The layout for a trial: explicit name/path; else the sidecar's; else paper-initial for "Naiv"

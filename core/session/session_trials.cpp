@@ -1,5 +1,6 @@
 #include "core/session/session_trials.h"
 
+#include "core/common/error.h"
 #include "core/session/session_folder.h"
 #include "core/session/trial_files.h"
 
@@ -38,6 +39,19 @@ std::vector<TrialJob> accepted_trial_jobs(const fs::path& dir, const std::option
       }
     }
     jobs.push_back(job);
+  }
+  return jobs;
+}
+
+std::vector<TrialJob> trial_jobs_for_input(const fs::path& input, const std::optional<fs::path>& vicon,
+                                           std::vector<std::string>* notes) {
+  // A subject session folder is processed from its journal: only each trial's accepted attempt,
+  // never the ones kept under superseded/ or trials still pending.
+  const bool subject_session = is_session_folder(input);
+  auto jobs = subject_session ? accepted_trial_jobs(input, vicon, notes) : discover_trials(input, vicon, notes);
+  if (jobs.empty()) {
+    throw Error(ErrorLocation(input.string()), subject_session ? "the session has no accepted trial yet"
+                                                                : "no LMC recordings (LMC_*.txt, Interp_LMC_*.txt) found");
   }
   return jobs;
 }

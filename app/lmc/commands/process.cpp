@@ -15,7 +15,6 @@
 #include "core/processing/method_comparison.h"
 #include "core/processing/session.h"
 #include "core/results/trial_outputs.h"
-#include "core/session/session_folder.h"
 #include "core/session/session_trials.h"
 
 namespace {
@@ -48,14 +47,7 @@ void run_process(const ProcessArgs& a) {
   std::vector<std::string> notes;
   const std::optional<std::filesystem::path> vicon =
       a.vicon.empty() ? std::nullopt : std::optional<std::filesystem::path>(a.vicon);
-  // A subject session folder is processed from its journal: only each trial's accepted attempt,
-  // never the ones kept under superseded/ or trials still pending.
-  const bool subject_session = lmc::session::is_session_folder(a.input);
-  const auto jobs = subject_session ? lmc::session::accepted_trial_jobs(a.input, vicon, &notes)
-                                    : lmc::discover_trials(a.input, vicon, &notes);
-  if (jobs.empty())
-    throw lmc::Error(lmc::ErrorLocation(a.input), subject_session ? "the session has no accepted trial yet"
-                                                                   : "no LMC recordings (LMC_*.txt, Interp_LMC_*.txt) found");
+  const auto jobs = lmc::session::trial_jobs_for_input(a.input, vicon, &notes);
   for (const auto& n : notes) std::cout << "note: " << n << "\n";
 
   const auto outcomes = lmc::process_session(jobs, options);
