@@ -34,13 +34,17 @@ int main(int argc, char** argv) {
                      "Open the Record tab's subject screen at start-up: on monitor MONITOR (0 = the primary; default "
                      "the last one) or, with 'window', as a plain window (one-monitor bench)")
           ->expected(0, 1);
+  std::vector<std::string> review;
+  app.add_option("--review", review,
+                 "Open these folders (subject sessions, folders of trials) in the Review tab at start-up; with --capture, "
+                 "its picture shows them");
   app.add_option("--size", width, "Window width in pixels")->check(CLI::Range(640, 7680));
   app.add_option("--height", height, "Window height in pixels")->check(CLI::Range(480, 4320));
   CLI11_PARSE(app, argc, argv);
 
   try {
     if (!capture_dir.empty()) {
-      return lmc::ui::run_capture(capture_dir, capture_tabs, width, height);
+      return lmc::ui::run_capture(capture_dir, capture_tabs, width, height, {review.begin(), review.end()});
     }
     lmc::ui::ShellStartup startup;
     if (subject_screen_opt->count() > 0) {
@@ -52,6 +56,8 @@ int main(int argc, char** argv) {
       }
     }
     if (!capture_tabs.empty()) startup.tab = capture_tabs.front();
+    startup.review.assign(review.begin(), review.end());
+    if (!review.empty() && startup.tab.empty()) startup.tab = "review";
     if (!session.empty()) {
       startup.record = lmc::ui::RecordStartup{session, backend, fast};
       if (startup.tab.empty()) startup.tab = "record";

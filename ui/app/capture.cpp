@@ -41,7 +41,8 @@ int run_interactive(int width, int height, ShellStartup startup) {
   return 0;
 }
 
-int run_capture(const std::string& dir, const std::vector<std::string>& tab_ids, int width, int height) {
+int run_capture(const std::string& dir, const std::vector<std::string>& tab_ids, int width, int height,
+                const std::vector<std::filesystem::path>& review) {
   std::vector<std::string> ids = tab_ids;
   if (ids.empty()) {
     for (const auto& info : tab_registry()) ids.push_back(info.id);
@@ -56,7 +57,9 @@ int run_capture(const std::string& dir, const std::vector<std::string>& tab_ids,
   }
   std::filesystem::create_directories(dir);
   GlWindow window(WindowOptions{width, height, false, "LMC Workbench"});
-  WorkbenchShell shell;  // no recent-files path: a capture never touches the user's list
+  ShellStartup startup;  // no recent-files path: a capture never touches the user's list
+  startup.review = review;
+  WorkbenchShell shell(std::move(startup));
   // LMC_CAPTURE_HELP=walkthrough|shortcuts|about (1 = walkthrough) shows the Help window over
   // every capture: menus are closed in captures, so this is the only way to look at it.
   if (const char* help = std::getenv("LMC_CAPTURE_HELP"); help != nullptr && *help != '\0' && std::string(help) != "0") {

@@ -13,6 +13,7 @@ namespace lmc::ui {
 
 WorkbenchShell::WorkbenchShell(ShellStartup startup) : recent_files_path_(std::move(startup.recent_files_path)) {
   context_->record_startup() = std::move(startup.record);
+  context_->review_startup() = std::move(startup.review);
   if (startup.subject_screen) {
     context_->subject_screen().open = true;
     context_->subject_screen().monitor = startup.subject_screen->monitor;

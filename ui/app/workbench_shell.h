@@ -23,6 +23,7 @@ namespace lmc::ui {
 struct ShellStartup {
   std::string tab;  // the tab shown first ("" = the first)
   std::optional<RecordStartup> record;
+  std::vector<std::filesystem::path> review;  // `--review DIR…`: opened in the Review tab
   // `--subject-screen [MONITOR|window]`: the Record tab's subject screen opens at start-up.
   std::optional<SubjectScreenRequest> subject_screen;
   // Where the recent-files list is kept; empty = nothing is read or written (captures, tests).

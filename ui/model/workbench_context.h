@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "ui/model/current_layout.h"
 #include "ui/model/devices/live_rig.h"
@@ -32,6 +33,8 @@ class WorkbenchContext {
   LiveRig& rig() { return rig_; }
   // Set by the shell before the tabs are built; the Record tab takes it once.
   std::optional<RecordStartup>& record_startup() { return record_startup_; }
+  // `lmc-workbench --review DIR…`: folders the Review tab opens at start-up (it takes them once).
+  std::vector<std::filesystem::path>& review_startup() { return review_startup_; }
   // The Record tab's subject screen: what it shows and whether it is open (subject_screen_link.h).
   SubjectScreenLink& subject_screen() { return subject_screen_; }
 
@@ -39,6 +42,7 @@ class WorkbenchContext {
   CurrentLayout layout_;
   LiveRig rig_;  // after layout_: it reads it until destroyed
   std::optional<RecordStartup> record_startup_;
+  std::vector<std::filesystem::path> review_startup_;
   SubjectScreenLink subject_screen_;
 };
 

@@ -12,7 +12,7 @@ const std::vector<TabInfo>& tab_registry() {
       {"layout", "Layout", [](StatusSink& s, WorkbenchContext& c) { return make_layout_tab(s, c); }},
       {"devices", "Devices", [](StatusSink& s, WorkbenchContext& c) { return make_devices_tab(s, c); }},
       {"record", "Record", [](StatusSink& s, WorkbenchContext& c) { return make_record_tab(s, c); }},
-      {"review", "Review", [](StatusSink& s, WorkbenchContext&) { return make_review_tab(s); }},
+      {"review", "Review", [](StatusSink& s, WorkbenchContext& c) { return make_review_tab(s, c); }},
   };
   return tabs;
 }

@@ -15,7 +15,7 @@
 namespace lmc::ui {
 namespace {
 
-constexpr float kAxisGutterPx = 48.0F;  // left: y tick labels
+constexpr float kAxisGutterPx = kSeriesPlotGutterPx;
 constexpr ImU32 kTickText = IM_COL32(170, 175, 185, 255);
 constexpr ImU32 kGridLine = IM_COL32(60, 64, 72, 255);
 

@@ -15,6 +15,10 @@
 
 namespace lmc::ui {
 
+// Left of the plot area: the y tick labels. Widgets drawn under a plot on the same x range (the
+// Review tab's label strips) start their x axis here too, so times line up.
+inline constexpr float kSeriesPlotGutterPx = 48.0F;
+
 struct PlotSeries {
   std::string name;               // legend text and the key of its on/off state
   std::span<const double> x, y;   // x ascending, same length

@@ -1,19 +1,84 @@
 #include "ui/tabs/review/review_tab.h"
 
-#include "ui/widgets/placeholder_panel.h"
+#include <imgui.h>
+
+#include <algorithm>
+
+#include "ui/model/review/review_state.h"
+#include "ui/model/workbench_context.h"
+#include "ui/tabs/review/review_agreement_view.h"
+#include "ui/tabs/review/review_sources_bar.h"
+#include "ui/tabs/review/review_trial_table.h"
+#include "ui/tabs/review/review_trial_view.h"
+#include "ui/widgets/file_browser.h"
 
 namespace lmc::ui {
 namespace {
 
 class ReviewTab final : public Tab {
  public:
-  void draw() override {
-    draw_placeholder_panel("Review", "Process recorded trials and compare them with Vicon: finger lengths, joint angles, range of motion, visibility rates.", {"Resample, realign and fuse recordings", "Plots against Vicon ground truth", "Tables and figures to export"});
+  ReviewTab(StatusSink& status, WorkbenchContext& context) : status_(status), browser_("Open a folder of trials", "") {
+    for (const auto& folder : context.review_startup()) state_.open_folder(folder);
+    context.review_startup().clear();
   }
+
+  void update() override {
+    const bool was_busy = state_.batch_job().running();
+    state_.update();
+    if (was_busy && !state_.batch_job().running()) {
+      if (const ReviewBatch* b = state_.batch()) {
+        status_.set_status("Review: " + std::to_string(b->trials.size()) + " trial(s) ready (" + std::to_string(b->from_cache) +
+                           " from the cache)");
+      }
+    }
+  }
+
+  void draw() override {
+    if (state_.folders().empty()) {
+      draw_review_welcome(state_, browser_);
+      return;
+    }
+    draw_review_sources_bar(state_, browser_);
+    ImGui::Separator();
+    const float avail = ImGui::GetContentRegionAvail().y;
+    draw_review_trial_table(state_, std::clamp(avail * 0.3F, 120.0F, 320.0F));
+    if (ImGui::BeginTabBar("review_views")) {
+      if (ImGui::BeginTabItem("Trial against Vicon", nullptr, pending_view_ == 0 ? ImGuiTabItemFlags_SetSelected : 0)) {
+        trial_view_.draw(state_);
+        ImGui::EndTabItem();
+      }
+      if (ImGui::BeginTabItem("Agreement", nullptr, pending_view_ == 1 ? ImGuiTabItemFlags_SetSelected : 0)) {
+        agreement_view_.draw(state_);
+        ImGui::EndTabItem();
+      }
+      pending_view_ = -1;
+      ImGui::EndTabBar();
+    }
+  }
+
+  int prepare_for_capture() override {
+    pending_view_ = 0;
+    return 4;
+  }
+  bool busy_for_capture() const override { return state_.busy(); }
+  std::vector<std::string> extra_captures() const override { return {"review-agreement"}; }
+  void prepare_extra_capture(const std::string& name) override {
+    if (name == "review-agreement") pending_view_ = 1;
+  }
+
+ private:
+  StatusSink& status_;
+  ReviewState state_;
+  FileBrowser browser_;
+  ReviewTrialView trial_view_;
+  ReviewAgreementView agreement_view_;
+  int pending_view_ = -1;  // a capture's request: 0 the trial view, 1 agreement
 };
 
 }  // namespace
 
-std::unique_ptr<Tab> make_review_tab(StatusSink&) { return std::make_unique<ReviewTab>(); }
+std::unique_ptr<Tab> make_review_tab(StatusSink& status, WorkbenchContext& context) {
+  return std::make_unique<ReviewTab>(status, context);
+}
 
 }  // namespace lmc::ui

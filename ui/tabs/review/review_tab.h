@@ -5,6 +5,8 @@
 
 namespace lmc::ui {
 
-std::unique_ptr<Tab> make_review_tab(StatusSink& status);
+class WorkbenchContext;
+
+std::unique_ptr<Tab> make_review_tab(StatusSink& status, WorkbenchContext& context);
 
 }  // namespace lmc::ui

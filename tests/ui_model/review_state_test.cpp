@@ -1,0 +1,188 @@
+// The Review tab's model without ImGui (issue #12): a quick simulated subject session (2 trials
+// with truth) is processed by the batch job into table rows; a second opening comes from the cache;
+// a changed file, a changed method, a cancelled batch and a damaged cache entry behave as a lab
+// would expect; the state selects a trial and loads its series; filters and sorting.
+#include <chrono>
+#include <filesystem>
+#include <fstream>
+#include <thread>
+
+#include <gtest/gtest.h>
+
+#include "tests/support/cli_runner.h"
+#include "tests/support/reference_data.h"
+#include "ui/model/review/review_state.h"
+
+namespace lmc::ui {
+namespace review_state_test {  // named: test files share unity batches
+
+namespace fs = std::filesystem;
+
+// One quick simulated session for the whole suite (about two seconds to record).
+class ReviewModel : public ::testing::Test {
+ protected:
+  static void SetUpTestSuite() {
+    root_ = new fs::path(test::scratch_dir("review_model"));
+    session_ = new fs::path(*root_ / "S01");
+    const auto q = [](const fs::path& p) { return test::shell_quote(p.string()); };
+    test::CliRun r = test::run_lmc("session new --subject S01 --protocol quick -o " + q(*session_), *root_ / "l1");
+    ASSERT_EQ(r.exit_code, 0) << r.all();
+    r = test::run_lmc("session run " + q(*session_) + " --backend sim --fast --auto --seed 5 --quiet", *root_ / "l2");
+    ASSERT_EQ(r.exit_code, 0) << r.all();
+  }
+  static void TearDownTestSuite() {
+    fs::remove_all(*root_);
+    delete session_;
+    delete root_;
+  }
+  ReviewBatchInput input(const fs::path& cache) const {
+    ReviewBatchInput in;
+    in.folders = {*session_};
+    in.cache_dir = cache;
+    return in;
+  }
+  static ReviewBatch run(const ReviewBatchInput& in) {
+    std::stop_source never;
+    return run_review_batch(in, never.get_token(), {});
+  }
+  static fs::path* root_;
+  static fs::path* session_;
+};
+fs::path* ReviewModel::root_ = nullptr;
+fs::path* ReviewModel::session_ = nullptr;
+
+TEST_F(ReviewModel, ProcessesASessionIntoRowsAndReopensItFromTheCache) {
+  const fs::path cache = test::scratch_dir("review_cache_a");
+  int last_done = -1, last_total = -1;
+  std::stop_source never;
+  const ReviewBatch first = run_review_batch(input(cache), never.get_token(), [&](int d, int t) {
+    last_done = std::max(last_done, d);
+    last_total = t;
+  });
+  ASSERT_EQ(first.trials.size(), 2u);
+  EXPECT_EQ(first.processed_now, 2);
+  EXPECT_EQ(first.from_cache, 0);
+  EXPECT_EQ(last_done, 2);
+  EXPECT_EQ(last_total, 2);
+  for (const auto& t : first.trials) {
+    ASSERT_TRUE(t.outcome.ok) << t.outcome.error;
+    EXPECT_EQ(t.row.subject, "S01");
+    EXPECT_EQ(t.row.status, TrialRowStatus::kOk);  // the simulator writes the truth as Vicon would
+    EXPECT_EQ(t.row.layout, "initial");
+    EXPECT_EQ(t.row.pose, "horizontal");
+    ASSERT_EQ(t.row.visibility_rate.size(), 4u);
+    for (double v : t.row.visibility_rate) {
+      if (std::isfinite(v)) {
+        EXPECT_GE(v, 0.0);
+        EXPECT_LE(v, 1.0);
+      }
+    }
+    // Fused against truth: the simulated fingers are within a few centimetres.
+    ASSERT_TRUE(std::isfinite(t.row.finger_length_diff_mm));
+    EXPECT_LT(std::abs(t.row.finger_length_diff_mm), 30.0);
+  }
+  // Nothing was written into the recorded session.
+  for (const auto& e : fs::directory_iterator(*session_)) EXPECT_EQ(e.path().filename().string().find("summary"), std::string::npos);
+
+  const ReviewBatch second = run(input(cache));
+  EXPECT_EQ(second.from_cache, 2);
+  EXPECT_EQ(second.processed_now, 0);
+  for (size_t k = 0; k < 2; ++k) {
+    EXPECT_TRUE(second.trials[k].from_cache);
+    EXPECT_EQ(second.trials[k].outcome.summary, first.trials[k].outcome.summary);
+  }
+}
+
+TEST_F(ReviewModel, AChangedFileOrMethodIsProcessedAgainAndADamagedEntryIsAMiss) {
+  const fs::path cache = test::scratch_dir("review_cache_b");
+  const ReviewBatch first = run(input(cache));
+  ASSERT_EQ(first.processed_now, 2);
+  // A newer modification time on one recording: only that trial is processed again.
+  const fs::path lmc = first.trials[0].job.lmc;
+  fs::last_write_time(lmc, fs::last_write_time(lmc) + std::chrono::seconds(5));
+  ReviewBatch again = run(input(cache));
+  EXPECT_EQ(again.processed_now, 1);
+  EXPECT_FALSE(again.trials[0].from_cache);
+  EXPECT_TRUE(again.trials[1].from_cache);
+  // The other fusion method is another result.
+  ReviewBatchInput ref = input(cache);
+  ref.options.process.method = FusionMethod::kReference;
+  const ReviewBatch by_reference = run(ref);
+  EXPECT_EQ(by_reference.processed_now, 2);
+  EXPECT_EQ(by_reference.trials[0].outcome.summary["method"], "reference");
+  // Garbage in every entry: all misses, processed, and the entries written again.
+  for (const auto& e : fs::directory_iterator(cache / "")) {
+    std::ofstream(e.path(), std::ios::trunc) << "{ not json";
+  }
+  again = run(input(cache));
+  EXPECT_EQ(again.processed_now, 2);
+  again = run(input(cache));
+  EXPECT_EQ(again.from_cache, 2);
+}
+
+TEST_F(ReviewModel, ACancelledBatchLeavesTrialsOutAndStoresNothingForThem) {
+  const fs::path cache = test::scratch_dir("review_cache_c");
+  std::stop_source stop;
+  stop.request_stop();
+  const ReviewBatch cancelled = run_review_batch(input(cache), stop.get_token(), {});
+  ASSERT_EQ(cancelled.trials.size(), 2u);
+  for (const auto& t : cancelled.trials) {
+    EXPECT_TRUE(t.outcome.cancelled);
+    EXPECT_EQ(t.row.status, TrialRowStatus::kCancelled);
+  }
+  EXPECT_EQ(run(input(cache)).processed_now, 2);
+}
+
+TEST_F(ReviewModel, AFolderThatCannotBeReadIsANoteNotAFailure) {
+  ReviewBatchInput in = input(test::scratch_dir("review_cache_d"));
+  in.folders.push_back(*root_ / "no-such-folder");
+  const ReviewBatch b = run(in);
+  EXPECT_EQ(b.trials.size(), 2u);
+  ASSERT_FALSE(b.notes.empty());
+  bool named = false;
+  for (const auto& n : b.notes) named = named || n.find("no-such-folder") != std::string::npos;
+  EXPECT_TRUE(named);
+}
+
+TEST_F(ReviewModel, TheStateSelectsATrialAndLoadsItsSeriesOnOneTimeAxis) {
+  ReviewState state;
+  state.set_cache_dir(test::scratch_dir("review_cache_e"));
+  state.open_folder(*session_);
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(60);
+  while ((state.busy() || !state.view()) && std::chrono::steady_clock::now() < deadline) {
+    state.update();
+    std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  }
+  ASSERT_EQ(state.trials().size(), 2u);
+  ASSERT_EQ(state.selected(), 0);  // the first trial with Vicon is shown without a click
+  const auto view = state.view();
+  ASSERT_TRUE(view);
+  const TrialSeries& s = view->series;
+  EXPECT_EQ(s.trial, state.trials()[0].job.trial);
+  ASSERT_GT(s.frames(), 200);  // 3 s at 100 Hz
+  EXPECT_TRUE(s.has_vicon);
+  for (int f = 1; f < s.frames(); ++f) ASSERT_GT(s.time_s[f], s.time_s[f - 1]);
+  EXPECT_EQ(s.devices.size(), 4u);
+  for (const auto& d : s.devices) {
+    for (const auto& l : d.label) {
+      ASSERT_EQ(static_cast<int>(l.size()), s.frames());
+      for (auto v : l) ASSERT_TRUE(v == -1 || v == 0 || v == 1);
+    }
+  }
+  EXPECT_DOUBLE_EQ(state.x_range()->extent_lo(), s.time_s.front());
+  EXPECT_DOUBLE_EQ(state.x_range()->extent_hi(), s.time_s.back());
+
+  // Filtering by motion keeps one of the two trials; a text filter is case-blind.
+  TrialFilter f;
+  f.motion = "static";
+  state.set_filter(f);
+  ASSERT_EQ(state.visible_trials().size(), 1u);
+  EXPECT_EQ(state.trials()[static_cast<size_t>(state.visible_trials()[0])].row.motion, "static");
+  f = {};
+  f.text = "INDEX";
+  state.set_filter(f);
+  EXPECT_EQ(state.visible_trials().size(), 1u);
+}
+
+}  // namespace review_state_test
+}  // namespace lmc::ui

@@ -1,0 +1,60 @@
+#include "ui/model/review/review_batch_job.h"
+
+#include <thread>
+
+#include "core/results/processing_cache.h"
+#include "core/session/session_trials.h"
+
+namespace lmc::ui {
+
+ReviewBatch run_review_batch(const ReviewBatchInput& input, std::stop_token stop,
+                             const std::function<void(int done, int total)>& progress) {
+  ReviewBatch batch;
+  std::vector<lmc::TrialJob> jobs;
+  std::vector<std::filesystem::path> folder_of;
+  for (const auto& folder : input.folders) {
+    try {
+      auto found = session::trial_jobs_for_input(folder, std::nullopt, &batch.notes);
+      for (auto& j : found) {
+        jobs.push_back(std::move(j));
+        folder_of.push_back(folder);
+      }
+    } catch (const std::exception& e) {
+      // One unreadable folder must not hide the others.
+      batch.notes.push_back(e.what());
+    }
+  }
+  SessionOptions options = input.options;
+  options.stop = stop;
+  options.on_progress = progress;
+  const ProcessingCache cache(input.cache_dir);
+  CachedBatch done = process_session_cached(jobs, options, cache);
+  batch.cache_warnings = std::move(done.cache_warnings);
+  for (size_t k = 0; k < jobs.size(); ++k) {
+    ReviewTrial t;
+    t.folder = folder_of[k];
+    t.job = jobs[k];
+    t.outcome = std::move(done.outcomes[k]);
+    t.from_cache = done.from_cache[k];
+    const std::string subject = folder_of[k].filename().empty() ? folder_of[k].parent_path().filename().string()
+                                                                 : folder_of[k].filename().string();
+    t.row = trial_row(subject, t.job.trial, t.outcome.ok ? t.outcome.summary : nlohmann::json(), t.outcome.error,
+                      t.outcome.cancelled);
+    (t.from_cache ? batch.from_cache : batch.processed_now) += t.outcome.cancelled ? 0 : 1;
+    batch.trials.push_back(std::move(t));
+  }
+  return batch;
+}
+
+void ReviewBatchJob::start(ReviewBatchInput input) {
+  job_.start([in = std::move(input)](std::stop_token stop, JobChannel<ReviewBatchReport>& channel) {
+    channel.set_stage("processing");
+    return run_review_batch(in, stop, [&channel](int done, int total) { channel.set_progress(done, total); });
+  });
+}
+
+void ReviewBatchJob::wait() {
+  while (job_.running()) std::this_thread::sleep_for(std::chrono::milliseconds(5));
+}
+
+}  // namespace lmc::ui

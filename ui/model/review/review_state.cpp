@@ -1,0 +1,181 @@
+#include "ui/model/review/review_state.h"
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <set>
+
+#include "core/results/processing_cache.h"
+
+namespace lmc::ui {
+namespace {
+
+std::string lower(std::string s) {
+  for (char& c : s) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return s;
+}
+
+const std::string& column_value(const TrialRow& row, TrialColumn column, std::string& scratch) {
+  switch (column) {
+    case TrialColumn::kSubject: return row.subject;
+    case TrialColumn::kLayout: return row.layout;
+    case TrialColumn::kPose: return row.pose;
+    case TrialColumn::kMotion: return row.motion;
+    case TrialColumn::kStatus: scratch = trial_row_status_name(row.status); return scratch;
+    default: return row.trial;
+  }
+}
+
+const std::vector<ReviewTrial> kNoTrials;
+
+double numeric_value(const TrialRow& row, int column) {
+  const int vis = static_cast<int>(TrialColumn::kVisibility);
+  if (column >= vis) {
+    const size_t d = static_cast<size_t>(column - vis);
+    return d < row.visibility_rate.size() ? row.visibility_rate[d] : std::nan("");
+  }
+  switch (static_cast<TrialColumn>(column)) {
+    case TrialColumn::kLengthDiff: return row.finger_length_diff_mm;
+    case TrialColumn::kRomDiff: return row.rom_abs_diff_deg;
+    case TrialColumn::kLag: return row.lag_ms;
+    default: return std::nan("");
+  }
+}
+
+bool is_numeric_column(int column) {
+  return column >= static_cast<int>(TrialColumn::kLengthDiff);
+}
+
+// Trials of different subjects share names (S01's and S02's Naiv_Index101): folder and name.
+std::string trial_key(const ReviewTrial& t) { return t.folder.string() + '\n' + t.job.trial; }
+
+}  // namespace
+
+bool matches(const TrialRow& row, const TrialFilter& f) {
+  const auto field_ok = [](const std::string& want, const std::string& have) { return want.empty() || want == have; };
+  if (!field_ok(f.subject, row.subject) || !field_ok(f.layout, row.layout) || !field_ok(f.pose, row.pose) ||
+      !field_ok(f.motion, row.motion) || !field_ok(f.status, trial_row_status_name(row.status))) {
+    return false;
+  }
+  return f.text.empty() || lower(row.trial).find(lower(f.text)) != std::string::npos;
+}
+
+std::vector<std::string> distinct_values(const std::vector<ReviewTrial>& trials, TrialColumn column) {
+  std::set<std::string> values;
+  std::string scratch;
+  for (const auto& t : trials) values.insert(column_value(t.row, column, scratch));
+  return {values.begin(), values.end()};
+}
+
+ReviewState::ReviewState() { cache_dir_ = ProcessingCache::in_user_cache().dir(); }
+
+const std::vector<ReviewTrial>& ReviewState::trials() const { return batch_ ? batch_->trials : kNoTrials; }
+
+void ReviewState::open_folder(const std::filesystem::path& folder) {
+  const auto normal = folder.lexically_normal();
+  if (std::find(folders_.begin(), folders_.end(), normal) == folders_.end()) folders_.push_back(normal);
+  reprocess();
+}
+
+void ReviewState::close_folder(const std::filesystem::path& folder) {
+  folders_.erase(std::remove(folders_.begin(), folders_.end(), folder), folders_.end());
+  reprocess();
+}
+
+void ReviewState::set_method(FusionMethod method) {
+  if (options_.process.method == method) return;
+  options_.process.method = method;
+  reprocess();
+}
+
+void ReviewState::reprocess() {
+  problem_.clear();
+  if (selected_ >= 0 && selected_ < static_cast<int>(trials().size())) selected_trial_ = trial_key(trials()[selected_]);
+  batch_job_.start(ReviewBatchInput{folders_, options_, cache_dir_});
+}
+
+void ReviewState::select(int index) {
+  if (index < 0 || index >= static_cast<int>(trials().size())) return;
+  selected_ = index;
+  const ReviewTrial& t = trials()[index];
+  selected_trial_ = trial_key(t);
+  view_.reset();
+  view_job_.start(t.job, options_);
+}
+
+void ReviewState::update() {
+  if (job_finished(batch_job_.state())) {
+    if (auto r = batch_job_.result(); r && r != batch_) {
+      batch_ = r;
+      // Keep the trial a person was looking at selected after a reprocess, and load it again: the
+      // method or its files may have changed.
+      selected_ = -1;
+      for (size_t k = 0; k < batch_->trials.size(); ++k) {
+        if (trial_key(batch_->trials[k]) == selected_trial_) selected_ = static_cast<int>(k);
+      }
+      // Nothing chosen yet: show the first trial that has Vicon, so the view is never empty for
+      // no reason.
+      if (selected_ < 0) {
+        for (size_t k = 0; k < batch_->trials.size() && selected_ < 0; ++k) {
+          if (batch_->trials[k].row.status == TrialRowStatus::kOk) selected_ = static_cast<int>(k);
+        }
+      }
+      if (selected_ >= 0) select(selected_);
+    }
+    if (batch_job_.state() == JobState::kFailed && problem_.empty()) problem_ = batch_job_.error();
+  }
+  if (job_finished(view_job_.state())) {
+    if (auto v = view_job_.result(); v && v != view_) {
+      view_ = v;
+      if (!v->series.time_s.empty()) x_range_->set_extent(v->series.time_s.front(), v->series.time_s.back());
+    }
+    if (view_job_.state() == JobState::kFailed && problem_.empty()) problem_ = view_job_.error();
+  }
+}
+
+void sort_trials(const std::vector<ReviewTrial>& trials, const TrialSort& sort, std::vector<int>& indices) {
+  const auto less = [&](int a, int b) {
+    const TrialRow& ra = trials[static_cast<size_t>(a)].row;
+    const TrialRow& rb = trials[static_cast<size_t>(b)].row;
+    if (is_numeric_column(sort.column)) {
+      const double va = numeric_value(ra, sort.column), vb = numeric_value(rb, sort.column);
+      const bool fa = std::isfinite(va), fb = std::isfinite(vb);
+      if (fa != fb) return fa;  // unknown last, whatever the direction
+      if (fa && va != vb) return sort.ascending ? va < vb : va > vb;
+      return a < b;
+    }
+    std::string sa, sb;
+    const std::string& ta = column_value(ra, static_cast<TrialColumn>(sort.column), sa);
+    const std::string& tb = column_value(rb, static_cast<TrialColumn>(sort.column), sb);
+    if (ta != tb) return sort.ascending ? ta < tb : ta > tb;
+    return a < b;
+  };
+  std::stable_sort(indices.begin(), indices.end(), less);
+}
+
+std::vector<int> ReviewState::visible_trials() const {
+  std::vector<int> out;
+  for (size_t k = 0; k < trials().size(); ++k) {
+    if (matches(trials()[k].row, filter_)) out.push_back(static_cast<int>(k));
+  }
+  sort_trials(trials(), sort_, out);
+  return out;
+}
+
+const ReviewState::Agreement& ReviewState::agreement() const {
+  const AgreementKey key{batch_.get(), filter_, agreement_motion_};
+  if (agreement_key_ && *agreement_key_ == key) return agreement_;
+  agreement_ = {};
+  for (const int k : visible_trials()) {
+    const ReviewTrial& t = trials()[static_cast<size_t>(k)];
+    if (t.outcome.ok) agreement_.inputs.push_back(agreement_trial(t.row.subject, t.outcome.summary));
+  }
+  AgreementOptions options;
+  options.motion = agreement_motion_;
+  agreement_.table = agreement_table(agreement_.inputs, options);
+  agreement_.visibility = visibility_map(agreement_.inputs);
+  agreement_key_ = key;
+  return agreement_;
+}
+
+}  // namespace lmc::ui

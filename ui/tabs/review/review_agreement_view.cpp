@@ -1,0 +1,180 @@
+#include "ui/tabs/review/review_agreement_view.h"
+
+#include <imgui.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <map>
+#include <set>
+#include <string>
+
+#include "ui/scene/colour_maps.h"
+#include "ui/widgets/imgui_colour.h"
+
+namespace lmc::ui {
+namespace {
+
+std::string num(double v, int decimals, bool signed_value = false) {
+  if (!std::isfinite(v)) return "-";
+  char buf[48];
+  std::snprintf(buf, sizeof buf, signed_value ? "%+.*f" : "%.*f", decimals, v);
+  return buf;
+}
+
+std::string with_ci(double v, const stats::Interval& ci, int decimals, bool signed_value = false) {
+  if (!std::isfinite(v)) return "-";
+  return num(v, decimals, signed_value) + "  [" + num(ci.low, decimals, signed_value) + ", " + num(ci.high, decimals, signed_value) + "]";
+}
+
+std::string group_label(const AgreementGroup& g) {
+  const std::string name = g.layout == "all" ? std::string("all trials") : g.layout + " layout, " + g.pose;
+  return name + " (" + std::to_string(g.n_trials) + " trials, " + std::to_string(g.n_subjects) + " subj.)";
+}
+
+void draw_measure_table(const AgreementGroup& g, int& measure) {
+  const ImGuiTableFlags flags = ImGuiTableFlags_RowBg | ImGuiTableFlags_BordersInnerV | ImGuiTableFlags_SizingFixedFit |
+                                ImGuiTableFlags_ScrollY;
+  const float height = ImGui::GetTextLineHeightWithSpacing() * 12.6F;
+  if (!ImGui::BeginTable("agreement", 8, flags, ImVec2(0, height))) return;
+  ImGui::TableSetupScrollFreeze(0, 1);
+  ImGui::TableSetupColumn("measure");
+  ImGui::TableSetupColumn("n (subj.)");
+  ImGui::TableSetupColumn("bias LMC-Vicon [95% CI]");
+  ImGui::TableSetupColumn("lower limit [CI]");
+  ImGui::TableSetupColumn("upper limit [CI]");
+  ImGui::TableSetupColumn("RMSE");
+  ImGui::TableSetupColumn("r");
+  ImGui::TableSetupColumn("ICC(2,1) [CI]");
+  ImGui::TableHeadersRow();
+  for (size_t m = 0; m < g.measures.size(); ++m) {
+    const MeasureAgreement& a = g.measures[m];
+    ImGui::TableNextRow();
+    ImGui::TableNextColumn();
+    ImGui::PushID(static_cast<int>(m));
+    const std::string name = a.measure.part + " " + (a.measure.quantity == "finger length" ? "length" : "ROM") + " (" + a.measure.unit + ")";
+    if (ImGui::Selectable(name.c_str(), measure == static_cast<int>(m), ImGuiSelectableFlags_SpanAllColumns)) {
+      measure = static_cast<int>(m);
+    }
+    if (ImGui::IsItemHovered()) {
+      ImGui::BeginTooltip();
+      ImGui::TextUnformatted(a.bland_altman.method.c_str());
+      ImGui::TextUnformatted(a.icc.description.c_str());
+      if (!a.bland_altman.reason.empty()) ImGui::TextDisabled("Bland-Altman: %s", a.bland_altman.reason.c_str());
+      if (!a.icc_reason.empty()) ImGui::TextDisabled("ICC: %s", a.icc_reason.c_str());
+      if (a.n_skipped > 0) ImGui::TextDisabled("%zu trial(s) without a value on one side were left out", a.n_skipped);
+      ImGui::EndTooltip();
+    }
+    ImGui::PopID();
+    const auto& b = a.bland_altman;
+    const int d = 1;  // tenths of a mm or a degree: finer than either system measures
+    ImGui::TableNextColumn();
+    ImGui::Text("%zu (%zu)", a.n_trials, a.n_subjects);
+    ImGui::TableNextColumn();
+    ImGui::TextUnformatted(with_ci(b.bias, b.bias_ci, d, true).c_str());
+    ImGui::TableNextColumn();
+    ImGui::TextUnformatted(with_ci(b.loa_low, b.loa_low_ci, d, true).c_str());
+    ImGui::TableNextColumn();
+    ImGui::TextUnformatted(with_ci(b.loa_high, b.loa_high_ci, d, true).c_str());
+    ImGui::TableNextColumn();
+    ImGui::TextUnformatted(num(a.differences.rmse, d).c_str());
+    ImGui::TableNextColumn();
+    ImGui::TextUnformatted(num(a.pearson.r, 2).c_str());
+    ImGui::TableNextColumn();
+    ImGui::TextUnformatted(with_ci(a.icc.value, a.icc.ci, 2).c_str());
+  }
+  ImGui::EndTable();
+}
+
+// The study's map: rows are controllers, columns motion × layout, each cell the mean rate (−1
+// "never saw the hand" averaged in, as the paper does) on the viridis scale.
+void draw_visibility_map(const VisibilityMap& map) {
+  std::set<std::string> devices, columns_seen;
+  std::vector<std::pair<std::string, std::string>> columns;  // (layout, motion) in first-seen order
+  std::map<std::pair<std::string, std::string>, const VisibilityCell*> cell_at;
+  for (const auto& c : map.cells) {
+    devices.insert(c.device);
+    if (columns_seen.insert(c.layout + "\n" + c.motion).second) columns.emplace_back(c.layout, c.motion);
+  }
+  std::sort(columns.begin(), columns.end());
+  if (devices.empty()) {
+    ImGui::TextDisabled("No trials to map.");
+    return;
+  }
+  const int n_columns = 1 + static_cast<int>(columns.size());
+  if (!ImGui::BeginTable("visibility_map", n_columns, ImGuiTableFlags_Borders | ImGuiTableFlags_SizingFixedFit)) return;
+  ImGui::TableSetupColumn("");
+  for (const auto& [layout, motion] : columns) ImGui::TableSetupColumn((layout + "\n" + motion).c_str());
+  ImGui::TableHeadersRow();
+  for (const auto& device : devices) {
+    ImGui::TableNextRow();
+    ImGui::TableNextColumn();
+    ImGui::TextUnformatted(device.c_str());
+    for (const auto& [layout, motion] : columns) {
+      ImGui::TableNextColumn();
+      const VisibilityCell* cell = nullptr;
+      for (const auto& c : map.cells) {
+        if (c.device == device && c.layout == layout && c.motion == motion) cell = &c;
+      }
+      if (cell == nullptr || !std::isfinite(cell->rate_mean)) {
+        ImGui::TextDisabled("-");
+        continue;
+      }
+      // Rates run from −1 (never saw the hand) to 1; the colour spans that whole range.
+      const Rgba colour = viridis((cell->rate_mean + 1.0) / 2.0);
+      ImGui::TableSetBgColor(ImGuiTableBgTarget_CellBg, to_u32(colour, 0.85F));
+      const bool light = colour.r * 0.3 + colour.g * 0.6 + colour.b * 0.1 > 0.55;
+      ImGui::TextColored(light ? ImVec4(0, 0, 0, 1) : ImVec4(1, 1, 1, 1), "%+.2f", cell->rate_mean);
+      if (ImGui::IsItemHovered()) {
+        ImGui::SetTooltip("%s, %s, %s: %.2f +/- %.2f over %d value(s) from %zu trial(s); %zu of them -1 (never saw the hand)",
+                          device.c_str(), layout.c_str(), motion.c_str(), cell->rate_mean, cell->rate_sd, cell->values, cell->trials,
+                          cell->never_saw);
+      }
+    }
+  }
+  ImGui::EndTable();
+}
+
+}  // namespace
+
+void ReviewAgreementView::draw(ReviewState& state) {
+  const ReviewState::Agreement& agreement = state.agreement();
+  const AgreementTable& table = agreement.table;
+  ImGui::TextDisabled("Across the %zu trial(s) the table shows (its filters apply), %zu without Vicon. Differences are LMC - Vicon; "
+                      "one trial is one observation.",
+                      table.trials, table.trials_without_vicon);
+  std::set<std::string> motions;
+  for (const auto& t : state.trials()) motions.insert(t.row.motion);
+  ImGui::SetNextItemWidth(120);
+  const std::string current = state.agreement_motion().empty() ? "all motions" : state.agreement_motion();
+  if (ImGui::BeginCombo("motion", current.c_str())) {
+    if (ImGui::Selectable("all motions", state.agreement_motion().empty())) state.set_agreement_motion("");
+    for (const auto& m : motions) {
+      if (ImGui::Selectable(m.c_str(), m == state.agreement_motion())) state.set_agreement_motion(m);
+    }
+    ImGui::EndCombo();
+  }
+  if (ImGui::IsItemHovered()) ImGui::SetTooltip("A joint's range of motion means something else in a static trial than in a flexion trial");
+  if (table.groups.empty()) {
+    ImGui::TextDisabled("No trial with Vicon among those shown.");
+    return;
+  }
+  const int last = static_cast<int>(table.groups.size()) - 1;
+  const int g = group_ < 0 || group_ > last ? last : group_;
+  ImGui::SameLine();
+  ImGui::SetNextItemWidth(320);
+  if (ImGui::BeginCombo("group", group_label(table.groups[static_cast<size_t>(g)]).c_str())) {
+    for (int k = 0; k <= last; ++k) {
+      if (ImGui::Selectable(group_label(table.groups[static_cast<size_t>(k)]).c_str(), k == g)) group_ = k == last ? -1 : k;
+    }
+    ImGui::EndCombo();
+  }
+  const AgreementGroup& group = table.groups[static_cast<size_t>(g)];
+  measure_ = std::clamp(measure_, 0, std::max(0, static_cast<int>(group.measures.size()) - 1));
+  draw_measure_table(group, measure_);
+  ImGui::Spacing();
+  ImGui::TextUnformatted("Visibility rate per controller, motion and layout (the study's map; -1 = never saw the hand)");
+  draw_visibility_map(agreement.visibility);
+}
+
+}  // namespace lmc::ui

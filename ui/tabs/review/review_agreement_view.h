@@ -1,0 +1,20 @@
+#pragma once
+// Agreement as a validation study reports it (issue #12), over the trials the table shows: per
+// layout × pose group and for each finger length and joint range of motion, Bland–Altman bias and
+// 95 % limits with their confidence intervals (the repeated-measures form when a subject has
+// several trials), RMSE, Pearson r and ICC(2,1) with the model named; the selected measure's
+// Bland–Altman plot; and the study's visibility-rate map per controller × motion × layout.
+#include "ui/model/review/review_state.h"
+
+namespace lmc::ui {
+
+class ReviewAgreementView {
+ public:
+  void draw(ReviewState& state);
+
+ private:
+  int group_ = -1;  // index into the table's groups; −1: the pooled "all" group (last)
+  int measure_ = 0;
+};
+
+}  // namespace lmc::ui

@@ -1,0 +1,149 @@
+#include "ui/tabs/review/review_trial_table.h"
+
+#include <imgui.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <string>
+
+namespace lmc::ui {
+namespace {
+
+// One filter combo: "any" or one of the column's values.
+void filter_combo(const char* label, std::string& value, const std::vector<std::string>& choices, float width) {
+  ImGui::SetNextItemWidth(width);
+  if (ImGui::BeginCombo(label, value.empty() ? "any" : value.c_str())) {
+    if (ImGui::Selectable("any", value.empty())) value.clear();
+    for (const auto& c : choices) {
+      if (ImGui::Selectable(c.c_str(), c == value)) value = c;
+    }
+    ImGui::EndCombo();
+  }
+}
+
+// `signed_value`: a difference, written with its sign; unknown values are a dash, never 0.
+void number_cell(double v, int decimals, bool signed_value, const char* suffix = "") {
+  if (std::isfinite(v)) {
+    ImGui::Text(signed_value ? "%+.*f%s" : "%.*f%s", decimals, v, suffix);
+  } else {
+    ImGui::TextDisabled("-");
+  }
+}
+
+ImVec4 status_colour(TrialRowStatus s) {
+  switch (s) {
+    case TrialRowStatus::kOk: return ImVec4(0.55F, 0.85F, 0.55F, 1);
+    case TrialRowStatus::kNoVicon: return ImVec4(0.85F, 0.80F, 0.45F, 1);
+    case TrialRowStatus::kFailed: return ImVec4(0.95F, 0.45F, 0.35F, 1);
+    case TrialRowStatus::kCancelled: return ImVec4(0.6F, 0.6F, 0.6F, 1);
+  }
+  return ImVec4(1, 1, 1, 1);
+}
+
+}  // namespace
+
+void draw_review_trial_table(ReviewState& state, float height_px) {
+  const auto& trials = state.trials();
+  TrialFilter f = state.filter();
+  filter_combo("subject", f.subject, distinct_values(trials, TrialColumn::kSubject), 110);
+  ImGui::SameLine();
+  filter_combo("layout", f.layout, distinct_values(trials, TrialColumn::kLayout), 100);
+  ImGui::SameLine();
+  filter_combo("pose", f.pose, distinct_values(trials, TrialColumn::kPose), 100);
+  ImGui::SameLine();
+  filter_combo("motion", f.motion, distinct_values(trials, TrialColumn::kMotion), 90);
+  ImGui::SameLine();
+  filter_combo("status", f.status, distinct_values(trials, TrialColumn::kStatus), 90);
+  ImGui::SameLine();
+  char text[64];
+  std::snprintf(text, sizeof text, "%s", f.text.c_str());
+  ImGui::SetNextItemWidth(120);
+  if (ImGui::InputTextWithHint("##name", "trial name", text, sizeof text)) f.text = text;
+  if (!(f == state.filter())) state.set_filter(f);
+  const std::vector<int> rows = state.visible_trials();
+  ImGui::SameLine();
+  ImGui::TextDisabled("%zu of %zu", rows.size(), trials.size());
+
+  size_t controllers = 0;
+  for (const auto& t : trials) controllers = std::max(controllers, t.row.visibility_rate.size());
+  controllers = std::min<size_t>(controllers, 8);
+  const int fixed_columns = 9;
+  const int columns = fixed_columns + static_cast<int>(controllers);
+  const ImGuiTableFlags flags = ImGuiTableFlags_ScrollY | ImGuiTableFlags_RowBg | ImGuiTableFlags_BordersInnerV |
+                                ImGuiTableFlags_Resizable | ImGuiTableFlags_Sortable | ImGuiTableFlags_SizingFixedFit;
+  if (!ImGui::BeginTable("trials", columns, flags, ImVec2(0, height_px))) return;
+  ImGui::TableSetupScrollFreeze(0, 1);
+  // The user ids are TrialColumn values, so a sort spec maps straight to the model's sort.
+  ImGui::TableSetupColumn("subject", ImGuiTableColumnFlags_DefaultSort, 0, static_cast<ImGuiID>(TrialColumn::kSubject));
+  ImGui::TableSetupColumn("trial", 0, 0, static_cast<ImGuiID>(TrialColumn::kTrial));
+  ImGui::TableSetupColumn("layout", 0, 0, static_cast<ImGuiID>(TrialColumn::kLayout));
+  ImGui::TableSetupColumn("pose", 0, 0, static_cast<ImGuiID>(TrialColumn::kPose));
+  ImGui::TableSetupColumn("motion", 0, 0, static_cast<ImGuiID>(TrialColumn::kMotion));
+  ImGui::TableSetupColumn("status", 0, 0, static_cast<ImGuiID>(TrialColumn::kStatus));
+  for (size_t d = 0; d < controllers; ++d) {
+    const std::string name = "LMC" + std::to_string(d + 1) + " seen";
+    ImGui::TableSetupColumn(name.c_str(), ImGuiTableColumnFlags_PreferSortDescending, 0,
+                            static_cast<ImGuiID>(static_cast<int>(TrialColumn::kVisibility) + static_cast<int>(d)));
+  }
+  ImGui::TableSetupColumn("length diff (mm)", 0, 0, static_cast<ImGuiID>(TrialColumn::kLengthDiff));
+  ImGui::TableSetupColumn("|ROM diff| (deg)", 0, 0, static_cast<ImGuiID>(TrialColumn::kRomDiff));
+  ImGui::TableSetupColumn("lag (ms)", 0, 0, static_cast<ImGuiID>(TrialColumn::kLag));
+  ImGui::TableHeadersRow();
+  if (ImGuiTableSortSpecs* specs = ImGui::TableGetSortSpecs(); specs != nullptr && specs->SpecsDirty) {
+    if (specs->SpecsCount > 0) {
+      state.set_sort(TrialSort{static_cast<int>(specs->Specs[0].ColumnUserID),
+                               specs->Specs[0].SortDirection != ImGuiSortDirection_Descending});
+    }
+    specs->SpecsDirty = false;
+  }
+  ImGuiListClipper clipper;
+  clipper.Begin(static_cast<int>(rows.size()));
+  while (clipper.Step()) {
+    for (int r = clipper.DisplayStart; r < clipper.DisplayEnd; ++r) {
+      const int index = rows[static_cast<size_t>(r)];
+      const ReviewTrial& t = trials[static_cast<size_t>(index)];
+      const TrialRow& row = t.row;
+      ImGui::TableNextRow();
+      ImGui::TableNextColumn();
+      ImGui::PushID(index);
+      if (ImGui::Selectable(row.subject.c_str(), state.selected() == index, ImGuiSelectableFlags_SpanAllColumns)) {
+        state.select(index);
+      }
+      if (ImGui::IsItemHovered()) {
+        ImGui::BeginTooltip();
+        ImGui::Text("%s  (%s%s)", t.job.lmc.string().c_str(), t.job.vicon ? "with Vicon" : "no Vicon file",
+                    t.from_cache ? ", from the cache" : "");
+        if (!row.error.empty()) ImGui::TextColored(ImVec4(0.95F, 0.45F, 0.35F, 1), "%s", row.error.c_str());
+        for (const auto& w : t.outcome.warnings) ImGui::TextDisabled("%s", w.c_str());
+        ImGui::EndTooltip();
+      }
+      ImGui::PopID();
+      ImGui::TableNextColumn();
+      ImGui::TextUnformatted(row.trial.c_str());
+      ImGui::TableNextColumn();
+      ImGui::TextUnformatted(row.layout.c_str());
+      ImGui::TableNextColumn();
+      ImGui::TextUnformatted(row.pose.c_str());
+      ImGui::TableNextColumn();
+      ImGui::TextUnformatted(row.motion.c_str());
+      ImGui::TableNextColumn();
+      ImGui::TextColored(status_colour(row.status), "%s%s", trial_row_status_name(row.status),
+                         row.warnings > 0 && row.status == TrialRowStatus::kOk ? " (!)" : "");
+      for (size_t d = 0; d < controllers; ++d) {
+        ImGui::TableNextColumn();
+        const double v = d < row.visibility_rate.size() ? row.visibility_rate[d] * 100.0 : std::nan("");
+        number_cell(v, 0, false, " %");
+      }
+      ImGui::TableNextColumn();
+      number_cell(row.finger_length_diff_mm, 1, true);
+      ImGui::TableNextColumn();
+      number_cell(row.rom_abs_diff_deg, 1, false);
+      ImGui::TableNextColumn();
+      number_cell(row.lag_ms, 0, true);
+    }
+  }
+  ImGui::EndTable();
+}
+
+}  // namespace lmc::ui

@@ -1,0 +1,100 @@
+#include "ui/tabs/review/review_trial_view.h"
+
+#include <imgui.h>
+
+#include <string>
+
+#include "core/processing/measures.h"
+#include "ui/widgets/label_strips.h"
+
+namespace lmc::ui {
+namespace {
+
+constexpr const char* kFingerWords[] = {"thumb", "index", "middle", "ring", "pinky"};
+// Palette slots: fused and Vicon keep theirs whatever else is shown; controllers follow.
+constexpr int kFusedColour = 0, kViconColour = 7, kFirstDeviceColour = 1;
+
+std::vector<PlotSeries> series_for(const TrialSeries& s, bool angle, int index, bool each_controller) {
+  const auto pick = [&](const MeasureSeries& m) -> const std::vector<double>& {
+    return angle ? m.angle_deg[static_cast<size_t>(index)] : m.finger_mm[static_cast<size_t>(index)];
+  };
+  std::vector<PlotSeries> out;
+  out.push_back({"fused LMC", s.time_s, pick(s.fused), kFusedColour});
+  if (s.has_vicon) out.push_back({"Vicon", s.time_s, pick(s.vicon), kViconColour});
+  if (each_controller) {
+    for (size_t d = 0; d < s.devices.size(); ++d) {
+      out.push_back({"LMC" + std::to_string(s.devices[d].device_id), s.time_s, pick(s.devices[d].measures),
+                     kFirstDeviceColour + static_cast<int>(d)});
+    }
+  }
+  return out;
+}
+
+}  // namespace
+
+SeriesPlot& ReviewTrialView::plot(const std::string& id, const std::shared_ptr<LinkedXRange>& range) {
+  auto& p = plots_[id];
+  if (!p || p->x_range() != range) p = std::make_unique<SeriesPlot>(range);
+  return *p;
+}
+
+void ReviewTrialView::draw(const ReviewState& state) {
+  const auto view = state.view();
+  if (!view) {
+    if (state.view_job().running()) {
+      ImGui::TextDisabled("Processing %s...", state.view_job().trial().c_str());
+    } else if (state.selected() < 0) {
+      ImGui::TextDisabled("Click a trial in the table to see it against Vicon.");
+    } else if (state.view_job().state() == JobState::kFailed) {
+      ImGui::TextColored(ImVec4(0.95F, 0.45F, 0.35F, 1), "%s", state.view_job().error().c_str());
+    }
+    return;
+  }
+  const TrialSeries& s = view->series;
+  ImGui::Text("%s", s.trial.c_str());
+  ImGui::SameLine();
+  ImGui::TextDisabled("%.2f s, %s fusion%s", s.time_s.empty() ? 0.0 : s.time_s.back(),
+                      fusion_method_name(view->result->method), s.has_vicon ? ", against Vicon" : ", no Vicon file");
+  ImGui::SameLine(0, 20);
+  ImGui::Checkbox("each controller", &each_controller_);
+  if (ImGui::IsItemHovered()) ImGui::SetTooltip("Also draw each controller's own angles after realignment (LMC1-LMC4)");
+  ImGui::SameLine();
+  ImGui::TextDisabled("wheel: zoom, drag: pan, double-click: whole trial");
+  if (!view->warnings.empty()) {
+    ImGui::TextColored(ImVec4(0.85F, 0.80F, 0.45F, 1), "%zu warning(s)", view->warnings.size());
+    if (ImGui::IsItemHovered()) {
+      ImGui::BeginTooltip();
+      for (const auto& w : view->warnings) ImGui::TextUnformatted(w.c_str());
+      ImGui::EndTooltip();
+    }
+  }
+
+  ImGui::BeginChild("plots", ImVec2(0, 0), false);
+  const auto& range = state.x_range();
+  SeriesPlotOptions o;
+  o.height_px = 92;
+  for (int a = 0; a < kNumAngles; ++a) {
+    o.y_label = std::string(angle_name(a)) + " (deg)";
+    const std::string id = "angle" + std::to_string(a);
+    plot(id, range).draw(id.c_str(), series_for(s, true, a, each_controller_), o);
+  }
+  ImGui::SetNextItemWidth(110);
+  ImGui::Combo("finger length", &finger_, "thumb\0index\0middle\0ring\0pinky\0");
+  o.y_label = std::string(kFingerWords[finger_]) + " length (mm)";
+  o.x_label = "time (s)";
+  plot("finger", range).draw("finger", series_for(s, false, finger_, each_controller_), o);
+
+  ImGui::TextDisabled("Ray-traced label per controller, fingers thumb to pinky top to bottom:");
+  ImGui::SameLine();
+  draw_label_legend();
+  std::vector<LabelStrip> strips;
+  for (const auto& d : s.devices) {
+    for (int k = 0; k < kNumFingers; ++k) {
+      strips.push_back({"LMC" + std::to_string(d.device_id), kFingerWords[k], d.label[static_cast<size_t>(k)]});
+    }
+  }
+  draw_label_strips("labels", s.time_s, strips, *range);
+  ImGui::EndChild();
+}
+
+}  // namespace lmc::ui

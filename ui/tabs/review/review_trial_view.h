@@ -1,0 +1,27 @@
+#pragma once
+// One trial on one time axis (issue #12): the six joint angles and the finger lengths — fused LMC,
+// Vicon and, when asked, each controller after realignment — stacked on a shared x range (zoom,
+// pan and the cursor move them all), then a label strip per controller × finger so every gap has
+// its cause beside it.
+#include <map>
+#include <memory>
+#include <string>
+
+#include "ui/model/review/review_state.h"
+#include "ui/widgets/series_plot.h"
+
+namespace lmc::ui {
+
+class ReviewTrialView {
+ public:
+  void draw(const ReviewState& state);
+
+ private:
+  // One plot per id, all on the state's shared x range; each keeps its legend toggles.
+  SeriesPlot& plot(const std::string& id, const std::shared_ptr<LinkedXRange>& range);
+  bool each_controller_ = false;
+  int finger_ = 1;  // the finger-length plot's finger (0 thumb … 4 pinky)
+  std::map<std::string, std::unique_ptr<SeriesPlot>> plots_;
+};
+
+}  // namespace lmc::ui
