@@ -1,23 +1,26 @@
-#include "ui/model/plot/axis_ticks.h"
+#include "core/figures/axis_ticks.h"
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
 
-namespace lmc::ui {
+namespace lmc::figures {
 
 std::vector<double> nice_ticks(double lo, double hi, int target) {
   std::vector<double> out;
   if (!(hi > lo) || !std::isfinite(lo) || !std::isfinite(hi) || target < 1) return out;
   const double raw = (hi - lo) / target;
   const double power = std::pow(10.0, std::floor(std::log10(raw)));
-  // The round step whose tick count comes closest to `target`.
+  // The round step whose count of ticks inside [lo, hi] comes closest to `target`; a step that
+  // leaves fewer than two ticks (no scale to read) only when every step does.
   double step = power, best = std::numeric_limits<double>::infinity();
   for (const double m : {1.0, 2.0, 5.0, 10.0}) {
-    const double miss = std::abs((hi - lo) / (m * power) - target);
+    const double s = m * power;
+    const double count = std::floor(hi / s + 1e-9) - std::ceil(lo / s - 1e-9) + 1;
+    const double miss = std::abs(count - target) + (count < 2 ? 1e6 : 0.0);
     if (miss < best) {
       best = miss;
-      step = m * power;
+      step = s;
     }
   }
   const double first = std::ceil(lo / step) * step;
@@ -46,4 +49,4 @@ std::pair<double, double> fit_y_range(std::span<const std::span<const double>> x
   return {lo - pad, hi + pad};
 }
 
-}  // namespace lmc::ui
+}  // namespace lmc::figures
