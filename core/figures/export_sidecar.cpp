@@ -22,18 +22,24 @@ json axis_json(const Axis& a) {
 
 const char* style_name(SeriesStyle s) {
   switch (s) {
-    case SeriesStyle::points: return "points";
-    case SeriesStyle::line_and_points: return "line_and_points";
-    case SeriesStyle::line: break;
+    case SeriesStyle::points:
+      return "points";
+    case SeriesStyle::line_and_points:
+      return "line_and_points";
+    case SeriesStyle::line:
+      break;
   }
   return "line";
 }
 
 const char* dash_name(Dash d) {
   switch (d) {
-    case Dash::dashed: return "dashed";
-    case Dash::dotted: return "dotted";
-    case Dash::solid: break;
+    case Dash::dashed:
+      return "dashed";
+    case Dash::dotted:
+      return "dotted";
+    case Dash::solid:
+      break;
   }
   return "solid";
 }
@@ -53,7 +59,9 @@ json describe(const Figure& f, bool with_x) {
   j["series"] = series;
   json refs = json::array();
   for (const ReferenceLine& r : f.references)
-    refs.push_back({{"label", r.label}, {"y", std::isfinite(r.y) ? json(r.y) : json(nullptr)}, {"dash", dash_name(r.dash)}});
+    refs.push_back({{"label", r.label},
+                    {"y", std::isfinite(r.y) ? json(r.y) : json(nullptr)},
+                    {"dash", dash_name(r.dash)}});
   j["reference_lines"] = refs;
   j["notes"] = f.notes;
   return j;
@@ -79,9 +87,10 @@ void check_target(const std::filesystem::path& dir, const std::string& base_name
     throw Error(ErrorLocation{dir.string()}, "the folder to export the figure into does not exist");
 }
 
-WrittenFigure write_three(const std::filesystem::path& dir, const std::string& base_name, const std::string& svg,
-                          const std::string& csv, const json& sidecar) {
-  WrittenFigure w{dir / (base_name + ".svg"), dir / (base_name + ".csv"), dir / (base_name + ".json")};
+WrittenFigure write_three(const std::filesystem::path& dir, const std::string& base_name,
+                          const std::string& svg, const std::string& csv, const json& sidecar) {
+  WrittenFigure w{dir / (base_name + ".svg"), dir / (base_name + ".csv"),
+                  dir / (base_name + ".json")};
   write_file_atomically(w.svg, svg);
   write_file_atomically(w.csv, csv);
   write_file_atomically(w.json, sidecar.dump(2) + "\n");
@@ -90,14 +99,16 @@ WrittenFigure write_three(const std::filesystem::path& dir, const std::string& b
 
 }  // namespace
 
-json figure_sidecar(const Figure& figure, const std::string& base_name, const FigureProvenance& how) {
+json figure_sidecar(const Figure& figure, const std::string& base_name,
+                    const FigureProvenance& how) {
   json j = common(figure.title, base_name, how);
   j["csv_columns"] = {"series", "x", "y"};
   j["figure"] = describe(figure, true);
   return j;
 }
 
-json figure_sidecar(const FigureGrid& grid, const std::string& base_name, const FigureProvenance& how) {
+json figure_sidecar(const FigureGrid& grid, const std::string& base_name,
+                    const FigureProvenance& how) {
   json j = common(grid.title, base_name, how);
   j["csv_columns"] = {"panel", "series", "x", "y"};
   json panels = json::array();
@@ -106,9 +117,10 @@ json figure_sidecar(const FigureGrid& grid, const std::string& base_name, const 
   return j;
 }
 
-WrittenFigure write_figure_files(const std::filesystem::path& dir, const std::string& base_name, const Figure& figure,
-                                 const std::vector<std::string>& inputs, const std::string& method,
-                                 const json& parameters, int width_px, int height_px) {
+WrittenFigure write_figure_files(const std::filesystem::path& dir, const std::string& base_name,
+                                 const Figure& figure, const std::vector<std::string>& inputs,
+                                 const std::string& method, const json& parameters, int width_px,
+                                 int height_px) {
   check_target(dir, base_name);
   const FigureProvenance how{inputs, method, parameters};
   return write_three(dir, base_name, to_svg(figure, width_px, height_px), to_csv(figure),
@@ -117,10 +129,12 @@ WrittenFigure write_figure_files(const std::filesystem::path& dir, const std::st
 
 WrittenFigure write_figure_files(const std::filesystem::path& dir, const std::string& base_name,
                                  const FigureGrid& grid, const std::vector<std::string>& inputs,
-                                 const std::string& method, const json& parameters, int width_px, int height_px) {
+                                 const std::string& method, const json& parameters, int width_px,
+                                 int height_px) {
   check_target(dir, base_name);
   const FigureProvenance how{inputs, method, parameters};
-  return write_three(dir, base_name, to_svg(grid, width_px, height_px), to_csv(grid), figure_sidecar(grid, base_name, how));
+  return write_three(dir, base_name, to_svg(grid, width_px, height_px), to_csv(grid),
+                     figure_sidecar(grid, base_name, how));
 }
 
 }  // namespace lmc::figures

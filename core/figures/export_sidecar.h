@@ -24,23 +24,26 @@ struct FigureProvenance {
   nlohmann::json parameters = nlohmann::json::object();
 };
 
-nlohmann::json figure_sidecar(const Figure& figure, const std::string& base_name, const FigureProvenance& how);
-nlohmann::json figure_sidecar(const FigureGrid& grid, const std::string& base_name, const FigureProvenance& how);
+nlohmann::json figure_sidecar(const Figure& figure, const std::string& base_name,
+                              const FigureProvenance& how);
+nlohmann::json figure_sidecar(const FigureGrid& grid, const std::string& base_name,
+                              const FigureProvenance& how);
 
 struct WrittenFigure {
   std::filesystem::path svg, csv, json;
 };
 
-// Writes dir/base.svg, dir/base.csv and then dir/base.json, each atomically (core/io/atomic_write.h),
-// the sidecar last so its presence means the set is complete. Throws lmc::Error naming the problem
-// when base_name is not a safe file name (core/common/safe_name.h: "../x" is refused), when dir is
-// not an existing folder, or when a write fails.
-WrittenFigure write_figure_files(const std::filesystem::path& dir, const std::string& base_name, const Figure& figure,
-                                 const std::vector<std::string>& inputs, const std::string& method,
-                                 const nlohmann::json& parameters, int width_px = 800, int height_px = 500);
+// Writes dir/base.svg, dir/base.csv and then dir/base.json, each atomically
+// (core/io/atomic_write.h), the sidecar last so its presence means the set is complete. Throws
+// lmc::Error naming the problem when base_name is not a safe file name (core/common/safe_name.h:
+// "../x" is refused), when dir is not an existing folder, or when a write fails.
+WrittenFigure write_figure_files(const std::filesystem::path& dir, const std::string& base_name,
+                                 const Figure& figure, const std::vector<std::string>& inputs,
+                                 const std::string& method, const nlohmann::json& parameters,
+                                 int width_px = 800, int height_px = 500);
 WrittenFigure write_figure_files(const std::filesystem::path& dir, const std::string& base_name,
                                  const FigureGrid& grid, const std::vector<std::string>& inputs,
-                                 const std::string& method, const nlohmann::json& parameters, int width_px = 800,
-                                 int height_px = 800);
+                                 const std::string& method, const nlohmann::json& parameters,
+                                 int width_px = 800, int height_px = 800);
 
 }  // namespace lmc::figures

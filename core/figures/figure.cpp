@@ -20,7 +20,8 @@ struct Extent {
 };
 
 AxisRange finish(const Extent& e, const std::optional<AxisRange>& fixed) {
-  if (fixed && std::isfinite(fixed->lo) && std::isfinite(fixed->hi) && fixed->hi > fixed->lo) return *fixed;
+  if (fixed && std::isfinite(fixed->lo) && std::isfinite(fixed->hi) && fixed->hi > fixed->lo)
+    return *fixed;
   if (!(e.hi >= e.lo)) return {0.0, 1.0};
   if (e.hi == e.lo) return {e.lo - 1.0, e.hi + 1.0};
   const double pad = (e.hi - e.lo) * kMargin;
@@ -34,7 +35,9 @@ void add_x(Extent& e, const Figure& f) {
 
 }  // namespace
 
-Rgb colour_of(const Series& s, std::size_t index) { return s.colour ? *s.colour : series_colour(index); }
+Rgb colour_of(const Series& s, std::size_t index) {
+  return s.colour ? *s.colour : series_colour(index);
+}
 
 AxisRange x_range(const Figure& f) {
   Extent e;

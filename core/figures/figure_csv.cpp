@@ -8,7 +8,9 @@
 namespace lmc::figures {
 namespace {
 
-double at(const std::vector<double>& v, size_t i) { return i < v.size() ? v[i] : std::nan(""); }
+double at(const std::vector<double>& v, size_t i) {
+  return i < v.size() ? v[i] : std::nan("");
+}
 
 void rows(std::string& out, const std::string& prefix, const Figure& f) {
   for (const Series& s : f.series) {
@@ -39,7 +41,8 @@ std::string to_csv(const Figure& figure) {
 
 std::string to_csv(const FigureGrid& grid) {
   std::string out = "panel,series,x,y\n";
-  for (size_t p = 0; p < grid.panels.size(); ++p) rows(out, std::to_string(p + 1) + ",", grid.panels[p]);
+  for (size_t p = 0; p < grid.panels.size(); ++p)
+    rows(out, std::to_string(p + 1) + ",", grid.panels[p]);
   return out;
 }
 

@@ -26,6 +26,8 @@ inline constexpr std::array<Rgb, 8> kOkabeIto = {{
 }};
 
 // The i-th series' default colour; the palette repeats after eight series.
-inline constexpr Rgb series_colour(std::size_t i) { return kOkabeIto[i % kOkabeIto.size()]; }
+inline constexpr Rgb series_colour(std::size_t i) {
+  return kOkabeIto[i % kOkabeIto.size()];
+}
 
 }  // namespace lmc::figures

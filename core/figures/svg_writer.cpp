@@ -18,7 +18,7 @@ constexpr double kTitleFont = 15.0;   // the document's title
 constexpr double kPanelFont = 13.0;   // a grid panel's own title
 constexpr double kCharWidth = 0.6;    // an average sans-serif glyph, in em: text is never measured
 constexpr double kLineHeight = 18.0;  // one row of legend or notes
-constexpr double kFar = 1e5;          // coordinates are clamped this far outside the plot (clipped anyway)
+constexpr double kFar = 1e5;  // coordinates are clamped this far outside the plot (clipped anyway)
 
 struct Box {
   double x = 0, y = 0, w = 0, h = 0;
@@ -26,7 +26,9 @@ struct Box {
   double bottom() const { return y + h; }
 };
 
-std::string num(double v) { return fixed_c(v, 2); }
+std::string num(double v) {
+  return fixed_c(v, 2);
+}
 
 std::string hex(Rgb c) {
   char buf[8];
@@ -42,40 +44,51 @@ double text_width(std::string_view s, double font) {
   return static_cast<double>(n) * kCharWidth * font;
 }
 
-std::string axis_text(const Axis& a) { return a.unit.empty() ? a.label : a.label + " (" + a.unit + ")"; }
+std::string axis_text(const Axis& a) {
+  return a.unit.empty() ? a.label : a.label + " (" + a.unit + ")";
+}
 
 // Enough decimals to tell neighbouring ticks `step` apart.
 std::string tick_text(double v, double step) {
   int decimals = 0;
-  if (step > 0 && step < 1) decimals = std::min(12, static_cast<int>(std::ceil(-std::log10(step) - 1e-9)));
+  if (step > 0 && step < 1)
+    decimals = std::min(12, static_cast<int>(std::ceil(-std::log10(step) - 1e-9)));
   return fixed_c(v, decimals);
 }
 
-double tick_step(const std::vector<double>& ticks) { return ticks.size() >= 2 ? ticks[1] - ticks[0] : 1.0; }
+double tick_step(const std::vector<double>& ticks) {
+  return ticks.size() >= 2 ? ticks[1] - ticks[0] : 1.0;
+}
 
 struct Mapper {
   AxisRange xr, yr;
   Box plot;
   double px(double x) const {
-    return std::clamp(plot.x + (x - xr.lo) / (xr.hi - xr.lo) * plot.w, plot.x - kFar, plot.right() + kFar);
+    return std::clamp(plot.x + (x - xr.lo) / (xr.hi - xr.lo) * plot.w, plot.x - kFar,
+                      plot.right() + kFar);
   }
   double py(double y) const {
-    return std::clamp(plot.bottom() - (y - yr.lo) / (yr.hi - yr.lo) * plot.h, plot.y - kFar, plot.bottom() + kFar);
+    return std::clamp(plot.bottom() - (y - yr.lo) / (yr.hi - yr.lo) * plot.h, plot.y - kFar,
+                      plot.bottom() + kFar);
   }
 };
 
 std::string dash_attr(Dash d) {
   switch (d) {
-    case Dash::dashed: return " stroke-dasharray=\"6 4\"";
-    case Dash::dotted: return " stroke-dasharray=\"2 3\"";
-    case Dash::solid: break;
+    case Dash::dashed:
+      return " stroke-dasharray=\"6 4\"";
+    case Dash::dotted:
+      return " stroke-dasharray=\"2 3\"";
+    case Dash::solid:
+      break;
   }
   return {};
 }
 
-void text(std::string& out, double x, double y, std::string_view s, std::string_view anchor, double font = kFont,
-          std::string_view extra = {}) {
-  out += "<text x=\"" + num(x) + "\" y=\"" + num(y) + "\" text-anchor=\"" + std::string(anchor) + "\"";
+void text(std::string& out, double x, double y, std::string_view s, std::string_view anchor,
+          double font = kFont, std::string_view extra = {}) {
+  out +=
+      "<text x=\"" + num(x) + "\" y=\"" + num(y) + "\" text-anchor=\"" + std::string(anchor) + "\"";
   if (font != kFont) out += " font-size=\"" + num(font) + "\"";
   out += std::string(extra) + ">" + xml_escape(s) + "</text>\n";
 }
@@ -83,10 +96,11 @@ void text(std::string& out, double x, double y, std::string_view s, std::string_
 // A legend entry's sample of how its series is drawn.
 void swatch(std::string& out, double x, double y, const Series& s, Rgb c) {
   if (s.style != SeriesStyle::points)
-    out += "<line x1=\"" + num(x) + "\" y1=\"" + num(y) + "\" x2=\"" + num(x + 18) + "\" y2=\"" + num(y) +
-           "\" stroke=\"" + hex(c) + "\" stroke-width=\"2\"/>\n";
+    out += "<line x1=\"" + num(x) + "\" y1=\"" + num(y) + "\" x2=\"" + num(x + 18) + "\" y2=\"" +
+           num(y) + "\" stroke=\"" + hex(c) + "\" stroke-width=\"2\"/>\n";
   if (s.style != SeriesStyle::line)
-    out += "<circle cx=\"" + num(x + 9) + "\" cy=\"" + num(y) + "\" r=\"3\" fill=\"" + hex(c) + "\"/>\n";
+    out += "<circle cx=\"" + num(x + 9) + "\" cy=\"" + num(y) + "\" r=\"3\" fill=\"" + hex(c) +
+           "\"/>\n";
 }
 
 struct LegendItem {
@@ -114,8 +128,8 @@ std::vector<LegendItem> legend_layout(const Figure& f, double width, int& rows) 
 }
 
 struct PanelStyle {
-  double left = 0;    // room for y tick labels and the y axis label
-  double right = 0;   // room for reference-line labels
+  double left = 0;   // room for y tick labels and the y axis label
+  double right = 0;  // room for reference-line labels
   bool x_labels = true;
   std::string x_axis_text;
   bool own_title = false;  // a grid panel's title, smaller, inside its area
@@ -126,7 +140,8 @@ double left_margin(const Figure& f) {
   const AxisRange yr = y_range(f);
   const auto ticks = nice_ticks(yr.lo, yr.hi, 5);
   double widest = 0;
-  for (const double t : ticks) widest = std::max(widest, text_width(tick_text(t, tick_step(ticks)), kFont));
+  for (const double t : ticks)
+    widest = std::max(widest, text_width(tick_text(t, tick_step(ticks)), kFont));
   return 26 + widest + 8;
 }
 
@@ -148,8 +163,9 @@ void gap_bands(std::string& out, const Series& s, const Mapper& m) {
     }
     if (gap && last >= 0) {
       const double a = m.px(s.x[static_cast<size_t>(last)]), b = m.px(s.x[i]);
-      out += "<rect class=\"gap\" x=\"" + num(std::min(a, b)) + "\" y=\"" + num(m.plot.y) + "\" width=\"" +
-             num(std::abs(b - a)) + "\" height=\"" + num(m.plot.h) + "\" fill=\"#000000\" fill-opacity=\"0.06\"/>\n";
+      out += "<rect class=\"gap\" x=\"" + num(std::min(a, b)) + "\" y=\"" + num(m.plot.y) +
+             "\" width=\"" + num(std::abs(b - a)) + "\" height=\"" + num(m.plot.h) +
+             "\" fill=\"#000000\" fill-opacity=\"0.06\"/>\n";
     }
     gap = false;
     last = static_cast<std::ptrdiff_t>(i);
@@ -168,8 +184,8 @@ void line_pieces(std::string& out, const Series& s, const Mapper& m, Rgb c) {
       out += "<path class=\"line\" d=\"" + d + "\" fill=\"none\" stroke=\"" + hex(c) +
              "\" stroke-width=\"1.5\" stroke-linejoin=\"round\"/>\n";
     else if (count == 1 && s.style == SeriesStyle::line)
-      out += "<circle class=\"lone\" cx=\"" + num(lone_x) + "\" cy=\"" + num(lone_y) + "\" r=\"1.5\" fill=\"" + hex(c) +
-             "\"/>\n";
+      out += "<circle class=\"lone\" cx=\"" + num(lone_x) + "\" cy=\"" + num(lone_y) +
+             "\" r=\"1.5\" fill=\"" + hex(c) + "\"/>\n";
     d.clear();
     count = 0;
   };
@@ -190,8 +206,8 @@ void points(std::string& out, const Series& s, const Mapper& m, Rgb c) {
   const size_t n = std::min(s.x.size(), s.y.size());
   for (size_t i = 0; i < n; ++i) {
     if (!std::isfinite(s.x[i]) || !std::isfinite(s.y[i])) continue;
-    out += "<circle class=\"point\" cx=\"" + num(m.px(s.x[i])) + "\" cy=\"" + num(m.py(s.y[i])) + "\" r=\"2.5\" fill=\"" +
-           hex(c) + "\"/>\n";
+    out += "<circle class=\"point\" cx=\"" + num(m.px(s.x[i])) + "\" cy=\"" + num(m.py(s.y[i])) +
+           "\" r=\"2.5\" fill=\"" + hex(c) + "\"/>\n";
   }
 }
 
@@ -200,7 +216,8 @@ void points(std::string& out, const Series& s, const Mapper& m, Rgb c) {
 void panel(std::string& out, const Figure& f, Box area, const AxisRange& xr, const PanelStyle& st) {
   double top = area.y;
   if (st.own_title && !f.title.empty()) {
-    text(out, area.x + st.left, top + kPanelFont, f.title, "start", kPanelFont, " font-weight=\"bold\"");
+    text(out, area.x + st.left, top + kPanelFont, f.title, "start", kPanelFont,
+         " font-weight=\"bold\"");
     top += kPanelFont + 8;
   }
   int rows = 0;
@@ -208,8 +225,10 @@ void panel(std::string& out, const Figure& f, Box area, const AxisRange& xr, con
   const auto legend = legend_layout(f, plot_w, rows);
   const double legend_top = top;
   top += rows * kLineHeight + (rows > 0 ? 4 : 0);
-  const double bottom_room = st.x_labels ? (kFont + 10) + (st.x_axis_text.empty() ? 0 : kFont + 10) : 6;
-  Box plot{area.x + st.left, top + 4, plot_w, std::max(20.0, area.bottom() - bottom_room - top - 4)};
+  const double bottom_room =
+      st.x_labels ? (kFont + 10) + (st.x_axis_text.empty() ? 0 : kFont + 10) : 6;
+  Box plot{area.x + st.left, top + 4, plot_w,
+           std::max(20.0, area.bottom() - bottom_room - top - 4)};
   const Mapper m{xr, y_range(f), plot};
 
   // Legend: outside the plot, above it.
@@ -225,46 +244,48 @@ void panel(std::string& out, const Figure& f, Box area, const AxisRange& xr, con
   const auto xticks = nice_ticks(xr.lo, xr.hi, std::max(2, static_cast<int>(plot.w / 90)));
   out += "<g class=\"grid\" stroke=\"#e6e6e6\" stroke-width=\"1\">\n";
   for (const double t : yticks)
-    out += "<line x1=\"" + num(plot.x) + "\" y1=\"" + num(m.py(t)) + "\" x2=\"" + num(plot.right()) + "\" y2=\"" +
-           num(m.py(t)) + "\"/>\n";
+    out += "<line x1=\"" + num(plot.x) + "\" y1=\"" + num(m.py(t)) + "\" x2=\"" +
+           num(plot.right()) + "\" y2=\"" + num(m.py(t)) + "\"/>\n";
   for (const double t : xticks)
-    out += "<line x1=\"" + num(m.px(t)) + "\" y1=\"" + num(plot.y) + "\" x2=\"" + num(m.px(t)) + "\" y2=\"" +
-           num(plot.bottom()) + "\"/>\n";
+    out += "<line x1=\"" + num(m.px(t)) + "\" y1=\"" + num(plot.y) + "\" x2=\"" + num(m.px(t)) +
+           "\" y2=\"" + num(plot.bottom()) + "\"/>\n";
   out += "</g>\n";
   out += "<g class=\"ticks\" stroke=\"#000000\" stroke-width=\"1\">\n";
   for (const double t : yticks)
-    out += "<line x1=\"" + num(plot.x - 5) + "\" y1=\"" + num(m.py(t)) + "\" x2=\"" + num(plot.x) + "\" y2=\"" +
-           num(m.py(t)) + "\"/>\n";
+    out += "<line x1=\"" + num(plot.x - 5) + "\" y1=\"" + num(m.py(t)) + "\" x2=\"" + num(plot.x) +
+           "\" y2=\"" + num(m.py(t)) + "\"/>\n";
   for (const double t : xticks)
-    out += "<line x1=\"" + num(m.px(t)) + "\" y1=\"" + num(plot.bottom()) + "\" x2=\"" + num(m.px(t)) + "\" y2=\"" +
-           num(plot.bottom() + 5) + "\"/>\n";
+    out += "<line x1=\"" + num(m.px(t)) + "\" y1=\"" + num(plot.bottom()) + "\" x2=\"" +
+           num(m.px(t)) + "\" y2=\"" + num(plot.bottom() + 5) + "\"/>\n";
   out += "</g>\n";
-  for (const double t : yticks) text(out, plot.x - 8, m.py(t) + kFont * 0.35, tick_text(t, tick_step(yticks)), "end");
+  for (const double t : yticks)
+    text(out, plot.x - 8, m.py(t) + kFont * 0.35, tick_text(t, tick_step(yticks)), "end");
   if (st.x_labels)
-    for (const double t : xticks) text(out, m.px(t), plot.bottom() + 8 + kFont, tick_text(t, tick_step(xticks)), "middle");
+    for (const double t : xticks)
+      text(out, m.px(t), plot.bottom() + 8 + kFont, tick_text(t, tick_step(xticks)), "middle");
 
   // Axis labels with units.
   const std::string ylabel = axis_text(f.y);
   if (!ylabel.empty()) {
     const double cx = area.x + 14, cy = plot.y + plot.h / 2;
-    out += "<text x=\"0\" y=\"0\" transform=\"translate(" + num(cx) + "," + num(cy) + ") rotate(-90)\" text-anchor=\"middle\">" +
-           xml_escape(ylabel) + "</text>\n";
+    out += "<text x=\"0\" y=\"0\" transform=\"translate(" + num(cx) + "," + num(cy) +
+           ") rotate(-90)\" text-anchor=\"middle\">" + xml_escape(ylabel) + "</text>\n";
   }
   if (st.x_labels && !st.x_axis_text.empty())
     text(out, plot.x + plot.w / 2, plot.bottom() + 2 * (kFont + 10) - 4, st.x_axis_text, "middle");
 
   // Everything data-driven is clipped to the plot.
   const std::string clip = "plot-clip-" + std::to_string(st.clip_id);
-  out += "<defs><clipPath id=\"" + clip + "\"><rect x=\"" + num(plot.x) + "\" y=\"" + num(plot.y) + "\" width=\"" +
-         num(plot.w) + "\" height=\"" + num(plot.h) + "\"/></clipPath></defs>\n";
+  out += "<defs><clipPath id=\"" + clip + "\"><rect x=\"" + num(plot.x) + "\" y=\"" + num(plot.y) +
+         "\" width=\"" + num(plot.w) + "\" height=\"" + num(plot.h) + "\"/></clipPath></defs>\n";
   out += "<g clip-path=\"url(#" + clip + ")\">\n";
   for (const Series& s : f.series)
     if (s.shade_gaps) gap_bands(out, s, m);
   for (const ReferenceLine& r : f.references) {
     if (!std::isfinite(r.y)) continue;
-    out += "<line class=\"reference\" x1=\"" + num(plot.x) + "\" y1=\"" + num(m.py(r.y)) + "\" x2=\"" +
-           num(plot.right()) + "\" y2=\"" + num(m.py(r.y)) + "\" stroke=\"" + hex(r.colour) + "\" stroke-width=\"1\"" +
-           dash_attr(r.dash) + "/>\n";
+    out += "<line class=\"reference\" x1=\"" + num(plot.x) + "\" y1=\"" + num(m.py(r.y)) +
+           "\" x2=\"" + num(plot.right()) + "\" y2=\"" + num(m.py(r.y)) + "\" stroke=\"" +
+           hex(r.colour) + "\" stroke-width=\"1\"" + dash_attr(r.dash) + "/>\n";
   }
   for (size_t i = 0; i < f.series.size(); ++i) {
     const Series& s = f.series[i];
@@ -273,24 +294,29 @@ void panel(std::string& out, const Figure& f, Box area, const AxisRange& xr, con
     if (s.style != SeriesStyle::line) points(out, s, m, c);
   }
   out += "</g>\n";
-  out += "<rect class=\"frame\" x=\"" + num(plot.x) + "\" y=\"" + num(plot.y) + "\" width=\"" + num(plot.w) +
-         "\" height=\"" + num(plot.h) + "\" fill=\"none\" stroke=\"#000000\" stroke-width=\"1\"/>\n";
+  out += "<rect class=\"frame\" x=\"" + num(plot.x) + "\" y=\"" + num(plot.y) + "\" width=\"" +
+         num(plot.w) + "\" height=\"" + num(plot.h) +
+         "\" fill=\"none\" stroke=\"#000000\" stroke-width=\"1\"/>\n";
 
   // Reference labels beside the plot at their line's height, nudged apart so none overlap.
   std::vector<std::pair<double, const ReferenceLine*>> labels;
   for (const ReferenceLine& r : f.references)
-    if (std::isfinite(r.y) && !r.label.empty() && r.y >= m.yr.lo && r.y <= m.yr.hi) labels.push_back({m.py(r.y), &r});
-  std::stable_sort(labels.begin(), labels.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+    if (std::isfinite(r.y) && !r.label.empty() && r.y >= m.yr.lo && r.y <= m.yr.hi)
+      labels.push_back({m.py(r.y), &r});
+  std::stable_sort(labels.begin(), labels.end(),
+                   [](const auto& a, const auto& b) { return a.first < b.first; });
   for (size_t i = 1; i < labels.size(); ++i)
     labels[i].first = std::max(labels[i].first, labels[i - 1].first + kFont + 1);
-  for (const auto& [y, r] : labels) text(out, plot.right() + 6, y + kFont * 0.35, r->label, "start");
+  for (const auto& [y, r] : labels)
+    text(out, plot.right() + 6, y + kFont * 0.35, r->label, "start");
 }
 
 void document_start(std::string& out, int w, int h, const std::string& title) {
   out += "<?xml version=\"1.0\" encoding=\"UTF-8\" standalone=\"no\"?>\n";
-  out += "<svg xmlns=\"http://www.w3.org/2000/svg\" version=\"1.1\" width=\"" + std::to_string(w) + "\" height=\"" +
-         std::to_string(h) + "\" viewBox=\"0 0 " + std::to_string(w) + " " + std::to_string(h) +
-         "\" font-family=\"Helvetica, Arial, sans-serif\" font-size=\"" + num(kFont) + "\">\n";
+  out += "<svg xmlns=\"http://www.w3.org/2000/svg\" version=\"1.1\" width=\"" + std::to_string(w) +
+         "\" height=\"" + std::to_string(h) + "\" viewBox=\"0 0 " + std::to_string(w) + " " +
+         std::to_string(h) + "\" font-family=\"Helvetica, Arial, sans-serif\" font-size=\"" +
+         num(kFont) + "\">\n";
   out += "<title>" + xml_escape(title) + "</title>\n";
   out += "<rect x=\"0\" y=\"0\" width=\"" + std::to_string(w) + "\" height=\"" + std::to_string(h) +
          "\" fill=\"#ffffff\"/>\n";
@@ -304,11 +330,14 @@ double title_band(std::string& out, int w, const std::string& title) {
 }
 
 // Notes under everything, one line each; returns the height they take.
-double notes_height(const std::vector<std::string>& notes) { return notes.empty() ? 0 : notes.size() * kLineHeight + 4; }
+double notes_height(const std::vector<std::string>& notes) {
+  return notes.empty() ? 0 : notes.size() * kLineHeight + 4;
+}
 
 void write_notes(std::string& out, const std::vector<std::string>& notes, double left, double top) {
   for (size_t i = 0; i < notes.size(); ++i)
-    text(out, left, top + static_cast<double>(i) * kLineHeight + kFont, notes[i], "start", kFont, " fill=\"#333333\"");
+    text(out, left, top + static_cast<double>(i) * kLineHeight + kFont, notes[i], "start", kFont,
+         " fill=\"#333333\"");
 }
 
 }  // namespace
@@ -352,7 +381,8 @@ std::string to_svg(const FigureGrid& grid, int width_px, int height_px) {
   for (size_t i = 0; i < grid.panels.size(); ++i) {
     st.x_labels = i + 1 == grid.panels.size();
     st.clip_id = static_cast<int>(i);
-    const Box area{0, top + static_cast<double>(i) * each, static_cast<double>(w), each + (st.x_labels ? x_room : 0)};
+    const Box area{0, top + static_cast<double>(i) * each, static_cast<double>(w),
+                   each + (st.x_labels ? x_room : 0)};
     panel(out, grid.panels[i], area, xr, st);
   }
   write_notes(out, grid.notes, st.left, h - notes);

@@ -17,8 +17,13 @@ bool is_round_step(double v) {
 }
 
 TEST(FiguresAxisTicks, TicksAreRoundMultiplesOfARoundStepInsideTheRange) {
-  for (const auto& [lo, hi] : {std::pair{0.0, 1.0}, {-3.2, 7.9}, {0.013, 0.049}, {1234.0, 98765.0}, {-0.002, 0.0031},
-                               {17.0, 18.0}, {-1e6, -2e5}}) {
+  for (const auto& [lo, hi] : {std::pair{0.0, 1.0},
+                               {-3.2, 7.9},
+                               {0.013, 0.049},
+                               {1234.0, 98765.0},
+                               {-0.002, 0.0031},
+                               {17.0, 18.0},
+                               {-1e6, -2e5}}) {
     for (int target : {2, 4, 5, 8}) {
       const auto t = nice_ticks(lo, hi, target);
       ASSERT_GE(t.size(), 2u) << lo << " " << hi << " " << target;

@@ -24,8 +24,10 @@ std::vector<std::string> csv_lines(const std::string& csv) {
 std::vector<std::string> cells(const std::string& line) {
   std::vector<std::string> out(1);
   for (const char c : line) {
-    if (c == ',') out.emplace_back();
-    else out.back() += c;
+    if (c == ',')
+      out.emplace_back();
+    else
+      out.back() += c;
   }
   return out;
 }
@@ -38,12 +40,17 @@ double read_cell(const std::string& cell) {
 
 TEST(FiguresCsv, MissingValuesAreEmptyCellsAndNumbersReadBackExactly) {
   Figure f;
-  f.series.push_back({"angle", {}, SeriesStyle::line, {0.0, 0.1, 0.2, 0.3}, {1.0 / 3.0, kNan, -2.5e-7, 0.0}});
-  f.series.push_back({"other", {}, SeriesStyle::points, {1, kNan, 3}, {std::numeric_limits<double>::infinity(), 4, 5}});
+  f.series.push_back(
+      {"angle", {}, SeriesStyle::line, {0.0, 0.1, 0.2, 0.3}, {1.0 / 3.0, kNan, -2.5e-7, 0.0}});
+  f.series.push_back({"other",
+                      {},
+                      SeriesStyle::points,
+                      {1, kNan, 3},
+                      {std::numeric_limits<double>::infinity(), 4, 5}});
   const auto lines = csv_lines(to_csv(f));
   ASSERT_EQ(lines.size(), 1u + 4u + 3u);
   EXPECT_EQ(lines[0], "series,x,y");
-  EXPECT_EQ(lines[2], "angle,0.1,");  // NaN: empty, never 0
+  EXPECT_EQ(lines[2], "angle,0.1,");   // NaN: empty, never 0
   EXPECT_EQ(lines[4], "angle,0.3,0");  // a real 0 stays 0
   EXPECT_EQ(lines[5], "other,1,");
   EXPECT_EQ(lines[6], "other,,4");

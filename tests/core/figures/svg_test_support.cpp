@@ -38,8 +38,10 @@ std::string xml_balance_problem(const std::string& doc) {
     char quote = 0;
     for (; j < doc.size(); ++j) {
       if (quote) {
-        if (doc[j] == quote) quote = 0;
-        else if (doc[j] == '<') return "< inside an attribute at " + std::to_string(j);
+        if (doc[j] == quote)
+          quote = 0;
+        else if (doc[j] == '<')
+          return "< inside an attribute at " + std::to_string(j);
       } else if (doc[j] == '"' || doc[j] == '\'') {
         quote = doc[j];
       } else if (doc[j] == '>') {
@@ -52,7 +54,8 @@ std::string xml_balance_problem(const std::string& doc) {
     if (tag.empty()) return "empty tag";
     if (tag[0] == '/') {
       const std::string name = tag.substr(1);
-      if (open.empty() || open.back() != name) return "</" + name + "> closes " + (open.empty() ? "nothing" : open.back());
+      if (open.empty() || open.back() != name)
+        return "</" + name + "> closes " + (open.empty() ? "nothing" : open.back());
       open.pop_back();
       continue;
     }
@@ -63,7 +66,8 @@ std::string xml_balance_problem(const std::string& doc) {
   return {};
 }
 
-std::vector<std::string> attribute_values(const std::string& doc, const std::string& tag, const std::string& name) {
+std::vector<std::string> attribute_values(const std::string& doc, const std::string& tag,
+                                          const std::string& name) {
   std::vector<std::string> out;
   const std::string start = "<" + tag + " ", key = " " + name + "=\"";
   for (size_t i = doc.find(start); i != std::string::npos; i = doc.find(start, i + 1)) {

@@ -22,7 +22,8 @@ Figure gap_figure() {
   f.title = "Angle";
   f.x = {"time", "s", AxisRange{0.0, 4.0}};
   f.y = {"angle", "deg", AxisRange{-10.0, 10.0}};
-  f.series.push_back({"index MCP", std::nullopt, SeriesStyle::line, {0, 1, 2, 3, 4}, {5, 6, kGap, 7, 8}, true});
+  f.series.push_back(
+      {"index MCP", std::nullopt, SeriesStyle::line, {0, 1, 2, 3, 4}, {5, 6, kGap, 7, 8}, true});
   return f;
 }
 
@@ -78,20 +79,23 @@ TEST(FiguresSvg, IsAStandaloneSvgWithTitleAxisLabelsUnitsAndTicks) {
   EXPECT_NE(svg.find("xmlns=\"http://www.w3.org/2000/svg\""), std::string::npos);
   EXPECT_NE(svg.find("version=\"1.1\""), std::string::npos);
   const auto texts = text_contents(svg);
-  const auto has = [&](const std::string& s) { return std::find(texts.begin(), texts.end(), s) != texts.end(); };
+  const auto has = [&](const std::string& s) {
+    return std::find(texts.begin(), texts.end(), s) != texts.end();
+  };
   EXPECT_TRUE(has("Angle"));
   EXPECT_TRUE(has("time (s)"));
   EXPECT_NE(svg.find(">angle (deg)</text>"), std::string::npos);
   EXPECT_TRUE(has("index MCP"));
   for (const char* tick : {"-10", "0", "10"}) EXPECT_TRUE(has(tick)) << tick;  // y: steps of 2 or 5
-  EXPECT_TRUE(has("4") || has("4.0"));                                           // x: of 1 or 0.5
+  EXPECT_TRUE(has("4") || has("4.0"));                                         // x: of 1 or 0.5
   EXPECT_NE(svg.find("clip-path=\"url(#plot-clip-0)\""), std::string::npos);
   EXPECT_NE(svg.find("<clipPath id=\"plot-clip-0\">"), std::string::npos);
 }
 
 TEST(FiguresSvg, TheLegendIsOutsideThePlotArea) {
   Figure f = gap_figure();
-  for (int i = 0; i < 6; ++i) f.series.push_back({"series number " + std::to_string(i), {}, SeriesStyle::points, {1}, {1}});
+  for (int i = 0; i < 6; ++i)
+    f.series.push_back({"series number " + std::to_string(i), {}, SeriesStyle::points, {1}, {1}});
   const std::string svg = to_svg(f, 500, 400);
   const double top = frame_value(svg, "y");
   // Legend labels are the texts with the series' names: all above the plot frame.
@@ -182,7 +186,8 @@ TEST(FiguresSvg, AGridStacksPanelsOnOneXAxisLabelledOnce) {
   EXPECT_EQ(xml_balance_problem(svg), "");
   const auto texts = text_contents(svg);
   EXPECT_EQ(std::count(texts.begin(), texts.end(), "time (s)"), 1);
-  EXPECT_EQ(attribute_values(svg, "clipPath", "id"), (std::vector<std::string>{"plot-clip-0", "plot-clip-1", "plot-clip-2"}));
+  EXPECT_EQ(attribute_values(svg, "clipPath", "id"),
+            (std::vector<std::string>{"plot-clip-0", "plot-clip-1", "plot-clip-2"}));
   // Same x: every panel's frame starts and ends at the same pixels, and the panels do not overlap.
   const auto xs = attribute_values(svg, "rect class=\"frame\"", "x");
   const auto ws = attribute_values(svg, "rect class=\"frame\"", "width");
@@ -195,6 +200,27 @@ TEST(FiguresSvg, AGridStacksPanelsOnOneXAxisLabelledOnce) {
     EXPECT_GT(std::stod(ys[i]), std::stod(ys[i - 1]) + std::stod(hs[i - 1]));
   }
   EXPECT_LT(std::stod(ys[2]) + std::stod(hs[2]), 900.0);
+}
+
+TEST(FiguresSvg, ALonePresentSampleOfALineIsADot) {
+  Figure f = gap_figure();
+  f.series[0].y = {1, kGap, 2, kGap, kGap};
+  const std::string svg = to_svg(f);
+  EXPECT_TRUE(attribute_values(svg, "path class=\"line\"", "d").empty());
+  EXPECT_EQ(attribute_values(svg, "circle class=\"lone\"", "cx").size(), 2u);
+}
+
+TEST(FiguresSvg, AFigureWithNoDataOrOnlyMissingDataIsStillAValidDocument) {
+  Figure empty;
+  EXPECT_EQ(xml_balance_problem(to_svg(empty)), "");
+  Figure missing;
+  missing.series.push_back({"all missing", {}, SeriesStyle::line_and_points, {kGap, 1}, {2, kGap}});
+  const std::string svg = to_svg(missing, 10, 10);  // too small: raised to 240 x 160
+  EXPECT_EQ(xml_balance_problem(svg), "");
+  EXPECT_NE(svg.find("width=\"240\" height=\"160\""), std::string::npos);
+  EXPECT_EQ(svg.find("class=\"point\""), std::string::npos);
+  EXPECT_EQ(svg.find("nan"), std::string::npos);
+  EXPECT_EQ(xml_balance_problem(to_svg(FigureGrid{})), "");
 }
 
 }  // namespace lmc::figures::svg_writer_test
