@@ -2,39 +2,27 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <string_view>
 #include <vector>
 
 #include "core/figures/axis_ticks.h"
 #include "core/figures/c_number.h"
+#include "core/figures/svg_marks.h"
 #include "core/figures/xml_text.h"
 
 namespace lmc::figures {
 namespace {
+
+using svg::Box;
+using svg::hex;
+using svg::Mapper;
+using svg::num;
 
 constexpr double kFont = 12.0;        // tick labels, legend, notes
 constexpr double kTitleFont = 15.0;   // the document's title
 constexpr double kPanelFont = 13.0;   // a grid panel's own title
 constexpr double kCharWidth = 0.6;    // an average sans-serif glyph, in em: text is never measured
 constexpr double kLineHeight = 18.0;  // one row of legend or notes
-constexpr double kFar = 1e5;  // coordinates are clamped this far outside the plot (clipped anyway)
-
-struct Box {
-  double x = 0, y = 0, w = 0, h = 0;
-  double right() const { return x + w; }
-  double bottom() const { return y + h; }
-};
-
-std::string num(double v) {
-  return fixed_c(v, 2);
-}
-
-std::string hex(Rgb c) {
-  char buf[8];
-  std::snprintf(buf, sizeof buf, "#%02x%02x%02x", c.r, c.g, c.b);
-  return buf;
-}
 
 // Width of text on one line, from its code-point count (continuation bytes are not counted).
 double text_width(std::string_view s, double font) {
@@ -59,19 +47,6 @@ std::string tick_text(double v, double step) {
 double tick_step(const std::vector<double>& ticks) {
   return ticks.size() >= 2 ? ticks[1] - ticks[0] : 1.0;
 }
-
-struct Mapper {
-  AxisRange xr, yr;
-  Box plot;
-  double px(double x) const {
-    return std::clamp(plot.x + (x - xr.lo) / (xr.hi - xr.lo) * plot.w, plot.x - kFar,
-                      plot.right() + kFar);
-  }
-  double py(double y) const {
-    return std::clamp(plot.bottom() - (y - yr.lo) / (yr.hi - yr.lo) * plot.h, plot.y - kFar,
-                      plot.bottom() + kFar);
-  }
-};
 
 std::string dash_attr(Dash d) {
   switch (d) {
@@ -151,66 +126,6 @@ double right_margin(const Figure& f) {
   return widest > 0 ? widest + 16 : 16;
 }
 
-void gap_bands(std::string& out, const Series& s, const Mapper& m) {
-  const size_t n = std::min(s.x.size(), s.y.size());
-  std::ptrdiff_t last = -1;  // the previous present sample
-  bool gap = false;
-  for (size_t i = 0; i < n; ++i) {
-    const bool present = std::isfinite(s.x[i]) && std::isfinite(s.y[i]);
-    if (!present) {
-      gap = true;
-      continue;
-    }
-    if (gap && last >= 0) {
-      const double a = m.px(s.x[static_cast<size_t>(last)]), b = m.px(s.x[i]);
-      out += "<rect class=\"gap\" x=\"" + num(std::min(a, b)) + "\" y=\"" + num(m.plot.y) +
-             "\" width=\"" + num(std::abs(b - a)) + "\" height=\"" + num(m.plot.h) +
-             "\" fill=\"#000000\" fill-opacity=\"0.06\"/>\n";
-    }
-    gap = false;
-    last = static_cast<std::ptrdiff_t>(i);
-  }
-}
-
-// The series' line as one <path> per run of present samples: a missing sample ends a piece, so
-// nothing is ever drawn through (or to 0 at) a gap. A piece of one sample is a dot.
-void line_pieces(std::string& out, const Series& s, const Mapper& m, Rgb c) {
-  const size_t n = std::min(s.x.size(), s.y.size());
-  std::string d;
-  size_t count = 0;
-  double lone_x = 0, lone_y = 0;
-  const auto flush = [&] {
-    if (count >= 2)
-      out += "<path class=\"line\" d=\"" + d + "\" fill=\"none\" stroke=\"" + hex(c) +
-             "\" stroke-width=\"1.5\" stroke-linejoin=\"round\"/>\n";
-    else if (count == 1 && s.style == SeriesStyle::line)
-      out += "<circle class=\"lone\" cx=\"" + num(lone_x) + "\" cy=\"" + num(lone_y) +
-             "\" r=\"1.5\" fill=\"" + hex(c) + "\"/>\n";
-    d.clear();
-    count = 0;
-  };
-  for (size_t i = 0; i < n; ++i) {
-    if (!std::isfinite(s.x[i]) || !std::isfinite(s.y[i])) {
-      flush();
-      continue;
-    }
-    lone_x = m.px(s.x[i]);
-    lone_y = m.py(s.y[i]);
-    d += (count == 0 ? "M" : " L") + num(lone_x) + "," + num(lone_y);
-    ++count;
-  }
-  flush();
-}
-
-void points(std::string& out, const Series& s, const Mapper& m, Rgb c) {
-  const size_t n = std::min(s.x.size(), s.y.size());
-  for (size_t i = 0; i < n; ++i) {
-    if (!std::isfinite(s.x[i]) || !std::isfinite(s.y[i])) continue;
-    out += "<circle class=\"point\" cx=\"" + num(m.px(s.x[i])) + "\" cy=\"" + num(m.py(s.y[i])) +
-           "\" r=\"2.5\" fill=\"" + hex(c) + "\"/>\n";
-  }
-}
-
 // One chart inside `area`: its title (grid panels), legend above the plot, axes, the clipped
 // curves and reference lines, reference labels to the right of the plot.
 void panel(std::string& out, const Figure& f, Box area, const AxisRange& xr, const PanelStyle& st) {
@@ -280,7 +195,7 @@ void panel(std::string& out, const Figure& f, Box area, const AxisRange& xr, con
          "\" width=\"" + num(plot.w) + "\" height=\"" + num(plot.h) + "\"/></clipPath></defs>\n";
   out += "<g clip-path=\"url(#" + clip + ")\">\n";
   for (const Series& s : f.series)
-    if (s.shade_gaps) gap_bands(out, s, m);
+    if (s.shade_gaps) svg::gap_bands(out, s, m);
   for (const ReferenceLine& r : f.references) {
     if (!std::isfinite(r.y)) continue;
     out += "<line class=\"reference\" x1=\"" + num(plot.x) + "\" y1=\"" + num(m.py(r.y)) +
@@ -290,8 +205,8 @@ void panel(std::string& out, const Figure& f, Box area, const AxisRange& xr, con
   for (size_t i = 0; i < f.series.size(); ++i) {
     const Series& s = f.series[i];
     const Rgb c = colour_of(s, i);
-    if (s.style != SeriesStyle::points) line_pieces(out, s, m, c);
-    if (s.style != SeriesStyle::line) points(out, s, m, c);
+    if (s.style != SeriesStyle::points) svg::line_pieces(out, s, m, c);
+    if (s.style != SeriesStyle::line) svg::points(out, s, m, c);
   }
   out += "</g>\n";
   out += "<rect class=\"frame\" x=\"" + num(plot.x) + "\" y=\"" + num(plot.y) + "\" width=\"" +
