@@ -265,7 +265,8 @@ std::string to_svg(const Figure& figure, int width_px, int height_px) {
   const double notes = notes_height(figure.notes);
   PanelStyle st;
   st.left = left_margin(figure);
-  st.right = right_margin(figure);
+  st.right =
+      std::min(right_margin(figure), w * 0.35);  // a long label must not squeeze the plot away
   st.x_axis_text = axis_text(figure.x);
   const Box area{0, top, static_cast<double>(w), h - top - notes - 4};
   panel(out, figure, area, x_range(figure), st);
@@ -286,6 +287,7 @@ std::string to_svg(const FigureGrid& grid, int width_px, int height_px) {
     st.right = std::max(st.right, right_margin(f));
   }
   if (grid.panels.empty()) st.left = 40;
+  st.right = std::min(st.right, w * 0.35);
   st.x_axis_text = axis_text(grid.x);
   st.own_title = true;
   const AxisRange xr = x_range(grid);
