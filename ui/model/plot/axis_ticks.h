@@ -1,18 +1,11 @@
 #pragma once
-// Round tick values for a plot axis (1, 2 or 5 times a power of ten), about `target` of them
-// across [lo, hi], and the y range a plot shows: the visible samples' extent with a margin.
-#include <span>
-#include <utility>
-#include <vector>
+// The plot widgets' round ticks and fitted y range are core's (core/figures/axis_ticks.h), so the
+// screen and the exported figures pick the same ticks: one implementation, named here for ui code.
+#include "core/figures/axis_ticks.h"
 
 namespace lmc::ui {
 
-std::vector<double> nice_ticks(double lo, double hi, int target = 5);
-
-// Min and max of the finite y whose x lies in [x_lo, x_hi] over every series given, widened by
-// `margin` of its span (a flat series gets ±1); nullopt-like {0, 1} when nothing is visible.
-std::pair<double, double> fit_y_range(std::span<const std::span<const double>> xs,
-                                      std::span<const std::span<const double>> ys, double x_lo, double x_hi,
-                                      double margin = 0.05);
+using figures::fit_y_range;
+using figures::nice_ticks;
 
 }  // namespace lmc::ui

@@ -1,38 +1,43 @@
-#include "ui/model/plot/axis_ticks.h"
+#include "core/figures/axis_ticks.h"
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
 
-namespace lmc::ui {
+namespace lmc::figures {
 
 std::vector<double> nice_ticks(double lo, double hi, int target) {
   std::vector<double> out;
   if (!(hi > lo) || !std::isfinite(lo) || !std::isfinite(hi) || target < 1) return out;
   const double raw = (hi - lo) / target;
   const double power = std::pow(10.0, std::floor(std::log10(raw)));
-  // The round step whose tick count comes closest to `target`.
+  // The round step whose count of ticks inside [lo, hi] comes closest to `target`; a step that
+  // leaves fewer than two ticks (no scale to read) only when every step does.
   double step = power, best = std::numeric_limits<double>::infinity();
   for (const double m : {1.0, 2.0, 5.0, 10.0}) {
-    const double miss = std::abs((hi - lo) / (m * power) - target);
+    const double s = m * power;
+    const double count = std::floor(hi / s + 1e-9) - std::ceil(lo / s - 1e-9) + 1;
+    const double miss = std::abs(count - target) + (count < 2 ? 1e6 : 0.0);
     if (miss < best) {
       best = miss;
-      step = m * power;
+      step = s;
     }
   }
   const double first = std::ceil(lo / step) * step;
-  for (double v = first; v <= hi + step * 1e-9; v += step) out.push_back(std::abs(v) < step * 1e-9 ? 0.0 : v);
+  for (double v = first; v <= hi + step * 1e-9; v += step)
+    out.push_back(std::abs(v) < step * 1e-9 ? 0.0 : v);
   return out;
 }
 
 std::pair<double, double> fit_y_range(std::span<const std::span<const double>> xs,
-                                      std::span<const std::span<const double>> ys, double x_lo, double x_hi,
-                                      double margin) {
+                                      std::span<const std::span<const double>> ys, double x_lo,
+                                      double x_hi, double margin) {
   double lo = std::numeric_limits<double>::infinity(), hi = -lo;
   for (size_t s = 0; s < xs.size() && s < ys.size(); ++s) {
     const auto& x = xs[s];
     const auto& y = ys[s];
-    const size_t begin = static_cast<size_t>(std::lower_bound(x.begin(), x.end(), x_lo) - x.begin());
+    const size_t begin =
+        static_cast<size_t>(std::lower_bound(x.begin(), x.end(), x_lo) - x.begin());
     const size_t end = static_cast<size_t>(std::upper_bound(x.begin(), x.end(), x_hi) - x.begin());
     for (size_t i = begin; i < end && i < y.size(); ++i) {
       if (!std::isfinite(y[i])) continue;
@@ -46,4 +51,4 @@ std::pair<double, double> fit_y_range(std::span<const std::span<const double>> x
   return {lo - pad, hi + pad};
 }
 
-}  // namespace lmc::ui
+}  // namespace lmc::figures

@@ -1,0 +1,20 @@
+#pragma once
+// Round tick values for a plot axis (1, 2 or 5 times a power of ten), about `target` of them
+// across [lo, hi], and the y range a plot shows: the visible samples' extent with a margin.
+// Core's, so the screen plots (ui/model/plot/axis_ticks.h forwards here) and the exported
+// figures (svg_writer) pick the same ticks.
+#include <span>
+#include <utility>
+#include <vector>
+
+namespace lmc::figures {
+
+std::vector<double> nice_ticks(double lo, double hi, int target = 5);
+
+// Min and max of the finite y whose x lies in [x_lo, x_hi] over every series given, widened by
+// `margin` of its span (a flat series gets ±1); nullopt-like {0, 1} when nothing is visible.
+std::pair<double, double> fit_y_range(std::span<const std::span<const double>> xs,
+                                      std::span<const std::span<const double>> ys, double x_lo,
+                                      double x_hi, double margin = 0.05);
+
+}  // namespace lmc::figures
