@@ -5,7 +5,9 @@
 #include <cmath>
 #include <set>
 
+#include "core/processing/process_options_json.h"
 #include "core/results/processing_cache.h"
+#include "core/review/review_export.h"
 
 namespace lmc::ui {
 namespace {
@@ -124,6 +126,13 @@ void ReviewState::update() {
     }
     if (batch_job_.state() == JobState::kFailed && problem_.empty()) problem_ = batch_job_.error();
   }
+  if (job_finished(export_job_.state()) && export_message_ == "exporting...") {
+    if (auto files = export_job_.result(); files && export_job_.state() == JobState::kCompleted) {
+      export_message_ = "wrote " + std::to_string(files->size()) + " files to " + export_dir_.string();
+    } else {
+      export_message_ = "export failed: " + export_job_.error();
+    }
+  }
   if (job_finished(view_job_.state())) {
     if (auto v = view_job_.result(); v && v != view_) {
       view_ = v;
@@ -151,6 +160,30 @@ void sort_trials(const std::vector<ReviewTrial>& trials, const TrialSort& sort, 
     return a < b;
   };
   std::stable_sort(indices.begin(), indices.end(), less);
+}
+
+void ReviewState::export_agreement(const std::filesystem::path& dir) {
+  ReviewExportInput in;
+  in.trials = agreement().inputs;
+  in.agreement.motion = agreement_motion_;
+  for (const auto& f : folders_) in.inputs.push_back(f.string());
+  in.method = fusion_method_name(options_.process.method);
+  in.parameters = process_options_json(options_.process);
+  export_dir_ = dir;
+  export_message_ = "exporting...";
+  export_job_.start([dir, in](std::stop_token, JobChannel<ExportReport>&) { return write_review_exports(dir, in); });
+}
+
+void ReviewState::export_trial(const std::filesystem::path& dir, bool each_controller) {
+  if (!view_ || !view_->result) return;
+  auto view = view_;
+  const std::string method = fusion_method_name(options_.process.method);
+  const nlohmann::json parameters = process_options_json(options_.process);
+  export_dir_ = dir;
+  export_message_ = "exporting...";
+  export_job_.start([dir, view, method, parameters, each_controller](std::stop_token, JobChannel<ExportReport>&) {
+    return write_trial_export(dir, view->series, {view->result->lmc_source}, method, parameters, each_controller);
+  });
 }
 
 std::vector<int> ReviewState::visible_trials() const {

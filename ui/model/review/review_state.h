@@ -76,7 +76,7 @@ class ReviewState {
   std::shared_ptr<const TrialView> view() const { return view_; }
   const std::shared_ptr<LinkedXRange>& x_range() const { return x_range_; }
   FusionMethod method() const { return options_.process.method; }
-  bool busy() const { return batch_job_.running() || view_job_.running(); }
+  bool busy() const { return batch_job_.running() || view_job_.running() || export_job_.running(); }
   // Agreement and the visibility map over the trials the table shows (its filter), recomputed only
   // when the batch, the filter or the motion changes: 80 trials take about a millisecond.
   struct Agreement {
@@ -87,6 +87,14 @@ class ReviewState {
   const Agreement& agreement() const;
   void set_agreement_motion(const std::string& motion) { agreement_motion_ = motion; }
   const std::string& agreement_motion() const { return agreement_motion_; }
+  // ---- exports (core/review/review_export.h), on a worker thread ---------------------------------
+  // Everything the Agreement view shows, over the trials the table shows, into `dir`.
+  void export_agreement(const std::filesystem::path& dir);
+  // The selected trial's figure and series into `dir` (nothing when no trial is loaded).
+  void export_trial(const std::filesystem::path& dir, bool each_controller);
+  bool exporting() const { return export_job_.running(); }
+  // The last export's outcome in words ("wrote 62 files to …" or the error); empty before one.
+  const std::string& export_message() const { return export_message_; }
   // The last problem to show (a failed job); empty when none.
   const std::string& problem() const { return problem_; }
 
@@ -113,6 +121,10 @@ class ReviewState {
   };
   mutable std::optional<AgreementKey> agreement_key_;
   mutable Agreement agreement_;
+  struct ExportReport {};
+  BackgroundJob<std::vector<std::filesystem::path>, ExportReport> export_job_;
+  std::filesystem::path export_dir_;
+  std::string export_message_;
 };
 
 }  // namespace lmc::ui

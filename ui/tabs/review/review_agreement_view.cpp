@@ -9,7 +9,10 @@
 #include <set>
 #include <string>
 
+#include "core/common/paths.h"
+#include "core/review/review_figures.h"
 #include "ui/scene/colour_maps.h"
+#include "ui/widgets/figure_view.h"
 #include "ui/widgets/imgui_colour.h"
 
 namespace lmc::ui {
@@ -71,7 +74,12 @@ void draw_measure_table(const AgreementGroup& g, int& measure) {
     ImGui::TableNextColumn();
     ImGui::Text("%zu (%zu)", a.n_trials, a.n_subjects);
     ImGui::TableNextColumn();
-    ImGui::TextUnformatted(with_ci(b.bias, b.bias_ci, d, true).c_str());
+    if (std::isfinite(b.bias)) {
+      ImGui::TextUnformatted(with_ci(b.bias, b.bias_ci, d, true).c_str());
+    } else {
+      // Say why rather than print a dash (one subject gives no between-subject variance).
+      ImGui::TextDisabled("%s", b.reason.empty() ? "-" : b.reason.c_str());
+    }
     ImGui::TableNextColumn();
     ImGui::TextUnformatted(with_ci(b.loa_low, b.loa_low_ci, d, true).c_str());
     ImGui::TableNextColumn();
@@ -169,12 +177,37 @@ void ReviewAgreementView::draw(ReviewState& state) {
     }
     ImGui::EndCombo();
   }
+  ImGui::SameLine();
+  ImGui::BeginDisabled(state.exporting());
+  if (ImGui::Button("Export all...")) export_browser_.open(FileBrowser::Mode::kSave, sessions_dir(), "review-export");
+  ImGui::EndDisabled();
+  if (ImGui::IsItemHovered()) {
+    ImGui::SetTooltip("The agreement table (CSV, JSON), a Bland-Altman plot per group and measure, the visibility map and the "
+                      "study's tables: SVG with the CSV behind each figure and a JSON sidecar (lmc figures writes the same)");
+  }
+  if (const auto chosen = export_browser_.draw()) state.export_agreement(*chosen);
+  if (!state.export_message().empty()) {
+    ImGui::SameLine();
+    ImGui::TextDisabled("%s", state.export_message().c_str());
+  }
   const AgreementGroup& group = table.groups[static_cast<size_t>(g)];
   measure_ = std::clamp(measure_, 0, std::max(0, static_cast<int>(group.measures.size()) - 1));
   draw_measure_table(group, measure_);
   ImGui::Spacing();
-  ImGui::TextUnformatted("Visibility rate per controller, motion and layout (the study's map; -1 = never saw the hand)");
+  // The selected measure's Bland-Altman plot beside the visibility map.
+  const float width = ImGui::GetContentRegionAvail().x;
+  const float height = std::max(200.0F, ImGui::GetContentRegionAvail().y - 4);
+  ImGui::BeginChild("bland_altman", ImVec2(width * 0.5F, height), false);
+  if (!group.measures.empty()) {
+    draw_figure_view("ba", bland_altman_figure(group, group.measures[static_cast<size_t>(measure_)]),
+                     std::max(120.0F, height - 5.5F * ImGui::GetTextLineHeightWithSpacing()));
+  }
+  ImGui::EndChild();
+  ImGui::SameLine();
+  ImGui::BeginChild("visibility_map_panel", ImVec2(0, height), false);
+  ImGui::TextWrapped("Visibility rate per controller, motion and layout (the study's map; -1 = never saw the hand)");
   draw_visibility_map(agreement.visibility);
+  ImGui::EndChild();
 }
 
 }  // namespace lmc::ui

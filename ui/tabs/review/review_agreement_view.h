@@ -5,6 +5,7 @@
 // several trials), RMSE, Pearson r and ICC(2,1) with the model named; the selected measure's
 // Bland–Altman plot; and the study's visibility-rate map per controller × motion × layout.
 #include "ui/model/review/review_state.h"
+#include "ui/widgets/file_browser.h"
 
 namespace lmc::ui {
 
@@ -15,6 +16,7 @@ class ReviewAgreementView {
  private:
   int group_ = -1;  // index into the table's groups; −1: the pooled "all" group (last)
   int measure_ = 0;
+  FileBrowser export_browser_{"Export agreement and figures to a new folder", ""};
 };
 
 }  // namespace lmc::ui

@@ -10,10 +10,13 @@
 namespace lmc::ui {
 namespace {
 
-// One filter combo: "any" or one of the column's values.
+// One filter combo, its name before it: "any" or one of the column's values.
 void filter_combo(const char* label, std::string& value, const std::vector<std::string>& choices, float width) {
+  ImGui::TextUnformatted(label);
+  ImGui::SameLine(0, 4);
   ImGui::SetNextItemWidth(width);
-  if (ImGui::BeginCombo(label, value.empty() ? "any" : value.c_str())) {
+  const std::string id = std::string("##") + label;
+  if (ImGui::BeginCombo(id.c_str(), value.empty() ? "any" : value.c_str())) {
     if (ImGui::Selectable("any", value.empty())) value.clear();
     for (const auto& c : choices) {
       if (ImGui::Selectable(c.c_str(), c == value)) value = c;
@@ -72,23 +75,29 @@ void draw_review_trial_table(ReviewState& state, float height_px) {
   const int columns = fixed_columns + static_cast<int>(controllers);
   const ImGuiTableFlags flags = ImGuiTableFlags_ScrollY | ImGuiTableFlags_RowBg | ImGuiTableFlags_BordersInnerV |
                                 ImGuiTableFlags_Resizable | ImGuiTableFlags_Sortable | ImGuiTableFlags_SizingFixedFit;
-  if (!ImGui::BeginTable("trials", columns, flags, ImVec2(0, height_px))) return;
+  // The id holds the column count: a table whose columns changed starts with fresh widths.
+  const std::string table_id = "trials##" + std::to_string(columns);
+  if (!ImGui::BeginTable(table_id.c_str(), columns, flags, ImVec2(0, height_px))) return;
+  // Widths for what the cells hold, not for the header alone (the table is first drawn empty).
+  const auto fixed = [](const char* name, float width, TrialColumn id, ImGuiTableColumnFlags extra = 0) {
+    ImGui::TableSetupColumn(name, ImGuiTableColumnFlags_WidthFixed | extra, width, static_cast<ImGuiID>(id));
+  };
   ImGui::TableSetupScrollFreeze(0, 1);
   // The user ids are TrialColumn values, so a sort spec maps straight to the model's sort.
-  ImGui::TableSetupColumn("subject", ImGuiTableColumnFlags_DefaultSort, 0, static_cast<ImGuiID>(TrialColumn::kSubject));
-  ImGui::TableSetupColumn("trial", 0, 0, static_cast<ImGuiID>(TrialColumn::kTrial));
-  ImGui::TableSetupColumn("layout", 0, 0, static_cast<ImGuiID>(TrialColumn::kLayout));
-  ImGui::TableSetupColumn("pose", 0, 0, static_cast<ImGuiID>(TrialColumn::kPose));
-  ImGui::TableSetupColumn("motion", 0, 0, static_cast<ImGuiID>(TrialColumn::kMotion));
-  ImGui::TableSetupColumn("status", 0, 0, static_cast<ImGuiID>(TrialColumn::kStatus));
+  fixed("subject", 90, TrialColumn::kSubject, ImGuiTableColumnFlags_DefaultSort);
+  fixed("trial", 130, TrialColumn::kTrial);
+  fixed("layout", 78, TrialColumn::kLayout);
+  fixed("pose", 86, TrialColumn::kPose);
+  fixed("motion", 60, TrialColumn::kMotion);
+  fixed("status", 86, TrialColumn::kStatus);
   for (size_t d = 0; d < controllers; ++d) {
     const std::string name = "LMC" + std::to_string(d + 1) + " seen";
-    ImGui::TableSetupColumn(name.c_str(), ImGuiTableColumnFlags_PreferSortDescending, 0,
+    ImGui::TableSetupColumn(name.c_str(), ImGuiTableColumnFlags_WidthFixed | ImGuiTableColumnFlags_PreferSortDescending, 80,
                             static_cast<ImGuiID>(static_cast<int>(TrialColumn::kVisibility) + static_cast<int>(d)));
   }
-  ImGui::TableSetupColumn("length diff (mm)", 0, 0, static_cast<ImGuiID>(TrialColumn::kLengthDiff));
-  ImGui::TableSetupColumn("|ROM diff| (deg)", 0, 0, static_cast<ImGuiID>(TrialColumn::kRomDiff));
-  ImGui::TableSetupColumn("lag (ms)", 0, 0, static_cast<ImGuiID>(TrialColumn::kLag));
+  fixed("length diff (mm)", 125, TrialColumn::kLengthDiff);
+  fixed("|ROM diff| (deg)", 125, TrialColumn::kRomDiff);
+  fixed("lag (ms)", 70, TrialColumn::kLag);
   ImGui::TableHeadersRow();
   if (ImGuiTableSortSpecs* specs = ImGui::TableGetSortSpecs(); specs != nullptr && specs->SpecsDirty) {
     if (specs->SpecsCount > 0) {

@@ -4,7 +4,9 @@
 
 #include <string>
 
+#include "core/common/paths.h"
 #include "core/processing/measures.h"
+#include "core/review/review_figures.h"
 #include "ui/widgets/label_strips.h"
 
 namespace lmc::ui {
@@ -38,7 +40,7 @@ SeriesPlot& ReviewTrialView::plot(const std::string& id, const std::shared_ptr<L
   return *p;
 }
 
-void ReviewTrialView::draw(const ReviewState& state) {
+void ReviewTrialView::draw(ReviewState& state) {
   const auto view = state.view();
   if (!view) {
     if (state.view_job().running()) {
@@ -59,6 +61,17 @@ void ReviewTrialView::draw(const ReviewState& state) {
   ImGui::Checkbox("each controller", &each_controller_);
   if (ImGui::IsItemHovered()) ImGui::SetTooltip("Also draw each controller's own angles after realignment (LMC1-LMC4)");
   ImGui::SameLine();
+  ImGui::BeginDisabled(state.exporting());
+  if (ImGui::Button("Export trial...")) {
+    export_browser_.open(FileBrowser::Mode::kSave, sessions_dir(), "review-" + figure_stem(s.trial));
+  }
+  ImGui::EndDisabled();
+  if (ImGui::IsItemHovered()) ImGui::SetTooltip("SVG of every plot, the CSV behind it, a JSON sidecar, and every series and label as one CSV");
+  if (const auto chosen = export_browser_.draw()) state.export_trial(*chosen, each_controller_);
+  if (!state.export_message().empty()) {
+    ImGui::SameLine();
+    ImGui::TextDisabled("%s", state.export_message().c_str());
+  }
   ImGui::TextDisabled("wheel: zoom, drag: pan, double-click: whole trial");
   if (!view->warnings.empty()) {
     ImGui::TextColored(ImVec4(0.85F, 0.80F, 0.45F, 1), "%zu warning(s)", view->warnings.size());

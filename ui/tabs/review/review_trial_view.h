@@ -8,13 +8,14 @@
 #include <string>
 
 #include "ui/model/review/review_state.h"
+#include "ui/widgets/file_browser.h"
 #include "ui/widgets/series_plot.h"
 
 namespace lmc::ui {
 
 class ReviewTrialView {
  public:
-  void draw(const ReviewState& state);
+  void draw(ReviewState& state);
 
  private:
   // One plot per id, all on the state's shared x range; each keeps its legend toggles.
@@ -22,6 +23,7 @@ class ReviewTrialView {
   bool each_controller_ = false;
   int finger_ = 1;  // the finger-length plot's finger (0 thumb … 4 pinky)
   std::map<std::string, std::unique_ptr<SeriesPlot>> plots_;
+  FileBrowser export_browser_{"Export the trial to a new folder", ""};
 };
 
 }  // namespace lmc::ui

@@ -1,0 +1,115 @@
+// lmc figures — the Review tab's tables and figures headless (issue #12): processes the given
+// subject sessions or folders of trials (through the same cache as the workbench, so a session the
+// Review tab opened is instant here too), then writes the agreement table, a Bland–Altman plot per
+// layout × pose group and measure, the study's visibility map and headline tables, and, for each
+// --trial, its angles and finger lengths against Vicon (core/review/review_export.h).
+#include <chrono>
+#include <filesystem>
+#include <iostream>
+
+#include "app/lmc/command.h"
+#include "core/common/error.h"
+#include "core/common/number_format.h"
+#include "core/io/vicon_mapping.h"
+#include "core/processing/process_options_json.h"
+#include "core/results/processing_cache.h"
+#include "core/review/review_export.h"
+#include "core/session/session_trials.h"
+
+namespace {
+
+namespace fs = std::filesystem;
+
+struct FiguresArgs {
+  std::vector<std::string> inputs;
+  std::string out;
+  std::string method = "default";
+  std::string motion;
+  std::vector<std::string> trials;
+  bool each_controller = false;
+  bool no_cache = false;
+};
+
+std::string subject_of(const fs::path& folder) {
+  return folder.filename().empty() ? folder.parent_path().filename().string() : folder.filename().string();
+}
+
+void run_figures(const FiguresArgs& a) {
+  const auto t0 = std::chrono::steady_clock::now();
+  lmc::SessionOptions options;
+  options.process.method = lmc::fusion_method_from_name(a.method);
+  std::vector<lmc::TrialJob> jobs;
+  std::vector<std::string> subjects;
+  std::vector<std::string> notes;
+  for (const auto& input : a.inputs) {
+    for (auto& j : lmc::session::trial_jobs_for_input(input, std::nullopt, &notes)) {
+      jobs.push_back(std::move(j));
+      subjects.push_back(subject_of(fs::path(input).lexically_normal()));
+    }
+  }
+  for (const auto& n : notes) std::cout << "note: " << n << "\n";
+  const lmc::ProcessingCache cache = a.no_cache ? lmc::ProcessingCache(fs::path()) : lmc::ProcessingCache::in_user_cache();
+  const lmc::CachedBatch batch = lmc::process_session_cached(jobs, options, cache);
+  for (const auto& w : batch.cache_warnings) std::cout << "warning: " << w << "\n";
+
+  lmc::ReviewExportInput exports;
+  exports.inputs = a.inputs;
+  exports.method = a.method;
+  exports.parameters = lmc::process_options_json(options.process);
+  exports.agreement.motion = a.motion;
+  int failed = 0, cached = 0;
+  for (size_t k = 0; k < jobs.size(); ++k) {
+    const lmc::TrialOutcome& o = batch.outcomes[k];
+    cached += batch.from_cache[k] ? 1 : 0;
+    if (!o.ok) {
+      std::cerr << jobs[k].trial << ": " << o.error << "\n";
+      ++failed;
+      continue;
+    }
+    exports.trials.push_back(lmc::agreement_trial(subjects[k], o.summary));
+  }
+  if (exports.trials.empty()) throw lmc::Error("no trial could be processed, so there is nothing to draw");
+  auto written = lmc::write_review_exports(a.out, exports);
+
+  for (const auto& name : a.trials) {
+    bool found = false;
+    for (size_t k = 0; k < jobs.size(); ++k) {
+      if (jobs[k].trial != name) continue;
+      found = true;
+      // A trial's series are not cached (only its summary): it is processed again here.
+      lmc::SessionOptions one = options;
+      std::optional<lmc::TrialSeries> series;
+      one.on_result = [&series](const lmc::TrialResult& r) { series = lmc::trial_series(r); };
+      const lmc::TrialOutcome o = lmc::process_job(jobs[k], one, lmc::default_vicon_mapping());
+      if (!o.ok || !series) throw lmc::Error(name + ": " + o.error);
+      series->trial = subjects[k] + "-" + series->trial;
+      for (auto& p : lmc::write_trial_export(a.out, *series, {jobs[k].lmc.string()}, a.method, exports.parameters,
+                                             a.each_controller)) {
+        written.push_back(std::move(p));
+      }
+    }
+    if (!found) throw lmc::Error("--trial " + name + ": no such trial among the inputs");
+  }
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  std::cout << "figures of " << exports.trials.size() << " trial(s) (" << cached << " from the cache, " << failed
+            << " failed): " << written.size() << " files in " << a.out << " in " << lmc::format_fixed(seconds, 2) << " s\n";
+  if (failed > 0) lmc::cli::command_exit_code() = 2;
+}
+
+void setup_figures(CLI::App& app) {
+  auto a = std::make_shared<FiguresArgs>();
+  app.add_option("inputs", a->inputs, "Subject session folders or folders of trials (one subject each)")->required();
+  app.add_option("-o,--output", a->out, "Output folder")->required();
+  app.add_option("--method", a->method, "Fusion: reference (the study's Kalman filter) or default (our smoother)")
+      ->check(CLI::IsMember({"reference", "default"}));
+  app.add_option("--motion", a->motion, "Agreement over the trials of one motion only (static, index, thumb, wrist)");
+  app.add_option("--trial", a->trials, "Also draw this trial's angles and finger lengths against Vicon (repeatable)");
+  app.add_flag("--each-controller", a->each_controller, "With --trial: each controller's own series too");
+  app.add_flag("--no-cache", a->no_cache, "Process every trial again instead of using the processing cache");
+  app.callback([a] { run_figures(*a); });
+}
+
+const lmc::cli::CommandRegistration figures_command{
+    "figures", "The Review tab's tables and figures, headless: agreement, Bland-Altman, visibility map", 46, setup_figures};
+
+}  // namespace

@@ -1,0 +1,140 @@
+#include "ui/widgets/figure_view.h"
+
+#include <imgui.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+#include <string>
+
+#include "core/figures/axis_ticks.h"
+
+namespace lmc::ui {
+namespace {
+
+constexpr float kLeftGutterPx = 52.0F;
+constexpr float kRightGutterPx = 120.0F;  // reference-line labels
+constexpr ImU32 kTickText = IM_COL32(170, 175, 185, 255);
+constexpr ImU32 kGridLine = IM_COL32(60, 64, 72, 255);
+
+// A figure's colours are chosen for white paper; on the dark panel a dark colour turns light.
+ImU32 on_dark(const figures::Rgb& c, int alpha = 255) {
+  const double luminance = (0.2126 * c.r + 0.7152 * c.g + 0.0722 * c.b) / 255.0;
+  if (luminance < 0.35) return IM_COL32(255 - c.r / 3, 255 - c.g / 3, 255 - c.b / 3, alpha);
+  return IM_COL32(c.r, c.g, c.b, alpha);
+}
+
+std::string tick_text(double v) {
+  char buf[32];
+  const double a = std::abs(v);
+  std::snprintf(buf, sizeof buf, a != 0 && (a < 0.01 || a >= 1e5) ? "%.2g" : (a < 10 && std::abs(v - std::round(v)) > 1e-9 ? "%.2f" : "%.0f"),
+                v);
+  return buf;
+}
+
+std::string axis_title(const figures::Axis& a) { return a.unit.empty() ? a.label : a.label + " (" + a.unit + ")"; }
+
+void dashed_line(ImDrawList* dl, ImVec2 a, ImVec2 b, ImU32 colour, figures::Dash dash) {
+  if (dash == figures::Dash::solid) {
+    dl->AddLine(a, b, colour, 1.2F);
+    return;
+  }
+  const float on = dash == figures::Dash::dashed ? 7.0F : 2.0F, off = dash == figures::Dash::dashed ? 5.0F : 4.0F;
+  for (float x = a.x; x < b.x; x += on + off) dl->AddLine(ImVec2(x, a.y), ImVec2(std::min(x + on, b.x), b.y), colour, 1.2F);
+}
+
+}  // namespace
+
+void draw_figure_view(const char* id, const figures::Figure& f, float height_px) {
+  ImGui::PushID(id);
+  if (!f.title.empty()) ImGui::TextUnformatted(f.title.c_str());
+  // Legend above the plot: it never covers the data.
+  for (size_t s = 0; s < f.series.size(); ++s) {
+    if (s > 0) ImGui::SameLine(0, 12);
+    const ImVec2 at = ImGui::GetCursorScreenPos();
+    const float box = ImGui::GetTextLineHeight() * 0.6F;
+    ImGui::GetWindowDrawList()->AddRectFilled(ImVec2(at.x, at.y + 4), ImVec2(at.x + box, at.y + 4 + box),
+                                              on_dark(figures::colour_of(f.series[s], s)));
+    ImGui::Dummy(ImVec2(box + 2, box));
+    ImGui::SameLine();
+    ImGui::TextDisabled("%s", f.series[s].name.c_str());
+  }
+  const figures::AxisRange xr = figures::x_range(f), yr = figures::y_range(f);
+  const ImVec2 top = ImGui::GetCursorScreenPos();
+  const float width = std::max(200.0F, ImGui::GetContentRegionAvail().x);
+  const float tick_h = ImGui::GetTextLineHeight() + 4;
+  const ImVec2 p0(top.x + kLeftGutterPx, top.y);
+  const ImVec2 p1(top.x + width - kRightGutterPx, top.y + height_px);
+  ImDrawList* dl = ImGui::GetWindowDrawList();
+  dl->AddRectFilled(p0, p1, IM_COL32(24, 26, 30, 255), 3.0F);
+  dl->AddRect(p0, p1, IM_COL32(80, 84, 92, 255), 3.0F);
+  ImGui::SetCursorScreenPos(p0);
+  ImGui::InvisibleButton("figure", ImVec2(std::max(1.0F, p1.x - p0.x), height_px));
+  const bool hovered = ImGui::IsItemHovered();
+  const auto to_x = [&](double x) { return p0.x + static_cast<float>((x - xr.lo) / (xr.hi - xr.lo)) * (p1.x - p0.x); };
+  const auto to_y = [&](double y) { return p1.y - static_cast<float>((y - yr.lo) / (yr.hi - yr.lo)) * (p1.y - p0.y); };
+
+  for (const double t : figures::nice_ticks(yr.lo, yr.hi, std::max(2, static_cast<int>(height_px / 40)))) {
+    const float y = to_y(t);
+    if (y < p0.y - 1 || y > p1.y + 1) continue;
+    dl->AddLine(ImVec2(p0.x, y), ImVec2(p1.x, y), kGridLine);
+    const std::string text = tick_text(t);
+    dl->AddText(ImVec2(p0.x - ImGui::CalcTextSize(text.c_str()).x - 4, y - ImGui::GetTextLineHeight() * 0.5F), kTickText, text.c_str());
+  }
+  for (const double t : figures::nice_ticks(xr.lo, xr.hi, std::max(2, static_cast<int>((p1.x - p0.x) / 90)))) {
+    const float x = to_x(t);
+    if (x < p0.x - 1 || x > p1.x + 1) continue;
+    dl->AddLine(ImVec2(x, p0.y), ImVec2(x, p1.y), kGridLine);
+    dl->AddText(ImVec2(x - 8, p1.y + 2), kTickText, tick_text(t).c_str());
+  }
+  // Reference lines, their labels in the right gutter.
+  for (const auto& r : f.references) {
+    const float y = to_y(r.y);
+    if (y < p0.y || y > p1.y) continue;
+    dashed_line(dl, ImVec2(p0.x, y), ImVec2(p1.x, y), on_dark(r.colour), r.dash);
+    dl->AddText(ImVec2(p1.x + 4, y - ImGui::GetTextLineHeight() * 0.5F), on_dark(r.colour), r.label.c_str());
+  }
+  dl->PushClipRect(p0, p1, true);
+  double best_d2 = std::numeric_limits<double>::infinity();
+  std::string nearest;
+  const ImVec2 mouse = ImGui::GetIO().MousePos;
+  for (size_t s = 0; s < f.series.size(); ++s) {
+    const figures::Series& ser = f.series[s];
+    const ImU32 colour = on_dark(figures::colour_of(ser, s));
+    const bool lines = ser.style != figures::SeriesStyle::points;
+    const bool points = ser.style != figures::SeriesStyle::line;
+    const size_t n = std::min(ser.x.size(), ser.y.size());
+    bool have_prev = false;
+    ImVec2 prev;
+    for (size_t i = 0; i < n; ++i) {
+      if (!std::isfinite(ser.x[i]) || !std::isfinite(ser.y[i])) {
+        have_prev = false;  // a gap, never a line to 0
+        continue;
+      }
+      const ImVec2 p(to_x(ser.x[i]), to_y(ser.y[i]));
+      if (lines && have_prev) dl->AddLine(prev, p, colour, 1.5F);
+      if (points) dl->AddCircleFilled(p, 3.0F, colour);
+      prev = p;
+      have_prev = true;
+      if (hovered) {
+        const double d2 = (p.x - mouse.x) * (p.x - mouse.x) + (p.y - mouse.y) * (p.y - mouse.y);
+        if (d2 < best_d2) {
+          best_d2 = d2;
+          nearest = ser.name + ": " + axis_title(f.x) + " " + tick_text(ser.x[i]) + ", " + axis_title(f.y) + " " + tick_text(ser.y[i]);
+        }
+      }
+    }
+  }
+  dl->PopClipRect();
+  if (hovered && !nearest.empty() && best_d2 < 400.0) ImGui::SetTooltip("%s", nearest.c_str());
+  // Axis titles: y above the tick labels at the top-left, x under the ticks.
+  ImGui::SetCursorScreenPos(ImVec2(p0.x, p1.y + tick_h));
+  ImGui::TextDisabled("%s", axis_title(f.x).c_str());
+  ImGui::SameLine(0, 24);
+  ImGui::TextDisabled("y: %s", axis_title(f.y).c_str());
+  for (const auto& note : f.notes) ImGui::TextDisabled("%s", note.c_str());
+  ImGui::PopID();
+}
+
+}  // namespace lmc::ui
