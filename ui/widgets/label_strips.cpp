@@ -22,7 +22,7 @@ ImU32 label_colour(std::int8_t label) {
 void draw_label_strips(const char* id, std::span<const double> x, const std::vector<LabelStrip>& strips,
                        LinkedXRange& range, float strip_height_px) {
   ImGui::PushID(id);
-  const float gap = 1.0F, group_gap = 4.0F;
+  const float gap = 1.0F, group_gap = 5.0F;
   float height = 0;
   for (size_t s = 0; s < strips.size(); ++s) {
     height += strip_height_px + gap + (s > 0 && strips[s].group != strips[s - 1].group ? group_gap : 0.0F);

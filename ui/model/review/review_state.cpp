@@ -73,9 +73,11 @@ ReviewState::ReviewState() { cache_dir_ = ProcessingCache::in_user_cache().dir()
 
 const std::vector<ReviewTrial>& ReviewState::trials() const { return batch_ ? batch_->trials : kNoTrials; }
 
-void ReviewState::open_folder(const std::filesystem::path& folder) {
-  const auto normal = folder.lexically_normal();
-  if (std::find(folders_.begin(), folders_.end(), normal) == folders_.end()) folders_.push_back(normal);
+void ReviewState::open_folders(const std::vector<std::filesystem::path>& folders) {
+  for (const auto& folder : folders) {
+    const auto normal = folder.lexically_normal();
+    if (std::find(folders_.begin(), folders_.end(), normal) == folders_.end()) folders_.push_back(normal);
+  }
   reprocess();
 }
 
@@ -117,6 +119,9 @@ void ReviewState::update() {
       }
       // Nothing chosen yet: show the first trial that has Vicon, so the view is never empty for
       // no reason.
+      for (size_t k = 0; k < batch_->trials.size() && selected_ < 0 && !preferred_trial_.empty(); ++k) {
+        if (batch_->trials[k].job.trial == preferred_trial_) selected_ = static_cast<int>(k);
+      }
       if (selected_ < 0) {
         for (size_t k = 0; k < batch_->trials.size() && selected_ < 0; ++k) {
           if (batch_->trials[k].row.status == TrialRowStatus::kOk) selected_ = static_cast<int>(k);

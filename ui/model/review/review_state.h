@@ -48,7 +48,8 @@ class ReviewState {
   // ---- actions -------------------------------------------------------------------------------
   // Adds a folder (a subject session, a folder of trials, or a trial's folder) and processes what
   // is open again (cached trials come back at once). A folder already open is not added twice.
-  void open_folder(const std::filesystem::path& folder);
+  void open_folder(const std::filesystem::path& folder) { open_folders({folder}); }
+  void open_folders(const std::vector<std::filesystem::path>& folders);  // one processing run for all
   void close_folder(const std::filesystem::path& folder);
   void set_method(FusionMethod method);  // processes everything again with the other fusion
   void reprocess();
@@ -57,6 +58,9 @@ class ReviewState {
   void set_sort(const TrialSort& sort) { sort_ = sort; }
   // Selects a trial (an index into trials()) and loads its full view in the background.
   void select(int index);
+  // The trial shown first after processing when none is selected (by name; `--capture` uses
+  // LMC_REVIEW_TRIAL to picture an interesting one). Default: the first trial with Vicon.
+  void prefer_trial(std::string name) { preferred_trial_ = std::move(name); }
   // The cache folder (tests point it at a scratch folder; default: the user's cache).
   void set_cache_dir(std::filesystem::path dir) { cache_dir_ = std::move(dir); }
 
@@ -108,6 +112,7 @@ class ReviewState {
   TrialSort sort_;
   int selected_ = -1;
   std::string selected_trial_;  // folder and name, kept across a reprocess
+  std::string preferred_trial_;
   TrialViewJob view_job_;
   std::shared_ptr<const TrialView> view_;
   std::shared_ptr<LinkedXRange> x_range_ = std::make_shared<LinkedXRange>();

@@ -77,8 +77,9 @@ void draw_measure_table(const AgreementGroup& g, int& measure) {
     if (std::isfinite(b.bias)) {
       ImGui::TextUnformatted(with_ci(b.bias, b.bias_ci, d, true).c_str());
     } else {
-      // Say why rather than print a dash (one subject gives no between-subject variance).
-      ImGui::TextDisabled("%s", b.reason.empty() ? "-" : b.reason.c_str());
+      // Say why rather than print a dash (one subject gives no between-subject variance); the
+      // row's tooltip has the whole reason.
+      ImGui::TextDisabled("%s", a.n_subjects < 2 ? "needs 2+ subjects" : "-");
     }
     ImGui::TableNextColumn();
     ImGui::TextUnformatted(with_ci(b.loa_low, b.loa_low_ci, d, true).c_str());

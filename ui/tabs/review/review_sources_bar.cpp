@@ -2,7 +2,9 @@
 
 #include <imgui.h>
 
+#include <algorithm>
 #include <cstdio>
+#include <vector>
 #include <filesystem>
 
 #include "core/common/paths.h"
@@ -10,11 +12,15 @@
 namespace lmc::ui {
 namespace {
 
-// A demo subject session made by scripts/run (sessions/demo-S01) when it is there.
-std::filesystem::path demo_session_dir() {
+// The simulated subject sessions scripts/run records under sessions/demo/ (S01, S02) when missing.
+std::vector<std::filesystem::path> demo_session_dirs() {
+  std::vector<std::filesystem::path> dirs;
   std::error_code ec;
-  const auto dir = sessions_dir() / "demo-S01";
-  return std::filesystem::is_directory(dir, ec) ? dir : std::filesystem::path();
+  for (const auto& e : std::filesystem::directory_iterator(sessions_dir() / "demo", ec)) {
+    if (std::filesystem::exists(e.path() / "session.json", ec)) dirs.push_back(e.path());
+  }
+  std::sort(dirs.begin(), dirs.end());
+  return dirs;
 }
 
 void open_buttons(ReviewState& state, FileBrowser& browser) {
@@ -31,10 +37,15 @@ void open_buttons(ReviewState& state, FileBrowser& browser) {
     if (ImGui::Button("Study sample trial")) state.open_folder(sample);
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("The study's published trial Naiv_Static101 with its Vicon file:\n%s", sample.string().c_str());
   }
-  if (const auto demo = demo_session_dir(); !demo.empty()) {
+  if (const auto demo = demo_session_dirs(); !demo.empty()) {
     ImGui::SameLine();
-    if (ImGui::Button("Demo session")) state.open_folder(demo);
-    if (ImGui::IsItemHovered()) ImGui::SetTooltip("A simulated subject session (scripts/run made it):\n%s", demo.string().c_str());
+    if (ImGui::Button("Demo sessions")) {
+      state.open_folders(demo);
+    }
+    if (ImGui::IsItemHovered()) {
+      ImGui::SetTooltip("%zu simulated subject session(s) of the demo protocol (scripts/run recorded them) in\n%s", demo.size(),
+                        (sessions_dir() / "demo").string().c_str());
+    }
   }
   if (const auto chosen = browser.draw()) {
     std::error_code ec;

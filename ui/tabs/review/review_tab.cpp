@@ -3,6 +3,7 @@
 #include <imgui.h>
 
 #include <algorithm>
+#include <cstdlib>
 
 #include "ui/model/review/review_state.h"
 #include "ui/model/workbench_context.h"
@@ -18,7 +19,7 @@ namespace {
 class ReviewTab final : public Tab {
  public:
   ReviewTab(StatusSink& status, WorkbenchContext& context) : status_(status), browser_("Open a folder of trials", "") {
-    for (const auto& folder : context.review_startup()) state_.open_folder(folder);
+    if (!context.review_startup().empty()) state_.open_folders(context.review_startup());
     context.review_startup().clear();
   }
 
@@ -41,7 +42,7 @@ class ReviewTab final : public Tab {
     draw_review_sources_bar(state_, browser_);
     ImGui::Separator();
     const float avail = ImGui::GetContentRegionAvail().y;
-    draw_review_trial_table(state_, std::clamp(avail * 0.3F, 120.0F, 320.0F));
+    draw_review_trial_table(state_, std::clamp(avail * 0.24F, 120.0F, 320.0F));
     if (ImGui::BeginTabBar("review_views")) {
       if (ImGui::BeginTabItem("Trial against Vicon", nullptr, pending_view_ == 0 ? ImGuiTabItemFlags_SetSelected : 0)) {
         trial_view_.draw(state_);
@@ -58,6 +59,7 @@ class ReviewTab final : public Tab {
 
   int prepare_for_capture() override {
     pending_view_ = 0;
+    if (const char* trial = std::getenv("LMC_REVIEW_TRIAL"); trial != nullptr && *trial != '\0') state_.prefer_trial(trial);
     return 4;
   }
   bool busy_for_capture() const override { return state_.busy(); }

@@ -72,8 +72,15 @@ void ReviewTrialView::draw(ReviewState& state) {
     ImGui::SameLine();
     ImGui::TextDisabled("%s", state.export_message().c_str());
   }
-  ImGui::TextDisabled("wheel: zoom, drag: pan, double-click: whole trial");
+  ImGui::SameLine();
+  ImGui::TextDisabled("(?)");
+  if (ImGui::IsItemHovered()) {
+    ImGui::SetTooltip("Every plot shares one time axis: wheel zooms, drag pans, double-click shows the whole trial.\n"
+                      "The cursor shows each series' value; missing values are gaps over a faint band, never 0.\n"
+                      "Click a legend entry to hide or show its series.");
+  }
   if (!view->warnings.empty()) {
+    ImGui::SameLine();
     ImGui::TextColored(ImVec4(0.85F, 0.80F, 0.45F, 1), "%zu warning(s)", view->warnings.size());
     if (ImGui::IsItemHovered()) {
       ImGui::BeginTooltip();
@@ -84,16 +91,25 @@ void ReviewTrialView::draw(ReviewState& state) {
 
   ImGui::BeginChild("plots", ImVec2(0, 0), false);
   const auto& range = state.x_range();
+  // Index joints on the left, thumb and wrist on the right: six angles in three rows, so the
+  // finger length and the label strips that explain every gap stay on screen at 1280 x 800.
   SeriesPlotOptions o;
-  o.height_px = 92;
-  for (int a = 0; a < kNumAngles; ++a) {
-    o.y_label = std::string(angle_name(a)) + " (deg)";
-    const std::string id = "angle" + std::to_string(a);
-    plot(id, range).draw(id.c_str(), series_for(s, true, a, each_controller_), o);
+  o.height_px = 52;
+  if (ImGui::BeginTable("angles", 2, ImGuiTableFlags_SizingStretchSame)) {
+    for (int row = 0; row < 3; ++row) {
+      for (int a : {row, row + 3}) {
+        ImGui::TableNextColumn();
+        o.y_label = std::string(angle_name(a)) + " (deg)";
+        const std::string id = "angle" + std::to_string(a);
+        plot(id, range).draw(id.c_str(), series_for(s, true, a, each_controller_), o);
+      }
+    }
+    ImGui::EndTable();
   }
-  ImGui::SetNextItemWidth(110);
-  ImGui::Combo("finger length", &finger_, "thumb\0index\0middle\0ring\0pinky\0");
-  o.y_label = std::string(kFingerWords[finger_]) + " length (mm)";
+  ImGui::SetNextItemWidth(90);
+  ImGui::Combo("##finger", &finger_, "thumb\0index\0middle\0ring\0pinky\0");
+  ImGui::SameLine();
+  o.y_label = "length (mm)";
   o.x_label = "time (s)";
   plot("finger", range).draw("finger", series_for(s, false, finger_, each_controller_), o);
 
@@ -106,7 +122,7 @@ void ReviewTrialView::draw(ReviewState& state) {
       strips.push_back({"LMC" + std::to_string(d.device_id), kFingerWords[k], d.label[static_cast<size_t>(k)]});
     }
   }
-  draw_label_strips("labels", s.time_s, strips, *range);
+  draw_label_strips("labels", s.time_s, strips, *range, 4.0F);
   ImGui::EndChild();
 }
 

@@ -1,0 +1,20 @@
+#!/usr/bin/env bash
+# The Review tab on a processed simulated session (issue #12): a quick subject session is recorded
+# on the simulated rig, opened with --review, and both pictures (the trial against Vicon and the
+# agreement view) are checked: present, window-sized, not one colour. The processing cache goes to
+# the test's own folder, never the user's.
+set -eu
+lmc=${1:?usage: review_capture.sh LMC LMC_WORKBENCH OUT_DIR}
+bin=${2:?}
+out=${3:?}
+rm -rf "$out"; mkdir -p "$out"
+"$lmc" session new --subject S01 --protocol quick -o "$out/S01" >/dev/null
+"$lmc" session run "$out/S01" --backend sim --fast --auto --quiet --seed 4 >/dev/null
+export LMC_CACHE_DIR="$out/cache"
+xvfb-run -a -s "-screen 0 1280x800x24" "$bin" --capture "$out/shots" --tab review --review "$out/S01" | tee "$out/capture.log"
+grep -q "review.png" "$out/capture.log"
+grep -q "review-agreement.png" "$out/capture.log"
+python3 "$(dirname "$0")/check_png.py" "$out/shots" 1280 800
+# Both trials were processed into the cache, and nothing was written into the session.
+test "$(find "$out/cache" -name '*.json' | wc -l)" -eq 2
+if find "$out/S01" -name '*.summary.json' | grep -q .; then echo "processing wrote into the session folder" >&2; exit 1; fi
