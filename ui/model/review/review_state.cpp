@@ -141,7 +141,11 @@ void ReviewState::update() {
   if (job_finished(view_job_.state())) {
     if (auto v = view_job_.result(); v && v != view_) {
       view_ = v;
-      if (!v->series.time_s.empty()) x_range_->set_extent(v->series.time_s.front(), v->series.time_s.back());
+      if (!v->series.time_s.empty()) {
+        x_range_->set_extent(v->series.time_s.front(), v->series.time_s.back());
+        // The replay starts mid-trial: the first frames often have no hand yet.
+        x_range_->cursor = 0.5 * (v->series.time_s.front() + v->series.time_s.back());
+      }
     }
     if (view_job_.state() == JobState::kFailed && problem_.empty()) problem_ = view_job_.error();
   }

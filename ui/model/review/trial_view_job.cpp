@@ -18,6 +18,7 @@ TrialView load_trial_view(const lmc::TrialJob& job, const SessionOptions& option
   TrialOutcome out = process_job(job, o, mapping);
   if (!out.ok || !kept) throw Error(job.trial + ": " + (out.error.empty() ? "processing gave no result" : out.error));
   view.series = trial_series(*kept);
+  view.layout = resolve_layout(job, o.layout, nullptr);
   view.warnings = out.warnings;
   view.result = std::move(kept);
   return view;

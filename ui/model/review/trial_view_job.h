@@ -16,6 +16,7 @@ struct TrialView {
   std::string trial;
   TrialSeries series;
   std::shared_ptr<const TrialResult> result;
+  Layout layout;  // the one the trial was processed with (the 3D replay draws its controllers)
   std::vector<std::string> warnings;
 };
 

@@ -2,6 +2,7 @@
 
 #include <imgui.h>
 
+#include <algorithm>
 #include <string>
 
 #include "core/common/paths.h"
@@ -89,7 +90,9 @@ void ReviewTrialView::draw(ReviewState& state) {
     }
   }
 
-  ImGui::BeginChild("plots", ImVec2(0, 0), false);
+  // Plots on the left, the 3D replay at the cursor's time on the right.
+  const float replay_width = std::clamp(ImGui::GetContentRegionAvail().x * 0.36F, 280.0F, 560.0F);
+  ImGui::BeginChild("plots", ImVec2(ImGui::GetContentRegionAvail().x - replay_width - 6, 0), false);
   const auto& range = state.x_range();
   // Index joints on the left, thumb and wrist on the right: six angles in three rows, so the
   // finger length and the label strips that explain every gap stay on screen at 1280 x 800.
@@ -123,6 +126,10 @@ void ReviewTrialView::draw(ReviewState& state) {
     }
   }
   draw_label_strips("labels", s.time_s, strips, *range, 4.0F);
+  ImGui::EndChild();
+  ImGui::SameLine();
+  ImGui::BeginChild("replay", ImVec2(0, 0), false, ImGuiWindowFlags_NoScrollbar | ImGuiWindowFlags_NoScrollWithMouse);
+  replay_.draw(state);
   ImGui::EndChild();
 }
 

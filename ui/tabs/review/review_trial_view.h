@@ -8,6 +8,7 @@
 #include <string>
 
 #include "ui/model/review/review_state.h"
+#include "ui/tabs/review/review_replay_panel.h"
 #include "ui/widgets/file_browser.h"
 #include "ui/widgets/series_plot.h"
 
@@ -24,6 +25,7 @@ class ReviewTrialView {
   int finger_ = 1;  // the finger-length plot's finger (0 thumb … 4 pinky)
   std::map<std::string, std::unique_ptr<SeriesPlot>> plots_;
   FileBrowser export_browser_{"Export the trial to a new folder", ""};
+  ReviewReplayPanel replay_;
 };
 
 }  // namespace lmc::ui
