@@ -1,5 +1,7 @@
 #include "core/figures/axis_ticks.h"
 
+#include "core/figures/c_number.h"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -49,6 +51,13 @@ std::pair<double, double> fit_y_range(std::span<const std::span<const double>> x
   if (hi == lo) return {lo - 1.0, hi + 1.0};
   const double pad = (hi - lo) * margin;
   return {lo - pad, hi + pad};
+}
+
+std::string tick_label(double value, const std::vector<double>& ticks) {
+  const double step = ticks.size() >= 2 ? ticks[1] - ticks[0] : 1.0;
+  int decimals = 0;
+  if (step > 0 && step < 1) decimals = std::min(12, static_cast<int>(std::ceil(-std::log10(step) - 1e-9)));
+  return fixed_c(value, decimals);
 }
 
 }  // namespace lmc::figures

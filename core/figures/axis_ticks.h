@@ -4,12 +4,18 @@
 // Core's, so the screen plots (ui/model/plot/axis_ticks.h forwards here) and the exported
 // figures (svg_writer) pick the same ticks.
 #include <span>
+#include <string>
 #include <utility>
 #include <vector>
 
 namespace lmc::figures {
 
 std::vector<double> nice_ticks(double lo, double hi, int target = 5);
+
+// A tick's text with just enough decimals to tell it from its neighbours in `ticks` (nice_ticks'
+// output): 0.25 steps give "0.25", 20 steps give "40"; C locale. The screen plots and the SVG
+// label their axes alike.
+std::string tick_label(double value, const std::vector<double>& ticks);
 
 // Min and max of the finite y whose x lies in [x_lo, x_hi] over every series given, widened by
 // `margin` of its span (a flat series gets ±1); nullopt-like {0, 1} when nothing is visible.

@@ -36,17 +36,6 @@ std::string axis_text(const Axis& a) {
   return a.unit.empty() ? a.label : a.label + " (" + a.unit + ")";
 }
 
-// Enough decimals to tell neighbouring ticks `step` apart.
-std::string tick_text(double v, double step) {
-  int decimals = 0;
-  if (step > 0 && step < 1)
-    decimals = std::min(12, static_cast<int>(std::ceil(-std::log10(step) - 1e-9)));
-  return fixed_c(v, decimals);
-}
-
-double tick_step(const std::vector<double>& ticks) {
-  return ticks.size() >= 2 ? ticks[1] - ticks[0] : 1.0;
-}
 
 std::string dash_attr(Dash d) {
   switch (d) {
@@ -116,7 +105,7 @@ double left_margin(const Figure& f) {
   const auto ticks = nice_ticks(yr.lo, yr.hi, 5);
   double widest = 0;
   for (const double t : ticks)
-    widest = std::max(widest, text_width(tick_text(t, tick_step(ticks)), kFont));
+    widest = std::max(widest, text_width(tick_label(t, ticks), kFont));
   return 26 + widest + 8;
 }
 
@@ -174,10 +163,10 @@ void panel(std::string& out, const Figure& f, Box area, const AxisRange& xr, con
            num(m.px(t)) + "\" y2=\"" + num(plot.bottom() + 5) + "\"/>\n";
   out += "</g>\n";
   for (const double t : yticks)
-    text(out, plot.x - 8, m.py(t) + kFont * 0.35, tick_text(t, tick_step(yticks)), "end");
+    text(out, plot.x - 8, m.py(t) + kFont * 0.35, tick_label(t, yticks), "end");
   if (st.x_labels)
     for (const double t : xticks)
-      text(out, m.px(t), plot.bottom() + 8 + kFont, tick_text(t, tick_step(xticks)), "middle");
+      text(out, m.px(t), plot.bottom() + 8 + kFont, tick_label(t, xticks), "middle");
 
   // Axis labels with units.
   const std::string ylabel = axis_text(f.y);

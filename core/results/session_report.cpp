@@ -34,7 +34,11 @@ double num(const nlohmann::json& j) { return j.is_number() ? j.get<double>() : k
 double at(const nlohmann::json& j, const char* key, size_t k) { return summary_element(j, key, k); }
 
 std::string f3(double v) { return format_fixed(v, 3); }
-std::string pm(const MeanSd& m, int d = 2) { return format_fixed(m.mean, d) + " ± " + format_fixed(m.sd, d); }
+// A missing mean or SD (no value, or a single value has no SD) is written "n/a", never "nan" or 0.
+std::string pm(const MeanSd& m, int d = 2) {
+  const auto part = [d](double v) { return std::isfinite(v) ? format_fixed(v, d) : std::string("n/a"); };
+  return part(m.mean) + " ± " + part(m.sd);
+}
 
 using Group = std::tuple<std::string, std::string, std::string>;  // layout, pose, motion
 

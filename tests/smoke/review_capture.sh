@@ -14,6 +14,7 @@ export LMC_CACHE_DIR="$out/cache"
 xvfb-run -a -s "-screen 0 1280x800x24" "$bin" --capture "$out/shots" --tab review --review "$out/S01" | tee "$out/capture.log"
 grep -q "review.png" "$out/capture.log"
 grep -q "review-agreement.png" "$out/capture.log"
+grep -q "review-study-tables.png" "$out/capture.log"
 python3 "$(dirname "$0")/check_png.py" "$out/shots" 1280 800
 # Both trials were processed into the cache, and nothing was written into the session.
 test "$(find "$out/cache" -name '*.json' | wc -l)" -eq 2

@@ -25,14 +25,6 @@ ImU32 on_dark(const figures::Rgb& c, int alpha = 255) {
   return IM_COL32(c.r, c.g, c.b, alpha);
 }
 
-std::string tick_text(double v) {
-  char buf[32];
-  const double a = std::abs(v);
-  std::snprintf(buf, sizeof buf, a != 0 && (a < 0.01 || a >= 1e5) ? "%.2g" : (a < 10 && std::abs(v - std::round(v)) > 1e-9 ? "%.2f" : "%.0f"),
-                v);
-  return buf;
-}
-
 std::string axis_title(const figures::Axis& a) { return a.unit.empty() ? a.label : a.label + " (" + a.unit + ")"; }
 
 void dashed_line(ImDrawList* dl, ImVec2 a, ImVec2 b, ImU32 colour, figures::Dash dash) {
@@ -75,18 +67,20 @@ void draw_figure_view(const char* id, const figures::Figure& f, float height_px)
   const auto to_x = [&](double x) { return p0.x + static_cast<float>((x - xr.lo) / (xr.hi - xr.lo)) * (p1.x - p0.x); };
   const auto to_y = [&](double y) { return p1.y - static_cast<float>((y - yr.lo) / (yr.hi - yr.lo)) * (p1.y - p0.y); };
 
-  for (const double t : figures::nice_ticks(yr.lo, yr.hi, std::max(2, static_cast<int>(height_px / 40)))) {
+  const auto yticks = figures::nice_ticks(yr.lo, yr.hi, std::max(2, static_cast<int>(height_px / 40)));
+  for (const double t : yticks) {
     const float y = to_y(t);
     if (y < p0.y - 1 || y > p1.y + 1) continue;
     dl->AddLine(ImVec2(p0.x, y), ImVec2(p1.x, y), kGridLine);
-    const std::string text = tick_text(t);
+    const std::string text = figures::tick_label(t, yticks);
     dl->AddText(ImVec2(p0.x - ImGui::CalcTextSize(text.c_str()).x - 4, y - ImGui::GetTextLineHeight() * 0.5F), kTickText, text.c_str());
   }
-  for (const double t : figures::nice_ticks(xr.lo, xr.hi, std::max(2, static_cast<int>((p1.x - p0.x) / 90)))) {
+  const auto xticks = figures::nice_ticks(xr.lo, xr.hi, std::max(2, static_cast<int>((p1.x - p0.x) / 90)));
+  for (const double t : xticks) {
     const float x = to_x(t);
     if (x < p0.x - 1 || x > p1.x + 1) continue;
     dl->AddLine(ImVec2(x, p0.y), ImVec2(x, p1.y), kGridLine);
-    dl->AddText(ImVec2(x - 8, p1.y + 2), kTickText, tick_text(t).c_str());
+    dl->AddText(ImVec2(x - 8, p1.y + 2), kTickText, figures::tick_label(t, xticks).c_str());
   }
   // Reference lines, their labels in the right gutter.
   for (const auto& r : f.references) {
@@ -121,7 +115,8 @@ void draw_figure_view(const char* id, const figures::Figure& f, float height_px)
         const double d2 = (p.x - mouse.x) * (p.x - mouse.x) + (p.y - mouse.y) * (p.y - mouse.y);
         if (d2 < best_d2) {
           best_d2 = d2;
-          nearest = ser.name + ": " + axis_title(f.x) + " " + tick_text(ser.x[i]) + ", " + axis_title(f.y) + " " + tick_text(ser.y[i]);
+          nearest = ser.name + ": " + axis_title(f.x) + " " + figures::tick_label(ser.x[i], {0.0, 0.01}) + ", " + axis_title(f.y) + " " +
+                    figures::tick_label(ser.y[i], {0.0, 0.01});
         }
       }
     }

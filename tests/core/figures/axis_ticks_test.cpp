@@ -51,4 +51,13 @@ TEST(FiguresAxisTicks, ZeroIsExactlyZeroAndAnEmptyRangeHasNoTicks) {
   EXPECT_TRUE(nice_ticks(std::nan(""), 1, 5).empty());
 }
 
+TEST(FiguresAxisTicks, LabelsHaveJustEnoughDecimalsForTheirStep) {
+  EXPECT_EQ(tick_label(40, {0, 20, 40}), "40");
+  EXPECT_EQ(tick_label(0.4, {0, 0.2, 0.4}), "0.4");  // nice_ticks steps are 1, 2 or 5 × 10^k
+  EXPECT_EQ(tick_label(0.05, {0, 0.05, 0.1}), "0.05");
+  EXPECT_EQ(tick_label(1.5, {1, 1.5, 2}), "1.5");
+  EXPECT_EQ(tick_label(-0.002, {-0.004, -0.002, 0}), "-0.002");
+  EXPECT_EQ(tick_label(7, {7}), "7");  // a single tick: whole numbers
+}
+
 }  // namespace lmc::figures::axis_ticks_test

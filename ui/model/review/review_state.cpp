@@ -7,6 +7,7 @@
 
 #include "core/processing/process_options_json.h"
 #include "core/results/processing_cache.h"
+#include "core/results/session_report.h"
 #include "core/review/review_export.h"
 
 namespace lmc::ui {
@@ -216,6 +217,9 @@ const ReviewState::Agreement& ReviewState::agreement() const {
   options.motion = agreement_motion_;
   agreement_.table = agreement_table(agreement_.inputs, options);
   agreement_.visibility = visibility_map(agreement_.inputs);
+  std::vector<ReportInput> report;
+  for (const auto& t : agreement_.inputs) report.push_back({t.subject, t.summary});
+  if (!report.empty()) agreement_.study_tables = parse_markdown_blocks(build_session_report(report).markdown);
   agreement_key_ = key;
   return agreement_;
 }

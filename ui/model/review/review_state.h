@@ -13,6 +13,7 @@
 #include "ui/model/plot/linked_x_range.h"
 #include "ui/model/review/review_batch_job.h"
 #include "ui/model/review/trial_view_job.h"
+#include "ui/model/text/markdown_blocks.h"
 
 namespace lmc::ui {
 
@@ -87,6 +88,7 @@ class ReviewState {
     AgreementTable table;
     VisibilityMap visibility;
     std::vector<AgreementTrial> inputs;  // what they were computed from (for exports)
+    std::vector<MarkdownBlock> study_tables;  // the study's headline tables (lmc report's), as blocks
   };
   const Agreement& agreement() const;
   void set_agreement_motion(const std::string& motion) { agreement_motion_ = motion; }

@@ -12,6 +12,7 @@
 #include "ui/tabs/review/review_trial_table.h"
 #include "ui/tabs/review/review_trial_view.h"
 #include "ui/widgets/file_browser.h"
+#include "ui/widgets/markdown_view.h"
 
 namespace lmc::ui {
 namespace {
@@ -52,6 +53,13 @@ class ReviewTab final : public Tab {
         agreement_view_.draw(state_);
         ImGui::EndTabItem();
       }
+      if (ImGui::BeginTabItem("Study tables", nullptr, pending_view_ == 2 ? ImGuiTabItemFlags_SetSelected : 0)) {
+        // The study's headline numbers over the trials the table shows (lmc report's tables).
+        const auto& blocks = state_.agreement().study_tables;
+        if (blocks.empty()) ImGui::TextDisabled("No processed trial among those shown.");
+        draw_markdown_view("study_tables", blocks);
+        ImGui::EndTabItem();
+      }
       pending_view_ = -1;
       ImGui::EndTabBar();
     }
@@ -63,9 +71,10 @@ class ReviewTab final : public Tab {
     return 4;
   }
   bool busy_for_capture() const override { return state_.busy(); }
-  std::vector<std::string> extra_captures() const override { return {"review-agreement"}; }
+  std::vector<std::string> extra_captures() const override { return {"review-agreement", "review-study-tables"}; }
   void prepare_extra_capture(const std::string& name) override {
     if (name == "review-agreement") pending_view_ = 1;
+    if (name == "review-study-tables") pending_view_ = 2;
   }
 
  private:
@@ -74,7 +83,7 @@ class ReviewTab final : public Tab {
   FileBrowser browser_;
   ReviewTrialView trial_view_;
   ReviewAgreementView agreement_view_;
-  int pending_view_ = -1;  // a capture's request: 0 the trial view, 1 agreement
+  int pending_view_ = -1;  // a capture's request: 0 the trial view, 1 agreement, 2 study tables
 };
 
 }  // namespace
