@@ -11,11 +11,15 @@ rm -rf "$out"; mkdir -p "$out"
 "$lmc" session new --subject S01 --protocol quick -o "$out/S01" >/dev/null
 "$lmc" session run "$out/S01" --backend sim --fast --auto --quiet --seed 4 >/dev/null
 export LMC_CACHE_DIR="$out/cache"
-xvfb-run -a -s "-screen 0 1280x800x24" "$bin" --capture "$out/shots" --tab review --review "$out/S01" | tee "$out/capture.log"
+mkdir -p "$out/png"
+LMC_REVIEW_PNG="$out/png/bland-altman.png" \
+  xvfb-run -a -s "-screen 0 1280x800x24" "$bin" --capture "$out/shots" --tab review --review "$out/S01" | tee "$out/capture.log"
 grep -q "review.png" "$out/capture.log"
 grep -q "review-agreement.png" "$out/capture.log"
 grep -q "review-study-tables.png" "$out/capture.log"
 python3 "$(dirname "$0")/check_png.py" "$out/shots" 1280 800
+# The PNG export: a Bland-Altman figure rendered off screen at 1000 x 700.
+python3 "$(dirname "$0")/check_png.py" "$out/png" 1000 700
 # Both trials were processed into the cache, and nothing was written into the session.
 test "$(find "$out/cache" -name '*.json' | wc -l)" -eq 2
 if find "$out/S01" -name '*.summary.json' | grep -q .; then echo "processing wrote into the session folder" >&2; exit 1; fi

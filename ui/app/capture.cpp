@@ -10,10 +10,21 @@
 #include "ui/app/subject_screen.h"
 #include "ui/app/workbench_shell.h"
 #include "ui/platform/gl_window.h"
+#include "ui/platform/offscreen_png.h"
 #include "ui/platform/user_config.h"
 #include "ui/tabs/tab_registry.h"
 
 namespace lmc::ui {
+namespace {
+
+// Exports of pictures (the Review tab's PNG) render in a hidden window beside this one.
+void install_picture_renderer(WorkbenchShell& shell, GlWindow& window) {
+  shell.context().picture_renderer() = [&window](int w, int h, const std::string& png, const std::function<void()>& draw) {
+    render_offscreen_png(window.handle(), w, h, png, draw);
+  };
+}
+
+}  // namespace
 
 int run_interactive(int width, int height, ShellStartup startup) {
   GlWindow window(WindowOptions{width, height, true, "LMC Workbench"});
@@ -21,6 +32,7 @@ int run_interactive(int width, int height, ShellStartup startup) {
     if (const auto dir = user_config_dir(); !dir.empty()) startup.recent_files_path = dir / "recent_files.json";
   }
   WorkbenchShell shell(std::move(startup));
+  install_picture_renderer(shell, window);
   SubjectScreen subject(window.handle());
   std::string title;
   while (!shell.quit_requested()) {
@@ -60,6 +72,7 @@ int run_capture(const std::string& dir, const std::vector<std::string>& tab_ids,
   ShellStartup startup;  // no recent-files path: a capture never touches the user's list
   startup.review = review;
   WorkbenchShell shell(std::move(startup));
+  install_picture_renderer(shell, window);
   // LMC_CAPTURE_HELP=walkthrough|shortcuts|about (1 = walkthrough) shows the Help window over
   // every capture: menus are closed in captures, so this is the only way to look at it.
   if (const char* help = std::getenv("LMC_CAPTURE_HELP"); help != nullptr && *help != '\0' && std::string(help) != "0") {

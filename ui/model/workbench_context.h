@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "ui/model/current_layout.h"
+#include "ui/model/picture_renderer.h"
 #include "ui/model/devices/live_rig.h"
 #include "ui/model/record/subject_screen_link.h"
 
@@ -35,6 +36,9 @@ class WorkbenchContext {
   std::optional<RecordStartup>& record_startup() { return record_startup_; }
   // `lmc-workbench --review DIR…`: folders the Review tab opens at start-up (it takes them once).
   std::vector<std::filesystem::path>& review_startup() { return review_startup_; }
+  // Renders ImGui drawing off screen at width × height into a PNG (ui/platform/offscreen_png.h); set
+  // by the program that owns the window, empty without one (model tests). Throws on failure.
+  PictureRenderer& picture_renderer() { return picture_renderer_; }
   // The Record tab's subject screen: what it shows and whether it is open (subject_screen_link.h).
   SubjectScreenLink& subject_screen() { return subject_screen_; }
 
@@ -44,6 +48,7 @@ class WorkbenchContext {
   std::optional<RecordStartup> record_startup_;
   std::vector<std::filesystem::path> review_startup_;
   SubjectScreenLink subject_screen_;
+  PictureRenderer picture_renderer_;
 };
 
 }  // namespace lmc::ui

@@ -116,9 +116,10 @@ SubjectWindow::SubjectWindow(GLFWwindow* share, const SubjectWindowOptions& opti
   ImGuiIO& io = ImGui::GetIO();
   io.IniFilename = nullptr;
   ImGui::StyleColorsDark();
-  fonts_.normal = add_font(io, 28.0F);
-  fonts_.large = add_font(io, 56.0F);
-  fonts_.huge = add_font(io, 150.0F);
+  const float normal = options.normal_font_px > 0 ? options.normal_font_px : 28.0F;
+  fonts_.normal = add_font(io, normal);
+  fonts_.large = add_font(io, normal * 2.0F);
+  fonts_.huge = add_font(io, normal * 150.0F / 28.0F);
   ImGui_ImplGlfw_InitForOpenGL(window_, false);  // no callbacks: no controls, no input
   ImGui_ImplOpenGL3_Init("#version 330 core");
   ImGui::SetCurrentContext(previous_imgui);

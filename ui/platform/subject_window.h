@@ -27,6 +27,9 @@ struct SubjectWindowOptions {
   bool windowed = false;  // a decorated 1024 × 640 window instead of covering the monitor
   bool visible = true;    // false for --capture
   int width = 0, height = 0;  // with !visible: the picture's size
+  // > 0: the normal font's size in pixels (large and huge keep their ratio to it). The off-screen
+  // figure pictures (offscreen_png.h) use the same window at a figure's text size.
+  float normal_font_px = 0;
 };
 
 struct SubjectFonts {

@@ -67,7 +67,7 @@ void draw_figure_view(const char* id, const figures::Figure& f, float height_px)
   const auto to_x = [&](double x) { return p0.x + static_cast<float>((x - xr.lo) / (xr.hi - xr.lo)) * (p1.x - p0.x); };
   const auto to_y = [&](double y) { return p1.y - static_cast<float>((y - yr.lo) / (yr.hi - yr.lo)) * (p1.y - p0.y); };
 
-  const auto yticks = figures::nice_ticks(yr.lo, yr.hi, std::max(2, static_cast<int>(height_px / 40)));
+  const auto yticks = figures::nice_ticks(yr.lo, yr.hi, std::max(2, static_cast<int>(height_px / 60)));
   for (const double t : yticks) {
     const float y = to_y(t);
     if (y < p0.y - 1 || y > p1.y + 1) continue;

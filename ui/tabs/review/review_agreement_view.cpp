@@ -146,7 +146,7 @@ void draw_visibility_map(const VisibilityMap& map) {
 
 }  // namespace
 
-void ReviewAgreementView::draw(ReviewState& state) {
+void ReviewAgreementView::draw(ReviewState& state, const PictureRenderer& renderer) {
   const ReviewState::Agreement& agreement = state.agreement();
   const AgreementTable& table = agreement.table;
   ImGui::TextDisabled("Across the %zu trial(s) the table shows (its filters apply), %zu without Vicon. Differences are LMC - Vicon; "
@@ -200,8 +200,11 @@ void ReviewAgreementView::draw(ReviewState& state) {
   const float height = std::max(200.0F, ImGui::GetContentRegionAvail().y - 4);
   ImGui::BeginChild("bland_altman", ImVec2(width * 0.5F, height), false);
   if (!group.measures.empty()) {
-    draw_figure_view("ba", bland_altman_figure(group, group.measures[static_cast<size_t>(measure_)]),
-                     std::max(120.0F, height - 5.5F * ImGui::GetTextLineHeightWithSpacing()));
+    const figures::Figure figure = bland_altman_figure(group, group.measures[static_cast<size_t>(measure_)]);
+    png_.draw("ba_png", renderer, figure_stem("bland-altman-" + group.layout + "-" + group.pose + "-" +
+                                              group.measures[static_cast<size_t>(measure_)].measure.name),
+              [figure] { draw_figure_view("ba", figure, ImGui::GetContentRegionAvail().y - 4.5F * ImGui::GetTextLineHeightWithSpacing()); });
+    draw_figure_view("ba", figure, std::max(120.0F, height - 6.5F * ImGui::GetTextLineHeightWithSpacing()));
   }
   ImGui::EndChild();
   ImGui::SameLine();

@@ -5,18 +5,21 @@
 // several trials), RMSE, Pearson r and ICC(2,1) with the model named; the selected measure's
 // Bland–Altman plot; and the study's visibility-rate map per controller × motion × layout.
 #include "ui/model/review/review_state.h"
+#include "ui/model/picture_renderer.h"
 #include "ui/widgets/file_browser.h"
+#include "ui/widgets/png_saver.h"
 
 namespace lmc::ui {
 
 class ReviewAgreementView {
  public:
-  void draw(ReviewState& state);
+  void draw(ReviewState& state, const PictureRenderer& renderer);
 
  private:
   int group_ = -1;  // index into the table's groups; −1: the pooled "all" group (last)
   int measure_ = 0;
   FileBrowser export_browser_{"Export agreement and figures to a new folder", ""};
+  PngSaver png_{1000, 700};
 };
 
 }  // namespace lmc::ui

@@ -5,12 +5,14 @@
 #include <algorithm>
 #include <cstdlib>
 
+#include "core/review/review_figures.h"
 #include "ui/model/review/review_state.h"
 #include "ui/model/workbench_context.h"
 #include "ui/tabs/review/review_agreement_view.h"
 #include "ui/tabs/review/review_sources_bar.h"
 #include "ui/tabs/review/review_trial_table.h"
 #include "ui/tabs/review/review_trial_view.h"
+#include "ui/widgets/figure_view.h"
 #include "ui/widgets/file_browser.h"
 #include "ui/widgets/markdown_view.h"
 
@@ -19,7 +21,8 @@ namespace {
 
 class ReviewTab final : public Tab {
  public:
-  ReviewTab(StatusSink& status, WorkbenchContext& context) : status_(status), browser_("Open a folder of trials", "") {
+  ReviewTab(StatusSink& status, WorkbenchContext& context)
+      : status_(status), context_(context), browser_("Open a folder of trials", "") {
     if (!context.review_startup().empty()) state_.open_folders(context.review_startup());
     context.review_startup().clear();
   }
@@ -46,11 +49,11 @@ class ReviewTab final : public Tab {
     draw_review_trial_table(state_, std::clamp(avail * 0.24F, 120.0F, 320.0F));
     if (ImGui::BeginTabBar("review_views")) {
       if (ImGui::BeginTabItem("Trial against Vicon", nullptr, pending_view_ == 0 ? ImGuiTabItemFlags_SetSelected : 0)) {
-        trial_view_.draw(state_);
+        trial_view_.draw(state_, context_.picture_renderer());
         ImGui::EndTabItem();
       }
       if (ImGui::BeginTabItem("Agreement", nullptr, pending_view_ == 1 ? ImGuiTabItemFlags_SetSelected : 0)) {
-        agreement_view_.draw(state_);
+        agreement_view_.draw(state_, context_.picture_renderer());
         ImGui::EndTabItem();
       }
       if (ImGui::BeginTabItem("Study tables", nullptr, pending_view_ == 2 ? ImGuiTabItemFlags_SetSelected : 0)) {
@@ -73,12 +76,25 @@ class ReviewTab final : public Tab {
   bool busy_for_capture() const override { return state_.busy(); }
   std::vector<std::string> extra_captures() const override { return {"review-agreement", "review-study-tables"}; }
   void prepare_extra_capture(const std::string& name) override {
-    if (name == "review-agreement") pending_view_ = 1;
+    if (name == "review-agreement") {
+      pending_view_ = 1;
+      // LMC_REVIEW_PNG=FILE: the pooled group's first Bland-Altman figure is also saved as a PNG
+      // through the off-screen renderer, so the smoke test checks the PNG export end to end.
+      const char* png = std::getenv("LMC_REVIEW_PNG");
+      const auto& groups = state_.agreement().table.groups;
+      if (png != nullptr && *png != '\0' && context_.picture_renderer() && !groups.empty() && !groups.back().measures.empty()) {
+        const figures::Figure figure = bland_altman_figure(groups.back(), groups.back().measures.front());
+        context_.picture_renderer()(1000, 700, png, [figure] {
+          draw_figure_view("ba", figure, ImGui::GetContentRegionAvail().y - 4.5F * ImGui::GetTextLineHeightWithSpacing());
+        });
+      }
+    }
     if (name == "review-study-tables") pending_view_ = 2;
   }
 
  private:
   StatusSink& status_;
+  WorkbenchContext& context_;
   ReviewState state_;
   FileBrowser browser_;
   ReviewTrialView trial_view_;

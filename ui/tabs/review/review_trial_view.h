@@ -9,14 +9,16 @@
 
 #include "ui/model/review/review_state.h"
 #include "ui/tabs/review/review_replay_panel.h"
+#include "ui/model/picture_renderer.h"
 #include "ui/widgets/file_browser.h"
+#include "ui/widgets/png_saver.h"
 #include "ui/widgets/series_plot.h"
 
 namespace lmc::ui {
 
 class ReviewTrialView {
  public:
-  void draw(ReviewState& state);
+  void draw(ReviewState& state, const PictureRenderer& renderer);
 
  private:
   // One plot per id, all on the state's shared x range; each keeps its legend toggles.
@@ -26,6 +28,7 @@ class ReviewTrialView {
   std::map<std::string, std::unique_ptr<SeriesPlot>> plots_;
   FileBrowser export_browser_{"Export the trial to a new folder", ""};
   ReviewReplayPanel replay_;
+  PngSaver png_{1200, 1800};
 };
 
 }  // namespace lmc::ui
