@@ -13,7 +13,7 @@ namespace lmc::ui {
 
 WorkbenchShell::WorkbenchShell(ShellStartup startup) : recent_files_path_(std::move(startup.recent_files_path)) {
   context_->record_startup() = std::move(startup.record);
-  context_->review_startup() = std::move(startup.review);
+  context_->review_requests() = std::move(startup.review);
   if (startup.subject_screen) {
     context_->subject_screen().open = true;
     context_->subject_screen().monitor = startup.subject_screen->monitor;
@@ -100,6 +100,10 @@ std::string WorkbenchShell::window_title() const {
 void WorkbenchShell::frame() {
   const auto start = std::chrono::steady_clock::now();
   for (auto& t : tabs_) t->update();
+  if (!context_->tab_request().empty()) {
+    select_tab(context_->tab_request());
+    context_->tab_request().clear();
+  }
   handle_shell_keys();
 
   const ImGuiViewport* vp = ImGui::GetMainViewport();

@@ -34,8 +34,11 @@ class WorkbenchContext {
   LiveRig& rig() { return rig_; }
   // Set by the shell before the tabs are built; the Record tab takes it once.
   std::optional<RecordStartup>& record_startup() { return record_startup_; }
-  // `lmc-workbench --review DIR…`: folders the Review tab opens at start-up (it takes them once).
-  std::vector<std::filesystem::path>& review_startup() { return review_startup_; }
+  // Folders for the Review tab to open: `lmc-workbench --review DIR…` at start-up, the Record tab's
+  // "Review this session" later. The Review tab takes them (and clears the list) every frame.
+  std::vector<std::filesystem::path>& review_requests() { return review_requests_; }
+  // A tab the shell should show next ("review"); the shell takes it after the tabs' updates.
+  std::string& tab_request() { return tab_request_; }
   // Renders ImGui drawing off screen at width × height into a PNG (ui/platform/offscreen_png.h); set
   // by the program that owns the window, empty without one (model tests). Throws on failure.
   PictureRenderer& picture_renderer() { return picture_renderer_; }
@@ -46,7 +49,8 @@ class WorkbenchContext {
   CurrentLayout layout_;
   LiveRig rig_;  // after layout_: it reads it until destroyed
   std::optional<RecordStartup> record_startup_;
-  std::vector<std::filesystem::path> review_startup_;
+  std::vector<std::filesystem::path> review_requests_;
+  std::string tab_request_;
   SubjectScreenLink subject_screen_;
   PictureRenderer picture_renderer_;
 };

@@ -30,7 +30,7 @@ namespace {
 class RecordTab final : public Tab {
  public:
   RecordTab(StatusSink& status, WorkbenchContext& context)
-      : status_(status), model_(&context.rig()), subject_(context.subject_screen()) {
+      : status_(status), context_(context), model_(&context.rig()), subject_(context.subject_screen()) {
     sessions_ = list_sessions(sessions_dir());
     if (auto& startup = context.record_startup()) {
       std::snprintf(form_.open_folder, sizeof form_.open_folder, "%s", startup->session.string().c_str());
@@ -223,6 +223,10 @@ class RecordTab final : public Tab {
         break;
       case TrialPanelAction::kAccept: why = model_.accept_last(); break;
       case TrialPanelAction::kRedo: why = model_.redo(); break;
+      case TrialPanelAction::kReviewSession:
+        context_.review_requests().push_back(model_.dir());
+        context_.tab_request() = "review";
+        break;
     }
     if (!why.empty()) status_.set_status("Record: " + why, true);
   }
@@ -287,6 +291,7 @@ class RecordTab final : public Tab {
   }
 
   StatusSink& status_;
+  WorkbenchContext& context_;
   RecordSessionModel model_;
   RecordSetupForm form_;
   std::vector<SessionListing> sessions_;  // for "resume": the sessions folder's contents

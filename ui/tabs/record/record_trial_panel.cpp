@@ -133,8 +133,10 @@ TrialPanelAction draw_record_trial_panel(const RecordSessionModel& model, TrialP
   const int i = model.recording() ? model.recording_trial() : model.current_trial();
   if (i < 0) {
     big_text("Every trial is accepted. The session is complete.", 1.5F);
-    ImGui::TextWrapped("Folder: %s. Process it with `lmc process %s -o OUT`.", model.dir().string().c_str(),
-                       model.dir().string().c_str());
+    ImGui::TextWrapped("Folder: %s.", model.dir().string().c_str());
+    if (ImGui::Button("Review this session")) action = TrialPanelAction::kReviewSession;
+    ImGui::SameLine();
+    ImGui::TextDisabled("opens it in the Review tab: every trial against Vicon, agreement, figures");
     verdict_section(model, input, action);
     return action;
   }

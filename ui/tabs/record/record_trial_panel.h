@@ -15,7 +15,8 @@ namespace lmc::ui {
 
 enum class TrialPanelAction {
   kNone, kPreflight, kOverride, kStart, kStop, kAbort, kAccept, kRedo, kNote,
-  kCalibrate, kApplyCalibration, kKeepNominal  // the block's calibration step (record_calibration_panel.h)
+  kCalibrate, kApplyCalibration, kKeepNominal,  // the block's calibration step (record_calibration_panel.h)
+  kReviewSession  // the session is complete: open it in the Review tab
 };
 
 struct TrialPanelInput {

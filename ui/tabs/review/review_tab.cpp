@@ -23,11 +23,11 @@ class ReviewTab final : public Tab {
  public:
   ReviewTab(StatusSink& status, WorkbenchContext& context)
       : status_(status), context_(context), browser_("Open a folder of trials", "") {
-    if (!context.review_startup().empty()) state_.open_folders(context.review_startup());
-    context.review_startup().clear();
+    take_review_requests();
   }
 
   void update() override {
+    take_review_requests();
     const bool was_busy = state_.batch_job().running();
     state_.update();
     if (was_busy && !state_.batch_job().running()) {
@@ -66,6 +66,14 @@ class ReviewTab final : public Tab {
       pending_view_ = -1;
       ImGui::EndTabBar();
     }
+  }
+
+  // Folders other parts of the workbench asked to review (start-up, the Record tab): one run.
+  void take_review_requests() {
+    auto& requests = context_.review_requests();
+    if (requests.empty()) return;
+    state_.open_folders(requests);
+    requests.clear();
   }
 
   int prepare_for_capture() override {
