@@ -210,6 +210,12 @@ void ReviewAgreementView::draw(ReviewState& state, const PictureRenderer& render
   ImGui::SameLine();
   ImGui::BeginChild("visibility_map_panel", ImVec2(0, height), false);
   ImGui::TextWrapped("Visibility rate per controller, motion and layout (the study's map; -1 = never saw the hand)");
+  {
+    const figures::Figure map_figure = visibility_map_figure(agreement.visibility);
+    map_png_.draw("map_png", renderer, "visibility-map", [map_figure] {
+      draw_figure_view("map", map_figure, ImGui::GetContentRegionAvail().y - 4.5F * ImGui::GetTextLineHeightWithSpacing());
+    });
+  }
   draw_visibility_map(agreement.visibility);
   ImGui::EndChild();
 }

@@ -20,6 +20,7 @@ class ReviewAgreementView {
   int measure_ = 0;
   FileBrowser export_browser_{"Export agreement and figures to a new folder", ""};
   PngSaver png_{1000, 700};
+  PngSaver map_png_{1000, 600};
 };
 
 }  // namespace lmc::ui
