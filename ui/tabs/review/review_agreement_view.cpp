@@ -204,7 +204,7 @@ void ReviewAgreementView::draw(ReviewState& state, const PictureRenderer& render
     png_.draw("ba_png", renderer, figure_stem("bland-altman-" + group.layout + "-" + group.pose + "-" +
                                               group.measures[static_cast<size_t>(measure_)].measure.name),
               [figure] { draw_figure_view("ba", figure, ImGui::GetContentRegionAvail().y - 4.5F * ImGui::GetTextLineHeightWithSpacing()); });
-    draw_figure_view("ba", figure, std::max(120.0F, height - 6.5F * ImGui::GetTextLineHeightWithSpacing()));
+    draw_figure_view("ba", figure, std::max(120.0F, height - 7.8F * ImGui::GetTextLineHeightWithSpacing()));
   }
   ImGui::EndChild();
   ImGui::SameLine();
