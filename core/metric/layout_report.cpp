@@ -77,10 +77,11 @@ LayoutReport build_layout_report(const Layout& layout, const PoseSet& poses, std
   return r;
 }
 
-std::string format_layout_report_markdown(const LayoutReport& r) {
+std::string format_layout_report_markdown(const LayoutReport& r, const std::vector<std::pair<std::string, std::string>>& figures) {
   std::string md = "# Layout report: " + r.layout_name + "\n\n";
   if (!r.layout_description.empty()) md += r.layout_description + "\n\n";
   md += "Pose set: " + r.poses_description + ". Written by `lmc evaluate --report` (core/metric/layout_report.h).\n\n";
+  for (const auto& [caption, file] : figures) md += "![" + caption + "](" + file + ")\n\n";
 
   md += "## Verdict\n\n";
   int idle = 0;

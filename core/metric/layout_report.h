@@ -7,6 +7,7 @@
 #include <array>
 #include <span>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "core/hand/pose_set.h"
@@ -41,6 +42,8 @@ struct LayoutReport {
 LayoutReport build_layout_report(const Layout& layout, const PoseSet& poses, std::span<const PreparedFrame> prepared,
                                  const RobustWeights& weights = {}, double phalanx_radius_mm = 10.0);
 
-std::string format_layout_report_markdown(const LayoutReport& report);
+// `figures`: (caption, file name) of pictures written beside the report, linked under its verdict.
+std::string format_layout_report_markdown(const LayoutReport& report,
+                                          const std::vector<std::pair<std::string, std::string>>& figures = {});
 
 }  // namespace lmc

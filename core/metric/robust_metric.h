@@ -19,6 +19,10 @@
 // The axis cut trades against M: on the 10,000-frame Monte Carlo set no layout with a useful M
 // keeps every seen marker within 250 mm (even paper-initial, M 0.52, has 5.7 % of seeing pairs
 // beyond it), so its weight sets how much M a lab gives for fewer cut coordinates.
+#include <array>
+
+#include <Eigen/Core>
+
 #include <string>
 #include <vector>
 
@@ -57,6 +61,9 @@ struct RobustTerms {
 inline constexpr double kControllerLengthMm = 80.0;
 inline constexpr double kControllerWidthMm = 30.0;
 bool footprints_overlap(const LayoutDevice& a, const LayoutDevice& b);
+// A controller's 80 × 30 mm box on the table as the (x, z) corners the overlap test uses; the
+// layout report's top view draws the same corners.
+std::array<Eigen::Vector2d, 4> controller_footprint(const LayoutDevice& d);
 double footprint_overlap_share(const Layout& layout);
 
 RobustTerms robust_terms(const LayoutTally& tally, double footprint_share, const RobustWeights& weights);

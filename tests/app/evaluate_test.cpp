@@ -1,5 +1,7 @@
 // Runs the built `lmc evaluate` (lmc::test::cli_path()).
 #include <gtest/gtest.h>
+
+#include <filesystem>
 #include <sys/wait.h>
 
 #include <cstdlib>
@@ -64,6 +66,12 @@ TEST(LmcEvaluate, RobustTermsAndWhatEachControllerContributes) {
   const std::string md = lmc::test::read_text_file(report / "report.md");
   EXPECT_NE(md.find("**LMC1 does not count**"), std::string::npos) << md;
   EXPECT_NE(md.find("## Coverage per reference pose"), std::string::npos) << md;
+  // Its pictures, linked from the page, each with the data behind it and a sidecar.
+  EXPECT_NE(md.find("](top-view.svg)"), std::string::npos) << md;
+  for (const char* f : {"top-view.svg", "top-view.csv", "top-view.json", "pose-redundancy.svg", "pose-redundancy.csv"}) {
+    EXPECT_TRUE(std::filesystem::exists(report / f)) << f;
+  }
+  EXPECT_NE(lmc::test::read_text_file(report / "top-view.svg").find("LMC4"), std::string::npos);
 }
 
 TEST(LmcEvaluate, UnknownLayoutIsAnError) {

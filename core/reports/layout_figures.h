@@ -1,0 +1,20 @@
+#pragma once
+// The layout report's pictures (issue #15), as core figures (core/figures/figure.h) so they are
+// written as SVG with the data behind them like every other figure:
+//  * a top view of the table: each controller's 80 × 30 mm footprint, the line along which it looks
+//    up to the height of the hands, and the palm positions of the pose set (the hand's workspace);
+//  * per reference pose, the share of frames in which each finger is seen by two or more
+//    controllers (the redundancy a robust layout buys).
+#include "core/figures/figure.h"
+#include "core/hand/pose_set.h"
+#include "core/layout/layout.h"
+#include "core/metric/layout_report.h"
+
+namespace lmc {
+
+// At most `max_hand_points` palm positions are drawn (evenly spaced through the set).
+figures::Figure layout_top_view(const Layout& layout, const PoseSet& poses, int max_hand_points = 1500);
+
+figures::Figure pose_redundancy_figure(const LayoutReport& report);
+
+}  // namespace lmc
