@@ -17,6 +17,7 @@
 #include "ui/model/heatmap_cache.h"
 #include "ui/model/layout_actions.h"
 #include "ui/model/optimiser_job.h"
+#include "ui/model/layout_report_job.h"
 #include "ui/model/pose_set_store.h"
 #include "ui/scene/colour_maps.h"
 #include "ui/scene/drag_controller.h"
@@ -92,6 +93,7 @@ class LayoutTabState {
   CoverageCache coverage;
   HeatmapCache heatmap;
   OptimiserJob optimiser;
+  LayoutReportJob report_job;  // "Report...": lmc evaluate --report for the edited layout
   const FrameVisibility& frame_visibility() const { return frame_visibility_; }
   const std::vector<int>& timeline_frames() const { return timeline_frames_; }  // after filters
   // The hand on screen (world frame), or null while the pose set loads.

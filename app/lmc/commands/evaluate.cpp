@@ -12,9 +12,8 @@
 #include "core/metric/coverage.h"
 #include "core/io/atomic_write.h"
 #include "core/metric/controller_contribution.h"
-#include "core/figures/export_sidecar.h"
 #include "core/metric/layout_report.h"
-#include "core/reports/layout_figures.h"
+#include "core/reports/layout_report_files.h"
 #include "core/metric/coverage_report.h"
 #include "core/metric/robust_terms_report.h"
 #include "core/visibility/frame_prep.h"
@@ -70,18 +69,7 @@ void setup_evaluate(CLI::App& app) {
     const lmc::RobustTerms& vertical_terms = report.terms_vertical;
     const auto& contributions = report.controllers;
     if (!opt->report_dir.empty()) {
-      std::filesystem::create_directories(opt->report_dir);
-      const std::filesystem::path dir(opt->report_dir);
-      // The pictures first (each SVG with its CSV and sidecar), then the page that links them.
-      const nlohmann::json parameters = {{"poses", poses.description}, {"phalanx_radius_mm", opt->radius_mm}};
-      lmc::figures::write_figure_files(dir, "top-view", lmc::layout_top_view(layout, poses), {layout.name, poses.description},
-                                       "layout top view", parameters, 800, 700);
-      lmc::figures::write_figure_files(dir, "pose-redundancy", lmc::pose_redundancy_figure(report),
-                                       {layout.name, poses.description}, "fingers seen by 2+ controllers per pose", parameters);
-      const auto md = dir / "report.md";
-      lmc::write_file_atomically(md, lmc::format_layout_report_markdown(
-                                         report, {{"Top view: footprints, viewing axes, palm positions", "top-view.svg"},
-                                                  {"Fingers seen by two or more controllers per reference pose", "pose-redundancy.svg"}}));
+      const auto md = lmc::write_layout_report_files(opt->report_dir, layout, poses, report, opt->radius_mm);
       std::cerr << "wrote " << md.string() << ", top-view.svg and pose-redundancy.svg (each with .csv and .json)\n";
     }
     if (opt->json) {

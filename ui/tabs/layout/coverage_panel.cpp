@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <string>
 
+#include "core/common/paths.h"
 #include "ui/scene/colour_maps.h"
 
 namespace lmc::ui {
@@ -29,6 +30,16 @@ void CoveragePanel::draw() {
   }
   ImGui::TextDisabled("on %d pose-set frames", poses->size());
   if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", poses->set.description.c_str());
+  ImGui::SameLine();
+  ImGui::BeginDisabled(s.report_job.running());
+  if (ImGui::SmallButton("Report...")) report_browser_.open(FileBrowser::Mode::kSave, sessions_dir(), "layout-report");
+  ImGui::EndDisabled();
+  if (ImGui::IsItemHovered()) {
+    ImGui::SetTooltip("Write the one-page layout report (report.md, a top view and per-pose redundancy as SVG with their data), "
+                      "as lmc evaluate --report does, for this layout and pose set");
+  }
+  if (const auto chosen = report_browser_.draw()) s.report_job.start(s.layout(), poses, *chosen);
+  if (const std::string m = s.report_job.message(); !m.empty()) ImGui::TextDisabled("%s", m.c_str());
   if (!s.coverage.up_to_date()) {
     ImGui::SameLine();
     ImGui::TextColored(ImVec4(0.95f, 0.8f, 0.35f, 1.0f), "updating");

@@ -6,6 +6,7 @@
 #include <memory>
 
 #include "ui/model/layout_tab_state.h"
+#include "ui/widgets/file_browser.h"
 
 namespace lmc::ui {
 
@@ -16,6 +17,7 @@ class CoveragePanel {
 
  private:
   std::shared_ptr<LayoutTabState> state_;
+  FileBrowser report_browser_{"Write the layout report into a new folder", ""};
 };
 
 }  // namespace lmc::ui

@@ -1,0 +1,26 @@
+#include "core/reports/layout_report_files.h"
+
+#include <nlohmann/json.hpp>
+
+#include "core/figures/export_sidecar.h"
+#include "core/io/atomic_write.h"
+#include "core/reports/layout_figures.h"
+
+namespace lmc {
+
+std::filesystem::path write_layout_report_files(const std::filesystem::path& dir, const Layout& layout, const PoseSet& poses,
+                                                const LayoutReport& report, double phalanx_radius_mm) {
+  std::filesystem::create_directories(dir);
+  const nlohmann::json parameters = {{"poses", poses.description}, {"phalanx_radius_mm", phalanx_radius_mm}};
+  const std::vector<std::string> inputs = {layout.name, poses.description};
+  figures::write_figure_files(dir, "top-view", layout_top_view(layout, poses), inputs, "layout top view", parameters, 800, 700);
+  figures::write_figure_files(dir, "pose-redundancy", pose_redundancy_figure(report), inputs,
+                              "fingers seen by 2+ controllers per pose", parameters);
+  const auto md = dir / "report.md";
+  write_file_atomically(md, format_layout_report_markdown(
+                                report, {{"Top view: footprints, viewing axes, palm positions", "top-view.svg"},
+                                         {"Fingers seen by two or more controllers per reference pose", "pose-redundancy.svg"}}));
+  return md;
+}
+
+}  // namespace lmc
