@@ -40,9 +40,16 @@ std::string squeeze(const std::string& name) {
   return out;
 }
 
-// Median of a few values (at most kMaxDevices), in place.
+// Median of a few values (at most kMaxDevices), in place. An insertion sort: for eight values it is
+// as fast as std::sort, and GCC's bounds analysis cannot follow std::sort's introsort into a fixed
+// array (a false -Warray-bounds in Release builds).
 double small_median(double* v, int n) {
-  std::sort(v, v + n);
+  for (int i = 1; i < n; ++i) {
+    const double x = v[i];
+    int j = i - 1;
+    for (; j >= 0 && v[j] > x; --j) v[j + 1] = v[j];
+    v[j + 1] = x;
+  }
   return n % 2 == 1 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
 }
 
