@@ -2,6 +2,8 @@
 // frames are run without a renderer, and the scene panel gets a recording renderer.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 #include <chrono>
 #include <thread>
 
@@ -240,6 +242,25 @@ TEST_F(OptimiserFixture, ApplyReplacesTheLayoutInOneUndoableStep) {
   EXPECT_FALSE(state->optimiser.outcome()) << "applied candidates are not offered again";
   state->undo();
   EXPECT_EQ(state->history().head(), before);
+}
+
+TEST_F(OptimiserFixture, SeveralStartsKeepTheBestAndACurveEach) {
+  state->pso.particles = 6;
+  state->pso.iterations = 3;
+  state->optimiser_starts = 3;
+  click("start");
+  wait_until_idle();
+  ASSERT_EQ(state->optimiser.state(), JobState::kCompleted) << state->optimiser.error();
+  const auto outcome = state->optimiser.outcome();
+  ASSERT_TRUE(outcome);
+  ASSERT_EQ(outcome->start_costs.size(), 3u);
+  ASSERT_EQ(state->optimiser.histories().size(), 3u);  // one convergence curve per start
+  for (const auto& h : state->optimiser.histories()) EXPECT_EQ(h.size(), 4u);  // iterations 0…3
+  const double best = *std::min_element(outcome->start_costs.begin(), outcome->start_costs.end());
+  EXPECT_DOUBLE_EQ(outcome->pso.best_cost, best);
+  EXPECT_DOUBLE_EQ(outcome->start_costs[static_cast<size_t>(outcome->best_start)], best);
+  EXPECT_NE(outcome->pso.best_layout.description.find("best of 3 starts"), std::string::npos)
+      << outcome->pso.best_layout.description;
 }
 
 TEST_F(OptimiserFixture, LockedParametersStayPutInTheCandidate) {

@@ -211,7 +211,7 @@ void LayoutTabState::update(double dt_seconds) {
 
 bool LayoutTabState::start_optimiser() {
   document_.rollback();
-  if (!optimiser.start(document_.head(), poses.current(), pso)) {
+  if (!optimiser.start(document_.head(), poses.current(), pso, optimiser_starts)) {
     set_status("Cannot start the optimiser: " + optimiser.error(), true);
     return false;
   }

@@ -87,6 +87,7 @@ class LayoutTabState {
   TimelineState timeline;
   DisplaySettings display;
   PsoSettings pso;
+  int optimiser_starts = 1;  // swarms from seeds pso.seed, pso.seed + 1, …; the best is kept
 
   // ---- derived data ----------------------------------------------------------------------------
   PoseSetStore poses;

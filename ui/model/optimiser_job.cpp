@@ -3,6 +3,8 @@
 #include <chrono>
 #include <thread>
 
+#include "core/common/error.h"
+#include "core/optimise/multi_start.h"
 #include "core/visibility/visibility_kernel.h"
 
 namespace lmc::ui {
@@ -25,7 +27,7 @@ SearchSpace search_space_for(const LayoutDocument& doc) {
   return space;
 }
 
-bool OptimiserJob::start(const LayoutDocument& doc, const PoseSetPtr& poses, const PsoSettings& settings) {
+bool OptimiserJob::start(const LayoutDocument& doc, const PoseSetPtr& poses, const PsoSettings& settings, int starts) {
   error_.clear();
   if (!poses || poses->size() == 0) {
     error_ = "the pose set is not loaded yet";
@@ -40,23 +42,39 @@ bool OptimiserJob::start(const LayoutDocument& doc, const PoseSetPtr& poses, con
     error_ = "every parameter of every controller is locked: nothing to search";
     return false;
   }
-  history_.clear();
+  if (starts < 1 || starts > 64) {
+    error_ = "starts must be 1 to 64";
+    return false;
+  }
+  histories_.clear();
   live_best_.reset();
   discarded_ = false;
   iterations_ = settings.iterations;
-  job_.start([layout = doc.layout, space, poses, settings](std::stop_token stop,
-                                                          JobChannel<OptimiserReport>& ch) {
+  starts_ = starts;
+  job_.start([layout = doc.layout, space, poses, settings, starts](std::stop_token stop,
+                                                                  JobChannel<OptimiserReport>& ch) {
     ch.set_stage("Searching");
-    ch.set_progress(0, settings.iterations + 1);
+    const long long per_start = settings.iterations + 1;
+    ch.set_progress(0, per_start * starts);
     OptimiserOutcome out;
-    out.pso = run_pso(
-        layout, space, poses->prepared, settings,
-        [&ch](const PsoProgress& p) {
-          ch.report({p.iteration, p.iterations, p.best_cost,
-                     p.best_layout.devices.empty() ? nullptr : std::make_shared<const Layout>(p.best_layout)});
-          ch.set_progress(p.iteration + 1, p.iterations + 1);
-        },
-        stop);
+    const auto report = [&ch, per_start](int start, const PsoProgress& p) {
+      ch.report({start, p.iteration, p.iterations, p.best_cost,
+                 p.best_layout.devices.empty() ? nullptr : std::make_shared<const Layout>(p.best_layout)});
+      ch.set_progress(start * per_start + p.iteration + 1, ch.total());
+    };
+    if (starts == 1) {
+      out.pso = run_pso(layout, space, poses->prepared, settings, [&](const PsoProgress& p) { report(0, p); }, stop);
+      out.start_costs = {out.pso.best_cost};
+    } else {
+      MultiStartResult m = run_multi_start(layout, space, poses->prepared, settings, starts,
+                                           [&](const MultiStartProgress& p) { report(p.start, p.pso); }, stop);
+      if (m.best < 0) throw Error("no start finished");
+      for (const auto& r : m.runs) out.start_costs.push_back(r.best_cost);
+      out.best_start = m.best;
+      out.distinct_runners_up = static_cast<int>(m.runners_up.size());
+      out.pso = std::move(m.runs[static_cast<size_t>(m.best)]);
+      out.pso.status = m.status;
+    }
     // The candidate says what made it, so a saved result is not mistaken for the layout it
     // started from (issue #15: "paper-optimized" stayed in the file after Apply and Save).
     const char* metric = placement_metric_name(settings.metric);
@@ -64,7 +82,9 @@ bool OptimiserJob::start(const LayoutDocument& doc, const PoseSetPtr& poses, con
     out.pso.best_layout.description = std::string("Optimiser panel, ") + metric + " metric: " +
                                       std::to_string(settings.particles) + " particles x " +
                                       std::to_string(settings.iterations) + " iterations, swarm seed " +
-                                      std::to_string(settings.seed) + ", on " + poses->set.description +
+                                      std::to_string(settings.seed + static_cast<std::uint64_t>(out.best_start)) +
+                                      (starts > 1 ? " (best of " + std::to_string(starts) + " starts)" : std::string()) +
+                                      ", on " + poses->set.description +
                                       ", from " + layout.name + "; cost " + std::to_string(out.pso.best_cost);
     ch.set_stage("Evaluating the candidate");
     out.candidate = evaluate_layout(out.pso.best_layout, *poses);
@@ -75,8 +95,10 @@ bool OptimiserJob::start(const LayoutDocument& doc, const PoseSetPtr& poses, con
 
 void OptimiserJob::poll() {
   for (const auto& r : job_.drain_reports()) {
-    if (r.iteration >= static_cast<int>(history_.size())) history_.resize(static_cast<size_t>(r.iteration) + 1, r.best_cost);
-    history_[static_cast<size_t>(r.iteration)] = r.best_cost;
+    if (r.start >= static_cast<int>(histories_.size())) histories_.resize(static_cast<size_t>(r.start) + 1);
+    auto& history = histories_[static_cast<size_t>(r.start)];
+    if (r.iteration >= static_cast<int>(history.size())) history.resize(static_cast<size_t>(r.iteration) + 1, r.best_cost);
+    history[static_cast<size_t>(r.iteration)] = r.best_cost;
     if (r.best_layout) live_best_ = r.best_layout;
   }
 }

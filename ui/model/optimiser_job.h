@@ -22,6 +22,7 @@ using LayoutEvaluation = OrientationCoverage;
 LayoutEvaluation evaluate_layout(const Layout& layout, const LoadedPoseSet& poses);
 
 struct OptimiserReport {
+  int start = 0;  // multi-start: which swarm (0-based)
   int iteration = 0;
   int iterations = 0;
   double best_cost = 0;
@@ -29,7 +30,12 @@ struct OptimiserReport {
 };
 
 struct OptimiserOutcome {
-  PsoResult pso;
+  PsoResult pso;  // the best start's
+  // Multi-start (issue #15): each finished start's best cost, the best start, and how many of the
+  // others found a really different layout (core's same_arrangement).
+  std::vector<double> start_costs;
+  int best_start = 0;
+  int distinct_runners_up = 0;
   LayoutEvaluation candidate;
 };
 
@@ -40,7 +46,9 @@ SearchSpace search_space_for(const LayoutDocument& doc);
 class OptimiserJob {
  public:
   // Starts a run on a copy of the inputs. Returns false (with error()) when the inputs are unusable.
-  bool start(const LayoutDocument& doc, const PoseSetPtr& poses, const PsoSettings& settings);
+  // `starts` > 1 runs that many swarms (seeds seed, seed+1, …) one after another (core's
+  // run_multi_start) and keeps the best.
+  bool start(const LayoutDocument& doc, const PoseSetPtr& poses, const PsoSettings& settings, int starts = 1);
   void cancel() { job_.cancel(); }
   // Update step: drains progress into the convergence history.
   void poll();
@@ -52,7 +60,13 @@ class OptimiserJob {
   std::optional<double> eta_seconds() const { return job_.eta_seconds(); }
   double elapsed_seconds() const { return job_.elapsed_seconds(); }
   std::string error() const { return error_.empty() ? job_.error() : error_; }
-  const std::vector<double>& history() const { return history_; }  // best cost per iteration
+  // Best cost per iteration of the start running now (or the last one).
+  const std::vector<double>& history() const {
+    static const std::vector<double> kNone;
+    return histories_.empty() ? kNone : histories_.back();
+  }
+  const std::vector<std::vector<double>>& histories() const { return histories_; }  // one per start
+  int starts_planned() const { return starts_; }
   // The finished (or cancelled: best so far) outcome; null while running or before a run.
   std::shared_ptr<const OptimiserOutcome> outcome() const;
   // Forget the last outcome (after Apply or Discard).
@@ -63,7 +77,8 @@ class OptimiserJob {
 
  private:
   BackgroundJob<OptimiserOutcome, OptimiserReport> job_;
-  std::vector<double> history_;
+  std::vector<std::vector<double>> histories_;
+  int starts_ = 1;
   std::shared_ptr<const Layout> live_best_;
   std::string error_;
   int iterations_ = 0;

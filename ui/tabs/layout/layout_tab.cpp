@@ -199,6 +199,10 @@ int LayoutTab::prepare_for_capture() {
   }
   if (const char* env = std::getenv("LMC_LAYOUT_OPTIMISE"); env != nullptr && std::atoi(env) > 0) {
     state_->pso.iterations = std::atoi(env);
+    // LMC_LAYOUT_STARTS=N: a multi-start run, so the capture shows a convergence curve per start.
+    if (const char* starts = std::getenv("LMC_LAYOUT_STARTS"); starts != nullptr && std::atoi(starts) > 0) {
+      state_->optimiser_starts = std::atoi(starts);
+    }
     state_->update(0.0);
     state_->poses.wait();
     state_->update(0.0);

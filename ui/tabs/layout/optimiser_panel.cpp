@@ -96,6 +96,14 @@ void OptimiserPanel::draw_settings() {
   ImGui::SetNextItemWidth(100);
   ImGui::InputInt("iterations", &p.iterations);
   p.iterations = std::clamp(p.iterations, 1, 10000);
+  ImGui::SameLine();
+  ImGui::SetNextItemWidth(80);
+  ImGui::InputInt("starts", &s.optimiser_starts);
+  s.optimiser_starts = std::clamp(s.optimiser_starts, 1, 8);
+  if (ImGui::IsItemHovered()) {
+    ImGui::SetTooltip("Several swarms from seeds seed, seed+1, ... one after another; the best is kept and the\n"
+                      "convergence plot draws each (lmc optimize --starts N does the same)");
+  }
   ImGui::SetNextItemWidth(80);
   ImGui::InputDouble("w", &p.w, 0, 0, "%.2f");
   ImGui::SameLine();
@@ -157,8 +165,13 @@ void OptimiserPanel::draw_run() {
   if (job.running()) {
     char stage[96];
     const auto& h = job.history();
-    std::snprintf(stage, sizeof stage, "iteration %d of %d", h.empty() ? 0 : static_cast<int>(h.size()) - 1,
-                  job.iterations_planned());
+    if (job.starts_planned() > 1) {
+      std::snprintf(stage, sizeof stage, "start %d of %d, iteration %d of %d", std::max(1, static_cast<int>(job.histories().size())),
+                    job.starts_planned(), h.empty() ? 0 : static_cast<int>(h.size()) - 1, job.iterations_planned());
+    } else {
+      std::snprintf(stage, sizeof stage, "iteration %d of %d", h.empty() ? 0 : static_cast<int>(h.size()) - 1,
+                    job.iterations_planned());
+    }
     if (draw_progress_row("pso", job.fraction(), stage, job.elapsed_seconds(), job.eta_seconds(), true, &anchors_)) {
       s.cancel_optimiser();
     }
@@ -181,6 +194,16 @@ void OptimiserPanel::draw_run() {
   ImGui::Text("%s: best %s = %.4g after %d iterations (%.1f s)",
               r.status == lmc::JobStatus::kCancelled ? "Cancelled, best so far" : "Done",
               r.metric == PlacementMetricKind::kStudy ? "M" : "R", r.best_cost, r.iterations_done, r.seconds);
+  if (outcome->start_costs.size() > 1) {
+    std::string costs;
+    for (size_t k = 0; k < outcome->start_costs.size(); ++k) {
+      char buf[32];
+      std::snprintf(buf, sizeof buf, "%s%.4g", k > 0 ? ", " : "", outcome->start_costs[k]);
+      costs += buf;
+    }
+    ImGui::TextDisabled("best of %zu starts (start %d); costs %s; %d other start(s) found a different layout",
+                        outcome->start_costs.size(), outcome->best_start + 1, costs.c_str(), outcome->distinct_runners_up);
+  }
   if (ImGui::Button("Apply", ImVec2(100, 0))) s.apply_optimised();
   anchors_.remember("apply");
   if (ImGui::IsItemHovered()) ImGui::SetTooltip("Replace the poses with the candidate's (one undo step)");
@@ -196,15 +219,23 @@ void OptimiserPanel::draw_convergence() {
   LayoutTabState& s = *state_;
   const OptimiserJob& job = s.optimiser;
   if (job.history().empty() && !job.running()) return;
-  const auto& history = job.history();
-  convergence_x_.resize(history.size());
-  for (size_t i = 0; i < history.size(); ++i) convergence_x_[i] = static_cast<double>(i);
+  // One curve per start, on one iteration axis.
+  size_t longest = 0;
+  for (const auto& h : job.histories()) longest = std::max(longest, h.size());
+  convergence_x_.resize(longest);
+  for (size_t i = 0; i < longest; ++i) convergence_x_[i] = static_cast<double>(i);
   SeriesPlotOptions o;
   o.log_y = true;
   o.height_px = 110;
   o.x_label = "iteration";
   o.y_label = s.pso.metric == PlacementMetricKind::kStudy ? "best cost M (log scale)" : "best cost R (log scale)";
-  convergence_.draw("convergence", {{"best so far", convergence_x_, history, 1}}, o);
+  std::vector<PlotSeries> series;
+  const auto& histories = job.histories();
+  for (size_t k = 0; k < histories.size(); ++k) {
+    const std::string name = histories.size() == 1 ? std::string("best so far") : "start " + std::to_string(k + 1);
+    series.push_back({name, std::span<const double>(convergence_x_.data(), histories[k].size()), histories[k], static_cast<int>(k + 1)});
+  }
+  convergence_.draw("convergence", series, o);
 }
 
 void OptimiserPanel::draw_comparison() {
