@@ -68,13 +68,18 @@ const EightyTrials& eighty_trials() {
   return made;
 }
 
-void BM_ReviewReopenCached80(benchmark::State& state) {
+// The 80 trials, or null after telling the benchmark why it cannot run.
+const EightyTrials* eighty_trials_or_skip(benchmark::State& state) {
   const EightyTrials& e = eighty_trials();
-  if (!e.ok) {
-    state.SkipWithError("needs ../shared/reference-data/validation (set LMC_REFERENCE_DATA_DIR)");
-    return;
-  }
-  const lmc::ui::ReviewBatchInput in{{e.folder}, {}, e.cache};
+  if (e.ok) return &e;
+  state.SkipWithError("needs ../shared/reference-data/validation (set LMC_REFERENCE_DATA_DIR)");
+  return nullptr;
+}
+
+void BM_ReviewReopenCached80(benchmark::State& state) {
+  const EightyTrials* e = eighty_trials_or_skip(state);
+  if (e == nullptr) return;
+  const lmc::ui::ReviewBatchInput in{{e->folder}, {}, e->cache};
   std::stop_source never;
   for (auto _ : state) {
     const auto batch = lmc::ui::run_review_batch(in, never.get_token(), {});
@@ -85,19 +90,16 @@ void BM_ReviewReopenCached80(benchmark::State& state) {
 BENCHMARK(BM_ReviewReopenCached80)->Unit(benchmark::kMillisecond);
 
 void BM_ReviewExport80(benchmark::State& state) {
-  const EightyTrials& e = eighty_trials();
-  if (!e.ok) {
-    state.SkipWithError("needs ../shared/reference-data/validation (set LMC_REFERENCE_DATA_DIR)");
-    return;
-  }
-  const lmc::ui::ReviewBatchInput in{{e.folder}, {}, e.cache};
+  const EightyTrials* e = eighty_trials_or_skip(state);
+  if (e == nullptr) return;
+  const lmc::ui::ReviewBatchInput in{{e->folder}, {}, e->cache};
   std::stop_source never;
   const auto batch = lmc::ui::run_review_batch(in, never.get_token(), {});
   lmc::ReviewExportInput exports;
   for (const auto& t : batch.trials) exports.trials.push_back(lmc::agreement_trial("S01", t.outcome.summary));
   exports.method = "default";
   for (auto _ : state) {
-    const auto files = lmc::write_review_exports(e.out, exports);
+    const auto files = lmc::write_review_exports(e->out, exports);
     benchmark::DoNotOptimize(files.data());
   }
 }

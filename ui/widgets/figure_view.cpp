@@ -132,4 +132,21 @@ void draw_figure_view(const char* id, const figures::Figure& f, float height_px)
   ImGui::PopID();
 }
 
+void draw_figure_filling(const char* id, const figures::Figure& figure) {
+  // Under the plot: tick labels, axis titles and the notes.
+  const float below = 4.5F * ImGui::GetTextLineHeightWithSpacing();
+  draw_figure_view(id, figure, std::max(60.0F, ImGui::GetContentRegionAvail().y - below));
+}
+
+void draw_figure_grid_filling(const figures::FigureGrid& grid) {
+  ImGui::TextUnformatted(grid.title.c_str());
+  const float each = (ImGui::GetContentRegionAvail().y - 6) / static_cast<float>(std::max<size_t>(1, grid.panels.size()));
+  const float overhead = 2.2F * ImGui::GetTextLineHeightWithSpacing();
+  for (size_t k = 0; k < grid.panels.size(); ++k) {
+    figures::Figure panel = grid.panels[k];
+    panel.x = grid.x;  // the grid's shared axis, labelled under every panel of the picture
+    draw_figure_view(("panel" + std::to_string(k)).c_str(), panel, std::max(30.0F, each - overhead));
+  }
+}
+
 }  // namespace lmc::ui

@@ -12,8 +12,8 @@ namespace lmc::ui {
 
 class PngSaver {
  public:
-  // `picture` draws what goes into the PNG (it runs inside the off-screen window). Without a
-  // renderer (no window) the button is disabled.
+  // `picture` draws what goes into the PNG (it runs inside the off-screen window, during this call,
+  // so it may refer to the caller's locals). Without a renderer (no window) the button is disabled.
   void draw(const char* id, const PictureRenderer& renderer, const std::string& default_name,
             const std::function<void()>& picture);
 

@@ -1,6 +1,5 @@
 #include "ui/model/review/review_batch_job.h"
 
-#include <thread>
 
 #include "core/results/processing_cache.h"
 #include "core/session/session_trials.h"
@@ -51,10 +50,6 @@ void ReviewBatchJob::start(ReviewBatchInput input) {
     channel.set_stage("processing");
     return run_review_batch(in, stop, [&channel](int done, int total) { channel.set_progress(done, total); });
   });
-}
-
-void ReviewBatchJob::wait() {
-  while (job_.running()) std::this_thread::sleep_for(std::chrono::milliseconds(5));
 }
 
 }  // namespace lmc::ui

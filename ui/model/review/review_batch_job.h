@@ -45,7 +45,6 @@ class ReviewBatchJob {
  public:
   void start(ReviewBatchInput input);
   void cancel() { job_.cancel(); }
-  void wait();  // tests
   JobState state() const { return job_.state(); }
   bool running() const { return job_.running(); }
   double fraction() const { return job_.fraction(); }

@@ -1,6 +1,5 @@
 #include "ui/model/review/trial_view_job.h"
 
-#include <thread>
 
 #include "core/common/error.h"
 #include "core/io/vicon_mapping.h"
@@ -29,10 +28,6 @@ void TrialViewJob::start(const lmc::TrialJob& job, const SessionOptions& options
   job_.abandon_into(graveyard_);
   trial_ = job.trial;
   job_.start([job, options](std::stop_token, JobChannel<Report>&) { return load_trial_view(job, options); });
-}
-
-void TrialViewJob::wait() {
-  while (job_.running()) std::this_thread::sleep_for(std::chrono::milliseconds(5));
 }
 
 }  // namespace lmc::ui

@@ -26,7 +26,6 @@ TrialView load_trial_view(const lmc::TrialJob& job, const SessionOptions& option
 class TrialViewJob {
  public:
   void start(const lmc::TrialJob& job, const SessionOptions& options);
-  void wait();  // tests
   bool running() const { return job_.running(); }
   JobState state() const { return job_.state(); }
   std::string error() const { return job_.error(); }

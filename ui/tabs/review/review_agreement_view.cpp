@@ -203,19 +203,17 @@ void ReviewAgreementView::draw(ReviewState& state, const PictureRenderer& render
     const figures::Figure figure = bland_altman_figure(group, group.measures[static_cast<size_t>(measure_)]);
     png_.draw("ba_png", renderer, figure_stem("bland-altman-" + group.layout + "-" + group.pose + "-" +
                                               group.measures[static_cast<size_t>(measure_)].measure.name),
-              [figure] { draw_figure_view("ba", figure, ImGui::GetContentRegionAvail().y - 4.5F * ImGui::GetTextLineHeightWithSpacing()); });
+              [&figure] { draw_figure_filling("ba", figure); });
     draw_figure_view("ba", figure, std::max(120.0F, height - 7.8F * ImGui::GetTextLineHeightWithSpacing()));
   }
   ImGui::EndChild();
   ImGui::SameLine();
   ImGui::BeginChild("visibility_map_panel", ImVec2(0, height), false);
   ImGui::TextWrapped("Visibility rate per controller, motion and layout (the study's map; -1 = never saw the hand)");
-  {
-    const figures::Figure map_figure = visibility_map_figure(agreement.visibility);
-    map_png_.draw("map_png", renderer, "visibility-map", [map_figure] {
-      draw_figure_view("map", map_figure, ImGui::GetContentRegionAvail().y - 4.5F * ImGui::GetTextLineHeightWithSpacing());
-    });
-  }
+  // The picture runs inside draw() (the renderer is synchronous), so the map is read in place and
+  // its figure built only when a PNG is taken.
+  map_png_.draw("map_png", renderer, "visibility-map",
+                [&agreement] { draw_figure_filling("map", visibility_map_figure(agreement.visibility)); });
   draw_visibility_map(agreement.visibility);
   ImGui::EndChild();
 }

@@ -71,20 +71,10 @@ void ReviewTrialView::draw(ReviewState& state, const PictureRenderer& renderer) 
   if (ImGui::IsItemHovered()) ImGui::SetTooltip("SVG of every plot, the CSV behind it, a JSON sidecar, and every series and label as one CSV");
   if (const auto chosen = export_browser_.draw()) state.export_trial(*chosen, each_controller_);
   ImGui::SameLine();
-  {
-    // The PNG shows what the SVG export shows: every panel of the trial's figure, stacked.
-    const figures::FigureGrid grid = trial_figure(s, each_controller_);
-    png_.draw("trial_png", renderer, figure_stem("trial-" + s.trial), [grid] {
-      ImGui::TextUnformatted(grid.title.c_str());
-      const float each = (ImGui::GetContentRegionAvail().y - 6) / static_cast<float>(std::max<size_t>(1, grid.panels.size()));
-      const float overhead = 2.2F * ImGui::GetTextLineHeightWithSpacing();
-      for (size_t k = 0; k < grid.panels.size(); ++k) {
-        figures::Figure panel = grid.panels[k];
-        panel.x = grid.x;
-        draw_figure_view(("panel" + std::to_string(k)).c_str(), panel, std::max(30.0F, each - overhead));
-      }
-    });
-  }
+  // The PNG shows what the SVG export shows: every panel of the trial's figure, stacked. The
+  // figure is built only when a picture is taken, not every frame.
+  png_.draw("trial_png", renderer, figure_stem("trial-" + s.trial),
+            [view, each = each_controller_] { draw_figure_grid_filling(trial_figure(view->series, each)); });
   if (!state.export_message().empty()) {
     ImGui::SameLine();
     ImGui::TextDisabled("%s", state.export_message().c_str());
