@@ -208,6 +208,18 @@ TrialOutcome process_job(const TrialJob& job, const SessionOptions& options, con
   return out;
 }
 
+TrialResult process_job_in_full(const TrialJob& job, const SessionOptions& options, TrialOutcome* outcome) {
+  SessionOptions o = options;
+  std::optional<TrialResult> kept;
+  o.on_result = [&kept](const TrialResult& r) { kept = r; };
+  o.compare_methods = false;
+  const ViconMapping mapping = o.mapping ? load_vicon_mapping(*o.mapping) : default_vicon_mapping();
+  TrialOutcome out = process_job(job, o, mapping);
+  if (!out.ok || !kept) throw Error(job.trial + ": " + (out.error.empty() ? "processing gave no result" : out.error));
+  if (outcome != nullptr) *outcome = std::move(out);
+  return std::move(*kept);
+}
+
 std::vector<TrialOutcome> process_session(const std::vector<TrialJob>& jobs, const SessionOptions& options) {
   const ViconMapping mapping = options.mapping ? load_vicon_mapping(*options.mapping) : default_vicon_mapping();
   std::vector<TrialOutcome> outcomes(jobs.size());

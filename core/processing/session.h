@@ -73,6 +73,11 @@ struct TrialOutcome {
 Layout resolve_layout(const TrialJob& job, const std::optional<std::string>& layout, std::string* used);
 
 TrialOutcome process_job(const TrialJob& job, const SessionOptions& options, const ViconMapping& mapping);
+
+// One trial with every intermediate kept (the Review tab's trial view, `lmc figures --trial`):
+// process_job with options.mapping (or the default mapping) and without the method comparison.
+// `outcome` (optional) receives the summary and warnings. Throws lmc::Error naming the trial.
+TrialResult process_job_in_full(const TrialJob& job, const SessionOptions& options, TrialOutcome* outcome = nullptr);
 std::vector<TrialOutcome> process_session(const std::vector<TrialJob>& jobs, const SessionOptions& options);
 
 }  // namespace lmc

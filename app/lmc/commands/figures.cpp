@@ -10,7 +10,6 @@
 #include "app/lmc/command.h"
 #include "core/common/error.h"
 #include "core/common/number_format.h"
-#include "core/io/vicon_mapping.h"
 #include "core/processing/process_options_json.h"
 #include "core/results/processing_cache.h"
 #include "core/review/review_export.h"
@@ -77,13 +76,9 @@ void run_figures(const FiguresArgs& a) {
       if (jobs[k].trial != name) continue;
       found = true;
       // A trial's series are not cached (only its summary): it is processed again here.
-      lmc::SessionOptions one = options;
-      std::optional<lmc::TrialSeries> series;
-      one.on_result = [&series](const lmc::TrialResult& r) { series = lmc::trial_series(r); };
-      const lmc::TrialOutcome o = lmc::process_job(jobs[k], one, lmc::default_vicon_mapping());
-      if (!o.ok || !series) throw lmc::Error(name + ": " + o.error);
-      series->trial = subjects[k] + "-" + series->trial;
-      for (auto& p : lmc::write_trial_export(a.out, *series, {jobs[k].lmc.string()}, a.method, exports.parameters,
+      lmc::TrialSeries series = lmc::trial_series(lmc::process_job_in_full(jobs[k], options));
+      series.trial = subjects[k] + "-" + series.trial;
+      for (auto& p : lmc::write_trial_export(a.out, series, {jobs[k].lmc.string()}, a.method, exports.parameters,
                                              a.each_controller)) {
         written.push_back(std::move(p));
       }

@@ -1,25 +1,18 @@
 #include "ui/model/review/trial_view_job.h"
 
 
-#include "core/common/error.h"
-#include "core/io/vicon_mapping.h"
 
 namespace lmc::ui {
 
 TrialView load_trial_view(const lmc::TrialJob& job, const SessionOptions& options) {
   TrialView view;
   view.trial = job.trial;
-  SessionOptions o = options;
-  std::shared_ptr<TrialResult> kept;
-  o.on_result = [&kept](const TrialResult& r) { kept = std::make_shared<TrialResult>(r); };
-  o.compare_methods = false;
-  const ViconMapping mapping = o.mapping ? load_vicon_mapping(*o.mapping) : default_vicon_mapping();
-  TrialOutcome out = process_job(job, o, mapping);
-  if (!out.ok || !kept) throw Error(job.trial + ": " + (out.error.empty() ? "processing gave no result" : out.error));
-  view.series = trial_series(*kept);
-  view.layout = resolve_layout(job, o.layout, nullptr);
+  TrialOutcome out;
+  auto result = std::make_shared<const TrialResult>(process_job_in_full(job, options, &out));
+  view.series = trial_series(*result);
+  view.layout = resolve_layout(job, options.layout, nullptr);
   view.warnings = out.warnings;
-  view.result = std::move(kept);
+  view.result = std::move(result);
   return view;
 }
 
