@@ -49,7 +49,8 @@ press space; wait_for '"type":"trial_accepted"' 2 "the first trial, again"
 sleep 0.5
 press space; wait_for '"type":"trial_accepted"' 3 "the second trial"
 sleep 0.5
-press n; sleep 0.5
+# No pause after N: letters typed before the field has the keyboard must still reach the note.
+press n
 xdotool type --delay 30 "glove slipped"
 press Return; wait_for '"text":"glove slipped"' 1 "the note"
 sleep 0.5

@@ -233,7 +233,12 @@ class RecordTab final : public Tab {
 
   void keys() {
     // Typing a reason or a note must not start a trial.
-    if (ImGui::GetIO().WantTextInput) return;
+    if (ImGui::GetIO().WantTextInput || panel_.note.awaiting_keyboard(ImGui::GetTime())) return;
+    // N first: a Space or an R typed into the note in the same frame must not act.
+    if (ImGui::IsKeyPressed('N', false)) {
+      open_note(panel_.note, true);
+      return;
+    }
     subject_screen_key();
     if (ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Space), false)) {
       if (model_.recording() || model_.calibrating()) act(TrialPanelAction::kStop);
@@ -242,7 +247,6 @@ class RecordTab final : public Tab {
       else if (!model_.pending_calibration()) act(TrialPanelAction::kStart);
     }
     if (ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Escape), false) && model_.recording()) act(TrialPanelAction::kAbort);
-    if (ImGui::IsKeyPressed('N', false)) open_note(panel_.note);
     if (model_.busy()) return;
     if (const auto& c = model_.pending_calibration()) {
       // A calibration waiting for the operator: Enter applies it, R records it again.

@@ -108,9 +108,25 @@ VerdictAction draw_record_verdict_panel(const RecordSessionModel& model, NoteInp
   return action;
 }
 
-void open_note(NoteInput& note) {
+void open_note(NoteInput& note, bool by_key) {
+  if (note.open) {
+    note.focus = !note.took_keyboard;
+    return;
+  }
+  note = NoteInput{};
   note.open = true;
   note.focus = true;
+  note.opened_frame = ImGui::GetFrameCount();
+  note.opened_time = ImGui::GetTime();
+  if (by_key) {
+    // A fast typist's first letters can arrive in the same frame as the N: keep what follows it.
+    const ImVector<ImWchar>& queue = ImGui::GetIO().InputQueueCharacters;
+    bool after_n = false;
+    for (ImWchar c : queue) {
+      if (after_n) note.held.push_back(c);
+      else after_n = c == 'n' || c == 'N';
+    }
+  }
 }
 
 bool draw_note_line(const RecordSessionModel& model, NoteInput& note) {
@@ -120,15 +136,40 @@ bool draw_note_line(const RecordSessionModel& model, NoteInput& note) {
       ImGui::SetKeyboardFocusHere();
       note.focus = false;
     }
+    // Characters typed after N but before the field has the keyboard (the N's own 'n' arrives in
+    // the frame that opened the line and is left out); an Enter or Esc among them is kept too.
+    const bool early = !note.took_keyboard && ImGui::GetFrameCount() > note.opened_frame;
+    ImVector<ImWchar>& queue = ImGui::GetIO().InputQueueCharacters;
+    if (early) {
+      note.held.insert(note.held.end(), queue.begin(), queue.end());
+      queue.resize(0);
+      if (ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Enter), false)) note.submit_when_typed = true;
+    } else if (note.took_keyboard && !note.held.empty()) {
+      ImVector<ImWchar> typed;
+      for (ImWchar c : note.held) typed.push_back(c);
+      for (ImWchar c : queue) typed.push_back(c);
+      queue.swap(typed);
+      note.held.clear();
+    }
     ImGui::PushItemWidth(420);
     const int target = model.note_trial();
     const std::string hint = "note on " + (target >= 0 ? model.state().trials.at(static_cast<size_t>(target)).plan.name
                                                        : std::string("the trial")) + ": Enter keeps it, Esc drops it";
-    if (ImGui::InputTextWithHint("##note", hint.c_str(), note.text, sizeof note.text, ImGuiInputTextFlags_EnterReturnsTrue))
+    const bool enter = ImGui::InputTextWithHint("##note", hint.c_str(), note.text, sizeof note.text, ImGuiInputTextFlags_EnterReturnsTrue);
+    const bool active = ImGui::IsItemActive();
+    const bool escape = ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Escape), false);
+    if (active) note.took_keyboard = true;
+    if (enter) {
+      // An Enter in the very frame the field took the keyboard, with held letters not yet typed
+      // into it, waits for them.
+      if (note.held.empty()) submitted = true;
+      else note.submit_when_typed = true;
+    } else if (note.submit_when_typed && note.took_keyboard && note.held.empty()) {
       submitted = true;
-    if ((ImGui::IsItemActive() || ImGui::IsItemDeactivated()) && ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Escape), false)) {
-      note.open = false;
-      note.text[0] = '\0';
+      note.submit_when_typed = false;
+    }
+    if (escape && (active || ImGui::IsItemDeactivated() || early)) {
+      note = NoteInput{};
     }
     ImGui::PopItemWidth();
   }
