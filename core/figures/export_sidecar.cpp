@@ -5,7 +5,9 @@
 #include "core/common/error.h"
 #include "core/common/safe_name.h"
 #include "core/common/utc_time.h"
+#include "core/figures/colour_scale.h"
 #include "core/figures/figure_csv.h"
+#include "core/figures/heatmap_svg.h"
 #include "core/figures/svg_writer.h"
 #include "core/io/atomic_write.h"
 
@@ -117,6 +119,25 @@ json figure_sidecar(const FigureGrid& grid, const std::string& base_name,
   return j;
 }
 
+json figure_sidecar(const Heatmap& heatmap, const std::string& base_name,
+                    const FigureProvenance& how) {
+  json j = common(heatmap.title, base_name, how);
+  j["csv_columns"] = {"panel", "row", "column_group", "column", "value"};
+  json panels = json::array();
+  for (const HeatmapPanel& p : heatmap.panels) panels.push_back({{"title", p.title}});
+  j["figure"] = {{"kind", "heatmap"},
+                 {"rows", heatmap.rows},
+                 {"row_title", heatmap.row_title},
+                 {"columns", heatmap.columns},
+                 {"column_groups", heatmap.column_groups},
+                 {"column_title", heatmap.column_title},
+                 {"panels", panels},
+                 {"colour_scale",
+                  {{"name", std::string(kSequentialScaleName)}, {"range", {0.0, 1.0}}, {"label", heatmap.scale_label}}},
+                 {"notes", heatmap.notes}};
+  return j;
+}
+
 WrittenFigure write_figure_files(const std::filesystem::path& dir, const std::string& base_name,
                                  const Figure& figure, const std::vector<std::string>& inputs,
                                  const std::string& method, const json& parameters, int width_px,
@@ -135,6 +156,16 @@ WrittenFigure write_figure_files(const std::filesystem::path& dir, const std::st
   const FigureProvenance how{inputs, method, parameters};
   return write_three(dir, base_name, to_svg(grid, width_px, height_px), to_csv(grid),
                      figure_sidecar(grid, base_name, how));
+}
+
+WrittenFigure write_figure_files(const std::filesystem::path& dir, const std::string& base_name,
+                                 const Heatmap& heatmap, const std::vector<std::string>& inputs,
+                                 const std::string& method, const json& parameters, int width_px,
+                                 int height_px) {
+  check_target(dir, base_name);
+  const FigureProvenance how{inputs, method, parameters};
+  return write_three(dir, base_name, to_svg(heatmap, width_px, height_px), to_csv(heatmap),
+                     figure_sidecar(heatmap, base_name, how));
 }
 
 }  // namespace lmc::figures

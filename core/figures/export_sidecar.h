@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "core/figures/figure.h"
+#include "core/figures/heatmap.h"
 
 namespace lmc::figures {
 
@@ -27,6 +28,10 @@ struct FigureProvenance {
 nlohmann::json figure_sidecar(const Figure& figure, const std::string& base_name,
                               const FigureProvenance& how);
 nlohmann::json figure_sidecar(const FigureGrid& grid, const std::string& base_name,
+                              const FigureProvenance& how);
+// A heatmap's "figure" holds its rows, columns (and groups), panel titles, what the colour means
+// and the scale ("viridis" over [0, 1]), and its notes.
+nlohmann::json figure_sidecar(const Heatmap& heatmap, const std::string& base_name,
                               const FigureProvenance& how);
 
 struct WrittenFigure {
@@ -45,5 +50,9 @@ WrittenFigure write_figure_files(const std::filesystem::path& dir, const std::st
                                  const FigureGrid& grid, const std::vector<std::string>& inputs,
                                  const std::string& method, const nlohmann::json& parameters,
                                  int width_px = 800, int height_px = 800);
+WrittenFigure write_figure_files(const std::filesystem::path& dir, const std::string& base_name,
+                                 const Heatmap& heatmap, const std::vector<std::string>& inputs,
+                                 const std::string& method, const nlohmann::json& parameters,
+                                 int width_px = 800, int height_px = 520);
 
 }  // namespace lmc::figures

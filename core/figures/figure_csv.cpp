@@ -46,4 +46,16 @@ std::string to_csv(const FigureGrid& grid) {
   return out;
 }
 
+std::string to_csv(const Heatmap& heatmap) {
+  std::string out = "panel,row,column_group,column,value\n";
+  const bool grouped = heatmap.column_groups.size() == heatmap.columns.size();
+  for (size_t p = 0; p < heatmap.panels.size(); ++p)
+    for (size_t r = 0; r < heatmap.rows.size(); ++r)
+      for (size_t c = 0; c < heatmap.columns.size(); ++c)
+        out += std::to_string(p + 1) + "," + csv_field(heatmap.rows[r]) + "," +
+               (grouped ? csv_field(heatmap.column_groups[c]) : std::string()) + "," +
+               csv_field(heatmap.columns[c]) + "," + exact_c(heatmap.at(p, r, c)) + "\n";
+  return out;
+}
+
 }  // namespace lmc::figures

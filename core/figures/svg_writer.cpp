@@ -8,6 +8,7 @@
 #include "core/figures/axis_ticks.h"
 #include "core/figures/c_number.h"
 #include "core/figures/svg_marks.h"
+#include "core/figures/svg_text.h"
 #include "core/figures/xml_text.h"
 
 namespace lmc::figures {
@@ -17,20 +18,13 @@ using svg::Box;
 using svg::hex;
 using svg::Mapper;
 using svg::num;
-
-constexpr double kFont = 12.0;        // tick labels, legend, notes
-constexpr double kTitleFont = 15.0;   // the document's title
-constexpr double kPanelFont = 13.0;   // a grid panel's own title
-constexpr double kCharWidth = 0.6;    // an average sans-serif glyph, in em: text is never measured
-constexpr double kLineHeight = 18.0;  // one row of legend or notes
-
-// Width of text on one line, from its code-point count (continuation bytes are not counted).
-double text_width(std::string_view s, double font) {
-  size_t n = 0;
-  for (const char c : s)
-    if ((static_cast<unsigned char>(c) & 0xC0u) != 0x80u) ++n;
-  return static_cast<double>(n) * kCharWidth * font;
-}
+using svg::kFont;
+using svg::kLineHeight;
+using svg::kPanelFont;
+using svg::text;
+using svg::text_width;
+using svg::document_start;
+using svg::title_band;
 
 std::string axis_text(const Axis& a) {
   return a.unit.empty() ? a.label : a.label + " (" + a.unit + ")";
@@ -47,14 +41,6 @@ std::string dash_attr(Dash d) {
       break;
   }
   return {};
-}
-
-void text(std::string& out, double x, double y, std::string_view s, std::string_view anchor,
-          double font = kFont, std::string_view extra = {}) {
-  out +=
-      "<text x=\"" + num(x) + "\" y=\"" + num(y) + "\" text-anchor=\"" + std::string(anchor) + "\"";
-  if (font != kFont) out += " font-size=\"" + num(font) + "\"";
-  out += std::string(extra) + ">" + xml_escape(s) + "</text>\n";
 }
 
 // A legend entry's sample of how its series is drawn.
@@ -213,24 +199,6 @@ void panel(std::string& out, const Figure& f, Box area, const AxisRange& xr, con
     labels[i].first = std::max(labels[i].first, labels[i - 1].first + kFont + 1);
   for (const auto& [y, r] : labels)
     text(out, plot.right() + 6, y + kFont * 0.35, r->label, "start");
-}
-
-void document_start(std::string& out, int w, int h, const std::string& title) {
-  out += "<?xml version=\"1.0\" encoding=\"UTF-8\" standalone=\"no\"?>\n";
-  out += "<svg xmlns=\"http://www.w3.org/2000/svg\" version=\"1.1\" width=\"" + std::to_string(w) +
-         "\" height=\"" + std::to_string(h) + "\" viewBox=\"0 0 " + std::to_string(w) + " " +
-         std::to_string(h) + "\" font-family=\"Helvetica, Arial, sans-serif\" font-size=\"" +
-         num(kFont) + "\">\n";
-  out += "<title>" + xml_escape(title) + "</title>\n";
-  out += "<rect x=\"0\" y=\"0\" width=\"" + std::to_string(w) + "\" height=\"" + std::to_string(h) +
-         "\" fill=\"#ffffff\"/>\n";
-}
-
-// The title band's height after writing it (a small top margin without a title).
-double title_band(std::string& out, int w, const std::string& title) {
-  if (title.empty()) return 8;
-  text(out, w / 2.0, 8 + kTitleFont, title, "middle", kTitleFont, " font-weight=\"bold\"");
-  return 8 + kTitleFont + 10;
 }
 
 // Notes under everything, one line each; returns the height they take.

@@ -81,7 +81,8 @@ std::string format_layout_report_markdown(const LayoutReport& r, const std::vect
   std::string md = "# Layout report: " + r.layout_name + "\n\n";
   if (!r.layout_description.empty()) md += r.layout_description + "\n\n";
   md += "Pose set: " + r.poses_description + ". Written by `lmc evaluate --report` (core/metric/layout_report.h).\n\n";
-  for (const auto& [caption, file] : figures) md += "![" + caption + "](" + file + ")\n\n";
+  // The caption also under the picture: alt text alone is only read when the picture is missing.
+  for (const auto& [caption, file] : figures) md += "![" + caption + "](" + file + ")\n\n*" + caption + "*\n\n";
 
   md += "## Verdict\n\n";
   int idle = 0;

@@ -42,7 +42,7 @@ struct LayoutReport {
 LayoutReport build_layout_report(const Layout& layout, const PoseSet& poses, std::span<const PreparedFrame> prepared,
                                  const RobustWeights& weights = {}, double phalanx_radius_mm = 10.0);
 
-// `figures`: (caption, file name) of pictures written beside the report, linked under its verdict.
+// `figures`: (caption, file name) of pictures written beside the report; each is shown with its caption under it.
 std::string format_layout_report_markdown(const LayoutReport& report,
                                           const std::vector<std::pair<std::string, std::string>>& figures = {});
 

@@ -98,4 +98,34 @@ figures::Figure pose_redundancy_figure(const LayoutReport& r) {
   return f;
 }
 
+figures::Heatmap finger_coverage_heatmap(const LayoutReport& r) {
+  figures::Heatmap h;
+  h.title = "Finger coverage per pose: " + r.layout_name;
+  for (const char* finger : kFingerWords) h.rows.emplace_back(finger);
+  h.row_title = "finger";
+  h.column_title = "reference pose (palm orientation, motion)";
+  h.scale_label = "share of the pose's frames";
+  h.value_text = figures::HeatmapValueText::percent;
+  int fewest = 0, most = 0;
+  for (const PoseCoverageRow& p : r.poses) {
+    h.columns.emplace_back(motion_words(p.motion));
+    h.column_groups.emplace_back(orientation_words(p.orientation));
+    fewest = fewest == 0 ? p.frames : std::min(fewest, p.frames);
+    most = std::max(most, p.frames);
+  }
+  figures::HeatmapPanel one{"Seen by at least one controller", {}};
+  figures::HeatmapPanel two{"Seen by two or more controllers", {}};
+  for (size_t k = 0; k < static_cast<size_t>(kNumDigits); ++k) {
+    for (const PoseCoverageRow& p : r.poses) {
+      one.values.push_back(p.seen_by_one[k]);
+      two.values.push_back(p.seen_by_two[k]);
+    }
+  }
+  h.panels = {std::move(one), std::move(two)};
+  h.notes.push_back("A cell: the share of that pose's frames in which the finger is seen by ≥ 1 controller (top), ≥ 2 (bottom).");
+  h.notes.push_back(std::to_string(fewest) + (fewest == most ? "" : "–" + std::to_string(most)) +
+                    " frames a pose (the set's frames labelled with it); pose set: " + r.poses_description + ".");
+  return h;
+}
+
 }  // namespace lmc

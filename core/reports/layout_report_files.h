@@ -1,8 +1,9 @@
 #pragma once
 // The layout report as files (issue #15), one implementation for `lmc evaluate --report DIR` and
-// the Layout tab's "Write report...": the pictures first (top view, per-pose redundancy: SVG, the
-// CSV behind each and a JSON sidecar), then report.md, which links them. Each file is written
-// atomically; returns report.md's path. Throws lmc::Error naming what could not be written.
+// the Layout tab's "Write report...": the pictures first (top-view, pose-redundancy and the
+// finger × pose coverage heatmap finger-coverage: SVG, the CSV behind each and a JSON sidecar),
+// then report.md, which links them. Each file is written atomically; returns report.md's path.
+// Throws lmc::Error naming what could not be written.
 #include <filesystem>
 
 #include "core/hand/pose_set.h"

@@ -1,5 +1,6 @@
 // Runs the built `lmc evaluate` (lmc::test::cli_path()).
 #include <gtest/gtest.h>
+#include <algorithm>
 
 #include <filesystem>
 #include <sys/wait.h>
@@ -68,10 +69,20 @@ TEST(LmcEvaluate, RobustTermsAndWhatEachControllerContributes) {
   EXPECT_NE(md.find("## Coverage per reference pose"), std::string::npos) << md;
   // Its pictures, linked from the page, each with the data behind it and a sidecar.
   EXPECT_NE(md.find("](top-view.svg)"), std::string::npos) << md;
-  for (const char* f : {"top-view.svg", "top-view.csv", "top-view.json", "pose-redundancy.svg", "pose-redundancy.csv"}) {
+  EXPECT_NE(md.find("](finger-coverage.svg)"), std::string::npos) << md;
+  for (const char* f : {"top-view.svg", "top-view.csv", "top-view.json", "pose-redundancy.svg", "pose-redundancy.csv",
+                        "finger-coverage.svg", "finger-coverage.csv", "finger-coverage.json"}) {
     EXPECT_TRUE(std::filesystem::exists(report / f)) << f;
   }
   EXPECT_NE(lmc::test::read_text_file(report / "top-view.svg").find("LMC4"), std::string::npos);
+  // The heatmap: five fingers × ten reference poses × two panels, each cell one row of its CSV.
+  const std::string heatmap = lmc::test::read_text_file(report / "finger-coverage.svg");
+  size_t cells = 0;
+  for (size_t i = heatmap.find("<rect class=\"cell"); i != std::string::npos; i = heatmap.find("<rect class=\"cell", i + 1)) ++cells;
+  EXPECT_EQ(cells, 100u);
+  const std::string csv = lmc::test::read_text_file(report / "finger-coverage.csv");
+  EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'), 101);
+  EXPECT_NE(csv.find("\n1,thumb,palm left,wrist extension,"), std::string::npos) << csv;
 }
 
 TEST(LmcEvaluate, UnknownLayoutIsAnError) {

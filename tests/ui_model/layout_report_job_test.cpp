@@ -24,7 +24,8 @@ TEST(LayoutReportJob, WritesTheReportAndItsPicturesOnAWorker) {
   job.start(layout, poses, dir);
   job.wait();
   EXPECT_NE(job.message().find("wrote " + (dir / "report.md").string()), std::string::npos) << job.message();
-  for (const char* f : {"report.md", "top-view.svg", "top-view.csv", "pose-redundancy.svg", "pose-redundancy.json"}) {
+  for (const char* f : {"report.md", "top-view.svg", "top-view.csv", "pose-redundancy.svg", "pose-redundancy.json",
+                        "finger-coverage.svg", "finger-coverage.csv", "finger-coverage.json"}) {
     EXPECT_TRUE(std::filesystem::exists(dir / f)) << f;
   }
   // A file where the folder should be: the message names the problem.

@@ -10,6 +10,7 @@
 
 #include "core/common/error.h"
 #include "core/figures/figure_csv.h"
+#include "core/figures/heatmap_svg.h"
 #include "core/figures/svg_writer.h"
 #include "tests/support/reference_data.h"
 
@@ -113,6 +114,26 @@ TEST(FiguresExport, AMissingFolderIsNamed) {
     EXPECT_EQ(e.where().file, dir.string());
   }
   std::filesystem::remove_all(dir.parent_path());
+}
+
+TEST(FiguresExport, AHeatmapIsWrittenWithItsScaleInTheSidecar) {
+  const auto dir = lmc::test::scratch_dir("figures_export_heatmap");
+  Heatmap h;
+  h.title = "Coverage";
+  h.rows = {"thumb"};
+  h.columns = {"open hand"};
+  h.scale_label = "share of frames";
+  h.panels = {{"1+", {0.5}}};
+  const WrittenFigure w = write_figure_files(dir, "coverage", h, {"layout.json"}, "coverage", {});
+  EXPECT_EQ(slurp(w.svg), to_svg(h, 800, 520));
+  EXPECT_EQ(slurp(w.csv), to_csv(h));
+  const auto j = nlohmann::json::parse(slurp(w.json));
+  EXPECT_EQ(j["csv_columns"], nlohmann::json::array({"panel", "row", "column_group", "column", "value"}));
+  EXPECT_EQ(j["figure"]["kind"], "heatmap");
+  EXPECT_EQ(j["figure"]["colour_scale"]["name"], "viridis");
+  EXPECT_EQ(j["figure"]["colour_scale"]["label"], "share of frames");
+  EXPECT_EQ(j["figure"]["panels"][0]["title"], "1+");
+  EXPECT_EQ(j["figure"]["rows"], nlohmann::json::array({"thumb"}));
 }
 
 }  // namespace lmc::figures::export_sidecar_test

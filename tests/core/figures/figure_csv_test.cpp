@@ -94,4 +94,23 @@ TEST(FiguresCsv, AGridNumbersItsPanelsFromOne) {
   EXPECT_EQ(to_csv(g), "panel,series,x,y\n1,s0,0.5,0\n2,s1,0.5,1\n");
 }
 
+TEST(FiguresCsv, AHeatmapHasACellARowWithItsGroupAndAnEmptyCellForNoData) {
+  Heatmap h;
+  h.rows = {"thumb", "index"};
+  h.columns = {"open hand", "open hand"};
+  h.column_groups = {"palm down", "palm left"};
+  h.panels = {{"1+", {0.25, 1, kNan, 0.1}}, {"2+", {0, 0.5}}};  // the second is short: no data
+  const auto lines = csv_lines(to_csv(h));
+  ASSERT_EQ(lines.size(), 9u);
+  EXPECT_EQ(lines[0], "panel,row,column_group,column,value");
+  EXPECT_EQ(lines[1], "1,thumb,palm down,open hand,0.25");
+  EXPECT_EQ(lines[2], "1,thumb,palm left,open hand,1");
+  EXPECT_EQ(lines[3], "1,index,palm down,open hand,");
+  EXPECT_EQ(lines[4], "1,index,palm left,open hand,0.1");
+  EXPECT_EQ(lines[6], "2,thumb,palm left,open hand,0.5");
+  EXPECT_EQ(lines[8], "2,index,palm left,open hand,");
+  h.column_groups.clear();
+  EXPECT_EQ(csv_lines(to_csv(h))[1], "1,thumb,,open hand,0.25");
+}
+
 }  // namespace lmc::figures::figure_csv_test

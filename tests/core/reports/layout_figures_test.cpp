@@ -53,5 +53,33 @@ TEST(LayoutFigures, RedundancyHasAFingerSeriesOverThePoses) {
   EXPECT_NE(fig.notes[0].find("2 "), std::string::npos);
 }
 
+TEST(LayoutFigures, CoverageHeatmapIsFingersByPosesFromTheReportsNumbers) {
+  LayoutReport r;
+  r.layout_name = "x";
+  r.poses_description = "monte-carlo seed=1 frames=30";
+  PoseCoverageRow down, left;
+  down.frames = 10;
+  down.seen_by_one = {1.0, 0.9, 0.8, 0.7, 0.6};
+  down.seen_by_two = {0.5, 0.4, 0.3, 0.2, 0.1};
+  left.orientation = HandOrientation::kVertical;
+  left.motion = HandMotion::kThumbFlexion;
+  left.frames = 20;
+  left.seen_by_one = {0.6, 0.6, 0.6, 0.6, 0.6};
+  r.poses = {down, left};
+  const figures::Heatmap h = finger_coverage_heatmap(r);
+  EXPECT_EQ(h.rows, (std::vector<std::string>{"thumb", "index", "middle", "ring", "pinky"}));
+  EXPECT_EQ(h.columns, (std::vector<std::string>{"open hand", "thumb flexion"}));
+  EXPECT_EQ(h.column_groups, (std::vector<std::string>{"palm down", "palm left"}));
+  ASSERT_EQ(h.panels.size(), 2u);
+  EXPECT_DOUBLE_EQ(h.at(0, 1, 0), 0.9);  // index, palm down open hand, seen by 1+
+  EXPECT_DOUBLE_EQ(h.at(1, 4, 0), 0.1);  // pinky, seen by 2+
+  EXPECT_DOUBLE_EQ(h.at(1, 4, 1), 0.0);
+  EXPECT_FALSE(h.scale_label.empty());
+  std::string notes;
+  for (const auto& n : h.notes) notes += n + " ";
+  EXPECT_NE(notes.find("10–20 frames a pose"), std::string::npos) << notes;
+  EXPECT_NE(notes.find("monte-carlo seed=1"), std::string::npos) << notes;
+}
+
 }  // namespace layout_figures_test
 }  // namespace lmc
