@@ -2,26 +2,25 @@
 
 #include <gtest/gtest.h>
 
-#include <boost/math/distributions/chi_squared.hpp>
-#include <boost/math/distributions/normal.hpp>
-#include <boost/math/distributions/students_t.hpp>
 #include <cmath>
 #include <limits>
 #include <nlohmann/json.hpp>
 #include <vector>
+
+#include "core/stats/quantiles.h"
 
 namespace lmc::stats::bland_altman_repeated_test {
 
 constexpr double kMissing = std::numeric_limits<double>::quiet_NaN();
 
 double z975() {
-  return boost::math::quantile(boost::math::normal_distribution<double>(), 0.975);
+  return lmc::stats::normal_quantile(0.975);
 }
 double t975(double df) {
-  return boost::math::quantile(boost::math::students_t_distribution<double>(df), 0.975);
+  return lmc::stats::t_quantile(0.975, df);
 }
 double chi2(double p, double df) {
-  return boost::math::quantile(boost::math::chi_squared_distribution<double>(df), p);
+  return lmc::stats::chi_squared_quantile(p, df);
 }
 
 // Subject i has `repeats` identical trials with difference A − B = diffs[i] (B = 50).

@@ -2,22 +2,22 @@
 
 #include <gtest/gtest.h>
 
-#include <boost/math/distributions/normal.hpp>
-#include <boost/math/distributions/students_t.hpp>
 #include <cmath>
 #include <limits>
 #include <nlohmann/json.hpp>
 #include <vector>
+
+#include "core/stats/quantiles.h"
 
 namespace lmc::stats::bland_altman_test {
 
 constexpr double kMissing = std::numeric_limits<double>::quiet_NaN();
 
 double z975() {
-  return boost::math::quantile(boost::math::normal_distribution<double>(), 0.975);
+  return lmc::stats::normal_quantile(0.975);
 }
 double t975(double df) {
-  return boost::math::quantile(boost::math::students_t_distribution<double>(df), 0.975);
+  return lmc::stats::t_quantile(0.975, df);
 }
 
 TEST(StatsBlandAltman, HandComputedBiasLimitsAndIntervals) {

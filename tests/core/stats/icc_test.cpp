@@ -2,10 +2,11 @@
 
 #include <gtest/gtest.h>
 
-#include <boost/math/distributions/fisher_f.hpp>
 #include <cmath>
 #include <limits>
 #include <nlohmann/json.hpp>
+
+#include "core/stats/quantiles.h"
 
 namespace lmc::stats::icc_test {
 
@@ -24,7 +25,7 @@ Eigen::MatrixXd shrout_fleiss_table() {
 }
 
 double f975(double df1, double df2) {
-  return boost::math::quantile(boost::math::fisher_f_distribution<double>(df1, df2), 0.975);
+  return lmc::stats::f_quantile(0.975, df1, df2);
 }
 
 TEST(StatsIcc, ShroutFleissTable2ToThePublishedDecimals) {

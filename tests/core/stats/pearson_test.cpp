@@ -2,11 +2,12 @@
 
 #include <gtest/gtest.h>
 
-#include <boost/math/distributions/normal.hpp>
 #include <cmath>
 #include <limits>
 #include <nlohmann/json.hpp>
 #include <vector>
+
+#include "core/stats/quantiles.h"
 
 namespace lmc::stats::pearson_test {
 
@@ -22,7 +23,7 @@ TEST(StatsPearson, HandComputedValueAndFisherInterval) {
   EXPECT_EQ(p.n_skipped, 1u);
   const double r = 6.0 / std::sqrt(60.0);
   EXPECT_NEAR(p.r, r, 1e-12);
-  const double z = boost::math::quantile(boost::math::normal_distribution<double>(), 0.975);
+  const double z = lmc::stats::normal_quantile(0.975);
   const double half = z / std::sqrt(5.0 - 3.0);
   EXPECT_NEAR(p.ci.low, std::tanh(std::atanh(r) - half), 1e-9);
   EXPECT_NEAR(p.ci.high, std::tanh(std::atanh(r) + half), 1e-9);
