@@ -161,41 +161,38 @@ HandTrack fuse_default(const std::vector<const HandTrack*>& devices, const std::
   const double base_var = p.noise_mm * p.noise_mm;
   constexpr auto kL = static_cast<size_t>(kFusionLanes);
 
-  // Every device's sample in lanes (fusion_lanes.h), frame-major.
-  const size_t nd = devices.size();
-  std::vector<double> value(nd * static_cast<size_t>(n) * kL), variance(value.size());
+  // Inverse-variance combination of the devices per lane and step, accumulated device by device
+  // in order (as the online fuser combines them), stored lane-major so each lane's filter pass
+  // reads its steps in a row.
+  const auto steps = static_cast<size_t>(n);
+  std::vector<double> wsum(kL * steps, 0.0), zsum(kL * steps, 0.0);
   std::array<float, kNumHandPoints> ones;
   ones.fill(1.0f);
-  for (size_t d = 0; d < nd; ++d) {
+  std::array<double, kFusionLanes> value, variance;
+  for (size_t d = 0; d < devices.size(); ++d) {
     const bool has_q = d < quality.size() && quality[d] != nullptr;
-    for (int f = 0; f < n; ++f) {
-      const size_t at = static_cast<size_t>(f) * kNumHandPoints;
-      const size_t lanes = (d * static_cast<size_t>(n) + static_cast<size_t>(f)) * kL;
+    for (size_t f = 0; f < steps; ++f) {
+      const size_t at = f * kNumHandPoints;
       hand_to_lanes(std::span<const Vec3, kNumHandPoints>(devices[d]->points.data() + at, kNumHandPoints),
                     has_q ? std::span<const float, kNumHandPoints>(quality[d]->data() + at, kNumHandPoints)
                           : std::span<const float, kNumHandPoints>(ones),
-                    base_var, std::span<double, kFusionLanes>(value.data() + lanes, kL),
-                    std::span<double, kFusionLanes>(variance.data() + lanes, kL));
+                    base_var, value, variance);
+      for (size_t l = 0; l < kL; ++l) {
+        if (!std::isfinite(value[l])) continue;
+        wsum[l * steps + f] += 1.0 / variance[l];
+        zsum[l * steps + f] += value[l] / variance[l];
+      }
     }
   }
 
-  std::vector<double> fused(static_cast<size_t>(n) * kL, kNaN);
-  std::vector<Step> st(static_cast<size_t>(n));
-  std::vector<int> since(static_cast<size_t>(n));
+  std::vector<double> fused(steps * kL, kNaN);  // frame-major, as lanes_to_hand reads it
+  std::vector<Step> st(steps);
+  std::vector<int> since(steps);
   for (size_t l = 0; l < kL; ++l) {
-    // Inverse-variance combination of the devices per step.
-    for (int f = 0; f < n; ++f) {
-      double wsum = 0.0, zsum = 0.0;
-      for (size_t d = 0; d < nd; ++d) {
-        const size_t at = (d * static_cast<size_t>(n) + static_cast<size_t>(f)) * kL + l;
-        const double y = value[at];
-        if (!std::isfinite(y)) continue;
-        wsum += 1.0 / variance[at];
-        zsum += y / variance[at];
-      }
-      auto& s = st[static_cast<size_t>(f)];
-      s.z = wsum > 0.0 ? zsum / wsum : 0.0;
-      s.r = wsum > 0.0 ? 1.0 / wsum : INFINITY;
+    for (size_t f = 0; f < steps; ++f) {
+      const double w = wsum[l * steps + f];
+      st[f].z = w > 0.0 ? zsum[l * steps + f] / w : 0.0;
+      st[f].r = w > 0.0 ? 1.0 / w : INFINITY;
     }
     smooth_lane(st, since, p, [&](int f, double x) { fused[static_cast<size_t>(f) * kL + l] = x; });
   }
