@@ -23,6 +23,12 @@
 
 namespace lmc {
 
+// Which computation fuse_default does for the same parameters. It is part of the processing cache's
+// key and of every export's parameters (process_options_json.h), so a result fused by an older
+// rule is never reused or mistaken for a current one. 2: bone-length lanes, one cut weight per
+// finger, cut only at the cut value (issue #16).
+inline constexpr int kDefaultFusionRevision = 2;
+
 struct SmootherParams {
   double dt_s = 0.01;
   double accel_psd = 2.0e5;     // mm²/s³: white-noise acceleration spectral density (points and bone lengths)
