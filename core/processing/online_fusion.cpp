@@ -66,7 +66,7 @@ bool OnlineFusion::combine(int lane, double t, double& z, double& r) const {
     // not carried forward with the filter's velocity: a measurement that depends on the state
     // feeds the velocity back into itself and diverged on the recorded trial. At age 0 this is
     // exactly the offline combination.
-    const double var = s.var[static_cast<size_t>(lane / 3)] + params_.accel_psd * age * age * age / 3.0;
+    const double var = s.var[static_cast<size_t>(lane)] + params_.accel_psd * age * age * age / 3.0;
     wsum += 1.0 / var;
     zsum += y / var;
   }
@@ -110,10 +110,7 @@ void OnlineFusion::add(const HandFrame& frame, int slot_index, double t_s) {
   // 3. Into the world frame; the slot keeps it as its latest sample.
   std::array<Vec3, kNumHandPoints> world = frame.points;
   realign_frame(world, slot.rotation, slot.shift);
-  for (int i = 0; i < kNumHandPoints; ++i) {
-    slot.var[static_cast<size_t>(i)] = base_var_ * static_cast<double>(quality[static_cast<size_t>(i)]);
-    for (int c = 0; c < 3; ++c) slot.z[static_cast<size_t>(3 * i + c)] = world[static_cast<size_t>(i)][c];
-  }
+  hand_to_lanes(world, quality, base_var_, slot.z, slot.var);
 
   // 4. Lanes this frame measured: predict to t_s (a new instant) or redo the update at the
   // current one, with every device's latest sample.
@@ -153,6 +150,7 @@ FusedHand OnlineFusion::current() const { return current_at(latest_s_); }
 FusedHand OnlineFusion::current_at(double t_s) const {
   FusedHand out;
   out.t_s = t_s;
+  std::array<double, kLanes> lanes;
   for (int lane = 0; lane < kLanes; ++lane) {
     const auto l = static_cast<size_t>(lane);
     double v = kNaN;
@@ -160,8 +158,9 @@ FusedHand OnlineFusion::current_at(double t_s) const {
       const double ahead = t_s > state_t_[l] ? t_s - state_t_[l] : 0.0;
       v = kf_[l].x0 + ahead * kf_[l].x1;
     }
-    out.points[static_cast<size_t>(lane / 3)][lane % 3] = v;
+    lanes[l] = v;
   }
+  lanes_to_hand(lanes, out.points);
   for (const Slot& s : slots_) {
     if (!s.ever || t_s - s.t_s > kStaleAfterS + kTimeEpsS) continue;
     for (int k = 0; k < kNumDigits; ++k) out.seen_by[static_cast<size_t>(k)] += s.labels[static_cast<size_t>(k)] == 1 ? 1 : 0;

@@ -5,9 +5,11 @@
 //  1. ray-traces the frame in the device's own frame (visibility_labels.h, frame_visibility_labels);
 //  2. turns labels and axis cuts into variance factors (fusion_smoother.h, frame_quality);
 //  3. realigns the points with the slot's pose and offset (realign.h, realign_frame);
-//  4. per point and coordinate, predicts the constant-velocity Kalman filter (cv_kalman.h) to the
+//  4. turns the points into the fusion's lanes (fusion_lanes.h: point coordinates and bone
+//     lengths) and, per lane, predicts the constant-velocity Kalman filter (cv_kalman.h) to the
 //     frame's time and updates it with the inverse-variance combination of every device's latest
-//     sample, as the offline fuser combines the devices at each grid step.
+//     sample, as the offline fuser combines the devices at each grid step; current() rebuilds the
+//     hand from the lanes as the offline fuser does.
 // Why combine the latest samples instead of updating with the arriving device alone: controllers
 // disagree by several millimetres (calibration, internal-model guesses) and stream at different
 // rates; updated one device at a time, the responsive filter would jump towards each arriving
@@ -31,6 +33,7 @@
 #include "core/hand/hand_frame.h"
 #include "core/layout/layout.h"
 #include "core/processing/cv_kalman.h"
+#include "core/processing/fusion_lanes.h"
 #include "core/processing/fusion_smoother.h"
 #include "core/processing/visibility_labels.h"
 
@@ -76,7 +79,7 @@ class OnlineFusion {
   void reset();
 
  private:
-  static constexpr int kLanes = kNumHandPoints * 3;  // lane = 3·point + coordinate
+  static constexpr int kLanes = kFusionLanes;  // fusion_lanes.h
 
   struct Slot {
     Eigen::Matrix3d rotation;
@@ -86,7 +89,7 @@ class OnlineFusion {
     bool ever = false;
     bool hand = false;                          // the latest frame had a hand: its samples count
     std::array<double, kLanes> z{};             // latest world-frame sample per lane (NaN: none)
-    std::array<double, kNumHandPoints> var{};   // its variance per point (base × quality factor)
+    std::array<double, kLanes> var{};           // its variance per lane (fusion_lanes.h)
   };
 
   // The inverse-variance combination at time t of every slot's fresh sample of `lane`, each

@@ -18,7 +18,8 @@ nlohmann::json process_options_json(const ProcessOptions& o) {
   j["reference_kalman"] = {{"dt_s", k.dt_s},           {"q_position", k.q_position}, {"q_velocity", k.q_velocity},
                            {"p0_position", k.p0_position}, {"p0_velocity", k.p0_velocity}, {"window", k.window}};
   const auto& s = o.smoother;
-  j["smoother"] = {{"dt_s", s.dt_s},
+  j["smoother"] = {{"revision", kDefaultFusionRevision},
+                   {"dt_s", s.dt_s},
                    {"accel_psd", s.accel_psd},
                    {"noise_mm", s.noise_mm},
                    {"hidden_factor", s.hidden_factor},

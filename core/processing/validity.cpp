@@ -90,13 +90,21 @@ std::string format_validity(const std::string& title, const std::vector<MethodVa
   }
   out += "  consensus (no Vicon needed): fused - median of the seeing controllers, on the frames they see it\n";
   for (const auto& m : methods) {
-    double d[kNumFingers], pd[kNumFingers];
+    double d[kNumFingers], pd[kNumFingers], seg[kNumFingers];
     for (int f = 0; f < kNumFingers; ++f) {
       const auto& fc = m.consensus.fingers[static_cast<size_t>(f)];
       d[f] = fc.finger.fused_minus_median();
       pd[f] = fc.point_distance_mm;
+      // The segment of this finger that comes closest to (or furthest below) the shortest seeing
+      // controller's: negative means the fusion made that segment shorter than every controller.
+      seg[f] = kNaN;
+      for (const LengthConsensus& sc : fc.segment) {
+        const double v = sc.fused - sc.shortest;
+        if (std::isfinite(v) && !(v >= seg[f])) seg[f] = v;
+      }
     }
     out += validity_row(std::string(fusion_method_name(m.method)) + ": fused - median (mm)", d, kNumFingers);
+    out += validity_row(std::string(fusion_method_name(m.method)) + ": min. segment - shortest ctrl.", seg, kNumFingers);
     out += validity_row(std::string(fusion_method_name(m.method)) + ": fused point to seeing ctrl. (mm)", pd, kNumFingers);
   }
   if (!methods.empty() && std::isfinite(methods.front().vicon_finger_mean[0])) {
