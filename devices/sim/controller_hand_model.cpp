@@ -35,7 +35,11 @@ ControllerHandModel draw_controller_hand_model(const HandModelError& config, std
 }
 
 void apply_controller_hand_model(const ControllerHandModel& model, HandFrame& hand) {
+  // The palm's lateral axis is (about) every finger's flexion axis, so "palm side of a bone" is
+  // lateral × bone: it turns with the bone as the finger curls, also past 90°, where the palm
+  // normal made perpendicular to the bone would point to the back of the finger.
   const Vec3 normal = hand.point(kPalmNormal);
+  const Vec3 lateral_axis = hand.point(kPalmDirection).cross(normal);
   for (int dg = 0; dg < kNumDigits; ++dg) {
     std::array<Vec3, kJointsPerDigit> truth{};
     for (int j = 0; j < kJointsPerDigit; ++j) truth[static_cast<size_t>(j)] = hand.point(digit_point(dg, j));
@@ -47,8 +51,12 @@ void apply_controller_hand_model(const ControllerHandModel& model, HandFrame& ha
               (truth[static_cast<size_t>(b + 1)] - truth[static_cast<size_t>(b)]);
     for (int j = 0; j < kJointsPerDigit; ++j) {
       const Vec3 along = controller_hand_model_detail::joint_bone_direction(truth, j);
-      Vec3 palm_side = normal - normal.dot(along) * along;
-      if (along.isZero() || palm_side.norm() < 1e-9) continue;  // no frame: leave the joint
+      if (along.isZero()) continue;  // no bone: leave the joint
+      Vec3 palm_side = lateral_axis.cross(along);
+      // A bone along the lateral axis (never a finger's; a thumb's at most partly): fall back on
+      // the palm normal made perpendicular to the bone.
+      if (palm_side.norm() < 0.3 * lateral_axis.norm()) palm_side = normal - normal.dot(along) * along;
+      if (palm_side.norm() < 1e-9) continue;
       palm_side.normalize();
       const Vec3 lateral = along.cross(palm_side);
       const Vec3& o = model.offset_local[static_cast<size_t>(dg)][static_cast<size_t>(j)];

@@ -20,8 +20,9 @@ ControllerHandModel draw_controller_hand_model(const HandModelError& config, std
 
 // Rewrites every digit of `hand` (world frame, palm normal set) as the controller's model of it:
 // each digit's chain is rebuilt from its Meta point with every bone scaled, then each joint moves
-// by its offset in a frame of its bone (along the bone; towards the palm side, i.e. along the palm
-// normal made perpendicular to the bone; lateral). The palm, wrist, elbow and vectors stay.
+// by its offset in a frame of its bone (along the bone; towards the palm side of the bone, i.e.
+// the palm's lateral axis × the bone, which follows the finger's flexion; lateral). The palm, wrist,
+// elbow and vectors stay.
 void apply_controller_hand_model(const ControllerHandModel& model, HandFrame& hand);
 
 }  // namespace lmc::devices

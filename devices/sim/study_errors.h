@@ -35,8 +35,8 @@ struct HandModelError {
 
 // The fitted values (and the misalignment the preset adds, below).
 HandModelError study_errors_hand_model();
-inline constexpr double kStudyCalibrationTranslationMm = 10.0;
-inline constexpr double kStudyCalibrationRotationDeg = 3.0;
+inline constexpr double kStudyCalibrationTranslationMm = 8.0;
+inline constexpr double kStudyCalibrationRotationDeg = 2.0;
 
 // Reads `hand_model_error` over `base` (keys left out keep base's values); throws lmc::Error
 // naming the path on a wrong key or value.

@@ -157,6 +157,29 @@ TEST(SimStudyErrors, EachControllerDrawsItsOwnModelAndKeepsItAcrossTrials) {
   EXPECT_NE(first.begin()->second, std::next(first.begin())->second);
 }
 
+TEST(SimStudyErrors, PalmSideTurnsWithTheBoneAlsoInAFistPast90Degrees) {
+  // Palm down: direction +x, normal −y (the palm side), so flexion turns a bone from +x to −y to −x.
+  HandFrame f;
+  f.points.fill(Vec3::Zero());
+  f.point(kPalmDirection) = Vec3(1, 0, 0);
+  f.point(kPalmNormal) = Vec3(0, -1, 0);
+  const double kDeg = 3.14159265358979323846 / 180.0;
+  const double flexion[4] = {0, 60, 120, 150};  // direction of each index bone from the palm's
+  Vec3 p(0, 0, 0);
+  for (int b = 0; b < 4; ++b) {
+    f.point(digit_point(1, b)) = p;
+    p += 30.0 * Vec3(std::cos(flexion[b] * kDeg), -std::sin(flexion[b] * kDeg), 0);
+  }
+  f.point(digit_point(1, 4)) = p;
+  ControllerHandModel m = draw_controller_hand_model(HandModelError{}, 1);
+  m.offset_local[1][4] = Vec3(0, 5, 0);  // fingertip, 5 mm to the palm side of the last bone
+  HandFrame out = f;
+  apply_controller_hand_model(m, out);
+  // The palm side of a bone turned by θ is −y turned by θ: (−sin θ, −cos θ), here up and back.
+  const Vec3 expected = 5.0 * Vec3(-std::sin(150 * kDeg), -std::cos(150 * kDeg), 0);
+  EXPECT_LT((out.point(digit_point(1, 4)) - f.point(digit_point(1, 4)) - expected).norm(), 1e-9);
+}
+
 TEST(SimStudyErrors, OffChangesNothingByteForByte) {
   const Layout layout = paper_initial();
   SimConfig c;
