@@ -71,8 +71,17 @@ SimConfig sim_config_from_json(const nlohmann::json& j, const std::string& sourc
                "noise", "noise_sigma_mm", "fov_test", "range_mm", "occlusion", "phalanx_radius_mm",
                "internal_model_bias", "axis_cut", "axis_cut_mm", "elbow_error", "elbow_error_min_mm",
                "elbow_error_max_mm", "calibration", "calibration_offsets_mm", "calibration_rotations_deg",
-               "calibration_random_translation_mm", "calibration_random_rotation_deg", "unplugs", "serial_prefix",
+               "calibration_random_translation_mm", "calibration_random_rotation_deg", "study_errors",
+               "hand_model_error", "unplugs", "serial_prefix",
                "truth_rate_hz", "device_clock_start_us"});
+  // The preset first, so that any key given beside it overrides one of its values.
+  if (r.has("study_errors") && r.at("study_errors").boolean()) {
+    c.study_errors = true;
+    c.hand_model_error = study_errors_hand_model();
+    c.calibration_random_translation_mm = kStudyCalibrationTranslationMm;
+    c.calibration_random_rotation_deg = kStudyCalibrationRotationDeg;
+  }
+  if (r.has("hand_model_error")) c.hand_model_error = hand_model_error_from_json(r.at("hand_model_error"), c.hand_model_error);
   if (r.has("seed")) c.seed = static_cast<std::uint64_t>(r.at("seed").integer());
   if (r.has("calibration_seed")) c.calibration_seed = static_cast<std::uint64_t>(r.at("calibration_seed").integer());
   if (r.has("motion")) {
@@ -191,6 +200,9 @@ nlohmann::json sim_config_to_json(const SimConfig& c) {
   j["calibration_rotations_deg"] = rots;
   j["calibration_random_translation_mm"] = c.calibration_random_translation_mm;
   j["calibration_random_rotation_deg"] = c.calibration_random_rotation_deg;
+  // Written only when used, so that sidecars of the default simulator stay as they were.
+  if (c.study_errors) j["study_errors"] = true;
+  if (c.hand_model_error.enabled || c.study_errors) j["hand_model_error"] = hand_model_error_to_json(c.hand_model_error);
   nlohmann::json unplugs = nlohmann::json::array();
   for (const auto& u : c.unplugs) unplugs.push_back({{"slot", u.slot}, {"at_s", u.at_s}, {"duration_s", u.duration_s}});
   j["unplugs"] = unplugs;

@@ -12,6 +12,7 @@
 #include "core/io/pose_set_tsv.h"
 #include "core/visibility/frame_prep.h"
 #include "core/visibility/visibility_explain.h"
+#include "devices/sim/controller_hand_model.h"
 
 namespace lmc::devices {
 namespace {
@@ -64,6 +65,7 @@ struct SimRig::Device {
   std::array<bool, kNumDigits> seen{};
   bool connected = true;
   std::vector<SimUnplug> unplugs;
+  std::optional<ControllerHandModel> hand_model;  // study errors (study_errors.h), when enabled
 };
 
 SimRig::SimRig(Layout layout, SimConfig config)
@@ -148,6 +150,12 @@ SimRig::SimRig(Layout layout, SimConfig config)
       std::normal_distribution<double> dir(0, 0.3);
       Vec3 e(dir(d->rng), (u01(d->rng) < 0.5 ? -1.0 : 1.0), dir(d->rng));
       d->elbow_error = e.normalized() * mag(d->rng);
+    }
+    if (config_.hand_model_error.enabled) {
+      // Its own stream of the calibration seed: a controller keeps its hand model for a session,
+      // and nothing else the rig draws changes.
+      d->hand_model = draw_controller_hand_model(config_.hand_model_error,
+                                                 mix(config_.calibration_seed.value_or(config_.seed), 300 + i));
     }
     for (const auto& u : config_.unplugs)
       if (u.slot == ld.slot) d->unplugs.push_back(u);
@@ -247,6 +255,8 @@ HandFrame SimRig::device_frame(Device& d, double t) {
       }
     }
   }
+
+  if (d.hand_model) apply_controller_hand_model(*d.hand_model, world);
 
   std::normal_distribution<double> noise(0.0, config_.noise_sigma_mm);
   const Eigen::Matrix3d rt = d.r.transpose();
