@@ -13,7 +13,7 @@ namespace lmc {
 namespace {
 
 // The kernel body; compiled twice (baseline and AVX2, see below). No fused multiply-add is
-// enabled, so both builds give bit-identical results (IEEE add/mul/sqrt are exact per lane), and
+// enabled, so both builds give bit-identical results (IEEE add/mul/div are exact per lane), and
 // every decision uses the same expressions as the elementary tests of visibility_tests.h, so the
 // bits are the explaining path's (tests check both). With kCut it also reports, per finger, whether
 // one of its markers lies beyond ±cut_mm on an axis of the device (the robust metric's axis cut):
@@ -70,8 +70,11 @@ template <bool kCut>
     crosses[k] = ((denom != 0.0) & (t > 0.0) & (t < 1.0)) ? -1 : 0;
   }
   FingerBits bits = kAllFingersVisible;
+  // Unrolled: marker indices and each finger's first ring lane become constants.
+#pragma GCC unroll 5
   for (int f = 0; f < kNumDigits; ++f) {
     const int start = vis::others_start(f);
+#pragma GCC unroll 4
     for (int j = 0; j < 4; ++j) {
       const int k = finger_marker(f, j);
       // §3.3 palm (rarely hides a ray, but it is cheaper than the fingers, so it goes first);
