@@ -49,15 +49,37 @@ OrientationCoverage coverage_by_orientation(std::span<const std::span<const Fing
 OrientationCoverage coverage_by_orientation(const VisibilityTable& table, std::span<const int> horizontal,
                                             std::span<const int> vertical);
 
-// Number of devices that see the worst-covered finger, given the bits of each device for one
-// frame: min over fingers of the per-finger counts.
-inline int worst_finger_count(const FingerBits* bits, int devices) {
-  int counts[kNumDigits] = {0, 0, 0, 0, 0};
-  for (int d = 0; d < devices; ++d) {
-    for (int k = 0; k < kNumDigits; ++k) counts[k] += (bits[d] >> k) & 1;
+// Each finger bit of a FingerBits value moved to its own byte (finger k → byte k), so that adding
+// these for up to 255 devices counts the devices that see each finger in one integer addition per
+// device, without carries between the bytes.
+inline constexpr std::array<std::uint64_t, 32> kFingerBytes = [] {
+  std::array<std::uint64_t, 32> t{};
+  for (unsigned b = 0; b < 32; ++b) {
+    for (unsigned k = 0; k < static_cast<unsigned>(kNumDigits); ++k) t[b] |= static_cast<std::uint64_t>((b >> k) & 1u) << (8 * k);
   }
-  int m = counts[0];
-  for (int k = 1; k < kNumDigits; ++k) m = counts[k] < m ? counts[k] : m;
+  return t;
+}();
+
+// Number of devices that see the worst-covered finger, given the bits of each device for one
+// frame: min over fingers of the per-finger counts. Called once per (layout, frame) in the search,
+// hence the byte-wise counting (the same integers as counting finger by finger).
+inline int worst_finger_count(const FingerBits* bits, int devices) {
+  if (devices > 255) {
+    int counts[kNumDigits] = {0, 0, 0, 0, 0};
+    for (int d = 0; d < devices; ++d) {
+      for (int k = 0; k < kNumDigits; ++k) counts[k] += (bits[d] >> k) & 1;
+    }
+    int m = counts[0];
+    for (int k = 1; k < kNumDigits; ++k) m = counts[k] < m ? counts[k] : m;
+    return m;
+  }
+  std::uint64_t sum = 0;
+  for (int d = 0; d < devices; ++d) sum += kFingerBytes[bits[d] & 0x1Fu];
+  int m = static_cast<int>(sum & 0xFFu);
+  for (int k = 1; k < kNumDigits; ++k) {
+    const int c = static_cast<int>((sum >> (8 * k)) & 0xFFu);
+    m = c < m ? c : m;
+  }
   return m;
 }
 

@@ -24,6 +24,15 @@ TallyDeviceFrame tally_to_device(const DeviceView& v, double wx, double wy, doub
           v.rt[6] * dx + v.rt[7] * dy + v.rt[8] * dz};
 }
 
+// std::llround for the off-centre penalty in millionths (0 … 10⁶) without a libm call per seeing
+// pair: for 0 ≤ x < 2⁵² the cast truncates exactly and x − trunc(x) is exact, so adding one when
+// that is ≥ 0.5 rounds half away from zero, as llround does. Anything else goes to llround.
+std::int64_t round_millionths(double x) {
+  if (!(x >= 0.0 && x < 0x1.0p52)) return std::llround(x);
+  const auto i = static_cast<std::int64_t>(x);
+  return i + (x - static_cast<double>(i) >= 0.5 ? 1 : 0);
+}
+
 // Frames per task, as in the swarm evaluator: the chunk's frames stay in cache across devices.
 constexpr size_t kTallyChunkFrames = 64;
 
@@ -86,8 +95,13 @@ double off_centre_penalty(const PreparedFrame& f, const DeviceView& v, const Vis
   return std::min(1.0, 0.5 * (tx * tx + tz * tz));
 }
 
-void tally_frame(const PreparedFrame& frame, std::span<const DeviceView> views, const FingerBits* bits,
-                 const VisibilityLimits& limits, double axis_cut_mm, LayoutTally& t) {
+namespace {
+
+// Shared by both tally_frame overloads; `beyond_cut(d, b)` says whether seeing device d (bits b)
+// has a seen marker beyond the axis cut.
+template <typename BeyondCut>
+void tally_frame_with(const PreparedFrame& frame, std::span<const DeviceView> views, const FingerBits* bits,
+                      const VisibilityLimits& limits, LayoutTally& t, BeyondCut&& beyond_cut) {
   const int nd = static_cast<int>(views.size());
   ++t.frames;
   ++t.c[static_cast<size_t>(worst_finger_count(bits, nd))];
@@ -104,9 +118,23 @@ void tally_frame(const PreparedFrame& frame, std::span<const DeviceView> views, 
     const auto dd = static_cast<size_t>(d);
     ++t.device_seeing_frames[dd];
     if (b & sole) ++t.device_sole_frames[dd];
-    if (seen_marker_beyond_cut(frame, views[dd], b, axis_cut_mm)) ++t.device_cut_frames[dd];
-    t.device_off_centre[dd] += std::llround(off_centre_penalty(frame, views[dd], limits) * kOffCentreScale);
+    if (beyond_cut(dd, b)) ++t.device_cut_frames[dd];
+    t.device_off_centre[dd] += round_millionths(off_centre_penalty(frame, views[dd], limits) * kOffCentreScale);
   }
+}
+
+}  // namespace
+
+void tally_frame(const PreparedFrame& frame, std::span<const DeviceView> views, const FingerBits* bits,
+                 const VisibilityLimits& limits, double axis_cut_mm, LayoutTally& t) {
+  tally_frame_with(frame, views, bits, limits, t, [&](size_t d, FingerBits b) {
+    return seen_marker_beyond_cut(frame, views[d], b, axis_cut_mm);
+  });
+}
+
+void tally_frame(const PreparedFrame& frame, std::span<const DeviceView> views, const FingerBits* bits,
+                 const FingerBits* cut_bits, const VisibilityLimits& limits, LayoutTally& t) {
+  tally_frame_with(frame, views, bits, limits, t, [&](size_t d, FingerBits b) { return (b & cut_bits[d]) != 0; });
 }
 
 LayoutTally tally_layout(std::span<const DeviceView> views, std::span<const PreparedFrame> frames,
@@ -117,11 +145,32 @@ LayoutTally tally_layout(std::span<const DeviceView> views, std::span<const Prep
   tbb::enumerable_thread_specific<LayoutTally> local([&] { return LayoutTally(nd); });
   tbb::parallel_for(tbb::blocked_range<size_t>(0, n, kTallyChunkFrames), [&](const tbb::blocked_range<size_t>& r) {
     LayoutTally& t = local.local();
-    for (size_t jj = r.begin(); jj != r.end(); ++jj) {
-      const size_t j = subset.empty() ? jj : static_cast<size_t>(subset[jj]);
-      FingerBits bits[kMaxDevices] = {};
-      for (size_t d = 0; d < views.size(); ++d) bits[d] = visible_fingers(frames[j], views[d], limits);
-      tally_frame(frames[j], views, bits, limits, axis_cut_mm, t);
+    FingerBits bits[kMaxDevices][kTallyChunkFrames];
+    FingerBits cut[kMaxDevices][kTallyChunkFrames];
+    for (size_t begin = r.begin(); begin < r.end(); begin += kTallyChunkFrames) {
+      const size_t count = std::min(r.end() - begin, kTallyChunkFrames);
+      // Each device over the run of frames (one kernel call per run); with a subset, frame by frame.
+      for (size_t d = 0; d < views.size(); ++d) {
+        if (subset.empty()) {
+          device_visibility_with_cut(views[d], frames.subspan(begin, count), limits, axis_cut_mm,
+                                     std::span<FingerBits>(bits[d], count), std::span<FingerBits>(cut[d], count));
+        } else {
+          for (size_t i = 0; i < count; ++i) {
+            device_visibility_with_cut(views[d], frames.subspan(static_cast<size_t>(subset[begin + i]), 1), limits,
+                                       axis_cut_mm, std::span<FingerBits>(&bits[d][i], 1),
+                                       std::span<FingerBits>(&cut[d][i], 1));
+          }
+        }
+      }
+      for (size_t i = 0; i < count; ++i) {
+        const size_t j = subset.empty() ? begin + i : static_cast<size_t>(subset[begin + i]);
+        FingerBits fb[kMaxDevices] = {}, fc[kMaxDevices] = {};
+        for (size_t d = 0; d < views.size(); ++d) {
+          fb[d] = bits[d][i];
+          fc[d] = cut[d][i];
+        }
+        tally_frame(frames[j], views, fb, fc, limits, t);
+      }
     }
   });
   LayoutTally total(nd);

@@ -48,6 +48,12 @@ struct LayoutTally {
 void tally_frame(const PreparedFrame& frame, std::span<const DeviceView> views, const FingerBits* bits,
                  const VisibilityLimits& limits, double axis_cut_mm, LayoutTally& tally);
 
+// The same with the axis cut already decided per device: cut_bits[d] as device_visibility_with_cut
+// gives it (visibility_kernel.h), which computes the markers' device-frame coordinates anyway.
+// Adds exactly what the overload above adds when cut_bits came from the same axis_cut_mm.
+void tally_frame(const PreparedFrame& frame, std::span<const DeviceView> views, const FingerBits* bits,
+                 const FingerBits* cut_bits, const VisibilityLimits& limits, LayoutTally& tally);
+
 // Seen-marker axis cut and off-centre penalty of one seeing pair (exposed for tests).
 bool seen_marker_beyond_cut(const PreparedFrame& frame, const DeviceView& view, FingerBits bits, double axis_cut_mm);
 double off_centre_penalty(const PreparedFrame& frame, const DeviceView& view, const VisibilityLimits& limits);

@@ -41,9 +41,11 @@ bool worst_finger_histograms(std::span<const DeviceView> views, int layouts, int
       const size_t end = std::min(r.end(), begin + kChunkFrames);
       for (int l = 0; l < layouts; ++l) {
         const auto ll = static_cast<size_t>(l);
+        // One kernel call per device and chunk: the device's view stays in registers over the
+        // chunk's frames (visibility_kernel.h).
         for (size_t d = 0; d < nd; ++d) {
-          const DeviceView& view = views[ll * nd + d];
-          for (size_t j = begin; j < end; ++j) bits[d][j - begin] = visible_fingers(frames[j], view, limits);
+          device_visibility(views[ll * nd + d], frames.subspan(begin, end - begin), limits,
+                            std::span<FingerBits>(bits[d], end - begin));
         }
         std::int64_t* h = hist.data() + ll * (nd + 1);
         for (size_t j = begin; j < end; ++j) {
@@ -78,18 +80,26 @@ bool layout_tallies(std::span<const DeviceView> views, int layouts, int devices,
     if (stop.stop_requested()) return;
     auto& mine = local.local();
     FingerBits bits[kMaxDevices][kChunkFrames];
+    FingerBits cut[kMaxDevices][kChunkFrames];
     for (size_t begin = r.begin(); begin < r.end(); begin += kChunkFrames) {
       const size_t end = std::min(r.end(), begin + kChunkFrames);
       for (int l = 0; l < layouts; ++l) {
         const auto ll = static_cast<size_t>(l);
         const std::span<const DeviceView> layout_views = views.subspan(ll * nd, nd);
+        // The kernel decides the axis cut while it has the markers in device coordinates, so the
+        // tally does not transform them a second time.
         for (size_t d = 0; d < nd; ++d) {
-          for (size_t j = begin; j < end; ++j) bits[d][j - begin] = visible_fingers(frames[j], layout_views[d], limits);
+          device_visibility_with_cut(layout_views[d], frames.subspan(begin, end - begin), limits, axis_cut_mm,
+                                     std::span<FingerBits>(bits[d], end - begin),
+                                     std::span<FingerBits>(cut[d], end - begin));
         }
         for (size_t j = begin; j < end; ++j) {
-          FingerBits fb[kMaxDevices];
-          for (size_t d = 0; d < nd; ++d) fb[d] = bits[d][j - begin];
-          tally_frame(frames[j], layout_views, fb, limits, axis_cut_mm, mine[ll]);
+          FingerBits fb[kMaxDevices], fc[kMaxDevices];
+          for (size_t d = 0; d < nd; ++d) {
+            fb[d] = bits[d][j - begin];
+            fc[d] = cut[d][j - begin];
+          }
+          tally_frame(frames[j], layout_views, fb, fc, limits, mine[ll]);
         }
       }
     }

@@ -2,71 +2,134 @@
 
 #include <tbb/parallel_for.h>
 
+#include <cmath>
+#include <cstdint>
+
+#include "core/common/error.h"
+#include "core/visibility/phalanx_ring.h"
 #include "core/visibility/visibility_tests.h"
 
 namespace lmc {
 namespace {
 
-// Per finger f, lane mask of the phalanges that may hide it: all but its own three (and not the
-// dummy 16th lane).
-struct OtherMasks {
-  alignas(64) std::int64_t m[kNumDigits][vis::kPhalanxLanes];
-};
-constexpr OtherMasks make_other_masks() {
-  OtherMasks o{};
-  for (int f = 0; f < kNumDigits; ++f) {
-    for (int p = 0; p < vis::kPhalanxLanes; ++p) o.m[f][p] = (p < kNumPhalanges && p / 3 != f) ? -1 : 0;
-  }
-  return o;
-}
-constexpr OtherMasks kOtherMasks = make_other_masks();
-
 // The kernel body; compiled twice (baseline and AVX2, see below). No fused multiply-add is
-// enabled, so both builds give bit-identical results (IEEE add/mul are exact per lane).
+// enabled, so both builds give bit-identical results (IEEE add/mul/div are exact per lane), and
+// every decision uses the same expressions as the elementary tests of visibility_tests.h, so the
+// bits are the explaining path's (tests check both). With kCut it also reports, per finger, whether
+// one of its markers lies beyond ±cut_mm on an axis of the device (the robust metric's axis cut):
+// the device-frame coordinates are computed here anyway, so the tally need not transform the
+// markers again.
+template <bool kCut>
 [[gnu::always_inline]] inline FingerBits visible_fingers_body(const PreparedFrame& fr, const DeviceView& d,
-                                                            const VisibilityLimits& lim) {
+                                                            const VisibilityLimits& lim, double cut_mm,
+                                                            FingerBits* cut_bits) {
+  if constexpr (kCut) *cut_bits = 0;
   if (!fr.valid) return 0;
   // §3.1 approach direction.
   if (!vis::approach_ok(fr, d)) return 0;
-  // §3.2 range and pyramid for s1…s21: any failure hides the whole hand.
+  // §3.2 range and pyramid for s1…s21: any failure hides the whole hand. Branch-free over all
+  // markers (it vectorises; the seeing case, which dominates a search near the hand, has to test
+  // every marker anyway), with the range test as |v|² > range_sq_exact, which decides exactly as
+  // marker_in_view's sqrt(|v|²) > range (visibility_params.h). v and |v|² are kept for the rays.
+  double vx[kNumRayMarkers], vy[kNumRayMarkers], vz[kNumRayMarkers], vv[kNumRayMarkers];
+  std::int64_t far[kNumRayMarkers];
+  std::int64_t outside = 0;
   for (int k = 1; k < kNumRayMarkers; ++k) {
     const auto kk = static_cast<size_t>(k);
-    if (vis::marker_in_view(fr.mx[kk], fr.my[kk], fr.mz[kk], d, lim) != vis::ViewResult::kInside) return 0;
+    const double x = fr.mx[kk] - d.ox, y = fr.my[kk] - d.oy, z = fr.mz[kk] - d.oz;
+    const double v2 = x * x + y * y + z * z;
+    vx[k] = x;
+    vy[k] = y;
+    vz[k] = z;
+    vv[k] = v2;
+    const double px = d.rt[0] * x + d.rt[1] * y + d.rt[2] * z;
+    const double py = d.rt[3] * x + d.rt[4] * y + d.rt[5] * z;
+    const double pz = d.rt[6] * x + d.rt[7] * y + d.rt[8] * z;
+    outside |= ((v2 > lim.range_sq_exact) | (std::abs(px) > py * lim.tan_half_long) |
+                (std::abs(pz) > py * lim.tan_half_short))
+                   ? -1
+                   : 0;
+    if constexpr (kCut) {
+      far[k] = ((std::abs(px) > cut_mm) | (std::abs(py) > cut_mm) | (std::abs(pz) > cut_mm)) ? -1 : 0;
+    }
   }
-  vis::PhalanxBlock pb;
-  vis::prepare_phalanges(fr, d, pb);
+  if (outside != 0) return 0;
+  vis::PhalanxRing ring;
+  vis::prepare_phalanx_ring(fr, d, ring);
+  // §3.3 for every marker at once (vectorises, the divisions included): where the ray's line meets
+  // the palm plane, t = n·(c − o) / n·v, and whether that is strictly between device and marker.
+  // Same expressions as palm_occludes (visibility_tests.h); only a ray that crosses the plane needs
+  // the hull test below (about a third of them).
   const double plane_num = vis::palm_plane_numerator(fr, d);
+  double palm_t[kNumRayMarkers];
+  std::int64_t crosses[kNumRayMarkers];
+  for (int k = 1; k < kNumRayMarkers; ++k) {
+    const double denom = fr.nx * vx[k] + fr.ny * vy[k] + fr.nz * vz[k];
+    const double t = plane_num / denom;
+    palm_t[k] = t;
+    crosses[k] = ((denom != 0.0) & (t > 0.0) & (t < 1.0)) ? -1 : 0;
+  }
   FingerBits bits = kAllFingersVisible;
+  // Unrolled: marker indices and each finger's first ring lane become constants.
+#pragma GCC unroll 5
   for (int f = 0; f < kNumDigits; ++f) {
-    const std::int64_t* others = kOtherMasks.m[f];
+    const int start = vis::others_start(f);
+#pragma GCC unroll 4
     for (int j = 0; j < 4; ++j) {
-      const auto k = static_cast<size_t>(finger_marker(f, j));
-      const double vx = fr.mx[k] - d.ox, vy = fr.my[k] - d.oy, vz = fr.mz[k] - d.oz;
-      // §3.3 palm.
-      bool hidden = vis::palm_occludes(fr, d, plane_num, vx, vy, vz);
-      // §3.4 other fingers: all 16 lanes branch-free (vectorises), masked to the other fingers.
-      if (!hidden) {
-        const double vv = vx * vx + vy * vy + vz * vz;
-        std::int64_t any = 0;
-        for (int p = 0; p < vis::kPhalanxLanes; ++p) {
-          const std::int64_t hit = vis::phalanx_occludes(pb, p, vx, vy, vz, vv, lim.radius_sq) ? -1 : 0;
-          any |= hit & others[p];
-        }
-        hidden = any != 0;
-      }
+      const int k = finger_marker(f, j);
+      // §3.3 palm (rarely hides a ray, but it is cheaper than the fingers, so it goes first);
+      // §3.4 the other fingers (phalanx_ring.h).
+      const double t = palm_t[k];
+      const bool hidden =
+          (crosses[k] != 0 && hull_contains(fr.hull, d.ox + t * vx[k], d.oy + t * vy[k], d.oz + t * vz[k])) ||
+          vis::others_occlude(ring, start, vx[k], vy[k], vz[k], vv[k], lim.radius_sq);
       if (hidden) {
         bits = static_cast<FingerBits>(bits & ~(1u << f));
         break;
       }
     }
   }
+  if constexpr (kCut) {
+    FingerBits c = 0;
+    for (int f = 0; f < kNumDigits; ++f) {
+      std::int64_t any = 0;
+      for (int j = 0; j < 4; ++j) any |= far[finger_marker(f, j)];
+      if (any != 0) c = static_cast<FingerBits>(c | (1u << f));
+    }
+    *cut_bits = c;
+  } else {
+    (void)far;
+    (void)cut_mm;
+    (void)cut_bits;
+  }
   return bits;
+}
+
+// A device over a run of frames: the device view and limits stay in registers across frames.
+template <bool kCut>
+[[gnu::always_inline]] inline void device_run_body(const DeviceView& d, std::span<const PreparedFrame> frames,
+                                                   const VisibilityLimits& lim, double cut_mm, FingerBits* out,
+                                                   FingerBits* cut_out) {
+  const DeviceView view = d;
+  const VisibilityLimits limits = lim;
+  for (size_t j = 0; j < frames.size(); ++j) {
+    out[j] = visible_fingers_body<kCut>(frames[j], view, limits, cut_mm, kCut ? cut_out + j : nullptr);
+  }
 }
 
 #if defined(__x86_64__) && defined(__GNUC__)
 [[gnu::target("avx2")]] FingerBits visible_fingers_avx2(const PreparedFrame& fr, const DeviceView& d,
                                                        const VisibilityLimits& lim) {
-  return visible_fingers_body(fr, d, lim);
+  return visible_fingers_body<false>(fr, d, lim, 0.0, nullptr);
+}
+[[gnu::target("avx2")]] void device_run_avx2(const DeviceView& d, std::span<const PreparedFrame> frames,
+                                            const VisibilityLimits& lim, FingerBits* out) {
+  device_run_body<false>(d, frames, lim, 0.0, out, nullptr);
+}
+[[gnu::target("avx2")]] void device_run_cut_avx2(const DeviceView& d, std::span<const PreparedFrame> frames,
+                                                const VisibilityLimits& lim, double cut_mm, FingerBits* out,
+                                                FingerBits* cut_out) {
+  device_run_body<true>(d, frames, lim, cut_mm, out, cut_out);
 }
 bool has_avx2() {
   static const bool yes = [] {
@@ -77,10 +140,19 @@ bool has_avx2() {
 }
 #endif
 
+void device_run_baseline(const DeviceView& d, std::span<const PreparedFrame> frames, const VisibilityLimits& lim,
+                         FingerBits* out) {
+  device_run_body<false>(d, frames, lim, 0.0, out, nullptr);
+}
+void device_run_cut_baseline(const DeviceView& d, std::span<const PreparedFrame> frames, const VisibilityLimits& lim,
+                             double cut_mm, FingerBits* out, FingerBits* cut_out) {
+  device_run_body<true>(d, frames, lim, cut_mm, out, cut_out);
+}
+
 }  // namespace
 
 FingerBits visible_fingers_baseline(const PreparedFrame& fr, const DeviceView& d, const VisibilityLimits& lim) {
-  return visible_fingers_body(fr, d, lim);
+  return visible_fingers_body<false>(fr, d, lim, 0.0, nullptr);
 }
 
 FingerBits visible_fingers(const PreparedFrame& fr, const DeviceView& d, const VisibilityLimits& lim) {
@@ -92,7 +164,23 @@ FingerBits visible_fingers(const PreparedFrame& fr, const DeviceView& d, const V
 
 void device_visibility(const DeviceView& device, std::span<const PreparedFrame> frames, const VisibilityLimits& limits,
                        std::span<FingerBits> out) {
-  for (size_t j = 0; j < frames.size(); ++j) out[j] = visible_fingers(frames[j], device, limits);
+  if (out.size() < frames.size()) throw Error("device_visibility: output shorter than the frames");
+#if defined(__x86_64__) && defined(__GNUC__)
+  if (has_avx2()) return device_run_avx2(device, frames, limits, out.data());
+#endif
+  device_run_baseline(device, frames, limits, out.data());
+}
+
+void device_visibility_with_cut(const DeviceView& device, std::span<const PreparedFrame> frames,
+                                const VisibilityLimits& limits, double axis_cut_mm, std::span<FingerBits> out,
+                                std::span<FingerBits> cut_out, bool allow_avx2) {
+  if (out.size() < frames.size() || cut_out.size() < frames.size()) {
+    throw Error("device_visibility_with_cut: output shorter than the frames");
+  }
+#if defined(__x86_64__) && defined(__GNUC__)
+  if (allow_avx2 && has_avx2()) return device_run_cut_avx2(device, frames, limits, axis_cut_mm, out.data(), cut_out.data());
+#endif
+  device_run_cut_baseline(device, frames, limits, axis_cut_mm, out.data(), cut_out.data());
 }
 
 VisibilityTable compute_visibility(std::span<const DeviceView> devices, std::span<const PreparedFrame> frames,
@@ -104,8 +192,9 @@ VisibilityTable compute_visibility(std::span<const DeviceView> devices, std::spa
   const VisibilityLimits lim = make_limits(params);
   const size_t n = frames.size();
   tbb::parallel_for(tbb::blocked_range<size_t>(0, n, 256), [&](const tbb::blocked_range<size_t>& r) {
+    const std::span<const PreparedFrame> run = frames.subspan(r.begin(), r.size());
     for (size_t d = 0; d < devices.size(); ++d) {
-      for (size_t j = r.begin(); j != r.end(); ++j) t.bits[d * n + j] = visible_fingers(frames[j], devices[d], lim);
+      device_visibility(devices[d], run, lim, std::span<FingerBits>(t.bits).subspan(d * n + r.begin(), r.size()));
     }
   });
   return t;

@@ -22,9 +22,20 @@ FingerBits visible_fingers(const PreparedFrame& frame, const DeviceView& device,
 // The baseline (SSE2) build of the same kernel, for tests that check the two builds agree.
 FingerBits visible_fingers_baseline(const PreparedFrame& frame, const DeviceView& device, const VisibilityLimits& limits);
 
-// One device over many frames (the workbench caches these per-device columns).
+// One device over many frames (the workbench caches these per-device columns; the swarm
+// evaluator runs it per chunk of frames). Dispatches once per call, not per frame. `out` holds at
+// least frames.size() entries.
 void device_visibility(const DeviceView& device, std::span<const PreparedFrame> frames,
                        const VisibilityLimits& limits, std::span<FingerBits> out);
+
+// The same bits, plus per frame the fingers that have a marker beyond ±axis_cut_mm on an axis of
+// the device (bit f as in FingerBits; 0 where the device sees nothing). The robust metric's axis
+// cut counts a seeing (device, frame) pair when bits & cut_bits is not 0, exactly as
+// seen_marker_beyond_cut (layout_tally.h) decides it. `allow_avx2 = false` runs the baseline build
+// (for tests that check the two agree).
+void device_visibility_with_cut(const DeviceView& device, std::span<const PreparedFrame> frames,
+                                const VisibilityLimits& limits, double axis_cut_mm, std::span<FingerBits> out,
+                                std::span<FingerBits> cut_bits, bool allow_avx2 = true);
 
 // D × N bits for a layout: bits[d·N + j] (device-major).
 struct VisibilityTable {

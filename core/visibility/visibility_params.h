@@ -23,6 +23,10 @@ struct VisibilityParams {
 struct VisibilityLimits {
   double range_mm = 0;
   double range_sq = 0;
+  // The largest squared distance whose correctly rounded square root is ≤ range_mm, so that
+  // |v|² > range_sq_exact decides exactly as sqrt(|v|²) > range_mm (the authors' comparison, ties
+  // included) without the square root: the batch kernel's test vectorises without it.
+  double range_sq_exact = 0;
   double tan_half_long = 0;
   double tan_half_short = 0;
   double radius_sq = 0;
