@@ -90,7 +90,12 @@ std::string trial_series_csv(const TrialSeries& s) {
     if (s.has_vicon) append_measure_row(out, s.vicon, f);
     for (const auto& d : s.devices) append_measure_row(out, d.measures, f);
     for (const auto& d : s.devices) {
-      for (const auto& l : d.label) out += "," + std::to_string(static_cast<int>(l[f]));
+      // Appended in two steps: `"," + std::to_string(...)` made GCC 12's Release build warn
+      // (a false -Wstringop-overflow in the inlined string concatenation).
+      for (const auto& l : d.label) {
+        out += ',';
+        out += std::to_string(static_cast<int>(l[f]));
+      }
     }
     out += '\n';
   }
