@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "core/figures/colour_scale.h"
+
 namespace lmc::ui {
 
 Rgba seen_count_colour(int devices_seeing) {
@@ -25,23 +27,11 @@ std::string seen_count_label(int category) {
 }
 
 Rgba viridis(double t) {
-  // matplotlib's viridis at t = 0, 1/8, ..., 1.
-  static constexpr std::array<std::array<float, 3>, 9> kStops{{{0.267f, 0.005f, 0.329f},
-                                                               {0.279f, 0.175f, 0.483f},
-                                                               {0.230f, 0.322f, 0.546f},
-                                                               {0.173f, 0.449f, 0.558f},
-                                                               {0.128f, 0.567f, 0.551f},
-                                                               {0.153f, 0.683f, 0.501f},
-                                                               {0.361f, 0.785f, 0.388f},
-                                                               {0.668f, 0.862f, 0.196f},
-                                                               {0.993f, 0.906f, 0.144f}}};
+  // The project's one viridis (core/figures/colour_scale.h), so the 3D heatmap and the exported
+  // report heatmaps show a value in the same colour.
   if (!std::isfinite(t)) t = 0;
-  t = std::clamp(t, 0.0, 1.0) * 8.0;
-  const int i = std::min(static_cast<int>(t), 7);
-  const float f = static_cast<float>(t - i);
-  const auto& a = kStops[static_cast<size_t>(i)];
-  const auto& b = kStops[static_cast<size_t>(i + 1)];
-  return {a[0] + (b[0] - a[0]) * f, a[1] + (b[1] - a[1]) * f, a[2] + (b[2] - a[2]) * f, 1.0f};
+  const figures::Rgb c = figures::sequential_colour(t);
+  return {static_cast<float>(c.r) / 255.0f, static_cast<float>(c.g) / 255.0f, static_cast<float>(c.b) / 255.0f, 1.0f};
 }
 
 }  // namespace lmc::ui
