@@ -23,12 +23,13 @@
 #include "devices/record/recorder.h"
 #include "devices/record/trial_name.h"
 #include "devices/sim/sim_rig.h"
+#include "tests/devices/sim_fixtures.h"
 #include "tests/support/reference_data.h"
 
 namespace lmc::devices {
 namespace recorder_test {
 
-Layout paper_initial() { return load_layout(test::asset_file("layouts/paper-initial.json")); }
+using sim_fixtures::paper_initial;
 
 std::map<int, std::int64_t> rows_per_device(const std::filesystem::path& file) {
   std::map<int, std::int64_t> out;

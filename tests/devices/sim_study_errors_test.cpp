@@ -12,22 +12,14 @@
 #include "devices/sim/controller_hand_model.h"
 #include "devices/sim/sim_config.h"
 #include "devices/sim/sim_rig.h"
+#include "tests/devices/sim_fixtures.h"
 #include "tests/support/reference_data.h"
 
 namespace lmc::devices {
 namespace sim_study_errors_test {
 
-Layout paper_initial() { return load_layout(test::asset_file("layouts/paper-initial.json")); }
-
-// Everything else off, so a device frame realigned is the controller's hand model exactly.
-SimConfig exact() {
-  SimConfig c;
-  c.noise = false;
-  c.elbow_error = false;
-  c.axis_cut = false;
-  c.occlusion = false;
-  return c;
-}
+using sim_fixtures::paper_initial;
+using sim_fixtures::exact;
 
 double bone(const HandFrame& f, int digit, int b) {
   return (f.point(digit_point(digit, b + 1)) - f.point(digit_point(digit, b))).norm();

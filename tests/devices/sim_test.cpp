@@ -14,21 +14,14 @@
 #include "core/visibility/visibility_explain.h"
 #include "devices/sim/sim_config.h"
 #include "devices/sim/sim_rig.h"
+#include "tests/devices/sim_fixtures.h"
 #include "tests/support/reference_data.h"
 
 namespace lmc::devices {
 namespace sim_test {
 
-Layout paper_initial() { return load_layout(test::asset_file("layouts/paper-initial.json")); }
-
-SimConfig exact() {
-  SimConfig c;
-  c.noise = false;
-  c.elbow_error = false;
-  c.axis_cut = false;
-  c.occlusion = false;
-  return c;
-}
+using sim_fixtures::paper_initial;
+using sim_fixtures::exact;
 
 TEST(SimRig, SameSeedSameTrialOtherSeedOtherTrial) {
   SimConfig c;
