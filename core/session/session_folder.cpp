@@ -89,6 +89,7 @@ SessionFolder::SessionFolder(SessionFolder&& o) noexcept
     : dir_(std::move(o.dir_)),
       state_(std::move(o.state_)),
       journal_(std::move(o.journal_)),
+      manifest_(std::move(o.manifest_)),
       lock_fd_(o.lock_fd_),
       recovered_(std::move(o.recovered_)) {
   o.lock_fd_ = -1;
@@ -184,11 +185,11 @@ void SessionFolder::record(nlohmann::json event) {
   apply_journal_event(next, event, (dir_ / kJournalFile).string() + " (new event)");
   journal_.append(event);
   state_ = std::move(next);
-  write_manifest();
+  write_manifest(trial_changed_by(event));
 }
 
-void SessionFolder::write_manifest() const {
-  write_file_atomically(dir_ / kManifestFile, session_manifest_json(state_).dump(2) + "\n");
+void SessionFolder::write_manifest(int changed_trial) {
+  write_file_atomically(dir_ / kManifestFile, manifest_.render(state_, changed_trial) + "\n");
 }
 
 void SessionFolder::require_trial(int i) const {

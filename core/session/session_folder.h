@@ -13,6 +13,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "core/session/manifest_text.h"
 #include "core/session/session_journal.h"
 #include "core/session/session_state.h"
 
@@ -81,13 +82,14 @@ class SessionFolder {
 
  private:
   SessionFolder(std::filesystem::path dir, SessionState state, JournalWriter journal, int lock_fd);
-  void write_manifest() const;
+  void write_manifest(int changed_trial);
   void require_trial(int i) const;
   int last_attempt(int i) const;
 
   std::filesystem::path dir_;
   SessionState state_;
   JournalWriter journal_;
+  ManifestText manifest_;  // session.json's text, each trial's entry kept until an event changes it
   int lock_fd_ = -1;
   std::vector<std::string> recovered_;
 };

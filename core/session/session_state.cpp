@@ -249,33 +249,32 @@ void apply_journal_event(SessionState& st, const nlohmann::json& event, const st
   if (!utc.empty()) st.last_event_utc = utc;
 }
 
-nlohmann::json session_manifest_json(const SessionState& st) {
+nlohmann::json manifest_trial_json(const SessionState& st, const TrialState& t) {
+  const TrialType& type = st.protocol.trial_types[static_cast<size_t>(t.plan.trial_type)];
+  nlohmann::json attempts = nlohmann::json::array();
+  for (const auto& a : t.attempts) {
+    nlohmann::json aj = {{"number", a.number}, {"started_utc", a.started_utc}, {"stopped_utc", a.stopped_utc},
+                         {"outcome", a.outcome}, {"reason", a.reason}, {"verdict", a.verdict()},
+                         {"quality", a.quality}};
+    if (!a.superseded_dir.empty()) aj["superseded_dir"] = a.superseded_dir;
+    attempts.push_back(aj);
+  }
+  return {{"index", t.plan.index},
+          {"name", t.plan.name},
+          {"block", t.plan.layout_key},
+          {"pose", st.protocol.poses[static_cast<size_t>(t.plan.pose)].key},
+          {"motion", type.key},
+          {"repetition", t.plan.repetition},
+          {"duration_s", type.duration_s},
+          {"status", trial_status_name(t.status)},
+          {"attempts", attempts},
+          {"notes", t.notes}};
+}
+
+nlohmann::json manifest_json_without_trials(const SessionState& st) {
   nlohmann::json j = {{"format", "lmc-subject-session"}, {"format_version", 1}};
   j.update(session_setup_to_json(st.setup));
   j["protocol_name"] = st.protocol.name;
-  nlohmann::json trials = nlohmann::json::array();
-  for (const auto& t : st.trials) {
-    const TrialType& type = st.protocol.trial_types[static_cast<size_t>(t.plan.trial_type)];
-    nlohmann::json attempts = nlohmann::json::array();
-    for (const auto& a : t.attempts) {
-      nlohmann::json aj = {{"number", a.number}, {"started_utc", a.started_utc}, {"stopped_utc", a.stopped_utc},
-                           {"outcome", a.outcome}, {"reason", a.reason}, {"verdict", a.verdict()},
-                           {"quality", a.quality}};
-      if (!a.superseded_dir.empty()) aj["superseded_dir"] = a.superseded_dir;
-      attempts.push_back(aj);
-    }
-    trials.push_back({{"index", t.plan.index},
-                      {"name", t.plan.name},
-                      {"block", t.plan.layout_key},
-                      {"pose", st.protocol.poses[static_cast<size_t>(t.plan.pose)].key},
-                      {"motion", type.key},
-                      {"repetition", t.plan.repetition},
-                      {"duration_s", type.duration_s},
-                      {"status", trial_status_name(t.status)},
-                      {"attempts", attempts},
-                      {"notes", t.notes}});
-  }
-  j["trials"] = trials;
   nlohmann::json pre = nlohmann::json::object();
   for (const auto& [block, report] : st.preflight) pre[block] = report;
   j["preflight"] = pre;
@@ -296,6 +295,32 @@ nlohmann::json session_manifest_json(const SessionState& st) {
   j["journal_events"] = st.events;
   j["updated_utc"] = st.last_event_utc;
   return j;
+}
+
+nlohmann::json session_manifest_json(const SessionState& st) {
+  nlohmann::json j = manifest_json_without_trials(st);
+  nlohmann::json trials = nlohmann::json::array();
+  for (const auto& t : st.trials) trials.push_back(manifest_trial_json(st, t));
+  j["trials"] = trials;
+  return j;
+}
+
+int trial_changed_by(const nlohmann::json& event) {
+  const auto type = event.find("type");
+  if (type == event.end() || !type->is_string()) return kAllTrialsChanged;
+  const std::string& t = type->get_ref<const std::string&>();
+  const auto trial = event.find("trial");
+  const bool names_a_trial = trial != event.end() && trial->is_number_integer();
+  // apply_journal_event changes a trial's entry only through event_trial(), i.e. for these events.
+  if (t.rfind("trial_", 0) == 0 || t == "note") {
+    if (names_a_trial) return trial->get<int>();
+    return t == "note" ? kNoTrialChanged : kAllTrialsChanged;
+  }
+  if (t == "preflight" || t == "preflight_override" || t.rfind("calibration_", 0) == 0 || t == "device_event" ||
+      t == "session_opened") {
+    return kNoTrialChanged;
+  }
+  return kAllTrialsChanged;  // session_created, and anything this version does not know
 }
 
 }  // namespace lmc::session

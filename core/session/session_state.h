@@ -107,7 +107,16 @@ SessionState initial_state(const SessionSetup& setup, const std::string& source)
 // still opens.
 void apply_journal_event(SessionState& state, const nlohmann::json& event, const std::string& where);
 
-// The manifest `session.json`: the setup plus every trial's status, attempts and verdicts.
+// The manifest `session.json`: the setup plus every trial's status, attempts and verdicts. It is
+// manifest_json_without_trials plus "trials", one manifest_trial_json per planned trial
+// (manifest_text.h assembles the same document from those parts).
 nlohmann::json session_manifest_json(const SessionState& state);
+nlohmann::json manifest_json_without_trials(const SessionState& state);
+nlohmann::json manifest_trial_json(const SessionState& state, const TrialState& trial);
+
+// Which trial's manifest entry a journal event can change once applied: its index, or one of these.
+inline constexpr int kNoTrialChanged = -1;
+inline constexpr int kAllTrialsChanged = -2;
+int trial_changed_by(const nlohmann::json& event);
 
 }  // namespace lmc::session

@@ -109,6 +109,52 @@ TEST(SessionFolder, TrialLifecycleSurvivesReopening) {
   fs::remove_all(dir);
 }
 
+// The manifest is assembled from each trial's kept text (manifest_text.h); after every kind of
+// event it must be exactly the document session_manifest_json defines.
+TEST(SessionFolder, TheManifestIsTheStatesDocumentAfterEveryKindOfEvent) {
+  const fs::path dir = test::fresh_test_dir("session");
+  SessionFolder f = SessionFolder::create(dir, quick_spec());
+  int checked = 0;
+  const auto expect_manifest = [&](const std::string& after) {
+    EXPECT_EQ(read_text(dir / kManifestFile), session_manifest_json(f.state()).dump(2) + "\n") << "after " << after;
+    ++checked;
+  };
+  expect_manifest("create");
+  f.preflight("Naiv", true, {{"devices", 4}});
+  expect_manifest("preflight");
+  f.trial_started(0);
+  expect_manifest("trial_started");
+  f.device_event("LMC2", "unplugged");
+  expect_manifest("device_event");
+  f.trial_stopped(0, "completed", "");
+  expect_manifest("trial_stopped");
+  f.trial_verdict(0, {{"verdict", "warn"}, {"reasons", {"a line\nwith a break and \"quotes\""}}});
+  expect_manifest("trial_verdict");
+  f.trial_accepted(0);
+  expect_manifest("trial_accepted");
+  f.note(0, "subject sneezed at 4 s");
+  expect_manifest("note on a trial");
+  f.note(-1, "a note on the session");
+  expect_manifest("note on the session");
+  f.trial_started(1);
+  f.trial_stopped(1, "failed", "LMC2 sent no frames");
+  f.trial_verdict(1, {{"verdict", "fail"}, {"reasons", {"LMC2 sent no frames"}}});
+  expect_manifest("a failed trial");
+  f.redo(1);
+  expect_manifest("redo");
+  f.trial_started(1);
+  expect_manifest("second attempt");
+  {
+    SessionFolder moved = std::move(f);  // the kept text moves with the folder
+    moved.trial_stopped(1, "completed", "");
+    EXPECT_EQ(read_text(dir / kManifestFile), session_manifest_json(moved.state()).dump(2) + "\n");
+  }
+  SessionFolder g = SessionFolder::open(dir);  // reopening journals session_opened and rewrites it
+  EXPECT_EQ(read_text(dir / kManifestFile), session_manifest_json(g.state()).dump(2) + "\n");
+  EXPECT_EQ(checked, 12);
+  fs::remove_all(dir);
+}
+
 TEST(SessionFolder, RedoKeepsTheEarlierAttemptUnderSuperseded) {
   const fs::path dir = test::fresh_test_dir("session");
   SessionFolder f = SessionFolder::create(dir, quick_spec());
