@@ -19,7 +19,7 @@ struct Extent {
   }
 };
 
-AxisRange finish(const Extent& e, const std::optional<AxisRange>& fixed) {
+AxisRange finished_range(const Extent& e, const std::optional<AxisRange>& fixed) {
   if (fixed && std::isfinite(fixed->lo) && std::isfinite(fixed->hi) && fixed->hi > fixed->lo)
     return *fixed;
   if (!(e.hi >= e.lo)) return {0.0, 1.0};
@@ -42,7 +42,7 @@ Rgb colour_of(const Series& s, std::size_t index) {
 AxisRange x_range(const Figure& f) {
   Extent e;
   add_x(e, f);
-  return finish(e, f.x.range);
+  return finished_range(e, f.x.range);
 }
 
 AxisRange y_range(const Figure& f) {
@@ -51,13 +51,13 @@ AxisRange y_range(const Figure& f) {
     for (size_t i = 0; i < s.y.size() && i < s.x.size(); ++i)
       if (std::isfinite(s.x[i])) e.add(s.y[i]);
   for (const ReferenceLine& r : f.references) e.add(r.y);
-  return finish(e, f.y.range);
+  return finished_range(e, f.y.range);
 }
 
 AxisRange x_range(const FigureGrid& g) {
   Extent e;
   for (const Figure& f : g.panels) add_x(e, f);
-  return finish(e, g.x.range);
+  return finished_range(e, g.x.range);
 }
 
 }  // namespace lmc::figures

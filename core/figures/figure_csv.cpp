@@ -8,7 +8,7 @@
 namespace lmc::figures {
 namespace {
 
-double at(const std::vector<double>& v, size_t i) {
+double value_at(const std::vector<double>& v, size_t i) {
   return i < v.size() ? v[i] : std::nan("");
 }
 
@@ -17,7 +17,7 @@ void rows(std::string& out, const std::string& prefix, const Figure& f) {
     const std::string name = csv_field(s.name);
     const size_t n = std::max(s.x.size(), s.y.size());
     for (size_t i = 0; i < n; ++i)
-      out += prefix + name + "," + exact_c(at(s.x, i)) + "," + exact_c(at(s.y, i)) + "\n";
+      out += prefix + name + "," + exact_c(value_at(s.x, i)) + "," + exact_c(value_at(s.y, i)) + "\n";
   }
 }
 

@@ -4,6 +4,7 @@
 #include <sstream>
 
 #include "core/common/number_format.h"
+#include "core/hand/hand_frame.h"
 
 namespace lmc {
 
@@ -93,9 +94,8 @@ std::string method_comparison_markdown(const MethodErrors& ref, const MethodErro
   };
   line("finger length, all fingers", ref.finger_pooled(false), def.finger_pooled(false), ref.finger_pooled(true),
        def.finger_pooled(true), "mm");
-  static const char* fingers[] = {"thumb", "index", "middle", "ring", "pinky"};
   for (size_t k = 0; k < kNumFingers; ++k) {
-    line(std::string("finger length, ") + fingers[k], ref.finger_all[k], def.finger_all[k], ref.finger_unseen[k],
+    line(std::string("finger length, ") + std::string(digit_name(k)), ref.finger_all[k], def.finger_all[k], ref.finger_unseen[k],
          def.finger_unseen[k], "mm");
   }
   line("joint angle, all joints", ref.angle_pooled(false), def.angle_pooled(false), ref.angle_pooled(true),

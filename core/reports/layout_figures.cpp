@@ -5,13 +5,13 @@
 #include <string>
 
 #include "core/common/nan.h"
+#include "core/hand/hand_frame.h"
 #include "core/hand/reference_poses.h"
 #include "core/metric/robust_metric.h"
 
 namespace lmc {
 namespace {
 
-constexpr const char* kFingerWords[] = {"thumb", "index", "middle", "ring", "pinky"};
 
 }  // namespace
 
@@ -77,7 +77,7 @@ figures::Figure pose_redundancy_figure(const LayoutReport& r) {
   f.y = {"share of the pose's frames", "", figures::AxisRange{0.0, 1.0}};
   for (int k = 0; k < kNumDigits; ++k) {
     figures::Series s;
-    s.name = kFingerWords[k];
+    s.name = std::string(digit_name(k));
     s.style = figures::SeriesStyle::line_and_points;
     for (size_t p = 0; p < r.poses.size(); ++p) {
       s.x.push_back(static_cast<double>(p + 1));
@@ -101,7 +101,7 @@ figures::Figure pose_redundancy_figure(const LayoutReport& r) {
 figures::Heatmap finger_coverage_heatmap(const LayoutReport& r) {
   figures::Heatmap h;
   h.title = "Finger coverage per pose: " + r.layout_name;
-  for (const char* finger : kFingerWords) h.rows.emplace_back(finger);
+  for (int f = 0; f < kNumDigits; ++f) h.rows.emplace_back(digit_name(f));
   h.row_title = "finger";
   h.column_title = "reference pose (palm orientation, motion)";
   h.scale_label = "share of the pose's frames";

@@ -2,6 +2,7 @@
 
 #include <utility>
 
+#include "core/hand/hand_frame.h"
 #include "core/processing/measures.h"
 #include "core/results/summary_fields.h"
 
@@ -9,13 +10,12 @@ namespace lmc {
 
 namespace {
 
-constexpr const char* kAgreementFingerParts[] = {"thumb", "index", "middle", "ring", "pinky"};
 
 std::array<AgreementMeasure, kAgreementMeasures> make_agreement_measures() {
   std::array<AgreementMeasure, kAgreementMeasures> m;
   std::size_t i = 0;
   for (std::size_t f = 0; f < static_cast<std::size_t>(kNumFingers); ++f) {
-    const std::string part = kAgreementFingerParts[f];
+    const std::string part(digit_name(f));
     m[i++] = {"finger_length_" + part, "finger length", part, "mm", "finger_mean_mm", f};
   }
   for (std::size_t a = 0; a < static_cast<std::size_t>(kNumAngles); ++a) {

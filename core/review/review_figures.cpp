@@ -6,10 +6,10 @@
 #include <map>
 #include <set>
 
+#include "core/hand/hand_frame.h"
+
 namespace lmc {
 namespace {
-
-constexpr const char* kFingerWords[] = {"thumb", "index", "middle", "ring", "pinky"};
 
 // Fused LMC and Vicon keep the same colours in every panel; controllers follow in palette order.
 constexpr std::size_t kFusedSlot = 0, kViconSlot = 7, kFirstDeviceSlot = 1;
@@ -55,7 +55,7 @@ figures::FigureGrid trial_figure(const TrialSeries& s, bool each_controller) {
     panel(std::string(angle_name(a)), "deg", [a](const MeasureSeries& m) -> const std::vector<double>& { return m.angle_deg[a]; });
   }
   for (int k = 0; k < kNumFingers; ++k) {
-    panel(std::string(kFingerWords[k]) + " length", "mm",
+    panel(std::string(digit_name(k)) + " length", "mm",
           [k](const MeasureSeries& m) -> const std::vector<double>& { return m.finger_mm[k]; });
   }
   grid.notes.push_back("Missing values are gaps (shaded), never 0.");

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "core/common/nan.h"
+#include "core/hand/hand_frame.h"
 
 namespace lmc {
 namespace {
@@ -19,7 +20,7 @@ void fill_measures(const std::vector<FrameMeasures>& frames, int n, MeasureSerie
 }
 
 // Locale-independent and short: plots need no more than 0.0001 of a mm or a degree.
-void append_number(std::string& out, double v) {
+void append_cell(std::string& out, double v) {
   if (!std::isfinite(v)) return;  // an empty cell, never 0
   char buf[64];
   const auto r = std::to_chars(buf, buf + sizeof buf, v, std::chars_format::fixed, 4);
@@ -28,18 +29,17 @@ void append_number(std::string& out, double v) {
 
 void append_measure_header(std::string& out, const std::string& prefix) {
   for (int a = 0; a < kNumAngles; ++a) out += "," + prefix + "_" + std::string(angle_name(a)) + "_deg";
-  static const char* const kFingers[] = {"thumb", "index", "middle", "ring", "pinky"};
-  for (const char* f : kFingers) out += "," + prefix + "_" + f + "_length_mm";
+  for (int f = 0; f < kNumDigits; ++f) out += "," + prefix + "_" + std::string(digit_name(f)) + "_length_mm";
 }
 
 void append_measure_row(std::string& out, const MeasureSeries& m, size_t f) {
   for (const auto& v : m.angle_deg) {
     out += ',';
-    if (f < v.size()) append_number(out, v[f]);
+    if (f < v.size()) append_cell(out, v[f]);
   }
   for (const auto& v : m.finger_mm) {
     out += ',';
-    if (f < v.size()) append_number(out, v[f]);
+    if (f < v.size()) append_cell(out, v[f]);
   }
 }
 
@@ -79,13 +79,12 @@ std::string trial_series_csv(const TrialSeries& s) {
   append_measure_header(out, "fused");
   if (s.has_vicon) append_measure_header(out, "vicon");
   for (const auto& d : s.devices) append_measure_header(out, "lmc" + std::to_string(d.device_id));
-  static const char* const kFingers[] = {"thumb", "index", "middle", "ring", "pinky"};
   for (const auto& d : s.devices) {
-    for (const char* f : kFingers) out += ",lmc" + std::to_string(d.device_id) + "_" + f + "_label";
+    for (int f = 0; f < kNumDigits; ++f) out += ",lmc" + std::to_string(d.device_id) + "_" + std::string(digit_name(f)) + "_label";
   }
   out += '\n';
   for (size_t f = 0; f < s.time_s.size(); ++f) {
-    append_number(out, s.time_s[f]);
+    append_cell(out, s.time_s[f]);
     append_measure_row(out, s.fused, f);
     if (s.has_vicon) append_measure_row(out, s.vicon, f);
     for (const auto& d : s.devices) append_measure_row(out, d.measures, f);

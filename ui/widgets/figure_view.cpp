@@ -9,14 +9,13 @@
 #include <string>
 
 #include "core/figures/axis_ticks.h"
+#include "ui/widgets/plot_frame.h"
 
 namespace lmc::ui {
 namespace {
 
 constexpr float kLeftGutterPx = 52.0F;
 constexpr float kRightGutterPx = 120.0F;  // reference-line labels
-constexpr ImU32 kTickText = IM_COL32(170, 175, 185, 255);
-constexpr ImU32 kGridLine = IM_COL32(60, 64, 72, 255);
 
 // A figure's colours are chosen for white paper; on the dark panel a dark colour turns light.
 ImU32 on_dark(const figures::Rgb& c, int alpha = 255) {
@@ -71,16 +70,16 @@ void draw_figure_view(const char* id, const figures::Figure& f, float height_px)
   for (const double t : yticks) {
     const float y = to_y(t);
     if (y < p0.y - 1 || y > p1.y + 1) continue;
-    dl->AddLine(ImVec2(p0.x, y), ImVec2(p1.x, y), kGridLine);
+    dl->AddLine(ImVec2(p0.x, y), ImVec2(p1.x, y), kPlotGridLine);
     const std::string text = figures::tick_label(t, yticks);
-    dl->AddText(ImVec2(p0.x - ImGui::CalcTextSize(text.c_str()).x - 4, y - ImGui::GetTextLineHeight() * 0.5F), kTickText, text.c_str());
+    dl->AddText(ImVec2(p0.x - ImGui::CalcTextSize(text.c_str()).x - 4, y - ImGui::GetTextLineHeight() * 0.5F), kPlotTickText, text.c_str());
   }
   const auto xticks = figures::nice_ticks(xr.lo, xr.hi, std::max(2, static_cast<int>((p1.x - p0.x) / 90)));
   for (const double t : xticks) {
     const float x = to_x(t);
     if (x < p0.x - 1 || x > p1.x + 1) continue;
-    dl->AddLine(ImVec2(x, p0.y), ImVec2(x, p1.y), kGridLine);
-    dl->AddText(ImVec2(x - 8, p1.y + 2), kTickText, figures::tick_label(t, xticks).c_str());
+    dl->AddLine(ImVec2(x, p0.y), ImVec2(x, p1.y), kPlotGridLine);
+    dl->AddText(ImVec2(x - 8, p1.y + 2), kPlotTickText, figures::tick_label(t, xticks).c_str());
   }
   // Reference lines, their labels in the right gutter.
   for (const auto& r : f.references) {

@@ -7,6 +7,7 @@
 
 #include "core/review/trial_series.h"
 #include "ui/model/plot/label_runs.h"
+#include "ui/widgets/plot_frame.h"
 #include "ui/widgets/series_plot.h"
 
 namespace lmc::ui {
@@ -48,7 +49,7 @@ void draw_label_strips(const char* id, std::span<const double> x, const std::vec
     const LabelStrip& strip = strips[s];
     if (s > 0 && strip.group != strips[s - 1].group) y += group_gap;
     if (s == 0 || strip.group != strips[s - 1].group) {
-      dl->AddText(ImGui::GetFont(), ImGui::GetFontSize() * 0.85F, ImVec2(top.x, y - 2), IM_COL32(170, 175, 185, 255),
+      dl->AddText(ImGui::GetFont(), ImGui::GetFontSize() * 0.85F, ImVec2(top.x, y - 2), kPlotTickText,
                   strip.group.c_str());
     }
     dl->AddRectFilled(ImVec2(p0.x, y), ImVec2(p1.x, y + strip_height_px), label_colour(-1));

@@ -18,7 +18,7 @@ PlotFrame begin_plot_frame(float height_px, float min_width_px) {
 }
 
 void draw_y_range_labels(const PlotFrame& frame, const char* top, const char* bottom) {
-  const ImU32 colour = IM_COL32(170, 175, 185, 255);
+  const ImU32 colour = kPlotTickText;
   frame.draw->AddText(ImVec2(frame.p0.x + 4, frame.p0.y + 2), colour, top);
   frame.draw->AddText(ImVec2(frame.p0.x + 4, frame.p1.y - ImGui::GetTextLineHeight() - 2), colour, bottom);
 }

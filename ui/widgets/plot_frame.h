@@ -6,6 +6,10 @@
 
 namespace lmc::ui {
 
+// The plots' text and grid colours on the dark panel.
+inline constexpr ImU32 kPlotTickText = IM_COL32(170, 175, 185, 255);
+inline constexpr ImU32 kPlotGridLine = IM_COL32(60, 64, 72, 255);
+
 struct PlotFrame {
   ImDrawList* draw = nullptr;
   ImVec2 p0, p1;  // top-left and bottom-right corners in screen pixels

@@ -11,13 +11,12 @@
 #include "ui/model/plot/min_max_decimation.h"
 #include "ui/model/plot/series_palette.h"
 #include "ui/widgets/imgui_colour.h"
+#include "ui/widgets/plot_frame.h"
 
 namespace lmc::ui {
 namespace {
 
 constexpr float kAxisGutterPx = kSeriesPlotGutterPx;
-constexpr ImU32 kTickText = IM_COL32(170, 175, 185, 255);
-constexpr ImU32 kGridLine = IM_COL32(60, 64, 72, 255);
 
 std::string series_tick_text(double v) {
   char buf[32];
@@ -130,15 +129,15 @@ void SeriesPlot::draw(const char* id, const std::vector<PlotSeries>& series, con
   dl->PushClipRect(ImVec2(top.x, top.y - 2), ImVec2(p1.x + 1, p1.y + ImGui::GetTextLineHeight() + 4), true);
   for (const double t : nice_ticks(y_lo, y_hi, std::max(2, static_cast<int>(height / 40)))) {
     const float y = to_y(t);
-    dl->AddLine(ImVec2(p0.x, y), ImVec2(p1.x, y), kGridLine);
+    dl->AddLine(ImVec2(p0.x, y), ImVec2(p1.x, y), kPlotGridLine);
     const std::string text = o.log_y ? series_tick_text(std::pow(10.0, t)) : series_tick_text(t);
     const ImVec2 size = ImGui::CalcTextSize(text.c_str());
-    dl->AddText(ImVec2(p0.x - size.x - 4, y - size.y * 0.5F), kTickText, text.c_str());
+    dl->AddText(ImVec2(p0.x - size.x - 4, y - size.y * 0.5F), kPlotTickText, text.c_str());
   }
   for (const double t : nice_ticks(view_lo, view_hi, std::max(2, static_cast<int>(plot_w / 90)))) {
     const float x = to_x(t);
-    dl->AddLine(ImVec2(x, p0.y), ImVec2(x, p1.y), kGridLine);
-    if (!o.x_label.empty()) dl->AddText(ImVec2(x - 8, p1.y + 2), kTickText, series_tick_text(t).c_str());
+    dl->AddLine(ImVec2(x, p0.y), ImVec2(x, p1.y), kPlotGridLine);
+    if (!o.x_label.empty()) dl->AddText(ImVec2(x - 8, p1.y + 2), kPlotTickText, series_tick_text(t).c_str());
   }
   dl->PopClipRect();
 
