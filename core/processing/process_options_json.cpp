@@ -1,5 +1,7 @@
 #include "core/processing/process_options_json.h"
 
+#include "core/processing/length_correction_json.h"
+
 namespace lmc {
 
 nlohmann::json process_options_json(const ProcessOptions& o) {
@@ -36,6 +38,8 @@ nlohmann::json process_options_json(const ProcessOptions& o) {
   j["trim_to_vicon"] = o.trim_to_vicon;
   j["max_lag_frames"] = o.max_lag_frames;
   j["min_vicon_seconds"] = o.min_vicon_seconds;
+  // Only when given, so that every key made without one stays as it was.
+  if (o.length_correction) j["length_correction"] = length_correction_json(*o.length_correction);
   return j;
 }
 

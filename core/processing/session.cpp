@@ -173,6 +173,10 @@ TrialOutcome process_job(const TrialJob& job, const SessionOptions& options, con
       out.warnings.push_back("no Vicon file (" + job.trial + ".trc or .c3d) next to it: LMC measures only");
     }
     ProcessOptions popt = options.process;
+    if (options.compare_methods && popt.length_correction) {
+      // The comparison runs the reference method too, which never takes a length correction.
+      throw Error("the method comparison runs without a length correction: drop one of the two");
+    }
     if (job.sidecar && vicon != nullptr) {
       // The simulator notes which device-clock time its ground truth's frame 0 is (sessions/README.md).
       const RecorderSidecar side = read_recorder_sidecar(*job.sidecar);

@@ -33,6 +33,12 @@ TrialResult process_trial(const std::string& trial_name, const LmcRecording& rec
   r.input_kind = recording.kind;
   r.warnings = recording.warnings;
 
+  if (options.length_correction && options.method == FusionMethod::kReference) {
+    // The reference method is the study's algorithm, reproduced byte for byte; a correction fitted
+    // on the default fusion's lengths would silently turn it into something else.
+    throw Error("a length correction applies to the default fusion only (the reference method stays the study's "
+                "algorithm): drop the length correction or use the default method");
+  }
   if (recording.rows.empty()) throw Error("the LMC recording has no data rows");
   const auto ids = recording.device_ids();
   if (!ids.empty() && ids.back() > layout.device_count()) {
@@ -93,6 +99,15 @@ TrialResult process_trial(const std::string& trial_name, const LmcRecording& rec
       qptr.push_back(&quality[d]);
     }
     r.fused = fuse_default(tracks, qptr, options.smoother);
+  }
+
+  // 4'. Per-subject length correction (only when asked).
+  if (options.length_correction) {
+    apply_length_correction(r.fused, *options.length_correction);
+    r.length_correction = options.length_correction;
+    if (options.length_correction->fit_trial == trial_name) {
+      r.warnings.push_back("the length correction was fitted on this trial: its lengths here are not an independent test");
+    }
   }
 
   // 5. Measures.

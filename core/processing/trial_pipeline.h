@@ -13,6 +13,7 @@
 #include "core/processing/compare.h"
 #include "core/processing/fusion_smoother.h"
 #include "core/processing/kalman_reference.h"
+#include "core/processing/length_correction.h"
 #include "core/processing/measures.h"
 #include "core/processing/resample.h"
 #include "core/processing/trial_tag.h"
@@ -33,6 +34,9 @@ struct ProcessOptions {
   bool trim_to_vicon = true;  // as the study: both series cut to the shorter before fusion (§6.6)
   int max_lag_frames = 50;
   double min_vicon_seconds = 1.0;  // a shorter Vicon file is rejected
+  // Per-subject finger-length correction applied after fusion (length_correction.h). Off unless
+  // given; with the reference method process_trial refuses it.
+  std::optional<LengthCorrection> length_correction;
 };
 
 struct TrialResult {
@@ -49,7 +53,8 @@ struct TrialResult {
   GridTrial device_frame;                          // after resampling (and trimming)
   GridTrial world;                                 // after realignment
   std::vector<std::vector<FingerLabels>> labels;   // [device][frame]
-  HandTrack fused;
+  HandTrack fused;                                 // after the length correction, when one was given
+  std::optional<LengthCorrection> length_correction;  // the one applied
 
   // Measures.
   std::vector<FrameMeasures> lmc_frames;
@@ -65,7 +70,8 @@ struct TrialResult {
 };
 
 // In memory. `vicon` (already mapped to the 30 points, 100 Hz) may be null. Throws lmc::Error
-// for problems that stop this trial (no hand at all, layout with too few devices, Vicon too short).
+// for problems that stop this trial (no hand at all, layout with too few devices, Vicon too short,
+// a length correction with the reference method).
 TrialResult process_trial(const std::string& trial_name, const LmcRecording& recording, const Layout& layout,
                           const HandTrack* vicon, const ProcessOptions& options);
 

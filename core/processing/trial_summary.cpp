@@ -4,6 +4,8 @@
 #include <cmath>
 #include <string>
 
+#include "core/processing/length_correction_json.h"
+
 namespace lmc {
 
 namespace {
@@ -48,6 +50,7 @@ nlohmann::json trial_summary_json(const TrialResult& r) {
   j["lmc_file"] = r.lmc_source;
   j["vicon_file"] = r.has_vicon ? nlohmann::json(r.vicon_source) : nlohmann::json(nullptr);
   j["method"] = fusion_method_name(r.method);
+  if (r.length_correction) j["length_correction"] = length_correction_json(*r.length_correction);
   j["layout"] = r.layout_name;
   j["layout_source"] = r.layout_source;
   j["input_kind"] = r.input_kind == RecordingKind::kRaw ? "raw" : r.input_kind == RecordingKind::kResampled ? "resampled" : "raytraced";

@@ -12,6 +12,7 @@
 #include "core/common/error.h"
 #include "core/common/number_format.h"
 #include "core/io/atomic_write.h"
+#include "core/processing/length_correction_json.h"
 #include "core/processing/method_comparison.h"
 #include "core/processing/session.h"
 #include "core/results/trial_outputs.h"
@@ -26,6 +27,7 @@ struct ProcessArgs {
   std::string method = "default";
   std::string mapping;
   std::string out;
+  std::string length_correction;
   double max_gap_ms = 50.0;
   bool fixed_gap = false;
   bool compare_methods = false;
@@ -36,6 +38,19 @@ void run_process(const ProcessArgs& a) {
   const auto t0 = std::chrono::steady_clock::now();
   lmc::SessionOptions options;
   options.process.method = lmc::fusion_method_from_name(a.method);
+  if (!a.length_correction.empty()) {
+    // Refused here, before any trial runs, rather than once per trial by process_trial.
+    if (options.process.method == lmc::FusionMethod::kReference) {
+      throw lmc::Error("--length-correction applies to the default fusion only: the reference method stays the study's algorithm");
+    }
+    if (a.compare_methods) throw lmc::Error("--compare-methods runs the reference method too: use it without --length-correction");
+    options.process.length_correction = lmc::read_length_correction(a.length_correction);
+    const auto& c = *options.process.length_correction;
+    std::cout << "length correction of subject " << c.subject << " (fitted on " << c.fit_trial << ", "
+              << lmc::length_source_name(c.source) << "): factors";
+    for (const double k : c.factor) std::cout << " " << lmc::format_fixed(k, 3);
+    std::cout << " (thumb … pinky)\n";
+  }
   options.process.resample.max_gap_ms = a.max_gap_ms;
   options.process.resample.adaptive_gap = !a.fixed_gap;
   if (!a.layout.empty()) options.layout = a.layout;
@@ -58,6 +73,7 @@ void run_process(const ProcessArgs& a) {
   nlohmann::json session = nlohmann::json::object();
   session["format"] = "lmc-process-session";
   session["method"] = a.method;
+  if (!a.length_correction.empty()) session["length_correction_file"] = a.length_correction;
   session["input"] = a.input;
   session["trials"] = nlohmann::json::array();
   for (size_t k = 0; k < outcomes.size(); ++k) {
@@ -123,6 +139,8 @@ void setup_process(CLI::App& app) {
   app.add_flag("--fixed-gap", a->fixed_gap, "Use --max-gap-ms as it is for every device");
   app.add_flag("--compare-methods", a->compare_methods,
                "Also run the other method and print both methods' RMSE against the Vicon/truth files");
+  app.add_option("--length-correction", a->length_correction,
+                 "Apply a subject's finger-length correction (lmc length-correction fit) after the default fusion; off unless given");
   app.add_flag("-q,--quiet", a->quiet, "Only failures and the final line");
   app.add_option("-o,--output", a->out, "Output folder")->required();
   app.callback([a] { run_process(*a); });
