@@ -218,7 +218,13 @@ std::vector<int> order(int n, SplitMix64* rng) {
   return v;
 }
 
-std::string two_digits(int n) { return (n < 10 ? "0" : "") + std::to_string(n); }
+// Built in place: GCC 12's Release build warned of a false -Wstringop-overflow in the inlined
+// concatenation of a "0" literal with std::to_string.
+std::string two_digits(int n) {
+  std::string s = std::to_string(n);
+  if (n >= 0 && n < 10) s.insert(s.begin(), '0');
+  return s;
+}
 
 }  // namespace
 
