@@ -92,14 +92,17 @@ int run_capture(const std::string& dir, const std::vector<std::string>& tab_ids,
     subject.frame(shell.context().subject_screen());
   };
   // Let the tab settle: layout needs a couple of frames; background work (a heatmap, a simulated
-  // rig, a trial) gets up to 20 s to finish so the picture shows real content.
+  // rig, a trial) gets up to 20 s to finish so the picture shows real content. While it works, a
+  // frame every 100 ms: nobody watches these frames, and under Xvfb each one is drawn by the CPU
+  // (Mesa's software rasteriser was 60 % of a capture's CPU time at 15 ms), which the work itself
+  // and the tests beside it need.
   const auto settle = [&](Tab& tab, int settle_frames) {
     const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(20);
     int frames = 0;
     while (frames < settle_frames + 3 || (tab.busy_for_capture() && std::chrono::steady_clock::now() < deadline)) {
       draw_frame();
       ++frames;
-      if (tab.busy_for_capture()) std::this_thread::sleep_for(std::chrono::milliseconds(15));
+      if (tab.busy_for_capture()) std::this_thread::sleep_for(std::chrono::milliseconds(100));
     }
   };
   int status = 0;
