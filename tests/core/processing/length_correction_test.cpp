@@ -22,6 +22,7 @@
 #include "core/processing/trial_pipeline.h"
 #include "core/processing/trial_summary.h"
 #include "tests/support/reference_data.h"
+#include "tests/support/shared_real_trial.h"
 
 namespace length_correction_test {
 
@@ -212,15 +213,10 @@ TEST(LengthCorrection, FileRoundTripsAndABadFileIsNamed) {
 
 // In the pipeline, on the study's real trial (skips when ../shared/reference-data is absent).
 TEST(LengthCorrection, PipelineAppliesItAfterTheDefaultFusionOnlyAndTheReferenceRefusesIt) {
-  const auto dir = test::reference_file("validation");
-  const auto lmc_file = dir / "Interp_LMC_Naiv_Static101.txt";
-  const auto trc_file = dir / "Naiv_Static101.trc";
-  LMC_REQUIRE_REFERENCE_FILE(lmc_file);
-  LMC_REQUIRE_REFERENCE_FILE(trc_file);
-  const LmcRecording rec = read_lmc_recording(lmc_file);
-  const HandTrack vicon = apply_vicon_mapping(load_vicon_mapping(test::asset_file("mappings/vicon-26-to-lmc.json")),
-                                              load_vicon_markers(trc_file));
-  const Layout layout = load_layout(test::asset_file("layouts/paper-initial.json"));
+  const auto files = test::shared_real_trial_files();
+  LMC_REQUIRE_REFERENCE_FILE(files.lmc);
+  LMC_REQUIRE_REFERENCE_FILE(files.trc);
+  const auto [rec, vicon, layout] = test::load_shared_real_trial();
 
   LengthCorrection c;
   c.subject = "Subject1";

@@ -14,6 +14,7 @@
 #include "core/processing/trial_pipeline.h"
 #include "core/results/trial_outputs.h"
 #include "tests/support/reference_data.h"
+#include "tests/support/shared_real_trial.h"
 
 namespace lmc {
 namespace {
@@ -42,23 +43,18 @@ std::vector<std::vector<double>> numeric_rows(const std::string& text) {
 }
 
 TEST(ReferenceParity, Subject1NaivStatic101MatchesAuthorsResults) {
-  const auto dir = test::reference_file("validation");
-  const auto lmc_file = dir / "Interp_LMC_Naiv_Static101.txt";
-  const auto trc_file = dir / "Naiv_Static101.trc";
-  const auto results_file = dir / "Subject1_Naiv.results.txt";
-  LMC_REQUIRE_REFERENCE_FILE(lmc_file);
-  LMC_REQUIRE_REFERENCE_FILE(trc_file);
+  const auto files = test::shared_real_trial_files();
+  const auto results_file = test::reference_file("validation/Subject1_Naiv.results.txt");
+  LMC_REQUIRE_REFERENCE_FILE(files.lmc);
+  LMC_REQUIRE_REFERENCE_FILE(files.trc);
   LMC_REQUIRE_REFERENCE_FILE(results_file);
 
-  const LmcRecording rec = read_lmc_recording(lmc_file);
-  const HandTrack vicon = apply_vicon_mapping(load_vicon_mapping(test::asset_file("mappings/vicon-26-to-lmc.json")),
-                                              load_vicon_markers(trc_file));
-  const Layout layout = load_layout(test::asset_file("layouts/paper-initial.json"));
+  const auto [rec, vicon, layout] = test::load_shared_real_trial();
   ProcessOptions o;
   o.method = FusionMethod::kReference;
   TrialResult r = process_trial("Naiv_Static101", rec, layout, &vicon, o);
-  r.lmc_source = lmc_file.string();
-  r.vicon_source = trc_file.string();
+  r.lmc_source = files.lmc.string();
+  r.vicon_source = files.trc.string();
   EXPECT_EQ(r.fused.frame_count, 50);  // Vicon's 100 rows trimmed to the LMC's 50 steps
 
   std::ifstream in(results_file);
@@ -85,7 +81,7 @@ TEST(ReferenceParity, Subject1NaivStatic101MatchesAuthorsResults) {
   // The report names the trial as the authors' does, whichever stage of the file was given.
   const std::string text = format_results_text(r);
   EXPECT_EQ(text.substr(text.find('\n') + 1, 36), "Filename:\tInterp_LMC_Naiv_Static101\n");
-  r.lmc_source = (dir / "Interp_LMC_Naiv_Static101.raytraced.txt").string();
+  r.lmc_source = test::reference_file("validation/Interp_LMC_Naiv_Static101.raytraced.txt").string();
   const std::string from_raytraced = format_results_text(r);
   EXPECT_EQ(from_raytraced.substr(from_raytraced.find('\n') + 1, 36), "Filename:\tInterp_LMC_Naiv_Static101\n");
 }

@@ -12,6 +12,7 @@
 #include "core/processing/session.h"
 #include "core/review/trial_series.h"
 #include "tests/support/reference_data.h"
+#include "tests/support/shared_real_trial.h"
 
 namespace lmc {
 namespace trial_series_test {  // named: test files share unity batches
@@ -19,15 +20,11 @@ namespace trial_series_test {  // named: test files share unity batches
 size_t count_fields(const std::string& line) { return static_cast<size_t>(std::count(line.begin(), line.end(), ',')) + 1; }
 
 TEST(TrialSeries, TheSharedTrialsSeriesAreProcessingsOwnMeasures) {
-  const auto dir = test::reference_file("validation");
-  const auto lmc_file = dir / "Interp_LMC_Naiv_Static101.txt";
-  const auto trc_file = dir / "Naiv_Static101.trc";
-  LMC_REQUIRE_REFERENCE_FILE(lmc_file);
-  LMC_REQUIRE_REFERENCE_FILE(trc_file);
-  const HandTrack vicon = apply_vicon_mapping(load_vicon_mapping(test::asset_file("mappings/vicon-26-to-lmc.json")),
-                                              load_vicon_markers(trc_file));
-  const TrialResult r = process_trial("Naiv_Static101", read_lmc_recording(lmc_file),
-                                      load_layout(test::asset_file("layouts/paper-initial.json")), &vicon, ProcessOptions{});
+  const auto files = test::shared_real_trial_files();
+  LMC_REQUIRE_REFERENCE_FILE(files.lmc);
+  LMC_REQUIRE_REFERENCE_FILE(files.trc);
+  const test::SharedRealTrial trial = test::load_shared_real_trial();
+  const TrialResult r = process_trial("Naiv_Static101", trial.recording, trial.layout, &trial.vicon, ProcessOptions{});
   const TrialSeries s = trial_series(r);
   ASSERT_EQ(s.frames(), 50);
   EXPECT_DOUBLE_EQ(s.time_s.front(), 0.0);
