@@ -12,13 +12,16 @@
 namespace lmc {
 namespace {
 
-// The kernel body; compiled twice (baseline and AVX2, see below). No fused multiply-add is
-// enabled, so both builds give bit-identical results (IEEE add/mul/div are exact per lane), and
-// every decision uses the same expressions as the elementary tests of visibility_tests.h, so the
-// bits are the explaining path's (tests check both). With kCut it also reports, per finger, whether
-// one of its markers lies beyond ±cut_mm on an axis of the device (the robust metric's axis cut):
-// the device-frame coordinates are computed here anyway, so the tally need not transform the
-// markers again.
+// The kernel body; compiled twice (baseline and AVX2, see below). No fused multiply-add is enabled,
+// so both builds give bit-identical results (IEEE add/mul/div are exact per lane). A target that
+// brings FMA with it (GCC's "avx512f" does) would contract a*b+c into one rounding: it needs
+// -ffp-contract=off on this file *and* no precompiled header, because GCC takes the header's saved
+// optimisation options over the file's own (an AVX-512 build was tried that way, bit-identical but
+// no faster, and not kept). Every decision uses the same expressions as the elementary tests of
+// visibility_tests.h, so the bits are the explaining path's (tests check both). With kCut it also
+// reports, per finger, whether one of its markers lies beyond ±cut_mm on an axis of the device (the
+// robust metric's axis cut): the device-frame coordinates are computed here anyway, so the tally
+// need not transform the markers again.
 template <bool kCut>
 [[gnu::always_inline]] inline FingerBits visible_fingers_body(const PreparedFrame& fr, const DeviceView& d,
                                                             const VisibilityLimits& lim, double cut_mm,
