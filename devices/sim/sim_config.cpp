@@ -153,8 +153,14 @@ SimConfig sim_config_from_json(const nlohmann::json& j, const std::string& sourc
   }
   c.serial_prefix = r.string_or("serial_prefix", c.serial_prefix);
   c.truth_rate_hz = r.number_or("truth_rate_hz", c.truth_rate_hz);
-  if (r.has("device_clock_start_us"))
-    c.device_clock_start_us = static_cast<std::int64_t>(r.number("device_clock_start_us"));
+  if (r.has("device_clock_start_us")) {
+    // A clock in µs: beyond 2^53 a double no longer holds every whole µs, and beyond the int64 range
+    // the conversion itself is undefined (a fuzzer's 1e19 found it).
+    const double start_us = r.number("device_clock_start_us");
+    if (!(start_us >= 0 && start_us <= 9007199254740992.0))
+      r.at("device_clock_start_us").fail("must be between 0 and 2^53 µs (285 years)");
+    c.device_clock_start_us = static_cast<std::int64_t>(start_us);
+  }
   if (!(c.rate_min_hz > 0) || c.rate_max_hz < c.rate_min_hz) r.fail("rate_min_hz must be > 0 and ≤ rate_max_hz");
   if (c.latency_max_ms < c.latency_min_ms || c.latency_min_ms < 0) r.fail("latency_min_ms must be ≥ 0 and ≤ latency_max_ms");
   if (c.elbow_error_max_mm < c.elbow_error_min_mm) r.fail("elbow_error_min_mm must be ≤ elbow_error_max_mm");

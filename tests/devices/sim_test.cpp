@@ -278,6 +278,21 @@ TEST(SimConfig, JsonRoundTripAndErrorsNameThePath) {
   EXPECT_THROW(sim_config_from_json(nlohmann::json{{"rate_min_hz", 40}, {"rate_max_hz", 30}}, "cfg.json"), Error);
 }
 
+// Found by fuzzing: a clock start beyond int64 was converted with undefined behaviour.
+TEST(SimConfig, ADeviceClockStartOutsideWholeMicrosecondsIsRefusedNamingTheKey) {
+  for (const double bad : {1e19, -1.0, 9007199254740994.0}) {
+    try {
+      sim_config_from_json(nlohmann::json{{"device_clock_start_us", bad}}, "cfg.json");
+      FAIL() << bad << " was accepted";
+    } catch (const Error& e) {
+      EXPECT_EQ(std::string(e.what()), "cfg.json: at /device_clock_start_us: must be between 0 and 2^53 µs (285 years)");
+    }
+  }
+  EXPECT_EQ(sim_config_from_json(nlohmann::json{{"device_clock_start_us", 9007199254740992.0}}, "cfg.json")
+                .device_clock_start_us,
+            9007199254740992LL);
+}
+
 TEST(SimConfig, UnknownKeysAreRejectedWithTheirPath) {
   // A misspelt switch must not leave the behaviour on in silence.
   try {
