@@ -11,19 +11,12 @@
 #include "core/metric/placement_metric.h"
 #include "core/optimise/search_space.h"
 #include "core/visibility/visibility_kernel.h"
+#include "tests/support/mc_frames.h"
 
 namespace lmc {
 namespace robust_metric_test {
 
-const std::vector<PreparedFrame>& robust_frames() {
-  static const std::vector<PreparedFrame> f = [] {
-    PoseSetSettings s;
-    s.frames = 200;
-    s.seed = 5;
-    return prepare_frames(generate_pose_set(HandModel(), s).frames);
-  }();
-  return f;
-}
+const std::vector<PreparedFrame>& robust_frames() { return test::mc_frames(200, 5); }
 
 std::vector<DeviceView> views_of(const Layout& l) {
   std::vector<DeviceView> v;

@@ -12,19 +12,12 @@
 #include "core/metric/layout_tally.h"
 #include "core/visibility/visibility_explain.h"
 #include "core/visibility/visibility_kernel.h"
+#include "tests/support/mc_frames.h"
 
 namespace lmc {
 namespace tally_fast_path_test {
 
-const std::vector<PreparedFrame>& some_frames() {
-  static const std::vector<PreparedFrame> f = [] {
-    PoseSetSettings s;
-    s.frames = 300;
-    s.seed = 7;
-    return prepare_frames(generate_pose_set(HandModel(), s).frames);
-  }();
-  return f;
-}
+const std::vector<PreparedFrame>& some_frames() { return test::mc_frames(300, 7); }
 
 // Devices on and around the table, most of them seeing the hand.
 std::vector<DeviceView> random_views(int count, std::uint64_t seed) {

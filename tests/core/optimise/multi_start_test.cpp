@@ -4,19 +4,12 @@
 
 #include "core/common/error.h"
 #include "core/hand/pose_set_generator.h"
+#include "tests/support/mc_frames.h"
 
 namespace lmc {
 namespace multi_start_test {
 
-const std::vector<PreparedFrame>& ms_frames() {
-  static const std::vector<PreparedFrame> f = [] {
-    PoseSetSettings s;
-    s.frames = 120;
-    s.seed = 3;
-    return prepare_frames(generate_pose_set(HandModel(), s).frames);
-  }();
-  return f;
-}
+const std::vector<PreparedFrame>& ms_frames() { return test::mc_frames(120, 3); }
 
 PsoSettings ms_small(PlacementMetricKind metric, int threads = 0) {
   PsoSettings s;

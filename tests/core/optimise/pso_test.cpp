@@ -6,19 +6,12 @@
 #include "core/hand/pose_set_generator.h"
 #include "core/metric/coverage.h"
 #include "core/visibility/visibility_kernel.h"
+#include "tests/support/mc_frames.h"
 
 namespace lmc {
 namespace {
 
-const std::vector<PreparedFrame>& frames() {
-  static const std::vector<PreparedFrame> f = [] {
-    PoseSetSettings s;
-    s.frames = 120;
-    s.seed = 3;
-    return prepare_frames(generate_pose_set(HandModel(), s).frames);
-  }();
-  return f;
-}
+const std::vector<PreparedFrame>& frames() { return test::mc_frames(120, 3); }
 
 PsoSettings small(int threads = 0) {
   PsoSettings s;
