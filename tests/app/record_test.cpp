@@ -33,8 +33,7 @@ using lmc::test::run_lmc;
 // The Vicon trigger keeps the last PacketID it used in a state file; these tests keep theirs in a
 // folder of their own, never the user's (ctest runs these in parallel: the file is locked).
 const bool kPrivateStateDir = [] {
-  const auto dir = std::filesystem::temp_directory_path() / "lmc_test_state";
-  std::filesystem::create_directories(dir);
+  const auto dir = lmc::test::scratch_dir("state");
   ::setenv("LMC_STATE_DIR", dir.c_str(), 1);
   return true;
 }();

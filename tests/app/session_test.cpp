@@ -31,8 +31,7 @@ using lmc::test::spawn_lmc;
 using lmc::test::shell_quote;
 
 const bool kPrivateStateDir = [] {
-  const auto dir = fs::temp_directory_path() / "lmc_test_state";
-  fs::create_directories(dir);
+  const auto dir = lmc::test::scratch_dir("state");
   ::setenv("LMC_STATE_DIR", dir.c_str(), 1);
   return true;
 }();

@@ -43,7 +43,8 @@ inline std::string shell_quote(const std::string& s) {
 // `launcher` runs lmc through another program (e.g. "setpriv --reuid=65534 …" to run it unprivileged).
 inline CliRun run_lmc(const std::string& args, std::filesystem::path log_dir = {}, const std::string& shell_prefix = {},
                       const std::string& launcher = {}) {
-  if (log_dir.empty()) {
+  const bool own_log_dir = log_dir.empty();
+  if (own_log_dir) {
     std::string pattern = (std::filesystem::temp_directory_path() / "lmc_cli_XXXXXX").string();
     if (::mkdtemp(pattern.data()) == nullptr) return {};
     log_dir = pattern;
@@ -58,6 +59,11 @@ inline CliRun run_lmc(const std::string& args, std::filesystem::path log_dir = {
   r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
   r.out = read_text_file(log_dir / "out");
   r.err = read_text_file(log_dir / "err");
+  if (own_log_dir) {
+    // Both streams are in `r` now; a folder of our own making is not left behind in /tmp.
+    std::error_code ec;
+    std::filesystem::remove_all(log_dir, ec);
+  }
   return r;
 }
 

@@ -3,12 +3,11 @@
 // (reference-data/README.md: the files may not be copied into the project).
 #include <gtest/gtest.h>
 
-#include <unistd.h>
-
 #include <filesystem>
 #include <string>
 
 #include "tests/support/build_paths.h"
+#include "tests/support/scratch_dir.h"
 
 namespace lmc::test {
 
@@ -23,15 +22,6 @@ inline std::filesystem::path reference_file(const std::string& relative) {
 
 inline std::filesystem::path asset_file(const std::string& relative) {
   return test_assets_dir() / relative;
-}
-
-// A fresh, empty folder for one test's files. The process id keeps test processes that run at the
-// same time (ctest runs each binary in shards, in parallel) out of each other's folders.
-inline std::filesystem::path scratch_dir(const std::string& name) {
-  auto dir = std::filesystem::temp_directory_path() / ("lmc_test_" + name + "_" + std::to_string(::getpid()));
-  std::filesystem::remove_all(dir);
-  std::filesystem::create_directories(dir);
-  return dir;
 }
 
 }  // namespace lmc::test

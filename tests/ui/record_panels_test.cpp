@@ -5,7 +5,7 @@
 #include <cstdio>
 #include <filesystem>
 
-#include "tests/core/session/session_test_support.h"
+#include "tests/support/scratch_dir.h"
 #include "tests/ui/headless_imgui.h"
 #include "ui/model/record/record_session_model.h"
 #include "ui/model/record/record_setup_form.h"

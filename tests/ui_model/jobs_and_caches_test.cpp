@@ -16,6 +16,7 @@
 #include "ui/model/layout_actions.h"
 #include "ui/model/layout_tab_state.h"
 #include "ui/model/pose_set_store.h"
+#include "tests/support/scratch_dir.h"
 
 namespace lmc::ui {
 namespace {
@@ -218,8 +219,7 @@ TEST(LayoutTabState, UnsavedMarkFollowsTheSavedCommitAndSelectionIsPruned) {
 }
 
 TEST(LayoutTabState, OpeningABadFileNamesTheJsonPathAndChangesNothing) {
-  const auto dir = std::filesystem::temp_directory_path() / "lmc_ui_model_bad_layout";
-  std::filesystem::create_directories(dir);
+  const auto dir = lmc::test::scratch_dir("ui_model_bad_layout");
   const auto path = dir / "bad.json";
   {
     std::ofstream out(path);
@@ -241,8 +241,7 @@ TEST(LayoutTabState, OpeningABadFileNamesTheJsonPathAndChangesNothing) {
 }
 
 TEST(LayoutTabState, SaveThenOpenRoundTripsTheLayout) {
-  const auto dir = std::filesystem::temp_directory_path() / "lmc_ui_model_roundtrip";
-  std::filesystem::create_directories(dir);
+  const auto dir = lmc::test::scratch_dir("ui_model_roundtrip");
   LayoutTabState s(make_document(square_layout()));
   ASSERT_TRUE(set_pose_param(s.upd_history(), 1, 3, 22.5));
   ASSERT_TRUE(s.save_to(dir / "rig.json").empty());

@@ -13,7 +13,7 @@
 
 #include "core/io/layout_json.h"
 #include "core/session/session_folder.h"
-#include "tests/core/session/session_test_support.h"
+#include "tests/support/scratch_dir.h"
 #include "ui/model/devices/fusion_readout.h"
 #include "ui/model/record/record_session_model.h"
 #include "ui/model/workbench_context.h"

@@ -10,7 +10,7 @@
 #include <gtest/gtest.h>
 
 #include "core/session/session_folder.h"
-#include "tests/core/session/session_test_support.h"
+#include "tests/support/scratch_dir.h"
 #include "ui/model/record/record_session_model.h"
 
 namespace lmc::ui {

@@ -9,7 +9,7 @@
 
 #include "core/session/session_folder.h"
 #include "core/session/trial_files.h"
-#include "tests/core/session/session_test_support.h"
+#include "tests/support/scratch_dir.h"
 #include "ui/model/record/motion_pictogram.h"
 #include "ui/model/record/record_session_model.h"
 #include "ui/model/record/record_setup_form.h"

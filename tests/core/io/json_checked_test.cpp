@@ -9,6 +9,7 @@
 #include "core/common/error.h"
 #include "core/io/json_checked.h"
 #include "core/io/layout_json.h"
+#include "tests/support/scratch_dir.h"
 
 namespace lmc {
 namespace {
@@ -52,8 +53,7 @@ TEST(JsonChecked, SyntaxErrorGivesLineAndColumnWithoutLibraryPrefix) {
 }
 
 TEST(JsonChecked, LayoutFileWithOverflowOrDuplicateNamesTheFile) {
-  const auto dir = std::filesystem::temp_directory_path() / "lmc_json_checked_test";
-  std::filesystem::create_directories(dir);
+  const auto dir = lmc::test::scratch_dir("json_checked");
   const auto path = dir / "hostile.json";
   std::ofstream(path) << R"({"format": 1, "name": "x", "sensor": {"range_mm": 1e400}})";
   try {

@@ -9,6 +9,7 @@
 #include "core/io/layout_json.h"
 #include "core/layout/layout.h"
 #include "tests/support/build_paths.h"
+#include "tests/support/scratch_dir.h"
 
 namespace lmc {
 namespace {
@@ -61,8 +62,7 @@ TEST(LayoutJson, PaperLayoutsLoadWithTheirPublishedPoses) {
 TEST(LayoutJson, RoundTripsExactly) {
   Layout l = load_layout(asset("layouts/paper-optimized.json"));
   l.devices[2].serial = "LP55123";
-  const auto dir = std::filesystem::temp_directory_path() / "lmc_layout_roundtrip";
-  std::filesystem::create_directories(dir);
+  const auto dir = lmc::test::scratch_dir("layout_roundtrip");
   save_layout(l, dir / "l.json");
   EXPECT_EQ(load_layout(dir / "l.json"), l);
 }
@@ -147,7 +147,7 @@ TEST(LayoutValidation, RejectsNaNPoses) {
 }
 
 TEST(LayoutJson, MalformedJsonNamesTheFile) {
-  const auto p = std::filesystem::temp_directory_path() / "lmc_bad_layout.json";
+  const auto p = lmc::test::scratch_dir("bad_layout") / "lmc_bad_layout.json";
   std::ofstream(p) << "{ \"format\": 1, ";
   try {
     load_layout(p);

@@ -8,7 +8,7 @@
 #include "core/common/error.h"
 #include "core/session/session_trials.h"
 #include "core/session/trial_files.h"
-#include "tests/core/session/session_test_support.h"
+#include "tests/support/scratch_dir.h"
 
 namespace fs = std::filesystem;
 

@@ -26,6 +26,7 @@
 #include "ui/model/devices/fusion_readout.h"
 #include "ui/scene/orbit_camera.h"
 #include "ui/scene/scene_items.h"
+#include "ui/tabs/capture_scratch.h"
 #include "ui/tabs/devices/devices_calibrate_panel.h"
 #include "ui/widgets/file_browser.h"
 #include "ui/widgets/live_hands_view.h"
@@ -137,9 +138,7 @@ class DevicesTab final : public Tab {
       status_.set_status("Devices: " + err, true);
       return;
     }
-    const auto dir = std::filesystem::temp_directory_path() / "lmc-capture-calibration";
-    std::error_code ec;
-    std::filesystem::remove_all(dir, ec);
+    const auto dir = capture_scratch_.fresh("calibration");
     if (const std::string err = calibrate_.step().record(dir, {}); !err.empty()) status_.set_status(err, true);
   }
 
@@ -311,6 +310,7 @@ class DevicesTab final : public Tab {
   }
 
   StatusSink& status_;
+  CaptureScratch capture_scratch_;  // before vm_ and calibrate_: removed after they stop recording
   DevicesViewModel vm_;
   OrbitCamera camera_;  // starts on the Layout tab's default view, which shows every controller
   std::uint64_t seen_messages_ = 0;

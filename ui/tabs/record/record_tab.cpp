@@ -6,7 +6,6 @@
 #include "ui/tabs/record/record_tab.h"
 
 #include <imgui.h>
-#include <unistd.h>
 
 #include <cstdio>
 #include <filesystem>
@@ -19,6 +18,7 @@
 #include "ui/model/record/record_setup_form.h"
 #include "ui/model/record/subject_view.h"
 #include "ui/model/workbench_context.h"
+#include "ui/tabs/capture_scratch.h"
 #include "ui/tabs/record/record_setup_panel.h"
 #include "ui/tabs/record/record_trial_list_panel.h"
 #include "ui/tabs/record/record_trial_panel.h"
@@ -111,8 +111,7 @@ class RecordTab final : public Tab {
       // A protocol that calibrates each block, on a simulated rig whose controllers stand up to
       // 25 mm and 3 degrees away from the layout: the residual table after the still-hand trial.
       model_.close();
-      const auto dir = std::filesystem::temp_directory_path() / ("lmc-record-calibration-capture-" + std::to_string(::getpid()));
-      std::filesystem::remove_all(dir);
+      const auto dir = capture_scratch_.fresh("record-calibration");
       form_.select_protocol("study-calibrated");
       RecordSettings settings = form_.settings();
       settings.fast = true;
@@ -266,8 +265,7 @@ class RecordTab final : public Tab {
   // trial list with a verdict, the cue, the red circle, the controller strips and the fused hand.
   void drive_capture() {
     if (!model_.has_session()) {
-      const auto dir = std::filesystem::temp_directory_path() / ("lmc-record-capture-" + std::to_string(::getpid()));
-      std::filesystem::remove_all(dir);
+      const auto dir = capture_scratch_.fresh("record");
       form_.select_protocol("quick");
       RecordSettings settings = form_.settings();
       settings.fast = false;
@@ -296,6 +294,7 @@ class RecordTab final : public Tab {
 
   StatusSink& status_;
   WorkbenchContext& context_;
+  CaptureScratch capture_scratch_;  // before model_: removed after its session has closed
   RecordSessionModel model_;
   RecordSetupForm form_;
   std::vector<SessionListing> sessions_;  // for "resume": the sessions folder's contents

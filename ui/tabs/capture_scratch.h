@@ -1,0 +1,40 @@
+#pragma once
+// Folders a tab records demo sessions into while `--capture` takes its pictures. They are scratch
+// (the pictures are the output), so they go with the tab: each capture run used to leave its
+// sessions in /tmp for good. Declare the member before whatever writes into the folders, so that
+// it is destroyed after the writer has stopped.
+#include <unistd.h>
+
+#include <filesystem>
+#include <string>
+#include <system_error>
+#include <vector>
+
+namespace lmc::ui {
+
+class CaptureScratch {
+ public:
+  CaptureScratch() = default;
+  CaptureScratch(const CaptureScratch&) = delete;
+  CaptureScratch& operator=(const CaptureScratch&) = delete;
+  ~CaptureScratch() {
+    for (const auto& dir : dirs_) {
+      std::error_code ec;
+      std::filesystem::remove_all(dir, ec);
+    }
+  }
+
+  // A path that does not exist yet, unique to this process and `what`; removed with this object.
+  std::filesystem::path fresh(const std::string& what) {
+    auto dir = std::filesystem::temp_directory_path() / ("lmc-capture-" + what + "-" + std::to_string(::getpid()));
+    std::error_code ec;
+    std::filesystem::remove_all(dir, ec);
+    dirs_.push_back(dir);
+    return dir;
+  }
+
+ private:
+  std::vector<std::filesystem::path> dirs_;
+};
+
+}  // namespace lmc::ui
