@@ -93,11 +93,6 @@ if(LMC_PRECOMPILE_HEADERS)
     lmc_driver_flags(lmc_driver_pch)
     set(LMC_DRIVER_PCH lmc_driver_pch)
   endif()
-  if(LMC_HOT_FLAG_LIST)
-    lmc_add_pch_target(lmc_hot_pch HEADERS ${LMC_PCH_HEADERS}
-                       LIBS Eigen3::Eigen nlohmann_json::nlohmann_json)
-    target_compile_options(lmc_hot_pch PRIVATE ${LMC_HOT_FLAG_LIST})
-  endif()
 endif()
 
 # lmc_target_options(target [PCH holder]): the flags above plus the shared precompiled header
@@ -119,9 +114,10 @@ endfunction()
 
 # lmc_hot_sources(target SOURCES_VAR LIBS lib... GLOBS pattern...): with LMC_HOT_FLAGS set, the
 # files of ${SOURCES_VAR} that match a pattern (relative to this folder) are taken out of it and
-# compiled in an object library of their own, with those flags and a precompiled header made with
-# them (GCC takes a precompiled header's optimisation level over the file's own), and their objects
-# are added to `target`. LIBS: what the files include.
+# compiled in an object library of their own, with those flags, and their objects are added to
+# `target`. LIBS: what the files include. No precompiled header: GCC takes a precompiled header's
+# optimisation level over the file's own, and one made for these few files would cost more than
+# it saves.
 function(lmc_hot_sources target sources_var)
   cmake_parse_arguments(PARSE_ARGV 2 arg "" "" "LIBS;GLOBS")
   if(NOT LMC_HOT_FLAG_LIST)
@@ -139,7 +135,8 @@ function(lmc_hot_sources target sources_var)
   add_library(${target}_hot OBJECT ${hot})
   target_include_directories(${target}_hot PRIVATE ${CMAKE_SOURCE_DIR})
   target_link_libraries(${target}_hot PRIVATE ${arg_LIBS})
-  lmc_target_options(${target}_hot PCH lmc_hot_pch)
+  lmc_compile_flags(${target}_hot)
+  set_target_properties(${target}_hot PROPERTIES UNITY_BUILD ${LMC_UNITY} UNITY_BUILD_BATCH_SIZE ${LMC_UNITY_BATCH_SIZE})
   target_compile_options(${target}_hot PRIVATE ${LMC_HOT_FLAG_LIST})
   set(LMC_HOT_OBJECTS_${target} $<TARGET_OBJECTS:${target}_hot> PARENT_SCOPE)
 endfunction()
