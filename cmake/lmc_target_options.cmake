@@ -32,7 +32,8 @@ endfunction()
 # Files per unity batch. Larger batches instantiate the shared templates fewer times (core, devices
 # and ui_model with the check flags: 484 s of CPU in batches of 8, 409 s in batches of 16; the core
 # tests' batches 17 % less in batches of 32 than 16, so the check preset that CI builds uses 32);
-# smaller ones rebuild less after an edit and give ninja more to run in parallel. Names in anonymous namespaces must be unique across a library's files.
+# smaller ones rebuild less after an edit and give ninja more to run in parallel. Names in
+# anonymous namespaces must be unique across a library's files.
 set(LMC_UNITY_BATCH_SIZE 8 CACHE STRING "Source files per unity batch (0: one batch per target)")
 
 # Parsing Eigen and nlohmann-json is about 40 % of compiling a typical file here, so they are
@@ -77,7 +78,7 @@ endfunction()
 # The check preset compiles the engine at -Og: under ASan/UBSan a batch of core at -O1 took 43 s of
 # CPU and 26 s at -Og, but Eigen's small functions stay calls at -Og, so the code that does the
 # tests' arithmetic (found with perf over the whole ctest run: calibration, frame preparation and
-# the palm hull, the hand model, trial quality, the simulated rig) ran up to three times slower.
+# the palm hull, the hand model, trial quality, the simulated rig) ran 2 to 9 times slower.
 # Those files take LMC_HOT_FLAGS (the check preset: -O1) instead. Empty: no split (Release, dev).
 set(LMC_HOT_FLAGS "" CACHE STRING "Compile flags for the engine's hot files (lmc_hot_sources), after the build type's")
 separate_arguments(LMC_HOT_FLAG_LIST UNIX_COMMAND "${LMC_HOT_FLAGS}")
