@@ -1,6 +1,6 @@
 #include "core/geometry/palm_hull.h"
 
-#include <Eigen/Dense>
+#include <Eigen/Geometry>  // cross products; no decomposition here
 #include <algorithm>
 #include <cmath>
 
@@ -110,45 +110,6 @@ ConvexHull6 build_convex_hull(std::span<const Eigen::Vector3d> points) {
                                                            -d0 + slack};
   }
   return hull;
-}
-
-bool hull_contains_bruteforce(std::span<const Eigen::Vector3d> points, const Eigen::Vector3d& q, double tolerance) {
-  const size_t n = points.size();
-  // Tetrahedra: solve q = p0 + A·λ, λ ≥ 0, Σλ ≤ 1.
-  for (size_t a = 0; a < n; ++a) {
-    for (size_t b = a + 1; b < n; ++b) {
-      for (size_t c = b + 1; c < n; ++c) {
-        for (size_t d = c + 1; d < n; ++d) {
-          Eigen::Matrix3d m;
-          m.col(0) = points[b] - points[a];
-          m.col(1) = points[c] - points[a];
-          m.col(2) = points[d] - points[a];
-          if (std::abs(m.determinant()) < 1e-12) continue;
-          const Eigen::Vector3d l = m.fullPivLu().solve(q - points[a]);
-          if (l.minCoeff() >= -tolerance && l.sum() <= 1.0 + tolerance) return true;
-        }
-      }
-    }
-  }
-  // Triangles (covers coplanar point sets and points on a flat hull): q = p0 + s·e1 + t·e2 exactly
-  // in the triangle's plane.
-  for (size_t a = 0; a < n; ++a) {
-    for (size_t b = a + 1; b < n; ++b) {
-      for (size_t c = b + 1; c < n; ++c) {
-        const Eigen::Vector3d e1 = points[b] - points[a], e2 = points[c] - points[a];
-        const Eigen::Vector3d nrm = e1.cross(e2);
-        if (nrm.norm() < 1e-12) continue;
-        const Eigen::Vector3d r = q - points[a];
-        if (std::abs(r.dot(nrm.normalized())) > 1e-6) continue;
-        Eigen::Matrix<double, 3, 2> m;
-        m.col(0) = e1;
-        m.col(1) = e2;
-        const Eigen::Vector2d st = m.colPivHouseholderQr().solve(r);
-        if (st.minCoeff() >= -tolerance && st.sum() <= 1.0 + tolerance) return true;
-      }
-    }
-  }
-  return false;
 }
 
 }  // namespace lmc

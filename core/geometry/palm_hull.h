@@ -41,9 +41,4 @@ inline bool hull_contains(const ConvexHull6& hull, double qx, double qy, double 
   return true;
 }
 
-// Slow, independent check for tests: q is inside iff it lies in one of the tetrahedra (or, for
-// coplanar points, triangles) spanned by the points (Carathéodory). Not for hot loops.
-bool hull_contains_bruteforce(std::span<const Eigen::Vector3d> points, const Eigen::Vector3d& q,
-                              double tolerance = 1e-9);
-
 }  // namespace lmc

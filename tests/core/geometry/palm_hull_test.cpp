@@ -2,11 +2,56 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <random>
 #include <vector>
 
 namespace lmc {
 namespace {
+
+// Slow, independent check: q is inside iff it lies in one of the tetrahedra (or, for coplanar
+// points, triangles) spanned by the points (Carathéodory). Solved by Cramer's rule rather than an
+// Eigen decomposition, whose templates cost 15 s of compile time under the sanitizers.
+double det3(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::Vector3d& c) { return a.dot(b.cross(c)); }
+
+bool hull_contains_bruteforce(const std::vector<Eigen::Vector3d>& points, const Eigen::Vector3d& q,
+                              double tolerance) {
+  const size_t n = points.size();
+  // Tetrahedra: q = p0 + λ1·e1 + λ2·e2 + λ3·e3 with λ ≥ 0 and Σλ ≤ 1.
+  for (size_t a = 0; a < n; ++a) {
+    for (size_t b = a + 1; b < n; ++b) {
+      for (size_t c = b + 1; c < n; ++c) {
+        for (size_t d = c + 1; d < n; ++d) {
+          const Eigen::Vector3d e1 = points[b] - points[a], e2 = points[c] - points[a], e3 = points[d] - points[a];
+          const double det = det3(e1, e2, e3);
+          if (std::abs(det) < 1e-12) continue;
+          const Eigen::Vector3d r = q - points[a];
+          const Eigen::Vector3d l(det3(r, e2, e3) / det, det3(e1, r, e3) / det, det3(e1, e2, r) / det);
+          if (l.minCoeff() >= -tolerance && l.sum() <= 1.0 + tolerance) return true;
+        }
+      }
+    }
+  }
+  // Triangles (coplanar point sets and points on a flat hull): q = p0 + s·e1 + t·e2 in the
+  // triangle's plane; s and t from the 2×2 normal equations, exact once q is in the plane.
+  for (size_t a = 0; a < n; ++a) {
+    for (size_t b = a + 1; b < n; ++b) {
+      for (size_t c = b + 1; c < n; ++c) {
+        const Eigen::Vector3d e1 = points[b] - points[a], e2 = points[c] - points[a];
+        const Eigen::Vector3d nrm = e1.cross(e2);
+        if (nrm.norm() < 1e-12) continue;
+        const Eigen::Vector3d r = q - points[a];
+        if (std::abs(r.dot(nrm.normalized())) > 1e-6) continue;
+        const double g11 = e1.dot(e1), g12 = e1.dot(e2), g22 = e2.dot(e2);
+        const double r1 = e1.dot(r), r2 = e2.dot(r);
+        const double g = g11 * g22 - g12 * g12;  // = |e1 × e2|² > 0
+        const double s = (r1 * g22 - r2 * g12) / g, t = (r2 * g11 - r1 * g12) / g;
+        if (s >= -tolerance && t >= -tolerance && s + t <= 1.0 + tolerance) return true;
+      }
+    }
+  }
+  return false;
+}
 
 std::vector<Eigen::Vector3d> unit_cube_corners_subset() {
   return {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}, {1, 1, 0}, {1, 0, 1}};
