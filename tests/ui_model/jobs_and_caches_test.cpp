@@ -183,6 +183,55 @@ TEST(HeatmapCache, PublishesCoarseThenFineGrids) {
   EXPECT_TRUE(cache.latest()->fine);
 }
 
+// A hidden Layout tab sweeps no heatmap (a recording on the Record tab needs the core), keeps the
+// grid it has, and sweeps again when shown.
+TEST(LayoutTabState, OffScreenTheHeatmapSweepStopsAndResumesWhenShown) {
+  LayoutDocument doc = make_document(square_layout());
+  doc.pose_set.frames = 10;
+  LayoutTabState s(std::move(doc));
+  s.select(0);
+  s.display.heatmap_cells = 8;
+  wait_for([&] {
+    s.update(0.0, false);
+    return s.poses.current() != nullptr;
+  });
+  ASSERT_NE(s.poses.current(), nullptr);
+  for (int i = 0; i < 5; ++i) s.update(0.0, false);
+  EXPECT_FALSE(s.heatmap.computing());
+  EXPECT_EQ(s.heatmap.latest(), nullptr) << "no sweep while off screen";
+  wait_for([&] {
+    s.update(0.0, true);
+    return s.heatmap.complete();
+  });
+  ASSERT_TRUE(s.heatmap.complete());
+  const HeatmapGridPtr shown = s.heatmap.latest();
+  // Another finger while hidden: nothing starts, the last grid stays for when the tab comes back.
+  s.display.heatmap_finger = 2;
+  s.update(0.0, false);
+  EXPECT_FALSE(s.heatmap.computing());
+  EXPECT_EQ(s.heatmap.latest(), shown);
+  wait_for([&] {
+    s.update(0.0, true);
+    return s.heatmap.complete();
+  });
+  ASSERT_TRUE(s.heatmap.complete());
+  EXPECT_NE(s.heatmap.latest(), shown);
+  // A sweep under way when the tab is hidden stops (12,000 cells take far longer than the step
+  // between the two calls) and starts again when shown.
+  s.display.heatmap_cells = 96;
+  s.update(0.0, true);
+  EXPECT_TRUE(s.heatmap.computing());
+  s.update(0.0, false);
+  EXPECT_FALSE(s.heatmap.computing());
+  EXPECT_FALSE(s.heatmap.complete());
+  wait_for([&] {
+    s.update(0.0, true);
+    return s.heatmap.complete();
+  });
+  ASSERT_TRUE(s.heatmap.complete());
+  EXPECT_EQ(s.heatmap.latest()->nx, 96);
+}
+
 TEST(FrameVisibility, CountsAgreeWithTheBitsAndRaysCarryReasons) {
   const PoseSetPtr poses = small_pose_set();
   const Layout l = square_layout();

@@ -75,6 +75,12 @@ void HeatmapCache::clear() {
   latest_.reset();
 }
 
+void HeatmapCache::pause() {
+  if (!job_.running()) return;
+  job_.abandon_into(graveyard_);
+  has_request_ = false;
+}
+
 void HeatmapCache::poll() {
   for (auto& g : job_.drain_reports()) {
     if (g && g->key == key_) latest_ = g;

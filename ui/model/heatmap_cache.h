@@ -45,6 +45,8 @@ class HeatmapCache {
  public:
   void request(const HeatmapRequest& request);
   void clear();  // heatmap switched off: stop and forget
+  // Off screen: stop a sweep in progress but keep the last grid; the next request starts afresh.
+  void pause();
   void poll();   // update step: pick up published passes, reap abandoned workers
 
   HeatmapGridPtr latest() const { return latest_; }

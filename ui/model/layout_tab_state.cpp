@@ -157,7 +157,7 @@ void LayoutTabState::refresh_timeline_frames() {
   }
 }
 
-void LayoutTabState::update(double dt_seconds) {
+void LayoutTabState::update(double dt_seconds, bool on_screen) {
   poses.request(doc().pose_set);
   poses.poll();
   coverage.poll();
@@ -200,7 +200,11 @@ void LayoutTabState::update(double dt_seconds) {
       req.cells = display.heatmap_cells;
       req.half_extent_mm = display.heatmap_half_extent_mm;
       req.poses = p;
-      heatmap.request(req);
+      if (on_screen) {
+        heatmap.request(req);
+      } else {
+        heatmap.pause();
+      }
     } else {
       heatmap.clear();
     }

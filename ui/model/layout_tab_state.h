@@ -102,7 +102,9 @@ class LayoutTabState {
   ColourRange heatmap_range() const;
 
   // Update step: poll jobs, advance the timeline by dt, refresh caches for the current document.
-  void update(double dt_seconds);
+  // `on_screen` false (another tab is shown): no heatmap sweep, whose full pass takes a core for
+  // seconds that a recording beside it needs; the coverage and a running optimiser go on.
+  void update(double dt_seconds, bool on_screen = true);
   // Start / cancel / apply the optimiser (job controls).
   bool start_optimiser();
   void cancel_optimiser() { optimiser.cancel(); }

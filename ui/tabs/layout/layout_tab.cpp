@@ -146,7 +146,9 @@ void LayoutTab::update() {
   }
   frame_start_ = now;
   if (stats_frames_wanted_ > 0) scripted_drag_step();
-  state_->update(static_cast<double>(ImGui::GetIO().DeltaTime));
+  // The shell updates every tab each frame but draws only the shown one (draw() sets the flag).
+  state_->update(static_cast<double>(ImGui::GetIO().DeltaTime), drawn_since_update_);
+  drawn_since_update_ = false;
   // The committed layout, not the scratch copy: a drag in progress would restart the rig every frame.
   if (shared_layout_ != nullptr) shared_layout_->publish(state_->history().head().layout);
   if (stats_frames_wanted_ > 0) {
@@ -436,6 +438,7 @@ void LayoutTab::draw_panel_side() {
 
 void LayoutTab::draw() {
   LayoutTabState& s = *state_;
+  drawn_since_update_ = true;
   handle_shortcuts();
   draw_toolbar();
 

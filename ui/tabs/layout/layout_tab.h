@@ -89,6 +89,7 @@ class LayoutTab final : public Tab {
   // ghost controllers and the comparison table are in the picture.
   std::string capture_panel_;
   int capture_panel_frames_ = 0;
+  bool drawn_since_update_ = false;  // the tab was on screen last frame
 
   StatusSink& status_;
   CurrentLayout* shared_layout_ = nullptr;
