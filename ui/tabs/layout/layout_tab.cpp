@@ -192,8 +192,8 @@ int LayoutTab::prepare_for_capture() {
   // LMC_LAYOUT_HEATMAP_CELLS=N: a coarser heatmap grid. The smoke test under ASan uses 24: the
   // 48×48 sweep did not finish within the capture's 20 s there (the picture showed the 24×24
   // preview anyway) and went on using a core beside the other tests.
-  if (const char* cells = std::getenv("LMC_LAYOUT_HEATMAP_CELLS"); cells != nullptr && std::atoi(cells) >= 4) {
-    state_->display.heatmap_cells = std::atoi(cells);
+  if (const char* cells = std::getenv("LMC_LAYOUT_HEATMAP_CELLS"); cells != nullptr && std::atoi(cells) > 0) {
+    state_->display.heatmap_cells = std::clamp(std::atoi(cells), 8, 96);  // the Heatmap panel's slider range
   }
   if (const char* view = std::getenv("LMC_LAYOUT_VIEW")) {  // top, front or side (default: 3D)
     const std::string v = view;
