@@ -4,8 +4,11 @@
 
 #include <algorithm>
 #include <optional>
+#include <string>
+#include <vector>
 
 #include "ui/scene/colour_maps.h"
+#include "ui/scene/label_spreading.h"
 #include "ui/scene/scene_items.h"
 #include "ui/widgets/imgui_colour.h"
 
@@ -45,6 +48,12 @@ void draw_live_hands_view(const char* id, OrbitCamera& camera, const Layout& lay
   line({0, 0, 0}, {60, 0, 0}, IM_COL32(220, 80, 80, 255), 2.0F);
   line({0, 0, 0}, {0, 60, 0}, IM_COL32(80, 220, 80, 255), 2.0F);
   line({0, 0, 0}, {0, 0, 60}, IM_COL32(80, 120, 240, 255), 2.0F);
+  struct SlotLabel {
+    Eigen::Vector2d at;  // projected anchor, pixels
+    ImU32 colour;
+    std::string text;
+  };
+  std::vector<SlotLabel> labels;
   if (controllers == nullptr) {
     // Each controller: its 80 × 30 mm top face where the layout puts it, plus a short view axis.
     for (size_t i = 0; i < layout.devices.size(); ++i) {
@@ -54,8 +63,7 @@ void draw_live_hands_view(const char* id, OrbitCamera& camera, const Layout& lay
                                     d.to_world({-40, 0, 15})};
       for (int k = 0; k < 4; ++k) line(c[k], c[(k + 1) % 4], col, 2.0F);
       line(d.to_world({0, 0, 0}), d.to_world({0, 40, 0}), col, 1.0F);
-      if (auto p = proj(d.to_world({0, 0, 25})))
-        dl->AddText(ImVec2(static_cast<float>(p->x()) - 14, static_cast<float>(p->y())), col, d.slot.c_str());
+      if (auto p = proj(d.to_world({0, 0, 25}))) labels.push_back({*p, col, d.slot});
     }
   } else {
     for (const SceneItem& it : *controllers) {
@@ -78,9 +86,20 @@ void draw_live_hands_view(const char* id, OrbitCamera& camera, const Layout& lay
       for (const auto& e : box_edges(it)) line(e[0], e[1], col, ghost ? 1.0F : 2.5F);
       if (ghost || it.id < 0 || it.id >= layout.device_count()) continue;
       if (auto p = proj(it.transform * Eigen::Vector3d(0, 0, 25)))
-        dl->AddText(ImVec2(static_cast<float>(p->x()) - 14, static_cast<float>(p->y())), col,
-                    layout.devices[static_cast<size_t>(it.id)].slot.c_str());
+        labels.push_back({*p, col, layout.devices[static_cast<size_t>(it.id)].slot});
     }
+  }
+  // The slots' names, spread so that two controllers standing close do not print over each other
+  // (the Layout scene's rule, ui/scene/label_spreading.h), with a shadow to read on the grid.
+  std::vector<LabelBox> boxes;
+  for (const SlotLabel& l : labels) {
+    const ImVec2 text = ImGui::CalcTextSize(l.text.c_str());
+    boxes.push_back({static_cast<float>(l.at.x()) - 14, static_cast<float>(l.at.y()), text.x, text.y});
+  }
+  boxes = spread_labels(std::move(boxes), 1.0f);
+  for (size_t i = 0; i < labels.size(); ++i) {
+    dl->AddText(ImVec2(boxes[i].x + 1, boxes[i].y + 1), IM_COL32(0, 0, 0, 200), labels[i].text.c_str());
+    dl->AddText(ImVec2(boxes[i].x, boxes[i].y), labels[i].colour, labels[i].text.c_str());
   }
   // Every device's hand in the world frame: where the hands disagree, a device is misplaced.
   for (const auto& h : hands) {
