@@ -20,14 +20,21 @@ ImU32 label_colour(std::int8_t label) {
 
 }  // namespace
 
+constexpr float kStripGap = 1.0F, kGroupGap = 5.0F;
+
+float label_strips_height(const std::vector<LabelStrip>& strips, float strip_height_px) {
+  float height = 0;
+  for (size_t s = 0; s < strips.size(); ++s) {
+    height += strip_height_px + kStripGap + (s > 0 && strips[s].group != strips[s - 1].group ? kGroupGap : 0.0F);
+  }
+  return height;
+}
+
 void draw_label_strips(const char* id, std::span<const double> x, const std::vector<LabelStrip>& strips,
                        LinkedXRange& range, float strip_height_px) {
   ImGui::PushID(id);
-  const float gap = 1.0F, group_gap = 5.0F;
-  float height = 0;
-  for (size_t s = 0; s < strips.size(); ++s) {
-    height += strip_height_px + gap + (s > 0 && strips[s].group != strips[s - 1].group ? group_gap : 0.0F);
-  }
+  const float gap = kStripGap, group_gap = kGroupGap;
+  const float height = label_strips_height(strips, strip_height_px);
   const ImVec2 top = ImGui::GetCursorScreenPos();
   const float width = std::max(120.0F, ImGui::GetContentRegionAvail().x);
   const ImVec2 p0(top.x + kSeriesPlotGutterPx, top.y);

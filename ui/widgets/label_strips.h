@@ -23,6 +23,10 @@ struct LabelStrip {
 void draw_label_strips(const char* id, std::span<const double> x, const std::vector<LabelStrip>& strips,
                        LinkedXRange& range, float strip_height_px = 5.0F);
 
+// The pixels draw_label_strips takes for these strips (strips, gaps, and a wider gap between groups),
+// so a view can keep room for them below its plots.
+float label_strips_height(const std::vector<LabelStrip>& strips, float strip_height_px = 5.0F);
+
 // The legend of the three label colours, on one line.
 void draw_label_legend();
 

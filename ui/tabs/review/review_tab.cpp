@@ -46,7 +46,7 @@ class ReviewTab final : public Tab {
     draw_review_sources_bar(state_, browser_);
     ImGui::Separator();
     const float avail = ImGui::GetContentRegionAvail().y;
-    draw_review_trial_table(state_, std::clamp(avail * 0.24F, 120.0F, 320.0F));
+    draw_review_trial_table(state_, std::clamp(avail * 0.20F, 120.0F, 320.0F));
     if (ImGui::BeginTabBar("review_views")) {
       if (ImGui::BeginTabItem("Trial against Vicon", nullptr, pending_view_ == 0 ? ImGuiTabItemFlags_SetSelected : 0)) {
         trial_view_.draw(state_, context_.picture_renderer());

@@ -100,10 +100,23 @@ void ReviewTrialView::draw(ReviewState& state, const PictureRenderer& renderer) 
   const float replay_width = std::clamp(ImGui::GetContentRegionAvail().x * 0.36F, 280.0F, 560.0F);
   ImGui::BeginChild("plots", ImVec2(ImGui::GetContentRegionAvail().x - replay_width - 6, 0), false);
   const auto& range = state.x_range();
+  std::vector<LabelStrip> strips;
+  for (const auto& d : s.devices) {
+    for (int k = 0; k < kNumFingers; ++k) {
+      strips.push_back({"LMC" + std::to_string(d.device_id), kFingerWords[k], d.label[static_cast<size_t>(k)]});
+    }
+  }
+  // The label strips explain every gap in the curves, so they keep their room at the foot: the
+  // curves scroll in what is left when the window is small (at 1280 × 800 they fit).
+  constexpr float kStripPx = 4.0F;
+  const ImGuiStyle& style = ImGui::GetStyle();
+  const float strips_block = ImGui::GetTextLineHeightWithSpacing() + label_strips_height(strips, kStripPx) +
+                             style.ItemSpacing.y + style.WindowPadding.y;
+  ImGui::BeginChild("curves", ImVec2(0, std::max(120.0F, ImGui::GetContentRegionAvail().y - strips_block)), false);
   // Index joints on the left, thumb and wrist on the right: six angles in three rows, so the
   // finger length and the label strips that explain every gap stay on screen at 1280 x 800.
   SeriesPlotOptions o;
-  o.height_px = 52;
+  o.height_px = 46;
   if (ImGui::BeginTable("angles", 2, ImGuiTableFlags_SizingStretchSame)) {
     for (int row = 0; row < 3; ++row) {
       for (int a : {row, row + 3}) {
@@ -121,17 +134,12 @@ void ReviewTrialView::draw(ReviewState& state, const PictureRenderer& renderer) 
   o.y_label = "length (mm)";
   o.x_label = "time (s)";
   plot("finger", range).draw("finger", series_for(s, false, finger_, each_controller_), o);
+  ImGui::EndChild();
 
-  ImGui::TextDisabled("Ray-traced label per controller, fingers thumb to pinky top to bottom:");
+  ImGui::TextDisabled("Ray-traced labels per controller (thumb at the top):");
   ImGui::SameLine();
   draw_label_legend();
-  std::vector<LabelStrip> strips;
-  for (const auto& d : s.devices) {
-    for (int k = 0; k < kNumFingers; ++k) {
-      strips.push_back({"LMC" + std::to_string(d.device_id), kFingerWords[k], d.label[static_cast<size_t>(k)]});
-    }
-  }
-  draw_label_strips("labels", s.time_s, strips, *range, 4.0F);
+  draw_label_strips("labels", s.time_s, strips, *range, kStripPx);
   ImGui::EndChild();
   ImGui::SameLine();
   ImGui::BeginChild("replay", ImVec2(0, 0), false, ImGuiWindowFlags_NoScrollbar | ImGuiWindowFlags_NoScrollWithMouse);
