@@ -40,6 +40,12 @@ void validity_bias_rmse(const TrialResult& r, Measure measure, double& bias, dou
   rmse = std::sqrt(sq / count);
 }
 
+// The rows' name for a method: its own ("default") unless the caller named it ("corrected"); short,
+// so the rows keep their columns.
+std::string label_of(const MethodValidity& m) {
+  return m.label.empty() ? std::string(fusion_method_name(m.method)) : m.label;
+}
+
 }  // namespace
 
 MethodValidity method_validity(const TrialResult& r) {
@@ -75,7 +81,7 @@ std::string format_validity(const std::string& title, const std::vector<MethodVa
   out += head;
   if (!methods.empty() && std::isfinite(methods.front().vicon_finger_mean[0]))
     out += validity_row("Vicon", methods.front().vicon_finger_mean.data(), kNumFingers);
-  for (const auto& m : methods) out += validity_row(std::string(fusion_method_name(m.method)) + " fusion", m.finger_mean.data(), kNumFingers);
+  for (const auto& m : methods) out += validity_row(label_of(m) + " fusion", m.finger_mean.data(), kNumFingers);
   if (!methods.empty()) {
     const ConsensusReport& c = methods.front().consensus;
     double median[kNumFingers], lo[kNumFingers], hi[kNumFingers];
@@ -103,22 +109,22 @@ std::string format_validity(const std::string& title, const std::vector<MethodVa
         if (std::isfinite(v) && !(v >= seg[f])) seg[f] = v;
       }
     }
-    out += validity_row(std::string(fusion_method_name(m.method)) + ": fused - median (mm)", d, kNumFingers);
-    out += validity_row(std::string(fusion_method_name(m.method)) + ": min. segment - shortest ctrl.", seg, kNumFingers);
-    out += validity_row(std::string(fusion_method_name(m.method)) + ": fused point to seeing ctrl. (mm)", pd, kNumFingers);
+    out += validity_row(label_of(m) + ": fused - median (mm)", d, kNumFingers);
+    out += validity_row(label_of(m) + ": min. segment - shortest ctrl.", seg, kNumFingers);
+    out += validity_row(label_of(m) + ": fused point to seeing ctrl. (mm)", pd, kNumFingers);
   }
   if (!methods.empty() && std::isfinite(methods.front().vicon_finger_mean[0])) {
     out += "  against Vicon, per frame (LMC - Vicon)\n";
     for (const auto& m : methods) {
-      out += validity_row(std::string(fusion_method_name(m.method)) + ": finger bias (mm)", m.finger_bias.data(), kNumFingers);
-      out += validity_row(std::string(fusion_method_name(m.method)) + ": finger RMSE (mm)", m.finger_rmse.data(), kNumFingers);
+      out += validity_row(label_of(m) + ": finger bias (mm)", m.finger_bias.data(), kNumFingers);
+      out += validity_row(label_of(m) + ": finger RMSE (mm)", m.finger_rmse.data(), kNumFingers);
     }
     std::snprintf(head, sizeof head, "  %-40s %7s %7s %7s %7s %7s %7s\n", "joint angle (deg)", "idxMCP", "idxPIP",
                   "idxDIP", "thbMCP", "thbDIP", "wrist");
     out += head;
     for (const auto& m : methods) {
-      out += validity_row(std::string(fusion_method_name(m.method)) + ": bias", m.angle_bias.data(), kNumAngles);
-      out += validity_row(std::string(fusion_method_name(m.method)) + ": RMSE", m.angle_rmse.data(), kNumAngles);
+      out += validity_row(label_of(m) + ": bias", m.angle_bias.data(), kNumAngles);
+      out += validity_row(label_of(m) + ": RMSE", m.angle_rmse.data(), kNumAngles);
     }
   }
   return out;

@@ -48,6 +48,16 @@ TEST(LmcLengthCorrection, FitsOnOneTrialAppliesToAnotherAndRefusesWhatItCannotDo
   EXPECT_NE(applied.out.find("length correction of subject S01 (fitted on Naiv_Static101, vicon): factors"), std::string::npos);
   EXPECT_NE(lmc::test::read_text_file(dir / "out" / "Naiv_Index101.summary.json").find("\"length_correction\""), std::string::npos);
 
+  // lmc validate shows the corrected fusion as a third method beside the study's and ours.
+  const CliRun validated = run_lmc("validate " + shell_quote((sim / "LMC_Naiv_Index101.raw.txt").string()) +
+                                   " --length-correction " + shell_quote(file));
+  ASSERT_EQ(validated.exit_code, 0) << validated.all();
+  EXPECT_NE(validated.out.find("corrected = default fusion with the finger-length correction of subject S01 ("),
+            std::string::npos) << validated.out;
+  EXPECT_NE(validated.out.find("\n  default fusion "), std::string::npos) << validated.out;
+  EXPECT_NE(validated.out.find("\n  corrected fusion "), std::string::npos) << validated.out;
+  EXPECT_NE(validated.out.find("\n  corrected: finger RMSE (mm)"), std::string::npos) << validated.out;
+
   const CliRun reference = run_lmc("process " + q + " --method reference --length-correction " + shell_quote(file) + " -o " +
                                    shell_quote((dir / "ref").string()));
   EXPECT_EQ(reference.exit_code, 1);
@@ -70,6 +80,10 @@ TEST(LmcLengthCorrection, FitsOnOneTrialAppliesToAnotherAndRefusesWhatItCannotDo
                              shell_quote((dir / "bad").string()));
   EXPECT_EQ(bad.exit_code, 1);
   EXPECT_NE(bad.err.find((dir / "bad.json").string() + ": at /factor: expected 5 numbers"), std::string::npos) << bad.err;
+  const CliRun bad_validate = run_lmc("validate " + q + " --length-correction " + shell_quote((dir / "bad.json").string()));
+  EXPECT_EQ(bad_validate.exit_code, 1);
+  EXPECT_NE(bad_validate.err.find((dir / "bad.json").string() + ": at /factor: expected 5 numbers"), std::string::npos)
+      << bad_validate.err;
 }
 
 }  // namespace length_correction_cli_test

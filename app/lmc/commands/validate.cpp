@@ -1,7 +1,8 @@
 // lmc validate: how valid the fused hand is on given trials (issue #16) — for each fusion method,
 // finger lengths and joint angles against Vicon and, needing no Vicon, against the controllers
 // that see each finger (core/processing/validity.h). Real recordings are listed before simulated
-// ones (the simulator is ours: a figure from it can flatter us).
+// ones (the simulator is ours: a figure from it can flatter us). With --length-correction, ours with
+// the subject's finger-length correction is a third method.
 #include <cmath>
 #include <filesystem>
 #include <iostream>
@@ -12,6 +13,7 @@
 #include "app/lmc/command.h"
 #include "core/common/error.h"
 #include "core/io/recorder_sidecar.h"
+#include "core/processing/length_correction_json.h"
 #include "core/processing/session.h"
 #include "core/processing/validity.h"
 
@@ -21,6 +23,7 @@ struct ValidateOptions {
   std::vector<std::string> inputs;
   std::string vicon;
   std::string layout;
+  std::string length_correction;
 };
 
 void setup_validate(CLI::App& app) {
@@ -28,7 +31,11 @@ void setup_validate(CLI::App& app) {
   app.add_option("inputs", opt->inputs, "LMC recordings or folders of trials (as lmc process takes them)")->required();
   app.add_option("--vicon", opt->vicon, "Vicon file (.trc/.c3d) of the LMC files given (folders find theirs by name)");
   app.add_option("--layout", opt->layout, "Layout (name or file); default: the recorder sidecar's, else by trial name");
+  app.add_option("--length-correction", opt->length_correction,
+                 "Also validate the default fusion with this subject's finger-length correction (lmc length-correction fit)");
   app.callback([opt] {
+    std::optional<lmc::LengthCorrection> correction;
+    if (!opt->length_correction.empty()) correction = lmc::read_length_correction(opt->length_correction);
     struct Block {
       bool simulated = false;
       std::string text;
@@ -45,9 +52,12 @@ void setup_validate(CLI::App& app) {
         if (job.sidecar) simulated = lmc::read_recorder_sidecar(*job.sidecar).backend == "sim";
         std::vector<lmc::MethodValidity> methods;
         std::string layout_used, frames;
-        for (const auto method : {lmc::FusionMethod::kReference, lmc::FusionMethod::kDefault}) {
+        // The study's method, ours, and ours with the subject's length correction when one is given.
+        const int passes = correction ? 3 : 2;
+        for (int pass = 0; pass < passes; ++pass) {
           lmc::SessionOptions so;
-          so.process.method = method;
+          so.process.method = pass == 0 ? lmc::FusionMethod::kReference : lmc::FusionMethod::kDefault;
+          if (pass == 2) so.process.length_correction = correction;
           if (!opt->layout.empty()) so.layout = opt->layout;
           std::optional<lmc::TrialResult> kept;
           so.on_result = [&kept](const lmc::TrialResult& r) { kept = r; };
@@ -57,10 +67,14 @@ void setup_validate(CLI::App& app) {
           layout_used = out.layout_used;
           frames = std::to_string(kept->fused.frame_count);
           methods.push_back(lmc::method_validity(*kept));
+          if (pass == 2) methods.back().label = "corrected";
         }
         const bool with_vicon = std::isfinite(methods.front().vicon_finger_mean[0]);
         const std::string title = std::string(simulated ? "SIMULATOR" : "REAL DATA") + ": " + job.trial + " (" + frames +
-                                  " frames, layout " + layout_used + (with_vicon ? ", with Vicon" : ", no Vicon") + ")";
+                                  " frames, layout " + layout_used + (with_vicon ? ", with Vicon" : ", no Vicon") + ")" +
+                                  (correction ? "\n  corrected = default fusion with the finger-length correction of subject " +
+                                                    correction->subject + " (" + opt->length_correction + ")"
+                                              : std::string());
         blocks.push_back({simulated, lmc::format_validity(title, methods)});
       }
     }
