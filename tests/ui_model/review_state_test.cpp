@@ -172,6 +172,20 @@ TEST_F(ReviewModel, TheStateSelectsATrialAndLoadsItsSeriesOnOneTimeAxis) {
   EXPECT_DOUBLE_EQ(state.x_range()->extent_lo(), s.time_s.front());
   EXPECT_DOUBLE_EQ(state.x_range()->extent_hi(), s.time_s.back());
 
+  // A trial preferred after the batch is in (--capture's LMC_REVIEW_TRIAL, the tab shown last) is
+  // selected at once, not only when a later batch arrives.
+  const std::string other = state.trials()[1].job.trial;
+  state.prefer_trial(other);
+  EXPECT_EQ(state.selected(), 1);
+  while ((state.busy() || !state.view() || state.view()->series.trial != other) &&
+         std::chrono::steady_clock::now() < deadline) {
+    state.update();
+    std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  }
+  ASSERT_TRUE(state.view());
+  EXPECT_EQ(state.view()->series.trial, other);
+  state.select(0);
+
   // Filtering by motion keeps one of the two trials; a text filter is case-blind.
   TrialFilter f;
   f.motion = "static";

@@ -108,6 +108,19 @@ void ReviewState::select(int index) {
   view_job_.start(t.job, options_);
 }
 
+void ReviewState::prefer_trial(std::string name) {
+  preferred_trial_ = std::move(name);
+  // The trials may be in already (processed while other tabs were shown), with the first one that
+  // has Vicon chosen for want of a choice: take the preferred one now.
+  if (!batch_) return;
+  for (size_t k = 0; k < batch_->trials.size(); ++k) {
+    if (batch_->trials[k].job.trial == preferred_trial_) {
+      select(static_cast<int>(k));
+      return;
+    }
+  }
+}
+
 void ReviewState::update() {
   if (job_finished(batch_job_.state())) {
     if (auto r = batch_job_.result(); r && r != batch_) {

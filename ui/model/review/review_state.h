@@ -59,9 +59,10 @@ class ReviewState {
   void set_sort(const TrialSort& sort) { sort_ = sort; }
   // Selects a trial (an index into trials()) and loads its full view in the background.
   void select(int index);
-  // The trial shown first after processing when none is selected (by name; `--capture` uses
-  // LMC_REVIEW_TRIAL to picture an interesting one). Default: the first trial with Vicon.
-  void prefer_trial(std::string name) { preferred_trial_ = std::move(name); }
+  // The trial shown first after processing when none is selected, or at once when the trials are
+  // in (by name; `--capture` uses LMC_REVIEW_TRIAL to picture an interesting one). Default: the
+  // first trial with Vicon.
+  void prefer_trial(std::string name);
   // The cache folder (tests point it at a scratch folder; default: the user's cache).
   void set_cache_dir(std::filesystem::path dir) { cache_dir_ = std::move(dir); }
 
