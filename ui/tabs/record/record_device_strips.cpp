@@ -44,8 +44,10 @@ void draw_record_device_strips(const devices::TrialSnapshot& live) {
   ImGui::TableSetupColumn("Slot");
   ImGui::TableSetupColumn("Controller");
   ImGui::TableSetupColumn("Rate");
-  ImGui::TableSetupColumn("Hand");
-  ImGui::TableSetupColumn("Frame age");
+  // Fixed widths for the cells whose text changes while recording: fitted to the first frame's
+  // "hand", the column cut a later "no hand" to "no ha".
+  ImGui::TableSetupColumn("Hand", ImGuiTableColumnFlags_WidthFixed, ImGui::CalcTextSize("no hand").x);
+  ImGui::TableSetupColumn("Frame age", ImGuiTableColumnFlags_WidthFixed, ImGui::CalcTextSize("Frame age").x);
   ImGui::TableSetupColumn("Dropped");
   ImGui::TableHeadersRow();
   for (const auto& d : live.hub.devices) {
