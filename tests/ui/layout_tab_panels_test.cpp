@@ -69,7 +69,7 @@ struct TabFixture : ::testing::Test {
   }
   std::function<void()> body() {
     return [this] {
-      tab->update();
+      tab->update(true);
       tab->draw();
     };
   }
@@ -343,10 +343,10 @@ TEST(LayoutTabSharedLayout, PublishesTheCommittedLayoutNotADragInProgress) {
   DevicePose p = tab.state().layout().devices[1].pose;
   p.x_mm += 50;
   ASSERT_TRUE(preview_device_pose(tab.state().upd_history(), 1, p).ok);
-  gui.frames(2, [&] { tab.update(); });
+  gui.frames(2, [&] { tab.update(true); });
   EXPECT_EQ(shared.version(), published);
   ASSERT_TRUE(commit_device_pose(tab.state().upd_history(), 1, "Move"));
-  gui.frames(2, [&] { tab.update(); });
+  gui.frames(2, [&] { tab.update(true); });
   EXPECT_EQ(shared.version(), published + 1);
   EXPECT_EQ(shared.get().devices[1].pose.x_mm, p.x_mm);
 }

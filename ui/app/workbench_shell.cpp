@@ -99,7 +99,7 @@ std::string WorkbenchShell::window_title() const {
 
 void WorkbenchShell::frame() {
   const auto start = std::chrono::steady_clock::now();
-  for (auto& t : tabs_) t->update();
+  for (size_t i = 0; i < tabs_.size(); ++i) tabs_[i]->update(ids_[i] == active_id_);
   if (!context_->tab_request().empty()) {
     select_tab(context_->tab_request());
     context_->tab_request().clear();

@@ -1,7 +1,8 @@
 #pragma once
 // A workbench tab: one area of the product (Layout, Devices, Record, Review). The shell calls
-// update() every frame before any drawing (poll jobs, drain device snapshots, refresh caches),
-// then draw() inside the tab's region. draw() only emits ImGui calls.
+// update() on every tab every frame before any drawing (poll jobs, drain device snapshots, refresh
+// caches), telling each whether it is the one on screen, then draw() for that one inside its
+// region. draw() only emits ImGui calls.
 #include <filesystem>
 #include <memory>
 #include <optional>
@@ -18,7 +19,9 @@ enum class FileCommand { kNew, kOpen, kSave, kSaveAs };
 class Tab {
  public:
   virtual ~Tab() = default;
-  virtual void update() {}
+  // `shown`: this tab was the one on screen in the last frame. Work only a person looking at the
+  // tab needs (the Layout heatmap) waits for it; recording, processing and the optimiser do not.
+  virtual void update(bool /*shown*/) {}
   virtual void draw() = 0;
   // Text for the window title (e.g. the open layout file and an unsaved mark); empty for none.
   virtual std::string document_title() const { return {}; }

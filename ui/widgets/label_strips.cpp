@@ -33,7 +33,6 @@ float label_strips_height(const std::vector<LabelStrip>& strips, float strip_hei
 void draw_label_strips(const char* id, std::span<const double> x, const std::vector<LabelStrip>& strips,
                        LinkedXRange& range, float strip_height_px) {
   ImGui::PushID(id);
-  const float gap = kStripGap, group_gap = kGroupGap;
   const float height = label_strips_height(strips, strip_height_px);
   const ImVec2 top = ImGui::GetCursorScreenPos();
   const float width = std::max(120.0F, ImGui::GetContentRegionAvail().x);
@@ -54,7 +53,7 @@ void draw_label_strips(const char* id, std::span<const double> x, const std::vec
   std::string tooltip;
   for (size_t s = 0; s < strips.size(); ++s) {
     const LabelStrip& strip = strips[s];
-    if (s > 0 && strip.group != strips[s - 1].group) y += group_gap;
+    if (s > 0 && strip.group != strips[s - 1].group) y += kGroupGap;
     if (s == 0 || strip.group != strips[s - 1].group) {
       dl->AddText(ImGui::GetFont(), ImGui::GetFontSize() * 0.85F, ImVec2(top.x, y - 2), kPlotTickText,
                   strip.group.c_str());
@@ -67,7 +66,7 @@ void draw_label_strips(const char* id, std::span<const double> x, const std::vec
                         label_colour(r.label));
     }
     dl->PopClipRect();
-    if (hovered && io.MousePos.y >= y - gap && io.MousePos.y < y + strip_height_px + gap && !x.empty()) {
+    if (hovered && io.MousePos.y >= y - kStripGap && io.MousePos.y < y + strip_height_px + kStripGap && !x.empty()) {
       const auto it = std::lower_bound(x.begin(), x.end(), mouse_x);
       size_t i = static_cast<size_t>(it - x.begin());
       if (i >= x.size()) i = x.size() - 1;
@@ -78,7 +77,7 @@ void draw_label_strips(const char* id, std::span<const double> x, const std::vec
         tooltip = buf;
       }
     }
-    y += strip_height_px + gap;
+    y += strip_height_px + kStripGap;
   }
   if (range.cursor && *range.cursor >= lo && *range.cursor <= hi) {
     const float cx = to_x(*range.cursor);

@@ -112,13 +112,15 @@ void ReviewState::prefer_trial(std::string name) {
   preferred_trial_ = std::move(name);
   // The trials may be in already (processed while other tabs were shown), with the first one that
   // has Vicon chosen for want of a choice: take the preferred one now.
-  if (!batch_) return;
-  for (size_t k = 0; k < batch_->trials.size(); ++k) {
-    if (batch_->trials[k].job.trial == preferred_trial_) {
-      select(static_cast<int>(k));
-      return;
-    }
+  if (const int k = preferred_index(); k >= 0) select(k);
+}
+
+int ReviewState::preferred_index() const {
+  if (preferred_trial_.empty()) return -1;
+  for (size_t k = 0; k < trials().size(); ++k) {
+    if (trials()[k].job.trial == preferred_trial_) return static_cast<int>(k);
   }
+  return -1;
 }
 
 void ReviewState::update() {
@@ -131,11 +133,9 @@ void ReviewState::update() {
       for (size_t k = 0; k < batch_->trials.size(); ++k) {
         if (trial_key(batch_->trials[k]) == selected_trial_) selected_ = static_cast<int>(k);
       }
-      // Nothing chosen yet: show the first trial that has Vicon, so the view is never empty for
-      // no reason.
-      for (size_t k = 0; k < batch_->trials.size() && selected_ < 0 && !preferred_trial_.empty(); ++k) {
-        if (batch_->trials[k].job.trial == preferred_trial_) selected_ = static_cast<int>(k);
-      }
+      // Nothing chosen yet: the preferred trial, else the first that has Vicon, so the view is
+      // never empty for no reason.
+      if (selected_ < 0) selected_ = preferred_index();
       if (selected_ < 0) {
         for (size_t k = 0; k < batch_->trials.size() && selected_ < 0; ++k) {
           if (batch_->trials[k].row.status == TrialRowStatus::kOk) selected_ = static_cast<int>(k);

@@ -106,6 +106,7 @@ class ReviewState {
   const std::string& problem() const { return problem_; }
 
  private:
+  int preferred_index() const;  // index of the preferred trial in trials(), or -1
   std::vector<std::filesystem::path> folders_;
   SessionOptions options_;
   std::filesystem::path cache_dir_;

@@ -44,7 +44,7 @@ class DevicesTab final : public Tab {
     std::snprintf(trial_, sizeof trial_, "%s", "test_trial_1");
   }
 
-  void update() override {
+  void update(bool /*shown*/) override {
     vm_.refresh();
     // Layout restarts and trial outcomes reach the status bar whichever tab started them.
     const auto& log = vm_.messages();

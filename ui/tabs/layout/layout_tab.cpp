@@ -139,16 +139,14 @@ SceneRenderer* LayoutTab::renderer() {
   return renderer_.get();
 }
 
-void LayoutTab::update() {
+void LayoutTab::update(bool shown) {
   const auto now = std::chrono::steady_clock::now();
   if (stats_frames_wanted_ > 0 && stats_frame_ > 0 && stats_frame_ <= stats_frames_wanted_) {
     interval_ms_.push_back(std::chrono::duration<double, std::milli>(now - frame_start_).count());
   }
   frame_start_ = now;
   if (stats_frames_wanted_ > 0) scripted_drag_step();
-  // The shell updates every tab each frame but draws only the shown one (draw() sets the flag).
-  state_->update(static_cast<double>(ImGui::GetIO().DeltaTime), drawn_since_update_);
-  drawn_since_update_ = false;
+  state_->update(static_cast<double>(ImGui::GetIO().DeltaTime), shown);
   // The committed layout, not the scratch copy: a drag in progress would restart the rig every frame.
   if (shared_layout_ != nullptr) shared_layout_->publish(state_->history().head().layout);
   if (stats_frames_wanted_ > 0) {
@@ -438,7 +436,6 @@ void LayoutTab::draw_panel_side() {
 
 void LayoutTab::draw() {
   LayoutTabState& s = *state_;
-  drawn_since_update_ = true;
   handle_shortcuts();
   draw_toolbar();
 

@@ -41,7 +41,7 @@ class LayoutTab final : public Tab {
   LayoutTab(StatusSink& status, std::unique_ptr<SceneRenderer> renderer = nullptr, CurrentLayout* shared = nullptr);
   ~LayoutTab() override;
 
-  void update() override;
+  void update(bool shown) override;
   void draw() override;
   std::string document_title() const override;
   bool has_unsaved_changes() const override;
@@ -89,7 +89,6 @@ class LayoutTab final : public Tab {
   // ghost controllers and the comparison table are in the picture.
   std::string capture_panel_;
   int capture_panel_frames_ = 0;
-  bool drawn_since_update_ = false;  // the tab was on screen last frame
 
   StatusSink& status_;
   CurrentLayout* shared_layout_ = nullptr;

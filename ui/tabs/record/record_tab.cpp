@@ -41,7 +41,7 @@ class RecordTab final : public Tab {
     }
   }
 
-  void update() override {
+  void update(bool /*shown*/) override {
     if (open_at_start_) {
       open_at_start_ = false;
       open();

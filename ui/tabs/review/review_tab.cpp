@@ -26,7 +26,7 @@ class ReviewTab final : public Tab {
     take_review_requests();
   }
 
-  void update() override {
+  void update(bool /*shown*/) override {
     take_review_requests();
     const bool was_busy = state_.batch_job().running();
     state_.update();
