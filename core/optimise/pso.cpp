@@ -12,6 +12,7 @@
 #include <random>
 
 #include "core/common/error.h"
+#include "core/metric/cost_lower_bound.h"
 #include "core/metric/placement_metric.h"
 #include "core/optimise/swarm_evaluator.h"
 #include "core/visibility/device_view.h"
@@ -32,6 +33,7 @@ PsoResult run_pso(const Layout& start, const SearchSpace& space, std::span<const
   if (s.iterations < 0 || s.iterations > 1000000) throw Error("iterations must be 0…1000000");
   if (!std::isfinite(s.w) || !std::isfinite(s.c1) || !std::isfinite(s.c2)) throw Error("w, c1, c2 must be finite");
   if (s.threads < 0) throw Error("threads must be ≥ 0 (0 = all)");
+  if (s.prune_round_frames < 0) throw Error("prune_round_frames must be ≥ 0 (0 = no pruning)");
   if (frames.empty()) throw Error("the pose set is empty");
 
   const int devices = start.device_count();
@@ -77,35 +79,95 @@ PsoResult run_pso(const Layout& start, const SearchSpace& space, std::span<const
   arena = std::make_unique<tbb::task_arena>(s.threads > 0 ? s.threads : tbb::this_task_arena::max_concurrency());
 
   std::vector<DeviceView> views(np * nd);
-  std::vector<std::int64_t> counts(np * (nd + 1));
-  std::vector<LayoutTally> tallies(s.metric == PlacementMetricKind::kRobust ? np : 0, LayoutTally(devices));
   std::vector<double> cost(np);
+  std::vector<double> footprint(np, 0.0);
   PsoResult result;
   result.status = JobStatus::kCompleted;
   result.metric = s.metric;
+
+  // The pose set is counted in rounds (cost_lower_bound.h): after each round, a particle whose
+  // best-case cost already reaches its own best cannot improve on it (improvement is strict), nor
+  // on the swarm's best (never above its own), so its remaining frames are skipped. Every
+  // comparison the swarm makes comes out as without the rounds: the search is the same, bit for
+  // bit. Rounds take every R-th chunk of frames so that each spans the whole pose set (all
+  // reference poses), which lets a poor particle show early; counts are integers, so the order
+  // changes nothing else.
+  const bool robust = s.metric == PlacementMetricKind::kRobust;
+  const bool prune = s.prune_round_frames > 0 && (!robust || robust_bound_holds(s.weights));
+  const std::vector<FrameRun> chunks = chunk_runs(frames.size());
+  std::vector<std::vector<FrameRun>> rounds;
+  {
+    const size_t per_round =
+        prune ? std::max<size_t>(1, static_cast<size_t>(s.prune_round_frames) / kSwarmChunkFrames) : chunks.size();
+    const size_t count = (chunks.size() + per_round - 1) / per_round;
+    rounds.resize(count);
+    for (size_t c = 0; c < chunks.size(); ++c) rounds[c % count].push_back(chunks[c]);
+  }
+  const auto total_frames = static_cast<std::int64_t>(frames.size());
+  std::vector<std::int64_t> partial_counts(np * (nd + 1));
+  std::vector<LayoutTally> partial_tallies(robust ? np : 0, LayoutTally(devices));
+  std::vector<size_t> active;
+  std::vector<DeviceView> active_views;
+  std::vector<std::int64_t> round_counts;
+  std::vector<LayoutTally> round_tallies;
 
   // Evaluates the whole swarm; false when cancelled.
   auto evaluate = [&]() {
     for (size_t i = 0; i < np; ++i) {
       const Layout l = layout_of(&x[i * dim]);
       for (size_t d = 0; d < nd; ++d) views[i * nd + d] = DeviceView::from_device(l.devices[d]);
+      if (robust) footprint[i] = footprint_overlap_share(l);
     }
-    bool ok = false;
-    if (s.metric == PlacementMetricKind::kStudy) {
-      arena->execute([&] { ok = worst_finger_histograms(views, s.particles, devices, frames, limits, counts, stop); });
-      if (!ok) return false;
-      for (size_t i = 0; i < np; ++i) {
-        cost[i] = placement_metric(std::span<const std::int64_t>(counts).subspan(i * (nd + 1), nd + 1));
+    active.resize(np);
+    for (size_t i = 0; i < np; ++i) active[i] = i;
+    std::fill(partial_counts.begin(), partial_counts.end(), 0);
+    for (auto& t : partial_tallies) t = LayoutTally(devices);
+    std::int64_t counted = 0;
+    for (size_t r = 0; r < rounds.size() && !active.empty(); ++r) {
+      const auto na = static_cast<int>(active.size());
+      active_views.clear();
+      for (const size_t i : active) active_views.insert(active_views.end(), &views[i * nd], &views[i * nd] + nd);
+      std::int64_t round_frames = 0;
+      for (const FrameRun& run : rounds[r]) round_frames += static_cast<std::int64_t>(run.count);
+      bool ok = false;
+      if (!robust) {
+        round_counts.assign(active.size() * (nd + 1), 0);
+        arena->execute([&] {
+          ok = worst_finger_histograms(active_views, na, devices, frames, rounds[r], limits, round_counts, stop);
+        });
+        if (!ok) return false;
+        for (size_t a = 0; a < active.size(); ++a) {
+          for (size_t k = 0; k <= nd; ++k) partial_counts[active[a] * (nd + 1) + k] += round_counts[a * (nd + 1) + k];
+        }
+      } else {
+        round_tallies.assign(active.size(), LayoutTally(devices));
+        arena->execute([&] {
+          ok = layout_tallies(active_views, na, devices, frames, rounds[r], limits, s.axis_cut_mm, round_tallies, stop);
+        });
+        if (!ok) return false;
+        for (size_t a = 0; a < active.size(); ++a) partial_tallies[active[a]].add(round_tallies[a]);
       }
-    } else {
-      arena->execute([&] { ok = layout_tallies(views, s.particles, devices, frames, limits, s.axis_cut_mm, tallies, stop); });
-      if (!ok) return false;
-      for (size_t i = 0; i < np; ++i) {
-        cost[i] = robust_terms(tallies[i], footprint_overlap_share(layout_of(&x[i * dim])), s.weights).total;
-      }
+      counted += round_frames;
+      result.device_frame_evaluations += static_cast<std::int64_t>(active.size() * nd) * round_frames;
+      if (r + 1 == rounds.size()) break;
+      const std::int64_t remaining = total_frames - counted;
+      std::erase_if(active, [&](size_t i) {
+        if (!std::isfinite(pbest_cost[i])) return false;
+        const double bound =
+            robust ? robust_cost_lower_bound(partial_tallies[i], remaining, footprint[i], s.weights)
+                   : study_cost_lower_bound(std::span<const std::int64_t>(partial_counts).subspan(i * (nd + 1), nd + 1),
+                                            remaining);
+        if (!(bound >= pbest_cost[i])) return false;
+        cost[i] = std::numeric_limits<double>::infinity();  // stands for "not below its best": never compared further
+        ++result.layouts_pruned;
+        return true;
+      });
+    }
+    for (const size_t i : active) {
+      cost[i] = robust ? robust_terms(partial_tallies[i], footprint[i], s.weights).total
+                       : placement_metric(std::span<const std::int64_t>(partial_counts).subspan(i * (nd + 1), nd + 1));
     }
     result.layout_evaluations += s.particles;
-    result.device_frame_evaluations += static_cast<std::int64_t>(np * nd * frames.size());
     // Personal and global bests: strict improvement; ties keep the earlier (lower index) one.
     for (size_t i = 0; i < np; ++i) {
       if (cost[i] < pbest_cost[i]) {

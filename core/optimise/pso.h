@@ -4,6 +4,10 @@
 // through a callback on the calling thread after every iteration, checks the stop token between
 // chunks of work, and returns Completed or Cancelled with the best layout found so far.
 //
+// Pruning: a particle is counted on the pose set in rounds and dropped as soon as a lower bound
+// on its cost reaches its own best (cost_lower_bound.h); that changes no comparison, so the
+// search is the same with or without it (PsoSettings::prune_round_frames).
+//
 // Determinism: every random number is drawn on the calling thread from one std::mt19937_64 seeded
 // with `seed`, in a fixed order; the cost of a particle is computed from integer counts, so the
 // result is identical for any number of threads.
@@ -46,6 +50,10 @@ struct PsoSettings {
   PlacementMetricKind metric = PlacementMetricKind::kStudy;
   RobustWeights weights;
   double axis_cut_mm = kAxisCutMm;
+  // Frames counted between two checks of the pruning bound (cost_lower_bound.h; rounded down to
+  // whole chunks of 64). 0 counts every particle on every frame. The result is the same either
+  // way; only the time differs.
+  int prune_round_frames = 1024;
 };
 
 enum class JobStatus : int { kCompleted = 0, kCancelled = 1 };
@@ -70,7 +78,8 @@ struct PsoResult {
   std::vector<double> best_cost_history;  // best cost after the initial swarm and each iteration
   int iterations_done = 0;
   std::int64_t layout_evaluations = 0;
-  std::int64_t device_frame_evaluations = 0;
+  std::int64_t device_frame_evaluations = 0;  // (device, frame) visibility tests actually run
+  std::int64_t layouts_pruned = 0;            // layout evaluations stopped early by the bound
   double seconds = 0;
 };
 

@@ -5,6 +5,7 @@
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
+#include <string>
 #include <vector>
 
 #include "core/common/error.h"
@@ -15,42 +16,59 @@
 namespace lmc {
 namespace {
 
-// Frames per task: small enough that a chunk's prepared frames stay in the core's L2 cache while
-// every layout and device runs over them.
-constexpr size_t kChunkFrames = 64;
+void check_runs(std::span<const FrameRun> runs, size_t frames, const char* who) {
+  for (const FrameRun& r : runs) {
+    if (r.count > kSwarmChunkFrames || r.begin > frames || r.count > frames - r.begin) {
+      throw Error(std::string(who) + ": a run of frames lies outside the pose set or exceeds a chunk");
+    }
+  }
+}
 
 }  // namespace
+
+std::vector<FrameRun> chunk_runs(size_t frames) {
+  std::vector<FrameRun> runs;
+  runs.reserve((frames + kSwarmChunkFrames - 1) / kSwarmChunkFrames);
+  for (size_t b = 0; b < frames; b += kSwarmChunkFrames) runs.push_back({b, std::min(kSwarmChunkFrames, frames - b)});
+  return runs;
+}
 
 bool worst_finger_histograms(std::span<const DeviceView> views, int layouts, int devices,
                              std::span<const PreparedFrame> frames, const VisibilityLimits& limits,
                              std::span<std::int64_t> counts, std::stop_token stop) {
+  const std::vector<FrameRun> runs = chunk_runs(frames.size());
+  return worst_finger_histograms(views, layouts, devices, frames, runs, limits, counts, stop);
+}
+
+bool worst_finger_histograms(std::span<const DeviceView> views, int layouts, int devices,
+                             std::span<const PreparedFrame> frames, std::span<const FrameRun> runs,
+                             const VisibilityLimits& limits, std::span<std::int64_t> counts, std::stop_token stop) {
   if (devices < 1 || devices > kMaxDevices || layouts < 0 ||
       views.size() != static_cast<size_t>(layouts) * static_cast<size_t>(devices) ||
       counts.size() != static_cast<size_t>(layouts) * static_cast<size_t>(devices + 1)) {
     throw Error("worst_finger_histograms: inconsistent sizes");
   }
+  check_runs(runs, frames.size(), "worst_finger_histograms");
   const size_t hist_size = counts.size();
   tbb::enumerable_thread_specific<std::vector<std::int64_t>> local([&] { return std::vector<std::int64_t>(hist_size, 0); });
-  const size_t n = frames.size();
   const auto nd = static_cast<size_t>(devices);
-  tbb::parallel_for(tbb::blocked_range<size_t>(0, n, kChunkFrames), [&](const tbb::blocked_range<size_t>& r) {
+  tbb::parallel_for(tbb::blocked_range<size_t>(0, runs.size(), 1), [&](const tbb::blocked_range<size_t>& rr) {
     if (stop.stop_requested()) return;
     auto& hist = local.local();
-    FingerBits bits[kMaxDevices][kChunkFrames];
-    for (size_t begin = r.begin(); begin < r.end(); begin += kChunkFrames) {
-      const size_t end = std::min(r.end(), begin + kChunkFrames);
+    FingerBits bits[kMaxDevices][kSwarmChunkFrames];
+    for (size_t ri = rr.begin(); ri < rr.end(); ++ri) {
+      const std::span<const PreparedFrame> run = frames.subspan(runs[ri].begin, runs[ri].count);
       for (int l = 0; l < layouts; ++l) {
         const auto ll = static_cast<size_t>(l);
         // One kernel call per device and chunk: the device's view stays in registers over the
         // chunk's frames (visibility_kernel.h).
         for (size_t d = 0; d < nd; ++d) {
-          device_visibility(views[ll * nd + d], frames.subspan(begin, end - begin), limits,
-                            std::span<FingerBits>(bits[d], end - begin));
+          device_visibility(views[ll * nd + d], run, limits, std::span<FingerBits>(bits[d], run.size()));
         }
         std::int64_t* h = hist.data() + ll * (nd + 1);
-        for (size_t j = begin; j < end; ++j) {
+        for (size_t j = 0; j < run.size(); ++j) {
           FingerBits fb[kMaxDevices];
-          for (size_t d = 0; d < nd; ++d) fb[d] = bits[d][j - begin];
+          for (size_t d = 0; d < nd; ++d) fb[d] = bits[d][j];
           ++h[static_cast<size_t>(worst_finger_count(fb, devices))];
         }
       }
@@ -67,39 +85,47 @@ bool worst_finger_histograms(std::span<const DeviceView> views, int layouts, int
 bool layout_tallies(std::span<const DeviceView> views, int layouts, int devices, std::span<const PreparedFrame> frames,
                     const VisibilityLimits& limits, double axis_cut_mm, std::span<LayoutTally> tallies,
                     std::stop_token stop) {
+  const std::vector<FrameRun> runs = chunk_runs(frames.size());
+  return layout_tallies(views, layouts, devices, frames, runs, limits, axis_cut_mm, tallies, stop);
+}
+
+bool layout_tallies(std::span<const DeviceView> views, int layouts, int devices, std::span<const PreparedFrame> frames,
+                    std::span<const FrameRun> runs, const VisibilityLimits& limits, double axis_cut_mm,
+                    std::span<LayoutTally> tallies, std::stop_token stop) {
   if (devices < 1 || devices > kMaxDevices || layouts < 0 ||
       views.size() != static_cast<size_t>(layouts) * static_cast<size_t>(devices) ||
       tallies.size() != static_cast<size_t>(layouts)) {
     throw Error("layout_tallies: inconsistent sizes");
   }
+  check_runs(runs, frames.size(), "layout_tallies");
   using Tallies = std::vector<LayoutTally>;
   tbb::enumerable_thread_specific<Tallies> local([&] { return Tallies(static_cast<size_t>(layouts), LayoutTally(devices)); });
-  const size_t n = frames.size();
   const auto nd = static_cast<size_t>(devices);
-  tbb::parallel_for(tbb::blocked_range<size_t>(0, n, kChunkFrames), [&](const tbb::blocked_range<size_t>& r) {
+  tbb::parallel_for(tbb::blocked_range<size_t>(0, runs.size(), 1), [&](const tbb::blocked_range<size_t>& rr) {
     if (stop.stop_requested()) return;
     auto& mine = local.local();
-    FingerBits bits[kMaxDevices][kChunkFrames];
-    FingerBits cut[kMaxDevices][kChunkFrames];
-    for (size_t begin = r.begin(); begin < r.end(); begin += kChunkFrames) {
-      const size_t end = std::min(r.end(), begin + kChunkFrames);
+    FingerBits bits[kMaxDevices][kSwarmChunkFrames];
+    FingerBits cut[kMaxDevices][kSwarmChunkFrames];
+    for (size_t ri = rr.begin(); ri < rr.end(); ++ri) {
+      const size_t begin = runs[ri].begin;
+      const std::span<const PreparedFrame> run = frames.subspan(begin, runs[ri].count);
       for (int l = 0; l < layouts; ++l) {
         const auto ll = static_cast<size_t>(l);
         const std::span<const DeviceView> layout_views = views.subspan(ll * nd, nd);
         // The kernel decides the axis cut while it has the markers in device coordinates, so the
         // tally does not transform them a second time.
         for (size_t d = 0; d < nd; ++d) {
-          device_visibility_with_cut(layout_views[d], frames.subspan(begin, end - begin), limits, axis_cut_mm,
-                                     std::span<FingerBits>(bits[d], end - begin),
-                                     std::span<FingerBits>(cut[d], end - begin));
+          device_visibility_with_cut(layout_views[d], run, limits, axis_cut_mm,
+                                     std::span<FingerBits>(bits[d], run.size()),
+                                     std::span<FingerBits>(cut[d], run.size()));
         }
-        for (size_t j = begin; j < end; ++j) {
+        for (size_t j = 0; j < run.size(); ++j) {
           FingerBits fb[kMaxDevices], fc[kMaxDevices];
           for (size_t d = 0; d < nd; ++d) {
-            fb[d] = bits[d][j - begin];
-            fc[d] = cut[d][j - begin];
+            fb[d] = bits[d][j];
+            fc[d] = cut[d][j];
           }
-          tally_frame(frames[j], layout_views, fb, fc, limits, mine[ll]);
+          tally_frame(run[j], layout_views, fb, fc, limits, mine[ll]);
         }
       }
     }

@@ -43,6 +43,25 @@ TEST(LmcOptimize, SmallSearchWritesALayoutAndJsonSummary) {
   EXPECT_EQ(lmc::load_layout(out2), l1);
 }
 
+// Stopping particles that cannot beat their own best changes nothing but the time: --exhaustive
+// writes the same layout and history (2,100 frames: three rounds of 1,024).
+TEST(LmcOptimize, ExhaustiveGivesTheSameLayoutAsThePrunedSearch) {
+  const auto dir = lmc::test::scratch_dir("cli_optimize_exhaustive");
+  const auto pruned = dir / "pruned.json", whole = dir / "whole.json";
+  const std::string common = "optimize --frames 2100 --particles 6 --iterations 5 --json --no-progress ";
+  const CliRun a = run_lmc(common + "-o " + lmc::test::shell_quote(pruned.string()), dir);
+  ASSERT_EQ(a.exit_code, 0) << a.err;
+  const CliRun b = run_lmc(common + "--exhaustive -o " + lmc::test::shell_quote(whole.string()), dir);
+  ASSERT_EQ(b.exit_code, 0) << b.err;
+  const auto ja = nlohmann::json::parse(a.out), jb = nlohmann::json::parse(b.out);
+  EXPECT_EQ(ja["best_cost_history"], jb["best_cost_history"]);
+  EXPECT_EQ(lmc::load_layout(pruned), lmc::load_layout(whole));
+  EXPECT_EQ(jb["layouts_stopped_early"], 0);
+  EXPECT_EQ(jb["device_frame_evaluations"], 6 * 6 * 4 * 2100);
+  EXPECT_GT(ja["layouts_stopped_early"].get<int>(), 0);
+  EXPECT_LT(ja["device_frame_evaluations"].get<long long>(), jb["device_frame_evaluations"].get<long long>());
+}
+
 TEST(LmcOptimize, RobustIsTheDefaultAndSaysWhatMadeTheLayout) {
   const auto dir = lmc::test::scratch_dir("cli_optimize_robust");
   const auto out = dir / "robust.json", study = dir / "study.json";

@@ -40,6 +40,7 @@ struct OptimizeOptions {
   std::string output;
   bool json = false;
   bool no_progress = false;
+  bool exhaustive = false;
   std::string metric = "robust";
   int starts = 1;
   lmc::RobustWeights weights;
@@ -111,6 +112,9 @@ void setup_optimize(CLI::App& app) {
       ->check(CLI::NonNegativeNumber);
   app.add_flag("--json", opt->json, "Print the summary as JSON on stdout");
   app.add_flag("--no-progress", opt->no_progress, "No progress bar on stderr");
+  app.add_flag("--exhaustive", opt->exhaustive,
+               "Count every particle on every frame instead of stopping one whose cost cannot beat its own best "
+               "(the same result, slower; to check that)");
   app.callback([opt] {
     lmc::Layout start;
     const bool from_layout = !opt->start.empty();
@@ -147,6 +151,7 @@ void setup_optimize(CLI::App& app) {
     s.phalanx_radius_mm = opt->radius_mm;
     s.metric = lmc::placement_metric_from_name(opt->metric, "--metric");
     s.weights = opt->weights;
+    if (opt->exhaustive) s.prune_round_frames = 0;
     const char* cost_name = s.metric == lmc::PlacementMetricKind::kStudy ? "M" : "R";
 
     const bool bar = !opt->no_progress && isatty(STDERR_FILENO) != 0;
@@ -173,11 +178,12 @@ void setup_optimize(CLI::App& app) {
                        poses.description + ", " + cost_name + " = " + std::to_string(r.best_cost);
     lmc::save_layout(best, opt->output);
     double seconds = 0;
-    std::int64_t layout_evaluations = 0, device_frame_evaluations = 0;
+    std::int64_t layout_evaluations = 0, device_frame_evaluations = 0, layouts_pruned = 0;
     for (const auto& run : multi.runs) {
       seconds += run.seconds;
       layout_evaluations += run.layout_evaluations;
       device_frame_evaluations += run.device_frame_evaluations;
+      layouts_pruned += run.layouts_pruned;
     }
 
     std::vector<std::string> slots;
@@ -204,6 +210,7 @@ void setup_optimize(CLI::App& app) {
       j["seconds"] = seconds;
       j["layout_evaluations"] = layout_evaluations;
       j["device_frame_evaluations"] = device_frame_evaluations;
+      j["layouts_stopped_early"] = layouts_pruned;
       j["device_frame_evaluations_per_second"] = rate;
       std::cout << j.dump(2) << "\n";
       return;
@@ -226,7 +233,8 @@ void setup_optimize(CLI::App& app) {
                     multi.runs[static_cast<size_t>(k)].best_cost);
       }
     }
-    std::cout << "time " << seconds << " s, " << layout_evaluations << " layout evaluations, " << device_frame_evaluations
+    std::cout << "time " << seconds << " s, " << layout_evaluations << " layout evaluations (" << layouts_pruned
+              << " stopped early: they could no longer beat their own best), " << device_frame_evaluations
               << " device-frame evaluations (" << rate << " per second)\n";
   });
 }

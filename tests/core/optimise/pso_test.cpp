@@ -54,6 +54,37 @@ TEST(Pso, BestCostIsMonotoneAndMatchesTheLayoutsCoverage) {
   EXPECT_EQ(r.best_coverage.frames, 120);
 }
 
+// The pruning bound (cost_lower_bound.h) changes no comparison the swarm makes: the same search
+// with a check after every chunk of frames and with none, for both metrics, on the table where
+// the robust search's layouts see the hand.
+TEST(Pso, PruningSkipsFramesButTakesTheSameSteps) {
+  const auto& many = test::mc_frames(640, 3);
+  for (const auto metric : {PlacementMetricKind::kStudy, PlacementMetricKind::kRobust}) {
+    PsoSettings s = small(2);
+    s.iterations = 12;
+    s.metric = metric;
+    s.prune_round_frames = 0;
+    const PsoResult whole = run_pso(default_start_layout(4), table_search_space(), many, s);
+    s.prune_round_frames = 64;
+    const PsoResult pruned = run_pso(default_start_layout(4), table_search_space(), many, s);
+    EXPECT_EQ(pruned.best_layout, whole.best_layout);
+    EXPECT_EQ(pruned.best_cost_history, whole.best_cost_history);
+    EXPECT_EQ(pruned.best_cost, whole.best_cost);
+    EXPECT_EQ(pruned.layout_evaluations, whole.layout_evaluations);
+    EXPECT_EQ(whole.layouts_pruned, 0);
+    EXPECT_EQ(whole.device_frame_evaluations, 8 * 13 * 4 * 640);
+    EXPECT_GT(pruned.layouts_pruned, 0);
+    EXPECT_LT(pruned.device_frame_evaluations, whole.device_frame_evaluations);
+    // A one-thread pruned search is the same as well.
+    s.threads = 1;
+    EXPECT_EQ(run_pso(default_start_layout(4), table_search_space(), many, s).best_cost_history,
+              whole.best_cost_history);
+  }
+  PsoSettings bad = small();
+  bad.prune_round_frames = -1;
+  EXPECT_THROW(run_pso(default_start_layout(2), box(), frames(), bad), Error);
+}
+
 TEST(Pso, StaysInBoundsAndHonoursLocksAndFixedParameters) {
   Layout start = default_start_layout(3);
   start.devices[1].pose.x_mm = 77;
