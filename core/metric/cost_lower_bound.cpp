@@ -16,6 +16,7 @@ LayoutTally best_case_tally(const LayoutTally& partial, std::int64_t remaining) 
   LayoutTally t = partial;
   t.frames += remaining;
   if (!t.c.empty()) t.c.back() += remaining;
+  if (!t.c_inside_cut.empty()) t.c_inside_cut.back() += remaining;
   for (auto& seeing : t.device_seeing_frames) seeing += remaining;
   return t;
 }
@@ -30,7 +31,7 @@ double robust_cost_lower_bound(const LayoutTally& partial, std::int64_t remainin
 }
 
 bool robust_bound_holds(const RobustWeights& w) {
-  for (const double x : {w.redundancy, w.participation, w.axis_cut, w.centring, w.footprint}) {
+  for (const double x : {w.redundancy, w.participation, w.axis_cut, w.centring, w.footprint, w.inside_cut}) {
     if (!(std::isfinite(x) && x >= 0.0)) return false;
   }
   return std::isfinite(w.participation_floor);

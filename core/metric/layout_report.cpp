@@ -104,26 +104,19 @@ std::string format_layout_report_markdown(const LayoutReport& r, const std::vect
     md += "* **" + pair + " overlap** on the table (their 80 x 30 mm footprints, offsets included): this layout cannot be built as written.\n";
   }
   md += "* Seen markers beyond the axis cut (250 mm on an axis of the controller that sees them): " +
-        report_percent(r.terms_all.axis_cut) + " of seeing controller-frames.\n\n";
+        report_percent(r.terms_all.axis_cut) + " of seeing controller-frames. Counting only what lies inside each "
+        "controller's cut (a finger with a marker beyond it unseen by that controller), M is " +
+        format_fixed(r.terms_all.metric_m_inside_cut, 4) + " instead of " + format_fixed(r.terms_all.metric_m, 4) + ".\n\n";
 
-  md += "## Metric terms\n\n| term | weight | all | palm down | palm left |\n|---|---:|---:|---:|---:|\n";
-  struct TermRow {
-    const char* name;
-    double weight;
-    double RobustTerms::*field;
+  md += "## Metric terms\n\n| term | what it measures | weight | all | palm down | palm left |\n|---|---|---:|---:|---:|---:|\n";
+  auto term_row = [&](const char* name, const char* meaning, const std::string& weight, double RobustTerms::*field) {
+    md += std::string("| ") + name + " | " + meaning + " | " + weight + " | " + format_fixed(r.terms_all.*field, 4) +
+          " | " + format_fixed(r.terms_horizontal.*field, 4) + " | " + format_fixed(r.terms_vertical.*field, 4) + " |\n";
   };
-  const TermRow rows[] = {{"M", 1.0, &RobustTerms::metric_m},
-                          {"redundancy (1 - share with every finger seen by 2+)", r.weights.redundancy, &RobustTerms::redundancy},
-                          {"participation shortfall", r.weights.participation, &RobustTerms::participation},
-                          {"axis cut", r.weights.axis_cut, &RobustTerms::axis_cut},
-                          {"centring (0 on axis)", r.weights.centring, &RobustTerms::centring},
-                          {"footprint overlap", r.weights.footprint, &RobustTerms::footprint},
-                          {"R", 0.0, &RobustTerms::total}};
-  for (const TermRow& t : rows) {
-    md += std::string("| ") + t.name + " | " + (t.field == &RobustTerms::total ? "" : report_weight(t.weight)) + " | " +
-          format_fixed(r.terms_all.*(t.field), 4) + " | " + format_fixed(r.terms_horizontal.*(t.field), 4) + " | " +
-          format_fixed(r.terms_vertical.*(t.field), 4) + " |\n";
+  for (const RobustTermInfo& term : robust_term_infos()) {
+    term_row(term.name, term.meaning, report_weight(robust_term_weight(r.weights, term)), term.value);
   }
+  term_row("R", "the total: M plus each weight times its term", "", &RobustTerms::total);
 
   md += "\n## What each controller contributes\n\n"
         "| controller | sees some finger | only one seeing some finger | seen frames beyond the axis cut | palm off-centre | M without it | every finger 2+ without it | counts |\n"

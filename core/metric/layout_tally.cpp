@@ -41,6 +41,7 @@ constexpr size_t kTallyChunkFrames = 64;
 LayoutTally::LayoutTally(int device_count)
     : devices(device_count),
       c(static_cast<size_t>(device_count) + 1, 0),
+      c_inside_cut(static_cast<size_t>(device_count) + 1, 0),
       device_seeing_frames(static_cast<size_t>(device_count), 0),
       device_sole_frames(static_cast<size_t>(device_count), 0),
       device_cut_frames(static_cast<size_t>(device_count), 0),
@@ -48,7 +49,10 @@ LayoutTally::LayoutTally(int device_count)
 
 void LayoutTally::add(const LayoutTally& o) {
   frames += o.frames;
-  for (size_t i = 0; i < c.size(); ++i) c[i] += o.c[i];
+  for (size_t i = 0; i < c.size(); ++i) {
+    c[i] += o.c[i];
+    c_inside_cut[i] += o.c_inside_cut[i];
+  }
   for (size_t d = 0; d < device_seeing_frames.size(); ++d) {
     device_seeing_frames[d] += o.device_seeing_frames[d];
     device_sole_frames[d] += o.device_sole_frames[d];
@@ -97,14 +101,21 @@ double off_centre_penalty(const PreparedFrame& f, const DeviceView& v, const Vis
 
 namespace {
 
-// Shared by both tally_frame overloads; `beyond_cut(d, b)` says whether seeing device d (bits b)
-// has a seen marker beyond the axis cut.
-template <typename BeyondCut>
+// Shared by both tally_frame overloads; `cut_fingers(d, b)` gives the fingers of b (the fingers
+// seeing device d sees) that have a marker beyond its axis cut.
+template <typename CutFingers>
 void tally_frame_with(const PreparedFrame& frame, std::span<const DeviceView> views, const FingerBits* bits,
-                      const VisibilityLimits& limits, LayoutTally& t, BeyondCut&& beyond_cut) {
+                      const VisibilityLimits& limits, LayoutTally& t, CutFingers&& cut_fingers) {
   const int nd = static_cast<int>(views.size());
   ++t.frames;
   ++t.c[static_cast<size_t>(worst_finger_count(bits, nd))];
+  FingerBits cut[kMaxDevices] = {}, inside[kMaxDevices] = {};
+  for (int d = 0; d < nd; ++d) {
+    const auto dd = static_cast<size_t>(d);
+    cut[dd] = bits[d] != 0 ? cut_fingers(dd, bits[d]) : FingerBits{0};
+    inside[dd] = static_cast<FingerBits>(bits[d] & ~cut[dd]);
+  }
+  ++t.c_inside_cut[static_cast<size_t>(worst_finger_count(inside, nd))];
   // Fingers seen by exactly one device: that device is the only one for them in this frame.
   FingerBits seen_once = 0, seen_twice = 0;
   for (int d = 0; d < nd; ++d) {
@@ -118,7 +129,7 @@ void tally_frame_with(const PreparedFrame& frame, std::span<const DeviceView> vi
     const auto dd = static_cast<size_t>(d);
     ++t.device_seeing_frames[dd];
     if (b & sole) ++t.device_sole_frames[dd];
-    if (beyond_cut(dd, b)) ++t.device_cut_frames[dd];
+    if (cut[dd] != 0) ++t.device_cut_frames[dd];
     t.device_off_centre[dd] += round_millionths(off_centre_penalty(frame, views[dd], limits) * kOffCentreScale);
   }
 }
@@ -128,13 +139,20 @@ void tally_frame_with(const PreparedFrame& frame, std::span<const DeviceView> vi
 void tally_frame(const PreparedFrame& frame, std::span<const DeviceView> views, const FingerBits* bits,
                  const VisibilityLimits& limits, double axis_cut_mm, LayoutTally& t) {
   tally_frame_with(frame, views, bits, limits, t, [&](size_t d, FingerBits b) {
-    return seen_marker_beyond_cut(frame, views[d], b, axis_cut_mm);
+    FingerBits c = 0;
+    for (int f = 0; f < kNumDigits; ++f) {
+      const auto one = static_cast<FingerBits>(1u << f);
+      if ((b & one) && seen_marker_beyond_cut(frame, views[d], one, axis_cut_mm)) c = static_cast<FingerBits>(c | one);
+    }
+    return c;
   });
 }
 
 void tally_frame(const PreparedFrame& frame, std::span<const DeviceView> views, const FingerBits* bits,
                  const FingerBits* cut_bits, const VisibilityLimits& limits, LayoutTally& t) {
-  tally_frame_with(frame, views, bits, limits, t, [&](size_t d, FingerBits b) { return (b & cut_bits[d]) != 0; });
+  tally_frame_with(frame, views, bits, limits, t, [&](size_t d, FingerBits b) {
+    return static_cast<FingerBits>(b & cut_bits[d]);
+  });
 }
 
 LayoutTally tally_layout(std::span<const DeviceView> views, std::span<const PreparedFrame> frames,

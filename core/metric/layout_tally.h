@@ -31,6 +31,10 @@ struct LayoutTally {
   int devices = 0;
   std::int64_t frames = 0;
   std::vector<std::int64_t> c;                     // devices + 1: as Coverage::c (the study's histogram)
+  // The same histogram when a finger with a marker beyond a controller's axis cut counts as unseen
+  // by that controller: it reports the cut value instead of the marker, so it cannot measure that
+  // finger (the fusion down-weights such points too, fusion_smoother.h).
+  std::vector<std::int64_t> c_inside_cut;
   std::vector<std::int64_t> device_seeing_frames;  // frames in which device d sees ≥ 1 finger
   std::vector<std::int64_t> device_sole_frames;    // frames in which device d alone sees some finger
   std::vector<std::int64_t> device_cut_frames;     // seeing frames of device d with a seen marker beyond the cut

@@ -103,9 +103,35 @@ RobustTerms robust_terms(const LayoutTally& t, double footprint_share, const Rob
                    ? static_cast<double>(t.off_centre_sum()) / kOffCentreScale / static_cast<double>(t.seeing_pairs())
                    : 1.0;  // nobody sees the hand: as badly centred as it gets
   r.footprint = footprint_share;
+  r.metric_m_inside_cut = placement_metric(t.c_inside_cut);
+  // M_cut is added last, so that with its weight 0 every total is bit for bit what it was before
+  // the term existed (x + 0 = x).
   r.total = r.metric_m + w.redundancy * r.redundancy + w.participation * r.participation + w.axis_cut * r.axis_cut +
-            w.centring * r.centring + w.footprint * r.footprint;
+            w.centring * r.centring + w.footprint * r.footprint + w.inside_cut * r.metric_m_inside_cut;
   return r;
+}
+
+std::span<const RobustTermInfo> robust_term_infos() {
+  static constexpr RobustTermInfo kTerms[] = {
+      {"M", "M", "the study's metric", nullptr, &RobustTerms::metric_m},
+      {"redundancy", "redundancy", "share of frames with a finger seen by fewer than 2 controllers",
+       &RobustWeights::redundancy, &RobustTerms::redundancy},
+      {"participation", "participation", "controllers' shortfall below seeing a finger in 20 % of frames",
+       &RobustWeights::participation, &RobustTerms::participation},
+      {"axis_cut", "axis cut", "share of seeing controller-frames with a seen marker beyond 250 mm",
+       &RobustWeights::axis_cut, &RobustTerms::axis_cut},
+      {"centring", "centring", "mean off-centre of the palm in the seeing pyramids (0 axis, 1 edge)",
+       &RobustWeights::centring, &RobustTerms::centring},
+      {"footprint", "footprint", "share of controller pairs whose footprints overlap", &RobustWeights::footprint,
+       &RobustTerms::footprint},
+      {"inside_cut", "M inside cut", "M with a finger beyond a controller's 250 mm cut unseen by it",
+       &RobustWeights::inside_cut, &RobustTerms::metric_m_inside_cut},
+  };
+  return kTerms;
+}
+
+double robust_term_weight(const RobustWeights& w, const RobustTermInfo& term) {
+  return term.weight != nullptr ? w.*(term.weight) : 1.0;
 }
 
 }  // namespace lmc

@@ -11,6 +11,8 @@
 //                                                 (0 on the viewing axis, 1 on the edge; layout_tally.h)
 //         + w_footprint · F                    F: share of controller pairs whose footprints (80 × 30 mm boxes
 //                                                 projected on the table) overlap
+//         + w_inside_cut · M_cut               M_cut: M when a finger with a marker beyond a controller's axis cut
+//                                                 counts as unseen by it (what the controllers can measure)
 //
 // Each term is switched off by a weight of 0; with every weight 0, R = M exactly. Why these
 // weights: participation and footprint are near-constraints (a parked or overlapping controller
@@ -18,8 +20,11 @@
 // unseen finger adds 0.01 to M, as much as redundancy changes when S2 moves by 20 percentage points.
 // The axis cut trades against M: on the 10,000-frame Monte Carlo set no layout with a useful M
 // keeps every seen marker within 250 mm (even paper-initial, M 0.52, has 5.7 % of seeing pairs
-// beyond it), so its weight sets how much M a lab gives for fewer cut coordinates.
+// beyond it), so its weight sets how much M a lab gives for fewer cut coordinates. M_cut asks a
+// different question: not how often a controller sees beyond its cut, but how well the hand is
+// covered by what lies inside the cuts; it is off (weight 0) by default and always reported.
 #include <array>
+#include <span>
 
 #include <Eigen/Core>
 
@@ -43,6 +48,7 @@ struct RobustWeights {
   double centring = 0.01;
   double footprint = 1.0;      // overlapping controllers cannot be built: nearly a constraint
   double participation_floor = 0.2;  // a controller should see some finger in at least this share of frames
+  double inside_cut = 0.0;     // M_cut: reported, not searched on unless asked (last: positional initialisers stay valid)
   bool operator==(const RobustWeights&) const = default;
 };
 
@@ -54,8 +60,20 @@ struct RobustTerms {
   double axis_cut = 0;        // A
   double centring = 0;        // C
   double footprint = 0;       // F
+  double metric_m_inside_cut = 0;  // M_cut
   double total = 0;           // R
 };
+
+// Every term in the order R adds them, for every report of them (text, JSON, the layout report).
+struct RobustTermInfo {
+  const char* key;        // JSON key and --w-<key with dashes> option
+  const char* name;       // short, for tables
+  const char* meaning;    // one line
+  double RobustWeights::*weight;  // null for M, whose weight is 1
+  double RobustTerms::*value;
+};
+std::span<const RobustTermInfo> robust_term_infos();
+double robust_term_weight(const RobustWeights& weights, const RobustTermInfo& term);
 
 // Footprint corners on the table (world x, z) of one device: its 80 × 30 mm top face.
 inline constexpr double kControllerLengthMm = 80.0;

@@ -1,7 +1,7 @@
 #pragma once
 // The robust metric's terms as text and JSON (what `lmc optimize` and `lmc evaluate` print).
-// JSON keys: "M", "redundancy", "participation", "axis_cut", "centring", "footprint", "R", and
-// "weights" {same names}.
+// JSON keys: "M", "redundancy", "participation", "axis_cut", "centring", "footprint", "inside_cut",
+// "R", and "weights" {the same names but M} (robust_term_infos()).
 #include <nlohmann/json.hpp>
 #include <string>
 #include <vector>

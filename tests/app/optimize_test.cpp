@@ -75,7 +75,7 @@ TEST(LmcOptimize, RobustIsTheDefaultAndSaysWhatMadeTheLayout) {
   EXPECT_EQ(j["starts"][1]["seed"], 2);
   EXPECT_EQ(j["layout_evaluations"], 2 * 4 * 3);
   const auto& terms = j["robust_terms"];
-  for (const char* key : {"M", "redundancy", "participation", "axis_cut", "centring", "footprint", "R"}) {
+  for (const char* key : {"M", "redundancy", "participation", "axis_cut", "centring", "footprint", "inside_cut", "R"}) {
     EXPECT_TRUE(terms.contains(key)) << key;
   }
   EXPECT_EQ(terms["R"], j["starts"][j["best_start"].get<int>()]["best_cost"]);

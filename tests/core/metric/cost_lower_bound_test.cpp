@@ -53,6 +53,7 @@ TEST(CostLowerBound, NeverAboveTheFinalCostAndEqualToItWhenEveryFrameIsCounted) 
   RobustWeights heavy;
   heavy.axis_cut = 25;
   heavy.participation = 20;
+  heavy.inside_cut = 3;
   RobustWeights zero{0, 0, 0, 0, 0, 0.2};
   int strictly_below = 0;
   for (const Layout& layout : layouts_to_bound()) {

@@ -50,7 +50,11 @@ TEST(LayoutReport, ThePapersOptimizedLayoutIsExplainedInOnePage) {
   EXPECT_NE(md.find("**LMC1 does not count**"), std::string::npos) << md;
   EXPECT_NE(md.find("**LMC1 and LMC2 overlap**"), std::string::npos) << md;
   EXPECT_NE(md.find("| palm left, wrist extension |"), std::string::npos) << md;
-  EXPECT_NE(md.find("| axis cut | 0.2 |"), std::string::npos) << md;
+  EXPECT_NE(md.find("| axis cut | share of seeing controller-frames with a seen marker beyond 250 mm | 0.2 |"), std::string::npos) << md;
+  // What the controllers can measure: M with every finger beyond a controller's cut unseen by it.
+  EXPECT_NE(md.find("| M inside cut | "), std::string::npos) << md;
+  EXPECT_NE(md.find("Counting only what lies inside each controller's cut"), std::string::npos) << md;
+  EXPECT_GT(r.terms_all.metric_m_inside_cut, r.terms_all.metric_m);
 }
 
 TEST(LayoutReport, ALayoutWhereEveryControllerCountsSaysSo) {

@@ -70,6 +70,7 @@ TEST(TallyFastPath, KernelCutBitsAreTheSeenMarkerCutAndBothBuildsAgree) {
 void expect_same(const LayoutTally& a, const LayoutTally& b) {
   EXPECT_EQ(a.frames, b.frames);
   EXPECT_EQ(a.c, b.c);
+  EXPECT_EQ(a.c_inside_cut, b.c_inside_cut);
   EXPECT_EQ(a.device_seeing_frames, b.device_seeing_frames);
   EXPECT_EQ(a.device_sole_frames, b.device_sole_frames);
   EXPECT_EQ(a.device_cut_frames, b.device_cut_frames);
