@@ -202,6 +202,11 @@ int LayoutTab::prepare_for_capture() {
   if (const char* panel = std::getenv("LMC_LAYOUT_PANEL")) {
     capture_panel_ = panel;
     capture_panel_frames_ = 2;
+    // "optimiser-settings": the Optimiser panel with its settings and term weights open.
+    if (capture_panel_ == "optimiser-settings") {
+      capture_panel_ = "optimiser";
+      optimiser_->open_settings_once();
+    }
   }
   if (const char* env = std::getenv("LMC_LAYOUT_OPTIMISE"); env != nullptr && std::atoi(env) > 0) {
     state_->pso.iterations = std::atoi(env);

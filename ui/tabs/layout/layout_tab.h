@@ -84,7 +84,8 @@ class LayoutTab final : public Tab {
   double update_ms_ = 0;
   const void* last_snapshot_ = nullptr;
 
-  // Screenshot options (read in prepare_for_capture): LMC_LAYOUT_PANEL=inspector|heatmap|optimiser
+  // Screenshot options (read in prepare_for_capture): LMC_LAYOUT_PANEL=inspector|heatmap|optimiser|
+  // optimiser-settings (the Optimiser with its settings and term weights open)
   // picks the right-hand panel; LMC_LAYOUT_OPTIMISE=N runs an N-iteration search first so the
   // ghost controllers and the comparison table are in the picture.
   std::string capture_panel_;

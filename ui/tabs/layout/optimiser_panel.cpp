@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <string>
 
+#include "core/metric/robust_metric.h"
 #include "ui/widgets/series_plot.h"
 #include "ui/widgets/progress_row.h"
 
@@ -21,7 +22,9 @@ void OptimiserPanel::draw() {
   const float footer_h = state_->optimiser.outcome() ? 3.0f * line + 4.0f : line + 4.0f;
   ImGui::BeginChild("##optimiser_body", ImVec2(0, -footer_h));
   if (ImGui::CollapsingHeader("Pose set", ImGuiTreeNodeFlags_DefaultOpen)) draw_pose_set();
+  if (open_settings_once_) ImGui::SetNextItemOpen(true);
   if (ImGui::CollapsingHeader("Search settings")) draw_settings();
+  open_settings_once_ = false;
   draw_convergence();
   draw_comparison();
   ImGui::EndChild();
@@ -87,7 +90,26 @@ void OptimiserPanel::draw_settings() {
   if (ImGui::IsItemHovered()) {
     ImGui::SetTooltip("robust = M + tie-breakers: redundancy (fingers seen by 2+ controllers), participation\n"
                       "(each controller sees a finger in 20 %% of frames), axis cut (seen markers within 250 mm),\n"
-                      "centring, footprints that do not overlap. lmc evaluate prints every term.");
+                      "centring, footprints that do not overlap, M inside the cut (off by default).\n"
+                      "lmc evaluate prints every term.");
+  }
+  if (open_settings_once_) ImGui::SetNextItemOpen(true);
+  if (p.metric == PlacementMetricKind::kRobust && ImGui::TreeNode("term weights (0 switches a term off)")) {
+    // One input per term, from the same list the reports print (robust_term_infos).
+    for (const RobustTermInfo& term : robust_term_infos()) {
+      if (term.weight == nullptr) continue;  // M always counts with weight 1
+      double& w = p.weights.*(term.weight);
+      ImGui::SetNextItemWidth(90);
+      ImGui::InputDouble(term.name, &w, 0, 0, "%.3f");
+      if (!(w >= 0.0)) w = 0.0;
+      if (ImGui::IsItemHovered()) {
+        std::string option = std::string("--w-") + term.key;
+        std::replace(option.begin(), option.end(), '_', '-');
+        ImGui::SetTooltip("%s (lmc optimize %s)", term.meaning, option.c_str());
+      }
+    }
+    if (ImGui::SmallButton("default weights")) p.weights = RobustWeights{};
+    ImGui::TreePop();
   }
   ImGui::SetNextItemWidth(100);
   ImGui::InputInt("particles", &p.particles);

@@ -19,6 +19,8 @@ class OptimiserPanel {
   void draw();
   // Start, pso.cancel, Apply, Discard as last drawn (for headless tests).
   const WidgetAnchors& anchors() const { return anchors_; }
+  // For --capture: the next draw opens Search settings and the term weights.
+  void open_settings_once() { open_settings_once_ = true; }
 
  private:
   void draw_pose_set();
@@ -35,6 +37,7 @@ class OptimiserPanel {
   WidgetAnchors anchors_;
   SeriesPlot convergence_;              // best cost per iteration (ui/widgets/series_plot.h)
   std::vector<double> convergence_x_;   // 0, 1, 2, … (the iterations)
+  bool open_settings_once_ = false;
 };
 
 }  // namespace lmc::ui
