@@ -14,7 +14,7 @@
 #include "tests/support/mc_frames.h"
 
 namespace lmc {
-namespace {
+namespace cost_lower_bound_test {  // named: the unity build puts several tests in one file
 
 const std::vector<PreparedFrame>& bound_frames() { return test::mc_frames(300, 11); }
 
@@ -67,7 +67,9 @@ TEST(CostLowerBound, NeverAboveTheFinalCostAndEqualToItWhenEveryFrameIsCounted) 
         const double cost = robust_terms(s.full, footprint, w).total;
         const double bound = robust_cost_lower_bound(s.partial, s.remaining, footprint, w);
         EXPECT_LE(bound, cost) << layout.name << " after " << counted;
-        if (counted == 300) EXPECT_EQ(bound, cost);
+        if (counted == 300) {
+          EXPECT_EQ(bound, cost);
+        }
         if (bound < cost) ++strictly_below;
       }
       if (counted == 300) {
@@ -105,5 +107,5 @@ TEST(CostLowerBound, HoldsOnlyForFiniteNonNegativeWeights) {
   EXPECT_FALSE(robust_bound_holds(w));
 }
 
-}  // namespace
+}  // namespace cost_lower_bound_test
 }  // namespace lmc
