@@ -3,6 +3,7 @@
 // a changed file, a changed method, a cancelled batch and a damaged cache entry behave as a lab
 // would expect; the state selects a trial and loads its series; filters and sorting.
 #include <chrono>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <thread>
@@ -11,6 +12,7 @@
 
 #include "tests/support/cli_runner.h"
 #include "tests/support/reference_data.h"
+#include "core/processing/length_correction_json.h"
 #include "ui/model/review/review_state.h"
 
 namespace lmc::ui {
@@ -196,6 +198,72 @@ TEST_F(ReviewModel, TheStateSelectsATrialAndLoadsItsSeriesOnOneTimeAxis) {
   f.text = "INDEX";
   state.set_filter(f);
   EXPECT_EQ(state.visible_trials().size(), 1u);
+}
+
+// A subject's finger-length correction chosen for one opened folder (the Review tab's "lengths..."):
+// its trials are processed with it after the default fusion (the trial it was fitted on says so),
+// the cache keeps corrected and plain results apart, the reference fusion is never corrected, and a
+// file that cannot be used changes nothing and is named.
+TEST_F(ReviewModel, ALengthCorrectionAppliesToItsFolderWithTheDefaultFusionOnly) {
+  const fs::path dir = test::scratch_dir("review_length_correction");
+  const fs::path cache = dir / "cache";
+  const ReviewBatch plain = run(input(cache));
+  ASSERT_EQ(plain.trials.size(), 2u);
+  const std::string fit_trial = plain.trials[0].job.trial;
+  const fs::path file = dir / "S01-lengths.json";
+  const test::CliRun fit = test::run_lmc("length-correction fit " + test::shell_quote(session_->string()) + " --trial " +
+                                             fit_trial + " --subject S01 -o " + test::shell_quote(file.string()),
+                                         dir);
+  ASSERT_EQ(fit.exit_code, 0) << fit.all();
+
+  ReviewBatchInput in = input(cache);
+  in.corrections.emplace(*session_, read_length_correction(file));
+  const ReviewBatch corrected = run(in);
+  ASSERT_EQ(corrected.trials.size(), 2u);
+  EXPECT_EQ(corrected.processed_now, 2);  // not the plain results from the cache
+  for (size_t k = 0; k < 2; ++k) {
+    ASSERT_TRUE(corrected.trials[k].outcome.ok) << corrected.trials[k].outcome.error;
+    EXPECT_NE(corrected.trials[k].row.finger_length_diff_mm, plain.trials[k].row.finger_length_diff_mm);
+    EXPECT_DOUBLE_EQ(corrected.trials[k].row.rom_abs_diff_deg, plain.trials[k].row.rom_abs_diff_deg);  // angles keep
+  }
+  // Fitted on trial 0 against Vicon: its mean length difference nearly vanishes, and it says it
+  // is not an independent test.
+  EXPECT_LT(std::abs(corrected.trials[0].row.finger_length_diff_mm), std::abs(plain.trials[0].row.finger_length_diff_mm));
+  EXPECT_LT(std::abs(corrected.trials[0].row.finger_length_diff_mm), 1.0);
+  EXPECT_EQ(corrected.trials[0].row.warnings, plain.trials[0].row.warnings + 1);
+
+  // The reference fusion stays the study's algorithm: nothing corrected, and a note says why.
+  in.options.process.method = FusionMethod::kReference;
+  const ReviewBatch reference = run(in);
+  ASSERT_TRUE(reference.trials[0].outcome.ok) << reference.trials[0].outcome.error;
+  EXPECT_FALSE(folder_options(in, *session_).process.length_correction.has_value());
+  bool noted = false;
+  for (const auto& n : reference.notes) noted = noted || n.find("not applied with the reference fusion") != std::string::npos;
+  EXPECT_TRUE(noted);
+
+  // Through the state: a bad file is named and changes nothing; a good one is shown in the view.
+  ReviewState state;
+  state.set_cache_dir(cache);
+  state.open_folder(*session_);
+  const fs::path bad = dir / "broken.json";
+  std::ofstream(bad) << "{\"factor\": [1, 2";
+  EXPECT_FALSE(state.set_length_correction(*session_, bad));
+  EXPECT_NE(state.problem().find("broken.json"), std::string::npos) << state.problem();
+  EXPECT_EQ(state.length_correction(*session_), nullptr);
+  ASSERT_TRUE(state.set_length_correction(*session_, file));
+  ASSERT_NE(state.length_correction(*session_), nullptr);
+  EXPECT_EQ(state.length_correction(*session_)->correction.subject, "S01");
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(60);
+  while ((state.busy() || !state.view() || !state.view()->result->length_correction) &&
+         std::chrono::steady_clock::now() < deadline) {
+    state.update();
+    std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  }
+  ASSERT_TRUE(state.view());
+  EXPECT_TRUE(state.view()->result->length_correction.has_value());
+  state.clear_length_correction(*session_);
+  EXPECT_EQ(state.length_correction(*session_), nullptr);
+  fs::remove_all(dir);
 }
 
 }  // namespace review_state_test

@@ -4,6 +4,7 @@
 // process_session_cached on a worker thread, with progress, ETA and cancel. Cached trials come back
 // at once; a cancelled batch keeps what was done (the rest are rows marked "cancelled").
 #include <filesystem>
+#include <map>
 #include <memory>
 #include <string>
 #include <vector>
@@ -33,7 +34,14 @@ struct ReviewBatchInput {
   std::vector<std::filesystem::path> folders;
   SessionOptions options;                 // stop/on_progress are set by the job
   std::filesystem::path cache_dir;        // empty: no cache
+  // A finger-length correction per folder (a subject's), applied to that folder's trials after the
+  // default fusion; with the reference fusion none is applied (it stays the study's algorithm).
+  std::map<std::filesystem::path, LengthCorrection> corrections;
 };
+
+// The options one folder's trials are processed with: `options` plus that folder's correction
+// when there is one and the fusion is the default.
+SessionOptions folder_options(const ReviewBatchInput& input, const std::filesystem::path& folder);
 
 // The work itself, for the job and for tests (runs on the calling thread).
 ReviewBatch run_review_batch(const ReviewBatchInput& input, std::stop_token stop,

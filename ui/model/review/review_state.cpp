@@ -5,6 +5,7 @@
 #include <cmath>
 #include <set>
 
+#include "core/processing/length_correction_json.h"
 #include "core/processing/process_options_json.h"
 #include "core/results/processing_cache.h"
 #include "core/results/session_report.h"
@@ -84,7 +85,34 @@ void ReviewState::open_folders(const std::vector<std::filesystem::path>& folders
 
 void ReviewState::close_folder(const std::filesystem::path& folder) {
   folders_.erase(std::remove(folders_.begin(), folders_.end(), folder), folders_.end());
+  corrections_.erase(folder);
   reprocess();
+}
+
+bool ReviewState::set_length_correction(const std::filesystem::path& folder, const std::filesystem::path& file) {
+  try {
+    corrections_[folder] = FolderCorrection{file, read_length_correction(file)};
+  } catch (const std::exception& e) {
+    problem_ = std::string("length correction not used: ") + e.what();
+    return false;
+  }
+  reprocess();
+  return true;
+}
+
+void ReviewState::clear_length_correction(const std::filesystem::path& folder) {
+  if (corrections_.erase(folder) > 0) reprocess();
+}
+
+const ReviewState::FolderCorrection* ReviewState::length_correction(const std::filesystem::path& folder) const {
+  const auto it = corrections_.find(folder);
+  return it != corrections_.end() ? &it->second : nullptr;
+}
+
+ReviewBatchInput ReviewState::batch_input() const {
+  ReviewBatchInput in{folders_, options_, cache_dir_, {}};
+  for (const auto& [folder, c] : corrections_) in.corrections.emplace(folder, c.correction);
+  return in;
 }
 
 void ReviewState::set_method(FusionMethod method) {
@@ -96,7 +124,7 @@ void ReviewState::set_method(FusionMethod method) {
 void ReviewState::reprocess() {
   problem_.clear();
   if (selected_ >= 0 && selected_ < static_cast<int>(trials().size())) selected_trial_ = trial_key(trials()[selected_]);
-  batch_job_.start(ReviewBatchInput{folders_, options_, cache_dir_});
+  batch_job_.start(batch_input());
 }
 
 void ReviewState::select(int index) {
@@ -105,7 +133,7 @@ void ReviewState::select(int index) {
   const ReviewTrial& t = trials()[index];
   selected_trial_ = trial_key(t);
   view_.reset();
-  view_job_.start(t.job, options_);
+  view_job_.start(t.job, folder_options(batch_input(), t.folder));
 }
 
 void ReviewState::prefer_trial(std::string name) {
@@ -192,6 +220,11 @@ void ReviewState::export_agreement(const std::filesystem::path& dir) {
   for (const auto& f : folders_) in.inputs.push_back(f.string());
   in.method = fusion_method_name(options_.process.method);
   in.parameters = process_options_json(options_.process);
+  // Which folders' lengths were corrected, and with which file (the trials' own summaries carry
+  // the factors).
+  if (options_.process.method == FusionMethod::kDefault) {
+    for (const auto& [folder, c] : corrections_) in.parameters["length_correction_files"][folder.string()] = c.file.string();
+  }
   export_dir_ = dir;
   export_message_ = "exporting...";
   export_job_.start([dir, in](std::stop_token, JobChannel<ExportReport>&) { return write_review_exports(dir, in); });
@@ -201,7 +234,12 @@ void ReviewState::export_trial(const std::filesystem::path& dir, bool each_contr
   if (!view_ || !view_->result) return;
   auto view = view_;
   const std::string method = fusion_method_name(options_.process.method);
-  const nlohmann::json parameters = process_options_json(options_.process);
+  // The options this trial was processed with, its folder's length correction included.
+  const ProcessOptions trial_options =
+      selected_ >= 0 && selected_ < static_cast<int>(trials().size())
+          ? folder_options(batch_input(), trials()[static_cast<size_t>(selected_)].folder).process
+          : options_.process;
+  const nlohmann::json parameters = process_options_json(trial_options);
   export_dir_ = dir;
   export_message_ = "exporting...";
   export_job_.start([dir, view, method, parameters, each_controller](std::stop_token, JobChannel<ExportReport>&) {

@@ -3,6 +3,7 @@
 // batch job's result), the table's filter, the selected trial and its full view, and the x range
 // the stacked plots share. Panels read it and call its actions; processing happens in the jobs.
 #include <filesystem>
+#include <map>
 #include <memory>
 #include <optional>
 #include <string>
@@ -53,6 +54,12 @@ class ReviewState {
   void open_folders(const std::vector<std::filesystem::path>& folders);  // one processing run for all
   void close_folder(const std::filesystem::path& folder);
   void set_method(FusionMethod method);  // processes everything again with the other fusion
+  // A subject's finger-length correction (`lmc length-correction fit`) for the trials of one opened
+  // folder, applied after the default fusion, never to the reference fusion (the study's algorithm).
+  // Reads the file at once: one that cannot be used changes nothing and says why (problem()), naming
+  // the file. Processes again (the cache keeps corrected and plain results apart).
+  bool set_length_correction(const std::filesystem::path& folder, const std::filesystem::path& file);
+  void clear_length_correction(const std::filesystem::path& folder);
   void reprocess();
   void cancel() { batch_job_.cancel(); }
   void set_filter(const TrialFilter& filter) { filter_ = filter; }
@@ -82,6 +89,12 @@ class ReviewState {
   std::shared_ptr<const TrialView> view() const { return view_; }
   const std::shared_ptr<LinkedXRange>& x_range() const { return x_range_; }
   FusionMethod method() const { return options_.process.method; }
+  struct FolderCorrection {
+    std::filesystem::path file;
+    LengthCorrection correction;
+  };
+  // The folder's correction, or nullptr; whether it is applied also depends on method().
+  const FolderCorrection* length_correction(const std::filesystem::path& folder) const;
   bool busy() const { return batch_job_.running() || view_job_.running() || export_job_.running(); }
   // Agreement and the visibility map over the trials the table shows (its filter), recomputed only
   // when the batch, the filter or the motion changes: 80 trials take about a millisecond.
@@ -107,8 +120,10 @@ class ReviewState {
 
  private:
   int preferred_index() const;  // index of the preferred trial in trials(), or -1
+  ReviewBatchInput batch_input() const;
   std::vector<std::filesystem::path> folders_;
   SessionOptions options_;
+  std::map<std::filesystem::path, FolderCorrection> corrections_;
   std::filesystem::path cache_dir_;
   ReviewBatchJob batch_job_;
   std::shared_ptr<const ReviewBatch> batch_;

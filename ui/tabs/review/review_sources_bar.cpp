@@ -53,10 +53,60 @@ void open_buttons(ReviewState& state, FileBrowser& browser) {
   }
 }
 
+// One opened folder as [name  lengths… x]: its finger-length correction (choose, or what is applied
+// and remove) and close. Returns false when the folder was closed (the list changed).
+bool folder_chip(ReviewState& state, ReviewBrowsers& browsers, const std::filesystem::path& folder) {
+  ImGui::PushID(folder.string().c_str());
+  const std::string name = folder.filename().empty() ? folder.string() : folder.filename().string();
+  ImGui::TextDisabled("[%s", name.c_str());
+  if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", folder.string().c_str());
+  ImGui::SameLine(0, 6);
+  if (const ReviewState::FolderCorrection* c = state.length_correction(folder)) {
+    const bool applied = state.method() == FusionMethod::kDefault;
+    ImGui::TextColored(applied ? ImVec4(0.45F, 0.85F, 0.95F, 1) : ImVec4(0.6F, 0.6F, 0.6F, 1),
+                       applied ? "lengths corrected" : "lengths not corrected (reference fusion)");
+    if (ImGui::IsItemHovered()) {
+      const LengthCorrection& lc = c->correction;
+      ImGui::BeginTooltip();
+      ImGui::Text("Finger-length correction of subject %s, fitted on %s (%s)", lc.subject.c_str(), lc.fit_trial.c_str(),
+                  length_source_name(lc.source));
+      ImGui::Text("factors: thumb %.3f, index %.3f, middle %.3f, ring %.3f, pinky %.3f", lc.factor[0], lc.factor[1],
+                  lc.factor[2], lc.factor[3], lc.factor[4]);
+      ImGui::TextDisabled("%s", c->file.string().c_str());
+      if (!applied) ImGui::TextDisabled("The reference fusion stays the study's algorithm: no correction is applied to it.");
+      ImGui::EndTooltip();
+    }
+    ImGui::SameLine(0, 2);
+    if (ImGui::SmallButton("-")) state.clear_length_correction(folder);
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("Remove the length correction of %s", name.c_str());
+  } else {
+    if (ImGui::SmallButton("lengths...")) {
+      browsers.correction_for = folder;
+      browsers.correction.open(FileBrowser::Mode::kOpen, folder);
+    }
+    if (ImGui::IsItemHovered()) {
+      ImGui::SetTooltip("Correct this subject's finger lengths after the default fusion with a file from\n"
+                        "lmc length-correction fit (one factor per finger; joint angles do not change).\n"
+                        "Score it on trials other than the one it was fitted on.");
+    }
+  }
+  ImGui::SameLine(0, 4);
+  bool open = true;
+  if (ImGui::SmallButton("x")) {
+    state.close_folder(folder);
+    open = false;
+  }
+  if (open && ImGui::IsItemHovered()) ImGui::SetTooltip("Close %s", name.c_str());
+  ImGui::SameLine(0, 0);
+  ImGui::TextDisabled("]");
+  ImGui::PopID();
+  return open;
+}
+
 }  // namespace
 
-void draw_review_sources_bar(ReviewState& state, FileBrowser& browser) {
-  open_buttons(state, browser);
+void draw_review_sources_bar(ReviewState& state, ReviewBrowsers& browsers) {
+  open_buttons(state, browsers.folder);
   ImGui::SameLine(0, 20);
   ImGui::SetNextItemWidth(150);
   int method = state.method() == FusionMethod::kDefault ? 0 : 1;
@@ -66,24 +116,12 @@ void draw_review_sources_bar(ReviewState& state, FileBrowser& browser) {
   if (ImGui::IsItemHovered()) {
     ImGui::SetTooltip("default: our smoother (labels and axis cut weigh each point)\nreference: the study's Kalman filter, exactly");
   }
-  // What is open, each with a close button.
+  // What is open, each with its length correction and a close button.
   for (const auto& folder : state.folders()) {
     ImGui::SameLine();
-    ImGui::PushID(folder.string().c_str());
-    const std::string name = folder.filename().empty() ? folder.string() : folder.filename().string();
-    ImGui::TextDisabled("[%s", name.c_str());
-    if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", folder.string().c_str());
-    ImGui::SameLine(0, 2);
-    if (ImGui::SmallButton("x")) {
-      ImGui::PopID();
-      state.close_folder(folder);
-      return;  // the list changed under the loop
-    }
-    if (ImGui::IsItemHovered()) ImGui::SetTooltip("Close %s", name.c_str());
-    ImGui::SameLine(0, 0);
-    ImGui::TextDisabled("]");
-    ImGui::PopID();
+    if (!folder_chip(state, browsers, folder)) break;  // the list changed under the loop
   }
+  if (const auto chosen = browsers.correction.draw()) state.set_length_correction(browsers.correction_for, *chosen);
   const ReviewBatchJob& job = state.batch_job();
   if (job.running()) {
     char text[128];

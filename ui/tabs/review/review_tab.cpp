@@ -22,7 +22,7 @@ namespace {
 class ReviewTab final : public Tab {
  public:
   ReviewTab(StatusSink& status, WorkbenchContext& context)
-      : status_(status), context_(context), browser_("Open a folder of trials", "") {
+      : status_(status), context_(context) {
     take_review_requests();
   }
 
@@ -40,10 +40,10 @@ class ReviewTab final : public Tab {
 
   void draw() override {
     if (state_.folders().empty()) {
-      draw_review_welcome(state_, browser_);
+      draw_review_welcome(state_, browsers_.folder);
       return;
     }
-    draw_review_sources_bar(state_, browser_);
+    draw_review_sources_bar(state_, browsers_);
     ImGui::Separator();
     const float avail = ImGui::GetContentRegionAvail().y;
     draw_review_trial_table(state_, std::clamp(avail * 0.20F, 120.0F, 320.0F));
@@ -79,6 +79,12 @@ class ReviewTab final : public Tab {
   int prepare_for_capture() override {
     pending_view_ = 0;
     if (const char* trial = std::getenv("LMC_REVIEW_TRIAL"); trial != nullptr && *trial != '\0') state_.prefer_trial(trial);
+    // LMC_REVIEW_LENGTH_CORRECTION=FILE: the first opened folder's trials with that subject's
+    // finger-length correction (the picture shows the chip and the corrected lengths).
+    if (const char* file = std::getenv("LMC_REVIEW_LENGTH_CORRECTION"); file != nullptr && *file != '\0' &&
+                                                                         !state_.folders().empty()) {
+      state_.set_length_correction(state_.folders().front(), file);
+    }
     return 4;
   }
   bool busy_for_capture() const override { return state_.busy(); }
@@ -102,7 +108,7 @@ class ReviewTab final : public Tab {
   StatusSink& status_;
   WorkbenchContext& context_;
   ReviewState state_;
-  FileBrowser browser_;
+  ReviewBrowsers browsers_;
   ReviewTrialView trial_view_;
   ReviewAgreementView agreement_view_;
   int pending_view_ = -1;  // a capture's request: 0 the trial view, 1 agreement, 2 study tables

@@ -57,8 +57,10 @@ void ReviewTrialView::draw(ReviewState& state, const PictureRenderer& renderer) 
   const TrialSeries& s = view->series;
   ImGui::Text("%s", s.trial.c_str());
   ImGui::SameLine();
-  ImGui::TextDisabled("%.2f s, %s fusion%s", s.time_s.empty() ? 0.0 : s.time_s.back(),
-                      fusion_method_name(view->result->method), s.has_vicon ? ", against Vicon" : ", no Vicon file");
+  ImGui::TextDisabled("%.2f s, %s fusion%s%s", s.time_s.empty() ? 0.0 : s.time_s.back(),
+                      fusion_method_name(view->result->method),
+                      view->result->length_correction ? " with the subject's finger-length correction" : "",
+                      s.has_vicon ? ", against Vicon" : ", no Vicon file");
   ImGui::SameLine(0, 20);
   ImGui::Checkbox("each controller", &each_controller_);
   if (ImGui::IsItemHovered()) ImGui::SetTooltip("Also draw each controller's own angles after realignment (LMC1-LMC4)");
