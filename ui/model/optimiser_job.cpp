@@ -88,6 +88,9 @@ bool OptimiserJob::start(const LayoutDocument& doc, const PoseSetPtr& poses, con
                                       ", from " + layout.name + "; cost " + std::to_string(out.pso.best_cost);
     ch.set_stage("Evaluating the candidate");
     out.candidate = evaluate_layout(out.pso.best_layout, *poses);
+    out.start_layout = layout;
+    out.start_terms = layout_robust_terms(layout, poses->prepared, settings.weights, settings.phalanx_radius_mm,
+                                          settings.axis_cut_mm);
     return out;
   });
   return true;

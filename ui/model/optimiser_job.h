@@ -37,6 +37,11 @@ struct OptimiserOutcome {
   int best_start = 0;
   int distinct_runners_up = 0;
   LayoutEvaluation candidate;
+  // The layout the search started from and its robust terms on the same pose set with the same
+  // weights (pso.best_terms are the candidate's), so the comparison can show what the robust
+  // metric gained term by term.
+  Layout start_layout;
+  RobustTerms start_terms;
 };
 
 // The search space the document describes: per-device locks, shared bounds; parameters locked

@@ -323,7 +323,21 @@ void OptimiserPanel::draw_comparison() {
                   s.layout().devices[static_cast<size_t>(d)].slot.c_str());
     row_num(name, a, b, false, true);
   }
+  // The robust metric's terms (lower is better), when "current" is still the layout the search
+  // started from: the job computed both on the same pose set with the same weights.
+  const bool same_start = outcome->start_layout.devices.size() == s.layout().devices.size() &&
+                          std::equal(outcome->start_layout.devices.begin(), outcome->start_layout.devices.end(),
+                                     s.layout().devices.begin(),
+                                     [](const LayoutDevice& a, const LayoutDevice& b) { return a.pose == b.pose; });
+  if (same_start) {
+    row_num("R (robust metric)", outcome->start_terms.total, outcome->pso.best_terms.total, true, false);
+    for (const RobustTermInfo& term : robust_term_infos()) {
+      if (term.weight == nullptr) continue;  // M is in the first rows
+      row_num(term.name, outcome->start_terms.*(term.value), outcome->pso.best_terms.*(term.value), true, false);
+    }
+  }
   ImGui::EndTable();
+  if (!same_start) ImGui::TextDisabled("(the robust terms are not compared: the layout changed since the search started)");
 }
 
 }  // namespace lmc::ui
