@@ -230,6 +230,15 @@ TEST_F(OptimiserFixture, ApplyReplacesTheLayoutInOneUndoableStep) {
   // The panel searches with the robust metric by default and says so.
   EXPECT_EQ(status.last.rfind("Optimiser finished: best R = ", 0), 0u) << status.last;
   EXPECT_EQ(state->optimiser.outcome()->pso.metric, PlacementMetricKind::kRobust);
+  // The comparison's robust rows: the start layout's terms beside the candidate's, on the same
+  // pose set with the same weights (the candidate's are the search's own cost, bit for bit).
+  const auto& outcome = *state->optimiser.outcome();
+  for (size_t d = 0; d < before.layout.devices.size(); ++d) {
+    EXPECT_EQ(outcome.start_layout.devices[d].pose, before.layout.devices[d].pose);
+  }
+  EXPECT_GT(outcome.start_terms.total, 0.0);
+  EXPECT_EQ(outcome.pso.best_terms.total, outcome.pso.best_cost);
+  EXPECT_GT(outcome.start_terms.metric_m_inside_cut, 0.0);
   const Layout candidate = state->optimiser.outcome()->pso.best_layout;
   click("apply");
   EXPECT_EQ(state->history().undo_size(), commits + 1);
