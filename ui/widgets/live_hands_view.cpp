@@ -89,18 +89,6 @@ void draw_live_hands_view(const char* id, OrbitCamera& camera, const Layout& lay
         labels.push_back({*p, col, layout.devices[static_cast<size_t>(it.id)].slot});
     }
   }
-  // The slots' names, spread so that two controllers standing close do not print over each other
-  // (the Layout scene's rule, ui/scene/label_spreading.h), with a shadow to read on the grid.
-  std::vector<LabelBox> boxes;
-  for (const SlotLabel& l : labels) {
-    const ImVec2 text = ImGui::CalcTextSize(l.text.c_str());
-    boxes.push_back({static_cast<float>(l.at.x()) - 14, static_cast<float>(l.at.y()), text.x, text.y});
-  }
-  boxes = spread_labels(std::move(boxes), 1.0f);
-  for (size_t i = 0; i < labels.size(); ++i) {
-    dl->AddText(ImVec2(boxes[i].x + 1, boxes[i].y + 1), IM_COL32(0, 0, 0, 200), labels[i].text.c_str());
-    dl->AddText(ImVec2(boxes[i].x, boxes[i].y), labels[i].colour, labels[i].text.c_str());
-  }
   // Every device's hand in the world frame: where the hands disagree, a device is misplaced.
   for (const auto& h : hands) {
     const ImU32 col = device_colour_u32(h.colour);
@@ -117,6 +105,19 @@ void draw_live_hands_view(const char* id, OrbitCamera& camera, const Layout& lay
       const Rgba rgba = b.digit >= 0 ? seen_count_colour(fused->seen_by[static_cast<size_t>(b.digit)]) : Rgba{0.9F, 0.9F, 0.9F, 1.0F};
       line(a, c, to_u32(Rgba{rgba.r, rgba.g, rgba.b, 1.0F}), 5.0F);
     }
+  }
+  // The slots' names, spread so that two controllers standing close do not print over each other
+  // (the Layout scene's rule, ui/scene/label_spreading.h), with a shadow to read on the grid, and
+  // drawn after the hands so that no hand line runs through a name.
+  std::vector<LabelBox> boxes;
+  for (const SlotLabel& l : labels) {
+    const ImVec2 text = ImGui::CalcTextSize(l.text.c_str());
+    boxes.push_back({static_cast<float>(l.at.x()) - 14, static_cast<float>(l.at.y()), text.x, text.y});
+  }
+  boxes = spread_labels(std::move(boxes), 1.0f);
+  for (size_t i = 0; i < labels.size(); ++i) {
+    dl->AddText(ImVec2(boxes[i].x + 1, boxes[i].y + 1), IM_COL32(0, 0, 0, 200), labels[i].text.c_str());
+    dl->AddText(ImVec2(boxes[i].x, boxes[i].y), labels[i].colour, labels[i].text.c_str());
   }
   dl->PopClipRect();
   // Wrapped to the canvas: a caption wider than a narrow view must not run off under the next panel.
