@@ -12,8 +12,8 @@
 #include <random>
 
 #include "core/common/error.h"
-#include "core/metric/cost_lower_bound.h"
 #include "core/metric/placement_metric.h"
+#include "core/optimise/pruned_swarm_evaluator.h"
 #include "core/optimise/swarm_evaluator.h"
 #include "core/visibility/device_view.h"
 
@@ -84,32 +84,9 @@ PsoResult run_pso(const Layout& start, const SearchSpace& space, std::span<const
   PsoResult result;
   result.status = JobStatus::kCompleted;
   result.metric = s.metric;
-
-  // The pose set is counted in rounds (cost_lower_bound.h): after each round, a particle whose
-  // best-case cost already reaches its own best cannot improve on it (improvement is strict), nor
-  // on the swarm's best (never above its own), so its remaining frames are skipped. Every
-  // comparison the swarm makes comes out as without the rounds: the search is the same, bit for
-  // bit. Rounds take every R-th chunk of frames so that each spans the whole pose set (all
-  // reference poses), which lets a poor particle show early; counts are integers, so the order
-  // changes nothing else.
   const bool robust = s.metric == PlacementMetricKind::kRobust;
-  const bool prune = s.prune_round_frames > 0 && (!robust || robust_bound_holds(s.weights));
-  const std::vector<FrameRun> chunks = chunk_runs(frames.size());
-  std::vector<std::vector<FrameRun>> rounds;
-  {
-    const size_t per_round =
-        prune ? std::max<size_t>(1, static_cast<size_t>(s.prune_round_frames) / kSwarmChunkFrames) : chunks.size();
-    const size_t count = (chunks.size() + per_round - 1) / per_round;
-    rounds.resize(count);
-    for (size_t c = 0; c < chunks.size(); ++c) rounds[c % count].push_back(chunks[c]);
-  }
-  const auto total_frames = static_cast<std::int64_t>(frames.size());
-  std::vector<std::int64_t> partial_counts(np * (nd + 1));
-  std::vector<LayoutTally> partial_tallies(robust ? np : 0, LayoutTally(devices));
-  std::vector<size_t> active;
-  std::vector<DeviceView> active_views;
-  std::vector<std::int64_t> round_counts;
-  std::vector<LayoutTally> round_tallies;
+  PrunedSwarmEvaluator evaluator(frames, s.particles, devices, limits,
+                                 SwarmCostSettings{s.metric, s.weights, s.axis_cut_mm, s.prune_round_frames});
 
   // Evaluates the whole swarm; false when cancelled.
   auto evaluate = [&]() {
@@ -118,55 +95,10 @@ PsoResult run_pso(const Layout& start, const SearchSpace& space, std::span<const
       for (size_t d = 0; d < nd; ++d) views[i * nd + d] = DeviceView::from_device(l.devices[d]);
       if (robust) footprint[i] = footprint_overlap_share(l);
     }
-    active.resize(np);
-    for (size_t i = 0; i < np; ++i) active[i] = i;
-    std::fill(partial_counts.begin(), partial_counts.end(), 0);
-    for (auto& t : partial_tallies) t = LayoutTally(devices);
-    std::int64_t counted = 0;
-    for (size_t r = 0; r < rounds.size() && !active.empty(); ++r) {
-      const auto na = static_cast<int>(active.size());
-      active_views.clear();
-      for (const size_t i : active) active_views.insert(active_views.end(), &views[i * nd], &views[i * nd] + nd);
-      std::int64_t round_frames = 0;
-      for (const FrameRun& run : rounds[r]) round_frames += static_cast<std::int64_t>(run.count);
-      bool ok = false;
-      if (!robust) {
-        round_counts.assign(active.size() * (nd + 1), 0);
-        arena->execute([&] {
-          ok = worst_finger_histograms(active_views, na, devices, frames, rounds[r], limits, round_counts, stop);
-        });
-        if (!ok) return false;
-        for (size_t a = 0; a < active.size(); ++a) {
-          for (size_t k = 0; k <= nd; ++k) partial_counts[active[a] * (nd + 1) + k] += round_counts[a * (nd + 1) + k];
-        }
-      } else {
-        round_tallies.assign(active.size(), LayoutTally(devices));
-        arena->execute([&] {
-          ok = layout_tallies(active_views, na, devices, frames, rounds[r], limits, s.axis_cut_mm, round_tallies, stop);
-        });
-        if (!ok) return false;
-        for (size_t a = 0; a < active.size(); ++a) partial_tallies[active[a]].add(round_tallies[a]);
-      }
-      counted += round_frames;
-      result.device_frame_evaluations += static_cast<std::int64_t>(active.size() * nd) * round_frames;
-      if (r + 1 == rounds.size()) break;
-      const std::int64_t remaining = total_frames - counted;
-      std::erase_if(active, [&](size_t i) {
-        if (!std::isfinite(pbest_cost[i])) return false;
-        const double bound =
-            robust ? robust_cost_lower_bound(partial_tallies[i], remaining, footprint[i], s.weights)
-                   : study_cost_lower_bound(std::span<const std::int64_t>(partial_counts).subspan(i * (nd + 1), nd + 1),
-                                            remaining);
-        if (!(bound >= pbest_cost[i])) return false;
-        cost[i] = std::numeric_limits<double>::infinity();  // stands for "not below its best": never compared further
-        ++result.layouts_pruned;
-        return true;
-      });
-    }
-    for (const size_t i : active) {
-      cost[i] = robust ? robust_terms(partial_tallies[i], footprint[i], s.weights).total
-                       : placement_metric(std::span<const std::int64_t>(partial_counts).subspan(i * (nd + 1), nd + 1));
-    }
+    const bool ok = evaluator.evaluate(views, footprint, pbest_cost, cost, *arena, stop);
+    result.device_frame_evaluations = evaluator.device_frame_evaluations();
+    result.layouts_pruned = evaluator.layouts_dropped();
+    if (!ok) return false;
     result.layout_evaluations += s.particles;
     // Personal and global bests: strict improvement; ties keep the earlier (lower index) one.
     for (size_t i = 0; i < np; ++i) {

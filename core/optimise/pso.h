@@ -5,7 +5,7 @@
 // chunks of work, and returns Completed or Cancelled with the best layout found so far.
 //
 // Pruning: a particle is counted on the pose set in rounds and dropped as soon as a lower bound
-// on its cost reaches its own best (cost_lower_bound.h); that changes no comparison, so the
+// on its cost reaches its own best (pruned_swarm_evaluator.h); that changes no comparison, so the
 // search is the same with or without it (PsoSettings::prune_round_frames).
 //
 // Determinism: every random number is drawn on the calling thread from one std::mt19937_64 seeded
