@@ -59,7 +59,7 @@ const EightyTrials& eighty_trials() {
         }
       }
     }
-    lmc::ui::ReviewBatchInput in{{e.folder}, {}, e.cache};
+    lmc::ui::ReviewBatchInput in{{e.folder}, {}, e.cache, {}};
     std::stop_source never;
     const auto primed = lmc::ui::run_review_batch(in, never.get_token(), {});
     e.ok = primed.trials.size() == 80 && primed.processed_now == 80;
@@ -79,7 +79,7 @@ const EightyTrials* eighty_trials_or_skip(benchmark::State& state) {
 void BM_ReviewReopenCached80(benchmark::State& state) {
   const EightyTrials* e = eighty_trials_or_skip(state);
   if (e == nullptr) return;
-  const lmc::ui::ReviewBatchInput in{{e->folder}, {}, e->cache};
+  const lmc::ui::ReviewBatchInput in{{e->folder}, {}, e->cache, {}};
   std::stop_source never;
   for (auto _ : state) {
     const auto batch = lmc::ui::run_review_batch(in, never.get_token(), {});
@@ -92,7 +92,7 @@ BENCHMARK(BM_ReviewReopenCached80)->Unit(benchmark::kMillisecond);
 void BM_ReviewExport80(benchmark::State& state) {
   const EightyTrials* e = eighty_trials_or_skip(state);
   if (e == nullptr) return;
-  const lmc::ui::ReviewBatchInput in{{e->folder}, {}, e->cache};
+  const lmc::ui::ReviewBatchInput in{{e->folder}, {}, e->cache, {}};
   std::stop_source never;
   const auto batch = lmc::ui::run_review_batch(in, never.get_token(), {});
   lmc::ReviewExportInput exports;

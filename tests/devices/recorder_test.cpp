@@ -464,6 +464,7 @@ TEST(ClockAlignment, EachDeviceClockIsExtrapolatedToTheViconInstant) {
   a.frames_received = 10;
   a.latest_host_receive_ns = 5'000'000'000;
   HandFrame fa;
+  for (auto& p : fa.points) p.setZero();  // Eigen leaves them unset; copying them would read garbage
   fa.frame_id = 77;
   fa.timestamp_us = 1'000'000;
   a.latest = fa;
