@@ -81,7 +81,7 @@ bool PrunedSwarmEvaluator::evaluate(std::span<const DeviceView> views, std::span
                                            remaining);
       if (!(bound >= best[i])) return false;
       cost[i] = std::numeric_limits<double>::infinity();  // stands for "not below its best": never compared further
-      ++layouts_dropped_;
+      ++layouts_stopped_early_;
       return true;
     });
   }

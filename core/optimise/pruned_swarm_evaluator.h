@@ -45,7 +45,7 @@ class PrunedSwarmEvaluator {
                 std::span<double> cost, tbb::task_arena& arena, std::stop_token stop);
 
   std::int64_t device_frame_evaluations() const { return device_frame_evaluations_; }  // tests actually run
-  std::int64_t layouts_dropped() const { return layouts_dropped_; }
+  std::int64_t layouts_stopped_early() const { return layouts_stopped_early_; }
 
  private:
   std::span<const PreparedFrame> frames_;
@@ -61,7 +61,7 @@ class PrunedSwarmEvaluator {
   std::vector<std::int64_t> round_counts_;
   std::vector<LayoutTally> round_tallies_;
   std::int64_t device_frame_evaluations_ = 0;
-  std::int64_t layouts_dropped_ = 0;
+  std::int64_t layouts_stopped_early_ = 0;
 };
 
 }  // namespace lmc

@@ -97,7 +97,7 @@ PsoResult run_pso(const Layout& start, const SearchSpace& space, std::span<const
     }
     const bool ok = evaluator.evaluate(views, footprint, pbest_cost, cost, *arena, stop);
     result.device_frame_evaluations = evaluator.device_frame_evaluations();
-    result.layouts_pruned = evaluator.layouts_dropped();
+    result.layouts_stopped_early = evaluator.layouts_stopped_early();
     if (!ok) return false;
     result.layout_evaluations += s.particles;
     // Personal and global bests: strict improvement; ties keep the earlier (lower index) one.

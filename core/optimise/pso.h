@@ -79,7 +79,7 @@ struct PsoResult {
   int iterations_done = 0;
   std::int64_t layout_evaluations = 0;
   std::int64_t device_frame_evaluations = 0;  // (device, frame) visibility tests actually run
-  std::int64_t layouts_pruned = 0;            // layout evaluations stopped early by the bound
+  std::int64_t layouts_stopped_early = 0;            // layout evaluations stopped early by the bound
   double seconds = 0;
 };
 

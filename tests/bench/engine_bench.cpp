@@ -176,7 +176,7 @@ void BM_EngineSearch30x100(benchmark::State& state) {
     benchmark::DoNotOptimize(r.best_cost);
     state.counters["best_cost"] = r.best_cost;
     state.counters["evals_per_s"] = static_cast<double>(r.device_frame_evaluations) / r.seconds;
-    state.counters["stopped_early"] = static_cast<double>(r.layouts_pruned);
+    state.counters["stopped_early"] = static_cast<double>(r.layouts_stopped_early);
   }
 }
 BENCHMARK(BM_EngineSearch30x100)->Arg(0)->Arg(1)->Iterations(1)->Unit(benchmark::kSecond)->UseRealTime();

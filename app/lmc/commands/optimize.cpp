@@ -182,12 +182,12 @@ void setup_optimize(CLI::App& app) {
                        poses.description + ", " + cost_name + " = " + std::to_string(r.best_cost);
     lmc::save_layout(best, opt->output);
     double seconds = 0;
-    std::int64_t layout_evaluations = 0, device_frame_evaluations = 0, layouts_pruned = 0;
+    std::int64_t layout_evaluations = 0, device_frame_evaluations = 0, layouts_stopped_early = 0;
     for (const auto& run : multi.runs) {
       seconds += run.seconds;
       layout_evaluations += run.layout_evaluations;
       device_frame_evaluations += run.device_frame_evaluations;
-      layouts_pruned += run.layouts_pruned;
+      layouts_stopped_early += run.layouts_stopped_early;
     }
 
     std::vector<std::string> slots;
@@ -214,7 +214,7 @@ void setup_optimize(CLI::App& app) {
       j["seconds"] = seconds;
       j["layout_evaluations"] = layout_evaluations;
       j["device_frame_evaluations"] = device_frame_evaluations;
-      j["layouts_stopped_early"] = layouts_pruned;
+      j["layouts_stopped_early"] = layouts_stopped_early;
       j["device_frame_evaluations_per_second"] = rate;
       std::cout << j.dump(2) << "\n";
       return;
@@ -237,7 +237,7 @@ void setup_optimize(CLI::App& app) {
                     multi.runs[static_cast<size_t>(k)].best_cost);
       }
     }
-    std::cout << "time " << seconds << " s, " << layout_evaluations << " layout evaluations (" << layouts_pruned
+    std::cout << "time " << seconds << " s, " << layout_evaluations << " layout evaluations (" << layouts_stopped_early
               << " stopped early: they could no longer beat their own best), " << device_frame_evaluations
               << " device-frame evaluations (" << rate << " per second)\n";
   });

@@ -71,9 +71,9 @@ TEST(Pso, PruningSkipsFramesButTakesTheSameSteps) {
     EXPECT_EQ(pruned.best_cost_history, whole.best_cost_history);
     EXPECT_EQ(pruned.best_cost, whole.best_cost);
     EXPECT_EQ(pruned.layout_evaluations, whole.layout_evaluations);
-    EXPECT_EQ(whole.layouts_pruned, 0);
+    EXPECT_EQ(whole.layouts_stopped_early, 0);
     EXPECT_EQ(whole.device_frame_evaluations, 8 * 13 * 4 * 640);
-    EXPECT_GT(pruned.layouts_pruned, 0);
+    EXPECT_GT(pruned.layouts_stopped_early, 0);
     EXPECT_LT(pruned.device_frame_evaluations, whole.device_frame_evaluations);
     // A one-thread pruned search is the same as well.
     s.threads = 1;
