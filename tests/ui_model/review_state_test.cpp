@@ -217,7 +217,7 @@ TEST_F(ReviewModel, ALengthCorrectionAppliesToItsFolderWithTheDefaultFusionOnly)
   ASSERT_EQ(fit.exit_code, 0) << fit.all();
 
   ReviewBatchInput in = input(cache);
-  in.corrections.emplace(*session_, read_length_correction(file));
+  in.corrections.emplace(*session_, FolderLengthCorrection{file, read_length_correction(file)});
   const ReviewBatch corrected = run(in);
   ASSERT_EQ(corrected.trials.size(), 2u);
   EXPECT_EQ(corrected.processed_now, 2);  // not the plain results from the cache
@@ -236,7 +236,7 @@ TEST_F(ReviewModel, ALengthCorrectionAppliesToItsFolderWithTheDefaultFusionOnly)
   in.options.process.method = FusionMethod::kReference;
   const ReviewBatch reference = run(in);
   ASSERT_TRUE(reference.trials[0].outcome.ok) << reference.trials[0].outcome.error;
-  EXPECT_FALSE(folder_options(in, *session_).process.length_correction.has_value());
+  EXPECT_FALSE(folder_options(in.options, in.corrections, *session_).process.length_correction.has_value());
   bool noted = false;
   for (const auto& n : reference.notes) noted = noted || n.find("not applied with the reference fusion") != std::string::npos;
   EXPECT_TRUE(noted);

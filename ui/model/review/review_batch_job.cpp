@@ -11,18 +11,20 @@ namespace lmc::ui {
 namespace {
 
 // The correction that applies to `folder`'s trials, or nullptr (none chosen, or the reference fusion).
-const LengthCorrection* folder_correction(const ReviewBatchInput& input, const std::filesystem::path& folder) {
-  if (input.options.process.method != FusionMethod::kDefault) return nullptr;
-  const auto it = input.corrections.find(folder);
-  return it != input.corrections.end() ? &it->second : nullptr;
+const LengthCorrection* folder_correction(const SessionOptions& options, const FolderLengthCorrections& corrections,
+                                          const std::filesystem::path& folder) {
+  if (options.process.method != FusionMethod::kDefault) return nullptr;
+  const auto it = corrections.find(folder);
+  return it != corrections.end() ? &it->second.correction : nullptr;
 }
 
 }  // namespace
 
-SessionOptions folder_options(const ReviewBatchInput& input, const std::filesystem::path& folder) {
-  SessionOptions options = input.options;
-  if (const LengthCorrection* c = folder_correction(input, folder)) options.process.length_correction = *c;
-  return options;
+SessionOptions folder_options(const SessionOptions& options, const FolderLengthCorrections& corrections,
+                              const std::filesystem::path& folder) {
+  SessionOptions out = options;
+  if (const LengthCorrection* c = folder_correction(options, corrections, folder)) out.process.length_correction = *c;
+  return out;
 }
 
 ReviewBatch run_review_batch(const ReviewBatchInput& input, std::stop_token stop,
@@ -51,7 +53,7 @@ ReviewBatch run_review_batch(const ReviewBatchInput& input, std::stop_token stop
   }
   group_key.push_back(nullptr);
   for (size_t k = 0; k < jobs.size(); ++k) {
-    const LengthCorrection* c = folder_correction(input, folder_of[k]);
+    const LengthCorrection* c = folder_correction(input.options, input.corrections, folder_of[k]);
     if (c == nullptr) continue;
     const auto g = std::find(group_key.begin(), group_key.end(), c);
     group_of[k] = static_cast<int>(g - group_key.begin());
@@ -71,7 +73,7 @@ ReviewBatch run_review_batch(const ReviewBatchInput& input, std::stop_token stop
       index.push_back(k);
     }
     if (group_jobs.empty()) continue;
-    SessionOptions options = folder_options(input, folder_of[index.front()]);
+    SessionOptions options = folder_options(input.options, input.corrections, folder_of[index.front()]);
     options.stop = stop;
     if (progress) options.on_progress = [&progress, done_before, total](int done, int) { progress(done_before + done, total); };
     CachedBatch done = process_session_cached(group_jobs, options, cache);

@@ -30,18 +30,26 @@ struct ReviewBatch {
   int processed_now = 0, from_cache = 0;
 };
 
+// A subject's finger-length correction chosen for one opened folder: the file and what it holds.
+struct FolderLengthCorrection {
+  std::filesystem::path file;
+  LengthCorrection correction;
+};
+using FolderLengthCorrections = std::map<std::filesystem::path, FolderLengthCorrection>;
+
 struct ReviewBatchInput {
   std::vector<std::filesystem::path> folders;
   SessionOptions options;                 // stop/on_progress are set by the job
   std::filesystem::path cache_dir;        // empty: no cache
   // A finger-length correction per folder (a subject's), applied to that folder's trials after the
   // default fusion; with the reference fusion none is applied (it stays the study's algorithm).
-  std::map<std::filesystem::path, LengthCorrection> corrections;
+  FolderLengthCorrections corrections;
 };
 
 // The options one folder's trials are processed with: `options` plus that folder's correction
 // when there is one and the fusion is the default.
-SessionOptions folder_options(const ReviewBatchInput& input, const std::filesystem::path& folder);
+SessionOptions folder_options(const SessionOptions& options, const FolderLengthCorrections& corrections,
+                              const std::filesystem::path& folder);
 
 // The work itself, for the job and for tests (runs on the calling thread).
 ReviewBatch run_review_batch(const ReviewBatchInput& input, std::stop_token stop,

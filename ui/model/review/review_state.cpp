@@ -91,7 +91,7 @@ void ReviewState::close_folder(const std::filesystem::path& folder) {
 
 bool ReviewState::set_length_correction(const std::filesystem::path& folder, const std::filesystem::path& file) {
   try {
-    corrections_[folder] = FolderCorrection{file, read_length_correction(file)};
+    corrections_[folder] = FolderLengthCorrection{file, read_length_correction(file)};
   } catch (const std::exception& e) {
     problem_ = std::string("length correction not used: ") + e.what();
     return false;
@@ -104,15 +104,9 @@ void ReviewState::clear_length_correction(const std::filesystem::path& folder) {
   if (corrections_.erase(folder) > 0) reprocess();
 }
 
-const ReviewState::FolderCorrection* ReviewState::length_correction(const std::filesystem::path& folder) const {
+const FolderLengthCorrection* ReviewState::length_correction(const std::filesystem::path& folder) const {
   const auto it = corrections_.find(folder);
   return it != corrections_.end() ? &it->second : nullptr;
-}
-
-ReviewBatchInput ReviewState::batch_input() const {
-  ReviewBatchInput in{folders_, options_, cache_dir_, {}};
-  for (const auto& [folder, c] : corrections_) in.corrections.emplace(folder, c.correction);
-  return in;
 }
 
 void ReviewState::set_method(FusionMethod method) {
@@ -124,7 +118,7 @@ void ReviewState::set_method(FusionMethod method) {
 void ReviewState::reprocess() {
   problem_.clear();
   if (selected_ >= 0 && selected_ < static_cast<int>(trials().size())) selected_trial_ = trial_key(trials()[selected_]);
-  batch_job_.start(batch_input());
+  batch_job_.start(ReviewBatchInput{folders_, options_, cache_dir_, corrections_});
 }
 
 void ReviewState::select(int index) {
@@ -133,7 +127,7 @@ void ReviewState::select(int index) {
   const ReviewTrial& t = trials()[index];
   selected_trial_ = trial_key(t);
   view_.reset();
-  view_job_.start(t.job, folder_options(batch_input(), t.folder));
+  view_job_.start(t.job, folder_options(options_, corrections_, t.folder));
 }
 
 void ReviewState::prefer_trial(std::string name) {
@@ -234,11 +228,9 @@ void ReviewState::export_trial(const std::filesystem::path& dir, bool each_contr
   if (!view_ || !view_->result) return;
   auto view = view_;
   const std::string method = fusion_method_name(options_.process.method);
-  // The options this trial was processed with, its folder's length correction included.
-  const ProcessOptions trial_options =
-      selected_ >= 0 && selected_ < static_cast<int>(trials().size())
-          ? folder_options(batch_input(), trials()[static_cast<size_t>(selected_)].folder).process
-          : options_.process;
+  // The options this trial was processed with: the result says which length correction it got.
+  ProcessOptions trial_options = options_.process;
+  trial_options.length_correction = view->result->length_correction;
   const nlohmann::json parameters = process_options_json(trial_options);
   export_dir_ = dir;
   export_message_ = "exporting...";

@@ -3,7 +3,6 @@
 // batch job's result), the table's filter, the selected trial and its full view, and the x range
 // the stacked plots share. Panels read it and call its actions; processing happens in the jobs.
 #include <filesystem>
-#include <map>
 #include <memory>
 #include <optional>
 #include <string>
@@ -89,12 +88,8 @@ class ReviewState {
   std::shared_ptr<const TrialView> view() const { return view_; }
   const std::shared_ptr<LinkedXRange>& x_range() const { return x_range_; }
   FusionMethod method() const { return options_.process.method; }
-  struct FolderCorrection {
-    std::filesystem::path file;
-    LengthCorrection correction;
-  };
   // The folder's correction, or nullptr; whether it is applied also depends on method().
-  const FolderCorrection* length_correction(const std::filesystem::path& folder) const;
+  const FolderLengthCorrection* length_correction(const std::filesystem::path& folder) const;
   bool busy() const { return batch_job_.running() || view_job_.running() || export_job_.running(); }
   // Agreement and the visibility map over the trials the table shows (its filter), recomputed only
   // when the batch, the filter or the motion changes: 80 trials take about a millisecond.
@@ -120,10 +115,9 @@ class ReviewState {
 
  private:
   int preferred_index() const;  // index of the preferred trial in trials(), or -1
-  ReviewBatchInput batch_input() const;
   std::vector<std::filesystem::path> folders_;
   SessionOptions options_;
-  std::map<std::filesystem::path, FolderCorrection> corrections_;
+  FolderLengthCorrections corrections_;
   std::filesystem::path cache_dir_;
   ReviewBatchJob batch_job_;
   std::shared_ptr<const ReviewBatch> batch_;

@@ -61,7 +61,7 @@ bool folder_chip(ReviewState& state, ReviewBrowsers& browsers, const std::filesy
   ImGui::TextDisabled("[%s", name.c_str());
   if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", folder.string().c_str());
   ImGui::SameLine(0, 6);
-  if (const ReviewState::FolderCorrection* c = state.length_correction(folder)) {
+  if (const FolderLengthCorrection* c = state.length_correction(folder)) {
     const bool applied = state.method() == FusionMethod::kDefault;
     ImGui::TextColored(applied ? ImVec4(0.45F, 0.85F, 0.95F, 1) : ImVec4(0.6F, 0.6F, 0.6F, 1),
                        applied ? "lengths corrected" : "lengths not corrected (reference fusion)");
