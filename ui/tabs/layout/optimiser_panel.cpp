@@ -276,10 +276,12 @@ void OptimiserPanel::draw_comparison() {
   ImGui::TableSetupColumn("candidate", ImGuiTableColumnFlags_WidthStretch);
   ImGui::TableSetupColumn("change", ImGuiTableColumnFlags_WidthStretch);
   ImGui::TableHeadersRow();
-  const auto row_num = [](const char* name, double a, double b, bool lower_better, bool percent) {
+  const auto row_num = [](const char* name, double a, double b, bool lower_better, bool percent,
+                          const char* meaning = nullptr) {
     ImGui::TableNextRow();
     ImGui::TableSetColumnIndex(0);
     ImGui::TextUnformatted(name);
+    if (meaning != nullptr && ImGui::IsItemHovered()) ImGui::SetTooltip("%s (lower is better)", meaning);
     ImGui::TableSetColumnIndex(1);
     percent ? ImGui::Text("%.1f %%", a * 100) : ImGui::Text("%.4g", a);
     ImGui::TableSetColumnIndex(2);
@@ -325,15 +327,16 @@ void OptimiserPanel::draw_comparison() {
   }
   // The robust metric's terms (lower is better), when "current" is still the layout the search
   // started from: the job computed both on the same pose set with the same weights.
-  const bool same_start = outcome->start_layout.devices.size() == s.layout().devices.size() &&
-                          std::equal(outcome->start_layout.devices.begin(), outcome->start_layout.devices.end(),
-                                     s.layout().devices.begin(),
-                                     [](const LayoutDevice& a, const LayoutDevice& b) { return a.pose == b.pose; });
+  // (Poses, offsets and the sensor model all change the terms; the name does not.)
+  const bool same_start =
+      outcome->start_layout.devices == s.layout().devices && outcome->start_layout.sensor == s.layout().sensor;
   if (same_start) {
-    row_num("R (robust metric)", outcome->start_terms.total, outcome->pso.best_terms.total, true, false);
+    row_num("R (robust metric)", outcome->start_terms.total, outcome->pso.best_terms.total, true, false,
+            "M plus each weight times its term");
     for (const RobustTermInfo& term : robust_term_infos()) {
       if (term.weight == nullptr) continue;  // M is in the first rows
-      row_num(term.name, outcome->start_terms.*(term.value), outcome->pso.best_terms.*(term.value), true, false);
+      row_num(term.name, outcome->start_terms.*(term.value), outcome->pso.best_terms.*(term.value), true, false,
+              term.meaning);
     }
   }
   ImGui::EndTable();
