@@ -3,6 +3,7 @@
 
 #include "core/common/number_format.h"
 #include "core/hand/reference_poses.h"
+#include "core/metric/inside_cut_visibility.h"
 #include "core/metric/layout_tally.h"
 #include "core/visibility/visibility_kernel.h"
 
@@ -42,7 +43,8 @@ LayoutReport build_layout_report(const Layout& layout, const PoseSet& poses, std
   r.terms_all = robust_terms(all, footprint, weights);
   if (!horizontal.empty()) r.terms_horizontal = robust_terms(tally_layout(views, prepared, limits, kAxisCutMm, horizontal), footprint, weights);
   if (!vertical.empty()) r.terms_vertical = robust_terms(tally_layout(views, prepared, limits, kAxisCutMm, vertical), footprint, weights);
-  r.controllers = controller_contributions(table, all, r.slots);
+  const VisibilityTable inside_cut = inside_cut_visibility(layout, prepared, phalanx_radius_mm, kAxisCutMm);
+  r.controllers = controller_contributions(table, all, r.slots, {}, &inside_cut);
   for (size_t i = 0; i < layout.devices.size(); ++i) {
     for (size_t j = i + 1; j < layout.devices.size(); ++j) {
       if (footprints_overlap(layout.devices[i], layout.devices[j])) r.overlapping_pairs.push_back(r.slots[i] + " and " + r.slots[j]);
@@ -100,6 +102,19 @@ std::string format_layout_report_markdown(const LayoutReport& r, const std::vect
       if (!c.counts) md += "* **" + c.slot + " does not count**: the layout is as good without it (it sees some finger in " + report_percent(c.seeing_share) + " of frames).\n";
     }
   }
+  int idle_inside = 0;
+  for (const auto& c : r.controllers) idle_inside += c.counts_inside_cut ? 0 : 1;
+  if (idle_inside == 0) {
+    md += "* Inside the axis cuts too: without any one controller, M inside the cut rises or fewer frames have every "
+          "finger seen by two controllers inside their cuts.\n";
+  } else {
+    for (const auto& c : r.controllers) {
+      if (!c.counts_inside_cut) {
+        md += "* **" + c.slot + " adds nothing inside its cut**: it sees some finger with every marker inside its cut in " +
+              report_percent(c.seeing_inside_cut_share) + " of frames.\n";
+      }
+    }
+  }
   for (const auto& pair : r.overlapping_pairs) {
     md += "* **" + pair + " overlap** on the table (their 80 x 30 mm footprints, offsets included): this layout cannot be built as written.\n";
   }
@@ -126,6 +141,15 @@ std::string format_layout_report_markdown(const LayoutReport& r, const std::vect
           report_percent(c.cut_share) + " | " + format_fixed(c.off_centre, 3) + " | " +
           format_fixed(c.metric_without, 4) + " | " + report_percent(c.redundant_without) + " | " +
           (c.counts ? "yes" : "**no**") + " |\n";
+  }
+  md += "\nCounting only what each controller can measure (a finger with a marker beyond the controller's axis cut "
+        "unseen by it):\n\n"
+        "| controller | sees some finger inside its cut | M inside cut without it | every finger 2+ without it | counts |\n"
+        "|---|---:|---:|---:|---|\n";
+  for (const auto& c : r.controllers) {
+    md += "| " + c.slot + " | " + report_percent(c.seeing_inside_cut_share) + " | " +
+          format_fixed(c.metric_inside_cut_without, 4) + " | " + report_percent(c.redundant_inside_cut_without) + " | " +
+          (c.counts_inside_cut ? "yes" : "**no**") + " |\n";
   }
 
   md += "\n## Coverage per reference pose\n\nShare of the pose's frames in which each finger is seen by at least one "

@@ -57,10 +57,14 @@ TEST(LmcEvaluate, RobustTermsAndWhatEachControllerContributes) {
   EXPECT_EQ(j["controllers"][0]["seeing_share"], 0.0);
   EXPECT_EQ(j["controllers"][0]["counts"], false);
   EXPECT_EQ(j["controllers"][3]["counts"], true);
+  EXPECT_EQ(j["controllers"][0]["seeing_inside_cut_share"], 0.0);
+  EXPECT_EQ(j["controllers"][0]["counts_inside_cut"], false);
+  EXPECT_LE(j["controllers"][3]["seeing_inside_cut_share"].get<double>(), j["controllers"][3]["seeing_share"].get<double>());
   const CliRun t = run_lmc("evaluate --layout paper-optimized --frames 300", dir);
   ASSERT_EQ(t.exit_code, 0) << t.err;
   EXPECT_NE(t.out.find("NO: the layout is as good without it"), std::string::npos) << t.out;
   EXPECT_NE(t.out.find("axis cut"), std::string::npos) << t.out;
+  EXPECT_NE(t.out.find("the same inside the axis cuts"), std::string::npos) << t.out;
   const auto report = dir / "report";
   const CliRun w = run_lmc("evaluate --layout paper-optimized --frames 300 --report " + lmc::test::shell_quote(report.string()), dir);
   ASSERT_EQ(w.exit_code, 0) << w.err;

@@ -93,7 +93,11 @@ void setup_evaluate(CLI::App& app) {
                       {"off_centre", c.off_centre},
                       {"metric_without", c.metric_without},
                       {"redundant_share_without", c.redundant_without},
-                      {"counts", c.counts}});
+                      {"counts", c.counts},
+                      {"seeing_inside_cut_share", c.seeing_inside_cut_share},
+                      {"metric_inside_cut_without", c.metric_inside_cut_without},
+                      {"redundant_share_inside_cut_without", c.redundant_inside_cut_without},
+                      {"counts_inside_cut", c.counts_inside_cut}});
       }
       j["controllers"] = cj;
       j["seconds"] = seconds;
@@ -116,6 +120,15 @@ void setup_evaluate(CLI::App& app) {
       std::printf("  %-6s %7.1f%% %7.1f%% %8.1f%% %10.3f %11.6f %12.1f%%  %s\n", c.slot.c_str(), 100 * c.seeing_share,
                   100 * c.sole_share, 100 * c.cut_share, c.off_centre, c.metric_without, 100 * c.redundant_without,
                   c.counts ? "yes" : "NO: the layout is as good without it");
+    }
+    std::printf("the same inside the axis cuts (a finger with a marker beyond a controller's cut unseen by it; M inside "
+                "cut %.6f):\n",
+                all_terms.metric_m_inside_cut);
+    std::printf("  %-6s %8s %11s %13s  %s\n", "slot", "seeing", "M without", ">=2 without", "counts");
+    for (const auto& c : contributions) {
+      std::printf("  %-6s %7.1f%% %11.6f %12.1f%%  %s\n", c.slot.c_str(), 100 * c.seeing_inside_cut_share,
+                  c.metric_inside_cut_without, 100 * c.redundant_inside_cut_without,
+                  c.counts_inside_cut ? "yes" : "NO: nothing inside its cut that the others lack");
     }
     std::fflush(stdout);
     const double evals = static_cast<double>(table.devices) * static_cast<double>(table.frames);

@@ -111,8 +111,8 @@ void setup_optimize(CLI::App& app) {
   app.add_option("--w-footprint", opt->weights.footprint, "Robust metric: weight of the footprint-overlap term")
       ->check(CLI::NonNegativeNumber);
   app.add_option("--w-inside-cut", opt->weights.inside_cut,
-                 "Robust metric: weight of M counting only markers inside each controller's axis cut (default 0: "
-                 "reported, not searched on)")
+                 "Robust metric: weight of M counting only markers inside each controller's axis cut (what the "
+                 "controllers can measure; 0 = reported, not searched on)")
       ->check(CLI::NonNegativeNumber);
   app.add_flag("--json", opt->json, "Print the summary as JSON on stdout");
   app.add_flag("--no-progress", opt->no_progress, "No progress bar on stderr");

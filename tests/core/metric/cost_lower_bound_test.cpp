@@ -54,7 +54,7 @@ TEST(CostLowerBound, NeverAboveTheFinalCostAndEqualToItWhenEveryFrameIsCounted) 
   heavy.axis_cut = 25;
   heavy.participation = 20;
   heavy.inside_cut = 3;
-  RobustWeights zero{0, 0, 0, 0, 0, 0.2};
+  RobustWeights zero = RobustWeights::all_off();
   int strictly_below = 0;
   for (const Layout& layout : layouts_to_bound()) {
     const double footprint = footprint_overlap_share(layout);

@@ -55,6 +55,11 @@ TEST(LayoutReport, ThePapersOptimizedLayoutIsExplainedInOnePage) {
   EXPECT_NE(md.find("| M inside cut | "), std::string::npos) << md;
   EXPECT_NE(md.find("Counting only what lies inside each controller's cut"), std::string::npos) << md;
   EXPECT_GT(r.terms_all.metric_m_inside_cut, r.terms_all.metric_m);
+  // Each controller counted the same way: LMC1 sees nothing, so nothing inside its cut either.
+  EXPECT_FALSE(r.controllers[0].counts_inside_cut);
+  EXPECT_EQ(r.controllers[0].seeing_inside_cut_share, 0.0);
+  EXPECT_NE(md.find("**LMC1 adds nothing inside its cut**"), std::string::npos) << md;
+  EXPECT_NE(md.find("| controller | sees some finger inside its cut | M inside cut without it |"), std::string::npos) << md;
 }
 
 TEST(LayoutReport, ALayoutWhereEveryControllerCountsSaysSo) {
@@ -63,6 +68,9 @@ TEST(LayoutReport, ALayoutWhereEveryControllerCountsSaysSo) {
   for (const auto& c : r.controllers) EXPECT_TRUE(c.counts) << c.slot;
   EXPECT_TRUE(r.overlapping_pairs.empty());
   EXPECT_NE(format_layout_report_markdown(r).find("Every controller counts"), std::string::npos);
+  // paper-initial's controllers sit under the hand, within their cuts: each counts inside it too.
+  for (const auto& c : r.controllers) EXPECT_TRUE(c.counts_inside_cut) << c.slot;
+  EXPECT_NE(format_layout_report_markdown(r).find("Inside the axis cuts too"), std::string::npos);
 }
 
 }  // namespace layout_report_test

@@ -10,6 +10,7 @@
 #include "core/layout/layout.h"
 #include "core/metric/controller_contribution.h"
 #include "core/metric/coverage.h"
+#include "core/metric/inside_cut_visibility.h"
 #include "core/metric/layout_tally.h"
 #include "core/metric/placement_metric.h"
 #include "core/optimise/search_space.h"
@@ -37,7 +38,7 @@ TEST(RobustMetric, WithEveryWeightZeroItIsTheStudysMetricExactly) {
   const Coverage cov = compute_coverage(compute_visibility(l, robust_frames()));
   EXPECT_EQ(t.c, cov.c);
   EXPECT_EQ(t.frames, 200);
-  const RobustWeights zero{0, 0, 0, 0, 0, 0.2};
+  const RobustWeights zero = RobustWeights::all_off();
   const RobustTerms r = robust_terms(t, footprint_overlap_share(l), zero);
   EXPECT_EQ(r.total, placement_metric(cov.c));
   EXPECT_EQ(r.metric_m, cov.metric);
@@ -56,16 +57,49 @@ TEST(RobustMetric, MInsideTheCutCountsOnlyWhatTheControllersCanMeasure) {
   const LayoutTally wide = tally_layout(views_of(l), robust_frames(), make_limits(VisibilityParams::from_sensor(l.sensor)), 1e9);
   EXPECT_EQ(wide.c_inside_cut, wide.c);
   EXPECT_EQ(wide.c, t.c);
-  // Its weight adds exactly weight × M_cut to R; at 0 (the default) R is what it was without it.
+  // Its weight adds exactly weight × M_cut to R (the default weight is 1); at 0 it is only reported.
+  RobustWeights off;
+  off.inside_cut = 0;
+  const RobustTerms r0 = robust_terms(t, footprint_overlap_share(l), off);
+  EXPECT_EQ(r0.metric_m_inside_cut, r.metric_m_inside_cut);
+  EXPECT_DOUBLE_EQ(r.total, r0.total + r.metric_m_inside_cut);
   RobustWeights w;
   w.inside_cut = 2;
   const RobustTerms r2 = robust_terms(t, footprint_overlap_share(l), w);
-  EXPECT_DOUBLE_EQ(r2.total, r.total + 2 * r.metric_m_inside_cut);
+  EXPECT_DOUBLE_EQ(r2.total, r0.total + 2 * r.metric_m_inside_cut);
   EXPECT_EQ(r2.metric_m_inside_cut, r.metric_m_inside_cut);
   // The reports list it with the others.
   bool listed = false;
   for (const RobustTermInfo& term : robust_term_infos()) listed = listed || std::string(term.key) == "inside_cut";
   EXPECT_TRUE(listed);
+}
+
+// What each controller adds inside its cut is counted from the same bits as M_cut: the inside-cut
+// table's coverage is the tally's c_inside_cut, a controller sees no more inside its cut than it
+// sees, and with a cut no marker reaches the inside-cut figures are the plain ones.
+TEST(RobustMetric, EachControllersContributionInsideItsCutComesFromTheBitsMInsideCutCounts) {
+  const Layout l = load_layout_or_preset("paper-optimized-as-processed");
+  const LayoutTally t = tally_of(l);
+  const VisibilityTable table = compute_visibility(l, robust_frames());
+  const VisibilityTable inside = inside_cut_visibility(l, robust_frames());
+  EXPECT_EQ(compute_coverage(inside).c, t.c_inside_cut);
+  const std::vector<std::string> slots{"LMC1", "LMC2", "LMC3", "LMC4"};
+  const auto with_cut = controller_contributions(table, t, slots, {}, &inside);
+  ASSERT_EQ(with_cut.size(), 4u);
+  bool some_less = false;
+  for (const auto& c : with_cut) {
+    EXPECT_LE(c.seeing_inside_cut_share, c.seeing_share) << c.slot;
+    some_less = some_less || c.seeing_inside_cut_share < c.seeing_share;
+  }
+  EXPECT_TRUE(some_less);  // two thirds of its seeing pairs have a seen marker beyond the cut
+  const VisibilityTable no_cut = inside_cut_visibility(l, robust_frames(), 10.0, 1e9);
+  EXPECT_EQ(no_cut.bits, table.bits);
+  for (const auto& c : controller_contributions(table, t, slots, {}, &no_cut)) {
+    EXPECT_EQ(c.seeing_inside_cut_share, c.seeing_share) << c.slot;
+    EXPECT_EQ(c.metric_inside_cut_without, c.metric_without) << c.slot;
+    EXPECT_EQ(c.redundant_inside_cut_without, c.redundant_without) << c.slot;
+    EXPECT_EQ(c.counts_inside_cut, c.counts) << c.slot;
+  }
 }
 
 TEST(RobustMetric, TheTallyIsTheSameOnOneOrTwoThreads) {

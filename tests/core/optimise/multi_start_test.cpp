@@ -24,7 +24,7 @@ PsoSettings ms_small(PlacementMetricKind metric, int threads = 0) {
 TEST(RobustSearch, WithEveryWeightZeroTheRobustSearchIsTheStudySearch) {
   PsoSettings study = ms_small(PlacementMetricKind::kStudy);
   PsoSettings robust = ms_small(PlacementMetricKind::kRobust);
-  robust.weights = RobustWeights{0, 0, 0, 0, 0, 0.2};
+  robust.weights = RobustWeights::all_off();
   const SearchSpace space = table_search_space();
   const PsoResult a = run_pso(default_start_layout(3), space, ms_frames(), study);
   const PsoResult b = run_pso(default_start_layout(3), space, ms_frames(), robust);

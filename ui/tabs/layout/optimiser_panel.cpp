@@ -90,7 +90,8 @@ void OptimiserPanel::draw_settings() {
   if (ImGui::IsItemHovered()) {
     ImGui::SetTooltip("robust = M + tie-breakers: redundancy (fingers seen by 2+ controllers), participation\n"
                       "(each controller sees a finger in 20 %% of frames), axis cut (seen markers within 250 mm),\n"
-                      "centring, footprints that do not overlap, M inside the cut (off by default).\n"
+                      "centring, footprints that do not overlap, and M inside the cut (what the controllers\n"
+                      "can measure: a finger with a marker beyond a controller's cut unseen by it).\n"
                       "lmc evaluate prints every term.");
   }
   if (open_settings_once_) ImGui::SetNextItemOpen(true);

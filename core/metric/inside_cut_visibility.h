@@ -1,0 +1,20 @@
+#pragma once
+// The visibility bits of what each controller can measure: finger f counts as seen by device d in a
+// frame when d sees it (visibility_kernel.h) and none of its four markers lies beyond ±axis_cut_mm
+// on an axis of d, where the controller reports the cut value instead of the marker (the paper's
+// discussion). These are, per (device, frame), the bits LayoutTally::c_inside_cut is counted from;
+// the layout report needs them per controller to say what each one adds inside its cut.
+#include <span>
+
+#include "core/layout/layout.h"
+#include "core/metric/layout_tally.h"
+#include "core/visibility/frame_prep.h"
+#include "core/visibility/visibility_kernel.h"
+
+namespace lmc {
+
+// D × N bits, device-major as compute_visibility's (parallel over frames; exact for any thread count).
+VisibilityTable inside_cut_visibility(const Layout& layout, std::span<const PreparedFrame> frames,
+                                      double phalanx_radius_mm = 10.0, double axis_cut_mm = kAxisCutMm);
+
+}  // namespace lmc
