@@ -9,6 +9,10 @@ function(lmc_compile_flags target)
     -Wvla                   # no variable-length arrays: stack blow-ups on large pose sets
     -Wformat=2 -Wformat-security  # names from files must never become format strings
     -Wnon-virtual-dtor
+    # Never fuse a*b+c into one multiply-add: the visibility kernel's AVX-512 build (which has FMA)
+    # must round as its baseline and AVX2 builds do, bit for bit (visibility_kernel.cpp;
+    # tests/check_no_fused_multiply_add.sh checks the program). Nothing else here is built for FMA.
+    -ffp-contract=off
   )
   if(LMC_WERROR)
     target_compile_options(${target} PRIVATE -Werror)

@@ -6,23 +6,25 @@
 #include <cstdint>
 
 #include "core/common/error.h"
+#include "core/visibility/phalanx_block_avx512.h"
 #include "core/visibility/phalanx_ring.h"
 #include "core/visibility/visibility_tests.h"
 
 namespace lmc {
 namespace {
 
-// The kernel body; compiled twice (baseline and AVX2, see below). No fused multiply-add is enabled,
-// so both builds give bit-identical results (IEEE add/mul/div are exact per lane). A target that
-// brings FMA with it (GCC's "avx512f" does) would contract a*b+c into one rounding: it needs
-// -ffp-contract=off on this file *and* no precompiled header, because GCC takes the header's saved
-// optimisation options over the file's own (an AVX-512 build was tried that way, bit-identical but
-// no faster, and not kept). Every decision uses the same expressions as the elementary tests of
-// visibility_tests.h, so the bits are the explaining path's (tests check both). With kCut it also
-// reports, per finger, whether one of its markers lies beyond ±cut_mm on an axis of the device (the
-// robust metric's axis cut): the device-frame coordinates are computed here anyway, so the tally
-// need not transform the markers again.
-template <bool kCut>
+// The kernel body; compiled three times: baseline (SSE2), AVX2 and AVX-512 (dispatched at run time
+// by what the CPU has, see below). The three give bit-identical results: IEEE add/mul/div are
+// exact per lane, and no multiply-add is ever fused (-ffp-contract=off for every first-party file,
+// cmake/lmc_target_options.cmake; AVX-512 brings FMA with it; tests/check_no_fused_multiply_add.sh
+// checks the built program). Every decision uses the same expressions as the elementary tests of
+// visibility_tests.h, so the bits are the explaining path's (tests check all three builds). With
+// kCut it also reports, per finger, whether one of its markers lies beyond ±cut_mm on an axis of the
+// device (the robust metric's axis cut): the device-frame coordinates are computed here anyway, so
+// the tally need not transform the markers again.
+enum class Isa { kBaseline, kAvx2, kAvx512 };
+
+template <bool kCut, Isa kIsa>
 [[gnu::always_inline]] inline FingerBits visible_fingers_body(const PreparedFrame& fr, const DeviceView& d,
                                                             const VisibilityLimits& lim, double cut_mm,
                                                             FingerBits* cut_bits) {
@@ -83,9 +85,18 @@ template <bool kCut>
       // §3.3 palm (rarely hides a ray, but it is cheaper than the fingers, so it goes first);
       // §3.4 the other fingers (phalanx_ring.h).
       const double t = palm_t[k];
-      const bool hidden =
-          (crosses[k] != 0 && hull_contains(fr.hull, d.ox + t * vx[k], d.oy + t * vy[k], d.oz + t * vz[k])) ||
-          vis::others_occlude(ring, start, vx[k], vy[k], vz[k], vv[k], lim.radius_sq);
+      bool hidden = crosses[k] != 0 && hull_contains(fr.hull, d.ox + t * vx[k], d.oy + t * vy[k], d.oz + t * vz[k]);
+      if (!hidden) {
+#if defined(__x86_64__) && defined(__GNUC__)
+        if constexpr (kIsa == Isa::kAvx512) {
+          hidden = vis::others_occlude_avx512(ring, vis::others_lane_mask(f), vx[k], vy[k], vz[k], vv[k], lim.radius_sq);
+        } else {
+          hidden = vis::others_occlude(ring, start, vx[k], vy[k], vz[k], vv[k], lim.radius_sq);
+        }
+#else
+        hidden = vis::others_occlude(ring, start, vx[k], vy[k], vz[k], vv[k], lim.radius_sq);
+#endif
+      }
       if (hidden) {
         bits = static_cast<FingerBits>(bits & ~(1u << f));
         break;
@@ -109,81 +120,137 @@ template <bool kCut>
 }
 
 // A device over a run of frames: the device view and limits stay in registers across frames.
-template <bool kCut>
+template <bool kCut, Isa kIsa>
 [[gnu::always_inline]] inline void device_run_body(const DeviceView& d, std::span<const PreparedFrame> frames,
                                                    const VisibilityLimits& lim, double cut_mm, FingerBits* out,
                                                    FingerBits* cut_out) {
   const DeviceView view = d;
   const VisibilityLimits limits = lim;
   for (size_t j = 0; j < frames.size(); ++j) {
-    out[j] = visible_fingers_body<kCut>(frames[j], view, limits, cut_mm, kCut ? cut_out + j : nullptr);
+    out[j] = visible_fingers_body<kCut, kIsa>(frames[j], view, limits, cut_mm, kCut ? cut_out + j : nullptr);
   }
 }
 
 #if defined(__x86_64__) && defined(__GNUC__)
 [[gnu::target("avx2")]] FingerBits visible_fingers_avx2(const PreparedFrame& fr, const DeviceView& d,
                                                        const VisibilityLimits& lim) {
-  return visible_fingers_body<false>(fr, d, lim, 0.0, nullptr);
+  return visible_fingers_body<false, Isa::kAvx2>(fr, d, lim, 0.0, nullptr);
 }
 [[gnu::target("avx2")]] void device_run_avx2(const DeviceView& d, std::span<const PreparedFrame> frames,
                                             const VisibilityLimits& lim, FingerBits* out) {
-  device_run_body<false>(d, frames, lim, 0.0, out, nullptr);
+  device_run_body<false, Isa::kAvx2>(d, frames, lim, 0.0, out, nullptr);
 }
 [[gnu::target("avx2")]] void device_run_cut_avx2(const DeviceView& d, std::span<const PreparedFrame> frames,
                                                 const VisibilityLimits& lim, double cut_mm, FingerBits* out,
                                                 FingerBits* cut_out) {
-  device_run_body<true>(d, frames, lim, cut_mm, out, cut_out);
+  device_run_body<true, Isa::kAvx2>(d, frames, lim, cut_mm, out, cut_out);
 }
-bool has_avx2() {
+// flatten: inlines others_occlude_avx512 into the body (phalanx_block_avx512.h says why it must).
+[[gnu::target("avx512f"), gnu::flatten]] FingerBits visible_fingers_avx512(const PreparedFrame& fr,
+                                                                          const DeviceView& d,
+                                                                          const VisibilityLimits& lim) {
+  return visible_fingers_body<false, Isa::kAvx512>(fr, d, lim, 0.0, nullptr);
+}
+[[gnu::target("avx512f"), gnu::flatten]] void device_run_avx512(const DeviceView& d,
+                                                               std::span<const PreparedFrame> frames,
+                                                               const VisibilityLimits& lim, FingerBits* out) {
+  device_run_body<false, Isa::kAvx512>(d, frames, lim, 0.0, out, nullptr);
+}
+[[gnu::target("avx512f"), gnu::flatten]] void device_run_cut_avx512(const DeviceView& d,
+                                                                   std::span<const PreparedFrame> frames,
+                                                                   const VisibilityLimits& lim, double cut_mm,
+                                                                   FingerBits* out, FingerBits* cut_out) {
+  device_run_body<true, Isa::kAvx512>(d, frames, lim, cut_mm, out, cut_out);
+}
+bool cpu_has_avx2() {
   static const bool yes = [] {
     __builtin_cpu_init();  // needed when first used from a static initialiser
     return __builtin_cpu_supports("avx2") != 0;
   }();
   return yes;
 }
+bool cpu_has_avx512() {
+  static const bool yes = [] {
+    __builtin_cpu_init();
+    return __builtin_cpu_supports("avx512f") != 0;
+  }();
+  return yes;
+}
+#else
+bool cpu_has_avx2() { return false; }
+bool cpu_has_avx512() { return false; }
 #endif
+
+// The build that runs for `wanted`: the one asked for, or the next below it the CPU has.
+KernelBuild runnable_build(KernelBuild wanted) {
+  if (wanted == KernelBuild::kBest || wanted == KernelBuild::kAvx512) {
+    if (cpu_has_avx512()) return KernelBuild::kAvx512;
+    wanted = KernelBuild::kAvx2;
+  }
+  if (wanted == KernelBuild::kAvx2 && cpu_has_avx2()) return KernelBuild::kAvx2;
+  return KernelBuild::kBaseline;
+}
 
 void device_run_baseline(const DeviceView& d, std::span<const PreparedFrame> frames, const VisibilityLimits& lim,
                          FingerBits* out) {
-  device_run_body<false>(d, frames, lim, 0.0, out, nullptr);
+  device_run_body<false, Isa::kBaseline>(d, frames, lim, 0.0, out, nullptr);
 }
 void device_run_cut_baseline(const DeviceView& d, std::span<const PreparedFrame> frames, const VisibilityLimits& lim,
                              double cut_mm, FingerBits* out, FingerBits* cut_out) {
-  device_run_body<true>(d, frames, lim, cut_mm, out, cut_out);
+  device_run_body<true, Isa::kBaseline>(d, frames, lim, cut_mm, out, cut_out);
 }
 
 }  // namespace
 
-FingerBits visible_fingers_baseline(const PreparedFrame& fr, const DeviceView& d, const VisibilityLimits& lim) {
-  return visible_fingers_body<false>(fr, d, lim, 0.0, nullptr);
+KernelBuild kernel_build_on_this_cpu(KernelBuild wanted) { return runnable_build(wanted); }
+
+const char* kernel_build_name(KernelBuild build) {
+  switch (build) {
+    case KernelBuild::kBest: return kernel_build_name(runnable_build(build));
+    case KernelBuild::kAvx512: return "AVX-512";
+    case KernelBuild::kAvx2: return "AVX2";
+    case KernelBuild::kBaseline: break;
+  }
+  return "baseline";
 }
 
-FingerBits visible_fingers(const PreparedFrame& fr, const DeviceView& d, const VisibilityLimits& lim) {
+FingerBits visible_fingers(const PreparedFrame& fr, const DeviceView& d, const VisibilityLimits& lim,
+                           KernelBuild build) {
+  switch (runnable_build(build)) {
 #if defined(__x86_64__) && defined(__GNUC__)
-  if (has_avx2()) return visible_fingers_avx2(fr, d, lim);
+    case KernelBuild::kAvx512: return visible_fingers_avx512(fr, d, lim);
+    case KernelBuild::kAvx2: return visible_fingers_avx2(fr, d, lim);
 #endif
-  return visible_fingers_baseline(fr, d, lim);
+    default: return visible_fingers_body<false, Isa::kBaseline>(fr, d, lim, 0.0, nullptr);
+  }
 }
 
 void device_visibility(const DeviceView& device, std::span<const PreparedFrame> frames, const VisibilityLimits& limits,
-                       std::span<FingerBits> out) {
+                       std::span<FingerBits> out, KernelBuild build) {
   if (out.size() < frames.size()) throw Error("device_visibility: output shorter than the frames");
+  switch (runnable_build(build)) {
 #if defined(__x86_64__) && defined(__GNUC__)
-  if (has_avx2()) return device_run_avx2(device, frames, limits, out.data());
+    case KernelBuild::kAvx512: return device_run_avx512(device, frames, limits, out.data());
+    case KernelBuild::kAvx2: return device_run_avx2(device, frames, limits, out.data());
 #endif
-  device_run_baseline(device, frames, limits, out.data());
+    default: return device_run_baseline(device, frames, limits, out.data());
+  }
 }
 
 void device_visibility_with_cut(const DeviceView& device, std::span<const PreparedFrame> frames,
                                 const VisibilityLimits& limits, double axis_cut_mm, std::span<FingerBits> out,
-                                std::span<FingerBits> cut_out, bool allow_avx2) {
+                                std::span<FingerBits> cut_out, KernelBuild build) {
   if (out.size() < frames.size() || cut_out.size() < frames.size()) {
     throw Error("device_visibility_with_cut: output shorter than the frames");
   }
+  switch (runnable_build(build)) {
 #if defined(__x86_64__) && defined(__GNUC__)
-  if (allow_avx2 && has_avx2()) return device_run_cut_avx2(device, frames, limits, axis_cut_mm, out.data(), cut_out.data());
+    case KernelBuild::kAvx512:
+      return device_run_cut_avx512(device, frames, limits, axis_cut_mm, out.data(), cut_out.data());
+    case KernelBuild::kAvx2: return device_run_cut_avx2(device, frames, limits, axis_cut_mm, out.data(), cut_out.data());
 #endif
-  device_run_cut_baseline(device, frames, limits, axis_cut_mm, out.data(), cut_out.data());
+    default: return device_run_cut_baseline(device, frames, limits, axis_cut_mm, out.data(), cut_out.data());
+  }
 }
 
 VisibilityTable compute_visibility(std::span<const DeviceView> devices, std::span<const PreparedFrame> frames,

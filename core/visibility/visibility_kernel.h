@@ -16,26 +16,33 @@ namespace lmc {
 using FingerBits = std::uint8_t;
 inline constexpr FingerBits kAllFingersVisible = 0x1F;
 
-// One (device, frame). On x86-64 CPUs with AVX2 this runs an AVX2 build of the same code (no
-// fused multiply-add, so the results are bit-identical to the baseline build).
-FingerBits visible_fingers(const PreparedFrame& frame, const DeviceView& device, const VisibilityLimits& limits);
-// The baseline (SSE2) build of the same kernel, for tests that check the two builds agree.
-FingerBits visible_fingers_baseline(const PreparedFrame& frame, const DeviceView& device, const VisibilityLimits& limits);
+// The kernel is built three times, bit-identical (visibility_kernel.cpp): baseline (SSE2), AVX2
+// and AVX-512. kBest runs the fastest this CPU has; a named build is for tests that check the
+// builds agree and for benchmarks, and falls back to the next below it when the CPU lacks it.
+enum class KernelBuild { kBest, kAvx512, kAvx2, kBaseline };
+// The build that runs for `wanted` on this CPU (never kBest), and a build's name ("AVX-512",
+// "AVX2", "baseline"; for kBest the name of the one that runs).
+KernelBuild kernel_build_on_this_cpu(KernelBuild wanted = KernelBuild::kBest);
+const char* kernel_build_name(KernelBuild build);
+
+// One (device, frame).
+FingerBits visible_fingers(const PreparedFrame& frame, const DeviceView& device, const VisibilityLimits& limits,
+                           KernelBuild build = KernelBuild::kBest);
 
 // One device over many frames (the workbench caches these per-device columns; the swarm
 // evaluator runs it per chunk of frames). Dispatches once per call, not per frame. `out` holds at
 // least frames.size() entries.
 void device_visibility(const DeviceView& device, std::span<const PreparedFrame> frames,
-                       const VisibilityLimits& limits, std::span<FingerBits> out);
+                       const VisibilityLimits& limits, std::span<FingerBits> out,
+                       KernelBuild build = KernelBuild::kBest);
 
 // The same bits, plus per frame the fingers that have a marker beyond ±axis_cut_mm on an axis of
 // the device (bit f as in FingerBits; 0 where the device sees nothing). The robust metric's axis
 // cut counts a seeing (device, frame) pair when bits & cut_bits is not 0, exactly as
-// seen_marker_beyond_cut (layout_tally.h) decides it. `allow_avx2 = false` runs the baseline build
-// (for tests that check the two agree).
+// seen_marker_beyond_cut (layout_tally.h) decides it.
 void device_visibility_with_cut(const DeviceView& device, std::span<const PreparedFrame> frames,
                                 const VisibilityLimits& limits, double axis_cut_mm, std::span<FingerBits> out,
-                                std::span<FingerBits> cut_bits, bool allow_avx2 = true);
+                                std::span<FingerBits> cut_bits, KernelBuild build = KernelBuild::kBest);
 
 // D × N bits for a layout: bits[d·N + j] (device-major).
 struct VisibilityTable {

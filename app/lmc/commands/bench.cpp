@@ -3,6 +3,7 @@
 // Text and --json report the same figures. JSON keys:
 //   "frames"            pose-set size (default 10000, Monte Carlo seed 1)
 //   "threads"           threads used for the "all threads" figures
+//   "kernel_build"      the visibility kernel's build that ran: "AVX-512", "AVX2" or "baseline"
 //   "cases"             array of {"name", "layouts", "devices",
 //                        "single_thread_evals_per_s", "all_threads_evals_per_s"}: (device, frame)
 //                        visibility tests per second including the c_i reduction, for
@@ -26,6 +27,7 @@
 #include "core/optimise/pso.h"
 #include "core/optimise/swarm_evaluator.h"
 #include "core/visibility/frame_prep.h"
+#include "core/visibility/visibility_kernel.h"
 
 namespace {
 
@@ -94,7 +96,9 @@ void setup_bench(CLI::App& app) {
         std::fflush(stdout);
       }
     };
-    if (!opt->json) std::printf("%d Monte Carlo frames (seed 1)\n", opt->frames);
+    // Which of the kernel's builds runs here (they give the same bits; the speed differs).
+    const char* kernel = lmc::kernel_build_name(lmc::KernelBuild::kBest);
+    if (!opt->json) std::printf("%d Monte Carlo frames (seed 1), visibility kernel: %s build\n", opt->frames, kernel);
     run_case("paper-initial", {lmc::load_layout_or_preset("paper-initial")});
     run_case("paper-optimized", {lmc::load_layout_or_preset("paper-optimized")});
     {
@@ -117,6 +121,7 @@ void setup_bench(CLI::App& app) {
     nlohmann::json j;
     j["frames"] = opt->frames;
     j["threads"] = threads;
+    j["kernel_build"] = kernel;
     j["cases"] = nlohmann::json::array();
     for (const auto& r : results) {
       j["cases"].push_back({{"name", r.name},

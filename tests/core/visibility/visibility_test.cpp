@@ -246,8 +246,9 @@ TEST(Visibility, KernelAndExplainAgreeOnRandomPosesAndDevices) {
     const DeviceView d = device_at(250 * u(rng), 60 * u(rng), 250 * u(rng), 60 * u(rng), 180 * u(rng), 60 * u(rng));
     for (const auto& fr : frames) {
       const auto ex = explain_visibility(fr, d, lim);
-      ASSERT_EQ(ex.bits, visible_fingers(fr, d, lim));
-      ASSERT_EQ(ex.bits, visible_fingers_baseline(fr, d, lim));
+      for (const KernelBuild build : {KernelBuild::kBest, KernelBuild::kAvx512, KernelBuild::kAvx2, KernelBuild::kBaseline}) {
+        ASSERT_EQ(ex.bits, visible_fingers(fr, d, lim, build)) << kernel_build_name(build);
+      }
       for (int k = 0; k < kNumDigits; ++k) {
         const auto& v = ex.fingers[static_cast<size_t>(k)];
         ++counts[static_cast<int>(v.reason)];

@@ -1,0 +1,20 @@
+#!/bin/sh
+# The visibility kernel's three builds (baseline, AVX2, AVX-512) must give bit-identical results,
+# so none of them may fuse a multiply and an add into one rounding (visibility_kernel.cpp). The
+# compiler is told so (-ffp-contract=off); this checks the program it made: no FMA instruction in
+# any build of the kernel's entry points. Usage: check_no_fused_multiply_add.sh PROGRAM
+set -eu
+program=$1
+listing=$(objdump -d -C --no-show-raw-insn "$program" |
+  awk '/^[0-9a-f]+ <.*(device_run|visible_fingers).*>:$/ {inside = 1; print; next} /^$/ {inside = 0} inside')
+functions=$(printf '%s\n' "$listing" | grep -c '>:$' || true)
+if [ "$functions" -lt 6 ]; then
+  echo "expected the kernel's entry points (device_run_*, visible_fingers_*) in $program, found $functions" >&2
+  exit 1
+fi
+if printf '%s\n' "$listing" | grep -E '\svf(n)?m(add|sub)[0-9]{3}' >/dev/null; then
+  echo "fused multiply-add in the visibility kernel of $program:" >&2
+  printf '%s\n' "$listing" | grep -E '>:$|\svf(n)?m(add|sub)[0-9]{3}' | head -20 >&2
+  exit 1
+fi
+echo "no fused multiply-add in $functions kernel functions of $program"
