@@ -29,16 +29,19 @@ namespace lmc::vis {
 // Lanes 0…14 but finger f's three.
 constexpr unsigned others_lane_mask(int finger) { return 0x7FFFu & ~(7u << (3 * finger)); }
 
-// Multiply, add, subtract with round-to-nearest, never fused (see above).
+// Multiply, add, subtract with round-to-nearest, never fused (see above). The zero-masked forms
+// with every lane selected are the same instructions; GCC 12's unmasked ones start from an
+// "undefined" register its own -Wmaybe-uninitialized flags at -Og.
 inline constexpr int kRoundNearest = _MM_FROUND_TO_NEAREST_INT | _MM_FROUND_NO_EXC;
+inline constexpr __mmask8 kAllLanes = 0xFF;
 [[gnu::target("avx512f"), gnu::always_inline]] inline __m512d mul8(__m512d a, __m512d b) {
-  return _mm512_mul_round_pd(a, b, kRoundNearest);
+  return _mm512_maskz_mul_round_pd(kAllLanes, a, b, kRoundNearest);
 }
 [[gnu::target("avx512f"), gnu::always_inline]] inline __m512d add8(__m512d a, __m512d b) {
-  return _mm512_add_round_pd(a, b, kRoundNearest);
+  return _mm512_maskz_add_round_pd(kAllLanes, a, b, kRoundNearest);
 }
 [[gnu::target("avx512f"), gnu::always_inline]] inline __m512d sub8(__m512d a, __m512d b) {
-  return _mm512_sub_round_pd(a, b, kRoundNearest);
+  return _mm512_maskz_sub_round_pd(kAllLanes, a, b, kRoundNearest);
 }
 
 [[gnu::target("avx512f")]] inline bool others_occlude_avx512(const PhalanxRing& r, unsigned lanes, double vx,

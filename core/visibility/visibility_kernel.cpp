@@ -21,10 +21,8 @@ namespace {
 // visibility_tests.h, so the bits are the explaining path's (tests check all three builds). With
 // kCut it also reports, per finger, whether one of its markers lies beyond ±cut_mm on an axis of the
 // device (the robust metric's axis cut): the device-frame coordinates are computed here anyway, so
-// the tally need not transform the markers again.
-enum class Isa { kBaseline, kAvx2, kAvx512 };
-
-template <bool kCut, Isa kIsa>
+// the tally need not transform the markers again. kBuild is never kBest.
+template <bool kCut, KernelBuild kBuild>
 [[gnu::always_inline]] inline FingerBits visible_fingers_body(const PreparedFrame& fr, const DeviceView& d,
                                                             const VisibilityLimits& lim, double cut_mm,
                                                             FingerBits* cut_bits) {
@@ -88,7 +86,7 @@ template <bool kCut, Isa kIsa>
       bool hidden = crosses[k] != 0 && hull_contains(fr.hull, d.ox + t * vx[k], d.oy + t * vy[k], d.oz + t * vz[k]);
       if (!hidden) {
 #if defined(__x86_64__) && defined(__GNUC__)
-        if constexpr (kIsa == Isa::kAvx512) {
+        if constexpr (kBuild == KernelBuild::kAvx512) {
           hidden = vis::others_occlude_avx512(ring, vis::others_lane_mask(f), vx[k], vy[k], vz[k], vv[k], lim.radius_sq);
         } else {
           hidden = vis::others_occlude(ring, start, vx[k], vy[k], vz[k], vv[k], lim.radius_sq);
@@ -120,47 +118,47 @@ template <bool kCut, Isa kIsa>
 }
 
 // A device over a run of frames: the device view and limits stay in registers across frames.
-template <bool kCut, Isa kIsa>
+template <bool kCut, KernelBuild kBuild>
 [[gnu::always_inline]] inline void device_run_body(const DeviceView& d, std::span<const PreparedFrame> frames,
                                                    const VisibilityLimits& lim, double cut_mm, FingerBits* out,
                                                    FingerBits* cut_out) {
   const DeviceView view = d;
   const VisibilityLimits limits = lim;
   for (size_t j = 0; j < frames.size(); ++j) {
-    out[j] = visible_fingers_body<kCut, kIsa>(frames[j], view, limits, cut_mm, kCut ? cut_out + j : nullptr);
+    out[j] = visible_fingers_body<kCut, kBuild>(frames[j], view, limits, cut_mm, kCut ? cut_out + j : nullptr);
   }
 }
 
 #if defined(__x86_64__) && defined(__GNUC__)
 [[gnu::target("avx2")]] FingerBits visible_fingers_avx2(const PreparedFrame& fr, const DeviceView& d,
                                                        const VisibilityLimits& lim) {
-  return visible_fingers_body<false, Isa::kAvx2>(fr, d, lim, 0.0, nullptr);
+  return visible_fingers_body<false, KernelBuild::kAvx2>(fr, d, lim, 0.0, nullptr);
 }
 [[gnu::target("avx2")]] void device_run_avx2(const DeviceView& d, std::span<const PreparedFrame> frames,
                                             const VisibilityLimits& lim, FingerBits* out) {
-  device_run_body<false, Isa::kAvx2>(d, frames, lim, 0.0, out, nullptr);
+  device_run_body<false, KernelBuild::kAvx2>(d, frames, lim, 0.0, out, nullptr);
 }
 [[gnu::target("avx2")]] void device_run_cut_avx2(const DeviceView& d, std::span<const PreparedFrame> frames,
                                                 const VisibilityLimits& lim, double cut_mm, FingerBits* out,
                                                 FingerBits* cut_out) {
-  device_run_body<true, Isa::kAvx2>(d, frames, lim, cut_mm, out, cut_out);
+  device_run_body<true, KernelBuild::kAvx2>(d, frames, lim, cut_mm, out, cut_out);
 }
 // flatten: inlines others_occlude_avx512 into the body (phalanx_block_avx512.h says why it must).
 [[gnu::target("avx512f"), gnu::flatten]] FingerBits visible_fingers_avx512(const PreparedFrame& fr,
                                                                           const DeviceView& d,
                                                                           const VisibilityLimits& lim) {
-  return visible_fingers_body<false, Isa::kAvx512>(fr, d, lim, 0.0, nullptr);
+  return visible_fingers_body<false, KernelBuild::kAvx512>(fr, d, lim, 0.0, nullptr);
 }
 [[gnu::target("avx512f"), gnu::flatten]] void device_run_avx512(const DeviceView& d,
                                                                std::span<const PreparedFrame> frames,
                                                                const VisibilityLimits& lim, FingerBits* out) {
-  device_run_body<false, Isa::kAvx512>(d, frames, lim, 0.0, out, nullptr);
+  device_run_body<false, KernelBuild::kAvx512>(d, frames, lim, 0.0, out, nullptr);
 }
 [[gnu::target("avx512f"), gnu::flatten]] void device_run_cut_avx512(const DeviceView& d,
                                                                    std::span<const PreparedFrame> frames,
                                                                    const VisibilityLimits& lim, double cut_mm,
                                                                    FingerBits* out, FingerBits* cut_out) {
-  device_run_body<true, Isa::kAvx512>(d, frames, lim, cut_mm, out, cut_out);
+  device_run_body<true, KernelBuild::kAvx512>(d, frames, lim, cut_mm, out, cut_out);
 }
 bool cpu_has_avx2() {
   static const bool yes = [] {
@@ -193,11 +191,11 @@ KernelBuild runnable_build(KernelBuild wanted) {
 
 void device_run_baseline(const DeviceView& d, std::span<const PreparedFrame> frames, const VisibilityLimits& lim,
                          FingerBits* out) {
-  device_run_body<false, Isa::kBaseline>(d, frames, lim, 0.0, out, nullptr);
+  device_run_body<false, KernelBuild::kBaseline>(d, frames, lim, 0.0, out, nullptr);
 }
 void device_run_cut_baseline(const DeviceView& d, std::span<const PreparedFrame> frames, const VisibilityLimits& lim,
                              double cut_mm, FingerBits* out, FingerBits* cut_out) {
-  device_run_body<true, Isa::kBaseline>(d, frames, lim, cut_mm, out, cut_out);
+  device_run_body<true, KernelBuild::kBaseline>(d, frames, lim, cut_mm, out, cut_out);
 }
 
 }  // namespace
@@ -221,7 +219,7 @@ FingerBits visible_fingers(const PreparedFrame& fr, const DeviceView& d, const V
     case KernelBuild::kAvx512: return visible_fingers_avx512(fr, d, lim);
     case KernelBuild::kAvx2: return visible_fingers_avx2(fr, d, lim);
 #endif
-    default: return visible_fingers_body<false, Isa::kBaseline>(fr, d, lim, 0.0, nullptr);
+    default: return visible_fingers_body<false, KernelBuild::kBaseline>(fr, d, lim, 0.0, nullptr);
   }
 }
 
