@@ -4,6 +4,8 @@
 
 #include <cmath>
 #include <cstdint>
+#include <cstdlib>
+#include <string>
 
 #include "core/common/error.h"
 #include "core/visibility/phalanx_block_avx512.h"
@@ -179,8 +181,36 @@ bool cpu_has_avx2() { return false; }
 bool cpu_has_avx512() { return false; }
 #endif
 
+// LMC_KERNEL, read once: which build kBest means. The AVX-512 build is the fastest on CPUs with
+// two 512-bit multipliers (this project's machines); on CPUs with one (some laptop and entry
+// server parts) the AVX2 build may be faster, and a lab can compare them with `lmc bench`.
+struct KernelSetting {
+  KernelBuild build = KernelBuild::kBest;
+  std::string problem;
+};
+const KernelSetting& kernel_setting() {
+  static const KernelSetting setting = [] {
+    KernelSetting k;
+    const char* value = std::getenv("LMC_KERNEL");
+    if (value == nullptr || *value == '\0') return k;
+    const std::string v(value);
+    if (v == "avx512") {
+      k.build = KernelBuild::kAvx512;
+    } else if (v == "avx2") {
+      k.build = KernelBuild::kAvx2;
+    } else if (v == "baseline") {
+      k.build = KernelBuild::kBaseline;
+    } else {
+      k.problem = "LMC_KERNEL=" + v + " is not avx512, avx2 or baseline; the fastest build runs";
+    }
+    return k;
+  }();
+  return setting;
+}
+
 // The build that runs for `wanted`: the one asked for, or the next below it the CPU has.
 KernelBuild runnable_build(KernelBuild wanted) {
+  if (wanted == KernelBuild::kBest) wanted = kernel_setting().build;
   if (wanted == KernelBuild::kBest || wanted == KernelBuild::kAvx512) {
     if (cpu_has_avx512()) return KernelBuild::kAvx512;
     wanted = KernelBuild::kAvx2;
@@ -201,6 +231,8 @@ void device_run_cut_baseline(const DeviceView& d, std::span<const PreparedFrame>
 }  // namespace
 
 KernelBuild kernel_build_on_this_cpu(KernelBuild wanted) { return runnable_build(wanted); }
+
+std::string kernel_setting_problem() { return kernel_setting().problem; }
 
 const char* kernel_build_name(KernelBuild build) {
   switch (build) {

@@ -4,6 +4,7 @@
 // visibility_explain.h (visibility_tests.h), with early exits.
 #include <cstdint>
 #include <span>
+#include <string>
 #include <vector>
 
 #include "core/layout/layout.h"
@@ -17,13 +18,16 @@ using FingerBits = std::uint8_t;
 inline constexpr FingerBits kAllFingersVisible = 0x1F;
 
 // The kernel is built three times, bit-identical (visibility_kernel.cpp): baseline (SSE2), AVX2
-// and AVX-512. kBest runs the fastest this CPU has; a named build is for tests that check the
-// builds agree and for benchmarks, and falls back to the next below it when the CPU lacks it.
+// and AVX-512. kBest runs the fastest this CPU has, or the build the environment variable
+// LMC_KERNEL names (avx512, avx2, baseline); a named build is for tests that check the builds agree
+// and for benchmarks. A build the CPU lacks falls back to the next below it.
 enum class KernelBuild { kBest, kAvx512, kAvx2, kBaseline };
 // The build that runs for `wanted` on this CPU (never kBest), and a build's name ("AVX-512",
 // "AVX2", "baseline"; for kBest the name of the one that runs).
 KernelBuild kernel_build_on_this_cpu(KernelBuild wanted = KernelBuild::kBest);
 const char* kernel_build_name(KernelBuild build);
+// What is wrong with LMC_KERNEL ("" when it is unset or valid), for programs to say so.
+std::string kernel_setting_problem();
 
 // One (device, frame).
 FingerBits visible_fingers(const PreparedFrame& frame, const DeviceView& device, const VisibilityLimits& limits,

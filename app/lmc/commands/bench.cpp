@@ -96,8 +96,12 @@ void setup_bench(CLI::App& app) {
         std::fflush(stdout);
       }
     };
-    // Which of the kernel's builds runs here (they give the same bits; the speed differs).
+    // Which of the kernel's builds runs here (they give the same bits; the speed differs, and
+    // LMC_KERNEL=avx2 etc. picks another to compare).
     const char* kernel = lmc::kernel_build_name(lmc::KernelBuild::kBest);
+    if (const std::string problem = lmc::kernel_setting_problem(); !problem.empty()) {
+      std::fprintf(stderr, "lmc bench: %s\n", problem.c_str());
+    }
     if (!opt->json) std::printf("%d Monte Carlo frames (seed 1), visibility kernel: %s build\n", opt->frames, kernel);
     run_case("paper-initial", {lmc::load_layout_or_preset("paper-initial")});
     run_case("paper-optimized", {lmc::load_layout_or_preset("paper-optimized")});

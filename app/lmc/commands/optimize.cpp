@@ -18,6 +18,7 @@
 #include "core/optimise/multi_start.h"
 #include "core/optimise/pso.h"
 #include "core/visibility/frame_prep.h"
+#include "core/visibility/visibility_kernel.h"
 
 namespace {
 
@@ -120,6 +121,9 @@ void setup_optimize(CLI::App& app) {
                "Count every particle on every frame instead of stopping one whose cost cannot beat its own best "
                "(the same result, slower; to check that)");
   app.callback([opt] {
+    if (const std::string problem = lmc::kernel_setting_problem(); !problem.empty()) {
+      std::cerr << "lmc optimize: " << problem << "\n";
+    }
     lmc::Layout start;
     const bool from_layout = !opt->start.empty();
     if (from_layout) {
