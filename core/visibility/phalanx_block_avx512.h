@@ -2,8 +2,8 @@
 // The §3.4 finger-occlusion test for CPUs with AVX-512: the ray against all 16 lanes of the ring's
 // first block (the 15 phalanges and lane 15, a copy of lane 0) in two 8-lane registers, with the
 // ray's own finger and lane 15 masked off, so the lanes tested are exactly others_occlude's 12
-// (phalanx_ring.h). Why it is faster than the AVX2 build of others_occlude (about 30 % less time
-// per seeing (device, frame) pair, measured side by side on layouts that see the hand): the CPUs
+// (phalanx_ring.h). Why it is faster than the AVX2 build of others_occlude (the kernel takes about
+// a quarter less time, 0.64–0.87 of it in paired runs on layouts that see the hand; README): the CPUs
 // here run two 512-bit multiplies per cycle as they run two 256-bit ones, so 8 lanes per
 // instruction halve the instructions of the AVX2 build's 4; every ray of a frame reads the same
 // block at the same aligned place, so the block stays in registers (AVX-512 has 32) instead of
