@@ -5,6 +5,7 @@
 #include <iostream>
 #include <utility>
 
+#include "core/visibility/visibility_kernel.h"
 #include "ui/app/capture.h"
 #include "ui/app/workbench_shell.h"
 #include "ui/platform/gl_window.h"
@@ -41,6 +42,10 @@ int main(int argc, char** argv) {
   app.add_option("--size", width, "Window width in pixels")->check(CLI::Range(640, 7680));
   app.add_option("--height", height, "Window height in pixels")->check(CLI::Range(480, 4320));
   CLI11_PARSE(app, argc, argv);
+  // An unknown LMC_KERNEL leaves the fastest kernel build running; say so rather than ignore it.
+  if (const std::string problem = lmc::kernel_setting_problem(); !problem.empty()) {
+    std::cerr << "lmc-workbench: " << problem << "\n";
+  }
 
   try {
     if (!capture_dir.empty()) {
