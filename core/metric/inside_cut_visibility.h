@@ -13,8 +13,14 @@
 
 namespace lmc {
 
-// D × N bits, device-major as compute_visibility's (parallel over frames; exact for any thread count).
-VisibilityTable inside_cut_visibility(const Layout& layout, std::span<const PreparedFrame> frames,
-                                      double phalanx_radius_mm = 10.0, double axis_cut_mm = kAxisCutMm);
+// Both tables of a layout from one pass of the kernel (which reports the cut while it has the
+// markers in device coordinates): `seen` is compute_visibility's, `inside_cut` the bits above.
+// D × N bits each, device-major; parallel over frames, exact for any thread count.
+struct VisibilityWithCut {
+  VisibilityTable seen;
+  VisibilityTable inside_cut;
+};
+VisibilityWithCut visibility_with_inside_cut(const Layout& layout, std::span<const PreparedFrame> frames,
+                                             double phalanx_radius_mm = 10.0, double axis_cut_mm = kAxisCutMm);
 
 }  // namespace lmc

@@ -30,7 +30,9 @@ LayoutReport build_layout_report(const Layout& layout, const PoseSet& poses, std
   r.poses_description = poses.description;
   r.weights = weights;
   for (const auto& d : layout.devices) r.slots.push_back(d.slot);
-  const VisibilityTable table = compute_visibility(layout, prepared, phalanx_radius_mm);
+  // One kernel pass gives what each controller sees and what it sees inside its axis cut.
+  const VisibilityWithCut tables = visibility_with_inside_cut(layout, prepared, phalanx_radius_mm, kAxisCutMm);
+  const VisibilityTable& table = tables.seen;
   const std::vector<int> horizontal = poses.indices_with(HandOrientation::kHorizontal);
   const std::vector<int> vertical = poses.indices_with(HandOrientation::kVertical);
   r.coverage = coverage_by_orientation(table, horizontal, vertical);
@@ -43,8 +45,7 @@ LayoutReport build_layout_report(const Layout& layout, const PoseSet& poses, std
   r.terms_all = robust_terms(all, footprint, weights);
   if (!horizontal.empty()) r.terms_horizontal = robust_terms(tally_layout(views, prepared, limits, kAxisCutMm, horizontal), footprint, weights);
   if (!vertical.empty()) r.terms_vertical = robust_terms(tally_layout(views, prepared, limits, kAxisCutMm, vertical), footprint, weights);
-  const VisibilityTable inside_cut = inside_cut_visibility(layout, prepared, phalanx_radius_mm, kAxisCutMm);
-  r.controllers = controller_contributions(table, all, r.slots, {}, &inside_cut);
+  r.controllers = controller_contributions(table, all, r.slots, {}, &tables.inside_cut);
   for (size_t i = 0; i < layout.devices.size(); ++i) {
     for (size_t j = i + 1; j < layout.devices.size(); ++j) {
       if (footprints_overlap(layout.devices[i], layout.devices[j])) r.overlapping_pairs.push_back(r.slots[i] + " and " + r.slots[j]);

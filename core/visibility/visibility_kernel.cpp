@@ -230,18 +230,14 @@ void device_run_cut_baseline(const DeviceView& d, std::span<const PreparedFrame>
 
 }  // namespace
 
-KernelBuild kernel_build_on_this_cpu(KernelBuild wanted) { return runnable_build(wanted); }
-
 std::string kernel_setting_problem() { return kernel_setting().problem; }
 
 const char* kernel_build_name(KernelBuild build) {
-  switch (build) {
-    case KernelBuild::kBest: return kernel_build_name(runnable_build(build));
+  switch (runnable_build(build)) {
     case KernelBuild::kAvx512: return "AVX-512";
     case KernelBuild::kAvx2: return "AVX2";
-    case KernelBuild::kBaseline: break;
+    default: return "baseline";
   }
-  return "baseline";
 }
 
 FingerBits visible_fingers(const PreparedFrame& fr, const DeviceView& d, const VisibilityLimits& lim,

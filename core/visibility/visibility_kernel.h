@@ -22,9 +22,8 @@ inline constexpr FingerBits kAllFingersVisible = 0x1F;
 // LMC_KERNEL names (avx512, avx2, baseline); a named build is for tests that check the builds agree
 // and for benchmarks. A build the CPU lacks falls back to the next below it.
 enum class KernelBuild { kBest, kAvx512, kAvx2, kBaseline };
-// The build that runs for `wanted` on this CPU (never kBest), and a build's name ("AVX-512",
-// "AVX2", "baseline"; for kBest the name of the one that runs).
-KernelBuild kernel_build_on_this_cpu(KernelBuild wanted = KernelBuild::kBest);
+// A build's name ("AVX-512", "AVX2", "baseline"); for kBest, or a build the CPU lacks, the name of
+// the build that runs.
 const char* kernel_build_name(KernelBuild build);
 // What is wrong with LMC_KERNEL ("" when it is unset or valid), for programs to say so.
 std::string kernel_setting_problem();

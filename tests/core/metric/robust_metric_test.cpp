@@ -81,7 +81,9 @@ TEST(RobustMetric, EachControllersContributionInsideItsCutComesFromTheBitsMInsid
   const Layout l = load_layout_or_preset("paper-optimized-as-processed");
   const LayoutTally t = tally_of(l);
   const VisibilityTable table = compute_visibility(l, robust_frames());
-  const VisibilityTable inside = inside_cut_visibility(l, robust_frames());
+  const VisibilityWithCut both = visibility_with_inside_cut(l, robust_frames());
+  EXPECT_EQ(both.seen.bits, table.bits);
+  const VisibilityTable& inside = both.inside_cut;
   EXPECT_EQ(compute_coverage(inside).c, t.c_inside_cut);
   const std::vector<std::string> slots{"LMC1", "LMC2", "LMC3", "LMC4"};
   const auto with_cut = controller_contributions(table, t, slots, {}, &inside);
@@ -92,7 +94,7 @@ TEST(RobustMetric, EachControllersContributionInsideItsCutComesFromTheBitsMInsid
     some_less = some_less || c.seeing_inside_cut_share < c.seeing_share;
   }
   EXPECT_TRUE(some_less);  // two thirds of its seeing pairs have a seen marker beyond the cut
-  const VisibilityTable no_cut = inside_cut_visibility(l, robust_frames(), 10.0, 1e9);
+  const VisibilityTable no_cut = visibility_with_inside_cut(l, robust_frames(), 10.0, 1e9).inside_cut;
   EXPECT_EQ(no_cut.bits, table.bits);
   for (const auto& c : controller_contributions(table, t, slots, {}, &no_cut)) {
     EXPECT_EQ(c.seeing_inside_cut_share, c.seeing_share) << c.slot;
