@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 
 #include "core/common/error.h"
 #include "core/layout/layout.h"
@@ -99,60 +100,88 @@ double off_centre_penalty(const PreparedFrame& f, const DeviceView& v, const Vis
   return std::min(1.0, 0.5 * (tx * tx + tz * tz));
 }
 
-namespace {
+// Frames counted together by tally_frames: byte arrays of this many frames stay in registers or L1.
+constexpr size_t kTallyBlockFrames = 64;
 
-// Shared by both tally_frame overloads; `cut_fingers(d, b)` gives the fingers of b (the fingers
-// seeing device d sees) that have a marker beyond its axis cut.
-template <typename CutFingers>
-void tally_frame_with(const PreparedFrame& frame, std::span<const DeviceView> views, const FingerBits* bits,
-                      const VisibilityLimits& limits, LayoutTally& t, CutFingers&& cut_fingers) {
-  const int nd = static_cast<int>(views.size());
-  ++t.frames;
-  ++t.c[static_cast<size_t>(worst_finger_count(bits, nd))];
-  FingerBits cut[kMaxDevices] = {}, inside[kMaxDevices] = {};
-  for (int d = 0; d < nd; ++d) {
-    const auto dd = static_cast<size_t>(d);
-    cut[dd] = bits[d] != 0 ? cut_fingers(dd, bits[d]) : FingerBits{0};
-    inside[dd] = static_cast<FingerBits>(bits[d] & ~cut[dd]);
+void tally_frames(std::span<const PreparedFrame> frames, std::span<const DeviceView> views, const FingerBits* bits,
+                  const FingerBits* cut_bits, size_t stride, const VisibilityLimits& limits, LayoutTally& t) {
+  const size_t nd = views.size();
+  if (nd < 1 || nd > static_cast<size_t>(kMaxDevices)) throw Error("a layout needs 1 to 8 devices");
+  if (t.c.size() != nd + 1) throw Error("tally_frames: the tally is for another number of devices");
+  for (size_t b0 = 0; b0 < frames.size(); b0 += kTallyBlockFrames) {
+    const size_t m = std::min(kTallyBlockFrames, frames.size() - b0);
+    // Per frame and finger: how many devices see it, all markers counted and only those inside
+    // the cut (a finger with a marker beyond a device's cut is unseen by it, layout_tally.h); and
+    // the fingers seen by at least one device and by two or more. Loops over frames of bytes,
+    // which the compiler vectorises.
+    alignas(64) std::uint8_t seeing[kNumDigits][kTallyBlockFrames] = {};
+    alignas(64) std::uint8_t seeing_inside[kNumDigits][kTallyBlockFrames] = {};
+    alignas(64) std::uint8_t once[kTallyBlockFrames] = {}, twice[kTallyBlockFrames] = {};
+    for (size_t d = 0; d < nd; ++d) {
+      const FingerBits* const b = bits + d * stride + b0;
+      const FingerBits* const c = cut_bits + d * stride + b0;
+      for (size_t j = 0; j < m; ++j) {
+        const std::uint8_t seen = b[j], inside = static_cast<std::uint8_t>(b[j] & ~c[j]);
+        twice[j] = static_cast<std::uint8_t>(twice[j] | (once[j] & seen));
+        once[j] = static_cast<std::uint8_t>(once[j] | seen);
+        for (int k = 0; k < kNumDigits; ++k) {
+          seeing[k][j] = static_cast<std::uint8_t>(seeing[k][j] + ((seen >> k) & 1));
+          seeing_inside[k][j] = static_cast<std::uint8_t>(seeing_inside[k][j] + ((inside >> k) & 1));
+        }
+      }
+    }
+    // The study's histogram: the devices seeing each frame's worst-covered finger (coverage.h's
+    // worst_finger_count, the same minimum), once as seen and once inside the cuts.
+    for (size_t j = 0; j < m; ++j) {
+      std::uint8_t worst = seeing[0][j], worst_inside = seeing_inside[0][j];
+      for (int k = 1; k < kNumDigits; ++k) {
+        worst = std::min(worst, seeing[k][j]);
+        worst_inside = std::min(worst_inside, seeing_inside[k][j]);
+      }
+      ++t.c[worst];
+      ++t.c_inside_cut[worst_inside];
+    }
+    // Per device: frames it sees in, frames it alone sees some finger in (fingers seen by exactly
+    // one device), frames with a seen marker beyond its cut, and where the palm sits in its view.
+    for (size_t d = 0; d < nd; ++d) {
+      const FingerBits* const b = bits + d * stride + b0;
+      const FingerBits* const c = cut_bits + d * stride + b0;
+      std::int64_t seeing_frames = 0, sole_frames = 0, cut_frames = 0, off_centre = 0;
+      for (size_t j = 0; j < m; ++j) {
+        const auto sole = static_cast<std::uint8_t>(once[j] & ~twice[j]);
+        seeing_frames += b[j] != 0;
+        sole_frames += (b[j] & sole) != 0;
+        cut_frames += (b[j] & c[j]) != 0;
+      }
+      for (size_t j = 0; j < m; ++j) {
+        if (b[j] != 0) off_centre += round_millionths(off_centre_penalty(frames[b0 + j], views[d], limits) * kOffCentreScale);
+      }
+      t.device_seeing_frames[d] += seeing_frames;
+      t.device_sole_frames[d] += sole_frames;
+      t.device_cut_frames[d] += cut_frames;
+      t.device_off_centre[d] += off_centre;
+    }
   }
-  ++t.c_inside_cut[static_cast<size_t>(worst_finger_count(inside, nd))];
-  // Fingers seen by exactly one device: that device is the only one for them in this frame.
-  FingerBits seen_once = 0, seen_twice = 0;
-  for (int d = 0; d < nd; ++d) {
-    seen_twice = static_cast<FingerBits>(seen_twice | (seen_once & bits[d]));
-    seen_once = static_cast<FingerBits>(seen_once | bits[d]);
-  }
-  const auto sole = static_cast<FingerBits>(seen_once & ~seen_twice);
-  for (int d = 0; d < nd; ++d) {
-    const FingerBits b = bits[d];
-    if (b == 0) continue;
-    const auto dd = static_cast<size_t>(d);
-    ++t.device_seeing_frames[dd];
-    if (b & sole) ++t.device_sole_frames[dd];
-    if (cut[dd] != 0) ++t.device_cut_frames[dd];
-    t.device_off_centre[dd] += round_millionths(off_centre_penalty(frame, views[dd], limits) * kOffCentreScale);
-  }
+  t.frames += static_cast<std::int64_t>(frames.size());
 }
-
-}  // namespace
 
 void tally_frame(const PreparedFrame& frame, std::span<const DeviceView> views, const FingerBits* bits,
                  const VisibilityLimits& limits, double axis_cut_mm, LayoutTally& t) {
-  tally_frame_with(frame, views, bits, limits, t, [&](size_t d, FingerBits b) {
-    FingerBits c = 0;
+  FingerBits cut[kMaxDevices] = {};
+  for (size_t d = 0; d < views.size() && d < static_cast<size_t>(kMaxDevices); ++d) {
     for (int f = 0; f < kNumDigits; ++f) {
       const auto one = static_cast<FingerBits>(1u << f);
-      if ((b & one) && seen_marker_beyond_cut(frame, views[d], one, axis_cut_mm)) c = static_cast<FingerBits>(c | one);
+      if ((bits[d] & one) && seen_marker_beyond_cut(frame, views[d], one, axis_cut_mm)) {
+        cut[d] = static_cast<FingerBits>(cut[d] | one);
+      }
     }
-    return c;
-  });
+  }
+  tally_frames(std::span<const PreparedFrame>(&frame, 1), views, bits, cut, 1, limits, t);
 }
 
 void tally_frame(const PreparedFrame& frame, std::span<const DeviceView> views, const FingerBits* bits,
                  const FingerBits* cut_bits, const VisibilityLimits& limits, LayoutTally& t) {
-  tally_frame_with(frame, views, bits, limits, t, [&](size_t d, FingerBits b) {
-    return static_cast<FingerBits>(b & cut_bits[d]);
-  });
+  tally_frames(std::span<const PreparedFrame>(&frame, 1), views, bits, cut_bits, 1, limits, t);
 }
 
 LayoutTally tally_layout(std::span<const DeviceView> views, std::span<const PreparedFrame> frames,
@@ -180,14 +209,17 @@ LayoutTally tally_layout(std::span<const DeviceView> views, std::span<const Prep
           }
         }
       }
+      if (subset.empty()) {
+        tally_frames(frames.subspan(begin, count), views, &bits[0][0], &cut[0][0], kTallyChunkFrames, limits, t);
+        continue;
+      }
       for (size_t i = 0; i < count; ++i) {
-        const size_t j = subset.empty() ? begin + i : static_cast<size_t>(subset[begin + i]);
         FingerBits fb[kMaxDevices] = {}, fc[kMaxDevices] = {};
         for (size_t d = 0; d < views.size(); ++d) {
           fb[d] = bits[d][i];
           fc[d] = cut[d][i];
         }
-        tally_frame(frames[j], views, fb, fc, limits, t);
+        tally_frame(frames[static_cast<size_t>(subset[begin + i])], views, fb, fc, limits, t);
       }
     }
   });

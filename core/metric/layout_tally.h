@@ -58,6 +58,13 @@ void tally_frame(const PreparedFrame& frame, std::span<const DeviceView> views, 
 void tally_frame(const PreparedFrame& frame, std::span<const DeviceView> views, const FingerBits* bits,
                  const FingerBits* cut_bits, const VisibilityLimits& limits, LayoutTally& tally);
 
+// A run of frames at once, as the search counts them: bits[d·stride + j] and cut_bits[d·stride + j]
+// are device d's bits in frames[j] (the kernel's per-device columns of a chunk). Adds exactly what
+// tally_frame adds frame by frame (it is how tally_frame counts), with the per-frame counting done
+// for many frames in byte-wide vector operations (the search's tally was ~10 % of its time).
+void tally_frames(std::span<const PreparedFrame> frames, std::span<const DeviceView> views, const FingerBits* bits,
+                  const FingerBits* cut_bits, size_t stride, const VisibilityLimits& limits, LayoutTally& tally);
+
 // Seen-marker axis cut and off-centre penalty of one seeing pair (exposed for tests).
 bool seen_marker_beyond_cut(const PreparedFrame& frame, const DeviceView& view, FingerBits bits, double axis_cut_mm);
 double off_centre_penalty(const PreparedFrame& frame, const DeviceView& view, const VisibilityLimits& limits);

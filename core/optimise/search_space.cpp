@@ -1,6 +1,7 @@
 #include "core/optimise/search_space.h"
 
 #include <cmath>
+#include <cstdio>
 #include <stdexcept>
 
 #include "core/common/error.h"
@@ -100,6 +101,20 @@ SearchSpace parse_search_bounds(const std::string& spec) {
   }
   if (const std::string problem = space.validate(); !problem.empty()) throw Error(where, problem);
   return space;
+}
+
+std::string format_search_bounds(const SearchSpace& space) {
+  std::string out;
+  for (int k = 0; k < kNumPoseParams; ++k) {
+    const auto kk = static_cast<size_t>(k);
+    if (!space.free[kk]) continue;
+    if (!out.empty()) out += ',';
+    // %.17g: every double reads back as itself (and 360 is still written "360").
+    char item[96];
+    std::snprintf(item, sizeof item, "%s=%.17g:%.17g", pose_param_name(k), space.bounds[kk].min, space.bounds[kk].max);
+    out += item;
+  }
+  return out;
 }
 
 Layout default_start_layout(int devices, const SensorModel& sensor) {

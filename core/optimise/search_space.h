@@ -46,6 +46,9 @@ struct SearchSpace {
 // Parses "x=-400:400,z=-400:400,rx=-45:45,ry=-180:180": sets those bounds and frees exactly the
 // named parameters. Throws lmc::Error naming the offending item.
 SearchSpace parse_search_bounds(const std::string& spec);
+// The free parameters and their bounds in parse_search_bounds's form (what `lmc bench` prints);
+// parse_search_bounds of it gives the same free parameters and bounds (locks are not written).
+std::string format_search_bounds(const SearchSpace& space);
 
 // The table top the workbench draws: x, z within ±400 mm of the set-up's centre.
 inline constexpr double kTableHalfExtentMm = 400.0;

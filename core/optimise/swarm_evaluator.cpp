@@ -119,14 +119,7 @@ bool layout_tallies(std::span<const DeviceView> views, int layouts, int devices,
                                      std::span<FingerBits>(bits[d], run.size()),
                                      std::span<FingerBits>(cut[d], run.size()));
         }
-        for (size_t j = 0; j < run.size(); ++j) {
-          FingerBits fb[kMaxDevices], fc[kMaxDevices];
-          for (size_t d = 0; d < nd; ++d) {
-            fb[d] = bits[d][j];
-            fc[d] = cut[d][j];
-          }
-          tally_frame(run[j], layout_views, fb, fc, limits, mine[ll]);
-        }
+        tally_frames(run, layout_views, &bits[0][0], &cut[0][0], kSwarmChunkFrames, limits, mine[ll]);
       }
     }
   });

@@ -39,7 +39,46 @@ TEST(LmcBench, JsonHasTheDocumentedKeys) {
   }
   EXPECT_EQ(j["search"]["particles"], 3);
   EXPECT_GT(j["search"]["seconds"].get<double>(), 0.0);
+  // The three timed searches: the study's as the authors ran it, then both metrics on the table,
+  // whose ratio is what the robust terms cost a search.
+  ASSERT_EQ(j["searches"].size(), 3u);
+  EXPECT_EQ(j["searches"][0]["name"], "study-box");
+  EXPECT_EQ(j["searches"][0]["bounds"], "x=-1000:1000,z=-1000:1000,rx=-90:90,ry=-180:180");
+  EXPECT_EQ(j["searches"][0]["seconds"], j["search"]["seconds"]);
+  EXPECT_EQ(j["searches"][1]["name"], "study-table");
+  EXPECT_EQ(j["searches"][1]["metric"], "study");
+  EXPECT_EQ(j["searches"][2]["name"], "robust-table");
+  EXPECT_EQ(j["searches"][2]["metric"], "robust");
+  EXPECT_EQ(j["searches"][2]["bounds"], "x=-360:360,z=-360:360,rx=-90:90,ry=-180:180");
+  EXPECT_GT(j["searches"][2]["best_cost"].get<double>(), 0.0);
+  EXPECT_NEAR(j["robust_terms_cost"].get<double>(),
+              j["searches"][2]["seconds"].get<double>() / j["searches"][1]["seconds"].get<double>() - 1.0, 1e-12);
   EXPECT_EQ(j["kernel_build"], lmc::kernel_build_name(lmc::KernelBuild::kBest));
+  // The terms' cost per evaluation, from alternated runs on the same table layouts.
+  const auto& terms = j["terms_per_evaluation"];
+  EXPECT_EQ(terms["layouts"], 30);
+  EXPECT_EQ(terms["bounds"], "x=-360:360,z=-360:360,rx=-90:90,ry=-180:180");
+  EXPECT_EQ(terms["frames"], 50);
+  EXPECT_GE(terms["pairs"].get<int>(), 15);
+  EXPECT_GT(terms["study_seconds"].get<double>(), 0.0);
+  EXPECT_GT(terms["robust_seconds"].get<double>(), 0.0);
+  EXPECT_GT(terms["cost"].get<double>(), -1.0);  // a median of time ratios: any positive ratio
+}
+
+// --searches picks which searches run; a name it does not know is refused, naming it.
+TEST(LmcBench, SearchesPicksTheTimedSearches) {
+  const auto dir = lmc::test::scratch_dir("cli_bench_searches");
+  const CliRun r =
+      run_lmc("bench --frames 20 --min-seconds 0.01 --particles 2 --iterations 1 --searches robust-table --json", dir);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  ASSERT_EQ(j["searches"].size(), 1u);
+  EXPECT_EQ(j["searches"][0]["name"], "robust-table");
+  EXPECT_FALSE(j.contains("search"));  // the study's search did not run
+  EXPECT_FALSE(j.contains("robust_terms_cost"));
+  const CliRun bad = run_lmc("bench --frames 20 --no-search --searches study-desk", dir / "bad");
+  EXPECT_NE(bad.exit_code, 0);
+  EXPECT_NE(bad.err.find("study-desk"), std::string::npos) << bad.err;
 }
 
 // LMC_KERNEL picks the kernel's build (a lab whose CPU runs AVX-512 slowly can keep AVX2); a value

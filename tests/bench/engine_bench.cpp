@@ -161,16 +161,19 @@ namespace {
 // The issue's search workload: 30 particles × 100 iterations, 4 devices, on the default
 // 10,000-frame Monte Carlo set, all threads, as `lmc optimize` runs it. Arg 0: the study's metric
 // in the authors' box (`--metric study`); arg 1: the robust metric on the table
-// (`--metric robust`, the default), whose layouts keep every controller on the hand. One iteration
-// each (they take seconds); issue #15 asks arg 1 to take no longer than arg 0 took before it.
+// (`--metric robust`, the default), whose layouts keep every controller on the hand; arg 2: the
+// study's metric on the same table, so that arg 1 against arg 2 is what the robust terms cost a
+// search (issue #15: under 10 %) and arg 0 the study's search as it was (issue #15: within its time
+// then). One iteration each (they take seconds). `lmc bench` runs the same three.
 void BM_EngineSearch30x100(benchmark::State& state) {
   const auto& fr = frames();
   lmc::PsoSettings s;
   s.particles = 30;
   s.iterations = 100;
   const bool robust = state.range(0) == 1;
+  const bool table = state.range(0) >= 1;
   s.metric = robust ? lmc::PlacementMetricKind::kRobust : lmc::PlacementMetricKind::kStudy;
-  const lmc::SearchSpace space = robust ? lmc::table_search_space() : lmc::SearchSpace{};
+  const lmc::SearchSpace space = table ? lmc::table_search_space() : lmc::SearchSpace{};
   for (auto _ : state) {
     const lmc::PsoResult r = lmc::run_pso(lmc::default_start_layout(4), space, fr, s);
     benchmark::DoNotOptimize(r.best_cost);
@@ -179,6 +182,6 @@ void BM_EngineSearch30x100(benchmark::State& state) {
     state.counters["stopped_early"] = static_cast<double>(r.layouts_stopped_early);
   }
 }
-BENCHMARK(BM_EngineSearch30x100)->Arg(0)->Arg(1)->Iterations(1)->Unit(benchmark::kSecond)->UseRealTime();
+BENCHMARK(BM_EngineSearch30x100)->Arg(0)->Arg(1)->Arg(2)->Iterations(1)->Unit(benchmark::kSecond)->UseRealTime();
 
 }  // namespace

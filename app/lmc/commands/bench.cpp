@@ -1,4 +1,5 @@
-// lmc bench: visibility throughput and search time on the default Monte Carlo pose set.
+// lmc bench: visibility throughput, what the robust metric's terms cost, and search times on the
+// default Monte Carlo pose set.
 //
 // Text and --json report the same figures. JSON keys:
 //   "frames"            pose-set size (default 10000, Monte Carlo seed 1)
@@ -10,21 +11,37 @@
 //                        "paper-initial" (every device sees the whole hand: every test runs),
 //                        "paper-optimized" and "random" (30 random 4-device layouts from the
 //                        authors' search box)
+//   "terms_per_evaluation" what the robust metric's terms cost per (layout, frame), free of the
+//                        machine's drift: {"layouts": 30, "frames" (the first 2,000 or all),
+//                        "bounds" (random layouts drawn on the table), "pairs", "study_seconds",
+//                        "robust_seconds" (medians over "pairs" adjacent runs of each, one
+//                        thread), "cost": the median of the pairs' robust/study − 1}
 //   "search"            {"particles", "iterations", "seconds", "evals_per_s", "best_cost"} for
-//                        one PSO run on all threads (absent with --no-search)
+//                        one PSO run on all threads with the study's metric in the authors' box
+//                        (absent with --no-search, or when --searches leaves out study-box)
+//   "searches"          array, one per search of --searches (default all three, in this order):
+//                        {"name": "study-box" | "study-table" | "robust-table", "metric": "study" |
+//                        "robust", "bounds" (the --bounds text), "particles", "iterations",
+//                        "seconds", "evals_per_s", "best_cost", "layouts_stopped_early"}
+//   "robust_terms_cost" robust-table's seconds / study-table's − 1: what the robust metric's terms
+//                        cost a whole search on the same bounds (only when both ran)
 #include <tbb/info.h>
 #include <tbb/task_arena.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
-#include <nlohmann/json.hpp>
 #include <iostream>
+#include <map>
+#include <nlohmann/json.hpp>
 #include <random>
 
 #include "app/lmc/command.h"
 #include "core/io/pose_source.h"
 #include "core/io/layout_json.h"
+#include "core/metric/layout_tally.h"
 #include "core/optimise/pso.h"
+#include "core/optimise/search_space.h"
 #include "core/optimise/swarm_evaluator.h"
 #include "core/visibility/frame_prep.h"
 #include "core/visibility/visibility_kernel.h"
@@ -37,8 +54,22 @@ struct BenchOptions {
   int iterations = 100;
   double min_seconds = 1.0;
   bool no_search = false;
+  std::vector<std::string> searches{"study-box", "study-table", "robust-table"};
   bool json = false;
 };
+
+// The timed searches. study-box is the study's search as the authors ran it; the table pair runs
+// the robust search's default bounds with either metric, so that their ratio is the cost of the
+// robust terms alone: a search on the table is slower with either metric, because there every
+// controller sees the hand and its visibility test cannot exit early.
+struct TimedSearch {
+  const char* name;
+  lmc::PlacementMetricKind metric;
+  bool table;
+};
+constexpr TimedSearch kTimedSearches[] = {{"study-box", lmc::PlacementMetricKind::kStudy, false},
+                                          {"study-table", lmc::PlacementMetricKind::kStudy, true},
+                                          {"robust-table", lmc::PlacementMetricKind::kRobust, true}};
 
 struct CaseResult {
   std::string name;
@@ -66,24 +97,99 @@ double measure(const std::vector<lmc::DeviceView>& views, int layouts, int devic
   return static_cast<double>(reps) * static_cast<double>(views.size()) * static_cast<double>(frames.size()) / elapsed;
 }
 
+// What the robust metric's terms cost per evaluation, measured so that the machine's drift (runs
+// of the same search differ by up to 1.5× here, in phases of seconds) cancels: the study's
+// histograms and the robust tallies of the same layouts on the same frames, one thread, in short
+// adjacent pairs (the order swapped every pair), until `min_seconds` have passed and at least 15
+// pairs ran; the median of the pairs' ratios, and the median time of each.
+struct PairedTimes {
+  double study_s = 0;
+  double robust_s = 0;
+  double ratio = 0;
+  int pairs = 0;
+};
+double median(std::vector<double> v) {
+  std::sort(v.begin(), v.end());
+  const size_t n = v.size();
+  return n % 2 == 1 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
+}
+PairedTimes measure_terms_cost(const std::vector<lmc::DeviceView>& views, int layouts, int devices,
+                               std::span<const lmc::PreparedFrame> frames, const lmc::VisibilityLimits& limits,
+                               double min_seconds) {
+  tbb::task_arena arena(1);
+  std::vector<std::int64_t> counts(static_cast<size_t>(layouts) * static_cast<size_t>(devices + 1));
+  std::vector<lmc::LayoutTally> tallies(static_cast<size_t>(layouts), lmc::LayoutTally(devices));
+  auto seconds_of = [&](bool robust) {
+    const auto t0 = std::chrono::steady_clock::now();
+    arena.execute([&] {
+      if (robust) {
+        lmc::layout_tallies(views, layouts, devices, frames, limits, lmc::kAxisCutMm, tallies);
+      } else {
+        lmc::worst_finger_histograms(views, layouts, devices, frames, limits, counts);
+      }
+    });
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  };
+  std::vector<double> study, robust, ratio;
+  double total = 0;
+  while (ratio.size() < 15 || total < min_seconds) {
+    const bool robust_first = ratio.size() % 2 == 1;
+    const double first = seconds_of(robust_first), second = seconds_of(!robust_first);
+    study.push_back(robust_first ? second : first);
+    robust.push_back(robust_first ? first : second);
+    ratio.push_back(robust.back() / study.back());
+    total += first + second;
+  }
+  return {median(study), median(robust), median(ratio), static_cast<int>(ratio.size())};
+}
+
+// `count` layouts of 4 devices drawn uniformly from `space` (fixed seed).
+std::vector<lmc::Layout> random_layouts(const lmc::SearchSpace& space, int count, std::uint64_t seed) {
+  std::mt19937_64 rng(seed);
+  std::vector<lmc::Layout> layouts;
+  for (int i = 0; i < count; ++i) {
+    lmc::Layout l = lmc::default_start_layout(4);
+    for (auto& d : l.devices) {
+      for (int k = 0; k < lmc::kNumPoseParams; ++k) {
+        if (!space.free[static_cast<size_t>(k)]) continue;
+        const auto& b = space.bounds[static_cast<size_t>(k)];
+        d.pose.set(k, b.min + (b.max - b.min) * static_cast<double>(rng() >> 11) * 0x1.0p-53);
+      }
+    }
+    layouts.push_back(l);
+  }
+  return layouts;
+}
+
+std::vector<lmc::DeviceView> views_of(const std::vector<lmc::Layout>& layouts) {
+  std::vector<lmc::DeviceView> views;
+  for (const auto& l : layouts) {
+    for (const auto& d : l.devices) views.push_back(lmc::DeviceView::from_device(d));
+  }
+  return views;
+}
+
 void setup_bench(CLI::App& app) {
   auto opt = std::make_shared<BenchOptions>();
   app.add_option("--frames", opt->frames, "Monte Carlo frames")->check(CLI::Range(1, 10'000'000));
   app.add_option("--particles", opt->particles, "Particles of the timed search")->check(CLI::Range(1, 100000));
   app.add_option("--iterations", opt->iterations, "Iterations of the timed search")->check(CLI::Range(0, 1000000));
   app.add_option("--min-seconds", opt->min_seconds, "Minimum time per throughput figure")->check(CLI::PositiveNumber);
-  app.add_flag("--no-search", opt->no_search, "Skip the timed search");
+  app.add_flag("--no-search", opt->no_search, "Skip the timed searches");
+  app.add_option("--searches", opt->searches,
+                 "Timed searches, comma-separated: study-box (the study's metric in the authors' box), study-table and "
+                 "robust-table (either metric on the table, the robust search's bounds); default all three")
+      ->delimiter(',')
+      ->check(CLI::IsMember({"study-box", "study-table", "robust-table"}));
   app.add_flag("--json", opt->json, "Print JSON (keys documented in app/lmc/commands/bench.cpp)");
   app.callback([opt] {
     const lmc::PoseSet poses = lmc::load_poses("mc", opt->frames, lmc::kDefaultMonteCarloSeed);
     const auto frames = lmc::prepare_frames(poses.frames);
     const int threads = tbb::info::default_concurrency();
     std::vector<CaseResult> results;
+    nlohmann::json terms;
     auto run_case = [&](const std::string& name, const std::vector<lmc::Layout>& layouts) {
-      std::vector<lmc::DeviceView> views;
-      for (const auto& l : layouts) {
-        for (const auto& d : l.devices) views.push_back(lmc::DeviceView::from_device(d));
-      }
+      const std::vector<lmc::DeviceView> views = views_of(layouts);
       const int devices = layouts.front().device_count();
       const auto limits = lmc::make_limits(lmc::VisibilityParams::from_sensor(layouts.front().sensor));
       CaseResult r{name, static_cast<int>(layouts.size()), devices, 0, 0};
@@ -105,27 +211,33 @@ void setup_bench(CLI::App& app) {
     if (!opt->json) std::printf("%d Monte Carlo frames (seed 1), visibility kernel: %s build\n", opt->frames, kernel);
     run_case("paper-initial", {lmc::load_layout_or_preset("paper-initial")});
     run_case("paper-optimized", {lmc::load_layout_or_preset("paper-optimized")});
+    run_case("random", random_layouts(lmc::SearchSpace{}, 30, 12345));
     {
-      std::mt19937_64 rng(12345);
-      const lmc::SearchSpace space;
-      std::vector<lmc::Layout> layouts;
-      for (int i = 0; i < 30; ++i) {
-        lmc::Layout l = lmc::default_start_layout(4);
-        for (auto& d : l.devices) {
-          for (int k = 0; k < lmc::kNumPoseParams; ++k) {
-            if (!space.free[static_cast<size_t>(k)]) continue;
-            const auto& b = space.bounds[static_cast<size_t>(k)];
-            d.pose.set(k, b.min + (b.max - b.min) * static_cast<double>(rng() >> 11) * 0x1.0p-53);
-          }
-        }
-        layouts.push_back(l);
+      const lmc::SearchSpace table = lmc::table_search_space();
+      const std::vector<lmc::Layout> layouts = random_layouts(table, 30, 54321);
+      const auto limits = lmc::make_limits(lmc::VisibilityParams::from_sensor(layouts.front().sensor));
+      // The first 2,000 frames: pairs of ~0.1 s fit between the machine's slow phases.
+      const std::span<const lmc::PreparedFrame> some(frames.data(), std::min<size_t>(frames.size(), 2000));
+      const PairedTimes p = measure_terms_cost(views_of(layouts), 30, 4, some, limits, 2.0 * opt->min_seconds);
+      terms = {{"layouts", 30},
+               {"frames", some.size()},
+               {"bounds", lmc::format_search_bounds(table)},
+               {"pairs", p.pairs},
+               {"study_seconds", p.study_s},
+               {"robust_seconds", p.robust_s},
+               {"cost", p.ratio - 1.0}};
+      if (!opt->json) {
+        std::printf("robust terms per evaluation: %+.1f %% (30 random layouts on the table × %zu frames, 1 thread: "
+                    "study %.1f ms, robust %.1f ms; medians of %d adjacent pairs)\n",
+                    100.0 * (p.ratio - 1.0), some.size(), 1e3 * p.study_s, 1e3 * p.robust_s, p.pairs);
+        std::fflush(stdout);
       }
-      run_case("random", layouts);
     }
     nlohmann::json j;
     j["frames"] = opt->frames;
     j["threads"] = threads;
     j["kernel_build"] = kernel;
+    j["terms_per_evaluation"] = terms;
     j["cases"] = nlohmann::json::array();
     for (const auto& r : results) {
       j["cases"].push_back({{"name", r.name},
@@ -135,20 +247,56 @@ void setup_bench(CLI::App& app) {
                             {"all_threads_evals_per_s", r.all}});
     }
     if (!opt->no_search) {
-      lmc::PsoSettings s;
-      s.particles = opt->particles;
-      s.iterations = opt->iterations;
-      const lmc::PsoResult pr = lmc::run_pso(lmc::default_start_layout(4), lmc::SearchSpace{}, frames, s);
-      const double rate = static_cast<double>(pr.device_frame_evaluations) / pr.seconds;
-      j["search"] = {{"particles", s.particles},
-                     {"iterations", s.iterations},
-                     {"seconds", pr.seconds},
-                     {"evals_per_s", rate},
-                     {"best_cost", pr.best_cost}};
+      j["searches"] = nlohmann::json::array();
       if (!opt->json) {
-        std::printf("search %d particles × %d iterations, 4 devices, %d frames, %d threads: %.2f s (%.0f evaluations/s), "
-                    "best M %.6g\n",
-                    s.particles, s.iterations, opt->frames, threads, pr.seconds, rate, pr.best_cost);
+        std::printf("searches of %d particles × %d iterations, 4 devices, %d frames, %d threads:\n", opt->particles,
+                    opt->iterations, opt->frames, threads);
+      }
+      std::map<std::string, double> seconds;
+      for (const TimedSearch& t : kTimedSearches) {
+        if (std::find(opt->searches.begin(), opt->searches.end(), t.name) == opt->searches.end()) continue;
+        lmc::PsoSettings s;
+        s.particles = opt->particles;
+        s.iterations = opt->iterations;
+        s.metric = t.metric;
+        const lmc::SearchSpace space = t.table ? lmc::table_search_space() : lmc::SearchSpace{};
+        const lmc::PsoResult pr = lmc::run_pso(lmc::default_start_layout(4), space, frames, s);
+        const double rate = static_cast<double>(pr.device_frame_evaluations) / pr.seconds;
+        const std::string metric = t.metric == lmc::PlacementMetricKind::kRobust ? "robust" : "study";
+        const std::string bounds = lmc::format_search_bounds(space);
+        seconds[t.name] = pr.seconds;
+        j["searches"].push_back({{"name", t.name},
+                                 {"metric", metric},
+                                 {"bounds", bounds},
+                                 {"particles", s.particles},
+                                 {"iterations", s.iterations},
+                                 {"seconds", pr.seconds},
+                                 {"evals_per_s", rate},
+                                 {"best_cost", pr.best_cost},
+                                 {"layouts_stopped_early", pr.layouts_stopped_early}});
+        if (!t.table) {
+          j["search"] = {{"particles", s.particles},
+                         {"iterations", s.iterations},
+                         {"seconds", pr.seconds},
+                         {"evals_per_s", rate},
+                         {"best_cost", pr.best_cost}};
+        }
+        if (!opt->json) {
+          std::printf("  %-12s (%s metric, %s): %.2f s (%.0f evaluations/s), best %s %.6g\n", t.name, metric.c_str(),
+                      bounds.c_str(), pr.seconds, rate, t.metric == lmc::PlacementMetricKind::kRobust ? "R" : "M",
+                      pr.best_cost);
+          std::fflush(stdout);
+        }
+      }
+      if (seconds.contains("study-table") && seconds.contains("robust-table")) {
+        const double cost = seconds["robust-table"] / seconds["study-table"] - 1.0;
+        j["robust_terms_cost"] = cost;
+        if (!opt->json) {
+          std::printf("  the robust terms cost %+.1f %% of a search on the same bounds (robust-table against "
+                      "study-table, one run each: the machine's drift between runs is in it; the figure per "
+                      "evaluation above is not)\n",
+                      100.0 * cost);
+        }
       }
     }
     if (opt->json) std::cout << j.dump(2) << "\n";
@@ -156,6 +304,6 @@ void setup_bench(CLI::App& app) {
 }
 
 const lmc::cli::CommandRegistration bench_command{
-    "bench", "Measure visibility throughput and search time", 90, setup_bench};
+    "bench", "Measure visibility throughput, what the robust terms cost, and search times", 90, setup_bench};
 
 }  // namespace

@@ -1,11 +1,14 @@
 // The search's fast paths against the plain ones they replace (issue #15 speed-up): the kernel's
 // axis-cut bits against seen_marker_beyond_cut, the tally built from them against the tally built
-// frame by frame with the reference tests, and the byte-wise worst-finger count against counting.
+// frame by frame with the reference tests, the tally of a run of frames against counting each
+// frame finger by finger, and the byte-wise worst-finger count against counting.
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <random>
 
+#include "core/common/error.h"
 #include "core/hand/pose_set_generator.h"
 #include "core/layout/layout.h"
 #include "core/metric/coverage.h"
@@ -99,6 +102,82 @@ TEST(TallyFastPath, TallyFromKernelCutBitsEqualsTheFrameByFrameTally) {
     expect_same(tally_layout(views, frames, lim), all);
     expect_same(tally_layout(views, frames, lim, kAxisCutMm, subset), some);
   }
+}
+
+// What tally_frames must add, counted the plain way: per frame, finger by finger and device by
+// device (the definitions in layout_tally.h).
+LayoutTally count_plainly(std::span<const PreparedFrame> frames, std::span<const DeviceView> views,
+                          const std::vector<std::vector<FingerBits>>& bits,
+                          const std::vector<std::vector<FingerBits>>& cut, const VisibilityLimits& lim) {
+  const auto nd = static_cast<int>(views.size());
+  LayoutTally t(nd);
+  for (size_t j = 0; j < frames.size(); ++j) {
+    ++t.frames;
+    int worst = nd, worst_inside = nd;
+    FingerBits sole = 0;
+    for (int f = 0; f < kNumDigits; ++f) {
+      int seeing = 0, seeing_inside = 0;
+      for (int d = 0; d < nd; ++d) {
+        const bool seen = (bits[static_cast<size_t>(d)][j] >> f) & 1;
+        const bool beyond = (cut[static_cast<size_t>(d)][j] >> f) & 1;
+        seeing += seen;
+        seeing_inside += seen && !beyond;
+      }
+      worst = std::min(worst, seeing);
+      worst_inside = std::min(worst_inside, seeing_inside);
+      if (seeing == 1) sole = static_cast<FingerBits>(sole | (1u << f));
+    }
+    ++t.c[static_cast<size_t>(worst)];
+    ++t.c_inside_cut[static_cast<size_t>(worst_inside)];
+    for (int d = 0; d < nd; ++d) {
+      const auto dd = static_cast<size_t>(d);
+      const FingerBits b = bits[dd][j];
+      if (b == 0) continue;
+      ++t.device_seeing_frames[dd];
+      if ((b & sole) != 0) ++t.device_sole_frames[dd];
+      if ((b & cut[dd][j]) != 0) ++t.device_cut_frames[dd];
+      t.device_off_centre[dd] += std::llround(off_centre_penalty(frames[j], views[dd], lim) * kOffCentreScale);
+    }
+  }
+  return t;
+}
+
+TEST(TallyFastPath, TallyOfARunOfFramesEqualsCountingEachFrame) {
+  const auto& frames = some_frames();
+  const VisibilityLimits lim = make_limits({});
+  std::mt19937_64 rng(11);
+  // Runs shorter than, equal to and longer than the 64-frame blocks, 1 to 8 devices, random bits
+  // (any finger seen or cut, also bits of unseen fingers set in the cut, as the kernel leaves them).
+  for (const size_t count : {size_t{1}, size_t{5}, size_t{63}, size_t{64}, size_t{65}, size_t{200}, frames.size()}) {
+    for (int nd = 1; nd <= kMaxDevices; ++nd) {
+      const auto views = random_views(nd, rng());
+      const size_t stride = count + 3;  // the columns need not be packed
+      std::vector<FingerBits> flat_bits(static_cast<size_t>(nd) * stride), flat_cut(flat_bits.size());
+      std::vector<std::vector<FingerBits>> bits(static_cast<size_t>(nd)), cut(static_cast<size_t>(nd));
+      for (size_t d = 0; d < static_cast<size_t>(nd); ++d) {
+        for (size_t j = 0; j < count; ++j) {
+          // A third of the pairs see nothing, as devices beside the hand do.
+          const auto b = static_cast<FingerBits>(rng() % 3 == 0 ? 0 : rng() & 0x1F);
+          const auto c = static_cast<FingerBits>(rng() % 4 == 0 ? rng() & 0x1F : 0);
+          flat_bits[d * stride + j] = b;
+          flat_cut[d * stride + j] = c;
+          bits[d].push_back(b);
+          cut[d].push_back(c);
+        }
+      }
+      const std::span<const PreparedFrame> run(frames.data(), count);
+      LayoutTally t(nd);
+      tally_frames(run, views, flat_bits.data(), flat_cut.data(), stride, lim, t);
+      SCOPED_TRACE(testing::Message() << count << " frames, " << nd << " devices");
+      const LayoutTally expected = count_plainly(run, views, bits, cut, lim);
+      expect_same(t, expected);
+      EXPECT_GT(expected.seeing_pairs(), 0);
+    }
+  }
+  LayoutTally t(9);
+  FingerBits nine[9] = {};
+  EXPECT_THROW(tally_frames(std::span<const PreparedFrame>(frames.data(), 1), random_views(9, 1), nine, nine, 1, lim, t),
+               Error);
 }
 
 TEST(TallyFastPath, WorstFingerCountMatchesCountingFingerByFinger) {

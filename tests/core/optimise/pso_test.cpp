@@ -165,6 +165,17 @@ TEST(Pso, RejectsBadSettings) {
   EXPECT_EQ(sp.bounds[1].max, 50);
 }
 
+// lmc bench prints the bounds it searched in --bounds form; read back they are the same space.
+TEST(SearchSpace, FormattedBoundsReadBackAsTheSameSpace) {
+  EXPECT_EQ(format_search_bounds(table_search_space()), "x=-360:360,z=-360:360,rx=-90:90,ry=-180:180");
+  EXPECT_EQ(format_search_bounds(SearchSpace{}), "x=-1000:1000,z=-1000:1000,rx=-90:90,ry=-180:180");
+  for (const SearchSpace& space : {table_search_space(), parse_search_bounds("y=0.1:50.25,rz=-10:1e-3")}) {
+    const SearchSpace back = parse_search_bounds(format_search_bounds(space));
+    EXPECT_EQ(back.free, space.free);
+    EXPECT_EQ(back.bounds, space.bounds);
+  }
+}
+
 TEST(Pso, EightDevicesWork) {
   PsoSettings s = small();
   s.particles = 3;
