@@ -60,4 +60,13 @@ std::string tick_label(double value, const std::vector<double>& ticks) {
   return fixed_c(value, decimals);
 }
 
+std::string value_label(double value, double lo, double hi) {
+  const double span = hi - lo;
+  int decimals = 2;
+  if (std::isfinite(span) && span > 0) {
+    decimals = std::clamp(static_cast<int>(std::ceil(2.0 - std::log10(span) - 1e-9)), 0, 12);
+  }
+  return fixed_c(value, decimals);
+}
+
 }  // namespace lmc::figures

@@ -17,6 +17,12 @@ std::vector<double> nice_ticks(double lo, double hi, int target = 5);
 // label their axes alike.
 std::string tick_label(double value, const std::vector<double>& ticks);
 
+// A value read off an axis that spans [lo, hi] (a plot's cursor readout): as many decimals as
+// resolve a hundredth of the span (a 0–12° axis: one; 86–88 mm: two), so a value that is zero to
+// the axis reads "0.0", never "8.5e-07"; C locale, no sign on a rounded zero. Two decimals when the
+// span is empty or not finite.
+std::string value_label(double value, double lo, double hi);
+
 // Min and max of the finite y whose x lies in [x_lo, x_hi] over every series given, widened by
 // `margin` of its span (a flat series gets ±1); nullopt-like {0, 1} when nothing is visible.
 std::pair<double, double> fit_y_range(std::span<const std::span<const double>> xs,

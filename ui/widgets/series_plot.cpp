@@ -173,7 +173,10 @@ void SeriesPlot::draw(const char* id, const std::vector<PlotSeries>& series, con
     for (size_t k = 0; k < shown.size(); ++k) {
       const size_t s = shown[k];
       const double v = series_value_at(series[s].x, series[s].y, *x_->cursor);
-      const std::string text = series[s].name + " " + (std::isfinite(v) ? series_tick_text(v) : std::string("missing"));
+      // Read off the axis: decimals for its visible span (a log axis: of the values it spans).
+      const std::string value = o.log_y ? value_label(v, std::pow(10.0, y_lo), std::pow(10.0, y_hi))
+                                        : value_label(v, y_lo, y_hi);
+      const std::string text = series[s].name + " " + (std::isfinite(v) ? value : std::string("missing"));
       dl->AddText(ImVec2(x + 4, text_y), to_u32(series_colour(series[s].colour >= 0 ? series[s].colour : static_cast<int>(s)), 1.0F),
                   text.c_str());
       text_y += ImGui::GetTextLineHeight();

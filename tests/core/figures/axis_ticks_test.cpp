@@ -60,4 +60,18 @@ TEST(FiguresAxisTicks, LabelsHaveJustEnoughDecimalsForTheirStep) {
   EXPECT_EQ(tick_label(7, {7}), "7");  // a single tick: whole numbers
 }
 
+// The Review plots' cursor readout: Vicon's index DIP angle of 8.5e-07° on a 0–12° axis was shown
+// as "8.5e-07"; read off the axis it is 0.0.
+TEST(FiguresAxisTicks, AValueReadOffAnAxisHasTheAxissResolution) {
+  EXPECT_EQ(value_label(8.5e-07, 0, 12), "0.0");
+  EXPECT_EQ(value_label(-8.5e-07, 0, 12), "0.0");  // no sign on a rounded zero
+  EXPECT_EQ(value_label(9.4996, 0, 12), "9.5");
+  EXPECT_EQ(value_label(87.134, 86, 88.5), "87.13");
+  EXPECT_EQ(value_label(0.86331, 0.8, 1.3), "0.863");
+  EXPECT_EQ(value_label(153.26, 0, 180), "153");
+  EXPECT_EQ(value_label(1234.6, 0, 5000), "1235");  // whole numbers from a span of 100 up
+  EXPECT_EQ(value_label(0.5, 1, 1), "0.50");        // an empty span: two decimals
+  EXPECT_EQ(value_label(0.5, 0, std::nan("")), "0.50");
+}
+
 }  // namespace lmc::figures::axis_ticks_test

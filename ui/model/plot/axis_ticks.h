@@ -1,11 +1,13 @@
 #pragma once
-// The plot widgets' round ticks and fitted y range are core's (core/figures/axis_ticks.h), so the
-// screen and the exported figures pick the same ticks: one implementation, named here for ui code.
+// The plot widgets' round ticks, fitted y range and cursor value text are core's
+// (core/figures/axis_ticks.h), so the screen and the exported figures pick the same ticks: one
+// implementation, named here for ui code.
 #include "core/figures/axis_ticks.h"
 
 namespace lmc::ui {
 
 using figures::fit_y_range;
 using figures::nice_ticks;
+using figures::value_label;
 
 }  // namespace lmc::ui
