@@ -172,8 +172,8 @@ std::vector<lmc::DeviceView> views_of(const std::vector<lmc::Layout>& layouts) {
 void setup_bench(CLI::App& app) {
   auto opt = std::make_shared<BenchOptions>();
   app.add_option("--frames", opt->frames, "Monte Carlo frames")->check(CLI::Range(1, 10'000'000));
-  app.add_option("--particles", opt->particles, "Particles of the timed search")->check(CLI::Range(1, 100000));
-  app.add_option("--iterations", opt->iterations, "Iterations of the timed search")->check(CLI::Range(0, 1000000));
+  app.add_option("--particles", opt->particles, "Particles of each timed search")->check(CLI::Range(1, 100000));
+  app.add_option("--iterations", opt->iterations, "Iterations of each timed search")->check(CLI::Range(0, 1000000));
   app.add_option("--min-seconds", opt->min_seconds, "Minimum time per throughput figure")->check(CLI::PositiveNumber);
   app.add_flag("--no-search", opt->no_search, "Skip the timed searches");
   app.add_option("--searches", opt->searches,
