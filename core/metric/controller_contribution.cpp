@@ -58,7 +58,11 @@ std::vector<ControllerContribution> controller_contributions(const VisibilityTab
   const double m_all = all.metric;
   const double s2_all = redundant_share(all.c);
   Coverage inside_all;
-  if (inside_cut != nullptr) inside_all = compute_coverage(*inside_cut, subset);
+  double s2_inside_all = 0;
+  if (inside_cut != nullptr) {
+    inside_all = compute_coverage(*inside_cut, subset);
+    s2_inside_all = redundant_share(inside_all.c);
+  }
   for (int d = 0; d < table.devices; ++d) {
     const auto dd = static_cast<size_t>(d);
     ControllerContribution c;
@@ -80,7 +84,7 @@ std::vector<ControllerContribution> controller_contributions(const VisibilityTab
       c.metric_inside_cut_without = inside_without.metric;
       c.redundant_inside_cut_without = inside_without.redundant;
       c.counts_inside_cut =
-          inside_without.metric > inside_all.metric || inside_without.redundant < redundant_share(inside_all.c);
+          inside_without.metric > inside_all.metric || inside_without.redundant < s2_inside_all;
     }
     out.push_back(c);
   }

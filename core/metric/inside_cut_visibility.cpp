@@ -4,6 +4,9 @@
 
 #include <vector>
 
+#include "core/common/error.h"
+#include "core/metric/coverage.h"
+
 namespace lmc {
 
 VisibilityWithCut visibility_with_inside_cut(const Layout& layout, std::span<const PreparedFrame> frames,
@@ -30,6 +33,31 @@ VisibilityWithCut visibility_with_inside_cut(const Layout& layout, std::span<con
     }
   });
   return t;
+}
+
+LayoutTally tally_from_visibility(const VisibilityWithCut& tables, std::span<const DeviceView> views,
+                                  std::span<const PreparedFrame> frames, const VisibilityLimits& limits,
+                                  std::span<const int> subset) {
+  const int nd = tables.seen.devices;
+  if (nd < 1 || nd > kMaxDevices || static_cast<size_t>(nd) != views.size() ||
+      static_cast<size_t>(tables.seen.frames) != frames.size()) {
+    throw Error("tally_from_visibility: the tables are of another layout or pose set");
+  }
+  LayoutTally tally(nd);
+  const auto add = [&](int j) {
+    FingerBits seen[kMaxDevices] = {}, cut[kMaxDevices] = {};
+    for (int d = 0; d < nd; ++d) {
+      seen[d] = tables.seen.at(d, j);
+      cut[d] = static_cast<FingerBits>(seen[d] & ~tables.inside_cut.at(d, j));
+    }
+    tally_frame(frames[static_cast<size_t>(j)], views, seen, cut, limits, tally);
+  };
+  if (subset.empty()) {
+    for (int j = 0; j < tables.seen.frames; ++j) add(j);
+  } else {
+    for (const int j : subset) add(j);
+  }
+  return tally;
 }
 
 }  // namespace lmc

@@ -30,7 +30,8 @@ LayoutReport build_layout_report(const Layout& layout, const PoseSet& poses, std
   r.poses_description = poses.description;
   r.weights = weights;
   for (const auto& d : layout.devices) r.slots.push_back(d.slot);
-  // One kernel pass gives what each controller sees and what it sees inside its axis cut.
+  // One kernel pass gives what each controller sees and what it sees inside its axis cut; the
+  // coverage, the robust terms and each controller's contribution are all counted from it.
   const VisibilityWithCut tables = visibility_with_inside_cut(layout, prepared, phalanx_radius_mm, kAxisCutMm);
   const VisibilityTable& table = tables.seen;
   const std::vector<int> horizontal = poses.indices_with(HandOrientation::kHorizontal);
@@ -41,10 +42,11 @@ LayoutReport build_layout_report(const Layout& layout, const PoseSet& poses, std
   for (const auto& d : layout.devices) views.push_back(DeviceView::from_device(d));
   const VisibilityLimits limits = make_limits(VisibilityParams::from_sensor(layout.sensor, phalanx_radius_mm));
   const double footprint = footprint_overlap_share(layout);
-  const LayoutTally all = tally_layout(views, prepared, limits, kAxisCutMm);
+  // The tallies from the same tables: the kernel runs once for the whole report.
+  const LayoutTally all = tally_from_visibility(tables, views, prepared, limits);
   r.terms_all = robust_terms(all, footprint, weights);
-  if (!horizontal.empty()) r.terms_horizontal = robust_terms(tally_layout(views, prepared, limits, kAxisCutMm, horizontal), footprint, weights);
-  if (!vertical.empty()) r.terms_vertical = robust_terms(tally_layout(views, prepared, limits, kAxisCutMm, vertical), footprint, weights);
+  if (!horizontal.empty()) r.terms_horizontal = robust_terms(tally_from_visibility(tables, views, prepared, limits, horizontal), footprint, weights);
+  if (!vertical.empty()) r.terms_vertical = robust_terms(tally_from_visibility(tables, views, prepared, limits, vertical), footprint, weights);
   r.controllers = controller_contributions(table, all, r.slots, {}, &tables.inside_cut);
   for (size_t i = 0; i < layout.devices.size(); ++i) {
     for (size_t j = i + 1; j < layout.devices.size(); ++j) {

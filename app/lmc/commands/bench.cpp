@@ -43,6 +43,7 @@
 #include "core/optimise/pso.h"
 #include "core/optimise/search_space.h"
 #include "core/optimise/swarm_evaluator.h"
+#include "core/stats/percentile.h"
 #include "core/visibility/frame_prep.h"
 #include "core/visibility/visibility_kernel.h"
 
@@ -108,11 +109,6 @@ struct PairedTimes {
   double ratio = 0;
   int pairs = 0;
 };
-double median(std::vector<double> v) {
-  std::sort(v.begin(), v.end());
-  const size_t n = v.size();
-  return n % 2 == 1 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
-}
 PairedTimes measure_terms_cost(const std::vector<lmc::DeviceView>& views, int layouts, int devices,
                                std::span<const lmc::PreparedFrame> frames, const lmc::VisibilityLimits& limits,
                                double min_seconds) {
@@ -140,6 +136,7 @@ PairedTimes measure_terms_cost(const std::vector<lmc::DeviceView>& views, int la
     ratio.push_back(robust.back() / study.back());
     total += first + second;
   }
+  const auto median = [](const std::vector<double>& v) { return lmc::stats::percentile(v, 50.0); };
   return {median(study), median(robust), median(ratio), static_cast<int>(ratio.size())};
 }
 

@@ -12,7 +12,9 @@
 #include "core/hand/pose_set_generator.h"
 #include "core/layout/layout.h"
 #include "core/metric/coverage.h"
+#include "core/metric/inside_cut_visibility.h"
 #include "core/metric/layout_tally.h"
+#include "core/optimise/search_space.h"
 #include "core/visibility/visibility_explain.h"
 #include "core/visibility/visibility_kernel.h"
 #include "tests/support/mc_frames.h"
@@ -178,6 +180,42 @@ TEST(TallyFastPath, TallyOfARunOfFramesEqualsCountingEachFrame) {
   FingerBits nine[9] = {};
   EXPECT_THROW(tally_frames(std::span<const PreparedFrame>(frames.data(), 1), random_views(9, 1), nine, nine, 1, lim, t),
                Error);
+}
+
+// The layout report counts its tallies from the tables it already has (no second kernel pass):
+// the same tally as running the kernel again, over all frames and over a subset.
+TEST(TallyFastPath, TallyFromTheVisibilityTablesEqualsTallyingTheLayout) {
+  const auto& frames = some_frames();
+  const VisibilityLimits lim = make_limits({});
+  std::vector<int> subset;
+  for (int j = 1; j < static_cast<int>(frames.size()); j += 4) subset.push_back(j);
+  for (std::uint64_t seed = 1; seed <= 4; ++seed) {
+    // Devices on and around the table, as random_views places them, in a layout (which
+    // visibility_with_inside_cut takes).
+    Layout layout = default_start_layout(4);
+    std::mt19937_64 rng(seed);
+    std::uniform_real_distribution<double> u(-1, 1);
+    for (auto& dev : layout.devices) {
+      dev.pose.x_mm = 300 * u(rng);
+      dev.pose.y_mm = 40 * u(rng);
+      dev.pose.z_mm = 300 * u(rng);
+      dev.pose.rx_deg = 50 * u(rng);
+      dev.pose.ry_deg = 180 * u(rng);
+      dev.pose.rz_deg = 10 * u(rng);
+    }
+    std::vector<DeviceView> layout_views;
+    for (const auto& dev : layout.devices) layout_views.push_back(DeviceView::from_device(dev));
+    const VisibilityWithCut tables = visibility_with_inside_cut(layout, frames);
+    const VisibilityLimits limits = make_limits(VisibilityParams::from_sensor(layout.sensor));
+    const LayoutTally all = tally_from_visibility(tables, layout_views, frames, limits);
+    expect_same(all, tally_layout(layout_views, frames, limits));
+    expect_same(tally_from_visibility(tables, layout_views, frames, limits, subset),
+                tally_layout(layout_views, frames, limits, kAxisCutMm, subset));
+    EXPECT_GT(all.cut_pairs(), 0);
+  }
+  const Layout two = default_start_layout(2);
+  const VisibilityWithCut tables = visibility_with_inside_cut(two, frames);
+  EXPECT_THROW(tally_from_visibility(tables, random_views(3, 1), frames, lim), Error);
 }
 
 TEST(TallyFastPath, WorstFingerCountMatchesCountingFingerByFinger) {
