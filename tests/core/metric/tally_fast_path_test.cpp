@@ -24,11 +24,11 @@ namespace tally_fast_path_test {
 
 const std::vector<PreparedFrame>& some_frames() { return test::mc_frames(300, 7); }
 
-// Devices on and around the table, most of them seeing the hand.
-std::vector<DeviceView> random_views(int count, std::uint64_t seed) {
+// Device poses on and around the table, most of them seeing the hand.
+std::vector<DevicePose> random_poses(int count, std::uint64_t seed) {
   std::mt19937_64 rng(seed);
   std::uniform_real_distribution<double> u(-1, 1);
-  std::vector<DeviceView> v;
+  std::vector<DevicePose> v;
   for (int i = 0; i < count; ++i) {
     DevicePose p;
     p.x_mm = 300 * u(rng);
@@ -37,8 +37,22 @@ std::vector<DeviceView> random_views(int count, std::uint64_t seed) {
     p.rx_deg = 50 * u(rng);
     p.ry_deg = 180 * u(rng);
     p.rz_deg = 10 * u(rng);
-    v.push_back(DeviceView::from_pose(p));
+    v.push_back(p);
   }
+  return v;
+}
+
+// Frames first, first + step, … of the test's frames (a pose-set subset, as the report's horizontal
+// and vertical poses are).
+std::vector<int> every_nth_frame(int first, int step) {
+  std::vector<int> subset;
+  for (int j = first; j < static_cast<int>(some_frames().size()); j += step) subset.push_back(j);
+  return subset;
+}
+
+std::vector<DeviceView> random_views(int count, std::uint64_t seed) {
+  std::vector<DeviceView> v;
+  for (const DevicePose& p : random_poses(count, seed)) v.push_back(DeviceView::from_pose(p));
   return v;
 }
 
@@ -90,8 +104,7 @@ void expect_same(const LayoutTally& a, const LayoutTally& b) {
 TEST(TallyFastPath, TallyFromKernelCutBitsEqualsTheFrameByFrameTally) {
   const auto& frames = some_frames();
   const VisibilityLimits lim = make_limits({});
-  std::vector<int> subset;
-  for (int j = 0; j < static_cast<int>(frames.size()); j += 3) subset.push_back(j);
+  const std::vector<int> subset = every_nth_frame(0, 3);
   for (std::uint64_t seed = 1; seed <= 6; ++seed) {
     const auto views = random_views(4, seed);
     LayoutTally all(4), some(4);
@@ -187,22 +200,12 @@ TEST(TallyFastPath, TallyOfARunOfFramesEqualsCountingEachFrame) {
 TEST(TallyFastPath, TallyFromTheVisibilityTablesEqualsTallyingTheLayout) {
   const auto& frames = some_frames();
   const VisibilityLimits lim = make_limits({});
-  std::vector<int> subset;
-  for (int j = 1; j < static_cast<int>(frames.size()); j += 4) subset.push_back(j);
+  const std::vector<int> subset = every_nth_frame(1, 4);
   for (std::uint64_t seed = 1; seed <= 4; ++seed) {
-    // Devices on and around the table, as random_views places them, in a layout (which
-    // visibility_with_inside_cut takes).
+    // The devices random_views places, as a layout (visibility_with_inside_cut takes one).
     Layout layout = default_start_layout(4);
-    std::mt19937_64 rng(seed);
-    std::uniform_real_distribution<double> u(-1, 1);
-    for (auto& dev : layout.devices) {
-      dev.pose.x_mm = 300 * u(rng);
-      dev.pose.y_mm = 40 * u(rng);
-      dev.pose.z_mm = 300 * u(rng);
-      dev.pose.rx_deg = 50 * u(rng);
-      dev.pose.ry_deg = 180 * u(rng);
-      dev.pose.rz_deg = 10 * u(rng);
-    }
+    const std::vector<DevicePose> poses = random_poses(4, seed);
+    for (size_t d = 0; d < 4; ++d) layout.devices[d].pose = poses[d];
     std::vector<DeviceView> layout_views;
     for (const auto& dev : layout.devices) layout_views.push_back(DeviceView::from_device(dev));
     const VisibilityWithCut tables = visibility_with_inside_cut(layout, frames);
