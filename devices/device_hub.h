@@ -69,6 +69,9 @@ class DeviceHub final : public FrameSink {
   void start();
   void stop();
   bool running() const;
+  // False when the hub plays simulated time faster than real time (HubOptions::backpressure):
+  // its frames' host times then do not follow the wall clock.
+  bool realtime() const { return !options_.backpressure; }
   // True when every source is finite and finished.
   bool sources_finished() const;
   std::vector<std::string> backends() const;

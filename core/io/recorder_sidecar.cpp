@@ -16,7 +16,8 @@ constexpr const char* kTopKeys[] = {
     "format", "format_version", "trial", "status", "error", "stopped_by", "software", "backend",
     "recording_file", "recording_format", "host_start_utc", "host_stop_utc", "host_start_ns", "host_stop_ns",
     "layout", "serial_to_slot", "devices", "frames_written", "frames_dropped", "vicon_packets",
-    "vicon_trigger_received", "vicon_stop_received", "vicon_alignment", "events", "ground_truth", "extra"};
+    "vicon_trigger_received", "vicon_stop_received", "vicon_alignment", "trial_window", "events", "ground_truth",
+    "extra"};
 constexpr const char* kDeviceKeys[] = {
     "device_id", "slot", "serial", "frames_written", "frames_with_hand", "frames_dropped_queue", "frame_id_gaps",
     "first_timestamp_us", "last_timestamp_us", "gaps", "disconnects"};
@@ -256,6 +257,7 @@ json recorder_sidecar_to_json(const RecorderSidecar& s) {
   if (!s.vicon_trigger_received.is_null()) j["vicon_trigger_received"] = s.vicon_trigger_received;
   if (!s.vicon_stop_received.is_null()) j["vicon_stop_received"] = s.vicon_stop_received;
   if (!s.vicon_alignment.is_null()) j["vicon_alignment"] = s.vicon_alignment;
+  if (!s.trial_window.is_null()) j["trial_window"] = s.trial_window;
   j["events"] = s.events.is_array() ? s.events : json::array();
   if (s.ground_truth) j["ground_truth"] = sidecar_ground_truth_to_json(*s.ground_truth);
   if (s.extra.is_object() && !s.extra.empty()) j["extra"] = s.extra;
@@ -315,6 +317,7 @@ RecorderSidecar recorder_sidecar_from_json(const json& j, const std::string& sou
   get_object(r, "vicon_trigger_received", s.vicon_trigger_received);
   get_object(r, "vicon_stop_received", s.vicon_stop_received);
   get_object(r, "vicon_alignment", s.vicon_alignment);
+  get_object(r, "trial_window", s.trial_window);
   if (r.has("events")) {
     const JsonReader events = r.at("events");
     events.array_size();  // must be an array

@@ -90,6 +90,9 @@ struct RecorderSidecar {
   nlohmann::json vicon_trigger_received;  // null unless listen mode
   nlohmann::json vicon_stop_received;
   nlohmann::json vicon_alignment;  // null when no CaptureStart (devices/record/clock_alignment.h)
+  // When the subject was told to go and what of the stream lay outside the trial (null in files
+  // written before the window was recorded, which hold every row from the recorder's start).
+  nlohmann::json trial_window;
   nlohmann::json events = nlohmann::json::array();
   std::optional<SidecarGroundTruth> ground_truth;
   nlohmann::json extra = nlohmann::json::object();

@@ -252,10 +252,13 @@ int SessionFolder::trial_started(int i) {
   return attempt;
 }
 
-void SessionFolder::trial_stopped(int i, const std::string& outcome, const std::string& reason) {
+void SessionFolder::trial_stopped(int i, const std::string& outcome, const std::string& reason,
+                                  const std::string& go_utc) {
   const int a = last_attempt(i);
-  record({{"type", "trial_stopped"}, {"trial", i}, {"name", state_.trials[static_cast<size_t>(i)].plan.name},
-          {"attempt", a}, {"outcome", outcome}, {"reason", reason}});
+  nlohmann::json e = {{"type", "trial_stopped"}, {"trial", i}, {"name", state_.trials[static_cast<size_t>(i)].plan.name},
+                      {"attempt", a}, {"outcome", outcome}, {"reason", reason}};
+  if (!go_utc.empty()) e["go_utc"] = go_utc;
+  record(e);
 }
 
 void SessionFolder::trial_verdict(int i, const nlohmann::json& quality) {

@@ -62,7 +62,9 @@ class SessionFolder {
   void preflight_override(const std::string& block, const std::string& reason);
   // Journals the start of a new attempt of trial `i` and returns its number (1, 2, …).
   int trial_started(int i);
-  void trial_stopped(int i, const std::string& outcome, const std::string& reason);
+  // `go_utc`: when the subject was told to go, the start of what the trial's file holds ("" when
+  // the trial never got there).
+  void trial_stopped(int i, const std::string& outcome, const std::string& reason, const std::string& go_utc = {});
   void trial_verdict(int i, const nlohmann::json& quality);
   void trial_accepted(int i);
   // Moves the last attempt's files of trial `i` under superseded/<name>.attempt<N>/ and makes the

@@ -189,6 +189,7 @@ void apply_journal_event(SessionState& st, const nlohmann::json& event, const st
     AttemptState& a = event_attempt(t, e);
     a.outcome = e.string("outcome");
     a.reason = e.string_or("reason", "");
+    a.go_utc = e.string_or("go_utc", "");
     a.stopped_utc = utc;
     t.status = TrialStatus::kRecorded;
   } else if (type == "trial_verdict") {
@@ -212,7 +213,11 @@ void apply_journal_event(SessionState& st, const nlohmann::json& event, const st
     a.superseded_dir = e.string("superseded_dir");
     t.status = TrialStatus::kPending;
   } else if (type == "note") {
-    if (e.has("trial")) event_trial(st, e).notes.push_back(e.string("text"));
+    if (e.has("trial")) {
+      TrialState& t = event_trial(st, e);
+      t.notes.push_back(e.string("text"));
+      if (!t.attempts.empty()) t.attempts.back().notes.push_back(e.string("text"));
+    }
     else st.setup.notes += (st.setup.notes.empty() ? "" : "\n") + e.string("text");
   } else if (type == "calibration_started") {
     const std::string block = calibration_block(st, e);
@@ -256,6 +261,7 @@ nlohmann::json manifest_trial_json(const SessionState& st, const TrialState& t) 
     nlohmann::json aj = {{"number", a.number}, {"started_utc", a.started_utc}, {"stopped_utc", a.stopped_utc},
                          {"outcome", a.outcome}, {"reason", a.reason}, {"verdict", a.verdict()},
                          {"quality", a.quality}};
+    if (!a.go_utc.empty()) aj["go_utc"] = a.go_utc;
     if (!a.superseded_dir.empty()) aj["superseded_dir"] = a.superseded_dir;
     attempts.push_back(aj);
   }

@@ -25,10 +25,12 @@ const char* trial_status_name(TrialStatus s);
 struct AttemptState {
   int number = 0;              // 1, 2, …
   std::string started_utc, stopped_utc;
+  std::string go_utc;          // when the subject was told to go: where the file starts ("" if never)
   std::string outcome;         // "" while recording; completed | aborted | failed | interrupted
   std::string reason;
   nlohmann::json quality;      // quality_to_json of its verdict, null until assessed
   std::string superseded_dir;  // relative to the session folder, once redone ("superseded/T.attempt1")
+  std::vector<std::string> notes;  // the trial's notes journaled while this was its latest attempt
   std::string verdict() const; // "pass" | "warn" | "fail" | "" (not assessed)
 };
 

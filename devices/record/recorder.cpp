@@ -60,10 +60,35 @@ void Recorder::start() {
   thread_ = std::thread([this] { run(); });
 }
 
+void Recorder::open_window(std::int64_t from_ns, std::int64_t until_ns) {
+  {
+    std::lock_guard lock(stats_mutex_);
+    window_from_utc_ = utc_now_iso8601();
+  }
+  window_until_ns_ = until_ns;
+  window_from_ns_ = from_ns;
+}
+
+std::string Recorder::window_from_utc() const {
+  std::lock_guard lock(stats_mutex_);
+  return window_from_utc_;
+}
+
 bool Recorder::offer(const HandFrame& frame, std::int64_t host_receive_ns, bool may_wait) {
   if (failed_.load(std::memory_order_relaxed) || stop_requested_.load(std::memory_order_relaxed) || !started_) {
     dropped_.fetch_add(1);
     return false;
+  }
+  if (config_.wait_for_go) {
+    // Outside the trial (the countdown, or after its planned end): taken, not written, not lost.
+    if (host_receive_ns < window_from_ns_.load()) {
+      before_window_.fetch_add(1);
+      return true;
+    }
+    if (host_receive_ns >= window_until_ns_.load()) {
+      after_window_.fetch_add(1);
+      return true;
+    }
   }
   Item item{frame, host_receive_ns};
   std::unique_lock lock(producer_mutex_);
@@ -346,6 +371,17 @@ RecorderSidecar Recorder::sidecar(const char* state) const {
     else if (key == "vicon_trigger_received") sc.vicon_trigger_received = value;
     else if (key == "vicon_stop_received") sc.vicon_stop_received = value;
     else sc.unknown[key] = value;
+  }
+  if (config_.wait_for_go) {
+    nlohmann::json w = config_.trial_window.is_object() ? config_.trial_window : nlohmann::json::object();
+    const std::int64_t from = window_from_ns_.load();
+    w["go_host_ns"] = from == kClosed ? nlohmann::json(nullptr) : nlohmann::json(from);
+    w["go_host_utc"] = window_from_utc_.empty() ? nlohmann::json(nullptr) : nlohmann::json(window_from_utc_);
+    const std::int64_t until = window_until_ns_.load();
+    w["end_host_ns"] = until == kClosed ? nlohmann::json(nullptr) : nlohmann::json(until);
+    w["frames_before_go"] = before_window_.load();
+    w["frames_after_end"] = after_window_.load();
+    sc.trial_window = std::move(w);
   }
   sc.extra = config_.extra;
   return sc;

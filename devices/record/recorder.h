@@ -10,6 +10,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <functional>
+#include <limits>
 #include <map>
 #include <memory>
 #include <mutex>
@@ -39,6 +40,10 @@ struct RecorderConfig {
   // Tests inject failing sinks; default opens the file.
   std::function<std::unique_ptr<ByteSink>(const std::filesystem::path&)> open_sink;
   nlohmann::json extra = nlohmann::json::object();  // e.g. the simulator's config and motion
+  // The file holds the trial only: no row is written until open_window() says when the subject
+  // was told to go (the countdown before it is not part of the trial). Off: every row from start().
+  bool wait_for_go = false;
+  nlohmann::json trial_window = nlohmann::json::object();  // more of the sidecar's trial_window (countdown_s, planned_s)
 };
 
 // The trial's three files; the naming rule lives in one place (core/session/trial_files.h).
@@ -112,6 +117,13 @@ class Recorder final : public FrameConsumer {
   // vicon_stop_received; any other key is kept beside them as a key this format does not know.
   void note(const std::string& key, nlohmann::json value);
 
+  // The trial's window on the host clock (wait_for_go): rows received in [from_ns, until_ns) are
+  // written; the others are counted as outside the trial, never as lost. Any thread, once; until
+  // takes effect before from, so no row sees an open window without its end.
+  void open_window(std::int64_t from_ns, std::int64_t until_ns = std::numeric_limits<std::int64_t>::max());
+  bool window_open() const { return window_from_ns_.load() != kClosed; }
+  std::string window_from_utc() const;  // when open_window() was called ("" before)
+
   // FrameConsumer (device threads).
   bool offer(const HandFrame& frame, std::int64_t host_receive_ns, bool may_wait) override;
   void device_event(const DeviceEvent& event, int device_id, const std::string& slot) override;
@@ -136,8 +148,13 @@ class Recorder final : public FrameConsumer {
   void fail(const std::string& message);
   RecorderSidecar sidecar(const char* state) const;  // stats_mutex_ not held
 
+  static constexpr std::int64_t kClosed = std::numeric_limits<std::int64_t>::max();
   RecorderConfig config_;
   SessionPaths paths_;
+  std::atomic<std::int64_t> window_from_ns_{kClosed};
+  std::atomic<std::int64_t> window_until_ns_{kClosed};
+  std::atomic<std::int64_t> before_window_{0}, after_window_{0};
+  std::string window_from_utc_;  // stats_mutex_
   std::unique_ptr<ByteSink> sink_;
   SpscQueue<Item> queue_;
   std::mutex producer_mutex_;  // serialises producers (several device threads); never taken by the writer

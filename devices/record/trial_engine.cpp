@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <limits>
 #include <mutex>
 #include <sstream>
 #include <thread>
@@ -46,7 +47,7 @@ struct TrialEngine::Run {
   static constexpr auto kStatusEvery = std::chrono::milliseconds(100);
 
   DeviceHub& hub;
-  const SimSource* sim;
+  SimSource* sim;
   const TrialEngineConfig& cfg;
   std::stop_token stop;
   const std::function<void(const TrialSnapshot&)>& on_status;
@@ -64,8 +65,12 @@ struct TrialEngine::Run {
   std::vector<std::pair<ViconMessage, std::int64_t>> inbox;  // with the host time it arrived
   Clock::time_point t0 = Clock::now();
   Clock::time_point last_report{};
-  double sim_time_at_start = 0;  // simulated time when the recorder started (truth starts there)
+  double sim_time_at_start = 0;  // simulated time at go (the truth starts there)
   double countdown_from = 0, recording_from = 0, recording_until = -1;  // engine clock
+  // The simulator this engine starts decides go itself (its thread opens the recorder's window at
+  // the first event of the trial), so a trial run faster than real time starts exactly at go.
+  bool sim_decides_go = false;
+  std::atomic<bool> went{false};
   bool recording_started = false;
   bool vicon_start_sent = false;
   bool vicon_stop_received = false;
@@ -76,7 +81,7 @@ struct TrialEngine::Run {
   bool hub_started_here = false;
   std::string failure;  // first outside error: the trial ends "aborted" with it
 
-  Run(DeviceHub& h, const SimSource* s, const TrialEngineConfig& c, std::stop_token st,
+  Run(DeviceHub& h, SimSource* s, const TrialEngineConfig& c, std::stop_token st,
       const std::function<void(const TrialSnapshot&)>& cb)
       : hub(h), sim(s), cfg(c), stop(std::move(st)), on_status(cb), trial(c.trial) {}
 
@@ -85,6 +90,14 @@ struct TrialEngine::Run {
   // Simulated seconds with a simulator (a --fast trial is exact), else wall-clock seconds.
   double clock_s() const { return sim != nullptr ? sim->simulated_time_s() : wall_s(); }
   bool sim_decides_length() const { return sim != nullptr && sim->duration_s() > 0; }
+
+  // Go: the recorder writes from `host_ns` on, for the planned length (any thread, once).
+  void open_window(std::int64_t host_ns) {
+    if (went.exchange(true)) return;
+    const bool bounded = !sim_decides_length() && !listen();
+    recorder->open_window(host_ns, bounded ? host_ns + static_cast<std::int64_t>(std::llround(cfg.seconds * 1e9))
+                                           : std::numeric_limits<std::int64_t>::max());
+  }
 
   void say(std::string text) {
     result.messages.push_back(text);
@@ -180,13 +193,14 @@ struct TrialEngine::Run {
     rc.backend = cfg.backend;
     rc.extra = cfg.extra;
     rc.open_sink = cfg.open_sink;
+    rc.wait_for_go = true;
+    rc.trial_window = {{"countdown_s", listen() ? 0.0 : cfg.countdown_s}, {"planned_s", cfg.seconds}};
     auto rec = std::make_unique<Recorder>(rc);
     rec->start();
     recorder = std::move(rec);
     result.trial = trial;
     result.paths = recorder->paths();
     result.recorded = true;
-    if (sim != nullptr) sim_time_at_start = sim->simulated_time_s();
     hub.set_consumer(recorder.get());
   }
 
@@ -254,6 +268,9 @@ struct TrialEngine::Run {
         vicon_start_name = m.name;
         vicon_start_received = true;
         begin_recording();
+        // Vicon's start is the trial's go: no countdown of ours comes after it.
+        if (sim != nullptr) sim_time_at_start = sim->simulated_time_s();
+        open_window(received_ns);
         recorder->note("vicon_alignment", clock_alignment_json(hub.snapshot(), "CaptureStart received", received_ns,
                                                                m.packet_id, utc_now_iso8601()));
         recorder->note("vicon_trigger_received", {{"type", "CaptureStart"},
@@ -310,9 +327,17 @@ struct TrialEngine::Run {
       result.listen_address = cfg.vicon_listen->first + ":" + std::to_string(listener->port());
       notice("waiting for CaptureStart on " + result.listen_address);
     }
-    // Recording starts before the devices do, so a simulated trial holds every frame from time 0
-    // (and the same seed gives the same file).
+    // The files exist before the devices stream (a name taken or a full disk is said before the
+    // subject is cued), but no row is written before go.
     if (!listen()) begin_recording();
+    sim_decides_go = sim != nullptr && !listen() && !hub.running();
+    if (sim_decides_go) {
+      sim->set_go(cfg.countdown_s, [this](std::int64_t host_ns) { open_window(host_ns); });
+    } else if (!listen() && !hub.realtime()) {
+      // A replay run faster than real time has no countdown and no clock of the subject's: its
+      // trial is every row it plays.
+      open_window(std::numeric_limits<std::int64_t>::min());
+    }
     if (!hub.running()) {
       hub.start();
       hub_started_here = true;
@@ -340,24 +365,39 @@ struct TrialEngine::Run {
       }
       tick();
     }
-    if (vicon && !listen()) {
-      send_vicon(true);
-      if (must_end()) return;
-    }
 
-    if (cfg.countdown_s > 0) {
-      countdown_from = clock_s();
-      set_phase(TrialPhase::kCountdown, "countdown");
-      while (clock_s() - countdown_from < cfg.countdown_s) {
+    if (!listen()) {
+      if (sim_decides_go) {
+        // The simulator counts down in its own time and opens the window itself at go.
+        countdown_from = 0;
+        if (cfg.countdown_s > 0) set_phase(TrialPhase::kCountdown, "countdown");
+        while (!went.load()) {
+          if (must_end()) return;
+          if (hub.sources_finished()) break;
+          tick();
+        }
+        sim_time_at_start = sim->go_s();
+      } else {
+        if (cfg.countdown_s > 0) {
+          countdown_from = clock_s();
+          set_phase(TrialPhase::kCountdown, "countdown");
+          while (clock_s() - countdown_from < cfg.countdown_s) {
+            if (must_end()) return;
+            if (hub.sources_finished()) break;
+            tick();
+          }
+        }
+        if (sim != nullptr) sim_time_at_start = sim->simulated_time_s();
+        open_window(host_now_ns());
+      }
+      // Vicon records the same window: CaptureStart leaves at go, CaptureStop at the end.
+      if (vicon) {
+        send_vicon(true);
         if (must_end()) return;
-        // A source that ended (a simulator's duration, a replay's last row) ends the trial in
-        // the recording phase below, so every trial that streamed passes through it.
-        if (hub.sources_finished()) break;
-        tick();
       }
     }
 
-    recording_from = clock_s();
+    recording_from = sim_decides_go ? sim->go_s() : clock_s();
     recording_started = true;
     set_phase(TrialPhase::kRecording, "recording " + trial);
     for (;;) {
@@ -370,7 +410,7 @@ struct TrialEngine::Run {
   void write_truth() {
     const SimConfig& sc = sim->rig().config();
     const double from = sim_time_at_start;
-    const double until = sim->finished() && sim->duration_s() > 0 ? sim->duration_s() : sim->simulated_time_s();
+    const double until = sim->finished() && sim->end_s() > 0 ? sim->end_s() : sim->simulated_time_s();
     const double seconds = until - from;
     auto truth = sim->truth_until(from + seconds);
     // TRC frame i is simulated time i / rate: the file starts at the first truth frame at or
@@ -416,6 +456,7 @@ struct TrialEngine::Run {
       // An outside error makes the sidecar say "aborted" with it; a write error of the
       // recorder's own stays "failed".
       result.recorder = recorder->stop(hub.serial_to_slot(), failure);
+      result.go_utc = recorder->window_from_utc();
       switch (result.recorder.state) {
         case RecorderState::kFailed:
           result.outcome = TrialOutcome::kFailed;
@@ -437,7 +478,7 @@ struct TrialEngine::Run {
   }
 };
 
-TrialEngine::TrialEngine(DeviceHub& hub, const SimSource* sim, TrialEngineConfig config)
+TrialEngine::TrialEngine(DeviceHub& hub, SimSource* sim, TrialEngineConfig config)
     : hub_(hub), sim_(sim), config_(std::move(config)) {}
 
 TrialEngine::~TrialEngine() = default;

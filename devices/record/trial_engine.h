@@ -1,14 +1,21 @@
 #pragma once
-// One trial, start to finish (issue #5's orchestration, lifted out of `lmc record`): wait for
-// Vicon's CaptureStart (listen mode) → wait until every layout slot streams → send CaptureStart
-// (with the clock alignment note) → countdown → record for `seconds` or until stopped → send
-// CaptureStop → write the simulator's ground truth → finalise the sidecar. `lmc record`, the
+// One trial, start to finish: create the trial's files → wait for Vicon's CaptureStart (listen
+// mode) → wait until every layout slot streams → countdown → go: the recorder's window opens and
+// CaptureStart leaves (with the clock alignment note) → record for `seconds` or until stopped →
+// send CaptureStop → write the simulator's ground truth → finalise the sidecar. `lmc record`, the
 // session runner and the workbench drive the same class; none of them repeats the sequence.
 //
-// Time: when the hub plays a simulator (`sim` given), the countdown and the trial length are
-// simulated seconds, so `--fast` trials are exact and reproducible; a simulator with a duration
-// ends the trial when it finishes. Otherwise they are wall-clock seconds. The stream timeout is
-// always wall-clock (it is about hardware that never answers).
+// The trial is the window from go to stop, and the file holds only that window: the countdown is
+// not recorded (the sidecar's trial_window says when go was and how many frames came before it),
+// so processing, Review, the verdict and exports need no trimming. In listen mode Vicon's
+// CaptureStart is go.
+//
+// Time: when the engine starts a simulator's hub (`sim` given, hub not running), the simulator
+// holds the hand still for the countdown and opens the window itself at go, in simulated time,
+// so `--fast` trials are exact and reproducible; a simulator with a duration ends the trial when
+// it finishes. Otherwise the countdown and the trial are wall-clock seconds and the window is
+// bounded on the host clock. The stream timeout is always wall-clock (it is about hardware that
+// never answers).
 //
 // Guarantees: never overwrites a trial's files (unless allow_overwrite); every row written is
 // kept whatever ends the trial; any error, also one thrown by a callback, ends as an outcome with
@@ -96,12 +103,14 @@ struct TrialResult {
   bool recorded = false;              // the recorder started: the files exist and hold the rows
   std::filesystem::path existing;     // set when refused because this file of the trial exists
   std::string listen_address;         // listen mode: where CaptureStart was awaited (port resolved)
+  std::string go_utc;                 // when the subject was told to go (the file's first row); "" if never
 };
 
 class TrialEngine {
  public:
-  // `hub` and `sim` (null unless the hub plays this simulator) must outlive run().
-  TrialEngine(DeviceHub& hub, const SimSource* sim, TrialEngineConfig config);
+  // `hub` and `sim` (null unless the hub plays this simulator) must outlive run(). A simulator
+  // whose hub is not running yet is given the countdown (SimSource::set_go) by run().
+  TrialEngine(DeviceHub& hub, SimSource* sim, TrialEngineConfig config);
   ~TrialEngine();
   TrialEngine(const TrialEngine&) = delete;
   TrialEngine& operator=(const TrialEngine&) = delete;
@@ -113,7 +122,7 @@ class TrialEngine {
  private:
   struct Run;
   DeviceHub& hub_;
-  const SimSource* sim_;
+  SimSource* sim_;
   TrialEngineConfig config_;
 };
 

@@ -28,7 +28,7 @@ using session::TrialType;
 struct SessionRunner::Rig {
   std::unique_ptr<DeviceHub> hub;
   DeviceHub* hub_ref = nullptr;  // a hub the caller owns (SessionRunOptions::external_hub)
-  const SimSource* sim = nullptr;
+  SimSource* sim = nullptr;
   DeviceHub& get() const { return hub ? *hub : *hub_ref; }
 };
 
@@ -108,7 +108,7 @@ std::unique_ptr<SessionRunner::Rig> SessionRunner::make_rig(int i, double durati
   auto rig = std::make_unique<Rig>();
   rig->hub = std::make_unique<DeviceHub>(settings.layout, hub_options);
   std::unique_ptr<FrameSource> source = make_source(spec, settings);
-  rig->sim = dynamic_cast<const SimSource*>(source.get());
+  rig->sim = dynamic_cast<SimSource*>(source.get());
   rig->hub->add_source(std::move(source));
   return rig;
 }
@@ -248,7 +248,7 @@ AttemptResult SessionRunner::run_trial(int i, std::stop_token stop,
   }
   result.outcome = trial_outcome_name(tr.outcome);
   result.reason = tr.reason;
-  folder_.trial_stopped(i, result.outcome, result.reason);
+  folder_.trial_stopped(i, result.outcome, result.reason, tr.go_utc);
 
   // The verdict, seconds after the trial: the same recording and sidecar processing will read.
   const TrialFiles paths = trial_files(folder_.dir(), p.name);

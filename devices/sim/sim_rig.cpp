@@ -178,10 +178,12 @@ Eigen::Isometry3d SimRig::true_device_to_world(int device) const {
 
 HandFrame SimRig::truth_at(double t) const {
   if (still_truth_) return *still_truth_;
+  // The motion's own clock stands at 0 while the hand holds its start pose; the sway does not stop.
+  const double motion_t = std::max(0.0, t - hold_s_);
   HandFrame f;
   if (pose_set_) {
     const auto& frames = pose_set_->frames;
-    const double pos = t * config_.pose_set_rate_hz;
+    const double pos = motion_t * config_.pose_set_rate_hz;
     const auto n = static_cast<std::int64_t>(frames.size());
     const auto i0 = static_cast<std::int64_t>(std::floor(pos));
     const double frac = pos - std::floor(pos);
@@ -192,7 +194,7 @@ HandFrame SimRig::truth_at(double t) const {
       if (f.point(p).norm() > 1e-12) f.point(p).normalize();
   } else {
     const double progress =
-        config_.motion == HandMotion::kOpen ? 0.0 : 0.5 * (1.0 - std::cos(kTwoPi * t / config_.motion_period_s));
+        config_.motion == HandMotion::kOpen ? 0.0 : 0.5 * (1.0 - std::cos(kTwoPi * motion_t / config_.motion_period_s));
     HandPlacement placement = placement_;
     const double s = config_.sway_mm;
     placement.wrist_mm += Vec3(s * std::sin(kTwoPi * 0.23 * t + sway_phase_[0]),
@@ -294,7 +296,7 @@ SimEvent SimRig::next() {
     // Unplug windows: announce the loss at its start, skip frames inside, announce the return.
     bool in_window = false;
     for (const auto& u : d->unplugs)
-      if (t >= u.at_s && (u.duration_s < 0 || t < u.at_s + u.duration_s)) in_window = true;
+      if (t >= hold_s_ + u.at_s && (u.duration_s < 0 || t < hold_s_ + u.at_s + u.duration_s)) in_window = true;
     if (in_window && d->connected) {
       d->connected = false;
       ev.time_s = t;

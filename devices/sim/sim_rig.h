@@ -5,6 +5,7 @@
 // deterministically, far faster than real time (recorder tests, `lmc record --fast`, simulated
 // sessions with known truth for processing). SimSource (sim_source.h) plays a rig live.
 #include <Eigen/Geometry>
+#include <algorithm>
 #include <array>
 #include <cstdint>
 #include <memory>
@@ -49,6 +50,12 @@ class SimRig {
   // (sim_config.h); with no rotation error R is the layout's and t = pose + calibration_error.
   Eigen::Isometry3d true_device_to_world(int device) const;
 
+  // A trial's countdown: the hand holds its start pose (it still sways) for `seconds` before its
+  // motion begins, and unplug times count from then, so a simulated trial starts as a real one
+  // does when the subject is told to go. Call before the first next().
+  void hold_start_pose(double seconds) { hold_s_ = std::max(0.0, seconds); }
+  double hold_s() const { return hold_s_; }
+
   SimEvent next();
   // The truth hand (world frame, consistent with the marker mapping) at time t.
   HandFrame truth_at(double t_s) const;
@@ -71,6 +78,7 @@ class SimRig {
   VisibilityParams visibility_;
   std::optional<HandFrame> still_truth_;  // static motion without sway: the truth never changes
   size_t announced_ = 0;
+  double hold_s_ = 0;
 };
 
 struct SimTrial {

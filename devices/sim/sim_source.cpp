@@ -18,6 +18,11 @@ void SimSource::start(FrameSink& sink) {
   thread_ = std::thread([this, &sink] { run(sink); });
 }
 
+void SimSource::set_go(double hold_s, std::function<void(std::int64_t host_ns)> on_go) {
+  rig_->hold_start_pose(hold_s);
+  on_go_ = std::move(on_go);
+}
+
 void SimSource::stop() {
   stop_ = true;
   if (thread_.joinable()) thread_.join();
@@ -26,9 +31,11 @@ void SimSource::stop() {
 void SimSource::run(FrameSink& sink) {
   const std::int64_t start_ns = host_now_ns();
   bool completed = false;
+  bool went = false;
+  const double end = end_s();
   while (!stop_) {
     SimEvent e = rig_->next();
-    if (options_.duration_s > 0 && e.time_s >= options_.duration_s) {
+    if (end > 0 && e.time_s >= end) {
       completed = true;
       break;
     }
@@ -44,6 +51,10 @@ void SimSource::run(FrameSink& sink) {
     }
     const std::int64_t host_ns =
         options_.speed > 0 ? host_now_ns() : start_ns + static_cast<std::int64_t>(std::llround(e.time_s * 1e9));
+    if (!went && e.time_s >= go_s()) {
+      went = true;
+      if (on_go_) on_go_(host_ns);
+    }
     sim_time_s_ = e.time_s;
     if (e.is_frame) {
       e.frame.host_receive_ns = host_ns;

@@ -4,6 +4,7 @@
 // hardware-paced, so realtime() is false and the hub may apply back-pressure).
 #include <atomic>
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <mutex>
 #include <thread>
@@ -15,7 +16,7 @@ namespace lmc::devices {
 
 struct SimSourceOptions {
   double speed = 1.0;       // 0: as fast as possible
-  double duration_s = 0.0;  // 0: forever
+  double duration_s = 0.0;  // the trial's length after go (0: forever)
 };
 
 class SimSource final : public FrameSource {
@@ -30,8 +31,15 @@ class SimSource final : public FrameSource {
   bool finished() const override { return finished_.load(); }
 
   const std::vector<DeviceInfo>& devices() const { return rig_->devices(); }
-  // The simulated length it stops at (0: runs until stopped).
+  // A trial with a countdown: the hand holds still for `hold_s` simulated seconds, then moves;
+  // `on_go` runs on the source's thread just before the first event at or after `hold_s`, with
+  // that event's host time, so a recorder opened there starts exactly at go whatever the speed.
+  // Call before start().
+  void set_go(double hold_s, std::function<void(std::int64_t host_ns)> on_go);
+  double go_s() const { return rig_->hold_s(); }
+  // The trial's length after go (0: runs until stopped) and the simulated time it stops at.
   double duration_s() const { return options_.duration_s; }
+  double end_s() const { return options_.duration_s > 0 ? go_s() + options_.duration_s : 0.0; }
   // Simulated seconds delivered so far.
   double simulated_time_s() const { return sim_time_s_.load(); }
   // Ground truth collected at the truth rate for the delivered span (call after stop()).
@@ -42,6 +50,7 @@ class SimSource final : public FrameSource {
   void run(FrameSink& sink);
   std::unique_ptr<SimRig> rig_;
   SimSourceOptions options_;
+  std::function<void(std::int64_t)> on_go_;
   std::atomic<bool> stop_{false};
   std::atomic<bool> finished_{false};
   std::atomic<double> sim_time_s_{0};

@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <chrono>
 #include <fstream>
+#include <map>
 #include <sstream>
 #include <stdexcept>
 
@@ -16,6 +17,8 @@
 #include "core/io/lmc_recording.h"
 #include "core/io/recorder_sidecar.h"
 #include "core/io/trc.h"
+#include "devices/replay/replay_source.h"
+#include "devices/sim/sim_rig.h"
 #include "tests/support/reference_data.h"
 
 namespace lmc::devices {
@@ -30,7 +33,7 @@ Layout paper_initial_layout() { return load_layout(test::asset_file("layouts/pap
 // seconds (0: until stopped) at `speed` (0: simulated time, as fast as the recorder takes it).
 struct SimHub {
   DeviceHub hub;
-  const SimSource* sim = nullptr;
+  SimSource* sim = nullptr;
   SimHub(const Layout& layout, double duration_s, double speed = 0.0, std::optional<Layout> sim_layout = {})
       : hub(layout, options(speed)) {
     SimConfig config;
@@ -308,6 +311,136 @@ TEST(TrialEngine, AHubThatWasRunningKeepsRunning) {
   EXPECT_EQ(r.outcome, TrialOutcome::kInterrupted) << r.reason;
   EXPECT_TRUE(sh.hub.running());
   sh.hub.stop();
+}
+
+// What the file holds of one device: the span of its rows on the device clock, and the earliest row.
+struct DeviceSpan {
+  std::int64_t first_us = 0, last_us = 0;
+  int rows = 0;
+};
+std::map<int, DeviceSpan> spans(const LmcRecording& rec) {
+  std::map<int, DeviceSpan> out;
+  for (const auto& row : rec.rows) {
+    DeviceSpan& s = out[row.device_id];
+    if (s.rows == 0 || row.timestamp_us < s.first_us) s.first_us = row.timestamp_us;
+    if (s.rows == 0 || row.timestamp_us > s.last_us) s.last_us = row.timestamp_us;
+    ++s.rows;
+  }
+  return out;
+}
+
+// The simulator's slowest frame interval (11 Hz): "one frame" in the tolerances below.
+constexpr std::int64_t kOneFrameUs = 1'000'000 / 11 + 1;
+
+TEST(TrialExactness, ASimulatedTrialRecordsThePlannedSecondsFromGoAndNotTheCountdown) {
+  const auto dir = test::scratch_dir("trial_exact_sim");
+  // Simulated time: the countdown (1.5 s) runs in the simulator's clock, so it is exact however
+  // fast the simulator plays.
+  SimHub sh(paper_initial_layout(), 2.0);
+  TrialEngineConfig c = config_for(dir, "Go1", 2.0);
+  c.countdown_s = 1.5;
+  TrialEngine engine(sh.hub, sh.sim, c);
+  std::vector<TrialPhase> seen;
+  const TrialResult r = engine.run({}, [&](const TrialSnapshot& s) { seen.push_back(s.phase); });
+  ASSERT_EQ(r.outcome, TrialOutcome::kCompleted) << r.reason;
+  EXPECT_THAT(distinct(seen), ElementsAre(TrialPhase::kWaitingForStreams, TrialPhase::kCountdown,
+                                          TrialPhase::kRecording, TrialPhase::kFinishing, TrialPhase::kDone));
+  const std::int64_t go_us = SimConfig{}.device_clock_start_us + 1'500'000;
+  const LmcRecording rec = read_lmc_recording(r.paths.recording);
+  const auto by_device = spans(rec);
+  ASSERT_EQ(by_device.size(), 4u);
+  for (const auto& [id, span] : by_device) {
+    EXPECT_GE(span.first_us, go_us) << "LMC" << id << ": no row of the countdown is in the file";
+    EXPECT_LT(span.first_us, go_us + kOneFrameUs) << "LMC" << id << ": the file starts at go";
+    EXPECT_LT(span.last_us, go_us + 2'000'000) << "LMC" << id;
+    EXPECT_GE(span.last_us, go_us + 2'000'000 - kOneFrameUs) << "LMC" << id << ": the trial lasts its 2 s";
+  }
+  const RecorderSidecar side = read_recorder_sidecar(r.paths.sidecar);
+  ASSERT_TRUE(side.trial_window.is_object());
+  EXPECT_DOUBLE_EQ(side.trial_window.at("countdown_s").get<double>(), 1.5);
+  EXPECT_DOUBLE_EQ(side.trial_window.at("planned_s").get<double>(), 2.0);
+  EXPECT_GT(side.trial_window.at("frames_before_go").get<std::int64_t>(), 4 * 11) << "the countdown streamed";
+  EXPECT_EQ(side.trial_window.at("go_host_utc").get<std::string>(), r.go_utc);
+  EXPECT_EQ(side.frames_dropped, 0) << "frames of the countdown are not losses";
+  // The truth covers the same window: 2 s at 100 Hz from go.
+  ASSERT_TRUE(side.ground_truth.has_value());
+  EXPECT_EQ(side.ground_truth->frames, 200);
+  EXPECT_EQ(side.ground_truth->device_clock_at_time_zero_us, go_us);
+  EXPECT_DOUBLE_EQ(r.truth_seconds, 2.0);
+}
+
+TEST(TrialExactness, TheSimulatedHandHoldsItsStartPoseUntilGoThenMovesFromItsStart) {
+  SimConfig config;
+  apply_motion_spec(config, "horizontal/index");
+  config.sway_mm = 0;
+  const Layout layout = paper_initial_layout();
+  SimRig plain(layout, config);
+  SimRig held(layout, config);
+  held.hold_start_pose(1.5);
+  const auto same = [](const HandFrame& a, const HandFrame& b) {
+    for (int p = 0; p < kNumHandPoints; ++p)
+      if ((a.point(p) - b.point(p)).norm() > 1e-9) return false;
+    return true;
+  };
+  EXPECT_TRUE(same(held.truth_at(1.0), plain.truth_at(0.0))) << "still during the countdown";
+  EXPECT_TRUE(same(held.truth_at(1.5), plain.truth_at(0.0))) << "the motion starts at go";
+  EXPECT_TRUE(same(held.truth_at(1.5 + 0.75), plain.truth_at(0.75)));
+  EXPECT_FALSE(same(plain.truth_at(0.75), plain.truth_at(0.0))) << "the index finger does move";
+}
+
+TEST(TrialExactness, AWallClockTrialIsBoundedOnTheHostClockFromGo) {
+  const auto dir = test::scratch_dir("trial_exact_wall");
+  // Controllers the engine does not time (LeapC, a replay, the workbench's own simulator): real
+  // time, no simulator handed to the engine, so go and the end are host-clock instants.
+  SimHub sh(paper_initial_layout(), 0.0, 1.0);
+  TrialEngineConfig c = config_for(dir, "Wall1", 1.0);
+  c.countdown_s = 0.5;
+  TrialEngine engine(sh.hub, nullptr, c);
+  double last_recording_s = 0;
+  std::vector<TrialPhase> seen;
+  const TrialResult r = engine.run({}, [&](const TrialSnapshot& s) {
+    seen.push_back(s.phase);
+    if (s.phase == TrialPhase::kRecording) last_recording_s = s.recording_s;
+  });
+  ASSERT_EQ(r.outcome, TrialOutcome::kCompleted) << r.reason;
+  EXPECT_THAT(distinct(seen), ElementsAre(TrialPhase::kWaitingForStreams, TrialPhase::kCountdown,
+                                          TrialPhase::kRecording, TrialPhase::kFinishing, TrialPhase::kDone));
+  const RecorderSidecar side = read_recorder_sidecar(r.paths.sidecar);
+  const auto go_ns = side.trial_window.at("go_host_ns").get<std::int64_t>();
+  const auto end_ns = side.trial_window.at("end_host_ns").get<std::int64_t>();
+  EXPECT_EQ(end_ns - go_ns, 1'000'000'000) << "the window is the planned second";
+  EXPECT_GT(side.trial_window.at("frames_before_go").get<std::int64_t>(), 0) << "the countdown streamed";
+  EXPECT_GE(go_ns - side.host_start_ns, 450'000'000) << "go comes after the 0.5 s countdown";
+  for (const auto& [id, span] : spans(read_lmc_recording(r.paths.recording))) {
+    const std::int64_t recorded_us = span.last_us - span.first_us;
+    EXPECT_LE(recorded_us, 1'000'000) << "LMC" << id;
+    EXPECT_GE(recorded_us, 1'000'000 - 2 * kOneFrameUs) << "LMC" << id << ": the whole second, less its edge frames";
+  }
+  EXPECT_GE(last_recording_s, 0.9) << "the status counted the trial from go";
+}
+
+TEST(TrialExactness, AReplayAtItsRecordedPaceIsBoundedOnTheHostClockToo) {
+  const auto dir = test::scratch_dir("trial_exact_replay");
+  // A 3 s simulated trial to replay (as a lab replays a recording to test its set-up).
+  {
+    SimHub sh(paper_initial_layout(), 3.0);
+    ASSERT_EQ(TrialEngine(sh.hub, sh.sim, config_for(dir, "Source", 3.0)).run().outcome, TrialOutcome::kCompleted);
+  }
+  DeviceHub hub(paper_initial_layout());
+  hub.add_source(std::make_unique<ReplaySource>(dir / "LMC_Source.raw.txt", ReplayOptions{1.0, false}));
+  TrialEngineConfig c = config_for(dir, "Replay1", 1.0);
+  c.backend = "replay";
+  c.countdown_s = 0.5;
+  const TrialResult r = TrialEngine(hub, nullptr, c).run();
+  ASSERT_EQ(r.outcome, TrialOutcome::kCompleted) << r.reason;
+  const RecorderSidecar side = read_recorder_sidecar(r.paths.sidecar);
+  EXPECT_EQ(side.trial_window.at("end_host_ns").get<std::int64_t>() - side.trial_window.at("go_host_ns").get<std::int64_t>(),
+            1'000'000'000);
+  EXPECT_GT(side.trial_window.at("frames_before_go").get<std::int64_t>(), 0);
+  for (const auto& [id, span] : spans(read_lmc_recording(r.paths.recording))) {
+    EXPECT_LE(span.last_us - span.first_us, 1'000'000) << "LMC" << id;
+    EXPECT_GE(span.last_us - span.first_us, 1'000'000 - 2 * kOneFrameUs) << "LMC" << id;
+  }
 }
 
 }  // namespace trial_engine_test

@@ -2,7 +2,9 @@
 // go through ImGuiIO to the real panels, which are drawn without a renderer.
 #include <gtest/gtest.h>
 
+#include <chrono>
 #include <cstdio>
+#include <thread>
 #include <filesystem>
 
 #include "tests/support/scratch_dir.h"
@@ -12,6 +14,7 @@
 #include "ui/model/record/subject_view.h"
 #include "ui/tabs/record/record_setup_panel.h"
 #include "ui/tabs/record/record_trial_panel.h"
+#include "ui/tabs/record/record_verdict_panel.h"
 #include "ui/tabs/record/subject_screen_panel.h"
 
 namespace lmc::ui {
@@ -60,15 +63,17 @@ TEST(RecordTrialPanel, StartIsEnabledOnlyAfterThePreflightOrAnOverrideWithAReaso
     if (a != TrialPanelAction::kNone) action = a;
   };
   gui.frame(body);
-  ASSERT_TRUE(input.anchors.centre("start"));
-  ImVec2 start = *input.anchors.centre("start");
-  gui.click(start.x, start.y, body);
-  EXPECT_EQ(action, TrialPanelAction::kNone);  // drawn, but disabled before the pre-flight
+  // Before the pre-flight Space has one meaning and one button: Run pre-flight. No Start is drawn.
+  EXPECT_FALSE(input.anchors.centre("start"));
+  ASSERT_TRUE(input.anchors.centre("preflight"));
   EXPECT_NE(model.override_preflight(""), "");  // no reason, no override
   EXPECT_TRUE(model.needs_preflight());
   ASSERT_EQ(model.override_preflight("controllers checked by hand"), "");
+  input.anchors = {};
   gui.frame(body);
-  start = *input.anchors.centre("start");
+  ASSERT_TRUE(input.anchors.centre("start"));
+  EXPECT_FALSE(input.anchors.centre("preflight"));
+  const ImVec2 start = *input.anchors.centre("start");
   gui.click(start.x, start.y, body);
   EXPECT_EQ(action, TrialPanelAction::kStart);
   EXPECT_EQ(model.start_trial(), "");  // and the model agrees
@@ -104,6 +109,37 @@ TEST(SubjectScreenPanel, DrawsTheBigRedCircleOnlyWhileRecording) {
   const SubjectView recording = build_subject_view(in, 0);
   gui.frame([&] { draw_subject_screen(recording, fonts); });
   EXPECT_TRUE(drew_colour(red));
+}
+
+TEST(RecordTrialPanel, AfterCloseAndReopenNothingOfTheLastVerdictIsDrawnAgainstAnEmptyList) {
+  const fs::path dir = test::fresh_test_dir("record_panels_close");
+  RecordSessionModel model;
+  session::NewSessionSpec spec;
+  spec.subject.subject_id = "S02";
+  spec.protocol = "quick";
+  RecordSettings settings;
+  settings.fast = true;
+  settings.countdown_s = 0;
+  ASSERT_EQ(model.create(dir, spec, settings), "");
+  ASSERT_EQ(model.override_preflight("checked by hand"), "");
+  ASSERT_EQ(model.start_trial(), "");
+  for (int k = 0; k < 6000 && !(model.last_attempt() && !model.busy()); ++k) {
+    model.poll();
+    std::this_thread::sleep_for(std::chrono::milliseconds(10));
+  }
+  ASSERT_TRUE(model.last_attempt());
+  HeadlessImGui gui;
+  NoteInput note;
+  model.close();
+  // The Record tab drew the verdict in the frame of Close: the attempt's trial index into a
+  // closed session's (empty) trial list threw std::out_of_range and ended the program.
+  EXPECT_NO_THROW(gui.frame([&] { EXPECT_EQ(draw_record_verdict_panel(model, note), VerdictAction::kNone); }));
+  ASSERT_EQ(model.open(dir, settings), "");
+  TrialPanelInput input;
+  EXPECT_NO_THROW(gui.frame([&] { draw_record_trial_panel(model, input); }));
+  EXPECT_NO_THROW(gui.frame([&] { EXPECT_EQ(draw_record_verdict_panel(model, note), VerdictAction::kNone); }));
+  model.close();
+  fs::remove_all(dir);
 }
 
 }  // namespace record_panels_test

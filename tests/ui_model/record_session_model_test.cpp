@@ -5,13 +5,18 @@
 #include <chrono>
 #include <filesystem>
 #include <functional>
+#include <map>
 #include <thread>
 
 #include <gtest/gtest.h>
 
 #include "core/session/session_folder.h"
 #include "tests/support/scratch_dir.h"
+#include "core/io/lmc_recording.h"
+#include "core/io/recorder_sidecar.h"
+#include "core/session/trial_files.h"
 #include "ui/model/record/record_session_model.h"
+#include "ui/model/record/subject_view.h"
 
 namespace lmc::ui {
 namespace record_model_test {  // named: test files share unity batches
@@ -218,6 +223,97 @@ TEST(RecordSessionModel, ACalibratingProtocolCalibratesTheBlockBeforeItsFirstTri
   EXPECT_NE(m.current_layout()->name.find("calibrated"), std::string::npos) << m.current_layout()->name;
   record_current(m);
   EXPECT_EQ(m.last_attempt()->outcome, "completed");
+}
+
+TEST(RecordSessionModel, CloseAfterRecordingThenReopenAndCloseAgain) {
+  const fs::path dir = test::fresh_test_dir("record_model_close");
+  RecordSessionModel m;
+  ASSERT_EQ(m.create(dir, quick(), fast_sim()), "");
+  clear_preflight(m);
+  record_current(m);
+  ASSERT_TRUE(m.last_attempt());
+  m.close();
+  // Nothing of the closed session is left to be read against an empty trial list (the Record
+  // tab drew the last verdict after Close and indexed trial 0 of none).
+  EXPECT_FALSE(m.has_session());
+  EXPECT_FALSE(m.last_attempt());
+  EXPECT_FALSE(m.last_preflight());
+  EXPECT_FALSE(m.live());
+  EXPECT_EQ(m.note_trial(), -1);
+
+  ASSERT_EQ(m.open(dir, fast_sim()), "");
+  EXPECT_EQ(m.current_trial(), 1) << "the accepted first trial stays accepted";
+  EXPECT_FALSE(m.last_attempt()) << "no trial recorded in this run yet";
+  EXPECT_FALSE(m.resume_notice().empty());
+  clear_preflight(m);
+  record_current(m);
+  EXPECT_TRUE(m.resume_notice().empty()) << "the notice described the folder as opened, before this attempt";
+  EXPECT_TRUE(m.finished());
+  m.close();
+  EXPECT_FALSE(m.last_attempt());
+  EXPECT_EQ(session::read_session_state(dir).count(session::TrialStatus::kAccepted), 2);
+  fs::remove_all(dir);
+}
+
+TEST(RecordSessionModel, ARealTimeTrialShowsTheCircleForItsWholeLengthFromGo) {
+  const fs::path dir = test::fresh_test_dir("record_model_go");
+  RecordSessionModel m;
+  RecordSettings settings;
+  settings.backend = "sim";
+  settings.fast = false;  // real time: the countdown is the subject's
+  settings.countdown_s = 1.0;
+  session::NewSessionSpec spec = quick();
+  spec.duration_override_s = 2.0;
+  ASSERT_EQ(m.create(dir, spec, settings), "");
+  clear_preflight(m);
+  ASSERT_EQ(m.start_trial(), "");
+  bool counted_down = false;
+  double first_circle_s = -1, last_circle_s = -1;
+  std::vector<SubjectStage> stages;
+  poll_until(m, [&] {
+    const SubjectView v = build_subject_view(subject_view_inputs(m), 0.0);
+    if (stages.empty() || stages.back() != v.stage) stages.push_back(v.stage);
+    counted_down = counted_down || v.stage == SubjectStage::kCountdown;
+    if (v.red_circle && m.live()) {
+      if (first_circle_s < 0) first_circle_s = m.live()->recording_s;
+      last_circle_s = m.live()->recording_s;
+    }
+    return !m.busy() && m.last_attempt().has_value();
+  });
+  ASSERT_TRUE(m.last_attempt());
+  EXPECT_EQ(m.last_attempt()->outcome, "completed") << m.last_attempt()->reason;
+  EXPECT_TRUE(counted_down);
+  // The circle appears at go and stays for the trial's two seconds (the subject screen showed
+  // "3, 2, 1, Starting" and never the circle when the countdown ate the recording).
+  EXPECT_GE(first_circle_s, 0.0);
+  EXPECT_LE(first_circle_s, 0.3);
+  EXPECT_GE(last_circle_s, 1.7);
+
+  // The journal's start, go and stop agree with the file: go is where the file starts.
+  const auto st = session::read_session_state(dir);
+  const auto& attempt = st.trials[0].attempts.at(0);
+  ASSERT_FALSE(attempt.go_utc.empty());
+  EXPECT_LE(attempt.started_utc, attempt.go_utc);
+  EXPECT_LE(attempt.go_utc, attempt.stopped_utc);
+  const auto files = lmc::trial_files(dir, st.trials[0].plan.name);
+  const RecorderSidecar side = read_recorder_sidecar(files.sidecar);
+  EXPECT_EQ(side.trial_window.at("go_host_utc").get<std::string>(), attempt.go_utc);
+  EXPECT_DOUBLE_EQ(side.trial_window.at("countdown_s").get<double>(), 1.0);
+  EXPECT_LE(side.host_start_utc, attempt.go_utc);
+  EXPECT_LE(attempt.go_utc, side.host_stop_utc);
+  std::map<int, std::pair<std::int64_t, std::int64_t>> span;
+  for (const auto& row : read_lmc_recording(files.recording).rows) {
+    auto [it, fresh] = span.try_emplace(row.device_id, row.timestamp_us, row.timestamp_us);
+    it->second.first = std::min(it->second.first, row.timestamp_us);
+    it->second.second = std::max(it->second.second, row.timestamp_us);
+  }
+  ASSERT_EQ(span.size(), 4u);
+  for (const auto& [id, s] : span) {
+    EXPECT_LE(s.second - s.first, 2'000'000) << "LMC" << id;
+    EXPECT_GE(s.second - s.first, 2'000'000 - 2 * 91'000) << "LMC" << id << ": two seconds, less the edge frames";
+  }
+  m.close();
+  fs::remove_all(dir);
 }
 
 }  // namespace record_model_test

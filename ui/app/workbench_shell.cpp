@@ -12,6 +12,7 @@
 namespace lmc::ui {
 
 WorkbenchShell::WorkbenchShell(ShellStartup startup) : recent_files_path_(std::move(startup.recent_files_path)) {
+  const bool opened_on_a_task = startup.record.has_value() || !startup.review.empty();
   context_->record_startup() = std::move(startup.record);
   context_->review_requests() = std::move(startup.review);
   if (startup.subject_screen) {
@@ -29,6 +30,9 @@ WorkbenchShell::WorkbenchShell(ShellStartup startup) : recent_files_path_(std::m
   }
   active_id_ = ids_.empty() ? std::string() : ids_.front();
   if (!startup.tab.empty()) select_tab(startup.tab);
+  // Opened on a task (a session to resume, folders to review): the newcomer's first step would
+  // only stand in the way of what the tab says about that task.
+  if (opened_on_a_task) status_.dismiss_hint();
 }
 
 WorkbenchShell::~WorkbenchShell() = default;

@@ -28,7 +28,7 @@
 //              frames_with_hand, hand_fraction, frames_dropped_queue, frame_id_gaps, gaps,
 //              gap_ms, disconnects, first_timestamp_us, last_timestamp_us}],
 //              vicon_packets [{type, packet_id, target, datagrams_sent, error}],
-//              vicon_alignment, vicon_trigger_received, vicon_stop_received, stopped_by,
+//              vicon_alignment, vicon_trigger_received, vicon_stop_received, stopped_by, trial_window,
 //              ground_truth (each the sidecar's, or null)
 #include <algorithm>
 #include <cmath>
@@ -68,7 +68,7 @@ constexpr const char* kJsonKeysHelp =
     "serial_to_slot{}, frames_written, frames_dropped, devices[{device_id, slot, serial, frames_written, "
     "frames_with_hand, hand_fraction, frames_dropped_queue, frame_id_gaps, gaps, gap_ms, disconnects, "
     "first_timestamp_us, last_timestamp_us}], vicon_packets[{type, packet_id, target, datagrams_sent, error}], "
-    "vicon_alignment, vicon_trigger_received, vicon_stop_received, stopped_by, ground_truth. Unknown values are "
+    "vicon_alignment, vicon_trigger_received, vicon_stop_received, stopped_by, trial_window, ground_truth. Unknown values are "
     "null.";
 
 struct InfoOptions {
@@ -468,6 +468,7 @@ void info_session(const std::string& file, const json& doc, bool as_json, std::o
     j["vicon_trigger_received"] = side.vicon_trigger_received;
     j["vicon_stop_received"] = side.vicon_stop_received;
     j["stopped_by"] = text_or_null(side.stopped_by);
+    j["trial_window"] = side.trial_window;
     j["ground_truth"] = truth;
     j["warnings"] = warnings;
     out << j.dump(2) << "\n";
@@ -509,6 +510,10 @@ void info_session(const std::string& file, const json& doc, bool as_json, std::o
         << " received at " << text_of(value_or_null(*got, "host_time_utc")) << "\n";
   }
   if (!side.stopped_by.empty()) out << "stopped by: " << side.stopped_by << "\n";
+  if (const json& w = side.trial_window; w.is_object())
+    out << "trial:      from go at " << text_of(value_or_null(w, "go_host_utc")) << " for "
+        << text_of(value_or_null(w, "planned_s")) << " s; the countdown (" << text_of(value_or_null(w, "countdown_s"))
+        << " s, " << text_of(value_or_null(w, "frames_before_go")) << " frames) is not in the file\n";
   const json& align = side.vicon_alignment;
   if (align.is_object()) {
     out << "alignment:  " << text_of(value_or_null(align, "event")) << " at " << text_of(value_or_null(align, "host_time_utc"));

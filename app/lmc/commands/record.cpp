@@ -159,7 +159,7 @@ void run_record(const RecordOptions& opt) {
   hub_options.backpressure = opt.fast;
   DeviceHub hub(settings.layout, hub_options);
   std::unique_ptr<FrameSource> source = make_source(spec, settings);
-  const auto* sim = dynamic_cast<const SimSource*>(source.get());
+  auto* sim = dynamic_cast<SimSource*>(source.get());
   hub.add_source(std::move(source));
 
   // Ctrl-C only sets a flag (all a signal handler may do); the status callback turns it into

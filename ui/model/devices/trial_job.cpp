@@ -4,7 +4,7 @@
 
 namespace lmc::ui {
 
-void TrialJob::start(devices::DeviceHub& hub, const devices::SimSource* sim, devices::TrialEngineConfig config) {
+void TrialJob::start(devices::DeviceHub& hub, devices::SimSource* sim, devices::TrialEngineConfig config) {
   job_.cancel_and_join();
   snapshot_.reset();
   trial_ = config.trial;

@@ -25,7 +25,7 @@ class TrialJob {
 
   // `hub` (and `sim`, null unless the hub plays it and the trial should run in simulated time)
   // must outlive the job: their owner calls cancel_and_join() before letting them go.
-  void start(devices::DeviceHub& hub, const devices::SimSource* sim, devices::TrialEngineConfig config);
+  void start(devices::DeviceHub& hub, devices::SimSource* sim, devices::TrialEngineConfig config);
   void request_stop() { job_.cancel(); }
   void cancel_and_join() { job_.cancel_and_join(); }
 

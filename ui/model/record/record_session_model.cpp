@@ -80,6 +80,9 @@ void RecordSessionModel::give_back_rig() {
 void RecordSessionModel::close() {
   // The worker uses the runner, the folder, the live fusion and a lent hub: it ends first.
   job_.cancel_and_join();
+  // A note typed while the last trial recorded still reaches the journal.
+  if (runner_ && !pending_notes_.empty()) write_pending_notes();
+  pending_notes_.clear();
   live_fusion_.reset();
   runner_.reset();
   give_back_rig();
@@ -89,6 +92,18 @@ void RecordSessionModel::close() {
   resume_notice_.clear();
   recording_trial_ = -1;
   selected_ = -1;
+  // Everything that described the closed session goes with it: a verdict, pre-flight or
+  // calibration left here would be read against the next session's (or no) trials.
+  live_.reset();
+  live_hands_.clear();
+  live_fused_.reset();
+  fusion_stats_ = {};
+  last_preflight_.reset();
+  last_attempt_.reset();
+  pending_calibration_.reset();
+  calibrating_ = false;
+  job_handled_ = true;
+  last_note_error_.clear();
 }
 
 void RecordSessionModel::refresh_state() {
@@ -168,6 +183,7 @@ std::string RecordSessionModel::start_trial() {
     return "the block's layout cannot be fused live: " + std::string(e.what());
   }
   recording_trial_ = i;
+  resume_notice_.clear();  // it described the folder as opened; a new attempt has begun
   live_.reset();
   live_fused_.reset();
   fusion_stats_ = {};
@@ -202,6 +218,7 @@ std::string RecordSessionModel::start_calibration() {
   if (!runner_->needs_calibration(i)) return "this layout needs no calibration";
   devices::SessionRunner* runner = runner_.get();
   pending_calibration_.reset();
+  resume_notice_.clear();
   calibrating_ = true;
   live_.reset();
   job_handled_ = false;

@@ -8,6 +8,7 @@
 #include <imgui.h>
 
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -16,6 +17,7 @@
 #include "core/session/session_folder.h"
 #include "ui/model/record/record_session_model.h"
 #include "ui/model/record/record_setup_form.h"
+#include "ui/model/record/subject_stage_trace.h"
 #include "ui/model/record/subject_view.h"
 #include "ui/model/workbench_context.h"
 #include "ui/tabs/capture_scratch.h"
@@ -26,6 +28,12 @@
 
 namespace lmc::ui {
 namespace {
+
+// LMC_SUBJECT_TRACE=FILE: the end-to-end test reads what the subject screen showed, and when.
+SubjectStageTrace subject_stage_trace_from_environment() {
+  const char* file = std::getenv("LMC_SUBJECT_TRACE");
+  return file != nullptr && *file != '\0' ? SubjectStageTrace(file) : SubjectStageTrace();
+}
 
 class RecordTab final : public Tab {
  public:
@@ -55,6 +63,7 @@ class RecordTab final : public Tab {
     if (capture_ && capture_stage_ != "record-resume") drive_capture();
     // The subject screen follows the session every frame, whichever tab is shown.
     subject_.view = build_subject_view(subject_view_inputs(model_), ImGui::GetTime());
+    trace_.observe(subject_.view, model_.recording() && model_.live() ? model_.live()->recording_s : 0.0, ImGui::GetTime());
   }
 
   void draw() override {
@@ -71,7 +80,7 @@ class RecordTab final : public Tab {
       subject_screen_key();
       return;
     }
-    draw_header();
+    if (!draw_header()) return;  // closed: nothing of the session is drawn this frame
     const float list_width = 260.0F;
     ImGui::BeginChild("trials", ImVec2(list_width, 0), true);
     const int clicked = draw_record_trial_list(model_.state(), model_.current_trial(), model_.recording_trial());
@@ -167,7 +176,8 @@ class RecordTab final : public Tab {
 
   // Real controllers are opened once, by the workbench's live rig: the session records through
   // its hub (the Devices tab keeps showing the same controllers and the same fused hand).
-  void draw_header() {
+  // False when the operator closed the session.
+  bool draw_header() {
     const auto& st = model_.state();
     ImGui::Text("Subject %s  ·  protocol %s  ·  %d of %zu trials accepted  ·  %s", st.subject().subject_id.c_str(),
                 st.protocol.name.c_str(), model_.accepted_count(), st.trials.size(), model_.dir().string().c_str());
@@ -175,13 +185,17 @@ class RecordTab final : public Tab {
     if (!model_.busy()) {
       ImGui::SameLine(ImGui::GetWindowWidth() - 90);
       if (ImGui::SmallButton("Close")) {
+        const std::string closed = model_.dir().string();
         model_.close();
         sessions_ = list_sessions(sessions_dir());
+        status_.set_status("Record: session " + closed + " closed; everything recorded is kept in its folder");
+        return false;
       }
     }
     ImGui::TextDisabled("Space: start / stop   Esc: abort   Enter: accept a failed trial anyway   R: redo   N: note");
     ImGui::SameLine();
     draw_subject_screen_controls(subject_);
+    return true;
   }
 
   void subject_screen_key() {
@@ -197,7 +211,10 @@ class RecordTab final : public Tab {
         why = model_.override_preflight(panel_.override_reason);
         if (why.empty()) status_.set_status(std::string("pre-flight overridden: ") + panel_.override_reason);
         break;
-      case TrialPanelAction::kStart: why = model_.start_trial(); break;
+      case TrialPanelAction::kStart:
+        why = model_.start_trial();
+        if (why.empty()) status_.set_status("Record: recording " + trial_name(model_.recording_trial()));
+        break;
       case TrialPanelAction::kStop: model_.stop_trial(); break;
       case TrialPanelAction::kCalibrate: why = model_.start_calibration(); break;
       case TrialPanelAction::kApplyCalibration:
@@ -220,14 +237,28 @@ class RecordTab final : public Tab {
           panel_.note = {};
         }
         break;
-      case TrialPanelAction::kAccept: why = model_.accept_last(); break;
-      case TrialPanelAction::kRedo: why = model_.redo(); break;
+      case TrialPanelAction::kAccept:
+        why = model_.accept_last();
+        if (why.empty() && model_.last_attempt())
+          status_.set_status("Record: " + trial_name(model_.last_attempt()->trial) + " kept despite its verdict (journaled)");
+        break;
+      case TrialPanelAction::kRedo:
+        why = model_.redo();
+        if (why.empty())
+          status_.set_status("Record: " + trial_name(model_.current_trial()) +
+                             " is recorded again next; the earlier attempt is kept under superseded/");
+        break;
       case TrialPanelAction::kReviewSession:
         context_.review_requests().push_back(model_.dir());
         context_.tab_request() = "review";
         break;
     }
     if (!why.empty()) status_.set_status("Record: " + why, true);
+  }
+
+  std::string trial_name(int i) const {
+    const auto& trials = model_.state().trials;
+    return i >= 0 && i < static_cast<int>(trials.size()) ? trials[static_cast<size_t>(i)].plan.name : std::string("the trial");
   }
 
   void keys() {
@@ -304,6 +335,7 @@ class RecordTab final : public Tab {
   bool capture_ = false;
   std::string capture_stage_;
   bool open_at_start_ = false;
+  SubjectStageTrace trace_ = subject_stage_trace_from_environment();
 };
 
 }  // namespace

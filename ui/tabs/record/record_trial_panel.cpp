@@ -64,15 +64,11 @@ TrialPanelAction preflight_section(const RecordSessionModel& model, TrialPanelIn
     ImGui::TextUnformatted("Checking the controllers, Vicon, disk and folder…");
     return action;
   }
+  // One action per key: Space runs the pre-flight here; Start appears once the block is cleared.
   if (big_button("Run pre-flight  [Space]", ImVec4(0.2F, 0.4F, 0.7F, 1.0F))) action = TrialPanelAction::kPreflight;
   input.anchors.remember("preflight");
-  ImGui::SameLine();
-  ImGui::BeginDisabled();
-  if (big_button("Start  [Space]", ImVec4(0.15F, 0.55F, 0.25F, 1.0F))) action = TrialPanelAction::kStart;
-  input.anchors.remember("start");
-  ImGui::EndDisabled();
-  ImGui::TextDisabled("Start is enabled when every pre-flight line is green, or after an override with a typed reason "
-                      "(journaled).");
+  ImGui::TextDisabled("Start [Space] comes when every pre-flight line is green, or after an override with a typed "
+                      "reason (journaled).");
   if (model.last_preflight() && !model.last_preflight()->ok()) {
     ImGui::Spacing();
     ImGui::PushItemWidth(360);
@@ -123,12 +119,10 @@ void live_view(const RecordSessionModel& model, TrialPanelInput& input) {
 TrialPanelAction draw_record_trial_panel(const RecordSessionModel& model, TrialPanelInput& input) {
   TrialPanelAction action = TrialPanelAction::kNone;
   const auto& state = model.state();
-  // The plain notice of a resumed session, until the first trial of this run is recorded.
-  if (!model.last_attempt()) {
-    ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0F, 0.6F, 0.2F, 1.0F));
-    for (const auto& line : model.resume_notice()) ImGui::TextWrapped("%s", line.c_str());
-    ImGui::PopStyleColor();
-  }
+  // The plain notice of a resumed session, until the first attempt of this run begins.
+  ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0F, 0.6F, 0.2F, 1.0F));
+  for (const auto& line : model.resume_notice()) ImGui::TextWrapped("%s", line.c_str());
+  ImGui::PopStyleColor();
 
   const int i = model.recording() ? model.recording_trial() : model.current_trial();
   if (i < 0) {

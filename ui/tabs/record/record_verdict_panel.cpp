@@ -103,7 +103,10 @@ VerdictAction draw_record_verdict_panel(const RecordSessionModel& model, NoteInp
     ImGui::SameLine();
     ImGui::TextDisabled("accepted; R records it again and keeps this attempt under superseded/");
   }
-  for (const auto& n : trial.notes) ImGui::TextDisabled("note: %s", n.c_str());
+  // Only this attempt's notes: an earlier attempt's "glove slipped" says nothing about this one.
+  for (const auto& attempt : trial.attempts)
+    if (attempt.number == a->attempt)
+      for (const auto& n : attempt.notes) ImGui::TextDisabled("note: %s", n.c_str());
   if (a->quality) verdict_panel::timeline(a->quality->timeline);
   return action;
 }

@@ -1,0 +1,147 @@
+#!/usr/bin/env bash
+# A whole subject session driven in the real window as an operator would (xdotool under Xvfb, real
+# time, the simulated rig): a new `quick` session with the subject screen open (F2), the pre-flight,
+# the first trial, a note, Close, Ctrl+Q; the session reopened with --session, its second trial
+# killed with SIGKILL mid-trial; reopened again: the resume, the trial recorded again, Close, Ctrl+Q;
+# then the Review tab opening the session. Every workbench must end with exit code 0 (Close after a
+# trial used to end the program with std::out_of_range), and the subject screen must show the red
+# circle from go for the trial's whole length (the countdown used to eat the recording: the subject
+# saw "3, 2, 1" and never the circle). Steps wait for the journal, never a fixed clock.
+set -eu
+lmc=${1:?usage: record_session_e2e.sh LMC LMC_WORKBENCH WORK_DIR}
+workbench=${2:?}
+work=${3:?}
+rm -rf "$work"; mkdir -p "$work"
+session="$work/session"
+"$lmc" session new --subject E2F --protocol quick -o "$session" > "$work/new.log"
+
+cat > "$work/drive.sh" <<'DRIVE'
+#!/usr/bin/env bash
+set -eu
+workbench=$1; session=$2; work=$3
+journal="$session/journal.jsonl"
+export LMC_SUBJECT_TRACE="$work/subject-trace.txt"
+pid=""
+# Waits (up to 60 s) until the journal holds `count` lines matching `pattern`.
+wait_for() {
+  local pattern=$1 count=$2 what=$3
+  for _ in $(seq 600); do
+    if [ "$(grep -c -- "$pattern" "$journal" || true)" -ge "$count" ]; then return 0; fi
+    if ! kill -0 "$pid" 2>/dev/null; then echo "the workbench exited while waiting for $what"; cat "$work/workbench.log"; exit 1; fi
+    sleep 0.1
+  done
+  echo "timed out waiting for $what; journal:"; cat "$journal"; exit 1
+}
+press() { xdotool key --clearmodifiers "$1"; }
+# Starts the workbench and gives its window the keyboard.
+start() {
+  "$workbench" "$@" >> "$work/workbench.log" 2>&1 &
+  pid=$!
+  window=$(xdotool search --sync --onlyvisible --name "LMC Workbench" | head -1)
+  xdotool windowactivate --sync "$window" 2>/dev/null || xdotool windowfocus --sync "$window" || true
+}
+focus_main() { xdotool windowactivate --sync "$window" 2>/dev/null || xdotool windowfocus --sync "$window" || true; }
+# Ctrl+Q and the exit code the operator would see.
+quit() {
+  press ctrl+q
+  local status=0
+  wait "$pid" || status=$?
+  if [ "$status" -ne 0 ]; then echo "the workbench ended with exit code $status ($1)"; cat "$work/workbench.log"; exit 1; fi
+}
+# The Close button at the right end of the Record tab's header line.
+click_close() {
+  eval "$(xdotool getwindowgeometry --shell "$window")"
+  xdotool mousemove --window "$window" $((WIDTH - 70)) 47 click 1
+}
+
+# 1. A new session: subject screen, pre-flight, the first trial, a note, Close, Ctrl+Q.
+start --session "$session"
+wait_for '"session_opened"' 1 "the session to open"
+sleep 1
+press F2
+sleep 1
+focus_main
+press space; wait_for '"type":"preflight"' 1 "the pre-flight"
+sleep 0.5
+press space; wait_for '"type":"trial_accepted"' 1 "the first trial"
+sleep 0.5
+press n
+xdotool type --delay 30 "cuff loose"
+press Return; wait_for '"text":"cuff loose"' 1 "the note"
+sleep 0.5
+click_close
+sleep 1.5
+kill -0 "$pid" 2>/dev/null || { echo "Close after a recorded trial ended the workbench"; cat "$work/workbench.log"; exit 1; }
+quit "after Close"
+
+# 2. Reopened; the second trial is killed with SIGKILL two seconds after it starts.
+start --session "$session"
+wait_for '"session_opened"' 2 "the session to reopen"
+sleep 1
+press space; wait_for '"type":"preflight"' 2 "the second pre-flight"
+sleep 0.5
+press space; wait_for '"type":"trial_started"' 2 "the second trial to start"
+sleep 2
+kill -9 "$pid"
+wait "$pid" 2>/dev/null || true
+
+# 3. Resumed: the cut trial is recorded again, then Close and Ctrl+Q.
+start --session "$session"
+wait_for '"session_opened"' 3 "the resume"
+sleep 1
+press F2
+sleep 1
+focus_main
+press space; wait_for '"type":"preflight"' 3 "the pre-flight after the resume"
+sleep 0.5
+press space; wait_for '"type":"trial_accepted"' 2 "the second trial, recorded again"
+sleep 0.5
+click_close
+sleep 1.5
+kill -0 "$pid" 2>/dev/null || { echo "Close after the resumed trial ended the workbench"; cat "$work/workbench.log"; exit 1; }
+quit "after the resume"
+
+# 4. The Review tab opens the session: both trials processed into the test's own cache.
+export LMC_CACHE_DIR="$work/cache"
+start --tab review --review "$session"
+for _ in $(seq 600); do
+  [ "$(find "$work/cache" -name '*.json' 2>/dev/null | wc -l)" -ge 2 ] && break
+  kill -0 "$pid" 2>/dev/null || { echo "the workbench exited while Review processed"; cat "$work/workbench.log"; exit 1; }
+  sleep 0.1
+done
+[ "$(find "$work/cache" -name '*.json' | wc -l)" -ge 2 ] || { echo "Review did not process the session"; exit 1; }
+sleep 0.5
+quit "in Review"
+DRIVE
+chmod +x "$work/drive.sh"
+xvfb-run -a -s "-screen 0 1280x800x24" "$work/drive.sh" "$workbench" "$session" "$work"
+
+"$lmc" session status "$session" --json > "$work/status.json"
+python3 - "$work/status.json" "$session" "$work/subject-trace.txt" <<'CHECK'
+import json, os, sys
+status = json.load(open(sys.argv[1]))
+session, trace_file = sys.argv[2], sys.argv[3]
+trials = status["trials"]
+assert [t["status"] for t in trials] == ["accepted", "accepted"], [t["status"] for t in trials]
+assert trials[1]["attempts"] == 2, trials[1]["attempts"]  # the one killed, kept aside, and the one that finished
+journal = [json.loads(l) for l in open(os.path.join(session, "journal.jsonl"))]
+notes = [e["text"] for e in journal if e["type"] == "note"]
+assert notes == ["cuff loose"], notes
+stopped = [e for e in journal if e["type"] == "trial_stopped"]
+assert all(e.get("go_utc") for e in stopped), stopped
+# The subject screen's stages: every completed trial showed the red circle from go for its 3 s.
+lines = [l.split() for l in open(trace_file)]
+circles = []
+for k, (t, stage, circle, _) in enumerate(lines):
+    if circle == "1" and k + 1 < len(lines):
+        t_end, _, _, reached = lines[k + 1]
+        circles.append((float(t_end) - float(t), float(reached)))
+full = [c for c in circles if c[1] >= 2.9]
+assert len(full) >= 2, ("the circle was not shown for two whole trials", circles)
+for shown_s, reached_s in full:
+    assert shown_s >= 2.6, ("the circle was shown for only", shown_s, "s")
+countdowns = [l for l in lines if l[1] == "countdown"]
+assert len(countdowns) >= 2, "the subject saw no countdown"
+print("record session e2e: 2 trials accepted in the window, the circle shown %s, Close and Ctrl+Q exit 0, "
+      "SIGKILL mid-trial resumed, Review processed the session" % ", ".join("%.1f s" % c[0] for c in full))
+CHECK
