@@ -91,10 +91,10 @@ struct TrialEngine::Run {
   double clock_s() const { return sim != nullptr ? sim->simulated_time_s() : wall_s(); }
   bool sim_decides_length() const { return sim != nullptr && sim->duration_s() > 0; }
 
-  // Go: the recorder writes from `host_ns` on, for the planned length (any thread, once).
-  void open_window(std::int64_t host_ns) {
+  // Go: the recorder writes from `host_ns` on, for the planned length on the host clock when
+  // `bounded` (any thread, once).
+  void open_window(std::int64_t host_ns, bool bounded) {
     if (went.exchange(true)) return;
-    const bool bounded = !sim_decides_length() && !listen();
     recorder->open_window(host_ns, bounded ? host_ns + static_cast<std::int64_t>(std::llround(cfg.seconds * 1e9))
                                            : std::numeric_limits<std::int64_t>::max());
   }
@@ -270,7 +270,7 @@ struct TrialEngine::Run {
         begin_recording();
         // Vicon's start is the trial's go: no countdown of ours comes after it.
         if (sim != nullptr) sim_time_at_start = sim->simulated_time_s();
-        open_window(received_ns);
+        open_window(received_ns, false);  // CaptureStop or --seconds ends it
         recorder->note("vicon_alignment", clock_alignment_json(hub.snapshot(), "CaptureStart received", received_ns,
                                                                m.packet_id, utc_now_iso8601()));
         recorder->note("vicon_trigger_received", {{"type", "CaptureStart"},
@@ -332,11 +332,11 @@ struct TrialEngine::Run {
     if (!listen()) begin_recording();
     sim_decides_go = sim != nullptr && !listen() && !hub.running();
     if (sim_decides_go) {
-      sim->set_go(cfg.countdown_s, [this](std::int64_t host_ns) { open_window(host_ns); });
+      sim->set_go(cfg.countdown_s, [this](std::int64_t host_ns) { open_window(host_ns, !sim_decides_length()); });
     } else if (!listen() && !hub.realtime()) {
       // A replay run faster than real time has no countdown and no clock of the subject's: its
       // trial is every row it plays.
-      open_window(std::numeric_limits<std::int64_t>::min());
+      open_window(std::numeric_limits<std::int64_t>::min(), false);
     }
     if (!hub.running()) {
       hub.start();
@@ -388,7 +388,7 @@ struct TrialEngine::Run {
           }
         }
         if (sim != nullptr) sim_time_at_start = sim->simulated_time_s();
-        open_window(host_now_ns());
+        open_window(host_now_ns(), true);
       }
       // Vicon records the same window: CaptureStart leaves at go, CaptureStop at the end.
       if (vicon) {
