@@ -5,6 +5,7 @@
 #include <algorithm>
 
 #include <chrono>
+#include <cstdio>
 #include <thread>
 
 #include "tests/ui/headless_imgui.h"
@@ -215,6 +216,33 @@ TEST_F(OptimiserFixture, StartThenCancelLeavesTheLayoutUnchanged) {
   EXPECT_EQ(state->history().head(), before);
   EXPECT_EQ(state->doc(), before);
   EXPECT_EQ(state->history().undo_size(), commits);
+}
+
+// A cancelled search's best so far is a real layout the panel offers to Apply: it is evaluated like
+// a finished search's, so the comparison's robust rows and the status bar's M are its own, not zeros.
+TEST_F(OptimiserFixture, ACancelledSearchsBestSoFarIsEvaluatedLikeAFinishedOne) {
+  state->pso.particles = 8;
+  state->pso.iterations = 100000;  // far more than can finish before Cancel
+  click("start");
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(60);
+  while (state->optimiser.history().empty() && std::chrono::steady_clock::now() < deadline) gui.frame(body());
+  ASSERT_FALSE(state->optimiser.history().empty()) << "the initial swarm was evaluated before Cancel";
+  click("pso.cancel");
+  wait_until_idle();
+  ASSERT_EQ(state->optimiser.state(), JobState::kCancelled);
+  const auto outcome = state->optimiser.outcome();
+  ASSERT_TRUE(outcome);
+  const PsoResult& r = outcome->pso;
+  EXPECT_EQ(r.status, lmc::JobStatus::kCancelled);
+  EXPECT_GT(r.best_cost, 0.0);
+  EXPECT_EQ(r.best_terms.total, r.best_cost) << "the candidate's R is the search's own best cost";
+  EXPECT_DOUBLE_EQ(r.best_terms.metric_m, outcome->candidate.all.metric) << "the M row and the robust terms agree";
+  EXPECT_EQ(r.best_coverage.frames, 30);
+  EXPECT_DOUBLE_EQ(r.best_coverage.metric, outcome->candidate.all.metric);
+  char expected[160];
+  std::snprintf(expected, sizeof expected, "Optimiser cancelled: best R = %.4g (M %.4g);", r.best_cost,
+                outcome->candidate.all.metric);
+  EXPECT_EQ(status.last.rfind(expected, 0), 0u) << status.last << "\nexpected it to start with: " << expected;
 }
 
 TEST_F(OptimiserFixture, ApplyReplacesTheLayoutInOneUndoableStep) {
