@@ -8,6 +8,7 @@
 #include <cstdio>
 #include <thread>
 
+#include "core/visibility/blind_controllers.h"
 #include "tests/ui/headless_imgui.h"
 #include "ui/model/current_layout.h"
 #include "ui/model/layout_actions.h"
@@ -90,7 +91,15 @@ TEST_F(TabFixture, SceneIsRenderedAtThePanelSizeWithEveryController) {
   EXPECT_GT(renderer->calls, 0);
   EXPECT_EQ(renderer->width, static_cast<int>(tab->scene_panel().image_size().x));
   EXPECT_GT(renderer->width, 500);
-  EXPECT_EQ(renderer->last.count(ItemRole::kDevice), 4u);  // the paper's optimized layout
+  EXPECT_EQ(renderer->last.count(ItemRole::kDevice), 4u);  // the paper's optimized layout, as processed
+}
+
+// A new user's first layout is one in which every controller sees the hand (the paper's table
+// points LMC1 away from it; that preset stays in the Presets menu).
+TEST_F(TabFixture, OpensOnALayoutInWhichEveryControllerSeesTheHand) {
+  EXPECT_EQ(tab->state().layout().name, "paper-optimized-as-processed");
+  EXPECT_EQ(tab->state().layout().device_count(), 4);
+  EXPECT_TRUE(blind_controllers(tab->state().layout()).empty());
 }
 
 TEST_F(TabFixture, DraggingAControllerMovesItAndIsOneUndoStep) {

@@ -25,10 +25,14 @@
 namespace lmc::ui {
 namespace {
 
+constexpr const char* kStartLayout = "paper-optimized-as-processed";
+
 LayoutDocument initial_document() {
-  // Open on the paper's optimized layout: the first thing a lab sees is a real design.
+  // Open on the paper's optimized layout as the authors processed it: the first thing a lab sees is
+  // a real design in which every controller sees the hand (the table's own numbers point LMC1 away
+  // from it, and the Devices tab would stream a controller that never sees anything).
   try {
-    return make_document(load_layout_or_preset("paper-optimized"));
+    return make_document(load_layout_or_preset(kStartLayout));
   } catch (const std::exception&) {
     return make_document(default_new_layout());
   }
@@ -174,7 +178,7 @@ void LayoutTab::open_document(const std::filesystem::path& path) {
 }
 
 int LayoutTab::prepare_for_capture() {
-  state_->load_preset("paper-optimized");
+  state_->load_preset(kStartLayout);  // what a new user sees first
   state_->select(1);
   state_->display.show_heatmap = true;
   state_->display.heatmap_finger = 1;  // index: the finger the study's index-flexion trials move
@@ -315,7 +319,12 @@ void LayoutTab::draw_toolbar() {
   if (ImGui::Button("Presets v")) ImGui::OpenPopup("##presets");
   if (ImGui::BeginPopup("##presets")) {
     if (ImGui::MenuItem("Paper: initial layout (2 × 2 square, ±60 mm)")) request(Pending::kPreset, "paper-initial");
-    if (ImGui::MenuItem("Paper: optimized layout (PSO result)")) request(Pending::kPreset, "paper-optimized");
+    if (ImGui::MenuItem("Paper: optimized layout (PSO result, as the authors processed it)")) {
+      request(Pending::kPreset, "paper-optimized-as-processed");
+    }
+    if (ImGui::MenuItem("Paper: optimized layout as printed (LMC1 looks away from the hand)")) {
+      request(Pending::kPreset, "paper-optimized");
+    }
     ImGui::EndPopup();
   }
   ImGui::SameLine(0, 20);
@@ -332,6 +341,14 @@ void LayoutTab::draw_toolbar() {
   if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled)) ImGui::SetTooltip("Ctrl+Shift+Z or Ctrl+Y");
   ImGui::SameLine(0, 20);
   ImGui::TextDisabled("%s", s.title().c_str());
+  // The layout's own description (a preset's says what it is and what is wrong with it).
+  if (!s.layout().description.empty() && ImGui::IsItemHovered()) {
+    ImGui::BeginTooltip();
+    ImGui::PushTextWrapPos(ImGui::GetFontSize() * 40.0f);
+    ImGui::TextUnformatted(s.layout().description.c_str());
+    ImGui::PopTextWrapPos();
+    ImGui::EndTooltip();
+  }
 }
 
 void LayoutTab::draw_dialogs() {
