@@ -319,6 +319,60 @@ TEST_F(OptimiserFixture, LockedParametersStayPutInTheCandidate) {
   EXPECT_EQ(state->optimiser.outcome()->pso.best_layout.devices[0].pose, state->history().head().layout.devices[0].pose);
 }
 
+// ---- the Optimiser panel where a 1280 x 800 window puts it ------------------------------------------
+
+// The shell's menu bar, tab strip and status bar leave a tab about 730 px of a 800 px window.
+struct OptimiserAt1280x800 : ::testing::Test {
+  HeadlessImGui gui{1280, 730};
+  SilentStatus status;
+  LayoutTab tab{status, std::make_unique<RecordingRenderer>()};
+
+  void SetUp() override {
+    tab.set_modals_enabled(false);
+    use_small_pose_set(tab.state(), 40);
+    tab.state().display.show_heatmap = false;
+    tab.state().pso.particles = 8;
+    tab.state().pso.iterations = 100000;  // runs until cancelled
+    tab.show_panel("optimiser");
+    tab.optimiser_panel().open_settings_once();
+    tab.state().update(0.0);
+    tab.state().poses.wait();
+  }
+  std::function<void()> body() {
+    return [this] {
+      tab.update(true);
+      tab.draw();
+    };
+  }
+  const WidgetAnchors& anchors() { return tab.optimiser_panel().anchors(); }
+  // Draws frames until `done` or 60 s.
+  bool frames_until(const std::function<bool()>& done) {
+    const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(60);
+    while (!done() && std::chrono::steady_clock::now() < deadline) gui.frame(body());
+    gui.frames(3, body());
+    return done();
+  }
+};
+
+TEST_F(OptimiserAt1280x800, SettingsRunningAndCancelledLinesAreNotCut) {
+  gui.frames(3, body());
+  EXPECT_TRUE(anchors().fits_across("starts")) << "the starts label is on the panel";
+  EXPECT_TRUE(anchors().fits_across("movable-note")) << "(locks per parameter are in the Inspector) wraps";
+
+  ASSERT_TRUE(tab.state().start_optimiser());
+  ASSERT_TRUE(frames_until([&] { return !tab.state().optimiser.history().empty(); }));
+  ASSERT_TRUE(tab.state().optimiser.running());
+  EXPECT_TRUE(anchors().fully_visible("pso.cancel"));
+  EXPECT_TRUE(anchors().fully_visible("pso.elapsed")) << "elapsed ... remaining ... under the progress bar";
+
+  tab.state().cancel_optimiser();
+  ASSERT_TRUE(frames_until([&] { return !tab.state().optimiser.running(); }));
+  ASSERT_EQ(tab.state().optimiser.state(), JobState::kCancelled);
+  EXPECT_TRUE(anchors().fully_visible("result")) << "Cancelled: best so far ... (… s)";
+  EXPECT_TRUE(anchors().fully_visible("apply"));
+  EXPECT_TRUE(anchors().fully_visible("discard"));
+}
+
 // ---- inspector and coverage panels on their own ---------------------------------------------------
 
 struct InspectorFixture : ::testing::Test {

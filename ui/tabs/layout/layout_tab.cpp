@@ -150,6 +150,10 @@ void LayoutTab::update(bool shown) {
   }
   frame_start_ = now;
   if (stats_frames_wanted_ > 0) scripted_drag_step();
+  if (capture_cancel_at_ && now >= *capture_cancel_at_) {
+    capture_cancel_at_.reset();
+    state_->cancel_optimiser();
+  }
   state_->update(static_cast<double>(ImGui::GetIO().DeltaTime), shown);
   // The committed layout, not the scratch copy: a drag in progress would restart the rig every frame.
   if (shared_layout_ != nullptr) shared_layout_->publish(state_->history().head().layout);
@@ -178,7 +182,9 @@ void LayoutTab::open_document(const std::filesystem::path& path) {
 }
 
 int LayoutTab::prepare_for_capture() {
-  state_->load_preset(kStartLayout);  // what a new user sees first
+  // What a new user sees first, or LMC_LAYOUT_PRESET=NAME (the Devices capture follows it).
+  const char* preset = std::getenv("LMC_LAYOUT_PRESET");
+  state_->load_preset(preset != nullptr && *preset != '\0' ? preset : kStartLayout);
   state_->select(1);
   state_->display.show_heatmap = true;
   state_->display.heatmap_finger = 1;  // index: the finger the study's index-flexion trials move
@@ -204,12 +210,16 @@ int LayoutTab::prepare_for_capture() {
     if (v == "side") state_->camera.set_named_view(NamedView::kSide);
   }
   if (const char* panel = std::getenv("LMC_LAYOUT_PANEL")) {
-    capture_panel_ = panel;
-    capture_panel_frames_ = 2;
+    show_panel(panel);
     // "optimiser-settings": the Optimiser panel with its settings and term weights open.
     if (capture_panel_ == "optimiser-settings") {
       capture_panel_ = "optimiser";
       optimiser_->open_settings_once();
+    }
+    // "optimiser-compare": the Optimiser panel scrolled to Current vs candidate once there is one.
+    if (capture_panel_ == "optimiser-compare") {
+      capture_panel_ = "optimiser";
+      optimiser_->show_comparison_once();
     }
   }
   if (const char* env = std::getenv("LMC_LAYOUT_OPTIMISE"); env != nullptr && std::atoi(env) > 0) {
@@ -222,6 +232,12 @@ int LayoutTab::prepare_for_capture() {
     state_->poses.wait();
     state_->update(0.0);
     state_->start_optimiser();
+    // LMC_LAYOUT_CANCEL_AFTER=S: Cancel the search S seconds in, so the capture shows a cancelled
+    // search's best so far (set a long search with LMC_LAYOUT_OPTIMISE).
+    if (const char* after = std::getenv("LMC_LAYOUT_CANCEL_AFTER"); after != nullptr && std::atof(after) > 0) {
+      capture_cancel_at_ = std::chrono::steady_clock::now() +
+                           std::chrono::duration_cast<std::chrono::steady_clock::duration>(std::chrono::duration<double>(std::atof(after)));
+    }
   }
   if (const char* env = std::getenv("LMC_LAYOUT_FRAME_STATS"); env != nullptr && std::atoi(env) > 0) {
     stats_frames_wanted_ = std::atoi(env);
