@@ -216,7 +216,7 @@ int LayoutTab::prepare_for_capture() {
       capture_panel_ = "optimiser";
       optimiser_->open_settings_once();
     }
-    // "optimiser-compare": the Optimiser panel scrolled to Current vs candidate once there is one.
+    // "optimiser-compare": the Optimiser panel scrolled to the robust rows of Current vs candidate.
     if (capture_panel_ == "optimiser-compare") {
       capture_panel_ = "optimiser";
       optimiser_->show_comparison_once();

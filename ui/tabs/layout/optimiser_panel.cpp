@@ -89,7 +89,7 @@ void OptimiserPanel::draw_settings() {
   LayoutTabState& s = *state_;
   PsoSettings& p = s.pso;
   int metric = static_cast<int>(p.metric);
-  ImGui::SetNextItemWidth(220);
+  ImGui::SetNextItemWidth(300);  // the whole of its longest choice
   if (ImGui::Combo("metric", &metric, "study: M only (the reference)\0robust: M, then every controller counts\0")) {
     p.metric = static_cast<PlacementMetricKind>(metric);
   }
@@ -283,10 +283,6 @@ void OptimiserPanel::draw_comparison() {
   const LayoutEvaluation& cand = outcome->candidate;
   ImGui::Spacing();
   ImGui::TextUnformatted("Current vs candidate");
-  if (show_comparison_once_) {
-    ImGui::SetScrollHereY(0.0f);
-    show_comparison_once_ = false;
-  }
   // The label column fits its longest label; the numbers share the rest. Green is better and red
   // worse whichever way the number moved (issue #15: an improvement showed in red).
   if (!ImGui::BeginTable("##compare", 4, ImGuiTableFlags_Borders | ImGuiTableFlags_RowBg | ImGuiTableFlags_SizingFixedFit)) return;
@@ -360,6 +356,10 @@ void OptimiserPanel::draw_comparison() {
   }
   ImGui::EndTable();
   if (!same_start) ImGui::TextDisabled("(the robust terms are not compared: the layout changed since the search started)");
+  if (show_comparison_once_) {
+    ImGui::SetScrollHereY(1.0f);  // the table's end: the robust terms' rows
+    show_comparison_once_ = false;
+  }
 }
 
 }  // namespace lmc::ui

@@ -22,7 +22,7 @@ class OptimiserPanel {
   const WidgetAnchors& anchors() const { return anchors_; }
   // For --capture: the next draw opens Search settings and the term weights.
   void open_settings_once() { open_settings_once_ = true; }
-  // For --capture: once the search has a result, scroll to Current vs candidate.
+  // For --capture: once the search has a result, scroll to the end of Current vs candidate.
   void show_comparison_once() { show_comparison_once_ = true; }
 
  private:
