@@ -5,8 +5,10 @@
 #include <algorithm>
 
 #include <chrono>
+#include <cstdio>
 #include <thread>
 
+#include "core/visibility/blind_controllers.h"
 #include "tests/ui/headless_imgui.h"
 #include "ui/model/current_layout.h"
 #include "ui/model/layout_actions.h"
@@ -89,7 +91,15 @@ TEST_F(TabFixture, SceneIsRenderedAtThePanelSizeWithEveryController) {
   EXPECT_GT(renderer->calls, 0);
   EXPECT_EQ(renderer->width, static_cast<int>(tab->scene_panel().image_size().x));
   EXPECT_GT(renderer->width, 500);
-  EXPECT_EQ(renderer->last.count(ItemRole::kDevice), 4u);  // the paper's optimized layout
+  EXPECT_EQ(renderer->last.count(ItemRole::kDevice), 4u);  // the paper's optimized layout, as processed
+}
+
+// A new user's first layout is one in which every controller sees the hand (the paper's table
+// points LMC1 away from it; that preset stays in the Presets menu).
+TEST_F(TabFixture, OpensOnALayoutInWhichEveryControllerSeesTheHand) {
+  EXPECT_EQ(tab->state().layout().name, "paper-optimized-as-processed");
+  EXPECT_EQ(tab->state().layout().device_count(), 4);
+  EXPECT_TRUE(blind_controllers(tab->state().layout()).empty());
 }
 
 TEST_F(TabFixture, DraggingAControllerMovesItAndIsOneUndoStep) {
@@ -217,6 +227,33 @@ TEST_F(OptimiserFixture, StartThenCancelLeavesTheLayoutUnchanged) {
   EXPECT_EQ(state->history().undo_size(), commits);
 }
 
+// A cancelled search's best so far is a real layout the panel offers to Apply: it is evaluated like
+// a finished search's, so the comparison's robust rows and the status bar's M are its own, not zeros.
+TEST_F(OptimiserFixture, ACancelledSearchsBestSoFarIsEvaluatedLikeAFinishedOne) {
+  state->pso.particles = 8;
+  state->pso.iterations = 100000;  // far more than can finish before Cancel
+  click("start");
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(60);
+  while (state->optimiser.history().empty() && std::chrono::steady_clock::now() < deadline) gui.frame(body());
+  ASSERT_FALSE(state->optimiser.history().empty()) << "the initial swarm was evaluated before Cancel";
+  click("pso.cancel");
+  wait_until_idle();
+  ASSERT_EQ(state->optimiser.state(), JobState::kCancelled);
+  const auto outcome = state->optimiser.outcome();
+  ASSERT_TRUE(outcome);
+  const PsoResult& r = outcome->pso;
+  EXPECT_EQ(r.status, lmc::JobStatus::kCancelled);
+  EXPECT_GT(r.best_cost, 0.0);
+  EXPECT_EQ(r.best_terms.total, r.best_cost) << "the candidate's R is the search's own best cost";
+  EXPECT_DOUBLE_EQ(r.best_terms.metric_m, outcome->candidate.all.metric) << "the M row and the robust terms agree";
+  EXPECT_EQ(r.best_coverage.frames, 30);
+  EXPECT_DOUBLE_EQ(r.best_coverage.metric, outcome->candidate.all.metric);
+  char expected[160];
+  std::snprintf(expected, sizeof expected, "Optimiser cancelled: best R = %.4g (M %.4g);", r.best_cost,
+                outcome->candidate.all.metric);
+  EXPECT_EQ(status.last.rfind(expected, 0), 0u) << status.last << "\nexpected it to start with: " << expected;
+}
+
 TEST_F(OptimiserFixture, ApplyReplacesTheLayoutInOneUndoableStep) {
   state->pso.particles = 6;
   state->pso.iterations = 3;
@@ -280,6 +317,60 @@ TEST_F(OptimiserFixture, LockedParametersStayPutInTheCandidate) {
   wait_until_idle();
   ASSERT_TRUE(state->optimiser.outcome()) << state->optimiser.error();
   EXPECT_EQ(state->optimiser.outcome()->pso.best_layout.devices[0].pose, state->history().head().layout.devices[0].pose);
+}
+
+// ---- the Optimiser panel where a 1280 x 800 window puts it ------------------------------------------
+
+// The shell's menu bar, tab strip and status bar leave a tab about 730 px of a 800 px window.
+struct OptimiserAt1280x800 : ::testing::Test {
+  HeadlessImGui gui{1280, 730};
+  SilentStatus status;
+  LayoutTab tab{status, std::make_unique<RecordingRenderer>()};
+
+  void SetUp() override {
+    tab.set_modals_enabled(false);
+    use_small_pose_set(tab.state(), 40);
+    tab.state().display.show_heatmap = false;
+    tab.state().pso.particles = 8;
+    tab.state().pso.iterations = 100000;  // runs until cancelled
+    tab.show_panel("optimiser");
+    tab.optimiser_panel().open_settings_once();
+    tab.state().update(0.0);
+    tab.state().poses.wait();
+  }
+  std::function<void()> body() {
+    return [this] {
+      tab.update(true);
+      tab.draw();
+    };
+  }
+  const WidgetAnchors& anchors() { return tab.optimiser_panel().anchors(); }
+  // Draws frames until `done` or 60 s.
+  bool frames_until(const std::function<bool()>& done) {
+    const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(60);
+    while (!done() && std::chrono::steady_clock::now() < deadline) gui.frame(body());
+    gui.frames(3, body());
+    return done();
+  }
+};
+
+TEST_F(OptimiserAt1280x800, SettingsRunningAndCancelledLinesAreNotCut) {
+  gui.frames(3, body());
+  EXPECT_TRUE(anchors().fits_across("starts")) << "the starts label is on the panel";
+  EXPECT_TRUE(anchors().fits_across("movable-note")) << "(locks per parameter are in the Inspector) wraps";
+
+  ASSERT_TRUE(tab.state().start_optimiser());
+  ASSERT_TRUE(frames_until([&] { return !tab.state().optimiser.history().empty(); }));
+  ASSERT_TRUE(tab.state().optimiser.running());
+  EXPECT_TRUE(anchors().fully_visible("pso.cancel"));
+  EXPECT_TRUE(anchors().fully_visible("pso.elapsed")) << "elapsed ... remaining ... under the progress bar";
+
+  tab.state().cancel_optimiser();
+  ASSERT_TRUE(frames_until([&] { return !tab.state().optimiser.running(); }));
+  ASSERT_EQ(tab.state().optimiser.state(), JobState::kCancelled);
+  EXPECT_TRUE(anchors().fully_visible("result")) << "Cancelled: best so far ... (… s)";
+  EXPECT_TRUE(anchors().fully_visible("apply"));
+  EXPECT_TRUE(anchors().fully_visible("discard"));
 }
 
 // ---- inspector and coverage panels on their own ---------------------------------------------------

@@ -234,6 +234,37 @@ TEST(LiveRig, AStoppedRigStartsWithTheLatestLayout) {
   EXPECT_EQ(f.vm.layout().name, "paper-optimized");
 }
 
+// The paper's table points LMC1 away from the hand: the tab names it and why, so its "no hand" is
+// not taken for a broken controller; the layout the authors processed has no such controller.
+TEST(DevicesViewModel, NamesAControllerTheLayoutPointsAwayFromTheHand) {
+  RigFixture f("paper-optimized");
+  DevicesViewModel& vm = f.vm;
+  vm.refresh();
+  ASSERT_EQ(vm.layout_warnings().size(), 1u);
+  const std::string& w = vm.layout_warnings()[0];
+  EXPECT_EQ(w.rfind("LMC1 cannot see the hand:", 0), 0u) << w;
+  EXPECT_NE(w.find("the hand is outside its field of view"), std::string::npos) << w;
+  EXPECT_NE(w.find("layout 'paper-optimized'"), std::string::npos) << w;
+
+  ASSERT_EQ(vm.start("sim"), "");
+  const auto lmc1_row = [&]() -> const DeviceRow* {
+    for (const auto& r : vm.rows()) {
+      if (r.slot == "LMC1") return &r;
+    }
+    return nullptr;
+  };
+  ASSERT_TRUE(refresh_until(vm, [&] { return lmc1_row() != nullptr && lmc1_row()->frames > 0; }));
+  EXPECT_EQ(lmc1_row()->status, "no hand");
+  EXPECT_FALSE(lmc1_row()->hand_present);
+  EXPECT_TRUE(lmc1_row()->warn) << "its row stands out beside the warning";
+
+  f.context.layout().publish(rig_test_layout("paper-optimized-as-processed"));
+  vm.refresh();
+  EXPECT_EQ(vm.layout().name, "paper-optimized-as-processed");
+  EXPECT_TRUE(vm.layout_warnings().empty()) << vm.layout_warnings()[0];
+  vm.stop();
+}
+
 TEST(DevicesViewModel, UnknownBackendIsAnErrorMessage) {
   RigFixture f;
   EXPECT_NE(f.vm.start("bluetooth"), "");

@@ -7,8 +7,9 @@ namespace {
 
 // The README's "Design a layout" walkthrough, condensed to what fits a window.
 constexpr const char* kWalkthrough[] = {
-    "The Layout tab opens on the paper's optimized layout and a 2,000-frame Monte Carlo pose set. "
-    "Presets switches to the paper's initial square; New starts from four controllers at ±60 mm.",
+    "The Layout tab opens on the paper's optimized layout as the authors processed it and a 2,000-frame "
+    "Monte Carlo pose set. Presets switches to the paper's initial square or to the optimized layout as "
+    "printed (its LMC1 looks away from the hand); New starts from four controllers at ±60 mm.",
     "Look around: left-drag on empty space orbits, right- or middle-drag pans, the wheel zooms. "
     "F frames everything; 3D / Top / Front / Side give fixed views.",
     "Click a controller to select it. Drag its box to move it, the green ring to turn it, the red "

@@ -1,6 +1,7 @@
 #include "ui/model/optimiser_job.h"
 
 #include <chrono>
+#include <cmath>
 #include <thread>
 
 #include "core/common/error.h"
@@ -62,8 +63,12 @@ bool OptimiserJob::start(const LayoutDocument& doc, const PoseSetPtr& poses, con
                  p.best_layout.devices.empty() ? nullptr : std::make_shared<const Layout>(p.best_layout)});
       ch.set_progress(start * per_start + p.iteration + 1, ch.total());
     };
+    // Multi-start keeps finished starts only, which run_pso has evaluated; a single start may
+    // have been cancelled.
+    bool best_evaluated = true;
     if (starts == 1) {
       out.pso = run_pso(layout, space, poses->prepared, settings, [&](const PsoProgress& p) { report(0, p); }, stop);
+      best_evaluated = out.pso.status == JobStatus::kCompleted;
       out.start_costs = {out.pso.best_cost};
     } else {
       MultiStartResult m = run_multi_start(layout, space, poses->prepared, settings, starts,
@@ -74,6 +79,21 @@ bool OptimiserJob::start(const LayoutDocument& doc, const PoseSetPtr& poses, con
       out.distinct_runners_up = static_cast<int>(m.runners_up.size());
       out.pso = std::move(m.runs[static_cast<size_t>(m.best)]);
       out.pso.status = m.status;
+    }
+    // run_pso stops as soon as it is asked and leaves a cancelled search's best unevaluated, but
+    // that best so far is a real layout the panel offers to Apply: evaluate it here like a finished
+    // one, so the comparison and the status bar show its terms, not zeros.
+    if (!best_evaluated) {
+      ch.set_stage("Evaluating the best so far");
+      out.pso.best_terms = layout_robust_terms(out.pso.best_layout, poses->prepared, settings.weights,
+                                               settings.phalanx_radius_mm, settings.axis_cut_mm);
+      // Cancelled before the initial swarm was evaluated: the best so far is the start layout,
+      // whose cost is now known.
+      if (!std::isfinite(out.pso.best_cost)) {
+        out.pso.best_cost = settings.metric == PlacementMetricKind::kStudy ? out.pso.best_terms.metric_m
+                                                                           : out.pso.best_terms.total;
+        out.start_costs = {out.pso.best_cost};
+      }
     }
     // The candidate says what made it, so a saved result is not mistaken for the layout it
     // started from (issue #15: "paper-optimized" stayed in the file after Apply and Save).
@@ -88,6 +108,7 @@ bool OptimiserJob::start(const LayoutDocument& doc, const PoseSetPtr& poses, con
                                       ", from " + layout.name + "; cost " + std::to_string(out.pso.best_cost);
     ch.set_stage("Evaluating the candidate");
     out.candidate = evaluate_layout(out.pso.best_layout, *poses);
+    if (!best_evaluated) out.pso.best_coverage = out.candidate.all;
     out.start_layout = layout;
     out.start_terms = layout_robust_terms(layout, poses->prepared, settings.weights, settings.phalanx_radius_mm,
                                           settings.axis_cut_mm);

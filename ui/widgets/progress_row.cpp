@@ -37,6 +37,7 @@ bool draw_progress_row(const char* id, double fraction, const std::string& stage
   }
   ImGui::TextDisabled("elapsed %s · remaining %s", format_duration(elapsed_s).c_str(),
                       eta_s ? format_duration(*eta_s).c_str() : "estimating...");
+  if (anchors != nullptr) anchors->remember(std::string(id) + ".elapsed");
   ImGui::PopID();
   return cancel;
 }

@@ -8,7 +8,7 @@ namespace lmc::ui {
 class WidgetAnchors;
 
 // Returns true when Cancel was pressed this frame. With `anchors`, the Cancel button is recorded
-// as "<id>.cancel".
+// as "<id>.cancel" and the elapsed / remaining line as "<id>.elapsed". The row is two lines high.
 bool draw_progress_row(const char* id, double fraction, const std::string& stage, double elapsed_s,
                        std::optional<double> eta_s, bool cancellable = true, WidgetAnchors* anchors = nullptr);
 

@@ -2,12 +2,29 @@
 
 #include <Eigen/Geometry>
 
+#include <algorithm>
+
+#include "core/visibility/blind_controllers.h"
 #include "devices/device_hub.h"
 #include "devices/record/trial_engine.h"
 
 namespace lmc::ui {
 namespace {
 constexpr double kStalledMs = 500.0;  // no frame for this long while connected: something is wrong
+
+std::string blind_controller_words(HiddenReason reason) {
+  switch (reason) {
+    case HiddenReason::kWrongApproach: return "it faces away from the hand (the hand comes at it from behind)";
+    case HiddenReason::kOutOfRange: return "the hand is beyond its range";
+    case HiddenReason::kOutOfView: return "the hand is outside its field of view";
+    case HiddenReason::kBehindPalm:
+    case HiddenReason::kBehindFinger: return "the hand hides every finger from it";
+    case HiddenReason::kNoHand:
+    case HiddenReason::kVisible: break;
+  }
+  return "it sees no finger";
+}
+
 }  // namespace
 
 DevicesViewModel::DevicesViewModel(LiveRig& rig) : rig_(rig) {}
@@ -28,6 +45,18 @@ void DevicesViewModel::stop() {
 
 void DevicesViewModel::refresh() {
   rig_.poll();
+  if (!warned_layout_ || !(*warned_layout_ == rig_.layout())) {
+    warned_layout_ = rig_.layout();
+    layout_warnings_.clear();
+    blind_slots_.clear();
+    for (const BlindController& b : blind_controllers(*warned_layout_)) {
+      blind_slots_.push_back(b.device);
+      layout_warnings_.push_back(b.slot + " cannot see the hand: in all ten reference hand poses " +
+                                 blind_controller_words(b.reason) +
+                                 ". Its \"no hand\" comes from layout '" + warned_layout_->name +
+                                 "'; move or turn it in the Layout tab.");
+    }
+  }
   rows_.clear();
   hands_.clear();
   fused_.reset();
@@ -61,6 +90,7 @@ void DevicesViewModel::refresh() {
     else r.status = s.hand_present ? "streaming" : "no hand";
     // The study saw 11–34 Hz with four devices; below that, suspect USB bandwidth or power.
     r.warn = r.status == "disconnected" || r.status == "stalled" || (s.connected && s.frames_received > 0 && r.rate_hz < 10);
+    r.warn = r.warn || std::find(blind_slots_.begin(), blind_slots_.end(), s.slot_index) != blind_slots_.end();
     if (s.slot_index >= 0 && s.connected && s.frames_received > 0 && r.age_ms <= kStalledMs) ++streaming_slots;
     if (auto h = live_hand(s, hub_layout)) hands_.push_back(std::move(*h));
     rows_.push_back(std::move(r));

@@ -31,7 +31,7 @@ struct DeviceRow {
   std::int64_t frames = 0;
   std::int64_t dropped = 0;
   int colour = 0;  // index into device_colour()
-  bool warn = false;
+  bool warn = false;  // also when its slot cannot see the hand (DevicesViewModel::layout_warnings)
 };
 
 // Where the current (or last) test recording is, from the engine's latest status.
@@ -74,6 +74,10 @@ class DevicesViewModel {
   std::string assign(const std::string& serial, const std::string& slot);
   // True once every layout slot has streamed for at least a second (rates are meaningful).
   bool all_streaming() const { return all_streaming_; }
+  // One line per controller of the rig's layout that cannot see the hand region at all (core's
+  // blind_controllers), naming it and why: its "no hand" is the layout's doing, not a broken
+  // controller. Empty when every controller can see the hand. Kept up to date by refresh().
+  const std::vector<std::string>& layout_warnings() const { return layout_warnings_; }
 
   // Test recording of `seconds` into `dir` through the rig's trial engine (trial name checked).
   // Never overwrites: when `trial` has files in `dir` the next free name (trial-2, trial-3, …) is
@@ -95,6 +99,9 @@ class DevicesViewModel {
   std::optional<FusedHand> fused_;
   devices::LiveFusionStats fusion_stats_;
   bool all_streaming_ = false;
+  std::vector<std::string> layout_warnings_;
+  std::vector<int> blind_slots_;  // layout indices of the controllers layout_warnings_ name
+  std::optional<Layout> warned_layout_;  // the layout layout_warnings_ describe
 };
 
 }  // namespace lmc::ui

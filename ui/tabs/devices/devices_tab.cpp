@@ -254,6 +254,10 @@ class DevicesTab final : public Tab {
     }
     ImGui::EndTable();
     if (rows.empty()) ImGui::TextDisabled(vm_.running() ? "waiting for devices…" : "no backend running: press Start");
+    // A controller the layout points away from the hand shows "no hand" forever: say it is the layout.
+    ImGui::PushTextWrapPos(0.0F);
+    for (const std::string& w : vm_.layout_warnings()) ImGui::TextColored(ImVec4(1.0F, 0.55F, 0.3F, 1.0F), "%s", w.c_str());
+    ImGui::PopTextWrapPos();
   }
 
   void draw_recording_row() {

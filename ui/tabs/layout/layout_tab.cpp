@@ -25,10 +25,14 @@
 namespace lmc::ui {
 namespace {
 
+constexpr const char* kStartLayout = "paper-optimized-as-processed";
+
 LayoutDocument initial_document() {
-  // Open on the paper's optimized layout: the first thing a lab sees is a real design.
+  // Open on the paper's optimized layout as the authors processed it: the first thing a lab sees is
+  // a real design in which every controller sees the hand (the table's own numbers point LMC1 away
+  // from it, and the Devices tab would stream a controller that never sees anything).
   try {
-    return make_document(load_layout_or_preset("paper-optimized"));
+    return make_document(load_layout_or_preset(kStartLayout));
   } catch (const std::exception&) {
     return make_document(default_new_layout());
   }
@@ -146,6 +150,10 @@ void LayoutTab::update(bool shown) {
   }
   frame_start_ = now;
   if (stats_frames_wanted_ > 0) scripted_drag_step();
+  if (capture_cancel_at_ && now >= *capture_cancel_at_) {
+    capture_cancel_at_.reset();
+    state_->cancel_optimiser();
+  }
   state_->update(static_cast<double>(ImGui::GetIO().DeltaTime), shown);
   // The committed layout, not the scratch copy: a drag in progress would restart the rig every frame.
   if (shared_layout_ != nullptr) shared_layout_->publish(state_->history().head().layout);
@@ -174,7 +182,9 @@ void LayoutTab::open_document(const std::filesystem::path& path) {
 }
 
 int LayoutTab::prepare_for_capture() {
-  state_->load_preset("paper-optimized");
+  // What a new user sees first, or LMC_LAYOUT_PRESET=NAME (the Devices capture follows it).
+  const char* preset = std::getenv("LMC_LAYOUT_PRESET");
+  state_->load_preset(preset != nullptr && *preset != '\0' ? preset : kStartLayout);
   state_->select(1);
   state_->display.show_heatmap = true;
   state_->display.heatmap_finger = 1;  // index: the finger the study's index-flexion trials move
@@ -200,12 +210,16 @@ int LayoutTab::prepare_for_capture() {
     if (v == "side") state_->camera.set_named_view(NamedView::kSide);
   }
   if (const char* panel = std::getenv("LMC_LAYOUT_PANEL")) {
-    capture_panel_ = panel;
-    capture_panel_frames_ = 2;
+    show_panel(panel);
     // "optimiser-settings": the Optimiser panel with its settings and term weights open.
     if (capture_panel_ == "optimiser-settings") {
       capture_panel_ = "optimiser";
       optimiser_->open_settings_once();
+    }
+    // "optimiser-compare": the Optimiser panel scrolled to the robust rows of Current vs candidate.
+    if (capture_panel_ == "optimiser-compare") {
+      capture_panel_ = "optimiser";
+      optimiser_->show_comparison_once();
     }
   }
   if (const char* env = std::getenv("LMC_LAYOUT_OPTIMISE"); env != nullptr && std::atoi(env) > 0) {
@@ -218,6 +232,12 @@ int LayoutTab::prepare_for_capture() {
     state_->poses.wait();
     state_->update(0.0);
     state_->start_optimiser();
+    // LMC_LAYOUT_CANCEL_AFTER=S: Cancel the search S seconds in, so the capture shows a cancelled
+    // search's best so far (set a long search with LMC_LAYOUT_OPTIMISE).
+    if (const char* after = std::getenv("LMC_LAYOUT_CANCEL_AFTER"); after != nullptr && std::atof(after) > 0) {
+      capture_cancel_at_ = std::chrono::steady_clock::now() +
+                           std::chrono::duration_cast<std::chrono::steady_clock::duration>(std::chrono::duration<double>(std::atof(after)));
+    }
   }
   if (const char* env = std::getenv("LMC_LAYOUT_FRAME_STATS"); env != nullptr && std::atoi(env) > 0) {
     stats_frames_wanted_ = std::atoi(env);
@@ -315,7 +335,12 @@ void LayoutTab::draw_toolbar() {
   if (ImGui::Button("Presets v")) ImGui::OpenPopup("##presets");
   if (ImGui::BeginPopup("##presets")) {
     if (ImGui::MenuItem("Paper: initial layout (2 × 2 square, ±60 mm)")) request(Pending::kPreset, "paper-initial");
-    if (ImGui::MenuItem("Paper: optimized layout (PSO result)")) request(Pending::kPreset, "paper-optimized");
+    if (ImGui::MenuItem("Paper: optimized layout (PSO result, as the authors processed it)")) {
+      request(Pending::kPreset, "paper-optimized-as-processed");
+    }
+    if (ImGui::MenuItem("Paper: optimized layout as printed (LMC1 looks away from the hand)")) {
+      request(Pending::kPreset, "paper-optimized");
+    }
     ImGui::EndPopup();
   }
   ImGui::SameLine(0, 20);
@@ -332,6 +357,14 @@ void LayoutTab::draw_toolbar() {
   if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled)) ImGui::SetTooltip("Ctrl+Shift+Z or Ctrl+Y");
   ImGui::SameLine(0, 20);
   ImGui::TextDisabled("%s", s.title().c_str());
+  // The layout's own description (a preset's says what it is and what is wrong with it).
+  if (!s.layout().description.empty() && ImGui::IsItemHovered()) {
+    ImGui::BeginTooltip();
+    ImGui::PushTextWrapPos(ImGui::GetFontSize() * 40.0f);
+    ImGui::TextUnformatted(s.layout().description.c_str());
+    ImGui::PopTextWrapPos();
+    ImGui::EndTooltip();
+  }
 }
 
 void LayoutTab::draw_dialogs() {

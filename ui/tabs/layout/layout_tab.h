@@ -55,6 +55,11 @@ class LayoutTab final : public Tab {
   LayoutTabState& state() { return *state_; }
   ScenePanel& scene_panel() { return *scene_; }
   OptimiserPanel& optimiser_panel() { return *optimiser_; }
+  // Brings a right-hand panel to the front on the next draws: "inspector", "heatmap" or "optimiser".
+  void show_panel(const std::string& id) {
+    capture_panel_ = id;
+    capture_panel_frames_ = 2;
+  }
   // Modal dialogs off (tests): errors go to the status line only.
   void set_modals_enabled(bool on) { modals_enabled_ = on; }
 
@@ -85,11 +90,15 @@ class LayoutTab final : public Tab {
   const void* last_snapshot_ = nullptr;
 
   // Screenshot options (read in prepare_for_capture): LMC_LAYOUT_PANEL=inspector|heatmap|optimiser|
-  // optimiser-settings (the Optimiser with its settings and term weights open)
+  // optimiser-settings (the Optimiser with its settings and term weights open)|optimiser-compare
+  // (scrolled to Current vs candidate)
   // picks the right-hand panel; LMC_LAYOUT_OPTIMISE=N runs an N-iteration search first so the
-  // ghost controllers and the comparison table are in the picture.
+  // ghost controllers and the comparison table are in the picture; LMC_LAYOUT_CANCEL_AFTER=S
+  // cancels it after S seconds; LMC_LAYOUT_PRESET=NAME opens that preset instead of the start layout.
   std::string capture_panel_;
   int capture_panel_frames_ = 0;
+  // LMC_LAYOUT_CANCEL_AFTER=S: when to cancel the search LMC_LAYOUT_OPTIMISE started.
+  std::optional<std::chrono::steady_clock::time_point> capture_cancel_at_;
 
   StatusSink& status_;
   CurrentLayout* shared_layout_ = nullptr;

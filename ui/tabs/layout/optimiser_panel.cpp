@@ -18,8 +18,12 @@ void OptimiserPanel::draw() {
   anchors_.clear();
   // Start / progress / Apply / Discard stay at the bottom of the panel whatever is expanded above
   // them (issue #15: with Search settings open they fell below the panel); the rest scrolls.
+  // The footer is as high as it was last drawn (its result text wraps on a narrow panel), and
+  // never lower than its rows need now: the progress row is two lines (with one line reserved,
+  // "elapsed ... remaining ..." fell off the bottom of the panel at 1280 x 800).
   const float line = ImGui::GetFrameHeightWithSpacing();
-  const float footer_h = state_->optimiser.outcome() ? 3.0f * line + 4.0f : line + 4.0f;
+  const float rows = state_->optimiser.running() ? 2.0f : state_->optimiser.outcome() ? 3.0f : 1.0f;
+  const float footer_h = std::max(rows * line, footer_h_) + 4.0f;
   ImGui::BeginChild("##optimiser_body", ImVec2(0, -footer_h));
   if (ImGui::CollapsingHeader("Pose set", ImGuiTreeNodeFlags_DefaultOpen)) draw_pose_set();
   if (open_settings_once_) ImGui::SetNextItemOpen(true);
@@ -28,7 +32,9 @@ void OptimiserPanel::draw() {
   draw_convergence();
   draw_comparison();
   ImGui::EndChild();
+  const float footer_top = ImGui::GetCursorPosY();
   draw_run();
+  footer_h_ = ImGui::GetCursorPosY() - footer_top;
 }
 
 void OptimiserPanel::draw_pose_set() {
@@ -83,7 +89,7 @@ void OptimiserPanel::draw_settings() {
   LayoutTabState& s = *state_;
   PsoSettings& p = s.pso;
   int metric = static_cast<int>(p.metric);
-  ImGui::SetNextItemWidth(220);
+  ImGui::SetNextItemWidth(300);  // the whole of its longest choice
   if (ImGui::Combo("metric", &metric, "study: M only (the reference)\0robust: M, then every controller counts\0")) {
     p.metric = static_cast<PlacementMetricKind>(metric);
   }
@@ -112,6 +118,7 @@ void OptimiserPanel::draw_settings() {
     if (ImGui::SmallButton("default weights")) p.weights = RobustWeights{};
     ImGui::TreePop();
   }
+  // Rows short enough for the panel at 1280 x 800 (three inputs in a row pushed "starts" off it).
   ImGui::SetNextItemWidth(100);
   ImGui::InputInt("particles", &p.particles);
   p.particles = std::clamp(p.particles, 2, 1000);
@@ -119,14 +126,17 @@ void OptimiserPanel::draw_settings() {
   ImGui::SetNextItemWidth(100);
   ImGui::InputInt("iterations", &p.iterations);
   p.iterations = std::clamp(p.iterations, 1, 10000);
-  ImGui::SameLine();
-  ImGui::SetNextItemWidth(80);
+  ImGui::SetNextItemWidth(100);
   ImGui::InputInt("starts", &s.optimiser_starts);
   s.optimiser_starts = std::clamp(s.optimiser_starts, 1, 8);
+  anchors_.remember("starts");
   if (ImGui::IsItemHovered()) {
     ImGui::SetTooltip("Several swarms from seeds seed, seed+1, ... one after another; the best is kept and the\n"
                       "convergence plot draws each (lmc optimize --starts N does the same)");
   }
+  ImGui::SameLine();
+  ImGui::SetNextItemWidth(120);
+  ImGui::InputScalar("PSO seed", ImGuiDataType_U64, &p.seed);
   ImGui::SetNextItemWidth(80);
   ImGui::InputDouble("w", &p.w, 0, 0, "%.2f");
   ImGui::SameLine();
@@ -135,9 +145,6 @@ void OptimiserPanel::draw_settings() {
   ImGui::SameLine();
   ImGui::SetNextItemWidth(80);
   ImGui::InputDouble("c2", &p.c2, 0, 0, "%.2f");
-  ImGui::SetNextItemWidth(120);
-  ImGui::InputScalar("PSO seed", ImGuiDataType_U64, &p.seed);
-  ImGui::SameLine();
   ImGui::Checkbox("start from the current layout", &p.start_from_layout);
   if (ImGui::Button("Study defaults")) {
     const int threads = p.threads;
@@ -147,7 +154,10 @@ void OptimiserPanel::draw_settings() {
   if (ImGui::IsItemHovered()) ImGui::SetTooltip("30 particles, 100 iterations, w 0.9, c1 0.5, c2 0.3 (reference-algorithms.md §5)");
 
   ImGui::Spacing();
+  ImGui::PushTextWrapPos(0.0f);
   ImGui::TextDisabled("Which controllers may move (locks per parameter are in the Inspector)");
+  ImGui::PopTextWrapPos();
+  anchors_.remember("movable-note");
   const LayoutDocument& doc = s.doc();
   for (int d = 0; d < doc.device_count(); ++d) {
     bool moves = false;
@@ -214,9 +224,12 @@ void OptimiserPanel::draw_run() {
   const auto outcome = job.outcome();
   if (!outcome) return;
   const PsoResult& r = outcome->pso;
-  ImGui::Text("%s: best %s = %.4g after %d iterations (%.1f s)",
-              r.status == lmc::JobStatus::kCancelled ? "Cancelled, best so far" : "Done",
+  // Wrapped, so a narrow panel shows the whole line rather than cutting the time off.
+  ImGui::PushTextWrapPos(0.0f);
+  ImGui::Text("%s %s = %.4g after %d iterations (%.1f s)",
+              r.status == lmc::JobStatus::kCancelled ? "Cancelled: best so far" : "Done: best",
               r.metric == PlacementMetricKind::kStudy ? "M" : "R", r.best_cost, r.iterations_done, r.seconds);
+  anchors_.remember("result");
   if (outcome->start_costs.size() > 1) {
     std::string costs;
     for (size_t k = 0; k < outcome->start_costs.size(); ++k) {
@@ -227,6 +240,7 @@ void OptimiserPanel::draw_run() {
     ImGui::TextDisabled("best of %zu starts (start %d); costs %s; %d other start(s) found a different layout",
                         outcome->start_costs.size(), outcome->best_start + 1, costs.c_str(), outcome->distinct_runners_up);
   }
+  ImGui::PopTextWrapPos();
   if (ImGui::Button("Apply", ImVec2(100, 0))) s.apply_optimised();
   anchors_.remember("apply");
   if (ImGui::IsItemHovered()) ImGui::SetTooltip("Replace the poses with the candidate's (one undo step)");
@@ -342,6 +356,10 @@ void OptimiserPanel::draw_comparison() {
   }
   ImGui::EndTable();
   if (!same_start) ImGui::TextDisabled("(the robust terms are not compared: the layout changed since the search started)");
+  if (show_comparison_once_) {
+    ImGui::SetScrollHereY(1.0f);  // the table's end: the robust terms' rows
+    show_comparison_once_ = false;
+  }
 }
 
 }  // namespace lmc::ui

@@ -17,10 +17,13 @@ class OptimiserPanel {
  public:
   explicit OptimiserPanel(std::shared_ptr<LayoutTabState> state);
   void draw();
-  // Start, pso.cancel, Apply, Discard as last drawn (for headless tests).
+  // Start, pso.cancel, pso.elapsed, Apply, Discard, the result line and a few labels as last drawn
+  // (for headless tests).
   const WidgetAnchors& anchors() const { return anchors_; }
   // For --capture: the next draw opens Search settings and the term weights.
   void open_settings_once() { open_settings_once_ = true; }
+  // For --capture: once the search has a result, scroll to the end of Current vs candidate.
+  void show_comparison_once() { show_comparison_once_ = true; }
 
  private:
   void draw_pose_set();
@@ -38,6 +41,8 @@ class OptimiserPanel {
   SeriesPlot convergence_;              // best cost per iteration (ui/widgets/series_plot.h)
   std::vector<double> convergence_x_;   // 0, 1, 2, … (the iterations)
   bool open_settings_once_ = false;
+  bool show_comparison_once_ = false;
+  float footer_h_ = 0;  // height of the footer (draw_run) as last drawn
 };
 
 }  // namespace lmc::ui
