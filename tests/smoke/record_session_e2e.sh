@@ -3,7 +3,8 @@
 # time, the simulated rig): a new `quick` session with the subject screen open (F2), the pre-flight,
 # the first trial, a note, Close, Ctrl+Q; the session reopened with --session, its second trial
 # killed with SIGKILL mid-trial; reopened again: the resume, the trial recorded again, Close, Ctrl+Q;
-# then the Review tab opening the session. Every workbench must end with exit code 0 (Close after a
+# then the Review tab opening the session, and in the Layout tab an optimiser search started and
+# cancelled (its best-so-far layout is evaluated, never shown as zeros). Every workbench must end with exit code 0 (Close after a
 # trial used to end the program with std::out_of_range), and the subject screen must show the red
 # circle from go for the trial's whole length (the countdown used to eat the recording: the subject
 # saw "3, 2, 1" and never the circle). Steps wait for the journal, never a fixed clock.
@@ -20,7 +21,7 @@ cat > "$work/drive.sh" <<'DRIVE'
 set -eu
 workbench=$1; session=$2; work=$3
 journal="$session/journal.jsonl"
-export LMC_SUBJECT_TRACE="$work/subject-trace.txt"
+export LMC_SUBJECT_TRACE="$work/subject-trace.txt" LMC_STATUS_TRACE="$work/status-trace.txt"
 pid=""
 # Waits (up to 60 s) until the journal holds `count` lines matching `pattern`.
 wait_for() {
@@ -35,6 +36,24 @@ wait_for() {
   echo "timed out waiting for $what; journal:"; cat "$journal"; exit 1
 }
 press() { xdotool key --clearmodifiers "$1"; }
+# A click held for a few frames (a press and release inside one frame can be missed), at window
+# coordinates of the 1280x800 screen.
+click() {
+  xdotool mousemove --window "$window" "$1" "$2"
+  sleep 0.2
+  xdotool mousedown 1
+  sleep 0.15
+  xdotool mouseup 1
+}
+# Waits (up to 60 s) until the status bar has shown a line matching `pattern`.
+wait_for_status() {
+  for _ in $(seq 600); do
+    grep -q -- "$1" "$work/status-trace.txt" 2>/dev/null && return 0
+    kill -0 "$pid" 2>/dev/null || { echo "the workbench exited while waiting for: $2"; cat "$work/workbench.log"; exit 1; }
+    sleep 0.1
+  done
+  echo "timed out waiting for: $2; status lines:"; cat "$work/status-trace.txt"; exit 1
+}
 # Starts the workbench and gives its window the keyboard.
 start() {
   "$workbench" "$@" >> "$work/workbench.log" 2>&1 &
@@ -57,8 +76,8 @@ quit() {
 }
 # The Close button at the right end of the Record tab's header line.
 click_close() {
-  eval "$(xdotool getwindowgeometry --shell "$window")"
-  xdotool mousemove --window "$window" $((WIDTH - 65)) 52 click 1
+  click 1215 52
+  wait_for_status "closed; everything recorded is kept" "the session to close"
 }
 
 # 1. A new session: subject screen, pre-flight, the first trial, a note, Close, Ctrl+Q.
@@ -80,7 +99,7 @@ xdotool type --delay 30 "cuff loose"
 press Return; wait_for '"text":"cuff loose"' 1 "the note"
 sleep 0.5
 click_close
-sleep 1.5
+sleep 1
 kill -0 "$pid" 2>/dev/null || { echo "Close after a recorded trial ended the workbench"; cat "$work/workbench.log"; exit 1; }
 quit "after Close"
 
@@ -109,8 +128,10 @@ sleep 0.5
 press F2
 sleep 0.5
 focus_main
-click_close
-sleep 1.5
+grep -c "closed; everything recorded is kept" "$work/status-trace.txt" | grep -q 1  # the first Close's line
+click 1215 52
+for _ in $(seq 100); do [ "$(grep -c "closed; everything recorded is kept" "$work/status-trace.txt")" -ge 2 ] && break; sleep 0.1; done
+sleep 1
 kill -0 "$pid" 2>/dev/null || { echo "Close after the resumed trial ended the workbench"; cat "$work/workbench.log"; exit 1; }
 quit "after the resume"
 
@@ -125,15 +146,29 @@ done
 [ "$(find "$work/cache" -name '*.json' | wc -l)" -ge 2 ] || { echo "Review did not process the session"; exit 1; }
 sleep 0.5
 quit "in Review"
+
+# 5. The Layout tab: Optimiser, Start, Cancel after a few seconds; the status bar reads the
+# best-so-far layout's own figures.
+start
+sleep 3
+click 985 87     # the Optimiser panel's tab
+sleep 1
+click 880 448    # Start optimiser
+wait_for_status "Optimiser started" "the search to start"
+sleep 3
+click 1240 425   # Cancel, at the end of the progress row
+wait_for_status "Optimiser cancelled" "the search to stop"
+sleep 0.5
+quit "after the optimiser was cancelled"
 DRIVE
 chmod +x "$work/drive.sh"
 xvfb-run -a -s "-screen 0 1280x800x24" "$work/drive.sh" "$workbench" "$session" "$work"
 
 "$lmc" session status "$session" --json > "$work/status.json"
-python3 - "$work/status.json" "$session" "$work/subject-trace.txt" <<'CHECK'
-import json, os, sys
+python3 - "$work/status.json" "$session" "$work/subject-trace.txt" "$work/status-trace.txt" <<'CHECK'
+import json, os, re, sys
 status = json.load(open(sys.argv[1]))
-session, trace_file = sys.argv[2], sys.argv[3]
+session, trace_file, status_file = sys.argv[2], sys.argv[3], sys.argv[4]
 trials = status["trials"]
 assert [t["status"] for t in trials] == ["accepted", "accepted"], [t["status"] for t in trials]
 assert trials[1]["attempts"] == 2, trials[1]["attempts"]  # the one killed, kept aside, and the one that finished
@@ -155,8 +190,16 @@ full = [c for c in circles if c[1] >= 2.7]
 assert len(full) >= 2, ("the circle was not shown for two whole trials", circles)
 for shown_s, reached_s in full:
     assert shown_s >= 2.6, ("the circle was shown for only", shown_s, "s")
+# Close said what it did, twice; the cancelled search's figures are its own, not zeros.
+shown = open(status_file).read().splitlines()
+assert sum("closed; everything recorded is kept" in l for l in shown) == 2, shown
+cancelled = [l for l in shown if "Optimiser cancelled" in l]
+assert cancelled, shown
+m = re.search(r"best R = ([0-9.]+) \(M ([0-9.]+)\)", cancelled[-1])
+assert m and float(m.group(1)) > 0 and float(m.group(2)) > 0, cancelled[-1]
 countdowns = [l for l in lines if l[1] == "countdown"]
 assert len(countdowns) >= 2, "the subject saw no countdown"
 print("record session e2e: 2 trials accepted in the window, the circle shown %s, Close and Ctrl+Q exit 0, "
-      "SIGKILL mid-trial resumed, Review processed the session" % ", ".join("%.1f s" % c[0] for c in full))
+      "SIGKILL mid-trial resumed, Review processed the session, %s"
+      % (", ".join("%.1f s" % c[0] for c in full), cancelled[-1].split("\t")[1]))
 CHECK

@@ -3,6 +3,7 @@
 #include <imgui.h>
 
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <system_error>
 #include <utility>
@@ -13,6 +14,8 @@ namespace lmc::ui {
 
 WorkbenchShell::WorkbenchShell(ShellStartup startup) : recent_files_path_(std::move(startup.recent_files_path)) {
   const bool opened_on_a_task = startup.record.has_value() || !startup.review.empty();
+  if (const char* trace = std::getenv("LMC_STATUS_TRACE"); trace != nullptr && *trace != '\0')
+    status_trace_.open(trace, std::ios::app);
   context_->record_startup() = std::move(startup.record);
   context_->review_requests() = std::move(startup.review);
   if (startup.subject_screen) {
@@ -243,6 +246,10 @@ void WorkbenchShell::draw_status_bar(float height) {
   ImGui::Separator();
   ImGui::BeginChild("##status", ImVec2(0, height - 6.0f), false, ImGuiWindowFlags_NoScrollbar);
   const StatusLine line = status_.shown(active_id_);
+  if (status_trace_.is_open() && line.text != status_traced_) {
+    status_traced_ = line.text;
+    status_trace_ << active_id_ << '\t' << line.text << std::endl;
+  }
   if (line.is_error) {
     ImGui::TextColored(ImVec4(1.0f, 0.45f, 0.4f, 1.0f), "%s", line.text.c_str());
   } else if (line.is_hint) {

@@ -5,6 +5,7 @@
 // FileCommands to the tab that owns a document, and each tab reports through its own status sink.
 #include <chrono>
 #include <filesystem>
+#include <fstream>
 #include <memory>
 #include <optional>
 #include <string>
@@ -88,6 +89,10 @@ class WorkbenchShell final {
   std::string active_id_;
   std::string pending_select_;
   bool show_frame_time_ = false;
+  // LMC_STATUS_TRACE=FILE: every status line shown, as "<tab>\t<text>", for tests that drive the
+  // real window and must read what the operator read.
+  std::ofstream status_trace_;
+  std::string status_traced_;
   bool quit_requested_ = false;
   bool quit_prompt_open_ = false;
   std::chrono::steady_clock::time_point last_frame_start_{};
