@@ -142,6 +142,22 @@ TEST(InspectorTyping, ASingleClickOnAPoseFieldStartsTyping) {
   EXPECT_EQ(state->history().undo_size(), 0u) << "a click alone changes nothing";
 }
 
+TEST(WorkbenchShellHeadless, OpenedOnASessionOrFoldersToReviewItShowsNoNewcomersHint) {
+  HeadlessImGui gui;
+  const auto dir = test::scratch_dir("shell_headless_task");
+  ShellStartup on_session;
+  on_session.record = RecordStartup{};
+  on_session.record->session = dir / "no-such-session";
+  WorkbenchShell a(std::move(on_session));
+  EXPECT_FALSE(a.status_board().hint_showing()) << "--session: the Record tab speaks, not 'Start here'";
+  ShellStartup on_review;
+  on_review.review = {dir};
+  WorkbenchShell b(std::move(on_review));
+  EXPECT_FALSE(b.status_board().hint_showing());
+  WorkbenchShell c{ShellStartup{}};
+  EXPECT_TRUE(c.status_board().hint_showing()) << "a plain start keeps the hint";
+}
+
 TEST(WorkbenchShellHeadless, TracksRecentFilesAndDropsTheHintOnTheFirstClick) {
   HeadlessImGui gui;
   const auto dir = test::scratch_dir("shell_headless_recent");

@@ -109,6 +109,29 @@ TEST(SessionFolder, TrialLifecycleSurvivesReopening) {
   fs::remove_all(dir);
 }
 
+TEST(SessionFolder, NotesBelongToTheAttemptTheyWereTakenOnAndGoIsJournaled) {
+  const fs::path dir = test::fresh_test_dir("session_attempt_notes");
+  {
+    SessionFolder f = SessionFolder::create(dir, quick_spec());
+    f.note(0, "before any attempt");
+    f.trial_started(0);
+    f.trial_stopped(0, "completed", "", "2026-11-27T10:00:03.000Z");
+    f.note(0, "glove slipped");
+    f.redo(0);
+    f.trial_started(0);
+    f.trial_stopped(0, "completed", "", "2026-11-27T10:01:03.000Z");
+  }
+  const SessionFolder reopened = SessionFolder::open(dir);
+  const TrialState& t = reopened.state().trials[0];
+  ASSERT_EQ(t.attempts.size(), 2u);
+  EXPECT_EQ(t.attempts[0].notes, (std::vector<std::string>{"glove slipped"}));
+  EXPECT_TRUE(t.attempts[1].notes.empty()) << "attempt 1's note is not attempt 2's";
+  EXPECT_EQ(t.notes.size(), 2u) << "the trial keeps every note";
+  EXPECT_EQ(t.attempts[0].go_utc, "2026-11-27T10:00:03.000Z");
+  EXPECT_EQ(t.attempts[1].go_utc, "2026-11-27T10:01:03.000Z");
+  fs::remove_all(dir);
+}
+
 // The manifest is assembled from each trial's kept text (manifest_text.h); after every kind of
 // event it must be exactly the document session_manifest_json defines.
 TEST(SessionFolder, TheManifestIsTheStatesDocumentAfterEveryKindOfEvent) {
