@@ -133,7 +133,8 @@ struct TrialEngine::Run {
     s.elapsed_s = wall_s();
     if (phase == TrialPhase::kCountdown) s.countdown_remaining_s = std::max(0.0, cfg.countdown_s - (clock_s() - countdown_from));
     s.recording_s = recording_s();
-    if (!sim_decides_length()) s.remaining_s = std::max(0.0, cfg.seconds - s.recording_s);
+    // A simulator that ends the trial itself ends it after its own duration from go.
+    s.remaining_s = std::max(0.0, (sim_decides_length() ? sim->duration_s() : cfg.seconds) - s.recording_s);
     s.hub = hub.snapshot();
     if (recorder) s.recorder = recorder->status();
     s.vicon_packets_sent = vicon_sent;

@@ -57,7 +57,7 @@ struct TrialSnapshot {
   double elapsed_s = 0;              // wall-clock seconds since run() began
   double countdown_remaining_s = 0;  // kCountdown
   double recording_s = 0;            // trial seconds recorded (simulated with a simulator)
-  double remaining_s = 0;            // of `seconds` (0 when the simulator's end decides)
+  double remaining_s = 0;            // of the trial (the simulator's duration when it ends the trial)
   HubSnapshot hub;
   RecorderStatus recorder;  // idle before the recorder starts
   int vicon_packets_sent = 0;

@@ -268,14 +268,17 @@ TEST(RecordSessionModel, ARealTimeTrialShowsTheCircleForItsWholeLengthFromGo) {
   clear_preflight(m);
   ASSERT_EQ(m.start_trial(), "");
   bool counted_down = false;
-  double first_circle_s = -1, last_circle_s = -1;
+  double first_circle_s = -1, last_circle_s = -1, first_remaining_s = -1;
   std::vector<SubjectStage> stages;
   poll_until(m, [&] {
     const SubjectView v = build_subject_view(subject_view_inputs(m), 0.0);
     if (stages.empty() || stages.back() != v.stage) stages.push_back(v.stage);
     counted_down = counted_down || v.stage == SubjectStage::kCountdown;
     if (v.red_circle && m.live()) {
-      if (first_circle_s < 0) first_circle_s = m.live()->recording_s;
+      if (first_circle_s < 0) {
+        first_circle_s = m.live()->recording_s;
+        first_remaining_s = m.live()->remaining_s;
+      }
       last_circle_s = m.live()->recording_s;
     }
     return !m.busy() && m.last_attempt().has_value();
@@ -288,6 +291,7 @@ TEST(RecordSessionModel, ARealTimeTrialShowsTheCircleForItsWholeLengthFromGo) {
   EXPECT_GE(first_circle_s, 0.0);
   EXPECT_LE(first_circle_s, 0.3);
   EXPECT_GE(last_circle_s, 1.7);
+  EXPECT_GE(first_remaining_s, 1.7) << "the status counts down the simulator's trial too (it said 0 s left)";
 
   // The journal's start, go and stop agree with the file: go is where the file starts.
   const auto st = session::read_session_state(dir);

@@ -180,8 +180,7 @@ TrialPanelAction draw_record_trial_panel(const RecordSessionModel& model, TrialP
       big_text(text, 1.6F);
     } else {
       char text[96];
-      // The engine leaves remaining_s at 0 when a simulator's own length ends the trial: count from
-      // the protocol's duration, which is what the subject was told.
+      // Counted from the protocol's duration, which is what the subject was told.
       const double left = std::max(0.0, type.duration_s - live->recording_s);
       std::snprintf(text, sizeof text, "RECORDING  %.1f s  ·  %.1f s left", live->recording_s, left);
       big_text(text, 1.6F);
