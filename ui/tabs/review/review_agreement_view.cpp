@@ -9,6 +9,7 @@
 #include <set>
 #include <string>
 
+#include "core/common/number_format.h"
 #include "core/common/paths.h"
 #include "core/review/review_figures.h"
 #include "ui/scene/colour_maps.h"
@@ -20,9 +21,7 @@ namespace {
 
 std::string num(double v, int decimals, bool signed_value = false) {
   if (!std::isfinite(v)) return "-";
-  char buf[48];
-  std::snprintf(buf, sizeof buf, signed_value ? "%+.*f" : "%.*f", decimals, v);
-  return buf;
+  return format_readable(v, decimals, signed_value);
 }
 
 std::string with_ci(double v, const stats::Interval& ci, int decimals, bool signed_value = false) {
@@ -133,7 +132,7 @@ void draw_visibility_map(const VisibilityMap& map) {
       const Rgba colour = viridis((cell->rate_mean + 1.0) / 2.0);
       ImGui::TableSetBgColor(ImGuiTableBgTarget_CellBg, to_u32(colour, 0.85F));
       const bool light = colour.r * 0.3 + colour.g * 0.6 + colour.b * 0.1 > 0.55;
-      ImGui::TextColored(light ? ImVec4(0, 0, 0, 1) : ImVec4(1, 1, 1, 1), "%+.2f", cell->rate_mean);
+      ImGui::TextColored(light ? ImVec4(0, 0, 0, 1) : ImVec4(1, 1, 1, 1), "%s", format_readable(cell->rate_mean, 2, true).c_str());
       if (ImGui::IsItemHovered()) {
         ImGui::SetTooltip("%s, %s, %s: %.2f +/- %.2f over %d value(s) from %zu trial(s); %zu of them -1 (never saw the hand)",
                           device.c_str(), layout.c_str(), motion.c_str(), cell->rate_mean, cell->rate_sd, cell->values, cell->trials,
