@@ -26,6 +26,8 @@ std::string num(double v, int decimals, bool signed_value = false) {
 
 std::string with_ci(double v, const stats::Interval& ci, int decimals, bool signed_value = false) {
   if (!std::isfinite(v)) return "-";
+  // One subject gives a bias but no interval for it: the value alone, the tooltip says why.
+  if (!std::isfinite(ci.low) || !std::isfinite(ci.high)) return num(v, decimals, signed_value) + "  [no CI]";
   return num(v, decimals, signed_value) + "  [" + num(ci.low, decimals, signed_value) + ", " + num(ci.high, decimals, signed_value) + "]";
 }
 
@@ -72,18 +74,19 @@ void draw_measure_table(const AgreementGroup& g, int& measure) {
     const int d = 1;  // tenths of a mm or a degree: finer than either system measures
     ImGui::TableNextColumn();
     ImGui::Text("%zu (%zu)", a.n_trials, a.n_subjects);
-    ImGui::TableNextColumn();
-    if (std::isfinite(b.bias)) {
-      ImGui::TextUnformatted(with_ci(b.bias, b.bias_ci, d, true).c_str());
-    } else {
-      // Say why rather than print a dash (one subject gives no between-subject variance); the
-      // row's tooltip has the whole reason.
-      ImGui::TextDisabled("%s", a.n_subjects < 2 ? "needs 2+ subjects" : "-");
-    }
-    ImGui::TableNextColumn();
-    ImGui::TextUnformatted(with_ci(b.loa_low, b.loa_low_ci, d, true).c_str());
-    ImGui::TableNextColumn();
-    ImGui::TextUnformatted(with_ci(b.loa_high, b.loa_high_ci, d, true).c_str());
+    // A missing number says why rather than showing a dash where it can (one subject gives no
+    // between-subject variance, so no limits); the row's tooltip has the whole reason.
+    const auto cell = [&a](double v, const stats::Interval& ci, int decimals, bool signed_value) {
+      ImGui::TableNextColumn();
+      if (std::isfinite(v)) {
+        ImGui::TextUnformatted(with_ci(v, ci, decimals, signed_value).c_str());
+      } else {
+        ImGui::TextDisabled("%s", a.n_subjects == 1 ? "needs 2+ subjects" : "-");
+      }
+    };
+    cell(b.bias, b.bias_ci, d, true);
+    cell(b.loa_low, b.loa_low_ci, d, true);
+    cell(b.loa_high, b.loa_high_ci, d, true);
     ImGui::TableNextColumn();
     ImGui::TextUnformatted(num(a.differences.rmse, d).c_str());
     ImGui::TableNextColumn();
@@ -193,6 +196,16 @@ void ReviewAgreementView::draw(ReviewState& state, const PictureRenderer& render
   const AgreementGroup& group = table.groups[static_cast<size_t>(g)];
   measure_ = std::clamp(measure_, 0, std::max(0, static_cast<int>(group.measures.size()) - 1));
   draw_measure_table(group, measure_);
+  // What the table could not compute, in words (the statistics say why; the same for every measure
+  // of a one-subject group, so the selected one speaks for the rest).
+  if (!group.measures.empty()) {
+    const auto& selected = group.measures[static_cast<size_t>(measure_)].bland_altman;
+    if (!selected.reason.empty() && std::isfinite(selected.bias)) {
+      ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
+      ImGui::TextWrapped("Bland-Altman: %s.", selected.reason.c_str());
+      ImGui::PopStyleColor();
+    }
+  }
   ImGui::Spacing();
   // The selected measure's Bland-Altman plot beside the visibility map.
   const float width = ImGui::GetContentRegionAvail().x;
