@@ -1,6 +1,7 @@
 // The Record tab's set-up form, resume notice, subject screen view and motion pictogram, without
 // ImGui: each form field refused by the core rule it mirrors, the spec built like `lmc session
 // new`'s, the plain notice of an interrupted session, and what the subject sees at each stage.
+#include <chrono>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -106,6 +107,39 @@ TEST(RecordSetupForm, ListsSessionsWithTheirProgressNewestFirst) {
   EXPECT_EQ(listed[0].accepted, 0);
   EXPECT_EQ(listed[0].interrupted, 1);
   EXPECT_TRUE(list_sessions(root / "missing").empty());
+  fs::remove_all(root);
+}
+
+TEST(RecordSetupForm, ListsSessionsOneFolderDownGroupedByFolder) {
+  // sessions/S03, sessions/demo/S01 and S02 (the demo sessions), sessions/demo/notes (not a
+  // session) and sessions/old/2024/S04 (two levels down: not looked at).
+  const fs::path root = test::fresh_test_dir("setup_list_nested");
+  const auto make = [](const fs::path& dir, const std::string& subject) {
+    session::NewSessionSpec spec;
+    spec.subject.subject_id = subject;
+    spec.protocol = "quick";
+    (void)session::SessionFolder::create(dir, spec);
+  };
+  make(root / "S03", "S03");
+  make(root / "demo" / "S01", "S01");
+  make(root / "demo" / "S02", "S02");
+  make(root / "old" / "2024" / "S04", "S04");
+  fs::create_directories(root / "demo" / "notes");
+  // S01's journal written last: it comes first in its folder.
+  const auto now = fs::file_time_type::clock::now();
+  fs::last_write_time(root / "demo" / "S02" / session::kJournalFile, now - std::chrono::hours(2));
+  fs::last_write_time(root / "demo" / "S01" / session::kJournalFile, now - std::chrono::hours(1));
+  const auto listed = list_sessions(root);
+  ASSERT_EQ(listed.size(), 3U);
+  EXPECT_EQ(listed[0].subject, "S03");
+  EXPECT_EQ(listed[0].group, "");
+  EXPECT_EQ(listed[1].subject, "S01");
+  EXPECT_EQ(listed[1].group, "demo");
+  EXPECT_EQ(listed[1].dir, root / "demo" / "S01");
+  EXPECT_EQ(listed[2].subject, "S02");
+  EXPECT_EQ(listed[2].group, "demo");
+  EXPECT_EQ(listed[2].total, 2);
+  EXPECT_TRUE(listed[2].problem.empty()) << listed[2].problem;
   fs::remove_all(root);
 }
 
