@@ -16,6 +16,7 @@
 #include "ui/model/record/record_setup_form.h"
 #include "ui/model/record/resume_notice.h"
 #include "ui/model/record/subject_screen_link.h"
+#include "ui/model/record/subject_text_scale.h"
 #include "ui/model/record/subject_view.h"
 
 namespace lmc::ui {
@@ -302,6 +303,60 @@ TEST(SubjectScreenArg, MonitorNumberWindowOrNothing) {
   EXPECT_TRUE(r->windowed);
   EXPECT_FALSE(parse_subject_screen_arg("left", error));
   EXPECT_NE(error.find("'left'"), std::string::npos);
+}
+
+TEST(SubjectScreenPlacement, OneMonitorOpensWindowedUnlessTheOperatorChose) {
+  SubjectScreenLink link;
+  link.monitors = {"eDP-1 (1920x1080, primary)"};
+  // F2 on a one-monitor bench: a window, not a cover over the operator's own window.
+  EXPECT_TRUE(subject_screen_windowed(link));
+  link.monitors.push_back("HDMI-1 (1920x1080)");
+  EXPECT_FALSE(subject_screen_windowed(link));  // two monitors: the second is covered
+  link.monitors.clear();
+  EXPECT_TRUE(subject_screen_windowed(link));  // none seen yet: nothing to cover safely
+  // The operator's choice wins either way.
+  link.monitors = {"eDP-1 (1920x1080, primary)"};
+  link.windowed = false;
+  EXPECT_FALSE(subject_screen_windowed(link));
+  link.monitors.push_back("HDMI-1 (1920x1080)");
+  link.windowed = true;
+  EXPECT_TRUE(subject_screen_windowed(link));
+}
+
+TEST(SubjectScreenPlacement, TheCommandLineChoosesOnlyWhatItNames) {
+  SubjectScreenLink link;
+  link.monitors = {"eDP-1 (1920x1080, primary)"};
+  std::string error;
+  apply_subject_screen_request(link, *parse_subject_screen_arg("", error));
+  EXPECT_TRUE(link.open);
+  EXPECT_FALSE(link.windowed.has_value());
+  EXPECT_TRUE(subject_screen_windowed(link));  // the bench decides: one monitor, a window
+  apply_subject_screen_request(link, *parse_subject_screen_arg("0", error));
+  EXPECT_EQ(link.monitor, 0);
+  EXPECT_FALSE(subject_screen_windowed(link));  // asked to cover monitor 0: it does
+  apply_subject_screen_request(link, *parse_subject_screen_arg("window", error));
+  EXPECT_TRUE(subject_screen_windowed(link));
+}
+
+TEST(SubjectTextScale, FollowsTheWindowBelowTheDesignSize) {
+  EXPECT_FLOAT_EQ(subject_text_scale(1920, 1080), 1.0F);  // never larger than the fonts are made
+  EXPECT_FLOAT_EQ(subject_text_scale(1280, 800), 1.0F);
+  EXPECT_FLOAT_EQ(subject_text_scale(1024, 640), 0.8F);  // the one-monitor window
+  EXPECT_FLOAT_EQ(subject_text_scale(1280, 400), 0.5F);  // the tighter direction decides
+  EXPECT_FLOAT_EQ(subject_text_scale(100, 100), kSubjectMinTextScale);
+}
+
+TEST(SubjectTextScale, ShrinksUntilTheTextFits) {
+  // Text whose height goes with the square of the scale (it wraps into more lines as it grows):
+  // 400 px at scale 1.
+  const auto height_at = [](float s) { return 400.0F * s * s; };
+  EXPECT_FLOAT_EQ(fit_subject_text_scale(1.0F, 500.0F, height_at), 1.0F);  // fits already
+  const float s = fit_subject_text_scale(0.8F, 200.0F, height_at);
+  EXPECT_LE(height_at(s), 200.0F);
+  EXPECT_GT(s / 0.9F, 0.70710678F);  // the largest 10 % step that fits, not smaller
+  EXPECT_NEAR(s, 0.8F * 0.9F * 0.9F, 1e-6);
+  // Nothing fits: the smallest readable scale, not zero.
+  EXPECT_FLOAT_EQ(fit_subject_text_scale(1.0F, 1.0F, height_at), kSubjectMinTextScale);
 }
 
 }  // namespace record_setup_and_subject_view_test
