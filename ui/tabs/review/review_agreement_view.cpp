@@ -39,7 +39,9 @@ std::string group_label(const AgreementGroup& g) {
 void draw_measure_table(const AgreementGroup& g, int& measure) {
   const ImGuiTableFlags flags = ImGuiTableFlags_RowBg | ImGuiTableFlags_BordersInnerV | ImGuiTableFlags_SizingFixedFit |
                                 ImGuiTableFlags_ScrollY;
-  const float height = ImGui::GetTextLineHeightWithSpacing() * 12.6F;
+  // Every measure's row and the header, no more: the plot below takes what is left.
+  const float row_px = ImGui::GetFontSize() + 2.0F * ImGui::GetStyle().CellPadding.y;
+  const float height = row_px * static_cast<float>(g.measures.size() + 1) + 4.0F;
   if (!ImGui::BeginTable("agreement", 8, flags, ImVec2(0, height))) return;
   ImGui::TableSetupScrollFreeze(0, 1);
   ImGui::TableSetupColumn("measure");
@@ -209,14 +211,15 @@ void ReviewAgreementView::draw(ReviewState& state, const PictureRenderer& render
   ImGui::Spacing();
   // The selected measure's Bland-Altman plot beside the visibility map.
   const float width = ImGui::GetContentRegionAvail().x;
-  const float height = std::max(200.0F, ImGui::GetContentRegionAvail().y - 4);
+  const float height = std::max(160.0F, ImGui::GetContentRegionAvail().y - 4);
   ImGui::BeginChild("bland_altman", ImVec2(width * 0.5F, height), false);
   if (!group.measures.empty()) {
     const figures::Figure figure = bland_altman_figure(group, group.measures[static_cast<size_t>(measure_)]);
     png_.draw("ba_png", renderer, figure_stem("bland-altman-" + group.layout + "-" + group.pose + "-" +
                                               group.measures[static_cast<size_t>(measure_)].measure.name),
               [&figure] { draw_figure_filling("ba", figure); });
-    draw_figure_view("ba", figure, std::max(120.0F, height - 7.8F * ImGui::GetTextLineHeightWithSpacing()));
+    ImGui::SameLine();  // the figure's title beside its button: a line more for the plot
+    draw_figure_view("ba", figure, std::max(90.0F, height - 6.6F * ImGui::GetTextLineHeightWithSpacing()));
   }
   ImGui::EndChild();
   ImGui::SameLine();
