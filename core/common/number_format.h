@@ -8,4 +8,10 @@ namespace lmc {
 // Python-style "%f"/"%.2f": NaN → "nan", ±inf → "inf"/"-inf".
 std::string format_fixed(double v, int decimals);
 
+// A number for a person to read (tables, plot labels, the workbench): fixed-point like
+// format_fixed, with a leading "+" on positive values when `plus_sign` (a difference), and never
+// a negative zero — -0.004 with 2 decimals reads "0.00", not "-0.00" (a reader takes the sign for
+// a direction the value does not have). A value that rounds to zero has no sign at all.
+std::string format_readable(double v, int decimals, bool plus_sign = false);
+
 }  // namespace lmc

@@ -6,6 +6,7 @@
 #include <map>
 #include <set>
 
+#include "core/common/number_format.h"
 #include "core/hand/hand_frame.h"
 
 namespace lmc {
@@ -27,9 +28,7 @@ figures::Series time_series(const std::string& name, const std::vector<double>& 
 
 std::string value_text(double v, const std::string& unit) {
   if (!std::isfinite(v)) return "n/a";
-  char buf[48];
-  std::snprintf(buf, sizeof buf, "%+.1f %s", v, unit.c_str());
-  return buf;
+  return format_readable(v, 1, true) + " " + unit;
 }
 
 }  // namespace

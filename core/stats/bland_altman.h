@@ -38,7 +38,7 @@ struct BlandAltmanResult {
   // repeated form only: sqrt(s²_db), 0 when its estimate (MS_b − MS_w)/c is negative
   double between_subject_sd = kNaN;
   double loa_multiplier = kNaN;  // z_{0.975}
-  std::string reason;            // why the numbers are NaN; empty when they are valid
+  std::string reason;            // why (some of) the numbers are NaN; empty when all are valid
   bool ok() const { return reason.empty(); }
 };
 

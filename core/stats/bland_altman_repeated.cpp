@@ -54,6 +54,22 @@ BlandAltmanResult bland_altman_repeated(std::span<const PairedObservation> obser
     ++r.n_used;
   }
   r.n_subjects = groups.size();
+  if (groups.size() == 1) {
+    // One subject: the bias (the mean difference over its trials) and the spread between its
+    // trials need no second subject; the limits and every CI do, since subjects are the unit of
+    // replication and one subject says nothing about how the bias varies between subjects.
+    double sum = 0.0;
+    for (const double d : groups[0]) sum += d;
+    r.bias = sum / static_cast<double>(r.n_used);
+    if (r.n_used >= 2) {
+      double ss = 0.0;
+      for (const double d : groups[0]) ss += (d - r.bias) * (d - r.bias);
+      r.within_subject_sd = std::sqrt(ss / static_cast<double>(r.n_used - 1));
+    }
+    r.reason = "the limits of agreement and the CIs need at least 2 subjects with complete pairs (1 subject, " +
+               std::to_string(r.n_used) + " pairs usable); the bias is the mean difference over its trials";
+    return r;
+  }
   if (r.n_used < 2 || groups.size() < 2) {
     r.reason = "needs at least 2 subjects with complete pairs (" + std::to_string(groups.size()) +
                " subjects, " + std::to_string(r.n_used) + " pairs usable)";

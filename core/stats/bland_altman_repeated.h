@@ -44,7 +44,9 @@ struct PairedObservation {
 };
 
 // Observations with a missing value on either side are skipped and counted; a subject with no
-// complete observation disappears. Needs ≥ 2 subjects (NaN and a reason otherwise).
+// complete observation disappears. Needs ≥ 2 subjects for the SD, the limits and every CI (NaN
+// and a reason otherwise); with one subject the bias (the mean of its differences) and the
+// within-subject SD are still given, with the reason saying what is missing.
 BlandAltmanResult bland_altman_repeated(std::span<const PairedObservation> observations);
 
 }  // namespace lmc::stats

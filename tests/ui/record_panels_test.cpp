@@ -2,10 +2,11 @@
 // go through ImGuiIO to the real panels, which are drawn without a renderer.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
-#include <thread>
 #include <filesystem>
+#include <thread>
 
 #include "tests/support/scratch_dir.h"
 #include "tests/ui/headless_imgui.h"
@@ -140,6 +141,54 @@ TEST(RecordTrialPanel, AfterCloseAndReopenNothingOfTheLastVerdictIsDrawnAgainstA
   EXPECT_NO_THROW(gui.frame([&] { EXPECT_EQ(draw_record_verdict_panel(model, note), VerdictAction::kNone); }));
   model.close();
   fs::remove_all(dir);
+}
+
+// The lowest point drawn in this colour (0 when nothing was).
+float lowest_y_of_colour(ImU32 colour) {
+  float y = 0.0F;
+  const ImDrawData* data = ImGui::GetDrawData();
+  for (int l = 0; l < data->CmdListsCount; ++l)
+    for (const ImDrawVert& v : data->CmdLists[l]->VtxBuffer)
+      if (v.col == colour) y = std::max(y, v.pos.y);
+  return y;
+}
+
+TEST(SubjectScreenPanel, TheCuesLastLineIsInsideAOneMonitorWindow) {
+  // The 1024 × 640 window of a one-monitor bench, with the subject window's font sizes (28, 56
+  // and 150 px; here ImGui's own font rasterised at those sizes) and the study's longest cue.
+  HeadlessImGui gui(1024, 640);
+  ImGuiIO& io = ImGui::GetIO();
+  const auto add_font = [&io](float size_px) {
+    ImFontConfig config;
+    config.SizePixels = size_px;
+    return io.Fonts->AddFontDefault(&config);
+  };
+  SubjectFonts fonts;
+  fonts.normal = add_font(28);
+  fonts.large = add_font(56);
+  fonts.huge = add_font(150);
+  unsigned char* pixels = nullptr;
+  int w = 0, h = 0;
+  io.Fonts->GetTexDataAsRGBA32(&pixels, &w, &h);
+  session::TrialType type;
+  type.duration_s = 5;
+  type.subject_cue = "Bend your index finger fully and straighten it again, slowly, until the circle disappears.";
+  session::ProtocolPose pose;
+  pose.cue = "palm facing down";
+  SubjectViewInputs in;
+  in.has_session = true;
+  in.type = &type;
+  in.pose = &pose;
+  in.sim_motion = "horizontal/index";
+  in.phase = devices::TrialPhase::kRecording;
+  const SubjectView recording = build_subject_view(in, 0);
+  gui.frame([&] { draw_subject_screen(recording, fonts); });
+  const float cue_bottom = lowest_y_of_colour(IM_COL32(255, 230, 130, 255));
+  const float hand_bottom = lowest_y_of_colour(IM_COL32(130, 130, 135, 255));
+  EXPECT_GT(cue_bottom, 320.0F);  // drawn, below the circle
+  EXPECT_LE(cue_bottom, 640.0F);
+  EXPECT_GT(hand_bottom, cue_bottom);  // the hand line follows the cue, inside the window too
+  EXPECT_LE(hand_bottom, 640.0F);
 }
 
 }  // namespace record_panels_test

@@ -1,6 +1,7 @@
 // The Record tab's set-up form, resume notice, subject screen view and motion pictogram, without
 // ImGui: each form field refused by the core rule it mirrors, the spec built like `lmc session
 // new`'s, the plain notice of an interrupted session, and what the subject sees at each stage.
+#include <chrono>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -15,6 +16,7 @@
 #include "ui/model/record/record_setup_form.h"
 #include "ui/model/record/resume_notice.h"
 #include "ui/model/record/subject_screen_link.h"
+#include "ui/model/record/subject_text_scale.h"
 #include "ui/model/record/subject_view.h"
 
 namespace lmc::ui {
@@ -106,6 +108,39 @@ TEST(RecordSetupForm, ListsSessionsWithTheirProgressNewestFirst) {
   EXPECT_EQ(listed[0].accepted, 0);
   EXPECT_EQ(listed[0].interrupted, 1);
   EXPECT_TRUE(list_sessions(root / "missing").empty());
+  fs::remove_all(root);
+}
+
+TEST(RecordSetupForm, ListsSessionsOneFolderDownGroupedByFolder) {
+  // sessions/S03, sessions/demo/S01 and S02 (the demo sessions), sessions/demo/notes (not a
+  // session) and sessions/old/2024/S04 (two levels down: not looked at).
+  const fs::path root = test::fresh_test_dir("setup_list_nested");
+  const auto make = [](const fs::path& dir, const std::string& subject) {
+    session::NewSessionSpec spec;
+    spec.subject.subject_id = subject;
+    spec.protocol = "quick";
+    (void)session::SessionFolder::create(dir, spec);
+  };
+  make(root / "S03", "S03");
+  make(root / "demo" / "S01", "S01");
+  make(root / "demo" / "S02", "S02");
+  make(root / "old" / "2024" / "S04", "S04");
+  fs::create_directories(root / "demo" / "notes");
+  // S01's journal written last: it comes first in its folder.
+  const auto now = fs::file_time_type::clock::now();
+  fs::last_write_time(root / "demo" / "S02" / session::kJournalFile, now - std::chrono::hours(2));
+  fs::last_write_time(root / "demo" / "S01" / session::kJournalFile, now - std::chrono::hours(1));
+  const auto listed = list_sessions(root);
+  ASSERT_EQ(listed.size(), 3U);
+  EXPECT_EQ(listed[0].subject, "S03");
+  EXPECT_EQ(listed[0].group, "");
+  EXPECT_EQ(listed[1].subject, "S01");
+  EXPECT_EQ(listed[1].group, "demo");
+  EXPECT_EQ(listed[1].dir, root / "demo" / "S01");
+  EXPECT_EQ(listed[2].subject, "S02");
+  EXPECT_EQ(listed[2].group, "demo");
+  EXPECT_EQ(listed[2].total, 2);
+  EXPECT_TRUE(listed[2].problem.empty()) << listed[2].problem;
   fs::remove_all(root);
 }
 
@@ -268,6 +303,60 @@ TEST(SubjectScreenArg, MonitorNumberWindowOrNothing) {
   EXPECT_TRUE(r->windowed);
   EXPECT_FALSE(parse_subject_screen_arg("left", error));
   EXPECT_NE(error.find("'left'"), std::string::npos);
+}
+
+TEST(SubjectScreenPlacement, OneMonitorOpensWindowedUnlessTheOperatorChose) {
+  SubjectScreenLink link;
+  link.monitors = {"eDP-1 (1920x1080, primary)"};
+  // F2 on a one-monitor bench: a window, not a cover over the operator's own window.
+  EXPECT_TRUE(subject_screen_windowed(link));
+  link.monitors.push_back("HDMI-1 (1920x1080)");
+  EXPECT_FALSE(subject_screen_windowed(link));  // two monitors: the second is covered
+  link.monitors.clear();
+  EXPECT_TRUE(subject_screen_windowed(link));  // none seen yet: nothing to cover safely
+  // The operator's choice wins either way.
+  link.monitors = {"eDP-1 (1920x1080, primary)"};
+  link.windowed = false;
+  EXPECT_FALSE(subject_screen_windowed(link));
+  link.monitors.push_back("HDMI-1 (1920x1080)");
+  link.windowed = true;
+  EXPECT_TRUE(subject_screen_windowed(link));
+}
+
+TEST(SubjectScreenPlacement, TheCommandLineChoosesOnlyWhatItNames) {
+  SubjectScreenLink link;
+  link.monitors = {"eDP-1 (1920x1080, primary)"};
+  std::string error;
+  apply_subject_screen_request(link, *parse_subject_screen_arg("", error));
+  EXPECT_TRUE(link.open);
+  EXPECT_FALSE(link.windowed.has_value());
+  EXPECT_TRUE(subject_screen_windowed(link));  // the bench decides: one monitor, a window
+  apply_subject_screen_request(link, *parse_subject_screen_arg("0", error));
+  EXPECT_EQ(link.monitor, 0);
+  EXPECT_FALSE(subject_screen_windowed(link));  // asked to cover monitor 0: it does
+  apply_subject_screen_request(link, *parse_subject_screen_arg("window", error));
+  EXPECT_TRUE(subject_screen_windowed(link));
+}
+
+TEST(SubjectTextScale, FollowsTheWindowBelowTheDesignSize) {
+  EXPECT_FLOAT_EQ(subject_text_scale(1920, 1080), 1.0F);  // never larger than the fonts are made
+  EXPECT_FLOAT_EQ(subject_text_scale(1280, 800), 1.0F);
+  EXPECT_FLOAT_EQ(subject_text_scale(1024, 640), 0.8F);  // the one-monitor window
+  EXPECT_FLOAT_EQ(subject_text_scale(1280, 400), 0.5F);  // the tighter direction decides
+  EXPECT_FLOAT_EQ(subject_text_scale(100, 100), kSubjectMinTextScale);
+}
+
+TEST(SubjectTextScale, ShrinksUntilTheTextFits) {
+  // Text whose height goes with the square of the scale (it wraps into more lines as it grows):
+  // 400 px at scale 1.
+  const auto height_at = [](float s) { return 400.0F * s * s; };
+  EXPECT_FLOAT_EQ(fit_subject_text_scale(1.0F, 500.0F, height_at), 1.0F);  // fits already
+  const float s = fit_subject_text_scale(0.8F, 200.0F, height_at);
+  EXPECT_LE(height_at(s), 200.0F);
+  EXPECT_GT(s / 0.9F, 0.70710678F);  // the largest 10 % step that fits, not smaller
+  EXPECT_NEAR(s, 0.8F * 0.9F * 0.9F, 1e-6);
+  // Nothing fits: the smallest readable scale, not zero.
+  EXPECT_FLOAT_EQ(fit_subject_text_scale(1.0F, 1.0F, height_at), kSubjectMinTextScale);
 }
 
 }  // namespace record_setup_and_subject_view_test

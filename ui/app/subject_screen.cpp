@@ -19,13 +19,14 @@ void SubjectScreen::frame(SubjectScreenLink& link, const std::string& png_path) 
     link.open = false;
   }
   const bool hidden = hidden_width_ > 0;
+  const bool windowed = subject_screen_windowed(link);
   if (window_ && (!link.open || (!hidden && (window_->options().monitor != link.monitor ||
-                                             window_->options().windowed != link.windowed))))
+                                             window_->options().windowed != windowed))))
     window_.reset();
   if (link.open && !window_) {
     SubjectWindowOptions options;
     options.monitor = link.monitor;
-    options.windowed = link.windowed;
+    options.windowed = windowed;
     options.visible = !hidden;
     options.width = hidden_width_;
     options.height = hidden_height_;

@@ -18,11 +18,7 @@ WorkbenchShell::WorkbenchShell(ShellStartup startup) : recent_files_path_(std::m
     status_trace_.open(trace, std::ios::app);
   context_->record_startup() = std::move(startup.record);
   context_->review_requests() = std::move(startup.review);
-  if (startup.subject_screen) {
-    context_->subject_screen().open = true;
-    context_->subject_screen().monitor = startup.subject_screen->monitor;
-    context_->subject_screen().windowed = startup.subject_screen->windowed;
-  }
+  if (startup.subject_screen) apply_subject_screen_request(context_->subject_screen(), *startup.subject_screen);
   if (!recent_files_path_.empty()) recent_ = RecentFiles::load(recent_files_path_);
   for (const auto& info : tab_registry()) {
     // Each tab reports under its own id: its messages stay with it when another tab is shown.

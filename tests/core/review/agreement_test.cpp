@@ -167,6 +167,30 @@ TEST(ReviewAgreement, SeveralTrialsPerSubjectUseTheRepeatedForm) {
   EXPECT_NEAR(rom.bland_altman.sd_difference, 0.0, 1e-12);
 }
 
+TEST(ReviewAgreement, OneSubjectHasBiasRmseAndRButNoLimits) {
+  // S1's three trials, differences 1, 3, 5: what needs no second subject is there.
+  const std::vector<AgreementTrial> trials = {paired("S1", "initial", "horizontal", 51, 50),
+                                              paired("S1", "initial", "horizontal", 63, 60),
+                                              paired("S1", "initial", "horizontal", 70, 65)};
+  const AgreementTable t = agreement_table(trials);
+  const MeasureAgreement& m = find_group(t, "all", "all").measures[0];
+  EXPECT_EQ(m.n_trials, 3u);
+  EXPECT_EQ(m.n_subjects, 1u);
+  EXPECT_NEAR(m.bland_altman.bias, 3.0, 1e-12);
+  EXPECT_NEAR(m.differences.rmse, std::sqrt(35.0 / 3.0), 1e-12);
+  const std::vector<double> lmc = {51, 63, 70}, vicon = {50, 60, 65};
+  EXPECT_NEAR(m.pearson.r, stats::pearson(lmc, vicon).r, 1e-12);
+  // The limits need the spread between subjects: missing, and the reason says so.
+  EXPECT_TRUE(std::isnan(m.bland_altman.loa_low));
+  EXPECT_TRUE(std::isnan(m.bland_altman.loa_high));
+  EXPECT_TRUE(std::isnan(m.bland_altman.bias_ci.low));
+  EXPECT_NE(m.bland_altman.reason.find("limits of agreement"), std::string::npos) << m.bland_altman.reason;
+  // The CSV has the bias and leaves the limits empty.
+  const auto rows = csv_rows(agreement_csv(t));
+  EXPECT_EQ(column(rows, 1, "ba_bias").substr(0, 3), "3.0");
+  EXPECT_EQ(column(rows, 1, "ba_loa_low"), "");
+}
+
 TEST(ReviewAgreement, OneTrialPerSubjectUsesTheSimpleForm) {
   const AgreementTable t = agreement_table(study_trials());
   const MeasureAgreement& m = find_group(t, "optimized", "vertical").measures[2];  // middle length

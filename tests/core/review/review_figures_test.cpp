@@ -48,6 +48,22 @@ TEST(ReviewFigures, BlandAltmanPointsBySubjectWithTheTablesLines) {
   EXPECT_EQ(none.notes.back(), "No limits: needs two subjects");
 }
 
+TEST(ReviewFigures, BlandAltmanLabelsNeverShowANegativeZero) {
+  AgreementGroup g;
+  g.layout = "all";
+  g.pose = "all";
+  MeasureAgreement m;
+  m.measure.unit = "mm";
+  m.bland_altman.bias = 0.3;
+  m.bland_altman.loa_low = -0.04;  // rounds to zero at one decimal
+  m.bland_altman.loa_high = 0.64;
+  const figures::Figure f = bland_altman_figure(g, m);
+  ASSERT_EQ(f.references.size(), 3u);
+  EXPECT_EQ(f.references[0].label, "bias +0.3 mm");
+  EXPECT_EQ(f.references[1].label, "lower 0.0 mm");
+  EXPECT_EQ(f.references[2].label, "upper +0.6 mm");
+}
+
 TEST(ReviewFigures, ATrialIsElevenPanelsOfFusedAgainstViconWithGapsKept) {
   TrialSeries s;
   s.trial = "Naiv_Index101";

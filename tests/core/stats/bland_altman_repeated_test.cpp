@@ -115,15 +115,22 @@ TEST(StatsBlandAltmanRepeated, UnequalTrialsFollowTheAnovaFormByHand) {
   EXPECT_LT(bland_altman(a, b).sd_difference, r.sd_difference);
 }
 
-TEST(StatsBlandAltmanRepeated, OneSubjectOrNoDataIsNaNWithAReason) {
+TEST(StatsBlandAltmanRepeated, OneSubjectGivesTheBiasButNoLimitsAndNoDataIsNaN) {
   const std::vector<PairedObservation> one = {
       {"A", 1, 0}, {"A", 2, 0}, {"A", 4, 0}, {"B", kMissing, 1}};
   const BlandAltmanResult r = bland_altman_repeated(one);
   EXPECT_FALSE(r.ok());
   EXPECT_EQ(r.n_subjects, 1u);
   EXPECT_EQ(r.n_skipped, 1u);
-  EXPECT_TRUE(std::isnan(r.bias));
+  // Differences 1, 2, 4: the bias is their mean, the within-subject SD their sample SD.
+  EXPECT_NEAR(r.bias, 7.0 / 3.0, 1e-12);
+  EXPECT_NEAR(r.within_subject_sd, std::sqrt(7.0 / 3.0), 1e-12);
+  EXPECT_TRUE(std::isnan(r.sd_difference));
+  EXPECT_TRUE(std::isnan(r.loa_low));
+  EXPECT_TRUE(std::isnan(r.loa_high));
+  EXPECT_TRUE(std::isnan(r.bias_ci.low));
   EXPECT_TRUE(std::isnan(r.loa_low_ci.low));
+  EXPECT_NE(r.reason.find("need at least 2 subjects"), std::string::npos) << r.reason;
   const BlandAltmanResult none = bland_altman_repeated(std::vector<PairedObservation>{});
   EXPECT_FALSE(none.ok());
   EXPECT_TRUE(nlohmann::json::parse(nlohmann::json(none).dump()).at("sd_difference").is_null());

@@ -119,13 +119,13 @@ SetupFormProblems check_setup_form(const RecordSetupForm& f) {
 std::vector<SessionListing> list_sessions(const fs::path& root) {
   std::vector<SessionListing> out;
   std::error_code ec;
-  for (const auto& e : fs::directory_iterator(root, ec)) {
-    if (!e.is_directory(ec) || !session::is_session_folder(e.path())) continue;
+  const auto add = [&out, &ec](const fs::path& dir, const std::string& group) {
     SessionListing s;
-    s.dir = e.path();
-    s.journal_written = fs::last_write_time(e.path() / session::kJournalFile, ec);
+    s.dir = dir;
+    s.group = group;
+    s.journal_written = fs::last_write_time(dir / session::kJournalFile, ec);
     try {
-      const session::SessionState st = session::read_session_state(e.path());
+      const session::SessionState st = session::read_session_state(dir);
       s.subject = st.subject().subject_id;
       s.protocol = st.protocol.name;
       s.total = static_cast<int>(st.trials.size());
@@ -135,8 +135,22 @@ std::vector<SessionListing> list_sessions(const fs::path& root) {
       s.problem = ex.what();
     }
     out.push_back(std::move(s));
+  };
+  for (const auto& e : fs::directory_iterator(root, ec)) {
+    if (!e.is_directory(ec)) continue;
+    if (session::is_session_folder(e.path())) {
+      add(e.path(), "");
+      continue;
+    }
+    // One level only: deeper folders are more likely to be copies, exports or caches than sessions.
+    std::error_code inner_ec;
+    for (const auto& inner : fs::directory_iterator(e.path(), inner_ec)) {
+      if (inner.is_directory(inner_ec) && session::is_session_folder(inner.path()))
+        add(inner.path(), e.path().filename().string());
+    }
   }
   std::sort(out.begin(), out.end(), [](const SessionListing& a, const SessionListing& b) {
+    if (a.group != b.group) return a.group < b.group;  // "" (directly under root) sorts first
     return a.journal_written > b.journal_written;
   });
   return out;

@@ -62,13 +62,18 @@ SetupFormProblems check_setup_form(const RecordSetupForm& form);
 // A session folder found under a sessions directory, for the "resume" list.
 struct SessionListing {
   std::filesystem::path dir;
+  // The folder between the sessions directory and the session ("demo" for sessions/demo/S01);
+  // empty for a session directly under it.
+  std::string group;
   std::string subject, protocol;
   int accepted = 0, total = 0, interrupted = 0;
   std::string problem;  // set when the folder could not be read (the rest is empty)
   std::filesystem::file_time_type journal_written{};
 };
-// Every subject session directly under `root`, the one whose journal was written last first.
-// Read-only: nothing is locked or repaired.
+// Every subject session under `root`: directly under it, and one level down in a folder that is
+// not a session itself (sessions/demo/S01 — labs group sessions by study or cohort). Grouped by
+// that folder: the sessions directly under `root` first, then each folder by name; within a
+// group, the one whose journal was written last first. Read-only: nothing is locked or repaired.
 std::vector<SessionListing> list_sessions(const std::filesystem::path& root);
 
 }  // namespace lmc::ui

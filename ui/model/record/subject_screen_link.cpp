@@ -21,4 +21,21 @@ std::optional<SubjectScreenRequest> parse_subject_screen_arg(const std::string& 
   return r;
 }
 
+void apply_subject_screen_request(SubjectScreenLink& link, const SubjectScreenRequest& request) {
+  link.open = true;
+  link.monitor = request.monitor;
+  if (request.windowed) {
+    link.windowed = true;
+  } else if (request.monitor >= 0) {
+    link.windowed = false;
+  } else {
+    link.windowed.reset();
+  }
+}
+
+bool subject_screen_windowed(const SubjectScreenLink& link) {
+  if (link.windowed) return *link.windowed;
+  return link.monitors.size() < 2;
+}
+
 }  // namespace lmc::ui

@@ -16,7 +16,9 @@ struct SubjectScreenLink {
   SubjectView view;
   bool open = false;
   int monitor = -1;  // index into monitors; -1: the last (on a two-monitor bench, not the operator's)
-  bool windowed = false;
+  // The operator's choice of a plain window over covering the monitor; unset until they make one,
+  // and then the bench decides (subject_screen_windowed).
+  std::optional<bool> windowed;
   // ---- set by the window's side ----
   std::vector<std::string> monitors;
   bool shown = false;    // a window is up and drawing
@@ -30,5 +32,15 @@ struct SubjectScreenRequest {
   bool windowed = false;
 };
 std::optional<SubjectScreenRequest> parse_subject_screen_arg(const std::string& arg, std::string& error);
+
+// Opens the link as the command line asked: "window" chooses a window, a monitor number chooses
+// to cover that monitor, neither leaves the choice to the bench.
+void apply_subject_screen_request(SubjectScreenLink& link, const SubjectScreenRequest& request);
+
+// Whether the subject screen is a plain window rather than covering its monitor: the operator's
+// choice when made; otherwise a window on a bench with one monitor (or none seen yet), where
+// covering the only monitor would hide the operator's own window, and the whole monitor on a
+// bench with two or more.
+bool subject_screen_windowed(const SubjectScreenLink& link);
 
 }  // namespace lmc::ui

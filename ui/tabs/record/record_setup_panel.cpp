@@ -90,9 +90,25 @@ SetupAction draw_record_setup_panel(RecordSetupForm& f, const SetupFormProblems&
   ImGui::SameLine();
   if (ImGui::SmallButton("Refresh list")) action = SetupAction::kRefreshSessions;
   if (sessions.empty()) ImGui::TextDisabled("No sessions in the sessions folder yet.");
-  const float list_h = std::min(160.0F, 8.0F + ImGui::GetTextLineHeightWithSpacing() * static_cast<float>(sessions.size()));
+  size_t lines = sessions.size();
+  for (size_t i = 0; i < sessions.size(); ++i) {
+    if (!sessions[i].group.empty() && (i == 0 || sessions[i - 1].group != sessions[i].group)) ++lines;  // its heading
+  }
+  const float list_h =
+      std::min(160.0F, 2.0F * ImGui::GetStyle().WindowPadding.y + ImGui::GetTextLineHeightWithSpacing() * static_cast<float>(lines));
   if (!sessions.empty() && ImGui::BeginChild("sessions", ImVec2(0, list_h), true)) {
+    const std::string* group = nullptr;
     for (const auto& s : sessions) {
+      // The list comes grouped (list_sessions): a heading where a folder's sessions begin, and its
+      // sessions indented under it.
+      if (group == nullptr || *group != s.group) {
+        if (group != nullptr && !group->empty()) ImGui::Unindent();
+        group = &s.group;
+        if (!group->empty()) {
+          ImGui::TextDisabled("%s/", group->c_str());
+          ImGui::Indent();
+        }
+      }
       char label[700];
       if (!s.problem.empty())
         std::snprintf(label, sizeof label, "%s   cannot be read: %s", s.dir.filename().string().c_str(), s.problem.c_str());
@@ -104,6 +120,7 @@ SetupAction draw_record_setup_panel(RecordSetupForm& f, const SetupFormProblems&
         std::snprintf(f.open_folder, sizeof f.open_folder, "%s", s.dir.string().c_str());
       if (ImGui::IsItemHovered() && ImGui::IsMouseDoubleClicked(ImGuiMouseButton_Left)) action = SetupAction::kOpen;
     }
+    if (group != nullptr && !group->empty()) ImGui::Unindent();
   }
   if (!sessions.empty()) ImGui::EndChild();
   if (!error.empty()) {

@@ -4,13 +4,19 @@
 
 #include <algorithm>
 
+#include "ui/model/record/subject_text_scale.h"
 #include "ui/widgets/hand_pictogram.h"
 
 namespace lmc::ui {
 namespace {
 
-void text_at(ImFont* font, ImVec2 pos, ImU32 colour, const std::string& text, float wrap_width = 0.0F) {
-  ImGui::GetWindowDrawList()->AddText(font, font->FontSize, pos, colour, text.c_str(), nullptr, wrap_width);
+// Text in `font` drawn at `scale` times its size (subject_text_scale.h: the window decides).
+void text_at(ImFont* font, float scale, ImVec2 pos, ImU32 colour, const std::string& text, float wrap_width = 0.0F) {
+  ImGui::GetWindowDrawList()->AddText(font, font->FontSize * scale, pos, colour, text.c_str(), nullptr, wrap_width);
+}
+
+float text_height(ImFont* font, float scale, const std::string& text, float wrap_width) {
+  return font->CalcTextSizeA(font->FontSize * scale, 1e9F, wrap_width, text.c_str()).y;
 }
 
 }  // namespace
@@ -25,16 +31,23 @@ void draw_subject_screen(const SubjectView& v, const SubjectFonts& fonts) {
                    ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoBringToFrontOnFocus);
   ImGui::PopStyleColor();
   const float w = size.x, h = size.y;
+  const float scale = subject_text_scale(w, h);
+  const float margin = 0.04F * h;  // kept free below the last line
   const ImU32 white = IM_COL32(235, 235, 235, 255);
   const ImU32 grey = IM_COL32(130, 130, 135, 255);
   if (v.stage == SubjectStage::kNoSession) {
-    text_at(fonts.normal, ImVec2(0.05F * w, 0.45F * h), grey, "Subject screen: waiting for the operator to open a session.");
+    text_at(fonts.normal, scale, ImVec2(0.05F * w, 0.45F * h), grey, "Subject screen: waiting for the operator to open a session.",
+            0.90F * w);
     ImGui::End();
     return;
   }
   if (v.stage == SubjectStage::kDone) {
-    text_at(fonts.huge, ImVec2(0.06F * w, 0.25F * h), white, v.headline);
-    text_at(fonts.large, ImVec2(0.06F * w, 0.25F * h + fonts.huge->FontSize * 1.1F), white, v.cue, 0.88F * w);
+    const float top = 0.25F * h;
+    const float s = fit_subject_text_scale(scale, h - margin - top, [&](float k) {
+      return fonts.huge->FontSize * k * 1.1F + text_height(fonts.large, k, v.cue, 0.88F * w);
+    });
+    text_at(fonts.huge, s, ImVec2(0.06F * w, top), white, v.headline);
+    text_at(fonts.large, s, ImVec2(0.06F * w, top + fonts.huge->FontSize * s * 1.1F), white, v.cue, 0.88F * w);
     ImGui::End();
     return;
   }
@@ -48,21 +61,31 @@ void draw_subject_screen(const SubjectView& v, const SubjectFonts& fonts) {
     dl->AddCircle(c, r, grey, 96, 6.0F);
   }
   if (v.stage == SubjectStage::kCountdown) {
-    const ImVec2 t = fonts.huge->CalcTextSizeA(fonts.huge->FontSize, 1e9F, 0.0F, v.headline.c_str());
-    text_at(fonts.huge, ImVec2(c.x - 0.5F * t.x, c.y - 0.5F * t.y), white, v.headline);
+    const float size_px = fonts.huge->FontSize * scale;
+    const ImVec2 t = fonts.huge->CalcTextSizeA(size_px, 1e9F, 0.0F, v.headline.c_str());
+    text_at(fonts.huge, scale, ImVec2(c.x - 0.5F * t.x, c.y - 0.5F * t.y), white, v.headline);
   }
   const float right_of_circle = c.x + r + 0.04F * w;
+  const float large_px = fonts.large->FontSize * scale;
   const std::string headline = v.stage == SubjectStage::kCountdown ? std::string("Starting") : v.headline;
-  text_at(fonts.large, ImVec2(right_of_circle, c.y - fonts.large->FontSize), v.red_circle ? IM_COL32(255, 80, 70, 255) : white,
-          headline);
-  if (!v.time_text.empty()) text_at(fonts.large, ImVec2(right_of_circle, c.y + 0.1F * fonts.large->FontSize), white, v.time_text);
-  // The cue on the left, the pictogram on the right.
+  text_at(fonts.large, scale, ImVec2(right_of_circle, c.y - large_px), v.red_circle ? IM_COL32(255, 80, 70, 255) : white, headline);
+  if (!v.time_text.empty()) text_at(fonts.large, scale, ImVec2(right_of_circle, c.y + 0.1F * large_px), white, v.time_text);
+  // The cue on the left, the pictogram on the right; the cue and the hand line below it shrink
+  // together until the last line is inside the window.
   const float top = c.y + r + 0.06F * h;
   const float cue_width = v.pictogram ? 0.50F * w : 0.90F * w;
-  text_at(fonts.large, ImVec2(0.05F * w, top), IM_COL32(255, 230, 130, 255), v.cue, cue_width);
-  const ImVec2 cue_size = fonts.large->CalcTextSizeA(fonts.large->FontSize, 1e9F, cue_width, v.cue.c_str());
-  if (!v.pose_cue.empty())
-    text_at(fonts.normal, ImVec2(0.05F * w, top + cue_size.y + 0.03F * h), grey, "Hand: " + v.pose_cue, cue_width);
+  const std::string pose_line = v.pose_cue.empty() ? std::string() : "Hand: " + v.pose_cue;
+  const auto cue_block_height = [&](float k) {
+    float y = text_height(fonts.large, k, v.cue, cue_width);
+    if (!pose_line.empty()) y += 0.03F * h + text_height(fonts.normal, k, pose_line, cue_width);
+    return y;
+  };
+  const float cue_scale = fit_subject_text_scale(scale, h - margin - top, cue_block_height);
+  text_at(fonts.large, cue_scale, ImVec2(0.05F * w, top), IM_COL32(255, 230, 130, 255), v.cue, cue_width);
+  if (!pose_line.empty()) {
+    const float cue_h = text_height(fonts.large, cue_scale, v.cue, cue_width);
+    text_at(fonts.normal, cue_scale, ImVec2(0.05F * w, top + cue_h + 0.03F * h), grey, pose_line, cue_width);
+  }
   if (v.pictogram) {
     const float px = 0.58F * w, py = 0.30F * h;
     ImGui::SetCursorScreenPos(ImVec2(px, py));

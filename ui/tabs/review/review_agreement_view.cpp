@@ -9,6 +9,7 @@
 #include <set>
 #include <string>
 
+#include "core/common/number_format.h"
 #include "core/common/paths.h"
 #include "core/review/review_figures.h"
 #include "ui/scene/colour_maps.h"
@@ -20,13 +21,13 @@ namespace {
 
 std::string num(double v, int decimals, bool signed_value = false) {
   if (!std::isfinite(v)) return "-";
-  char buf[48];
-  std::snprintf(buf, sizeof buf, signed_value ? "%+.*f" : "%.*f", decimals, v);
-  return buf;
+  return format_readable(v, decimals, signed_value);
 }
 
 std::string with_ci(double v, const stats::Interval& ci, int decimals, bool signed_value = false) {
   if (!std::isfinite(v)) return "-";
+  // One subject gives a bias but no interval for it: the value alone, the tooltip says why.
+  if (!std::isfinite(ci.low) || !std::isfinite(ci.high)) return num(v, decimals, signed_value) + "  [no CI]";
   return num(v, decimals, signed_value) + "  [" + num(ci.low, decimals, signed_value) + ", " + num(ci.high, decimals, signed_value) + "]";
 }
 
@@ -38,7 +39,9 @@ std::string group_label(const AgreementGroup& g) {
 void draw_measure_table(const AgreementGroup& g, int& measure) {
   const ImGuiTableFlags flags = ImGuiTableFlags_RowBg | ImGuiTableFlags_BordersInnerV | ImGuiTableFlags_SizingFixedFit |
                                 ImGuiTableFlags_ScrollY;
-  const float height = ImGui::GetTextLineHeightWithSpacing() * 12.6F;
+  // Every measure's row and the header, no more: the plot below takes what is left.
+  const float row_px = ImGui::GetFontSize() + 2.0F * ImGui::GetStyle().CellPadding.y;
+  const float height = row_px * static_cast<float>(g.measures.size() + 1) + 4.0F;
   if (!ImGui::BeginTable("agreement", 8, flags, ImVec2(0, height))) return;
   ImGui::TableSetupScrollFreeze(0, 1);
   ImGui::TableSetupColumn("measure");
@@ -73,18 +76,19 @@ void draw_measure_table(const AgreementGroup& g, int& measure) {
     const int d = 1;  // tenths of a mm or a degree: finer than either system measures
     ImGui::TableNextColumn();
     ImGui::Text("%zu (%zu)", a.n_trials, a.n_subjects);
-    ImGui::TableNextColumn();
-    if (std::isfinite(b.bias)) {
-      ImGui::TextUnformatted(with_ci(b.bias, b.bias_ci, d, true).c_str());
-    } else {
-      // Say why rather than print a dash (one subject gives no between-subject variance); the
-      // row's tooltip has the whole reason.
-      ImGui::TextDisabled("%s", a.n_subjects < 2 ? "needs 2+ subjects" : "-");
-    }
-    ImGui::TableNextColumn();
-    ImGui::TextUnformatted(with_ci(b.loa_low, b.loa_low_ci, d, true).c_str());
-    ImGui::TableNextColumn();
-    ImGui::TextUnformatted(with_ci(b.loa_high, b.loa_high_ci, d, true).c_str());
+    // A missing number says why rather than showing a dash where it can (one subject gives no
+    // between-subject variance, so no limits); the row's tooltip has the whole reason.
+    const auto cell = [&a](double v, const stats::Interval& ci, int decimals, bool signed_value) {
+      ImGui::TableNextColumn();
+      if (std::isfinite(v)) {
+        ImGui::TextUnformatted(with_ci(v, ci, decimals, signed_value).c_str());
+      } else {
+        ImGui::TextDisabled("%s", a.n_subjects == 1 ? "needs 2+ subjects" : "-");
+      }
+    };
+    cell(b.bias, b.bias_ci, d, true);
+    cell(b.loa_low, b.loa_low_ci, d, true);
+    cell(b.loa_high, b.loa_high_ci, d, true);
     ImGui::TableNextColumn();
     ImGui::TextUnformatted(num(a.differences.rmse, d).c_str());
     ImGui::TableNextColumn();
@@ -133,7 +137,7 @@ void draw_visibility_map(const VisibilityMap& map) {
       const Rgba colour = viridis((cell->rate_mean + 1.0) / 2.0);
       ImGui::TableSetBgColor(ImGuiTableBgTarget_CellBg, to_u32(colour, 0.85F));
       const bool light = colour.r * 0.3 + colour.g * 0.6 + colour.b * 0.1 > 0.55;
-      ImGui::TextColored(light ? ImVec4(0, 0, 0, 1) : ImVec4(1, 1, 1, 1), "%+.2f", cell->rate_mean);
+      ImGui::TextColored(light ? ImVec4(0, 0, 0, 1) : ImVec4(1, 1, 1, 1), "%s", format_readable(cell->rate_mean, 2, true).c_str());
       if (ImGui::IsItemHovered()) {
         ImGui::SetTooltip("%s, %s, %s: %.2f +/- %.2f over %d value(s) from %zu trial(s); %zu of them -1 (never saw the hand)",
                           device.c_str(), layout.c_str(), motion.c_str(), cell->rate_mean, cell->rate_sd, cell->values, cell->trials,
@@ -194,17 +198,28 @@ void ReviewAgreementView::draw(ReviewState& state, const PictureRenderer& render
   const AgreementGroup& group = table.groups[static_cast<size_t>(g)];
   measure_ = std::clamp(measure_, 0, std::max(0, static_cast<int>(group.measures.size()) - 1));
   draw_measure_table(group, measure_);
+  // What the table could not compute, in words (the statistics say why; the same for every measure
+  // of a one-subject group, so the selected one speaks for the rest).
+  if (!group.measures.empty()) {
+    const auto& selected = group.measures[static_cast<size_t>(measure_)].bland_altman;
+    if (!selected.reason.empty() && std::isfinite(selected.bias)) {
+      ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
+      ImGui::TextWrapped("Bland-Altman: %s.", selected.reason.c_str());
+      ImGui::PopStyleColor();
+    }
+  }
   ImGui::Spacing();
   // The selected measure's Bland-Altman plot beside the visibility map.
   const float width = ImGui::GetContentRegionAvail().x;
-  const float height = std::max(200.0F, ImGui::GetContentRegionAvail().y - 4);
+  const float height = std::max(160.0F, ImGui::GetContentRegionAvail().y - 4);
   ImGui::BeginChild("bland_altman", ImVec2(width * 0.5F, height), false);
   if (!group.measures.empty()) {
     const figures::Figure figure = bland_altman_figure(group, group.measures[static_cast<size_t>(measure_)]);
     png_.draw("ba_png", renderer, figure_stem("bland-altman-" + group.layout + "-" + group.pose + "-" +
                                               group.measures[static_cast<size_t>(measure_)].measure.name),
               [&figure] { draw_figure_filling("ba", figure); });
-    draw_figure_view("ba", figure, std::max(120.0F, height - 7.8F * ImGui::GetTextLineHeightWithSpacing()));
+    ImGui::SameLine();  // the figure's title beside its button: a line more for the plot
+    draw_figure_view("ba", figure, std::max(90.0F, height - 6.6F * ImGui::GetTextLineHeightWithSpacing()));
   }
   ImGui::EndChild();
   ImGui::SameLine();

@@ -7,6 +7,7 @@
 
 #include "core/review/review_figures.h"
 #include "ui/model/review/review_state.h"
+#include "ui/model/review/trial_table_height.h"
 #include "ui/model/workbench_context.h"
 #include "ui/tabs/review/review_agreement_view.h"
 #include "ui/tabs/review/review_sources_bar.h"
@@ -45,8 +46,13 @@ class ReviewTab final : public Tab {
     }
     draw_review_sources_bar(state_, browsers_);
     ImGui::Separator();
-    const float avail = ImGui::GetContentRegionAvail().y;
-    draw_review_trial_table(state_, std::clamp(avail * 0.20F, 120.0F, 320.0F));
+    // The filters' line is drawn above the table, inside draw_review_trial_table.
+    const float available = ImGui::GetContentRegionAvail().y - ImGui::GetFrameHeightWithSpacing();
+    const float row_px = ImGui::GetFontSize() + 2.0F * ImGui::GetStyle().CellPadding.y;
+    const size_t rows = state_.visible_trials().size();
+    const float table_px = trial_table_height(available, row_px, rows, table_dragged_px_);
+    draw_review_trial_table(state_, table_px);
+    draw_table_splitter(available, row_px, rows, table_px);
     if (ImGui::BeginTabBar("review_views")) {
       if (ImGui::BeginTabItem("Trial against Vicon", nullptr, pending_view_ == 0 ? ImGuiTabItemFlags_SetSelected : 0)) {
         trial_view_.draw(state_, context_.picture_renderer());
@@ -66,6 +72,21 @@ class ReviewTab final : public Tab {
       pending_view_ = -1;
       ImGui::EndTabBar();
     }
+  }
+
+  // A bar below the trial table: drag it to give the table more or fewer rows than the default.
+  void draw_table_splitter(float available, float row_px, size_t rows, float table_px) {
+    const ImVec2 at = ImGui::GetCursorScreenPos();
+    const float width = ImGui::GetContentRegionAvail().x;
+    ImGui::InvisibleButton("##trial_table_splitter", ImVec2(std::max(1.0F, width), 6.0F));
+    const bool active = ImGui::IsItemActive();
+    if (active && ImGui::GetIO().MouseDelta.y != 0.0F)
+      table_dragged_px_ = trial_table_height(available, row_px, rows, table_px + ImGui::GetIO().MouseDelta.y);
+    if (active || ImGui::IsItemHovered()) ImGui::SetMouseCursor(ImGuiMouseCursor_ResizeNS);
+    const ImU32 colour = ImGui::GetColorU32(active ? ImGuiCol_SeparatorActive
+                                                   : ImGui::IsItemHovered() ? ImGuiCol_SeparatorHovered : ImGuiCol_Separator);
+    ImGui::GetWindowDrawList()->AddLine(ImVec2(at.x, at.y + 3.0F), ImVec2(at.x + width, at.y + 3.0F), colour, 2.0F);
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("Drag to give the trial table more or fewer rows");
   }
 
   // Folders other parts of the workbench asked to review (start-up, the Record tab): one run.
@@ -112,6 +133,7 @@ class ReviewTab final : public Tab {
   ReviewTrialView trial_view_;
   ReviewAgreementView agreement_view_;
   int pending_view_ = -1;  // a capture's request: 0 the trial view, 1 agreement, 2 study tables
+  float table_dragged_px_ = 0.0F;  // the trial table's height once the splitter was dragged (0: the default)
 };
 
 }  // namespace

@@ -7,6 +7,8 @@
 #include <cstdio>
 #include <string>
 
+#include "core/common/number_format.h"
+
 namespace lmc::ui {
 namespace {
 
@@ -28,7 +30,7 @@ void filter_combo(const char* label, std::string& value, const std::vector<std::
 // `signed_value`: a difference, written with its sign; unknown values are a dash, never 0.
 void number_cell(double v, int decimals, bool signed_value, const char* suffix = "") {
   if (std::isfinite(v)) {
-    ImGui::Text(signed_value ? "%+.*f%s" : "%.*f%s", decimals, v, suffix);
+    ImGui::Text("%s%s", format_readable(v, decimals, signed_value).c_str(), suffix);
   } else {
     ImGui::TextDisabled("-");
   }

@@ -114,11 +114,15 @@ void ReviewTrialView::draw(ReviewState& state, const PictureRenderer& renderer) 
   const ImGuiStyle& style = ImGui::GetStyle();
   const float strips_block = ImGui::GetTextLineHeightWithSpacing() + label_strips_height(strips, kStripPx) +
                              style.ItemSpacing.y + style.WindowPadding.y;
-  ImGui::BeginChild("curves", ImVec2(0, std::max(120.0F, ImGui::GetContentRegionAvail().y - strips_block)), false);
+  const float curves_px = std::max(120.0F, ImGui::GetContentRegionAvail().y - strips_block);
+  ImGui::BeginChild("curves", ImVec2(0, curves_px), false);
+  const float curves_top = ImGui::GetCursorPosY();
   // Index joints on the left, thumb and wrist on the right: six angles in three rows, so the
   // finger length and the label strips that explain every gap stay on screen at 1280 x 800.
+  // Four plot areas share what the legends and axes leave: 46 px each when there is room, down
+  // to 34 px (the trial table above may take more of the tab) before the curves scroll.
   SeriesPlotOptions o;
-  o.height_px = 46;
+  o.height_px = curves_chrome_px_ > 0.0F ? std::clamp((curves_px - curves_chrome_px_) / 4.0F, 34.0F, 46.0F) : 46.0F;
   if (ImGui::BeginTable("angles", 2, ImGuiTableFlags_SizingStretchSame)) {
     for (int row = 0; row < 3; ++row) {
       for (int a : {row, row + 3}) {
@@ -136,6 +140,7 @@ void ReviewTrialView::draw(ReviewState& state, const PictureRenderer& renderer) 
   o.y_label = "length (mm)";
   o.x_label = "time (s)";
   plot("finger", range).draw("finger", series_for(s, false, finger_, each_controller_), o);
+  curves_chrome_px_ = ImGui::GetCursorPosY() - curves_top - 4.0F * o.height_px;
   ImGui::EndChild();
 
   ImGui::TextDisabled("Ray-traced labels per controller (thumb at the top):");

@@ -25,6 +25,9 @@ class ReviewTrialView {
   SeriesPlot& plot(const std::string& id, const std::shared_ptr<LinkedXRange>& range);
   bool each_controller_ = false;
   int finger_ = 1;  // the finger-length plot's finger (0 thumb … 4 pinky)
+  // What the curves take besides their four plot areas (legends, combo, axis labels), measured in
+  // the last frame: the plots share the rest, so they shrink before anything scrolls.
+  float curves_chrome_px_ = 0.0F;
   std::map<std::string, std::unique_ptr<SeriesPlot>> plots_;
   FileBrowser export_browser_{"Export the trial to a new folder", ""};
   ReviewReplayPanel replay_;
