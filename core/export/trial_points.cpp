@@ -240,9 +240,11 @@ TrialExportReport export_trials(const TrialExportRequest& request) {
       }
       say(line);
     } catch (const std::exception& e) {
-      report.notes.push_back("left out " + p.job.trial + ": " + e.what());
+      // Processing's messages already start with the trial's name.
+      const std::string what = e.what();
+      const std::string prefix = p.job.trial + ": ";
+      report.notes.push_back("left out " + (what.rfind(prefix, 0) == 0 ? what : prefix + what));
       ++report.left_out;
-      say("left out " + p.job.trial + ": " + e.what());
     }
   }
   return report;

@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <fstream>
 
 #include "core/export/trial_points.h"
 #include "core/hand/hand_frame.h"
@@ -175,6 +176,39 @@ TEST(LmcExport, WritesC3dAndTrcEqualToTheProcessedTrial) {
   EXPECT_NE(r.out.find("note: left out " + (dir / "nowhere").string()), std::string::npos) << r.all();
   EXPECT_NE(r.out.find("1 left out"), std::string::npos) << r.all();
   EXPECT_TRUE(fs::exists(partial / "Naiv_Index102.trc"));
+}
+
+// A session folder whose one trial is malformed (its recording cut to the header) and whose other
+// trial lost its Vicon file: the good trial is written with the hands only, the other is left out,
+// both are said, and the exit code is 2.
+TEST(LmcExport, APartialSessionExportsWhatItCanAndSaysWhatItLeftOut) {
+  const fs::path dir = test::scratch_dir("lmc_export_partial");
+  const fs::path s = dir / "S01";
+  CliRun r = run_lmc("session new --subject S01 --protocol quick -o " + shell_quote(s.string()), dir / "l");
+  ASSERT_EQ(r.exit_code, 0) << r.all();
+  r = run_lmc("session run " + shell_quote(s.string()) + " --backend sim --fast --auto --quiet --seed 1", dir / "l");
+  ASSERT_EQ(r.exit_code, 0) << r.all();
+  const fs::path broken = s / "LMC_Naiv_Static101.raw.txt";
+  const std::string text = test::read_text_file(broken);
+  ASSERT_TRUE(fs::exists(s / "Naiv_Index101.trc"));
+  {
+    std::ofstream cut(broken, std::ios::trunc);
+    cut << text.substr(0, text.find('\n') + 1);
+  }
+  fs::remove(s / "Naiv_Index101.trc");
+  const fs::path out = dir / "out";
+  r = run_lmc("export trc " + shell_quote(s.string()) + " -o " + shell_quote(out.string()), dir / "l");
+  EXPECT_EQ(r.exit_code, 2) << r.all();
+  EXPECT_NE(r.out.find("note: left out Naiv_Static101: the LMC recording has no data rows"), std::string::npos) << r.all();
+  EXPECT_NE(r.out.find("note: Naiv_Index101: no Vicon file"), std::string::npos) << r.all();
+  EXPECT_NE(r.out.find("exported 1 trial(s) as TRC"), std::string::npos) << r.all();
+  std::vector<fs::path> written;
+  for (const auto& e : fs::directory_iterator(out)) written.push_back(e.path().filename());
+  EXPECT_EQ(written, (std::vector<fs::path>{"Naiv_Index101.trc"}));
+  const TrcData trc = read_trc(out / "Naiv_Index101.trc");
+  EXPECT_EQ(trc.marker_count(), 5 * 28);
+  EXPECT_EQ(trc.marker_names.front(), "F_Palm");
+  EXPECT_EQ(trc.marker_names.back(), "LMC4_Pinky_End");
 }
 
 }  // namespace export_cli_test
