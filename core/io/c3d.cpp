@@ -229,6 +229,23 @@ class Reader {
     }
     labels.resize(static_cast<size_t>(used));
     out.labels = labels;
+    // Descriptions like labels (DESCRIPTIONS, DESCRIPTIONS2 …); optional, so never an error.
+    for (int k = 1; static_cast<int>(out.descriptions.size()) < used; ++k) {
+      const std::string name = k == 1 ? "DESCRIPTIONS" : "DESCRIPTIONS" + std::to_string(k);
+      if (!has("POINT", name) || get("POINT", name).type != -1) break;
+      for (const auto& s : strings("POINT", name)) out.descriptions.push_back(trim(s));
+    }
+    if (!out.descriptions.empty()) out.descriptions.resize(static_cast<size_t>(used));
+    auto text_of = [&](const char* name) {
+      if (!has("MANUFACTURER", name) || get("MANUFACTURER", name).type != -1) return std::string();
+      std::string joined;
+      for (const auto& s : strings("MANUFACTURER", name)) joined += (joined.empty() ? "" : " ") + trim(s);
+      return joined;
+    };
+    out.manufacturer_company = text_of("COMPANY");
+    out.manufacturer_software = text_of("SOFTWARE");
+    out.manufacturer_version = text_of("VERSION_LABEL");
+    out.parameter_names = parameter_order_;
 
     // Data section.
     const size_t word = out.float_storage ? 4 : 2;
@@ -333,6 +350,7 @@ class Reader {
       const auto it = group_names.find(g);
       const std::string group = it != group_names.end() ? it->second : "#" + std::to_string(g);
       params_[group + ":" + n] = p;
+      parameter_order_.push_back(group + ":" + n);
     }
   }
 
@@ -378,6 +396,7 @@ class Reader {
   const std::vector<std::uint8_t>& b_;
   std::string source_;
   std::map<std::string, Param> params_;
+  std::vector<std::string> parameter_order_;
 };
 
 // ---- writer ----
@@ -402,6 +421,8 @@ void put_record_param(std::vector<std::uint8_t>& out, const Codec& c, const Para
   out.push_back(static_cast<std::uint8_t>(group));
   out.insert(out.end(), p.name.begin(), p.name.end());
   const size_t next = 2 + 1 + 1 + p.dims.size() + p.data.size() + 1;
+  // The offset to the next record is a signed 16-bit word.
+  if (next > 32767) throw Error("C3D writer: parameter " + p.name + " holds " + std::to_string(p.data.size()) + " bytes, too many for one record");
   c.put_i16(out, static_cast<std::int16_t>(next));
   out.push_back(static_cast<std::uint8_t>(static_cast<std::int8_t>(p.type)));
   out.push_back(static_cast<std::uint8_t>(p.dims.size()));
@@ -510,7 +531,35 @@ std::vector<std::uint8_t> write_c3d_bytes(const C3dData& data, const C3dWriteOpt
     point_params.push_back(text_param(k == 0 ? "LABELS" : "LABELS" + std::to_string(k + 1), chunk, true));
     if (points == 0) break;
   }
+  if (!data.descriptions.empty()) {
+    // One description per point, in 255-point chunks like the labels.
+    std::vector<std::string> all = data.descriptions;
+    all.resize(static_cast<size_t>(points));
+    for (int k = 0; k * 255 < points; ++k) {
+      std::vector<std::string> chunk(all.begin() + k * 255, all.begin() + std::min(points, (k + 1) * 255));
+      point_params.push_back(text_param(k == 0 ? "DESCRIPTIONS" : "DESCRIPTIONS" + std::to_string(k + 1), chunk, true));
+    }
+  }
   std::vector<ParamOut> analog_params{int_param(c, "USED", 0), float_param(c, "RATE", static_cast<float>(data.point_rate_hz))};
+  // TRIAL: the frame range as two 16-bit words each (low, high), so readers that take the range
+  // from here rather than from the header's 16-bit fields see the same frames.
+  const long first = std::max(data.first_frame, 1);
+  const long last = first + std::max(frames, 1) - 1;
+  auto two_words = [&](const std::string& name, long v) {
+    ParamOut p{name, 2, {2}, {}};
+    c.put_i16(p.data, static_cast<std::int16_t>(static_cast<std::uint16_t>(v & 0xFFFF)));
+    c.put_i16(p.data, static_cast<std::int16_t>(static_cast<std::uint16_t>((v >> 16) & 0xFFFF)));
+    return p;
+  };
+  std::vector<ParamOut> trial_params;
+  if (frames > 0) {
+    trial_params = {two_words("ACTUAL_START_FIELD", first), two_words("ACTUAL_END_FIELD", last),
+                    float_param(c, "CAMERA_RATE", static_cast<float>(data.point_rate_hz))};
+  }
+  std::vector<ParamOut> manufacturer_params;
+  if (!data.manufacturer_company.empty()) manufacturer_params.push_back(text_param("COMPANY", {data.manufacturer_company}, false));
+  if (!data.manufacturer_software.empty()) manufacturer_params.push_back(text_param("SOFTWARE", {data.manufacturer_software}, false));
+  if (!data.manufacturer_version.empty()) manufacturer_params.push_back(text_param("VERSION_LABEL", {data.manufacturer_version}, false));
 
   auto build = [&](int data_start) {
     point_params[3] = int_param(c, "DATA_START", data_start);
@@ -519,12 +568,21 @@ std::vector<std::uint8_t> write_c3d_bytes(const C3dData& data, const C3dWriteOpt
     for (const auto& p : point_params) put_record_param(s, c, p, 1);
     put_record_group(s, c, "ANALOG", 2);
     for (const auto& p : analog_params) put_record_param(s, c, p, 2);
+    if (!trial_params.empty()) {
+      put_record_group(s, c, "TRIAL", 3);
+      for (const auto& p : trial_params) put_record_param(s, c, p, 3);
+    }
+    if (!manufacturer_params.empty()) {
+      put_record_group(s, c, "MANUFACTURER", 4);
+      for (const auto& p : manufacturer_params) put_record_param(s, c, p, 4);
+    }
     s.push_back(0);  // a zero name length ends the list
     s.push_back(0);
     return s;
   };
   std::vector<std::uint8_t> records = build(0);
   const size_t pblocks = (records.size() + 4 + kBlock - 1) / kBlock;
+  if (pblocks > 255) throw Error("C3D writer: the parameter section needs " + std::to_string(pblocks) + " blocks (at most 255)");
   const int data_start = static_cast<int>(2 + pblocks);
   records = build(data_start);
 

@@ -28,6 +28,12 @@ struct C3dData {
   int first_frame = 1;
   int analog_per_frame = 0;  // analog samples (all channels) per point frame; skipped
   std::vector<std::string> labels;
+  // POINT:DESCRIPTIONS, one per label when the file has them (written when not empty).
+  std::vector<std::string> descriptions;
+  // MANUFACTURER:COMPANY, SOFTWARE and VERSION_LABEL: who wrote the file (written when not empty).
+  std::string manufacturer_company, manufacturer_software, manufacturer_version;
+  // Every parameter the file has, as "GROUP:NAME" in file order (read only).
+  std::vector<std::string> parameter_names;
   // positions[frame][point] in the file's units; NaN where the point is missing.
   std::vector<std::vector<Eigen::Vector3d>> positions;
   std::vector<std::string> warnings;
@@ -47,8 +53,10 @@ struct C3dWriteOptions {
   double int_scale = 0.1;  // mm per integer step when float_storage is false
 };
 
-// Writes POINT (USED, SCALE, RATE, DATA_START, FRAMES, UNITS, LABELS[, LABELS2 …]) and
-// ANALOG (USED 0); missing points (any NaN coordinate) get residual −1.
+// Writes POINT (USED, SCALE, RATE, DATA_START, FRAMES, UNITS, LABELS[, LABELS2 …],
+// DESCRIPTIONS[, DESCRIPTIONS2 …]), ANALOG (USED 0), TRIAL (ACTUAL_START_FIELD, ACTUAL_END_FIELD,
+// CAMERA_RATE) and MANUFACTURER (COMPANY, SOFTWARE, VERSION_LABEL); missing points (any NaN
+// coordinate) get residual −1.
 std::vector<std::uint8_t> write_c3d_bytes(const C3dData& data, const C3dWriteOptions& options = {});
 void save_c3d(const std::filesystem::path& path, const C3dData& data, const C3dWriteOptions& options = {});  // atomic
 

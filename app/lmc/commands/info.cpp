@@ -1,8 +1,9 @@
-// lmc info FILE [--json]: what is in a recording, a TRC file or a layout, before anyone feeds it
+// lmc info FILE [--json]: what is in a recording, a TRC or C3D file or a layout, before anyone feeds it
 // to processing. The file type is detected from the content, not the extension:
 //   JSON object with "format": "lmc-session" → the recorder's sidecar LMC_<trial>.session.json
 //   other JSON object with "format" → layout (core/io/layout_json.h)
 //   first line "PathFileType…"  → TRC (core/io/trc.h)
+//   second byte 0x50, binary    → C3D (core/io/c3d.h)
 //   first line "Device ID…"     → LMC recording, any variant (core/io/lmc_recording.h)
 //
 // --json prints ONE object. Keys (rates in Hz, times in s, fractions 0..1; null when unknown):
@@ -18,6 +19,10 @@
 //              Frame Rate column.
 //   trc:       markers, frames, data_rate_hz, camera_rate_hz, units, duration_s,
 //              marker_stats [{name, missing_fraction}] in file order, missing_fraction (all)
+//   c3d:       as trc (no camera_rate_hz; marker_stats also carry description when the file has
+//              POINT:DESCRIPTIONS), first_frame, storage ("float" | "integer"), point_scale,
+//              processor ("intel" | "dec" | "mips"), analog_per_frame, manufacturer {company,
+//              software, version}, parameters ["GROUP:NAME" in file order]
 //   layout:    name, description, device_count, sensor {range_mm, fov_long_deg, fov_short_deg},
 //              devices [{slot, serial (null if unset), pose {x,y,z,rx,ry,rz} (mm, deg),
 //                        offset_mm [x,y,z]}]
@@ -32,6 +37,7 @@
 //              ground_truth (each the sidecar's, or null)
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <filesystem>
 #include <iomanip>
 #include <iostream>
@@ -45,6 +51,7 @@
 
 #include "app/lmc/command.h"
 #include "core/common/error.h"
+#include "core/io/c3d.h"
 #include "core/io/json_checked.h"
 #include "core/io/layout_json.h"
 #include "core/io/lmc_recording.h"
@@ -58,11 +65,12 @@ namespace {
 using nlohmann::json;
 
 constexpr const char* kJsonKeysHelp =
-    "--json prints one object. Keys: file, type (recording|trc|layout), warnings[]; recording: variant, rows, "
+    "--json prints one object. Keys: file, type (recording|trc|c3d|layout|session), warnings[]; recording: variant, rows, "
     "hand_rows, device_count, device_ids[], duration_s, devices[{id, rows, hand_rows, hand_fraction, duration_s, "
     "rate_median_hz, rate_p5_hz, rate_p95_hz, reported_rate_median_hz, visibility_fraction (raytraced)}]; trc: "
     "markers, frames, data_rate_hz, camera_rate_hz, units, duration_s, missing_fraction, marker_stats[{name, "
-    "missing_fraction}]; layout: name, description, device_count, sensor{range_mm, fov_long_deg, fov_short_deg}, "
+    "missing_fraction}]; c3d: as trc without camera_rate_hz (marker_stats[] also with description), first_frame, storage, "
+    "point_scale, processor, analog_per_frame, manufacturer{company, software, version}, parameters[]; layout: name, description, device_count, sensor{range_mm, fov_long_deg, fov_short_deg}, "
     "devices[{slot, serial, pose{x,y,z,rx,ry,rz}, offset_mm[3]}]; session (recorder sidecar): trial, status, error, "
     "backend, recording_file, layout_name, layout_device_count, host_start_utc, host_stop_utc, duration_s, "
     "serial_to_slot{}, frames_written, frames_dropped, devices[{device_id, slot, serial, frames_written, "
@@ -332,6 +340,81 @@ void info_trc(const std::string& file, bool as_json, std::ostream& out) {
   print_warnings(out, trc.warnings);
 }
 
+// A C3D file is described like a TRC (points are its markers), plus how it stores them and who
+// wrote it (MANUFACTURER), so an exported file can be checked before it goes to another tool.
+void info_c3d(const std::string& file, const std::string& bytes, bool as_json, std::ostream& out) {
+  const lmc::C3dData c3d = lmc::parse_c3d(std::vector<std::uint8_t>(bytes.begin(), bytes.end()), file);
+  const int frames = c3d.frame_count();
+  std::vector<long> missing(static_cast<size_t>(c3d.point_count()), 0);
+  long missing_all = 0;
+  for (const auto& row : c3d.positions) {
+    for (size_t m = 0; m < row.size() && m < missing.size(); ++m) {
+      const bool gone = row[m].array().isNaN().any();
+      missing[m] += gone ? 1 : 0;
+      missing_all += gone ? 1 : 0;
+    }
+  }
+  const auto fraction = [&](long n, long of) { return of > 0 ? static_cast<double>(n) / static_cast<double>(of) : 0.0; };
+  const double duration_s = frames >= 2 ? (frames - 1) / c3d.point_rate_hz : std::nan("");
+  const long samples = static_cast<long>(frames) * c3d.point_count();
+  const char* processor = c3d.processor == lmc::C3dProcessor::kIntel ? "intel" : c3d.processor == lmc::C3dProcessor::kDec ? "dec" : "mips";
+  const auto text_or_null_local = [](const std::string& s) { return s.empty() ? json(nullptr) : json(s); };
+
+  if (as_json) {
+    json j;
+    j["file"] = file;
+    j["type"] = "c3d";
+    j["markers"] = c3d.point_count();
+    j["frames"] = frames;
+    j["first_frame"] = c3d.first_frame;
+    j["data_rate_hz"] = c3d.point_rate_hz;
+    j["units"] = c3d.units;
+    j["storage"] = c3d.float_storage ? "float" : "integer";
+    j["point_scale"] = c3d.point_scale;
+    j["processor"] = processor;
+    j["analog_per_frame"] = c3d.analog_per_frame;
+    j["manufacturer"] = {{"company", text_or_null_local(c3d.manufacturer_company)},
+                         {"software", text_or_null_local(c3d.manufacturer_software)},
+                         {"version", text_or_null_local(c3d.manufacturer_version)}};
+    j["duration_s"] = number_or_null(duration_s);
+    j["missing_fraction"] = fraction(missing_all, samples);
+    j["marker_stats"] = json::array();
+    for (int m = 0; m < c3d.point_count(); ++m) {
+      json stat{{"name", c3d.labels[static_cast<size_t>(m)]},
+                {"missing_fraction", fraction(missing[static_cast<size_t>(m)], frames)}};
+      if (static_cast<size_t>(m) < c3d.descriptions.size()) stat["description"] = c3d.descriptions[static_cast<size_t>(m)];
+      j["marker_stats"].push_back(stat);
+    }
+    j["parameters"] = c3d.parameter_names;
+    j["warnings"] = c3d.warnings;
+    out << j.dump(2) << "\n";
+    return;
+  }
+  out << "file:       " << file << "\n";
+  out << "type:       C3D motion file\n";
+  out << "markers:    " << c3d.point_count() << "\n";
+  out << "frames:     " << frames << " (first " << c3d.first_frame << ")\n";
+  out << "rate:       " << c3d.point_rate_hz << " Hz\n";
+  out << "units:      " << c3d.units << "\n";
+  out << "storage:    " << (c3d.float_storage ? "float" : "integer") << " (POINT:SCALE " << c3d.point_scale << "), " << processor
+      << " byte order\n";
+  if (!c3d.manufacturer_company.empty() || !c3d.manufacturer_software.empty() || !c3d.manufacturer_version.empty()) {
+    out << "written by: " << c3d.manufacturer_company << (c3d.manufacturer_software.empty() ? "" : ", " + c3d.manufacturer_software)
+        << (c3d.manufacturer_version.empty() ? "" : ", version " + c3d.manufacturer_version) << "\n";
+  }
+  out << "duration:   " << fixed(duration_s, 3) << " s\n";
+  out << "missing:    " << fixed(100.0 * fraction(missing_all, samples), 1) << " % of marker samples\n\n";
+  size_t width = 6;
+  for (const auto& n : c3d.labels) width = std::max(width, n.size());
+  out << std::left << std::setw(static_cast<int>(width) + 2) << "marker" << "missing%\n";
+  for (int m = 0; m < c3d.point_count(); ++m) {
+    out << std::left << std::setw(static_cast<int>(width) + 2) << c3d.labels[static_cast<size_t>(m)] << std::right
+        << std::setw(8) << fixed(100.0 * fraction(missing[static_cast<size_t>(m)], frames), 1) << "\n";
+  }
+  out << "\n";
+  print_warnings(out, c3d.warnings);
+}
+
 void info_layout(const std::string& file, const json& doc, bool as_json, std::ostream& out) {
   const lmc::Layout layout = lmc::layout_from_json(doc, file);
   if (as_json) {
@@ -552,6 +635,12 @@ void run_info(const InfoOptions& opt) {
   const std::string& file = opt.file;
   const std::string bytes = lmc::text::read_file_bytes(file);
   if (lmc::text::is_blank(bytes)) throw lmc::Error(lmc::ErrorLocation{file, 1}, "empty file: nothing to describe");
+  // C3D is binary: its second byte is 0x50 and its header block holds NULs, which no text file
+  // this command knows has.
+  if (bytes.size() >= 512 && static_cast<unsigned char>(bytes[1]) == 0x50 && bytes.find('\0') != std::string::npos) {
+    info_c3d(file, bytes, opt.json, std::cout);
+    return;
+  }
   lmc::text::require_text(bytes, file);
   std::string_view head(bytes);
   if (head.substr(0, 3) == "\xEF\xBB\xBF") head.remove_prefix(3);
@@ -591,7 +680,7 @@ void run_info(const InfoOptions& opt) {
 void setup_info(CLI::App& app) {
   auto opt = std::make_shared<InfoOptions>();
   app.add_option("file", opt->file,
-                 "Recording (.txt), TRC (.trc), layout (.json) or session sidecar (LMC_<trial>.session.json); type "
+                 "Recording (.txt), TRC (.trc), C3D (.c3d), layout (.json) or session sidecar (LMC_<trial>.session.json); type "
                  "detected from content")
       ->required();
   app.add_flag("--json", opt->json, "Print one JSON object instead of text");
@@ -600,6 +689,6 @@ void setup_info(CLI::App& app) {
 }
 
 const lmc::cli::CommandRegistration info_command{
-    "info", "Describe a recording, TRC, layout or session sidecar file", 10, setup_info};
+    "info", "Describe a recording, TRC, C3D, layout or session sidecar file", 10, setup_info};
 
 }  // namespace
