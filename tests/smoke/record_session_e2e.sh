@@ -83,7 +83,7 @@ click_close() {
 # 1. A new session: subject screen, pre-flight, the first trial, a note, Close, Ctrl+Q.
 start --session "$session"
 wait_for '"session_opened"' 1 "the session to open"
-sleep 1
+sleep 0.5
 press F2
 sleep 1
 focus_main
@@ -106,18 +106,20 @@ quit "after Close"
 # 2. Reopened; the second trial is killed with SIGKILL two seconds after it starts.
 start --session "$session"
 wait_for '"session_opened"' 2 "the session to reopen"
-sleep 1
+sleep 0.5
 press space; wait_for '"type":"preflight"' 2 "the second pre-flight"
 sleep 0.5
 press space; wait_for '"type":"trial_started"' 2 "the second trial to start"
-sleep 2
+# Mid-trial: a second after the subject screen's circle came on (after the countdown).
+for _ in $(seq 300); do [ "$(grep -c ' recording 1 ' "$LMC_SUBJECT_TRACE")" -ge 2 ] && break; sleep 0.1; done
+sleep 1
 kill -9 "$pid"
 wait "$pid" 2>/dev/null || true
 
 # 3. Resumed: the cut trial is recorded again, then Close and Ctrl+Q.
 start --session "$session"
 wait_for '"session_opened"' 3 "the resume"
-sleep 1
+sleep 0.5
 press F2
 sleep 1
 focus_main

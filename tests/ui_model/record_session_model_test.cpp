@@ -289,9 +289,10 @@ TEST(RecordSessionModel, ARealTimeTrialShowsTheCircleForItsWholeLengthFromGo) {
   // The circle appears at go and stays for the trial's two seconds (the subject screen showed
   // "3, 2, 1, Starting" and never the circle when the countdown ate the recording).
   EXPECT_GE(first_circle_s, 0.0);
-  EXPECT_LE(first_circle_s, 0.3);
-  EXPECT_GE(last_circle_s, 1.7);
-  EXPECT_GE(first_remaining_s, 1.7) << "the status counts down the simulator's trial too (it said 0 s left)";
+  // The screen reads the trial about ten times a second; the margins allow a loaded machine.
+  EXPECT_LE(first_circle_s, 0.5);
+  EXPECT_GE(last_circle_s, 1.5);
+  EXPECT_GE(first_remaining_s, 1.5) << "the status counts down the simulator's trial too (it said 0 s left)";
 
   // The journal's start, go and stop agree with the file: go is where the file starts.
   const auto st = session::read_session_state(dir);
