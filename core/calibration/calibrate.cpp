@@ -10,6 +10,7 @@ namespace {
 struct ViconPairs {
   std::vector<Vec3> src, dst;
   std::vector<int> group;
+  std::vector<std::uint8_t> axes;  // the device axes of src the fit may use (calibration_samples.h)
   int frames = 0;
 };
 
@@ -25,16 +26,16 @@ ViconPairs vicon_pairs(const DeviceSamples& s, const HandTrack& vicon) {
     out.src.push_back(s.p[static_cast<size_t>(i)]);
     out.dst.push_back(v);
     out.group.push_back(cp.group);
+    out.axes.push_back(s.axes[static_cast<size_t>(i)]);
     if (f != last_frame) ++out.frames;
     last_frame = f;
   }
   return out;
 }
 
-ResidualSums residual_sums(const std::vector<Vec3>& src, const std::vector<Vec3>& dst, const std::vector<int>& group,
-                           const RigidTransform& t) {
+ResidualSums residual_sums(const ViconPairs& p, const RigidTransform& t) {
   ResidualSums sums;
-  for (size_t i = 0; i < src.size(); ++i) sums.add(group[i], (t.apply(src[i]) - dst[i]).norm());
+  for (size_t i = 0; i < p.src.size(); ++i) sums.add(p.group[i], masked_distance(t, p.src[i], p.dst[i], p.axes[i]));
   return sums;
 }
 
@@ -55,12 +56,13 @@ ResidualSums consensus_sums(const std::vector<DeviceSamples>& samples, const Sam
                             const std::vector<RigidTransform>& transforms, const std::vector<bool>& included, int d) {
   std::vector<Vec3> src, dst;
   std::vector<int> index;
-  leave_one_out_pairs(samples, table, transforms, included, d, src, dst, index);
+  std::vector<std::uint8_t> axes;
+  leave_one_out_pairs(samples, table, transforms, included, d, src, dst, index, &axes);
   ResidualSums sums;
   const DeviceSamples& own = samples[static_cast<size_t>(d)];
   for (size_t i = 0; i < src.size(); ++i) {
     const int group = calibration_points()[static_cast<size_t>(own.point[static_cast<size_t>(index[i])])].group;
-    sums.add(group, (transforms[static_cast<size_t>(d)].apply(src[i]) - dst[i]).norm());
+    sums.add(group, masked_distance(transforms[static_cast<size_t>(d)], src[i], dst[i], axes[i]));
   }
   return sums;
 }
@@ -109,7 +111,16 @@ CalibrationResult calibrate(const CalibrationInput& input, const Layout& layout,
   }
   for (size_t k = 0; k < input.device_frame.devices.size(); ++k) {
     const auto& dev = input.device_frame.devices[k];
-    samples[static_cast<size_t>(dev.device_id - 1)] = gather_samples(dev.track, input.labels.at(k));
+    auto& s = samples[static_cast<size_t>(dev.device_id - 1)];
+    s = gather_samples(dev.track, input.labels.at(k), options.samples);
+    auto& dc = result.devices[static_cast<size_t>(dev.device_id - 1)];
+    dc.beyond_cut = s.beyond_cut;
+    dc.dropped_beyond_cut = s.dropped_beyond_cut;
+    if (s.beyond_cut > 0) {
+      result.notes.push_back(dc.slot + ": " + std::to_string(s.beyond_cut) + " of " + std::to_string(s.size() + s.dropped_beyond_cut) +
+                             " samples had a coordinate clamped at its ±" + format_fixed(options.samples.axis_cut_mm, 0) +
+                             " mm axis cut: only their other coordinates were used");
+    }
   }
   const SampleTable table(samples, input.device_frame.frame_count);
 
@@ -129,7 +140,7 @@ CalibrationResult calibrate(const CalibrationInput& input, const Layout& layout,
       }
       dc.fitted = true;
       included[static_cast<size_t>(d)] = true;
-      fitted[static_cast<size_t>(d)] = robust_rigid_fit(p.src, p.dst, dc.nominal, options.fit);
+      fitted[static_cast<size_t>(d)] = robust_rigid_fit(p.src, p.dst, dc.nominal, options.fit, nullptr, p.axes);
     }
     // The part of the corrections all controllers share: the Vicon frame against the layout's.
     const RigidTransform common = mean_correction(fitted, nominal, included);
@@ -153,7 +164,7 @@ CalibrationResult calibrate(const CalibrationInput& input, const Layout& layout,
       ViconPairs& p = pairs[static_cast<size_t>(d)];
       for (auto& v : p.dst) v = to_layout.apply(v);
       dc.fitted_transform = fitted[static_cast<size_t>(d)];
-      store_residuals(dc, residual_sums(p.src, p.dst, p.group, dc.nominal), residual_sums(p.src, p.dst, p.group, dc.fitted_transform));
+      store_residuals(dc, residual_sums(p, dc.nominal), residual_sums(p, dc.fitted_transform));
     }
   } else {
     // A controller takes part when enough of its samples are shared with another controller

@@ -17,6 +17,7 @@ struct CalibrationOptions {
   RobustFitOptions fit;
   ConsensusOptions consensus;
   WarningThresholds warnings;
+  SampleRules samples;    // which points count (calibration_samples.h)
   int min_samples = 100;  // fewer usable samples (or, without Vicon, co-visible ones): left as it is
   bool use_vicon = true;  // false: the consensus fit even when the input has Vicon points
   // With Vicon: keep the layout's world frame and take from Vicon only where the controllers

@@ -26,6 +26,10 @@ struct DeviceCalibration {
   double moved_mm = 0;    // how far the controller's origin moved
   double turned_deg = 0;  // the rotation between nominal and fitted
   int frames = 0;         // grid frames with at least one usable sample
+  // Samples with a coordinate clamped at the controller's axis cut (calibration_samples.h): used
+  // through their other coordinates only (counted in `all.samples`), or left out when every
+  // coordinate was clamped (`dropped_beyond_cut`, not counted).
+  int beyond_cut = 0, dropped_beyond_cut = 0;
   std::array<GroupResidual, kNumPointGroups> groups{};
   GroupResidual all;
   std::vector<std::string> warnings;

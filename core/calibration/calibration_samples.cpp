@@ -1,5 +1,7 @@
 #include "core/calibration/calibration_samples.h"
 
+#include <cmath>
+
 namespace lmc::calibration {
 
 const char* point_group_name(int group) {
@@ -26,7 +28,17 @@ const std::array<CalibrationPoint, kNumCalibrationPoints>& calibration_points() 
   return points;
 }
 
-DeviceSamples gather_samples(const HandTrack& track, const std::vector<FingerLabels>& labels) {
+std::uint8_t unclamped_axes(const Vec3& p, std::uint8_t clamping_axes, const SampleRules& rules) {
+  std::uint8_t axes = 0;
+  for (int k = 0; k < 3; ++k) {
+    const double a = std::abs(p[k]);
+    const bool in_band = a >= rules.axis_cut_mm - rules.axis_cut_below_mm && a <= rules.axis_cut_mm + rules.axis_cut_above_mm;
+    if (((clamping_axes >> k) & 1U) == 0 || !in_band) axes |= static_cast<std::uint8_t>(1U << k);
+  }
+  return axes;
+}
+
+DeviceSamples gather_samples(const HandTrack& track, const std::vector<FingerLabels>& labels, const SampleRules& rules) {
   DeviceSamples s;
   const auto& points = calibration_points();
   const int frames = std::min(track.frame_count, static_cast<int>(labels.size()));
@@ -46,7 +58,30 @@ DeviceSamples gather_samples(const HandTrack& track, const std::vector<FingerLab
       s.p.push_back(p);
     }
   }
-  return s;
+  // Which axes this controller clamps: those with a pile-up of coordinates exactly on the cut.
+  std::array<int, 3> on_cut{};
+  for (const Vec3& p : s.p)
+    for (int k = 0; k < 3; ++k)
+      if (std::abs(std::abs(p[k]) - rules.axis_cut_mm) < rules.on_cut_tolerance_mm) ++on_cut[static_cast<size_t>(k)];
+  std::uint8_t clamping = 0;
+  for (int k = 0; k < 3; ++k)
+    if (on_cut[static_cast<size_t>(k)] >= rules.min_on_cut) clamping |= static_cast<std::uint8_t>(1U << k);
+  DeviceSamples out;
+  for (int i = 0; i < s.size(); ++i) {
+    const std::uint8_t axes = unclamped_axes(s.p[static_cast<size_t>(i)], clamping, rules);
+    if (axes != kAllAxes) {
+      ++out.beyond_cut;
+      if (axes == 0) {
+        ++out.dropped_beyond_cut;
+        continue;
+      }
+    }
+    out.frame.push_back(s.frame[static_cast<size_t>(i)]);
+    out.point.push_back(s.point[static_cast<size_t>(i)]);
+    out.p.push_back(s.p[static_cast<size_t>(i)]);
+    out.axes.push_back(axes);
+  }
+  return out;
 }
 
 }  // namespace lmc::calibration

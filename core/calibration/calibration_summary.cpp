@@ -15,6 +15,8 @@ nlohmann::json calibration_summary_json(const CalibrationResult& r) {
     devices.push_back({{"slot", d.slot},
                        {"fitted", d.fitted},
                        {"samples", d.all.samples},
+                       {"samples_beyond_axis_cut", d.beyond_cut},
+                       {"samples_left_out_beyond_axis_cut", d.dropped_beyond_cut},
                        {"rms_before_mm", summary_number(d.all.before_mm)},
                        {"rms_after_mm", summary_number(d.all.after_mm)},
                        {"moved_mm", summary_number(d.moved_mm)},

@@ -20,10 +20,12 @@ SampleTable::SampleTable(const std::vector<DeviceSamples>& samples, int frames)
 
 void leave_one_out_pairs(const std::vector<DeviceSamples>& samples, const SampleTable& table,
                          const std::vector<RigidTransform>& transforms, const std::vector<bool>& included, int d,
-                         std::vector<Vec3>& src, std::vector<Vec3>& dst, std::vector<int>& sample_index) {
+                         std::vector<Vec3>& src, std::vector<Vec3>& dst, std::vector<int>& sample_index,
+                         std::vector<std::uint8_t>* axes) {
   src.clear();
   dst.clear();
   sample_index.clear();
+  if (axes != nullptr) axes->clear();
   const DeviceSamples& own = samples[static_cast<size_t>(d)];
   for (int i = 0; i < own.size(); ++i) {
     const int key = own.key(i);
@@ -32,7 +34,7 @@ void leave_one_out_pairs(const std::vector<DeviceSamples>& samples, const Sample
     for (int e = 0; e < table.devices(); ++e) {
       if (e == d || !included[static_cast<size_t>(e)]) continue;
       const int j = table.at(key, e);
-      if (j < 0) continue;
+      if (j < 0 || samples[static_cast<size_t>(e)].axes[static_cast<size_t>(j)] != kAllAxes) continue;
       sum += transforms[static_cast<size_t>(e)].apply(samples[static_cast<size_t>(e)].p[static_cast<size_t>(j)]);
       ++n;
     }
@@ -40,6 +42,7 @@ void leave_one_out_pairs(const std::vector<DeviceSamples>& samples, const Sample
     src.push_back(own.p[static_cast<size_t>(i)]);
     dst.push_back(sum / n);
     sample_index.push_back(i);
+    if (axes != nullptr) axes->push_back(own.axes[static_cast<size_t>(i)]);
   }
 }
 
@@ -85,6 +88,7 @@ ConsensusFit fit_consensus(const std::vector<DeviceSamples>& samples, const Samp
   fit.transforms = nominal;
   std::vector<Vec3> src, dst;
   std::vector<int> index;
+  std::vector<std::uint8_t> axes;
   std::vector<double> residuals, weights;
   for (int sweep = 0; sweep < options.max_sweeps; ++sweep) {
     const std::vector<RigidTransform> before = fit.transforms;
@@ -92,12 +96,14 @@ ConsensusFit fit_consensus(const std::vector<DeviceSamples>& samples, const Samp
     // reweighting step per sweep, since the targets move between sweeps anyway.
     for (int d = 0; d < table.devices(); ++d) {
       if (!included[static_cast<size_t>(d)]) continue;
-      leave_one_out_pairs(samples, table, fit.transforms, included, d, src, dst, index);
+      leave_one_out_pairs(samples, table, fit.transforms, included, d, src, dst, index, &axes);
       if (src.size() < 3) continue;
+      auto& t = fit.transforms[static_cast<size_t>(d)];
       residuals.resize(src.size());
-      for (size_t i = 0; i < src.size(); ++i) residuals[i] = (fit.transforms[static_cast<size_t>(d)].apply(src[i]) - dst[i]).norm();
+      for (size_t i = 0; i < src.size(); ++i) residuals[i] = masked_distance(t, src[i], dst[i], axes[i]);
       huber_weights(residuals, options.fit, weights);
-      fit.transforms[static_cast<size_t>(d)] = weighted_kabsch(src, dst, weights);
+      // A controller with clamped samples has no closed-form fit (rigid_transform.h).
+      t = any_masked(axes) ? weighted_masked_fit(src, dst, axes, weights, t) : weighted_kabsch(src, dst, weights);
     }
     fit.transforms = anchor_to_nominal(fit.transforms, nominal, included);
     fit.sweeps = sweep + 1;

@@ -33,10 +33,12 @@ class SampleTable {
 
 // For device d, its samples that at least one other `included` device shares: src = d's point
 // (device coordinates), dst = mean of the others' points under `transforms`; `sample_index` is the
-// sample each pair came from.
+// sample each pair came from, `axes` (optional) the device axes of src the fit may use. Only whole
+// samples of the others make a target: a clamped point's place is not known in every direction.
 void leave_one_out_pairs(const std::vector<DeviceSamples>& samples, const SampleTable& table,
                          const std::vector<RigidTransform>& transforms, const std::vector<bool>& included, int d,
-                         std::vector<Vec3>& src, std::vector<Vec3>& dst, std::vector<int>& sample_index);
+                         std::vector<Vec3>& src, std::vector<Vec3>& dst, std::vector<int>& sample_index,
+                         std::vector<std::uint8_t>* axes = nullptr);
 
 // The mean correction of the `included` controllers: the rotation nearest the average of
 // T_d ∘ N_d⁻¹'s rotations and the average of their translations (identity when none is included).

@@ -3,6 +3,7 @@
 // and the two fits it is built from. Kept apart from DevicePose (Euler angles, for people and
 // files) because the fits work on matrices and convert only at the end (calibrated_layout.h).
 #include <Eigen/Core>
+#include <cstdint>
 #include <span>
 #include <vector>
 
@@ -34,6 +35,16 @@ Eigen::Matrix3d nearest_rotation(const Eigen::Matrix3d& m);
 // All three spans have the same length; the weights sum to more than zero.
 RigidTransform weighted_kabsch(std::span<const Vec3> src, std::span<const Vec3> dst, std::span<const double> weights);
 
+// Masked samples: a source point (device frame) of which only some device axes are trusted (bit k:
+// axis k), e.g. a point the controller clamped at its axis cut (calibration_samples.h). Its
+// residual is taken in the device frame, Tᵀ(dst) − src, over the trusted axes only.
+inline constexpr std::uint8_t kAllAxes = 7;
+double masked_distance(const RigidTransform& t, const Vec3& src, const Vec3& dst, std::uint8_t axes);
+// The transform minimising Σ w_i·Σ_{k trusted} (Tᵀ(dst_i) − src_i)_k², by Gauss–Newton from
+// `start` (no closed form once axes are missing). With every axis trusted it has Kabsch's minimum.
+RigidTransform weighted_masked_fit(std::span<const Vec3> src, std::span<const Vec3> dst, std::span<const std::uint8_t> axes,
+                                   std::span<const double> weights, const RigidTransform& start);
+
 struct RobustFitOptions {
   int max_iterations = 30;
   // Huber threshold k = max(min_threshold_mm, threshold_sigmas · σ̂), σ̂ = 1.4826 · median residual:
@@ -45,9 +56,14 @@ struct RobustFitOptions {
 };
 
 // Huber-weighted iteratively reweighted Kabsch from `start`. `weights_out` (optional) gets the
-// final weights. Deterministic: no randomness, no threads.
+// final weights. Deterministic: no randomness, no threads. With `axes` (one per sample) and some
+// sample not whole, each step is the masked fit instead of Kabsch.
 RigidTransform robust_rigid_fit(std::span<const Vec3> src, std::span<const Vec3> dst, const RigidTransform& start,
-                                const RobustFitOptions& options, std::vector<double>* weights_out = nullptr);
+                                const RobustFitOptions& options, std::vector<double>* weights_out = nullptr,
+                                std::span<const std::uint8_t> axes = {});
+
+// Whether any of `axes` leaves an axis out.
+bool any_masked(std::span<const std::uint8_t> axes);
 
 // The Huber weights of residuals (mm) under `options` (shared by both fits).
 void huber_weights(std::span<const double> residuals, const RobustFitOptions& options, std::vector<double>& weights);

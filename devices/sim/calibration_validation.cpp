@@ -74,9 +74,13 @@ SimConfig validation_sim_config(std::uint64_t seed, const CalibrationValidationO
 }
 
 CalibrationValidationCase run_calibration_case(const Layout& layout, std::uint64_t seed, const CalibrationValidationOptions& options) {
+  return run_calibration_case(layout, validation_sim_config(seed, options), options);
+}
+
+CalibrationValidationCase run_calibration_case(const Layout& layout, const SimConfig& config, const CalibrationValidationOptions& options) {
   CalibrationValidationCase c;
-  c.seed = seed;
-  const RecordedSim sim = record(layout, validation_sim_config(seed, options), options.seconds);
+  c.seed = config.seed;
+  const RecordedSim sim = record(layout, config, options.seconds);
   std::vector<RigidTransform> nominal;
   for (const auto& d : layout.devices) nominal.push_back(calibration::device_transform(d));
   worst_error(nominal, sim.true_transforms, c.injected_mm, c.injected_deg);

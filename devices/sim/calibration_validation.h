@@ -43,6 +43,9 @@ SimConfig validation_sim_config(std::uint64_t seed, const CalibrationValidationO
 
 // One case: records the simulated trial, calibrates it both ways and measures what is left.
 CalibrationValidationCase run_calibration_case(const Layout& layout, std::uint64_t seed, const CalibrationValidationOptions& options);
+// The same with a rig of the caller's (e.g. the Devices tab capture's errors per slot); `config`'s
+// own seed and errors are used, options' error sizes are not.
+CalibrationValidationCase run_calibration_case(const Layout& layout, const SimConfig& config, const CalibrationValidationOptions& options);
 
 // The calibration of a trial recorded with `layout` against the same layout with two slots'
 // poses exchanged (their serials swapped): the result's set-level warnings.

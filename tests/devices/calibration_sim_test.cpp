@@ -84,3 +84,32 @@ TEST(SimCalibrationValidation, SwappedSerialsAreDetectedWithAndWithoutVicon) {
     EXPECT_NE(w[0].find("LMC2 and LMC3 look swapped"), std::string::npos) << w[0];
   }
 }
+
+// The Devices tab capture's rig (three controllers turned, every controller shifted up to 15 mm)
+// on the start layout, paper-optimized-as-processed, where LMC1 stands ≈ 256 mm from the hand:
+// every controller is found where it really stands, with the truth as Vicon and without Vicon.
+// LMC1 reports its wrist, metacarpal bases and palm clamped on its +250 mm y cut in every frame
+// (calibration_samples.h); before that was known to calibration it moved ≈ 100 mm and 20°.
+// (Seed 2 turns LMC2 away from the hand: it is left as it was, which is another test's matter.)
+TEST(SimCalibrationValidation, OptimizedLayoutAsProcessedIsRecoveredWithTheCapturesErrors) {
+  const lmc::Layout layout = lmc::load_layout_or_preset("paper-optimized-as-processed");
+  lmc::devices::SimConfig sim;
+  sim.calibration_rotations_deg["LMC2"] = Eigen::Vector3d(0, 6, 0);
+  sim.calibration_rotations_deg["LMC3"] = Eigen::Vector3d(4, 0, 0);
+  sim.calibration_rotations_deg["LMC4"] = Eigen::Vector3d(0, 0, -3);
+  sim.calibration_random_translation_mm = 15;
+  lmc::devices::CalibrationValidationOptions options;
+  options.seconds = 5.0;  // the Devices tab's still-hand trial
+  for (const std::uint64_t seed : {1U, 3U, 4U}) {  // 1: the capture's
+    sim.seed = seed;
+    const auto c = lmc::devices::run_calibration_case(layout, sim, options);
+    EXPECT_GT(c.injected_mm, 3.0) << seed;
+    EXPECT_EQ(c.vicon_unfitted, 0) << seed;
+    EXPECT_EQ(c.consensus_unfitted, 0) << seed;
+    EXPECT_LT(c.vicon_mm, options.vicon_limit_mm) << seed;
+    EXPECT_LT(c.vicon_deg, options.vicon_limit_deg) << seed;
+    EXPECT_LT(c.consensus_mm, options.consensus_limit_mm) << seed;
+    EXPECT_LT(c.consensus_deg, options.consensus_limit_deg) << seed;
+    for (const auto& w : c.warnings) ADD_FAILURE() << seed << ": " << w;
+  }
+}

@@ -44,6 +44,11 @@ void draw_calibration_result(const std::string& trial, const calibration::Calibr
       ImGui::TextColored(ImGui::ColorConvertU32ToFloat4(device_colour_u32(static_cast<int>(i))), "%s", row.slot.c_str());
       ImGui::TableNextColumn();
       ImGui::Text("%d", row.samples);
+      if (row.beyond_cut > 0 && ImGui::IsItemHovered()) {
+        ImGui::SetTooltip("%d of its samples had a coordinate clamped at the controller's axis cut: "
+                          "only their other coordinates were used",
+                          row.beyond_cut);
+      }
       ImGui::TableNextColumn();
       const std::string rms = calibration_mm_text(row.before_mm) + " > " + calibration_mm_text(row.after_mm);
       ImGui::TextUnformatted(rms.c_str());
@@ -74,6 +79,7 @@ void draw_calibration_result(const std::string& trial, const calibration::Calibr
   ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyle().Colors[ImGuiCol_TextDisabled]);
   ImGui::TextWrapped("%s", calibration_residuals_explanation());
   for (const auto& n : notes) ImGui::TextWrapped("note: %s", n.c_str());
+  for (const auto& n : r.notes) ImGui::TextWrapped("note: %s", n.c_str());
   ImGui::PopStyleColor();
 
 }

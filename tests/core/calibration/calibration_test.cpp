@@ -64,6 +64,39 @@ TEST(CalibrationFit, KabschRecoversAKnownTransformAndHuberIgnoresOutliers) {
   EXPECT_LT(lmc::calibration::rotation_angle_deg(robust.r.transpose() * truth.r), 0.1);
 }
 
+// A controller clamps each coordinate at its axis cut (calibration_samples.h): points beyond it read
+// on the cut. Whole-point Kabsch is pulled by them; the samples' axes inside the cut, fitted by the
+// masked fit, give the transform back, from a start as far off as a misplaced controller.
+TEST(CalibrationFit, ClampedCoordinatesAreMaskedNotFitted) {
+  const lmc::calibration::RigidTransform truth{calibration_test::syn::turn(8.0, 2), lmc::Vec3(-120, 5, -240)};
+  std::vector<lmc::Vec3> src, dst;
+  std::vector<std::uint8_t> axes;
+  std::mt19937_64 rng(11);
+  std::uniform_real_distribution<double> u(-50, 50);
+  int clamped = 0;
+  for (int i = 0; i < 600; ++i) {
+    lmc::Vec3 device(u(rng), u(rng) + 245, u(rng) + 150);  // half the hand beyond y = 250
+    dst.push_back(truth.apply(device));
+    for (int k = 0; k < 3; ++k) device[k] = std::clamp(device[k], -250.0, 250.0);
+    src.push_back(device);
+    axes.push_back(lmc::calibration::unclamped_axes(device, lmc::calibration::kAllAxes));
+    clamped += axes.back() == lmc::calibration::kAllAxes ? 0 : 1;
+  }
+  EXPECT_GT(clamped, 200);
+  const std::vector<double> ones(src.size(), 1.0);
+  const lmc::calibration::RigidTransform start{calibration_test::syn::turn(6.0, 0) * truth.r, truth.t + lmc::Vec3(12, -9, 8)};
+  const lmc::calibration::RigidTransform whole = lmc::calibration::weighted_kabsch(src, dst, ones);
+  EXPECT_GT((whole.t - truth.t).norm(), 2.0);
+  calibration_test::expect_near(lmc::calibration::weighted_masked_fit(src, dst, axes, ones, start), truth, 1e-6, 1e-6, "masked");
+  calibration_test::expect_near(lmc::calibration::robust_rigid_fit(src, dst, start, {}, nullptr, axes), truth, 1e-6, 1e-6,
+                                "robust, masked");
+  // With every axis trusted the masked fit has Kabsch's minimum.
+  const std::vector<std::uint8_t> all(src.size(), lmc::calibration::kAllAxes);
+  for (size_t i = 0; i < src.size(); ++i) src[i] = truth.inverse().apply(dst[i]);
+  calibration_test::expect_near(lmc::calibration::weighted_masked_fit(src, dst, all, ones, start),
+                                lmc::calibration::weighted_kabsch(src, dst, ones), 1e-6, 1e-6, "whole points");
+}
+
 TEST(CalibrationVicon, RecoversInjectedErrorsOfEveryController) {
   const lmc::Layout layout = calibration_test::syn::square_layout();
   const auto truth = calibration_test::syn::perturbed(layout, {{40, -10, 25}, {-60, 30, 10}, {5, 5, -70}, {0, 0, 0}}, {8, -6, 10, 3});

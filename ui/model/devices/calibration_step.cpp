@@ -149,6 +149,7 @@ std::vector<CalibrationRow> calibration_rows(const calibration::CalibrationResul
     r.slot = d.slot;
     r.fitted = d.fitted;
     r.samples = d.all.samples;
+    r.beyond_cut = d.beyond_cut;
     r.before_mm = d.all.before_mm;
     r.after_mm = d.all.after_mm;
     r.moved_mm = d.moved_mm;

@@ -37,6 +37,7 @@ struct CalibrationRow {
   std::string slot;
   bool fitted = false;
   int samples = 0;
+  int beyond_cut = 0;  // of them, with a coordinate clamped at the axis cut: used through their other ones
   double before_mm = 0, after_mm = 0;  // RMS over all its points (NaN without samples)
   double moved_mm = 0, turned_deg = 0;
   std::vector<std::string> warnings;
