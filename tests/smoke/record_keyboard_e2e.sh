@@ -16,7 +16,7 @@ cat > "$work/drive.sh" <<'EOF'
 #!/usr/bin/env bash
 set -eu
 workbench=$1; session=$2; work=$3
-"$workbench" --session "$session" --fast > "$work/workbench.log" 2>&1 &
+LMC_STATUS_TRACE="$work/status-trace.txt" "$workbench" --session "$session" --fast > "$work/workbench.log" 2>&1 &
 pid=$!
 trap 'kill $pid 2>/dev/null || true' EXIT
 journal="$session/journal.jsonl"
@@ -44,6 +44,9 @@ sleep 0.5
 press space; wait_for '"type":"trial_accepted"' 1 "the first trial"
 sleep 0.5
 press r; wait_for '"type":"trial_redone"' 1 "the redo"
+# The status bar says what the redo did (a failed earlier action's red line used to stay).
+for _ in $(seq 50); do grep -q "is recorded again next" "$work/status-trace.txt" && break; sleep 0.1; done
+grep -q "is recorded again next" "$work/status-trace.txt" || { echo "the status bar did not follow the redo"; cat "$work/status-trace.txt"; exit 1; }
 sleep 0.5
 press space; wait_for '"type":"trial_accepted"' 2 "the first trial, again"
 sleep 0.5
