@@ -151,15 +151,25 @@ quit "in Review"
 
 # 5. The Layout tab: Optimiser, Start, Cancel after a few seconds; the status bar reads the
 # best-so-far layout's own figures.
+# Clicks at x y until the status bar has shown `pattern` (up to 60 s): Start stays disabled until
+# the pose set is ready, which takes longer on a loaded machine.
+click_until_status() {
+  for _ in $(seq 30); do
+    click "$1" "$2"
+    for _ in $(seq 20); do
+      grep -q -- "$3" "$work/status-trace.txt" && return 0
+      sleep 0.1
+    done
+  done
+  echo "timed out waiting for: $4; status lines:"; cat "$work/status-trace.txt"; exit 1
+}
 start
-sleep 3
+sleep 2
 click 985 87     # the Optimiser panel's tab
 sleep 1
-click 880 448    # Start optimiser
-wait_for_status "Optimiser started" "the search to start"
+click_until_status 880 448 "Optimiser started" "the search to start"    # Start optimiser
 sleep 3
-click 1240 425   # Cancel, at the end of the progress row
-wait_for_status "Optimiser cancelled" "the search to stop"
+click_until_status 1240 425 "Optimiser cancelled" "the search to stop"  # Cancel, at the end of the progress row
 sleep 0.5
 quit "after the optimiser was cancelled"
 DRIVE
