@@ -151,16 +151,17 @@ quit "in Review"
 
 # 5. The Layout tab: Optimiser, Start, Cancel after a few seconds; the status bar reads the
 # best-so-far layout's own figures.
-# Clicks at x y until the status bar has shown `pattern` (up to 60 s): Start stays disabled until
-# the pose set is ready, which takes longer on a loaded machine.
+# Clicks at x y until the status bar has shown `pattern` (up to 2 min): Start stays disabled until
+# the pose set is ready, which takes much longer on a loaded machine.
 click_until_status() {
-  for _ in $(seq 30); do
+  for _ in $(seq 60); do
     click "$1" "$2"
     for _ in $(seq 20); do
       grep -q -- "$3" "$work/status-trace.txt" && return 0
       sleep 0.1
     done
   done
+  if command -v import >/dev/null; then import -window root "$work/timed-out.png" && echo "screen: $work/timed-out.png"; fi
   echo "timed out waiting for: $4; status lines:"; cat "$work/status-trace.txt"; exit 1
 }
 start
