@@ -296,7 +296,7 @@ TEST(CalibrationStep, TheSharedRealTrialCalibratesAndTheControllersAgreeBetter) 
   ASSERT_TRUE(calibration_step_test::update_until(b.context.rig(), step, [&] { return !step.busy(); }));
   ASSERT_EQ(step.stage(), lmc::ui::CalibrationStage::kResult) << step.message();
   const auto& r = step.outcome()->result;
-  // The figures of the README's "Calibrating controllers" (paper-initial with the authors'
+  // The figures of docs/guide/calibrate.md (paper-initial with the authors'
   // offsets 5.2 mm, calibrated without Vicon 2.0 mm).
   EXPECT_NEAR(r.disagreement_before_mm, 5.2, 0.1);
   EXPECT_NEAR(r.disagreement_after_mm, 2.0, 0.1);
