@@ -121,7 +121,6 @@ class Recorder final : public FrameConsumer {
   // written; the others are counted as outside the trial, never as lost. Any thread, once; until
   // takes effect before from, so no row sees an open window without its end.
   void open_window(std::int64_t from_ns, std::int64_t until_ns = std::numeric_limits<std::int64_t>::max());
-  bool window_open() const { return window_from_ns_.load() != kClosed; }
   std::string window_from_utc() const;  // when open_window() was called ("" before)
 
   // FrameConsumer (device threads).

@@ -19,7 +19,6 @@ class SubjectStageTrace {
   explicit SubjectStageTrace(const std::filesystem::path& file);
   // `t_s`: a steady clock; `recording_s`: how far into the trial (0 outside one).
   void observe(const SubjectView& view, double recording_s, double t_s);
-  bool enabled() const { return out_.is_open(); }
 
  private:
   std::ofstream out_;
