@@ -214,7 +214,16 @@ TrialExportReport export_trials(const TrialExportRequest& request) {
     if (!existing.empty()) throw Error("these outputs exist (use --force to replace them); nothing was written:" + existing);
   }
   fs::create_directories(request.out_dir);
+  const int total = static_cast<int>(planned.size());
+  int done = 0;
   for (const auto& p : planned) {
+    if (request.on_progress) request.on_progress(done, total);
+    if (request.should_stop && request.should_stop()) {
+      report.cancelled = true;
+      report.notes.push_back("cancelled after " + std::to_string(done) + " of " + std::to_string(total) + " trial(s)");
+      return report;
+    }
+    ++done;
     try {
       TrialOutcome outcome;
       const TrialResult r = process_job_in_full(p.job, request.session, &outcome);
@@ -247,6 +256,7 @@ TrialExportReport export_trials(const TrialExportRequest& request) {
       ++report.left_out;
     }
   }
+  if (request.on_progress) request.on_progress(done, total);
   return report;
 }
 

@@ -72,6 +72,11 @@ struct TrialExportRequest {
   SessionOptions session;
   // Called once per trial as it is written or left out, for a command's progress lines.
   std::function<void(const std::string& line)> on_trial;
+  // Called before each trial and once at the end: trials done, trials planned (a progress bar).
+  std::function<void(int done, int total)> on_progress;
+  // Polled before each trial: true stops the export there. Files already written stay (each is
+  // complete: they are written atomically); the report says cancelled.
+  std::function<bool()> should_stop;
 };
 
 struct TrialExportReport {
@@ -79,6 +84,7 @@ struct TrialExportReport {
   std::vector<std::string> exported;  // trial names
   std::vector<std::string> notes;     // what was left out or is partial, and why
   int left_out = 0;                   // trials (or inputs) not exported
+  bool cancelled = false;             // should_stop ended it before every trial was done
 };
 
 // Every trial of every input to <out_dir>/<trial>.c3d|.trc. Trials whose file name would not be a
