@@ -1,8 +1,8 @@
 #pragma once
-// The device hub (issue #5): runs frame sources, maps serial numbers to the layout's slots,
+// The device hub: runs frame sources, maps serial numbers to the layout's slots,
 // keeps per-device statistics, hands the UI thread-safe snapshots and fans frames out to the
 // recorder. Device threads only take a short lock to update counters and copy the latest frame;
-// they never wait on the UI or on the disk (style.md §5.5).
+// they never wait on the UI or on the disk (docs/architecture.md).
 #include <array>
 #include <cstdint>
 #include <deque>

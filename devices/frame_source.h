@@ -2,7 +2,7 @@
 // One interface for every source of hand frames (simulated rig, replay, LeapC): a source runs
 // its own thread(s) and reports to a FrameSink (the hub) devices appearing and disappearing, keyed
 // by serial number, and one SourceFrame per tracking event of each device. Sources never decide
-// layout slots; the hub maps serial → slot (field-notes §2.3: identity by serial, never by index).
+// layout slots; the hub maps serial → slot (devices/leapc/README.md: identity by serial, never by index).
 #include <cstdint>
 #include <string>
 
@@ -20,7 +20,7 @@ struct DeviceInfo {
 struct SourceFrame {
   std::string serial;
   // frame.device_id is the source's own device number; the hub rewrites it to the slot number.
-  // Coordinates are in the device's own frame (reference-algorithms.md §1).
+  // Coordinates are in the device's own frame (docs/algorithms/frames.md).
   HandFrame frame;
   std::int64_t host_receive_ns = 0;  // host steady clock (or simulated host time), ns
   HandType hand_type = HandType::kUnknown;

@@ -1,5 +1,5 @@
 #pragma once
-// A second, display-only listener on the hub's frames (issue #11: the live fused hand). The
+// A second, display-only listener on the hub's frames (the live fused hand). The
 // recorder is the hub's one FrameConsumer and may apply back-pressure; a tap never may: it sees
 // every frame of an assigned device after the recorder was offered it, and must return at once
 // without blocking on anything slow (a tap that falls behind drops for itself, never for the

@@ -1,5 +1,5 @@
 #pragma once
-// Bounded single-producer/single-consumer ring (style.md §5.5): the producer never waits on the
+// Bounded single-producer/single-consumer ring (docs/architecture.md): the producer never waits on the
 // consumer. try_push fails when full (the caller counts a drop); try_pop fails when empty.
 // Capacity is fixed at construction, storage allocated once.
 #include <atomic>

@@ -1,5 +1,5 @@
 #pragma once
-// Calibration of every controller's device-to-world transform from one short trial (issue #13):
+// Calibration of every controller's device-to-world transform from one short trial:
 // with Vicon, each controller against the mapped Vicon points it sees (robust Kabsch,
 // rigid_transform.h); without Vicon, all controllers jointly against their consensus, anchored to
 // the layout's nominal frame (consensus_fit.h). Only well-measured points on frames the ray tracer

@@ -2,7 +2,7 @@
 // A calibration written back into a layout, and the residual table people read.
 //
 // How a fitted transform p ↦ R_f·p + t_f maps onto the layout's pose and offset
-// (p = R·p_d + t + offset, reference-algorithms.md §1): the rotation goes into the pose's angles
+// (p = R·p_d + t + offset, docs/algorithms/frames.md): the rotation goes into the pose's angles
 // (the offset is a pure translation and cannot hold one); the pose's x, y, z stay the nominal
 // position a person measured, and the whole translation correction goes into the offset,
 // offset = t_f − (x, y, z), the field the study used for exactly this kind of correction. Then

@@ -25,7 +25,7 @@ struct CalibrationInput {
 
 struct InputOptions {
   ResampleOptions resample;  // set resample.grid_start_us to line the grid up with Vicon frame 0
-  VisibilityParams visibility{400.0, 150.0, 120.0, 10.0};  // recorded-trial analysis (§3)
+  VisibilityParams visibility{400.0, 150.0, 120.0, 10.0};  // recorded-trial analysis (docs/algorithms/visibility.md)
 };
 
 // Throws lmc::Error when the recording has no hand at all.

@@ -1,5 +1,5 @@
 #pragma once
-// A calibration's result as JSON for the record (a session's journal and manifest, issue #13):
+// A calibration's result as JSON for the record (a session's journal and manifest):
 // per controller whether it was fitted, the correction, RMS residual before and after, its
 // warnings; for the set the disagreement between controllers and every set-level warning.
 //   {"with_vicon": bool, "disagreement_before_mm": x, "disagreement_after_mm": x, "warnings": [..],

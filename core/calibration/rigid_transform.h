@@ -22,7 +22,7 @@ struct RigidTransform {
   RigidTransform compose(const RigidTransform& other) const { return {r * other.r, r * other.t + t}; }
 };
 
-// The transform a layout device applies (pose, then offset: reference-algorithms.md §1).
+// The transform a layout device applies (pose, then offset: docs/algorithms/frames.md).
 RigidTransform device_transform(const LayoutDevice& device);
 
 // Rotation angle of r in degrees (0…180).

@@ -53,7 +53,7 @@ std::filesystem::path study_sample_dir() {
     const auto dir = std::filesystem::path(env) / "validation";
     return std::filesystem::is_directory(dir, ec) ? dir : std::filesystem::path();
   }
-  // assets/ → the checkout → its parent, where ../shared sits beside the checkout.
+  // assets/ → the checkout → the folder holding it, where the study's data may sit.
   const auto dir = std::filesystem::path(LMC_SOURCE_ASSETS_DIR).parent_path().parent_path() / "shared" / "reference-data" /
                    "validation";
   return std::filesystem::is_directory(dir, ec) ? dir : std::filesystem::path();

@@ -22,8 +22,8 @@ std::filesystem::path sessions_dir();
 std::filesystem::path user_cache_dir();
 
 // The study's published sample trial (reference-data/validation: Naiv_Static101 with its Vicon
-// file) when it is on this machine: $LMC_REFERENCE_DATA_DIR/validation, else ../shared beside the
-// source tree. Empty when absent; it is data we read, never ship.
+// file) when it is on this machine: $LMC_REFERENCE_DATA_DIR/validation, else shared/reference-data in
+// the folder that holds the source tree. Empty when absent; it is data we read, never ship.
 std::filesystem::path study_sample_dir();
 
 }  // namespace lmc

@@ -11,7 +11,7 @@
 // and are left out. Every series is on the processing grid (100 Hz, frame f at f / 100 s from the
 // trial's first frame); Vicon frame f is grid frame f, as processing and the Review tab align them.
 // Units mm. A point without data in a frame (no hand, Vicon gap) is NaN, never 0.
-// Axes: the world frame (reference-algorithms.md §1: x along the table, y up, z towards the subject)
+// Axes: the world frame (docs/algorithms/frames.md: x along the table, y up, z towards the subject)
 // or OpenSim's convention (X forward from the subject = −z, Y up = y, Z to the subject's right = x).
 #include <Eigen/Core>
 #include <filesystem>

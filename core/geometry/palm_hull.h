@@ -1,6 +1,6 @@
 #pragma once
 // Membership in the convex hull of a handful of points (the six palm points of
-// reference-algorithms.md §3). The authors decide "q lies in the hull" with a linear programme
+// docs/algorithms/visibility.md). The authors decide "q lies in the hull" with a linear programme
 // (q is a convex combination of the points); we precompute the hull's facet planes once per frame
 // so that each query is a few dot products, and fall back to the in-plane polygon when the points
 // are coplanar (the LP then accepts exactly the points of that polygon).

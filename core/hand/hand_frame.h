@@ -1,6 +1,6 @@
 #pragma once
 // A *hand frame* is what one controller reports for one hand in one tracking event: 28 points and
-// 2 unit vectors in the study's order (reference-algorithms.md §2), plus the device bookkeeping
+// 2 unit vectors in the study's order (docs/algorithms/hand-points.md), plus the device bookkeeping
 // the study's files carry. Coordinates are millimetres in whatever frame the producer says
 // (device frame when it comes from a controller, world frame after realignment).
 #include <Eigen/Core>

@@ -29,7 +29,7 @@ Eigen::Matrix3d aim(const Eigen::Vector3d& r) {
   return rot_y(yaw) * rot_x(pitch);
 }
 
-// Buchholz et al. 1992, segment lengths as fractions of hand length (field-notes.md §5):
+// Buchholz et al. 1992, segment lengths as fractions of hand length (docs/algorithms/hand-points.md):
 // rows thumb…little; columns metacarpal, proximal, middle, distal (thumb has no middle).
 constexpr double kBuchholz[5][4] = {
     {0.251, 0.196, 0.0, 0.158},

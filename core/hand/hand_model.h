@@ -2,7 +2,7 @@
 // A parametric right hand that produces the controller's 30-point layout (hand_frame.h) from
 // joint angles: forearm (elbow, wrist), palm, and for each digit the metacarpal base and the
 // MCP / PIP / DIP / tip joints (thumb: CMC, MCP, IP, tip; its controller metacarpal has zero
-// length so Meta == Proxi, reference-algorithms.md §2).
+// length so Meta == Proxi, docs/algorithms/hand-points.md).
 //
 // Canonical hand frame (the "horizontal" reference pose before placement): wrist joint centre at
 // the origin, fingers pointing along −z (away from the subject), back of the hand up (+y), palm
@@ -13,7 +13,7 @@
 // Default segment lengths: Buchholz, Armstrong & Goldstein 1992, "Anthropometric data for
 // describing the kinematics of the human hand", Ergonomics 35(3):261–273 (fractions of hand
 // length HL, wrist crease to middle fingertip), default HL = 190 mm (adult male, Ibeachu et al.
-// 2011) and hand breadth 85 mm (Pheasant, British adult 50th percentile). See field-notes.md §5.
+// 2011) and hand breadth 85 mm (Pheasant, British adult 50th percentile). See docs/algorithms/hand-points.md.
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 #include <array>

@@ -1,6 +1,6 @@
 #pragma once
 // A *hand track* is a hand on the processing grid: `frame_count` frames of the study's 30 entries
-// (28 points + palm normal + palm direction, reference-algorithms.md §2), stored frame-major in one
+// (28 points + palm normal + palm direction, docs/algorithms/hand-points.md), stored frame-major in one
 // flat array so every stage (resample, realign, fuse, measure) walks memory in order. A frame
 // without data holds NaN in all 30 entries; a single NaN entry is allowed too (e.g. a Vicon marker
 // missing for one frame).
@@ -44,10 +44,10 @@ struct DeviceTrack {
 };
 
 // Every device of one trial on a common time grid: frame f is at start_us + f·step_us on the
-// shared LeapGetNow() clock (field-notes §1.4).
+// shared LeapGetNow() clock (devices/leapc/README.md).
 struct GridTrial {
   std::int64_t start_us = 0;
-  double step_us = 10000.0;  // 100 Hz (reference-algorithms.md §6.1)
+  double step_us = 10000.0;  // 100 Hz (docs/algorithms/processing.md)
   int frame_count = 0;
   std::vector<DeviceTrack> devices;  // ascending device_id
 

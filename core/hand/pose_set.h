@@ -1,5 +1,5 @@
 #pragma once
-// A pose set: the hand frames a layout is judged on (reference-algorithms.md §4), world
+// A pose set: the hand frames a layout is judged on (docs/algorithms/metric.md), world
 // coordinates, each with the label of the trial it imitates so tools can filter and split by
 // orientation (horizontal / vertical) and motion (open / index / thumb / wrist-flexion /
 // wrist-extension).

@@ -57,7 +57,7 @@ std::string pose_label_name(HandOrientation o, HandMotion m) {
   return std::string(orientation_name(o)) + "/" + std::string(motion_name(m));
 }
 
-// Active ranges of motion (AAOS-style norms, field-notes.md §5): finger MCP flexion 90°, PIP 100°,
+// Active ranges of motion (AAOS-style norms, docs/algorithms/hand-points.md): finger MCP flexion 90°, PIP 100°,
 // DIP 80°; thumb MCP 55°, IP 80° (CMC flexion ~30° across the palm, our choice); wrist flexion
 // 75°, extension 70°.
 const MotionRanges& motion_ranges() {

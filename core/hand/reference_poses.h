@@ -1,6 +1,6 @@
 #pragma once
-// The study's ten reference hand poses (paper, "LMC Placement Optimization"; reference-algorithms.md
-// §5, §8): five motions — open hand, index flexion, thumb flexion, wrist flexion, wrist extension —
+// The study's ten reference hand poses (paper, "LMC Placement Optimization";
+// docs/algorithms/hand-points.md): five motions — open hand, index flexion, thumb flexion, wrist flexion, wrist extension —
 // each with the palm facing down ("horizontal") and facing the subject's left, thumb up
 // ("vertical"). The hand is about 150 mm above the table centre, the forearm comes from the subject
 // (elbow at +z) and the fingers point away (−z).
@@ -38,7 +38,7 @@ std::string_view motion_words(HandMotion m);
 inline constexpr double kReferencePalmHeight_mm = 150.0;
 
 // Joint angles for `motion` at `progress` in [0, 1] (0 = open hand, 1 = end of the motion's range,
-// from published active ranges of motion, field-notes.md §5). For kOpen progress is ignored.
+// from published active ranges of motion, docs/algorithms/hand-points.md). For kOpen progress is ignored.
 HandJointAngles motion_angles(HandMotion motion, double progress);
 // End-of-range values used by motion_angles (degrees), for documentation and the UI.
 struct MotionRanges {

@@ -41,7 +41,7 @@ class Codec {
         return std::bit_cast<float>(bits);
       case C3dProcessor::kDec: {
         // VAX F: the two 16-bit halves are swapped relative to IEEE and the exponent bias differs
-        // by two (field-notes §4.3): swap, read as IEEE, divide by 4; a zero exponent is zero.
+        // by two (docs/formats.md): swap, read as IEEE, divide by 4; a zero exponent is zero.
         const std::uint32_t hi = static_cast<std::uint32_t>(b[0]) | (static_cast<std::uint32_t>(b[1]) << 8);
         const std::uint32_t lo = static_cast<std::uint32_t>(b[2]) | (static_cast<std::uint32_t>(b[3]) << 8);
         bits = (hi << 16) | lo;
@@ -277,7 +277,7 @@ class Reader {
         if (out.float_storage) {
           v = {c.f32(q), c.f32(q + 4), c.f32(q + 8)};
           const float r = c.f32(q + 12);
-          // The fourth word of a float file is an integer stored as a float (§4.3).
+          // The fourth word of a float file is an integer stored as a float (docs/formats.md).
           residual = std::isfinite(r) ? static_cast<double>(static_cast<std::int16_t>(std::lround(std::clamp(r, -32768.0f, 32767.0f)))) : -1.0;
         } else {
           v = {c.i16(q) * abs_scale, c.i16(q + 2) * abs_scale, c.i16(q + 4) * abs_scale};
@@ -338,7 +338,7 @@ class Reader {
       if (next < 0) fail(off_at, "record " + name + " has a negative offset to the next record");
       pos = off_at + static_cast<size_t>(next);
       if (pos > end) {
-        // Seen in the wild (field-notes §4.3): keep what was read when it is enough, else reject.
+        // Seen in the wild (docs/formats.md): keep what was read when it is enough, else reject.
         bool have_points = false;
         for (const auto& pd : pending) have_points = have_points || pd.name == "USED";
         if (!have_points) fail(off_at, "record " + name + "'s offset points past the parameter section");

@@ -1,5 +1,5 @@
 #pragma once
-// C3D motion files (https://www.c3d.org; field-notes §4.3): our own reader and writer for the 3-D
+// C3D motion files (https://www.c3d.org; docs/formats.md): our own reader and writer for the 3-D
 // point data, so a lab can use Vicon's native export instead of TRC. Supported: 512-byte blocks,
 // header, parameter section with groups and parameters (POINT:USED, LABELS/LABELS2…, RATE, SCALE,
 // DATA_START, FRAMES, UNITS; ANALOG:USED/RATE only to skip analog samples), integer (SCALE > 0) and

@@ -5,7 +5,7 @@
 //     "devices": [ { "slot": "LMC1", "serial": "LP12345" | null,
 //                    "pose": { "x": 0, "y": 0, "z": 0, "rx": 0, "ry": 0, "rz": 0 },
 //                    "offset": [0, 0, 0] }, ... ] }
-// Pose in mm and degrees (reference-algorithms.md §1); offset in mm, applied after the pose.
+// Pose in mm and degrees (docs/algorithms/frames.md); offset in mm, applied after the pose.
 #include <filesystem>
 #include <nlohmann/json_fwd.hpp>
 #include <string>

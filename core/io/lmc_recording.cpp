@@ -26,7 +26,7 @@ constexpr int kSplitColumns = kMetaColumns + 3 * kNumHandPoints + kNumDigits;  /
 constexpr std::array<char, 3> kAxes = {'x', 'y', 'z'};
 // The study's rig has four controllers; the recorder supports up to eight (one LeapC connection).
 constexpr int kMaxDeviceId = 8;
-// Plausibility limits (issue #14). A controller sees ~0.6 m; a coordinate beyond 10 m (in mm) is
+// Plausibility limits. A controller sees ~0.6 m; a coordinate beyond 10 m (in mm) is
 // a corrupt or hostile value, and 1e308 turned every fused frame into NaN downstream. Timestamps
 // beyond 2^53 µs (≈ 285 years) are no clock reading, and would overflow the resampler's arithmetic.
 constexpr double kMaxAbsCoordinateMm = 10000.0;

@@ -16,7 +16,7 @@
 namespace lmc {
 namespace {
 
-constexpr int kHeaderLines = 5;  // PathFileType, keys, values, marker names, X1 Y1 Z1 … (field-notes §4.2)
+constexpr int kHeaderLines = 5;  // PathFileType, keys, values, marker names, X1 Y1 Z1 … (docs/formats.md)
 
 bool known_units(const std::string& units) { return units == "mm" || units == "m"; }
 
@@ -234,7 +234,7 @@ TrcData parse_trc_text(std::string_view content, const std::string& source_name)
         partial_samples += missing < 3 ? 1 : 0;
         p.setConstant(kNaN);
       } else if (p.isZero(0.0)) {
-        // Some exporters write 0 0 0 for a gap (field-notes §4.2).
+        // Some exporters write 0 0 0 for a gap (docs/formats.md).
         ++zero_samples;
         p.setConstant(kNaN);
       }
@@ -301,13 +301,13 @@ void write_trc(std::ostream& out, const TrcData& trc, const std::string& path_fi
     const std::string k = std::to_string(m);
     s += "X" + k + "\tY" + k + "\tZ" + k + "\t";
   }
-  // The blank line OpenSim expects (field-notes §4.2); our reader accepts files with or without it.
+  // The blank line OpenSim expects (docs/formats.md); our reader accepts files with or without it.
   s += "\n\n";
   for (int f = 0; f < frames; ++f) {
     const int number = have_numbers ? trc.frame_numbers[static_cast<size_t>(f)] : trc.orig_data_start_frame + f;
     s += std::to_string(number);
     s += '\t';
-    // Time of frame f = (f − OrigDataStartFrame)/DataRate when the caller gave none (field-notes §4.2).
+    // Time of frame f = (f − OrigDataStartFrame)/DataRate when the caller gave none (docs/formats.md).
     text::append_double(s, have_times ? trc.times_s[static_cast<size_t>(f)]
                                       : (number - trc.orig_data_start_frame) / trc.data_rate_hz);
     for (const auto& p : trc.positions[static_cast<size_t>(f)]) {

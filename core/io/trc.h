@@ -1,5 +1,5 @@
 #pragma once
-// TRC marker files (Motion Analysis "Track Row Column", as exported by Vicon; field-notes §4.2).
+// TRC marker files (Motion Analysis "Track Row Column", as exported by Vicon; docs/formats.md).
 // Tab-separated: PathFileType line, header keys, header values, `Frame# Time <marker> …`,
 // `X1 Y1 Z1 …`, then one row per frame. Missing markers are empty cells (also tolerated: NaN,
 // nan); they are read as NaN. Frame count comes from the rows; a disagreeing header is a warning.

@@ -1,5 +1,5 @@
 #pragma once
-// Vicon marker set → the controller's 30-point layout (reference-algorithms.md §7), as data:
+// Vicon marker set → the controller's 30-point layout (docs/algorithms/vicon.md), as data:
 // `assets/mappings/vicon-26-to-lmc.json` (format 1) lists the marker names it expects and, for each
 // target point by its study name ("Palm Position", "Finger3_Meta", …), a weighted sum of markers.
 // Targets it leaves out (palm normal and direction) are zero, as in the study. A lab with another

@@ -1,5 +1,5 @@
 #pragma once
-// A device pose places a controller on the table (reference-algorithms.md §1):
+// A device pose places a controller on the table (docs/algorithms/frames.md):
 // p_world = R·p_device + t with R = Rz(rz)·Ry(ry)·Rx(rx) (x applied first), t = (x, y, z).
 // Millimetres and degrees, as in the study's tables.
 #include <Eigen/Core>
@@ -26,7 +26,7 @@ struct DevicePose {
     return rotation() * p_device + translation();
   }
   // The direction the controller looks at "forward" in world terms: R·(0, 0, −1), away from
-  // the user (§3).
+  // the user (docs/algorithms/visibility.md).
   Eigen::Vector3d forward() const;
   Eigen::Vector3d up() const;  // R·(0, 1, 0): the viewing axis
 

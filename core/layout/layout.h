@@ -1,7 +1,7 @@
 #pragma once
 // A *layout* is where the lab's controllers stand: a named list of devices, each with a slot name
 // (LMC1…), an optional serial number that binds a physical controller to the slot, a pose and the
-// per-device offset measured at calibration (applied after the pose, reference-algorithms.md §1),
+// per-device offset measured at calibration (applied after the pose, docs/algorithms/frames.md),
 // plus the sensor model they share. It is a plain value: copy it, compare it, undo it.
 #include <Eigen/Core>
 #include <optional>

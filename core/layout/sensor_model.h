@@ -1,7 +1,7 @@
 #pragma once
 // What one controller can see: a pyramid with its apex at the device origin, opening upwards
 // (device +y), spread along the long axis x and the short axis z, cut at a range.
-// Defaults are the study's optimisation values (reference-algorithms.md §3): 600 mm, 150°×120°.
+// Defaults are the study's optimisation values (docs/algorithms/visibility.md): 600 mm, 150°×120°.
 // Recorded-trial analysis uses 400 mm.
 namespace lmc {
 

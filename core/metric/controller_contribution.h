@@ -1,5 +1,5 @@
 #pragma once
-// What each controller of a layout contributes (issue #15's "every controller counts"): how often
+// What each controller of a layout contributes ("every controller counts"): how often
 // it sees some finger, how often it is the only one seeing some finger, how often a marker it sees
 // lies beyond its axis cut, and what the layout loses without it (M and the share of frames with
 // every finger seen by ≥ 2 controllers, recomputed from the same visibility bits without it).

@@ -1,5 +1,5 @@
 #pragma once
-// The numbers behind the placement metric (reference-algorithms.md §4), computed from the
+// The numbers behind the placement metric (docs/algorithms/metric.md), computed from the
 // visibility bits of a layout: for frame j and finger k, count the devices that see k;
 // F_j = min over the five fingers; c_i = #{j : F_j = i} for i = 0…D; plus per device × finger
 // coverage and per finger "seen by nobody" counts.

@@ -1,5 +1,5 @@
 #pragma once
-// One page that explains a layout (issue #15): the study's M and the robust terms, split by palm
+// One page that explains a layout: the study's M and the robust terms, split by palm
 // orientation; what each controller contributes (what the layout loses without it, the frames in
 // which it alone sees some finger, its axis-cut violations); and per reference pose how often each
 // finger is seen by one and by two or more controllers. `lmc evaluate --report DIR` writes it as

@@ -1,5 +1,5 @@
 #pragma once
-// Where on the table one controller would help (issue #4's heatmap, moved to core for issue #15's
+// Where on the table one controller would help (the Layout tab's heatmap and the
 // layout report): for each cell of a grid on the table, the share of pose-set frames in which the
 // chosen finger would be visible if the controller's origin stood above that cell (same height and
 // orientation), or, in the second mode, the share of frames it would *add* (visible to it and

@@ -1,5 +1,5 @@
 #pragma once
-// The robust placement metric (issue #15): the study's M first, then tie-breakers with explicit
+// The robust placement metric: the study's M first, then tie-breakers with explicit
 // weights that make every controller count. Lower is better, like M:
 //
 //   R = M + w_redundancy · (1 − S2)            S2: share of frames in which every finger is seen by ≥ 2 controllers

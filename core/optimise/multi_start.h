@@ -1,5 +1,5 @@
 #pragma once
-// Several particle swarms from different seeds (issue #15): the best layout, and the runners-up
+// Several particle swarms from different seeds: the best layout, and the runners-up
 // that are really different layouts rather than the same one found twice.
 //
 // Start k uses seed `settings.seed + k`; the starts run one after another, each using every

@@ -1,5 +1,5 @@
 #pragma once
-// Global-best particle swarm search for a layout (reference-algorithms.md §5). A synchronous
+// Global-best particle swarm search for a layout (docs/algorithms/search.md). A synchronous
 // function: it owns no threads (oneTBB parallelises the evaluation inside), reports progress
 // through a callback on the calling thread after every iteration, checks the stop token between
 // chunks of work, and returns Completed or Cancelled with the best layout found so far.

@@ -1,5 +1,5 @@
 #pragma once
-// What the placement search may change (reference-algorithms.md §5): any subset of the six pose
+// What the placement search may change (docs/algorithms/search.md): any subset of the six pose
 // parameters {x, y, z, rx, ry, rz} (order of DevicePose::get), each with its own bounds, the same
 // for every device; per-device locks keep a whole device, or single parameters of it, at the start
 // layout's value (the workbench inspector's lock toggles).
@@ -52,7 +52,7 @@ std::string format_search_bounds(const SearchSpace& space);
 
 // The table top the workbench draws: x, z within ±400 mm of the set-up's centre.
 inline constexpr double kTableHalfExtentMm = 400.0;
-// The robust search's default (issue #15): the paper's four parameters, with x and z keeping every
+// The robust search's default: the paper's four parameters, with x and z keeping every
 // controller whole on the table (centre within ±(400 − 40) mm), rx ∈ [−90, 90]°, ry ∈ [−180, 180]°.
 SearchSpace table_search_space();
 

@@ -1,7 +1,7 @@
 #pragma once
 // Evaluates many layouts at once on a pose set, the PSO's inner loop: for each layout, the
 // histogram c_0…c_D of "devices that see the worst-covered finger" per frame
-// (reference-algorithms.md §4). Parallel over chunks of frames with oneTBB; the per-chunk integer
+// (docs/algorithms/metric.md). Parallel over chunks of frames with oneTBB; the per-chunk integer
 // histograms are summed, so the result is identical for any thread count and chunking.
 #include <cstddef>
 #include <cstdint>

@@ -1,5 +1,5 @@
 #pragma once
-// Stage 6 (reference-algorithms.md §6.6): LMC against Vicon. Both series start on the same
+// Stage 6 (docs/algorithms/processing.md): LMC against Vicon. Both series start on the same
 // trigger at 100 Hz, so the study trimmed both to the shorter one; we do the same and, in
 // addition, estimate any residual lag by cross-correlating the wrist trajectories (reported, not
 // applied, so reference numbers stay comparable). Differences are LMC − Vicon.

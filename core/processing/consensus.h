@@ -1,5 +1,5 @@
 #pragma once
-// How well a fusion keeps the hand's shape, judged without Vicon (issue #16): each fused finger and
+// How well a fusion keeps the hand's shape, judged without Vicon: each fused finger and
 // segment length against the controllers that see that finger. Every controller reports fingers
 // shorter than Vicon's markers, so Vicon alone cannot tell a fusion that shortens the hand from a
 // controller that does; the controllers that see a finger can.

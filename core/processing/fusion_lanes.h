@@ -3,7 +3,7 @@
 // coordinate by coordinate, as before, and beside them the length of every finger bone from the
 // MCP joint outward as a quantity of its own.
 //
-// Why (issue #16): averaging the *points* of controllers whose realigned hands disagree in position
+// Why: averaging the *points* of controllers whose realigned hands disagree in position
 // and rotation shortens every bone (two 30 mm bones turned 40° apart average to 28.2 mm), and
 // weights that differ between the joints of one finger stitch the fused finger from hands that are
 // ~10 mm apart. On the study's real trial that made the fused middle finger 10 mm shorter than the

@@ -56,8 +56,7 @@ void frame_quality(std::span<const Vec3, kNumHandPoints> v, const FingerLabels* 
     out[static_cast<size_t>(i)] = static_cast<float>(factor);
   }
   // A finger's points share one weight, its worst joint's: weights that differ between the joints
-  // of one finger stitch its fused points from controllers whose hands are millimetres apart
-  // (issue #16).
+  // of one finger stitch its fused points from controllers whose hands are millimetres apart.
   for (int i = kFirstDigitPoint; i < kNumHandPoints; ++i) {
     out[static_cast<size_t>(i)] *= static_cast<float>(finger_cut[static_cast<size_t>(point_finger(i))]);
   }

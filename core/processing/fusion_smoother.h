@@ -11,7 +11,7 @@
 //  * a device-frame coordinate sits at the controller's axis cut (within the margin of
 //    ±axis_cut_mm, the "250 mm" clipping in the paper's Discussion): multiplied by
 //    `axis_cut_factor` — for a finger joint, the whole finger, so one finger's joints are never
-//    weighted differently (issue #16);
+//    weighted differently;
 //  * the elbow (the study found it systematically wrong) gets `elbow_factor`.
 // Frames where no device has had a value for more than `max_gap_frames` stay NaN (the reference
 // filter would coast on its last velocity there). NaN from any device at any time is skipped.
@@ -26,7 +26,7 @@ namespace lmc {
 // Which computation fuse_default does for the same parameters. It is part of the processing cache's
 // key and of every export's parameters (process_options_json.h), so a result fused by an older
 // rule is never reused or mistaken for a current one. 2: bone-length lanes, one cut weight per
-// finger, cut only at the cut value (issue #16).
+// finger, cut only at the cut value.
 inline constexpr int kDefaultFusionRevision = 2;
 
 struct SmootherParams {

@@ -7,7 +7,7 @@
 namespace lmc {
 
 void rolling_variance(const double* x, int n, int window, double* out) {
-  // pandas centres a window of w on label i as [i − w/2, i + (w − 1) − w/2] (§6.3: i−15 … i+14).
+  // pandas centres a window of w on label i as [i − w/2, i + (w − 1) − w/2] (docs/algorithms/fusion.md: i−15 … i+14).
   const int before = window / 2;
   const int after = window - 1 - before;
   // Sums of deviations from a shift value keep the one-pass formula well conditioned.

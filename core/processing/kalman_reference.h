@@ -1,5 +1,5 @@
 #pragma once
-// The study's fusion, exactly (reference-algorithms.md §6.3 — the **reference** method): every one
+// The study's fusion, exactly (docs/algorithms/fusion.md — the **reference** method): every one
 // of the 90 coordinates separately, a 1-D constant-velocity Kalman filter (dt 0.01 s,
 // Q = diag(0.04, 1), P0 = diag(100, 300)), started at the first step where any device (in device
 // order) has a value, then per step: predict, and update with each device in order whose value and

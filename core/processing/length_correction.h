@@ -1,5 +1,5 @@
 #pragma once
-// Per-subject finger-length correction (issue #16 item 4): optional, off by default, for the
+// Per-subject finger-length correction: optional, off by default, for the
 // default fusion only.
 //
 // Why: every controller reports the fingers shorter than Vicon's skin markers (the shared real

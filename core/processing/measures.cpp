@@ -20,7 +20,7 @@ constexpr std::array<std::array<int, 2>, kNumSegments> kSegments{{{7, 8},
                                                                  {26, 27},
                                                                  {27, 28},
                                                                  {28, 29}}};
-// Joint angle = angle between (p0→p1) and (p2→p3); §6.4.
+// Joint angle = angle between (p0→p1) and (p2→p3) (docs/algorithms/processing.md, stage 5).
 constexpr std::array<std::array<int, 4>, kNumAngles> kAngles{{{10, 11, 11, 12},
                                                              {11, 12, 12, 13},
                                                              {12, 13, 13, 14},

@@ -1,5 +1,5 @@
 #pragma once
-// Stage 5 (reference-algorithms.md §6.4–§6.5): segment and finger lengths, the six joint angles,
+// Stage 5 (docs/algorithms/processing.md): segment and finger lengths, the six joint angles,
 // per-trial statistics and the per-device visibility table — identical for fused LMC points and
 // for Vicon points mapped to the 30-point layout.
 #include <array>

@@ -1,6 +1,6 @@
 #pragma once
 // The default fusion (fusion_smoother.h), causal: one device frame at a time as it arrives, for
-// the live fused hand of the Record and Devices tabs (issue #11). Per frame it does what the
+// the live fused hand of the Record and Devices tabs. Per frame it does what the
 // offline stages do for a whole trial, with the same code:
 //  1. ray-traces the frame in the device's own frame (visibility_labels.h, frame_visibility_labels);
 //  2. turns labels and axis cuts into variance factors (fusion_smoother.h, frame_quality);

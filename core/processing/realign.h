@@ -1,5 +1,5 @@
 #pragma once
-// Stage 2 (reference-algorithms.md §1, §6.2): each device's points from its own frame into the
+// Stage 2 (docs/algorithms/frames.md, docs/algorithms/processing.md): each device's points from its own frame into the
 // world frame with the trial's layout: p = R·p_d + t, then + offset. Recording device id k uses the
 // layout's k-th device (LMC1 = first). The palm normal and direction are directions, so they are
 // only rotated (the study's script pushed them through the full transform as if they were

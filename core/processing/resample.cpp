@@ -72,7 +72,7 @@ void add_issue(ResampleReport* report, std::map<std::pair<int, int>, size_t>& li
 // A grid this long would need gigabytes per device whatever the recording says.
 constexpr long kMaxGridFrames = 100'000'000;
 
-// Refuses a grid far longer than the rows can fill (issue #14: one row whose timestamp jumped by
+// Refuses a grid far longer than the rows can fill (one row whose timestamp jumped by
 // 10^4 s made a 10 s recording ask for a multi-GB grid). The recorder writes every frame a
 // controller sends, hand or not, at 10–120 Hz per controller; a recording that averages less than
 // one row per `max_seconds_per_row` over more than `min_plausible_span_s` has a corrupt clock.

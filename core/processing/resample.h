@@ -1,5 +1,5 @@
 #pragma once
-// Stage 1 of the pipeline (reference-algorithms.md §6.1): every device's raw, variable-rate stream
+// Stage 1 of the pipeline (docs/algorithms/processing.md): every device's raw, variable-rate stream
 // onto one 100 Hz grid that starts at the first time any device saw the hand.
 //
 // Interpolation is a cubic spline through the samples (a cubic B-spline with a knot at every
@@ -41,7 +41,7 @@ struct ResampleOptions {
   // the recording knows when the Vicon trigger fired (the simulator's sidecar notes the device
   // clock at ground-truth time zero), so grid frame f and Vicon frame f are the same instant.
   std::optional<std::int64_t> grid_start_us;
-  // Plausibility of the span (issue #14): the hand samples may span at most
+  // Plausibility of the span: the hand samples may span at most
   // min_plausible_span_s + max_seconds_per_row × rows; beyond it a timestamp jumped (the error
   // names the row) and the grid would cost memory out of all proportion to the file.
   double min_plausible_span_s = 60.0;

@@ -62,7 +62,7 @@ TrialResult process_trial(const std::string& trial_name, const LmcRecording& rec
   }
   r.lmc_frames_before_trim = r.device_frame.frame_count;
 
-  // Trim to the shorter series before fusion, as the study did (§6.6).
+  // Trim to the shorter series before fusion, as the study did (docs/algorithms/processing.md, stage 7).
   HandTrack vicon_trimmed;
   if (vicon != nullptr) {
     r.has_vicon = true;

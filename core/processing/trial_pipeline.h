@@ -1,5 +1,5 @@
 #pragma once
-// One trial through every stage (reference-algorithms.md §6): resample → visibility labels (device
+// One trial through every stage (docs/algorithms/processing.md): resample → visibility labels (device
 // frame) → realign → fuse → measures → compare with Vicon. Each stage is its own unit
 // (resample.h, realign.h, visibility_labels.h, kalman_reference.h / fusion_smoother.h, measures.h,
 // compare.h); this file only strings them together and keeps the intermediates so the workbench
@@ -30,8 +30,8 @@ struct ProcessOptions {
   ResampleOptions resample;
   ReferenceKalmanParams kalman;
   SmootherParams smoother;
-  VisibilityParams visibility{400.0, 150.0, 120.0, 10.0};  // recorded-trial analysis (§3)
-  bool trim_to_vicon = true;  // as the study: both series cut to the shorter before fusion (§6.6)
+  VisibilityParams visibility{400.0, 150.0, 120.0, 10.0};  // recorded-trial analysis (docs/algorithms/visibility.md)
+  bool trim_to_vicon = true;  // as the study: both series cut to the shorter before fusion (docs/algorithms/processing.md, stage 7)
   int max_lag_frames = 50;
   double min_vicon_seconds = 1.0;  // a shorter Vicon file is rejected
   // Per-subject finger-length correction applied after fusion (length_correction.h). Off unless

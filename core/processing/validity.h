@@ -1,5 +1,5 @@
 #pragma once
-// One trial's validity figures for one fusion method (issue #16): finger lengths and joint angles
+// One trial's validity figures for one fusion method: finger lengths and joint angles
 // against Vicon (bias = mean LMC − Vicon over the compared frames, RMSE), and the consensus
 // measures that need no Vicon (consensus.h): fused lengths against the controllers that see the
 // finger. `lmc validate` prints them for every method, real recordings before simulated ones.

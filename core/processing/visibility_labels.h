@@ -1,5 +1,5 @@
 #pragma once
-// Stage 3 (reference-algorithms.md §3, "for recorded data"): per device and grid frame, which
+// Stage 3 (docs/algorithms/visibility.md, "for recorded data"): per device and grid frame, which
 // fingers the device could really see. The placement engine's ray tracer runs on the device's
 // own, not yet realigned, points with the device at the origin and identity rotation and the
 // recorded-trial range (400 mm, 150°×120°, phalanx radius 10 mm). Labels: 1 visible, 0 reported
@@ -13,7 +13,7 @@
 
 namespace lmc {
 
-// The recorded-trial analysis parameters of §3.
+// The recorded-trial analysis parameters (docs/algorithms/visibility.md).
 VisibilityParams recorded_trial_visibility_params();
 
 std::vector<FingerLabels> visibility_labels(const HandTrack& device_frame_track,

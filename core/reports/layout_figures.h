@@ -1,5 +1,5 @@
 #pragma once
-// The layout report's pictures (issue #15), as core figures (core/figures/figure.h) so they are
+// The layout report's pictures, as core figures (core/figures/figure.h) so they are
 // written as SVG with the data behind them like every other figure:
 //  * a top view of the table: each controller's 80 × 30 mm footprint, the line along which it looks
 //    up to the height of the hands, and the palm positions of the pose set (the hand's workspace);

@@ -1,5 +1,5 @@
 #pragma once
-// The layout report as files (issue #15), one implementation for `lmc evaluate --report DIR` and
+// The layout report as files, one implementation for `lmc evaluate --report DIR` and
 // the Layout tab's "Write report...": the pictures first (top-view, pose-redundancy and the
 // finger × pose coverage heatmap finger-coverage: SVG, the CSV behind each and a JSON sidecar),
 // then report.md, which links them. Each file is written atomically; returns report.md's path.

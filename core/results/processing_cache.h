@@ -1,5 +1,5 @@
 #pragma once
-// The workbench's cache of processed trials (issue #12): reopening a session is instant and only
+// The workbench's cache of processed trials: reopening a session is instant and only
 // what changed is processed again. An entry holds a trial's outcome (its summary, warnings and
 // error), keyed by everything that decides it — the software version, each input file's path,
 // size and modification time, the layout and mapping chosen, and every processing parameter

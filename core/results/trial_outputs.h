@@ -1,5 +1,5 @@
 #pragma once
-// What `lmc process` writes per trial (issue #6, "Commands and outputs"):
+// What `lmc process` writes per trial:
 //  * <trial>.fused.txt      fused points in the study's resampled-file layout (one stream, id 1,
 //                           100 Hz; no hand = nan,nan,nan), readable by read_lmc_recording;
 //  * <trial>.measures.tsv   per-frame segment/finger lengths and joint angles (LMC, and Vicon when

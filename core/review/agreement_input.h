@@ -1,5 +1,5 @@
 #pragma once
-// The per-trial LMC-vs-Vicon pairs the agreement statistics are computed from (issue #12, Review
+// The per-trial LMC-vs-Vicon pairs the agreement statistics are computed from (Review
 // tab). A trial's summary JSON already holds one value per finger length and joint ROM for each
 // system; agreement is judged on those per-trial values (not per frame), so a trial is one
 // observation and a subject with several trials needs the repeated-measures forms downstream.

@@ -1,5 +1,5 @@
 #pragma once
-// What the Review tab's Export buttons and `lmc figures` write (issue #12), one implementation for
+// What the Review tab's Export buttons and `lmc figures` write, one implementation for
 // both: every figure as SVG with the exact data behind it as CSV and a JSON sidecar (inputs,
 // method, parameters, software version), and the tables as CSV/JSON/Markdown.
 //   agreement.csv / agreement.json        Bland–Altman, RMSE, r, ICC per layout × pose and measure

@@ -1,5 +1,5 @@
 #pragma once
-// One line of the Review tab's trial table (issue #12), read from a processed trial's summary
+// One line of the Review tab's trial table, read from a processed trial's summary
 // (trial_summary.h): what it is (subject, layout, pose, motion, method), whether it worked, and the
 // headline numbers a researcher sorts by — how much each controller saw, how far the fingers and
 // the ranges of motion are from Vicon, and the LMC–Vicon lag. NaN means "not known" (no Vicon, the

@@ -1,6 +1,6 @@
 #pragma once
 // One processed trial as time series for the Review tab's stacked plots and their CSV export
-// (issue #12): the six joint angles and five finger lengths of the fused hand, of Vicon and of each
+//: the six joint angles and five finger lengths of the fused hand, of Vicon and of each
 // controller after realignment, and per controller and finger the ray-traced label, so every gap
 // in a curve has a visible cause. Missing values stay NaN (never 0); series share one time axis in
 // seconds from the grid's first frame (Vicon frame f is grid frame f: processing aligns them).

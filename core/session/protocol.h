@@ -1,5 +1,5 @@
 #pragma once
-// A recording protocol as data (issue #10): which layouts, palm poses and motions a subject
+// A recording protocol as data: which layouts, palm poses and motions a subject
 // performs, how often, for how long, with which cues, and what a good trial of each kind looks
 // like. `assets/protocols/study.json` is the study's 2 × 2 × 4 × 5 = 80 trials; `quick.json` a
 // short one for demos and tests. A protocol file is validated like a layout: an error names the
@@ -40,7 +40,7 @@ struct TrialType {
   QualityThresholds quality;
 };
 
-// An optional calibration at the start of every layout block (issue #13): a short trial of a
+// An optional calibration at the start of every layout block: a short trial of a
 // still open hand from which the block's controllers are calibrated (core/calibration) before
 // its first trial; the result becomes the block's layout in the manifest.
 struct CalibrationStep {

@@ -1,6 +1,6 @@
 #pragma once
 // What a protocol expects of one trial type and where its quality verdict draws the line
-// (issue #10). Lives apart from the protocol reader and the quality check so both include it
+//. Lives apart from the protocol reader and the quality check so both include it
 // without including each other. Every number comes from the protocol file; the defaults here
 // are what `assets/protocols/study.json` uses when a trial type says nothing.
 #include <optional>

@@ -1,5 +1,5 @@
 #pragma once
-// One subject session on disk (issue #10, sessions/README.md):
+// One subject session on disk (sessions/README.md):
 //   session.json    the manifest, rewritten atomically after every event (a view of the journal)
 //   journal.jsonl   every state change, appended and fsynced before anything acts on it
 //   LMC_<T>.*, T.trc the accepted or latest attempt of each trial, under the trial's own name

@@ -1,5 +1,5 @@
 #pragma once
-// What a subject session folder says (issue #10): who, which protocol and layouts, and where each
+// What a subject session folder says: who, which protocol and layouts, and where each
 // trial of the plan stands. The state is a pure function of the journal: replaying its events in
 // order with apply_journal_event gives the same state every time, so after a crash the journal
 // wins and the manifest (session_manifest_json of the state) can always be rebuilt from it.

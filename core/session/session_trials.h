@@ -1,5 +1,5 @@
 #pragma once
-// A subject session folder as input to processing (issue #10): the accepted attempt of each
+// A subject session folder as input to processing: the accepted attempt of each
 // trial only, in plan order. Earlier attempts (under superseded/) and trials never accepted are
 // left out, each with a note saying so. Read-only: processing never repairs or moves a session.
 #include <filesystem>

@@ -1,4 +1,4 @@
-// The quality verdict right after a trial (trial_quality.h, issue #10). This file turns the
+// The quality verdict right after a trial (trial_quality.h). This file turns the
 // measurements of trial_quality_devices.cpp and trial_quality_grid.cpp into the report and into
 // reasons a person can act on. The line it keeps: fail only for faults of the recording itself,
 // so a redo can fix them; what the study sets out to measure is reported as a warn at most.
@@ -19,7 +19,7 @@ namespace lmc::session {
 namespace {
 
 // The grid that hand presence, finger visibility and range of motion are read on: 100 Hz, the
-// processing grid's rate (reference-algorithms.md §6.1).
+// processing grid's rate (docs/algorithms/processing.md).
 constexpr double kGridStepUs = 10000.0;
 // A backwards timestamp step larger than this is a clock reset, not USB reordering (the
 // resampler's default, resample.h).

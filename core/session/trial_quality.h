@@ -1,5 +1,5 @@
 #pragma once
-// The quality verdict seconds after a trial (issue #10): per controller frames, rate, hand
+// The quality verdict seconds after a trial: per controller frames, rate, hand
 // presence, gaps and drops; how often each finger is seen by at least one controller (ray-traced
 // against the block's layout, the engine processing uses); the range of motion the trial's joint
 // reached; the Vicon trigger's fate. The verdict is pass, warn or fail with reasons in plain

@@ -1,8 +1,8 @@
 #pragma once
 // What the visibility tests need to know about one device: its origin o in world coordinates,
 // the world→device rotation Rᵀ (for the pyramid test in the device frame) and its forward
-// direction f = R·(0, 0, −1) (reference-algorithms.md §3). The origin is the full device→world
-// transform of the device-frame origin, i.e. pose translation plus calibration offset (§1).
+// direction f = R·(0, 0, −1) (docs/algorithms/visibility.md). The origin is the full device→world
+// transform of the device-frame origin, i.e. pose translation plus calibration offset (docs/algorithms/frames.md).
 #include "core/layout/layout.h"
 
 namespace lmc {

@@ -1,5 +1,5 @@
 #pragma once
-// Per-frame data that every device shares (reference-algorithms.md §2, §3), computed once per
+// Per-frame data that every device shares (docs/algorithms/hand-points.md, docs/algorithms/visibility.md), computed once per
 // frame so that each (device, frame) test is only the device-dependent arithmetic:
 //  * the 22 ray-tracing markers s0…s21 (s0 elbow, s1–s4 thumb Proxi…End, s5–s8 index,
 //    s9–s12 middle, s13–s16 ring, s17 pinky Meta, s18–s21 pinky Proxi…End);

@@ -1,5 +1,5 @@
 #pragma once
-// The batch kernel's form of the §3.4 finger-occlusion test (visibility_tests.h has the
+// The batch kernel's form of visibility step 4 finger-occlusion test (visibility_tests.h has the
 // reference form, which the explaining path uses). Same expressions, evaluated in the same order
 // per (ray, phalanx), so every decision is bit-for-bit the reference's; only the work around them
 // differs. Why it is faster, measured on the 10,000-frame Monte Carlo set with layouts that see

@@ -38,7 +38,7 @@ struct VisibilityExplanation {
   double approach_dot = 0;  // a·f
 };
 
-// For a hidden finger the reason is the first failing test in the order of §3 (approach, then
+// For a hidden finger the reason is the first failing test in the order of docs/algorithms/visibility.md (approach, then
 // range/pyramid over s1…s21 in index order, then for each of the finger's markers in order:
 // palm, then other fingers' phalanges in index order).
 VisibilityExplanation explain_visibility(const PreparedFrame& frame, const DeviceView& device,

@@ -1,5 +1,5 @@
 #pragma once
-// The fast face of the visibility test (reference-algorithms.md §3): 5 bits per (device, frame),
+// The fast face of the visibility test (docs/algorithms/visibility.md): 5 bits per (device, frame),
 // bit k set when finger k (0 thumb … 4 pinky) is visible. Uses the same elementary tests as
 // visibility_explain.h (visibility_tests.h), with early exits.
 #include <cstdint>

@@ -1,5 +1,5 @@
 #pragma once
-// The four numbers of the visibility test (reference-algorithms.md §3): sensor range, the
+// The four numbers of the visibility test (docs/algorithms/visibility.md): sensor range, the
 // pyramid's full angles along the device's long (x) and short (z) axes, and the phalanx radius.
 // Defaults: the study's optimisation values (600 mm, 150°×120°, 10 mm radius); recorded trials
 // are analysed with 400 mm.

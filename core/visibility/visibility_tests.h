@@ -1,5 +1,5 @@
 #pragma once
-// The elementary tests of reference-algorithms.md §3, each written once and used by both the
+// The elementary tests of docs/algorithms/visibility.md, each written once and used by both the
 // batch kernel (visibility_kernel.cpp) and the explaining path (visibility_explain.cpp), so the
 // two can never disagree. Everything is double precision, like the authors' numpy code.
 #include <cmath>
@@ -10,7 +10,7 @@
 
 namespace lmc::vis {
 
-// §3.1: the hand must enter from the user's side, a·f ≥ 0.
+// visibility step 1: the hand must enter from the user's side, a·f ≥ 0.
 inline double approach_dot(const PreparedFrame& fr, const DeviceView& d) {
   return fr.ax * d.fx + fr.ay * d.fy + fr.az * d.fz;
 }
@@ -18,7 +18,7 @@ inline bool approach_ok(const PreparedFrame& fr, const DeviceView& d) { return a
 
 enum class ViewResult : int { kInside = 0, kOutOfRange = 1, kOutOfView = 2 };
 
-// §3.2 for one marker m: distance to the device origin, then the pyramid in the device frame
+// visibility step 2 for one marker m: distance to the device origin, then the pyramid in the device frame
 // (|p.x| ≤ p.y·tan(long/2), |p.z| ≤ p.y·tan(short/2); on a plane counts as inside).
 inline ViewResult marker_in_view(double mx, double my, double mz, const DeviceView& d, const VisibilityLimits& lim) {
   const double vx = mx - d.ox, vy = my - d.oy, vz = mz - d.oz;
@@ -37,7 +37,7 @@ inline double palm_plane_numerator(const PreparedFrame& fr, const DeviceView& d)
   return fr.nx * (fr.cx - d.ox) + fr.ny * (fr.cy - d.oy) + fr.nz * (fr.cz - d.oz);
 }
 
-// §3.3 for the ray o → m, v = m − o (not normalised): the line meets the palm plane at
+// visibility step 3 for the ray o → m, v = m − o (not normalised): the line meets the palm plane at
 // q = o + t·v with t = n·(c − o) / n·v; occluded when 0 < t < 1 (strictly between device and
 // marker) and q lies in the palm points' 3-D hull. A ray parallel to the plane (n·v = 0) is not
 // occluded.
@@ -50,7 +50,7 @@ inline bool palm_occludes(const PreparedFrame& fr, const DeviceView& d, double p
   return hull_contains(fr.hull, d.ox + t * vx, d.oy + t * vy, d.oz + t * vz);
 }
 
-// §3.4, the device-dependent part of each phalanx, computed once per (device, frame) and shared
+// visibility step 4, the device-dependent part of each phalanx, computed once per (device, frame) and shared
 // by all rays: e = b − o, g = w × e, w·e, w·w, plus w and the length. 16 lanes (the 16th is a
 // zero-length dummy that never occludes) so the per-ray loop vectorises without a remainder.
 inline constexpr int kPhalanxLanes = 16;
@@ -86,7 +86,7 @@ inline void prepare_phalanges(const PreparedFrame& fr, const DeviceView& d, Phal
   }
 }
 
-// §3.4 for the ray o → m (v = m − o, not normalised, vv = v·v) against phalanx p of `pb`.
+// visibility step 4 for the ray o → m (v = m − o, not normalised, vv = v·v) against phalanx p of `pb`.
 // With unit v̂ = v/D the study's conditions are d < r, 0 < t1 ≤ D, 0 < t2 < ℓ where n̂ = v̂ × w,
 // d = |n̂·e|/|n̂|, t1 = (w × n̂)·e / n̂·n̂, t2 = (v̂ × n̂)·e / n̂·n̂. With n = v × w = D·n̂ they read
 //   (n·e)² < r²·n·n,   0 < (w × n)·e ≤ n·n,   0 < (v × n)·e < ℓ·n·n

@@ -1,5 +1,5 @@
 #pragma once
-// The live fused hand (issue #11; the paper's future work: fusion on a thread of its own, apart
+// The live fused hand (the paper's future work: fusion on a thread of its own, apart
 // from the threads reading the controllers). A LiveFusion is a hub tap (frame_tap.h) that queues
 // every frame the hub delivers and a worker thread that feeds each one, in arrival order, to the
 // causal default fusion (core/processing/online_fusion.h: ray-traced seen-by counts, Kalman

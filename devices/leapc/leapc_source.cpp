@@ -18,7 +18,7 @@ Vec3 to_vec(const LEAP_VECTOR& v) { return {v.x, v.y, v.z}; }
 
 HandType to_hand_type(eLeapHandType t) { return t == eLeapHandType_Left ? HandType::kLeft : HandType::kRight; }
 
-// The study's 28 points + 2 vectors (reference-algorithms.md §2, field-notes §1.3).
+// The study's 28 points + 2 vectors (docs/algorithms/hand-points.md, devices/leapc/README.md).
 void copy_hand(const LEAP_HAND& h, HandFrame& f) {
   f.point(kPalm) = to_vec(h.palm.position);
   f.point(kPalmNormal) = to_vec(h.palm.normal);

@@ -1,5 +1,5 @@
 #pragma once
-// Ultraleap LeapC backend (issue #5; field-notes §1.2): one multi-device-aware connection, one
+// Ultraleap LeapC backend (devices/leapc/README.md): one multi-device-aware connection, one
 // poll thread, N devices. Devices are discovered from Device events, opened, identified by serial
 // and subscribed; tracking events are matched to their device by the message's device_id and
 // turned into hand frames (the hand of the wanted type, the right by default); DeviceLost,

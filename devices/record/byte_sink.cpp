@@ -39,7 +39,7 @@ class FileSink final : public ByteSink {
   std::string error() const override { return error_; }
   std::uint64_t bytes_written() const override { return written_; }
   // An unlinked file keeps accepting writes into an inode no folder holds; only the link count
-  // of the open descriptor shows it (issue #14: a trial ran on into a deleted folder).
+  // of the open descriptor shows it (a trial ran on into a deleted folder).
   std::string lost() const override {
     struct stat st {};
     if (fd_ < 0 || ::fstat(fd_, &st) != 0 || st.st_nlink > 0) return {};

@@ -1,5 +1,5 @@
 #pragma once
-// Lines an LMC recording up with a Vicon capture (issue #5 audit): at the instant the Vicon
+// Lines an LMC recording up with a Vicon capture: at the instant the Vicon
 // CaptureStart leaves (or arrives), every device's latest frame says which device timestamp
 // (µs, the device's own clock) belongs to that host instant. Processing later maps TRC time 0
 // (CaptureStart + Delay) to each device's clock with it. Key list: devices/README.md.

@@ -284,7 +284,7 @@ RecorderStatus Recorder::stop(const std::vector<std::pair<std::string, std::stri
     const char* state = failed_ ? "failed" : aborted_ ? "aborted" : "completed";
     write_file_atomically(paths_.sidecar, recorder_sidecar_to_json(sidecar(state)).dump(2) + "\n");
   } catch (const std::exception& e) {
-    // Never swallowed (issue #14): with a full disk the sidecar on disk still says "recording"
+    // Never swallowed: with a full disk the sidecar on disk still says "recording"
     // with no frames, so the status must say so even when another error came first.
     const std::string why = std::string("cannot write the session sidecar (") + e.what() +
                             "); the sidecar on disk still says 'recording'";

@@ -1,8 +1,8 @@
 #pragma once
-// The trial recorder (issue #5): every frame of every device goes to one file in the study's raw
+// The trial recorder: every frame of every device goes to one file in the study's raw
 // format (core/io/lmc_recording.h, so existing tools read it) plus a JSON sidecar describing the
 // session (sessions/README.md). Frames arrive from device threads through a bounded SPSC queue
-// (style.md §5.5); a writer thread of its own formats and writes them, pushing its buffer to
+// (docs/architecture.md); a writer thread of its own formats and writes them, pushing its buffer to
 // the file at least once a second, so a crash loses at most the last second and leaves a
 // readable file. A write error (disk full) stops the recording with a clear message and keeps
 // everything written before it.

@@ -258,7 +258,7 @@ struct TrialEngine::Run {
             continue;
           }
           // One CaptureStart naming a trial that is already on disk is refused, not the whole
-          // listen session: the operator renames the trial in Nexus and starts again (issue #14).
+          // listen session: the operator renames the trial in Nexus and starts again.
           if (const auto taken = existing_file(m.name)) {
             say("ignoring CaptureStart '" + m.name + "': " + taken->string() +
                 " exists; waiting for a CaptureStart with another trial name");

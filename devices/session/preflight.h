@@ -1,5 +1,5 @@
 #pragma once
-// The checklist before the first trial of a session and after every layout change (issue #10):
+// The checklist before the first trial of a session and after every layout change:
 // every slot of the block's layout streams from its bound controller (or a simulated one) above
 // a minimum rate, the Vicon target resolves, the folder is writable and its disk holds the rest
 // of the session several times over. Each line is green or red with a reason in plain words; the

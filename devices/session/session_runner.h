@@ -1,5 +1,5 @@
 #pragma once
-// Runs a subject session (issue #10): the protocol's trials in order, each through the one trial
+// Runs a subject session: the protocol's trials in order, each through the one trial
 // engine, a pre-flight before the first trial and after every layout change, a quality verdict
 // seconds after each trial, redo, and resume after a crash. Every state change goes through the
 // session folder's journal first, so whatever happens to this process, the folder says what was
@@ -104,7 +104,7 @@ class SessionRunner {
   void redo(int i);
   void note(int i, const std::string& text);
 
-  // The calibration step (Protocol::calibration, issue #13). True when trial `i`'s block has one
+  // The calibration step (Protocol::calibration). True when trial `i`'s block has one
   // and it is not done (applied, or the nominal layout kept) in this session's journal. Run it
   // after the block's pre-flight and before its first trial.
   bool needs_calibration(int i) const;

@@ -1,5 +1,5 @@
 #pragma once
-// Validation of controller calibration (issue #13) on the simulated rig: seeded cases with random
+// Validation of controller calibration on the simulated rig: seeded cases with random
 // translation and rotation errors per controller (sim_config.h), each calibrated with the
 // simulator's truth as Vicon and without Vicon, and compared with where the simulated
 // controllers really stand. The devices tests run a few cases; `lmc calibrate --validate-sim N`

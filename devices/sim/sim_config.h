@@ -1,5 +1,5 @@
 #pragma once
-// Settings of the simulated rig (issue #5). Every behaviour can be switched in JSON
+// Settings of the simulated rig. Every behaviour can be switched in JSON
 // (sim_config_from_json); the defaults imitate the study's four-controller rig: each device
 // 11–34 Hz (four devices sharing the USB bus, paper "Data Collection"), ≈1 mm noise, no hand
 // when the approach / field-of-view test fails, hidden fingers replaced by a lagging, biased
@@ -8,12 +8,12 @@
 //
 // Calibration convention: a simulated device reports p_d = Rᵀ·(p_true − t − c) where R, t are the
 // layout pose and c is the device's calibration error. Realigning with pose AND the layout's
-// offset (p = R·p_d + t + offset, reference-algorithms.md §1) gives the truth exactly when
+// offset (p = R·p_d + t + offset, docs/algorithms/frames.md) gives the truth exactly when
 // offset = c, i.e. the layout offset IS the calibration error processing must undo. With
 // calibration "layout" (default) c = the layout's offset; "none" sets c = 0; "custom" takes
 // `calibration_offsets_mm` per slot.
 //
-// Rotation error (issue #13): the device also stands turned by E about its own origin, so it
+// Rotation error: the device also stands turned by E about its own origin, so it
 // reports p_d = (E·R)ᵀ·(p_true − t − c) and only a transform with rotation E·R reproduces the
 // truth. E comes from `calibration_rotations_deg` per slot (rx, ry, rz as a layout pose's angles,
 // E = Rz·Ry·Rx) in any mode; none by default. On top of either, `calibration_random_translation_mm`

@@ -1,5 +1,5 @@
 #pragma once
-// The simulated rig (issue #5) in simulated time, without threads: a truth hand moves through a
+// The simulated rig in simulated time, without threads: a truth hand moves through a
 // motion; each controller of the layout reports what a real one would (sim_config.h). next()
 // yields the rig's events in time order forever; generate_sim_trial() collects a whole trial
 // deterministically, far faster than real time (recorder tests, `lmc record --fast`, simulated

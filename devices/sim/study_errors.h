@@ -1,5 +1,5 @@
 #pragma once
-// The simulator's "study errors" settings (issue #16 item 3): what a real controller reports
+// The simulator's "study errors" settings: what a real controller reports
 // differently from Vicon's skin markers even where it sees the hand perfectly.
 //
 // Each controller fits its own skeletal hand model, so (a) its bones are shorter than the

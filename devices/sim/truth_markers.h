@@ -1,6 +1,6 @@
 #pragma once
 // Ground truth as a Vicon-style marker set: the exact inverse of the mapping in
-// assets/mappings/vicon-26-to-lmc.json (reference-algorithms.md §7), so that a simulated TRC
+// assets/mappings/vicon-26-to-lmc.json (docs/algorithms/vicon.md), so that a simulated TRC
 // mapped back with that file gives the truth hand's points.
 //  * A marker that some point copies with weight 1 is that point (palm = Hand4, elbow = Forearm1,
 //    thumb Meta = Proxi = Hand2, index Meta = Hand3, pinky Meta = Hand1, phalanx markers …).

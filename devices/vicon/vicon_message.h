@@ -1,5 +1,5 @@
 #pragma once
-// Vicon UDP capture trigger messages (reference-algorithms.md §7, field-notes §4.1): one XML
+// Vicon UDP capture trigger messages (docs/algorithms/vicon.md): one XML
 // document per datagram, null-terminated, `<CaptureStart>` / `<CaptureStop RESULT="…">` whose
 // children carry their value in a VALUE attribute. Values are XML-escaped on the way out and
 // unescaped on the way in, so a trial name or note can never break the document.

@@ -104,7 +104,7 @@ ViconTrigger::ViconTrigger(ViconTriggerConfig config) : config_(std::move(config
   if (config_.first_packet_id) {
     next_id_ = *config_.first_packet_id;
   } else {
-    // Never reuse an ID (field-notes §4.1): the clock gives a growing base, the state file the
+    // Never reuse an ID (docs/algorithms/vicon.md): the clock gives a growing base, the state file the
     // IDs already used on this host (reserve_packet_id).
     next_id_ = clock_packet_id();
     id_file_ = config_.packet_id_file.empty() ? default_packet_id_file() : config_.packet_id_file;

@@ -1,5 +1,5 @@
 #pragma once
-// Sends the Vicon capture trigger over UDP (reference-algorithms.md §7): CaptureStart when all
+// Sends the Vicon capture trigger over UDP (docs/algorithms/vicon.md): CaptureStart when all
 // devices stream, CaptureStop at the end, each repeated (default 3 times, as the study did) with
 // the same PacketID so a receiver keeps one; PacketIDs increase per message and are never reused
 // across sessions (Nexus drops IDs it has seen): each ID is max(time-based base, last ID any

@@ -1,4 +1,4 @@
-// `lmc calibrate` end to end (issue #13): a simulated still-hand trial recorded with errors in the
+// `lmc calibrate` end to end: a simulated still-hand trial recorded with errors in the
 // controllers' placement, calibrated against its ground-truth TRC and without it; bad inputs.
 #include <gtest/gtest.h>
 

@@ -52,7 +52,7 @@ TEST(LmcEvaluate, RobustTermsAndWhatEachControllerContributes) {
     EXPECT_EQ(j["robust_terms"][split]["M"], j[split]["metric"]) << split;
   }
   ASSERT_EQ(j["controllers"].size(), 4u);
-  // As published, the paper's optimized layout has LMC1 looking away from the hand (issue #15).
+  // As published, the paper's optimized layout has LMC1 looking away from the hand.
   EXPECT_EQ(j["controllers"][0]["slot"], "LMC1");
   EXPECT_EQ(j["controllers"][0]["seeing_share"], 0.0);
   EXPECT_EQ(j["controllers"][0]["counts"], false);

@@ -1,4 +1,4 @@
-// `lmc figures` (issue #12) on two quick simulated subjects: the agreement table, a Bland–Altman
+// `lmc figures` on two quick simulated subjects: the agreement table, a Bland–Altman
 // plot per group and measure, the visibility map and the study's tables, each figure with its CSV
 // and sidecar; a trial's figure on request; the second run comes from the processing cache; NaN
 // never becomes 0 in any export; an unknown --trial is an error naming it.

@@ -124,7 +124,7 @@ TEST(LmcInfo, LayoutJson) {
   EXPECT_EQ(j.at("type"), "layout");
   EXPECT_EQ(j.at("device_count"), 4);
   EXPECT_EQ(j.at("devices")[0].at("slot"), "LMC1");
-  EXPECT_EQ(j.at("devices")[0].at("pose").at("x"), -60.0);  // reference-algorithms.md §1 table
+  EXPECT_EQ(j.at("devices")[0].at("pose").at("x"), -60.0);  // docs/algorithms/frames.md table
   EXPECT_EQ(j.at("devices")[1].at("offset_mm")[0], -12.92);
 }
 

@@ -1,4 +1,4 @@
-// `lmc length-correction fit` and `lmc process --length-correction` (issue #16 item 4) as a user
+// `lmc length-correction fit` and `lmc process --length-correction` as a user
 // runs them: fit on one simulated static trial against its truth, apply to another trial, and the
 // refusals (reference method, method comparison, bad hand size, a folder without --trial, a
 // malformed file) each with a message naming what to fix.

@@ -1,4 +1,4 @@
-// End to end on the simulator (issue #6 "Better than the study, measured"): `lmc record --backend
+// End to end on the simulator: `lmc record --backend
 // sim --fast` writes trials with known truth (<trial>.trc), `lmc process --compare-methods` fuses
 // them with both methods and prints each method's RMSE against truth; the default method must
 // beat the reference method overall and on frames some device could not see. Then `lmc report`

@@ -1,4 +1,4 @@
-// Fault drills for `lmc record` run as a user would (issue #14), each with the exact outcome it
+// Fault drills for `lmc record` run as a user would, each with the exact outcome it
 // expects: killed with SIGKILL mid-trial, and pointed at a folder it may not write.
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>

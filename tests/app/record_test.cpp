@@ -324,7 +324,7 @@ int free_udp_port() {
   return ntohs(addr.sin_port);
 }
 
-// Fault drill (issue #14): 64 KB of garbage, the largest datagram UDP carries, arrives on the
+// Fault drill: 64 KB of garbage, the largest datagram UDP carries, arrives on the
 // listen port before and during the trial. The trial records as if it had not, and lmc says what
 // it ignored.
 TEST(LmcRecord, GarbageDatagramsOnTheListenPortAreIgnoredAndSaid) {

@@ -1,4 +1,4 @@
-// `lmc validate` (issue #16): real recordings first, then simulated ones; the reference method's
+// `lmc validate`: real recordings first, then simulated ones; the reference method's
 // finger lengths on the shared real trial are the authors' (ReferenceParity), so its rows are fixed.
 #include <gtest/gtest.h>
 

@@ -1,4 +1,4 @@
-// Calibrating four controllers from a 10 s still-hand trial (issue #13 goal: < 0.5 s): the
+// Calibrating four controllers from a 10 s still-hand trial (goal: < 0.5 s): the
 // robust fit against Vicon and the consensus fit without it, on a synthetic trial with known
 // errors (tests/support/synthetic_calibration.h). Input preparation (resampling, ray-traced
 // labels) is the processing chain's and is measured with it.

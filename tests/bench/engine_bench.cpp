@@ -130,7 +130,7 @@ void BM_EngineSwarmHistogramsRandomLayouts(benchmark::State& state) {
 }
 BENCHMARK(BM_EngineSwarmHistogramsRandomLayouts)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond);
 
-// The same swarm through the robust metric's evaluator (issue #15: its extra terms may cost at
+// The same swarm through the robust metric's evaluator (its extra terms may cost at
 // most 10 % over the histograms above).
 void BM_EngineSwarmTalliesRandomLayouts(benchmark::State& state) {
   const auto& fr = frames();
@@ -163,7 +163,7 @@ namespace {
 // in the authors' box (`--metric study`); arg 1: the robust metric on the table
 // (`--metric robust`, the default), whose layouts keep every controller on the hand; arg 2: the
 // study's metric on the same table, so that arg 1 against arg 2 is what the robust terms cost a
-// search (issue #15: under 10 %) and arg 0 the study's search as it was (issue #15: within its time
+// search (under 10 %) and arg 0 the study's search as it was (within its time
 // then). One iteration each (they take seconds). `lmc bench` runs the same three.
 void BM_EngineSearch30x100(benchmark::State& state) {
   const auto& fr = frames();

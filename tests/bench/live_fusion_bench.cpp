@@ -1,4 +1,4 @@
-// Live fused hand latency end to end (issue #11: goal ≤ 5 ms from a device frame's arrival at the
+// Live fused hand latency end to end (goal ≤ 5 ms from a device frame's arrival at the
 // hub to the fused hand, at 4 controllers × 120 Hz on 2 cores): the simulated rig's frames, four
 // controllers at 120 Hz, are handed to a LiveFusion (devices/fusion/live_fusion.h) at their real
 // times by a producer thread, as the hub's device threads would; the worker ray-traces, filters

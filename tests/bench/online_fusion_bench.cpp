@@ -1,4 +1,4 @@
-// Live fused hand latency (issue #11: goal ≤ 5 ms from a device frame's arrival to the fused hand
+// Live fused hand latency (goal ≤ 5 ms from a device frame's arrival to the fused hand
 // at 4 controllers × 120 Hz on 2 cores): one OnlineFusion::add() (ray tracing, weights,
 // realignment, 90 Kalman lanes) plus current(), devices taking turns as a hub would deliver them.
 // Run: build/<release>/tests/lmc_benchmarks --benchmark_filter=OnlineFusion

@@ -1,4 +1,4 @@
-// Google Benchmark for the plot widget's decimation (issue #12: one million samples in under 2 ms
+// Google Benchmark for the plot widget's decimation (one million samples in under 2 ms
 // per frame). Run: build/release/tests/lmc_benchmarks --benchmark_filter=Plot
 #include <benchmark/benchmark.h>
 

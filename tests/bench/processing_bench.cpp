@@ -1,4 +1,4 @@
-// Processing speed (issue #6 "Speed"): one 10-second, four-device trial through each stage and the
+// Processing speed: one 10-second, four-device trial through each stage and the
 // whole pipeline. The study's Python Kalman step cost ≈0.57 ms per frame per coordinate (≈50 s per
 // trial); the end-to-end figure for a full simulated subject is measured with `lmc process` (it
 // prints its time). Run: build/<release>/tests/lmc_benchmarks --benchmark_filter=Processing

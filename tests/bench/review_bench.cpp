@@ -1,11 +1,11 @@
-// Google Benchmark for the Review tab and `lmc figures` (issue #12 "Speed"):
+// Google Benchmark for the Review tab and `lmc figures`:
 //   BM_ReviewReopenCached80    opening an 80-trial folder whose trials are in the processing cache
 //                              (goal ≤ 1 s): discovery, cache look-ups and the table rows;
 //   BM_ReviewExport80          everything `lmc figures` writes for 80 processed trials (goal, with
 //                              processing from the cache: ≤ 10 s);
 //   BM_ReviewFramePlots        one frame's plot work while scrubbing: 6 plots × 4 series of a 10 s
 //                              trial decimated to 600 columns (goal: well inside 16 ms).
-// The 80 trials are copies of the study's real trial (../shared/reference-data, 4 controllers, with
+// The 80 trials are copies of the study's real trial (the study's data folder, 4 controllers, with
 // its Vicon file) under the protocol's 80 names; without it the first two report an error and skip.
 // Run: build/release/tests/lmc_benchmarks --benchmark_filter=Review
 #include <benchmark/benchmark.h>
@@ -72,7 +72,7 @@ const EightyTrials& eighty_trials() {
 const EightyTrials* eighty_trials_or_skip(benchmark::State& state) {
   const EightyTrials& e = eighty_trials();
   if (e.ok) return &e;
-  state.SkipWithError("needs ../shared/reference-data/validation (set LMC_REFERENCE_DATA_DIR)");
+  state.SkipWithError("needs the study's data folder (set LMC_REFERENCE_DATA_DIR)");
   return nullptr;
 }
 

@@ -1,4 +1,4 @@
-// The quality verdict's budget (issue #10): within one second of a 10 s trial stopping, for four
+// The quality verdict's budget: within one second of a 10 s trial stopping, for four
 // controllers at 120 Hz, on one core. Run: build/<preset>/tests/lmc_benchmarks
 // --benchmark_filter=TrialQuality
 #include <benchmark/benchmark.h>

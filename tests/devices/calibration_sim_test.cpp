@@ -1,4 +1,4 @@
-// Calibration on the simulated rig (issue #13): the simulator's rotational calibration error, a
+// Calibration on the simulated rig: the simulator's rotational calibration error, a
 // few of the seeded validation cases (all 50: `lmc calibrate --validate-sim 50`), swapped serials.
 #include <gtest/gtest.h>
 

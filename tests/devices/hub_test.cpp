@@ -1,4 +1,4 @@
-// Device hub: serial → slot mapping, statistics, snapshots, fan-out (issue #5).
+// Device hub: serial → slot mapping, statistics, snapshots, fan-out.
 #include <atomic>
 #include <gtest/gtest.h>
 

@@ -1,4 +1,4 @@
-// The live fused hand on its own worker thread (issue #11): every frame the hub delivers reaches
+// The live fused hand on its own worker thread: every frame the hub delivers reaches
 // it after the recorder, it fuses them in arrival order exactly as OnlineFusion does when called
 // directly, latency is measured from a frame's arrival at the hub to the fused hand being
 // published, a full queue drops the oldest frame for display only, and stop() joins cleanly.

@@ -1,4 +1,4 @@
-// Recorder: loss-free recording, unplug, disk error, flushing, sidecar (issue #5).
+// Recorder: loss-free recording, unplug, disk error, flushing, sidecar.
 #include <atomic>
 #include <cerrno>
 #include <cstring>

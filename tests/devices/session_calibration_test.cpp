@@ -1,4 +1,4 @@
-// The calibration step at the start of a session block (issue #13), on the simulated rig with
+// The calibration step at the start of a session block, on the simulated rig with
 // controllers standing up to 30 mm and 4° away from where the layout says.
 #include <gtest/gtest.h>
 

@@ -1,4 +1,4 @@
-// The simulator's study-errors model (issue #16 item 3) does what its configuration says: bone
+// The simulator's study-errors model does what its configuration says: bone
 // scales, joint offsets, per-controller draws, the preset switch, and nothing at all when off.
 #include <cmath>
 #include <cstdint>

@@ -1,5 +1,5 @@
 // Vicon UDP trigger: message format and, over real sockets on 127.0.0.1 only, the sender and
-// listener (reference-algorithms.md §7, field-notes §4.1).
+// listener (docs/algorithms/vicon.md).
 #include <arpa/inet.h>
 #include <netinet/in.h>
 #include <sys/socket.h>

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# The Record tab driven as an operator would, with real key presses (issue #11): a `quick`
+# The Record tab driven as an operator would, with real key presses: a `quick`
 # session on the simulated rig is opened in the real window under Xvfb, then xdotool presses
 # Space (pre-flight), Space (first trial), R (redo it), Space (again), Space (second trial), N with
 # a typed note and Enter, and Ctrl+Q. Afterwards the session folder must say: every trial accepted, the redone attempt kept

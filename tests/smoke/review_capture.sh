@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# The Review tab on a processed simulated session (issue #12): a quick subject session is recorded
+# The Review tab on a processed simulated session: a quick subject session is recorded
 # on the simulated rig, opened with --review, and both pictures (the trial against Vicon and the
 # agreement view) are checked: present, window-sized, not one colour. The processing cache goes to
 # the test's own folder, never the user's.

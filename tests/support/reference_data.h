@@ -1,5 +1,5 @@
 #pragma once
-// Tests that read ../shared/reference-data find it here and skip, saying why, when it is absent
+// Tests that read the study's data folder find it here and skip, saying why, when it is absent
 // (reference-data/README.md: the files may not be copied into the project).
 #include <gtest/gtest.h>
 
@@ -31,6 +31,6 @@ inline std::filesystem::path asset_file(const std::string& relative) {
   do {                                                                                         \
     if (!std::filesystem::exists(path)) {                                                      \
       GTEST_SKIP() << "reference data not found at " << (path)                                 \
-                   << " (../shared/reference-data is absent; this check needs it)";            \
+                   << " (the study's data folder is absent; this check needs it)";            \
     }                                                                                          \
   } while (0)

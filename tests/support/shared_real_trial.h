@@ -2,7 +2,7 @@
 // The one real trial with Vicon that the study shared (reference-data/validation:
 // Interp_LMC_Naiv_Static101.txt with Naiv_Static101.trc, recorded on paper-initial), loaded the
 // way processing takes it. A test checks the files first with LMC_REQUIRE_REFERENCE_FILE, so a
-// clone without ../shared skips it and says why.
+// clone without the study's data folder skips it and says why.
 #include <filesystem>
 
 #include "core/hand/hand_track.h"

@@ -1,5 +1,5 @@
 #pragma once
-// Headless Dear ImGui for panel tests (style.md §5.8, toolchain.md): a context with a built font
+// Headless Dear ImGui for panel tests (docs/architecture.md): a context with a built font
 // atlas and no renderer. ImGui 1.86 predates the input-event queue, so input is written straight
 // into ImGuiIO: a helper turns that into "move to, press, drag, release".
 #include <imgui.h>

@@ -431,7 +431,7 @@ TEST(CoveragePanel, DrawsTheTableOnceCoverageIsIn) {
   EXPECT_EQ(state->coverage.latest()->all.devices, 4);
 }
 
-// The workbench's one layout (issue #10): the live rig follows what the Layout tab has committed,
+// The workbench's one layout: the live rig follows what the Layout tab has committed,
 // never a drag in progress (that would restart the rig every frame).
 TEST(LayoutTabSharedLayout, PublishesTheCommittedLayoutNotADragInProgress) {
   HeadlessImGui gui;

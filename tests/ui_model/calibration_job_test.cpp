@@ -1,4 +1,4 @@
-// The Devices tab's Calibrate step, model side (issue #13): a simulated still-hand trial with one
+// The Devices tab's Calibrate step, model side: a simulated still-hand trial with one
 // controller turned, calibrated on the worker, applied to the document as one undo step.
 #include <gtest/gtest.h>
 

@@ -1,4 +1,4 @@
-// The Devices tab's Calibrate step, model side (issue #13): the stages idle → recording →
+// The Devices tab's Calibrate step, model side: the stages idle → recording →
 // calibrating → result → applied / discarded, cancel at each running stage, the 3D view's ghost
 // controllers built from a result, Apply as one undo step that Ctrl+Z takes back, and Save writing
 // a layout that reads back to the corrected poses. Waits poll a condition with a generous

@@ -280,7 +280,7 @@ TEST(LayoutTabState, OpeningABadFileNamesTheJsonPathAndChangesNothing) {
   const LayoutDocument before = s.history().head();
   const std::string err = s.open_file(path);
   EXPECT_NE(err.find("/devices/0/pose/x"), std::string::npos) << err;
-  // Path and JSON pointer exactly once (issue #14: "bad.json: at …: bad.json: at …: …").
+  // Path and JSON pointer exactly once ("bad.json: at …: bad.json: at …: …").
   const std::string where = path.string() + ": at /devices/0/pose/x: ";
   EXPECT_EQ(err.find(where), err.rfind(where)) << err;
   EXPECT_EQ(err.find("at /devices"), err.rfind("at /devices")) << err;

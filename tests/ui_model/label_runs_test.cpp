@@ -1,4 +1,4 @@
-// Label runs for the Review tab's strips (issue #12): consecutive equal labels merge, each run
+// Label runs for the Review tab's strips: consecutive equal labels merge, each run
 // reaches half a step beyond its samples, and only runs in view come back.
 #include <gtest/gtest.h>
 

@@ -6,7 +6,7 @@ namespace lmc::ui {
 namespace label_spreading_test {
 
 TEST(LabelSpreading, OverlappingLabelsMoveUpUntilClearAndTheFirstStays) {
-  // "LMC1" and "LMC2" projected almost onto each other (issue #15's default view).
+  // "LMC1" and "LMC2" projected almost onto each other (default view).
   const std::vector<LabelBox> in = {{100, 200, 32, 13}, {110, 204, 32, 13}, {400, 50, 40, 13}};
   const auto out = spread_labels(in, 2.0f);
   ASSERT_EQ(out.size(), 3u);

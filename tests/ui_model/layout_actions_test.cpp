@@ -117,7 +117,7 @@ TEST(LayoutActions, ApplyLayoutMatchesBySlotAndIsOneUndoStep) {
   optimised.description = "Optimiser panel, robust metric: 30 particles x 100 iterations";
   ASSERT_TRUE(apply_layout(doc, optimised));
   EXPECT_DOUBLE_EQ(doc.head().layout.devices[3].pose.x_mm, 178.88);
-  // The applied layout says what made it (issue #15), not the start's name.
+  // The applied layout says what made it, not the start's name.
   EXPECT_EQ(doc.head().layout.name, "optimized-robust");
   EXPECT_EQ(doc.head().layout.description, optimised.description);
   EXPECT_EQ(doc.head().layout.devices[3].slot, "LMC4");

@@ -1,4 +1,4 @@
-// The Layout tab's "Report..." (issue #15): the job writes the same files as lmc evaluate --report
+// The Layout tab's "Report...": the job writes the same files as lmc evaluate --report
 // for the edited layout and the loaded pose set, and says where; a folder it cannot write is a
 // message, not a crash.
 #include <gtest/gtest.h>

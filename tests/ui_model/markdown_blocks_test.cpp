@@ -1,4 +1,4 @@
-// The Markdown subset of our reports (the Review tab's study tables, issue #12): headings,
+// The Markdown subset of our reports (the Review tab's study tables): headings,
 // bullets, paragraphs and pipe tables with their alignment; ragged rows are squared.
 #include <gtest/gtest.h>
 

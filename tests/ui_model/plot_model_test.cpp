@@ -1,4 +1,4 @@
-// The plot widget's logic without ImGui (issue #12): min-max decimation against brute force, gaps
+// The plot widget's logic without ImGui: min-max decimation against brute force, gaps
 // never bridged, linked x ranges, round ticks and the y range fitted to what is visible.
 #include <gtest/gtest.h>
 

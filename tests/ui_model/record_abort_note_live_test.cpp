@@ -1,4 +1,4 @@
-// The Record tab's model, the parts behind Esc, N and the live fused hand (issue #11): a trial
+// The Record tab's model, the parts behind Esc, N and the live fused hand: a trial
 // recorded in real time on the simulated rig shows a fused hand from the live fusion worker with
 // measured latency; Esc aborts it (kept, journaled as aborted, verdict fail, redone next); N
 // notes are journaled at once between trials and after the trial when typed during one.

@@ -1,4 +1,4 @@
-// The Review tab's 3D replay frame (issue #12): the frame nearest the cursor, clamped to the trial;
+// The Review tab's 3D replay frame: the frame nearest the cursor, clamped to the trial;
 // controllers with a hand in their slot colour, then Vicon in light grey; the fused hand's
 // seen-by counts are the frame's ray-traced labels.
 #include <gtest/gtest.h>

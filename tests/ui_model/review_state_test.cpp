@@ -1,4 +1,4 @@
-// The Review tab's model without ImGui (issue #12): a quick simulated subject session (2 trials
+// The Review tab's model without ImGui: a quick simulated subject session (2 trials
 // with truth) is processed by the batch job into table rows; a second opening comes from the cache;
 // a changed file, a changed method, a cancelled batch and a damaged cache entry behave as a lab
 // would expect; the state selects a trial and loads its series; filters and sorting.

@@ -1,5 +1,5 @@
 #pragma once
-// Coverage of the current layout on the current pose set, kept per device (style.md §5.3): one
+// Coverage of the current layout on the current pose set, kept per device (docs/architecture.md): one
 // visibility bit column per device, keyed on that device's pose and offset, the sensor model and
 // the pose-set version. When one controller is dragged only its column is recomputed; M, c_i and
 // the device × finger table are then rebuilt from bits, which is cheap.

@@ -1,5 +1,5 @@
 #pragma once
-// The workbench's one layout (issue #10): the Layout tab publishes its committed document here and
+// The workbench's one layout: the Layout tab publishes its committed document here and
 // every other client (the live rig of the Devices and Record tabs) reads it, so the whole
 // workbench streams, realigns and records with the layout the operator has open. A version number
 // tells readers that it changed without comparing layouts every frame. The document's owner also

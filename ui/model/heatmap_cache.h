@@ -1,5 +1,5 @@
 #pragma once
-// Per-finger table heatmaps for the selected controller (issue #4): for each cell of a grid on
+// Per-finger table heatmaps for the selected controller: for each cell of a grid on
 // the table, the share of pose-set frames in which the chosen finger would be visible if the
 // controller's origin stood above that cell (same height and orientation — an approximation:
 // a real move on the table might also change the tilt a lab would choose), or, in the second

@@ -1,5 +1,5 @@
 #pragma once
-// Everything a user can do to a layout document, as named actions (style.md §5.2). Each action
+// Everything a user can do to a layout document, as named actions (docs/architecture.md). Each action
 // validates its input, edits the scratch copy and commits with a message naming the device, so
 // every edit is one undo step with a readable label ("Move LMC2"). A rejected action returns
 // its reason and leaves no commit (and no scratch edits).
@@ -69,7 +69,7 @@ ActionResult apply_layout(UndoableLayoutDocument& doc, const Layout& optimised);
 ActionResult apply_calibration(UndoableLayoutDocument& doc, const Layout& calibrated);
 
 // The layout a "New" command starts from: four controllers in the paper's initial square
-// (reference-algorithms.md §1, ±60 mm), no serials.
+// (docs/algorithms/frames.md, ±60 mm), no serials.
 Layout default_new_layout();
 
 }  // namespace lmc::ui

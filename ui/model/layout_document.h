@@ -1,5 +1,5 @@
 #pragma once
-// A *layout document* is what the user edits and saves in the Layout tab (style.md §5.2): the
+// A *layout document* is what the user edits and saves in the Layout tab (docs/architecture.md): the
 // layout itself plus the document-level choices that travel with it — which pose parameters the
 // optimiser may change per device (locks), the search bounds, and the pose set to evaluate on.
 // No selection, camera or caches: "if undo should not restore it, it is not document state".
@@ -25,18 +25,18 @@ struct ParamRange {
 };
 
 // Search box per pose parameter, shared by all devices. Defaults: the study's box
-// (reference-algorithms.md §5): x, z ∈ [−1000, 1000] mm, rx ∈ [−90, 90]°, ry ∈ [−180, 180]°;
+// (docs/algorithms/search.md): x, z ∈ [−1000, 1000] mm, rx ∈ [−90, 90]°, ry ∈ [−180, 180]°;
 // y and rz are locked by default (the paper searched {x, z, rx, ry}).
 // Default: the table drawn in the scene (core's table_search_space: every controller whole on the
 // ±400 mm table top), not the authors' ±1000 mm box, which let the search park a controller off
-// the table (issue #15).
+// the table.
 struct SearchBounds {
   std::array<ParamRange, kNumPoseParams> range{ParamRange{-360, 360}, ParamRange{0, 300}, ParamRange{-360, 360},
                                                ParamRange{-90, 90},     ParamRange{-180, 180}, ParamRange{-180, 180}};
   bool operator==(const SearchBounds&) const = default;
 };
 
-// Which hand poses the tab shows and scores (reference-algorithms.md §5: the Monte Carlo set of
+// Which hand poses the tab shows and scores (docs/algorithms/search.md: the Monte Carlo set of
 // ten reference poses varied along the trial trajectories, or a file).
 struct PoseSetChoice {
   enum class Source : int { kMonteCarlo = 0, kFile = 1 };

@@ -1,5 +1,5 @@
 #pragma once
-// How a tab that does not own the layout document changes it (issue #13: the Devices tab's
+// How a tab that does not own the layout document changes it (the Devices tab's
 // Calibrate step): through the owner's undo history, so the change is one named undo step there
 // ("Apply calibration") and Ctrl+Z in either tab takes it back. The Layout tab registers its
 // editor in CurrentLayout (current_layout.h); tests use DocumentLayoutEditor on a bare document.

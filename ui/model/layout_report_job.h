@@ -1,5 +1,5 @@
 #pragma once
-// The Layout tab's "Report..." (issue #15): the same one-page layout report as `lmc evaluate
+// The Layout tab's "Report...": the same one-page layout report as `lmc evaluate
 // --report DIR` (core/reports/layout_report_files.h) for the layout being edited and the loaded pose
 // set, built and written on a worker thread (about a second on 10,000 frames).
 #include <filesystem>

@@ -15,7 +15,7 @@ LayoutTabState::LayoutTabState(LayoutDocument initial, StatusFn status)
   saved_head_id_ = document_.head_id();
   // Leave one core to the UI thread; the result does not depend on the thread count.
   pso.threads = std::max(1, static_cast<int>(std::thread::hardware_concurrency()) - 1);
-  // The Optimiser panel searches with the robust metric unless the user picks the study's (issue #15).
+  // The Optimiser panel searches with the robust metric unless the user picks the study's.
   pso.metric = PlacementMetricKind::kRobust;
 }
 
@@ -53,7 +53,7 @@ std::string LayoutTabState::title() const {
 
 namespace {
 // lmc::Error's what() already starts with "file: at /json/path: " (its constructor formats the
-// location in); formatting the location again printed it twice (issue #14).
+// location in); formatting the location again printed it twice.
 std::string error_text(const std::exception& e) { return e.what(); }
 }  // namespace
 

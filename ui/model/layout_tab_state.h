@@ -1,5 +1,5 @@
 #pragma once
-// Everything the Layout tab's panels share (style.md §5.3): the undoable document and its file,
+// Everything the Layout tab's panels share (docs/architecture.md): the undoable document and its file,
 // selection and hover, the camera, the timeline, display settings, the derived-result caches and
 // the job handles. Panels read it through const accessors and change it through actions (ui/model/
 // layout_actions.h) or job controls. No ImGui and no GL here, so the tab's logic is testable with

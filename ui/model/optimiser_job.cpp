@@ -96,7 +96,7 @@ bool OptimiserJob::start(const LayoutDocument& doc, const PoseSetPtr& poses, con
       }
     }
     // The candidate says what made it, so a saved result is not mistaken for the layout it
-    // started from (issue #15: "paper-optimized" stayed in the file after Apply and Save).
+    // started from ("paper-optimized" stayed in the file after Apply and Save).
     const char* metric = placement_metric_name(settings.metric);
     out.pso.best_layout.name = std::string("optimized-") + metric;
     out.pso.best_layout.description = std::string("Optimiser panel, ") + metric + " metric: " +

@@ -1,5 +1,5 @@
 #pragma once
-// The placement search in the background (issue #4, style.md §5.5): start copies the document's
+// The placement search in the background (docs/architecture.md): start copies the document's
 // layout, locks, bounds and the prepared pose set into a worker that calls core's run_pso; the UI
 // keeps only the job channel. Cancelling cannot change the layout (the worker never had a
 // reference to it); applying the result goes through the apply_layout action, one undo step.
@@ -31,7 +31,7 @@ struct OptimiserReport {
 
 struct OptimiserOutcome {
   PsoResult pso;  // the best start's
-  // Multi-start (issue #15): each finished start's best cost, the best start, and how many of the
+  // Multi-start: each finished start's best cost, the best start, and how many of the
   // others found a really different layout (core's same_arrangement).
   std::vector<double> start_costs;
   int best_start = 0;

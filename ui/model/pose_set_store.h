@@ -1,7 +1,7 @@
 #pragma once
 // The pose set the Layout tab shows and scores, loaded (Monte Carlo generation or a file) and
 // prepared for the visibility kernels on a worker thread. A loaded set is immutable and carries a
-// version id, so caches compare ids instead of 2,000 frames (style.md §5.3).
+// version id, so caches compare ids instead of 2,000 frames (docs/architecture.md).
 #include <cstdint>
 #include <memory>
 #include <string>

@@ -1,5 +1,5 @@
 #pragma once
-// Snapshot-based undo/redo (style.md §5.2). The whole document is copied per commit: our layout
+// Snapshot-based undo/redo (docs/architecture.md). The whole document is copied per commit: our layout
 // documents are a few hundred bytes, and snapshots need no inverse per command — the usual source
 // of undo bugs.
 //

@@ -1,5 +1,5 @@
 #pragma once
-// What the workbench's tabs share (issue #10), owned by the shell and handed to every tab it
+// What the workbench's tabs share, owned by the shell and handed to every tab it
 // builds: the one layout (published by the Layout tab) and the one live rig (the device hub the
 // Devices and Record tabs both drive). Declared before the tabs in the shell, so it outlives them.
 // UI thread only.

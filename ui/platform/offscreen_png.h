@@ -1,6 +1,6 @@
 #pragma once
 // A picture of ImGui drawing at a size the user chooses, rendered off screen and written as PNG
-// (issue #12: every plot and figure as PNG). It draws in a hidden second window with its own ImGui
+// (every plot and figure as PNG). It draws in a hidden second window with its own ImGui
 // context that shares the main window's GL objects — the subject screen's window, which is made
 // for exactly that — so the main window's layout and size are left alone.
 #include <functional>

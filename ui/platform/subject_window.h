@@ -1,5 +1,5 @@
 #pragma once
-// The subject screen's window (issue #11): a second GLFW window, borderless and covering one
+// The subject screen's window: a second GLFW window, borderless and covering one
 // monitor (or a plain window for a one-monitor bench), with its own Dear ImGui context — ImGui 1.86
 // has no multi-viewport — and its own large fonts. Its GL context shares objects with the main
 // window's, so textures made there can be shown here. It never takes the keyboard focus from the

@@ -1,8 +1,8 @@
 #pragma once
-// The Devices tab's 3D view while a calibration result waits for Apply or Discard (issue #13):
+// The Devices tab's 3D view while a calibration result waits for Apply or Discard:
 // every controller where the layout puts it now, as a see-through ghost outline, beside where the
 // calibration puts it, as a solid box in the slot's colour, and a line from the old origin to the
-// new one so a correction of a few millimetres still shows. Pure builder (style.md §5.4): tests
+// new one so a correction of a few millimetres still shows. Pure builder (docs/architecture.md): tests
 // check it without GL, the view only draws the items.
 #include <vector>
 

@@ -1,5 +1,5 @@
 #pragma once
-// Colour maps as data with meaning (style.md §5.4):
+// Colour maps as data with meaning (docs/architecture.md):
 // * "devices seeing a finger" (0, 1, 2, ≥3) is categorical: four discrete colours, every one in
 //   the legend;
 // * shares and "frames added" are magnitudes: a perceptually uniform sequential map (viridis,

@@ -1,5 +1,5 @@
 #pragma once
-// Handles for moving and turning a controller in the 3D scene (style.md §5.4), as pure maths that
+// Handles for moving and turning a controller in the 3D scene (docs/architecture.md), as pure maths that
 // takes rays and returns poses, so tests drive it without a window.
 //
 // * Move: press on the controller's box and drag; the box follows the cursor on the horizontal
@@ -30,7 +30,7 @@ inline constexpr double kTiltRingRadiusMm = 48.0;
 inline constexpr double kHandleTolerancePx = 9.0;
 
 // Controller body in device coordinates: 80 (x, long axis) × 13 (y, height) × 30 (z) mm with the
-// device origin at the top centre (reference-algorithms.md §1), so the box hangs below the origin.
+// device origin at the top centre (docs/algorithms/frames.md), so the box hangs below the origin.
 inline const Eigen::Vector3d kDeviceBoxHalfMm{40.0, 6.5, 15.0};
 inline const Eigen::Vector3d kDeviceBoxCentreMm{0.0, -6.5, 0.0};
 

@@ -1,5 +1,5 @@
 #pragma once
-// Keeps scene labels from printing over each other (issue #15: "LMC1" and "LMC2" overlapped in the
+// Keeps scene labels from printing over each other ("LMC1" and "LMC2" overlapped in the
 // default view when two controllers stand close). Screen-space only: the labels' 3-D anchors are
 // projected first; this moves a label up to just above the label in its way, step by step,
 // until it clears every label placed before it. Earlier labels keep their place, so the order of the list is the priority.

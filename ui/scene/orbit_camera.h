@@ -1,8 +1,8 @@
 #pragma once
-// The scene camera as a pure object (style.md §5.4): orbit, pan and zoom take deltas, not mouse
+// The scene camera as a pure object (docs/architecture.md): orbit, pan and zoom take deltas, not mouse
 // gestures, so the scene panel maps gestures and tests check the maths.
 //
-// World frame (reference-algorithms.md §1): y up, table top y = 0, z towards the subject. The
+// World frame (docs/algorithms/frames.md): y up, table top y = 0, z towards the subject. The
 // camera orbits a target point; yaw 0 looks from the subject's side (+z) towards −z, pitch is the
 // elevation above the table plane.
 #include <Eigen/Core>

@@ -1,7 +1,7 @@
 #pragma once
 // Rays and the small intersection tests the scene uses for picking and handles. Picking has fewer
 // than a hundred candidates (≤ 8 boxes, 30 joints, bones), so plain CPU tests are enough and run
-// headless in tests (style.md §5.4).
+// headless in tests (docs/architecture.md).
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 #include <optional>

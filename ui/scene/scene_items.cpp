@@ -73,7 +73,7 @@ void add_table(SceneList& out, const SceneInputs& in) {
   // Rulers: x values along the back edge (away from the subject: the workbench's legends sit
   // along the bottom of the view), z values along the right edge. The two meet at the back-right
   // corner, whose value is written once, by the x ruler. Each ruler's title sits beside its own
-  // numbers, in its axis's colour (issue #15: they sat at the ends of the other ruler).
+  // numbers, in its axis's colour (they sat at the ends of the other ruler).
   for (int i = -n; i <= n; i += 2) {
     if (i == 0) continue;
     char buf[32];

@@ -1,5 +1,5 @@
 #pragma once
-// The scene as a list of plain items (style.md §5.4): a pure builder turns the document, the
+// The scene as a list of plain items (docs/architecture.md): a pure builder turns the document, the
 // current hand frame, caches and selection into boxes, pyramids, bones, joints, lines, heatmap
 // cells and labels. The GL renderer draws only this list; tests check the builder without GL
 // ("a selected controller gets the selected flag", "a finger seen by three devices is green").

@@ -1,7 +1,7 @@
 #pragma once
 // What the scene panel needs from a renderer: draw a scene list for a camera into a w × h image
 // and hand back a texture id for ImGui::Image. The GL implementation is gl_scene_renderer; tests
-// use a recording renderer that keeps the last list instead of issuing GL calls (style.md §5.8).
+// use a recording renderer that keeps the last list instead of issuing GL calls (docs/architecture.md).
 #include <cstdint>
 
 #include "ui/scene/orbit_camera.h"

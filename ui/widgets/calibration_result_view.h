@@ -1,5 +1,5 @@
 #pragma once
-// A calibration's result as people read it (issue #13): per controller samples, RMS residual
+// A calibration's result as people read it: per controller samples, RMS residual
 // before > after, how far it moved and turned (or that it could not be calibrated), the
 // disagreement between controllers, every warning in red and how to read the numbers. The
 // Devices tab's Calibrate step and the Record tab's block calibration draw the same view.

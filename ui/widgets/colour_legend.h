@@ -1,5 +1,5 @@
 #pragma once
-// Colour legends (style.md §5.4): a categorical legend lists every category with its swatch; a
+// Colour legends (docs/architecture.md): a categorical legend lists every category with its swatch; a
 // colour bar shows a sequential map with numbers at both ends and the middle.
 #include <string>
 #include <vector>

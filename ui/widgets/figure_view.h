@@ -1,7 +1,7 @@
 #pragma once
 // A core figure (core/figures/figure.h) drawn on screen: the same description the SVG export and
 // its CSV are written from, so what a researcher sees in the Review tab is what the exported figure
-// shows (issue #12). Lines break at missing values, points are dots, reference lines (a
+// shows. Lines break at missing values, points are dots, reference lines (a
 // Bland–Altman bias and limits) are dashed with their label at the right, the legend sits above the
 // plot, and hovering shows the nearest sample's values. Dark colours are lightened for the dark
 // background; the export keeps its own.

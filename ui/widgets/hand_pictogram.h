@@ -1,5 +1,5 @@
 #pragma once
-// The motion pictogram (issue #11): what the subject is asked to do, drawn in a box of the current
+// The motion pictogram: what the subject is asked to do, drawn in a box of the current
 // ImGui window — the start pose faint, the end pose as an amber outline, and the animated hand
 // solid, with the Layout tab's bones and joints (build_scene's hand items: same radii and colours),
 // seen from a fixed angle that shows the motion. The poses come from the model

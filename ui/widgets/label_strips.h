@@ -1,7 +1,7 @@
 #pragma once
 // Under the Review tab's plots: one thin strip per controller × finger coloured by its ray-traced
 // label (seen, internal model, no hand) on the plots' shared x range, so a gap or a jump in a curve
-// shows which controller lost which finger at that moment (issue #12). Hovering names the strip,
+// shows which controller lost which finger at that moment. Hovering names the strip,
 // the label and the time; the shared cursor is drawn through every strip.
 #include <cstdint>
 #include <memory>

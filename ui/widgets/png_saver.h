@@ -1,5 +1,5 @@
 #pragma once
-// "PNG..." beside a plot (issue #12): a small popup asks for the picture's size, a file browser for
+// "PNG..." beside a plot: a small popup asks for the picture's size, a file browser for
 // where, and the picture is rendered off screen at that size (ui/model/picture_renderer.h)
 // by the same drawing code the screen uses. Success or the error shows beside the button.
 #include <functional>

@@ -1,5 +1,5 @@
 #pragma once
-// A plot worth reusing (issue #12; ImPlot is not in Debian 12): several series against one x, the
+// A plot worth reusing (ImPlot is not in Debian 12): several series against one x, the
 // y axis fitted to what is visible, wheel zoom, drag pan and double-click reset on an x range that
 // several plots can share (ui/model/plot/linked_x_range.h), a cursor line with every series' value
 // at it, NaN drawn as gaps over a faint band, a legend strip above the curves whose entries toggle

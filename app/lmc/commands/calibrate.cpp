@@ -1,5 +1,5 @@
 // lmc calibrate — refine every controller's device-to-world transform from a short trial of a
-// still hand (issue #13): against the Vicon file when one is given, else against the other
+// still hand: against the Vicon file when one is given, else against the other
 // controllers (core/calibration/). Writes the corrected layout and prints the residual table;
 // `--validate-sim N` instead runs N seeded simulated cases with injected errors and prints how
 // much of each error is left (devices/sim/calibration_validation.h).

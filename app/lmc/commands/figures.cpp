@@ -1,4 +1,4 @@
-// lmc figures — the Review tab's tables and figures headless (issue #12): processes the given
+// lmc figures — the Review tab's tables and figures headless: processes the given
 // subject sessions or folders of trials (through the same cache as the workbench, so a session the
 // Review tab opened is instant here too), then writes the agreement table, a Bland–Altman plot per
 // layout × pose group and measure, the study's visibility map and headline tables, and, for each

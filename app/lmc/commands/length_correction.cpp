@@ -1,5 +1,5 @@
-// lmc length-correction fit — a subject's finger-length correction (issue #16 item 4,
-// core/processing/length_correction.h): one factor per finger, fitted on one trial of the subject
+// lmc length-correction fit — a subject's finger-length correction
+// (core/processing/length_correction.h): one factor per finger, fitted on one trial of the subject
 // processed with the default fusion, against that trial's Vicon (or simulated truth), or against
 // the anthropometric fingers of the hand length and breadth typed in. `lmc process
 // --length-correction FILE` applies it to the subject's other trials; nothing applies it unasked.

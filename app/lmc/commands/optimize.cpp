@@ -1,4 +1,4 @@
-// lmc optimize: search device placements with the particle swarm of reference-algorithms.md §5
+// lmc optimize: search device placements with the particle swarm of docs/algorithms/search.md
 // (core/optimise/pso.h) on a pose set, save the best layout and print the same summary as
 // `lmc evaluate`.
 #include <unistd.h>
@@ -178,7 +178,7 @@ void setup_optimize(CLI::App& app) {
     const lmc::MultiStartResult multi = lmc::run_multi_start(start, space, prepared, s, opt->starts, progress);
     const lmc::PsoResult& r = multi.runs.at(static_cast<size_t>(multi.best));
     lmc::Layout best = r.best_layout;
-    // A searched layout says what made it (issue #15): not the start's name and description.
+    // A searched layout says what made it: not the start's name and description.
     best.name = "optimized-" + opt->metric;
     best.description = "lmc optimize --metric " + opt->metric + ": " + std::to_string(opt->starts) + " start(s) of " +
                        std::to_string(s.particles) + " particles × " + std::to_string(s.iterations) +

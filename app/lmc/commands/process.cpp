@@ -1,4 +1,4 @@
-// lmc process — recorded trials through the pipeline (issue #6): resample, visibility labels,
+// lmc process — recorded trials through the pipeline: resample, visibility labels,
 // realign, fuse (reference = the study's Kalman filter, default = our smoother), measures, and the
 // comparison with Vicon. Per trial it writes fused points, per-frame measures, a summary JSON and
 // a text report laid out like the authors' result file.

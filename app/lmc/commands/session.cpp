@@ -1,4 +1,4 @@
-// lmc session new|run|status — a whole subject session as one safe, resumable unit (issue #10).
+// lmc session new|run|status — a whole subject session as one safe, resumable unit.
 //   new     creates the session folder from a protocol (assets/protocols/) and prints its plan
 //   run     records it: pre-flight per block, each trial through the trial engine, a quality
 //           verdict after each, redo; a session that was cut off resumes where it stopped
@@ -235,7 +235,7 @@ bool clear_preflight(SessionRunner& runner, int i, const RunArgs& a, bool intera
   }
 }
 
-// The block's calibration step when the protocol has one and it is not done (issue #13). --auto
+// The block's calibration step when the protocol has one and it is not done. --auto
 // applies a fit without warnings, calibrates once more otherwise, and then keeps the nominal
 // layout saying why; interactively the operator reads the residual table and decides. False when
 // the operator stops.

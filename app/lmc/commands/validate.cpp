@@ -1,4 +1,4 @@
-// lmc validate: how valid the fused hand is on given trials (issue #16) — for each fusion method,
+// lmc validate: how valid the fused hand is on given trials — for each fusion method,
 // finger lengths and joint angles against Vicon and, needing no Vicon, against the controllers
 // that see each finger (core/processing/validity.h). Real recordings are listed before simulated
 // ones (the simulator is ours: a figure from it can flatter us). With --length-correction, ours with

@@ -1,5 +1,5 @@
 // lmc visibility: label every row of an LMC recording with the per-finger visibility of
-// reference-algorithms.md §3, the device at its own origin (recorded points are in device
+// docs/algorithms/visibility.md, the device at its own origin (recorded points are in device
 // coordinates): 1 visible, 0 hidden (the controller's internal model), −1 no hand.
 #include <iostream>
 #include <string>

@@ -1,4 +1,4 @@
-// Calibration (issue #13): the rigid fits, both calibration modes on synthetic trials with known
+// Calibration: the rigid fits, both calibration modes on synthetic trials with known
 // errors, the write-back into a layout, the warnings, and the published static trial.
 #include <gtest/gtest.h>
 

@@ -1,4 +1,4 @@
-// The heatmap primitive (issue #15's coverage heatmap): one rect per cell, a missing value drawn
+// The heatmap primitive (coverage heatmap): one rect per cell, a missing value drawn
 // hatched and explained in the legend, labels for every row (per panel) and column, values in
 // the cells in a colour that reads on the cell, the colour bar saying what the colour means, and
 // nothing written past the document's edges.

@@ -1,4 +1,4 @@
-// Limits every reader of outside input keeps (issue #14): a 2 GB file of garbage, a 200 MB file
+// Limits every reader of outside input keeps: a 2 GB file of garbage, a 200 MB file
 // of one line, a header that claims 10⁹ frames and JSON nested 10⁵ deep each end in an
 // lmc::Error that names the file — never an allocation failure, a stack overflow or a hang — and
 // a refused file costs next to no memory. The big files are sparse (no disk is written), and the

@@ -1,4 +1,4 @@
-// The shared JSON reader (issue #14): a number beyond a double, a key repeated in one object and
+// The shared JSON reader: a number beyond a double, a key repeated in one object and
 // a syntax error are lmc::Errors naming the file and the place, never the library's own text.
 #include <gtest/gtest.h>
 

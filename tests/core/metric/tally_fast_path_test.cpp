@@ -1,4 +1,4 @@
-// The search's fast paths against the plain ones they replace (issue #15 speed-up): the kernel's
+// The search's fast paths against the plain ones they replace: the kernel's
 // axis-cut bits against seen_marker_beyond_cut, the tally built from them against the tally built
 // frame by frame with the reference tests, the tally of a run of frames against counting each
 // frame finger by finger, and the byte-wise worst-finger count against counting.

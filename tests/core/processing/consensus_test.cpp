@@ -1,4 +1,4 @@
-// Consensus measures on constructed hands (issue #16): known lengths and known misalignment give
+// Consensus measures on constructed hands: known lengths and known misalignment give
 // known differences from the seeing controllers' median.
 #include "core/processing/consensus.h"
 

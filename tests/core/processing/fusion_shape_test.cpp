@@ -1,4 +1,4 @@
-// The default fusion keeps the hand's shape (issue #16 item 2), on constructed hands: controllers
+// The default fusion keeps the hand's shape, on constructed hands: controllers
 // with known finger lengths and a known misalignment between their realigned frames. The fused
 // finger length must stay within ±2 mm of the controllers' median and no fused segment may be
 // shorter than the shortest controller's, whatever the per-point weights.

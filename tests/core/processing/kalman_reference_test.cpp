@@ -1,4 +1,4 @@
-// The reference fusion against a direct matrix transcription of reference-algorithms.md §6.3.
+// The reference fusion against a direct matrix transcription of docs/algorithms/fusion.md.
 #include <gtest/gtest.h>
 
 #include <Eigen/Dense>
@@ -51,7 +51,7 @@ TEST(RollingVariance, MatchesPandasCentredWindowWithNaN) {
   EXPECT_TRUE(std::isnan(lo[0]) && std::isnan(lo[1]) && std::isnan(lo[2]));
 }
 
-// §6.3 written with matrices, as the study's script does.
+// docs/algorithms/fusion.md written with matrices, as the study's script does.
 std::vector<double> matrix_kalman(const std::vector<std::vector<double>>& s) {
   const int n = static_cast<int>(s[0].size());
   std::vector<std::vector<double>> var(s.size(), std::vector<double>(static_cast<size_t>(n)));

@@ -1,4 +1,4 @@
-// Per-subject finger-length correction (issue #16 item 4) on constructed hands: a "controller"
+// Per-subject finger-length correction on constructed hands: a "controller"
 // hand whose finger bones are a known fraction of the true hand's, posed with the same joint
 // angles. Fitting must find the inverse fractions, applying them must give the true hand back and
 // leave every joint angle as it was; bad input must be refused with a message naming the problem.
@@ -211,7 +211,7 @@ TEST(LengthCorrection, FileRoundTripsAndABadFileIsNamed) {
   EXPECT_NE(error_of([&] { read_length_correction(dir / "bad.json"); }).find(file + ":2:"), std::string::npos);
 }
 
-// In the pipeline, on the study's real trial (skips when ../shared/reference-data is absent).
+// In the pipeline, on the study's real trial (skips when the study's data folder is absent).
 TEST(LengthCorrection, PipelineAppliesItAfterTheDefaultFusionOnlyAndTheReferenceRefusesIt) {
   const auto files = test::shared_real_trial_files();
   LMC_REQUIRE_REFERENCE_FILE(files.lmc);

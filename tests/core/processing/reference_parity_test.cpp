@@ -1,6 +1,6 @@
-// Reference parity (issue #6): the study's pipeline on its own validation trial reproduces the
+// Reference parity: the study's pipeline on its own validation trial reproduces the
 // authors' result file — every length and angle within 0.01 mm / 0.01°, the visibility table
-// exactly. Reads ../shared/reference-data (skips, saying so, when absent).
+// exactly. Reads the study's data folder (skips, saying so, when absent).
 #include <gtest/gtest.h>
 
 #include <fstream>
@@ -75,7 +75,7 @@ TEST(ReferenceParity, Subject1NaivStatic101MatchesAuthorsResults) {
       }
     }
   }
-  // The published headline numbers (reference-algorithms.md §9).
+  // The published headline numbers (docs/algorithms/study.md).
   EXPECT_NEAR(r.lmc_stats.finger_mean[0], 47.83, 0.005);
   EXPECT_NEAR(r.vicon_stats.finger_mean[2], 100.15, 0.005);
   // The report names the trial as the authors' does, whichever stage of the file was given.
@@ -93,7 +93,7 @@ TEST(ReferenceParity, RawRecordingResamplesToPlausibleGrid) {
   ResampleReport report;
   const GridTrial g = resample_recording(rec, {}, &report);
   ASSERT_EQ(g.devices.size(), 4u);
-  // field-notes §1.4: ≈5.0–5.1 s per device, ≈24 Hz each.
+  // devices/leapc/README.md: ≈5.0–5.1 s per device, ≈24 Hz each.
   EXPECT_GE(g.frame_count, 495);
   EXPECT_LE(g.frame_count, 520);
   for (const auto& s : report.devices) {

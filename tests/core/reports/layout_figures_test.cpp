@@ -1,4 +1,4 @@
-// The layout report's pictures (issue #15): the top view draws each controller's footprint as a
+// The layout report's pictures: the top view draws each controller's footprint as a
 // closed box and its viewing axis as a second piece of the same series, then the palm positions;
 // the redundancy figure has one series per finger over the reference poses.
 #include <gtest/gtest.h>

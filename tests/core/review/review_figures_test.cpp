@@ -1,4 +1,4 @@
-// The Review figures (issue #12) as core figures: a Bland–Altman plot groups points by subject
+// The Review figures as core figures: a Bland–Altman plot groups points by subject
 // and draws the bias and both limits at the table's values; a trial's figure is eleven panels of
 // fused LMC against Vicon with NaN kept; the visibility map places motions in order; file stems
 // are safe names.

@@ -1,4 +1,4 @@
-// A trial table row from a processed trial's summary (issue #12): pooled visibility per
+// A trial table row from a processed trial's summary: pooled visibility per
 // controller, the mean finger-length difference, the mean absolute ROM difference and a clear lag;
 // unknown values stay NaN, never 0.
 #include <gtest/gtest.h>

@@ -1,4 +1,4 @@
-// The Review tab's time series of one trial (issue #12) on the study's real trial: the fused and
+// The Review tab's time series of one trial on the study's real trial: the fused and
 // Vicon series are exactly processing's per-frame measures, each controller's labels are the
 // ray-traced ones, one time axis; the CSV behind the plots has a column per series and empty
 // cells, never 0, for missing values.

@@ -384,8 +384,8 @@ TEST(TrialQuality, RangeOfMotionBelowExpectationWarnsWithTheNumbers) {
   EXPECT_EQ(r.rom->joint, "Wrist");
   EXPECT_DOUBLE_EQ(r.rom->expected_deg, 60.0);
   // A linear ramp's 5th and 95th percentiles are at 5 % and 95 % of the trial: flexion 1° and
-  // 19°. The study's wrist angle (forearm against wrist → palm centre, reference-algorithms.md
-  // §6.4) is not the model's flexion parameter itself, so the expectation is measured on the
+  // 19°. The study's wrist angle (forearm against wrist → palm centre,
+  // docs/algorithms/processing.md) is not the model's flexion parameter itself, so the expectation is measured on the
   // model's hand at those two instants.
   const auto wrist_angle = [&hand](double t) {
     const HandFrame f = *hand(t);

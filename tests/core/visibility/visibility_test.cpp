@@ -287,7 +287,7 @@ TEST(Visibility, ComputeVisibilityMatchesSingleCallsAndIsDeviceMajor) {
     device_visibility(view, frames, lim, col);
     EXPECT_TRUE(std::equal(col.begin(), col.end(), t.device_column(d).begin()));
   }
-  // The offset moves the device origin (§1): device 2 sits at (5, 0, −60).
+  // The offset moves the device origin (docs/algorithms/frames.md): device 2 sits at (5, 0, −60).
   EXPECT_DOUBLE_EQ(DeviceView::from_device(layout.devices[2]).ox, 5.0);
 }
 

@@ -1,5 +1,5 @@
 /* A test double of Ultraleap's LeapC API (Gemini 5.x), written for lmc-workbench from the public
- * API reference (docs.ultraleap.com LeapC guide and struct pages; field-notes.md §1). It declares
+ * API reference (docs.ultraleap.com LeapC guide and struct pages; devices/leapc/README.md). It declares
  * the subset the LeapC backend uses with the SDK's own function, struct, field and enum names
  * and values, so devices/leapc/ compiles unchanged against it and against the real header.
  * The behaviour behind it (fake_leapc.cpp) is scripted by tests through fake_leapc.h.

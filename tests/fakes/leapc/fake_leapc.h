@@ -3,7 +3,7 @@
 // events; the backend's poll thread receives them through LeapPollConnection exactly as from
 // the Ultraleap service: one message per poll, pointers valid only until the next poll (the
 // double frees them then, so ASan catches a backend that keeps them), tracking events only for
-// devices the client subscribed to (multi-device-aware connections, field-notes §1.2).
+// devices the client subscribed to (multi-device-aware connections, devices/leapc/README.md).
 #include <cstdint>
 #include <string>
 #include <vector>

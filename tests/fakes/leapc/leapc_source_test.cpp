@@ -1,6 +1,6 @@
 // The LeapC backend against the LeapC test double: discovery, four serials → slots, interleaved
 // tracking events, right-hand selection, a device lost mid-stream and coming back under a new id,
-// failures, dropped frames, a lost service connection (issue #5, field-notes §1.2).
+// failures, dropped frames, a lost service connection (devices/leapc/README.md).
 #include <chrono>
 #include <functional>
 #include <string>

@@ -1,5 +1,5 @@
 #pragma once
-// The Devices tab's Calibrate step on a worker (style.md §5.5): calibrates the controllers from a
+// The Devices tab's Calibrate step on a worker (docs/architecture.md): calibrates the controllers from a
 // trial file, against a Vicon file or against each other, with the one sequence `lmc calibrate`
 // runs (core/calibration/calibrate_trial.h); the UI thread polls state() and, when it is
 // Completed, shows outcome()'s residuals and ghost controllers and offers apply_calibration

@@ -1,5 +1,5 @@
 #pragma once
-// The Devices tab's Calibrate step without ImGui (issue #13), so tests drive it directly:
+// The Devices tab's Calibrate step without ImGui, so tests drive it directly:
 //
 //   idle ─record()──────────▶ recording ─trial ends─▶ calibrating ─job ends─▶ result ─apply()─▶ applied
 //   idle ─calibrate_file()──────────────────────────▶ calibrating              result ─discard()─▶ idle

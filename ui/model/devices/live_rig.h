@@ -1,5 +1,5 @@
 #pragma once
-// The workbench's one device hub (issue #10): owned by the application (WorkbenchContext), not by
+// The workbench's one device hub: owned by the application (WorkbenchContext), not by
 // a tab, so the Devices and Record tabs see the same controllers, the same slot assignments and
 // the same test recording. Starting and stopping a backend ("sim", "leapc", "replay:FILE") and
 // recording a trial are actions on it.

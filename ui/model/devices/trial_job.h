@@ -1,6 +1,6 @@
 #pragma once
 // One trial of the TrialEngine (devices/record/trial_engine.h) on a worker thread, for the
-// workbench (style.md §5.5, ui/model/jobs/background_job.h): the engine runs on a jthread with
+// workbench (docs/architecture.md, ui/model/jobs/background_job.h): the engine runs on a jthread with
 // the job's stop token, its status snapshots come back through the job's locked channel, and an
 // exception becomes the Failed state. Stop = request_stop: the engine ends the trial as
 // "interrupted" and keeps every row written. The UI thread calls poll() once a frame and reads

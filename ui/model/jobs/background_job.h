@@ -1,5 +1,5 @@
 #pragma once
-// One small generic wrapper for long-running work on a std::jthread (style.md §5.5).
+// One small generic wrapper for long-running work on a std::jthread (docs/architecture.md).
 //
 // * start() takes a work function that owns its inputs (copy them into the lambda); the UI keeps
 //   nothing the worker can see except this channel.

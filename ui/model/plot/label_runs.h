@@ -1,6 +1,6 @@
 #pragma once
 // The ray-traced labels of one controller and finger as runs on the time axis, for the Review
-// tab's label strips (issue #12): consecutive frames with the same label become one run, so a strip
+// tab's label strips: consecutive frames with the same label become one run, so a strip
 // draws a few rectangles instead of one per frame, and every gap in a curve lines up with the run
 // that explains it. A run covers its samples plus half a step on each side.
 #include <cstdint>

@@ -1,5 +1,5 @@
 #pragma once
-// One x range shared by several stacked plots (issue #12): zooming, panning or resetting any of
+// One x range shared by several stacked plots: zooming, panning or resetting any of
 // them moves all of them, and the cursor (the time a person points at) is shared too. A plot holds
 // a shared_ptr to the same LinkedXRange; nothing here draws.
 #include <optional>

@@ -1,5 +1,5 @@
 #pragma once
-// Drawing a long series into a plot a few hundred pixels wide (issue #12): per pixel column, the
+// Drawing a long series into a plot a few hundred pixels wide: per pixel column, the
 // smallest and largest finite y of the samples whose x falls in it. Drawn as a vertical bar per
 // column joined to the next, it shows every spike a million samples hold, at the cost of one pass.
 // Missing values are never bridged: a column whose samples are all NaN is a gap, and the line

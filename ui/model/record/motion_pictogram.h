@@ -1,5 +1,5 @@
 #pragma once
-// The pictogram of what the subject is asked to do in a trial (issue #11): the hand model's start
+// The pictogram of what the subject is asked to do in a trial: the hand model's start
 // and end pose of the trial's motion — the same motion the simulated rig plays for that trial type,
 // named by the protocol ("vertical/index") and read by the simulator's own parser — and the pose
 // in between at a moment of a slow back-and-forth animation. Poses come from core

@@ -1,5 +1,5 @@
 #pragma once
-// The Record tab's state (issue #11), without ImGui: one subject session folder, the session
+// The Record tab's state, without ImGui: one subject session folder, the session
 // runner that records it, and the one piece of work that may run at a time (a pre-flight or a
 // trial) on a worker thread. The tab reads this and calls its actions; it never touches the folder,
 // the runner or a device.
@@ -91,7 +91,7 @@ class RecordSessionModel {
   std::string override_preflight(const std::string& reason);
   const std::optional<devices::PreflightReport>& last_preflight() const { return last_preflight_; }
 
-  // ---- the block's calibration (protocols with a calibration step, issue #13) ------------------------
+  // ---- the block's calibration (protocols with a calibration step) ------------------------
   // True after the block's pre-flight when its calibration is not done: Start then records the
   // still-hand calibration trial instead of the block's first trial.
   bool needs_calibration() const;

@@ -1,5 +1,5 @@
 #pragma once
-// The Record tab's set-up form as data (issue #11): a new subject session (subject, hand, optional
+// The Record tab's set-up form as data: a new subject session (subject, hand, optional
 // hand sizes, operator, notes, protocol from assets/protocols/, Vicon target and database, folder)
 // or an existing session folder to resume, and how to record (backend, simulated time). The
 // panel draws these fields and shows check_setup_form()'s problem under each; the spec is built

@@ -1,5 +1,5 @@
 #pragma once
-// The plain notice an operator reads first when a session folder is opened again (issue #11):
+// The plain notice an operator reads first when a session folder is opened again:
 // which trials were cut off while recording and what happens to their rows, how far the session
 // got, and where it continues. Built from the folder's state, so the Record tab and its tests
 // read the same words.

@@ -1,5 +1,5 @@
 #pragma once
-// What the Record tab and the subject screen's window share (issue #11), kept in the workbench
+// What the Record tab and the subject screen's window share, kept in the workbench
 // context: the tab publishes the view and the operator's choice (open, which monitor, windowed);
 // the platform side opens or closes the window to match, fills in the monitors it sees and says
 // why it could not open one. UI thread only.

@@ -1,5 +1,5 @@
 #pragma once
-// What the subject screen shows (issue #11), as plain data: the stage of the session, the big red
+// What the subject screen shows, as plain data: the stage of the session, the big red
 // circle while a trial records (the study: "the cue recording is a big red circle"), the countdown,
 // the cue in large letters, the palm orientation and the motion pictogram. Built from the Record
 // tab's model every frame; the subject window only draws it and never has controls. Nothing an

@@ -1,5 +1,5 @@
 #pragma once
-// The 3D replay of the Review tab (issue #12): what the live-hands view draws at one time of a
+// The 3D replay of the Review tab: what the live-hands view draws at one time of a
 // processed trial — each controller's realigned hand in its slot colour, the Vicon hand (mapped
 // markers, light grey) and the fused hand coloured by how many controllers saw each finger at that
 // frame — so the picture and the plots' cursor show the same instant.

@@ -1,5 +1,5 @@
 #pragma once
-// Processing what the Review tab opened, in the background (issue #12): every opened folder's
+// Processing what the Review tab opened, in the background: every opened folder's
 // trials (a subject session's accepted attempts, or every trial in a plain folder) through core's
 // process_session_cached on a worker thread, with progress, ETA and cancel. Cached trials come back
 // at once; a cancelled batch keeps what was done (the rest are rows marked "cancelled").

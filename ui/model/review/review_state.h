@@ -1,5 +1,5 @@
 #pragma once
-// The Review tab's state (issue #12): the folders a researcher opened, their processed trials (the
+// The Review tab's state: the folders a researcher opened, their processed trials (the
 // batch job's result), the table's filter, the selected trial and its full view, and the x range
 // the stacked plots share. Panels read it and call its actions; processing happens in the jobs.
 #include <filesystem>

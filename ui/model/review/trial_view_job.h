@@ -1,5 +1,5 @@
 #pragma once
-// The selected trial in full (issue #12): the cache keeps only summaries, so clicking a trial
+// The selected trial in full: the cache keeps only summaries, so clicking a trial
 // processes it again on a worker thread (well under a second for a study trial) and keeps its
 // series for the stacked plots, and the whole result for the 3D replay. Selecting another trial
 // abandons the previous run instead of waiting for it.

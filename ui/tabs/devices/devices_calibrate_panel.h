@@ -1,5 +1,5 @@
 #pragma once
-// The Devices tab's Calibrate section (issue #13): record a 5 s still hand on the live rig (or
+// The Devices tab's Calibrate section: record a 5 s still hand on the live rig (or
 // pick a recorded trial), calibrate with or without Vicon, read the residuals per controller, then
 // Apply (one undo step in the layout document, Ctrl+Z here or in the Layout tab takes it back),
 // Save the calibrated layout, or Discard. All logic is in ui/model/devices/calibration_step.h; this

@@ -1,4 +1,4 @@
-// The Devices tab (issue #5): every connected controller (or the simulated rig) with serial,
+// The Devices tab: every connected controller (or the simulated rig) with serial,
 // slot (assign by dropdown), backend, status, rate, hand present and latest frame age; a live 3-D
 // view of every device's hand realigned into the world frame, one colour per device, so a
 // misplaced controller shows at a glance; start/stop of a test recording through the one trial

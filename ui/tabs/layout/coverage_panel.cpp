@@ -89,7 +89,7 @@ void CoveragePanel::draw() {
 
   ImGui::Text("M = %.4g", c.metric);
   if (ImGui::IsItemHovered()) {
-    ImGui::SetTooltip("M = sum c_i / N^(i+1) over i < D (reference-algorithms.md §4): lower is better, 0 when every\n"
+    ImGui::SetTooltip("M = sum c_i / N^(i+1) over i < D (docs/algorithms/metric.md): lower is better, 0 when every\n"
                       "controller sees every finger in every frame. One frame with an unseen finger\n"
                       "outweighs any number of frames seen by a single controller.");
   }

@@ -1,7 +1,7 @@
 #pragma once
 // Controllers × fingers: the share of pose-set frames in which each controller sees each finger;
 // per finger the frames seen by nobody; the placement metric M and the c_0 … c_D histogram
-// (reference-algorithms.md §4). Read from the coverage cache, which recomputes only the column of
+// (docs/algorithms/metric.md). Read from the coverage cache, which recomputes only the column of
 // a controller that moved, so the table follows a drag.
 #include <memory>
 

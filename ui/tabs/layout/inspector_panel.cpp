@@ -133,7 +133,7 @@ void InspectorPanel::draw_sensor() {
     s.report(set_sensor_model(s.upd_history(), edited), "Sensor model");
   }
   if (ImGui::IsItemHovered()) {
-    ImGui::SetTooltip("Study defaults: 600 mm, 150° × 120° (reference-algorithms.md §3)\nDrag to change; double-click to type");
+    ImGui::SetTooltip("Study defaults: 600 mm, 150° × 120° (docs/algorithms/visibility.md)\nDrag to change; double-click to type");
   }
 }
 

@@ -1,5 +1,5 @@
 #pragma once
-// The Layout tab (issue #4): design where the controllers stand, see which fingers each can see,
+// The Layout tab: design where the controllers stand, see which fingers each can see,
 // and let the optimiser search for a better layout. This class is the composition root: it builds
 // the shared LayoutTabState and one object per panel, arranges them (ImGui 1.86 has no docking:
 // child regions with a splitter), and owns the tab-level commands (file dialogs, shortcuts,

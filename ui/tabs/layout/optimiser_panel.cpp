@@ -17,7 +17,7 @@ OptimiserPanel::OptimiserPanel(std::shared_ptr<LayoutTabState> state) : state_(s
 void OptimiserPanel::draw() {
   anchors_.clear();
   // Start / progress / Apply / Discard stay at the bottom of the panel whatever is expanded above
-  // them (issue #15: with Search settings open they fell below the panel); the rest scrolls.
+  // them (with Search settings open they fell below the panel); the rest scrolls.
   // The footer is as high as it was last drawn (its result text wraps on a narrow panel), and
   // never lower than its rows need now: the progress row is two lines (with one line reserved,
   // "elapsed ... remaining ..." fell off the bottom of the panel at 1280 x 800).
@@ -151,7 +151,7 @@ void OptimiserPanel::draw_settings() {
     p = PsoSettings{};  // the study's metric and swarm settings
     p.threads = threads;
   }
-  if (ImGui::IsItemHovered()) ImGui::SetTooltip("30 particles, 100 iterations, w 0.9, c1 0.5, c2 0.3 (reference-algorithms.md §5)");
+  if (ImGui::IsItemHovered()) ImGui::SetTooltip("30 particles, 100 iterations, w 0.9, c1 0.5, c2 0.3 (docs/algorithms/search.md)");
 
   ImGui::Spacing();
   ImGui::PushTextWrapPos(0.0f);
@@ -284,7 +284,7 @@ void OptimiserPanel::draw_comparison() {
   ImGui::Spacing();
   ImGui::TextUnformatted("Current vs candidate");
   // The label column fits its longest label; the numbers share the rest. Green is better and red
-  // worse whichever way the number moved (issue #15: an improvement showed in red).
+  // worse whichever way the number moved (an improvement showed in red).
   if (!ImGui::BeginTable("##compare", 4, ImGuiTableFlags_Borders | ImGuiTableFlags_RowBg | ImGuiTableFlags_SizingFixedFit)) return;
   ImGui::TableSetupColumn("");
   ImGui::TableSetupColumn("current", ImGuiTableColumnFlags_WidthStretch);

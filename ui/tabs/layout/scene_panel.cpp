@@ -182,7 +182,7 @@ void ScenePanel::draw(ImVec2 size) {
                          ImGuiButtonFlags_MouseButtonLeft | ImGuiButtonFlags_MouseButtonRight |
                              ImGuiButtonFlags_MouseButtonMiddle);
   // The wheel zooms the view; without this ImGui also hands it to the tab's window, which then
-  // scrolled by its 2 px of overflow (issue #15).
+  // scrolled by its 2 px of overflow.
   ImGui::SetItemUsingMouseWheel();
   const bool hovered = ImGui::IsItemHovered();
   handle_input(hovered);

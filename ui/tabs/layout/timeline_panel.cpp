@@ -28,7 +28,7 @@ void TimelinePanel::draw() {
   char overlay[128] = "loading pose set...";
   if (p && !frames.empty()) {
     const PoseLabel& l = p->set.labels[static_cast<size_t>(t.frame)];
-    // Words rather than the pose set's "horizontal/thumb" keys (issue #15).
+    // Words rather than the pose set's "horizontal/thumb" keys.
     const std::string palm(orientation_words(l.orientation)), motion(motion_words(l.motion));
     if (l.motion == HandMotion::kOpen) {
       std::snprintf(overlay, sizeof overlay, "frame %d: %s, %s", t.frame, palm.c_str(), motion.c_str());

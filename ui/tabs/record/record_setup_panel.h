@@ -1,5 +1,5 @@
 #pragma once
-// The Record tab's set-up form (issue #11): a new subject session (subject, hand, operator,
+// The Record tab's set-up form: a new subject session (subject, hand, operator,
 // protocol, Vicon, folder) or an existing one to resume, and how to record it (backend, simulated
 // time). Draws the form's fields (ui/model/record/record_setup_form.h) with each field's problem
 // under it, and reports what was pressed; the tab turns it into model actions.

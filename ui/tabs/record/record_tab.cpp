@@ -1,4 +1,4 @@
-// The Record tab (issue #11): one subject session at the bench. Set up or resume, pre-flight per
+// The Record tab: one subject session at the bench. Set up or resume, pre-flight per
 // layout block, then trial after trial with the cue, a big red circle while recording, a strip per
 // controller, and a verdict with one-key redo. Keyboard: Space starts / stops, Enter accepts a
 // failed trial anyway, R redoes the last one, N adds a note, Esc aborts the running trial. All state and rules live in RecordSessionModel

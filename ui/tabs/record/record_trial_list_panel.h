@@ -1,5 +1,5 @@
 #pragma once
-// The whole protocol as a list (issue #11): grouped by layout block, one row per trial with its
+// The whole protocol as a list: grouped by layout block, one row per trial with its
 // status (pending, recording, pass, warn, fail, interrupted, accepted) and attempt count. Returns
 // the trial clicked this frame (-1: none).
 #include "core/session/session_state.h"

@@ -1,5 +1,5 @@
 #pragma once
-// The Record tab's main panel (issue #11): the current trial's name, cue and length; the
+// The Record tab's main panel: the current trial's name, cue and length; the
 // pre-flight checklist before a block (green and red lines, override with a typed reason); while
 // recording a big red circle, the countdown, elapsed and remaining time and a strip per controller
 // (rate, hand, frame age); after a trial its verdict with reasons and Accept / Redo. Draws and

@@ -1,5 +1,5 @@
 #pragma once
-// The verdict after each trial (issue #11): pass / warn / fail with the reasons, the key figures
+// The verdict after each trial: pass / warn / fail with the reasons, the key figures
 // (recorded span, hand present, per finger how often some controller saw it, per controller rate
 // and hand), a small plot of each controller's hand presence and fingers seen over the trial, and
 // the operator's Accept [Enter], Redo [R] and Note [N]. Draws and reports the button pressed; the

@@ -1,5 +1,5 @@
 #pragma once
-// One line in the Record tab for the subject screen (issue #11): the toggle with its shortcut
+// One line in the Record tab for the subject screen: the toggle with its shortcut
 // (F2), which monitor it covers, a windowed option for a one-monitor bench, and why it could not
 // open. Changes only the operator's choice in the link; the window follows it.
 #include "ui/model/record/subject_screen_link.h"

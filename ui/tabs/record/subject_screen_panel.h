@@ -1,5 +1,5 @@
 #pragma once
-// Draws the subject screen (issue #11) from its view state (ui/model/record/subject_view.h) over
+// Draws the subject screen from its view state (ui/model/record/subject_view.h) over
 // the whole of the subject window: the big red circle while recording — the study's cue — or a
 // grey one with the countdown in it, the headline, the cue in large letters, how to hold the hand
 // and the animated motion pictogram. No controls.

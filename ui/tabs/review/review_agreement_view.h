@@ -1,5 +1,5 @@
 #pragma once
-// Agreement as a validation study reports it (issue #12), over the trials the table shows: per
+// Agreement as a validation study reports it, over the trials the table shows: per
 // layout × pose group and for each finger length and joint range of motion, Bland–Altman bias and
 // 95 % limits with their confidence intervals (the repeated-measures form when a subject has
 // several trials), RMSE, Pearson r and ICC(2,1) with the model named; the selected measure's

@@ -1,5 +1,5 @@
 #pragma once
-// Every opened trial in one table (issue #12): filters by subject, layout, pose, motion and status,
+// Every opened trial in one table: filters by subject, layout, pose, motion and status,
 // sortable headline columns (visibility per controller, finger-length and range-of-motion
 // difference, LMC–Vicon lag); a click selects the trial for the trial view.
 #include "ui/model/review/review_state.h"

@@ -1,5 +1,5 @@
 #pragma once
-// One trial on one time axis (issue #12): the six joint angles and the finger lengths — fused LMC,
+// One trial on one time axis: the six joint angles and the finger lengths — fused LMC,
 // Vicon and, when asked, each controller after realignment — stacked on a shared x range (zoom,
 // pan and the cursor move them all), then a label strip per controller × finger so every gap has
 // its cause beside it.
