@@ -18,13 +18,12 @@
 // weights: participation and footprint are near-constraints (a parked or overlapping controller
 // costs more than any M). Redundancy and centring are tie-breakers: one frame in a hundred with an
 // unseen finger adds 0.01 to M, as much as redundancy changes when S2 moves by 20 percentage points.
-// The axis cut trades against M: on the 10,000-frame Monte Carlo set no layout with a useful M
-// keeps every seen marker within 250 mm (even paper-initial, M 0.52, has 5.7 % of seeing pairs
-// beyond it), so its weight sets how much M a lab gives for fewer cut coordinates. M_cut asks a
-// different question: not how often a controller sees beyond its cut, but how well the hand is
-// covered by what lies inside the cuts, which is what the controllers can measure. It weighs as
-// much as M (weight 1): on that set the search then keeps every controller counting inside its cut
-// and reaches M 0.144 with M_cut 0.195, against M 0.118 with M_cut 0.262 when it is off (README).
+// The axis cut trades against M: on a Monte Carlo pose set no layout with a useful M keeps every
+// seen marker within 250 mm, so its weight sets how much M a lab gives for fewer cut coordinates.
+// M_cut asks a different question: not how often a controller sees beyond its cut, but how well
+// the hand is covered by what lies inside the cuts, which is what the controllers can measure. It
+// weighs as much as M (weight 1), so the search keeps every controller counting inside its cut;
+// what that costs in M is in docs/results/placement.md.
 #include <array>
 #include <span>
 

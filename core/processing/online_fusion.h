@@ -13,8 +13,7 @@
 // Why combine the latest samples instead of updating with the arriving device alone: controllers
 // disagree by several millimetres (calibration, internal-model guesses) and stream at different
 // rates; updated one device at a time, the responsive filter would jump towards each arriving
-// device in turn (on the published static trial: 6.6 mm RMS from the offline result, jitter a
-// viewer sees). A held sample's variance grows with its age by the model's process noise (it is
+// device in turn (millimetres of jitter a viewer sees; core/processing/README.md). A held sample's variance grows with its age by the model's process noise (it is
 // not moved with the filter's velocity: that feedback diverged); it stops counting kStaleAfterS
 // after its device's latest frame, or at once when the device reports no hand.
 // Every update happens at one instant per point: a second frame at the same time (the next device

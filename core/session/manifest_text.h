@@ -1,9 +1,9 @@
 #pragma once
 // The manifest (`session.json`) as text, rewritten after every journal event. Serialising every
-// trial's verdict again for each event made a session's bookkeeping quadratic: the 80-trial study
-// protocol rewrote its manifest 324 times as it grew to 300 KB (about 48 MB of JSON), half of
-// `lmc session run`'s CPU time. This keeps each trial's entry as text and serialises again only
-// the entry the event changed (trial_changed_by). The text is byte for byte
+// trial's verdict again for each event would make a session's bookkeeping quadratic in its length
+// (the manifest is rewritten hundreds of times and grows to hundreds of kilobytes), so each trial's
+// entry is kept as text and only the entry the event changed is serialised again
+// (trial_changed_by). The text is byte for byte
 // session_manifest_json(state).dump(2), which stays the one definition of the document.
 #include <nlohmann/json.hpp>
 

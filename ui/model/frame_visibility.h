@@ -10,7 +10,7 @@
 
 #include "core/layout/layout.h"
 #include "core/visibility/visibility_explain.h"
-#include "ui/model/finger_ray.h"
+#include "ui/scene/finger_ray.h"
 
 namespace lmc::ui {
 

@@ -15,7 +15,7 @@
 #include <stop_token>
 
 #include "core/layout/layout.h"
-#include "ui/model/heatmap_grid.h"
+#include "ui/scene/heatmap_grid.h"
 #include "ui/model/jobs/background_job.h"
 #include "ui/model/pose_set_store.h"
 

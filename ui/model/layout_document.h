@@ -9,15 +9,9 @@
 #include <vector>
 
 #include "core/layout/layout.h"
+#include "ui/scene/device_locks.h"
 
 namespace lmc::ui {
-
-// Per-parameter locks in DevicePose order {x, y, z, rx, ry, rz}; true = the optimiser and the
-// scene handles must leave that parameter alone.
-struct DeviceLocks {
-  std::array<bool, kNumPoseParams> locked{false, true, false, false, false, true};
-  bool operator==(const DeviceLocks&) const = default;
-};
 
 struct ParamRange {
   double lo = 0, hi = 0;

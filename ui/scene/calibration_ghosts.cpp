@@ -1,6 +1,5 @@
 #include "ui/scene/calibration_ghosts.h"
 
-#include "ui/model/devices/live_hands.h"
 #include "ui/scene/drag_controller.h"
 
 namespace lmc::ui {

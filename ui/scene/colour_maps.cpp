@@ -34,4 +34,16 @@ Rgba viridis(double t) {
   return {static_cast<float>(c.r) / 255.0f, static_cast<float>(c.g) / 255.0f, static_cast<float>(c.b) / 255.0f, 1.0f};
 }
 
+std::array<float, 3> device_colour(int index) {
+  static const std::array<std::array<float, 3>, 8> colours = {{{0.90F, 0.30F, 0.25F},
+                                                               {0.25F, 0.65F, 0.95F},
+                                                               {0.35F, 0.80F, 0.35F},
+                                                               {0.95F, 0.75F, 0.20F},
+                                                               {0.75F, 0.45F, 0.90F},
+                                                               {0.20F, 0.85F, 0.80F},
+                                                               {0.95F, 0.50F, 0.75F},
+                                                               {0.70F, 0.70F, 0.70F}}};
+  return colours[static_cast<size_t>(((index % 8) + 8) % 8)];
+}
+
 }  // namespace lmc::ui

@@ -18,6 +18,10 @@ inline constexpr int kSeenCountCategories = 4;  // 0, 1, 2, ≥3
 Rgba seen_count_colour(int devices_seeing);
 std::string seen_count_label(int category);  // "0 controllers", "1", "2", "3 or more"
 
+// RGB in 0..1, one distinct colour per controller slot (LMC1 … LMC8), the same in every tab,
+// legend and plot.
+std::array<float, 3> device_colour(int index);
+
 // t in [0, 1] (clamped) → viridis.
 Rgba viridis(double t);
 

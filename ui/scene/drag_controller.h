@@ -15,7 +15,7 @@
 #include <vector>
 
 #include "core/layout/layout.h"
-#include "ui/model/layout_document.h"
+#include "ui/scene/device_locks.h"
 #include "ui/scene/orbit_camera.h"
 #include "ui/scene/ray.h"
 

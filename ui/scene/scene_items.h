@@ -12,9 +12,9 @@
 
 #include "core/hand/hand_frame.h"
 #include "core/layout/layout.h"
-#include "ui/model/finger_ray.h"
-#include "ui/model/heatmap_grid.h"
-#include "ui/model/layout_document.h"
+#include "ui/scene/finger_ray.h"
+#include "ui/scene/heatmap_grid.h"
+#include "ui/scene/device_locks.h"
 #include "ui/scene/colour_maps.h"
 #include "ui/scene/drag_controller.h"
 

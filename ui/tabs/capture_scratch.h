@@ -1,7 +1,7 @@
 #pragma once
 // Folders a tab records demo sessions into while `--capture` takes its pictures. They are scratch
-// (the pictures are the output), so they go with the tab: each capture run used to leave its
-// sessions in /tmp for good. Declare the member before whatever writes into the folders, so that
+// (the pictures are the output), so they go with the tab and never stay behind in /tmp.
+// Declare the member before whatever writes into the folders, so that
 // it is destroyed after the writer has stopped.
 #include <unistd.h>
 

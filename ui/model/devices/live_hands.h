@@ -10,11 +10,9 @@
 #include "core/hand/hand_frame.h"
 #include "core/layout/layout.h"
 #include "devices/device_hub.h"
+#include "ui/scene/colour_maps.h"
 
 namespace lmc::ui {
-
-// RGB in 0..1, one distinct colour per slot (LMC1 … LMC8).
-std::array<float, 3> device_colour(int index);
 
 struct LiveHand {
   int colour = 0;  // index into device_colour(): the slot's index
