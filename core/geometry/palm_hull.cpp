@@ -18,6 +18,32 @@ double extent_of(std::span<const Eigen::Vector3d> pts) {
   return e;
 }
 
+// Which sides of the plane through `origin` with unit normal `nrm` the points lie on, beyond
+// `tolerance`: a facet (or a polygon edge) has every point on one side.
+struct Sides {
+  bool positive = false, negative = false;
+};
+Sides sides_of(const Eigen::Vector3d& nrm, const Eigen::Vector3d& origin, std::span<const Eigen::Vector3d> pts,
+               double tolerance) {
+  Sides sides;
+  const double d = nrm.dot(origin);
+  for (const auto& p : pts) {
+    const double s = nrm.dot(p) - d;
+    if (s > tolerance) sides.positive = true;
+    if (s < -tolerance) sides.negative = true;
+  }
+  return sides;
+}
+
+// Adds the plane through `origin`, its normal turned to face away from the points (all of them
+// then satisfy n·p ≤ d), while there is room.
+void add_outward_plane(ConvexHull6& hull, Eigen::Vector3d nrm, const Eigen::Vector3d& origin, const Sides& sides) {
+  if (sides.positive) nrm = -nrm;
+  if (hull.plane_count < ConvexHull6::kMaxPlanes) {
+    hull.planes[static_cast<size_t>(hull.plane_count++)] = {nrm.x(), nrm.y(), nrm.z(), nrm.dot(origin)};
+  }
+}
+
 }  // namespace
 
 ConvexHull6 build_convex_hull(std::span<const Eigen::Vector3d> points) {
@@ -49,21 +75,10 @@ ConvexHull6 build_convex_hull(std::span<const Eigen::Vector3d> points) {
         any_nondegenerate_triple = true;
         nrm /= len;
         some_normal = nrm;
-        const double d = nrm.dot(pts[i]);
-        bool pos = false, neg = false;
-        for (size_t m = 0; m < n; ++m) {
-          const double s = nrm.dot(pts[m]) - d;
-          if (s > side_tol) pos = true;
-          if (s < -side_tol) neg = true;
-        }
-        if (pos && neg) continue;   // a plane through the middle, not a facet
-        if (!pos && !neg) continue; // all coplanar: handled below
-        if (pos) {                  // orient outwards: all points satisfy n·p ≤ d
-          nrm = -nrm;
-        }
-        if (hull.plane_count < ConvexHull6::kMaxPlanes) {
-          hull.planes[static_cast<size_t>(hull.plane_count++)] = {nrm.x(), nrm.y(), nrm.z(), nrm.dot(pts[i])};
-        }
+        const Sides sides = sides_of(nrm, pts[i], pts, side_tol);
+        if (sides.positive && sides.negative) continue;    // a plane through the middle, not a facet
+        if (!sides.positive && !sides.negative) continue;  // all coplanar: handled below
+        add_outward_plane(hull, nrm, pts[i], sides);
       }
     }
   }
@@ -85,18 +100,9 @@ ConvexHull6 build_convex_hull(std::span<const Eigen::Vector3d> points) {
       const double len = nrm.norm();
       if (len <= 0.0) continue;
       nrm /= len;
-      const double d = nrm.dot(pts[i]);
-      bool pos = false, neg = false;
-      for (size_t m = 0; m < n; ++m) {
-        const double s = nrm.dot(pts[m]) - d;
-        if (s > side_tol) pos = true;
-        if (s < -side_tol) neg = true;
-      }
-      if (pos && neg) continue;
-      if (pos) nrm = -nrm;
-      if (hull.plane_count < ConvexHull6::kMaxPlanes) {
-        hull.planes[static_cast<size_t>(hull.plane_count++)] = {nrm.x(), nrm.y(), nrm.z(), nrm.dot(pts[i])};
-      }
+      const Sides sides = sides_of(nrm, pts[i], pts, side_tol);
+      if (sides.positive && sides.negative) continue;
+      add_outward_plane(hull, nrm, pts[i], sides);
     }
   }
   // A flat hull is only the polygon itself: also require the query to lie on its plane (within

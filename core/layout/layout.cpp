@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <set>
+#include <utility>
 
 namespace lmc {
 
@@ -66,6 +67,21 @@ std::string validate_layout(const Layout& layout) {
     }
   }
   return {};
+}
+
+Layout square_layout(std::string name) {
+  Layout l;
+  l.name = std::move(name);
+  const double xs[4] = {-60, 60, -60, 60};
+  const double zs[4] = {60, 60, -60, -60};
+  for (int i = 0; i < 4; ++i) {
+    LayoutDevice d;
+    d.slot = "LMC" + std::to_string(i + 1);
+    d.pose.x_mm = xs[i];
+    d.pose.z_mm = zs[i];
+    l.devices.push_back(d);
+  }
+  return l;
 }
 
 }  // namespace lmc

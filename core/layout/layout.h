@@ -49,4 +49,9 @@ struct Layout {
 // the JSON-style path of the offending field ("/devices/2/pose/rx: not a finite number").
 std::string validate_layout(const Layout& layout);
 
+// Four controllers flat on the table in the study's initial square, LMC1…LMC4 at (x, z) =
+// (−60, 60), (60, 60), (−60, −60), (60, −60) mm, no offsets, no serials, the study's sensor: what a
+// new layout starts from (the preset paper-initial adds the authors' measured offsets).
+Layout square_layout(std::string name);
+
 }  // namespace lmc

@@ -5,6 +5,7 @@
 #include <map>
 
 #include "core/session/trial_quality_parts.h"
+#include "core/stats/stream_rates.h"
 
 namespace lmc::session::detail {
 
@@ -56,25 +57,17 @@ DeviceQuality device_stream_quality(const DeviceRows& device, std::int64_t trial
     return q;
   }
 
-  // Rates from consecutive timestamps. A zero difference is a duplicate row, not an infinitely
-  // fast controller, so it is left out of the rates (it still counts as a frame).
-  std::vector<double> intervals_us;
-  intervals_us.reserve(device.rows.size());
-  std::int64_t longest_gap_us = std::max(device.rows.front()->timestamp_us - trial_first_us,
-                                         trial_last_us - device.rows.back()->timestamp_us);
-  for (size_t i = 1; i < device.rows.size(); ++i) {
-    const std::int64_t dt = device.rows[i]->timestamp_us - device.rows[i - 1]->timestamp_us;
-    if (dt > 0) intervals_us.push_back(static_cast<double>(dt));
-    longest_gap_us = std::max(longest_gap_us, dt);
-  }
+  // Rates from consecutive timestamps (a duplicate row still counts as a frame).
+  std::vector<std::int64_t> stamps_us;
+  stamps_us.reserve(device.rows.size());
+  for (const HandFrame* row : device.rows) stamps_us.push_back(row->timestamp_us);
+  std::int64_t longest_gap_us = std::max(stamps_us.front() - trial_first_us, trial_last_us - stamps_us.back());
+  for (size_t i = 1; i < stamps_us.size(); ++i) longest_gap_us = std::max(longest_gap_us, stamps_us[i] - stamps_us[i - 1]);
   q.longest_gap_s = seconds(longest_gap_us);
-  if (!intervals_us.empty()) {
-    std::vector<double> rates(intervals_us.size());
-    std::transform(intervals_us.begin(), intervals_us.end(), rates.begin(),
-                   [](double dt) { return 1e6 / dt; });
-    q.median_rate_hz = percentile(rates, 50);
-    q.rate_p5_hz = percentile(rates, 5);
-    q.rate_p95_hz = percentile(std::move(rates), 95);
+  if (const stats::StreamRates rates = stats::stream_rates(stamps_us); rates.intervals > 0) {
+    q.median_rate_hz = rates.median_hz;
+    q.rate_p5_hz = rates.p5_hz;
+    q.rate_p95_hz = rates.p95_hz;
   }
 
   // Hand: the share of this controller's frames with a hand, and the longest run of frames

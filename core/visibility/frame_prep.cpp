@@ -26,13 +26,13 @@ PreparedFrame prepare_frame(const HandFrame& frame) {
     fr.my[static_cast<size_t>(k)] = p.y();
     fr.mz[static_cast<size_t>(k)] = p.z();
   }
-  // visibility step 1 approach vector a = (s1 + s17)/2 − s0.
+  // Visibility step 1 approach vector a = (s1 + s17)/2 − s0.
   const Eigen::Vector3d a = (s[1] + s[17]) / 2.0 - s[0];
   fr.ax = a.x();
   fr.ay = a.y();
   fr.az = a.z();
 
-  // visibility step 3 palm points: u = unit(s1 − s9); P = {s5 + 3u, s9 + 3u, s13 + 3u, s18 + 3u, s1 − 5u, s17}.
+  // Visibility step 3 palm points: u = unit(s1 − s9); P = {s5 + 3u, s9 + 3u, s13 + 3u, s18 + 3u, s1 − 5u, s17}.
   Eigen::Vector3d u = s[1] - s[9];
   const double ulen = u.norm();
   u = ulen > 0.0 ? Eigen::Vector3d(u / ulen) : Eigen::Vector3d::Zero();
@@ -53,7 +53,7 @@ PreparedFrame prepare_frame(const HandFrame& frame) {
   fr.nz = normal.z();
   fr.hull = build_convex_hull(fr.palm_points);
 
-  // visibility step 4 phalanges: finger f's markers m0…m3 give three segments.
+  // Visibility step 4 phalanges: finger f's markers m0…m3 give three segments.
   for (int f = 0; f < kNumDigits; ++f) {
     for (int seg = 0; seg < 3; ++seg) {
       const Eigen::Vector3d& b = s[static_cast<size_t>(finger_marker(f, seg))];

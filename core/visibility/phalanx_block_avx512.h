@@ -1,5 +1,5 @@
 #pragma once
-// The visibility step 4 finger-occlusion test for CPUs with AVX-512: the ray against all 16 lanes of the ring's
+// The finger-occlusion test (visibility step 4) for CPUs with AVX-512: the ray against all 16 lanes of the ring's
 // first block (the 15 phalanges and lane 15, a copy of lane 0) in two 8-lane registers, with the
 // ray's own finger and lane 15 masked off, so the lanes tested are exactly others_occlude's 12
 // (phalanx_ring.h). Why it is faster than the AVX2 build of others_occlude (the kernel takes about

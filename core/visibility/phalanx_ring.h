@@ -1,5 +1,5 @@
 #pragma once
-// The batch kernel's form of visibility step 4 finger-occlusion test (visibility_tests.h has the
+// The batch kernel's form of the finger-occlusion test, visibility step 4 (visibility_tests.h has the
 // reference form, which the explaining path uses). Same expressions, evaluated in the same order
 // per (ray, phalanx), so every decision is bit-for-bit the reference's; only the work around them
 // differs. Why it is faster, measured on the 10,000-frame Monte Carlo set with layouts that see
@@ -22,6 +22,7 @@
 
 #include "core/visibility/device_view.h"
 #include "core/visibility/frame_prep.h"
+#include "core/visibility/visibility_tests.h"
 
 namespace lmc::vis {
 
@@ -40,26 +41,10 @@ struct PhalanxRing {
   alignas(64) double we[kRingLanes], ww[kRingLanes], len[kRingLanes];
 };
 
-// Same arithmetic as prepare_phalanges (visibility_tests.h), then the wrap-around copies.
+// The phalanges as prepare_phalanges computes them (set_phalanx_lane), then the wrap-around copies.
 [[gnu::always_inline]] inline void prepare_phalanx_ring(const PreparedFrame& fr, const DeviceView& d,
                                                         PhalanxRing& r) {
-  for (int p = 0; p < kNumPhalanges; ++p) {
-    const auto pp = static_cast<size_t>(p);
-    const double ex = fr.bx[pp] - d.ox, ey = fr.by[pp] - d.oy, ez = fr.bz[pp] - d.oz;
-    const double wx = fr.wx[pp], wy = fr.wy[pp], wz = fr.wz[pp];
-    r.ex[p] = ex;
-    r.ey[p] = ey;
-    r.ez[p] = ez;
-    r.wx[p] = wx;
-    r.wy[p] = wy;
-    r.wz[p] = wz;
-    r.gx[p] = wy * ez - wz * ey;
-    r.gy[p] = wz * ex - wx * ez;
-    r.gz[p] = wx * ey - wy * ex;
-    r.we[p] = wx * ex + wy * ey + wz * ez;
-    r.ww[p] = wx * wx + wy * wy + wz * wz;
-    r.len[p] = fr.len[pp];
-  }
+  for (int p = 0; p < kNumPhalanges; ++p) set_phalanx_lane(fr, d, p, r);
   for (int p = kNumPhalanges; p < kRingLanes; ++p) {
     const int q = p - kNumPhalanges;
     r.ex[p] = r.ex[q];

@@ -30,9 +30,9 @@ template <bool kCut, KernelBuild kBuild>
                                                             FingerBits* cut_bits) {
   if constexpr (kCut) *cut_bits = 0;
   if (!fr.valid) return 0;
-  // visibility step 1 approach direction.
+  // Visibility step 1 approach direction.
   if (!vis::approach_ok(fr, d)) return 0;
-  // visibility step 2 range and pyramid for s1…s21: any failure hides the whole hand. Branch-free over all
+  // Visibility step 2 range and pyramid for s1…s21: any failure hides the whole hand. Branch-free over all
   // markers (it vectorises; the seeing case, which dominates a search near the hand, has to test
   // every marker anyway), with the range test as |v|² > range_sq_exact, which decides exactly as
   // marker_in_view's sqrt(|v|²) > range (visibility_params.h). v and |v|² are kept for the rays.
@@ -61,7 +61,7 @@ template <bool kCut, KernelBuild kBuild>
   if (outside != 0) return 0;
   vis::PhalanxRing ring;
   vis::prepare_phalanx_ring(fr, d, ring);
-  // visibility step 3 for every marker at once (vectorises, the divisions included): where the ray's line meets
+  // Visibility step 3 for every marker at once (vectorises, the divisions included): where the ray's line meets
   // the palm plane, t = n·(c − o) / n·v, and whether that is strictly between device and marker.
   // Same expressions as palm_occludes (visibility_tests.h); only a ray that crosses the plane needs
   // the hull test below (about a third of them).
@@ -82,8 +82,8 @@ template <bool kCut, KernelBuild kBuild>
 #pragma GCC unroll 4
     for (int j = 0; j < 4; ++j) {
       const int k = finger_marker(f, j);
-      // visibility step 3 palm (rarely hides a ray, but it is cheaper than the fingers, so it goes first);
-      // visibility step 4 the other fingers (phalanx_ring.h).
+      // Visibility step 3 palm (rarely hides a ray, but it is cheaper than the fingers, so it goes first);
+      // Visibility step 4 the other fingers (phalanx_ring.h).
       const double t = palm_t[k];
       bool hidden = crosses[k] != 0 && hull_contains(fr.hull, d.ox + t * vx[k], d.oy + t * vy[k], d.oz + t * vz[k]);
       if (!hidden) {

@@ -1,5 +1,5 @@
 #pragma once
-// The elementary tests of docs/algorithms/visibility.md, each written once and used by both the
+// The elementary tests of docs/algorithms/visibility.md (its steps 1–4), each written once and used by both the
 // batch kernel (visibility_kernel.cpp) and the explaining path (visibility_explain.cpp), so the
 // two can never disagree. Everything is double precision, like the authors' numpy code.
 #include <cmath>
@@ -10,7 +10,7 @@
 
 namespace lmc::vis {
 
-// visibility step 1: the hand must enter from the user's side, a·f ≥ 0.
+// Visibility step 1: the hand must enter from the user's side, a·f ≥ 0.
 inline double approach_dot(const PreparedFrame& fr, const DeviceView& d) {
   return fr.ax * d.fx + fr.ay * d.fy + fr.az * d.fz;
 }
@@ -18,7 +18,7 @@ inline bool approach_ok(const PreparedFrame& fr, const DeviceView& d) { return a
 
 enum class ViewResult : int { kInside = 0, kOutOfRange = 1, kOutOfView = 2 };
 
-// visibility step 2 for one marker m: distance to the device origin, then the pyramid in the device frame
+// Visibility step 2 for one marker m: distance to the device origin, then the pyramid in the device frame
 // (|p.x| ≤ p.y·tan(long/2), |p.z| ≤ p.y·tan(short/2); on a plane counts as inside).
 inline ViewResult marker_in_view(double mx, double my, double mz, const DeviceView& d, const VisibilityLimits& lim) {
   const double vx = mx - d.ox, vy = my - d.oy, vz = mz - d.oz;
@@ -37,7 +37,7 @@ inline double palm_plane_numerator(const PreparedFrame& fr, const DeviceView& d)
   return fr.nx * (fr.cx - d.ox) + fr.ny * (fr.cy - d.oy) + fr.nz * (fr.cz - d.oz);
 }
 
-// visibility step 3 for the ray o → m, v = m − o (not normalised): the line meets the palm plane at
+// Visibility step 3 for the ray o → m, v = m − o (not normalised): the line meets the palm plane at
 // q = o + t·v with t = n·(c − o) / n·v; occluded when 0 < t < 1 (strictly between device and
 // marker) and q lies in the palm points' 3-D hull. A ray parallel to the plane (n·v = 0) is not
 // occluded.
@@ -50,7 +50,7 @@ inline bool palm_occludes(const PreparedFrame& fr, const DeviceView& d, double p
   return hull_contains(fr.hull, d.ox + t * vx, d.oy + t * vy, d.oz + t * vz);
 }
 
-// visibility step 4, the device-dependent part of each phalanx, computed once per (device, frame) and shared
+// Visibility step 4, the device-dependent part of each phalanx, computed once per (device, frame) and shared
 // by all rays: e = b − o, g = w × e, w·e, w·w, plus w and the length. 16 lanes (the 16th is a
 // zero-length dummy that never occludes) so the per-ray loop vectorises without a remainder.
 inline constexpr int kPhalanxLanes = 16;
@@ -61,6 +61,27 @@ struct PhalanxBlock {
   alignas(64) double we[kPhalanxLanes], ww[kPhalanxLanes], len[kPhalanxLanes];
 };
 
+// Phalanx p of the frame, as seen from the device, into lane p of a block of lanes (PhalanxBlock
+// here, the batch kernel's PhalanxRing): the one place these per-phalanx numbers are computed.
+template <class Lanes>
+[[gnu::always_inline]] inline void set_phalanx_lane(const PreparedFrame& fr, const DeviceView& d, int p, Lanes& lanes) {
+  const auto pp = static_cast<size_t>(p);
+  const double ex = fr.bx[pp] - d.ox, ey = fr.by[pp] - d.oy, ez = fr.bz[pp] - d.oz;
+  const double wx = fr.wx[pp], wy = fr.wy[pp], wz = fr.wz[pp];
+  lanes.ex[p] = ex;
+  lanes.ey[p] = ey;
+  lanes.ez[p] = ez;
+  lanes.wx[p] = wx;
+  lanes.wy[p] = wy;
+  lanes.wz[p] = wz;
+  lanes.gx[p] = wy * ez - wz * ey;
+  lanes.gy[p] = wz * ex - wx * ez;
+  lanes.gz[p] = wx * ey - wy * ex;
+  lanes.we[p] = wx * ex + wy * ey + wz * ez;
+  lanes.ww[p] = wx * wx + wy * wy + wz * wz;
+  lanes.len[p] = fr.len[pp];
+}
+
 inline void prepare_phalanges(const PreparedFrame& fr, const DeviceView& d, PhalanxBlock& pb) {
   for (int p = 0; p < kPhalanxLanes; ++p) {
     if (p >= kNumPhalanges) {
@@ -68,25 +89,11 @@ inline void prepare_phalanges(const PreparedFrame& fr, const DeviceView& d, Phal
       pb.gx[p] = pb.gy[p] = pb.gz[p] = pb.we[p] = pb.ww[p] = pb.len[p] = 0.0;
       continue;
     }
-    const auto pp = static_cast<size_t>(p);
-    const double ex = fr.bx[pp] - d.ox, ey = fr.by[pp] - d.oy, ez = fr.bz[pp] - d.oz;
-    const double wx = fr.wx[pp], wy = fr.wy[pp], wz = fr.wz[pp];
-    pb.ex[p] = ex;
-    pb.ey[p] = ey;
-    pb.ez[p] = ez;
-    pb.wx[p] = wx;
-    pb.wy[p] = wy;
-    pb.wz[p] = wz;
-    pb.gx[p] = wy * ez - wz * ey;
-    pb.gy[p] = wz * ex - wx * ez;
-    pb.gz[p] = wx * ey - wy * ex;
-    pb.we[p] = wx * ex + wy * ey + wz * ez;
-    pb.ww[p] = wx * wx + wy * wy + wz * wz;
-    pb.len[p] = fr.len[pp];
+    set_phalanx_lane(fr, d, p, pb);
   }
 }
 
-// visibility step 4 for the ray o → m (v = m − o, not normalised, vv = v·v) against phalanx p of `pb`.
+// Visibility step 4 for the ray o → m (v = m − o, not normalised, vv = v·v) against phalanx p of `pb`.
 // With unit v̂ = v/D the study's conditions are d < r, 0 < t1 ≤ D, 0 < t2 < ℓ where n̂ = v̂ × w,
 // d = |n̂·e|/|n̂|, t1 = (w × n̂)·e / n̂·n̂, t2 = (v̂ × n̂)·e / n̂·n̂. With n = v × w = D·n̂ they read
 //   (n·e)² < r²·n·n,   0 < (w × n)·e ≤ n·n,   0 < (v × n)·e < ℓ·n·n

@@ -16,19 +16,7 @@
 
 namespace lmc::test::synthetic_calibration {
 
-inline Layout square_layout() {
-  Layout l;
-  l.name = "square";
-  const double xs[4] = {-60, 60, -60, 60}, zs[4] = {60, 60, -60, -60};
-  for (int i = 0; i < 4; ++i) {
-    LayoutDevice d;
-    d.slot = "LMC" + std::to_string(i + 1);
-    d.pose.x_mm = xs[i];
-    d.pose.z_mm = zs[i];
-    l.devices.push_back(d);
-  }
-  return l;
-}
+inline Layout square_layout() { return lmc::square_layout("square"); }
 
 // A rotation of `deg` degrees about a fixed, not axis-aligned direction chosen by `k`.
 inline Eigen::Matrix3d turn(double deg, int k) {

@@ -251,19 +251,6 @@ ActionResult apply_calibration(UndoableLayoutDocument& doc, const Layout& calibr
   return commit_checked(doc, "Apply calibration");
 }
 
-Layout default_new_layout() {
-  Layout l;
-  l.name = "untitled";
-  const double xs[4] = {-60, 60, -60, 60};
-  const double zs[4] = {60, 60, -60, -60};
-  for (int i = 0; i < 4; ++i) {
-    LayoutDevice d;
-    d.slot = "LMC" + std::to_string(i + 1);
-    d.pose.x_mm = xs[i];
-    d.pose.z_mm = zs[i];
-    l.devices.push_back(d);
-  }
-  return l;
-}
+Layout default_new_layout() { return square_layout("untitled"); }
 
 }  // namespace lmc::ui

@@ -59,6 +59,8 @@
 #include "core/io/text_fields.h"
 #include "core/io/trc.h"
 #include "core/processing/resample.h"
+#include "core/stats/percentile.h"
+#include "core/stats/stream_rates.h"
 
 namespace {
 
@@ -83,15 +85,6 @@ struct InfoOptions {
   std::string file;
   bool json = false;
 };
-
-// Linear-interpolated quantile (q in 0..1) of sorted values.
-double quantile(const std::vector<double>& sorted, double q) {
-  if (sorted.empty()) return std::nan("");
-  const double pos = q * static_cast<double>(sorted.size() - 1);
-  const auto lo = static_cast<size_t>(std::floor(pos));
-  const size_t hi = std::min(lo + 1, sorted.size() - 1);
-  return sorted[lo] + (pos - static_cast<double>(lo)) * (sorted[hi] - sorted[lo]);
-}
 
 json number_or_null(double v) { return std::isfinite(v) ? json(v) : json(nullptr); }
 
@@ -147,20 +140,13 @@ std::vector<DeviceSummary> summarise_devices(const lmc::LmcRecording& rec) {
       }
     }
     std::sort(stamps.begin(), stamps.end());
-    std::sort(reported.begin(), reported.end());
-    d.reported_rate_median_hz = quantile(reported, 0.5);
+    d.reported_rate_median_hz = lmc::stats::percentile(std::move(reported), 50);
     if (stamps.size() >= 2) d.duration_s = static_cast<double>(stamps.back() - stamps.front()) * 1e-6;
-    // Rates from consecutive timestamp differences of this device's rows sorted by time; equal
-    // stamps (duplicates) carry no rate information.
-    std::vector<double> rates;
-    for (size_t i = 1; i < stamps.size(); ++i) {
-      const std::int64_t dt_us = stamps[i] - stamps[i - 1];
-      if (dt_us > 0) rates.push_back(1e6 / static_cast<double>(dt_us));
-    }
-    std::sort(rates.begin(), rates.end());
-    d.rate_median_hz = quantile(rates, 0.5);
-    d.rate_p5_hz = quantile(rates, 0.05);
-    d.rate_p95_hz = quantile(rates, 0.95);
+    // The rates as the trial verdict computes them, from this device's rows in time order.
+    const lmc::stats::StreamRates rates = lmc::stats::stream_rates(stamps);
+    d.rate_median_hz = rates.median_hz;
+    d.rate_p5_hz = rates.p5_hz;
+    d.rate_p95_hz = rates.p95_hz;
     if (rec.kind == lmc::RecordingKind::kRaytraced && d.hand_rows > 0) {
       std::array<double, lmc::kNumDigits> frac{};
       for (int f = 0; f < lmc::kNumDigits; ++f) {
