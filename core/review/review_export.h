@@ -9,6 +9,7 @@
 //   trial-<name>.*                        a trial's angles and finger lengths against Vicon (svg, csv,
 //                                         json) and <…>.series.csv (every series and label, wide)
 #include <filesystem>
+#include <stop_token>
 #include <string>
 #include <vector>
 
@@ -28,11 +29,14 @@ struct ReviewExportInput {
 };
 
 // Writes into `dir` (created when missing); returns the files written. Throws lmc::Error naming the
-// file when a write fails; files already written stay (each is written atomically).
-std::vector<std::filesystem::path> write_review_exports(const std::filesystem::path& dir, const ReviewExportInput& input);
+// file when a write fails; files already written stay (each is written atomically). A stop request
+// is honoured between files: what was written is complete, the rest is not started.
+std::vector<std::filesystem::path> write_review_exports(const std::filesystem::path& dir, const ReviewExportInput& input,
+                                                        std::stop_token stop = {});
 
 std::vector<std::filesystem::path> write_trial_export(const std::filesystem::path& dir, const TrialSeries& series,
                                                       const std::vector<std::string>& inputs, const std::string& method,
-                                                      const nlohmann::json& parameters, bool each_controller = false);
+                                                      const nlohmann::json& parameters, bool each_controller = false,
+                                                      std::stop_token stop = {});
 
 }  // namespace lmc

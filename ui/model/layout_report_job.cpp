@@ -8,8 +8,11 @@
 namespace lmc::ui {
 
 void LayoutReportJob::start(const Layout& layout, PoseSetPtr poses, const std::filesystem::path& dir) {
-  job_.start([layout, poses, dir](std::stop_token, JobChannel<Report>&) {
+  job_.start([layout, poses, dir](std::stop_token stop, JobChannel<Report>&) {
+    // Nothing is written once a stop is asked for: the report's files are written together or not.
+    if (stop.stop_requested()) return std::filesystem::path();
     const LayoutReport report = build_layout_report(layout, poses->set, poses->prepared);
+    if (stop.stop_requested()) return std::filesystem::path();
     return write_layout_report_files(dir, layout, poses->set, report, 10.0);
   });
 }

@@ -17,6 +17,9 @@ class LayoutReportJob {
   // Copies the layout; the pose set is shared (immutable).
   void start(const Layout& layout, PoseSetPtr poses, const std::filesystem::path& dir);
   bool running() const { return job_.running(); }
+  // Asks the worker to stop: a report not yet written is not written at all.
+  void cancel() { job_.cancel(); }
+  JobState state() const { return job_.state(); }
   void wait();  // tests
   // "wrote DIR/report.md (with top-view.svg and pose-redundancy.svg)", the error, or empty before a run.
   std::string message() const;

@@ -9,7 +9,7 @@
 
 namespace lmc::ui {
 
-PoseSetPtr load_pose_set_for(const PoseSetChoice& choice, std::uint64_t version) {
+PoseSetPtr load_pose_set_for(const PoseSetChoice& choice, std::uint64_t version, std::stop_token stop) {
   auto out = std::make_shared<LoadedPoseSet>();
   out->version = version;
   out->choice = choice;
@@ -21,6 +21,8 @@ PoseSetPtr load_pose_set_for(const PoseSetChoice& choice, std::uint64_t version)
     s.seed = choice.seed;
     out->set = generate_pose_set(HandModel(), s);
   }
+  // A newer request replaced this one: the frames are not prepared for nobody.
+  if (stop.stop_requested()) return nullptr;
   out->prepared = prepare_frames(out->set.frames);
   out->horizontal = out->set.indices_with(HandOrientation::kHorizontal);
   out->vertical = out->set.indices_with(HandOrientation::kVertical);
@@ -34,9 +36,9 @@ void PoseSetStore::request(const PoseSetChoice& choice) {
   error_.clear();
   const std::uint64_t version = next_version_++;
   job_.abandon_into(graveyard_);
-  job_.start([choice, version](std::stop_token, JobChannel<int>& ch) {
+  job_.start([choice, version](std::stop_token stop, JobChannel<int>& ch) {
     ch.set_stage(choice.source == PoseSetChoice::Source::kFile ? "Reading pose set" : "Generating pose set");
-    return load_pose_set_for(choice, version);
+    return load_pose_set_for(choice, version, stop);
   });
 }
 

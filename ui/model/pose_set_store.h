@@ -27,7 +27,7 @@ using PoseSetPtr = std::shared_ptr<const LoadedPoseSet>;
 
 // Builds a loaded pose set synchronously (what the worker runs; tests call it directly).
 // Throws lmc::Error for a bad file.
-PoseSetPtr load_pose_set_for(const PoseSetChoice& choice, std::uint64_t version);
+PoseSetPtr load_pose_set_for(const PoseSetChoice& choice, std::uint64_t version, std::stop_token stop = {});
 
 class PoseSetStore {
  public:

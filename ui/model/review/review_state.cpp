@@ -221,7 +221,7 @@ void ReviewState::export_agreement(const std::filesystem::path& dir) {
   }
   export_dir_ = dir;
   export_message_ = "exporting...";
-  export_job_.start([dir, in](std::stop_token, JobChannel<ExportReport>&) { return write_review_exports(dir, in); });
+  export_job_.start([dir, in](std::stop_token stop, JobChannel<ExportReport>&) { return write_review_exports(dir, in, stop); });
 }
 
 void ReviewState::export_trial(const std::filesystem::path& dir, bool each_controller) {
@@ -234,8 +234,8 @@ void ReviewState::export_trial(const std::filesystem::path& dir, bool each_contr
   const nlohmann::json parameters = process_options_json(trial_options);
   export_dir_ = dir;
   export_message_ = "exporting...";
-  export_job_.start([dir, view, method, parameters, each_controller](std::stop_token, JobChannel<ExportReport>&) {
-    return write_trial_export(dir, view->series, {view->result->lmc_source}, method, parameters, each_controller);
+  export_job_.start([dir, view, method, parameters, each_controller](std::stop_token stop, JobChannel<ExportReport>&) {
+    return write_trial_export(dir, view->series, {view->result->lmc_source}, method, parameters, each_controller, stop);
   });
 }
 

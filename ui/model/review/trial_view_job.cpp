@@ -4,11 +4,13 @@
 
 namespace lmc::ui {
 
-TrialView load_trial_view(const lmc::TrialJob& job, const SessionOptions& options) {
+TrialView load_trial_view(const lmc::TrialJob& job, const SessionOptions& options, std::stop_token stop) {
   TrialView view;
   view.trial = job.trial;
+  if (stop.stop_requested()) return view;
   TrialOutcome out;
   auto result = std::make_shared<const TrialResult>(process_job_in_full(job, options, &out));
+  if (stop.stop_requested()) return view;
   view.series = trial_series(*result);
   view.layout = resolve_layout(job, options.layout, nullptr);
   view.warnings = out.warnings;
@@ -20,7 +22,7 @@ void TrialViewJob::start(const lmc::TrialJob& job, const SessionOptions& options
   graveyard_.reap();
   job_.abandon_into(graveyard_);
   trial_ = job.trial;
-  job_.start([job, options](std::stop_token, JobChannel<Report>&) { return load_trial_view(job, options); });
+  job_.start([job, options](std::stop_token stop, JobChannel<Report>&) { return load_trial_view(job, options, stop); });
 }
 
 }  // namespace lmc::ui

@@ -21,7 +21,8 @@ struct TrialView {
 };
 
 // The work, for the job and for tests: throws lmc::Error with the trial's message when it fails.
-TrialView load_trial_view(const lmc::TrialJob& job, const SessionOptions& options);
+// A stop request before or after processing returns an empty view (the job is then cancelled).
+TrialView load_trial_view(const lmc::TrialJob& job, const SessionOptions& options, std::stop_token stop = {});
 
 class TrialViewJob {
  public:
