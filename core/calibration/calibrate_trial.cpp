@@ -9,7 +9,7 @@
 #include "core/io/lmc_recording.h"
 #include "core/io/recorder_sidecar.h"
 #include "core/io/vicon_mapping.h"
-#include "core/processing/session.h"
+#include "core/processing/batch.h"
 
 namespace lmc::calibration {
 namespace {
@@ -37,7 +37,7 @@ TrialCalibration calibrate_trial(const TrialCalibrationRequest& request, const L
     throw Error(ErrorLocation(request.vicon->string()), "no such Vicon file (.trc or .c3d)");
   }
   TrialCalibration out;
-  const TrialJob job = discover_trials(trial, request.vicon).front();
+  const TrialSources job = discover_trials(trial, request.vicon).front();
   out.trial = job.trial;
   if (!request.vicon && job.vicon) {
     out.notes.push_back(job.vicon->string() + " lies next to the trial; calibrating without it (give it as the Vicon file to use it)");

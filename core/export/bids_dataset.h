@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "core/export/trial_points.h"
-#include "core/processing/session.h"
+#include "core/processing/batch.h"
 
 namespace lmc {
 
@@ -22,7 +22,7 @@ struct BidsExportRequest {
   bool anonymise = false;
   std::filesystem::path anonymise_key;
   bool force = false;  // write into an existing non-empty dataset folder, replacing its files
-  SessionOptions session;
+  BatchOptions session;
   // One line per trial written or left out, for a command's progress lines.
   std::function<void(const std::string& line)> on_trial;
   // Before each trial and once at the end: trials done, trials planned.

@@ -169,16 +169,16 @@ TrialExportReport export_trials(const TrialExportRequest& request) {
     if (request.on_trial) request.on_trial(line);
   };
   struct Planned {
-    TrialJob job;
+    TrialSources job;
     fs::path target;
   };
   std::vector<Planned> planned;
   std::set<std::string> names;
   for (const auto& input : request.inputs) {
-    std::vector<TrialJob> jobs;
+    std::vector<TrialSources> jobs;
     std::vector<std::string> notes;
     try {
-      jobs = session::trial_jobs_for_input(input, std::nullopt, &notes);
+      jobs = session::trial_sources_for_input(input, std::nullopt, &notes);
     } catch (const std::exception& e) {
       report.notes.push_back("left out " + input.string() + ": " + e.what());
       ++report.left_out;
@@ -225,8 +225,8 @@ TrialExportReport export_trials(const TrialExportRequest& request) {
     }
     ++done;
     try {
-      TrialOutcome outcome;
-      const TrialResult r = process_job_in_full(p.job, request.session, &outcome);
+      ProcessedTrial outcome;
+      const TrialResult r = process_sources_in_full(p.job, request.session, &outcome);
       std::optional<MarkerSeries> markers;
       if (p.job.vicon && r.has_vicon) markers = load_vicon_markers(*p.job.vicon);
       PointTable table = trial_point_table(r, markers ? &*markers : nullptr, request.axes);

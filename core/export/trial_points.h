@@ -23,7 +23,7 @@
 #include "core/io/c3d.h"
 #include "core/io/trc.h"
 #include "core/io/vicon_mapping.h"
-#include "core/processing/session.h"
+#include "core/processing/batch.h"
 #include "core/processing/trial_pipeline.h"
 
 namespace lmc {
@@ -69,7 +69,7 @@ struct TrialExportRequest {
   ExportFormat format = ExportFormat::kC3d;
   ExportAxes axes = ExportAxes::kWorld;
   bool force = false;  // replace files that exist
-  SessionOptions session;
+  BatchOptions session;
   // Called once per trial as it is written or left out, for a command's progress lines.
   std::function<void(const std::string& line)> on_trial;
   // Called before each trial and once at the end: trials done, trials planned (a progress bar).

@@ -1,6 +1,6 @@
 #include "core/figures/axis_ticks.h"
 
-#include "core/figures/c_number.h"
+#include "core/figures/locale_free_number.h"
 
 #include <algorithm>
 #include <cmath>

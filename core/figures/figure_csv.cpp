@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "core/figures/c_number.h"
+#include "core/figures/locale_free_number.h"
 
 namespace lmc::figures {
 namespace {

@@ -5,7 +5,7 @@
 #include <string_view>
 #include <vector>
 
-#include "core/figures/c_number.h"
+#include "core/figures/locale_free_number.h"
 #include "core/figures/colour_scale.h"
 #include "core/figures/svg_marks.h"
 #include "core/figures/svg_text.h"

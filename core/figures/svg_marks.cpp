@@ -5,7 +5,7 @@
 #include <cstddef>
 #include <cstdio>
 
-#include "core/figures/c_number.h"
+#include "core/figures/locale_free_number.h"
 
 namespace lmc::figures::svg {
 namespace {

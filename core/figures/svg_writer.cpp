@@ -6,7 +6,7 @@
 #include <vector>
 
 #include "core/figures/axis_ticks.h"
-#include "core/figures/c_number.h"
+#include "core/figures/locale_free_number.h"
 #include "core/figures/svg_marks.h"
 #include "core/figures/svg_text.h"
 #include "core/figures/xml_text.h"

@@ -12,7 +12,7 @@
 #include "core/common/error.h"
 #include "core/common/nan.h"
 #include "core/io/atomic_write.h"
-#include "core/io/text_fields.h"
+#include "core/io/delimited_text.h"
 
 namespace lmc {
 namespace {

@@ -11,7 +11,7 @@
 
 #include "core/common/error.h"
 #include "core/io/atomic_write.h"
-#include "core/io/text_fields.h"
+#include "core/io/delimited_text.h"
 
 namespace lmc {
 namespace {

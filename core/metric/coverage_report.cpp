@@ -12,12 +12,12 @@ std::string device_label(const std::vector<std::string>& slots, int d) {
 }
 
 // One formatter per literal format (format strings are never variables, -Wformat=2).
-std::string g6(double v) {
+std::string six_significant(double v) {
   char buf[64];
   std::snprintf(buf, sizeof buf, "%.6g", v);
   return buf;
 }
-std::string count8(double v) {
+std::string count_cell(double v) {
   char buf[64];
   std::snprintf(buf, sizeof buf, "%8.0f", v);
   return buf;
@@ -27,7 +27,7 @@ std::string percent_cell(double v) {
   std::snprintf(buf, sizeof buf, "%6.2f%%", v);
   return buf;
 }
-std::string frac3(double v) {
+std::string fraction_cell(double v) {
   char buf[64];
   std::snprintf(buf, sizeof buf, "  %6.3f", v);
   return buf;
@@ -38,12 +38,12 @@ std::string frac3(double v) {
 std::string format_coverage(const Coverage& cov, const std::vector<std::string>& slots) {
   std::string out;
   out += "  frames " + std::to_string(cov.frames) + ", devices " + std::to_string(cov.devices) + "\n";
-  out += "  M = " + g6(cov.metric) + "\n";
+  out += "  M = " + six_significant(cov.metric) + "\n";
   out += "  c_i = frames whose worst-covered finger is seen by i devices:\n";
   for (size_t i = 0; i < cov.c.size(); ++i) {
     const double frac = cov.frames > 0 ? static_cast<double>(cov.c[i]) / static_cast<double>(cov.frames) : 0.0;
     const int bar = static_cast<int>(frac * 40.0 + 0.5);
-    out += "    c_" + std::to_string(i) + " = " + count8(static_cast<double>(cov.c[i])) + "  " +
+    out += "    c_" + std::to_string(i) + " = " + count_cell(static_cast<double>(cov.c[i])) + "  " +
            percent_cell(100.0 * frac) + "  " + std::string(static_cast<size_t>(bar), '#') + "\n";
   }
   out += "  coverage (fraction of frames in which the device sees the finger):\n";
@@ -52,11 +52,11 @@ std::string format_coverage(const Coverage& cov, const std::vector<std::string>&
     std::string name = device_label(slots, d);
     name.resize(std::max<size_t>(name.size(), 12), ' ');
     out += "    " + name;
-    for (int k = 0; k < kNumDigits; ++k) out += frac3(cov.device_finger_fraction(d, k));
+    for (int k = 0; k < kNumDigits; ++k) out += fraction_cell(cov.device_finger_fraction(d, k));
     out += "\n";
   }
   out += "    seen by nobody";
-  for (int k = 0; k < kNumDigits; ++k) out += frac3(cov.finger_unseen_fraction(k));
+  for (int k = 0; k < kNumDigits; ++k) out += fraction_cell(cov.finger_unseen_fraction(k));
   out += "\n";
   return out;
 }

@@ -49,13 +49,13 @@ std::string fnv1a_hex(const std::string& text) {
   return buf;
 }
 
-nlohmann::json outcome_json(const TrialOutcome& o) {
+nlohmann::json outcome_json(const ProcessedTrial& o) {
   return {{"trial", o.trial}, {"ok", o.ok},           {"error", o.error},          {"warnings", o.warnings},
           {"summary", o.summary}, {"layout_used", o.layout_used}, {"has_vicon", o.has_vicon}};
 }
 
-TrialOutcome outcome_from_json(const nlohmann::json& j) {
-  TrialOutcome o;
+ProcessedTrial outcome_from_json(const nlohmann::json& j) {
+  ProcessedTrial o;
   o.trial = j.at("trial").get<std::string>();
   o.ok = j.at("ok").get<bool>();
   o.error = j.at("error").get<std::string>();
@@ -68,7 +68,7 @@ TrialOutcome outcome_from_json(const nlohmann::json& j) {
 
 }  // namespace
 
-nlohmann::json processing_cache_key(const TrialJob& job, const SessionOptions& options) {
+nlohmann::json processing_cache_key(const TrialSources& job, const BatchOptions& options) {
   nlohmann::json k;
   k["software_version"] = LMC_VERSION;
   k["trial"] = job.trial;
@@ -95,7 +95,7 @@ ProcessingCache ProcessingCache::in_user_cache() {
 
 fs::path ProcessingCache::entry_path(const nlohmann::json& key) const { return dir_ / (fnv1a_hex(key.dump()) + ".json"); }
 
-std::optional<TrialOutcome> ProcessingCache::find(const nlohmann::json& key) const {
+std::optional<ProcessedTrial> ProcessingCache::find(const nlohmann::json& key) const {
   if (dir_.empty()) return std::nullopt;
   std::ifstream in(entry_path(key), std::ios::binary);
   if (!in) return std::nullopt;
@@ -114,7 +114,7 @@ std::optional<TrialOutcome> ProcessingCache::find(const nlohmann::json& key) con
   }
 }
 
-std::optional<std::string> ProcessingCache::store(const nlohmann::json& key, const TrialOutcome& outcome) const {
+std::optional<std::string> ProcessingCache::store(const nlohmann::json& key, const ProcessedTrial& outcome) const {
   if (dir_.empty()) return std::nullopt;
   try {
     fs::create_directories(dir_);
@@ -127,7 +127,7 @@ std::optional<std::string> ProcessingCache::store(const nlohmann::json& key, con
   return std::nullopt;
 }
 
-CachedBatch process_session_cached(const std::vector<TrialJob>& jobs, const SessionOptions& options,
+CachedBatch process_session_cached(const std::vector<TrialSources>& jobs, const BatchOptions& options,
                                    const ProcessingCache& cache) {
   CachedBatch batch;
   batch.outcomes.resize(jobs.size());
@@ -150,13 +150,13 @@ CachedBatch process_session_cached(const std::vector<TrialJob>& jobs, const Sess
   const int cached = static_cast<int>(jobs.size() - todo.size());
   const int total = static_cast<int>(jobs.size());
   if (options.on_progress) options.on_progress(cached, total);
-  std::vector<TrialJob> fresh_jobs;
+  std::vector<TrialSources> fresh_jobs;
   for (size_t k : todo) fresh_jobs.push_back(jobs[k]);
-  SessionOptions fresh_options = options;
+  BatchOptions fresh_options = options;
   if (options.on_progress) {
     fresh_options.on_progress = [&options, cached, total](int done, int) { options.on_progress(cached + done, total); };
   }
-  std::vector<TrialOutcome> fresh = process_session(fresh_jobs, fresh_options);
+  std::vector<ProcessedTrial> fresh = process_batch(fresh_jobs, fresh_options);
   for (size_t i = 0; i < todo.size(); ++i) {
     const size_t k = todo[i];
     if (use_cache && !fresh[i].cancelled) {

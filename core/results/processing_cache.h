@@ -14,12 +14,12 @@
 
 #include <nlohmann/json.hpp>
 
-#include "core/processing/session.h"
+#include "core/processing/batch.h"
 
 namespace lmc {
 
 // The key of one trial's processing: JSON with every input that decides the outcome.
-nlohmann::json processing_cache_key(const TrialJob& job, const SessionOptions& options);
+nlohmann::json processing_cache_key(const TrialSources& job, const BatchOptions& options);
 
 class ProcessingCache {
  public:
@@ -28,10 +28,10 @@ class ProcessingCache {
   // user_cache_dir()/processed, or off when there is no cache folder.
   static ProcessingCache in_user_cache();
 
-  std::optional<TrialOutcome> find(const nlohmann::json& key) const;
+  std::optional<ProcessedTrial> find(const nlohmann::json& key) const;
   // Writes atomically; a failure to write (read-only or full disk) is returned as a message, never
   // thrown: the result is still shown, only not kept.
-  std::optional<std::string> store(const nlohmann::json& key, const TrialOutcome& outcome) const;
+  std::optional<std::string> store(const nlohmann::json& key, const ProcessedTrial& outcome) const;
   const std::filesystem::path& dir() const { return dir_; }
 
  private:
@@ -40,15 +40,15 @@ class ProcessingCache {
 };
 
 struct CachedBatch {
-  std::vector<TrialOutcome> outcomes;  // in job order
+  std::vector<ProcessedTrial> outcomes;  // in job order
   std::vector<bool> from_cache;        // per outcome
   std::vector<std::string> cache_warnings;
 };
 
-// process_session with the cache in front: cached outcomes are returned as they are, the rest are
+// process_batch with the cache in front: cached outcomes are returned as they are, the rest are
 // processed (options.on_progress counts all trials, cached ones first) and stored. Cancelled trials
 // are never stored. options.on_result is called only for the trials processed now.
-CachedBatch process_session_cached(const std::vector<TrialJob>& jobs, const SessionOptions& options,
+CachedBatch process_session_cached(const std::vector<TrialSources>& jobs, const BatchOptions& options,
                                    const ProcessingCache& cache);
 
 }  // namespace lmc

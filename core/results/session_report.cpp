@@ -8,7 +8,7 @@
 #include "core/common/number_format.h"
 #include "core/hand/hand_track.h"
 #include "core/processing/measures.h"
-#include "core/results/summary_fields.h"
+#include "core/results/summary_reading.h"
 #include "core/results/trial_outputs.h"
 
 namespace lmc {

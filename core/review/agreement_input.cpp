@@ -4,7 +4,7 @@
 
 #include "core/hand/hand_frame.h"
 #include "core/processing/measures.h"
-#include "core/results/summary_fields.h"
+#include "core/results/summary_reading.h"
 
 namespace lmc {
 

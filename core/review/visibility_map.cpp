@@ -10,7 +10,7 @@
 #include "core/common/nan.h"
 #include "core/common/number_format.h"
 #include "core/results/session_report.h"
-#include "core/results/summary_fields.h"
+#include "core/results/summary_reading.h"
 
 namespace lmc {
 

@@ -8,10 +8,10 @@ namespace fs = std::filesystem;
 
 namespace lmc::session {
 
-std::vector<TrialJob> accepted_trial_jobs(const fs::path& dir, const std::optional<fs::path>& vicon_dir,
+std::vector<TrialSources> accepted_trial_jobs(const fs::path& dir, const std::optional<fs::path>& vicon_dir,
                                           std::vector<std::string>* notes) {
   const SessionState state = read_session_state(dir);
-  std::vector<TrialJob> jobs;
+  std::vector<TrialSources> jobs;
   for (const auto& t : state.trials) {
     const std::string& name = t.plan.name;
     if (t.status != TrialStatus::kAccepted) {
@@ -19,7 +19,7 @@ std::vector<TrialJob> accepted_trial_jobs(const fs::path& dir, const std::option
       continue;
     }
     const TrialFiles files = trial_files(dir, name);
-    TrialJob job;
+    TrialSources job;
     job.trial = name;
     job.lmc = files.recording;
     if (!fs::exists(job.lmc)) {
@@ -43,7 +43,7 @@ std::vector<TrialJob> accepted_trial_jobs(const fs::path& dir, const std::option
   return jobs;
 }
 
-std::vector<TrialJob> trial_jobs_for_input(const fs::path& input, const std::optional<fs::path>& vicon,
+std::vector<TrialSources> trial_sources_for_input(const fs::path& input, const std::optional<fs::path>& vicon,
                                            std::vector<std::string>* notes) {
   // A subject session folder is processed from its journal: only each trial's accepted attempt,
   // never the ones kept under superseded/ or trials still pending.

@@ -5,7 +5,7 @@
 
 #include "core/common/error.h"
 #include "core/io/json_checked.h"
-#include "core/io/text_fields.h"
+#include "core/io/delimited_text.h"
 
 namespace lmc::devices {
 namespace {

@@ -12,7 +12,7 @@
 #include "core/hand/hand_frame.h"
 #include "core/io/c3d.h"
 #include "core/io/trc.h"
-#include "core/processing/session.h"
+#include "core/processing/batch.h"
 #include "tests/support/cli_runner.h"
 #include "tests/support/reference_data.h"
 
@@ -51,8 +51,8 @@ std::vector<Vec3> track_series(const HandTrack& t, int point, int frames) {
 
 // Every exported series of `labels`/`positions` against the trial processed here in the test.
 void expect_processed_trial(const std::vector<std::string>& labels, const std::vector<std::vector<Eigen::Vector3d>>& positions,
-                            const TrialJob& job, const std::string& what) {
-  const TrialResult r = process_job_in_full(job, SessionOptions{});
+                            const TrialSources& job, const std::string& what) {
+  const TrialResult r = process_sources_in_full(job, BatchOptions{});
   const int frames = r.world.frame_count;
   ASSERT_EQ(static_cast<int>(positions.size()), frames) << what;
   auto column = [&](const std::string& label) {

@@ -9,7 +9,7 @@
 #include "core/io/layout_json.h"
 #include "core/io/lmc_recording.h"
 #include "core/io/vicon_mapping.h"
-#include "core/processing/session.h"  // load_vicon_markers: TRC or C3D by extension
+#include "core/processing/batch.h"  // load_vicon_markers: TRC or C3D by extension
 #include "tests/support/reference_data.h"
 
 namespace lmc::test {

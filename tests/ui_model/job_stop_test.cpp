@@ -36,10 +36,10 @@ bool wait_until(const std::function<bool()>& done) {
 }
 
 TEST(JobStop, ATrialViewAskedToStopReadsNothing) {
-  lmc::TrialJob job;
+  lmc::TrialSources job;
   job.trial = "Naiv_Static101";
   job.lmc = test::scratch_dir("job_stop_view") / "no-such-recording.txt";  // reading it would throw
-  const TrialView view = load_trial_view(job, SessionOptions{}, stopped());
+  const TrialView view = load_trial_view(job, BatchOptions{}, stopped());
   EXPECT_EQ(view.trial, "Naiv_Static101");
   EXPECT_EQ(view.result, nullptr);
   EXPECT_TRUE(view.series.trial.empty());

@@ -16,7 +16,7 @@
 #include "core/common/utc_time.h"
 #include "core/io/atomic_write.h"
 #include "core/io/layout_json.h"
-#include "core/processing/session.h"
+#include "core/processing/batch.h"
 #include "core/results/trial_outputs.h"
 #include "devices/sim/calibration_validation.h"
 

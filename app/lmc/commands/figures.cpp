@@ -35,13 +35,13 @@ std::string subject_of(const fs::path& folder) {
 
 void run_figures(const FiguresArgs& a) {
   const auto t0 = std::chrono::steady_clock::now();
-  lmc::SessionOptions options;
+  lmc::BatchOptions options;
   options.process.method = lmc::fusion_method_from_name(a.method);
-  std::vector<lmc::TrialJob> jobs;
+  std::vector<lmc::TrialSources> jobs;
   std::vector<std::string> subjects;
   std::vector<std::string> notes;
   for (const auto& input : a.inputs) {
-    for (auto& j : lmc::session::trial_jobs_for_input(input, std::nullopt, &notes)) {
+    for (auto& j : lmc::session::trial_sources_for_input(input, std::nullopt, &notes)) {
       jobs.push_back(std::move(j));
       subjects.push_back(subject_of(fs::path(input).lexically_normal()));
     }
@@ -58,7 +58,7 @@ void run_figures(const FiguresArgs& a) {
   exports.agreement.motion = a.motion;
   int failed = 0, cached = 0;
   for (size_t k = 0; k < jobs.size(); ++k) {
-    const lmc::TrialOutcome& o = batch.outcomes[k];
+    const lmc::ProcessedTrial& o = batch.outcomes[k];
     cached += batch.from_cache[k] ? 1 : 0;
     if (!o.ok) {
       std::cerr << jobs[k].trial << ": " << o.error << "\n";
@@ -76,7 +76,7 @@ void run_figures(const FiguresArgs& a) {
       if (jobs[k].trial != name) continue;
       found = true;
       // A trial's series are not cached (only its summary): it is processed again here.
-      lmc::TrialSeries series = lmc::trial_series(lmc::process_job_in_full(jobs[k], options));
+      lmc::TrialSeries series = lmc::trial_series(lmc::process_sources_in_full(jobs[k], options));
       series.trial = subjects[k] + "-" + series.trial;
       for (auto& p : lmc::write_trial_export(a.out, series, {jobs[k].lmc.string()}, a.method, exports.parameters,
                                              a.each_controller)) {

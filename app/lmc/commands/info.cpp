@@ -56,7 +56,7 @@
 #include "core/io/layout_json.h"
 #include "core/io/lmc_recording.h"
 #include "core/io/recorder_sidecar.h"
-#include "core/io/text_fields.h"
+#include "core/io/delimited_text.h"
 #include "core/io/trc.h"
 #include "core/processing/resample.h"
 #include "core/stats/percentile.h"

@@ -13,7 +13,7 @@
 #include "core/common/error.h"
 #include "core/common/number_format.h"
 #include "core/processing/length_correction_json.h"
-#include "core/processing/session.h"
+#include "core/processing/batch.h"
 #include "core/session/session_trials.h"
 
 namespace {
@@ -23,14 +23,14 @@ struct LengthFitArgs {
   double hand_length_mm = 0, hand_breadth_mm = 0;
 };
 
-lmc::TrialJob fit_trial_job(const LengthFitArgs& a) {
+lmc::TrialSources fit_trial_job(const LengthFitArgs& a) {
   const bool single_file = !std::filesystem::is_directory(a.input);
   const std::optional<std::filesystem::path> vicon =
       a.vicon.empty() ? std::nullopt : std::optional<std::filesystem::path>(a.vicon);
   if (vicon && !single_file && !std::filesystem::is_directory(*vicon)) {
     throw lmc::Error("--vicon must be a folder when the input is a folder (or give the trial's LMC file)");
   }
-  const auto jobs = lmc::session::trial_jobs_for_input(a.input, vicon);
+  const auto jobs = lmc::session::trial_sources_for_input(a.input, vicon);
   if (!a.trial.empty()) {
     for (const auto& j : jobs)
       if (j.trial == a.trial) return j;
@@ -52,17 +52,17 @@ void run_length_fit(const LengthFitArgs& a) {
   if (from_hand && !a.vicon.empty()) {
     throw lmc::Error("fit either to Vicon (--vicon) or to the hand's dimensions (--hand-length-mm/--hand-breadth-mm), not both");
   }
-  const lmc::TrialJob job = fit_trial_job(a);
+  const lmc::TrialSources job = fit_trial_job(a);
   if (!from_hand && !job.vicon) {
     throw lmc::Error(lmc::ErrorLocation(job.lmc.string()), "no Vicon file for trial " + job.trial +
                                                                " (" + job.trial + ".trc or .c3d): give --vicon, or fit to "
                                                                "--hand-length-mm and --hand-breadth-mm");
   }
 
-  lmc::SessionOptions so;
+  lmc::BatchOptions so;
   so.process.method = lmc::FusionMethod::kDefault;  // the factors are fitted on what they will correct
   if (!a.layout.empty()) so.layout = a.layout;
-  const lmc::TrialResult r = lmc::process_job_in_full(job, so);
+  const lmc::TrialResult r = lmc::process_sources_in_full(job, so);
 
   lmc::LengthCorrection c;
   if (from_hand) {

@@ -14,7 +14,7 @@
 #include "core/io/atomic_write.h"
 #include "core/processing/length_correction_json.h"
 #include "core/processing/method_comparison.h"
-#include "core/processing/session.h"
+#include "core/processing/batch.h"
 #include "core/results/trial_outputs.h"
 #include "core/session/session_trials.h"
 
@@ -36,7 +36,7 @@ struct ProcessArgs {
 
 void run_process(const ProcessArgs& a) {
   const auto t0 = std::chrono::steady_clock::now();
-  lmc::SessionOptions options;
+  lmc::BatchOptions options;
   options.process.method = lmc::fusion_method_from_name(a.method);
   if (!a.length_correction.empty()) {
     // Refused here, before any trial runs, rather than once per trial by process_trial.
@@ -62,10 +62,10 @@ void run_process(const ProcessArgs& a) {
   std::vector<std::string> notes;
   const std::optional<std::filesystem::path> vicon =
       a.vicon.empty() ? std::nullopt : std::optional<std::filesystem::path>(a.vicon);
-  const auto jobs = lmc::session::trial_jobs_for_input(a.input, vicon, &notes);
+  const auto jobs = lmc::session::trial_sources_for_input(a.input, vicon, &notes);
   for (const auto& n : notes) std::cout << "note: " << n << "\n";
 
-  const auto outcomes = lmc::process_session(jobs, options);
+  const auto outcomes = lmc::process_batch(jobs, options);
 
   int failed = 0;
   lmc::MethodErrors ref_errors, def_errors;

@@ -14,7 +14,7 @@
 #include "core/common/error.h"
 #include "core/io/recorder_sidecar.h"
 #include "core/processing/length_correction_json.h"
-#include "core/processing/session.h"
+#include "core/processing/batch.h"
 #include "core/processing/validity.h"
 
 namespace {
@@ -55,13 +55,13 @@ void setup_validate(CLI::App& app) {
         // The study's method, ours, and ours with the subject's length correction when one is given.
         const int passes = correction ? 3 : 2;
         for (int pass = 0; pass < passes; ++pass) {
-          lmc::SessionOptions so;
+          lmc::BatchOptions so;
           so.process.method = pass == 0 ? lmc::FusionMethod::kReference : lmc::FusionMethod::kDefault;
           if (pass == 2) so.process.length_correction = correction;
           if (!opt->layout.empty()) so.layout = opt->layout;
           std::optional<lmc::TrialResult> kept;
           so.on_result = [&kept](const lmc::TrialResult& r) { kept = r; };
-          const lmc::TrialOutcome out = lmc::process_session({job}, so).front();
+          const lmc::ProcessedTrial out = lmc::process_batch({job}, so).front();
           if (!out.error.empty()) throw lmc::Error(job.trial + ": " + out.error);
           if (!kept) throw lmc::Error(job.trial + ": no result");
           layout_used = out.layout_used;

@@ -7,7 +7,7 @@
 #include "core/calibration/calibrate.h"
 #include "core/calibration/calibrated_layout.h"
 #include "core/io/layout_json.h"
-#include "core/processing/session.h"
+#include "core/processing/batch.h"
 #include "tests/support/reference_data.h"
 #include "tests/support/synthetic_calibration.h"
 

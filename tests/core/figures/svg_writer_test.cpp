@@ -8,7 +8,7 @@
 #include <locale>
 #include <string>
 
-#include "core/figures/c_number.h"
+#include "core/figures/locale_free_number.h"
 #include "tests/core/figures/svg_test_support.h"
 
 namespace lmc::figures::svg_writer_test {

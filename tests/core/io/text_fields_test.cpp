@@ -1,4 +1,4 @@
-#include "core/io/text_fields.h"
+#include "core/io/delimited_text.h"
 
 #include <gtest/gtest.h>
 

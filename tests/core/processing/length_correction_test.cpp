@@ -18,7 +18,7 @@
 #include "core/io/vicon_mapping.h"
 #include "core/processing/measures.h"
 #include "core/processing/process_options_json.h"
-#include "core/processing/session.h"
+#include "core/processing/batch.h"
 #include "core/processing/trial_pipeline.h"
 #include "core/processing/trial_summary.h"
 #include "tests/support/reference_data.h"

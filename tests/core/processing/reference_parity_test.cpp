@@ -10,7 +10,7 @@
 #include "core/io/lmc_recording.h"
 #include "core/io/trc.h"
 #include "core/io/vicon_mapping.h"
-#include "core/processing/session.h"
+#include "core/processing/batch.h"
 #include "core/processing/trial_pipeline.h"
 #include "core/results/trial_outputs.h"
 #include "tests/support/reference_data.h"

@@ -9,7 +9,7 @@
 
 #include "core/io/layout_json.h"
 #include "core/io/vicon_mapping.h"
-#include "core/processing/session.h"
+#include "core/processing/batch.h"
 #include "core/review/trial_series.h"
 #include "tests/support/reference_data.h"
 #include "tests/support/shared_real_trial.h"

@@ -8,7 +8,7 @@
 // layout changes, poll() restarts a running backend with it (serial bindings are kept by slot
 // name) and says so in a message; while a trial records, the restart waits until it ends.
 //
-// Trials go through the one TrialEngine on a worker thread (TrialJob); names are never
+// Trials go through the one TrialEngine on a worker thread (RigTrialJob); names are never
 // overwritten (next_free_trial_name picks trial-2, trial-3, …). UI thread only, except what the
 // trial's worker does to the hub (the hub is thread-safe).
 #include <cstdint>
@@ -22,7 +22,7 @@
 #include "devices/fusion/live_fusion.h"
 #include "devices/sim/sim_config.h"
 #include "ui/model/current_layout.h"
-#include "ui/model/devices/trial_job.h"
+#include "ui/model/devices/rig_trial_job.h"
 
 namespace lmc::ui {
 
@@ -79,7 +79,7 @@ class LiveRig {
   // True from start_trial until poll() has reported the ended trial (its summary and messages):
   // a caller that sees false can always take the summary, even if the job ended mid-poll.
   bool recording() const { return trial_.running() || (job_finished(trial_.state()) && !trial_reported_); }
-  const TrialJob& trial() const { return trial_; }
+  const RigTrialJob& trial() const { return trial_; }
   // The name the current (or last) trial got.
   const std::string& trial_name() const { return trial_.trial(); }
   // One line on how the last trial ended ("" while none ended since the last call).
@@ -104,7 +104,7 @@ class LiveRig {
   bool trial_reported_ = true;
   bool lent_ = false;
   std::string trial_summary_;
-  TrialJob trial_;  // after hub_: destroyed (joined) before the hub it records from
+  RigTrialJob trial_;  // after hub_: destroyed (joined) before the hub it records from
 };
 
 }  // namespace lmc::ui

@@ -11,7 +11,7 @@ namespace lmc::ui {
 namespace {
 
 // The correction that applies to `folder`'s trials, or nullptr (none chosen, or the reference fusion).
-const LengthCorrection* folder_correction(const SessionOptions& options, const FolderLengthCorrections& corrections,
+const LengthCorrection* folder_correction(const BatchOptions& options, const FolderLengthCorrections& corrections,
                                           const std::filesystem::path& folder) {
   if (options.process.method != FusionMethod::kDefault) return nullptr;
   const auto it = corrections.find(folder);
@@ -20,9 +20,9 @@ const LengthCorrection* folder_correction(const SessionOptions& options, const F
 
 }  // namespace
 
-SessionOptions folder_options(const SessionOptions& options, const FolderLengthCorrections& corrections,
+BatchOptions folder_options(const BatchOptions& options, const FolderLengthCorrections& corrections,
                               const std::filesystem::path& folder) {
-  SessionOptions out = options;
+  BatchOptions out = options;
   if (const LengthCorrection* c = folder_correction(options, corrections, folder)) out.process.length_correction = *c;
   return out;
 }
@@ -30,11 +30,11 @@ SessionOptions folder_options(const SessionOptions& options, const FolderLengthC
 ReviewBatch run_review_batch(const ReviewBatchInput& input, std::stop_token stop,
                              const std::function<void(int done, int total)>& progress) {
   ReviewBatch batch;
-  std::vector<lmc::TrialJob> jobs;
+  std::vector<lmc::TrialSources> jobs;
   std::vector<std::filesystem::path> folder_of;
   for (const auto& folder : input.folders) {
     try {
-      auto found = session::trial_jobs_for_input(folder, std::nullopt, &batch.notes);
+      auto found = session::trial_sources_for_input(folder, std::nullopt, &batch.notes);
       for (auto& j : found) {
         jobs.push_back(std::move(j));
         folder_of.push_back(folder);
@@ -60,12 +60,12 @@ ReviewBatch run_review_batch(const ReviewBatchInput& input, std::stop_token stop
     if (g == group_key.end()) group_key.push_back(c);
   }
   const ProcessingCache cache(input.cache_dir);
-  std::vector<TrialOutcome> outcomes(jobs.size());
+  std::vector<ProcessedTrial> outcomes(jobs.size());
   std::vector<bool> from_cache(jobs.size(), false);
   const int total = static_cast<int>(jobs.size());
   int done_before = 0;
   for (size_t g = 0; g < group_key.size(); ++g) {
-    std::vector<lmc::TrialJob> group_jobs;
+    std::vector<lmc::TrialSources> group_jobs;
     std::vector<size_t> index;
     for (size_t k = 0; k < jobs.size(); ++k) {
       if (group_of[k] != static_cast<int>(g)) continue;
@@ -73,7 +73,7 @@ ReviewBatch run_review_batch(const ReviewBatchInput& input, std::stop_token stop
       index.push_back(k);
     }
     if (group_jobs.empty()) continue;
-    SessionOptions options = folder_options(input.options, input.corrections, folder_of[index.front()]);
+    BatchOptions options = folder_options(input.options, input.corrections, folder_of[index.front()]);
     options.stop = stop;
     if (progress) options.on_progress = [&progress, done_before, total](int done, int) { progress(done_before + done, total); };
     CachedBatch done = process_session_cached(group_jobs, options, cache);

@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-#include "core/processing/session.h"
+#include "core/processing/batch.h"
 #include "core/review/trial_row.h"
 #include "ui/model/jobs/background_job.h"
 
@@ -17,8 +17,8 @@ namespace lmc::ui {
 
 struct ReviewTrial {
   std::filesystem::path folder;  // the opened folder it came from
-  lmc::TrialJob job;  // core's (processing), not the Devices tab's ui::TrialJob
-  TrialOutcome outcome;
+  lmc::TrialSources job;  // core's (processing), not the Devices tab's ui::TrialSources
+  ProcessedTrial outcome;
   bool from_cache = false;
   TrialRow row;
 };
@@ -39,7 +39,7 @@ using FolderLengthCorrections = std::map<std::filesystem::path, FolderLengthCorr
 
 struct ReviewBatchInput {
   std::vector<std::filesystem::path> folders;
-  SessionOptions options;                 // stop/on_progress are set by the job
+  BatchOptions options;                 // stop/on_progress are set by the job
   std::filesystem::path cache_dir;        // empty: no cache
   // A finger-length correction per folder (a subject's), applied to that folder's trials after the
   // default fusion; with the reference fusion none is applied (it stays the study's algorithm).
@@ -48,7 +48,7 @@ struct ReviewBatchInput {
 
 // The options one folder's trials are processed with: `options` plus that folder's correction
 // when there is one and the fusion is the default.
-SessionOptions folder_options(const SessionOptions& options, const FolderLengthCorrections& corrections,
+BatchOptions folder_options(const BatchOptions& options, const FolderLengthCorrections& corrections,
                               const std::filesystem::path& folder);
 
 // The work itself, for the job and for tests (runs on the calling thread).

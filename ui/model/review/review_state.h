@@ -116,7 +116,7 @@ class ReviewState {
  private:
   int preferred_index() const;  // index of the preferred trial in trials(), or -1
   std::vector<std::filesystem::path> folders_;
-  SessionOptions options_;
+  BatchOptions options_;
   FolderLengthCorrections corrections_;
   std::filesystem::path cache_dir_;
   ReviewBatchJob batch_job_;

@@ -4,12 +4,12 @@
 
 namespace lmc::ui {
 
-TrialView load_trial_view(const lmc::TrialJob& job, const SessionOptions& options, std::stop_token stop) {
+TrialView load_trial_view(const lmc::TrialSources& job, const BatchOptions& options, std::stop_token stop) {
   TrialView view;
   view.trial = job.trial;
   if (stop.stop_requested()) return view;
-  TrialOutcome out;
-  auto result = std::make_shared<const TrialResult>(process_job_in_full(job, options, &out));
+  ProcessedTrial out;
+  auto result = std::make_shared<const TrialResult>(process_sources_in_full(job, options, &out));
   if (stop.stop_requested()) return view;
   view.series = trial_series(*result);
   view.layout = resolve_layout(job, options.layout, nullptr);
@@ -18,7 +18,7 @@ TrialView load_trial_view(const lmc::TrialJob& job, const SessionOptions& option
   return view;
 }
 
-void TrialViewJob::start(const lmc::TrialJob& job, const SessionOptions& options) {
+void TrialViewJob::start(const lmc::TrialSources& job, const BatchOptions& options) {
   graveyard_.reap();
   job_.abandon_into(graveyard_);
   trial_ = job.trial;

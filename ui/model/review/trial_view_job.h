@@ -6,7 +6,7 @@
 #include <memory>
 #include <string>
 
-#include "core/processing/session.h"
+#include "core/processing/batch.h"
 #include "core/review/trial_series.h"
 #include "ui/model/jobs/background_job.h"
 
@@ -22,11 +22,11 @@ struct TrialView {
 
 // The work, for the job and for tests: throws lmc::Error with the trial's message when it fails.
 // A stop request before or after processing returns an empty view (the job is then cancelled).
-TrialView load_trial_view(const lmc::TrialJob& job, const SessionOptions& options, std::stop_token stop = {});
+TrialView load_trial_view(const lmc::TrialSources& job, const BatchOptions& options, std::stop_token stop = {});
 
 class TrialViewJob {
  public:
-  void start(const lmc::TrialJob& job, const SessionOptions& options);
+  void start(const lmc::TrialSources& job, const BatchOptions& options);
   bool running() const { return job_.running(); }
   JobState state() const { return job_.state(); }
   std::string error() const { return job_.error(); }

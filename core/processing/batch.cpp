@@ -1,4 +1,4 @@
-#include "core/processing/session.h"
+#include "core/processing/batch.h"
 
 #include <tbb/parallel_for.h>
 
@@ -52,12 +52,12 @@ std::optional<fs::path> find_vicon(const fs::path& dir, const std::string& trial
 
 }  // namespace
 
-std::vector<TrialJob> discover_trials(const fs::path& input, const std::optional<fs::path>& vicon,
+std::vector<TrialSources> discover_trials(const fs::path& input, const std::optional<fs::path>& vicon,
                                       std::vector<std::string>* notes) {
-  std::vector<TrialJob> jobs;
+  std::vector<TrialSources> jobs;
   if (!fs::exists(input)) throw Error(ErrorLocation(input.string()), "no such file or folder");
   if (!fs::is_directory(input)) {
-    TrialJob j;
+    TrialSources j;
     j.lmc = input;
     j.trial = trial_name_of(input.filename().string());
     if (vicon && !fs::is_directory(*vicon)) {
@@ -93,7 +93,7 @@ std::vector<TrialJob> discover_trials(const fs::path& input, const std::optional
     }
   }
   for (const auto& [trial, rp] : best) {
-    TrialJob j;
+    TrialSources j;
     j.trial = trial;
     j.lmc = rp.second;
     j.vicon = find_vicon(vicon ? *vicon : rp.second.parent_path(), trial);
@@ -118,7 +118,7 @@ MarkerSeries load_vicon_markers(const fs::path& path) {
   return m;
 }
 
-Layout resolve_layout(const TrialJob& job, const std::optional<std::string>& layout, std::string* used) {
+Layout resolve_layout(const TrialSources& job, const std::optional<std::string>& layout, std::string* used) {
   if (layout) {
     if (used) *used = *layout;
     return load_layout_or_preset(*layout);
@@ -146,8 +146,8 @@ Layout resolve_layout(const TrialJob& job, const std::optional<std::string>& lay
   return load_layout_or_preset(preset);
 }
 
-TrialOutcome process_job(const TrialJob& job, const SessionOptions& options, const ViconMapping& mapping) {
-  TrialOutcome out;
+ProcessedTrial process_sources(const TrialSources& job, const BatchOptions& options, const ViconMapping& mapping) {
+  ProcessedTrial out;
   out.trial = job.trial;
   try {
     const Layout layout = resolve_layout(job, options.layout, &out.layout_used);
@@ -212,21 +212,21 @@ TrialOutcome process_job(const TrialJob& job, const SessionOptions& options, con
   return out;
 }
 
-TrialResult process_job_in_full(const TrialJob& job, const SessionOptions& options, TrialOutcome* outcome) {
-  SessionOptions o = options;
+TrialResult process_sources_in_full(const TrialSources& job, const BatchOptions& options, ProcessedTrial* outcome) {
+  BatchOptions o = options;
   std::optional<TrialResult> kept;
   o.on_result = [&kept](const TrialResult& r) { kept = r; };
   o.compare_methods = false;
   const ViconMapping mapping = o.mapping ? load_vicon_mapping(*o.mapping) : default_vicon_mapping();
-  TrialOutcome out = process_job(job, o, mapping);
+  ProcessedTrial out = process_sources(job, o, mapping);
   if (!out.ok || !kept) throw Error(job.trial + ": " + (out.error.empty() ? "processing gave no result" : out.error));
   if (outcome != nullptr) *outcome = std::move(out);
   return std::move(*kept);
 }
 
-std::vector<TrialOutcome> process_session(const std::vector<TrialJob>& jobs, const SessionOptions& options) {
+std::vector<ProcessedTrial> process_batch(const std::vector<TrialSources>& jobs, const BatchOptions& options) {
   const ViconMapping mapping = options.mapping ? load_vicon_mapping(*options.mapping) : default_vicon_mapping();
-  std::vector<TrialOutcome> outcomes(jobs.size());
+  std::vector<ProcessedTrial> outcomes(jobs.size());
   std::atomic<int> done{0};
   const int total = static_cast<int>(jobs.size());
   tbb::parallel_for(size_t{0}, jobs.size(), [&](size_t k) {
@@ -235,7 +235,7 @@ std::vector<TrialOutcome> process_session(const std::vector<TrialJob>& jobs, con
       outcomes[k].cancelled = true;
       outcomes[k].error = "cancelled before it was processed";
     } else {
-      outcomes[k] = process_job(jobs[k], options, mapping);
+      outcomes[k] = process_sources(jobs[k], options, mapping);
     }
     const int now = ++done;
     if (options.on_progress) options.on_progress(now, total);

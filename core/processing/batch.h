@@ -21,7 +21,7 @@
 
 namespace lmc {
 
-struct TrialJob {
+struct TrialSources {
   std::string trial;
   std::filesystem::path lmc;
   std::optional<std::filesystem::path> vicon;
@@ -33,13 +33,13 @@ struct TrialJob {
 
 // `input` is an LMC file or a folder. `vicon` (optional) is a Vicon file (single trial) or a
 // folder to look in. Notes: files that look like trials but were skipped, and why.
-std::vector<TrialJob> discover_trials(const std::filesystem::path& input, const std::optional<std::filesystem::path>& vicon,
+std::vector<TrialSources> discover_trials(const std::filesystem::path& input, const std::optional<std::filesystem::path>& vicon,
                                       std::vector<std::string>* notes = nullptr);
 
 // Vicon markers from .trc or .c3d, in mm; throws lmc::Error naming the file.
 MarkerSeries load_vicon_markers(const std::filesystem::path& path);
 
-struct SessionOptions {
+struct BatchOptions {
   ProcessOptions process;
   std::optional<std::string> layout;  // name or path; else sidecar, else by trial tag
   std::optional<std::filesystem::path> mapping;
@@ -55,7 +55,7 @@ struct SessionOptions {
   std::function<void(int done, int total)> on_progress;
 };
 
-struct TrialOutcome {
+struct ProcessedTrial {
   std::string trial;
   bool ok = false;
   std::string error;                  // when !ok
@@ -70,14 +70,14 @@ struct TrialOutcome {
 
 // The layout for a trial: explicit name/path; else the sidecar's; else paper-initial for "Naiv"
 // trials and paper-optimized-as-processed for "Opti" ones (reproduces the authors' processing).
-Layout resolve_layout(const TrialJob& job, const std::optional<std::string>& layout, std::string* used);
+Layout resolve_layout(const TrialSources& job, const std::optional<std::string>& layout, std::string* used);
 
-TrialOutcome process_job(const TrialJob& job, const SessionOptions& options, const ViconMapping& mapping);
+ProcessedTrial process_sources(const TrialSources& job, const BatchOptions& options, const ViconMapping& mapping);
 
 // One trial with every intermediate kept (the Review tab's trial view, `lmc figures --trial`):
-// process_job with options.mapping (or the default mapping) and without the method comparison.
+// process_sources with options.mapping (or the default mapping) and without the method comparison.
 // `outcome` (optional) receives the summary and warnings. Throws lmc::Error naming the trial.
-TrialResult process_job_in_full(const TrialJob& job, const SessionOptions& options, TrialOutcome* outcome = nullptr);
-std::vector<TrialOutcome> process_session(const std::vector<TrialJob>& jobs, const SessionOptions& options);
+TrialResult process_sources_in_full(const TrialSources& job, const BatchOptions& options, ProcessedTrial* outcome = nullptr);
+std::vector<ProcessedTrial> process_batch(const std::vector<TrialSources>& jobs, const BatchOptions& options);
 
 }  // namespace lmc

@@ -1,4 +1,4 @@
-#include "core/figures/c_number.h"
+#include "core/figures/locale_free_number.h"
 
 #include <charconv>
 #include <cmath>

@@ -16,12 +16,12 @@
 
 namespace lmc::ui {
 
-class TrialJob {
+class RigTrialJob {
  public:
-  TrialJob() = default;
-  ~TrialJob() { job_.cancel_and_join(); }
-  TrialJob(const TrialJob&) = delete;
-  TrialJob& operator=(const TrialJob&) = delete;
+  RigTrialJob() = default;
+  ~RigTrialJob() { job_.cancel_and_join(); }
+  RigTrialJob(const RigTrialJob&) = delete;
+  RigTrialJob& operator=(const RigTrialJob&) = delete;
 
   // `hub` (and `sim`, null unless the hub plays it and the trial should run in simulated time)
   // must outlive the job: their owner calls cancel_and_join() before letting them go.

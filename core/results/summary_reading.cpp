@@ -1,4 +1,4 @@
-#include "core/results/summary_fields.h"
+#include "core/results/summary_reading.h"
 
 #include "core/common/nan.h"
 #include "core/processing/measures.h"

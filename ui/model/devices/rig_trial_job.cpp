@@ -1,10 +1,10 @@
-#include "ui/model/devices/trial_job.h"
+#include "ui/model/devices/rig_trial_job.h"
 
 #include <utility>
 
 namespace lmc::ui {
 
-void TrialJob::start(devices::DeviceHub& hub, devices::SimSource* sim, devices::TrialEngineConfig config) {
+void RigTrialJob::start(devices::DeviceHub& hub, devices::SimSource* sim, devices::TrialEngineConfig config) {
   job_.cancel_and_join();
   snapshot_.reset();
   trial_ = config.trial;
@@ -19,7 +19,7 @@ void TrialJob::start(devices::DeviceHub& hub, devices::SimSource* sim, devices::
   });
 }
 
-void TrialJob::poll() {
+void RigTrialJob::poll() {
   for (auto& s : job_.drain_reports()) {
     for (auto& m : s.new_messages) messages_.push_back(std::move(m));
     for (auto& m : s.new_notices) messages_.push_back(std::move(m));
@@ -29,7 +29,7 @@ void TrialJob::poll() {
   }
 }
 
-std::vector<std::string> TrialJob::take_messages() {
+std::vector<std::string> RigTrialJob::take_messages() {
   std::vector<std::string> out;
   out.swap(messages_);
   return out;
