@@ -257,6 +257,10 @@ void LeapcSource::run(FrameSink& sink) {
     const eLeapRS mrs = options_.request_tracking_mode
                             ? LeapSetTrackingModeEx(im.connection, d.handle, to_leap_mode(d.wanted_mode))
                             : eLeapRS_Success;
+    // Ask for the mode in force too: its answer is a TrackingMode event whatever the service sends
+    // for the request, and a listing that changes nothing learns the mode this way. A service
+    // without the call leaves the mode unknown, which the Devices tab shows as such.
+    LeapGetTrackingModeEx(im.connection, d.handle);
     DeviceEvent e;
     e.kind = DeviceEventKind::kAppeared;
     e.info.serial = d.serial;

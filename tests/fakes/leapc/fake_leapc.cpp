@@ -382,6 +382,17 @@ eLeapRS LeapSetTrackingModeEx(LEAP_CONNECTION c, LEAP_DEVICE d, eLeapTrackingMod
   return eLeapRS_Success;
 }
 
+eLeapRS LeapGetTrackingModeEx(LEAP_CONNECTION c, LEAP_DEVICE d) {
+  if (c == nullptr || d == nullptr) return eLeapRS_InvalidArgument;
+  {
+    std::lock_guard lock(state().mutex);
+    ++state().stats.tracking_mode_queries;
+    fake_leapc::push_mode_locked(d->id, state().plugged[d->id].mode);
+  }
+  state().cv.notify_all();
+  return eLeapRS_Success;
+}
+
 eLeapRS LeapPollConnection(LEAP_CONNECTION c, uint32_t timeout, LEAP_CONNECTION_MESSAGE* evt) {
   auto& s = state();
   if (c == nullptr || evt == nullptr) return eLeapRS_InvalidArgument;

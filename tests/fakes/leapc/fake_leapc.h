@@ -80,6 +80,7 @@ struct Stats {
   std::uint64_t policy_set = 0;  // connection-wide flags (LeapSetPolicyFlags: the primary device only)
   int policy_ex_calls = 0;       // LeapSetPolicyFlagsEx calls (per device)
   int tracking_mode_calls = 0;   // LeapSetTrackingModeEx calls (per device)
+  int tracking_mode_queries = 0; // LeapGetTrackingModeEx calls (per device)
   int pending = 0;  // queued messages not yet polled
 };
 Stats stats();

@@ -308,6 +308,7 @@ TEST_F(LeapcBackend, EachDeviceIsAskedForTheTrackingModeOfItsPlaceAndItsModeAndM
   EXPECT_EQ(fake_leapc::requested_tracking_mode(1), eLeapTrackingMode_ScreenTop);
   EXPECT_EQ(fake_leapc::requested_tracking_mode(2), eLeapTrackingMode_Desktop);
   EXPECT_EQ(fake_leapc::stats().tracking_mode_calls, 2);
+  EXPECT_EQ(fake_leapc::stats().tracking_mode_queries, 2);
   const auto snap = hub.snapshot();
   EXPECT_EQ(snap.devices[0].slot, "LMC1");
   EXPECT_EQ(snap.devices[0].model, "Leap Motion Controller");
@@ -334,6 +335,24 @@ TEST_F(LeapcBackend, AModeTheServiceKeepsIsReportedAsWrong) {
   ASSERT_TRUE(wait_for_message(hub, seen, {"LMC3 (LP33333) tracks in screen-top mode", "not the desktop mode"}));
   EXPECT_EQ(hub.snapshot().devices[0].tracking_mode, "screen-top");
   hub.stop();
+}
+
+TEST_F(LeapcBackend, AListingLearnsEachModeWithoutChangingIt) {
+  LeapcOptions o;
+  o.request_tracking_mode = false;  // as `lmc devices` runs it
+  DeviceHub hub(layout_with_serials());
+  hub.add_source(std::make_unique<LeapcSource>(o));
+  hub.start();
+  fake_leapc::plug(4, "LP44444", eLeapDevicePID_SIR170, eLeapTrackingMode_HMD);
+  ASSERT_TRUE(wait_for([&] {
+    const auto snap = hub.snapshot();
+    return snap.devices.size() == 1 && !snap.devices[0].tracking_mode.empty();
+  }));
+  const auto snap = hub.snapshot();
+  hub.stop();
+  EXPECT_EQ(fake_leapc::requested_tracking_mode(4), -1);
+  EXPECT_EQ(snap.devices[0].tracking_mode, "head-mounted");
+  EXPECT_EQ(snap.devices[0].model, "Stereo IR 170");
 }
 
 TEST_F(LeapcBackend, APolicyTheServiceRefusesIsReported) {
