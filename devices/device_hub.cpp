@@ -175,6 +175,7 @@ void DeviceHub::on_device_event(const DeviceEvent& event) {
         case DeviceEventKind::kAppeared:
           if (!event.info.backend.empty()) s.backend = event.info.backend;
           if (!event.info.model.empty()) s.model = event.info.model;
+          if (!event.info.tracking_mode.empty()) s.tracking_mode = event.info.tracking_mode;
           if (!s.connected && s.disconnects > 0) {
             message_locked(label(s) + " reconnected");
           } else if (d.auto_assigned && s.backend != "sim") {
@@ -202,6 +203,11 @@ void DeviceHub::on_device_event(const DeviceEvent& event) {
           break;
         case DeviceEventKind::kNotice:
           message_locked(label(s) + ": " + event.message);
+          break;
+        case DeviceEventKind::kTrackingMode:
+          s.tracking_mode = event.info.tracking_mode;
+          message_locked(label(s) + " tracks in " + s.tracking_mode + " mode" +
+                         (event.message.empty() ? "" : ": " + event.message));
           break;
       }
       device_id = s.slot_index + 1;
@@ -232,6 +238,7 @@ void DeviceHub::on_frame(const SourceFrame& frame) {
     d.recent_count = std::min(d.recent_count + 1, d.recent_ns.size());
     s.hand_present = frame.frame.hand_present;
     if (frame.hand_type != HandType::kUnknown) s.hand_type = frame.hand_type;
+    if (frame.other_side_hand) ++s.frames_other_side_hand;
     out.device_id = s.slot_index + 1;
     s.latest = out;
     if (s.slot_index < 0) return;  // unassigned devices are shown, never recorded into a slot
@@ -239,7 +246,10 @@ void DeviceHub::on_frame(const SourceFrame& frame) {
   bool accepted = true;
   {
     std::lock_guard consumer_lock(consumer_mutex_);
-    if (consumer_ != nullptr) accepted = consumer_->offer(out, frame.host_receive_ns, options_.backpressure);
+    if (consumer_ != nullptr) {
+      accepted = consumer_->offer(out, frame.host_receive_ns, options_.backpressure);
+      if (accepted && frame.other_side_hand) consumer_->other_side_hand(out.device_id, frame.host_receive_ns);
+    }
   }
   if (!accepted) {
     std::lock_guard lock(mutex_);
@@ -255,6 +265,9 @@ HubSnapshot DeviceHub::snapshot() const {
   const std::int64_t now = options_.clock();
   snap.host_time_ns = now;
   std::lock_guard lock(mutex_);
+  // Each source's device clock at `now`, read once per snapshot; devices find theirs by backend.
+  std::vector<std::pair<std::string, std::optional<std::int64_t>>> clocks;
+  for (const auto& source : sources_) clocks.emplace_back(source->backend_name(), source->device_clock_us(now));
   for (const auto& ld : layout_.devices) snap.slots.push_back(ld.slot);
   for (const auto& d : devices_) {
     DeviceStatus s = d.status;
@@ -269,6 +282,11 @@ HubSnapshot DeviceHub::snapshot() const {
         ++count;
       }
       s.rate_hz = count;
+    }
+    for (const auto& [backend, clock] : clocks) {
+      if (backend != s.backend || !clock) continue;
+      s.device_clock_us = clock;
+      break;
     }
     if (s.slot_index < 0) snap.unassigned_serials.push_back(s.serial);
     snap.devices.push_back(std::move(s));

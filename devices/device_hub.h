@@ -38,6 +38,12 @@ struct DeviceStatus {
   std::int64_t frames_dropped_recorder = 0;  // the recorder's queue was full
   int disconnects = 0;
   std::optional<HandFrame> latest;  // latest frame in the device frame (device_id = slot number)
+  // As the backend reports them: the tracking mode ("desktop", …; empty until known), the frames
+  // whose only hand was classified as the other side and kept, and the device clock read at the
+  // snapshot's host_time_ns (FrameSource::device_clock_us; nullopt when its source has none).
+  std::string tracking_mode;
+  std::int64_t frames_other_side_hand = 0;
+  std::optional<std::int64_t> device_clock_us;
 };
 
 struct HubSnapshot {

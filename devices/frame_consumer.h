@@ -18,6 +18,9 @@ class FrameConsumer {
   virtual bool offer(const HandFrame& frame, std::int64_t host_receive_ns, bool may_wait) = 0;
   // A device event, already mapped to its slot number (0 when unassigned).
   virtual void device_event(const DeviceEvent& event, int device_id, const std::string& slot) = 0;
+  // The frame just accepted by offer() (same device and receive time) held the only hand in view,
+  // classified as the other side and kept (SourceFrame::other_side_hand); the recorder counts them.
+  virtual void other_side_hand(int /*device_id*/, std::int64_t /*host_receive_ns*/) {}
 };
 
 }  // namespace lmc::devices

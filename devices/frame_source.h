@@ -4,6 +4,7 @@
 // by serial number, and one SourceFrame per tracking event of each device. Sources never decide
 // layout slots; the hub maps serial → slot (devices/leapc/README.md: identity by serial, never by index).
 #include <cstdint>
+#include <optional>
 #include <string>
 
 #include "core/hand/hand_frame.h"
@@ -14,6 +15,8 @@ struct DeviceInfo {
   std::string serial;
   std::string backend;   // "sim", "replay", "leapc"
   std::string model;     // "Leap Motion Controller", "simulated", ...
+  // "desktop", "screen-top", "head-mounted" (devices/tracking_mode.h); empty until known.
+  std::string tracking_mode;
 };
 
 // One tracking event of one device, copied out of the backend's buffers.
@@ -25,6 +28,9 @@ struct SourceFrame {
   std::int64_t host_receive_ns = 0;  // host steady clock (or simulated host time), ns
   HandType hand_type = HandType::kUnknown;
   float confidence = -1.0F;  // < 0 when the backend does not know (LeapC documents it as unused)
+  // The only hand in view was classified as the other side than the wanted one and was kept as
+  // the subject's hand (hand_type says what the tracker called it).
+  bool other_side_hand = false;
 };
 
 enum class DeviceEventKind {
@@ -33,6 +39,8 @@ enum class DeviceEventKind {
   kFailure,        // device reported a failure status; it may keep streaming
   kDroppedFrames,  // the service says it dropped `count` frames of this device
   kNotice,         // anything the operator should read (low fps, bad transport, ...)
+  kTrackingMode,   // the device's tracking mode is known or changed: info.tracking_mode; `message`
+                   // says why it matters when it is not the mode that was asked for
 };
 
 struct DeviceEvent {
@@ -63,6 +71,13 @@ class FrameSource {
   virtual bool realtime() const { return true; }
   // True when a finite source (replay, simulated trial) has delivered everything.
   virtual bool finished() const { return false; }
+  // The device clock (the clock of frame timestamps, µs) at host instant `host_ns`, read from the
+  // clock itself (LeapGetNow for LeapC): a frame's timestamp is its capture time, which precedes
+  // its arrival by the delivery latency, so "latest timestamp + time since it arrived" runs late
+  // by that latency. `host_ns` should be recent (a live clock is read now and carried to it on
+  // the host clock). nullopt when the source has no clock to read (replay; simulated time run
+  // faster than real time); any thread.
+  virtual std::optional<std::int64_t> device_clock_us(std::int64_t /*host_ns*/) const { return std::nullopt; }
 };
 
 }  // namespace lmc::devices

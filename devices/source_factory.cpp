@@ -44,7 +44,9 @@ std::unique_ptr<FrameSource> make_source(const SourceSpec& spec, const SourceSet
   }
   if (spec.backend == "leapc") {
 #if LMC_HAVE_LEAPC
-    return std::make_unique<LeapcSource>();
+    LeapcOptions options;
+    options.layout = s.layout;  // each controller's tracking mode follows its slot's pose
+    return std::make_unique<LeapcSource>(options);
 #else
     no_leapc();
 #endif

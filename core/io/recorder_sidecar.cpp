@@ -20,7 +20,8 @@ constexpr const char* kTopKeys[] = {
     "extra"};
 constexpr const char* kDeviceKeys[] = {
     "device_id", "slot", "serial", "frames_written", "frames_with_hand", "frames_dropped_queue", "frame_id_gaps",
-    "first_timestamp_us", "last_timestamp_us", "gaps", "disconnects"};
+    "first_timestamp_us", "last_timestamp_us", "gaps", "disconnects",
+    "model", "tracking_mode", "frames_other_side_hand"};
 constexpr const char* kGapKeys[] = {"from_timestamp_us", "to_timestamp_us", "duration_ms"};
 constexpr const char* kDisconnectKeys[] = {
     "host_time_utc", "host_ns", "message", "reconnected_host_time_utc", "event", "serial", "slot"};
@@ -117,6 +118,9 @@ SidecarDevice device_from(const JsonReader& r) {
     const JsonReader list = r.at("disconnects");
     for (size_t i = 0; i < list.array_size(); ++i) d.disconnects.push_back(disconnect_from(list.at(i)));
   }
+  get(r, "model", d.model);
+  get(r, "tracking_mode", d.tracking_mode);
+  get(r, "frames_other_side_hand", d.frames_other_side_hand);
   d.unknown = unknown_keys(r.json(), kDeviceKeys);
   return d;
 }
@@ -185,6 +189,9 @@ json sidecar_device_to_json(const SidecarDevice& d) {
   for (const auto& g : d.gaps) j["gaps"].push_back(gap_to_json(g));
   j["disconnects"] = json::array();
   for (const auto& x : d.disconnects) j["disconnects"].push_back(disconnect_to_json(x));
+  if (!d.model.empty()) j["model"] = d.model;
+  if (!d.tracking_mode.empty()) j["tracking_mode"] = d.tracking_mode;
+  j["frames_other_side_hand"] = d.frames_other_side_hand;
   return j;
 }
 

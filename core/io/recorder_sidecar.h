@@ -47,6 +47,12 @@ struct SidecarDevice {
   std::int64_t last_timestamp_us = 0;
   std::vector<SidecarGap> gaps;
   std::vector<SidecarDisconnect> disconnects;
+  // What the controller is and how it tracked (optional: empty / 0 in files written before they
+  // were kept, and from backends that do not know): its model, its tracking mode at the end of the
+  // trial, and the frames whose only hand was classified as the other side and kept.
+  std::string model;
+  std::string tracking_mode;
+  std::int64_t frames_other_side_hand = 0;
   nlohmann::json unknown = nlohmann::json::object();
 };
 

@@ -91,6 +91,15 @@ void judge_sidecar(const RecorderSidecar& sidecar, Reasons& reasons) {
   }
 }
 
+// The frames are kept (the hand is the subject's), but the operator should know the controller
+// doubted which hand it saw: its mounting or tracking mode may be wrong.
+void judge_hand_side(const DeviceQuality& q, Reasons& reasons) {
+  if (q.other_side_hand_frames <= 0) return;
+  const std::int64_t n = q.other_side_hand_frames;
+  reasons.warn(q.slot + " classified the hand as the other side in " + std::to_string(n) +
+               (n == 1 ? " frame" : " frames") + " (kept: it was the only hand in view)");
+}
+
 void judge_device(const DeviceQuality& q, const SidecarDevice* sd, const QualityThresholds& t,
                   Reasons& reasons) {
   const std::string& s = q.slot;
@@ -130,6 +139,7 @@ void judge_device(const DeviceQuality& q, const SidecarDevice* sd, const Quality
                  (back ? "" : " and did not come back") +
                  (first.message.empty() ? "" : " (" + first.message + ")"));
   }
+  judge_hand_side(q, reasons);
   // Frame-id gaps are not judged: with several controllers on one bus the service skips frames
   // as a matter of course; the rate and gap checks above catch a controller that really lagged.
   if (sd != nullptr && sd->frames_written > 0 && sd->frames_written != q.frames) {
@@ -272,6 +282,7 @@ QualityReport assess_trial(const QualityInputs& in) {
       q.frame_id_gaps = sd->frame_id_gaps;
       q.dropped = sd->frames_dropped_queue;
       q.disconnects = static_cast<int>(sd->disconnects.size());
+      q.other_side_hand_frames = sd->frames_other_side_hand;
     }
     if (id > layout.device_count()) {
       reasons.fail("the recording has device " + std::to_string(id) + " but layout '" +

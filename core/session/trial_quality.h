@@ -33,6 +33,9 @@ struct DeviceQuality {
   std::int64_t frame_id_gaps = 0;
   std::int64_t dropped = 0;            // frames the recorder could not keep up with
   int disconnects = 0;
+  // Frames whose only hand the controller classified as the other side (kept as the subject's
+  // hand; the sidecar counts them). Many mean the controller is confused: mounting or tracking mode.
+  std::int64_t other_side_hand_frames = 0;
 };
 
 struct RomQuality {

@@ -41,13 +41,14 @@ json quality_device_to_json(const DeviceQuality& d) {
               {"longest_no_hand_s", d.longest_no_hand_s},
               {"frame_id_gaps", d.frame_id_gaps},
               {"dropped", d.dropped},
-              {"disconnects", d.disconnects}};
+              {"disconnects", d.disconnects},
+              {"other_side_hand_frames", d.other_side_hand_frames}};
 }
 
 DeviceQuality device_from_json(const JsonReader& r) {
   r.only_keys({"device_id", "slot", "serial", "frames", "median_rate_hz", "rate_p5_hz",
                "rate_p95_hz", "hand_fraction", "longest_gap_s", "longest_no_hand_s",
-               "frame_id_gaps", "dropped", "disconnects"});
+               "frame_id_gaps", "dropped", "disconnects", "other_side_hand_frames"});
   DeviceQuality d;
   d.device_id = r.at("device_id").integer();
   d.slot = r.string("slot");
@@ -62,6 +63,8 @@ DeviceQuality device_from_json(const JsonReader& r) {
   d.frame_id_gaps = count(r, "frame_id_gaps");
   d.dropped = count(r, "dropped");
   d.disconnects = r.at("disconnects").integer();
+  // Optional: reports written before the count was kept have none.
+  if (r.has("other_side_hand_frames")) d.other_side_hand_frames = count(r, "other_side_hand_frames");
   return d;
 }
 

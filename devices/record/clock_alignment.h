@@ -4,6 +4,7 @@
 // (µs, the device's own clock) belongs to that host instant. Processing later maps TRC time 0
 // (CaptureStart + Delay) to each device's clock with it. Key list: devices/README.md.
 #include <cstdint>
+#include <optional>
 #include <nlohmann/json.hpp>
 #include <string>
 
@@ -13,7 +14,10 @@ namespace lmc::devices {
 
 // `event`: "CaptureStart sent" / "CaptureStart received"; `host_ns`: host_now_ns() of that event.
 // Per assigned device: its latest frame's timestamp, frame id and host receive time, and the
-// device clock extrapolated to `host_ns` (latest timestamp + host time elapsed since it arrived).
+// device clock at `host_ns`: the clock as its source read it at the snapshot (DeviceStatus::
+// device_clock_us, carried to `host_ns` on the host clock; "device_clock_method": "read"), or,
+// when the source has no clock to read, the latest timestamp + host time elapsed since that frame
+// arrived ("extrapolated": early by the frame's capture-to-delivery latency).
 nlohmann::json clock_alignment_json(const HubSnapshot& snapshot, const std::string& event, std::int64_t host_ns,
                                     std::int64_t packet_id, const std::string& host_time_utc);
 

@@ -121,7 +121,10 @@ void Recorder::device_event(const DeviceEvent& event, int device_id, const std::
     case DeviceEventKind::kFailure: e["event"] = "failure"; break;
     case DeviceEventKind::kDroppedFrames: e["event"] = "dropped_frames"; e["count"] = event.count; break;
     case DeviceEventKind::kNotice: e["event"] = "notice"; break;
+    case DeviceEventKind::kTrackingMode: e["event"] = "tracking_mode"; break;
   }
+  if (!event.info.model.empty()) e["model"] = event.info.model;
+  if (!event.info.tracking_mode.empty()) e["tracking_mode"] = event.info.tracking_mode;
   if (device_id > 0) {
     auto& s = stats_[device_id];
     s.device_id = device_id;
@@ -130,8 +133,21 @@ void Recorder::device_event(const DeviceEvent& event, int device_id, const std::
     if (event.kind == DeviceEventKind::kLost) s.disconnects.push_back(e);
     if (event.kind == DeviceEventKind::kAppeared && !s.disconnects.empty())
       s.disconnects.back()["reconnected_host_time_utc"] = e["host_time_utc"];
+    if (!event.info.model.empty()) s.model = event.info.model;
+    if (!event.info.tracking_mode.empty()) s.tracking_mode = event.info.tracking_mode;
   }
   if (events_.size() < 10000) events_.push_back(std::move(e));
+}
+
+void Recorder::other_side_hand(int device_id, std::int64_t host_receive_ns) {
+  // Counted as offer() wrote: rows outside the trial's window are not in the file.
+  if (config_.wait_for_go &&
+      (host_receive_ns < window_from_ns_.load() || host_receive_ns >= window_until_ns_.load()))
+    return;
+  std::lock_guard lock(stats_mutex_);
+  DeviceRecordStats& s = stats_[device_id];
+  s.device_id = device_id;
+  ++s.frames_other_side_hand;
 }
 
 void Recorder::note_vicon_packet(SidecarViconPacket packet) {
@@ -342,6 +358,9 @@ RecorderSidecar Recorder::sidecar(const char* state) const {
     d.frame_id_gaps = s.frame_id_gaps;
     d.first_timestamp_us = s.first_timestamp_us;
     d.last_timestamp_us = s.last_timestamp_us;
+    d.model = s.model;
+    d.tracking_mode = s.tracking_mode;
+    d.frames_other_side_hand = s.frames_other_side_hand;
     for (const auto& g : s.gaps) {
       SidecarGap gap;
       gap.from_timestamp_us = g.from_timestamp_us;

@@ -67,6 +67,10 @@ struct DeviceRecordStats {
   std::int64_t last_timestamp_us = 0;
   std::vector<GapRecord> gaps;
   std::vector<nlohmann::json> disconnects;  // {host_time_utc, host_ns, message, reconnected}
+  // From the backend's device events and other_side_hand() (sidecar keys of the same names).
+  std::string model;
+  std::string tracking_mode;
+  std::int64_t frames_other_side_hand = 0;
 };
 
 // kFailed: a write error stopped the recording; kAborted: the caller stopped the trial because
@@ -126,6 +130,7 @@ class Recorder final : public FrameConsumer {
   // FrameConsumer (device threads).
   bool offer(const HandFrame& frame, std::int64_t host_receive_ns, bool may_wait) override;
   void device_event(const DeviceEvent& event, int device_id, const std::string& slot) override;
+  void other_side_hand(int device_id, std::int64_t host_receive_ns) override;
 
  private:
   struct Item {

@@ -50,7 +50,7 @@ ReplaySource::ReplaySource(const std::filesystem::path& path, ReplayOptions opti
     if (!present[static_cast<size_t>(id)]) continue;
     auto& serial = serial_of_id_[static_cast<size_t>(id)];
     if (serial.empty()) serial = "REPLAY-LMC" + std::to_string(id);
-    devices_.push_back({serial, "replay", "replay of " + path.filename().string()});
+    devices_.push_back({serial, "replay", "replay of " + path.filename().string(), ""});
   }
 }
 

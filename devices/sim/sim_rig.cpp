@@ -13,6 +13,7 @@
 #include "core/visibility/frame_prep.h"
 #include "core/visibility/visibility_explain.h"
 #include "devices/sim/controller_hand_model.h"
+#include "devices/tracking_mode.h"
 
 namespace lmc::devices {
 namespace {
@@ -104,6 +105,7 @@ SimRig::SimRig(Layout layout, SimConfig config)
                                      std::to_string(10000 + (mix(config_.seed, 100 + i) % 90000));
     d->info.backend = "sim";
     d->info.model = "simulated Leap Motion Controller";
+    d->info.tracking_mode = tracking_mode_name(tracking_mode_for_pose(ld.pose));
     switch (config_.calibration) {
       case SimConfig::Calibration::kLayout: d->calibration = ld.offset_mm; break;
       case SimConfig::Calibration::kNone: d->calibration = Vec3::Zero(); break;

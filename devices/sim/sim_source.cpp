@@ -30,6 +30,7 @@ void SimSource::stop() {
 
 void SimSource::run(FrameSink& sink) {
   const std::int64_t start_ns = host_now_ns();
+  start_ns_ = start_ns;
   bool completed = false;
   bool went = false;
   const double end = end_s();
@@ -65,6 +66,14 @@ void SimSource::run(FrameSink& sink) {
     }
   }
   finished_ = completed;
+}
+
+std::optional<std::int64_t> SimSource::device_clock_us(std::int64_t host_ns) const {
+  const std::int64_t start_ns = start_ns_.load();
+  if (start_ns == 0 || options_.speed <= 0) return std::nullopt;
+  // Events are due at start_ns + t / speed (run()), stamped device_clock_start_us + t.
+  const double t_us = static_cast<double>(host_ns - start_ns) * options_.speed / 1000.0;
+  return rig_->config().device_clock_start_us + static_cast<std::int64_t>(std::llround(t_us));
 }
 
 std::vector<HandFrame> SimSource::truth_until(double seconds) const {

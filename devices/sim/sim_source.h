@@ -7,6 +7,7 @@
 #include <functional>
 #include <memory>
 #include <mutex>
+#include <optional>
 #include <thread>
 
 #include "devices/frame_source.h"
@@ -29,6 +30,9 @@ class SimSource final : public FrameSource {
   void stop() override;
   bool realtime() const override { return options_.speed > 0; }
   bool finished() const override { return finished_.load(); }
+  // The simulated device clock (SimConfig::device_clock_start_us + simulated time) at `host_ns`,
+  // as LeapGetNow would read it; nullopt before start() and when not in real time (speed 0).
+  std::optional<std::int64_t> device_clock_us(std::int64_t host_ns) const override;
 
   const std::vector<DeviceInfo>& devices() const { return rig_->devices(); }
   // A trial with a countdown: the hand holds still for `hold_s` simulated seconds, then moves;
@@ -54,6 +58,7 @@ class SimSource final : public FrameSource {
   std::atomic<bool> stop_{false};
   std::atomic<bool> finished_{false};
   std::atomic<double> sim_time_s_{0};
+  std::atomic<std::int64_t> start_ns_{0};  // host time of simulated time 0 (0 before start)
   std::thread thread_;
 };
 

@@ -36,11 +36,14 @@ TEST(LmcDevices, SimulatorListsFourSerialsInTheirSlots) {
     EXPECT_EQ(d.at("slot"), "LMC" + std::to_string(i + 1));
     EXPECT_EQ(d.at("backend"), "sim");
     EXPECT_THAT(d.at("serial").get<std::string>(), HasSubstr("SIM-LMC" + std::to_string(i + 1)));
+    EXPECT_EQ(d.at("model"), "simulated Leap Motion Controller");
+    EXPECT_EQ(d.at("tracking_mode"), "desktop") << "every controller of paper-initial looks up";
   }
   const CliRun text = run("devices", "devices_sim_text");
   ASSERT_EQ(text.exit_code, 0) << text.err;
   EXPECT_THAT(text.out, HasSubstr("4 devices on backend sim (layout paper-initial)"));
   EXPECT_THAT(text.out, HasSubstr("SERIAL"));
+  EXPECT_THAT(text.out, HasSubstr("desktop"));
 }
 
 TEST(LmcDevices, ReplayListsTheRecordedDevices) {

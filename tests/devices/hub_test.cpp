@@ -23,7 +23,7 @@ Layout four_slots(std::optional<std::string> lmc3_serial = std::nullopt) {
 DeviceEvent appeared(const std::string& serial) {
   DeviceEvent e;
   e.kind = DeviceEventKind::kAppeared;
-  e.info = {serial, "test", "fake"};
+  e.info = {serial, "test", "fake", ""};
   return e;
 }
 
@@ -176,6 +176,36 @@ TEST(DeviceHub, LostDeviceIsMarkedAndTheOperatorTold) {
   EXPECT_EQ(msgs[0], "LMC2 (B) reconnected");
   ASSERT_EQ(c.events.size(), 4u);
   EXPECT_EQ(c.events[2], (std::pair<int, DeviceEventKind>{2, DeviceEventKind::kLost}));
+}
+
+TEST(DeviceHub, TrackingModeModelAndOtherSideHandsAreKeptPerDevice) {
+  DeviceHub hub(four_slots());
+  CollectingConsumer c;
+  hub.set_consumer(&c);
+  DeviceEvent a = appeared("A");
+  a.info.model = "Leap Motion Controller 2";
+  hub.on_device_event(a);
+  hub.take_messages();
+  DeviceEvent mode;
+  mode.kind = DeviceEventKind::kTrackingMode;
+  mode.info.serial = "A";
+  mode.info.tracking_mode = "head-mounted";
+  mode.message = "not the desktop mode its place in the layout needs";
+  hub.on_device_event(mode);
+  SourceFrame f = frame("A", 1, 1'000'000);
+  f.other_side_hand = true;
+  hub.on_frame(f);
+  hub.on_frame(frame("A", 2, 2'000'000));
+  const auto snap = hub.snapshot();
+  EXPECT_EQ(snap.devices[0].model, "Leap Motion Controller 2");
+  EXPECT_EQ(snap.devices[0].tracking_mode, "head-mounted");
+  EXPECT_EQ(snap.devices[0].frames_other_side_hand, 1);
+  EXPECT_FALSE(snap.devices[0].device_clock_us.has_value()) << "no source with a clock";
+  EXPECT_EQ(hub.take_messages(), (std::vector<std::string>{
+                                      "LMC1 (A) tracks in head-mounted mode: not the desktop mode its place in the "
+                                      "layout needs"}));
+  EXPECT_EQ(c.frames.size(), 2u);
+  EXPECT_EQ(c.events.back(), (std::pair<int, DeviceEventKind>{1, DeviceEventKind::kTrackingMode}));
 }
 
 }  // namespace

@@ -492,6 +492,7 @@ TEST(ClockAlignment, EachDeviceClockIsExtrapolatedToTheViconInstant) {
   EXPECT_EQ(d["latest_host_receive_ns"], 5'000'000'000);
   EXPECT_EQ(d["host_ns_since_latest"], 10'000'000);
   EXPECT_EQ(d["device_clock_at_event_us"], 1'010'000);  // 10 ms after the latest frame
+  EXPECT_EQ(d["device_clock_method"], "extrapolated");  // no clock read: the source has none
   EXPECT_EQ(j["devices"][1]["slot"], "LMC2");
   EXPECT_TRUE(j["devices"][1]["latest_timestamp_us"].is_null());
   EXPECT_TRUE(j["devices"][1]["device_clock_at_event_us"].is_null());
@@ -567,6 +568,75 @@ TEST(Recorder, SidecarDescribesTheSession) {
   EXPECT_FALSE(j["host_start_utc"].get<std::string>().empty());
   EXPECT_FALSE(j["host_stop_utc"].get<std::string>().empty());
   EXPECT_EQ(j["recording_file"], "LMC_side.raw.txt");
+}
+
+TEST(Recorder, SidecarKeepsEachDevicesModelModeAndOtherSideHands) {
+  const auto dir = test::scratch_dir("rec_model_mode");
+  RecorderConfig rc;
+  rc.output_dir = dir;
+  rc.trial = "modes";
+  rc.layout = paper_initial();
+  rc.backend = "leapc";
+  Recorder rec(rc);
+  rec.start();
+  DeviceEvent a;
+  a.kind = DeviceEventKind::kAppeared;
+  a.info = {"LP22222", "leapc", "Leap Motion Controller 2", ""};
+  rec.device_event(a, 2, "LMC2");
+  DeviceEvent mode;
+  mode.kind = DeviceEventKind::kTrackingMode;
+  mode.info.serial = "LP22222";
+  mode.info.tracking_mode = "desktop";
+  rec.device_event(mode, 2, "LMC2");
+  HandFrame f;
+  for (auto& p : f.points) p.setZero();
+  f.device_id = 2;
+  f.hand_present = true;
+  for (int k = 0; k < 3; ++k) {
+    f.frame_id = k;
+    f.timestamp_us = 1000 * k;
+    ASSERT_TRUE(rec.offer(f, 1'000'000 + k, false));
+  }
+  rec.other_side_hand(2, 1'000'001);
+  rec.other_side_hand(2, 1'000'002);
+  rec.stop({{"LP22222", "LMC2"}});
+  const auto j = read_json(rec.paths().sidecar);
+  const auto sc = recorder_sidecar_from_json(j, "modes");
+  const SidecarDevice* d = sc.device(2);
+  ASSERT_NE(d, nullptr);
+  EXPECT_EQ(d->frames_written, 3);
+  EXPECT_EQ(d->model, "Leap Motion Controller 2");
+  EXPECT_EQ(d->tracking_mode, "desktop");
+  EXPECT_EQ(d->frames_other_side_hand, 2);
+  bool mode_event = false;
+  for (const auto& e : j["events"])
+    mode_event = mode_event || (e["event"] == "tracking_mode" && e["tracking_mode"] == "desktop" && e["slot"] == "LMC2");
+  EXPECT_TRUE(mode_event) << j["events"].dump();
+}
+
+TEST(ClockAlignment, AClockReadAtTheSnapshotIsCarriedToTheEventOnTheHostClock) {
+  HubSnapshot snap;
+  snap.host_time_ns = 5'000'000'000;
+  DeviceStatus a;
+  a.serial = "LP1";
+  a.slot = "LMC1";
+  a.slot_index = 0;
+  a.frames_received = 10;
+  a.latest_host_receive_ns = 4'990'000'000;  // arrived 10 ms before the snapshot
+  HandFrame fa;
+  for (auto& p : fa.points) p.setZero();
+  fa.frame_id = 7;
+  fa.timestamp_us = 1'000'000;  // captured 35 ms before it arrived: the clock read 1'045'000 at the snapshot
+  a.latest = fa;
+  a.device_clock_us = 1'045'000;
+  snap.devices = {a};
+  const auto j = clock_alignment_json(snap, "CaptureStart sent", 5'003'000'000, 9, "");
+  const auto& d = j["devices"][0];
+  EXPECT_EQ(d["device_clock_method"], "read");
+  EXPECT_EQ(d["device_clock_at_event_us"], 1'048'000);      // the read clock + 3 ms
+  EXPECT_EQ(d["device_clock_extrapolated_us"], 1'013'000);  // the frame's timestamp + 13 ms: 35 ms early
+  EXPECT_EQ(d["latest_frame_latency_us"], 35'000);
+  EXPECT_EQ(d["latest_frame_id"], 7);
 }
 
 }  // namespace recorder_test

@@ -82,6 +82,36 @@ TEST(DevicesViewModel, SimulatedRigStreamsFourDevicesWithHandsInTheWorldFrame) {
   EXPECT_TRUE(vm.rows().empty());
 }
 
+TEST(DevicesViewModel, EachRowShowsTheControllersModelAndTrackingMode) {
+  RigFixture f;
+  DevicesViewModel& vm = f.vm;
+  ASSERT_EQ(vm.start("sim"), "");
+  ASSERT_TRUE(refresh_until(vm, [&] { return vm.rows().size() == 4; }));
+  for (const DeviceRow& r : vm.rows()) {
+    EXPECT_EQ(r.model, "simulated Leap Motion Controller") << r.slot;
+    EXPECT_EQ(r.tracking_mode, "desktop") << r.slot << ": every controller of paper-initial looks up";
+  }
+  // A LeapC controller as the backend announces it: an LMC2 by its product id, and the mode the
+  // service answered with.
+  devices::DeviceHub* hub = vm.rig().hub();
+  ASSERT_NE(hub, nullptr);
+  devices::DeviceEvent appeared;
+  appeared.kind = devices::DeviceEventKind::kAppeared;
+  appeared.info = {"LP22222", "leapc", "Leap Motion Controller 2", ""};
+  hub->on_device_event(appeared);
+  devices::DeviceEvent mode;
+  mode.kind = devices::DeviceEventKind::kTrackingMode;
+  mode.info.serial = "LP22222";
+  mode.info.tracking_mode = "screen-top";
+  hub->on_device_event(mode);
+  ASSERT_TRUE(refresh_until(vm, [&] { return vm.rows().size() == 5; }));
+  const DeviceRow& lmc2 = vm.rows().back();
+  EXPECT_EQ(lmc2.serial, "LP22222");
+  EXPECT_EQ(lmc2.model, "Leap Motion Controller 2");
+  EXPECT_EQ(lmc2.tracking_mode, "screen-top");
+  vm.stop();
+}
+
 TEST(DevicesViewModel, SlotAssignmentBindsTheSerialInTheRigsLayout) {
   RigFixture f;
   DevicesViewModel& vm = f.vm;

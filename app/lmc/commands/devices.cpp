@@ -55,6 +55,8 @@ void run_devices(const DevicesOptions& opt) {
       j["devices"].push_back({{"serial", d.serial},
                               {"backend", d.backend},
                               {"model", d.model},
+                              {"tracking_mode", d.tracking_mode.empty() ? nlohmann::json(nullptr)
+                                                                        : nlohmann::json(d.tracking_mode)},
                               {"slot", slot.empty() ? nlohmann::json(nullptr) : nlohmann::json(slot)}});
     }
     std::cout << j.dump(2) << "\n";
@@ -64,11 +66,11 @@ void run_devices(const DevicesOptions& opt) {
             << " (layout " << settings.layout.name << ")\n";
   if (devices.empty()) return;
   std::cout << std::left << std::setw(22) << "SERIAL" << std::setw(8) << "SLOT" << std::setw(9) << "BACKEND"
-            << "MODEL\n";
+            << std::setw(14) << "MODE" << "MODEL\n";
   for (const auto& d : devices) {
     const std::string slot = slot_of(d.serial);
     std::cout << std::left << std::setw(22) << d.serial << std::setw(8) << (slot.empty() ? "-" : slot) << std::setw(9)
-              << d.backend << d.model << "\n";
+              << d.backend << std::setw(14) << (d.tracking_mode.empty() ? "-" : d.tracking_mode) << d.model << "\n";
   }
   if (map.size() < devices.size())
     std::cout << "devices marked '-' have no slot: bind their serials in the layout (Devices tab)\n";

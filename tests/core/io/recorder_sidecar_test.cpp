@@ -140,6 +140,39 @@ TEST(RecorderSidecar, OptionalKeysAreLeftOutWhenUnset) {
     EXPECT_TRUE(j.contains(key)) << key;
 }
 
+TEST(RecorderSidecar, EachDevicesModelModeAndOtherSideHandsReadBackAndOldFilesStillRead) {
+  RecorderSidecar s;
+  s.trial = "t";
+  s.status = "completed";
+  SidecarDevice d;
+  d.device_id = 2;
+  d.slot = "LMC2";
+  d.serial = "LP22222";
+  d.model = "Leap Motion Controller 2";
+  d.tracking_mode = "screen-top";
+  d.frames_other_side_hand = 12;
+  s.devices = {d};
+  const json j = recorder_sidecar_to_json(s);
+  EXPECT_EQ(j["devices"][0]["model"], "Leap Motion Controller 2");
+  EXPECT_EQ(j["devices"][0]["tracking_mode"], "screen-top");
+  EXPECT_EQ(j["devices"][0]["frames_other_side_hand"], 12);
+  const RecorderSidecar back = recorder_sidecar_from_json(json::parse(j.dump()), "new.session.json");
+  ASSERT_EQ(back.devices.size(), 1u);
+  EXPECT_EQ(back.devices[0].model, "Leap Motion Controller 2");
+  EXPECT_EQ(back.devices[0].tracking_mode, "screen-top");
+  EXPECT_EQ(back.devices[0].frames_other_side_hand, 12);
+  EXPECT_TRUE(back.devices[0].unknown.empty()) << "known keys, not kept as unknown";
+
+  // A file written before these keys existed.
+  json old = j;
+  for (const char* key : {"model", "tracking_mode", "frames_other_side_hand"}) old["devices"][0].erase(key);
+  const RecorderSidecar was = recorder_sidecar_from_json(old, "old.session.json");
+  EXPECT_EQ(was.devices[0].model, "");
+  EXPECT_EQ(was.devices[0].tracking_mode, "");
+  EXPECT_EQ(was.devices[0].frames_other_side_hand, 0);
+  EXPECT_FALSE(recorder_sidecar_to_json(was)["devices"][0].contains("model")) << "unknown model: left out";
+}
+
 TEST(RecorderSidecar, ASidecarLeftAtRecordingReadsAsIncomplete) {
   // What the recorder writes at start: no stop time, no devices yet; a crash leaves it so.
   const json j = {{"format", "lmc-session"},

@@ -247,6 +247,26 @@ TEST(TrialQuality, RecorderDropsAndDisconnectsAreWarnings) {
       << all_reasons(r);
 }
 
+TEST(TrialQuality, FramesWhoseOnlyHandWasTheOtherSideAreCountedAndWarned) {
+  Trial trial = clean_trial();
+  trial.sidecar.devices[2].frames_other_side_hand = 12;
+  const QualityReport r = assess_trial(trial.inputs());
+  EXPECT_EQ(r.devices[2].other_side_hand_frames, 12);
+  EXPECT_EQ(r.devices[0].other_side_hand_frames, 0);
+  EXPECT_EQ(r.verdict, "warn");
+  EXPECT_EQ(r.reasons, (std::vector<std::string>{
+                           "LMC3 classified the hand as the other side in 12 frames (kept: it was the only hand in view)"}))
+      << all_reasons(r);
+
+  // The count is in the journal's copy, and a report written before it was kept still reads.
+  const nlohmann::json j = quality_to_json(r);
+  EXPECT_EQ(j["devices"][2]["other_side_hand_frames"], 12);
+  EXPECT_EQ(quality_from_json(j, "journal.json").devices[2].other_side_hand_frames, 12);
+  nlohmann::json old = j;
+  for (auto& d : old["devices"]) d.erase("other_side_hand_frames");
+  EXPECT_EQ(quality_from_json(old, "old-journal.json").devices[2].other_side_hand_frames, 0);
+}
+
 TEST(TrialQuality, RecordingFileShorterThanTheRecorderWroteWarns) {
   Trial trial = clean_trial();
   trial.sidecar.devices[3].frames_written = 510;

@@ -51,6 +51,13 @@ typedef enum _eLeapRS {
   eLeapRS_Unsupported = 0xE7010006
 } eLeapRS;
 
+typedef enum _eLeapTrackingMode {
+  eLeapTrackingMode_Desktop = 0,
+  eLeapTrackingMode_HMD = 1,
+  eLeapTrackingMode_ScreenTop = 2,
+  eLeapTrackingMode_Unknown = 3
+} eLeapTrackingMode;
+
 #define LEAP_SUCCEEDED(rs) (((uint32_t)(rs) & 0x80000000u) == 0)
 #define LEAP_FAILED(rs) (((uint32_t)(rs) & 0x80000000u) != 0)
 
@@ -163,6 +170,19 @@ typedef struct _LEAP_DEVICE_STATUS_CHANGE_EVENT {
   uint32_t last_status;
   uint32_t status;
 } LEAP_DEVICE_STATUS_CHANGE_EVENT;
+
+/* The policies in force after a policy request (answered asynchronously, per device on a
+ * multi-device-aware connection: the message's device_id names it). */
+typedef struct _LEAP_POLICY_EVENT {
+  uint32_t reserved;
+  uint32_t current_policy;
+} LEAP_POLICY_EVENT;
+
+/* The tracking mode in force after a tracking-mode request or a change made elsewhere. */
+typedef struct _LEAP_TRACKING_MODE_EVENT {
+  uint32_t reserved;
+  eLeapTrackingMode current_tracking_mode;
+} LEAP_TRACKING_MODE_EVENT;
 
 typedef struct _LEAP_DROPPED_FRAME_EVENT {
   int64_t frame_id;
@@ -285,6 +305,8 @@ typedef struct _LEAP_CONNECTION_MESSAGE {
     const LEAP_DEVICE_FAILURE_EVENT* device_failure_event;
     const LEAP_TRACKING_EVENT* tracking_event;
     const LEAP_DEVICE_STATUS_CHANGE_EVENT* device_status_change_event;
+    const LEAP_POLICY_EVENT* policy_event;
+    const LEAP_TRACKING_MODE_EVENT* tracking_mode_event;
     const LEAP_DROPPED_FRAME_EVENT* dropped_frame_event;
   };
   uint32_t device_id;
@@ -298,6 +320,10 @@ LEAP_EXPORT void LEAP_CALL LeapDestroyConnection(LEAP_CONNECTION hConnection);
 LEAP_EXPORT eLeapRS LEAP_CALL LeapSetPolicyFlags(LEAP_CONNECTION hConnection, uint64_t set, uint64_t clear);
 /* Per device (multi-device-aware connections; LeapSetPolicyFlags reaches only the primary device). @since 5.4.0 */
 LEAP_EXPORT eLeapRS LEAP_CALL LeapSetPolicyFlagsEx(LEAP_CONNECTION hConnection, LEAP_DEVICE hDevice, uint64_t set, uint64_t clear);
+/* Per device; asynchronous: the answer is a TrackingMode event for the device. @since 5.4.0 */
+LEAP_EXPORT eLeapRS LEAP_CALL LeapSetTrackingModeEx(LEAP_CONNECTION hConnection, LEAP_DEVICE hDevice, eLeapTrackingMode mode);
+/* Per device; asynchronous: answered by a TrackingMode event with the mode in force. @since 5.4.0 */
+LEAP_EXPORT eLeapRS LEAP_CALL LeapGetTrackingModeEx(LEAP_CONNECTION hConnection, LEAP_DEVICE hDevice);
 LEAP_EXPORT eLeapRS LEAP_CALL LeapOpenDevice(LEAP_DEVICE_REF rDevice, LEAP_DEVICE* phDevice);
 LEAP_EXPORT void LEAP_CALL LeapCloseDevice(LEAP_DEVICE hDevice);
 LEAP_EXPORT eLeapRS LEAP_CALL LeapGetDeviceInfo(LEAP_DEVICE hDevice, LEAP_DEVICE_INFO* info);

@@ -32,8 +32,21 @@ struct Queued {
   LEAP_DROPPED_FRAME_EVENT dropped{};
   LEAP_CONNECTION_EVENT connection{};
   LEAP_CONNECTION_LOST_EVENT lost{};
+  LEAP_POLICY_EVENT policy{};
+  LEAP_TRACKING_MODE_EVENT mode{};
   LEAP_TRACKING_EVENT tracking{};
   std::vector<LEAP_HAND> hands;
+};
+
+struct Failing {
+  int times = 0;
+  eLeapRS rs = eLeapRS_Success;
+};
+
+struct PluggedDevice {
+  std::string serial;
+  eLeapDevicePID pid = eLeapDevicePID_Peripheral;
+  eLeapTrackingMode mode = eLeapTrackingMode_Desktop;
 };
 
 struct State {
@@ -41,11 +54,18 @@ struct State {
   std::condition_variable cv;
   std::deque<std::unique_ptr<Queued>> queue;
   std::unique_ptr<Queued> current;  // the message the client holds until its next poll
-  std::map<std::uint32_t, std::string> serials;  // plugged devices
+  std::map<std::uint32_t, PluggedDevice> plugged;
   std::set<std::uint32_t> subscribed;
   std::map<std::uint32_t, LEAP_DEVICE> opened;           // the client's open handles by device id
   std::map<std::uint32_t, std::uint64_t> device_policy;  // LeapSetPolicyFlagsEx, by device id
   std::map<std::uint32_t, eLeapRS> policy_ex_result;     // injected failures
+  std::map<std::uint32_t, std::uint64_t> refused_policy;
+  std::map<std::uint32_t, eLeapTrackingMode> held_mode;
+  std::map<std::uint32_t, int> requested_mode;
+  std::map<std::uint32_t, Failing> failing_open, failing_subscribe;
+  std::map<std::uint32_t, std::int64_t> tracking_frame_id;
+  int not_connected_polls = 0;
+  std::int64_t clock_offset_us = 0;
   Stats stats;
   std::atomic<int> polling{0};
 };
@@ -55,13 +75,31 @@ State& state() {
   return s;
 }
 
+void push_locked(std::unique_ptr<Queued> q) { state().queue.push_back(std::move(q)); }
+
 void push(std::unique_ptr<Queued> q) {
   State& s = state();
   {
     std::lock_guard lock(s.mutex);
-    s.queue.push_back(std::move(q));
+    push_locked(std::move(q));
   }
   s.cv.notify_all();
+}
+
+void push_mode_locked(std::uint32_t id, eLeapTrackingMode mode) {
+  auto q = std::make_unique<Queued>();
+  q->type = eLeapEventType_TrackingMode;
+  q->device_id = id;
+  q->mode.current_tracking_mode = mode;
+  push_locked(std::move(q));
+}
+
+// One injected failure used up, or eLeapRS_Success.
+eLeapRS take_failure(std::map<std::uint32_t, Failing>& failing, std::uint32_t id) {
+  auto it = failing.find(id);
+  if (it == failing.end() || it->second.times <= 0) return eLeapRS_Success;
+  --it->second.times;
+  return it->second.rs;
 }
 
 LEAP_VECTOR vec(float x, float y, float z) {
@@ -79,18 +117,26 @@ void reset() {
   std::lock_guard lock(s.mutex);
   s.queue.clear();
   s.current.reset();
-  s.serials.clear();
+  s.plugged.clear();
   s.subscribed.clear();
   s.opened.clear();
   s.device_policy.clear();
   s.policy_ex_result.clear();
+  s.refused_policy.clear();
+  s.held_mode.clear();
+  s.requested_mode.clear();
+  s.failing_open.clear();
+  s.failing_subscribe.clear();
+  s.tracking_frame_id.clear();
+  s.not_connected_polls = 0;
+  s.clock_offset_us = 0;
   s.stats = {};
 }
 
-void plug(std::uint32_t id, const std::string& serial) {
+void plug(std::uint32_t id, const std::string& serial, eLeapDevicePID pid, eLeapTrackingMode mode) {
   {
     std::lock_guard lock(state().mutex);
-    state().serials[id] = serial;
+    state().plugged[id] = {serial, pid, mode};
   }
   auto q = std::make_unique<Queued>();
   q->type = eLeapEventType_Device;
@@ -127,10 +173,50 @@ void fail_policy_ex(std::uint32_t id, eLeapRS rs) {
   else state().policy_ex_result[id] = rs;
 }
 
+void refuse_policy(std::uint32_t id, std::uint64_t flags) {
+  std::lock_guard lock(state().mutex);
+  state().refused_policy[id] = flags;
+}
+
 std::uint64_t device_policy(std::uint32_t id) {
   std::lock_guard lock(state().mutex);
   auto it = state().device_policy.find(id);
   return it == state().device_policy.end() ? 0 : it->second;
+}
+
+void hold_tracking_mode(std::uint32_t id, eLeapTrackingMode mode) {
+  std::lock_guard lock(state().mutex);
+  state().held_mode[id] = mode;
+}
+
+void change_tracking_mode(std::uint32_t id, eLeapTrackingMode mode) {
+  {
+    std::lock_guard lock(state().mutex);
+    state().plugged[id].mode = mode;
+    push_mode_locked(id, mode);
+  }
+  state().cv.notify_all();
+}
+
+int requested_tracking_mode(std::uint32_t id) {
+  std::lock_guard lock(state().mutex);
+  auto it = state().requested_mode.find(id);
+  return it == state().requested_mode.end() ? -1 : it->second;
+}
+
+void fail_open(std::uint32_t id, int times, eLeapRS rs) {
+  std::lock_guard lock(state().mutex);
+  state().failing_open[id] = {times, rs};
+}
+
+void fail_subscribe(std::uint32_t id, int times, eLeapRS rs) {
+  std::lock_guard lock(state().mutex);
+  state().failing_subscribe[id] = {times, rs};
+}
+
+void not_connected_polls(int polls) {
+  std::lock_guard lock(state().mutex);
+  state().not_connected_polls = polls;
 }
 
 void status_change(std::uint32_t id, std::uint32_t last_status, std::uint32_t status) {
@@ -173,9 +259,13 @@ void track(std::uint32_t id, std::int64_t frame_id, std::int64_t timestamp_us, f
   q->hands = hands;
   q->tracking.info.frame_id = frame_id;
   q->tracking.info.timestamp = timestamp_us;
-  q->tracking.tracking_frame_id = frame_id;
   q->tracking.framerate = framerate;
-  push(std::move(q));
+  {
+    std::lock_guard lock(state().mutex);
+    q->tracking.tracking_frame_id = ++state().tracking_frame_id[id];
+    push_locked(std::move(q));
+  }
+  state().cv.notify_all();
 }
 
 LEAP_HAND make_hand(eLeapHandType type, float base) {
@@ -199,6 +289,13 @@ LEAP_HAND make_hand(eLeapHandType type, float base) {
   return h;
 }
 
+void set_clock_offset_us(std::int64_t offset) {
+  std::lock_guard lock(state().mutex);
+  state().clock_offset_us = offset;
+}
+
+std::int64_t now_us() { return LeapGetNow(); }
+
 Stats stats() {
   State& s = state();
   std::lock_guard lock(s.mutex);
@@ -209,6 +306,7 @@ Stats stats() {
 
 }  // namespace fake_leapc
 
+using fake_leapc::Queued;
 using fake_leapc::state;
 
 extern "C" {
@@ -249,11 +347,49 @@ eLeapRS LeapSetPolicyFlags(LEAP_CONNECTION c, uint64_t set, uint64_t clear) {
 
 eLeapRS LeapSetPolicyFlagsEx(LEAP_CONNECTION c, LEAP_DEVICE d, uint64_t set, uint64_t clear) {
   if (c == nullptr || d == nullptr) return eLeapRS_InvalidArgument;
-  std::lock_guard lock(state().mutex);
-  ++state().stats.policy_ex_calls;
-  if (auto it = state().policy_ex_result.find(d->id); it != state().policy_ex_result.end()) return it->second;
-  auto& flags = state().device_policy[d->id];
-  flags = (flags | set) & ~clear;
+  {
+    std::lock_guard lock(state().mutex);
+    auto& s = state();
+    ++s.stats.policy_ex_calls;
+    if (auto it = s.policy_ex_result.find(d->id); it != s.policy_ex_result.end()) return it->second;
+    auto& flags = s.device_policy[d->id];
+    flags = (flags | set) & ~clear;
+    if (auto it = s.refused_policy.find(d->id); it != s.refused_policy.end()) flags &= ~it->second;
+    // The request is accepted; what the service made of it arrives later, as a Policy event.
+    auto q = std::make_unique<Queued>();
+    q->type = eLeapEventType_Policy;
+    q->device_id = d->id;
+    q->policy.current_policy = static_cast<uint32_t>(flags);
+    fake_leapc::push_locked(std::move(q));
+  }
+  state().cv.notify_all();
+  return eLeapRS_Success;
+}
+
+eLeapRS LeapSetTrackingModeEx(LEAP_CONNECTION c, LEAP_DEVICE d, eLeapTrackingMode mode) {
+  if (c == nullptr || d == nullptr) return eLeapRS_InvalidArgument;
+  {
+    std::lock_guard lock(state().mutex);
+    auto& s = state();
+    ++s.stats.tracking_mode_calls;
+    s.requested_mode[d->id] = mode;
+    auto& device = s.plugged[d->id];
+    auto held = s.held_mode.find(d->id);
+    device.mode = held != s.held_mode.end() ? held->second : mode;
+    fake_leapc::push_mode_locked(d->id, device.mode);
+  }
+  state().cv.notify_all();
+  return eLeapRS_Success;
+}
+
+eLeapRS LeapGetTrackingModeEx(LEAP_CONNECTION c, LEAP_DEVICE d) {
+  if (c == nullptr || d == nullptr) return eLeapRS_InvalidArgument;
+  {
+    std::lock_guard lock(state().mutex);
+    ++state().stats.tracking_mode_queries;
+    fake_leapc::push_mode_locked(d->id, state().plugged[d->id].mode);
+  }
+  state().cv.notify_all();
   return eLeapRS_Success;
 }
 
@@ -271,6 +407,17 @@ eLeapRS LeapPollConnection(LEAP_CONNECTION c, uint32_t timeout, LEAP_CONNECTION_
   std::memset(evt, 0, sizeof *evt);
   evt->size = sizeof *evt;
   evt->type = eLeapEventType_None;
+  if (s.not_connected_polls > 0) {
+    // No service yet: LeapC answers at once, nothing is delivered. Once the service is up, the
+    // first message is the Connection event.
+    if (--s.not_connected_polls == 0) {
+      auto q = std::make_unique<Queued>();
+      q->type = eLeapEventType_Connection;
+      s.queue.push_front(std::move(q));
+    }
+    s.polling.fetch_sub(1);
+    return eLeapRS_NotConnected;
+  }
   const auto deadline = std::chrono::steady_clock::now() + std::chrono::milliseconds(timeout);
   for (;;) {
     while (!s.queue.empty()) {
@@ -296,6 +443,8 @@ eLeapRS LeapPollConnection(LEAP_CONNECTION c, uint32_t timeout, LEAP_CONNECTION_
         case eLeapEventType_DroppedFrame: evt->dropped_frame_event = &q->dropped; break;
         case eLeapEventType_Connection: evt->connection_event = &q->connection; break;
         case eLeapEventType_ConnectionLost: evt->connection_lost_event = &q->lost; break;
+        case eLeapEventType_Policy: evt->policy_event = &q->policy; break;
+        case eLeapEventType_TrackingMode: evt->tracking_mode_event = &q->mode; break;
         case eLeapEventType_Tracking: evt->tracking_event = &q->tracking; break;
         default: break;
       }
@@ -312,11 +461,14 @@ eLeapRS LeapPollConnection(LEAP_CONNECTION c, uint32_t timeout, LEAP_CONNECTION_
 eLeapRS LeapOpenDevice(LEAP_DEVICE_REF ref, LEAP_DEVICE* out) {
   if (out == nullptr) return eLeapRS_InvalidArgument;
   std::lock_guard lock(state().mutex);
-  auto it = state().serials.find(ref.id);
-  if (it == state().serials.end()) return eLeapRS_CannotOpenDevice;
-  ++state().stats.devices_opened;
-  *out = new _LEAP_DEVICE{ref.id, it->second};
-  state().opened[ref.id] = *out;
+  auto& s = state();
+  ++s.stats.open_attempts;
+  auto it = s.plugged.find(ref.id);
+  if (it == s.plugged.end()) return eLeapRS_CannotOpenDevice;
+  if (const eLeapRS rs = fake_leapc::take_failure(s.failing_open, ref.id); rs != eLeapRS_Success) return rs;
+  ++s.stats.devices_opened;
+  *out = new _LEAP_DEVICE{ref.id, it->second.serial};
+  s.opened[ref.id] = *out;
   return eLeapRS_Success;
 }
 
@@ -334,7 +486,11 @@ eLeapRS LeapGetDeviceInfo(LEAP_DEVICE d, LEAP_DEVICE_INFO* info) {
   if (d == nullptr || info == nullptr || info->size != sizeof(LEAP_DEVICE_INFO)) return eLeapRS_InvalidArgument;
   const auto needed = static_cast<uint32_t>(d->serial.size() + 1);
   info->status = eLeapDeviceStatus_Streaming;
-  info->pid = eLeapDevicePID_Peripheral;
+  {
+    std::lock_guard lock(state().mutex);
+    auto it = state().plugged.find(d->id);
+    info->pid = it == state().plugged.end() ? eLeapDevicePID_Unknown : it->second.pid;
+  }
   info->baseline = 40000;
   info->h_fov = 2.618F;
   info->v_fov = 2.094F;
@@ -352,8 +508,11 @@ eLeapRS LeapGetDeviceInfo(LEAP_DEVICE d, LEAP_DEVICE_INFO* info) {
 eLeapRS LeapSubscribeEvents(LEAP_CONNECTION c, LEAP_DEVICE d) {
   if (c == nullptr || d == nullptr) return eLeapRS_InvalidArgument;
   std::lock_guard lock(state().mutex);
-  ++state().stats.subscribed;
-  state().subscribed.insert(d->id);
+  auto& s = state();
+  ++s.stats.subscribe_attempts;
+  if (const eLeapRS rs = fake_leapc::take_failure(s.failing_subscribe, d->id); rs != eLeapRS_Success) return rs;
+  ++s.stats.subscribed;
+  s.subscribed.insert(d->id);
   return eLeapRS_Success;
 }
 
@@ -366,7 +525,13 @@ eLeapRS LeapUnsubscribeEvents(LEAP_CONNECTION c, LEAP_DEVICE d) {
 }
 
 int64_t LeapGetNow(void) {
-  return std::chrono::duration_cast<std::chrono::microseconds>(std::chrono::steady_clock::now().time_since_epoch()).count();
+  std::int64_t offset = 0;
+  {
+    std::lock_guard lock(state().mutex);
+    offset = state().clock_offset_us;
+  }
+  return std::chrono::duration_cast<std::chrono::microseconds>(std::chrono::steady_clock::now().time_since_epoch()).count() +
+         offset;
 }
 
 }  // extern "C"

@@ -1,8 +1,11 @@
 // The LeapC backend against the LeapC test double: discovery, four serials → slots, interleaved
-// tracking events, right-hand selection, a device lost mid-stream and coming back under a new id,
-// failures, dropped frames, a lost service connection (devices/leapc/README.md).
+// tracking events, right-hand selection and the other side's only hand, a device lost mid-stream
+// and coming back under a new id, failures, dropped frames summed per second, a lost service
+// connection, a service not up yet, tracking modes and policies answered asynchronously, product
+// ids, the study's frame ids, duplicate serials, retried opens and subscribes, the device clock.
 #include <chrono>
 #include <functional>
+#include <initializer_list>
 #include <string>
 #include <thread>
 #include <vector>
@@ -11,6 +14,7 @@
 
 #include "devices/device_hub.h"
 #include "devices/leapc/leapc_source.h"
+#include "devices/record/clock_alignment.h"
 #include "fake_leapc.h"
 
 namespace lmc::devices {
@@ -46,12 +50,38 @@ struct Recorded : FrameConsumer {
     frames.push_back(f);
     return true;
   }
-  void device_event(const DeviceEvent&, int, const std::string&) override {}
+  std::vector<DeviceEvent> events;
+  std::vector<int> other_side;  // device id of every frame marked as the other side's only hand
+  void device_event(const DeviceEvent& e, int, const std::string&) override {
+    std::lock_guard lock(m);
+    events.push_back(e);
+  }
+  void other_side_hand(int device_id, std::int64_t) override {
+    std::lock_guard lock(m);
+    other_side.push_back(device_id);
+  }
   size_t size() {
     std::lock_guard lock(m);
     return frames.size();
   }
 };
+
+bool has_message(const std::vector<std::string>& messages, std::initializer_list<const char*> parts) {
+  for (const auto& m : messages) {
+    bool all = true;
+    for (const char* p : parts) all = all && m.find(p) != std::string::npos;
+    if (all) return true;
+  }
+  return false;
+}
+
+// Every message the hub has had, gathered until `parts` all appear in one (or the time is up).
+bool wait_for_message(DeviceHub& hub, std::vector<std::string>& seen, std::initializer_list<const char*> parts) {
+  return wait_for([&] {
+    for (auto& m : hub.take_messages()) seen.push_back(m);
+    return has_message(seen, parts);
+  });
+}
 
 class LeapcBackend : public ::testing::Test {
  protected:
@@ -115,7 +145,7 @@ TEST_F(LeapcBackend, FourDevicesAreDiscoveredSubscribedAndMappedBySerial) {
   for (int slot = 1; slot <= 4; ++slot) EXPECT_EQ(per_slot[slot], 5);
 }
 
-TEST_F(LeapcBackend, FrameWithoutTheWantedHandHasNoHand) {
+TEST_F(LeapcBackend, TheOnlyHandOfTheOtherSideIsKeptAndCounted) {
   DeviceHub hub(layout_with_serials());
   Recorded rec;
   hub.set_consumer(&rec);
@@ -123,13 +153,26 @@ TEST_F(LeapcBackend, FrameWithoutTheWantedHandHasNoHand) {
   hub.start();
   fake_leapc::plug(1, "LP11111");
   ASSERT_TRUE(wait_for([&] { return fake_leapc::stats().subscribed == 1; }));
+  // The subject's right hand misclassified as left, alone in view: kept, marked.
   fake_leapc::track(1, 1, 100, 0.0F, {fake_leapc::make_hand(eLeapHandType_Left, 5)});
-  fake_leapc::track(1, 2, 200, 0.0F, {});
-  ASSERT_TRUE(wait_for([&] { return rec.size() == 2; }));
+  // Both sides in view: the right one, nothing to count.
+  fake_leapc::track(1, 2, 200, 0.0F,
+                    {fake_leapc::make_hand(eLeapHandType_Left, 7), fake_leapc::make_hand(eLeapHandType_Right, 9)});
+  // Two hands, both left: which one is the subject's is anyone's guess, so no hand.
+  fake_leapc::track(1, 3, 300, 0.0F,
+                    {fake_leapc::make_hand(eLeapHandType_Left, 11), fake_leapc::make_hand(eLeapHandType_Left, 13)});
+  fake_leapc::track(1, 4, 400, 0.0F, {});
+  ASSERT_TRUE(wait_for([&] { return rec.size() == 4; }));
   hub.stop();
-  EXPECT_FALSE(rec.frames[0].hand_present);
-  EXPECT_FALSE(rec.frames[1].hand_present);
-  EXPECT_EQ(rec.frames[1].timestamp_us, 200);
+  ASSERT_TRUE(rec.frames[0].hand_present);
+  EXPECT_DOUBLE_EQ(rec.frames[0].point(kPalm).x(), 5.0);
+  ASSERT_TRUE(rec.frames[1].hand_present);
+  EXPECT_DOUBLE_EQ(rec.frames[1].point(kPalm).x(), 9.0);
+  EXPECT_FALSE(rec.frames[2].hand_present);
+  EXPECT_FALSE(rec.frames[3].hand_present);
+  EXPECT_EQ(rec.frames[3].timestamp_us, 400);
+  EXPECT_EQ(rec.other_side, std::vector<int>{1});  // one frame, of LMC1
+  EXPECT_EQ(hub.snapshot().devices[0].frames_other_side_hand, 1);
 }
 
 TEST_F(LeapcBackend, DeviceLostMidStreamAndBackUnderANewIdKeepsItsSlot) {
@@ -243,6 +286,250 @@ TEST_F(LeapcBackend, DeviceFailureIsMatchedByItsDeviceHandle) {
   bool found = false;
   for (const auto& m : msgs) found = found || m.find("LMC4 (LP44444) failure: bad transport") != std::string::npos;
   EXPECT_TRUE(found) << (msgs.empty() ? std::string("no message") : msgs.front());
+}
+
+TEST_F(LeapcBackend, EachDeviceIsAskedForTheTrackingModeOfItsPlaceAndItsModeAndModelAreShown) {
+  Layout l = layout_with_serials();
+  l.devices[0].pose.rx_deg = 180;  // LMC1 hangs above the hand, looking down
+  LeapcOptions o;
+  o.layout = l;
+  DeviceHub hub(l);
+  hub.add_source(std::make_unique<LeapcSource>(o));
+  hub.start();
+  // Both left in head-mounted mode by another program; LMC2 is a Leap Motion Controller 2.
+  fake_leapc::plug(1, "LP11111", eLeapDevicePID_Peripheral, eLeapTrackingMode_HMD);
+  fake_leapc::plug(2, "LP22222", eLeapDevicePID_LMC2, eLeapTrackingMode_HMD);
+  auto modes_known = [&] {
+    const auto snap = hub.snapshot();
+    return snap.devices.size() == 2 && !snap.devices[0].tracking_mode.empty() &&
+           !snap.devices[1].tracking_mode.empty();
+  };
+  ASSERT_TRUE(wait_for(modes_known));
+  EXPECT_EQ(fake_leapc::requested_tracking_mode(1), eLeapTrackingMode_ScreenTop);
+  EXPECT_EQ(fake_leapc::requested_tracking_mode(2), eLeapTrackingMode_Desktop);
+  EXPECT_EQ(fake_leapc::stats().tracking_mode_calls, 2);
+  EXPECT_EQ(fake_leapc::stats().tracking_mode_queries, 2);
+  const auto snap = hub.snapshot();
+  EXPECT_EQ(snap.devices[0].slot, "LMC1");
+  EXPECT_EQ(snap.devices[0].model, "Leap Motion Controller");
+  EXPECT_EQ(snap.devices[0].tracking_mode, "screen-top");
+  EXPECT_EQ(snap.devices[1].slot, "LMC2");
+  EXPECT_EQ(snap.devices[1].model, "Leap Motion Controller 2");
+  EXPECT_EQ(snap.devices[1].tracking_mode, "desktop");
+
+  // The control panel switches LMC2 to head-mounted mid-session: reported, shown.
+  std::vector<std::string> seen;
+  fake_leapc::change_tracking_mode(2, eLeapTrackingMode_HMD);
+  ASSERT_TRUE(wait_for_message(hub, seen, {"LMC2 (LP22222) tracks in head-mounted mode", "not the desktop mode"}));
+  EXPECT_EQ(hub.snapshot().devices[1].tracking_mode, "head-mounted");
+  hub.stop();
+}
+
+TEST_F(LeapcBackend, AModeTheServiceKeepsIsReportedAsWrong) {
+  DeviceHub hub(layout_with_serials());
+  hub.add_source(std::make_unique<LeapcSource>());
+  hub.start();
+  fake_leapc::hold_tracking_mode(3, eLeapTrackingMode_ScreenTop);
+  fake_leapc::plug(3, "LP33333");
+  std::vector<std::string> seen;
+  ASSERT_TRUE(wait_for_message(hub, seen, {"LMC3 (LP33333) tracks in screen-top mode", "not the desktop mode"}));
+  EXPECT_EQ(hub.snapshot().devices[0].tracking_mode, "screen-top");
+  hub.stop();
+}
+
+TEST_F(LeapcBackend, AListingLearnsEachModeWithoutChangingIt) {
+  LeapcOptions o;
+  o.request_tracking_mode = false;  // as `lmc devices` runs it
+  DeviceHub hub(layout_with_serials());
+  hub.add_source(std::make_unique<LeapcSource>(o));
+  hub.start();
+  fake_leapc::plug(4, "LP44444", eLeapDevicePID_SIR170, eLeapTrackingMode_HMD);
+  ASSERT_TRUE(wait_for([&] {
+    const auto snap = hub.snapshot();
+    return snap.devices.size() == 1 && !snap.devices[0].tracking_mode.empty();
+  }));
+  const auto snap = hub.snapshot();
+  hub.stop();
+  EXPECT_EQ(fake_leapc::requested_tracking_mode(4), -1);
+  EXPECT_EQ(snap.devices[0].tracking_mode, "head-mounted");
+  EXPECT_EQ(snap.devices[0].model, "Stereo IR 170");
+}
+
+TEST_F(LeapcBackend, APolicyTheServiceRefusesIsReported) {
+  DeviceHub hub(layout_with_serials());
+  hub.add_source(std::make_unique<LeapcSource>());
+  hub.start();
+  // The request is accepted; the answer (a Policy event) comes later without the flag.
+  fake_leapc::refuse_policy(2, eLeapPolicyFlag_BackgroundFrames);
+  fake_leapc::plug(1, "LP11111");
+  fake_leapc::plug(2, "LP22222");
+  std::vector<std::string> seen;
+  ASSERT_TRUE(wait_for_message(hub, seen, {"LMC2 (LP22222)", "refused the background-frames policy"}));
+  ASSERT_TRUE(wait_for([&] { return drained() == 0; }));
+  for (auto& m : hub.take_messages()) seen.push_back(m);
+  hub.stop();
+  EXPECT_FALSE(has_message(seen, {"LP11111", "refused"}));
+  EXPECT_EQ(fake_leapc::stats().policy_ex_calls, 2);
+}
+
+TEST_F(LeapcBackend, FramesCarryTheServicesImageFrameIdAsTheStudysFilesDo) {
+  DeviceHub hub(layout_with_serials());
+  Recorded rec;
+  hub.set_consumer(&rec);
+  hub.add_source(std::make_unique<LeapcSource>());
+  hub.start();
+  fake_leapc::plug(1, "LP11111");
+  ASSERT_TRUE(wait_for([&] { return fake_leapc::stats().subscribed == 1; }));
+  // The service dropped images 5001 and 5002: info.frame_id skips, tracking_frame_id (1, 2) does not.
+  fake_leapc::track(1, 5000, 100, 30.0F, {fake_leapc::make_hand(eLeapHandType_Right, 1)});
+  fake_leapc::track(1, 5003, 200, 30.0F, {fake_leapc::make_hand(eLeapHandType_Right, 1)});
+  ASSERT_TRUE(wait_for([&] { return rec.size() == 2; }));
+  hub.stop();
+  EXPECT_EQ(rec.frames[0].frame_id, 5000);
+  EXPECT_EQ(rec.frames[1].frame_id, 5003);
+  EXPECT_EQ(hub.snapshot().devices[0].frames_dropped, 2);
+}
+
+TEST_F(LeapcBackend, TwoDevicesWithOneSerialAreNeverMixedInOneSlot) {
+  Layout l = layout_with_serials();
+  l.devices[0].serial.reset();  // LMC1 takes whichever controller comes first
+  DeviceHub hub(l);
+  Recorded rec;
+  hub.set_consumer(&rec);
+  hub.add_source(std::make_unique<LeapcSource>());
+  hub.start();
+  // A service before 5.4 gives placeholders instead of serials.
+  fake_leapc::plug(1, "device_1");
+  fake_leapc::plug(2, "device_1");
+  std::vector<std::string> seen;
+  ASSERT_TRUE(wait_for_message(hub, seen, {"refused the controller with device id 2", "device_1", "update the Ultraleap service"}));
+  fake_leapc::track(1, 1, 100, 0, {fake_leapc::make_hand(eLeapHandType_Right, 1)});
+  fake_leapc::track(2, 1, 105, 0, {fake_leapc::make_hand(eLeapHandType_Right, 2)});
+  fake_leapc::track(1, 2, 130, 0, {fake_leapc::make_hand(eLeapHandType_Right, 1)});
+  ASSERT_TRUE(wait_for([&] { return drained() == 0 && rec.size() == 2; }));
+  hub.stop();
+  EXPECT_EQ(fake_leapc::stats().subscribed, 1);
+  EXPECT_EQ(fake_leapc::stats().tracking_suppressed, 1);
+  EXPECT_EQ(hub.serial_to_slot().size(), 1u);
+  for (const auto& f : rec.frames) EXPECT_DOUBLE_EQ(f.point(kPalm).x(), 1.0) << "only device 1's hand";
+}
+
+TEST_F(LeapcBackend, AFailedOpenOrSubscribeIsRetriedAndANeverSubscribedDeviceIsNotConnected) {
+  LeapcOptions o;
+  o.retry_interval_ms = 10;
+  o.max_attempts = 4;
+  DeviceHub hub(layout_with_serials());
+  Recorded rec;
+  hub.set_consumer(&rec);
+  hub.add_source(std::make_unique<LeapcSource>(o));
+  hub.start();
+  fake_leapc::fail_open(1, 2);
+  fake_leapc::fail_subscribe(2, 2);
+  fake_leapc::fail_subscribe(3, 100);  // never
+  fake_leapc::plug(1, "LP11111");
+  fake_leapc::plug(2, "LP22222");
+  fake_leapc::plug(3, "LP33333");
+  std::vector<std::string> seen;
+  ASSERT_TRUE(wait_for_message(hub, seen, {"LP33333", "gave up after 4 attempts"}));
+  ASSERT_TRUE(wait_for([&] { return fake_leapc::stats().subscribed == 2; }));
+  fake_leapc::track(1, 1, 100, 0, {fake_leapc::make_hand(eLeapHandType_Right, 1)});
+  fake_leapc::track(2, 1, 100, 0, {fake_leapc::make_hand(eLeapHandType_Right, 2)});
+  fake_leapc::track(3, 1, 100, 0, {fake_leapc::make_hand(eLeapHandType_Right, 3)});
+  ASSERT_TRUE(wait_for([&] { return drained() == 0 && rec.size() == 2; }));
+  const auto snap = hub.snapshot();
+  hub.stop();
+  const auto st = fake_leapc::stats();
+  EXPECT_EQ(st.open_attempts, 3 + 1 + 1);
+  EXPECT_EQ(st.subscribe_attempts, 1 + 3 + 4);
+  EXPECT_TRUE(has_message(seen, {"cannot open device 1", "trying again"}));
+  ASSERT_EQ(snap.devices.size(), 2u) << "LP33333 never subscribed: not shown";
+  for (const auto& d : snap.devices) {
+    EXPECT_TRUE(d.connected) << d.serial;
+    EXPECT_NE(d.serial, "LP33333");
+  }
+  EXPECT_EQ(st.devices_closed, 3) << "the one given up on is closed at once, the two others at stop";
+}
+
+TEST_F(LeapcBackend, AServiceNotRunningYetIsWaitedFor) {
+  fake_leapc::not_connected_polls(5);
+  DeviceHub hub(layout_with_serials());
+  hub.add_source(std::make_unique<LeapcSource>());
+  hub.start();
+  fake_leapc::plug(1, "LP11111");
+  ASSERT_TRUE(wait_for([&] { return hub.snapshot().devices.size() == 1 && hub.snapshot().devices[0].connected; }));
+  std::vector<std::string> seen;
+  ASSERT_TRUE(wait_for_message(hub, seen, {"connected to the Ultraleap service"}));
+  hub.stop();
+  int waiting = 0;
+  for (const auto& m : seen) waiting += m.find("waiting for the Ultraleap service (LeapC: eLeapRS_NotConnected)") != std::string::npos;
+  EXPECT_EQ(waiting, 1) << "said once, not once per poll";
+}
+
+TEST_F(LeapcBackend, DroppedFramesAreSummedPerDeviceAndSecond) {
+  DeviceHub hub(layout_with_serials());
+  Recorded rec;
+  hub.set_consumer(&rec);
+  hub.add_source(std::make_unique<LeapcSource>());
+  hub.start();
+  fake_leapc::plug(1, "LP11111");
+  ASSERT_TRUE(wait_for([&] { return fake_leapc::stats().subscribed == 1; }));
+  for (int k = 0; k < 300; ++k) fake_leapc::dropped_frame(1, 100 + k);
+  ASSERT_TRUE(wait_for([&] { return drained() == 0; }));
+  hub.stop();  // what is still pending is reported at the stop, never lost
+  int events = 0;
+  std::int64_t total = 0;
+  for (const auto& e : rec.events) {
+    if (e.kind != DeviceEventKind::kDroppedFrames) continue;
+    ++events;
+    total += e.count;
+    EXPECT_EQ(e.info.serial, "LP11111");
+  }
+  EXPECT_EQ(total, 300);
+  EXPECT_LE(events, 3) << "one event per second at most, not one per frame";
+  EXPECT_EQ(hub.snapshot().devices[0].frames_dropped, 300);
+}
+
+TEST_F(LeapcBackend, TheDeviceClockAtAViconEventIsReadNotExtrapolatedFromTheLatestFrame) {
+  fake_leapc::set_clock_offset_us(7'000'000'000);  // the Leap clock's epoch is its own
+  DeviceHub hub(layout_with_serials());
+  Recorded rec;
+  hub.set_consumer(&rec);
+  hub.add_source(std::make_unique<LeapcSource>());
+  hub.start();
+  fake_leapc::plug(1, "LP11111");
+  ASSERT_TRUE(wait_for([&] { return fake_leapc::stats().subscribed == 1; }));
+  // Captured 40 ms before the service hands it over.
+  const std::int64_t latency_us = 40'000;
+  fake_leapc::track(1, 1, fake_leapc::now_us() - latency_us, 30.0F, {fake_leapc::make_hand(eLeapHandType_Right, 1)});
+  ASSERT_TRUE(wait_for([&] { return rec.size() == 1; }));
+  const std::int64_t before_us = fake_leapc::now_us();
+  const HubSnapshot snap = hub.snapshot();
+  const std::int64_t after_us = fake_leapc::now_us();
+  hub.stop();
+  ASSERT_EQ(snap.devices.size(), 1u);
+  ASSERT_TRUE(snap.devices[0].device_clock_us.has_value());
+  EXPECT_GE(*snap.devices[0].device_clock_us, before_us);
+  EXPECT_LE(*snap.devices[0].device_clock_us, after_us);
+
+  // Vicon started 2 ms after the snapshot.
+  const auto j = clock_alignment_json(snap, "CaptureStart sent", snap.host_time_ns + 2'000'000, 1, "");
+  const auto& d = j["devices"][0];
+  EXPECT_EQ(d["device_clock_method"], "read");
+  EXPECT_EQ(d["device_clock_at_event_us"].get<std::int64_t>(), *snap.devices[0].device_clock_us + 2'000);
+  // The old estimate runs late by the latest frame's delivery latency (40 ms, plus however long
+  // the poll thread took to pick it up); that latency is kept beside it.
+  const std::int64_t late_by =
+      d["device_clock_at_event_us"].get<std::int64_t>() - d["device_clock_extrapolated_us"].get<std::int64_t>();
+  EXPECT_GE(late_by, latency_us - 1);
+  EXPECT_LT(late_by, latency_us + 2'000'000);
+  EXPECT_NEAR(static_cast<double>(d["latest_frame_latency_us"].get<std::int64_t>()), static_cast<double>(late_by), 1.0);
+}
+
+TEST(LeapcNames, ModelOfEachProductId) {
+  EXPECT_EQ(leapc_model_name(eLeapDevicePID_Peripheral), "Leap Motion Controller");
+  EXPECT_EQ(leapc_model_name(eLeapDevicePID_LMC2), "Leap Motion Controller 2");
+  EXPECT_EQ(leapc_model_name(eLeapDevicePID_SIR170), "Stereo IR 170");
+  EXPECT_EQ(leapc_model_name(0x1234), "Ultraleap device (product id 0x1234)");
 }
 
 TEST(LeapcNames, ResultAndStatusText) {

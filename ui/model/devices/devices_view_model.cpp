@@ -77,6 +77,8 @@ void DevicesViewModel::refresh() {
     r.slot = s.slot;
     r.slot_index = s.slot_index;
     r.backend = s.backend;
+    r.model = s.model;
+    r.tracking_mode = s.tracking_mode;
     r.rate_hz = s.rate_hz;
     r.age_ms = s.latest_frame_age_ms;
     r.hand_present = s.hand_present;

@@ -24,6 +24,8 @@ struct DeviceRow {
   std::string slot;  // empty: unassigned
   int slot_index = -1;
   std::string backend;
+  std::string model;          // "Leap Motion Controller 2", …; empty when the backend did not say
+  std::string tracking_mode;  // "desktop", "screen-top", …; empty until the backend reports it
   std::string status;  // "streaming", "no hand", "stalled", "disconnected", "unassigned"
   double rate_hz = 0;
   double age_ms = -1;

@@ -1,8 +1,8 @@
 // The Devices tab: every connected controller (or the simulated rig) with serial,
-// slot (assign by dropdown), backend, status, rate, hand present and latest frame age; a live 3-D
-// view of every device's hand realigned into the world frame, one colour per device, so a
-// misplaced controller shows at a glance; start/stop of a test recording through the one trial
-// engine; the Calibrate step (devices_calibrate_panel.h) above the device log. It drives the
+// slot (assign by dropdown), backend, model, tracking mode, status, rate, hand present and latest
+// frame age; a live 3-D view of every device's hand realigned into the world frame, one colour per
+// device, so a misplaced controller shows at a glance; start/stop of a test recording through the
+// one trial engine; the Calibrate step (devices_calibrate_panel.h) above the device log. It drives the
 // workbench's live rig (shared with the Record tab) with the layout open in the Layout tab. All
 // logic lives in ui/model/devices/devices_view_model.h; this file only draws (ImGui draw list
 // through the shared orbit camera and hand bones of ui/scene).
@@ -209,8 +209,9 @@ class DevicesTab final : public Tab {
   void draw_table() {
     const auto& rows = vm_.rows();
     const ImGuiTableFlags flags = ImGuiTableFlags_RowBg | ImGuiTableFlags_BordersInnerV | ImGuiTableFlags_SizingFixedFit;
-    if (!ImGui::BeginTable("devices", 10, flags)) return;
-    for (const char* h : {"", "Serial", "Slot", "Backend", "Status", "Rate", "Hand", "Frame age", "Frames", "Dropped"})
+    if (!ImGui::BeginTable("devices", 12, flags)) return;
+    for (const char* h : {"", "Serial", "Slot", "Backend", "Model", "Mode", "Status", "Rate", "Hand", "Frame age",
+                          "Frames", "Dropped"})
       ImGui::TableSetupColumn(h);
     ImGui::TableHeadersRow();
     const auto slots = vm_.slot_choices();
@@ -237,6 +238,14 @@ class DevicesTab final : public Tab {
       }
       ImGui::TableNextColumn();
       ImGui::TextUnformatted(r.backend.c_str());
+      ImGui::TableNextColumn();
+      if (r.model.empty()) ImGui::TextDisabled("-");
+      else ImGui::TextUnformatted(r.model.c_str());
+      ImGui::TableNextColumn();
+      // The tracking mode the service reports: anything but what the layout implies is a warning
+      // in the device messages; here it is just shown.
+      if (r.tracking_mode.empty()) ImGui::TextDisabled("-");
+      else ImGui::TextUnformatted(r.tracking_mode.c_str());
       ImGui::TableNextColumn();
       if (r.warn) ImGui::TextColored(ImVec4(1.0F, 0.55F, 0.3F, 1.0F), "%s", r.status.c_str());
       else ImGui::TextUnformatted(r.status.c_str());
