@@ -90,7 +90,8 @@ void ReviewExportPanel::draw_window(ReviewState& state) {
   if (!open_) return;
   const ImGuiViewport* viewport = ImGui::GetMainViewport();
   ImGui::SetNextWindowPos(viewport->GetCenter(), ImGuiCond_Appearing, ImVec2(0.5F, 0.5F));
-  ImGui::SetNextWindowSize(ImVec2(700, 470), ImGuiCond_Appearing);
+  ImGui::SetNextWindowSize(ImVec2(700, 440), ImGuiCond_Appearing);
+  ImGui::SetNextWindowBgAlpha(1.0F);  // over the plots, whose lines would show through
   if (ImGui::Begin("Export###review_export_window", &open_, ImGuiWindowFlags_NoCollapse | ImGuiWindowFlags_NoSavedSettings)) {
     const bool running = state.motion_export().running();
     ImGui::BeginDisabled(running);
@@ -125,8 +126,9 @@ void ReviewExportPanel::draw_what(const ReviewState& state) {
   const std::string shown_label = "The " + trials_word(static_cast<long long>(shown)) + " the table shows (its filter)";
   if (ImGui::RadioButton(shown_label.c_str(), what_ == What::kShown)) what_ = What::kShown;
   anchors_.remember("export.what.shown");
-  const std::string bids_label = "The opened folders as a BIDS-motion dataset (" + std::to_string(state.folders().size()) +
-                                 " folder(s), every trial)";
+  const size_t folders = state.folders().size();
+  const std::string bids_label = "The opened folders as a BIDS-motion dataset (" + std::to_string(folders) +
+                                 (folders == 1 ? " folder" : " folders") + ", every trial)";
   if (ImGui::RadioButton(bids_label.c_str(), what_ == What::kBids)) what_ = What::kBids;
   anchors_.remember("export.what.bids");
   if (what_ != before) suggest_paths();

@@ -31,9 +31,11 @@ class ReviewTab final : public Tab {
   void update(bool /*shown*/) override {
     take_review_requests();
     const bool was_busy = state_.batch_job().running();
-    const bool was_exporting = state_.motion_export().running();
     state_.update();
-    if (was_exporting && !state_.motion_export().running()) report_export();
+    // Across frames: the export ends on its worker whenever it ends.
+    const bool exporting = state_.motion_export().running();
+    if (was_exporting_ && !exporting) report_export();
+    was_exporting_ = exporting;
     if (was_busy && !state_.batch_job().running()) {
       if (const ReviewBatch* b = state_.batch()) {
         status_.set_status("Review: " + std::to_string(b->trials.size()) + " trial(s) ready (" + std::to_string(b->from_cache) +
@@ -163,6 +165,7 @@ class ReviewTab final : public Tab {
   ReviewTrialView trial_view_;
   ReviewAgreementView agreement_view_;
   ReviewExportPanel export_panel_;
+  bool was_exporting_ = false;  // as last updated: a finished export is reported once
   int pending_view_ = -1;  // a capture's request: 0 the trial view, 1 agreement, 2 study tables
   float table_dragged_px_ = 0.0F;  // the trial table's height once the splitter was dragged (0: the default)
 };
