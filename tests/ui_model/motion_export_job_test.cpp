@@ -151,6 +151,7 @@ TEST_F(MotionExport, WritesTheChosenTrialsAsC3dOnAWorkerWithProgress) {
   MotionExportJob job;
   job.start(trial_export_plan(all, {0, 1}, SessionOptions{}, {}, out, ExportFormat::kC3d, ExportAxes::kWorld, false));
   EXPECT_EQ(job.folder(), out);
+  EXPECT_EQ(job.runs(), 1);  // the tab reports each run's outcome once by this count
   job.wait();
   ASSERT_EQ(job.state(), JobState::kCompleted) << job.error();
   const auto outcome = job.outcome();

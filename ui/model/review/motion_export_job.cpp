@@ -198,6 +198,7 @@ void MotionExportJob::start(MotionExportPlan plan) {
   folder_ = plan.folder;
   plan_notes_ = plan.notes;
   bids_ = plan.bids.has_value();
+  ++runs_;
   job_.start([plan = std::move(plan)](std::stop_token stop, JobChannel<Report>& channel) {
     return run_motion_export(
         plan, stop, [&channel](int done, int total) { channel.set_progress(done, total); },

@@ -89,6 +89,9 @@ class MotionExportJob {
   const std::filesystem::path& folder() const { return folder_; }
   const std::vector<std::string>& plan_notes() const { return plan_notes_; }
   bool is_bids() const { return bids_; }
+  // Exports started so far: tells a new outcome from one already reported (a failure can begin and
+  // end between two frames).
+  int runs() const { return runs_; }
 
  private:
   struct Report {};
@@ -96,6 +99,7 @@ class MotionExportJob {
   std::filesystem::path folder_;
   std::vector<std::string> plan_notes_;
   bool bids_ = false;
+  int runs_ = 0;
 };
 
 }  // namespace lmc::ui

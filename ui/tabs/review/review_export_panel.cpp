@@ -131,7 +131,10 @@ void ReviewExportPanel::draw_what(const ReviewState& state) {
                                  (folders == 1 ? " folder" : " folders") + ", every trial)";
   if (ImGui::RadioButton(bids_label.c_str(), what_ == What::kBids)) what_ = What::kBids;
   anchors_.remember("export.what.bids");
-  if (what_ != before) suggest_paths();
+  if (what_ != before) {
+    suggest_paths();
+    started_ = false;  // the last outcome was of another kind of export
+  }
 }
 
 void ReviewExportPanel::draw_options(const ReviewState& state) {
@@ -259,8 +262,16 @@ void ReviewExportPanel::draw_outcome(const ReviewState& state) {
   ImGui::PushTextWrapPos(0);
   if (job.state() == JobState::kFailed || !outcome) {
     if (job.state() == JobState::kFailed) {
-      ImGui::TextColored(kErrorColour, "Export failed: %s", job.error().c_str());
+      // The first line says why; what follows (the files that exist, every trial left out) scrolls.
+      const std::string error = job.error();
+      const size_t cut = error.find('\n');
+      ImGui::TextColored(kErrorColour, "Export failed: %s", error.substr(0, cut).c_str());
       anchors_.remember("export.error");
+      if (cut != std::string::npos) {
+        ImGui::BeginChild("##export_error_lines", ImVec2(0, 0), true, ImGuiWindowFlags_HorizontalScrollbar);
+        ImGui::TextUnformatted(error.c_str() + cut + 1);
+        ImGui::EndChild();
+      }
     }
     ImGui::PopTextWrapPos();
     return;

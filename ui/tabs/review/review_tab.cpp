@@ -30,13 +30,17 @@ class ReviewTab final : public Tab {
 
   void update(bool /*shown*/) override {
     take_review_requests();
-    const bool was_busy = state_.batch_job().running();
     state_.update();
-    // Across frames: the export ends on its worker whenever it ends.
-    const bool exporting = state_.motion_export().running();
-    if (was_exporting_ && !exporting) report_export();
-    was_exporting_ = exporting;
-    if (was_busy && !state_.batch_job().running()) {
+    // Jobs end on their workers whenever they end: compare with the last frame, not within this one.
+    const MotionExportJob& export_job = state_.motion_export();
+    if (job_finished(export_job.state()) && export_job.runs() != reported_exports_) {
+      reported_exports_ = export_job.runs();
+      report_export();
+    }
+    const bool processing = state_.batch_job().running();
+    const bool processing_ended = was_processing_ && !processing;
+    was_processing_ = processing;
+    if (processing_ended) {
       if (const ReviewBatch* b = state_.batch()) {
         status_.set_status("Review: " + std::to_string(b->trials.size()) + " trial(s) ready (" + std::to_string(b->from_cache) +
                            " from the cache)");
@@ -84,7 +88,8 @@ class ReviewTab final : public Tab {
   void report_export() {
     const MotionExportJob& job = state_.motion_export();
     if (job.state() == JobState::kFailed) {
-      status_.set_status("Review: export failed: " + job.error(), true);
+      const std::string error = job.error();
+      status_.set_status("Review: export failed: " + error.substr(0, error.find('\n')), true);  // its first line
     } else if (const auto o = job.outcome()) {
       status_.set_status(std::string("Review: ") + (o->cancelled ? "export cancelled after " : "exported ") +
                          std::to_string(o->trials) + " trial(s) to " + o->folder.string());
@@ -165,7 +170,8 @@ class ReviewTab final : public Tab {
   ReviewTrialView trial_view_;
   ReviewAgreementView agreement_view_;
   ReviewExportPanel export_panel_;
-  bool was_exporting_ = false;  // as last updated: a finished export is reported once
+  bool was_processing_ = false;  // as last updated: the end of processing is reported once
+  int reported_exports_ = 0;     // the export runs whose outcome the status bar has shown
   int pending_view_ = -1;  // a capture's request: 0 the trial view, 1 agreement, 2 study tables
   float table_dragged_px_ = 0.0F;  // the trial table's height once the splitter was dragged (0: the default)
 };
