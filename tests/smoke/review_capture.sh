@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # The Review tab on a processed simulated session: a quick subject session is recorded
-# on the simulated rig, opened with --review, and both pictures (the trial against Vicon and the
-# agreement view) are checked: present, window-sized, not one colour. The processing cache goes to
-# the test's own folder, never the user's.
+# on the simulated rig, opened with --review, and the pictures (the trial against Vicon, the
+# agreement view, the study tables, Export… before and after exporting the trials shown as C3D) are
+# checked: present, window-sized, not one colour; the export wrote one C3D per trial. The
+# processing cache goes to the test's own folder, never the user's.
 set -eu
 lmc=${1:?usage: review_capture.sh LMC LMC_WORKBENCH OUT_DIR}
 bin=${2:?}
@@ -12,11 +13,14 @@ rm -rf "$out"; mkdir -p "$out"
 "$lmc" session run "$out/S01" --backend sim --fast --auto --quiet --seed 4 >/dev/null
 export LMC_CACHE_DIR="$out/cache"
 mkdir -p "$out/png"
-LMC_REVIEW_PNG="$out/png/bland-altman.png" \
+LMC_REVIEW_PNG="$out/png/bland-altman.png" LMC_REVIEW_EXPORT_DIR="$out/export" \
   xvfb-run -a -s "-screen 0 1280x800x24" "$bin" --capture "$out/shots" --tab review --review "$out/S01" | tee "$out/capture.log"
 grep -q "review.png" "$out/capture.log"
 grep -q "review-agreement.png" "$out/capture.log"
 grep -q "review-study-tables.png" "$out/capture.log"
+grep -q "review-export.png" "$out/capture.log"
+grep -q "review-export-done.png" "$out/capture.log"
+test "$(find "$out/export" -name '*.c3d' | wc -l)" -eq 2
 python3 "$(dirname "$0")/check_png.py" "$out/shots" 1280 800
 # The PNG export: a Bland-Altman figure rendered off screen at 1000 x 700.
 python3 "$(dirname "$0")/check_png.py" "$out/png" 1000 700

@@ -239,6 +239,22 @@ void ReviewState::export_trial(const std::filesystem::path& dir, bool each_contr
   });
 }
 
+void ReviewState::export_trial_points(TrialsToExport which, const std::filesystem::path& dir, ExportFormat format,
+                                      ExportAxes axes, bool replace) {
+  std::vector<int> chosen;
+  if (which == TrialsToExport::kShown) {
+    chosen = visible_trials();
+  } else if (selected_ >= 0) {
+    chosen.push_back(selected_);
+  }
+  motion_export_.start(trial_export_plan(trials(), chosen, options_, corrections_, dir, format, axes, replace));
+}
+
+void ReviewState::export_bids_dataset(const std::filesystem::path& dir,
+                                      const std::optional<std::filesystem::path>& anonymise_key, bool replace) {
+  motion_export_.start(bids_export_plan(folders_, options_, corrections_, dir, anonymise_key, replace));
+}
+
 std::vector<int> ReviewState::visible_trials() const {
   std::vector<int> out;
   for (size_t k = 0; k < trials().size(); ++k) {

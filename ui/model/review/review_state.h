@@ -11,6 +11,7 @@
 #include "core/review/agreement_table.h"
 #include "core/review/visibility_map.h"
 #include "ui/model/plot/linked_x_range.h"
+#include "ui/model/review/motion_export_job.h"
 #include "ui/model/review/review_batch_job.h"
 #include "ui/model/review/trial_view_job.h"
 #include "ui/model/text/markdown_blocks.h"
@@ -41,6 +42,9 @@ struct TrialSort {
 // Sorts indices into `trials` by the column; unknown numbers (NaN) go last either way, ties keep
 // folder and trial order.
 void sort_trials(const std::vector<ReviewTrial>& trials, const TrialSort& sort, std::vector<int>& indices);
+
+// Which trials Export… writes: the one selected, or every one the table shows (its filter).
+enum class TrialsToExport { kSelected, kShown };
 
 class ReviewState {
  public:
@@ -90,7 +94,9 @@ class ReviewState {
   FusionMethod method() const { return options_.process.method; }
   // The folder's correction, or nullptr; whether it is applied also depends on method().
   const FolderLengthCorrection* length_correction(const std::filesystem::path& folder) const;
-  bool busy() const { return batch_job_.running() || view_job_.running() || export_job_.running(); }
+  bool busy() const {
+    return batch_job_.running() || view_job_.running() || export_job_.running() || motion_export_.running();
+  }
   // Agreement and the visibility map over the trials the table shows (its filter), recomputed only
   // when the batch, the filter or the motion changes: 80 trials take about a millisecond.
   struct Agreement {
@@ -110,6 +116,17 @@ class ReviewState {
   bool exporting() const { return export_job_.running(); }
   // The last export's outcome in words ("wrote 62 files to …" or the error); empty before one.
   const std::string& export_message() const { return export_message_; }
+  // ---- exports for motion-analysis tools (core/export: C3D, TRC, BIDS), on a worker thread -------
+  // The chosen trials as C3D or TRC into `dir`, processed as the tab shows them (its fusion and each
+  // folder's length correction). Starting again while one runs cancels that one.
+  void export_trial_points(TrialsToExport which, const std::filesystem::path& dir, ExportFormat format, ExportAxes axes,
+                           bool replace);
+  // The opened folders as a BIDS-motion dataset at `dir`; with `anonymise_key`, subject ids are
+  // replaced and the key is written there.
+  void export_bids_dataset(const std::filesystem::path& dir, const std::optional<std::filesystem::path>& anonymise_key,
+                           bool replace);
+  void cancel_motion_export() { motion_export_.cancel(); }
+  const MotionExportJob& motion_export() const { return motion_export_; }
   // The last problem to show (a failed job); empty when none.
   const std::string& problem() const { return problem_; }
 
@@ -143,6 +160,7 @@ class ReviewState {
   BackgroundJob<std::vector<std::filesystem::path>, ExportReport> export_job_;
   std::filesystem::path export_dir_;
   std::string export_message_;
+  MotionExportJob motion_export_;
 };
 
 }  // namespace lmc::ui

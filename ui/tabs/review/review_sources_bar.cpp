@@ -105,8 +105,10 @@ bool folder_chip(ReviewState& state, ReviewBrowsers& browsers, const std::filesy
 
 }  // namespace
 
-void draw_review_sources_bar(ReviewState& state, ReviewBrowsers& browsers) {
+void draw_review_sources_bar(ReviewState& state, ReviewBrowsers& browsers, ReviewExportPanel& export_panel) {
   open_buttons(state, browsers.folder);
+  ImGui::SameLine();
+  export_panel.draw_button(state);
   ImGui::SameLine(0, 20);
   ImGui::SetNextItemWidth(150);
   int method = state.method() == FusionMethod::kDefault ? 0 : 1;

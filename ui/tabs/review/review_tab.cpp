@@ -10,6 +10,7 @@
 #include "ui/model/review/trial_table_height.h"
 #include "ui/model/workbench_context.h"
 #include "ui/tabs/review/review_agreement_view.h"
+#include "ui/tabs/review/review_export_panel.h"
 #include "ui/tabs/review/review_sources_bar.h"
 #include "ui/tabs/review/review_trial_table.h"
 #include "ui/tabs/review/review_trial_view.h"
@@ -29,9 +30,17 @@ class ReviewTab final : public Tab {
 
   void update(bool /*shown*/) override {
     take_review_requests();
-    const bool was_busy = state_.batch_job().running();
     state_.update();
-    if (was_busy && !state_.batch_job().running()) {
+    // Jobs end on their workers whenever they end: compare with the last frame, not within this one.
+    const MotionExportJob& export_job = state_.motion_export();
+    if (job_finished(export_job.state()) && export_job.runs() != reported_exports_) {
+      reported_exports_ = export_job.runs();
+      report_export();
+    }
+    const bool processing = state_.batch_job().running();
+    const bool processing_ended = was_processing_ && !processing;
+    was_processing_ = processing;
+    if (processing_ended) {
       if (const ReviewBatch* b = state_.batch()) {
         status_.set_status("Review: " + std::to_string(b->trials.size()) + " trial(s) ready (" + std::to_string(b->from_cache) +
                            " from the cache)");
@@ -44,7 +53,7 @@ class ReviewTab final : public Tab {
       draw_review_welcome(state_, browsers_.folder);
       return;
     }
-    draw_review_sources_bar(state_, browsers_);
+    draw_review_sources_bar(state_, browsers_, export_panel_);
     ImGui::Separator();
     // The filters' line is drawn above the table, inside draw_review_trial_table.
     const float available = ImGui::GetContentRegionAvail().y - ImGui::GetFrameHeightWithSpacing();
@@ -71,6 +80,19 @@ class ReviewTab final : public Tab {
       }
       pending_view_ = -1;
       ImGui::EndTabBar();
+    }
+    export_panel_.draw_window(state_);
+  }
+
+  // The status bar's line for a finished export (the window may have been closed meanwhile).
+  void report_export() {
+    const MotionExportJob& job = state_.motion_export();
+    if (job.state() == JobState::kFailed) {
+      const std::string error = job.error();
+      status_.set_status("Review: export failed: " + error.substr(0, error.find('\n')), true);  // its first line
+    } else if (const auto o = job.outcome()) {
+      status_.set_status(std::string("Review: ") + (o->cancelled ? "export cancelled after " : "exported ") +
+                         std::to_string(o->trials) + " trial(s) to " + o->folder.string());
     }
   }
 
@@ -109,7 +131,13 @@ class ReviewTab final : public Tab {
     return 4;
   }
   bool busy_for_capture() const override { return state_.busy(); }
-  std::vector<std::string> extra_captures() const override { return {"review-agreement", "review-study-tables"}; }
+  std::vector<std::string> extra_captures() const override {
+    std::vector<std::string> names{"review-agreement", "review-study-tables", "review-export"};
+    // LMC_REVIEW_EXPORT_DIR=DIR: the trials shown are exported there as C3D and the finished
+    // window is pictured too (the smoke test checks the files).
+    if (const char* dir = std::getenv("LMC_REVIEW_EXPORT_DIR"); dir != nullptr && *dir != '\0') names.push_back("review-export-done");
+    return names;
+  }
   void prepare_extra_capture(const std::string& name) override {
     if (name == "review-agreement") {
       pending_view_ = 1;
@@ -123,6 +151,15 @@ class ReviewTab final : public Tab {
       }
     }
     if (name == "review-study-tables") pending_view_ = 2;
+    if (name == "review-export") {
+      pending_view_ = 0;
+      export_panel_.open();
+      export_panel_.choose(ReviewExportPanel::What::kShown);
+    }
+    if (name == "review-export-done") {
+      export_panel_.set_folder(std::getenv("LMC_REVIEW_EXPORT_DIR"));
+      export_panel_.start(state_);
+    }
   }
 
  private:
@@ -132,6 +169,9 @@ class ReviewTab final : public Tab {
   ReviewBrowsers browsers_;
   ReviewTrialView trial_view_;
   ReviewAgreementView agreement_view_;
+  ReviewExportPanel export_panel_;
+  bool was_processing_ = false;  // as last updated: the end of processing is reported once
+  int reported_exports_ = 0;     // the export runs whose outcome the status bar has shown
   int pending_view_ = -1;  // a capture's request: 0 the trial view, 1 agreement, 2 study tables
   float table_dragged_px_ = 0.0F;  // the trial table's height once the splitter was dragged (0: the default)
 };
