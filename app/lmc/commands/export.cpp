@@ -47,7 +47,7 @@ constexpr const char* kBidsFooter =
     "(handedness, hand length and breadth), README, layouts/ (named in .bidsignore). A non-empty DATASET is refused "
     "unless --force. Trials that cannot be exported are left out with a note (exit code 2). See docs/export.md.";
 
-// Fusion options shared by every export format: as lmc process takes them.
+// Fusion and layout options shared by every export format: as lmc process takes them.
 void apply_session_options(const ExportArgs& a, lmc::SessionOptions& session) {
   session.process.method = lmc::fusion_method_from_name(a.method);
   if (!a.length_correction.empty()) {
@@ -60,7 +60,8 @@ void apply_session_options(const ExportArgs& a, lmc::SessionOptions& session) {
   if (!a.layout.empty()) session.layout = a.layout;
 }
 
-void add_session_options(CLI::App* app, ExportArgs& a) {
+// The output folder and the fusion options, alike in every export subcommand.
+void add_common_options(CLI::App* app, ExportArgs& a) {
   app->add_option("-o,--output", a.out, "Output folder (created when missing)")->required();
   app->add_option("--method", a.method, "Fusion: reference (the study's Kalman filter) or default (our smoother)")
       ->check(CLI::IsMember({"reference", "default"}));
@@ -92,7 +93,7 @@ void add_format(CLI::App& parent, const char* name, const char* what, lmc::Expor
   CLI::App* app = parent.add_subcommand(name, what);
   app->add_option("trials", a->inputs, "Recordings, processed trials (Interp_LMC_…) or session folders, as lmc process takes them")
       ->required();
-  add_session_options(app, *a);
+  add_common_options(app, *a);
   app->add_option("--axes", a->axes, "world (the rig's frame) or opensim (X forward, Y up, Z right)")
       ->check(CLI::IsMember({"world", "opensim"}));
   app->add_flag("--force", a->force, "Replace outputs that exist");
@@ -128,7 +129,7 @@ void add_bids(CLI::App& parent) {
   auto a = std::make_shared<BidsArgs>();
   CLI::App* app = parent.add_subcommand("bids", "The study as a BIDS-motion dataset (one subject per session folder)");
   app->add_option("sessions", a->common.inputs, "Subject session folders, or study folders holding several")->required();
-  add_session_options(app, a->common);
+  add_common_options(app, a->common);
   app->add_option("--anonymise", a->anonymise_key,
                   "Number the subjects sub-01, sub-02, ... and write the key (label -> subject id) to this file, outside the dataset");
   app->add_flag("--force", a->common.force, "Write into a non-empty dataset folder (an earlier export's subjects are removed first)");
