@@ -1,0 +1,45 @@
+#pragma once
+// What a BIDS export will write, before anything is written: the subject session folders found in
+// the inputs, each subject's label and each accepted trial's BIDS entities. Read-only. Names that
+// come from files (subject ids, trial names, motion and layout keys) are checked with
+// safe_name_problem before they become paths and mapped to labels with bids_label; whatever cannot
+// be exported (a folder without sessions, an unreadable journal, a label already taken, a trial that
+// is not accepted) is left out with a note naming the file.
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "core/export/bids_names.h"
+#include "core/processing/session.h"
+#include "core/session/session_state.h"
+
+namespace lmc {
+
+struct BidsTrialPlan {
+  TrialJob job;                // the accepted attempt (core/session/session_trials.h)
+  BidsEntities entities;       // tracksys left empty: one per tracking system when written
+  std::string motion;          // the protocol's trial type key ("Index")
+  std::string layout_key;      // "Naiv"
+  std::string subject_cue;     // what the subject was shown
+  std::string operator_cue;    // what the operator read
+};
+
+struct BidsSubjectPlan {
+  std::filesystem::path session_dir;
+  session::SubjectInfo subject;  // as the manifest says; the id is the session's own
+  std::string label;             // the BIDS label (anonymised or from the id)
+  std::vector<BidsTrialPlan> trials;
+};
+
+struct BidsStudyPlan {
+  std::vector<BidsSubjectPlan> subjects;  // in input order, a study folder's sessions by name
+  std::vector<std::string> notes;         // what is left out and why
+  int left_out = 0;                       // trials or inputs left out
+  int trial_count() const;
+};
+
+// A session folder, or a folder whose direct sub-folders are session folders. With `anonymise`
+// the labels are 01, 02, … in that order; else each id's bids_label.
+BidsStudyPlan plan_bids_study(const std::vector<std::filesystem::path>& inputs, bool anonymise);
+
+}  // namespace lmc

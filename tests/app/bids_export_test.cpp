@@ -1,0 +1,280 @@
+// `lmc export bids` (core/export/bids_dataset.h) on a small simulated study of two subjects (the
+// quick protocol, 1 s trials): the dataset's file names, channel rows, motion.json fields, events
+// and participants as documented, no operator field anywhere, anonymised labels with the key kept
+// outside the dataset (a key inside it refused before anything is written), a cancel part-way that
+// leaves a dataset whose every listed file exists, a non-empty folder refused without --force, and
+// a session with an unsafe subject id refused with a message naming its file.
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <set>
+#include <sstream>
+
+#include <nlohmann/json.hpp>
+
+#include "core/common/error.h"
+#include "core/export/bids_dataset.h"
+#include "core/io/recorder_sidecar.h"
+#include "tests/support/cli_runner.h"
+#include "tests/support/scratch_dir.h"
+
+namespace lmc {
+namespace bids_export_test {  // named: test files share unity batches
+
+namespace fs = std::filesystem;
+using test::CliRun;
+using test::read_text_file;
+using test::run_lmc;
+using test::shell_quote;
+
+std::vector<std::string> lines_of(const std::string& text) {
+  std::vector<std::string> lines;
+  std::istringstream in(text);
+  for (std::string line; std::getline(in, line);) lines.push_back(line);
+  return lines;
+}
+
+std::vector<std::string> cells_of(const std::string& line) {
+  std::vector<std::string> cells;
+  std::istringstream in(line);
+  for (std::string cell; std::getline(in, cell, '\t');) cells.push_back(cell);
+  return cells;
+}
+
+nlohmann::json read_json(const fs::path& p) { return nlohmann::json::parse(read_text_file(p)); }
+
+// Two subject sessions recorded once for every test: S_01 (a '_' the BIDS label drops) and S02. A
+// study folder's sessions go in name order: S02 before S_01 ('0' sorts before '_').
+class BidsExport : public ::testing::Test {
+ protected:
+  static void SetUpTestSuite() {
+    root_ = new fs::path(test::scratch_dir("lmc_bids_export"));
+    for (const char* subject : {"S_01", "S02"}) {
+      const fs::path s = study() / subject;
+      CliRun r = run_lmc(std::string("session new --subject ") + subject + " --protocol quick --seconds 1 --hand-length-mm 185 " +
+                             "--hand-breadth-mm 84 --operator 'Operator Olga' --notes 'private remark' -o " + shell_quote(s.string()),
+                         *root_ / "l");
+      ASSERT_EQ(r.exit_code, 0) << r.all();
+      r = run_lmc("session run " + shell_quote(s.string()) + " --backend sim --fast --auto --quiet --seed 3", *root_ / "l");
+      ASSERT_EQ(r.exit_code, 0) << r.all();
+    }
+  }
+  static void TearDownTestSuite() {
+    delete root_;
+    root_ = nullptr;
+  }
+  static fs::path study() { return *root_ / "study"; }
+  static BidsExportRequest request(const std::string& out) {
+    BidsExportRequest req;
+    req.inputs = {study()};
+    req.out_dir = *root_ / out;
+    return req;
+  }
+  static fs::path* root_;
+};
+fs::path* BidsExport::root_ = nullptr;
+
+TEST_F(BidsExport, WritesTheDatasetAsDocumented) {
+  BidsExportRequest req = request("dataset");
+  std::vector<std::pair<int, int>> progress;
+  req.on_progress = [&](int done, int total) { progress.emplace_back(done, total); };
+  const BidsExportReport report = export_bids(req);
+  EXPECT_EQ(report.subjects, 2);
+  EXPECT_EQ(report.trials, 4);
+  EXPECT_EQ(report.left_out, 0);
+  EXPECT_FALSE(report.cancelled);
+  EXPECT_EQ(progress, (std::vector<std::pair<int, int>>{{0, 4}, {1, 4}, {2, 4}, {3, 4}, {4, 4}}));
+
+  const fs::path ds = req.out_dir;
+  const fs::path motion = ds / "sub-S01" / "motion";
+  for (const char* system : {"LMCfused", "LMC1", "LMC2", "LMC3", "LMC4", "Vicon"}) {
+    for (const char* suffix : {"_motion.tsv", "_motion.json", "_channels.tsv", "_channels.json"}) {
+      const std::string name = std::string("sub-S01_task-Index_tracksys-") + system + "_acq-Naiv_run-101" + suffix;
+      EXPECT_TRUE(fs::exists(motion / name)) << name;
+    }
+  }
+  EXPECT_TRUE(fs::exists(ds / "sub-S02" / "motion" / "sub-S02_task-Static_tracksys-Vicon_acq-Naiv_run-101_motion.tsv"));
+  EXPECT_TRUE(fs::exists(ds / "layouts" / "sub-S01_acq-Naiv_layout.json"));
+  EXPECT_EQ(read_json(ds / "layouts" / "sub-S01_acq-Naiv_layout.json")["devices"].size(), 4u);
+
+  // Channels: 28 points × x, y, z of type POS in mm.
+  const std::vector<std::string> channels = lines_of(read_text_file(motion / "sub-S01_task-Index_tracksys-LMC2_acq-Naiv_run-101_channels.tsv"));
+  ASSERT_EQ(channels.size(), 85u);
+  EXPECT_EQ(cells_of(channels[1]), (std::vector<std::string>{"Palm_x", "x", "POS", "Palm", "mm", "world", "LMC2 realigned: palm position"}));
+  // Motion rows: as many as the recording lasts at 100 Hz, 84 cells each, no header.
+  const nlohmann::json mj = read_json(motion / "sub-S01_task-Index_tracksys-LMC2_acq-Naiv_run-101_motion.json");
+  const std::vector<std::string> rows = lines_of(read_text_file(motion / "sub-S01_task-Index_tracksys-LMC2_acq-Naiv_run-101_motion.tsv"));
+  EXPECT_NEAR(static_cast<double>(rows.size()), mj["RecordingDuration"].get<double>() * 100.0, 1e-6);
+  EXPECT_GE(rows.size(), 90u);
+  // Every cell a number in mm with three decimals or n/a (a controller that had not seen the hand).
+  int numbers = 0, missing = 0;
+  for (const auto& row : rows) {
+    const std::vector<std::string> cells = cells_of(row);
+    ASSERT_EQ(cells.size(), 84u);
+    for (const auto& c : cells) {
+      if (c == "n/a") {
+        ++missing;
+        continue;
+      }
+      size_t used = 0;
+      std::stod(c, &used);
+      EXPECT_EQ(used, c.size()) << c;
+      EXPECT_EQ(c.size() - c.find('.'), 4u) << c;
+      ++numbers;
+    }
+  }
+  EXPECT_GT(numbers, 84 * 50);
+  EXPECT_EQ(missing % 3, 0) << "a point is missing with all three coordinates";
+  // motion.json: what the sidecar says of controller 2.
+  const RecorderSidecar sidecar = read_recorder_sidecar(study() / "S_01" / "LMC_Naiv_Index101.session.json");
+  ASSERT_NE(sidecar.device(2), nullptr);
+  EXPECT_EQ(mj["DeviceSerialNumber"], sidecar.device(2)->serial);
+  EXPECT_EQ(mj["TaskName"], "Index");
+  EXPECT_EQ(mj["SamplingFrequency"], 100.0);
+  EXPECT_EQ(mj["Manufacturer"], "Ultraleap");
+  EXPECT_EQ(mj["ManufacturersModelName"], "simulated Leap Motion Controller");
+  EXPECT_EQ(mj["MissingValues"], "n/a");
+  EXPECT_NE(mj["SoftwareVersions"].get<std::string>().find("lmc-workbench " LMC_VERSION), std::string::npos);
+  EXPECT_EQ(read_json(motion / "sub-S01_task-Index_tracksys-Vicon_acq-Naiv_run-101_motion.json")["Manufacturer"], "Vicon");
+
+  // Events: go, the simulated Vicon's time zero (where the grid starts) and stop.
+  const std::vector<std::string> events = lines_of(read_text_file(motion / "sub-S01_task-Index_acq-Naiv_run-101_events.tsv"));
+  ASSERT_EQ(events.size(), 4u);
+  EXPECT_EQ(events[0], "onset\tduration\ttrial_type");
+  std::set<std::string> types;
+  for (size_t i = 1; i < events.size(); ++i) types.insert(cells_of(events[i])[2]);
+  EXPECT_EQ(types, (std::set<std::string>{"go", "stop", "vicon_capture_start"}));
+  for (size_t i = 1; i < events.size(); ++i) {
+    if (cells_of(events[i])[2] == "vicon_capture_start") {
+      EXPECT_EQ(cells_of(events[i])[0], "0.000");
+    }
+  }
+
+  // Participants: from the manifests, never the operator or notes; scans list what is there.
+  EXPECT_EQ(read_text_file(ds / "participants.tsv"),
+            "participant_id\thandedness\thand_length_mm\thand_breadth_mm\nsub-S02\tright\t185.0\t84.0\nsub-S01\tright\t185.0\t84.0\n");
+  const std::vector<std::string> scans = lines_of(read_text_file(ds / "sub-S01" / "sub-S01_scans.tsv"));
+  ASSERT_EQ(scans.size(), 1u + 2 * 6);
+  for (size_t i = 1; i < scans.size(); ++i) EXPECT_TRUE(fs::exists(ds / "sub-S01" / cells_of(scans[i])[0])) << scans[i];
+  EXPECT_EQ(read_json(ds / "dataset_description.json")["GeneratedBy"][0]["Name"], "lmc-workbench");
+  for (const auto& e : fs::recursive_directory_iterator(ds)) {
+    if (!e.is_regular_file()) continue;
+    const std::string text = read_text_file(e.path());
+    EXPECT_EQ(text.find("Olga"), std::string::npos) << e.path();
+    EXPECT_EQ(text.find("private remark"), std::string::npos) << e.path();
+  }
+
+  // A second export into the same folder is refused without --force, nothing changed.
+  EXPECT_THROW(export_bids(req), Error);
+  req.force = true;
+  req.inputs = {study() / "S02"};
+  EXPECT_EQ(export_bids(req).trials, 2);
+  EXPECT_FALSE(fs::exists(ds / "sub-S01")) << "an earlier export's subject stays without a participants row";
+  EXPECT_EQ(lines_of(read_text_file(ds / "participants.tsv")).size(), 2u);
+}
+
+TEST_F(BidsExport, AnonymisesWithTheKeyOutsideTheDataset) {
+  BidsExportRequest req = request("anonymous");
+  req.anonymise = true;
+  req.anonymise_key = req.out_dir / "key.tsv";
+  try {
+    export_bids(req);
+    ADD_FAILURE() << "a key inside the dataset was accepted";
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("must lie outside the dataset folder"), std::string::npos) << e.what();
+  }
+  EXPECT_FALSE(fs::exists(req.out_dir)) << "nothing is written when the key is refused";
+
+  req.anonymise_key = req.out_dir.parent_path() / "keys" / "anonymous-key.tsv";
+  const BidsExportReport report = export_bids(req);
+  EXPECT_EQ(report.trials, 4);
+  EXPECT_TRUE(fs::exists(req.out_dir / "sub-01" / "motion" / "sub-01_task-Static_tracksys-LMCfused_acq-Naiv_run-101_motion.tsv"));
+  EXPECT_TRUE(fs::exists(req.out_dir / "sub-02"));
+  const std::vector<std::string> key = lines_of(read_text_file(req.anonymise_key));
+  ASSERT_EQ(key.size(), 3u);
+  EXPECT_EQ(key[0], "participant_id\tsubject_id\tsession_folder");
+  EXPECT_EQ(cells_of(key[1])[0], "sub-01");
+  EXPECT_EQ(cells_of(key[1])[1], "S02");
+  EXPECT_EQ(cells_of(key[2])[1], "S_01");
+  EXPECT_EQ(cells_of(key[2])[2], fs::absolute(study() / "S_01").string());
+  for (const auto& e : fs::recursive_directory_iterator(req.out_dir)) {
+    if (!e.is_regular_file()) continue;
+    const std::string text = read_text_file(e.path());
+    EXPECT_EQ(text.find("S_01"), std::string::npos) << e.path();
+    EXPECT_EQ(text.find("S02"), std::string::npos) << e.path();
+  }
+  // Acquisition dates identify too: left out.
+  EXPECT_EQ(cells_of(lines_of(read_text_file(req.out_dir / "sub-01" / "sub-01_scans.tsv"))[1])[1], "n/a");
+}
+
+TEST_F(BidsExport, CancelledPartWayLeavesACompleteSmallerDataset) {
+  BidsExportRequest req = request("cancelled");
+  int polls = 0;
+  req.should_stop = [&] { return ++polls > 3; };  // three trials: both of S02, the first of S_01
+  const BidsExportReport report = export_bids(req);
+  EXPECT_TRUE(report.cancelled);
+  EXPECT_EQ(report.trials, 3);
+  EXPECT_EQ(report.subjects, 2);
+  const fs::path ds = req.out_dir;
+  EXPECT_EQ(lines_of(read_text_file(ds / "participants.tsv")).size(), 3u);
+  const std::vector<std::string> scans = lines_of(read_text_file(ds / "sub-S01" / "sub-S01_scans.tsv"));
+  ASSERT_EQ(scans.size(), 1u + 6);
+  for (size_t i = 1; i < scans.size(); ++i) EXPECT_TRUE(fs::exists(ds / "sub-S01" / cells_of(scans[i])[0])) << scans[i];
+  EXPECT_TRUE(fs::exists(ds / "sub-S01" / "motion" / "sub-S01_task-Static_tracksys-LMC1_acq-Naiv_run-101_motion.tsv"));
+  EXPECT_FALSE(fs::exists(ds / "sub-S01" / "motion" / "sub-S01_task-Index_tracksys-LMC1_acq-Naiv_run-101_motion.tsv"));
+
+  // Stopped before the first trial: the dataset-level files and no subject.
+  BidsExportRequest none = request("cancelled-at-once");
+  none.should_stop = [] { return true; };
+  EXPECT_EQ(export_bids(none).trials, 0);
+  EXPECT_TRUE(fs::exists(none.out_dir / "dataset_description.json"));
+  EXPECT_EQ(read_text_file(none.out_dir / "participants.tsv"), "participant_id\thandedness\thand_length_mm\thand_breadth_mm\n");
+}
+
+TEST_F(BidsExport, UnsafeSubjectIdIsRefusedNamingTheFile) {
+  const fs::path bad = study().parent_path() / "unsafe" / "S03";
+  fs::create_directories(bad.parent_path());
+  fs::copy(study() / "S02", bad, fs::copy_options::recursive);
+  fs::remove(bad / ".lock");
+  // The subject id in the journal's first event (the manifest is a view of the journal).
+  std::vector<std::string> lines = lines_of(read_text_file(bad / "journal.jsonl"));
+  nlohmann::json first = nlohmann::json::parse(lines.front());
+  first["setup"]["subject"]["id"] = "../S03";
+  lines.front() = first.dump();
+  {
+    std::ofstream out(bad / "journal.jsonl", std::ios::trunc);
+    for (const auto& l : lines) out << l << "\n";
+  }
+  BidsExportRequest req = request("unsafe-dataset");
+  req.inputs = {bad};
+  try {
+    export_bids(req);
+    ADD_FAILURE() << "an unsafe subject id was accepted";
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find((bad / "journal.jsonl").string()), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("subject id"), std::string::npos) << e.what();
+  }
+  EXPECT_FALSE(fs::exists(req.out_dir));
+  // Beside a good session: that one is written, the other left out with the same note.
+  req.inputs = {bad, study() / "S02"};
+  const BidsExportReport report = export_bids(req);
+  EXPECT_EQ(report.trials, 2);
+  EXPECT_EQ(report.left_out, 1);
+  ASSERT_FALSE(report.notes.empty());
+  EXPECT_NE(report.notes.front().find((bad / "journal.jsonl").string()), std::string::npos) << report.notes.front();
+}
+
+TEST_F(BidsExport, CommandLineWritesTheDataset) {
+  const fs::path out = study().parent_path() / "cli-dataset";
+  CliRun r = run_lmc("export bids " + shell_quote(study().string()) + " -o " + shell_quote(out.string()), study().parent_path() / "l");
+  EXPECT_EQ(r.exit_code, 0) << r.all();
+  EXPECT_NE(r.out.find("exported 4 trial(s) of 2 subject(s) as BIDS-motion (default method)"), std::string::npos) << r.all();
+  EXPECT_NE(r.out.find("wrote sub-S01/motion/sub-S01_task-Static_acq-Naiv_run-101 (Naiv_Static101): 6 tracking systems"), std::string::npos)
+      << r.all();
+  r = run_lmc("export bids " + shell_quote(study().string()) + " -o " + shell_quote(out.string()), study().parent_path() / "l");
+  EXPECT_EQ(r.exit_code, 1) << r.all();
+  EXPECT_NE(r.err.find("not empty (use --force"), std::string::npos) << r.all();
+}
+
+}  // namespace bids_export_test
+}  // namespace lmc
