@@ -86,8 +86,8 @@ struct Writer {
   // One trial's files; returns the line for on_trial. Throws lmc::Error when the trial cannot be
   // processed (nothing of it is then listed in scans.tsv).
   std::string write_trial(const BidsSubjectPlan& s, const BidsTrialPlan& t) {
-    TrialOutcome outcome;
-    const TrialResult r = process_job_in_full(t.job, request.session, &outcome);
+    ProcessedTrial outcome;
+    const TrialResult r = process_sources_in_full(t.job, request.session, &outcome);
     std::optional<MarkerSeries> markers;
     if (t.job.vicon && r.has_vicon) markers = load_vicon_markers(*t.job.vicon);
     const PointTable table = trial_point_table(r, markers ? &*markers : nullptr, ExportAxes::kWorld);

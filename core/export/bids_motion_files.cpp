@@ -86,7 +86,7 @@ nlohmann::json bids_channels_json() {
            {{"Description", "The reference frame of the positions"},
             {"Levels",
              {{"world",
-               {{"Description", "The rig's world frame (reference-algorithms.md §1): x along the table to the subject's right, "
+               {{"Description", "The rig's world frame (docs/algorithms/frames.md): x along the table to the subject's right, "
                                 "y up (table top y = 0), z towards the subject; origin at the centre of the controllers' layout"},
                 {"SpatialAxes", "RSP"},
                 {"RotationRule", "right-hand"}}}}}}}};

@@ -36,7 +36,7 @@ std::vector<fs::path> session_folders(const fs::path& input, BidsStudyPlan& plan
 // The session's accepted trials with their entities; trials that cannot be named are left out.
 void plan_trials(const session::SessionState& state, BidsSubjectPlan& subject, BidsStudyPlan& plan) {
   std::vector<std::string> notes;
-  const std::vector<TrialJob> jobs = session::accepted_trial_jobs(subject.session_dir, std::nullopt, &notes);
+  const std::vector<TrialSources> jobs = session::accepted_trial_jobs(subject.session_dir, std::nullopt, &notes);
   const std::string where = (subject.session_dir / session::kManifestFile).string();
   for (const auto& n : notes) {
     plan.notes.push_back(subject.session_dir.string() + ": " + n);

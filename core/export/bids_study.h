@@ -10,13 +10,13 @@
 #include <vector>
 
 #include "core/export/bids_names.h"
-#include "core/processing/session.h"
+#include "core/processing/batch.h"
 #include "core/session/session_state.h"
 
 namespace lmc {
 
 struct BidsTrialPlan {
-  TrialJob job;                // the accepted attempt (core/session/session_trials.h)
+  TrialSources job;                // the accepted attempt (core/session/session_trials.h)
   BidsEntities entities;       // tracksys left empty: one per tracking system when written
   std::string motion;          // the protocol's trial type key ("Index")
   std::string layout_key;      // "Naiv"

@@ -48,7 +48,7 @@ constexpr const char* kBidsFooter =
     "unless --force. Trials that cannot be exported are left out with a note (exit code 2). See docs/export.md.";
 
 // Fusion and layout options shared by every export format: as lmc process takes them.
-void apply_session_options(const ExportArgs& a, lmc::SessionOptions& session) {
+void apply_session_options(const ExportArgs& a, lmc::BatchOptions& session) {
   session.process.method = lmc::fusion_method_from_name(a.method);
   if (!a.length_correction.empty()) {
     // As lmc process: the reference method stays the study's algorithm.
