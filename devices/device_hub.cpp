@@ -12,7 +12,9 @@ DeviceHub::DeviceHub(Layout layout, HubOptions options) : layout_(std::move(layo
   if (!options_.clock) options_.clock = host_now_ns;
 }
 
-DeviceHub::~DeviceHub() { stop(); }
+DeviceHub::~DeviceHub() {
+  stop();
+}
 
 void DeviceHub::add_source(std::unique_ptr<FrameSource> source) {
   std::lock_guard lock(mutex_);
@@ -180,7 +182,8 @@ void DeviceHub::on_device_event(const DeviceEvent& event) {
             message_locked(label(s) + " reconnected");
           } else if (d.auto_assigned && s.backend != "sim") {
             // USB order is not table order: say that the slot is a guess until someone confirms it.
-            message_locked(label(s) + " connected (" + s.backend + "); its slot was given in order of appearance: "
+            message_locked(label(s) + " connected (" + s.backend +
+                           "); its slot was given in order of appearance: "
                            "check it is that controller, or pick its slot, then save the layout with its serials");
           } else {
             message_locked(label(s) + " connected (" + s.backend + ")");

@@ -28,8 +28,8 @@ struct DeviceStatus {
   int slot_index = -1;  // index into the layout's devices, −1 when unassigned
   std::string slot;     // "LMC2", empty when unassigned
   bool connected = false;
-  double rate_hz = 0.0;             // frames received during the last second
-  double latest_frame_age_ms = -1;  // −1 before the first frame
+  double rate_hz = 0.0;                     // frames received during the last second
+  double latest_frame_age_ms = -1;          // −1 before the first frame
   std::int64_t latest_host_receive_ns = 0;  // host_now_ns() when the latest frame arrived (0 before)
   bool hand_present = false;
   HandType hand_type = HandType::kUnknown;
@@ -124,7 +124,7 @@ class DeviceHub final : public FrameSink {
   Layout layout_;
   HubOptions options_;
   mutable std::mutex mutex_;
-  std::mutex consumer_mutex_;  // held only around consumer calls, never with mutex_
+  std::mutex consumer_mutex_;   // held only around consumer calls, never with mutex_
   std::deque<Device> devices_;  // deque: stable addresses
   std::deque<std::string> messages_;
   FrameConsumer* consumer_ = nullptr;

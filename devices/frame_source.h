@@ -13,8 +13,8 @@ namespace lmc::devices {
 
 struct DeviceInfo {
   std::string serial;
-  std::string backend;   // "sim", "replay", "leapc"
-  std::string model;     // "Leap Motion Controller", "simulated", ...
+  std::string backend;  // "sim", "replay", "leapc"
+  std::string model;    // "Leap Motion Controller", "simulated", ...
   // "desktop", "screen-top", "head-mounted" (devices/tracking_mode.h); empty until known.
   std::string tracking_mode;
 };

@@ -36,7 +36,8 @@ namespace {
 }  // namespace
 
 std::unique_ptr<FrameSource> make_source(const SourceSpec& spec, const SourceSettings& s) {
-  if (spec.backend == "sim") return std::make_unique<SimSource>(s.layout, s.sim, SimSourceOptions{s.speed, s.duration_s});
+  if (spec.backend == "sim")
+    return std::make_unique<SimSource>(s.layout, s.sim, SimSourceOptions{s.speed, s.duration_s});
   if (spec.backend == "replay") {
     ReplayOptions o;
     o.speed = s.speed;

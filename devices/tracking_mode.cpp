@@ -4,10 +4,14 @@ namespace lmc::devices {
 
 const char* tracking_mode_name(TrackingMode mode) {
   switch (mode) {
-    case TrackingMode::kDesktop: return "desktop";
-    case TrackingMode::kScreenTop: return "screen-top";
-    case TrackingMode::kHeadMounted: return "head-mounted";
-    case TrackingMode::kUnknown: break;
+    case TrackingMode::kDesktop:
+      return "desktop";
+    case TrackingMode::kScreenTop:
+      return "screen-top";
+    case TrackingMode::kHeadMounted:
+      return "head-mounted";
+    case TrackingMode::kUnknown:
+      break;
   }
   return "unknown";
 }

@@ -21,8 +21,7 @@ struct Command {
 std::vector<Command>& command_registry();
 
 struct CommandRegistration {
-  CommandRegistration(std::string name, std::string summary, int order,
-                      std::function<void(CLI::App&)> setup) {
+  CommandRegistration(std::string name, std::string summary, int order, std::function<void(CLI::App&)> setup) {
     command_registry().push_back({std::move(name), std::move(summary), order, std::move(setup)});
   }
 };

@@ -22,8 +22,9 @@ int main(int argc, char** argv) {
   std::vector<std::string> capture_tabs;
   int width = 1280, height = 800;
   app.add_option("--capture", capture_dir, "Render tabs to PNG files in this folder, then exit");
-  app.add_option("--tab", capture_tabs,
-                 "With --capture: which tabs (layout, devices, record, review); default all. Otherwise the tab shown first");
+  app.add_option(
+      "--tab", capture_tabs,
+      "With --capture: which tabs (layout, devices, record, review); default all. Otherwise the tab shown first");
   std::string session, backend = "sim";
   bool fast = false;
   app.add_option("--session", session, "Open (resume) this subject session folder in the Record tab");
@@ -36,9 +37,10 @@ int main(int argc, char** argv) {
                      "the last one) or, with 'window', as a plain window (one-monitor bench)")
           ->expected(0, 1);
   std::vector<std::string> review;
-  app.add_option("--review", review,
-                 "Open these folders (subject sessions, folders of trials) in the Review tab at start-up; with --capture, "
-                 "its picture shows them");
+  app.add_option(
+      "--review", review,
+      "Open these folders (subject sessions, folders of trials) in the Review tab at start-up; with --capture, "
+      "its picture shows them");
   app.add_option("--size", width, "Window width in pixels")->check(CLI::Range(640, 7680));
   app.add_option("--height", height, "Window height in pixels")->check(CLI::Range(480, 4320));
   CLI11_PARSE(app, argc, argv);

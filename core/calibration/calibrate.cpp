@@ -93,8 +93,8 @@ CalibrationResult calibrate(const CalibrationInput& input, const Layout& layout,
   const int n = layout.device_count();
   for (const auto& d : input.device_frame.devices) {
     if (d.device_id < 1 || d.device_id > n) {
-      throw Error("the recording has device id " + std::to_string(d.device_id) + " but layout '" + layout.name + "' has " +
-                  std::to_string(n) + " device(s)");
+      throw Error("the recording has device id " + std::to_string(d.device_id) + " but layout '" + layout.name +
+                  "' has " + std::to_string(n) + " device(s)");
     }
   }
   CalibrationResult result;
@@ -117,9 +117,10 @@ CalibrationResult calibrate(const CalibrationInput& input, const Layout& layout,
     dc.beyond_cut = s.beyond_cut;
     dc.dropped_beyond_cut = s.dropped_beyond_cut;
     if (s.beyond_cut > 0) {
-      result.notes.push_back(dc.slot + ": " + std::to_string(s.beyond_cut) + " of " + std::to_string(s.size() + s.dropped_beyond_cut) +
-                             " samples had a coordinate clamped at its ±" + format_fixed(options.samples.axis_cut_mm, 0) +
-                             " mm axis cut: only their other coordinates were used");
+      result.notes.push_back(
+          dc.slot + ": " + std::to_string(s.beyond_cut) + " of " + std::to_string(s.size() + s.dropped_beyond_cut) +
+          " samples had a coordinate clamped at its ±" + format_fixed(options.samples.axis_cut_mm, 0) +
+          " mm axis cut: only their other coordinates were used");
     }
   }
   const SampleTable table(samples, input.device_frame.frame_count);
@@ -134,8 +135,9 @@ CalibrationResult calibrate(const CalibrationInput& input, const Layout& layout,
       const ViconPairs& p = pairs[static_cast<size_t>(d)];
       dc.frames = p.frames;
       if (static_cast<int>(p.src.size()) < options.min_samples) {
-        dc.warnings.push_back(dc.slot + ": only " + std::to_string(p.src.size()) + " usable samples with Vicon points (needs " +
-                              std::to_string(options.min_samples) + "): left as it was");
+        dc.warnings.push_back(dc.slot + ": only " + std::to_string(p.src.size()) +
+                              " usable samples with Vicon points (needs " + std::to_string(options.min_samples) +
+                              "): left as it was");
         continue;
       }
       dc.fitted = true;
@@ -149,14 +151,16 @@ CalibrationResult calibrate(const CalibrationInput& input, const Layout& layout,
     if (options.anchor_vicon_to_layout) {
       to_layout = common.inverse();
       fitted = anchor_to_nominal(fitted, nominal, included);
-      result.notes.push_back("kept the layout's world frame; Vicon's frame differed from it by " + format_fixed(common_mm, 1) +
-                                " mm and " + format_fixed(common_deg, 2) + "° on average");
+      result.notes.push_back("kept the layout's world frame; Vicon's frame differed from it by " +
+                             format_fixed(common_mm, 1) + " mm and " + format_fixed(common_deg, 2) + "° on average");
     } else if ((common_mm > options.common_shift_warning_mm || common_deg > options.common_turn_warning_deg) &&
                mean_correction_mm(anchor_to_nominal(fitted, nominal, included), nominal, included) <
                    options.common_share_warning * mean_correction_mm(fitted, nominal, included)) {
-      result.warnings.push_back("every controller moved by " + format_fixed(common_mm, 1) + " mm and turned " + format_fixed(common_deg, 1) +
-                                "° on average: the Vicon frame is probably not the layout's world frame. To keep the layout's frame and "
-                                "take only the controllers' relative placement from Vicon, anchor to the layout (lmc calibrate --anchor-to-layout)");
+      result.warnings.push_back(
+          "every controller moved by " + format_fixed(common_mm, 1) + " mm and turned " + format_fixed(common_deg, 1) +
+          "° on average: the Vicon frame is probably not the layout's world frame. To keep the layout's frame and "
+          "take only the controllers' relative placement from Vicon, anchor to the layout (lmc calibrate "
+          "--anchor-to-layout)");
     }
     for (int d = 0; d < n; ++d) {
       if (!included[static_cast<size_t>(d)]) continue;
@@ -170,7 +174,8 @@ CalibrationResult calibrate(const CalibrationInput& input, const Layout& layout,
     // A controller takes part when enough of its samples are shared with another controller
     // that has enough samples of its own.
     std::vector<bool> candidate(static_cast<size_t>(n));
-    for (int d = 0; d < n; ++d) candidate[static_cast<size_t>(d)] = samples[static_cast<size_t>(d)].size() >= options.min_samples;
+    for (int d = 0; d < n; ++d)
+      candidate[static_cast<size_t>(d)] = samples[static_cast<size_t>(d)].size() >= options.min_samples;
     std::vector<Vec3> src, dst;
     std::vector<int> index;
     for (int d = 0; d < n; ++d) {
@@ -178,7 +183,8 @@ CalibrationResult calibrate(const CalibrationInput& input, const Layout& layout,
       dc.frames = frames_with_samples(samples[static_cast<size_t>(d)]);
       leave_one_out_pairs(samples, table, nominal, candidate, d, src, dst, index);
       if (!candidate[static_cast<size_t>(d)] || static_cast<int>(src.size()) < options.min_samples) {
-        dc.warnings.push_back(dc.slot + ": only " + std::to_string(src.size()) + " usable samples seen together with another controller (needs " +
+        dc.warnings.push_back(dc.slot + ": only " + std::to_string(src.size()) +
+                              " usable samples seen together with another controller (needs " +
                               std::to_string(options.min_samples) + "): left as it was");
         continue;
       }
@@ -187,8 +193,9 @@ CalibrationResult calibrate(const CalibrationInput& input, const Layout& layout,
     int taking_part = 0;
     for (const bool b : included) taking_part += b ? 1 : 0;
     if (taking_part < 2) {
-      result.warnings.push_back("calibration without Vicon needs at least two controllers that see the hand together; " +
-                                std::to_string(taking_part) + " did: nothing was changed");
+      result.warnings.push_back(
+          "calibration without Vicon needs at least two controllers that see the hand together; " +
+          std::to_string(taking_part) + " did: nothing was changed");
       std::fill(included.begin(), included.end(), false);
     } else {
       ConsensusOptions copt = options.consensus;
@@ -196,7 +203,8 @@ CalibrationResult calibrate(const CalibrationInput& input, const Layout& layout,
       const ConsensusFit fit = fit_consensus(samples, table, nominal, included, copt);
       result.sweeps = fit.sweeps;
       if (!fit.converged)
-        result.warnings.push_back("the consensus fit did not settle within " + std::to_string(fit.sweeps) + " sweeps: its result is approximate");
+        result.warnings.push_back("the consensus fit did not settle within " + std::to_string(fit.sweeps) +
+                                  " sweeps: its result is approximate");
       for (int d = 0; d < n; ++d) {
         if (!included[static_cast<size_t>(d)]) continue;
         auto& dc = result.devices[static_cast<size_t>(d)];
@@ -204,7 +212,8 @@ CalibrationResult calibrate(const CalibrationInput& input, const Layout& layout,
         dc.fitted_transform = fit.transforms[static_cast<size_t>(d)];
       }
       std::vector<RigidTransform> fitted(static_cast<size_t>(n));
-      for (int d = 0; d < n; ++d) fitted[static_cast<size_t>(d)] = result.devices[static_cast<size_t>(d)].fitted_transform;
+      for (int d = 0; d < n; ++d)
+        fitted[static_cast<size_t>(d)] = result.devices[static_cast<size_t>(d)].fitted_transform;
       for (int d = 0; d < n; ++d) {
         if (!included[static_cast<size_t>(d)]) continue;
         store_residuals(result.devices[static_cast<size_t>(d)], consensus_sums(samples, table, nominal, included, d),
@@ -221,7 +230,8 @@ CalibrationResult calibrate(const CalibrationInput& input, const Layout& layout,
   // Disagreement between controllers, in both modes, over the controllers that were fitted.
   {
     std::vector<RigidTransform> fitted(static_cast<size_t>(n));
-    for (int d = 0; d < n; ++d) fitted[static_cast<size_t>(d)] = result.devices[static_cast<size_t>(d)].fitted_transform;
+    for (int d = 0; d < n; ++d)
+      fitted[static_cast<size_t>(d)] = result.devices[static_cast<size_t>(d)].fitted_transform;
     ResidualSums before, after;
     for (int d = 0; d < n; ++d) {
       if (!included[static_cast<size_t>(d)]) continue;

@@ -33,6 +33,7 @@ struct CalibrationOptions {
 
 // Recording device id k is the layout's k-th device (as realign.h). Throws lmc::Error when the
 // recording has more devices than the layout.
-CalibrationResult calibrate(const CalibrationInput& input, const Layout& layout, const CalibrationOptions& options = {});
+CalibrationResult calibrate(const CalibrationInput& input, const Layout& layout,
+                            const CalibrationOptions& options = {});
 
 }  // namespace lmc::calibration

@@ -20,8 +20,8 @@ HandTrack load_vicon_track(const fs::path& path, const fs::path& mapping_path) {
   const MarkerSeries markers = load_vicon_markers(path);
   // The calibration grid is the LMC's 100 Hz grid and Vicon frame f is grid frame f.
   if (std::abs(markers.rate_hz - 100.0) > 0.5) {
-    throw Error(ErrorLocation(path.string()),
-                "Vicon rate is " + format_fixed(markers.rate_hz, 2) + " Hz; calibration expects 100 Hz like the LMC grid");
+    throw Error(ErrorLocation(path.string()), "Vicon rate is " + format_fixed(markers.rate_hz, 2) +
+                                                  " Hz; calibration expects 100 Hz like the LMC grid");
   }
   const ViconMapping mapping = mapping_path.empty() ? default_vicon_mapping() : load_vicon_mapping(mapping_path);
   return apply_vicon_mapping(mapping, markers);
@@ -40,7 +40,8 @@ TrialCalibration calibrate_trial(const TrialCalibrationRequest& request, const L
   const TrialSources job = discover_trials(trial, request.vicon).front();
   out.trial = job.trial;
   if (!request.vicon && job.vicon) {
-    out.notes.push_back(job.vicon->string() + " lies next to the trial; calibrating without it (give it as the Vicon file to use it)");
+    out.notes.push_back(job.vicon->string() +
+                        " lies next to the trial; calibrating without it (give it as the Vicon file to use it)");
   }
 
   const LmcRecording rec = read_lmc_recording(trial);
@@ -64,8 +65,8 @@ TrialCalibration calibrate_trial(const TrialCalibrationRequest& request, const L
   } catch (const Error& e) {
     throw Error(ErrorLocation(trial.string()), e.what());
   }
-  out.calibrated = calibrated_layout(nominal, out.result,
-                                     {job.trial, request.vicon ? request.vicon->string() : std::string(), request.when_utc});
+  out.calibrated = calibrated_layout(
+      nominal, out.result, {job.trial, request.vicon ? request.vicon->string() : std::string(), request.when_utc});
   return out;
 }
 

@@ -24,9 +24,9 @@ struct TrialCalibrationRequest {
 };
 
 struct TrialCalibration {
-  std::string trial;                // the trial's name (file name without the LMC_ prefix and suffix)
+  std::string trial;  // the trial's name (file name without the LMC_ prefix and suffix)
   CalibrationResult result;
-  Layout calibrated;                // `nominal` with every fitted controller corrected (calibrated_layout.h)
+  Layout calibrated;                       // `nominal` with every fitted controller corrected (calibrated_layout.h)
   std::vector<std::string> file_warnings;  // what reading the recording found wrong (file: problem)
   std::vector<std::string> notes;          // what was done to line things up, files left out
 };

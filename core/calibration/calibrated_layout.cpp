@@ -20,16 +20,20 @@ Layout calibrated_layout(const Layout& nominal, const CalibrationResult& result,
     ++changed;
   }
   out.name = nominal.name + " (calibrated)";
-  std::string what = "Calibrated " + std::to_string(changed) + " of " + std::to_string(out.devices.size()) + " controllers from trial " +
-                     source.trial + (source.vicon.empty() ? " without Vicon (consensus of the controllers)" : " against Vicon file " + source.vicon) +
-                     " on " + source.when_utc + "; nominal layout: " + nominal.name + ".";
+  std::string what =
+      "Calibrated " + std::to_string(changed) + " of " + std::to_string(out.devices.size()) +
+      " controllers from trial " + source.trial +
+      (source.vicon.empty() ? " without Vicon (consensus of the controllers)" : " against Vicon file " + source.vicon) +
+      " on " + source.when_utc + "; nominal layout: " + nominal.name + ".";
   out.description = nominal.description.empty() ? what : what + " " + nominal.description;
   return out;
 }
 
 namespace {
 
-std::string mm(double v) { return std::isfinite(v) ? format_fixed(v, 1) : "-"; }
+std::string mm(double v) {
+  return std::isfinite(v) ? format_fixed(v, 1) : "-";
+}
 
 std::string before_after(const GroupResidual& r) {
   if (r.samples == 0) return "-";
@@ -40,12 +44,15 @@ std::string before_after(const GroupResidual& r) {
 
 std::string residual_table(const CalibrationResult& result) {
   std::ostringstream o;
-  o << "Residuals, RMS mm before > after calibration (" << (result.with_vicon ? "against Vicon" : "against the other controllers") << ")\n";
+  o << "Residuals, RMS mm before > after calibration ("
+    << (result.with_vicon ? "against Vicon" : "against the other controllers") << ")\n";
   o << std::left << std::setw(8) << "slot" << std::right << std::setw(8) << "samples" << std::setw(16) << "all points";
   for (int g = 0; g < kNumPointGroups; ++g) o << std::setw(18) << point_group_name(g);
-  o << std::setw(10) << "moved mm" << std::setw(10) << "turned °" << "\n";
+  o << std::setw(10) << "moved mm" << std::setw(10) << "turned °"
+    << "\n";
   for (const auto& d : result.devices) {
-    o << std::left << std::setw(8) << d.slot << std::right << std::setw(8) << d.all.samples << std::setw(16) << before_after(d.all);
+    o << std::left << std::setw(8) << d.slot << std::right << std::setw(8) << d.all.samples << std::setw(16)
+      << before_after(d.all);
     for (const auto& g : d.groups) o << std::setw(18) << before_after(g);
     if (d.fitted) {
       o << std::setw(10) << format_fixed(d.moved_mm, 1) << std::setw(10) << format_fixed(d.turned_deg, 2);

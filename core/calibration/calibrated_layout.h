@@ -16,9 +16,9 @@
 namespace lmc::calibration {
 
 struct CalibrationSource {
-  std::string trial;       // the calibration trial's name or file
-  std::string vicon;       // the Vicon file, empty without
-  std::string when_utc;    // ISO 8601
+  std::string trial;     // the calibration trial's name or file
+  std::string vicon;     // the Vicon file, empty without
+  std::string when_utc;  // ISO 8601
 };
 
 // `nominal` with every fitted controller's pose angles and offset replaced; name and

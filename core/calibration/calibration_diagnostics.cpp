@@ -43,14 +43,17 @@ void add_warnings(CalibrationResult& result, const WarningThresholds& th) {
   for (auto& d : result.devices) {
     if (!d.fitted) continue;
     if (d.moved_mm > th.max_moved_mm || d.turned_deg > th.max_turned_deg) {
-      d.warnings.push_back(d.slot + ": the correction (" + format_fixed(d.moved_mm, 1) + " mm, " + format_fixed(d.turned_deg, 1) +
-                           "°) is larger than a misplaced controller explains (limits " + format_fixed(th.max_moved_mm, 0) + " mm, " +
-                           format_fixed(th.max_turned_deg, 0) + "°): check that the right controller is in this slot and its nominal pose");
+      d.warnings.push_back(d.slot + ": the correction (" + format_fixed(d.moved_mm, 1) + " mm, " +
+                           format_fixed(d.turned_deg, 1) +
+                           "°) is larger than a misplaced controller explains (limits " +
+                           format_fixed(th.max_moved_mm, 0) + " mm, " + format_fixed(th.max_turned_deg, 0) +
+                           "°): check that the right controller is in this slot and its nominal pose");
     }
     if (std::isfinite(d.all.after_mm) && d.all.after_mm > th.high_residual_mm) {
-      d.warnings.push_back(d.slot + ": its points stay " + format_fixed(d.all.after_mm, 1) + " mm RMS " + against +
-                           " after calibration (above " + format_fixed(th.high_residual_mm, 0) +
-                           " mm): the hand moved too much, the controller tracked it poorly, or the clocks are not lined up");
+      d.warnings.push_back(
+          d.slot + ": its points stay " + format_fixed(d.all.after_mm, 1) + " mm RMS " + against +
+          " after calibration (above " + format_fixed(th.high_residual_mm, 0) +
+          " mm): the hand moved too much, the controller tracked it poorly, or the clocks are not lined up");
     }
   }
   // Swapped serials: each of two controllers ends up where the other was meant to stand.
@@ -65,10 +68,11 @@ void add_warnings(CalibrationResult& result, const WarningThresholds& th) {
       const double cross_b = transform_distance_mm(db.fitted_transform, da.nominal);
       if (own_a > th.swap_min_correction_mm && own_b > th.swap_min_correction_mm && cross_a < th.swap_ratio * own_a &&
           cross_b < th.swap_ratio * own_b) {
-        result.warnings.push_back(da.slot + " and " + db.slot + " look swapped: each controller was found " + format_fixed(cross_a, 0) +
-                                  " / " + format_fixed(cross_b, 0) + " mm from the other's nominal place but " + format_fixed(own_a, 0) +
-                                  " / " + format_fixed(own_b, 0) +
-                                  " mm from its own. Swap their serials in the layout (or the controllers) and calibrate again");
+        result.warnings.push_back(
+            da.slot + " and " + db.slot + " look swapped: each controller was found " + format_fixed(cross_a, 0) +
+            " / " + format_fixed(cross_b, 0) + " mm from the other's nominal place but " + format_fixed(own_a, 0) +
+            " / " + format_fixed(own_b, 0) +
+            " mm from its own. Swap their serials in the layout (or the controllers) and calibrate again");
       }
     }
   }

@@ -23,7 +23,7 @@ struct ResidualSums {
 };
 
 struct WarningThresholds {
-  double max_moved_mm = 100.0;   // a larger correction is not a misplaced controller
+  double max_moved_mm = 100.0;  // a larger correction is not a misplaced controller
   double max_turned_deg = 20.0;
   double high_residual_mm = 8.0;  // RMS after calibration above this "stays high"
   // Two controllers look swapped when each one's fitted transform is at most this fraction as far

@@ -7,7 +7,8 @@
 
 namespace lmc::calibration {
 
-CalibrationInput prepare_calibration_input(const LmcRecording& recording, const HandTrack* vicon, const InputOptions& options) {
+CalibrationInput prepare_calibration_input(const LmcRecording& recording, const HandTrack* vicon,
+                                           const InputOptions& options) {
   if (recording.rows.empty()) throw Error(ErrorLocation(recording.source), "the LMC recording has no data rows");
   CalibrationInput in;
   if (recording.kind == RecordingKind::kRaw) {
@@ -18,7 +19,8 @@ CalibrationInput prepare_calibration_input(const LmcRecording& recording, const 
   } else {
     in.device_frame = grid_from_resampled(recording, &in.notes);
   }
-  if (in.device_frame.frame_count == 0) throw Error(ErrorLocation(recording.source), "no controller saw a hand in this recording");
+  if (in.device_frame.frame_count == 0)
+    throw Error(ErrorLocation(recording.source), "no controller saw a hand in this recording");
   in.labels.reserve(in.device_frame.devices.size());
   for (const auto& d : in.device_frame.devices) in.labels.push_back(visibility_labels(d.track, options.visibility));
   if (vicon != nullptr) in.vicon = *vicon;

@@ -8,9 +8,9 @@
 #include <string>
 #include <vector>
 
+#include "core/hand/hand_track.h"
 #include "core/io/lmc_recording.h"
 #include "core/io/recorder_sidecar.h"
-#include "core/hand/hand_track.h"
 #include "core/processing/resample.h"
 #include "core/visibility/visibility_params.h"
 
@@ -29,7 +29,8 @@ struct InputOptions {
 };
 
 // Throws lmc::Error when the recording has no hand at all.
-CalibrationInput prepare_calibration_input(const LmcRecording& recording, const HandTrack* vicon, const InputOptions& options);
+CalibrationInput prepare_calibration_input(const LmcRecording& recording, const HandTrack* vicon,
+                                           const InputOptions& options);
 
 // The device-clock time of Vicon frame 0 from a recorder sidecar: the simulator's ground truth
 // notes it exactly; a real recording's `vicon_alignment` gives each device's clock at the

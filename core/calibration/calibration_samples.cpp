@@ -6,10 +6,14 @@ namespace lmc::calibration {
 
 const char* point_group_name(int group) {
   switch (group) {
-    case kGroupPalm: return "palm";
-    case kGroupWrist: return "wrist";
-    case kGroupMetacarpalBases: return "metacarpal bases";
-    default: return "knuckles";
+    case kGroupPalm:
+      return "palm";
+    case kGroupWrist:
+      return "wrist";
+    case kGroupMetacarpalBases:
+      return "metacarpal bases";
+    default:
+      return "knuckles";
   }
 }
 
@@ -32,13 +36,15 @@ std::uint8_t unclamped_axes(const Vec3& p, std::uint8_t clamping_axes, const Sam
   std::uint8_t axes = 0;
   for (int k = 0; k < 3; ++k) {
     const double a = std::abs(p[k]);
-    const bool in_band = a >= rules.axis_cut_mm - rules.axis_cut_below_mm && a <= rules.axis_cut_mm + rules.axis_cut_above_mm;
+    const bool in_band =
+        a >= rules.axis_cut_mm - rules.axis_cut_below_mm && a <= rules.axis_cut_mm + rules.axis_cut_above_mm;
     if (((clamping_axes >> k) & 1U) == 0 || !in_band) axes |= static_cast<std::uint8_t>(1U << k);
   }
   return axes;
 }
 
-DeviceSamples gather_samples(const HandTrack& track, const std::vector<FingerLabels>& labels, const SampleRules& rules) {
+DeviceSamples gather_samples(const HandTrack& track, const std::vector<FingerLabels>& labels,
+                             const SampleRules& rules) {
   DeviceSamples s;
   const auto& points = calibration_points();
   const int frames = std::min(track.frame_count, static_cast<int>(labels.size()));

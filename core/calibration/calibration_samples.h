@@ -27,9 +27,9 @@
 #include <cstdint>
 #include <vector>
 
-#include "core/io/lmc_recording.h"
-#include "core/hand/hand_track.h"
 #include "core/calibration/rigid_transform.h"
+#include "core/hand/hand_track.h"
+#include "core/io/lmc_recording.h"
 #include "core/metric/layout_tally.h"
 
 namespace lmc::calibration {

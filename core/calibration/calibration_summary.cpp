@@ -5,7 +5,9 @@
 namespace lmc::calibration {
 namespace {
 
-nlohmann::json summary_number(double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr); }
+nlohmann::json summary_number(double v) {
+  return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr);
+}
 
 }  // namespace
 

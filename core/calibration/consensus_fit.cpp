@@ -14,7 +14,8 @@ SampleTable::SampleTable(const std::vector<DeviceSamples>& samples, int frames)
   for (int d = 0; d < devices_; ++d) {
     const DeviceSamples& s = samples[static_cast<size_t>(d)];
     for (int i = 0; i < s.size(); ++i)
-      if (s.frame[static_cast<size_t>(i)] < frames) index_[static_cast<size_t>(s.key(i)) * static_cast<size_t>(devices_) + static_cast<size_t>(d)] = i;
+      if (s.frame[static_cast<size_t>(i)] < frames)
+        index_[static_cast<size_t>(s.key(i)) * static_cast<size_t>(devices_) + static_cast<size_t>(d)] = i;
   }
 }
 
@@ -46,8 +47,8 @@ void leave_one_out_pairs(const std::vector<DeviceSamples>& samples, const Sample
   }
 }
 
-RigidTransform mean_correction(const std::vector<RigidTransform>& transforms, const std::vector<RigidTransform>& nominal,
-                               const std::vector<bool>& included) {
+RigidTransform mean_correction(const std::vector<RigidTransform>& transforms,
+                               const std::vector<RigidTransform>& nominal, const std::vector<bool>& included) {
   Eigen::Matrix3d rsum = Eigen::Matrix3d::Zero();
   Vec3 tsum = Vec3::Zero();
   int n = 0;
@@ -63,7 +64,8 @@ RigidTransform mean_correction(const std::vector<RigidTransform>& transforms, co
 }
 
 std::vector<RigidTransform> anchor_to_nominal(const std::vector<RigidTransform>& transforms,
-                                              const std::vector<RigidTransform>& nominal, const std::vector<bool>& included) {
+                                              const std::vector<RigidTransform>& nominal,
+                                              const std::vector<bool>& included) {
   // G = M⁻¹ for the mean correction M: afterwards the mean correction is the identity.
   const RigidTransform g = mean_correction(transforms, nominal, included).inverse();
   std::vector<RigidTransform> out = transforms;

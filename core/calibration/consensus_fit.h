@@ -23,7 +23,9 @@ class SampleTable {
  public:
   SampleTable(const std::vector<DeviceSamples>& samples, int frames);
   // Index of device d's sample with this key, or −1.
-  int at(int key, int d) const { return index_[static_cast<size_t>(key) * static_cast<size_t>(devices_) + static_cast<size_t>(d)]; }
+  int at(int key, int d) const {
+    return index_[static_cast<size_t>(key) * static_cast<size_t>(devices_) + static_cast<size_t>(d)];
+  }
   int devices() const { return devices_; }
 
  private:
@@ -42,13 +44,14 @@ void leave_one_out_pairs(const std::vector<DeviceSamples>& samples, const Sample
 
 // The mean correction of the `included` controllers: the rotation nearest the average of
 // T_d ∘ N_d⁻¹'s rotations and the average of their translations (identity when none is included).
-RigidTransform mean_correction(const std::vector<RigidTransform>& transforms, const std::vector<RigidTransform>& nominal,
-                               const std::vector<bool>& included);
+RigidTransform mean_correction(const std::vector<RigidTransform>& transforms,
+                               const std::vector<RigidTransform>& nominal, const std::vector<bool>& included);
 
 // The common transform applied to every `included` controller so that their mean correction
 // relative to `nominal` is the identity (see above). Returns the anchored transforms.
 std::vector<RigidTransform> anchor_to_nominal(const std::vector<RigidTransform>& transforms,
-                                              const std::vector<RigidTransform>& nominal, const std::vector<bool>& included);
+                                              const std::vector<RigidTransform>& nominal,
+                                              const std::vector<bool>& included);
 
 struct ConsensusOptions {
   RobustFitOptions fit;

@@ -61,8 +61,9 @@ bool any_masked(std::span<const std::uint8_t> axes) {
   return false;
 }
 
-RigidTransform weighted_masked_fit(std::span<const Vec3> src, std::span<const Vec3> dst, std::span<const std::uint8_t> axes,
-                                   std::span<const double> weights, const RigidTransform& start) {
+RigidTransform weighted_masked_fit(std::span<const Vec3> src, std::span<const Vec3> dst,
+                                   std::span<const std::uint8_t> axes, std::span<const double> weights,
+                                   const RigidTransform& start) {
   // Residual of trusted axis k of sample i: c = a_k·(dst − t) − src_k with a_k = r·e_k. A step
   // turns by ω about the targets' weighted centre m and shifts by s (r' = exp([ω]×)·r,
   // t' = m + exp([ω]×)·(t − m) + s), so dc/dω = a_k × (dst − m), dc/ds = −a_k: about the centre,
@@ -123,11 +124,14 @@ RigidTransform robust_rigid_fit(std::span<const Vec3> src, std::span<const Vec3>
   RigidTransform current = start;
   std::vector<double> residuals(src.size()), weights;
   const bool masked = any_masked(axes);
-  auto residual = [&](size_t i) { return masked ? masked_distance(current, src[i], dst[i], axes[i]) : (current.apply(src[i]) - dst[i]).norm(); };
+  auto residual = [&](size_t i) {
+    return masked ? masked_distance(current, src[i], dst[i], axes[i]) : (current.apply(src[i]) - dst[i]).norm();
+  };
   for (int it = 0; it < options.max_iterations; ++it) {
     for (size_t i = 0; i < src.size(); ++i) residuals[i] = residual(i);
     huber_weights(residuals, options, weights);
-    const RigidTransform next = masked ? weighted_masked_fit(src, dst, axes, weights, current) : weighted_kabsch(src, dst, weights);
+    const RigidTransform next =
+        masked ? weighted_masked_fit(src, dst, axes, weights, current) : weighted_kabsch(src, dst, weights);
     double moved = 0;
     for (size_t i = 0; i < src.size(); i += std::max<size_t>(1, src.size() / 64))
       moved = std::max(moved, (next.apply(src[i]) - current.apply(src[i])).norm());

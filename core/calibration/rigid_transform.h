@@ -42,8 +42,9 @@ inline constexpr std::uint8_t kAllAxes = 7;
 double masked_distance(const RigidTransform& t, const Vec3& src, const Vec3& dst, std::uint8_t axes);
 // The transform minimising Σ w_i·Σ_{k trusted} (Tᵀ(dst_i) − src_i)_k², by Gauss–Newton from
 // `start` (no closed form once axes are missing). With every axis trusted it has Kabsch's minimum.
-RigidTransform weighted_masked_fit(std::span<const Vec3> src, std::span<const Vec3> dst, std::span<const std::uint8_t> axes,
-                                   std::span<const double> weights, const RigidTransform& start);
+RigidTransform weighted_masked_fit(std::span<const Vec3> src, std::span<const Vec3> dst,
+                                   std::span<const std::uint8_t> axes, std::span<const double> weights,
+                                   const RigidTransform& start);
 
 struct RobustFitOptions {
   int max_iterations = 30;

@@ -54,8 +54,8 @@ std::filesystem::path study_sample_dir() {
     return std::filesystem::is_directory(dir, ec) ? dir : std::filesystem::path();
   }
   // assets/ → the checkout → the folder holding it, where the study's data may sit.
-  const auto dir = std::filesystem::path(LMC_SOURCE_ASSETS_DIR).parent_path().parent_path() / "shared" / "reference-data" /
-                   "validation";
+  const auto dir = std::filesystem::path(LMC_SOURCE_ASSETS_DIR).parent_path().parent_path() / "shared" /
+                   "reference-data" / "validation";
   return std::filesystem::is_directory(dir, ec) ? dir : std::filesystem::path();
 }
 

@@ -12,7 +12,8 @@ std::string safe_name_problem(const std::string& name, const std::string& what) 
   for (size_t i = 0; i < name.size(); ++i) {
     const char c = name[i];
     const bool ok = (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z') || (c >= '0' && c <= '9') || c == '_' || c == '-';
-    if (!ok) return what + " has a character other than letters, digits, '_' or '-' at position " + std::to_string(i + 1);
+    if (!ok)
+      return what + " has a character other than letters, digits, '_' or '-' at position " + std::to_string(i + 1);
   }
   return {};
 }

@@ -24,7 +24,9 @@ namespace fs = std::filesystem;
 namespace lmc {
 namespace bids_dataset_detail {  // named: core compiles in unity batches
 
-void write_json(const fs::path& path, const nlohmann::json& j) { write_file_atomically(path, j.dump(2) + "\n"); }
+void write_json(const fs::path& path, const nlohmann::json& j) {
+  write_file_atomically(path, j.dump(2) + "\n");
+}
 
 // True when `path` is `dir` or lies under it (both resolved, so "a/../b" and symlinks count).
 bool lies_inside(const fs::path& path, const fs::path& dir) {
@@ -43,7 +45,8 @@ void check_anonymise_key(const BidsExportRequest& request) {
                     " (it links the labels back to the subject ids); nothing was written");
   }
   if (fs::exists(request.anonymise_key) && !request.force) {
-    throw Error(ErrorLocation(request.anonymise_key.string()), "the key file exists (use --force to replace it); nothing was written");
+    throw Error(ErrorLocation(request.anonymise_key.string()),
+                "the key file exists (use --force to replace it); nothing was written");
   }
 }
 
@@ -53,24 +56,29 @@ void check_anonymise_key(const BidsExportRequest& request) {
 void prepare_dataset_dir(const BidsExportRequest& request, std::vector<std::string>& notes) {
   const fs::path& out = request.out_dir;
   std::error_code ec;
-  if (fs::exists(out, ec) && !fs::is_directory(out, ec)) throw Error(ErrorLocation(out.string()), "exists and is not a folder");
+  if (fs::exists(out, ec) && !fs::is_directory(out, ec))
+    throw Error(ErrorLocation(out.string()), "exists and is not a folder");
   if (fs::exists(out, ec) && !fs::is_empty(out, ec)) {
     if (!request.force) {
-      throw Error(ErrorLocation(out.string()), "the dataset folder is not empty (use --force to replace its files); nothing was written");
+      throw Error(ErrorLocation(out.string()),
+                  "the dataset folder is not empty (use --force to replace its files); nothing was written");
     }
     bool ours = false;
     try {
-      ours = fs::exists(out / "dataset_description.json") && bids_dataset_is_ours(read_json_file(out / "dataset_description.json"));
+      ours = fs::exists(out / "dataset_description.json") &&
+             bids_dataset_is_ours(read_json_file(out / "dataset_description.json"));
     } catch (const std::exception&) {
       ours = false;
     }
     if (ours) {
       for (const auto& entry : fs::directory_iterator(out)) {
         const std::string name = entry.path().filename().string();
-        if (entry.is_directory() && (name.rfind("sub-", 0) == 0 || name == kBidsLayoutsDir)) fs::remove_all(entry.path());
+        if (entry.is_directory() && (name.rfind("sub-", 0) == 0 || name == kBidsLayoutsDir))
+          fs::remove_all(entry.path());
       }
     } else {
-      notes.push_back(out.string() + " was not written by lmc export bids: its files were kept, those of the same name replaced");
+      notes.push_back(out.string() +
+                      " was not written by lmc export bids: its files were kept, those of the same name replaced");
     }
   }
   fs::create_directories(out);
@@ -121,16 +129,19 @@ struct Writer {
     auto& listed = scans[s.label];
     listed.insert(listed.end(), added.begin(), added.end());
     write_file_atomically(subject_dir / (bids_subject_dir(s.label) + "_scans.tsv"), bids_scans_tsv(listed));
-    if (std::none_of(participants.begin(), participants.end(), [&](const BidsParticipant& p) { return p.label == s.label; })) {
+    if (std::none_of(participants.begin(), participants.end(),
+                     [&](const BidsParticipant& p) { return p.label == s.label; })) {
       participants.push_back({s.label, s.subject.handedness, s.subject.hand_length_mm, s.subject.hand_breadth_mm});
       write_file_atomically(request.out_dir / "participants.tsv", bids_participants_tsv(participants));
       ++report.subjects;
     }
-    std::string line = "wrote " + bids_subject_dir(s.label) + "/motion/" + bids_stem(t.entities) + " (" + t.job.trial + "): " +
-                       std::to_string(systems.size()) + " tracking systems, " + std::to_string(table.frame_count()) + " frames";
+    std::string line = "wrote " + bids_subject_dir(s.label) + "/motion/" + bids_stem(t.entities) + " (" + t.job.trial +
+                       "): " + std::to_string(systems.size()) + " tracking systems, " +
+                       std::to_string(table.frame_count()) + " frames";
     if (!table.has_vicon) {
       line += ", no Vicon";
-      report.notes.push_back(bids_subject_dir(s.label) + " " + t.job.trial + ": no Vicon file next to it: controllers and fused hand only");
+      report.notes.push_back(bids_subject_dir(s.label) + " " + t.job.trial +
+                             ": no Vicon file next to it: controllers and fused hand only");
     }
     return line;
   }
@@ -164,7 +175,8 @@ BidsExportReport export_bids(const BidsExportRequest& request) {
   prepare_dataset_dir(request, report.notes);
 
   // The dataset-level files first: from here on the folder is a dataset, at first with no subject.
-  const std::string name = "Leap Motion Controller hand tracking (" + std::to_string(plan.subjects.size()) + " subject session(s))";
+  const std::string name =
+      "Leap Motion Controller hand tracking (" + std::to_string(plan.subjects.size()) + " subject session(s))";
   write_json(request.out_dir / "dataset_description.json", bids_dataset_description(name));
   write_file_atomically(request.out_dir / "README", bids_readme(request.anonymise));
   write_file_atomically(request.out_dir / ".bidsignore", bids_ignore());
@@ -173,7 +185,8 @@ BidsExportReport export_bids(const BidsExportRequest& request) {
   if (request.anonymise) {
     std::string key = "participant_id\tsubject_id\tsession_folder\n";
     for (const auto& s : plan.subjects) {
-      key += bids_subject_dir(s.label) + "\t" + s.subject.subject_id + "\t" + fs::absolute(s.session_dir).string() + "\n";
+      key +=
+          bids_subject_dir(s.label) + "\t" + s.subject.subject_id + "\t" + fs::absolute(s.session_dir).string() + "\n";
     }
     if (request.anonymise_key.has_parent_path()) fs::create_directories(request.anonymise_key.parent_path());
     write_file_atomically(request.anonymise_key, key);
@@ -187,7 +200,8 @@ BidsExportReport export_bids(const BidsExportRequest& request) {
       if (request.on_progress) request.on_progress(done, total);
       if (request.should_stop && request.should_stop()) {
         report.cancelled = true;
-        report.notes.push_back("cancelled after " + std::to_string(done) + " of " + std::to_string(total) + " trial(s)");
+        report.notes.push_back("cancelled after " + std::to_string(done) + " of " + std::to_string(total) +
+                               " trial(s)");
         return report;
       }
       ++done;
@@ -198,7 +212,8 @@ BidsExportReport export_bids(const BidsExportRequest& request) {
       } catch (const std::exception& e) {
         const std::string what = e.what();
         const std::string prefix = t.job.trial + ": ";
-        const std::string note = "left out " + bids_subject_dir(s.label) + " " + (what.rfind(prefix, 0) == 0 ? what : prefix + what);
+        const std::string note =
+            "left out " + bids_subject_dir(s.label) + " " + (what.rfind(prefix, 0) == 0 ? what : prefix + what);
         report.notes.push_back(note);
         ++report.left_out;
         if (request.on_trial) request.on_trial(note);

@@ -10,22 +10,27 @@ namespace bids_files_detail {  // named: core compiles in unity batches
 
 constexpr const char* kProgram = "lmc-workbench";
 
-std::string size_cell(const std::optional<double>& mm) { return mm ? format_fixed(*mm, 1) : std::string("n/a"); }
+std::string size_cell(const std::optional<double>& mm) {
+  return mm ? format_fixed(*mm, 1) : std::string("n/a");
+}
 
 }  // namespace bids_files_detail
 
 nlohmann::json bids_dataset_description(const std::string& name) {
-  return {{"Name", name},
-          {"BIDSVersion", "1.9.0"},
-          {"DatasetType", "raw"},
-          {"GeneratedBy",
-           nlohmann::json::array({{{"Name", bids_files_detail::kProgram},
-                                   {"Version", LMC_VERSION},
-                                   {"Description", "lmc export bids: accepted trials of subject sessions, processed onto a 100 Hz grid"}}})}};
+  return {
+      {"Name", name},
+      {"BIDSVersion", "1.9.0"},
+      {"DatasetType", "raw"},
+      {"GeneratedBy",
+       nlohmann::json::array(
+           {{{"Name", bids_files_detail::kProgram},
+             {"Version", LMC_VERSION},
+             {"Description", "lmc export bids: accepted trials of subject sessions, processed onto a 100 Hz grid"}}})}};
 }
 
 bool bids_dataset_is_ours(const nlohmann::json& description) {
-  if (!description.is_object() || !description.contains("GeneratedBy") || !description["GeneratedBy"].is_array()) return false;
+  if (!description.is_object() || !description.contains("GeneratedBy") || !description["GeneratedBy"].is_array())
+    return false;
   for (const auto& g : description["GeneratedBy"]) {
     if (g.is_object() && g.value("Name", std::string{}) == bids_files_detail::kProgram) return true;
   }
@@ -36,17 +41,20 @@ std::string bids_participants_tsv(const std::vector<BidsParticipant>& participan
   std::string out = "participant_id\thandedness\thand_length_mm\thand_breadth_mm\n";
   for (const auto& p : participants) {
     out += bids_subject_dir(p.label) + "\t" + (p.handedness.empty() ? std::string("n/a") : p.handedness) + "\t" +
-           bids_files_detail::size_cell(p.hand_length_mm) + "\t" + bids_files_detail::size_cell(p.hand_breadth_mm) + "\n";
+           bids_files_detail::size_cell(p.hand_length_mm) + "\t" + bids_files_detail::size_cell(p.hand_breadth_mm) +
+           "\n";
   }
   return out;
 }
 
 nlohmann::json bids_participants_json() {
-  return {{"participant_id", {{"Description", "The subject: sub- and the session's subject id, or a number when anonymised"}}},
+  return {{"participant_id",
+           {{"Description", "The subject: sub- and the session's subject id, or a number when anonymised"}}},
           {"handedness",
            {{"Description", "The hand recorded, as the session's manifest gives it"},
             {"Levels", {{"right", "right hand"}, {"left", "left hand"}}}}},
-          {"hand_length_mm", {{"Description", "Hand length: wrist crease to the tip of the middle finger"}, {"Units", "mm"}}},
+          {"hand_length_mm",
+           {{"Description", "Hand length: wrist crease to the tip of the middle finger"}, {"Units", "mm"}}},
           {"hand_breadth_mm", {{"Description", "Hand breadth across the metacarpal heads"}, {"Units", "mm"}}}};
 }
 
@@ -70,14 +78,16 @@ std::string bids_readme(bool anonymised) {
   t += "Exported by lmc-workbench (`lmc export bids`, version " LMC_VERSION ") from subject session folders.\n";
   t += "One subject per session; every accepted trial of the session, processed onto the 100 Hz grid.\n\n";
   t += "Naming\n------\n";
-  t += "sub-<subject>/motion/sub-<subject>_task-<motion>_tracksys-<system>_acq-<layout>_run-<pose><repetition>_<suffix>\n";
+  t += "sub-<subject>/motion/"
+       "sub-<subject>_task-<motion>_tracksys-<system>_acq-<layout>_run-<pose><repetition>_<suffix>\n";
   t += "* task: the motion (Static, Index, Thumb, Wrist, ...).\n";
   t += "* acq: the controller layout key of the trial's block (Naiv, Opti, ...); the layout itself is in layouts/.\n";
   t += "* run: the palm pose code followed by the repetition in two digits (run-102: pose 1, repetition 2),\n";
   t += "  the same digits as the trial name (Naiv_Index102).\n";
   t += "* tracksys: LMC1, LMC2, ... each controller's own hand realigned into the world frame; LMCfused the\n";
   t += "  fused hand; Vicon the trial's Vicon markers, when the trial had a Vicon file.\n";
-  t += "BIDS labels hold letters and digits only: other characters of the study's names are dropped (Subject_7 -> Subject7).\n";
+  t += "BIDS labels hold letters and digits only: other characters of the study's names are dropped (Subject_7 -> "
+       "Subject7).\n";
   if (anonymised) t += "Subjects are numbered 01, 02, ...; the key to the session ids is kept outside the dataset.\n";
   t += "\nData\n----\n";
   t += "Positions in mm in the rig's world frame: x along the table to the subject's right, y up (table top y = 0),\n";
@@ -89,11 +99,14 @@ std::string bids_readme(bool anonymised) {
   t += "capture trigger, or the simulated Vicon's time zero), in seconds from the first row.\n";
   t += "\nlayouts/\n--------\n";
   t += "layouts/sub-<subject>_acq-<layout>_layout.json: the layout the subject's trials of that block were processed\n";
-  t += "with (lmc-workbench layout JSON, format 1: each controller's slot, pose in mm and degrees, calibration offset).\n";
+  t += "with (lmc-workbench layout JSON, format 1: each controller's slot, pose in mm and degrees, calibration "
+       "offset).\n";
   t += "BIDS does not define this file; .bidsignore names the folder.\n";
   return t;
 }
 
-std::string bids_ignore() { return std::string(kBidsLayoutsDir) + "/\n"; }
+std::string bids_ignore() {
+  return std::string(kBidsLayoutsDir) + "/\n";
+}
 
 }  // namespace lmc

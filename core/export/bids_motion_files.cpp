@@ -33,7 +33,9 @@ bool split_label(const std::string& label, std::string* system, int* device_id, 
   return false;
 }
 
-std::string coordinate(double v) { return std::isfinite(v) ? format_fixed(v, 3) : std::string(kBidsMissingValue); }
+std::string coordinate(double v) {
+  return std::isfinite(v) ? format_fixed(v, 3) : std::string(kBidsMissingValue);
+}
 
 }  // namespace bids_motion_detail
 
@@ -86,8 +88,9 @@ nlohmann::json bids_channels_json() {
            {{"Description", "The reference frame of the positions"},
             {"Levels",
              {{"world",
-               {{"Description", "The rig's world frame (docs/algorithms/frames.md): x along the table to the subject's right, "
-                                "y up (table top y = 0), z towards the subject; origin at the centre of the controllers' layout"},
+               {{"Description",
+                 "The rig's world frame (docs/algorithms/frames.md): x along the table to the subject's right, "
+                 "y up (table top y = 0), z towards the subject; origin at the centre of the controllers' layout"},
                 {"SpatialAxes", "RSP"},
                 {"RotationRule", "right-hand"}}}}}}}};
 }
@@ -114,7 +117,8 @@ nlohmann::json bids_motion_json(const PointTable& table, const BidsTrackingSyste
 
 std::string bids_events_tsv(const std::vector<BidsEvent>& events) {
   std::string out = "onset\tduration\ttrial_type\n";
-  for (const auto& e : events) out += format_fixed(e.onset_s, 3) + "\t" + format_fixed(e.duration_s, 3) + "\t" + e.type + "\n";
+  for (const auto& e : events)
+    out += format_fixed(e.onset_s, 3) + "\t" + format_fixed(e.duration_s, 3) + "\t" + e.type + "\n";
   return out;
 }
 

@@ -40,8 +40,8 @@ struct BidsMotionInfo {
   std::string instructions;
   std::string tracking_system_name;
   std::string manufacturer;
-  std::string model;           // empty: not known (left out)
-  std::string serial;          // empty: not known (left out)
+  std::string model;   // empty: not known (left out)
+  std::string serial;  // empty: not known (left out)
   std::string software_versions;
 };
 
@@ -49,9 +49,9 @@ struct BidsMotionInfo {
 nlohmann::json bids_motion_json(const PointTable& table, const BidsTrackingSystem& system, const BidsMotionInfo& info);
 
 struct BidsEvent {
-  double onset_s = 0;     // from the first row of the trial's motion files; may be negative
+  double onset_s = 0;  // from the first row of the trial's motion files; may be negative
   double duration_s = 0;
-  std::string type;       // go | stop | vicon_capture_start
+  std::string type;  // go | stop | vicon_capture_start
 };
 
 // *_events.tsv: onset, duration, trial_type; seconds with three decimals.

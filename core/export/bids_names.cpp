@@ -13,7 +13,9 @@ std::string bids_label(const std::string& name) {
   return out;
 }
 
-int bids_run_index(int pose_code, int repetition) { return pose_code * 100 + repetition; }
+int bids_run_index(int pose_code, int repetition) {
+  return pose_code * 100 + repetition;
+}
 
 std::string bids_stem(const BidsEntities& e) {
   std::string s = "sub-" + e.subject + "_task-" + e.task;
@@ -23,9 +25,13 @@ std::string bids_stem(const BidsEntities& e) {
   return s;
 }
 
-std::string bids_subject_dir(const std::string& subject_label) { return "sub-" + subject_label; }
+std::string bids_subject_dir(const std::string& subject_label) {
+  return "sub-" + subject_label;
+}
 
-std::string bids_device_tracksys(int device_id) { return "LMC" + std::to_string(device_id); }
+std::string bids_device_tracksys(int device_id) {
+  return "LMC" + std::to_string(device_id);
+}
 
 std::string bids_anonymous_label(int index, int count) {
   const size_t width = std::max<size_t>(2, std::to_string(std::max(count, 1)).size());

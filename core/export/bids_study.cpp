@@ -27,7 +27,8 @@ std::vector<fs::path> session_folders(const fs::path& input, BidsStudyPlan& plan
   }
   std::sort(found.begin(), found.end());
   if (found.empty()) {
-    plan.notes.push_back("left out " + input.string() + ": no subject session folder (with " + session::kJournalFile + ") in it");
+    plan.notes.push_back("left out " + input.string() + ": no subject session folder (with " + session::kJournalFile +
+                         ") in it");
     ++plan.left_out;
   }
   return found;
@@ -74,7 +75,8 @@ void plan_trials(const session::SessionState& state, BidsSubjectPlan& subject, B
     t.entities.acq = bids_label(planned.layout_key);
     t.entities.run = bids_run_index(pose.code, planned.repetition);
     if (t.entities.task.empty() || t.entities.acq.empty()) {
-      leave_out("its motion key '" + type.key + "' or layout key '" + planned.layout_key + "' has no letter or digit for a BIDS label");
+      leave_out("its motion key '" + type.key + "' or layout key '" + planned.layout_key +
+                "' has no letter or digit for a BIDS label");
       continue;
     }
     if (!stems.insert(bids_stem(t.entities)).second) {

@@ -16,12 +16,12 @@
 namespace lmc {
 
 struct BidsTrialPlan {
-  TrialSources job;                // the accepted attempt (core/session/session_trials.h)
-  BidsEntities entities;       // tracksys left empty: one per tracking system when written
-  std::string motion;          // the protocol's trial type key ("Index")
-  std::string layout_key;      // "Naiv"
-  std::string subject_cue;     // what the subject was shown
-  std::string operator_cue;    // what the operator read
+  TrialSources job;          // the accepted attempt (core/session/session_trials.h)
+  BidsEntities entities;     // tracksys left empty: one per tracking system when written
+  std::string motion;        // the protocol's trial type key ("Index")
+  std::string layout_key;    // "Naiv"
+  std::string subject_cue;   // what the subject was shown
+  std::string operator_cue;  // what the operator read
 };
 
 struct BidsSubjectPlan {

@@ -13,7 +13,8 @@ namespace bids_sidecar_detail {  // named: core compiles in unity batches
 std::string software_line(const RecorderSidecar* sidecar) {
   std::string s;
   if (sidecar != nullptr && !sidecar->software_name.empty()) {
-    s = "recorded with " + sidecar->software_name + " " + sidecar->software_version + " (" + sidecar->backend + " backend); ";
+    s = "recorded with " + sidecar->software_name + " " + sidecar->software_version + " (" + sidecar->backend +
+        " backend); ";
   }
   return s + "processed with lmc-workbench " LMC_VERSION;
 }
@@ -26,7 +27,8 @@ std::optional<std::int64_t> json_int(const nlohmann::json& j, const char* key) {
 // The recorder keeps no model name; a newer sidecar's device entry may carry one.
 std::string controller_model(const RecorderSidecar* sidecar, int device_id) {
   if (sidecar == nullptr) return "Leap Motion Controller";
-  if (const SidecarDevice* d = sidecar->device(device_id); d != nullptr && d->unknown.contains("model") && d->unknown["model"].is_string()) {
+  if (const SidecarDevice* d = sidecar->device(device_id);
+      d != nullptr && d->unknown.contains("model") && d->unknown["model"].is_string()) {
     return d->unknown["model"].get<std::string>();
   }
   return sidecar->backend == "sim" ? "simulated Leap Motion Controller" : "Leap Motion Controller";
@@ -34,8 +36,8 @@ std::string controller_model(const RecorderSidecar* sidecar, int device_id) {
 
 }  // namespace bids_sidecar_detail
 
-BidsMotionInfo bids_motion_info(const BidsTrialPlan& t, const BidsTrackingSystem& system, const RecorderSidecar* sidecar,
-                                FusionMethod method_used) {
+BidsMotionInfo bids_motion_info(const BidsTrialPlan& t, const BidsTrackingSystem& system,
+                                const RecorderSidecar* sidecar, FusionMethod method_used) {
   using namespace bids_sidecar_detail;
   BidsMotionInfo info;
   info.task_name = t.motion;
@@ -45,7 +47,8 @@ BidsMotionInfo bids_motion_info(const BidsTrialPlan& t, const BidsTrackingSystem
   const std::string method = fusion_method_name(method_used);
   if (system.name == kBidsViconTracksys) {
     info.manufacturer = "Vicon";
-    info.tracking_system_name = "Vicon markers of the trial's " + (t.job.vicon ? t.job.vicon->filename().string() : std::string("Vicon file")) +
+    info.tracking_system_name = "Vicon markers of the trial's " +
+                                (t.job.vicon ? t.job.vicon->filename().string() : std::string("Vicon file")) +
                                 ", frame f on the processing grid's frame f";
     if (sidecar != nullptr && sidecar->backend == "sim") info.model = "simulated (the simulated rig's ground truth)";
     return info;
@@ -79,23 +82,27 @@ std::vector<BidsEvent> bids_trial_events(std::int64_t grid_start_us, const Recor
   const bool rows = first <= last;
   // The file starts at go only when the sidecar has the trial window and the trial reached go.
   const bool has_go = rows && json_int(sidecar->trial_window, "go_host_ns").has_value();
-  if (has_go) events.push_back({(static_cast<double>(first) - start) * 1e-6, (static_cast<double>(last - first)) * 1e-6, "go"});
+  if (has_go)
+    events.push_back({(static_cast<double>(first) - start) * 1e-6, (static_cast<double>(last - first)) * 1e-6, "go"});
   if (rows) events.push_back({(static_cast<double>(last) - start) * 1e-6, 0.0, "stop"});
   std::optional<std::int64_t> vicon;
-  if (sidecar->vicon_alignment.is_object() && sidecar->vicon_alignment.contains("devices") && sidecar->vicon_alignment["devices"].is_array()) {
+  if (sidecar->vicon_alignment.is_object() && sidecar->vicon_alignment.contains("devices") &&
+      sidecar->vicon_alignment["devices"].is_array()) {
     for (const auto& d : sidecar->vicon_alignment["devices"]) {
       if ((vicon = json_int(d, "device_clock_at_event_us"))) break;
     }
   }
   if (!vicon && sidecar->ground_truth) vicon = sidecar->ground_truth->device_clock_at_time_zero_us;
   if (vicon) events.push_back({(static_cast<double>(*vicon) - start) * 1e-6, 0.0, "vicon_capture_start"});
-  std::stable_sort(events.begin(), events.end(), [](const BidsEvent& a, const BidsEvent& b) { return a.onset_s < b.onset_s; });
+  std::stable_sort(events.begin(), events.end(),
+                   [](const BidsEvent& a, const BidsEvent& b) { return a.onset_s < b.onset_s; });
   return events;
 }
 
 std::string bids_trial_acq_time(const RecorderSidecar* sidecar, bool anonymise) {
   if (sidecar == nullptr || anonymise) return {};
-  if (sidecar->trial_window.is_object() && sidecar->trial_window.contains("go_host_utc") && sidecar->trial_window["go_host_utc"].is_string()) {
+  if (sidecar->trial_window.is_object() && sidecar->trial_window.contains("go_host_utc") &&
+      sidecar->trial_window["go_host_utc"].is_string()) {
     return bids_acq_time(sidecar->trial_window["go_host_utc"].get<std::string>());
   }
   return bids_acq_time(sidecar->host_start_utc);

@@ -14,8 +14,8 @@
 
 namespace lmc {
 
-BidsMotionInfo bids_motion_info(const BidsTrialPlan& trial, const BidsTrackingSystem& system, const RecorderSidecar* sidecar,
-                                FusionMethod method);
+BidsMotionInfo bids_motion_info(const BidsTrialPlan& trial, const BidsTrackingSystem& system,
+                                const RecorderSidecar* sidecar, FusionMethod method);
 
 // go (the first row the controllers wrote, when the sidecar says the trial reached go; lasting to
 // the last row), stop (the last row) and vicon_capture_start (CaptureStart on the controllers'

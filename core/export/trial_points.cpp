@@ -29,7 +29,9 @@ Eigen::Vector3d to_axes(const Eigen::Vector3d& p, ExportAxes axes) {
   return p;
 }
 
-bool finite3(const Eigen::Vector3d& p) { return std::isfinite(p.x()) && std::isfinite(p.y()) && std::isfinite(p.z()); }
+bool finite3(const Eigen::Vector3d& p) {
+  return std::isfinite(p.x()) && std::isfinite(p.y()) && std::isfinite(p.z());
+}
 
 void add_hand(PointTable& t, const HandTrack& track, const std::string& prefix, const std::string& who) {
   const int frames = t.frame_count();
@@ -46,7 +48,9 @@ void add_hand(PointTable& t, const HandTrack& track, const std::string& prefix, 
 
 }  // namespace
 
-const char* export_axes_name(ExportAxes axes) { return axes == ExportAxes::kOpenSim ? "opensim" : "world"; }
+const char* export_axes_name(ExportAxes axes) {
+  return axes == ExportAxes::kOpenSim ? "opensim" : "world";
+}
 
 ExportAxes export_axes_from_name(const std::string& name) {
   if (name == "world") return ExportAxes::kWorld;
@@ -77,7 +81,8 @@ std::string landmark_name(int hand_point) {
   if (hand_point == kElbow) return "Elbow";
   if (hand_point == kWrist) return "Wrist";
   if (hand_point < kFirstDigitPoint || hand_point >= kNumHandPoints) return {};
-  const int d = (hand_point - kFirstDigitPoint) / kJointsPerDigit, j = (hand_point - kFirstDigitPoint) % kJointsPerDigit;
+  const int d = (hand_point - kFirstDigitPoint) / kJointsPerDigit,
+            j = (hand_point - kFirstDigitPoint) % kJointsPerDigit;
   return std::string(kDigitLabels[static_cast<size_t>(d)]) + "_" + kJointLabels[static_cast<size_t>(j)];
 }
 
@@ -113,14 +118,16 @@ PointTable trial_point_table(const TrialResult& result, const MarkerSeries* vico
     for (size_t m = 0; m < vicon_markers->names.size(); ++m) {
       // Two markers whose names differ only in characters the label cannot hold stay apart.
       std::string label = "V_" + export_label(vicon_markers->names[m]);
-      for (int k = 2; used.count(label) != 0; ++k) label = "V_" + export_label(vicon_markers->names[m]) + "_" + std::to_string(k);
+      for (int k = 2; used.count(label) != 0; ++k)
+        label = "V_" + export_label(vicon_markers->names[m]) + "_" + std::to_string(k);
       used.insert(label);
       t.labels.push_back(label);
       t.descriptions.push_back("Vicon marker " + vicon_markers->names[m]);
       for (int f = 0; f < frames; ++f) {
         Eigen::Vector3d p = Eigen::Vector3d::Constant(kNaNExport);
         const auto& rows = vicon_markers->positions;
-        if (static_cast<size_t>(f) < rows.size() && m < rows[static_cast<size_t>(f)].size() && finite3(rows[static_cast<size_t>(f)][m])) {
+        if (static_cast<size_t>(f) < rows.size() && m < rows[static_cast<size_t>(f)].size() &&
+            finite3(rows[static_cast<size_t>(f)][m])) {
           p = to_axes(rows[static_cast<size_t>(f)][m], axes);
         }
         t.positions[static_cast<size_t>(f)].push_back(p);
@@ -161,7 +168,9 @@ TrcData point_table_trc(const PointTable& table) {
   return t;
 }
 
-const char* export_format_extension(ExportFormat format) { return format == ExportFormat::kC3d ? ".c3d" : ".trc"; }
+const char* export_format_extension(ExportFormat format) {
+  return format == ExportFormat::kC3d ? ".c3d" : ".trc";
+}
 
 TrialExportReport export_trials(const TrialExportRequest& request) {
   TrialExportReport report;
@@ -194,7 +203,8 @@ TrialExportReport export_trials(const TrialExportRequest& request) {
         continue;
       }
       if (!names.insert(job.trial).second) {
-        report.notes.push_back("left out " + job.lmc.string() + ": another input already gives a trial named " + job.trial);
+        report.notes.push_back("left out " + job.lmc.string() + ": another input already gives a trial named " +
+                               job.trial);
         ++report.left_out;
         continue;
       }
@@ -211,7 +221,8 @@ TrialExportReport export_trials(const TrialExportRequest& request) {
     for (const auto& p : planned) {
       if (fs::exists(p.target)) existing += "\n  " + p.target.string();
     }
-    if (!existing.empty()) throw Error("these outputs exist (use --force to replace them); nothing was written:" + existing);
+    if (!existing.empty())
+      throw Error("these outputs exist (use --force to replace them); nothing was written:" + existing);
   }
   fs::create_directories(request.out_dir);
   const int total = static_cast<int>(planned.size());
@@ -245,7 +256,8 @@ TrialExportReport export_trials(const TrialExportRequest& request) {
         line += ", with Vicon)";
       } else {
         line += ", no Vicon)";
-        report.notes.push_back(p.job.trial + ": no Vicon file (" + p.job.trial + ".trc or .c3d) next to it: fused and controller points only");
+        report.notes.push_back(p.job.trial + ": no Vicon file (" + p.job.trial +
+                               ".trc or .c3d) next to it: fused and controller points only");
       }
       say(line);
     } catch (const std::exception& e) {

@@ -29,8 +29,8 @@
 namespace lmc {
 
 enum class ExportAxes { kWorld, kOpenSim };
-const char* export_axes_name(ExportAxes axes);                 // "world", "opensim"
-ExportAxes export_axes_from_name(const std::string& name);     // throws lmc::Error
+const char* export_axes_name(ExportAxes axes);              // "world", "opensim"
+ExportAxes export_axes_from_name(const std::string& name);  // throws lmc::Error
 // In words, for a file's description and the --help text.
 std::string export_axes_words(ExportAxes axes);
 
@@ -46,7 +46,7 @@ struct PointTable {
   double rate_hz = 100.0;
   ExportAxes axes = ExportAxes::kWorld;
   std::vector<std::string> labels;
-  std::vector<std::string> descriptions;  // one per label, for C3D POINT:DESCRIPTIONS
+  std::vector<std::string> descriptions;                // one per label, for C3D POINT:DESCRIPTIONS
   std::vector<std::vector<Eigen::Vector3d>> positions;  // [frame][point], mm, NaN = missing
   bool has_vicon = false;
   int frame_count() const { return static_cast<int>(positions.size()); }

@@ -26,20 +26,18 @@ std::vector<double> nice_ticks(double lo, double hi, int target) {
     }
   }
   const double first = std::ceil(lo / step) * step;
-  for (double v = first; v <= hi + step * 1e-9; v += step)
-    out.push_back(std::abs(v) < step * 1e-9 ? 0.0 : v);
+  for (double v = first; v <= hi + step * 1e-9; v += step) out.push_back(std::abs(v) < step * 1e-9 ? 0.0 : v);
   return out;
 }
 
 std::pair<double, double> fit_y_range(std::span<const std::span<const double>> xs,
-                                      std::span<const std::span<const double>> ys, double x_lo,
-                                      double x_hi, double margin) {
+                                      std::span<const std::span<const double>> ys, double x_lo, double x_hi,
+                                      double margin) {
   double lo = std::numeric_limits<double>::infinity(), hi = -lo;
   for (size_t s = 0; s < xs.size() && s < ys.size(); ++s) {
     const auto& x = xs[s];
     const auto& y = ys[s];
-    const size_t begin =
-        static_cast<size_t>(std::lower_bound(x.begin(), x.end(), x_lo) - x.begin());
+    const size_t begin = static_cast<size_t>(std::lower_bound(x.begin(), x.end(), x_lo) - x.begin());
     const size_t end = static_cast<size_t>(std::upper_bound(x.begin(), x.end(), x_hi) - x.begin());
     for (size_t i = begin; i < end && i < y.size(); ++i) {
       if (!std::isfinite(y[i])) continue;

@@ -26,7 +26,7 @@ std::string value_label(double value, double lo, double hi);
 // Min and max of the finite y whose x lies in [x_lo, x_hi] over every series given, widened by
 // `margin` of its span (a flat series gets ±1); nullopt-like {0, 1} when nothing is visible.
 std::pair<double, double> fit_y_range(std::span<const std::span<const double>> xs,
-                                      std::span<const std::span<const double>> ys, double x_lo,
-                                      double x_hi, double margin = 0.05);
+                                      std::span<const std::span<const double>> ys, double x_lo, double x_hi,
+                                      double margin = 0.05);
 
 }  // namespace lmc::figures

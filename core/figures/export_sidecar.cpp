@@ -61,9 +61,8 @@ json describe(const Figure& f, bool with_x) {
   j["series"] = series;
   json refs = json::array();
   for (const ReferenceLine& r : f.references)
-    refs.push_back({{"label", r.label},
-                    {"y", std::isfinite(r.y) ? json(r.y) : json(nullptr)},
-                    {"dash", dash_name(r.dash)}});
+    refs.push_back(
+        {{"label", r.label}, {"y", std::isfinite(r.y) ? json(r.y) : json(nullptr)}, {"dash", dash_name(r.dash)}});
   j["reference_lines"] = refs;
   j["notes"] = f.notes;
   return j;
@@ -89,10 +88,9 @@ void check_target(const std::filesystem::path& dir, const std::string& base_name
     throw Error(ErrorLocation{dir.string()}, "the folder to export the figure into does not exist");
 }
 
-WrittenFigure write_three(const std::filesystem::path& dir, const std::string& base_name,
-                          const std::string& svg, const std::string& csv, const json& sidecar) {
-  WrittenFigure w{dir / (base_name + ".svg"), dir / (base_name + ".csv"),
-                  dir / (base_name + ".json")};
+WrittenFigure write_three(const std::filesystem::path& dir, const std::string& base_name, const std::string& svg,
+                          const std::string& csv, const json& sidecar) {
+  WrittenFigure w{dir / (base_name + ".svg"), dir / (base_name + ".csv"), dir / (base_name + ".json")};
   write_file_atomically(w.svg, svg);
   write_file_atomically(w.csv, csv);
   write_file_atomically(w.json, sidecar.dump(2) + "\n");
@@ -101,16 +99,14 @@ WrittenFigure write_three(const std::filesystem::path& dir, const std::string& b
 
 }  // namespace
 
-json figure_sidecar(const Figure& figure, const std::string& base_name,
-                    const FigureProvenance& how) {
+json figure_sidecar(const Figure& figure, const std::string& base_name, const FigureProvenance& how) {
   json j = common(figure.title, base_name, how);
   j["csv_columns"] = {"series", "x", "y"};
   j["figure"] = describe(figure, true);
   return j;
 }
 
-json figure_sidecar(const FigureGrid& grid, const std::string& base_name,
-                    const FigureProvenance& how) {
+json figure_sidecar(const FigureGrid& grid, const std::string& base_name, const FigureProvenance& how) {
   json j = common(grid.title, base_name, how);
   j["csv_columns"] = {"panel", "series", "x", "y"};
   json panels = json::array();
@@ -119,8 +115,7 @@ json figure_sidecar(const FigureGrid& grid, const std::string& base_name,
   return j;
 }
 
-json figure_sidecar(const Heatmap& heatmap, const std::string& base_name,
-                    const FigureProvenance& how) {
+json figure_sidecar(const Heatmap& heatmap, const std::string& base_name, const FigureProvenance& how) {
   json j = common(heatmap.title, base_name, how);
   j["csv_columns"] = {"panel", "row", "column_group", "column", "value"};
   json panels = json::array();
@@ -138,30 +133,27 @@ json figure_sidecar(const Heatmap& heatmap, const std::string& base_name,
   return j;
 }
 
-WrittenFigure write_figure_files(const std::filesystem::path& dir, const std::string& base_name,
-                                 const Figure& figure, const std::vector<std::string>& inputs,
-                                 const std::string& method, const json& parameters, int width_px,
-                                 int height_px) {
+WrittenFigure write_figure_files(const std::filesystem::path& dir, const std::string& base_name, const Figure& figure,
+                                 const std::vector<std::string>& inputs, const std::string& method,
+                                 const json& parameters, int width_px, int height_px) {
   check_target(dir, base_name);
   const FigureProvenance how{inputs, method, parameters};
   return write_three(dir, base_name, to_svg(figure, width_px, height_px), to_csv(figure),
                      figure_sidecar(figure, base_name, how));
 }
 
-WrittenFigure write_figure_files(const std::filesystem::path& dir, const std::string& base_name,
-                                 const FigureGrid& grid, const std::vector<std::string>& inputs,
-                                 const std::string& method, const json& parameters, int width_px,
-                                 int height_px) {
+WrittenFigure write_figure_files(const std::filesystem::path& dir, const std::string& base_name, const FigureGrid& grid,
+                                 const std::vector<std::string>& inputs, const std::string& method,
+                                 const json& parameters, int width_px, int height_px) {
   check_target(dir, base_name);
   const FigureProvenance how{inputs, method, parameters};
   return write_three(dir, base_name, to_svg(grid, width_px, height_px), to_csv(grid),
                      figure_sidecar(grid, base_name, how));
 }
 
-WrittenFigure write_figure_files(const std::filesystem::path& dir, const std::string& base_name,
-                                 const Heatmap& heatmap, const std::vector<std::string>& inputs,
-                                 const std::string& method, const json& parameters, int width_px,
-                                 int height_px) {
+WrittenFigure write_figure_files(const std::filesystem::path& dir, const std::string& base_name, const Heatmap& heatmap,
+                                 const std::vector<std::string>& inputs, const std::string& method,
+                                 const json& parameters, int width_px, int height_px) {
   check_target(dir, base_name);
   const FigureProvenance how{inputs, method, parameters};
   return write_three(dir, base_name, to_svg(heatmap, width_px, height_px), to_csv(heatmap),

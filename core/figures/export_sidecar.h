@@ -25,14 +25,11 @@ struct FigureProvenance {
   nlohmann::json parameters = nlohmann::json::object();
 };
 
-nlohmann::json figure_sidecar(const Figure& figure, const std::string& base_name,
-                              const FigureProvenance& how);
-nlohmann::json figure_sidecar(const FigureGrid& grid, const std::string& base_name,
-                              const FigureProvenance& how);
+nlohmann::json figure_sidecar(const Figure& figure, const std::string& base_name, const FigureProvenance& how);
+nlohmann::json figure_sidecar(const FigureGrid& grid, const std::string& base_name, const FigureProvenance& how);
 // A heatmap's "figure" holds its rows, columns (and groups), panel titles, what the colour means
 // and the scale ("viridis" over [0, 1]), and its notes.
-nlohmann::json figure_sidecar(const Heatmap& heatmap, const std::string& base_name,
-                              const FigureProvenance& how);
+nlohmann::json figure_sidecar(const Heatmap& heatmap, const std::string& base_name, const FigureProvenance& how);
 
 struct WrittenFigure {
   std::filesystem::path svg, csv, json;
@@ -42,17 +39,14 @@ struct WrittenFigure {
 // (core/io/atomic_write.h), the sidecar last so its presence means the set is complete. Throws
 // lmc::Error naming the problem when base_name is not a safe file name (core/common/safe_name.h:
 // "../x" is refused), when dir is not an existing folder, or when a write fails.
-WrittenFigure write_figure_files(const std::filesystem::path& dir, const std::string& base_name,
-                                 const Figure& figure, const std::vector<std::string>& inputs,
-                                 const std::string& method, const nlohmann::json& parameters,
-                                 int width_px = 800, int height_px = 500);
-WrittenFigure write_figure_files(const std::filesystem::path& dir, const std::string& base_name,
-                                 const FigureGrid& grid, const std::vector<std::string>& inputs,
-                                 const std::string& method, const nlohmann::json& parameters,
-                                 int width_px = 800, int height_px = 800);
-WrittenFigure write_figure_files(const std::filesystem::path& dir, const std::string& base_name,
-                                 const Heatmap& heatmap, const std::vector<std::string>& inputs,
-                                 const std::string& method, const nlohmann::json& parameters,
-                                 int width_px = 800, int height_px = 520);
+WrittenFigure write_figure_files(const std::filesystem::path& dir, const std::string& base_name, const Figure& figure,
+                                 const std::vector<std::string>& inputs, const std::string& method,
+                                 const nlohmann::json& parameters, int width_px = 800, int height_px = 500);
+WrittenFigure write_figure_files(const std::filesystem::path& dir, const std::string& base_name, const FigureGrid& grid,
+                                 const std::vector<std::string>& inputs, const std::string& method,
+                                 const nlohmann::json& parameters, int width_px = 800, int height_px = 800);
+WrittenFigure write_figure_files(const std::filesystem::path& dir, const std::string& base_name, const Heatmap& heatmap,
+                                 const std::vector<std::string>& inputs, const std::string& method,
+                                 const nlohmann::json& parameters, int width_px = 800, int height_px = 520);
 
 }  // namespace lmc::figures

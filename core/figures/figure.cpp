@@ -20,8 +20,7 @@ struct Extent {
 };
 
 AxisRange finished_range(const Extent& e, const std::optional<AxisRange>& fixed) {
-  if (fixed && std::isfinite(fixed->lo) && std::isfinite(fixed->hi) && fixed->hi > fixed->lo)
-    return *fixed;
+  if (fixed && std::isfinite(fixed->lo) && std::isfinite(fixed->hi) && fixed->hi > fixed->lo) return *fixed;
   if (!(e.hi >= e.lo)) return {0.0, 1.0};
   if (e.hi == e.lo) return {e.lo - 1.0, e.hi + 1.0};
   const double pad = (e.hi - e.lo) * kMargin;

@@ -25,12 +25,11 @@ enum class SeriesStyle { line, points, line_and_points };
 // x[i], y[i] is one sample. A NaN or ±inf in either is a missing sample: a line breaks there into
 // separate pieces (never drawn to 0) and the CSV leaves the cell empty.
 struct Series {
-  std::string name;  // in the legend and the CSV; a series with no name has no legend entry
+  std::string name;           // in the legend and the CSV; a series with no name has no legend entry
   std::optional<Rgb> colour;  // unset: the palette colour of the series' position (palette.h)
   SeriesStyle style = SeriesStyle::line;
   std::vector<double> x, y;
-  bool shade_gaps =
-      false;  // a faint band over each run of missing samples between two present ones
+  bool shade_gaps = false;  // a faint band over each run of missing samples between two present ones
 };
 
 enum class Dash { solid, dashed, dotted };

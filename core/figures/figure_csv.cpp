@@ -41,8 +41,7 @@ std::string to_csv(const Figure& figure) {
 
 std::string to_csv(const FigureGrid& grid) {
   std::string out = "panel,series,x,y\n";
-  for (size_t p = 0; p < grid.panels.size(); ++p)
-    rows(out, std::to_string(p + 1) + ",", grid.panels[p]);
+  for (size_t p = 0; p < grid.panels.size(); ++p) rows(out, std::to_string(p + 1) + ",", grid.panels[p]);
   return out;
 }
 
@@ -53,8 +52,8 @@ std::string to_csv(const Heatmap& heatmap) {
     for (size_t r = 0; r < heatmap.rows.size(); ++r)
       for (size_t c = 0; c < heatmap.columns.size(); ++c)
         out += std::to_string(p + 1) + "," + csv_field(heatmap.rows[r]) + "," +
-               (grouped ? csv_field(heatmap.column_groups[c]) : std::string()) + "," +
-               csv_field(heatmap.columns[c]) + "," + exact_c(heatmap.at(p, r, c)) + "\n";
+               (grouped ? csv_field(heatmap.column_groups[c]) : std::string()) + "," + csv_field(heatmap.columns[c]) +
+               "," + exact_c(heatmap.at(p, r, c)) + "\n";
   return out;
 }
 

@@ -5,8 +5,8 @@
 #include <string_view>
 #include <vector>
 
-#include "core/figures/locale_free_number.h"
 #include "core/figures/colour_scale.h"
+#include "core/figures/locale_free_number.h"
 #include "core/figures/svg_marks.h"
 #include "core/figures/svg_text.h"
 #include "core/figures/xml_text.h"
@@ -33,9 +33,8 @@ constexpr Rgb kCellBorder{255, 255, 255};
 // <text class="…" …>: the class first, so a reader can pick the element out by its opening.
 void classed_text(std::string& out, std::string_view cls, double x, double y, std::string_view s,
                   std::string_view anchor, std::string_view extra = {}) {
-  out += "<text class=\"" + std::string(cls) + "\" x=\"" + num(x) + "\" y=\"" + num(y) +
-         "\" text-anchor=\"" + std::string(anchor) + "\"" + std::string(extra) + ">" +
-         xml_escape(s) + "</text>\n";
+  out += "<text class=\"" + std::string(cls) + "\" x=\"" + num(x) + "\" y=\"" + num(y) + "\" text-anchor=\"" +
+         std::string(anchor) + "\"" + std::string(extra) + ">" + xml_escape(s) + "</text>\n";
 }
 
 std::string value_text(double v, HeatmapValueText how) {
@@ -113,8 +112,7 @@ void defs(std::string& out) {
          "fill=\"#e3e3e3\"/><line x1=\"0\" y1=\"0\" x2=\"0\" y2=\"6\" stroke=\"#9a9a9a\" "
          "stroke-width=\"2\"/></pattern>\n";
   // Bottom (0) to top (1), at the scale's own control points so the bar matches the cells.
-  out += "<linearGradient id=\"" + std::string(kGradientId) +
-         "\" x1=\"0\" y1=\"1\" x2=\"0\" y2=\"0\">\n";
+  out += "<linearGradient id=\"" + std::string(kGradientId) + "\" x1=\"0\" y1=\"1\" x2=\"0\" y2=\"0\">\n";
   for (int i = 0; i <= 8; ++i) {
     const double t = i / 8.0;
     out += "<stop offset=\"" + num(t) + "\" stop-color=\"" + hex(sequential_colour(t)) + "\"/>\n";
@@ -140,18 +138,17 @@ Legend lay_out_legend(const Heatmap& h, double bar_height) {
   return l.width > 0 ? l : Legend{};
 }
 
-void legend(std::string& out, const Heatmap& h, const Legend& l, double x, double top,
-            double bottom) {
+void legend(std::string& out, const Heatmap& h, const Legend& l, double x, double top, double bottom) {
   const double bar_h = bottom - top;
-  out += "<rect class=\"legend-bar\" x=\"" + num(x) + "\" y=\"" + num(top) + "\" width=\"" +
-         num(kBarWidth) + "\" height=\"" + num(bar_h) + "\" fill=\"url(#" + kGradientId +
+  out += "<rect class=\"legend-bar\" x=\"" + num(x) + "\" y=\"" + num(top) + "\" width=\"" + num(kBarWidth) +
+         "\" height=\"" + num(bar_h) + "\" fill=\"url(#" + kGradientId +
          ")\" stroke=\"#000000\" stroke-width=\"1\"/>\n";
   double right = x + kBarWidth;
   double widest = 0;
   for (const double t : {0.0, 0.25, 0.5, 0.75, 1.0}) {
     const double y = bottom - t * bar_h;
-    out += "<line x1=\"" + num(x + kBarWidth) + "\" y1=\"" + num(y) + "\" x2=\"" +
-           num(x + kBarWidth + 4) + "\" y2=\"" + num(y) + "\" stroke=\"#000000\"/>\n";
+    out += "<line x1=\"" + num(x + kBarWidth) + "\" y1=\"" + num(y) + "\" x2=\"" + num(x + kBarWidth + 4) + "\" y2=\"" +
+           num(y) + "\" stroke=\"#000000\"/>\n";
     const std::string s = tick_text(t, h.value_text);
     widest = std::max(widest, text_width(s));
     text(out, x + kBarWidth + 6, y + kFont * 0.35, s, "start");
@@ -161,14 +158,13 @@ void legend(std::string& out, const Heatmap& h, const Legend& l, double x, doubl
   for (size_t i = 0; i < l.label_lines.size(); ++i) {
     const double cx = right + kPad + kFont * 0.8 + static_cast<double>(i) * (kFont + 4);
     const double cy = top + bar_h / 2;
-    out += "<text class=\"scale-label\" x=\"0\" y=\"0\" transform=\"translate(" + num(cx) + "," +
-           num(cy) + ") rotate(-90)\" text-anchor=\"middle\">" + xml_escape(l.label_lines[i]) +
-           "</text>\n";
+    out += "<text class=\"scale-label\" x=\"0\" y=\"0\" transform=\"translate(" + num(cx) + "," + num(cy) +
+           ") rotate(-90)\" text-anchor=\"middle\">" + xml_escape(l.label_lines[i]) + "</text>\n";
   }
   if (h.has_missing()) {
     const double y = bottom + kPad + 4;
-    out += "<rect class=\"legend-no-data\" x=\"" + num(x) + "\" y=\"" + num(y) + "\" width=\"" +
-           num(kSwatch) + "\" height=\"" + num(kSwatch) + "\" fill=\"url(#" + kHatchId +
+    out += "<rect class=\"legend-no-data\" x=\"" + num(x) + "\" y=\"" + num(y) + "\" width=\"" + num(kSwatch) +
+           "\" height=\"" + num(kSwatch) + "\" fill=\"url(#" + kHatchId +
            ")\" stroke=\"#9a9a9a\" stroke-width=\"1\"/>\n";
     text(out, x + kSwatch + 6, y + kSwatch / 2 + kFont * 0.35, "no data", "start");
   }
@@ -208,11 +204,10 @@ Geometry lay_out(const Heatmap& h, int w, int hgt, double top, double bar_guess)
   for (const HeatmapPanel& p : h.panels) titled = titled || !p.title.empty();
   g.panel_title_h = titled ? kPanelFont + 8 : 0;
   // The "no data" swatch sits under the bar, beside the column labels: keep room for it.
-  const double below = std::max(g.labels.height + g.groups_h + g.column_title_h,
-                                h.has_missing() ? kPad + 4 + kSwatch + 4 : 0.0);
+  const double below =
+      std::max(g.labels.height + g.groups_h + g.column_title_h, h.has_missing() ? kPad + 4 + kSwatch + 4 : 0.0);
   const double cells_total =
-      std::max(20.0, hgt - top - below - g.notes_h - 8 - panels * g.panel_title_h -
-                         (panels - 1) * kPanelGap);
+      std::max(20.0, hgt - top - below - g.notes_h - 8 - panels * g.panel_title_h - (panels - 1) * kPanelGap);
   g.cell_h = cells_total / (panels * rows);
   g.bar_h = cells_total + (panels - 1) * (g.panel_title_h + kPanelGap);
   return g;
@@ -232,8 +227,7 @@ std::string to_svg(const Heatmap& h, int width_px, int height_px) {
   const double top = svg::title_band(out, w, h.title);
   const Geometry first = lay_out(h, w, hgt, top, 0.6 * hgt);
   const Geometry geo = lay_out(h, w, hgt, top, first.bar_h);
-  const double cells_x = geo.cells_x, cells_w = geo.cells_w, cell_w = geo.cell_w,
-               cell_h = geo.cell_h;
+  const double cells_x = geo.cells_x, cells_w = geo.cells_w, cell_w = geo.cell_w, cell_h = geo.cell_h;
   const double panel_title_h = geo.panel_title_h, groups_h = geo.groups_h;
   const double column_title_h = geo.column_title_h, notes_h = geo.notes_h;
   const ColumnLabels& labels = geo.labels;
@@ -252,31 +246,27 @@ std::string to_svg(const Heatmap& h, int width_px, int height_px) {
     out += "<g class=\"panel\">\n";
     for (size_t r = 0; r < h.rows.size(); ++r) {
       const double cy = y + static_cast<double>(r) * cell_h;
-      classed_text(out, "row-label", cells_x - kPad, cy + cell_h / 2 + kFont * 0.35, h.rows[r],
-                   "end");
+      classed_text(out, "row-label", cells_x - kPad, cy + cell_h / 2 + kFont * 0.35, h.rows[r], "end");
       for (size_t c = 0; c < h.columns.size(); ++c) {
         const double cx = cells_x + static_cast<double>(c) * cell_w;
         const double v = h.at(p, r, c);
         const bool missing = std::isnan(v);
         const Rgb fill = sequential_colour(missing ? 0.0 : v);
-        out += "<rect class=\"" + std::string(missing ? "cell no-data" : "cell") + "\" x=\"" +
-               num(cx) + "\" y=\"" + num(cy) + "\" width=\"" + num(cell_w) + "\" height=\"" +
-               num(cell_h) + "\" fill=\"" +
-               (missing ? "url(#" + std::string(kHatchId) + ")" : hex(fill)) + "\" stroke=\"" +
-               hex(kCellBorder) + "\" stroke-width=\"1\"/>\n";
+        out += "<rect class=\"" + std::string(missing ? "cell no-data" : "cell") + "\" x=\"" + num(cx) + "\" y=\"" +
+               num(cy) + "\" width=\"" + num(cell_w) + "\" height=\"" + num(cell_h) + "\" fill=\"" +
+               (missing ? "url(#" + std::string(kHatchId) + ")" : hex(fill)) + "\" stroke=\"" + hex(kCellBorder) +
+               "\" stroke-width=\"1\"/>\n";
         const std::string s = missing ? std::string() : value_text(v, h.value_text);
         if (!s.empty() && text_width(s) <= cell_w - 4 && cell_h >= kFont + 2)
-          classed_text(
-              out, "cell-value", cx + cell_w / 2, cy + cell_h / 2 + kFont * 0.35, s, "middle",
-              std::string(" fill=\"") + (wants_light_text(fill) ? "#ffffff" : "#000000") + "\"");
+          classed_text(out, "cell-value", cx + cell_w / 2, cy + cell_h / 2 + kFont * 0.35, s, "middle",
+                       std::string(" fill=\"") + (wants_light_text(fill) ? "#ffffff" : "#000000") + "\"");
       }
     }
     // A dark line between column groups, so "palm down" and "palm left" read as two blocks.
     for (size_t g = 1; g < runs.size(); ++g) {
       const double gx = cells_x + static_cast<double>(runs[g].first) * cell_w;
-      out += "<line class=\"group-separator\" x1=\"" + num(gx) + "\" y1=\"" + num(y) + "\" x2=\"" +
-             num(gx) + "\" y2=\"" + num(y + static_cast<double>(rows) * cell_h) +
-             "\" stroke=\"#000000\" stroke-width=\"2\"/>\n";
+      out += "<line class=\"group-separator\" x1=\"" + num(gx) + "\" y1=\"" + num(y) + "\" x2=\"" + num(gx) +
+             "\" y2=\"" + num(y + static_cast<double>(rows) * cell_h) + "\" stroke=\"#000000\" stroke-width=\"2\"/>\n";
     }
     out += "</g>\n";
     y += static_cast<double>(rows) * cell_h;
@@ -289,14 +279,12 @@ std::string to_svg(const Heatmap& h, int width_px, int height_px) {
   for (size_t c = 0; c < h.columns.size(); ++c) {
     const double cx = cells_x + (static_cast<double>(c) + 0.5) * cell_w;
     if (labels.upright) {
-      out += "<text class=\"column-label\" x=\"0\" y=\"0\" transform=\"translate(" +
-             num(cx + kFont * 0.35) + "," + num(y) + ") rotate(-90)\" text-anchor=\"end\">" +
-             xml_escape(h.columns[c]) + "</text>\n";
+      out += "<text class=\"column-label\" x=\"0\" y=\"0\" transform=\"translate(" + num(cx + kFont * 0.35) + "," +
+             num(y) + ") rotate(-90)\" text-anchor=\"end\">" + xml_escape(h.columns[c]) + "</text>\n";
     } else {
       const auto& lines = labels.lines[c];
       for (size_t i = 0; i < lines.size(); ++i)
-        classed_text(out, "column-label", cx, y + kFont + static_cast<double>(i) * (kFont + 3),
-                     lines[i], "middle");
+        classed_text(out, "column-label", cx, y + kFont + static_cast<double>(i) * (kFont + 3), lines[i], "middle");
     }
   }
   y += labels.height + 4;
@@ -304,11 +292,10 @@ std::string to_svg(const Heatmap& h, int width_px, int height_px) {
   for (const GroupRun& g : runs) {
     const double x0 = cells_x + static_cast<double>(g.first) * cell_w + 4;
     const double x1 = cells_x + static_cast<double>(g.last + 1) * cell_w - 4;
-    out += "<path class=\"group-bracket\" d=\"M" + num(x0) + "," + num(y - 4) + " L" + num(x0) +
-           "," + num(y) + " L" + num(x1) + "," + num(y) + " L" + num(x1) + "," + num(y - 4) +
+    out += "<path class=\"group-bracket\" d=\"M" + num(x0) + "," + num(y - 4) + " L" + num(x0) + "," + num(y) + " L" +
+           num(x1) + "," + num(y) + " L" + num(x1) + "," + num(y - 4) +
            "\" fill=\"none\" stroke=\"#000000\" stroke-width=\"1\"/>\n";
-    classed_text(out, "column-group", (x0 + x1) / 2, y + kFont + 3, g.name, "middle",
-                 " font-weight=\"bold\"");
+    classed_text(out, "column-group", (x0 + x1) / 2, y + kFont + 3, g.name, "middle", " font-weight=\"bold\"");
   }
   y += groups_h;
   if (!h.column_title.empty()) {
@@ -324,8 +311,8 @@ std::string to_svg(const Heatmap& h, int width_px, int height_px) {
   legend(out, h, geo.legend, cells_x + cells_w + 16, first_cells_top, last_cells_bottom);
 
   for (size_t i = 0; i < h.notes.size(); ++i)
-    text(out, 10, hgt - notes_h + static_cast<double>(i) * kLineHeight + kFont, h.notes[i], "start",
-         kFont, " fill=\"#333333\"");
+    text(out, 10, hgt - notes_h + static_cast<double>(i) * kLineHeight + kFont, h.notes[i], "start", kFont,
+         " fill=\"#333333\"");
   out += "</svg>\n";
   return out;
 }

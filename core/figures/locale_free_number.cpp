@@ -11,8 +11,7 @@ std::string fixed_c(double v, int decimals) {
   char buf[400];  // enough for any double in fixed notation
   const auto res = std::to_chars(buf, buf + sizeof buf, v, std::chars_format::fixed, decimals);
   std::string out(buf, res.ptr);
-  if (!out.empty() && out.front() == '-' && out.find_first_not_of("-0.") == std::string::npos)
-    out.erase(0, 1);
+  if (!out.empty() && out.front() == '-' && out.find_first_not_of("-0.") == std::string::npos) out.erase(0, 1);
   return out;
 }
 

@@ -15,8 +15,7 @@ constexpr double kFarOutside = 1e5;  // px beyond the plot a coordinate is clamp
 }  // namespace
 
 double Mapper::px(double x) const {
-  return std::clamp(plot.x + (x - xr.lo) / (xr.hi - xr.lo) * plot.w, plot.x - kFarOutside,
-                    plot.right() + kFarOutside);
+  return std::clamp(plot.x + (x - xr.lo) / (xr.hi - xr.lo) * plot.w, plot.x - kFarOutside, plot.right() + kFarOutside);
 }
 
 double Mapper::py(double y) const {
@@ -46,9 +45,8 @@ void gap_bands(std::string& out, const Series& s, const Mapper& m) {
     }
     if (gap && last >= 0) {
       const double a = m.px(s.x[static_cast<size_t>(last)]), b = m.px(s.x[i]);
-      out += "<rect class=\"gap\" x=\"" + num(std::min(a, b)) + "\" y=\"" + num(m.plot.y) +
-             "\" width=\"" + num(std::abs(b - a)) + "\" height=\"" + num(m.plot.h) +
-             "\" fill=\"#000000\" fill-opacity=\"0.06\"/>\n";
+      out += "<rect class=\"gap\" x=\"" + num(std::min(a, b)) + "\" y=\"" + num(m.plot.y) + "\" width=\"" +
+             num(std::abs(b - a)) + "\" height=\"" + num(m.plot.h) + "\" fill=\"#000000\" fill-opacity=\"0.06\"/>\n";
     }
     gap = false;
     last = static_cast<std::ptrdiff_t>(i);
@@ -65,8 +63,8 @@ void line_pieces(std::string& out, const Series& s, const Mapper& m, Rgb c) {
       out += "<path class=\"line\" d=\"" + d + "\" fill=\"none\" stroke=\"" + hex(c) +
              "\" stroke-width=\"1.5\" stroke-linejoin=\"round\"/>\n";
     else if (count == 1 && s.style == SeriesStyle::line)
-      out += "<circle class=\"lone\" cx=\"" + num(lone_x) + "\" cy=\"" + num(lone_y) +
-             "\" r=\"1.5\" fill=\"" + hex(c) + "\"/>\n";
+      out += "<circle class=\"lone\" cx=\"" + num(lone_x) + "\" cy=\"" + num(lone_y) + "\" r=\"1.5\" fill=\"" + hex(c) +
+             "\"/>\n";
     d.clear();
     count = 0;
   };

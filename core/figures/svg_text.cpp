@@ -36,20 +36,18 @@ std::vector<std::string> wrap_words(std::string_view s, double max_width, double
   return lines;
 }
 
-void text(std::string& out, double x, double y, std::string_view s, std::string_view anchor,
-          double font, std::string_view extra) {
-  out +=
-      "<text x=\"" + num(x) + "\" y=\"" + num(y) + "\" text-anchor=\"" + std::string(anchor) + "\"";
+void text(std::string& out, double x, double y, std::string_view s, std::string_view anchor, double font,
+          std::string_view extra) {
+  out += "<text x=\"" + num(x) + "\" y=\"" + num(y) + "\" text-anchor=\"" + std::string(anchor) + "\"";
   if (font != kFont) out += " font-size=\"" + num(font) + "\"";
   out += std::string(extra) + ">" + xml_escape(s) + "</text>\n";
 }
 
 void document_start(std::string& out, int w, int h, const std::string& title) {
   out += "<?xml version=\"1.0\" encoding=\"UTF-8\" standalone=\"no\"?>\n";
-  out += "<svg xmlns=\"http://www.w3.org/2000/svg\" version=\"1.1\" width=\"" + std::to_string(w) +
-         "\" height=\"" + std::to_string(h) + "\" viewBox=\"0 0 " + std::to_string(w) + " " +
-         std::to_string(h) + "\" font-family=\"Helvetica, Arial, sans-serif\" font-size=\"" +
-         num(kFont) + "\">\n";
+  out += "<svg xmlns=\"http://www.w3.org/2000/svg\" version=\"1.1\" width=\"" + std::to_string(w) + "\" height=\"" +
+         std::to_string(h) + "\" viewBox=\"0 0 " + std::to_string(w) + " " + std::to_string(h) +
+         "\" font-family=\"Helvetica, Arial, sans-serif\" font-size=\"" + num(kFont) + "\">\n";
   out += "<title>" + xml_escape(title) + "</title>\n";
   out += "<rect x=\"0\" y=\"0\" width=\"" + std::to_string(w) + "\" height=\"" + std::to_string(h) +
          "\" fill=\"#ffffff\"/>\n";

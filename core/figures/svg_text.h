@@ -9,11 +9,10 @@
 
 namespace lmc::figures::svg {
 
-inline constexpr double kFont = 12.0;       // tick labels, legend, notes, cell values
-inline constexpr double kTitleFont = 15.0;  // the document's title
-inline constexpr double kPanelFont = 13.0;  // a panel's own title
-inline constexpr double kCharWidth =
-    0.6;  // an average sans-serif glyph, in em: text is never measured
+inline constexpr double kFont = 12.0;        // tick labels, legend, notes, cell values
+inline constexpr double kTitleFont = 15.0;   // the document's title
+inline constexpr double kPanelFont = 13.0;   // a panel's own title
+inline constexpr double kCharWidth = 0.6;    // an average sans-serif glyph, in em: text is never measured
 inline constexpr double kLineHeight = 18.0;  // one row of legend or notes
 
 // Width of text on one line, from its code-point count (continuation bytes are not counted).
@@ -25,8 +24,8 @@ std::vector<std::string> wrap_words(std::string_view s, double max_width, double
 
 // <text> at (x, y) with anchor "start" / "middle" / "end"; `extra` is more attributes, written
 // as given (leading space included). The text is escaped (xml_text.h).
-void text(std::string& out, double x, double y, std::string_view s, std::string_view anchor,
-          double font = kFont, std::string_view extra = {});
+void text(std::string& out, double x, double y, std::string_view s, std::string_view anchor, double font = kFont,
+          std::string_view extra = {});
 
 // The XML declaration, the <svg> element with its size and font, <title> and a white background.
 void document_start(std::string& out, int w, int h, const std::string& title);

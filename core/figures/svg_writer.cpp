@@ -15,21 +15,20 @@ namespace lmc::figures {
 namespace {
 
 using svg::Box;
+using svg::document_start;
 using svg::hex;
-using svg::Mapper;
-using svg::num;
 using svg::kFont;
 using svg::kLineHeight;
 using svg::kPanelFont;
+using svg::Mapper;
+using svg::num;
 using svg::text;
 using svg::text_width;
-using svg::document_start;
 using svg::title_band;
 
 std::string axis_text(const Axis& a) {
   return a.unit.empty() ? a.label : a.label + " (" + a.unit + ")";
 }
-
 
 std::string dash_attr(Dash d) {
   switch (d) {
@@ -46,11 +45,10 @@ std::string dash_attr(Dash d) {
 // A legend entry's sample of how its series is drawn.
 void swatch(std::string& out, double x, double y, const Series& s, Rgb c) {
   if (s.style != SeriesStyle::points)
-    out += "<line x1=\"" + num(x) + "\" y1=\"" + num(y) + "\" x2=\"" + num(x + 18) + "\" y2=\"" +
-           num(y) + "\" stroke=\"" + hex(c) + "\" stroke-width=\"2\"/>\n";
+    out += "<line x1=\"" + num(x) + "\" y1=\"" + num(y) + "\" x2=\"" + num(x + 18) + "\" y2=\"" + num(y) +
+           "\" stroke=\"" + hex(c) + "\" stroke-width=\"2\"/>\n";
   if (s.style != SeriesStyle::line)
-    out += "<circle cx=\"" + num(x + 9) + "\" cy=\"" + num(y) + "\" r=\"3\" fill=\"" + hex(c) +
-           "\"/>\n";
+    out += "<circle cx=\"" + num(x + 9) + "\" cy=\"" + num(y) + "\" r=\"3\" fill=\"" + hex(c) + "\"/>\n";
 }
 
 struct LegendItem {
@@ -90,8 +88,7 @@ double left_margin(const Figure& f) {
   const AxisRange yr = y_range(f);
   const auto ticks = nice_ticks(yr.lo, yr.hi, 5);
   double widest = 0;
-  for (const double t : ticks)
-    widest = std::max(widest, text_width(tick_label(t, ticks), kFont));
+  for (const double t : ticks) widest = std::max(widest, text_width(tick_label(t, ticks), kFont));
   return 26 + widest + 8;
 }
 
@@ -106,8 +103,7 @@ double right_margin(const Figure& f) {
 void panel(std::string& out, const Figure& f, Box area, const AxisRange& xr, const PanelStyle& st) {
   double top = area.y;
   if (st.own_title && !f.title.empty()) {
-    text(out, area.x + st.left, top + kPanelFont, f.title, "start", kPanelFont,
-         " font-weight=\"bold\"");
+    text(out, area.x + st.left, top + kPanelFont, f.title, "start", kPanelFont, " font-weight=\"bold\"");
     top += kPanelFont + 8;
   }
   int rows = 0;
@@ -115,10 +111,8 @@ void panel(std::string& out, const Figure& f, Box area, const AxisRange& xr, con
   const auto legend = legend_layout(f, plot_w, rows);
   const double legend_top = top;
   top += rows * kLineHeight + (rows > 0 ? 4 : 0);
-  const double bottom_room =
-      st.x_labels ? (kFont + 10) + (st.x_axis_text.empty() ? 0 : kFont + 10) : 6;
-  Box plot{area.x + st.left, top + 4, plot_w,
-           std::max(20.0, area.bottom() - bottom_room - top - 4)};
+  const double bottom_room = st.x_labels ? (kFont + 10) + (st.x_axis_text.empty() ? 0 : kFont + 10) : 6;
+  Box plot{area.x + st.left, top + 4, plot_w, std::max(20.0, area.bottom() - bottom_room - top - 4)};
   const Mapper m{xr, y_range(f), plot};
 
   // Legend: outside the plot, above it.
@@ -134,25 +128,23 @@ void panel(std::string& out, const Figure& f, Box area, const AxisRange& xr, con
   const auto xticks = nice_ticks(xr.lo, xr.hi, std::max(2, static_cast<int>(plot.w / 90)));
   out += "<g class=\"grid\" stroke=\"#e6e6e6\" stroke-width=\"1\">\n";
   for (const double t : yticks)
-    out += "<line x1=\"" + num(plot.x) + "\" y1=\"" + num(m.py(t)) + "\" x2=\"" +
-           num(plot.right()) + "\" y2=\"" + num(m.py(t)) + "\"/>\n";
+    out += "<line x1=\"" + num(plot.x) + "\" y1=\"" + num(m.py(t)) + "\" x2=\"" + num(plot.right()) + "\" y2=\"" +
+           num(m.py(t)) + "\"/>\n";
   for (const double t : xticks)
-    out += "<line x1=\"" + num(m.px(t)) + "\" y1=\"" + num(plot.y) + "\" x2=\"" + num(m.px(t)) +
-           "\" y2=\"" + num(plot.bottom()) + "\"/>\n";
+    out += "<line x1=\"" + num(m.px(t)) + "\" y1=\"" + num(plot.y) + "\" x2=\"" + num(m.px(t)) + "\" y2=\"" +
+           num(plot.bottom()) + "\"/>\n";
   out += "</g>\n";
   out += "<g class=\"ticks\" stroke=\"#000000\" stroke-width=\"1\">\n";
   for (const double t : yticks)
-    out += "<line x1=\"" + num(plot.x - 5) + "\" y1=\"" + num(m.py(t)) + "\" x2=\"" + num(plot.x) +
-           "\" y2=\"" + num(m.py(t)) + "\"/>\n";
+    out += "<line x1=\"" + num(plot.x - 5) + "\" y1=\"" + num(m.py(t)) + "\" x2=\"" + num(plot.x) + "\" y2=\"" +
+           num(m.py(t)) + "\"/>\n";
   for (const double t : xticks)
-    out += "<line x1=\"" + num(m.px(t)) + "\" y1=\"" + num(plot.bottom()) + "\" x2=\"" +
-           num(m.px(t)) + "\" y2=\"" + num(plot.bottom() + 5) + "\"/>\n";
+    out += "<line x1=\"" + num(m.px(t)) + "\" y1=\"" + num(plot.bottom()) + "\" x2=\"" + num(m.px(t)) + "\" y2=\"" +
+           num(plot.bottom() + 5) + "\"/>\n";
   out += "</g>\n";
-  for (const double t : yticks)
-    text(out, plot.x - 8, m.py(t) + kFont * 0.35, tick_label(t, yticks), "end");
+  for (const double t : yticks) text(out, plot.x - 8, m.py(t) + kFont * 0.35, tick_label(t, yticks), "end");
   if (st.x_labels)
-    for (const double t : xticks)
-      text(out, m.px(t), plot.bottom() + 8 + kFont, tick_label(t, xticks), "middle");
+    for (const double t : xticks) text(out, m.px(t), plot.bottom() + 8 + kFont, tick_label(t, xticks), "middle");
 
   // Axis labels with units.
   const std::string ylabel = axis_text(f.y);
@@ -166,16 +158,16 @@ void panel(std::string& out, const Figure& f, Box area, const AxisRange& xr, con
 
   // Everything data-driven is clipped to the plot.
   const std::string clip = "plot-clip-" + std::to_string(st.clip_id);
-  out += "<defs><clipPath id=\"" + clip + "\"><rect x=\"" + num(plot.x) + "\" y=\"" + num(plot.y) +
-         "\" width=\"" + num(plot.w) + "\" height=\"" + num(plot.h) + "\"/></clipPath></defs>\n";
+  out += "<defs><clipPath id=\"" + clip + "\"><rect x=\"" + num(plot.x) + "\" y=\"" + num(plot.y) + "\" width=\"" +
+         num(plot.w) + "\" height=\"" + num(plot.h) + "\"/></clipPath></defs>\n";
   out += "<g clip-path=\"url(#" + clip + ")\">\n";
   for (const Series& s : f.series)
     if (s.shade_gaps) svg::gap_bands(out, s, m);
   for (const ReferenceLine& r : f.references) {
     if (!std::isfinite(r.y)) continue;
-    out += "<line class=\"reference\" x1=\"" + num(plot.x) + "\" y1=\"" + num(m.py(r.y)) +
-           "\" x2=\"" + num(plot.right()) + "\" y2=\"" + num(m.py(r.y)) + "\" stroke=\"" +
-           hex(r.colour) + "\" stroke-width=\"1\"" + dash_attr(r.dash) + "/>\n";
+    out += "<line class=\"reference\" x1=\"" + num(plot.x) + "\" y1=\"" + num(m.py(r.y)) + "\" x2=\"" +
+           num(plot.right()) + "\" y2=\"" + num(m.py(r.y)) + "\" stroke=\"" + hex(r.colour) + "\" stroke-width=\"1\"" +
+           dash_attr(r.dash) + "/>\n";
   }
   for (size_t i = 0; i < f.series.size(); ++i) {
     const Series& s = f.series[i];
@@ -184,21 +176,17 @@ void panel(std::string& out, const Figure& f, Box area, const AxisRange& xr, con
     if (s.style != SeriesStyle::line) svg::points(out, s, m, c);
   }
   out += "</g>\n";
-  out += "<rect class=\"frame\" x=\"" + num(plot.x) + "\" y=\"" + num(plot.y) + "\" width=\"" +
-         num(plot.w) + "\" height=\"" + num(plot.h) +
-         "\" fill=\"none\" stroke=\"#000000\" stroke-width=\"1\"/>\n";
+  out += "<rect class=\"frame\" x=\"" + num(plot.x) + "\" y=\"" + num(plot.y) + "\" width=\"" + num(plot.w) +
+         "\" height=\"" + num(plot.h) + "\" fill=\"none\" stroke=\"#000000\" stroke-width=\"1\"/>\n";
 
   // Reference labels beside the plot at their line's height, nudged apart so none overlap.
   std::vector<std::pair<double, const ReferenceLine*>> labels;
   for (const ReferenceLine& r : f.references)
-    if (std::isfinite(r.y) && !r.label.empty() && r.y >= m.yr.lo && r.y <= m.yr.hi)
-      labels.push_back({m.py(r.y), &r});
-  std::stable_sort(labels.begin(), labels.end(),
-                   [](const auto& a, const auto& b) { return a.first < b.first; });
+    if (std::isfinite(r.y) && !r.label.empty() && r.y >= m.yr.lo && r.y <= m.yr.hi) labels.push_back({m.py(r.y), &r});
+  std::stable_sort(labels.begin(), labels.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
   for (size_t i = 1; i < labels.size(); ++i)
     labels[i].first = std::max(labels[i].first, labels[i - 1].first + kFont + 1);
-  for (const auto& [y, r] : labels)
-    text(out, plot.right() + 6, y + kFont * 0.35, r->label, "start");
+  for (const auto& [y, r] : labels) text(out, plot.right() + 6, y + kFont * 0.35, r->label, "start");
 }
 
 // Notes under everything, one line each; returns the height they take.
@@ -208,8 +196,7 @@ double notes_height(const std::vector<std::string>& notes) {
 
 void write_notes(std::string& out, const std::vector<std::string>& notes, double left, double top) {
   for (size_t i = 0; i < notes.size(); ++i)
-    text(out, left, top + static_cast<double>(i) * kLineHeight + kFont, notes[i], "start", kFont,
-         " fill=\"#333333\"");
+    text(out, left, top + static_cast<double>(i) * kLineHeight + kFont, notes[i], "start", kFont, " fill=\"#333333\"");
 }
 
 }  // namespace
@@ -222,8 +209,7 @@ std::string to_svg(const Figure& figure, int width_px, int height_px) {
   const double notes = notes_height(figure.notes);
   PanelStyle st;
   st.left = left_margin(figure);
-  st.right =
-      std::min(right_margin(figure), w * 0.35);  // a long label must not squeeze the plot away
+  st.right = std::min(right_margin(figure), w * 0.35);  // a long label must not squeeze the plot away
   st.x_axis_text = axis_text(figure.x);
   const Box area{0, top, static_cast<double>(w), h - top - notes - 4};
   panel(out, figure, area, x_range(figure), st);
@@ -255,8 +241,7 @@ std::string to_svg(const FigureGrid& grid, int width_px, int height_px) {
   for (size_t i = 0; i < grid.panels.size(); ++i) {
     st.x_labels = i + 1 == grid.panels.size();
     st.clip_id = static_cast<int>(i);
-    const Box area{0, top + static_cast<double>(i) * each, static_cast<double>(w),
-                   each + (st.x_labels ? x_room : 0)};
+    const Box area{0, top + static_cast<double>(i) * each, static_cast<double>(w), each + (st.x_labels ? x_room : 0)};
     panel(out, grid.panels[i], area, xr, st);
   }
   write_notes(out, grid.notes, st.left, h - notes);

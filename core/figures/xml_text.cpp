@@ -27,9 +27,7 @@ size_t utf8_length(std::string_view s, size_t i) {
     if ((b(i + k) & 0xC0u) != 0x80u) return 0;
     cp = (cp << 6) | (b(i + k) & 0x3Fu);
   }
-  if ((n == 3 && cp < 0x800) || (n == 4 && cp < 0x10000) || cp > 0x10FFFF ||
-      (cp >= 0xD800 && cp <= 0xDFFF))
-    return 0;
+  if ((n == 3 && cp < 0x800) || (n == 4 && cp < 0x10000) || cp > 0x10FFFF || (cp >= 0xD800 && cp <= 0xDFFF)) return 0;
   if (cp == 0xFFFE || cp == 0xFFFF) return 0;  // not XML characters
   return n;
 }

@@ -111,9 +111,9 @@ ConvexHull6 build_convex_hull(std::span<const Eigen::Vector3d> points) {
   if (hull.plane_count + 2 <= ConvexHull6::kMaxPlanes) {
     const double slack = 1e-6 * extent;  // the palm-plane intersection is computed, not exact
     hull.planes[static_cast<size_t>(hull.plane_count++)] = {some_normal.x(), some_normal.y(), some_normal.z(),
-                                                           d0 + slack};
+                                                            d0 + slack};
     hull.planes[static_cast<size_t>(hull.plane_count++)] = {-some_normal.x(), -some_normal.y(), -some_normal.z(),
-                                                           -d0 + slack};
+                                                            -d0 + slack};
   }
   return hull;
 }

@@ -8,16 +8,14 @@ namespace lmc {
 namespace {
 
 constexpr std::array<std::string_view, kNumHandPoints> kNames = {
-    "Palm Position",  "Palm Normal",    "Palm Direction", "Arm Proximal",   "Arm Distal",
-    "Finger1_Meta",   "Finger1_Proxi",  "Finger1_Inter",  "Finger1_Dist",   "Finger1_End",
-    "Finger2_Meta",   "Finger2_Proxi",  "Finger2_Inter",  "Finger2_Dist",   "Finger2_End",
-    "Finger3_Meta",   "Finger3_Proxi",  "Finger3_Inter",  "Finger3_Dist",   "Finger3_End",
-    "Finger4_Meta",   "Finger4_Proxi",  "Finger4_Inter",  "Finger4_Dist",   "Finger4_End",
-    "Finger5_Meta",   "Finger5_Proxi",  "Finger5_Inter",  "Finger5_Dist",   "Finger5_End",
+    "Palm Position", "Palm Normal",   "Palm Direction", "Arm Proximal",  "Arm Distal",    "Finger1_Meta",
+    "Finger1_Proxi", "Finger1_Inter", "Finger1_Dist",   "Finger1_End",   "Finger2_Meta",  "Finger2_Proxi",
+    "Finger2_Inter", "Finger2_Dist",  "Finger2_End",    "Finger3_Meta",  "Finger3_Proxi", "Finger3_Inter",
+    "Finger3_Dist",  "Finger3_End",   "Finger4_Meta",   "Finger4_Proxi", "Finger4_Inter", "Finger4_Dist",
+    "Finger4_End",   "Finger5_Meta",  "Finger5_Proxi",  "Finger5_Inter", "Finger5_Dist",  "Finger5_End",
 };
 
-constexpr std::array<std::string_view, kNumDigits> kDigitNames = {"thumb", "index", "middle",
-                                                                  "ring", "pinky"};
+constexpr std::array<std::string_view, kNumDigits> kDigitNames = {"thumb", "index", "middle", "ring", "pinky"};
 
 }  // namespace
 

@@ -56,9 +56,9 @@ std::string hand_point_words(int i);
 enum class HandType : int { kUnknown = -1, kLeft = 0, kRight = 1 };
 
 struct HandFrame {
-  int device_id = 0;           // 1-based device number in the recording (LMC1 = 1)
-  std::int64_t frame_id = 0;   // device's own counter
-  double frame_rate_hz = 0.0;  // device-reported rate (0 until the service knows it)
+  int device_id = 0;              // 1-based device number in the recording (LMC1 = 1)
+  std::int64_t frame_id = 0;      // device's own counter
+  double frame_rate_hz = 0.0;     // device-reported rate (0 until the service knows it)
   std::int64_t timestamp_us = 0;  // device clock (LeapGetNow), microseconds
   bool hand_present = false;
   std::array<Vec3, kNumHandPoints> points{};  // valid only when hand_present

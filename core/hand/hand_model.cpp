@@ -32,19 +32,16 @@ Eigen::Matrix3d aim(const Eigen::Vector3d& r) {
 // Buchholz et al. 1992, segment lengths as fractions of hand length (docs/algorithms/hand-points.md):
 // rows thumb…little; columns metacarpal, proximal, middle, distal (thumb has no middle).
 constexpr double kBuchholz[5][4] = {
-    {0.251, 0.196, 0.0, 0.158},
-    {0.374, 0.265, 0.143, 0.097},
-    {0.373, 0.277, 0.170, 0.108},
-    {0.336, 0.259, 0.165, 0.107},
-    {0.295, 0.206, 0.117, 0.093},
+    {0.251, 0.196, 0.0, 0.158},   {0.374, 0.265, 0.143, 0.097}, {0.373, 0.277, 0.170, 0.108},
+    {0.336, 0.259, 0.165, 0.107}, {0.295, 0.206, 0.117, 0.093},
 };
 
 // Where the joints sit in the palm, as fractions of hand breadth HB (radio-ulnar, +x ulnar) and
 // hand length HL (axial), and a small dorsal arch (mm). Our own approximation of the regressions
 // in Buchholz et al. 1992: the metacarpal bases converge near the wrist, the MCPs spread over
 // about 0.65·HB, the middle metacarpal continues the forearm axis.
-constexpr double kBaseX[5] = {-0.20, -0.14, -0.03, 0.08, 0.17};   // × HB
-constexpr double kBaseZ[5] = {-0.03, -0.04, -0.04, -0.04, -0.04}; // × HL (negative: distal)
+constexpr double kBaseX[5] = {-0.20, -0.14, -0.03, 0.08, 0.17};    // × HB
+constexpr double kBaseZ[5] = {-0.03, -0.04, -0.04, -0.04, -0.04};  // × HL (negative: distal)
 constexpr double kBaseY[5] = {-9.0, 0.0, 1.0, 0.0, -2.0};          // mm
 constexpr double kMcpX[5] = {0.0, -0.30, -0.05, 0.15, 0.33};       // × HB (thumb: derived)
 constexpr double kMcpY[5] = {0.0, 0.0, 3.0, 1.0, -4.0};            // mm, the transverse arch
@@ -57,50 +54,83 @@ constexpr double kThumbYaw = 40.0, kThumbPitch = -20.0;
 
 double joint_param(const HandJointAngles& a, int k) {
   switch (k) {
-    case 0: return a.wrist_flexion_deg;
-    case 1: return a.wrist_deviation_deg;
-    case 2: return a.thumb.cmc_flexion_deg;
-    case 3: return a.thumb.cmc_abduction_deg;
-    case 4: return a.thumb.mcp_flexion_deg;
-    case 5: return a.thumb.ip_flexion_deg;
-    default: break;
+    case 0:
+      return a.wrist_flexion_deg;
+    case 1:
+      return a.wrist_deviation_deg;
+    case 2:
+      return a.thumb.cmc_flexion_deg;
+    case 3:
+      return a.thumb.cmc_abduction_deg;
+    case 4:
+      return a.thumb.mcp_flexion_deg;
+    case 5:
+      return a.thumb.ip_flexion_deg;
+    default:
+      break;
   }
   if (k < 6 || k >= kNumHandJointParams) return 0.0;
   const auto& f = a.fingers[static_cast<size_t>((k - 6) / 4)];
   switch ((k - 6) % 4) {
-    case 0: return f.mcp_flexion_deg;
-    case 1: return f.mcp_abduction_deg;
-    case 2: return f.pip_flexion_deg;
-    default: return f.dip_flexion_deg;
+    case 0:
+      return f.mcp_flexion_deg;
+    case 1:
+      return f.mcp_abduction_deg;
+    case 2:
+      return f.pip_flexion_deg;
+    default:
+      return f.dip_flexion_deg;
   }
 }
 
 void set_joint_param(HandJointAngles& a, int k, double v) {
   switch (k) {
-    case 0: a.wrist_flexion_deg = v; return;
-    case 1: a.wrist_deviation_deg = v; return;
-    case 2: a.thumb.cmc_flexion_deg = v; return;
-    case 3: a.thumb.cmc_abduction_deg = v; return;
-    case 4: a.thumb.mcp_flexion_deg = v; return;
-    case 5: a.thumb.ip_flexion_deg = v; return;
-    default: break;
+    case 0:
+      a.wrist_flexion_deg = v;
+      return;
+    case 1:
+      a.wrist_deviation_deg = v;
+      return;
+    case 2:
+      a.thumb.cmc_flexion_deg = v;
+      return;
+    case 3:
+      a.thumb.cmc_abduction_deg = v;
+      return;
+    case 4:
+      a.thumb.mcp_flexion_deg = v;
+      return;
+    case 5:
+      a.thumb.ip_flexion_deg = v;
+      return;
+    default:
+      break;
   }
   if (k < 6 || k >= kNumHandJointParams) return;
   auto& f = a.fingers[static_cast<size_t>((k - 6) / 4)];
   switch ((k - 6) % 4) {
-    case 0: f.mcp_flexion_deg = v; return;
-    case 1: f.mcp_abduction_deg = v; return;
-    case 2: f.pip_flexion_deg = v; return;
-    default: f.dip_flexion_deg = v; return;
+    case 0:
+      f.mcp_flexion_deg = v;
+      return;
+    case 1:
+      f.mcp_abduction_deg = v;
+      return;
+    case 2:
+      f.pip_flexion_deg = v;
+      return;
+    default:
+      f.dip_flexion_deg = v;
+      return;
   }
 }
 
 const char* joint_param_name(int k) {
   static constexpr const char* kNames[kNumHandJointParams] = {
-      "wrist_flexion", "wrist_deviation", "thumb_cmc_flexion", "thumb_cmc_abduction", "thumb_mcp", "thumb_ip",
-      "index_mcp",     "index_abduction", "index_pip",         "index_dip",           "middle_mcp", "middle_abduction",
-      "middle_pip",    "middle_dip",      "ring_mcp",          "ring_abduction",      "ring_pip",   "ring_dip",
-      "pinky_mcp",     "pinky_abduction", "pinky_pip",         "pinky_dip"};
+      "wrist_flexion",  "wrist_deviation",  "thumb_cmc_flexion", "thumb_cmc_abduction", "thumb_mcp",
+      "thumb_ip",       "index_mcp",        "index_abduction",   "index_pip",           "index_dip",
+      "middle_mcp",     "middle_abduction", "middle_pip",        "middle_dip",          "ring_mcp",
+      "ring_abduction", "ring_pip",         "ring_dip",          "pinky_mcp",           "pinky_abduction",
+      "pinky_pip",      "pinky_dip"};
   if (k < 0 || k >= kNumHandJointParams) return "";
   return kNames[k];
 }
@@ -161,11 +191,13 @@ HandModel::HandModel(const HandFrame& rec) {
   g.elbow_direction = g.forearm_length_mm > 0 ? Eigen::Vector3d(elbow / g.forearm_length_mm) : Eigen::Vector3d(0, 0, 1);
   const Eigen::Vector3d mid_tip = local(rec.point(Digit::kMiddle, Joint::kEnd));
   g.hand_length_mm = mid_tip.norm();
-  g.hand_breadth_mm = (local(rec.point(Digit::kIndex, Joint::kProxi)) - local(rec.point(Digit::kPinky, Joint::kProxi))).norm();
+  g.hand_breadth_mm =
+      (local(rec.point(Digit::kIndex, Joint::kProxi)) - local(rec.point(Digit::kPinky, Joint::kProxi))).norm();
   Eigen::Vector3d mean_mcp = Eigen::Vector3d::Zero();
   for (int d = 1; d < kNumDigits; ++d) mean_mcp += local(rec.point(static_cast<Digit>(d), Joint::kProxi)) / 4.0;
   const Eigen::Vector3d palm = local(rec.point(kPalm));
-  g.palm_fraction = mean_mcp.squaredNorm() > 0 ? std::clamp(palm.dot(mean_mcp) / mean_mcp.squaredNorm(), 0.0, 1.0) : 0.7;
+  g.palm_fraction =
+      mean_mcp.squaredNorm() > 0 ? std::clamp(palm.dot(mean_mcp) / mean_mcp.squaredNorm(), 0.0, 1.0) : 0.7;
 
   for (int d = 0; d < kNumDigits; ++d) {
     const auto dd = static_cast<size_t>(d);
@@ -177,7 +209,8 @@ HandModel::HandModel(const HandFrame& rec) {
       g.mcp_mm[0] = pt(Joint::kInter);
       const Eigen::Vector3d meta = g.mcp_mm[0] - g.base_mm[0];
       g.rest_direction[0] = meta.norm() > 0 ? Eigen::Vector3d(meta.normalized()) : Eigen::Vector3d(0, 0, -1);
-      g.phalanx_mm[0] = {(pt(Joint::kDist) - pt(Joint::kInter)).norm(), (pt(Joint::kEnd) - pt(Joint::kDist)).norm(), 0.0};
+      g.phalanx_mm[0] = {(pt(Joint::kDist) - pt(Joint::kInter)).norm(), (pt(Joint::kEnd) - pt(Joint::kDist)).norm(),
+                         0.0};
     } else {
       g.base_mm[dd] = pt(Joint::kMeta);
       g.mcp_mm[dd] = pt(Joint::kProxi);

@@ -15,7 +15,9 @@
 
 namespace lmc {
 
-inline bool is_finite(const Vec3& v) { return std::isfinite(v.x()) && std::isfinite(v.y()) && std::isfinite(v.z()); }
+inline bool is_finite(const Vec3& v) {
+  return std::isfinite(v.x()) && std::isfinite(v.y()) && std::isfinite(v.z());
+}
 
 struct HandTrack {
   int frame_count = 0;
@@ -25,7 +27,9 @@ struct HandTrack {
   explicit HandTrack(int frames)
       : frame_count(frames), points(static_cast<size_t>(frames) * kNumHandPoints, Vec3::Constant(kNaN)) {}
 
-  Vec3& at(int frame, int point) { return points[static_cast<size_t>(frame) * kNumHandPoints + static_cast<size_t>(point)]; }
+  Vec3& at(int frame, int point) {
+    return points[static_cast<size_t>(frame) * kNumHandPoints + static_cast<size_t>(point)];
+  }
   const Vec3& at(int frame, int point) const {
     return points[static_cast<size_t>(frame) * kNumHandPoints + static_cast<size_t>(point)];
   }

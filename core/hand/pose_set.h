@@ -21,9 +21,9 @@ struct PoseLabel {
 };
 
 struct PoseSet {
-  std::string description;          // e.g. "monte-carlo seed=1 frames=10000"
-  std::vector<HandFrame> frames;    // world coordinates, hand_present = true
-  std::vector<PoseLabel> labels;    // one per frame
+  std::string description;        // e.g. "monte-carlo seed=1 frames=10000"
+  std::vector<HandFrame> frames;  // world coordinates, hand_present = true
+  std::vector<PoseLabel> labels;  // one per frame
 
   int size() const { return static_cast<int>(frames.size()); }
   // Indices of the frames with this orientation (or motion).

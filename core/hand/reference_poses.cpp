@@ -10,7 +10,7 @@ namespace {
 
 constexpr std::array<std::string_view, kNumHandOrientations> kOrientationNames = {"horizontal", "vertical"};
 constexpr std::array<std::string_view, kNumHandMotions> kMotionNames = {"open", "index", "thumb", "wrist-flexion",
-                                                                       "wrist-extension"};
+                                                                        "wrist-extension"};
 
 }  // namespace
 
@@ -44,11 +44,16 @@ std::string_view orientation_words(HandOrientation o) {
 
 std::string_view motion_words(HandMotion m) {
   switch (m) {
-    case HandMotion::kOpen: return "open hand";
-    case HandMotion::kIndexFlexion: return "index flexion";
-    case HandMotion::kThumbFlexion: return "thumb flexion";
-    case HandMotion::kWristFlexion: return "wrist flexion";
-    case HandMotion::kWristExtension: return "wrist extension";
+    case HandMotion::kOpen:
+      return "open hand";
+    case HandMotion::kIndexFlexion:
+      return "index flexion";
+    case HandMotion::kThumbFlexion:
+      return "thumb flexion";
+    case HandMotion::kWristFlexion:
+      return "wrist flexion";
+    case HandMotion::kWristExtension:
+      return "wrist extension";
   }
   return "motion";
 }
@@ -70,15 +75,20 @@ HandJointAngles motion_angles(HandMotion motion, double progress) {
   const MotionRanges& r = motion_ranges();
   HandJointAngles a;
   switch (motion) {
-    case HandMotion::kOpen: break;
+    case HandMotion::kOpen:
+      break;
     case HandMotion::kIndexFlexion:
       a.finger(Digit::kIndex) = {p * r.index_mcp_deg, 0.0, p * r.index_pip_deg, p * r.index_dip_deg};
       break;
     case HandMotion::kThumbFlexion:
       a.thumb = {p * r.thumb_cmc_deg, 0.0, p * r.thumb_mcp_deg, p * r.thumb_ip_deg};
       break;
-    case HandMotion::kWristFlexion: a.wrist_flexion_deg = p * r.wrist_flexion_deg; break;
-    case HandMotion::kWristExtension: a.wrist_flexion_deg = -p * r.wrist_extension_deg; break;
+    case HandMotion::kWristFlexion:
+      a.wrist_flexion_deg = p * r.wrist_flexion_deg;
+      break;
+    case HandMotion::kWristExtension:
+      a.wrist_flexion_deg = -p * r.wrist_extension_deg;
+      break;
   }
   return a;
 }
@@ -101,7 +111,8 @@ HandFrame reference_pose(const HandModel& model, HandOrientation orientation, Ha
 }
 
 HandFrame motion_pose(const HandModel& model, HandOrientation orientation, HandMotion motion, double progress) {
-  HandFrame f = model.pose(motion_angles(motion, std::clamp(progress, 0.0, 1.0)), reference_placement(model, orientation));
+  HandFrame f =
+      model.pose(motion_angles(motion, std::clamp(progress, 0.0, 1.0)), reference_placement(model, orientation));
   f.hand_present = true;
   return f;
 }

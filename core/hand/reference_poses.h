@@ -1,7 +1,7 @@
 #pragma once
 // The study's ten reference hand poses (paper, "LMC Placement Optimization";
-// docs/algorithms/hand-points.md): five motions — open hand, index flexion, thumb flexion, wrist flexion, wrist extension —
-// each with the palm facing down ("horizontal") and facing the subject's left, thumb up
+// docs/algorithms/hand-points.md): five motions — open hand, index flexion, thumb flexion, wrist flexion, wrist
+// extension — each with the palm facing down ("horizontal") and facing the subject's left, thumb up
 // ("vertical"). The hand is about 150 mm above the table centre, the forearm comes from the subject
 // (elbow at +z) and the fingers point away (−z).
 #include <array>

@@ -21,8 +21,7 @@ namespace {
 
 void write_file_atomically(const std::filesystem::path& path, std::string_view contents) {
   std::random_device rd;
-  const auto tmp = path.parent_path() /
-                   ("." + path.filename().string() + ".tmp" + std::to_string(rd() % 1000000));
+  const auto tmp = path.parent_path() / ("." + path.filename().string() + ".tmp" + std::to_string(rd() % 1000000));
   const int fd = ::open(tmp.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
   if (fd < 0) fail(path, "cannot create temporary file " + tmp.string());
   const char* data = contents.data();

@@ -24,7 +24,7 @@ class Codec {
 
   std::int16_t i16(const std::uint8_t* b) const {
     const auto u = p_ == C3dProcessor::kMips ? static_cast<std::uint16_t>((b[0] << 8) | b[1])
-                                              : static_cast<std::uint16_t>(b[0] | (b[1] << 8));
+                                             : static_cast<std::uint16_t>(b[0] | (b[1] << 8));
     return static_cast<std::int16_t>(u);
   }
   std::uint16_t u16(const std::uint8_t* b) const { return static_cast<std::uint16_t>(i16(b)); }
@@ -118,12 +118,14 @@ class Reader {
   }
 
   C3dData read() {
-    if (b_.size() < kBlock) fail(0, "file is " + std::to_string(b_.size()) + " bytes, too short for a C3D header (512)");
+    if (b_.size() < kBlock)
+      fail(0, "file is " + std::to_string(b_.size()) + " bytes, too short for a C3D header (512)");
     if (b_[1] != kC3dKey) fail(1, "not a C3D file (second byte is " + std::to_string(b_[1]) + ", expected 0x50)");
     const size_t param_block = b_[0];
     if (param_block < 2) fail(0, "parameter section block number " + std::to_string(param_block) + " is invalid");
     const size_t pstart = (param_block - 1) * kBlock;
-    if (pstart + 4 > b_.size()) fail(0, "parameter section (block " + std::to_string(param_block) + ") lies past the end of the file");
+    if (pstart + 4 > b_.size())
+      fail(0, "parameter section (block " + std::to_string(param_block) + ") lies past the end of the file");
     const int proc = b_[pstart + 3];
     if (proc < 84 || proc > 86) {
       fail(pstart + 3, "unknown processor type " + std::to_string(proc) + " (expected 84 Intel, 85 DEC or 86 MIPS)");
@@ -134,7 +136,8 @@ class Reader {
     const size_t nblocks = b_[pstart + 2];
     size_t pend = pstart + std::max<size_t>(nblocks, 1) * kBlock;
     if (pend > b_.size()) {
-      out.warnings.push_back("parameter section claims " + std::to_string(nblocks) + " blocks but the file ends sooner");
+      out.warnings.push_back("parameter section claims " + std::to_string(nblocks) +
+                             " blocks but the file ends sooner");
       pend = b_.size();
     }
     parse_parameters(c, pstart + 4, pend, out);
@@ -149,7 +152,8 @@ class Reader {
     const int h_data_start = hword(9);
     const float h_rate = c.f32(&b_[20]);
 
-    const int used = has("POINT", "USED") ? static_cast<int>(static_cast<std::uint16_t>(integer("POINT", "USED", c))) : h_points;
+    const int used =
+        has("POINT", "USED") ? static_cast<int>(static_cast<std::uint16_t>(integer("POINT", "USED", c))) : h_points;
     double scale = has("POINT", "SCALE") ? number("POINT", "SCALE", c) : h_scale;
     if (scale == 0.0 || !std::isfinite(scale)) fail(12, "POINT:SCALE is zero or not a number");
     out.point_scale = scale;
@@ -207,8 +211,8 @@ class Reader {
         if (!std::isfinite(per_frame) || per_frame > static_cast<double>(b_.size())) {
           fail(0, "ANALOG:USED (" + std::to_string(channels) + ") x ANALOG:RATE (" + std::to_string(arate) +
                       ") / POINT:RATE (" + std::to_string(out.point_rate_hz) +
-                      ") claims more analog samples per frame than the file has bytes (" +
-                      std::to_string(b_.size()) + "); implausible");
+                      ") claims more analog samples per frame than the file has bytes (" + std::to_string(b_.size()) +
+                      "); implausible");
         }
         analog = static_cast<int>(per_frame);
       }
@@ -251,7 +255,8 @@ class Reader {
     const size_t word = out.float_storage ? 4 : 2;
     const size_t frame_bytes = (static_cast<size_t>(used) * 4 + static_cast<size_t>(std::max(analog, 0))) * word;
     const size_t dstart = static_cast<size_t>(data_start - 1) * kBlock;
-    if (dstart > b_.size()) fail(16, "data section (block " + std::to_string(data_start) + ") lies past the end of the file");
+    if (dstart > b_.size())
+      fail(16, "data section (block " + std::to_string(data_start) + ") lies past the end of the file");
     if (frame_bytes == 0 && frames > 0 && static_cast<size_t>(frames) > b_.size()) {
       // Frames without points or analog samples take no bytes, so the file's size cannot bound
       // them; a claim of more frames than the file has bytes is a corrupt or hostile count (each
@@ -278,7 +283,10 @@ class Reader {
           v = {c.f32(q), c.f32(q + 4), c.f32(q + 8)};
           const float r = c.f32(q + 12);
           // The fourth word of a float file is an integer stored as a float (docs/formats.md).
-          residual = std::isfinite(r) ? static_cast<double>(static_cast<std::int16_t>(std::lround(std::clamp(r, -32768.0f, 32767.0f)))) : -1.0;
+          residual =
+              std::isfinite(r)
+                  ? static_cast<double>(static_cast<std::int16_t>(std::lround(std::clamp(r, -32768.0f, 32767.0f))))
+                  : -1.0;
         } else {
           v = {c.i16(q) * abs_scale, c.i16(q + 2) * abs_scale, c.i16(q + 4) * abs_scale};
           residual = c.i16(q + 6);
@@ -306,8 +314,10 @@ class Reader {
       const auto id = static_cast<int>(static_cast<std::int8_t>(b_[pos + 1]));
       if (name_len == 0 || id == 0) break;
       const size_t name_at = pos + 2;
-      if (name_at + static_cast<size_t>(name_len) + 2 > end) fail(pos, "parameter record runs past the parameter section");
-      const std::string name = upper(std::string(reinterpret_cast<const char*>(&b_[name_at]), static_cast<size_t>(name_len)));
+      if (name_at + static_cast<size_t>(name_len) + 2 > end)
+        fail(pos, "parameter record runs past the parameter section");
+      const std::string name =
+          upper(std::string(reinterpret_cast<const char*>(&b_[name_at]), static_cast<size_t>(name_len)));
       const size_t off_at = name_at + static_cast<size_t>(name_len);
       const int next = c.i16(&b_[off_at]);
       const size_t body = off_at + 2;
@@ -342,7 +352,8 @@ class Reader {
         bool have_points = false;
         for (const auto& pd : pending) have_points = have_points || pd.name == "USED";
         if (!have_points) fail(off_at, "record " + name + "'s offset points past the parameter section");
-        out.warnings.push_back("parameter record " + name + " points past the parameter section; later records ignored");
+        out.warnings.push_back("parameter record " + name +
+                               " points past the parameter section; later records ignored");
         break;
       }
     }
@@ -361,10 +372,14 @@ class Reader {
     const Param& p = get(g, n);
     if (p.size < static_cast<size_t>(std::abs(p.type)) || p.size == 0) fail(p.offset, g + ":" + n + " is empty");
     switch (p.type) {
-      case 1: return p.data[0];
-      case 2: return c.i16(p.data);
-      case 4: return static_cast<int>(std::lround(c.f32(p.data)));
-      default: fail(p.offset, g + ":" + n + " is text, expected a number");
+      case 1:
+        return p.data[0];
+      case 2:
+        return c.i16(p.data);
+      case 4:
+        return static_cast<int>(std::lround(c.f32(p.data)));
+      default:
+        fail(p.offset, g + ":" + n + " is text, expected a number");
     }
   }
   double number(const std::string& g, const std::string& n, const Codec& c) const {
@@ -422,7 +437,9 @@ void put_record_param(std::vector<std::uint8_t>& out, const Codec& c, const Para
   out.insert(out.end(), p.name.begin(), p.name.end());
   const size_t next = 2 + 1 + 1 + p.dims.size() + p.data.size() + 1;
   // The offset to the next record is a signed 16-bit word.
-  if (next > 32767) throw Error("C3D writer: parameter " + p.name + " holds " + std::to_string(p.data.size()) + " bytes, too many for one record");
+  if (next > 32767)
+    throw Error("C3D writer: parameter " + p.name + " holds " + std::to_string(p.data.size()) +
+                " bytes, too many for one record");
   c.put_i16(out, static_cast<std::int16_t>(next));
   out.push_back(static_cast<std::uint8_t>(static_cast<std::int8_t>(p.type)));
   out.push_back(static_cast<std::uint8_t>(p.dims.size()));
@@ -540,7 +557,8 @@ std::vector<std::uint8_t> write_c3d_bytes(const C3dData& data, const C3dWriteOpt
       point_params.push_back(text_param(k == 0 ? "DESCRIPTIONS" : "DESCRIPTIONS" + std::to_string(k + 1), chunk, true));
     }
   }
-  std::vector<ParamOut> analog_params{int_param(c, "USED", 0), float_param(c, "RATE", static_cast<float>(data.point_rate_hz))};
+  std::vector<ParamOut> analog_params{int_param(c, "USED", 0),
+                                      float_param(c, "RATE", static_cast<float>(data.point_rate_hz))};
   // TRIAL: the frame range as two 16-bit words each (low, high), so readers that take the range
   // from here rather than from the header's 16-bit fields see the same frames.
   const long first = std::max(data.first_frame, 1);
@@ -557,9 +575,12 @@ std::vector<std::uint8_t> write_c3d_bytes(const C3dData& data, const C3dWriteOpt
                     float_param(c, "CAMERA_RATE", static_cast<float>(data.point_rate_hz))};
   }
   std::vector<ParamOut> manufacturer_params;
-  if (!data.manufacturer_company.empty()) manufacturer_params.push_back(text_param("COMPANY", {data.manufacturer_company}, false));
-  if (!data.manufacturer_software.empty()) manufacturer_params.push_back(text_param("SOFTWARE", {data.manufacturer_software}, false));
-  if (!data.manufacturer_version.empty()) manufacturer_params.push_back(text_param("VERSION_LABEL", {data.manufacturer_version}, false));
+  if (!data.manufacturer_company.empty())
+    manufacturer_params.push_back(text_param("COMPANY", {data.manufacturer_company}, false));
+  if (!data.manufacturer_software.empty())
+    manufacturer_params.push_back(text_param("SOFTWARE", {data.manufacturer_software}, false));
+  if (!data.manufacturer_version.empty())
+    manufacturer_params.push_back(text_param("VERSION_LABEL", {data.manufacturer_version}, false));
 
   auto build = [&](int data_start) {
     point_params[3] = int_param(c, "DATA_START", data_start);
@@ -582,7 +603,8 @@ std::vector<std::uint8_t> write_c3d_bytes(const C3dData& data, const C3dWriteOpt
   };
   std::vector<std::uint8_t> records = build(0);
   const size_t pblocks = (records.size() + 4 + kBlock - 1) / kBlock;
-  if (pblocks > 255) throw Error("C3D writer: the parameter section needs " + std::to_string(pblocks) + " blocks (at most 255)");
+  if (pblocks > 255)
+    throw Error("C3D writer: the parameter section needs " + std::to_string(pblocks) + " blocks (at most 255)");
   const int data_start = static_cast<int>(2 + pblocks);
   records = build(data_start);
 
@@ -595,7 +617,8 @@ std::vector<std::uint8_t> write_c3d_bytes(const C3dData& data, const C3dWriteOpt
   c.put_i16(header, static_cast<std::int16_t>(static_cast<std::uint16_t>(points)));
   c.put_i16(header, 0);  // analog samples per frame
   c.put_i16(header, static_cast<std::int16_t>(static_cast<std::uint16_t>(std::max(data.first_frame, 1))));
-  c.put_i16(header, static_cast<std::int16_t>(static_cast<std::uint16_t>(std::max(data.first_frame, 1) + std::max(frames, 1) - 1)));
+  c.put_i16(header, static_cast<std::int16_t>(
+                        static_cast<std::uint16_t>(std::max(data.first_frame, 1) + std::max(frames, 1) - 1)));
   c.put_i16(header, 0);  // max interpolation gap
   c.put_f32(header, scale);
   c.put_i16(header, static_cast<std::int16_t>(data_start));

@@ -42,7 +42,9 @@ std::string read_text_file(const std::filesystem::path& path, const std::string&
   // What was read must be text before anything else is said about it (a binary file is named as
   // one); when the file goes on, the check stops short of a UTF-8 sequence the chunk may have cut.
   const size_t last_newline = bytes.rfind('\n');
-  const size_t checked = !more ? bytes.size() : last_newline != std::string::npos ? last_newline : bytes.size() - std::min<size_t>(bytes.size(), 3);
+  const size_t checked = !more                               ? bytes.size()
+                         : last_newline != std::string::npos ? last_newline
+                                                             : bytes.size() - std::min<size_t>(bytes.size(), 3);
   require_text(std::string_view(bytes).substr(0, checked), path.string());
   if (newline == std::string::npos && more)
     throw Error(ErrorLocation{path.string(), 1},
@@ -178,7 +180,9 @@ std::string_view trim(std::string_view s) {
   return s;
 }
 
-bool is_blank(std::string_view s) { return trim(s).empty(); }
+bool is_blank(std::string_view s) {
+  return trim(s).empty();
+}
 
 std::optional<double> parse_double(std::string_view s) {
   s = trim(s);

@@ -53,8 +53,7 @@ std::vector<Line> split_lines(std::string_view content);
 std::string quoted_excerpt(std::string_view s);
 
 // Throws lmc::Error at file:line:column; the one way the text readers report a bad field.
-[[noreturn]] void fail_at(const std::string& source, long line, long column,
-                          const std::string& what);
+[[noreturn]] void fail_at(const std::string& source, long line, long column, const std::string& what);
 
 // Splits at every `sep` (empty fields kept).
 void split_fields(std::string_view line, char sep, std::vector<Field>& out);

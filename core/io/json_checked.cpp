@@ -121,9 +121,9 @@ class ParsePosition {
  private:
   struct Frame {
     bool is_object;
-    std::string key;                // object: the member being read
-    std::set<std::string> keys;     // object: keys seen so far
-    size_t index;                   // array: the element being read
+    std::string key;             // object: the member being read
+    std::set<std::string> keys;  // object: keys seen so far
+    size_t index;                // array: the element being read
   };
   std::vector<Frame> frames_;
 };
@@ -164,19 +164,27 @@ nlohmann::json parse_json_text(const std::string& text, const std::string& sourc
   const auto guard = [&](int depth, nlohmann::json::parse_event_t event, nlohmann::json& parsed) {
     using E = nlohmann::json::parse_event_t;
     if (depth > kMaxJsonDepth && (event == E::object_start || event == E::array_start))
-      throw Error(ErrorLocation{source},
-                  "JSON nested deeper than " + std::to_string(kMaxJsonDepth) + " levels");
+      throw Error(ErrorLocation{source}, "JSON nested deeper than " + std::to_string(kMaxJsonDepth) + " levels");
     switch (event) {
-      case E::object_start: at.object_start(); break;
-      case E::array_start: at.array_start(); break;
+      case E::object_start:
+        at.object_start();
+        break;
+      case E::array_start:
+        at.array_start();
+        break;
       case E::key: {
         const std::string k = parsed.is_string() ? parsed.get<std::string>() : std::string();
-        if (!at.key(k)) throw Error(ErrorLocation{source, 0, 0, at.pointer()}, "duplicate key '" + k + "' in one object");
+        if (!at.key(k))
+          throw Error(ErrorLocation{source, 0, 0, at.pointer()}, "duplicate key '" + k + "' in one object");
         break;
       }
-      case E::value: at.value_done(); break;
+      case E::value:
+        at.value_done();
+        break;
       case E::object_end:
-      case E::array_end: at.container_end(); break;
+      case E::array_end:
+        at.container_end();
+        break;
     }
     return true;
   };
@@ -199,7 +207,8 @@ nlohmann::json read_json_file(const std::filesystem::path& path) {
   std::error_code ec;
   const auto size = std::filesystem::file_size(path, ec);
   if (!ec && size > kMaxJsonFileBytes)
-    throw Error(ErrorLocation{path.string()}, "file is " + std::to_string(size >> 20) + " MB; JSON files of this program are at most " +
+    throw Error(ErrorLocation{path.string()}, "file is " + std::to_string(size >> 20) +
+                                                  " MB; JSON files of this program are at most " +
                                                   std::to_string(kMaxJsonFileBytes >> 20) + " MB");
   std::ifstream in(path, std::ios::binary);
   if (!in) throw Error(ErrorLocation{path.string()}, "cannot open file");

@@ -32,9 +32,7 @@ class JsonReader {
   double number(const char* key) const { return at(key).number(); }
   double number_or(const char* key, double fallback) const { return has(key) ? number(key) : fallback; }
   std::string string(const char* key) const { return at(key).string(); }
-  std::string string_or(const char* key, std::string fallback) const {
-    return has(key) ? string(key) : fallback;
-  }
+  std::string string_or(const char* key, std::string fallback) const { return has(key) ? string(key) : fallback; }
 
   [[noreturn]] void fail(const std::string& what) const;
   void require_object() const;

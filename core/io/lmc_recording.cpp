@@ -19,8 +19,7 @@ namespace {
 
 // Column layout (reference-data/README.md): 4 bookkeeping columns, then 30 points.
 constexpr int kMetaColumns = 4;
-constexpr std::array<std::string_view, kMetaColumns> kMetaNames = {"Device ID", "Frame ID", "Frame Rate",
-                                                                   "Time Stamp"};
+constexpr std::array<std::string_view, kMetaColumns> kMetaNames = {"Device ID", "Frame ID", "Frame Rate", "Time Stamp"};
 constexpr int kPointColumns = kMetaColumns + kNumHandPoints;                   // raw/resampled: 34
 constexpr int kSplitColumns = kMetaColumns + 3 * kNumHandPoints + kNumDigits;  // raytraced: 99
 constexpr std::array<char, 3> kAxes = {'x', 'y', 'z'};
@@ -66,8 +65,7 @@ HeaderInfo read_header(const text::Line& line, const std::string& source) {
   HeaderInfo info;
   const std::string_view t = line.text;
   if (text::is_blank(t)) {
-    text::fail_at(source, line.number, 1,
-                  "first line is empty: expected the header, starting with 'Device ID'");
+    text::fail_at(source, line.number, 1, "first line is empty: expected the header, starting with 'Device ID'");
   }
   std::vector<text::Field> fields;
   if (t.find('\t') != std::string_view::npos) {
@@ -95,9 +93,8 @@ HeaderInfo read_header(const text::Line& line, const std::string& source) {
     for (size_t i = 0; i < fields.size(); ++i) {
       if (text::normalise_name(fields[i].text) != text::normalise_name(expected[i])) {
         text::fail_at(source, line.number, fields[i].column,
-                      "header column " + std::to_string(i + 1) + " is " +
-                          text::quoted_excerpt(fields[i].text) + ", expected '" + expected[i] +
-                          "'");
+                      "header column " + std::to_string(i + 1) + " is " + text::quoted_excerpt(fields[i].text) +
+                          ", expected '" + expected[i] + "'");
       }
     }
     return info;
@@ -122,15 +119,13 @@ HeaderInfo read_header(const text::Line& line, const std::string& source) {
   for (size_t i = 0; i < std::min(fields.size(), words.size()); ++i) {
     if (text::normalise_name(fields[i].text) != words[i]) {
       text::fail_at(source, line.number, fields[i].column,
-                    "unexpected header word " + text::quoted_excerpt(fields[i].text) +
-                        ", expected '" + words[i] + "'");
+                    "unexpected header word " + text::quoted_excerpt(fields[i].text) + ", expected '" + words[i] + "'");
     }
   }
   if (fields.size() != words.size()) {
     text::fail_at(source, line.number, 0,
-                  "space-separated header has " + std::to_string(fields.size()) +
-                      " words; a raytraced recording has " + std::to_string(words.size()) + " (" +
-                      std::to_string(kSplitColumns) + " columns)");
+                  "space-separated header has " + std::to_string(fields.size()) + " words; a raytraced recording has " +
+                      std::to_string(words.size()) + " (" + std::to_string(kSplitColumns) + " columns)");
   }
   return info;
 }
@@ -146,7 +141,7 @@ struct RowFailure {
 struct ParsedRow {
   HandFrame frame;
   FingerLabels labels{};
-  bool all_nan = false;       // every coordinate NaN (resampled "nan,nan,nan" no-hand row)
+  bool all_nan = false;        // every coordinate NaN (resampled "nan,nan,nan" no-hand row)
   bool short_no_hand = false;  // raw no-hand row (ends after the timestamp)
   bool partial = false;        // some coordinates finite, some not
 };
@@ -191,29 +186,26 @@ class RowParser {
     }
     const auto id = text::parse_int(fields_[0].text);
     if (!id)
-      return RowFailure{fields_[0].column,
-                        "Device ID is not an integer: " + text::quoted_excerpt(fields_[0].text)};
+      return RowFailure{fields_[0].column, "Device ID is not an integer: " + text::quoted_excerpt(fields_[0].text)};
     if (*id < 1 || *id > kMaxDeviceId) {
       return RowFailure{fields_[0].column,
                         "Device ID " + std::to_string(*id) + " is outside 1.." + std::to_string(kMaxDeviceId)};
     }
     const auto frame_id = text::parse_int(fields_[1].text);
     if (!frame_id)
-      return RowFailure{fields_[1].column,
-                        "Frame ID is not an integer: " + text::quoted_excerpt(fields_[1].text)};
+      return RowFailure{fields_[1].column, "Frame ID is not an integer: " + text::quoted_excerpt(fields_[1].text)};
     const auto rate = text::parse_double(fields_[2].text);
     if (!rate || !std::isfinite(*rate) || *rate < 0.0) {
-      return RowFailure{fields_[2].column, "Frame Rate is not a finite non-negative number: " +
-                                               text::quoted_excerpt(fields_[2].text)};
+      return RowFailure{fields_[2].column,
+                        "Frame Rate is not a finite non-negative number: " + text::quoted_excerpt(fields_[2].text)};
     }
     const auto ts = text::parse_int(fields_[3].text);
     if (!ts)
-      return RowFailure{fields_[3].column, "Time Stamp is not an integer (µs): " +
-                                               text::quoted_excerpt(fields_[3].text)};
-    if (*ts > kMaxAbsTimestampUs || *ts < -kMaxAbsTimestampUs) {
       return RowFailure{fields_[3].column,
-                        "Time Stamp " + text::quoted_excerpt(fields_[3].text) +
-                            " µs is implausible (beyond ±2^53 µs, about 285 years)"};
+                        "Time Stamp is not an integer (µs): " + text::quoted_excerpt(fields_[3].text)};
+    if (*ts > kMaxAbsTimestampUs || *ts < -kMaxAbsTimestampUs) {
+      return RowFailure{fields_[3].column, "Time Stamp " + text::quoted_excerpt(fields_[3].text) +
+                                               " µs is implausible (beyond ±2^53 µs, about 285 years)"};
     }
     frame.device_id = static_cast<int>(*id);
     frame.frame_id = *frame_id;
@@ -247,13 +239,11 @@ class RowParser {
         const std::string_view part = last ? rest : rest.substr(0, comma);
         const auto v = text::parse_double(part);
         if (!v) {
-          return RowFailure{column, "point '" + std::string(hand_point_name(p)) + "' " +
-                                        kAxes[static_cast<size_t>(a)] +
+          return RowFailure{column, "point '" + std::string(hand_point_name(p)) + "' " + kAxes[static_cast<size_t>(a)] +
                                         " is not a number: " + text::quoted_excerpt(part)};
         }
-        if (auto bad = implausible_coordinate(*v, column,
-                                              "point '" + std::string(hand_point_name(p)) + "' " + kAxes[static_cast<size_t>(a)],
-                                              part)) {
+        if (auto bad = implausible_coordinate(
+                *v, column, "point '" + std::string(hand_point_name(p)) + "' " + kAxes[static_cast<size_t>(a)], part)) {
           return bad;
         }
         row.frame.points[static_cast<size_t>(p)][a] = *v;
@@ -277,14 +267,13 @@ class RowParser {
       const text::Field& field = fields_[static_cast<size_t>(kMetaColumns + c)];
       const auto v = text::parse_double(field.text);
       if (!v) {
-        return RowFailure{field.column,
-                          "'" + std::string(hand_point_name(c / 3)) + "." +
-                              kAxes[static_cast<size_t>(c % 3)] +
-                              "' is not a number: " + text::quoted_excerpt(field.text)};
+        return RowFailure{field.column, "'" + std::string(hand_point_name(c / 3)) + "." +
+                                            kAxes[static_cast<size_t>(c % 3)] +
+                                            "' is not a number: " + text::quoted_excerpt(field.text)};
       }
-      if (auto bad = implausible_coordinate(*v, field.column,
-                                            "'" + std::string(hand_point_name(c / 3)) + "." + kAxes[static_cast<size_t>(c % 3)] + "'",
-                                            field.text)) {
+      if (auto bad = implausible_coordinate(
+              *v, field.column,
+              "'" + std::string(hand_point_name(c / 3)) + "." + kAxes[static_cast<size_t>(c % 3)] + "'", field.text)) {
         return bad;
       }
       row.frame.points[static_cast<size_t>(c / 3)][c % 3] = *v;
@@ -294,8 +283,7 @@ class RowParser {
       const text::Field& field = fields_[static_cast<size_t>(kMetaColumns + 3 * kNumHandPoints + d)];
       const auto v = text::parse_double(field.text);
       if (!v || (*v != 1.0 && *v != 0.0 && *v != -1.0)) {
-        return RowFailure{field.column, "visibility_" + std::string(digit_name(d)) +
-                                            " must be 1, 0 or -1, found " +
+        return RowFailure{field.column, "visibility_" + std::string(digit_name(d)) + " must be 1, 0 or -1, found " +
                                             text::quoted_excerpt(field.text)};
       }
       row.labels[static_cast<size_t>(d)] = static_cast<std::int8_t>(*v);
@@ -309,12 +297,11 @@ class RowParser {
   static std::optional<RowFailure> implausible_coordinate(double v, long column, const std::string& what,
                                                           std::string_view text) {
     if (std::isinf(v)) {
-      return RowFailure{column, what + " is infinite: " + text::quoted_excerpt(text) +
-                                    " (a missing coordinate is written nan)"};
+      return RowFailure{
+          column, what + " is infinite: " + text::quoted_excerpt(text) + " (a missing coordinate is written nan)"};
     }
     if (std::isfinite(v) && std::fabs(v) > kMaxAbsCoordinateMm) {
-      return RowFailure{column, what + " = " + text::quoted_excerpt(text) +
-                                    " mm is implausible (more than " +
+      return RowFailure{column, what + " = " + text::quoted_excerpt(text) + " mm is implausible (more than " +
                                     std::to_string(static_cast<int>(kMaxAbsCoordinateMm / 1000.0)) +
                                     " m from the controller)"};
     }
@@ -375,8 +362,7 @@ LmcRecording parse_lmc_recording(std::istream& in, const std::string& source_nam
 
 LmcRecording parse_lmc_recording_text(std::string_view content, const std::string& source_name) {
   if (text::is_blank(text::without_bom(content)))
-    text::fail_at(source_name, 1, 0,
-                  "empty file: expected an LMC recording header ('Device ID …')");
+    text::fail_at(source_name, 1, 0, "empty file: expected an LMC recording header ('Device ID …')");
   text::require_text(content, source_name);
   const auto lines = text::split_lines(content);
   const HeaderInfo header = read_header(lines.front(), source_name);
@@ -425,10 +411,10 @@ LmcRecording parse_lmc_recording_text(std::string_view content, const std::strin
   }
 
   if (partial_rows > 0) {
-    rec.warnings.push_back(format_error(
-        ErrorLocation{source_name, first_partial_line},
-        std::to_string(partial_rows) +
-            " row(s) have some coordinates missing (NaN) but not all; they are treated as 'no hand'"));
+    rec.warnings.push_back(
+        format_error(ErrorLocation{source_name, first_partial_line},
+                     std::to_string(partial_rows) +
+                         " row(s) have some coordinates missing (NaN) but not all; they are treated as 'no hand'"));
   }
 
   if (header.style == ColumnStyle::kSplitNumbers) {
@@ -536,8 +522,7 @@ void write_lmc_recording(std::ostream& out, const LmcRecording& recording) {
   }
   out << lmc_recording_header(recording.kind);
   for (size_t i = 0; i < recording.rows.size(); ++i) {
-    const FingerLabels* labels =
-        recording.kind == RecordingKind::kRaytraced ? &recording.visibility[i] : nullptr;
+    const FingerLabels* labels = recording.kind == RecordingKind::kRaytraced ? &recording.visibility[i] : nullptr;
     out << format_lmc_row(recording.rows[i], recording.kind, labels);
   }
 }

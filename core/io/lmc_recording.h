@@ -25,7 +25,7 @@ using FingerLabels = std::array<std::int8_t, kNumDigits>;
 
 struct LmcRecording {
   RecordingKind kind = RecordingKind::kRaw;
-  std::vector<HandFrame> rows;          // in file order (not sorted by time)
+  std::vector<HandFrame> rows;           // in file order (not sorted by time)
   std::vector<FingerLabels> visibility;  // one per row when kind == kRaytraced, else empty
   std::vector<std::string> warnings;     // problems that were survivable, e.g. a truncated last line
   // Where the rows came from, so later stages can name file and line: the reader fills both

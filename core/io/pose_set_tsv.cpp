@@ -133,7 +133,8 @@ PoseSet parse_pose_set(std::istream& in, const std::string& source) {
       const auto got = split_tabs(line);
       const auto want = split_tabs(expected_header);
       for (size_t c = 0; c < want.size(); ++c) {
-        if (c >= got.size()) throw fail(static_cast<long>(c + 1), "header ends early; expected column \"" + std::string(want[c]) + "\"");
+        if (c >= got.size())
+          throw fail(static_cast<long>(c + 1), "header ends early; expected column \"" + std::string(want[c]) + "\"");
         if (got[c] != want[c]) {
           throw fail(static_cast<long>(c + 1), "unexpected header column \"" + std::string(got[c]) + "\", expected \"" +
                                                    std::string(want[c]) + "\"");
@@ -164,13 +165,16 @@ PoseSet parse_pose_set(std::istream& in, const std::string& source) {
     };
     const double index = number(0);
     if (index != static_cast<double>(set.frames.size())) {
-      throw fail(1, "frame index " + std::string(fields[0]) + " out of sequence; expected " + std::to_string(set.frames.size()));
+      throw fail(1, "frame index " + std::string(fields[0]) + " out of sequence; expected " +
+                        std::to_string(set.frames.size()));
     }
     PoseLabel label;
     const auto o = orientation_from_name(fields[1]);
     if (!o) throw fail(2, "unknown orientation \"" + std::string(fields[1]) + "\" (horizontal or vertical)");
     const auto m = motion_from_name(fields[2]);
-    if (!m) throw fail(3, "unknown motion \"" + std::string(fields[2]) + "\" (open, index, thumb, wrist-flexion, wrist-extension)");
+    if (!m)
+      throw fail(
+          3, "unknown motion \"" + std::string(fields[2]) + "\" (open, index, thumb, wrist-flexion, wrist-extension)");
     label.orientation = *o;
     label.motion = *m;
     label.progress = number(3);

@@ -16,7 +16,8 @@ HandModel load_hand_model(const std::optional<std::string>& recording_path) {
   throw Error(ErrorLocation(*recording_path), "no row with a hand in this recording");
 }
 
-PoseSet load_poses(const std::string& spec, int frames, std::uint64_t seed, const std::optional<std::string>& hand_path) {
+PoseSet load_poses(const std::string& spec, int frames, std::uint64_t seed,
+                   const std::optional<std::string>& hand_path) {
   if (spec == "mc") {
     PoseSetSettings settings;
     settings.frames = frames;

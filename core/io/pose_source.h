@@ -21,6 +21,7 @@ HandModel load_hand_model(const std::optional<std::string>& recording_path);
 // "mc" → generate_pose_set(hand, {frames, seed}); anything else is read as a pose-set file
 // (frames/seed are then ignored). Throws lmc::Error.
 PoseSet load_poses(const std::string& spec, int frames = kDefaultMonteCarloFrames,
-                   std::uint64_t seed = kDefaultMonteCarloSeed, const std::optional<std::string>& hand_path = std::nullopt);
+                   std::uint64_t seed = kDefaultMonteCarloSeed,
+                   const std::optional<std::string>& hand_path = std::nullopt);
 
 }  // namespace lmc

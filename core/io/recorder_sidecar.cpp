@@ -12,23 +12,53 @@ namespace {
 using nlohmann::json;
 
 // The keys each object of the format knows; everything else is kept in `unknown`.
-constexpr const char* kTopKeys[] = {
-    "format", "format_version", "trial", "status", "error", "stopped_by", "software", "backend",
-    "recording_file", "recording_format", "host_start_utc", "host_stop_utc", "host_start_ns", "host_stop_ns",
-    "layout", "serial_to_slot", "devices", "frames_written", "frames_dropped", "vicon_packets",
-    "vicon_trigger_received", "vicon_stop_received", "vicon_alignment", "trial_window", "events", "ground_truth",
-    "extra"};
-constexpr const char* kDeviceKeys[] = {
-    "device_id", "slot", "serial", "frames_written", "frames_with_hand", "frames_dropped_queue", "frame_id_gaps",
-    "first_timestamp_us", "last_timestamp_us", "gaps", "disconnects",
-    "model", "tracking_mode", "frames_other_side_hand"};
+constexpr const char* kTopKeys[] = {"format",
+                                    "format_version",
+                                    "trial",
+                                    "status",
+                                    "error",
+                                    "stopped_by",
+                                    "software",
+                                    "backend",
+                                    "recording_file",
+                                    "recording_format",
+                                    "host_start_utc",
+                                    "host_stop_utc",
+                                    "host_start_ns",
+                                    "host_stop_ns",
+                                    "layout",
+                                    "serial_to_slot",
+                                    "devices",
+                                    "frames_written",
+                                    "frames_dropped",
+                                    "vicon_packets",
+                                    "vicon_trigger_received",
+                                    "vicon_stop_received",
+                                    "vicon_alignment",
+                                    "trial_window",
+                                    "events",
+                                    "ground_truth",
+                                    "extra"};
+constexpr const char* kDeviceKeys[] = {"device_id",
+                                       "slot",
+                                       "serial",
+                                       "frames_written",
+                                       "frames_with_hand",
+                                       "frames_dropped_queue",
+                                       "frame_id_gaps",
+                                       "first_timestamp_us",
+                                       "last_timestamp_us",
+                                       "gaps",
+                                       "disconnects",
+                                       "model",
+                                       "tracking_mode",
+                                       "frames_other_side_hand"};
 constexpr const char* kGapKeys[] = {"from_timestamp_us", "to_timestamp_us", "duration_ms"};
-constexpr const char* kDisconnectKeys[] = {
-    "host_time_utc", "host_ns", "message", "reconnected_host_time_utc", "event", "serial", "slot"};
-constexpr const char* kPacketKeys[] = {
-    "type", "packet_id", "target", "datagrams_sent", "host_time_utc", "host_ns", "error", "warning"};
-constexpr const char* kTruthKeys[] = {
-    "file", "rate_hz", "frames", "device_clock_at_time_zero_us", "mapping"};
+constexpr const char* kDisconnectKeys[] = {"host_time_utc", "host_ns", "message", "reconnected_host_time_utc",
+                                           "event",         "serial",  "slot"};
+constexpr const char* kPacketKeys[] = {"type",          "packet_id", "target", "datagrams_sent",
+                                       "host_time_utc", "host_ns",   "error",  "warning"};
+constexpr const char* kTruthKeys[] = {"file", "rate_hz", "frames", "device_clock_at_time_zero_us", "mapping"};
 
 template <size_t N>
 json unknown_keys(const json& j, const char* const (&known)[N]) {
@@ -42,7 +72,9 @@ json unknown_keys(const json& j, const char* const (&known)[N]) {
 }
 
 // Unknown keys first, so a known key always carries this version's value.
-json with_unknown(const json& unknown) { return unknown.is_object() ? unknown : json::object(); }
+json with_unknown(const json& unknown) {
+  return unknown.is_object() ? unknown : json::object();
+}
 
 std::int64_t int64_of(const JsonReader& r) {
   if (!r.json().is_number_integer()) r.fail("expected an integer");
@@ -283,8 +315,7 @@ bool is_recorder_sidecar(const json& j) {
 RecorderSidecar recorder_sidecar_from_json(const json& j, const std::string& source) {
   const JsonReader r(j, source);
   r.require_object();
-  if (r.string("format") != "lmc-session")
-    r.at("format").fail("not a recorder sidecar (expected \"lmc-session\")");
+  if (r.string("format") != "lmc-session") r.at("format").fail("not a recorder sidecar (expected \"lmc-session\")");
   RecorderSidecar s;
   get(r, "format_version", s.format_version);
   get(r, "trial", s.trial);

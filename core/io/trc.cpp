@@ -18,7 +18,9 @@ namespace {
 
 constexpr int kHeaderLines = 5;  // PathFileType, keys, values, marker names, X1 Y1 Z1 … (docs/formats.md)
 
-bool known_units(const std::string& units) { return units == "mm" || units == "m"; }
+bool known_units(const std::string& units) {
+  return units == "mm" || units == "m";
+}
 
 // Header line 2 (keys) and 3 (values) as key → value field, keeping each value's column.
 std::map<std::string, text::Field> header_values(const text::Line& keys, const text::Line& values,
@@ -32,8 +34,7 @@ std::map<std::string, text::Field> header_values(const text::Line& keys, const t
   for (size_t i = 0; i < k.size(); ++i) {
     const std::string key(text::trim(k[i].text));
     if (i >= v.size() || text::is_blank(v[i].text)) {
-      text::fail_at(source, values.number, i < v.size() ? v[i].column : 0,
-                    "no value for header key '" + key + "'");
+      text::fail_at(source, values.number, i < v.size() ? v[i].column : 0, "no value for header key '" + key + "'");
     }
     out[key] = text::Field{text::trim(v[i].text), v[i].column};
   }
@@ -65,9 +66,9 @@ void check_trc_first_line(std::string_view line, const std::string& source_name)
   std::vector<text::Field> fields;
   text::split_fields(line, '\t', fields);
   if (text::trim(fields[0].text) != "PathFileType") {
-    text::fail_at(source_name, 1, 1,
-                  "not a TRC file: the first line must start with 'PathFileType', found " +
-                      text::quoted_excerpt(fields[0].text));
+    text::fail_at(
+        source_name, 1, 1,
+        "not a TRC file: the first line must start with 'PathFileType', found " + text::quoted_excerpt(fields[0].text));
   }
 }
 
@@ -87,8 +88,8 @@ TrcData parse_trc_text(std::string_view content, const std::string& source_name)
   std::vector<text::Field> fields;
   if (lines.size() < static_cast<size_t>(kHeaderLines)) {
     text::fail_at(source_name, static_cast<long>(lines.size()), 0,
-                  "TRC header is incomplete: expected " + std::to_string(kHeaderLines) +
-                      " header lines, found " + std::to_string(lines.size()));
+                  "TRC header is incomplete: expected " + std::to_string(kHeaderLines) + " header lines, found " +
+                      std::to_string(lines.size()));
   }
 
   TrcData trc;
@@ -96,16 +97,14 @@ TrcData parse_trc_text(std::string_view content, const std::string& source_name)
   const auto header = header_values(lines[1], values_line, source_name);
   const auto require = [&](const char* key) -> const text::Field& {
     const auto it = header.find(key);
-    if (it == header.end())
-      text::fail_at(source_name, 2, 0, std::string("TRC header has no '") + key + "' key");
+    if (it == header.end()) text::fail_at(source_name, 2, 0, std::string("TRC header has no '") + key + "' key");
     return it->second;
   };
   const auto rate_of = [&](const text::Field& f, const char* key) {
     const auto v = text::parse_double(f.text);
     if (!v || !std::isfinite(*v) || *v <= 0.0) {
-      text::fail_at(
-          source_name, values_line.number, f.column,
-          std::string(key) + " must be a positive number, found " + text::quoted_excerpt(f.text));
+      text::fail_at(source_name, values_line.number, f.column,
+                    std::string(key) + " must be a positive number, found " + text::quoted_excerpt(f.text));
     }
     return *v;
   };
@@ -113,8 +112,7 @@ TrcData parse_trc_text(std::string_view content, const std::string& source_name)
     const auto v = text::parse_int(f.text);
     if (!v || *v < 0 || *v > std::numeric_limits<int>::max()) {
       text::fail_at(source_name, values_line.number, f.column,
-                    std::string(key) + " must be a non-negative integer, found " +
-                        text::quoted_excerpt(f.text));
+                    std::string(key) + " must be a non-negative integer, found " + text::quoted_excerpt(f.text));
     }
     return static_cast<int>(*v);
   };
@@ -140,15 +138,14 @@ TrcData parse_trc_text(std::string_view content, const std::string& source_name)
   text::split_fields(names_line.text, '\t', fields);
   if (fields.size() < 2 || text::normalise_name(fields[0].text) != "frame#" ||
       text::normalise_name(fields[1].text) != "time") {
-    text::fail_at(source_name, names_line.number, 1,
-                  "expected the column line 'Frame#<tab>Time<tab><markers…>'");
+    text::fail_at(source_name, names_line.number, 1, "expected the column line 'Frame#<tab>Time<tab><markers…>'");
   }
   for (size_t i = 2; i < fields.size(); ++i) {
     if (text::is_blank(fields[i].text)) continue;
     if ((i - 2) % 3 != 0) {
-      text::fail_at(source_name, names_line.number, fields[i].column,
-                    "marker name " + text::quoted_excerpt(fields[i].text) +
-                        " is not at the start of an X/Y/Z column triple");
+      text::fail_at(
+          source_name, names_line.number, fields[i].column,
+          "marker name " + text::quoted_excerpt(fields[i].text) + " is not at the start of an X/Y/Z column triple");
     }
     trc.marker_names.emplace_back(text::trim(fields[i].text));
   }
@@ -177,19 +174,17 @@ TrcData parse_trc_text(std::string_view content, const std::string& source_name)
     while (fields.size() > expected && text::is_blank(fields.back().text)) fields.pop_back();
     if (fields.size() != expected) {
       if (!line.has_newline && fields.size() < expected) {
-        trc.warnings.push_back(format_error(
-            ErrorLocation{source_name, line.number},
-            "last line is incomplete (no final newline, " + std::to_string(fields.size()) + " of " +
-                std::to_string(expected) + " fields); dropped it and kept the " +
-                std::to_string(trc.positions.size()) + " complete rows before it"));
+        trc.warnings.push_back(format_error(ErrorLocation{source_name, line.number},
+                                            "last line is incomplete (no final newline, " +
+                                                std::to_string(fields.size()) + " of " + std::to_string(expected) +
+                                                " fields); dropped it and kept the " +
+                                                std::to_string(trc.positions.size()) + " complete rows before it"));
         break;
       }
       text::fail_at(source_name, line.number,
-                    fields.size() > expected ? fields[expected].column
-                                             : static_cast<long>(line.text.size()) + 1,
-                    "row has " + std::to_string(fields.size()) + " fields; expected " +
-                        std::to_string(expected) + " (Frame#, Time and 3 per marker for " +
-                        std::to_string(markers) + " markers)");
+                    fields.size() > expected ? fields[expected].column : static_cast<long>(line.text.size()) + 1,
+                    "row has " + std::to_string(fields.size()) + " fields; expected " + std::to_string(expected) +
+                        " (Frame#, Time and 3 per marker for " + std::to_string(markers) + " markers)");
     }
     const auto frame = text::parse_int(fields[0].text);
     if (!frame)
@@ -213,7 +208,8 @@ TrcData parse_trc_text(std::string_view content, const std::string& source_name)
           continue;
         }
         const auto v = text::parse_double(cell.text);
-        const std::string what = "marker '" + trc.marker_names[static_cast<size_t>(m)] + "' " + static_cast<char>('X' + a);
+        const std::string what =
+            "marker '" + trc.marker_names[static_cast<size_t>(m)] + "' " + static_cast<char>('X' + a);
         if (!v)
           text::fail_at(source_name, line.number, cell.column,
                         what + " is not a number: " + text::quoted_excerpt(cell.text));
@@ -252,14 +248,14 @@ TrcData parse_trc_text(std::string_view content, const std::string& source_name)
                                             " rows; using the rows"));
   }
   if (partial_samples > 0) {
-    trc.warnings.push_back(format_error(ErrorLocation{source_name},
-                                        std::to_string(partial_samples) +
-                                            " marker sample(s) had only some of X/Y/Z; read as missing"));
+    trc.warnings.push_back(
+        format_error(ErrorLocation{source_name},
+                     std::to_string(partial_samples) + " marker sample(s) had only some of X/Y/Z; read as missing"));
   }
   if (zero_samples > 0) {
-    trc.warnings.push_back(format_error(ErrorLocation{source_name},
-                                        std::to_string(zero_samples) +
-                                            " marker sample(s) were 0,0,0 (an exporter's gap); read as missing"));
+    trc.warnings.push_back(format_error(
+        ErrorLocation{source_name},
+        std::to_string(zero_samples) + " marker sample(s) were 0,0,0 (an exporter's gap); read as missing"));
   }
   return trc;
 }
@@ -272,7 +268,8 @@ TrcData read_trc(const std::filesystem::path& path) {
 }
 
 void write_trc(std::ostream& out, const TrcData& trc, const std::string& path_field) {
-  if (!known_units(trc.units)) throw Error("cannot write TRC with unknown units '" + trc.units + "' (expected mm or m)");
+  if (!known_units(trc.units))
+    throw Error("cannot write TRC with unknown units '" + trc.units + "' (expected mm or m)");
   const int frames = trc.frame_count();
   const int markers = trc.marker_count();
   for (int f = 0; f < frames; ++f) {
@@ -308,8 +305,8 @@ void write_trc(std::ostream& out, const TrcData& trc, const std::string& path_fi
     s += std::to_string(number);
     s += '\t';
     // Time of frame f = (f − OrigDataStartFrame)/DataRate when the caller gave none (docs/formats.md).
-    text::append_double(s, have_times ? trc.times_s[static_cast<size_t>(f)]
-                                      : (number - trc.orig_data_start_frame) / trc.data_rate_hz);
+    text::append_double(
+        s, have_times ? trc.times_s[static_cast<size_t>(f)] : (number - trc.orig_data_start_frame) / trc.data_rate_hz);
     for (const auto& p : trc.positions[static_cast<size_t>(f)]) {
       for (int a = 0; a < 3; ++a) {
         s += '\t';

@@ -11,7 +11,8 @@ namespace lmc {
 ViconMapping vicon_mapping_from_json(const nlohmann::json& j, const std::string& source) {
   JsonReader root(j, source);
   root.require_object();
-  if (root.has("format") && root.at("format").integer() != 1) root.at("format").fail("unsupported mapping format (expected 1)");
+  if (root.has("format") && root.at("format").integer() != 1)
+    root.at("format").fail("unsupported mapping format (expected 1)");
   ViconMapping m;
   m.name = root.string_or("name", "");
   const JsonReader markers = root.at("markers");
@@ -40,7 +41,9 @@ ViconMapping load_vicon_mapping(const std::filesystem::path& path) {
   return vicon_mapping_from_json(read_json_file(path), path.string());
 }
 
-ViconMapping default_vicon_mapping() { return load_vicon_mapping(asset_path("mappings/vicon-26-to-lmc.json")); }
+ViconMapping default_vicon_mapping() {
+  return load_vicon_mapping(asset_path("mappings/vicon-26-to-lmc.json"));
+}
 
 namespace {
 
@@ -73,10 +76,11 @@ HandTrack apply_vicon_mapping(const ViconMapping& mapping, const MarkerSeries& m
                   "marker '" + mapping.markers[k] + "' needed by mapping '" + mapping.name + "' is not in the file");
     }
     bool any = false;
-    for (int f = 0; f < frames && !any; ++f) any = is_finite(markers.positions[static_cast<size_t>(f)][static_cast<size_t>(c)]);
+    for (int f = 0; f < frames && !any; ++f)
+      any = is_finite(markers.positions[static_cast<size_t>(f)][static_cast<size_t>(c)]);
     if (!any) {
-      throw Error(ErrorLocation(markers.source),
-                  "marker '" + mapping.markers[k] + "' is missing in every frame (" + std::to_string(frames) + " frames)");
+      throw Error(ErrorLocation(markers.source), "marker '" + mapping.markers[k] + "' is missing in every frame (" +
+                                                     std::to_string(frames) + " frames)");
     }
     column[k] = c;
   }

@@ -19,7 +19,8 @@ struct ViconMapping {
   std::string name;
   std::vector<std::string> markers;  // every marker the mapping uses
   // terms[point] = (marker index into `markers`, weight); empty → the point is zero.
-  std::vector<std::vector<std::pair<int, double>>> terms = std::vector<std::vector<std::pair<int, double>>>(kNumHandPoints);
+  std::vector<std::vector<std::pair<int, double>>> terms =
+      std::vector<std::vector<std::pair<int, double>>>(kNumHandPoints);
 };
 
 ViconMapping vicon_mapping_from_json(const nlohmann::json& j, const std::string& source);

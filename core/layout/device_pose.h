@@ -22,9 +22,7 @@ struct DevicePose {
   Eigen::Vector3d translation() const { return {x_mm, y_mm, z_mm}; }
   Eigen::Isometry3d device_to_world() const;
 
-  Eigen::Vector3d to_world(const Eigen::Vector3d& p_device) const {
-    return rotation() * p_device + translation();
-  }
+  Eigen::Vector3d to_world(const Eigen::Vector3d& p_device) const { return rotation() * p_device + translation(); }
   // The direction the controller looks at "forward" in world terms: R·(0, 0, −1), away from
   // the user (docs/algorithms/visibility.md).
   Eigen::Vector3d forward() const;

@@ -22,9 +22,7 @@ struct LayoutDevice {
   Eigen::Vector3d offset_mm = Eigen::Vector3d::Zero();
 
   // Device frame → world frame, offset included: p = R·p_d + t + offset.
-  Eigen::Vector3d to_world(const Eigen::Vector3d& p_device) const {
-    return pose.to_world(p_device) + offset_mm;
-  }
+  Eigen::Vector3d to_world(const Eigen::Vector3d& p_device) const { return pose.to_world(p_device) + offset_mm; }
 
   bool operator==(const LayoutDevice&) const = default;
 };

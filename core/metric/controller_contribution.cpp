@@ -83,8 +83,7 @@ std::vector<ControllerContribution> controller_contributions(const VisibilityTab
       const Without inside_without = coverage_without(*inside_cut, d, subset, tally.frames);
       c.metric_inside_cut_without = inside_without.metric;
       c.redundant_inside_cut_without = inside_without.redundant;
-      c.counts_inside_cut =
-          inside_without.metric > inside_all.metric || inside_without.redundant < s2_inside_all;
+      c.counts_inside_cut = inside_without.metric > inside_all.metric || inside_without.redundant < s2_inside_all;
     }
     out.push_back(c);
   }

@@ -14,11 +14,11 @@ namespace lmc {
 
 struct ControllerContribution {
   std::string slot;
-  double seeing_share = 0;     // frames in which it sees ≥ 1 finger
-  double sole_share = 0;       // frames in which it alone sees some finger
-  double cut_share = 0;        // of its seeing frames, those with a seen marker beyond the axis cut
-  double off_centre = 0;       // mean off-centre of the palm in its pyramid over its seeing frames
-  double metric_without = 0;   // M of the layout without it
+  double seeing_share = 0;       // frames in which it sees ≥ 1 finger
+  double sole_share = 0;         // frames in which it alone sees some finger
+  double cut_share = 0;          // of its seeing frames, those with a seen marker beyond the axis cut
+  double off_centre = 0;         // mean off-centre of the palm in its pyramid over its seeing frames
+  double metric_without = 0;     // M of the layout without it
   double redundant_without = 0;  // share of frames with every finger seen by ≥ 2 controllers, without it
   // The layout is measurably worse without it: M rises or the ≥ 2 share falls.
   bool counts = false;

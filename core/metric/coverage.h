@@ -55,7 +55,8 @@ OrientationCoverage coverage_by_orientation(const VisibilityTable& table, std::s
 inline constexpr std::array<std::uint64_t, 32> kFingerBytes = [] {
   std::array<std::uint64_t, 32> t{};
   for (unsigned b = 0; b < 32; ++b) {
-    for (unsigned k = 0; k < static_cast<unsigned>(kNumDigits); ++k) t[b] |= static_cast<std::uint64_t>((b >> k) & 1u) << (8 * k);
+    for (unsigned k = 0; k < static_cast<unsigned>(kNumDigits); ++k)
+      t[b] |= static_cast<std::uint64_t>((b >> k) & 1u) << (8 * k);
   }
   return t;
 }();

@@ -27,7 +27,8 @@ VisibilityWithCut visibility_with_inside_cut(const Layout& layout, std::span<con
     std::vector<FingerBits> cut(r.size());
     for (size_t d = 0; d < views.size(); ++d) {
       const std::span<FingerBits> seen = std::span<FingerBits>(t.seen.bits).subspan(d * n + r.begin(), r.size());
-      const std::span<FingerBits> inside = std::span<FingerBits>(t.inside_cut.bits).subspan(d * n + r.begin(), r.size());
+      const std::span<FingerBits> inside =
+          std::span<FingerBits>(t.inside_cut.bits).subspan(d * n + r.begin(), r.size());
       device_visibility_with_cut(views[d], run, limits, axis_cut_mm, seen, cut);
       for (size_t j = 0; j < r.size(); ++j) inside[j] = static_cast<FingerBits>(seen[j] & ~cut[j]);
     }

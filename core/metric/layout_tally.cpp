@@ -154,7 +154,8 @@ void tally_frames(std::span<const PreparedFrame> frames, std::span<const DeviceV
         cut_frames += (b[j] & c[j]) != 0;
       }
       for (size_t j = 0; j < m; ++j) {
-        if (b[j] != 0) off_centre += round_millionths(off_centre_penalty(frames[b0 + j], views[d], limits) * kOffCentreScale);
+        if (b[j] != 0)
+          off_centre += round_millionths(off_centre_penalty(frames[b0 + j], views[d], limits) * kOffCentreScale);
       }
       t.device_seeing_frames[d] += seeing_frames;
       t.device_sole_frames[d] += sole_frames;

@@ -30,7 +30,7 @@ inline constexpr double kOffCentreScale = 1e6;
 struct LayoutTally {
   int devices = 0;
   std::int64_t frames = 0;
-  std::vector<std::int64_t> c;                     // devices + 1: as Coverage::c (the study's histogram)
+  std::vector<std::int64_t> c;  // devices + 1: as Coverage::c (the study's histogram)
   // The same histogram when a finger with a marker beyond a controller's axis cut counts as unseen
   // by that controller: it reports the cut value instead of the marker, so it cannot measure that
   // finger (the fusion down-weights such points too, fusion_smoother.h).

@@ -9,7 +9,8 @@
 
 namespace lmc {
 
-std::shared_ptr<PlacementHeatmap> sweep_placement_heatmap(const Layout& layout, std::span<const PreparedFrame> all_frames,
+std::shared_ptr<PlacementHeatmap> sweep_placement_heatmap(const Layout& layout,
+                                                          std::span<const PreparedFrame> all_frames,
                                                           const HeatmapSpec& spec, std::stop_token stop,
                                                           const std::function<void(int)>& row_done,
                                                           std::span<const int> frame_subset) {

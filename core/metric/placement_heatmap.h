@@ -23,13 +23,13 @@ enum class HeatmapMode : int {
 };
 
 struct PlacementHeatmap {
-  int nx = 0, nz = 0;                // cells along x and z
+  int nx = 0, nz = 0;  // cells along x and z
   double x_lo_mm = -400, x_hi_mm = 400;
   double z_lo_mm = -400, z_hi_mm = 400;
-  std::vector<float> value;          // nx·nz, row-major by z then x; in [0, 1]
-  double data_min = 0, data_max = 0; // over the finite cells
-  int device = -1;                   // layout index of the controller that was swept
-  int finger = -1;                   // 0 thumb … 4 pinky, −1 all five
+  std::vector<float> value;           // nx·nz, row-major by z then x; in [0, 1]
+  double data_min = 0, data_max = 0;  // over the finite cells
+  int device = -1;                    // layout index of the controller that was swept
+  int finger = -1;                    // 0 thumb … 4 pinky, −1 all five
   HeatmapMode mode = HeatmapMode::kShareVisible;
 
   float at(int ix, int iz) const { return value[static_cast<size_t>(iz * nx + ix)]; }
@@ -41,7 +41,7 @@ struct HeatmapSpec {
   int device = 0;
   int finger = -1;  // 0 thumb … 4 pinky, −1 all five
   HeatmapMode mode = HeatmapMode::kShareVisible;
-  int cells = 48;   // per side
+  int cells = 48;  // per side
   double half_extent_mm = 400;
 };
 

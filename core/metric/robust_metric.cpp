@@ -66,7 +66,9 @@ PlacementMetricKind placement_metric_from_name(const std::string& name, const st
   throw Error(what + ": unknown metric \"" + name + "\" (study or robust)");
 }
 
-std::array<Eigen::Vector2d, 4> controller_footprint(const LayoutDevice& d) { return footprint_of(d); }
+std::array<Eigen::Vector2d, 4> controller_footprint(const LayoutDevice& d) {
+  return footprint_of(d);
+}
 
 bool footprints_overlap(const LayoutDevice& a, const LayoutDevice& b) {
   return footprint_quads_overlap(footprint_of(a), footprint_of(b));

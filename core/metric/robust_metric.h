@@ -47,9 +47,9 @@ struct RobustWeights {
   double participation = 1.0;  // a parked controller costs 0.25 (with four): more than any M
   double axis_cut = 0.2;
   double centring = 0.01;
-  double footprint = 1.0;      // overlapping controllers cannot be built: nearly a constraint
+  double footprint = 1.0;            // overlapping controllers cannot be built: nearly a constraint
   double participation_floor = 0.2;  // a controller should see some finger in at least this share of frames
-  double inside_cut = 1.0;     // M_cut: as much as M (last: positional initialisers stay valid)
+  double inside_cut = 1.0;           // M_cut: as much as M (last: positional initialisers stay valid)
   bool operator==(const RobustWeights&) const = default;
   // Every term off (R = M exactly); the participation floor as by default.
   static RobustWeights all_off() { return {0, 0, 0, 0, 0, 0.2, 0}; }
@@ -57,21 +57,21 @@ struct RobustWeights {
 
 // The raw value of each term and the total.
 struct RobustTerms {
-  double metric_m = 0;        // the study's M
-  double redundancy = 0;      // 1 − S2
-  double participation = 0;   // P
-  double axis_cut = 0;        // A
-  double centring = 0;        // C
-  double footprint = 0;       // F
+  double metric_m = 0;             // the study's M
+  double redundancy = 0;           // 1 − S2
+  double participation = 0;        // P
+  double axis_cut = 0;             // A
+  double centring = 0;             // C
+  double footprint = 0;            // F
   double metric_m_inside_cut = 0;  // M_cut
-  double total = 0;           // R
+  double total = 0;                // R
 };
 
 // Every term in the order R adds them, for every report of them (text, JSON, the layout report).
 struct RobustTermInfo {
-  const char* key;        // JSON key and --w-<key with dashes> option
-  const char* name;       // short, for tables
-  const char* meaning;    // one line
+  const char* key;                // JSON key and --w-<key with dashes> option
+  const char* name;               // short, for tables
+  const char* meaning;            // one line
   double RobustWeights::*weight;  // null for M, whose weight is 1
   double RobustTerms::*value;
 };

@@ -12,8 +12,8 @@ namespace lmc {
 
 std::string format_robust_terms(const RobustTerms& terms, const RobustWeights& weights);
 // One row per term, one column per split (e.g. all / horizontal / vertical poses).
-std::string format_robust_terms_split(const std::vector<std::string>& split_names, const std::vector<RobustTerms>& splits,
-                                      const RobustWeights& weights);
+std::string format_robust_terms_split(const std::vector<std::string>& split_names,
+                                      const std::vector<RobustTerms>& splits, const RobustWeights& weights);
 nlohmann::json robust_terms_to_json(const RobustTerms& terms, const RobustWeights& weights);
 
 }  // namespace lmc

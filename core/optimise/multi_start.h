@@ -15,18 +15,18 @@
 namespace lmc {
 
 struct MultiStartProgress {
-  int start = 0;   // the start running (0-based)
-  int starts = 0;  // planned
-  PsoProgress pso; // that start's progress
+  int start = 0;    // the start running (0-based)
+  int starts = 0;   // planned
+  PsoProgress pso;  // that start's progress
 };
 using MultiStartProgressCallback = std::function<void(const MultiStartProgress&)>;
 
 struct MultiStartResult {
   JobStatus status = JobStatus::kCompleted;
-  std::vector<PsoResult> runs;    // one per finished start, in start order
+  std::vector<PsoResult> runs;  // one per finished start, in start order
   std::vector<std::uint64_t> seeds;
-  int best = -1;                  // index into runs (lowest cost; ties: the earlier start)
-  std::vector<int> runners_up;    // indices into runs, by cost, each distinct from the best and from each other
+  int best = -1;                // index into runs (lowest cost; ties: the earlier start)
+  std::vector<int> runners_up;  // indices into runs, by cost, each distinct from the best and from each other
   double seconds = 0;
 };
 

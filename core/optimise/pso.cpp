@@ -20,7 +20,9 @@
 namespace lmc {
 namespace {
 
-double uniform01(std::mt19937_64& rng) { return static_cast<double>(rng() >> 11) * 0x1.0p-53; }
+double uniform01(std::mt19937_64& rng) {
+  return static_cast<double>(rng() >> 11) * 0x1.0p-53;
+}
 
 }  // namespace
 
@@ -117,8 +119,8 @@ PsoResult run_pso(const Layout& start, const SearchSpace& space, std::span<const
   auto report = [&](int iteration) {
     result.best_cost_history.push_back(gbest_cost);
     if (progress) {
-      PsoProgress p{iteration, s.iterations, gbest_cost, result.layout_evaluations,
-                    result.device_frame_evaluations, {}};
+      PsoProgress p{iteration, s.iterations, gbest_cost, result.layout_evaluations, result.device_frame_evaluations,
+                    {}};
       if (std::isfinite(gbest_cost)) p.best_layout = layout_of(gbest.data());
       progress(p);
     }
@@ -170,7 +172,8 @@ PsoResult run_pso(const Layout& start, const SearchSpace& space, std::span<const
     arena->execute([&] { table = compute_visibility(result.best_layout, frames, s.phalanx_radius_mm); });
     result.best_coverage = compute_coverage(table);
     arena->execute([&] {
-      result.best_terms = layout_robust_terms(result.best_layout, frames, s.weights, s.phalanx_radius_mm, s.axis_cut_mm);
+      result.best_terms =
+          layout_robust_terms(result.best_layout, frames, s.weights, s.phalanx_radius_mm, s.axis_cut_mm);
     });
   }
   result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
@@ -188,12 +191,14 @@ double layout_cost(const Layout& layout, std::span<const PreparedFrame> frames, 
   return placement_metric(counts);
 }
 
-RobustTerms layout_robust_terms(const Layout& layout, std::span<const PreparedFrame> frames, const RobustWeights& weights,
-                                double phalanx_radius_mm, double axis_cut_mm, std::span<const int> frame_subset) {
+RobustTerms layout_robust_terms(const Layout& layout, std::span<const PreparedFrame> frames,
+                                const RobustWeights& weights, double phalanx_radius_mm, double axis_cut_mm,
+                                std::span<const int> frame_subset) {
   std::vector<DeviceView> views;
   for (const auto& d : layout.devices) views.push_back(DeviceView::from_device(d));
-  const LayoutTally t = tally_layout(views, frames, make_limits(VisibilityParams::from_sensor(layout.sensor, phalanx_radius_mm)),
-                                     axis_cut_mm, frame_subset);
+  const LayoutTally t =
+      tally_layout(views, frames, make_limits(VisibilityParams::from_sensor(layout.sensor, phalanx_radius_mm)),
+                   axis_cut_mm, frame_subset);
   return robust_terms(t, footprint_overlap_share(layout), weights);
 }
 

@@ -59,27 +59,27 @@ struct PsoSettings {
 enum class JobStatus : int { kCompleted = 0, kCancelled = 1 };
 
 struct PsoProgress {
-  int iteration = 0;    // iterations finished (0 = the initial swarm has been evaluated)
-  int iterations = 0;   // planned
+  int iteration = 0;   // iterations finished (0 = the initial swarm has been evaluated)
+  int iterations = 0;  // planned
   double best_cost = 0;
   std::int64_t layout_evaluations = 0;        // particles evaluated so far
   std::int64_t device_frame_evaluations = 0;  // (device, frame) visibility tests so far
-  Layout best_layout;  // the best layout so far (the workbench draws it as ghost controllers)
+  Layout best_layout;                         // the best layout so far (the workbench draws it as ghost controllers)
 };
 using PsoProgressCallback = std::function<void(const PsoProgress&)>;
 
 struct PsoResult {
   JobStatus status = JobStatus::kCompleted;
   Layout best_layout;
-  double best_cost = 0;              // M or R, as `metric` says
+  double best_cost = 0;  // M or R, as `metric` says
   PlacementMetricKind metric = PlacementMetricKind::kStudy;
-  Coverage best_coverage;            // of best_layout on the pose set
-  RobustTerms best_terms;            // every term of the robust metric for best_layout (also after a study search)
+  Coverage best_coverage;                 // of best_layout on the pose set
+  RobustTerms best_terms;                 // every term of the robust metric for best_layout (also after a study search)
   std::vector<double> best_cost_history;  // best cost after the initial swarm and each iteration
   int iterations_done = 0;
   std::int64_t layout_evaluations = 0;
   std::int64_t device_frame_evaluations = 0;  // (device, frame) visibility tests actually run
-  std::int64_t layouts_stopped_early = 0;            // layout evaluations stopped early by the bound
+  std::int64_t layouts_stopped_early = 0;     // layout evaluations stopped early by the bound
   double seconds = 0;
 };
 
@@ -87,8 +87,7 @@ struct PsoResult {
 // sensor model are kept) on `frames`. The sensor model of `start` sets range and field of view.
 // Throws lmc::Error for an invalid search space, start layout or settings.
 PsoResult run_pso(const Layout& start, const SearchSpace& space, std::span<const PreparedFrame> frames,
-                  const PsoSettings& settings, const PsoProgressCallback& progress = {},
-                  std::stop_token stop = {});
+                  const PsoSettings& settings, const PsoProgressCallback& progress = {}, std::stop_token stop = {});
 
 // The cost (M) of one layout on prepared frames; the building block of run_pso, exposed for tests
 // and benchmarks. Uses oneTBB over frames.

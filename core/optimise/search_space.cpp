@@ -43,7 +43,8 @@ std::vector<std::pair<int, int>> SearchSpace::dimensions(int devices) const {
 std::string SearchSpace::validate() const {
   for (int k = 0; k < kNumPoseParams; ++k) {
     const auto& b = bounds[static_cast<size_t>(k)];
-    if (!std::isfinite(b.min) || !std::isfinite(b.max)) return std::string("bounds for ") + pose_param_name(k) + ": not finite";
+    if (!std::isfinite(b.min) || !std::isfinite(b.max))
+      return std::string("bounds for ") + pose_param_name(k) + ": not finite";
     if (b.min > b.max) return std::string("bounds for ") + pose_param_name(k) + ": min > max";
     const double limit = k < 3 ? 10000.0 : 360.0;
     if (std::abs(b.min) > limit || std::abs(b.max) > limit) {
@@ -92,7 +93,8 @@ SearchSpace parse_search_bounds(const std::string& spec) {
     const double lo = number(part.substr(eq + 1, colon - eq - 1));
     const double hi = number(part.substr(colon + 1));
     if (lo > hi) {
-      throw Error(ErrorLocation("--bounds", 0, static_cast<long>(start + 1)), "\"" + part + "\": min is greater than max");
+      throw Error(ErrorLocation("--bounds", 0, static_cast<long>(start + 1)),
+                  "\"" + part + "\": min is greater than max");
     }
     space.free[static_cast<size_t>(k)] = true;
     space.bounds[static_cast<size_t>(k)] = {lo, hi};

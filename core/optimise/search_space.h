@@ -25,7 +25,7 @@ struct SearchSpace {
   // (y and rz: [0, 0] unless freed).
   std::array<ParamBounds, kNumPoseParams> bounds{ParamBounds{-1000, 1000}, ParamBounds{0, 0},
                                                  ParamBounds{-1000, 1000}, ParamBounds{-90, 90},
-                                                 ParamBounds{-180, 180}, ParamBounds{-180, 180}};
+                                                 ParamBounds{-180, 180},   ParamBounds{-180, 180}};
   // locked[d][k]: parameter k of device d stays at the start layout's value. Devices beyond the
   // vector's size are unlocked.
   std::vector<std::array<bool, kNumPoseParams>> locked;

@@ -50,7 +50,8 @@ bool worst_finger_histograms(std::span<const DeviceView> views, int layouts, int
   }
   check_runs(runs, frames.size(), "worst_finger_histograms");
   const size_t hist_size = counts.size();
-  tbb::enumerable_thread_specific<std::vector<std::int64_t>> local([&] { return std::vector<std::int64_t>(hist_size, 0); });
+  tbb::enumerable_thread_specific<std::vector<std::int64_t>> local(
+      [&] { return std::vector<std::int64_t>(hist_size, 0); });
   const auto nd = static_cast<size_t>(devices);
   tbb::parallel_for(tbb::blocked_range<size_t>(0, runs.size(), 1), [&](const tbb::blocked_range<size_t>& rr) {
     if (stop.stop_requested()) return;
@@ -99,7 +100,8 @@ bool layout_tallies(std::span<const DeviceView> views, int layouts, int devices,
   }
   check_runs(runs, frames.size(), "layout_tallies");
   using Tallies = std::vector<LayoutTally>;
-  tbb::enumerable_thread_specific<Tallies> local([&] { return Tallies(static_cast<size_t>(layouts), LayoutTally(devices)); });
+  tbb::enumerable_thread_specific<Tallies> local(
+      [&] { return Tallies(static_cast<size_t>(layouts), LayoutTally(devices)); });
   const auto nd = static_cast<size_t>(devices);
   tbb::parallel_for(tbb::blocked_range<size_t>(0, runs.size(), 1), [&](const tbb::blocked_range<size_t>& rr) {
     if (stop.stop_requested()) return;

@@ -37,8 +37,7 @@ bool worst_finger_histograms(std::span<const DeviceView> views, int layouts, int
 // The same on some runs of `frames` only (the pruned search evaluates a pose set in rounds).
 bool worst_finger_histograms(std::span<const DeviceView> views, int layouts, int devices,
                              std::span<const PreparedFrame> frames, std::span<const FrameRun> runs,
-                             const VisibilityLimits& limits, std::span<std::int64_t> counts,
-                             std::stop_token stop = {});
+                             const VisibilityLimits& limits, std::span<std::int64_t> counts, std::stop_token stop = {});
 
 // The robust metric's inner loop: the full tally of each layout (layout_tally.h) instead of the
 // histogram alone. `tallies` holds `layouts` entries, each made for `devices` devices. Exact for

@@ -53,7 +53,7 @@ std::optional<fs::path> find_vicon(const fs::path& dir, const std::string& trial
 }  // namespace
 
 std::vector<TrialSources> discover_trials(const fs::path& input, const std::optional<fs::path>& vicon,
-                                      std::vector<std::string>* notes) {
+                                          std::vector<std::string>* notes) {
   std::vector<TrialSources> jobs;
   if (!fs::exists(input)) throw Error(ErrorLocation(input.string()), "no such file or folder");
   if (!fs::is_directory(input)) {
@@ -86,7 +86,8 @@ std::vector<TrialSources> discover_trials(const fs::path& input, const std::opti
     const int rank = lmc_rank(name);
     auto it = best.find(trial);
     if (it == best.end() || rank < it->second.first) {
-      if (it != best.end() && notes != nullptr) notes->push_back(trial + ": using " + name + " instead of " + it->second.second.filename().string());
+      if (it != best.end() && notes != nullptr)
+        notes->push_back(trial + ": using " + name + " instead of " + it->second.second.filename().string());
       best[trial] = {rank, p};
     } else if (notes != nullptr) {
       notes->push_back(trial + ": using " + it->second.second.filename().string() + ", ignoring " + name);
@@ -157,14 +158,15 @@ ProcessedTrial process_sources(const TrialSources& job, const BatchOptions& opti
     if (job.vicon) {
       const MarkerSeries markers = load_vicon_markers(*job.vicon);
       if (std::abs(markers.rate_hz - 100.0) > 0.5) {
-        throw Error(ErrorLocation(job.vicon->string()),
-                    "Vicon rate is " + format_fixed(markers.rate_hz, 2) + " Hz; processing expects 100 Hz like the LMC grid");
+        throw Error(ErrorLocation(job.vicon->string()), "Vicon rate is " + format_fixed(markers.rate_hz, 2) +
+                                                            " Hz; processing expects 100 Hz like the LMC grid");
       }
       vicon_track = apply_vicon_mapping(mapping, markers);
       if (vicon_track.frame_count < options.process.min_vicon_seconds * 100.0) {
         throw Error(ErrorLocation(job.vicon->string()),
                     "only " + std::to_string(vicon_track.frame_count) + " frames (" +
-                        format_fixed(vicon_track.frame_count / 100.0, 2) + " s at 100 Hz); a trial's Vicon capture must last at least " +
+                        format_fixed(vicon_track.frame_count / 100.0, 2) +
+                        " s at 100 Hz); a trial's Vicon capture must last at least " +
                         format_fixed(options.process.min_vicon_seconds, 1) + " s");
       }
       vicon = &vicon_track;
@@ -192,7 +194,8 @@ ProcessedTrial process_sources(const TrialSources& job, const BatchOptions& opti
     if (options.on_result) options.on_result(r);
     if (options.compare_methods && vicon != nullptr) {
       ProcessOptions other = popt;
-      other.method = options.process.method == FusionMethod::kReference ? FusionMethod::kDefault : FusionMethod::kReference;
+      other.method =
+          options.process.method == FusionMethod::kReference ? FusionMethod::kDefault : FusionMethod::kReference;
       const TrialResult r2 = process_trial(job.trial, rec, layout, vicon, other);
       MethodErrors mine = trial_errors(r, &r2);
       MethodErrors theirs = trial_errors(r2, &r);

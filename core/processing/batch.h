@@ -33,8 +33,9 @@ struct TrialSources {
 
 // `input` is an LMC file or a folder. `vicon` (optional) is a Vicon file (single trial) or a
 // folder to look in. Notes: files that look like trials but were skipped, and why.
-std::vector<TrialSources> discover_trials(const std::filesystem::path& input, const std::optional<std::filesystem::path>& vicon,
-                                      std::vector<std::string>* notes = nullptr);
+std::vector<TrialSources> discover_trials(const std::filesystem::path& input,
+                                          const std::optional<std::filesystem::path>& vicon,
+                                          std::vector<std::string>* notes = nullptr);
 
 // Vicon markers from .trc or .c3d, in mm; throws lmc::Error naming the file.
 MarkerSeries load_vicon_markers(const std::filesystem::path& path);
@@ -47,7 +48,7 @@ struct BatchOptions {
   // it must be thread-safe): `lmc process` writes the trial's files there (core/results), which
   // processing itself knows nothing of.
   std::function<void(const TrialResult&)> on_result;
-  bool compare_methods = false;       // also run the other method and collect errors vs truth
+  bool compare_methods = false;  // also run the other method and collect errors vs truth
   // The workbench runs a batch on a worker thread: once `stop` is requested, trials not yet
   // started are left out (outcome "cancelled"); the ones running finish (a trial takes well under a
   // second). `on_progress(done, total)` is called after each trial, from the worker threads.
@@ -58,14 +59,14 @@ struct BatchOptions {
 struct ProcessedTrial {
   std::string trial;
   bool ok = false;
-  std::string error;                  // when !ok
+  std::string error;  // when !ok
   std::vector<std::string> warnings;
-  nlohmann::json summary;             // trial_summary_json (ok only)
+  nlohmann::json summary;  // trial_summary_json (ok only)
   std::string layout_used;
   bool has_vicon = false;
   // compare_methods: errors of both methods against Vicon/truth.
   MethodErrors reference_errors, default_errors;
-  bool cancelled = false;             // left out because the batch was stopped (ok is false)
+  bool cancelled = false;  // left out because the batch was stopped (ok is false)
 };
 
 // The layout for a trial: explicit name/path; else the sidecar's; else paper-initial for "Naiv"
@@ -77,7 +78,8 @@ ProcessedTrial process_sources(const TrialSources& job, const BatchOptions& opti
 // One trial with every intermediate kept (the Review tab's trial view, `lmc figures --trial`):
 // process_sources with options.mapping (or the default mapping) and without the method comparison.
 // `outcome` (optional) receives the summary and warnings. Throws lmc::Error naming the trial.
-TrialResult process_sources_in_full(const TrialSources& job, const BatchOptions& options, ProcessedTrial* outcome = nullptr);
+TrialResult process_sources_in_full(const TrialSources& job, const BatchOptions& options,
+                                    ProcessedTrial* outcome = nullptr);
 std::vector<ProcessedTrial> process_batch(const std::vector<TrialSources>& jobs, const BatchOptions& options);
 
 }  // namespace lmc

@@ -41,7 +41,8 @@ LagEstimate estimate_lag(const HandTrack& lmc, const HandTrack& vicon, int max_l
     if (count < min_overlap || saa <= 0.0 || sbb <= 0.0) continue;
     const double corr = sab / std::sqrt(saa * sbb);
     // Ties go to the smallest |lag| (scanning order would favour negative lags).
-    if (corr > best_corr + 1e-12 || (std::abs(corr - best_corr) <= 1e-12 && std::abs(lag) < std::abs(best.lag_frames))) {
+    if (corr > best_corr + 1e-12 ||
+        (std::abs(corr - best_corr) <= 1e-12 && std::abs(lag) < std::abs(best.lag_frames))) {
       best_corr = corr;
       best.lag_frames = lag;
       best.correlation = corr;
@@ -79,10 +80,10 @@ Comparison compare_measures(const std::vector<FrameMeasures>& lmc, const Measure
   Comparison c;
   const size_t frames = std::min(lmc.size(), vicon.size());
   c.frames = static_cast<int>(frames);
-  diff_stats<kNumFingers>(lmc, vicon, frames, [](const FrameMeasures& m) { return m.finger_mm; }, c.finger_diff_mean,
-                          c.finger_diff_sd);
-  diff_stats<kNumAngles>(lmc, vicon, frames, [](const FrameMeasures& m) { return m.angle_deg; }, c.angle_diff_mean,
-                         c.angle_diff_sd);
+  diff_stats<kNumFingers>(
+      lmc, vicon, frames, [](const FrameMeasures& m) { return m.finger_mm; }, c.finger_diff_mean, c.finger_diff_sd);
+  diff_stats<kNumAngles>(
+      lmc, vicon, frames, [](const FrameMeasures& m) { return m.angle_deg; }, c.angle_diff_mean, c.angle_diff_sd);
   for (size_t k = 0; k < kNumFingers; ++k) c.finger_mean_diff[k] = ls.finger_mean[k] - vs.finger_mean[k];
   for (size_t k = 0; k < kNumAngles; ++k) c.rom_diff[k] = ls.angle_rom[k] - vs.angle_rom[k];
   return c;

@@ -22,8 +22,8 @@ bool device_sees(const std::vector<std::vector<FingerLabels>>& labels, size_t d,
 // Trial means over the frames a device sees `finger`; `length(track, frame)` measures one frame.
 template <typename Length>
 LengthConsensus length_consensus(const std::vector<DeviceTrack>& devices,
-                                 const std::vector<std::vector<FingerLabels>>& labels, const HandTrack& fused, int finger,
-                                 int min_seen, Length length) {
+                                 const std::vector<std::vector<FingerLabels>>& labels, const HandTrack& fused,
+                                 int finger, int min_seen, Length length) {
   LengthConsensus c;
   c.device_mean.assign(devices.size(), kNaN);
   std::vector<bool> counts(devices.size(), false);
@@ -85,8 +85,9 @@ ConsensusReport consensus_report(const std::vector<DeviceTrack>& devices,
       return sum;
     });
     for (const int s : fc.segments) {
-      fc.segment.push_back(length_consensus(devices, labels, fused, finger, min_seen_frames,
-                                            [s](const HandTrack& t, int f) { return consensus_segment_length(t, f, s); }));
+      fc.segment.push_back(
+          length_consensus(devices, labels, fused, finger, min_seen_frames,
+                           [s](const HandTrack& t, int f) { return consensus_segment_length(t, f, s); }));
     }
     // The finger's points, each once.
     std::set<int> points;

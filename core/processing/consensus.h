@@ -20,19 +20,19 @@
 namespace lmc {
 
 struct LengthConsensus {
-  std::vector<double> device_mean;   // per device (NaN where the device never sees the finger)
-  double median = kNaN;              // of the seeing devices' means
+  std::vector<double> device_mean;  // per device (NaN where the device never sees the finger)
+  double median = kNaN;             // of the seeing devices' means
   double shortest = kNaN, longest = kNaN;
-  double fused = kNaN;               // the fused trial mean on the frames some device sees the finger
+  double fused = kNaN;  // the fused trial mean on the frames some device sees the finger
   int seeing_devices = 0;
   double fused_minus_median() const { return fused - median; }
 };
 
 struct FingerConsensus {
   LengthConsensus finger;
-  std::vector<int> segments;                // segment indices of this finger (finger_segments)
-  std::vector<LengthConsensus> segment;     // one per entry of `segments`
-  double point_distance_mm = kNaN;          // mean distance fused point ↔ seeing device's point
+  std::vector<int> segments;             // segment indices of this finger (finger_segments)
+  std::vector<LengthConsensus> segment;  // one per entry of `segments`
+  double point_distance_mm = kNaN;       // mean distance fused point ↔ seeing device's point
 };
 
 struct ConsensusReport {

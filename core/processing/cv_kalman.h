@@ -6,7 +6,7 @@
 namespace lmc {
 
 struct CvKalman {
-  double x0 = 0, x1 = 0;           // position, velocity
+  double x0 = 0, x1 = 0;             // position, velocity
   double p00 = 0, p01 = 0, p11 = 0;  // covariance
 
   // Starts at a first measurement z with variance r, at rest; the velocity spread is wide

@@ -13,8 +13,8 @@ constexpr int length_lane(int digit, int from) {
 
 }  // namespace fusion_lanes_detail
 
-void hand_to_lanes(std::span<const Vec3, kNumHandPoints> p, std::span<const float, kNumHandPoints> factors, double base_var,
-                   std::span<double, kFusionLanes> value, std::span<double, kFusionLanes> variance) {
+void hand_to_lanes(std::span<const Vec3, kNumHandPoints> p, std::span<const float, kNumHandPoints> factors,
+                   double base_var, std::span<double, kFusionLanes> value, std::span<double, kFusionLanes> variance) {
   using namespace fusion_lanes_detail;
   const auto factor = [&](int i) { return static_cast<double>(factors[static_cast<size_t>(i)]); };
   for (int i = 0; i < kNumHandPoints; ++i) {
@@ -40,7 +40,8 @@ void lanes_to_hand(std::span<const double, kFusionLanes> x, std::span<Vec3, kNum
   };
   for (int i = 0; i < kFirstDigitPoint; ++i) points[static_cast<size_t>(i)] = fused_point(i);
   for (int dg = 0; dg < kNumDigits; ++dg) {
-    for (int j = 0; j <= kRebuiltFromJoint; ++j) points[static_cast<size_t>(digit_point(dg, j))] = fused_point(digit_point(dg, j));
+    for (int j = 0; j <= kRebuiltFromJoint; ++j)
+      points[static_cast<size_t>(digit_point(dg, j))] = fused_point(digit_point(dg, j));
     Vec3 at = fused_point(digit_point(dg, kRebuiltFromJoint));
     for (int j = kRebuiltFromJoint; j + 1 < kJointsPerDigit; ++j) {
       const Vec3 along = fused_point(digit_point(dg, j + 1)) - fused_point(digit_point(dg, j));

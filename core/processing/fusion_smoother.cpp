@@ -10,7 +10,9 @@ namespace lmc {
 namespace {
 
 // Which finger a hand point belongs to (−1: palm, vectors, elbow, wrist).
-int point_finger(int i) { return i >= kFirstDigitPoint ? (i - kFirstDigitPoint) / kJointsPerDigit : -1; }
+int point_finger(int i) {
+  return i >= kFirstDigitPoint ? (i - kFirstDigitPoint) / kJointsPerDigit : -1;
+}
 
 }  // namespace
 
@@ -62,7 +64,8 @@ void frame_quality(std::span<const Vec3, kNumHandPoints> v, const FingerLabels* 
   }
 }
 
-std::vector<float> sample_quality(const HandTrack& t, const std::vector<FingerLabels>& labels, const SmootherParams& p) {
+std::vector<float> sample_quality(const HandTrack& t, const std::vector<FingerLabels>& labels,
+                                  const SmootherParams& p) {
   std::vector<float> q(static_cast<size_t>(t.frame_count) * kNumHandPoints, 1.0f);
   for (int f = 0; f < t.frame_count; ++f) {
     const size_t base = static_cast<size_t>(f) * kNumHandPoints;
@@ -140,7 +143,8 @@ void smooth_lane(std::vector<Step>& st, std::vector<int>& since, const SmootherP
   }
   // A stretch is NaN when its full length (not just the part so far) exceeds the limit.
   for (int f = last; f >= first; --f) {
-    if (since[static_cast<size_t>(f)] > 0 && f + 1 <= last && since[static_cast<size_t>(f + 1)] > since[static_cast<size_t>(f)]) {
+    if (since[static_cast<size_t>(f)] > 0 && f + 1 <= last &&
+        since[static_cast<size_t>(f + 1)] > since[static_cast<size_t>(f)]) {
       since[static_cast<size_t>(f)] = since[static_cast<size_t>(f + 1)];
     }
   }
@@ -151,8 +155,8 @@ void smooth_lane(std::vector<Step>& st, std::vector<int>& since, const SmootherP
 
 }  // namespace fusion_smoother_detail
 
-HandTrack fuse_default(const std::vector<const HandTrack*>& devices, const std::vector<const std::vector<float>*>& quality,
-                       const SmootherParams& p) {
+HandTrack fuse_default(const std::vector<const HandTrack*>& devices,
+                       const std::vector<const std::vector<float>*>& quality, const SmootherParams& p) {
   using namespace fusion_smoother_detail;
   const int n = devices.empty() ? 0 : devices.front()->frame_count;
   HandTrack out(n);
@@ -196,8 +200,9 @@ HandTrack fuse_default(const std::vector<const HandTrack*>& devices, const std::
     smooth_lane(st, since, p, [&](int f, double x) { fused[static_cast<size_t>(f) * kL + l] = x; });
   }
   for (int f = 0; f < n; ++f) {
-    lanes_to_hand(std::span<const double, kFusionLanes>(fused.data() + static_cast<size_t>(f) * kL, kL),
-                  std::span<Vec3, kNumHandPoints>(out.points.data() + static_cast<size_t>(f) * kNumHandPoints, kNumHandPoints));
+    lanes_to_hand(
+        std::span<const double, kFusionLanes>(fused.data() + static_cast<size_t>(f) * kL, kL),
+        std::span<Vec3, kNumHandPoints>(out.points.data() + static_cast<size_t>(f) * kNumHandPoints, kNumHandPoints));
   }
   return out;
 }

@@ -18,8 +18,8 @@
 #include <span>
 #include <vector>
 
-#include "core/io/lmc_recording.h"
 #include "core/hand/hand_track.h"
+#include "core/io/lmc_recording.h"
 
 namespace lmc {
 
@@ -31,8 +31,8 @@ inline constexpr int kDefaultFusionRevision = 2;
 
 struct SmootherParams {
   double dt_s = 0.01;
-  double accel_psd = 2.0e5;     // mm²/s³: white-noise acceleration spectral density (points and bone lengths)
-  double noise_mm = 1.5;        // base measurement standard deviation of a visible point
+  double accel_psd = 2.0e5;      // mm²/s³: white-noise acceleration spectral density (points and bone lengths)
+  double noise_mm = 1.5;         // base measurement standard deviation of a visible point
   double hidden_factor = 400.0;  // variance × this for an internal-model guess (σ × 20)
   double axis_cut_factor = 400.0;
   double axis_cut_mm = 250.0;
@@ -54,7 +54,7 @@ void frame_quality(std::span<const Vec3, kNumHandPoints> device_points, const Fi
                    const SmootherParams& params, std::span<float, kNumHandPoints> out);
 
 // Fuses realigned tracks. `quality[d]` may be null (factor 1 everywhere).
-HandTrack fuse_default(const std::vector<const HandTrack*>& devices, const std::vector<const std::vector<float>*>& quality,
-                       const SmootherParams& params = {});
+HandTrack fuse_default(const std::vector<const HandTrack*>& devices,
+                       const std::vector<const std::vector<float>*>& quality, const SmootherParams& params = {});
 
 }  // namespace lmc

@@ -62,10 +62,11 @@ void kalman_reference_1d(const std::vector<const double*>& series, int n, double
                          const ReferenceKalmanParams& params) {
   const size_t nd = series.size();
   std::vector<double> var(nd * static_cast<size_t>(n));
-  for (size_t d = 0; d < nd; ++d) rolling_variance(series[d], n, params.window, var.data() + d * static_cast<size_t>(n));
+  for (size_t d = 0; d < nd; ++d)
+    rolling_variance(series[d], n, params.window, var.data() + d * static_cast<size_t>(n));
 
   const double dt = params.dt_s;
-  double x0 = 0.0, x1 = 0.0;                // position, velocity
+  double x0 = 0.0, x1 = 0.0;  // position, velocity
   double p00 = 0.0, p01 = 0.0, p10 = 0.0, p11 = 0.0;
   bool started = false;
   for (int i = 0; i < n; ++i) {

@@ -15,7 +15,9 @@ namespace {
 // short finger (the shortest real phalanx is ~15 mm), and no factor can give it a length.
 constexpr double kMinCorrectableBoneMm = 1.0;
 
-std::string corrected_finger_words(int f) { return std::string(digit_name(f)); }
+std::string corrected_finger_words(int f) {
+  return std::string(digit_name(f));
+}
 
 // Refuses a finger bone whose mean over the frames that have it is below kMinCorrectableBoneMm.
 void refuse_zero_length_bones(const std::vector<FrameMeasures>& frames, const char* whose, const std::string& where) {
@@ -31,7 +33,8 @@ void refuse_zero_length_bones(const std::vector<FrameMeasures>& frames, const ch
         }
       }
       if (n > 0 && sum / n < kMinCorrectableBoneMm) {
-        throw Error(where + ": the " + whose + " " + std::string(segment_name(s)) + " bone is " + format_fixed(sum / n, 2) +
+        throw Error(where + ": the " + whose + " " + std::string(segment_name(s)) + " bone is " +
+                    format_fixed(sum / n, 2) +
                     " mm long on average: a zero-length bone cannot be corrected by a scale");
       }
     }
@@ -40,8 +43,9 @@ void refuse_zero_length_bones(const std::vector<FrameMeasures>& frames, const ch
 
 // The fit shared by both sources: per finger, mean fused length and mean target length over the
 // frames where both are finite; factor = target / fused.
-LengthCorrection fit_length_factors(const std::vector<FrameMeasures>& fused, const std::function<double(size_t, int)>& target,
-                     const char* target_name, const std::string& where) {
+LengthCorrection fit_length_factors(const std::vector<FrameMeasures>& fused,
+                                    const std::function<double(size_t, int)>& target, const char* target_name,
+                                    const std::string& where) {
   refuse_zero_length_bones(fused, "fused", where);
   LengthCorrection c;
   c.fit_frames = static_cast<int>(fused.size());
@@ -57,8 +61,8 @@ LengthCorrection fit_length_factors(const std::vector<FrameMeasures>& fused, con
       ++n;
     }
     if (n == 0) {
-      throw Error(where + ": no frame has the " + corrected_finger_words(f) + " in both the fused hand and " + target_name +
-                  " (a marker of that finger missing in every frame, or no hand fused?)");
+      throw Error(where + ": no frame has the " + corrected_finger_words(f) + " in both the fused hand and " +
+                  target_name + " (a marker of that finger missing in every frame, or no hand fused?)");
     }
     c.fit_frames = std::min(c.fit_frames, n);
     c.fused_mm[fi] = sum_fused / n;
@@ -71,12 +75,15 @@ LengthCorrection fit_length_factors(const std::vector<FrameMeasures>& fused, con
 
 }  // namespace
 
-const char* length_source_name(LengthSource s) { return s == LengthSource::kVicon ? "vicon" : "hand_dimensions"; }
+const char* length_source_name(LengthSource s) {
+  return s == LengthSource::kVicon ? "vicon" : "hand_dimensions";
+}
 
 std::array<double, kNumFingers> expected_finger_lengths_mm(double hand_length_mm, double hand_breadth_mm) {
-  if (!std::isfinite(hand_length_mm) || hand_length_mm <= 0 || !std::isfinite(hand_breadth_mm) || hand_breadth_mm <= 0) {
-    throw Error("hand length and breadth must be positive numbers in mm (given " + format_fixed(hand_length_mm, 1) + " and " +
-                format_fixed(hand_breadth_mm, 1) + ")");
+  if (!std::isfinite(hand_length_mm) || hand_length_mm <= 0 || !std::isfinite(hand_breadth_mm) ||
+      hand_breadth_mm <= 0) {
+    throw Error("hand length and breadth must be positive numbers in mm (given " + format_fixed(hand_length_mm, 1) +
+                " and " + format_fixed(hand_breadth_mm, 1) + ")");
   }
   // The simulator's hand model is the one place the anthropometry lives (Buchholz et al. 1992 by
   // hand length; the breadth places the knuckles but changes no finger length).
@@ -113,8 +120,9 @@ void check_length_factors(const std::array<double, kNumFingers>& factor, const s
   for (int f = 0; f < kNumFingers; ++f) {
     const double k = factor[static_cast<size_t>(f)];
     if (!std::isfinite(k) || k < kMinLengthFactor || k > kMaxLengthFactor) {
-      throw Error(where + ": the " + corrected_finger_words(f) + "'s length factor is " + (std::isfinite(k) ? format_fixed(k, 3) : "not a number") +
-                  ", outside " + format_fixed(kMinLengthFactor, 1) + "–" + format_fixed(kMaxLengthFactor, 1) +
+      throw Error(where + ": the " + corrected_finger_words(f) + "'s length factor is " +
+                  (std::isfinite(k) ? format_fixed(k, 3) : "not a number") + ", outside " +
+                  format_fixed(kMinLengthFactor, 1) + "–" + format_fixed(kMaxLengthFactor, 1) +
                   " (controllers are 10–30 % short): wrong subject, Vicon file or mapping?");
     }
   }

@@ -34,11 +34,11 @@ const char* length_source_name(LengthSource s);  // "vicon", "hand_dimensions"
 struct LengthCorrection {
   std::string subject;
   LengthSource source = LengthSource::kVicon;
-  std::string fit_trial;       // the trial the factors were fitted on
-  std::string fit_lmc_file;    // its LMC file
-  std::string fit_vicon_file;  // its Vicon file (source vicon)
+  std::string fit_trial;                           // the trial the factors were fitted on
+  std::string fit_lmc_file;                        // its LMC file
+  std::string fit_vicon_file;                      // its Vicon file (source vicon)
   double hand_length_mm = 0, hand_breadth_mm = 0;  // source hand_dimensions
-  int fit_frames = 0;          // fewest frames any finger was fitted on (finite in fused and target)
+  int fit_frames = 0;                           // fewest frames any finger was fitted on (finite in fused and target)
   std::array<double, kNumFingers> fused_mm{};   // fused finger length, mean over the fit frames
   std::array<double, kNumFingers> target_mm{};  // what it should be (Vicon mean / anthropometry)
   std::array<double, kNumFingers> factor{};     // target / fused

@@ -11,7 +11,9 @@ namespace {
 
 constexpr const char* kLengthCorrectionFormat = "lmc-length-correction";
 
-nlohmann::json finger_array_json(const std::array<double, kNumFingers>& v) { return nlohmann::json(std::vector<double>(v.begin(), v.end())); }
+nlohmann::json finger_array_json(const std::array<double, kNumFingers>& v) {
+  return nlohmann::json(std::vector<double>(v.begin(), v.end()));
+}
 
 std::array<double, kNumFingers> read_finger_array(const JsonReader& r) {
   if (r.array_size() != kNumFingers) r.fail("expected 5 numbers (thumb, index, middle, ring, pinky)");
@@ -49,10 +51,12 @@ LengthCorrection length_correction_from_json(const nlohmann::json& j, const std:
   const JsonReader r(j, source);
   r.only_keys({"format", "version", "method", "subject", "source", "fit_trial", "fit_lmc_file", "fit_vicon_file",
                "hand_length_mm", "hand_breadth_mm", "fit_frames", "fingers", "fused_mm", "target_mm", "factor"});
-  if (r.string("format") != kLengthCorrectionFormat) r.at("format").fail(std::string("expected \"") + kLengthCorrectionFormat + "\"");
+  if (r.string("format") != kLengthCorrectionFormat)
+    r.at("format").fail(std::string("expected \"") + kLengthCorrectionFormat + "\"");
   if (r.at("version").integer() != 1) r.at("version").fail("unknown version (this program reads version 1)");
   // The factors were fitted on the default fusion's output; on another method they mean nothing.
-  if (r.string("method") != "default") r.at("method").fail("a length correction is fitted on and applied to the default fusion only");
+  if (r.string("method") != "default")
+    r.at("method").fail("a length correction is fitted on and applied to the default fusion only");
   LengthCorrection c;
   c.subject = r.string("subject");
   const std::string kind = r.string("source");

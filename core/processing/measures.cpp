@@ -7,33 +7,29 @@ namespace lmc {
 namespace {
 
 constexpr std::array<std::array<int, 2>, kNumSegments> kSegments{{{7, 8},
-                                                                 {8, 9},
-                                                                 {11, 12},
-                                                                 {12, 13},
-                                                                 {13, 14},
-                                                                 {16, 17},
-                                                                 {17, 18},
-                                                                 {18, 19},
-                                                                 {21, 22},
-                                                                 {22, 23},
-                                                                 {23, 24},
-                                                                 {26, 27},
-                                                                 {27, 28},
-                                                                 {28, 29}}};
+                                                                  {8, 9},
+                                                                  {11, 12},
+                                                                  {12, 13},
+                                                                  {13, 14},
+                                                                  {16, 17},
+                                                                  {17, 18},
+                                                                  {18, 19},
+                                                                  {21, 22},
+                                                                  {22, 23},
+                                                                  {23, 24},
+                                                                  {26, 27},
+                                                                  {27, 28},
+                                                                  {28, 29}}};
 // Joint angle = angle between (p0→p1) and (p2→p3) (docs/algorithms/processing.md, stage 5).
-constexpr std::array<std::array<int, 4>, kNumAngles> kAngles{{{10, 11, 11, 12},
-                                                             {11, 12, 12, 13},
-                                                             {12, 13, 13, 14},
-                                                             {6, 7, 7, 8},
-                                                             {7, 8, 8, 9},
-                                                             {3, 4, 4, 0}}};
+constexpr std::array<std::array<int, 4>, kNumAngles> kAngles{
+    {{10, 11, 11, 12}, {11, 12, 12, 13}, {12, 13, 13, 14}, {6, 7, 7, 8}, {7, 8, 8, 9}, {3, 4, 4, 0}}};
 
 }  // namespace
 
 std::string_view segment_name(int s) {
   static constexpr std::array<std::string_view, kNumSegments> names{
-      "Thumb_interm", "Thumb_distal",  "Index_proxi", "Index_interm", "Index_distal", "Middle_proxi", "Middle_interm",
-      "Middle_distal", "Ring_proxi", "Ring_interm", "Ring_distal", "Little_proxi", "Little_interm", "Little_distal"};
+      "Thumb_interm",  "Thumb_distal", "Index_proxi", "Index_interm", "Index_distal", "Middle_proxi",  "Middle_interm",
+      "Middle_distal", "Ring_proxi",   "Ring_interm", "Ring_distal",  "Little_proxi", "Little_interm", "Little_distal"};
   return names[static_cast<size_t>(s)];
 }
 
@@ -48,7 +44,9 @@ std::string_view angle_name(int a) {
   return names[static_cast<size_t>(a)];
 }
 
-std::array<int, 2> segment_points(int s) { return kSegments[static_cast<size_t>(s)]; }
+std::array<int, 2> segment_points(int s) {
+  return kSegments[static_cast<size_t>(s)];
+}
 
 std::vector<int> finger_segments(int f) {
   if (f == 0) return {0, 1};
@@ -117,11 +115,12 @@ void stats(const std::vector<FrameMeasures>& frames, Get get, std::array<double,
 
 MeasureStats summarize(const std::vector<FrameMeasures>& frames) {
   MeasureStats s;
-  stats<kNumSegments>(frames, [](const FrameMeasures& m) { return m.segment_mm; }, s.segment_min, s.segment_max,
-                      &s.segment_mean);
-  stats<kNumFingers>(frames, [](const FrameMeasures& m) { return m.finger_mm; }, s.finger_min, s.finger_max,
-                     &s.finger_mean);
-  stats<kNumAngles>(frames, [](const FrameMeasures& m) { return m.angle_deg; }, s.angle_min, s.angle_max, nullptr);
+  stats<kNumSegments>(
+      frames, [](const FrameMeasures& m) { return m.segment_mm; }, s.segment_min, s.segment_max, &s.segment_mean);
+  stats<kNumFingers>(
+      frames, [](const FrameMeasures& m) { return m.finger_mm; }, s.finger_min, s.finger_max, &s.finger_mean);
+  stats<kNumAngles>(
+      frames, [](const FrameMeasures& m) { return m.angle_deg; }, s.angle_min, s.angle_max, nullptr);
   for (size_t a = 0; a < kNumAngles; ++a) s.angle_rom[a] = s.angle_max[a] - s.angle_min[a];
   return s;
 }

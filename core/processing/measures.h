@@ -6,8 +6,8 @@
 #include <string_view>
 #include <vector>
 
-#include "core/io/lmc_recording.h"
 #include "core/hand/hand_track.h"
+#include "core/io/lmc_recording.h"
 
 namespace lmc {
 

@@ -8,7 +8,9 @@
 
 namespace lmc {
 
-double ErrorAccumulator::rmse() const { return count > 0 ? std::sqrt(sum_sq / static_cast<double>(count)) : kNaN; }
+double ErrorAccumulator::rmse() const {
+  return count > 0 ? std::sqrt(sum_sq / static_cast<double>(count)) : kNaN;
+}
 
 void MethodErrors::merge(const MethodErrors& o) {
   for (size_t k = 0; k < kNumFingers; ++k) {
@@ -78,25 +80,30 @@ MethodErrors trial_errors(const TrialResult& r, const TrialResult* other) {
 
 std::string method_comparison_markdown(const MethodErrors& ref, const MethodErrors& def, int trials) {
   std::ostringstream o;
-  o << "RMSE against truth over " << trials << " trial(s), per frame (100 Hz). \"not seen\": frames where at least one\n"
+  o << "RMSE against truth over " << trials
+    << " trial(s), per frame (100 Hz). \"not seen\": frames where at least one\n"
     << "device could not see the finger (ray-traced label 0 or no hand).\n\n";
   auto pct = [](const MethodErrors& m) {
-    return m.truth_values > 0 ? format_fixed(100.0 * static_cast<double>(m.method_values) / static_cast<double>(m.truth_values), 1) : std::string("nan");
+    return m.truth_values > 0
+               ? format_fixed(100.0 * static_cast<double>(m.method_values) / static_cast<double>(m.truth_values), 1)
+               : std::string("nan");
   };
   o << "Both methods are scored on the same frames (where both give a value). Finger-length values given:\n"
     << "reference " << pct(ref) << " %, default " << pct(def) << " % of the frames with truth.\n\n";
-  o << "| measure | reference, all | default, all | reference, not seen | default, not seen | frames all / not seen |\n";
+  o << "| measure | reference, all | default, all | reference, not seen | default, not seen | frames all / not seen "
+       "|\n";
   o << "|---|---:|---:|---:|---:|---:|\n";
   auto line = [&](const std::string& name, const ErrorAccumulator& ra, const ErrorAccumulator& da,
                   const ErrorAccumulator& ru, const ErrorAccumulator& du, const char* unit) {
-    o << "| " << name << " (" << unit << ") | " << format_fixed(ra.rmse(), 2) << " | " << format_fixed(da.rmse(), 2) << " | "
-      << format_fixed(ru.rmse(), 2) << " | " << format_fixed(du.rmse(), 2) << " | " << ra.count << " / " << ru.count << " |\n";
+    o << "| " << name << " (" << unit << ") | " << format_fixed(ra.rmse(), 2) << " | " << format_fixed(da.rmse(), 2)
+      << " | " << format_fixed(ru.rmse(), 2) << " | " << format_fixed(du.rmse(), 2) << " | " << ra.count << " / "
+      << ru.count << " |\n";
   };
   line("finger length, all fingers", ref.finger_pooled(false), def.finger_pooled(false), ref.finger_pooled(true),
        def.finger_pooled(true), "mm");
   for (size_t k = 0; k < kNumFingers; ++k) {
-    line(std::string("finger length, ") + std::string(digit_name(k)), ref.finger_all[k], def.finger_all[k], ref.finger_unseen[k],
-         def.finger_unseen[k], "mm");
+    line(std::string("finger length, ") + std::string(digit_name(k)), ref.finger_all[k], def.finger_all[k],
+         ref.finger_unseen[k], def.finger_unseen[k], "mm");
   }
   line("joint angle, all joints", ref.angle_pooled(false), def.angle_pooled(false), ref.angle_pooled(true),
        def.angle_pooled(true), "deg");

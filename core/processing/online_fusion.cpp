@@ -145,7 +145,9 @@ void OnlineFusion::add(const HandFrame& frame, int slot_index, double t_s) {
   }
 }
 
-FusedHand OnlineFusion::current() const { return current_at(latest_s_); }
+FusedHand OnlineFusion::current() const {
+  return current_at(latest_s_);
+}
 
 FusedHand OnlineFusion::current_at(double t_s) const {
   FusedHand out;
@@ -163,7 +165,8 @@ FusedHand OnlineFusion::current_at(double t_s) const {
   lanes_to_hand(lanes, out.points);
   for (const Slot& s : slots_) {
     if (!s.ever || t_s - s.t_s > kStaleAfterS + kTimeEpsS) continue;
-    for (int k = 0; k < kNumDigits; ++k) out.seen_by[static_cast<size_t>(k)] += s.labels[static_cast<size_t>(k)] == 1 ? 1 : 0;
+    for (int k = 0; k < kNumDigits; ++k)
+      out.seen_by[static_cast<size_t>(k)] += s.labels[static_cast<size_t>(k)] == 1 ? 1 : 0;
   }
   out.has_hand = is_finite(out.points[kPalm]);
   return out;

@@ -13,18 +13,16 @@
 // Why combine the latest samples instead of updating with the arriving device alone: controllers
 // disagree by several millimetres (calibration, internal-model guesses) and stream at different
 // rates; updated one device at a time, the responsive filter would jump towards each arriving
-// device in turn (millimetres of jitter a viewer sees; core/processing/README.md). A held sample's variance grows with its age by the model's process noise (it is
-// not moved with the filter's velocity: that feedback diverged); it stops counting kStaleAfterS
-// after its device's latest frame, or at once when the device reports no hand.
-// Every update happens at one instant per point: a second frame at the same time (the next device
-// of the same tracking event) redoes that instant's update with the new combination, so four
-// devices on one grid time give exactly the offline forward filter. Differences from the offline
-// result, on purpose: no backward (RTS) pass, so the output lags a moving hand slightly (tests
-// report how much); a frame older than a point's state joins the update at the state's time
-// instead of rewinding it; a point unseen by every device for longer than max_gap_frames·dt_s is
-// NaN, and restarts at rest from its next measurement (the velocity from before a long gap is
-// stale). add() and current() never allocate; one OnlineFusion is not thread-safe (the tab owns
-// one on its worker thread and publishes FusedHand copies).
+// device in turn (millimetres of jitter a viewer sees; core/processing/README.md). A held sample's variance grows with
+// its age by the model's process noise (it is not moved with the filter's velocity: that feedback diverged); it stops
+// counting kStaleAfterS after its device's latest frame, or at once when the device reports no hand. Every update
+// happens at one instant per point: a second frame at the same time (the next device of the same tracking event) redoes
+// that instant's update with the new combination, so four devices on one grid time give exactly the offline forward
+// filter. Differences from the offline result, on purpose: no backward (RTS) pass, so the output lags a moving hand
+// slightly (tests report how much); a frame older than a point's state joins the update at the state's time instead of
+// rewinding it; a point unseen by every device for longer than max_gap_frames·dt_s is NaN, and restarts at rest from
+// its next measurement (the velocity from before a long gap is stale). add() and current() never allocate; one
+// OnlineFusion is not thread-safe (the tab owns one on its worker thread and publishes FusedHand copies).
 #include <array>
 #include <cstdint>
 #include <vector>
@@ -39,7 +37,7 @@
 namespace lmc {
 
 struct FusedHand {
-  double t_s = 0.0;  // the time the points are predicted to (shared device clock)
+  double t_s = 0.0;                           // the time the points are predicted to (shared device clock)
   std::array<Vec3, kNumHandPoints> points{};  // world frame; NaN where no device saw the point recently
   // Per finger (thumb … pinky): how many controllers' latest frames, no older than
   // OnlineFusion::kStaleAfterS, see it by the ray tracer.
@@ -86,9 +84,9 @@ class OnlineFusion {
     FingerLabels labels{};
     double t_s = 0.0;
     bool ever = false;
-    bool hand = false;                          // the latest frame had a hand: its samples count
-    std::array<double, kLanes> z{};             // latest world-frame sample per lane (NaN: none)
-    std::array<double, kLanes> var{};           // its variance per lane (fusion_lanes.h)
+    bool hand = false;                 // the latest frame had a hand: its samples count
+    std::array<double, kLanes> z{};    // latest world-frame sample per lane (NaN: none)
+    std::array<double, kLanes> var{};  // its variance per lane (fusion_lanes.h)
   };
 
   // The inverse-variance combination at time t of every slot's fresh sample of `lane`, each

@@ -17,19 +17,18 @@ nlohmann::json process_options_json(const ProcessOptions& o) {
                    {"min_plausible_span_s", r.min_plausible_span_s},
                    {"max_seconds_per_row", r.max_seconds_per_row}};
   const auto& k = o.kalman;
-  j["reference_kalman"] = {{"dt_s", k.dt_s},           {"q_position", k.q_position}, {"q_velocity", k.q_velocity},
-                           {"p0_position", k.p0_position}, {"p0_velocity", k.p0_velocity}, {"window", k.window}};
+  j["reference_kalman"] = {{"dt_s", k.dt_s},
+                           {"q_position", k.q_position},
+                           {"q_velocity", k.q_velocity},
+                           {"p0_position", k.p0_position},
+                           {"p0_velocity", k.p0_velocity},
+                           {"window", k.window}};
   const auto& s = o.smoother;
-  j["smoother"] = {{"revision", kDefaultFusionRevision},
-                   {"dt_s", s.dt_s},
-                   {"accel_psd", s.accel_psd},
-                   {"noise_mm", s.noise_mm},
-                   {"hidden_factor", s.hidden_factor},
-                   {"axis_cut_factor", s.axis_cut_factor},
-                   {"axis_cut_mm", s.axis_cut_mm},
-                   {"axis_cut_margin_mm", s.axis_cut_margin_mm},
-                   {"elbow_factor", s.elbow_factor},
-                   {"max_gap_frames", s.max_gap_frames}};
+  j["smoother"] = {{"revision", kDefaultFusionRevision}, {"dt_s", s.dt_s},
+                   {"accel_psd", s.accel_psd},           {"noise_mm", s.noise_mm},
+                   {"hidden_factor", s.hidden_factor},   {"axis_cut_factor", s.axis_cut_factor},
+                   {"axis_cut_mm", s.axis_cut_mm},       {"axis_cut_margin_mm", s.axis_cut_margin_mm},
+                   {"elbow_factor", s.elbow_factor},     {"max_gap_frames", s.max_gap_frames}};
   const auto& v = o.visibility;
   j["visibility"] = {{"range_mm", v.range_mm},
                      {"fov_long_deg", v.fov_long_deg},

@@ -7,8 +7,8 @@
 #include <span>
 #include <string>
 
-#include "core/layout/layout.h"
 #include "core/hand/hand_track.h"
+#include "core/layout/layout.h"
 
 namespace lmc {
 

@@ -21,7 +21,9 @@ struct Sample {
   bool hand;
 };
 
-bool frame_has_hand(const HandFrame& f) { return f.hand_present && is_finite(f.point(kPalm)); }
+bool frame_has_hand(const HandFrame& f) {
+  return f.hand_present && is_finite(f.point(kPalm));
+}
 
 bool same_points(const HandFrame& a, const HandFrame& b) {
   if (a.hand_present != b.hand_present) return false;
@@ -81,7 +83,8 @@ void check_plausible_span(const LmcRecording& recording, const std::vector<std::
                           std::int64_t t_start, std::int64_t t_end, const ResampleOptions& options,
                           const RowPlace& place) {
   const double span_s = (static_cast<double>(t_end) - static_cast<double>(t_start)) * 1e-6;
-  const double limit_s = options.min_plausible_span_s + options.max_seconds_per_row * static_cast<double>(recording.rows.size());
+  const double limit_s =
+      options.min_plausible_span_s + options.max_seconds_per_row * static_cast<double>(recording.rows.size());
   if (span_s <= limit_s) return;
   // Every sample inside the grid's span, all devices, in time order; the grid start counts as one.
   std::vector<std::pair<std::int64_t, const Sample*>> all;
@@ -104,16 +107,15 @@ void check_plausible_span(const LmcRecording& recording, const std::vector<std::
   }
   std::ostringstream msg;
   msg.precision(6);
-  msg << "the hand samples span " << span_s << " s but the file has only " << recording.rows.size()
-      << " rows (at most " << limit_s << " s is plausible: " << options.min_plausible_span_s << " s + "
-      << options.max_seconds_per_row << " s per row); ";
+  msg << "the hand samples span " << span_s << " s but the file has only " << recording.rows.size() << " rows (at most "
+      << limit_s << " s is plausible: " << options.min_plausible_span_s << " s + " << options.max_seconds_per_row
+      << " s per row); ";
   if (worst == nullptr) {
     msg << "the grid start lies far before the first sample";
     throw Error("resample: " + msg.str());
   }
-  msg << lmc_label(worst->frame->device_id) << "'s timestamp " << worst->frame->timestamp_us
-      << " µs jumps " << worst_s << " s past the sample before it; refusing to build a " << span_s
-      << " s grid";
+  msg << lmc_label(worst->frame->device_id) << "'s timestamp " << worst->frame->timestamp_us << " µs jumps " << worst_s
+      << " s past the sample before it; refusing to build a " << span_s << " s grid";
   place.fail(worst->row, msg.str());
 }
 
@@ -147,7 +149,8 @@ void cubic_spline_eval(const std::vector<double>& t, const std::vector<double>& 
     for (size_t i = 0; i < inner; ++i) {
       const size_t k = i + 1;  // sample index
       for (size_t c = 0; c < d; ++c) {
-        double rhs = 6.0 * ((y[(k + 1) * d + c] - y[k * d + c]) / h[k] - (y[k * d + c] - y[(k - 1) * d + c]) / h[k - 1]);
+        double rhs =
+            6.0 * ((y[(k + 1) * d + c] - y[k * d + c]) / h[k] - (y[k * d + c] - y[(k - 1) * d + c]) / h[k - 1]);
         if (i > 0) rhs -= h[i] * m[k * d - d + c];  // a_i · d'_{i-1}, stored in m temporarily
         m[k * d + c] = rhs / denom[i];
       }
@@ -233,18 +236,16 @@ GridTrial resample_recording(const LmcRecording& recording, const ResampleOption
         rebase = add_checked(rebase, shift, place, row);
         t = add_checked(t, shift, place, row);
         ++st.clock_resets;
-        add_issue(
-            report, listed,
-            {StreamIssueKind::kClockReset, id, row, f.timestamp_us,
-             lmc_label(id) + " row " + std::to_string(row) + ": clock went back by " +
-                 std::to_string((prev - (t - shift)) / 1000) + " ms; stream split and re-based"});
+        add_issue(report, listed,
+                  {StreamIssueKind::kClockReset, id, row, f.timestamp_us,
+                   lmc_label(id) + " row " + std::to_string(row) + ": clock went back by " +
+                       std::to_string((prev - (t - shift)) / 1000) + " ms; stream split and re-based"});
       } else if (!first && t < running_max) {
         ++st.out_of_order;
-        add_issue(
-            report, listed,
-            {StreamIssueKind::kOutOfOrder, id, row, f.timestamp_us,
-             lmc_label(id) + " row " + std::to_string(row) + ": timestamp " +
-                 std::to_string(f.timestamp_us) + " is earlier than a previous row's; sorted"});
+        add_issue(report, listed,
+                  {StreamIssueKind::kOutOfOrder, id, row, f.timestamp_us,
+                   lmc_label(id) + " row " + std::to_string(row) + ": timestamp " + std::to_string(f.timestamp_us) +
+                       " is earlier than a previous row's; sorted"});
       }
       if (!first && t > prev) steps.push_back(t - prev);
       running_max = first ? t : std::max(running_max, t);
@@ -260,12 +261,12 @@ GridTrial resample_recording(const LmcRecording& recording, const ResampleOption
       if (!kept.empty() && kept.back().t_us == smp.t_us) {
         const bool same = same_points(*kept.back().frame, *smp.frame);
         ++st.duplicates;
-        add_issue(report, listed,
-                  {same ? StreamIssueKind::kDuplicate : StreamIssueKind::kConflictingDuplicate, id,
-                   smp.row, smp.frame->timestamp_us,
-                   lmc_label(id) + " row " + std::to_string(smp.row) + ": duplicate timestamp " +
-                       std::to_string(smp.frame->timestamp_us) +
-                       (same ? "" : " with different data") + "; row dropped"});
+        add_issue(
+            report, listed,
+            {same ? StreamIssueKind::kDuplicate : StreamIssueKind::kConflictingDuplicate, id, smp.row,
+             smp.frame->timestamp_us,
+             lmc_label(id) + " row " + std::to_string(smp.row) + ": duplicate timestamp " +
+                 std::to_string(smp.frame->timestamp_us) + (same ? "" : " with different data") + "; row dropped"});
         continue;
       }
       kept.push_back(smp);
@@ -282,7 +283,8 @@ GridTrial resample_recording(const LmcRecording& recording, const ResampleOption
       st.median_interval_ms = static_cast<double>(*mid) / 1000.0;
     }
     st.gap_limit_ms = options.max_gap_ms;
-    if (options.adaptive_gap) st.gap_limit_ms = std::max(st.gap_limit_ms, options.gap_frame_intervals * st.median_interval_ms);
+    if (options.adaptive_gap)
+      st.gap_limit_ms = std::max(st.gap_limit_ms, options.gap_frame_intervals * st.median_interval_ms);
   }
 
   // Grid: from the first hand sample of any device to the last.
@@ -302,7 +304,8 @@ GridTrial resample_recording(const LmcRecording& recording, const ResampleOption
   if (!any_hand) throw Error("resample: no device saw a hand in this recording");
   if (options.grid_start_us) {
     t_start = *options.grid_start_us;
-    if (t_start > kMaxRebasedUs || t_start < -kMaxRebasedUs) throw Error("resample: the given grid start is out of range");
+    if (t_start > kMaxRebasedUs || t_start < -kMaxRebasedUs)
+      throw Error("resample: the given grid start is out of range");
     if (t_end < t_start) throw Error("resample: every hand sample precedes the given grid start");
   }
   check_plausible_span(recording, streams, t_start, t_end, options, place);
@@ -339,11 +342,11 @@ GridTrial resample_recording(const LmcRecording& recording, const ResampleOption
       while (end < s.size() && s[end].hand && s[end].t_us - s[end - 1].t_us <= gap_us) ++end;
       if (end < s.size() && s[end].hand) {
         ++st.gaps;
-        add_issue(report, listed,
-                  {StreamIssueKind::kGap, ids[di], s[end].row, s[end].frame->timestamp_us,
-                   lmc_label(ids[di]) + " row " + std::to_string(s[end].row) + ": " +
-                       std::to_string((s[end].t_us - s[end - 1].t_us) / 1000) +
-                       " ms without a sample; not interpolated"});
+        add_issue(
+            report, listed,
+            {StreamIssueKind::kGap, ids[di], s[end].row, s[end].frame->timestamp_us,
+             lmc_label(ids[di]) + " row " + std::to_string(s[end].row) + ": " +
+                 std::to_string((s[end].t_us - s[end - 1].t_us) / 1000) + " ms without a sample; not interpolated"});
       }
       if (first_hand < 0) first_hand = s[k].t_us;
       last_hand = s[end - 1].t_us;
@@ -381,8 +384,9 @@ GridTrial resample_recording(const LmcRecording& recording, const ResampleOption
       cubic_spline_eval(pt, py, kDims, qt, qv);
       for (size_t q = 0; q < qf.size(); ++q) {
         for (int i = 0; i < kNumHandPoints; ++i) {
-          dev.track.at(qf[q], i) = Vec3(qv[q * kDims + static_cast<size_t>(i) * 3], qv[q * kDims + static_cast<size_t>(i) * 3 + 1],
-                                        qv[q * kDims + static_cast<size_t>(i) * 3 + 2]);
+          dev.track.at(qf[q], i) =
+              Vec3(qv[q * kDims + static_cast<size_t>(i) * 3], qv[q * kDims + static_cast<size_t>(i) * 3 + 1],
+                   qv[q * kDims + static_cast<size_t>(i) * 3 + 2]);
         }
       }
       k = end;
@@ -418,14 +422,15 @@ GridTrial grid_from_resampled(const LmcRecording& recording, std::vector<std::st
       for (int i = 0; i < kNumHandPoints; ++i) dev.track.at(static_cast<int>(f), i) = hf.point(i);
     }
     if (rows[di].size() < n && warnings != nullptr) {
-      warnings->push_back(lmc_label(ids[di]) + " has " + std::to_string(rows[di].size()) +
-                          " rows, others up to " + std::to_string(n) +
-                          "; its missing frames are NaN");
+      warnings->push_back(lmc_label(ids[di]) + " has " + std::to_string(rows[di].size()) + " rows, others up to " +
+                          std::to_string(n) + "; its missing frames are NaN");
     }
     grid.devices.push_back(std::move(dev));
   }
-  const bool any_hand = std::any_of(recording.rows.begin(), recording.rows.end(), [](const HandFrame& f) { return f.hand_present; });
-  if (!any_hand && warnings != nullptr) warnings->push_back("no device saw the hand in any row: every LMC measure is NaN");
+  const bool any_hand =
+      std::any_of(recording.rows.begin(), recording.rows.end(), [](const HandFrame& f) { return f.hand_present; });
+  if (!any_hand && warnings != nullptr)
+    warnings->push_back("no device saw the hand in any row: every LMC measure is NaN");
   return grid;
 }
 

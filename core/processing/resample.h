@@ -26,15 +26,15 @@
 #include <string>
 #include <vector>
 
-#include "core/io/lmc_recording.h"
 #include "core/hand/hand_track.h"
+#include "core/io/lmc_recording.h"
 
 namespace lmc {
 
 struct ResampleOptions {
   double rate_hz = 100.0;
-  double max_gap_ms = 50.0;       // no interpolation across a longer gap between two samples
-  bool adaptive_gap = true;       // raise the limit to gap_frame_intervals × the device's median interval
+  double max_gap_ms = 50.0;  // no interpolation across a longer gap between two samples
+  bool adaptive_gap = true;  // raise the limit to gap_frame_intervals × the device's median interval
   double gap_frame_intervals = 2.5;
   double clock_reset_ms = 500.0;  // a backwards jump larger than this is a clock reset
   // When set, the grid starts here (device clock) instead of at the first hand sample: used when
@@ -65,10 +65,10 @@ struct DeviceStreamStats {
   int out_of_order = 0;
   int duplicates = 0;
   int clock_resets = 0;
-  int gaps = 0;                // gaps longer than the gap limit between hand samples
-  double gap_limit_ms = 0.0;   // the limit used for this device (see ResampleOptions)
+  int gaps = 0;                     // gaps longer than the gap limit between hand samples
+  double gap_limit_ms = 0.0;        // the limit used for this device (see ResampleOptions)
   double median_interval_ms = 0.0;  // between consecutive hand samples (0 with fewer than two)
-  double mean_rate_hz = 0.0;   // hand samples per second over the device's span
+  double mean_rate_hz = 0.0;        // hand samples per second over the device's span
 };
 
 struct ResampleReport {

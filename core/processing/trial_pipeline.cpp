@@ -6,7 +6,9 @@
 
 namespace lmc {
 
-const char* fusion_method_name(FusionMethod m) { return m == FusionMethod::kReference ? "reference" : "default"; }
+const char* fusion_method_name(FusionMethod m) {
+  return m == FusionMethod::kReference ? "reference" : "default";
+}
 
 FusionMethod fusion_method_from_name(const std::string& name) {
   if (name == "reference") return FusionMethod::kReference;
@@ -36,20 +38,23 @@ TrialResult process_trial(const std::string& trial_name, const LmcRecording& rec
   if (options.length_correction && options.method == FusionMethod::kReference) {
     // The reference method is the study's algorithm, reproduced byte for byte; a correction fitted
     // on the default fusion's lengths would silently turn it into something else.
-    throw Error("a length correction applies to the default fusion only (the reference method stays the study's "
-                "algorithm): drop the length correction or use the default method");
+    throw Error(
+        "a length correction applies to the default fusion only (the reference method stays the study's "
+        "algorithm): drop the length correction or use the default method");
   }
   if (recording.rows.empty()) throw Error("the LMC recording has no data rows");
   const auto ids = recording.device_ids();
   if (!ids.empty() && ids.back() > layout.device_count()) {
-    throw Error("the recording has " + std::to_string(ids.size()) + " device(s) (highest id " + std::to_string(ids.back()) +
-                ") but layout '" + layout.name + "' has only " + std::to_string(layout.device_count()));
+    throw Error("the recording has " + std::to_string(ids.size()) + " device(s) (highest id " +
+                std::to_string(ids.back()) + ") but layout '" + layout.name + "' has only " +
+                std::to_string(layout.device_count()));
   }
   if (vicon != nullptr) {
     const double seconds = vicon->frame_count / 100.0;
     if (seconds < options.min_vicon_seconds) {
-      throw Error("the Vicon file has " + std::to_string(vicon->frame_count) + " frames (" + std::to_string(seconds).substr(0, 4) +
-                  " s at 100 Hz), shorter than " + std::to_string(options.min_vicon_seconds).substr(0, 3) + " s");
+      throw Error("the Vicon file has " + std::to_string(vicon->frame_count) + " frames (" +
+                  std::to_string(seconds).substr(0, 4) + " s at 100 Hz), shorter than " +
+                  std::to_string(options.min_vicon_seconds).substr(0, 3) + " s");
     }
   }
 
@@ -106,7 +111,8 @@ TrialResult process_trial(const std::string& trial_name, const LmcRecording& rec
     apply_length_correction(r.fused, *options.length_correction);
     r.length_correction = options.length_correction;
     if (options.length_correction->fit_trial == trial_name) {
-      r.warnings.push_back("the length correction was fitted on this trial: its lengths here are not an independent test");
+      r.warnings.push_back(
+          "the length correction was fitted on this trial: its lengths here are not an independent test");
     }
   }
 

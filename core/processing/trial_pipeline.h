@@ -22,7 +22,7 @@
 namespace lmc {
 
 enum class FusionMethod { kReference, kDefault };
-const char* fusion_method_name(FusionMethod m);  // "reference", "default"
+const char* fusion_method_name(FusionMethod m);                 // "reference", "default"
 FusionMethod fusion_method_from_name(const std::string& name);  // throws lmc::Error
 
 struct ProcessOptions {
@@ -31,7 +31,8 @@ struct ProcessOptions {
   ReferenceKalmanParams kalman;
   SmootherParams smoother;
   VisibilityParams visibility{400.0, 150.0, 120.0, 10.0};  // recorded-trial analysis (docs/algorithms/visibility.md)
-  bool trim_to_vicon = true;  // as the study: both series cut to the shorter before fusion (docs/algorithms/processing.md, stage 7)
+  bool trim_to_vicon =
+      true;  // as the study: both series cut to the shorter before fusion (docs/algorithms/processing.md, stage 7)
   int max_lag_frames = 50;
   double min_vicon_seconds = 1.0;  // a shorter Vicon file is rejected
   // Per-subject finger-length correction applied after fusion (length_correction.h). Off unless
@@ -50,10 +51,10 @@ struct TrialResult {
   ResampleReport resample;
 
   // Intermediates.
-  GridTrial device_frame;                          // after resampling (and trimming)
-  GridTrial world;                                 // after realignment
-  std::vector<std::vector<FingerLabels>> labels;   // [device][frame]
-  HandTrack fused;                                 // after the length correction, when one was given
+  GridTrial device_frame;                             // after resampling (and trimming)
+  GridTrial world;                                    // after realignment
+  std::vector<std::vector<FingerLabels>> labels;      // [device][frame]
+  HandTrack fused;                                    // after the length correction, when one was given
   std::optional<LengthCorrection> length_correction;  // the one applied
 
   // Measures.

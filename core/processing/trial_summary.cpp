@@ -45,7 +45,10 @@ nlohmann::json trial_summary_json(const TrialResult& r) {
   nlohmann::json j;
   j["format"] = 1;
   j["trial"] = r.tag.trial;
-  j["tag"] = {{"layout", r.tag.layout}, {"pose", r.tag.pose}, {"motion", r.tag.motion}, {"repetition", r.tag.repetition},
+  j["tag"] = {{"layout", r.tag.layout},
+              {"pose", r.tag.pose},
+              {"motion", r.tag.motion},
+              {"repetition", r.tag.repetition},
               {"parsed", r.tag.parsed}};
   j["lmc_file"] = r.lmc_source;
   j["vicon_file"] = r.has_vicon ? nlohmann::json(r.vicon_source) : nlohmann::json(nullptr);
@@ -53,7 +56,9 @@ nlohmann::json trial_summary_json(const TrialResult& r) {
   if (r.length_correction) j["length_correction"] = length_correction_json(*r.length_correction);
   j["layout"] = r.layout_name;
   j["layout_source"] = r.layout_source;
-  j["input_kind"] = r.input_kind == RecordingKind::kRaw ? "raw" : r.input_kind == RecordingKind::kResampled ? "resampled" : "raytraced";
+  j["input_kind"] = r.input_kind == RecordingKind::kRaw         ? "raw"
+                    : r.input_kind == RecordingKind::kResampled ? "resampled"
+                                                                : "raytraced";
   j["frames"] = r.fused.frame_count;
   j["lmc_frames_before_trim"] = r.lmc_frames_before_trim;
   j["warnings"] = r.warnings;
@@ -88,8 +93,12 @@ nlohmann::json trial_summary_json(const TrialResult& r) {
     j["vicon_frames_before_trim"] = r.vicon_frames_before_trim;
     const auto& c = r.comparison;
     j["comparison"] = {{"frames", c.frames},
-                       {"lag", {{"valid", c.lag.valid}, {"clear", c.lag.clear}, {"frames", c.lag.lag_frames}, {"ms", c.lag.lag_frames * 10},
-                                {"correlation", c.lag.correlation}}},
+                       {"lag",
+                        {{"valid", c.lag.valid},
+                         {"clear", c.lag.clear},
+                         {"frames", c.lag.lag_frames},
+                         {"ms", c.lag.lag_frames * 10},
+                         {"correlation", c.lag.correlation}}},
                        {"finger_diff_mean_mm", arr(c.finger_diff_mean)},
                        {"finger_diff_sd_mm", arr(c.finger_diff_sd)},
                        {"finger_mean_diff_mm", arr(c.finger_mean_diff)},

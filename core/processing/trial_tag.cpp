@@ -1,7 +1,7 @@
 #include "core/processing/trial_tag.h"
 
-#include <filesystem>
 #include <cctype>
+#include <filesystem>
 
 namespace lmc {
 
@@ -68,7 +68,8 @@ TrialTag parse_trial_tag(const std::string& file_or_name) {
     if (!std::isdigit(static_cast<unsigned char>(c))) return tag;
   }
   if (digits[0] != '1' && digits[0] != '2') return tag;
-  if (motion != "static" && motion != "index" && motion != "thumb" && motion != "wrist" && motion != "trial") return tag;
+  if (motion != "static" && motion != "index" && motion != "thumb" && motion != "wrist" && motion != "trial")
+    return tag;
   tag.motion = motion == "trial" ? "dynamic" : motion;
   tag.pose = digits[0] == '1' ? "horizontal" : "vertical";
   tag.repetition = std::stoi(digits.substr(1));

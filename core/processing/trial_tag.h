@@ -12,7 +12,7 @@
 namespace lmc {
 
 struct TrialTag {
-  std::string trial;            // the trial name proper, e.g. "Naiv_Static101"
+  std::string trial;  // the trial name proper, e.g. "Naiv_Static101"
   std::string layout = "unknown";
   std::string pose = "unknown";
   std::string motion = "unknown";

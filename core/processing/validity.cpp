@@ -53,7 +53,8 @@ MethodValidity method_validity(const TrialResult& r) {
   v.method = r.method;
   for (int f = 0; f < kNumFingers; ++f) {
     v.finger_mean[static_cast<size_t>(f)] = r.lmc_stats.finger_mean[static_cast<size_t>(f)];
-    v.vicon_finger_mean[static_cast<size_t>(f)] = r.has_vicon ? r.vicon_stats.finger_mean[static_cast<size_t>(f)] : kNaN;
+    v.vicon_finger_mean[static_cast<size_t>(f)] =
+        r.has_vicon ? r.vicon_stats.finger_mean[static_cast<size_t>(f)] : kNaN;
   }
   v.finger_bias.fill(kNaN);
   v.finger_rmse.fill(kNaN);
@@ -61,12 +62,14 @@ MethodValidity method_validity(const TrialResult& r) {
   v.angle_rmse.fill(kNaN);
   if (r.has_vicon) {
     for (int f = 0; f < kNumFingers; ++f) {
-      validity_bias_rmse(r, [f](const FrameMeasures& m) { return m.finger_mm[static_cast<size_t>(f)]; },
-                         v.finger_bias[static_cast<size_t>(f)], v.finger_rmse[static_cast<size_t>(f)]);
+      validity_bias_rmse(
+          r, [f](const FrameMeasures& m) { return m.finger_mm[static_cast<size_t>(f)]; },
+          v.finger_bias[static_cast<size_t>(f)], v.finger_rmse[static_cast<size_t>(f)]);
     }
     for (int a = 0; a < kNumAngles; ++a) {
-      validity_bias_rmse(r, [a](const FrameMeasures& m) { return m.angle_deg[static_cast<size_t>(a)]; },
-                         v.angle_bias[static_cast<size_t>(a)], v.angle_rmse[static_cast<size_t>(a)]);
+      validity_bias_rmse(
+          r, [a](const FrameMeasures& m) { return m.angle_deg[static_cast<size_t>(a)]; },
+          v.angle_bias[static_cast<size_t>(a)], v.angle_rmse[static_cast<size_t>(a)]);
     }
   }
   v.consensus = consensus_report(r.world.devices, r.labels, r.fused);

@@ -13,8 +13,8 @@ namespace lmc {
 
 struct MethodValidity {
   FusionMethod method = FusionMethod::kDefault;
-  std::string label;  // the rows' short name for it; empty: the method's own ("default")
-  std::array<double, kNumFingers> finger_mean{};                 // fused, all frames with a hand
+  std::string label;                              // the rows' short name for it; empty: the method's own ("default")
+  std::array<double, kNumFingers> finger_mean{};  // fused, all frames with a hand
   std::array<double, kNumFingers> vicon_finger_mean{};           // NaN without Vicon
   std::array<double, kNumFingers> finger_bias{}, finger_rmse{};  // LMC − Vicon per frame
   std::array<double, kNumAngles> angle_bias{}, angle_rmse{};

@@ -6,7 +6,9 @@
 
 namespace lmc {
 
-VisibilityParams recorded_trial_visibility_params() { return VisibilityParams{400.0, 150.0, 120.0, 10.0}; }
+VisibilityParams recorded_trial_visibility_params() {
+  return VisibilityParams{400.0, 150.0, 120.0, 10.0};
+}
 
 FingerLabels frame_visibility_labels(const PreparedFrame& frame, bool hand, const VisibilityLimits& limits) {
   FingerLabels row;

@@ -6,8 +6,8 @@
 // but hidden (the value came from the controller's internal model), −1 no hand.
 #include <vector>
 
-#include "core/io/lmc_recording.h"
 #include "core/hand/hand_track.h"
+#include "core/io/lmc_recording.h"
 #include "core/visibility/frame_prep.h"
 #include "core/visibility/visibility_params.h"
 

@@ -10,10 +10,7 @@
 #include "core/metric/robust_metric.h"
 
 namespace lmc {
-namespace {
-
-
-}  // namespace
+namespace {}  // namespace
 
 figures::Figure layout_top_view(const Layout& layout, const PoseSet& poses, int max_hand_points) {
   figures::Figure f;
@@ -66,7 +63,8 @@ figures::Figure layout_top_view(const Layout& layout, const PoseSet& poses, int 
   }
   f.series.push_back(std::move(hands));
   f.notes.push_back("Boxes: the controllers' footprints; lines: each viewing axis followed up to the hands'");
-  f.notes.push_back("mean palm height (" + std::to_string(static_cast<int>(std::lround(height))) + " mm); grey: the pose set's palm positions.");
+  f.notes.push_back("mean palm height (" + std::to_string(static_cast<int>(std::lround(height))) +
+                    " mm); grey: the pose set's palm positions.");
   return f;
 }
 
@@ -88,7 +86,8 @@ figures::Figure pose_redundancy_figure(const LayoutReport& r) {
   // Three poses a line: the notes are written under the chart at its width.
   std::string line;
   for (size_t p = 0; p < r.poses.size(); ++p) {
-    line += (line.empty() ? "" : "; ") + std::to_string(p + 1) + " " + std::string(orientation_words(r.poses[p].orientation)) + ", " +
+    line += (line.empty() ? "" : "; ") + std::to_string(p + 1) + " " +
+            std::string(orientation_words(r.poses[p].orientation)) + ", " +
             std::string(motion_words(r.poses[p].motion));
     if (p % 3 == 2 || p + 1 == r.poses.size()) {
       f.notes.push_back(line);
@@ -122,7 +121,8 @@ figures::Heatmap finger_coverage_heatmap(const LayoutReport& r) {
     }
   }
   h.panels = {std::move(one), std::move(two)};
-  h.notes.push_back("A cell: the share of that pose's frames in which the finger is seen by ≥ 1 controller (top), ≥ 2 (bottom).");
+  h.notes.push_back(
+      "A cell: the share of that pose's frames in which the finger is seen by ≥ 1 controller (top), ≥ 2 (bottom).");
   h.notes.push_back(std::to_string(fewest) + (fewest == most ? "" : "–" + std::to_string(most)) +
                     " frames a pose (the set's frames labelled with it); pose set: " + r.poses_description + ".");
   return h;

@@ -12,7 +12,8 @@
 
 namespace lmc {
 
-std::filesystem::path write_layout_report_files(const std::filesystem::path& dir, const Layout& layout, const PoseSet& poses,
-                                                const LayoutReport& report, double phalanx_radius_mm);
+std::filesystem::path write_layout_report_files(const std::filesystem::path& dir, const Layout& layout,
+                                                const PoseSet& poses, const LayoutReport& report,
+                                                double phalanx_radius_mm);
 
 }  // namespace lmc

@@ -30,11 +30,14 @@ nlohmann::json file_identity(const fs::path& p) {
   const auto size = fs::file_size(p, ec);
   j["size"] = ec ? nlohmann::json(nullptr) : nlohmann::json(static_cast<std::uint64_t>(size));
   const auto mtime = fs::last_write_time(p, ec);
-  j["mtime"] = ec ? nlohmann::json(nullptr) : nlohmann::json(static_cast<std::int64_t>(mtime.time_since_epoch().count()));
+  j["mtime"] =
+      ec ? nlohmann::json(nullptr) : nlohmann::json(static_cast<std::int64_t>(mtime.time_since_epoch().count()));
   return j;
 }
 
-nlohmann::json optional_file(const std::optional<fs::path>& p) { return p ? file_identity(*p) : nlohmann::json(nullptr); }
+nlohmann::json optional_file(const std::optional<fs::path>& p) {
+  return p ? file_identity(*p) : nlohmann::json(nullptr);
+}
 
 // FNV-1a, 64 bit: stable across runs and machines (std::hash is not), enough to name a file; the
 // stored key decides whether an entry really matches.
@@ -50,8 +53,9 @@ std::string fnv1a_hex(const std::string& text) {
 }
 
 nlohmann::json outcome_json(const ProcessedTrial& o) {
-  return {{"trial", o.trial}, {"ok", o.ok},           {"error", o.error},          {"warnings", o.warnings},
-          {"summary", o.summary}, {"layout_used", o.layout_used}, {"has_vicon", o.has_vicon}};
+  return {{"trial", o.trial},        {"ok", o.ok},           {"error", o.error},
+          {"warnings", o.warnings},  {"summary", o.summary}, {"layout_used", o.layout_used},
+          {"has_vicon", o.has_vicon}};
 }
 
 ProcessedTrial outcome_from_json(const nlohmann::json& j) {
@@ -79,7 +83,8 @@ nlohmann::json processing_cache_key(const TrialSources& job, const BatchOptions&
   // A layout named by path can change under the same name: its identity goes in, not its name.
   if (options.layout) {
     std::error_code ec;
-    k["layout"] = fs::is_regular_file(*options.layout, ec) ? file_identity(*options.layout) : nlohmann::json(*options.layout);
+    k["layout"] =
+        fs::is_regular_file(*options.layout, ec) ? file_identity(*options.layout) : nlohmann::json(*options.layout);
   } else {
     k["layout"] = nullptr;
   }
@@ -93,7 +98,9 @@ ProcessingCache ProcessingCache::in_user_cache() {
   return ProcessingCache(base.empty() ? fs::path() : base / "processed");
 }
 
-fs::path ProcessingCache::entry_path(const nlohmann::json& key) const { return dir_ / (fnv1a_hex(key.dump()) + ".json"); }
+fs::path ProcessingCache::entry_path(const nlohmann::json& key) const {
+  return dir_ / (fnv1a_hex(key.dump()) + ".json");
+}
 
 std::optional<ProcessedTrial> ProcessingCache::find(const nlohmann::json& key) const {
   if (dir_.empty()) return std::nullopt;
@@ -103,7 +110,8 @@ std::optional<ProcessedTrial> ProcessingCache::find(const nlohmann::json& key) c
   text << in.rdbuf();
   // A damaged or foreign entry is a miss: the trial is processed again and the entry rewritten.
   const nlohmann::json entry = nlohmann::json::parse(text.str(), nullptr, false);
-  if (!entry.is_object() || entry.value("format", "") != kCacheFormat || entry.value("format_version", 0) != kCacheFormatVersion) {
+  if (!entry.is_object() || entry.value("format", "") != kCacheFormat ||
+      entry.value("format_version", 0) != kCacheFormatVersion) {
     return std::nullopt;
   }
   if (!entry.contains("key") || entry["key"] != key || !entry.contains("outcome")) return std::nullopt;
@@ -118,7 +126,9 @@ std::optional<std::string> ProcessingCache::store(const nlohmann::json& key, con
   if (dir_.empty()) return std::nullopt;
   try {
     fs::create_directories(dir_);
-    const nlohmann::json entry = {{"format", kCacheFormat}, {"format_version", kCacheFormatVersion}, {"key", key},
+    const nlohmann::json entry = {{"format", kCacheFormat},
+                                  {"format_version", kCacheFormatVersion},
+                                  {"key", key},
                                   {"outcome", outcome_json(outcome)}};
     write_file_atomically(entry_path(key), entry.dump() + "\n");
   } catch (const std::exception& e) {

@@ -41,7 +41,7 @@ class ProcessingCache {
 
 struct CachedBatch {
   std::vector<ProcessedTrial> outcomes;  // in job order
-  std::vector<bool> from_cache;        // per outcome
+  std::vector<bool> from_cache;          // per outcome
   std::vector<std::string> cache_warnings;
 };
 

@@ -30,10 +30,16 @@ MeanSd mean_sd(const std::vector<double>& v) {
 
 namespace {
 
-double num(const nlohmann::json& j) { return j.is_number() ? j.get<double>() : kNaN; }
-double at(const nlohmann::json& j, const char* key, size_t k) { return summary_element(j, key, k); }
+double num(const nlohmann::json& j) {
+  return j.is_number() ? j.get<double>() : kNaN;
+}
+double at(const nlohmann::json& j, const char* key, size_t k) {
+  return summary_element(j, key, k);
+}
 
-std::string f3(double v) { return format_fixed(v, 3); }
+std::string f3(double v) {
+  return format_fixed(v, 3);
+}
 // A missing mean or SD (no value, or a single value has no SD) is written "n/a", never "nan" or 0.
 std::string pm(const MeanSd& m, int d = 2) {
   const auto part = [d](double v) { return std::isfinite(v) ? format_fixed(v, d) : std::string("n/a"); };
@@ -109,14 +115,15 @@ SessionReport build_session_report(const std::vector<ReportInput>& inputs) {
         vis_by_layout[std::get<0>(g)].push_back(r);
       }
     }
-    trials << csv_cell(in.subject) << ',' << csv_cell(s.value("trial", "")) << ',' << std::get<0>(g) << ',' << std::get<1>(g)
-           << ',' << std::get<2>(g) << ',' << tag.value("repetition", 0) << ',' << s.value("method", "") << ','
-           << s.value("frames", 0) << ',' << (vic ? 1 : 0);
+    trials << csv_cell(in.subject) << ',' << csv_cell(s.value("trial", "")) << ',' << std::get<0>(g) << ','
+           << std::get<1>(g) << ',' << std::get<2>(g) << ',' << tag.value("repetition", 0) << ','
+           << s.value("method", "") << ',' << s.value("frames", 0) << ',' << (vic ? 1 : 0);
     for (size_t k = 0; k < kNumFingers; ++k) trials << ',' << f3(at(lmc, "finger_mean_mm", k));
     for (size_t k = 0; k < kNumFingers; ++k) trials << ',' << f3(vic ? at(vicon, "finger_mean_mm", k) : kNaN);
     for (size_t k = 0; k < kNumAngles; ++k) trials << ',' << f3(at(lmc, "angle_rom_deg", k));
     for (size_t k = 0; k < kNumAngles; ++k) trials << ',' << f3(vic ? at(vicon, "angle_rom_deg", k) : kNaN);
-    const auto lag = s.contains("comparison") ? s["comparison"].value("lag", nlohmann::json::object()) : nlohmann::json::object();
+    const auto lag =
+        s.contains("comparison") ? s["comparison"].value("lag", nlohmann::json::object()) : nlohmann::json::object();
     trials << ',' << (lag.value("clear", false) ? std::to_string(lag.value("frames", 0)) : std::string("nan")) << ','
            << f3(lag.contains("correlation") ? num(lag["correlation"]) : kNaN) << '\n';
   }
@@ -124,32 +131,35 @@ SessionReport build_session_report(const std::vector<ReportInput>& inputs) {
 
   std::ostringstream fl, ja, vis, md;
   fl << "layout,pose,motion,finger,trials,lmc_mean_mm,lmc_sd_mm,vicon_mean_mm,vicon_sd_mm,diff_mean_mm,diff_sd_mm\n";
-  ja << "layout,pose,motion,joint,trials,lmc_rom_mean_deg,lmc_rom_sd_deg,vicon_rom_mean_deg,vicon_rom_sd_deg,rom_diff_mean_deg,"
+  ja << "layout,pose,motion,joint,trials,lmc_rom_mean_deg,lmc_rom_sd_deg,vicon_rom_mean_deg,vicon_rom_sd_deg,rom_diff_"
+        "mean_deg,"
         "rom_diff_sd_deg,frame_angle_diff_mean_deg,frame_angle_diff_sd_deg\n";
   vis << "layout,pose,motion,device,values,rate_mean,rate_sd\n";
 
   md << "# Processing report\n\n" << rep.trials << " trial(s), " << rep.trials_with_vicon << " with Vicon.\n\n";
   md << "Differences are LMC − Vicon (the paper quotes Vicon − LMC for finger length).\n\n";
-  md << "* Finger length difference, all fingers and trials: " << pm(mean_sd(all_finger_diff)) << " mm (n = "
-     << mean_sd(all_finger_diff).n << ")\n";
-  md << "* Joint angle difference (per frame, averaged per trial), all joints and trials: " << pm(mean_sd(all_angle_diff))
-     << "° (n = " << mean_sd(all_angle_diff).n << ")\n";
-  md << "* Range-of-motion difference, all joints and trials: " << pm(mean_sd(all_rom_diff)) << "° (n = "
-     << mean_sd(all_rom_diff).n << ")\n";
-  for (const auto& [layout, v] : vis_by_layout) md << "* Visibility rate, layout " << layout << ": " << pm(mean_sd(v)) << "\n";
+  md << "* Finger length difference, all fingers and trials: " << pm(mean_sd(all_finger_diff))
+     << " mm (n = " << mean_sd(all_finger_diff).n << ")\n";
+  md << "* Joint angle difference (per frame, averaged per trial), all joints and trials: "
+     << pm(mean_sd(all_angle_diff)) << "° (n = " << mean_sd(all_angle_diff).n << ")\n";
+  md << "* Range-of-motion difference, all joints and trials: " << pm(mean_sd(all_rom_diff))
+     << "° (n = " << mean_sd(all_rom_diff).n << ")\n";
+  for (const auto& [layout, v] : vis_by_layout)
+    md << "* Visibility rate, layout " << layout << ": " << pm(mean_sd(v)) << "\n";
   md << "\n## Finger length (mm): LMC, Vicon, LMC − Vicon (mean ± SD over trials)\n\n";
   md << "| layout | pose | motion | n | finger | LMC | Vicon | LMC − Vicon |\n|---|---|---|---:|---|---:|---:|---:|\n";
   for (const auto& [g, acc] : groups) {
     const auto& [layout, pose, motion] = g;
     for (size_t k = 0; k < kNumFingers; ++k) {
       const MeanSd l = mean_sd(acc.finger_lmc[k]), v = mean_sd(acc.finger_vicon[k]), d = mean_sd(acc.finger_diff[k]);
-      fl << layout << ',' << pose << ',' << motion << ',' << kFingers[k] << ',' << acc.trials << ',' << f3(l.mean) << ','
-         << f3(l.sd) << ',' << f3(v.mean) << ',' << f3(v.sd) << ',' << f3(d.mean) << ',' << f3(d.sd) << '\n';
-      md << "| " << layout << " | " << pose << " | " << motion << " | " << acc.trials << " | " << kFingers[k] << " | " << pm(l)
-         << " | " << pm(v) << " | " << pm(d) << " |\n";
+      fl << layout << ',' << pose << ',' << motion << ',' << kFingers[k] << ',' << acc.trials << ',' << f3(l.mean)
+         << ',' << f3(l.sd) << ',' << f3(v.mean) << ',' << f3(v.sd) << ',' << f3(d.mean) << ',' << f3(d.sd) << '\n';
+      md << "| " << layout << " | " << pose << " | " << motion << " | " << acc.trials << " | " << kFingers[k] << " | "
+         << pm(l) << " | " << pm(v) << " | " << pm(d) << " |\n";
     }
   }
-  md << "\n## Joint angles (°): range of motion LMC, Vicon, LMC − Vicon, and the angle difference LMC − Vicon per frame "
+  md << "\n## Joint angles (°): range of motion LMC, Vicon, LMC − Vicon, and the angle difference LMC − Vicon per "
+        "frame "
         "averaged per trial (mean ± SD over trials)\n\n";
   md << "| layout | pose | motion | joint | ROM LMC | ROM Vicon | ROM LMC − Vicon | angle LMC − Vicon |\n"
         "|---|---|---|---|---:|---:|---:|---:|\n";
@@ -159,10 +169,10 @@ SessionReport build_session_report(const std::vector<ReportInput>& inputs) {
       const MeanSd l = mean_sd(acc.rom_lmc[k]), v = mean_sd(acc.rom_vicon[k]), d = mean_sd(acc.rom_diff[k]);
       const MeanSd fa = mean_sd(acc.angle_diff[k]);
       ja << layout << ',' << pose << ',' << motion << ',' << angle_name(static_cast<int>(k)) << ',' << acc.trials << ','
-         << f3(l.mean) << ',' << f3(l.sd) << ',' << f3(v.mean) << ',' << f3(v.sd) << ',' << f3(d.mean) << ',' << f3(d.sd) << ','
-         << f3(fa.mean) << ',' << f3(fa.sd) << '\n';
-      md << "| " << layout << " | " << pose << " | " << motion << " | " << angle_name(static_cast<int>(k)) << " | " << pm(l)
-         << " | " << pm(v) << " | " << pm(d) << " | " << pm(fa) << " |\n";
+         << f3(l.mean) << ',' << f3(l.sd) << ',' << f3(v.mean) << ',' << f3(v.sd) << ',' << f3(d.mean) << ','
+         << f3(d.sd) << ',' << f3(fa.mean) << ',' << f3(fa.sd) << '\n';
+      md << "| " << layout << " | " << pose << " | " << motion << " | " << angle_name(static_cast<int>(k)) << " | "
+         << pm(l) << " | " << pm(v) << " | " << pm(d) << " | " << pm(fa) << " |\n";
     }
   }
   md << "\n## Visibility rate per device (mean ± SD over fingers and trials; −1 = never saw the hand)\n\n";
@@ -171,7 +181,8 @@ SessionReport build_session_report(const std::vector<ReportInput>& inputs) {
     const auto& [layout, pose, motion] = g;
     for (const auto& [dev, v] : acc.vis) {
       const MeanSd m = mean_sd(v);
-      vis << layout << ',' << pose << ',' << motion << ',' << dev << ',' << m.n << ',' << f3(m.mean) << ',' << f3(m.sd) << '\n';
+      vis << layout << ',' << pose << ',' << motion << ',' << dev << ',' << m.n << ',' << f3(m.mean) << ',' << f3(m.sd)
+          << '\n';
       md << "| " << layout << " | " << pose << " | " << motion << " | " << dev << " | " << pm(m) << " |\n";
     }
   }

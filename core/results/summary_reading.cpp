@@ -10,9 +10,7 @@ bool summary_has_vicon(const nlohmann::json& summary) {
 }
 
 double summary_element(const nlohmann::json& stats, const char* key, std::size_t k) {
-  if (!stats.is_object() || !stats.contains(key) || !stats[key].is_array() ||
-      k >= stats[key].size())
-    return kNaN;
+  if (!stats.is_object() || !stats.contains(key) || !stats[key].is_array() || k >= stats[key].size()) return kNaN;
   const auto& v = stats[key][k];
   return v.is_number() ? v.get<double>() : kNaN;
 }

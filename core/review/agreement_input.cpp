@@ -10,7 +10,6 @@ namespace lmc {
 
 namespace {
 
-
 std::array<AgreementMeasure, kAgreementMeasures> make_agreement_measures() {
   std::array<AgreementMeasure, kAgreementMeasures> m;
   std::size_t i = 0;
@@ -35,8 +34,7 @@ const std::array<AgreementMeasure, kAgreementMeasures>& agreement_measures() {
 AgreementTrial agreement_trial(std::string subject, nlohmann::json summary) {
   AgreementTrial t;
   t.subject = std::move(subject);
-  const auto tag = summary.is_object() ? summary.value("tag", nlohmann::json::object())
-                                       : nlohmann::json::object();
+  const auto tag = summary.is_object() ? summary.value("tag", nlohmann::json::object()) : nlohmann::json::object();
   if (summary.is_object() && summary.contains("trial") && summary["trial"].is_string())
     t.trial = summary["trial"].get<std::string>();
   t.layout = tag.value("layout", "unknown");

@@ -40,8 +40,8 @@ MeasureAgreement agree_on_measure(const AgreementRows& rows, std::size_t i) {
   m.n_subjects = pairs_per_subject.size();
   bool repeated = false;
   for (const auto& [subject, n] : pairs_per_subject) repeated = repeated || n > 1;
-  m.bland_altman = repeated ? stats::bland_altman_repeated(observations)
-                            : stats::bland_altman(lmc_values, vicon_values);
+  m.bland_altman =
+      repeated ? stats::bland_altman_repeated(observations) : stats::bland_altman(lmc_values, vicon_values);
   m.differences = stats::describe_pairs(lmc_values, vicon_values);
   m.pearson = stats::pearson(lmc_values, vicon_values);
 
@@ -74,8 +74,7 @@ AgreementGroup agree_on_group(std::string layout, std::string pose, const Agreem
   std::set<std::string> subjects;
   for (const PairedTrial* t : rows) subjects.insert(t->subject);
   g.n_subjects = subjects.size();
-  for (std::size_t i = 0; i < kAgreementMeasures; ++i)
-    g.measures.push_back(agree_on_measure(rows, i));
+  for (std::size_t i = 0; i < kAgreementMeasures; ++i) g.measures.push_back(agree_on_measure(rows, i));
   return g;
 }
 
@@ -100,8 +99,7 @@ std::string agreement_notes(const MeasureAgreement& m) {
 
 }  // namespace
 
-AgreementTable agreement_table(const std::vector<AgreementTrial>& trials,
-                               const AgreementOptions& options) {
+AgreementTable agreement_table(const std::vector<AgreementTrial>& trials, const AgreementOptions& options) {
   AgreementTable table;
   std::vector<AgreementTrial> selected;
   for (const AgreementTrial& t : trials)
@@ -116,8 +114,7 @@ AgreementTable agreement_table(const std::vector<AgreementTrial>& trials,
     groups[{t.layout, t.pose}].push_back(&t);
     all.push_back(&t);
   }
-  for (const auto& [key, rows] : groups)
-    table.groups.push_back(agree_on_group(key.first, key.second, rows));
+  for (const auto& [key, rows] : groups) table.groups.push_back(agree_on_group(key.first, key.second, rows));
   if (options.include_all_group) table.groups.push_back(agree_on_group("all", "all", all));
   return table;
 }
@@ -137,17 +134,14 @@ std::string agreement_csv(const AgreementTable& table) {
     for (const MeasureAgreement& m : g.measures) {
       const auto& ba = m.bland_altman;
       const auto& d = m.differences;
-      csv << csv_cell(g.layout) << ',' << csv_cell(g.pose) << ',' << m.measure.name << ','
-          << m.measure.quantity << ',' << m.measure.part << ',' << m.measure.unit << ','
-          << m.n_trials << ',' << m.n_skipped << ',' << m.n_subjects;
-      for (double v :
-           {d.mean_a, d.mean_b, d.mean_difference, d.sd_difference, d.mean_abs_difference, d.rmse})
+      csv << csv_cell(g.layout) << ',' << csv_cell(g.pose) << ',' << m.measure.name << ',' << m.measure.quantity << ','
+          << m.measure.part << ',' << m.measure.unit << ',' << m.n_trials << ',' << m.n_skipped << ',' << m.n_subjects;
+      for (double v : {d.mean_a, d.mean_b, d.mean_difference, d.sd_difference, d.mean_abs_difference, d.rmse})
         csv << ',' << agreement_number(v);
       csv << ',' << csv_cell(ba.method);
-      for (double v : {ba.bias, ba.bias_ci.low, ba.bias_ci.high, ba.sd_difference, ba.loa_low,
-                       ba.loa_low_ci.low, ba.loa_low_ci.high, ba.loa_high, ba.loa_high_ci.low,
-                       ba.loa_high_ci.high, ba.within_subject_sd, ba.between_subject_sd,
-                       m.pearson.r, m.pearson.ci.low, m.pearson.ci.high})
+      for (double v : {ba.bias, ba.bias_ci.low, ba.bias_ci.high, ba.sd_difference, ba.loa_low, ba.loa_low_ci.low,
+                       ba.loa_low_ci.high, ba.loa_high, ba.loa_high_ci.low, ba.loa_high_ci.high, ba.within_subject_sd,
+                       ba.between_subject_sd, m.pearson.r, m.pearson.ci.low, m.pearson.ci.high})
         csv << ',' << agreement_number(v);
       csv << ',' << csv_cell(m.icc.form) << ',' << csv_cell(m.icc.description);
       for (double v : {m.icc.value, m.icc.ci.low, m.icc.ci.high}) csv << ',' << agreement_number(v);
@@ -158,8 +152,7 @@ std::string agreement_csv(const AgreementTable& table) {
 }
 
 void to_json(nlohmann::json& j, const AgreementPoint& p) {
-  j = nlohmann::json{
-      {"mean", p.mean}, {"difference", p.difference}, {"subject", p.subject}, {"trial", p.trial}};
+  j = nlohmann::json{{"mean", p.mean}, {"difference", p.difference}, {"subject", p.subject}, {"trial", p.trial}};
 }
 
 void to_json(nlohmann::json& j, const MeasureAgreement& m) {
@@ -181,8 +174,7 @@ void to_json(nlohmann::json& j, const AgreementGroup& g) {
 }
 
 void to_json(nlohmann::json& j, const AgreementTable& t) {
-  j = nlohmann::json{
-      {"trials", t.trials}, {"trials_without_vicon", t.trials_without_vicon}, {"groups", t.groups}};
+  j = nlohmann::json{{"trials", t.trials}, {"trials_without_vicon", t.trials_without_vicon}, {"groups", t.groups}};
 }
 
 }  // namespace lmc

@@ -68,8 +68,7 @@ struct AgreementTable {
   std::size_t trials_without_vicon = 0;
 };
 
-AgreementTable agreement_table(const std::vector<AgreementTrial>& trials,
-                               const AgreementOptions& options = {});
+AgreementTable agreement_table(const std::vector<AgreementTrial>& trials, const AgreementOptions& options = {});
 
 // One header row, then one row per group × measure. Missing numbers are empty cells (never 0);
 // the Bland–Altman method and the ICC form are written out so the table says how it was computed.

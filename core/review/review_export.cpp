@@ -30,7 +30,8 @@ std::vector<fs::path> write_review_exports(const fs::path& dir, const ReviewExpo
   std::vector<fs::path> written;
   const AgreementTable table = agreement_table(in.trials, in.agreement);
   nlohmann::json params = in.parameters;
-  params["agreement_motion"] = in.agreement.motion.empty() ? nlohmann::json("all") : nlohmann::json(in.agreement.motion);
+  params["agreement_motion"] =
+      in.agreement.motion.empty() ? nlohmann::json("all") : nlohmann::json(in.agreement.motion);
   write_text(written, dir / "agreement.csv", agreement_csv(table));
   write_text(written, dir / "agreement.json", nlohmann::json(table).dump(2) + "\n");
   for (const auto& group : table.groups) {
@@ -58,9 +59,9 @@ std::vector<fs::path> write_review_exports(const fs::path& dir, const ReviewExpo
   return written;
 }
 
-std::vector<fs::path> write_trial_export(const fs::path& dir, const TrialSeries& series, const std::vector<std::string>& inputs,
-                                         const std::string& method, const nlohmann::json& parameters, bool each_controller,
-                                         std::stop_token stop) {
+std::vector<fs::path> write_trial_export(const fs::path& dir, const TrialSeries& series,
+                                         const std::vector<std::string>& inputs, const std::string& method,
+                                         const nlohmann::json& parameters, bool each_controller, std::stop_token stop) {
   if (stop.stop_requested()) return {};
   fs::create_directories(dir);
   std::vector<fs::path> written;

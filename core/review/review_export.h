@@ -23,16 +23,16 @@ namespace lmc {
 struct ReviewExportInput {
   std::vector<AgreementTrial> trials;  // processed trials (their summaries)
   AgreementOptions agreement;
-  std::vector<std::string> inputs;     // the folders or files they came from, for the sidecars
-  std::string method;                  // the fusion method's name
+  std::vector<std::string> inputs;                       // the folders or files they came from, for the sidecars
+  std::string method;                                    // the fusion method's name
   nlohmann::json parameters = nlohmann::json::object();  // processing parameters (process_options_json)
 };
 
 // Writes into `dir` (created when missing); returns the files written. Throws lmc::Error naming the
 // file when a write fails; files already written stay (each is written atomically). A stop request
 // is honoured between files: what was written is complete, the rest is not started.
-std::vector<std::filesystem::path> write_review_exports(const std::filesystem::path& dir, const ReviewExportInput& input,
-                                                        std::stop_token stop = {});
+std::vector<std::filesystem::path> write_review_exports(const std::filesystem::path& dir,
+                                                        const ReviewExportInput& input, std::stop_token stop = {});
 
 std::vector<std::filesystem::path> write_trial_export(const std::filesystem::path& dir, const TrialSeries& series,
                                                       const std::vector<std::string>& inputs, const std::string& method,

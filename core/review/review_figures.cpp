@@ -44,14 +44,15 @@ figures::FigureGrid trial_figure(const TrialSeries& s, bool each_controller) {
     if (s.has_vicon) f.series.push_back(time_series("Vicon", s.time_s, pick(s.vicon), kViconSlot));
     if (each_controller) {
       for (std::size_t d = 0; d < s.devices.size(); ++d) {
-        f.series.push_back(time_series("LMC" + std::to_string(s.devices[d].device_id), s.time_s, pick(s.devices[d].measures),
-                                       kFirstDeviceSlot + d));
+        f.series.push_back(time_series("LMC" + std::to_string(s.devices[d].device_id), s.time_s,
+                                       pick(s.devices[d].measures), kFirstDeviceSlot + d));
       }
     }
     grid.panels.push_back(std::move(f));
   };
   for (int a = 0; a < kNumAngles; ++a) {
-    panel(std::string(angle_name(a)), "deg", [a](const MeasureSeries& m) -> const std::vector<double>& { return m.angle_deg[a]; });
+    panel(std::string(angle_name(a)), "deg",
+          [a](const MeasureSeries& m) -> const std::vector<double>& { return m.angle_deg[a]; });
   }
   for (int k = 0; k < kNumFingers; ++k) {
     panel(std::string(digit_name(k)) + " length", "mm",
@@ -84,8 +85,10 @@ figures::Figure bland_altman_figure(const AgreementGroup& group, const MeasureAg
     f.references.push_back({b.bias, "bias " + value_text(b.bias, m.measure.unit), figures::Dash::dashed, {60, 60, 60}});
   }
   if (std::isfinite(b.loa_low)) {
-    f.references.push_back({b.loa_low, "lower " + value_text(b.loa_low, m.measure.unit), figures::Dash::dotted, {120, 120, 120}});
-    f.references.push_back({b.loa_high, "upper " + value_text(b.loa_high, m.measure.unit), figures::Dash::dotted, {120, 120, 120}});
+    f.references.push_back(
+        {b.loa_low, "lower " + value_text(b.loa_low, m.measure.unit), figures::Dash::dotted, {120, 120, 120}});
+    f.references.push_back(
+        {b.loa_high, "upper " + value_text(b.loa_high, m.measure.unit), figures::Dash::dotted, {120, 120, 120}});
   }
   f.notes.push_back(std::to_string(m.n_trials) + " trial(s) of " + std::to_string(m.n_subjects) + " subject(s); " +
                     (b.method.empty() ? std::string("Bland-Altman") : b.method));

@@ -8,7 +8,9 @@
 namespace lmc {
 namespace {
 
-double json_number_or_nan(const nlohmann::json& v) { return v.is_number() ? v.get<double>() : kNaN; }
+double json_number_or_nan(const nlohmann::json& v) {
+  return v.is_number() ? v.get<double>() : kNaN;
+}
 
 // Mean of the finite entries of a JSON array (nulls are unknown values, not zeros).
 double mean_of(const nlohmann::json& values, bool absolute) {
@@ -36,10 +38,14 @@ int pooled_count(const nlohmann::json& counts) {
 
 const char* trial_row_status_name(TrialRowStatus s) {
   switch (s) {
-    case TrialRowStatus::kOk: return "ok";
-    case TrialRowStatus::kNoVicon: return "no Vicon";
-    case TrialRowStatus::kFailed: return "failed";
-    case TrialRowStatus::kCancelled: return "cancelled";
+    case TrialRowStatus::kOk:
+      return "ok";
+    case TrialRowStatus::kNoVicon:
+      return "no Vicon";
+    case TrialRowStatus::kFailed:
+      return "failed";
+    case TrialRowStatus::kCancelled:
+      return "cancelled";
   }
   return "?";
 }
@@ -60,7 +66,8 @@ TrialRow trial_row(const std::string& subject, const std::string& trial, const n
     return row;
   }
   row.method = summary.value("method", "");
-  row.warnings = summary.contains("warnings") && summary["warnings"].is_array() ? static_cast<int>(summary["warnings"].size()) : 0;
+  row.warnings =
+      summary.contains("warnings") && summary["warnings"].is_array() ? static_cast<int>(summary["warnings"].size()) : 0;
   row.seconds = summary.value("frames", 0) / 100.0;
   if (summary.contains("visibility") && summary["visibility"].is_array()) {
     for (const auto& d : summary["visibility"]) {

@@ -80,7 +80,8 @@ std::string trial_series_csv(const TrialSeries& s) {
   if (s.has_vicon) append_measure_header(out, "vicon");
   for (const auto& d : s.devices) append_measure_header(out, "lmc" + std::to_string(d.device_id));
   for (const auto& d : s.devices) {
-    for (int f = 0; f < kNumDigits; ++f) out += ",lmc" + std::to_string(d.device_id) + "_" + std::string(digit_name(f)) + "_label";
+    for (int f = 0; f < kNumDigits; ++f)
+      out += ",lmc" + std::to_string(d.device_id) + "_" + std::string(digit_name(f)) + "_label";
   }
   out += '\n';
   for (size_t f = 0; f < s.time_s.size(); ++f) {

@@ -20,8 +20,8 @@ struct MeasureSeries {
 };
 
 struct DeviceSeries {
-  int device_id = 0;                                  // LMC1 = 1
-  MeasureSeries measures;                             // this controller alone, realigned
+  int device_id = 0;                                       // LMC1 = 1
+  MeasureSeries measures;                                  // this controller alone, realigned
   std::array<std::vector<std::int8_t>, kNumDigits> label;  // [finger][frame]: 1 seen, 0 model, −1 no hand
 };
 

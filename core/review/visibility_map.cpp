@@ -40,8 +40,7 @@ VisibilityMap visibility_map(const std::vector<AgreementTrial>& trials) {
   VisibilityMap map;
   for (const auto& [key, c] : cells) {
     const MeanSd m = mean_sd(c.rates);
-    VisibilityCell cell{
-        std::get<0>(key), std::get<1>(key), std::get<2>(key), c.trials, m.n, 0, m.mean, m.sd};
+    VisibilityCell cell{std::get<0>(key), std::get<1>(key), std::get<2>(key), c.trials, m.n, 0, m.mean, m.sd};
     for (double r : c.rates)
       if (r == -1.0) ++cell.never_saw;
     map.cells.push_back(std::move(cell));
@@ -53,16 +52,15 @@ std::string visibility_map_csv(const VisibilityMap& map) {
   std::ostringstream csv;
   csv << "device,motion,layout,trials,values,never_saw_hand,rate_mean,rate_sd\n";
   for (const VisibilityCell& c : map.cells)
-    csv << csv_cell(c.device) << ',' << csv_cell(c.motion) << ',' << csv_cell(c.layout) << ','
-        << c.trials << ',' << c.values << ',' << c.never_saw << ','
-        << visibility_number(c.rate_mean) << ',' << visibility_number(c.rate_sd) << '\n';
+    csv << csv_cell(c.device) << ',' << csv_cell(c.motion) << ',' << csv_cell(c.layout) << ',' << c.trials << ','
+        << c.values << ',' << c.never_saw << ',' << visibility_number(c.rate_mean) << ','
+        << visibility_number(c.rate_sd) << '\n';
   return csv.str();
 }
 
 void to_json(nlohmann::json& j, const VisibilityCell& c) {
-  j = nlohmann::json{{"device", c.device},       {"motion", c.motion},
-                     {"layout", c.layout},       {"trials", c.trials},
-                     {"values", c.values},       {"never_saw_hand", c.never_saw},
+  j = nlohmann::json{{"device", c.device},       {"motion", c.motion},  {"layout", c.layout},
+                     {"trials", c.trials},       {"values", c.values},  {"never_saw_hand", c.never_saw},
                      {"rate_mean", c.rate_mean}, {"rate_sd", c.rate_sd}};
 }
 

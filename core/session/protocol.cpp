@@ -42,7 +42,8 @@ TrialType trial_type_from_json(const JsonReader& r, const QualityThresholds& def
   r.only_keys({"key", "sim_motion", "duration_s", "operator_cue", "subject_cue", "rom", "quality"});
   TrialType t;
   t.key = checked_key(r, "key", "trial type key");
-  if (t.key.find('_') != std::string::npos) r.at("key").fail("a trial type key must not contain '_' (it ends the layout part of trial names)");
+  if (t.key.find('_') != std::string::npos)
+    r.at("key").fail("a trial type key must not contain '_' (it ends the layout part of trial names)");
   t.sim_motion = r.string("sim_motion");
   const JsonReader d = r.at("duration_s");
   t.duration_s = d.number();
@@ -107,12 +108,14 @@ Protocol protocol_from_json(const nlohmann::json& j, const std::string& source) 
     if (!seen.insert("pose:" + std::to_string(pose.code)).second) e.at("code").fail("pose code appears twice");
     p.poses.push_back(pose);
   }
-  const QualityThresholds defaults = r.has("quality") ? quality_thresholds_from_json(r.at("quality"), {}) : QualityThresholds{};
+  const QualityThresholds defaults =
+      r.has("quality") ? quality_thresholds_from_json(r.at("quality"), {}) : QualityThresholds{};
   const JsonReader types = r.at("trial_types");
   if (types.array_size() == 0) types.fail("a protocol needs at least one trial type");
   for (size_t i = 0; i < types.array_size(); ++i) {
     TrialType t = trial_type_from_json(types.at(i), defaults);
-    if (!seen.insert("type:" + t.key).second) types.at(i).at("key").fail("trial type key '" + t.key + "' appears twice");
+    if (!seen.insert("type:" + t.key).second)
+      types.at(i).at("key").fail("trial type key '" + t.key + "' appears twice");
     p.trial_types.push_back(std::move(t));
   }
   if (r.has("calibration")) {
@@ -136,7 +139,10 @@ Protocol protocol_from_json(const nlohmann::json& j, const std::string& source) 
 }
 
 nlohmann::json protocol_to_json(const Protocol& p) {
-  nlohmann::json j = {{"format", kFormat}, {"format_version", 1}, {"name", p.name}, {"description", p.description},
+  nlohmann::json j = {{"format", kFormat},
+                      {"format_version", 1},
+                      {"name", p.name},
+                      {"description", p.description},
                       {"repetitions", p.repetitions}};
   j["layouts"] = nlohmann::json::array();
   for (const auto& l : p.layouts) j["layouts"].push_back({{"key", l.key}, {"layout", l.layout}});
@@ -214,7 +220,8 @@ std::vector<int> order(int n, SplitMix64* rng) {
   std::vector<int> v(static_cast<size_t>(n));
   for (int i = 0; i < n; ++i) v[static_cast<size_t>(i)] = i;
   if (rng != nullptr)
-    for (int i = n - 1; i > 0; --i) std::swap(v[static_cast<size_t>(i)], v[rng->next() % static_cast<std::uint64_t>(i + 1)]);
+    for (int i = n - 1; i > 0; --i)
+      std::swap(v[static_cast<size_t>(i)], v[rng->next() % static_cast<std::uint64_t>(i + 1)]);
   return v;
 }
 

@@ -25,17 +25,17 @@ struct ProtocolLayout {
 };
 
 struct ProtocolPose {
-  std::string key;        // "horizontal", "vertical" (the simulator's motion prefix)
-  int code = 1;           // the pose digit of the trial name: 1 = horizontal, 2 = vertical
-  std::string cue;        // what the subject does with the hand, e.g. "palm facing down"
+  std::string key;  // "horizontal", "vertical" (the simulator's motion prefix)
+  int code = 1;     // the pose digit of the trial name: 1 = horizontal, 2 = vertical
+  std::string cue;  // what the subject does with the hand, e.g. "palm facing down"
 };
 
 struct TrialType {
-  std::string key;          // the motion part of the trial name: "Static", "Index", "Thumb", "Wrist"
-  std::string sim_motion;   // the simulator's motion: "static", "index", "thumb", "wrist"
+  std::string key;         // the motion part of the trial name: "Static", "Index", "Thumb", "Wrist"
+  std::string sim_motion;  // the simulator's motion: "static", "index", "thumb", "wrist"
   double duration_s = 10;
-  std::string operator_cue; // read by the operator
-  std::string subject_cue;  // shown big to the subject
+  std::string operator_cue;         // read by the operator
+  std::string subject_cue;          // shown big to the subject
   std::vector<RomExpectation> rom;  // dynamic trials: the joint(s) that should move, and how far
   QualityThresholds quality;
 };
@@ -44,30 +44,30 @@ struct TrialType {
 // still open hand from which the block's controllers are calibrated (core/calibration) before
 // its first trial; the result becomes the block's layout in the manifest.
 struct CalibrationStep {
-  double duration_s = 5;   // 2…60
+  double duration_s = 5;  // 2…60
   std::string operator_cue = "Check every controller sees the hand; keep the hand still";
   std::string subject_cue = "Hold your open hand still above the controllers";
 };
 
 struct Protocol {
-  std::string name;          // "study", "quick"
+  std::string name;  // "study", "quick"
   std::string description;
   std::optional<CalibrationStep> calibration;  // absent: blocks start without one
   std::vector<ProtocolLayout> layouts;
   std::vector<ProtocolPose> poses;
   std::vector<TrialType> trial_types;
-  int repetitions = 1;       // 1…99 (two digits in the trial name)
+  int repetitions = 1;  // 1…99 (two digits in the trial name)
 };
 
 // One trial of the plan, in the order it is recorded.
 struct PlannedTrial {
-  int index = 0;          // position in the plan
-  std::string name;       // e.g. "Naiv_Index102": <layout key>_<type key><pose code><repetition, 2 digits>
-  std::string layout_key; // the block: trials of one layout are recorded together
-  int pose = 0;           // index into Protocol::poses
-  int trial_type = 0;     // index into Protocol::trial_types
+  int index = 0;           // position in the plan
+  std::string name;        // e.g. "Naiv_Index102": <layout key>_<type key><pose code><repetition, 2 digits>
+  std::string layout_key;  // the block: trials of one layout are recorded together
+  int pose = 0;            // index into Protocol::poses
+  int trial_type = 0;      // index into Protocol::trial_types
   int repetition = 1;
-  std::string sim_motion; // "<pose key>/<type sim_motion>", e.g. "vertical/index"
+  std::string sim_motion;  // "<pose key>/<type sim_motion>", e.g. "vertical/index"
 };
 
 // Parses and validates; `source` names the file in errors ("study.json#/trial_types/2/duration_s").

@@ -38,7 +38,8 @@ nlohmann::json resolve_layout(const std::string& ref, const fs::path& protocol_f
 int take_lock(const fs::path& dir) {
   const fs::path path = dir / kLockFile;
   const int fd = ::open(path.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
-  if (fd < 0) throw Error(ErrorLocation{path.string()}, std::string("cannot create the session lock: ") + std::strerror(errno));
+  if (fd < 0)
+    throw Error(ErrorLocation{path.string()}, std::string("cannot create the session lock: ") + std::strerror(errno));
   if (::flock(fd, LOCK_EX | LOCK_NB) != 0) {
     char buf[32] = {};
     const ssize_t n = ::pread(fd, buf, sizeof buf - 1, 0);
@@ -103,7 +104,8 @@ SessionFolder SessionFolder::create(const fs::path& dir, const NewSessionSpec& s
   require_safe_name(spec.subject.subject_id, "subject id");
   std::error_code ec;
   if (fs::exists(dir, ec) && !(fs::is_directory(dir, ec) && fs::is_empty(dir, ec)))
-    throw Error(ErrorLocation{dir.string()}, "exists and is not an empty folder; a new session needs a folder of its own");
+    throw Error(ErrorLocation{dir.string()},
+                "exists and is not an empty folder; a new session needs a folder of its own");
   const fs::path protocol_file = protocol_path(spec.protocol);
   Protocol protocol = load_protocol(spec.protocol);
   if (spec.duration_override_s) {
@@ -137,8 +139,8 @@ SessionFolder SessionFolder::create(const fs::path& dir, const NewSessionSpec& s
 
 SessionFolder SessionFolder::open(const fs::path& dir) {
   if (!is_session_folder(dir))
-    throw Error(ErrorLocation{dir.string()}, std::string("not a subject session (no ") + kJournalFile +
-                                                 "); create one with `lmc session new`");
+    throw Error(ErrorLocation{dir.string()},
+                std::string("not a subject session (no ") + kJournalFile + "); create one with `lmc session new`");
   const int lock = take_lock(dir);
   try {
     const fs::path path = dir / kJournalFile;
@@ -151,11 +153,13 @@ SessionFolder SessionFolder::open(const fs::path& dir) {
       std::string fragment((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
       write_file_atomically(dir / ("journal.cut-" + utc_now_compact() + ".txt"), fragment);
       if (::truncate(path.c_str(), static_cast<off_t>(journal.complete_bytes)) != 0)
-        throw Error(ErrorLocation{path.string()}, std::string("cannot cut the journal's broken last line: ") + std::strerror(errno));
+        throw Error(ErrorLocation{path.string()},
+                    std::string("cannot cut the journal's broken last line: ") + std::strerror(errno));
     }
     SessionState state = state_from_journal(journal, path.string());
     SessionFolder folder(dir, std::move(state), JournalWriter(path, false), lock);
-    folder.record({{"type", "session_opened"}, {"software_version", LMC_VERSION}, {"pid", static_cast<int>(::getpid())}});
+    folder.record(
+        {{"type", "session_opened"}, {"software_version", LMC_VERSION}, {"pid", static_cast<int>(::getpid())}});
     // Collected first: record() replaces the state the loop would otherwise be walking.
     std::vector<std::pair<int, int>> cut_off;  // trial index, attempt
     for (const auto& t : folder.state().trials)
@@ -167,8 +171,9 @@ SessionFolder SessionFolder::open(const fs::path& dir) {
                      {"trial", index},
                      {"name", name},
                      {"attempt", attempt},
-                     {"reason", "the program stopped while recording (crash, kill or power loss); the rows written "
-                                "until then are kept"}});
+                     {"reason",
+                      "the program stopped while recording (crash, kill or power loss); the rows written "
+                      "until then are kept"}});
     }
     return folder;
   } catch (...) {
@@ -228,7 +233,11 @@ int SessionFolder::calibration_started(const std::string& block) {
 
 void SessionFolder::calibration_applied(const std::string& block, int attempt, const nlohmann::json& layout,
                                         const nlohmann::json& summary) {
-  record({{"type", "calibration_applied"}, {"block", block}, {"attempt", attempt}, {"layout", layout}, {"summary", summary}});
+  record({{"type", "calibration_applied"},
+          {"block", block},
+          {"attempt", attempt},
+          {"layout", layout},
+          {"summary", summary}});
 }
 
 void SessionFolder::calibration_kept_nominal(const std::string& block, const std::string& reason,
@@ -242,7 +251,8 @@ void SessionFolder::calibration_kept_nominal(const std::string& block, const std
 int SessionFolder::trial_started(int i) {
   require_trial(i);
   const auto& t = state_.trials[static_cast<size_t>(i)];
-  if (t.status == TrialStatus::kAccepted) throw Error("trial " + t.plan.name + " is accepted; redo it to record it again");
+  if (t.status == TrialStatus::kAccepted)
+    throw Error("trial " + t.plan.name + " is accepted; redo it to record it again");
   if (t.status == TrialStatus::kRecording) throw Error("trial " + t.plan.name + " is already recording");
   if (!t.attempts.empty() && t.attempts.back().superseded_dir.empty())
     throw Error("trial " + t.plan.name + " still holds attempt " + std::to_string(t.attempts.back().number) +
@@ -255,23 +265,31 @@ int SessionFolder::trial_started(int i) {
 void SessionFolder::trial_stopped(int i, const std::string& outcome, const std::string& reason,
                                   const std::string& go_utc) {
   const int a = last_attempt(i);
-  nlohmann::json e = {{"type", "trial_stopped"}, {"trial", i}, {"name", state_.trials[static_cast<size_t>(i)].plan.name},
-                      {"attempt", a}, {"outcome", outcome}, {"reason", reason}};
+  nlohmann::json e = {{"type", "trial_stopped"},
+                      {"trial", i},
+                      {"name", state_.trials[static_cast<size_t>(i)].plan.name},
+                      {"attempt", a},
+                      {"outcome", outcome},
+                      {"reason", reason}};
   if (!go_utc.empty()) e["go_utc"] = go_utc;
   record(e);
 }
 
 void SessionFolder::trial_verdict(int i, const nlohmann::json& quality) {
   const int a = last_attempt(i);
-  record({{"type", "trial_verdict"}, {"trial", i}, {"name", state_.trials[static_cast<size_t>(i)].plan.name},
-          {"attempt", a}, {"quality", quality}});
+  record({{"type", "trial_verdict"},
+          {"trial", i},
+          {"name", state_.trials[static_cast<size_t>(i)].plan.name},
+          {"attempt", a},
+          {"quality", quality}});
 }
 
 void SessionFolder::trial_accepted(int i) {
   const int a = last_attempt(i);
   const auto& t = state_.trials[static_cast<size_t>(i)];
   if (t.status == TrialStatus::kRecording) throw Error("trial " + t.plan.name + " is still recording");
-  if (!t.attempts.back().superseded_dir.empty()) throw Error("trial " + t.plan.name + " has no current attempt to accept");
+  if (!t.attempts.back().superseded_dir.empty())
+    throw Error("trial " + t.plan.name + " has no current attempt to accept");
   record({{"type", "trial_accepted"}, {"trial", i}, {"name", t.plan.name}, {"attempt", a}});
 }
 
@@ -284,12 +302,14 @@ void SessionFolder::redo(int i) {
   const fs::path target = dir_ / rel;
   std::error_code ec;
   fs::create_directories(target, ec);
-  if (ec) throw Error(ErrorLocation{target.string()}, "cannot create the folder for the earlier attempt: " + ec.message());
+  if (ec)
+    throw Error(ErrorLocation{target.string()}, "cannot create the folder for the earlier attempt: " + ec.message());
   for (const fs::path& src : trial_files(dir_, t.plan.name).all()) {
     if (!fs::exists(src, ec)) continue;
     const fs::path dest = target / src.filename();
     if (fs::exists(dest, ec))
-      throw Error(ErrorLocation{dest.string()}, "exists already; the earlier attempt is not overwritten (move it away by hand)");
+      throw Error(ErrorLocation{dest.string()},
+                  "exists already; the earlier attempt is not overwritten (move it away by hand)");
     fs::rename(src, dest, ec);
     if (ec) throw Error(ErrorLocation{src.string()}, "cannot move the earlier attempt aside: " + ec.message());
   }
@@ -320,7 +340,8 @@ SessionState read_session_state(const fs::path& dir) {
     for (auto& t : st.trials) {
       if (t.status != TrialStatus::kRecording) continue;
       t.status = TrialStatus::kInterrupted;
-      st.warnings.push_back("trial " + t.plan.name + " was recording when its program stopped; `lmc session run` marks it "
+      st.warnings.push_back("trial " + t.plan.name +
+                            " was recording when its program stopped; `lmc session run` marks it "
                             "interrupted and records it again");
     }
   }

@@ -18,7 +18,8 @@ namespace lmc::session {
 JournalWriter::JournalWriter(const fs::path& path, bool create) : path_(path) {
   const int flags = O_WRONLY | O_APPEND | O_CLOEXEC | (create ? (O_CREAT | O_EXCL) : 0);
   fd_ = ::open(path.c_str(), flags, 0644);
-  if (fd_ < 0) throw Error(ErrorLocation{path.string()}, std::string("cannot open the journal: ") + std::strerror(errno));
+  if (fd_ < 0)
+    throw Error(ErrorLocation{path.string()}, std::string("cannot open the journal: ") + std::strerror(errno));
 }
 
 JournalWriter::~JournalWriter() {
@@ -53,7 +54,8 @@ JournalContents read_journal(const fs::path& path, std::uintmax_t max_bytes) {
   const std::uintmax_t size = fs::file_size(path, ec);
   if (ec) throw Error(ErrorLocation{path.string()}, "cannot read the journal: " + ec.message());
   if (size > max_bytes)
-    throw Error(ErrorLocation{path.string()}, "the journal is " + std::to_string(size >> 20) + " MB, more than any session writes");
+    throw Error(ErrorLocation{path.string()},
+                "the journal is " + std::to_string(size >> 20) + " MB, more than any session writes");
   std::ifstream in(path, std::ios::binary);
   if (!in) throw Error(ErrorLocation{path.string()}, "cannot open the journal");
   const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
@@ -84,7 +86,8 @@ JournalContents parse_journal_text(std::string_view text, const std::string& sou
       event = nullptr;
     }
     if (!event.is_object())
-      throw Error(ErrorLocation{source, line_no}, "this journal line is not a JSON object; the journal was edited or damaged");
+      throw Error(ErrorLocation{source, line_no},
+                  "this journal line is not a JSON object; the journal was edited or damaged");
     out.events.push_back(std::move(event));
     out.lines.push_back(line_no);
     out.complete_bytes = pos;

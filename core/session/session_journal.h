@@ -35,10 +35,10 @@ class JournalWriter {
 
 struct JournalContents {
   std::vector<nlohmann::json> events;
-  std::vector<int> lines;              // the file line of each event (1-based), for messages
+  std::vector<int> lines;  // the file line of each event (1-based), for messages
   std::vector<std::string> warnings;
-  bool cut_last_line = false;          // a crash left a partial line at the end
-  std::uintmax_t complete_bytes = 0;   // bytes up to the end of the last complete line
+  bool cut_last_line = false;         // a crash left a partial line at the end
+  std::uintmax_t complete_bytes = 0;  // bytes up to the end of the last complete line
 };
 
 // Reads every complete line. A journal larger than `max_bytes` is refused (it would be millions

@@ -12,12 +12,18 @@ namespace lmc::session {
 
 const char* trial_status_name(TrialStatus s) {
   switch (s) {
-    case TrialStatus::kPending: return "pending";
-    case TrialStatus::kRecording: return "recording";
-    case TrialStatus::kRecorded: return "recorded";
-    case TrialStatus::kInterrupted: return "interrupted";
-    case TrialStatus::kFailed: return "failed";
-    case TrialStatus::kAccepted: return "accepted";
+    case TrialStatus::kPending:
+      return "pending";
+    case TrialStatus::kRecording:
+      return "recording";
+    case TrialStatus::kRecorded:
+      return "recorded";
+    case TrialStatus::kInterrupted:
+      return "interrupted";
+    case TrialStatus::kFailed:
+      return "failed";
+    case TrialStatus::kAccepted:
+      return "accepted";
   }
   return "unknown";
 }
@@ -34,9 +40,14 @@ nlohmann::json session_setup_to_json(const SessionSetup& s) {
   if (s.subject.hand_breadth_mm) subject["hand_breadth_mm"] = *s.subject.hand_breadth_mm;
   nlohmann::json layouts = nlohmann::json::object();
   for (const auto& [key, layout] : s.layouts) layouts[key] = layout;
-  nlohmann::json j = {{"subject", subject},       {"operator", s.operator_name}, {"notes", s.notes},
-                      {"protocol", s.protocol},   {"layouts", layouts},          {"vicon", s.vicon},
-                      {"software_version", s.software_version}, {"created_utc", s.created_utc}};
+  nlohmann::json j = {{"subject", subject},
+                      {"operator", s.operator_name},
+                      {"notes", s.notes},
+                      {"protocol", s.protocol},
+                      {"layouts", layouts},
+                      {"vicon", s.vicon},
+                      {"software_version", s.software_version},
+                      {"created_utc", s.created_utc}};
   j["counterbalance_seed"] = s.counterbalance_seed ? nlohmann::json(*s.counterbalance_seed) : nlohmann::json(nullptr);
   return j;
 }
@@ -107,7 +118,8 @@ int SessionState::next_trial() const {
 }
 
 int SessionState::count(TrialStatus s) const {
-  return static_cast<int>(std::count_if(trials.begin(), trials.end(), [s](const TrialState& t) { return t.status == s; }));
+  return static_cast<int>(
+      std::count_if(trials.begin(), trials.end(), [s](const TrialState& t) { return t.status == s; }));
 }
 
 int SessionState::trial_index(const std::string& name) const {
@@ -122,7 +134,8 @@ SessionState initial_state(const SessionSetup& setup, const std::string& source)
   st.protocol = protocol_from_json(setup.protocol, source + "#/protocol");
   for (const auto& l : st.protocol.layouts) {
     auto it = setup.layouts.find(l.key);
-    if (it == setup.layouts.end()) throw Error(ErrorLocation{source, 0, 0, "/layouts"}, "no layout for block '" + l.key + "'");
+    if (it == setup.layouts.end())
+      throw Error(ErrorLocation{source, 0, 0, "/layouts"}, "no layout for block '" + l.key + "'");
     layout_from_json(it->second, source + "#/layouts/" + l.key);  // validates the copy
   }
   for (const PlannedTrial& p : plan_trials(st.protocol, setup.counterbalance_seed)) {
@@ -217,8 +230,8 @@ void apply_journal_event(SessionState& st, const nlohmann::json& event, const st
       TrialState& t = event_trial(st, e);
       t.notes.push_back(e.string("text"));
       if (!t.attempts.empty()) t.attempts.back().notes.push_back(e.string("text"));
-    }
-    else st.setup.notes += (st.setup.notes.empty() ? "" : "\n") + e.string("text");
+    } else
+      st.setup.notes += (st.setup.notes.empty() ? "" : "\n") + e.string("text");
   } else if (type == "calibration_started") {
     const std::string block = calibration_block(st, e);
     BlockCalibrationState& c = st.calibration[block];
@@ -258,8 +271,8 @@ nlohmann::json manifest_trial_json(const SessionState& st, const TrialState& t) 
   const TrialType& type = st.protocol.trial_types[static_cast<size_t>(t.plan.trial_type)];
   nlohmann::json attempts = nlohmann::json::array();
   for (const auto& a : t.attempts) {
-    nlohmann::json aj = {{"number", a.number}, {"started_utc", a.started_utc}, {"stopped_utc", a.stopped_utc},
-                         {"outcome", a.outcome}, {"reason", a.reason}, {"verdict", a.verdict()},
+    nlohmann::json aj = {{"number", a.number},   {"started_utc", a.started_utc}, {"stopped_utc", a.stopped_utc},
+                         {"outcome", a.outcome}, {"reason", a.reason},           {"verdict", a.verdict()},
                          {"quality", a.quality}};
     if (!a.go_utc.empty()) aj["go_utc"] = a.go_utc;
     if (!a.superseded_dir.empty()) aj["superseded_dir"] = a.superseded_dir;

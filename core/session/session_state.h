@@ -23,15 +23,15 @@ enum class TrialStatus { kPending, kRecording, kRecorded, kInterrupted, kFailed,
 const char* trial_status_name(TrialStatus s);
 
 struct AttemptState {
-  int number = 0;              // 1, 2, …
+  int number = 0;  // 1, 2, …
   std::string started_utc, stopped_utc;
-  std::string go_utc;          // when the subject was told to go: where the file starts ("" if never)
-  std::string outcome;         // "" while recording; completed | aborted | failed | interrupted
+  std::string go_utc;   // when the subject was told to go: where the file starts ("" if never)
+  std::string outcome;  // "" while recording; completed | aborted | failed | interrupted
   std::string reason;
-  nlohmann::json quality;      // quality_to_json of its verdict, null until assessed
-  std::string superseded_dir;  // relative to the session folder, once redone ("superseded/T.attempt1")
+  nlohmann::json quality;          // quality_to_json of its verdict, null until assessed
+  std::string superseded_dir;      // relative to the session folder, once redone ("superseded/T.attempt1")
   std::vector<std::string> notes;  // the trial's notes journaled while this was its latest attempt
-  std::string verdict() const; // "pass" | "warn" | "fail" | "" (not assessed)
+  std::string verdict() const;     // "pass" | "warn" | "fail" | "" (not assessed)
 };
 
 struct TrialState {
@@ -74,8 +74,8 @@ SessionSetup session_setup_from_json(const nlohmann::json& j, const std::string&
 // the step was cut off: it is done again. The block's layout in setup.layouts is the calibrated
 // one once `applied`; the layout it was calibrated from stays in SessionState::nominal_layouts.
 struct BlockCalibrationState {
-  std::string status;      // "" (not yet) | recording | applied | nominal (the operator kept the nominal layout)
-  int attempt = 0;         // the latest attempt (its trial is calibration_trial_name(block, attempt))
+  std::string status;  // "" (not yet) | recording | applied | nominal (the operator kept the nominal layout)
+  int attempt = 0;     // the latest attempt (its trial is calibration_trial_name(block, attempt))
   std::string trial;
   nlohmann::json summary;  // per controller: correction, residual before/after, warnings (null until fitted)
   std::string reason;      // why the nominal layout was kept
@@ -84,13 +84,13 @@ struct BlockCalibrationState {
 
 struct SessionState {
   SessionSetup setup;
-  Protocol protocol;  // parsed from setup.protocol
-  std::vector<TrialState> trials;  // the plan, in order
-  std::map<std::string, nlohmann::json> preflight;  // block → its latest pre-flight report
-  std::map<std::string, std::string> preflight_override;  // block → the operator's reason
+  Protocol protocol;                                         // parsed from setup.protocol
+  std::vector<TrialState> trials;                            // the plan, in order
+  std::map<std::string, nlohmann::json> preflight;           // block → its latest pre-flight report
+  std::map<std::string, std::string> preflight_override;     // block → the operator's reason
   std::map<std::string, BlockCalibrationState> calibration;  // block → its calibration step
   std::map<std::string, nlohmann::json> nominal_layouts;     // block → its layout before calibration
-  int events = 0;                  // journal events applied
+  int events = 0;                                            // journal events applied
   std::string last_event_utc;
   std::vector<std::string> warnings;  // e.g. a cut last journal line that was ignored
 

@@ -9,7 +9,7 @@ namespace fs = std::filesystem;
 namespace lmc::session {
 
 std::vector<TrialSources> accepted_trial_jobs(const fs::path& dir, const std::optional<fs::path>& vicon_dir,
-                                          std::vector<std::string>* notes) {
+                                              std::vector<std::string>* notes) {
   const SessionState state = read_session_state(dir);
   std::vector<TrialSources> jobs;
   for (const auto& t : state.trials) {
@@ -44,14 +44,15 @@ std::vector<TrialSources> accepted_trial_jobs(const fs::path& dir, const std::op
 }
 
 std::vector<TrialSources> trial_sources_for_input(const fs::path& input, const std::optional<fs::path>& vicon,
-                                           std::vector<std::string>* notes) {
+                                                  std::vector<std::string>* notes) {
   // A subject session folder is processed from its journal: only each trial's accepted attempt,
   // never the ones kept under superseded/ or trials still pending.
   const bool subject_session = is_session_folder(input);
   auto jobs = subject_session ? accepted_trial_jobs(input, vicon, notes) : discover_trials(input, vicon, notes);
   if (jobs.empty()) {
-    throw Error(ErrorLocation(input.string()), subject_session ? "the session has no accepted trial yet"
-                                                                : "no LMC recordings (LMC_*.txt, Interp_LMC_*.txt) found");
+    throw Error(ErrorLocation(input.string()), subject_session
+                                                   ? "the session has no accepted trial yet"
+                                                   : "no LMC recordings (LMC_*.txt, Interp_LMC_*.txt) found");
   }
   return jobs;
 }

@@ -66,8 +66,7 @@ std::string layout_slot_name(const Layout& layout, int device_id) {
   return "LMC" + std::to_string(device_id);
 }
 
-const SidecarDevice* sidecar_device(const RecorderSidecar& sidecar, int device_id,
-                                    const std::string& slot) {
+const SidecarDevice* sidecar_device(const RecorderSidecar& sidecar, int device_id, const std::string& slot) {
   // By slot number first, then by slot name (a sidecar written before ids were kept).
   for (const SidecarDevice& d : sidecar.devices) {
     if (d.device_id == device_id) return &d;
@@ -100,8 +99,7 @@ void judge_hand_side(const DeviceQuality& q, Reasons& reasons) {
                (n == 1 ? " frame" : " frames") + " (kept: it was the only hand in view)");
 }
 
-void judge_device(const DeviceQuality& q, const SidecarDevice* sd, const QualityThresholds& t,
-                  Reasons& reasons) {
+void judge_device(const DeviceQuality& q, const SidecarDevice* sd, const QualityThresholds& t, Reasons& reasons) {
   const std::string& s = q.slot;
   if (q.frames == 0) {
     reasons.fail(s + " sent no frames");
@@ -126,18 +124,14 @@ void judge_device(const DeviceQuality& q, const SidecarDevice* sd, const Quality
     reasons.warn(s + " saw no hand for " + secs(q.longest_no_hand_s));
   }
   if (q.dropped > 0) {
-    reasons.warn(s + ": the recorder dropped " + std::to_string(q.dropped) +
-                 " frames (queue full)");
+    reasons.warn(s + ": the recorder dropped " + std::to_string(q.dropped) + " frames (queue full)");
   }
   if (q.disconnects > 0 && sd != nullptr) {
     const SidecarDisconnect& first = sd->disconnects.front();
-    const bool back = std::all_of(
-        sd->disconnects.begin(), sd->disconnects.end(),
-        [](const SidecarDisconnect& d) { return !d.reconnected_host_time_utc.empty(); });
-    reasons.warn(s + " disconnected " + std::to_string(q.disconnects) +
-                 (q.disconnects == 1 ? " time" : " times") +
-                 (back ? "" : " and did not come back") +
-                 (first.message.empty() ? "" : " (" + first.message + ")"));
+    const bool back = std::all_of(sd->disconnects.begin(), sd->disconnects.end(),
+                                  [](const SidecarDisconnect& d) { return !d.reconnected_host_time_utc.empty(); });
+    reasons.warn(s + " disconnected " + std::to_string(q.disconnects) + (q.disconnects == 1 ? " time" : " times") +
+                 (back ? "" : " and did not come back") + (first.message.empty() ? "" : " (" + first.message + ")"));
   }
   judge_hand_side(q, reasons);
   // Frame-id gaps are not judged: with several controllers on one bus the service skips frames
@@ -174,23 +168,20 @@ ViconQuality vicon_quality(const QualityInputs& in, const std::string& trial) {
   return v;
 }
 
-void judge_vicon(const ViconQuality& v, const QualityInputs& in, const std::string& trial,
-                 Reasons& reasons) {
+void judge_vicon(const ViconQuality& v, const QualityInputs& in, const std::string& trial, Reasons& reasons) {
   if (!v.expected) return;
   if (!v.start_sent) {
-    reasons.fail("Vicon was not triggered: " +
-                 (v.error.empty() ? std::string("no CaptureStart was sent") : v.error));
+    reasons.fail("Vicon was not triggered: " + (v.error.empty() ? std::string("no CaptureStart was sent") : v.error));
     return;
   }
   if (!v.stop_sent) {
-    reasons.warn("Vicon was not stopped (no CaptureStop sent" +
-                 (v.error.empty() ? "" : ": " + v.error) + "); stop its capture by hand");
+    reasons.warn("Vicon was not stopped (no CaptureStop sent" + (v.error.empty() ? "" : ": " + v.error) +
+                 "); stop its capture by hand");
   }
   // Vicon writes its export after the capture stops, sometimes only when an operator runs the
   // pipeline, so a missing file this soon is a prompt to check, not proof of a fault.
   if (v.export_found.has_value() && !*v.export_found) {
-    reasons.warn("the Vicon file " + trial + ".trc or .c3d has not appeared in " +
-                 in.vicon_export_dir->string());
+    reasons.warn("the Vicon file " + trial + ".trc or .c3d has not appeared in " + in.vicon_export_dir->string());
   }
 }
 
@@ -263,18 +254,16 @@ QualityReport assess_trial(const QualityInputs& in) {
   const bool one_clock = jumps.empty();
   for (const detail::ClockJump& jump : jumps) {
     reasons.fail(layout_slot_name(layout, jump.device_id) + "'s clock jumped back " +
-                 secs(static_cast<double>(jump.back_us) * 1e-6) +
-                 " (the tracking service restarted?)");
+                 secs(static_cast<double>(jump.back_us) * 1e-6) + " (the tracking service restarted?)");
   }
 
   // Every layout slot is expected to deliver; a device the layout lacks is a set-up fault.
   const int slots = std::max(layout.device_count(), rows.empty() ? 0 : rows.back().device_id);
   for (int id = 1; id <= slots; ++id) {
-    const auto it = std::find_if(rows.begin(), rows.end(),
-                                 [id](const detail::DeviceRows& d) { return d.device_id == id; });
+    const auto it =
+        std::find_if(rows.begin(), rows.end(), [id](const detail::DeviceRows& d) { return d.device_id == id; });
     DeviceQuality q = it != rows.end() ? detail::device_stream_quality(*it, first_us, last_us)
-                                       : detail::device_stream_quality(detail::DeviceRows{id, {}},
-                                                                       first_us, last_us);
+                                       : detail::device_stream_quality(detail::DeviceRows{id, {}}, first_us, last_us);
     q.slot = layout_slot_name(layout, id);
     const SidecarDevice* sd = sidecar_device(sidecar, id, q.slot);
     if (sd != nullptr) {
@@ -285,8 +274,8 @@ QualityReport assess_trial(const QualityInputs& in) {
       q.other_side_hand_frames = sd->frames_other_side_hand;
     }
     if (id > layout.device_count()) {
-      reasons.fail("the recording has device " + std::to_string(id) + " but layout '" +
-                   layout.name + "' has only " + std::to_string(layout.device_count()));
+      reasons.fail("the recording has device " + std::to_string(id) + " but layout '" + layout.name + "' has only " +
+                   std::to_string(layout.device_count()));
     }
     if (one_clock) judge_device(q, sd, t, reasons);
     report.devices.push_back(std::move(q));
@@ -301,22 +290,20 @@ QualityReport assess_trial(const QualityInputs& in) {
   std::vector<detail::TracedDevice> traced;
   traced.reserve(rows.size());
   for (const auto& d : rows) traced.push_back(detail::trace_device(d));
-  const double step_us =
-      std::max(kGridStepUs, static_cast<double>(last_us - first_us) / kMaxGridBins);
+  const double step_us = std::max(kGridStepUs, static_cast<double>(last_us - first_us) / kMaxGridBins);
   const detail::HeldGrid grid = detail::hold_on_grid(rows, first_us, last_us, step_us);
   const detail::Coverage cov = detail::coverage(grid, traced);
   report.hand_fraction = cov.hand_fraction;
   if (any && cov.hand_fraction < t.fail_min_hand_fraction) {
-    reasons.fail("no controller saw the hand in " + percent_text(1.0 - cov.hand_fraction) +
-                 " of the trial");
+    reasons.fail("no controller saw the hand in " + percent_text(1.0 - cov.hand_fraction) + " of the trial");
   }
   report.finger_seen_fraction.assign(cov.finger_seen.begin(), cov.finger_seen.end());
   report.timeline = detail::timeline(grid, traced, kTimelineSlices);
   for (int k = 0; k < kNumDigits; ++k) {
     const double unseen = 1.0 - cov.finger_seen[static_cast<size_t>(k)];
     if (std::isfinite(unseen) && unseen > t.warn_max_finger_unseen) {
-      reasons.warn(std::string(digit_name(k)) + " finger unseen by every controller in " +
-                   percent_text(unseen) + " of frames");
+      reasons.warn(std::string(digit_name(k)) + " finger unseen by every controller in " + percent_text(unseen) +
+                   " of frames");
     }
   }
 
@@ -333,8 +320,8 @@ QualityReport assess_trial(const QualityInputs& in) {
       if (!std::isfinite(rom.reached_deg)) {
         reasons.warn(name + " range of motion unknown: the hand was never tracked");
       } else if (rom.reached_deg < t.warn_min_rom_fraction * want.expected_deg) {
-        reasons.warn(name + " moved through " + degrees(rom.reached_deg) + " of the " +
-                     degrees(want.expected_deg) + " expected");
+        reasons.warn(name + " moved through " + degrees(rom.reached_deg) + " of the " + degrees(want.expected_deg) +
+                     " expected");
       }
     }
     report.rom = rom;

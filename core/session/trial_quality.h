@@ -25,13 +25,13 @@ struct DeviceQuality {
   std::string slot;
   std::string serial;
   std::int64_t frames = 0;
-  double median_rate_hz = 0;           // from consecutive device timestamps
+  double median_rate_hz = 0;  // from consecutive device timestamps
   double rate_p5_hz = 0, rate_p95_hz = 0;
-  double hand_fraction = 0;            // of its frames
-  double longest_gap_s = 0;            // longest silence between frames, or at either end
-  double longest_no_hand_s = 0;        // longest run of frames without a hand (hand frame to hand frame)
+  double hand_fraction = 0;      // of its frames
+  double longest_gap_s = 0;      // longest silence between frames, or at either end
+  double longest_no_hand_s = 0;  // longest run of frames without a hand (hand frame to hand frame)
   std::int64_t frame_id_gaps = 0;
-  std::int64_t dropped = 0;            // frames the recorder could not keep up with
+  std::int64_t dropped = 0;  // frames the recorder could not keep up with
   int disconnects = 0;
   // Frames whose only hand the controller classified as the other side (kept as the subject's
   // hand; the sidecar counts them). Many mean the controller is confused: mounting or tracking mode.
@@ -39,16 +39,16 @@ struct DeviceQuality {
 };
 
 struct RomQuality {
-  std::string joint;        // as in the protocol (an angle name of core/processing/measures.h)
+  std::string joint;  // as in the protocol (an angle name of core/processing/measures.h)
   double expected_deg = 0;
-  double reached_deg = 0;   // 95th − 5th percentile of the fused angle over the trial (NaN if unknown)
+  double reached_deg = 0;  // 95th − 5th percentile of the fused angle over the trial (NaN if unknown)
 };
 
 struct ViconQuality {
-  bool expected = false;     // the trial was meant to trigger Vicon
+  bool expected = false;  // the trial was meant to trigger Vicon
   bool start_sent = false;
   bool stop_sent = false;
-  std::string error;         // first sending error
+  std::string error;                 // first sending error
   std::optional<bool> export_found;  // set when an export folder was configured
   std::string export_file;
 };
@@ -58,8 +58,9 @@ struct ViconQuality {
 // recording it comes from is in the session folder).
 struct QualityTimeline {
   double slice_s = 0;
-  std::vector<int> device_ids;                    // one per series below, ascending
-  std::vector<std::vector<double>> hand_present;  // [device][slice]: share of the slice's instants its latest row had a hand
+  std::vector<int> device_ids;  // one per series below, ascending
+  std::vector<std::vector<double>>
+      hand_present;  // [device][slice]: share of the slice's instants its latest row had a hand
   std::vector<std::vector<double>> fingers_seen;  // [device][slice]: mean number of fingers (0–5) it saw (ray-traced)
   // [slice]: over the slice's instants with a hand, the mean of how many controllers saw the
   // least-seen finger (0: some finger seen by nobody); NaN when no controller had the hand.
@@ -68,11 +69,11 @@ struct QualityTimeline {
 };
 
 struct QualityReport {
-  std::string verdict = "pass";  // pass | warn | fail
+  std::string verdict = "pass";      // pass | warn | fail
   std::vector<std::string> reasons;  // one line each, most serious first
   double duration_s = 0;             // recorded span on the device clocks
   double planned_s = 0;
-  double hand_fraction = 0;          // share of the trial's 10 ms instants at which some controller had the hand
+  double hand_fraction = 0;  // share of the trial's 10 ms instants at which some controller had the hand
   std::vector<DeviceQuality> devices;
   // thumb…pinky: share of the instants with a hand at which ≥ 1 controller saw the finger
   // (ray-traced label 1); NaN when no controller ever had the hand.
@@ -83,12 +84,12 @@ struct QualityReport {
 };
 
 struct QualityInputs {
-  const LmcRecording* recording = nullptr;  // required
-  const RecorderSidecar* sidecar = nullptr; // required
-  Layout layout;                            // the block's layout; when empty, the sidecar's
+  const LmcRecording* recording = nullptr;   // required
+  const RecorderSidecar* sidecar = nullptr;  // required
+  Layout layout;                             // the block's layout; when empty, the sidecar's
   double planned_s = 0;
   QualityThresholds thresholds;
-  std::vector<RomExpectation> rom;          // dynamic trials: the joint and what it should reach
+  std::vector<RomExpectation> rom;  // dynamic trials: the joint and what it should reach
   bool vicon_expected = false;
   std::optional<std::filesystem::path> vicon_export_dir;  // where <trial>.trc / .c3d should appear
 };

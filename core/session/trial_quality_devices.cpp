@@ -16,9 +16,8 @@ std::vector<DeviceRows> rows_by_device(const LmcRecording& recording) {
   out.reserve(by_id.size());
   for (auto& [id, rows] : by_id) {
     // Stable: rows with equal timestamps (duplicates) keep their file order.
-    std::stable_sort(rows.begin(), rows.end(), [](const HandFrame* a, const HandFrame* b) {
-      return a->timestamp_us < b->timestamp_us;
-    });
+    std::stable_sort(rows.begin(), rows.end(),
+                     [](const HandFrame* a, const HandFrame* b) { return a->timestamp_us < b->timestamp_us; });
     out.push_back(DeviceRows{id, std::move(rows)});
   }
   return out;
@@ -47,8 +46,7 @@ double seconds(std::int64_t us) {
 
 }  // namespace
 
-DeviceQuality device_stream_quality(const DeviceRows& device, std::int64_t trial_first_us,
-                                    std::int64_t trial_last_us) {
+DeviceQuality device_stream_quality(const DeviceRows& device, std::int64_t trial_first_us, std::int64_t trial_last_us) {
   DeviceQuality q;
   q.device_id = device.device_id;
   q.frames = static_cast<std::int64_t>(device.rows.size());
@@ -62,7 +60,8 @@ DeviceQuality device_stream_quality(const DeviceRows& device, std::int64_t trial
   stamps_us.reserve(device.rows.size());
   for (const HandFrame* row : device.rows) stamps_us.push_back(row->timestamp_us);
   std::int64_t longest_gap_us = std::max(stamps_us.front() - trial_first_us, trial_last_us - stamps_us.back());
-  for (size_t i = 1; i < stamps_us.size(); ++i) longest_gap_us = std::max(longest_gap_us, stamps_us[i] - stamps_us[i - 1]);
+  for (size_t i = 1; i < stamps_us.size(); ++i)
+    longest_gap_us = std::max(longest_gap_us, stamps_us[i] - stamps_us[i - 1]);
   q.longest_gap_s = seconds(longest_gap_us);
   if (const stats::StreamRates rates = stats::stream_rates(stamps_us); rates.intervals > 0) {
     q.median_rate_hz = rates.median_hz;

@@ -55,16 +55,14 @@ double small_median(double* v, int n) {
 
 }  // namespace
 
-HeldGrid hold_on_grid(const std::vector<DeviceRows>& devices, std::int64_t first_us,
-                      std::int64_t last_us, double step_us) {
+HeldGrid hold_on_grid(const std::vector<DeviceRows>& devices, std::int64_t first_us, std::int64_t last_us,
+                      double step_us) {
   HeldGrid grid;
   grid.start_us = first_us;
   grid.step_us = step_us;
   grid.devices = static_cast<int>(devices.size());
   grid.bins =
-      last_us >= first_us
-          ? static_cast<int>(std::floor(static_cast<double>(last_us - first_us) / step_us)) + 1
-          : 0;
+      last_us >= first_us ? static_cast<int>(std::floor(static_cast<double>(last_us - first_us) / step_us)) + 1 : 0;
   grid.row.assign(static_cast<size_t>(grid.bins) * devices.size(), -1);
   for (size_t d = 0; d < devices.size(); ++d) {
     const auto& rows = devices[d].rows;
@@ -128,8 +126,8 @@ int angle_index(const std::string& joint) {
   return -1;
 }
 
-double reached_rom_deg(const HeldGrid& grid, const std::vector<TracedDevice>& devices,
-                       const Layout& layout, int angle) {
+double reached_rom_deg(const HeldGrid& grid, const std::vector<TracedDevice>& devices, const Layout& layout,
+                       int angle) {
   // Each controller's rows into the world frame with its layout pose and offset, as processing
   // does before fusing.
   std::vector<HandTrack> world(devices.size());
@@ -153,8 +151,7 @@ double reached_rom_deg(const HeldGrid& grid, const std::vector<TracedDevice>& de
     holders.clear();
     for (int d = 0; d < grid.devices; ++d) {
       const int r = grid.held(b, d);
-      if (r < 0 || !usable[static_cast<size_t>(d)] || !world[static_cast<size_t>(d)].has_hand(r))
-        continue;
+      if (r < 0 || !usable[static_cast<size_t>(d)] || !world[static_cast<size_t>(d)].has_hand(r)) continue;
       holders.push_back(static_cast<size_t>(d));
       rows[static_cast<size_t>(d)] = r;
     }

@@ -46,9 +46,9 @@ json quality_device_to_json(const DeviceQuality& d) {
 }
 
 DeviceQuality device_from_json(const JsonReader& r) {
-  r.only_keys({"device_id", "slot", "serial", "frames", "median_rate_hz", "rate_p5_hz",
-               "rate_p95_hz", "hand_fraction", "longest_gap_s", "longest_no_hand_s",
-               "frame_id_gaps", "dropped", "disconnects", "other_side_hand_frames"});
+  r.only_keys({"device_id", "slot", "serial", "frames", "median_rate_hz", "rate_p5_hz", "rate_p95_hz", "hand_fraction",
+               "longest_gap_s", "longest_no_hand_s", "frame_id_gaps", "dropped", "disconnects",
+               "other_side_hand_frames"});
   DeviceQuality d;
   d.device_id = r.at("device_id").integer();
   d.slot = r.string("slot");
@@ -95,8 +95,7 @@ ViconQuality vicon_from_json(const JsonReader& r) {
 json quality_to_json(const QualityReport& report) {
   json fingers = json::object();
   for (size_t k = 0; k < report.finger_seen_fraction.size() && k < kNumDigits; ++k) {
-    fingers[std::string(digit_name(static_cast<int>(k)))] =
-        number_or_null(report.finger_seen_fraction[k]);
+    fingers[std::string(digit_name(static_cast<int>(k)))] = number_or_null(report.finger_seen_fraction[k]);
   }
   json devices = json::array();
   for (const DeviceQuality& d : report.devices) devices.push_back(quality_device_to_json(d));
@@ -119,22 +118,20 @@ json quality_to_json(const QualityReport& report) {
 
 QualityReport quality_from_json(const json& j, const std::string& source) {
   const JsonReader r(j, source);
-  r.only_keys({"verdict", "reasons", "duration_s", "planned_s", "hand_fraction", "devices",
-               "finger_seen_fraction", "rom", "vicon"});
+  r.only_keys({"verdict", "reasons", "duration_s", "planned_s", "hand_fraction", "devices", "finger_seen_fraction",
+               "rom", "vicon"});
   QualityReport report;
   report.verdict = r.string("verdict");
   if (report.verdict != "pass" && report.verdict != "warn" && report.verdict != "fail") {
     r.at("verdict").fail("expected \"pass\", \"warn\" or \"fail\", not \"" + report.verdict + "\"");
   }
   const JsonReader reasons = r.at("reasons");
-  for (size_t i = 0; i < reasons.array_size(); ++i)
-    report.reasons.push_back(reasons.at(i).string());
+  for (size_t i = 0; i < reasons.array_size(); ++i) report.reasons.push_back(reasons.at(i).string());
   report.duration_s = r.number("duration_s");
   report.planned_s = r.number("planned_s");
   report.hand_fraction = r.number("hand_fraction");
   const JsonReader devices = r.at("devices");
-  for (size_t i = 0; i < devices.array_size(); ++i)
-    report.devices.push_back(device_from_json(devices.at(i)));
+  for (size_t i = 0; i < devices.array_size(); ++i) report.devices.push_back(device_from_json(devices.at(i)));
 
   // The five fingers by name, each a share or null (never in view because the hand never was).
   const JsonReader fingers = r.at("finger_seen_fraction");
@@ -150,8 +147,7 @@ QualityReport quality_from_json(const json& j, const std::string& source) {
   if (r.has("rom")) {
     const JsonReader rom = r.at("rom");
     rom.only_keys({"joint", "expected_deg", "reached_deg"});
-    report.rom = RomQuality{rom.string("joint"), rom.number("expected_deg"),
-                            number_or_nan(rom, "reached_deg")};
+    report.rom = RomQuality{rom.string("joint"), rom.number("expected_deg"), number_or_nan(rom, "reached_deg")};
   }
   report.vicon = vicon_from_json(r.at("vicon"));
   return report;

@@ -9,9 +9,9 @@
 #include <string>
 #include <vector>
 
+#include "core/hand/hand_track.h"
 #include "core/io/lmc_recording.h"
 #include "core/layout/layout.h"
-#include "core/hand/hand_track.h"
 #include "core/session/trial_quality.h"
 #include "core/stats/percentile.h"
 
@@ -39,8 +39,7 @@ std::vector<ClockJump> clock_jumps(const LmcRecording& recording, std::int64_t l
 // Frames, rates, hand fraction and gaps of one controller. The trial's first and last timestamps
 // (over all controllers) bound it, so silence at either end counts as a gap: a controller
 // unplugged mid-trial that never came back shows up here.
-DeviceQuality device_stream_quality(const DeviceRows& device, std::int64_t trial_first_us,
-                                    std::int64_t trial_last_us);
+DeviceQuality device_stream_quality(const DeviceRows& device, std::int64_t trial_first_us, std::int64_t trial_last_us);
 
 // Linear-interpolation percentile (numpy's default) of unsorted values; NaN when empty.
 using stats::percentile;
@@ -56,13 +55,12 @@ struct HeldGrid {
   std::vector<int> row;  // row[bin * devices + device]
 
   int held(int bin, int device) const {
-    return row[static_cast<size_t>(bin) * static_cast<size_t>(devices) +
-               static_cast<size_t>(device)];
+    return row[static_cast<size_t>(bin) * static_cast<size_t>(devices) + static_cast<size_t>(device)];
   }
 };
 
-HeldGrid hold_on_grid(const std::vector<DeviceRows>& devices, std::int64_t first_us,
-                      std::int64_t last_us, double step_us);
+HeldGrid hold_on_grid(const std::vector<DeviceRows>& devices, std::int64_t first_us, std::int64_t last_us,
+                      double step_us);
 
 // One controller's rows as a track in its own frame, and the ray-traced labels of each row
 // (core/processing/visibility_labels.h: the engine processing uses).
@@ -94,7 +92,6 @@ int angle_index(const std::string& joint);
 // instant the per-coordinate median of the held rows that have a hand, realigned with the layout
 // (device id k is layout device k; a device the layout lacks is left out). NaN when the angle is
 // never known. `devices` is in the order of `grid`.
-double reached_rom_deg(const HeldGrid& grid, const std::vector<TracedDevice>& devices,
-                       const Layout& layout, int angle);
+double reached_rom_deg(const HeldGrid& grid, const std::vector<TracedDevice>& devices, const Layout& layout, int angle);
 
 }  // namespace lmc::session::detail

@@ -13,8 +13,7 @@ namespace lmc::stats {
 BlandAltmanResult bland_altman(std::span<const double> a, std::span<const double> b) {
   const PairedValues p = complete_pairs(a, b);
   BlandAltmanResult r;
-  r.method =
-      "Bland & Altman 1986/1999, one pair per subject; limit CIs with SE = sqrt(3 s^2/n), t(n-1)";
+  r.method = "Bland & Altman 1986/1999, one pair per subject; limit CIs with SE = sqrt(3 s^2/n), t(n-1)";
   r.n_used = p.a.size();
   r.n_skipped = p.n_skipped;
   r.n_subjects = p.a.size();
@@ -39,12 +38,10 @@ BlandAltmanResult bland_altman(std::span<const double> a, std::span<const double
   return r;
 }
 
-std::vector<BlandAltmanPoint> bland_altman_points(std::span<const double> a,
-                                                  std::span<const double> b) {
+std::vector<BlandAltmanPoint> bland_altman_points(std::span<const double> a, std::span<const double> b) {
   const PairedValues p = complete_pairs(a, b);
   std::vector<BlandAltmanPoint> points(p.a.size());
-  for (std::size_t i = 0; i < points.size(); ++i)
-    points[i] = {(p.a[i] + p.b[i]) / 2.0, p.a[i] - p.b[i]};
+  for (std::size_t i = 0; i < points.size(); ++i) points[i] = {(p.a[i] + p.b[i]) / 2.0, p.a[i] - p.b[i]};
   return points;
 }
 

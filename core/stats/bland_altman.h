@@ -53,8 +53,7 @@ struct BlandAltmanPoint {
 
 // The plot's points for the complete pairs, in input order (incomplete pairs are left out, as in
 // bland_altman()). Throws lmc::Error when a and b differ in length.
-std::vector<BlandAltmanPoint> bland_altman_points(std::span<const double> a,
-                                                  std::span<const double> b);
+std::vector<BlandAltmanPoint> bland_altman_points(std::span<const double> a, std::span<const double> b);
 
 void to_json(nlohmann::json& j, const BlandAltmanResult& r);
 

@@ -71,8 +71,8 @@ BlandAltmanResult bland_altman_repeated(std::span<const PairedObservation> obser
     return r;
   }
   if (r.n_used < 2 || groups.size() < 2) {
-    r.reason = "needs at least 2 subjects with complete pairs (" + std::to_string(groups.size()) +
-               " subjects, " + std::to_string(r.n_used) + " pairs usable)";
+    r.reason = "needs at least 2 subjects with complete pairs (" + std::to_string(groups.size()) + " subjects, " +
+               std::to_string(r.n_used) + " pairs usable)";
     return r;
   }
 
@@ -127,11 +127,9 @@ BlandAltmanResult bland_altman_repeated(std::span<const PairedObservation> obser
   const double bias_down = r.bias - r.bias_ci.low;
   const double bias_up = r.bias_ci.high - r.bias;
   // Upper limit = bias + zσ: both parts move it the same way.
-  r.loa_high_ci = {r.loa_high - std::hypot(bias_down, zs - zs_low),
-                   r.loa_high + std::hypot(bias_up, zs_high - zs)};
+  r.loa_high_ci = {r.loa_high - std::hypot(bias_down, zs - zs_low), r.loa_high + std::hypot(bias_up, zs_high - zs)};
   // Lower limit = bias − zσ: a larger σ moves it down.
-  r.loa_low_ci = {r.loa_low - std::hypot(bias_down, zs_high - zs),
-                  r.loa_low + std::hypot(bias_up, zs - zs_low)};
+  r.loa_low_ci = {r.loa_low - std::hypot(bias_down, zs_high - zs), r.loa_low + std::hypot(bias_up, zs - zs_low)};
   return r;
 }
 

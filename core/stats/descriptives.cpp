@@ -78,11 +78,8 @@ PairedDescriptives describe_pairs(std::span<const double> a, std::span<const dou
 }
 
 void to_json(nlohmann::json& j, const Descriptives& d) {
-  j = nlohmann::json{{"n_used", d.n_used},
-                     {"n_skipped", d.n_skipped},
-                     {"mean", d.mean},
-                     {"sd", d.sd},
-                     {"reason", d.reason}};
+  j = nlohmann::json{
+      {"n_used", d.n_used}, {"n_skipped", d.n_skipped}, {"mean", d.mean}, {"sd", d.sd}, {"reason", d.reason}};
 }
 
 void to_json(nlohmann::json& j, const PairedDescriptives& d) {

@@ -30,7 +30,7 @@ struct PairedDescriptives {
   double mean_difference = kNaN;      // mean of A − B (the bias)
   double sd_difference = kNaN;        // sample SD of A − B (n − 1)
   double mean_abs_difference = kNaN;  // mean |A − B|
-  double rmse = kNaN;  // sqrt(mean((A − B)²)): includes the bias, unlike sd_difference
+  double rmse = kNaN;                 // sqrt(mean((A − B)²)): includes the bias, unlike sd_difference
   std::string reason;
   bool ok() const { return reason.empty(); }
 };

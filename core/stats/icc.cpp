@@ -14,8 +14,7 @@ std::string average_of(std::size_t k) {
   return "average of " + std::to_string(k) + " measurements";
 }
 
-IccEstimate named(const std::string& form, const std::string& model_and_type,
-                  const std::string& unit) {
+IccEstimate named(const std::string& form, const std::string& model_and_type, const std::string& unit) {
   IccEstimate e;
   e.form = form;
   e.description = form + ": " + model_and_type + ", " + unit;
@@ -29,14 +28,11 @@ double spearman_brown(double single, double k) {
 
 // Single- and average-measure estimates whose intervals follow from an exact F ratio F0 = BMS/X
 // with (df1, df2) degrees of freedom (S&F's ICC(1,·) with X = WMS, ICC(3,·) with X = EMS).
-void exact_f_interval(double f0, double df1, double df2, double k, IccEstimate& single,
-                      IccEstimate& average) {
+void exact_f_interval(double f0, double df1, double df2, double k, IccEstimate& single, IccEstimate& average) {
   const double fl = f0 / f_quantile(0.975, df1, df2);
   const double fu = f0 * f_quantile(0.975, df2, df1);
   // F0 is +inf when the error mean square is 0 (perfect consistency): the bound's limit is then 1.
-  const auto single_bound = [k](double f) {
-    return std::isinf(f) ? 1.0 : (f - 1.0) / (f + k - 1.0);
-  };
+  const auto single_bound = [k](double f) { return std::isinf(f) ? 1.0 : (f - 1.0) / (f + k - 1.0); };
   single.ci = {single_bound(fl), single_bound(fu)};
   average.ci = {1.0 - 1.0 / fl, 1.0 - 1.0 / fu};
   for (IccEstimate* e : {&single, &average}) {
@@ -56,30 +52,26 @@ IccResult icc(const Eigen::MatrixXd& ratings) {
   r.icc1_1 = named("ICC(1,1)", "one-way random effects, absolute agreement", "single measurement");
   r.icc2_1 = named("ICC(2,1)", "two-way random effects, absolute agreement", "single measurement");
   r.icc3_1 = named("ICC(3,1)", "two-way mixed effects, consistency", "single measurement");
-  r.icc1_k =
-      named("ICC(1," + k_text + ")", "one-way random effects, absolute agreement", average_of(r.k));
-  r.icc2_k =
-      named("ICC(2," + k_text + ")", "two-way random effects, absolute agreement", average_of(r.k));
+  r.icc1_k = named("ICC(1," + k_text + ")", "one-way random effects, absolute agreement", average_of(r.k));
+  r.icc2_k = named("ICC(2," + k_text + ")", "two-way random effects, absolute agreement", average_of(r.k));
   r.icc3_k = named("ICC(3," + k_text + ")", "two-way mixed effects, consistency", average_of(r.k));
 
   std::vector<Eigen::Index> rows;
   for (Eigen::Index i = 0; i < ratings.rows(); ++i) {
     bool complete = true;
-    for (Eigen::Index j = 0; j < ratings.cols(); ++j)
-      complete = complete && is_usable(ratings(i, j));
+    for (Eigen::Index j = 0; j < ratings.cols(); ++j) complete = complete && is_usable(ratings(i, j));
     if (complete) rows.push_back(i);
   }
   r.n_targets = rows.size();
   r.n_dropped = static_cast<std::size_t>(ratings.rows()) - rows.size();
   if (r.k < 2 || rows.size() < 2) {
-    r.reason = "needs at least 2 complete rows and 2 columns (" + std::to_string(rows.size()) +
-               " complete rows, " + k_text + " columns)";
+    r.reason = "needs at least 2 complete rows and 2 columns (" + std::to_string(rows.size()) + " complete rows, " +
+               k_text + " columns)";
     return r;
   }
 
   Eigen::MatrixXd x(static_cast<Eigen::Index>(rows.size()), ratings.cols());
-  for (Eigen::Index i = 0; i < x.rows(); ++i)
-    x.row(i) = ratings.row(rows[static_cast<std::size_t>(i)]);
+  for (Eigen::Index i = 0; i < x.rows(); ++i) x.row(i) = ratings.row(rows[static_cast<std::size_t>(i)]);
   const auto n = static_cast<double>(x.rows());
   const auto k = static_cast<double>(x.cols());
   const double grand = x.mean();
@@ -90,8 +82,7 @@ IccResult icc(const Eigen::MatrixXd& ratings) {
   const double ss_cols = n * (col_means.array() - grand).square().sum();
   const double ss_error = ss_total - ss_rows - ss_cols;
   const double ss_within = ss_total - ss_rows;
-  const double df_rows = n - 1.0, df_cols = k - 1.0, df_error = (n - 1.0) * (k - 1.0),
-               df_within = n * (k - 1.0);
+  const double df_rows = n - 1.0, df_cols = k - 1.0, df_error = (n - 1.0) * (k - 1.0), df_within = n * (k - 1.0);
   r.bms = ss_rows / df_rows;
   r.jms = ss_cols / df_cols;
   r.ems = ss_error / df_error;
@@ -124,10 +115,8 @@ IccResult icc(const Eigen::MatrixXd& ratings) {
                      ((a * jms) * (a * jms) / df_cols + (b * ems) * (b * ems) / df_error);
     const double f_star = f_quantile(0.975, df_rows, v);
     const double f_star2 = f_quantile(0.975, v, df_rows);
-    const double low =
-        n * (bms - f_star * ems) / (f_star * (k * jms + (k * n - k - n) * ems) + n * bms);
-    const double high =
-        n * (f_star2 * bms - ems) / (k * jms + (k * n - k - n) * ems + n * f_star2 * bms);
+    const double low = n * (bms - f_star * ems) / (f_star * (k * jms + (k * n - k - n) * ems) + n * bms);
+    const double high = n * (f_star2 * bms - ems) / (k * jms + (k * n - k - n) * ems + n * f_star2 * bms);
     // Perfect agreement (ρ = 1: EMS = JMS = 0) leaves v undefined; the interval's limit is [1, 1].
     r.icc2_1.ci = rho == 1.0 ? Interval{1.0, 1.0} : Interval{low, high};
     r.icc2_k.ci = {spearman_brown(r.icc2_1.ci.low, k), spearman_brown(r.icc2_1.ci.high, k)};
@@ -149,14 +138,13 @@ void to_json(nlohmann::json& j, const IccEstimate& e) {
 }
 
 void to_json(nlohmann::json& j, const IccResult& r) {
-  j = nlohmann::json{
-      {"n_targets", r.n_targets},
-      {"n_dropped", r.n_dropped},
-      {"k", r.k},
-      {"mean_squares", {{"bms", r.bms}, {"wms", r.wms}, {"jms", r.jms}, {"ems", r.ems}}},
-      {"estimates", {r.icc1_1, r.icc2_1, r.icc3_1, r.icc1_k, r.icc2_k, r.icc3_k}},
-      {"level", 0.95},
-      {"reason", r.reason}};
+  j = nlohmann::json{{"n_targets", r.n_targets},
+                     {"n_dropped", r.n_dropped},
+                     {"k", r.k},
+                     {"mean_squares", {{"bms", r.bms}, {"wms", r.wms}, {"jms", r.jms}, {"ems", r.ems}}},
+                     {"estimates", {r.icc1_1, r.icc2_1, r.icc3_1, r.icc1_k, r.icc2_k, r.icc3_k}},
+                     {"level", 0.95},
+                     {"reason", r.reason}};
 }
 
 }  // namespace lmc::stats

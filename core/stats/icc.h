@@ -43,13 +43,13 @@ struct IccEstimate {
 };
 
 struct IccResult {
-  std::size_t n_targets = 0;  // rows used (complete)
-  std::size_t n_dropped = 0;  // rows left out because they held a NaN / ±inf
-  std::size_t k = 0;          // columns (raters / methods)
+  std::size_t n_targets = 0;                              // rows used (complete)
+  std::size_t n_dropped = 0;                              // rows left out because they held a NaN / ±inf
+  std::size_t k = 0;                                      // columns (raters / methods)
   double bms = kNaN, wms = kNaN, jms = kNaN, ems = kNaN;  // the ANOVA mean squares above
   IccEstimate icc1_1, icc2_1, icc3_1;                     // single measurement
   IccEstimate icc1_k, icc2_k, icc3_k;                     // average of k measurements
-  std::string reason;  // why the numbers are NaN; empty when they are valid
+  std::string reason;                                     // why the numbers are NaN; empty when they are valid
   bool ok() const { return reason.empty(); }
 };
 

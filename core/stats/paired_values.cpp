@@ -8,8 +8,8 @@ namespace lmc::stats {
 
 PairedValues complete_pairs(std::span<const double> a, std::span<const double> b) {
   if (a.size() != b.size())
-    throw Error("paired statistics need series of equal length (got " + std::to_string(a.size()) +
-                " and " + std::to_string(b.size()) + " values)");
+    throw Error("paired statistics need series of equal length (got " + std::to_string(a.size()) + " and " +
+                std::to_string(b.size()) + " values)");
   PairedValues out;
   out.a.reserve(a.size());
   out.b.reserve(b.size());

@@ -12,8 +12,7 @@
 namespace lmc::stats {
 
 PearsonResult pearson(std::span<const double> a, std::span<const double> b, double level) {
-  if (!(level > 0.0 && level < 1.0))
-    throw Error("confidence level must be in (0, 1), got " + std::to_string(level));
+  if (!(level > 0.0 && level < 1.0)) throw Error("confidence level must be in (0, 1), got " + std::to_string(level));
   const PairedValues p = complete_pairs(a, b);
   PearsonResult out;
   out.level = level;
@@ -21,8 +20,7 @@ PearsonResult pearson(std::span<const double> a, std::span<const double> b, doub
   out.n_skipped = p.n_skipped;
   const std::size_t n = p.a.size();
   if (n < 3) {
-    out.reason =
-        "fewer than 3 complete pairs (" + std::to_string(n) + "): r is undefined or trivially ±1";
+    out.reason = "fewer than 3 complete pairs (" + std::to_string(n) + "): r is undefined or trivially ±1";
     return out;
   }
   const double ma = mean_of(p.a), mb = mean_of(p.b);

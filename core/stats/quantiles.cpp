@@ -45,8 +45,7 @@ double f_upper_tail(double f, double df1, double df2) {
   if (std::isnan(f) || !valid_df(df1) || !valid_df(df2)) return kNaN;
   if (f <= 0.0) return 1.0;
   if (std::isinf(f)) return 0.0;
-  return boost::math::cdf(
-      boost::math::complement(boost::math::fisher_f_distribution<double>(df1, df2), f));
+  return boost::math::cdf(boost::math::complement(boost::math::fisher_f_distribution<double>(df1, df2), f));
 }
 
 }  // namespace lmc::stats

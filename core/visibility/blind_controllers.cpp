@@ -15,7 +15,8 @@ std::vector<BlindController> blind_controllers(const Layout& layout) {
   std::vector<PreparedFrame> poses;
   for (int o = 0; o < kNumHandOrientations; ++o) {
     for (int m = 0; m < kNumHandMotions; ++m) {
-      poses.push_back(prepare_frame(reference_pose(model, static_cast<HandOrientation>(o), static_cast<HandMotion>(m))));
+      poses.push_back(
+          prepare_frame(reference_pose(model, static_cast<HandOrientation>(o), static_cast<HandMotion>(m))));
     }
   }
   const VisibilityLimits limits = make_limits(VisibilityParams::from_sensor(layout.sensor));

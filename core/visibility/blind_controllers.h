@@ -12,7 +12,7 @@
 namespace lmc {
 
 struct BlindController {
-  int device = -1;   // index into layout.devices
+  int device = -1;  // index into layout.devices
   std::string slot;
   // What hides the hand from it in most of the poses (the whole-hand tests come first: a wrong
   // approach, out of range, out of view; then the palm or a finger in the way).

@@ -9,9 +9,9 @@ namespace lmc {
 
 int ray_marker_hand_point(int k) {
   if (k == 0) return kElbow;
-  if (k == 17) return digit_point(4, 0);         // pinky Meta
+  if (k == 17) return digit_point(4, 0);                         // pinky Meta
   if (k < 17) return digit_point((k - 1) / 4, 1 + (k - 1) % 4);  // Proxi…End of thumb…ring
-  return digit_point(4, 1 + (k - 18));           // pinky Proxi…End
+  return digit_point(4, 1 + (k - 18));                           // pinky Proxi…End
 }
 
 PreparedFrame prepare_frame(const HandFrame& frame) {
@@ -41,7 +41,8 @@ PreparedFrame prepare_frame(const HandFrame& frame) {
   for (const auto& p : fr.palm_points) centroid += p;
   centroid /= static_cast<double>(kNumPalmPoints);
   Eigen::Matrix<double, kNumPalmPoints, 3> centred;
-  for (int i = 0; i < kNumPalmPoints; ++i) centred.row(i) = (fr.palm_points[static_cast<size_t>(i)] - centroid).transpose();
+  for (int i = 0; i < kNumPalmPoints; ++i)
+    centred.row(i) = (fr.palm_points[static_cast<size_t>(i)] - centroid).transpose();
   // Normal = right singular vector of the smallest singular value (JacobiSVD sorts decreasingly).
   const Eigen::JacobiSVD<Eigen::Matrix<double, kNumPalmPoints, 3>> svd(centred, Eigen::ComputeFullV);
   const Eigen::Vector3d normal = svd.matrixV().col(2);

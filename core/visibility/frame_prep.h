@@ -1,6 +1,6 @@
 #pragma once
-// Per-frame data that every device shares (docs/algorithms/hand-points.md, docs/algorithms/visibility.md), computed once per
-// frame so that each (device, frame) test is only the device-dependent arithmetic:
+// Per-frame data that every device shares (docs/algorithms/hand-points.md, docs/algorithms/visibility.md), computed
+// once per frame so that each (device, frame) test is only the device-dependent arithmetic:
 //  * the 22 ray-tracing markers s0…s21 (s0 elbow, s1–s4 thumb Proxi…End, s5–s8 index,
 //    s9–s12 middle, s13–s16 ring, s17 pinky Meta, s18–s21 pinky Proxi…End);
 //  * the approach vector a = (s1 + s17)/2 − s0;
@@ -25,7 +25,9 @@ inline constexpr int kNumPalmPoints = 6;
 // Hand point (hand_frame.h index) of ray marker s_k.
 int ray_marker_hand_point(int k);
 // The ray marker index of finger f's j-th marker (j = 0…3): thumb s1–s4, …, pinky s18–s21.
-constexpr int finger_marker(int finger, int j) { return finger < 4 ? 1 + 4 * finger + j : 18 + j; }
+constexpr int finger_marker(int finger, int j) {
+  return finger < 4 ? 1 + 4 * finger + j : 18 + j;
+}
 
 struct PreparedFrame {
   // Markers s0…s21 in world coordinates (SoA).

@@ -27,7 +27,9 @@
 namespace lmc::vis {
 
 // Lanes 0…14 but finger f's three.
-constexpr unsigned others_lane_mask(int finger) { return 0x7FFFu & ~(7u << (3 * finger)); }
+constexpr unsigned others_lane_mask(int finger) {
+  return 0x7FFFu & ~(7u << (3 * finger));
+}
 
 // Multiply, add, subtract with round-to-nearest, never fused (see above). The zero-masked forms
 // with every lane selected are the same instructions; GCC 12's unmasked ones start from an
@@ -44,8 +46,8 @@ inline constexpr __mmask8 kAllLanes = 0xFF;
   return _mm512_maskz_sub_round_pd(kAllLanes, a, b, kRoundNearest);
 }
 
-[[gnu::target("avx512f")]] inline bool others_occlude_avx512(const PhalanxRing& r, unsigned lanes, double vx,
-                                                             double vy, double vz, double vv, double radius_sq) {
+[[gnu::target("avx512f")]] inline bool others_occlude_avx512(const PhalanxRing& r, unsigned lanes, double vx, double vy,
+                                                             double vz, double vv, double radius_sq) {
   const __m512d x = _mm512_set1_pd(vx);
   const __m512d y = _mm512_set1_pd(vy);
   const __m512d z = _mm512_set1_pd(vz);
@@ -62,8 +64,8 @@ inline constexpr __mmask8 kAllLanes = 0xFF;
     const __m512d ny = sub8(mul8(z, wx), mul8(x, wz));
     const __m512d nz = sub8(mul8(x, wy), mul8(y, wx));
     const __m512d n2 = add8(add8(mul8(nx, nx), mul8(ny, ny)), mul8(nz, nz));
-    const __m512d ne =
-        add8(add8(mul8(x, _mm512_load_pd(r.gx + o)), mul8(y, _mm512_load_pd(r.gy + o))), mul8(z, _mm512_load_pd(r.gz + o)));
+    const __m512d ne = add8(add8(mul8(x, _mm512_load_pd(r.gx + o)), mul8(y, _mm512_load_pd(r.gy + o))),
+                            mul8(z, _mm512_load_pd(r.gz + o)));
     nn[q] = n2;
     const auto tested = static_cast<__mmask8>(lanes >> o);
     near[q] = _mm512_mask_cmp_pd_mask(_mm512_mask_cmp_pd_mask(tested, n2, zero, _CMP_GT_OQ), mul8(ne, ne),
@@ -76,10 +78,10 @@ inline constexpr __mmask8 kAllLanes = 0xFF;
   __mmask8 hit_any = 0;
   for (int q = 0; q < 2; ++q) {
     const int o = 8 * q;
-    const __m512d ve =
-        add8(add8(mul8(x, _mm512_load_pd(r.ex + o)), mul8(y, _mm512_load_pd(r.ey + o))), mul8(z, _mm512_load_pd(r.ez + o)));
-    const __m512d vw =
-        add8(add8(mul8(x, _mm512_load_pd(r.wx + o)), mul8(y, _mm512_load_pd(r.wy + o))), mul8(z, _mm512_load_pd(r.wz + o)));
+    const __m512d ve = add8(add8(mul8(x, _mm512_load_pd(r.ex + o)), mul8(y, _mm512_load_pd(r.ey + o))),
+                            mul8(z, _mm512_load_pd(r.ez + o)));
+    const __m512d vw = add8(add8(mul8(x, _mm512_load_pd(r.wx + o)), mul8(y, _mm512_load_pd(r.wy + o))),
+                            mul8(z, _mm512_load_pd(r.wz + o)));
     const __m512d we = _mm512_load_pd(r.we + o);
     const __m512d t1 = sub8(mul8(ve, _mm512_load_pd(r.ww + o)), mul8(vw, we));
     const __m512d t2 = sub8(mul8(vw, ve), mul8(v2, we));

@@ -31,7 +31,9 @@ inline constexpr int kOtherPhalanges = 12;
 
 // First ring lane of the 12 phalanges that may hide finger f (the fingers after f, then those
 // before it, wrapping around).
-constexpr int others_start(int finger) { return finger == kNumDigits - 1 ? 0 : 3 * (finger + 1); }
+constexpr int others_start(int finger) {
+  return finger == kNumDigits - 1 ? 0 : 3 * (finger + 1);
+}
 
 // Per (device, frame), as PhalanxBlock: e = b − o, w, g = w × e, w·e, w·w, length.
 struct PhalanxRing {
@@ -42,8 +44,7 @@ struct PhalanxRing {
 };
 
 // The phalanges as prepare_phalanges computes them (set_phalanx_lane), then the wrap-around copies.
-[[gnu::always_inline]] inline void prepare_phalanx_ring(const PreparedFrame& fr, const DeviceView& d,
-                                                        PhalanxRing& r) {
+[[gnu::always_inline]] inline void prepare_phalanx_ring(const PreparedFrame& fr, const DeviceView& d, PhalanxRing& r) {
   for (int p = 0; p < kNumPhalanges; ++p) set_phalanx_lane(fr, d, p, r);
   for (int p = kNumPhalanges; p < kRingLanes; ++p) {
     const int q = p - kNumPhalanges;

@@ -51,13 +51,20 @@ VisibilityExplanation explain_visibility(const PreparedFrame& fr, const DeviceVi
 
 std::string_view hidden_reason_name(HiddenReason r) {
   switch (r) {
-    case HiddenReason::kVisible: return "visible";
-    case HiddenReason::kNoHand: return "no hand";
-    case HiddenReason::kWrongApproach: return "wrong approach";
-    case HiddenReason::kOutOfRange: return "out of range";
-    case HiddenReason::kOutOfView: return "out of view";
-    case HiddenReason::kBehindPalm: return "behind the palm";
-    case HiddenReason::kBehindFinger: return "behind finger";
+    case HiddenReason::kVisible:
+      return "visible";
+    case HiddenReason::kNoHand:
+      return "no hand";
+    case HiddenReason::kWrongApproach:
+      return "wrong approach";
+    case HiddenReason::kOutOfRange:
+      return "out of range";
+    case HiddenReason::kOutOfView:
+      return "out of view";
+    case HiddenReason::kBehindPalm:
+      return "behind the palm";
+    case HiddenReason::kBehindFinger:
+      return "behind finger";
   }
   return "?";
 }
@@ -69,12 +76,18 @@ std::string describe(const FingerVerdict& v) {
              std::string(hand_point_name(ray_marker_hand_point(v.marker))) + ") ";
   }
   switch (v.reason) {
-    case HiddenReason::kVisible: return "visible";
-    case HiddenReason::kNoHand: return "no hand";
-    case HiddenReason::kWrongApproach: return "wrong approach (the hand does not enter from the user's side)";
-    case HiddenReason::kOutOfRange: return marker + "out of range";
-    case HiddenReason::kOutOfView: return marker + "out of view";
-    case HiddenReason::kBehindPalm: return marker + "behind the palm";
+    case HiddenReason::kVisible:
+      return "visible";
+    case HiddenReason::kNoHand:
+      return "no hand";
+    case HiddenReason::kWrongApproach:
+      return "wrong approach (the hand does not enter from the user's side)";
+    case HiddenReason::kOutOfRange:
+      return marker + "out of range";
+    case HiddenReason::kOutOfView:
+      return marker + "out of view";
+    case HiddenReason::kBehindPalm:
+      return marker + "behind the palm";
     case HiddenReason::kBehindFinger:
       return marker + "behind finger " + std::string(digit_name(v.occluding_finger));
   }

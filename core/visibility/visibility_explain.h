@@ -24,9 +24,9 @@ enum class HiddenReason : int {
 
 struct FingerVerdict {
   HiddenReason reason = HiddenReason::kVisible;
-  int marker = -1;            // ray marker index s_k that failed (−1 for visible / approach / no hand)
-  int occluding_finger = -1;  // kBehindFinger: the finger g whose phalanx blocks the ray
-  int occluding_phalanx = -1; // kBehindFinger: phalanx index 0…14 (3·g + segment)
+  int marker = -1;             // ray marker index s_k that failed (−1 for visible / approach / no hand)
+  int occluding_finger = -1;   // kBehindFinger: the finger g whose phalanx blocks the ray
+  int occluding_phalanx = -1;  // kBehindFinger: phalanx index 0…14 (3·g + segment)
 
   bool visible() const { return reason == HiddenReason::kVisible; }
   bool operator==(const FingerVerdict&) const = default;
@@ -38,9 +38,9 @@ struct VisibilityExplanation {
   double approach_dot = 0;  // a·f
 };
 
-// For a hidden finger the reason is the first failing test in the order of docs/algorithms/visibility.md (approach, then
-// range/pyramid over s1…s21 in index order, then for each of the finger's markers in order:
-// palm, then other fingers' phalanges in index order).
+// For a hidden finger the reason is the first failing test in the order of docs/algorithms/visibility.md (approach,
+// then range/pyramid over s1…s21 in index order, then for each of the finger's markers in order: palm, then other
+// fingers' phalanges in index order).
 VisibilityExplanation explain_visibility(const PreparedFrame& frame, const DeviceView& device,
                                          const VisibilityLimits& limits);
 

@@ -26,8 +26,8 @@ namespace {
 // the tally need not transform the markers again. kBuild is never kBest.
 template <bool kCut, KernelBuild kBuild>
 [[gnu::always_inline]] inline FingerBits visible_fingers_body(const PreparedFrame& fr, const DeviceView& d,
-                                                            const VisibilityLimits& lim, double cut_mm,
-                                                            FingerBits* cut_bits) {
+                                                              const VisibilityLimits& lim, double cut_mm,
+                                                              FingerBits* cut_bits) {
   if constexpr (kCut) *cut_bits = 0;
   if (!fr.valid) return 0;
   // Visibility step 1 approach direction.
@@ -50,10 +50,10 @@ template <bool kCut, KernelBuild kBuild>
     const double px = d.rt[0] * x + d.rt[1] * y + d.rt[2] * z;
     const double py = d.rt[3] * x + d.rt[4] * y + d.rt[5] * z;
     const double pz = d.rt[6] * x + d.rt[7] * y + d.rt[8] * z;
-    outside |= ((v2 > lim.range_sq_exact) | (std::abs(px) > py * lim.tan_half_long) |
-                (std::abs(pz) > py * lim.tan_half_short))
-                   ? -1
-                   : 0;
+    outside |=
+        ((v2 > lim.range_sq_exact) | (std::abs(px) > py * lim.tan_half_long) | (std::abs(pz) > py * lim.tan_half_short))
+            ? -1
+            : 0;
     if constexpr (kCut) {
       far[k] = ((std::abs(px) > cut_mm) | (std::abs(py) > cut_mm) | (std::abs(pz) > cut_mm)) ? -1 : 0;
     }
@@ -89,7 +89,8 @@ template <bool kCut, KernelBuild kBuild>
       if (!hidden) {
 #if defined(__x86_64__) && defined(__GNUC__)
         if constexpr (kBuild == KernelBuild::kAvx512) {
-          hidden = vis::others_occlude_avx512(ring, vis::others_lane_mask(f), vx[k], vy[k], vz[k], vv[k], lim.radius_sq);
+          hidden =
+              vis::others_occlude_avx512(ring, vis::others_lane_mask(f), vx[k], vy[k], vz[k], vv[k], lim.radius_sq);
         } else {
           hidden = vis::others_occlude(ring, start, vx[k], vy[k], vz[k], vv[k], lim.radius_sq);
         }
@@ -133,33 +134,32 @@ template <bool kCut, KernelBuild kBuild>
 
 #if defined(__x86_64__) && defined(__GNUC__)
 [[gnu::target("avx2")]] FingerBits visible_fingers_avx2(const PreparedFrame& fr, const DeviceView& d,
-                                                       const VisibilityLimits& lim) {
+                                                        const VisibilityLimits& lim) {
   return visible_fingers_body<false, KernelBuild::kAvx2>(fr, d, lim, 0.0, nullptr);
 }
 [[gnu::target("avx2")]] void device_run_avx2(const DeviceView& d, std::span<const PreparedFrame> frames,
-                                            const VisibilityLimits& lim, FingerBits* out) {
+                                             const VisibilityLimits& lim, FingerBits* out) {
   device_run_body<false, KernelBuild::kAvx2>(d, frames, lim, 0.0, out, nullptr);
 }
 [[gnu::target("avx2")]] void device_run_cut_avx2(const DeviceView& d, std::span<const PreparedFrame> frames,
-                                                const VisibilityLimits& lim, double cut_mm, FingerBits* out,
-                                                FingerBits* cut_out) {
+                                                 const VisibilityLimits& lim, double cut_mm, FingerBits* out,
+                                                 FingerBits* cut_out) {
   device_run_body<true, KernelBuild::kAvx2>(d, frames, lim, cut_mm, out, cut_out);
 }
 // flatten: inlines others_occlude_avx512 into the body (phalanx_block_avx512.h says why it must).
-[[gnu::target("avx512f"), gnu::flatten]] FingerBits visible_fingers_avx512(const PreparedFrame& fr,
-                                                                          const DeviceView& d,
-                                                                          const VisibilityLimits& lim) {
+[[gnu::target("avx512f"), gnu::flatten]] FingerBits visible_fingers_avx512(const PreparedFrame& fr, const DeviceView& d,
+                                                                           const VisibilityLimits& lim) {
   return visible_fingers_body<false, KernelBuild::kAvx512>(fr, d, lim, 0.0, nullptr);
 }
 [[gnu::target("avx512f"), gnu::flatten]] void device_run_avx512(const DeviceView& d,
-                                                               std::span<const PreparedFrame> frames,
-                                                               const VisibilityLimits& lim, FingerBits* out) {
+                                                                std::span<const PreparedFrame> frames,
+                                                                const VisibilityLimits& lim, FingerBits* out) {
   device_run_body<false, KernelBuild::kAvx512>(d, frames, lim, 0.0, out, nullptr);
 }
 [[gnu::target("avx512f"), gnu::flatten]] void device_run_cut_avx512(const DeviceView& d,
-                                                                   std::span<const PreparedFrame> frames,
-                                                                   const VisibilityLimits& lim, double cut_mm,
-                                                                   FingerBits* out, FingerBits* cut_out) {
+                                                                    std::span<const PreparedFrame> frames,
+                                                                    const VisibilityLimits& lim, double cut_mm,
+                                                                    FingerBits* out, FingerBits* cut_out) {
   device_run_body<true, KernelBuild::kAvx512>(d, frames, lim, cut_mm, out, cut_out);
 }
 bool cpu_has_avx2() {
@@ -177,8 +177,12 @@ bool cpu_has_avx512() {
   return yes;
 }
 #else
-bool cpu_has_avx2() { return false; }
-bool cpu_has_avx512() { return false; }
+bool cpu_has_avx2() {
+  return false;
+}
+bool cpu_has_avx512() {
+  return false;
+}
 #endif
 
 // LMC_KERNEL, read once: which build kBest means. The AVX-512 build is the fastest on CPUs with
@@ -230,13 +234,18 @@ void device_run_cut_baseline(const DeviceView& d, std::span<const PreparedFrame>
 
 }  // namespace
 
-std::string kernel_setting_problem() { return kernel_setting().problem; }
+std::string kernel_setting_problem() {
+  return kernel_setting().problem;
+}
 
 const char* kernel_build_name(KernelBuild build) {
   switch (runnable_build(build)) {
-    case KernelBuild::kAvx512: return "AVX-512";
-    case KernelBuild::kAvx2: return "AVX2";
-    default: return "baseline";
+    case KernelBuild::kAvx512:
+      return "AVX-512";
+    case KernelBuild::kAvx2:
+      return "AVX2";
+    default:
+      return "baseline";
   }
 }
 
@@ -244,10 +253,13 @@ FingerBits visible_fingers(const PreparedFrame& fr, const DeviceView& d, const V
                            KernelBuild build) {
   switch (runnable_build(build)) {
 #if defined(__x86_64__) && defined(__GNUC__)
-    case KernelBuild::kAvx512: return visible_fingers_avx512(fr, d, lim);
-    case KernelBuild::kAvx2: return visible_fingers_avx2(fr, d, lim);
+    case KernelBuild::kAvx512:
+      return visible_fingers_avx512(fr, d, lim);
+    case KernelBuild::kAvx2:
+      return visible_fingers_avx2(fr, d, lim);
 #endif
-    default: return visible_fingers_body<false, KernelBuild::kBaseline>(fr, d, lim, 0.0, nullptr);
+    default:
+      return visible_fingers_body<false, KernelBuild::kBaseline>(fr, d, lim, 0.0, nullptr);
   }
 }
 
@@ -256,10 +268,13 @@ void device_visibility(const DeviceView& device, std::span<const PreparedFrame> 
   if (out.size() < frames.size()) throw Error("device_visibility: output shorter than the frames");
   switch (runnable_build(build)) {
 #if defined(__x86_64__) && defined(__GNUC__)
-    case KernelBuild::kAvx512: return device_run_avx512(device, frames, limits, out.data());
-    case KernelBuild::kAvx2: return device_run_avx2(device, frames, limits, out.data());
+    case KernelBuild::kAvx512:
+      return device_run_avx512(device, frames, limits, out.data());
+    case KernelBuild::kAvx2:
+      return device_run_avx2(device, frames, limits, out.data());
 #endif
-    default: return device_run_baseline(device, frames, limits, out.data());
+    default:
+      return device_run_baseline(device, frames, limits, out.data());
   }
 }
 
@@ -273,9 +288,11 @@ void device_visibility_with_cut(const DeviceView& device, std::span<const Prepar
 #if defined(__x86_64__) && defined(__GNUC__)
     case KernelBuild::kAvx512:
       return device_run_cut_avx512(device, frames, limits, axis_cut_mm, out.data(), cut_out.data());
-    case KernelBuild::kAvx2: return device_run_cut_avx2(device, frames, limits, axis_cut_mm, out.data(), cut_out.data());
+    case KernelBuild::kAvx2:
+      return device_run_cut_avx2(device, frames, limits, axis_cut_mm, out.data(), cut_out.data());
 #endif
-    default: return device_run_cut_baseline(device, frames, limits, axis_cut_mm, out.data(), cut_out.data());
+    default:
+      return device_run_cut_baseline(device, frames, limits, axis_cut_mm, out.data(), cut_out.data());
   }
 }
 

@@ -35,9 +35,8 @@ FingerBits visible_fingers(const PreparedFrame& frame, const DeviceView& device,
 // One device over many frames (the workbench caches these per-device columns; the swarm
 // evaluator runs it per chunk of frames). Dispatches once per call, not per frame. `out` holds at
 // least frames.size() entries.
-void device_visibility(const DeviceView& device, std::span<const PreparedFrame> frames,
-                       const VisibilityLimits& limits, std::span<FingerBits> out,
-                       KernelBuild build = KernelBuild::kBest);
+void device_visibility(const DeviceView& device, std::span<const PreparedFrame> frames, const VisibilityLimits& limits,
+                       std::span<FingerBits> out, KernelBuild build = KernelBuild::kBest);
 
 // The same bits, plus per frame the fingers that have a marker beyond ±axis_cut_mm on an axis of
 // the device (bit f as in FingerBits; 0 where the device sees nothing). The robust metric's axis

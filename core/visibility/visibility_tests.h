@@ -14,7 +14,9 @@ namespace lmc::vis {
 inline double approach_dot(const PreparedFrame& fr, const DeviceView& d) {
   return fr.ax * d.fx + fr.ay * d.fy + fr.az * d.fz;
 }
-inline bool approach_ok(const PreparedFrame& fr, const DeviceView& d) { return approach_dot(fr, d) >= 0.0; }
+inline bool approach_ok(const PreparedFrame& fr, const DeviceView& d) {
+  return approach_dot(fr, d) >= 0.0;
+}
 
 enum class ViewResult : int { kInside = 0, kOutOfRange = 1, kOutOfView = 2 };
 

@@ -18,7 +18,9 @@ LiveFusion::LiveFusion(const Layout& layout, LiveFusionOptions options)
   worker_ = std::jthread([this](const std::stop_token& stop) { run(stop); });
 }
 
-LiveFusion::~LiveFusion() { stop(); }
+LiveFusion::~LiveFusion() {
+  stop();
+}
 
 void LiveFusion::stop() {
   {

@@ -42,12 +42,12 @@ struct LiveFusionStats {
   double latency_p50_ms = std::numeric_limits<double>::quiet_NaN();
   double latency_p95_ms = std::numeric_limits<double>::quiet_NaN();
   double latency_max_ms = std::numeric_limits<double>::quiet_NaN();
-  size_t window_frames = 0;        // frames the percentiles describe
-  std::int64_t frames_tapped = 0;  // every frame the hub handed over
-  std::int64_t frames_fused = 0;   // fed to the fusion
-  std::int64_t frames_dropped = 0; // the queue was full: dropped from the display only
-  std::int64_t frames_refused = 0; // the fusion refused them (slot outside the layout, bad time)
-  std::uint64_t published = 0;     // fused hands published so far
+  size_t window_frames = 0;         // frames the percentiles describe
+  std::int64_t frames_tapped = 0;   // every frame the hub handed over
+  std::int64_t frames_fused = 0;    // fed to the fusion
+  std::int64_t frames_dropped = 0;  // the queue was full: dropped from the display only
+  std::int64_t frames_refused = 0;  // the fusion refused them (slot outside the layout, bad time)
+  std::uint64_t published = 0;      // fused hands published so far
 };
 
 class LiveFusion final : public FrameTap {

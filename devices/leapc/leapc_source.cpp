@@ -19,9 +19,13 @@ namespace {
 
 constexpr std::int64_t kDropReportIntervalNs = 1'000'000'000;  // dropped frames: one event per device and second
 
-Vec3 to_vec(const LEAP_VECTOR& v) { return {v.x, v.y, v.z}; }
+Vec3 to_vec(const LEAP_VECTOR& v) {
+  return {v.x, v.y, v.z};
+}
 
-HandType to_hand_type(eLeapHandType t) { return t == eLeapHandType_Left ? HandType::kLeft : HandType::kRight; }
+HandType to_hand_type(eLeapHandType t) {
+  return t == eLeapHandType_Left ? HandType::kLeft : HandType::kRight;
+}
 
 // The study's 28 points + 2 vectors (docs/algorithms/hand-points.md).
 void copy_hand(const LEAP_HAND& h, HandFrame& f) {
@@ -48,20 +52,27 @@ constexpr std::uint32_t kPidLeapMotionController2 = 0x1206;
 
 eLeapTrackingMode to_leap_mode(TrackingMode m) {
   switch (m) {
-    case TrackingMode::kScreenTop: return eLeapTrackingMode_ScreenTop;
-    case TrackingMode::kHeadMounted: return eLeapTrackingMode_HMD;
+    case TrackingMode::kScreenTop:
+      return eLeapTrackingMode_ScreenTop;
+    case TrackingMode::kHeadMounted:
+      return eLeapTrackingMode_HMD;
     case TrackingMode::kDesktop:
-    case TrackingMode::kUnknown: break;
+    case TrackingMode::kUnknown:
+      break;
   }
   return eLeapTrackingMode_Desktop;
 }
 
 TrackingMode from_leap_mode(std::uint32_t m) {
   switch (m) {
-    case eLeapTrackingMode_Desktop: return TrackingMode::kDesktop;
-    case eLeapTrackingMode_HMD: return TrackingMode::kHeadMounted;
-    case eLeapTrackingMode_ScreenTop: return TrackingMode::kScreenTop;
-    default: break;
+    case eLeapTrackingMode_Desktop:
+      return TrackingMode::kDesktop;
+    case eLeapTrackingMode_HMD:
+      return TrackingMode::kHeadMounted;
+    case eLeapTrackingMode_ScreenTop:
+      return TrackingMode::kScreenTop;
+    default:
+      break;
   }
   return TrackingMode::kUnknown;
 }
@@ -92,20 +103,34 @@ struct PendingOpen {
 
 std::string leapc_result_name(std::uint32_t rs) {
   switch (rs) {
-    case eLeapRS_Success: return "eLeapRS_Success";
-    case eLeapRS_UnknownError: return "eLeapRS_UnknownError";
-    case eLeapRS_InvalidArgument: return "eLeapRS_InvalidArgument";
-    case eLeapRS_InsufficientResources: return "eLeapRS_InsufficientResources";
-    case eLeapRS_InsufficientBuffer: return "eLeapRS_InsufficientBuffer";
-    case eLeapRS_Timeout: return "eLeapRS_Timeout";
-    case eLeapRS_NotConnected: return "eLeapRS_NotConnected";
-    case eLeapRS_HandshakeIncomplete: return "eLeapRS_HandshakeIncomplete";
-    case eLeapRS_UnexpectedClosed: return "eLeapRS_UnexpectedClosed";
-    case eLeapRS_ConcurrentPoll: return "eLeapRS_ConcurrentPoll";
-    case eLeapRS_NotAvailable: return "eLeapRS_NotAvailable";
-    case eLeapRS_NotStreaming: return "eLeapRS_NotStreaming";
-    case eLeapRS_CannotOpenDevice: return "eLeapRS_CannotOpenDevice";
-    default: break;
+    case eLeapRS_Success:
+      return "eLeapRS_Success";
+    case eLeapRS_UnknownError:
+      return "eLeapRS_UnknownError";
+    case eLeapRS_InvalidArgument:
+      return "eLeapRS_InvalidArgument";
+    case eLeapRS_InsufficientResources:
+      return "eLeapRS_InsufficientResources";
+    case eLeapRS_InsufficientBuffer:
+      return "eLeapRS_InsufficientBuffer";
+    case eLeapRS_Timeout:
+      return "eLeapRS_Timeout";
+    case eLeapRS_NotConnected:
+      return "eLeapRS_NotConnected";
+    case eLeapRS_HandshakeIncomplete:
+      return "eLeapRS_HandshakeIncomplete";
+    case eLeapRS_UnexpectedClosed:
+      return "eLeapRS_UnexpectedClosed";
+    case eLeapRS_ConcurrentPoll:
+      return "eLeapRS_ConcurrentPoll";
+    case eLeapRS_NotAvailable:
+      return "eLeapRS_NotAvailable";
+    case eLeapRS_NotStreaming:
+      return "eLeapRS_NotStreaming";
+    case eLeapRS_CannotOpenDevice:
+      return "eLeapRS_CannotOpenDevice";
+    default:
+      break;
   }
   char buf[32];
   std::snprintf(buf, sizeof buf, "eLeapRS 0x%08X", rs);
@@ -114,12 +139,18 @@ std::string leapc_result_name(std::uint32_t rs) {
 
 std::string leapc_status_text(std::uint32_t s) {
   switch (s) {
-    case eLeapDeviceStatus_UnknownFailure: return "unknown failure";
-    case eLeapDeviceStatus_BadCalibration: return "bad calibration";
-    case eLeapDeviceStatus_BadFirmware: return "bad firmware";
-    case eLeapDeviceStatus_BadTransport: return "bad transport (USB link: use its own port or a powered hub)";
-    case eLeapDeviceStatus_BadControl: return "bad control";
-    default: break;
+    case eLeapDeviceStatus_UnknownFailure:
+      return "unknown failure";
+    case eLeapDeviceStatus_BadCalibration:
+      return "bad calibration";
+    case eLeapDeviceStatus_BadFirmware:
+      return "bad firmware";
+    case eLeapDeviceStatus_BadTransport:
+      return "bad transport (USB link: use its own port or a powered hub)";
+    case eLeapDeviceStatus_BadControl:
+      return "bad control";
+    default:
+      break;
   }
   std::string out;
   if (s & eLeapDeviceStatus_Streaming) out += "streaming ";
@@ -133,12 +164,18 @@ std::string leapc_status_text(std::uint32_t s) {
 
 std::string leapc_model_name(std::uint32_t pid) {
   switch (pid) {
-    case kPidLeapMotionController: return "Leap Motion Controller";
-    case kPidLeapMotionController2: return "Leap Motion Controller 2";
-    case kPidStereoIr170: return "Stereo IR 170";
-    case kPidRigel: return "Rigel";
-    case kPid3Di: return "3Di";
-    default: break;
+    case kPidLeapMotionController:
+      return "Leap Motion Controller";
+    case kPidLeapMotionController2:
+      return "Leap Motion Controller 2";
+    case kPidStereoIr170:
+      return "Stereo IR 170";
+    case kPidRigel:
+      return "Rigel";
+    case kPid3Di:
+      return "3Di";
+    default:
+      break;
   }
   char buf[48];
   std::snprintf(buf, sizeof buf, "Ultraleap device (product id 0x%04X)", pid);
@@ -147,7 +184,7 @@ std::string leapc_model_name(std::uint32_t pid) {
 
 struct LeapcSource::Impl {
   LEAP_CONNECTION connection = nullptr;
-  std::map<std::uint32_t, OpenDevice> devices;    // by LEAP_DEVICE_REF.id
+  std::map<std::uint32_t, OpenDevice> devices;   // by LEAP_DEVICE_REF.id
   std::map<std::uint32_t, PendingOpen> pending;  // announced, not opened yet
   std::set<std::uint32_t> refused;               // ids refused for a duplicate serial
   int service_sessions = 0;                      // connection losses so far
@@ -174,7 +211,9 @@ LeapcSource::LeapcSource(LeapcOptions options) : options_(std::move(options)), i
   if (options_.max_attempts < 1) options_.max_attempts = 1;
 }
 
-LeapcSource::~LeapcSource() { stop(); }
+LeapcSource::~LeapcSource() {
+  stop();
+}
 
 void LeapcSource::start(FrameSink& sink) {
   if (thread_.joinable()) return;
@@ -286,7 +325,7 @@ void LeapcSource::run(FrameSink& sink) {
     }
     ++d.subscribe_attempts;
     const std::string what = "LeapC: controller " + d.serial + " (device " + std::to_string(id) +
-                              ") cannot be subscribed to (" + leapc_result_name(rs) + ")";
+                             ") cannot be subscribed to (" + leapc_result_name(rs) + ")";
     if (d.subscribe_attempts >= options_.max_attempts) {
       say(what + "; gave up after " + std::to_string(d.subscribe_attempts) +
           " attempts: it is not used (the Ultraleap service must be 5.4 or newer)");
@@ -406,7 +445,8 @@ void LeapcSource::run(FrameSink& sink) {
         if (msg.connection_event != nullptr && msg.connection_event->flags != 0) {
           std::string what;
           if (msg.connection_event->flags & eLeapServiceState_LowFpsDetected) what += " low frame rate detected;";
-          if (msg.connection_event->flags & eLeapServiceState_PoorPerformancePause) what += " paused for poor performance;";
+          if (msg.connection_event->flags & eLeapServiceState_PoorPerformancePause)
+            what += " paused for poor performance;";
           if (msg.connection_event->flags & eLeapServiceState_TrackingErrorUnknown) what += " tracking error;";
           say("Ultraleap service:" + what);
         }

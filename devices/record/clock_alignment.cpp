@@ -5,7 +5,9 @@
 namespace lmc::devices {
 namespace {
 
-std::int64_t ns_to_us(std::int64_t ns) { return static_cast<std::int64_t>(std::llround(static_cast<double>(ns) / 1000.0)); }
+std::int64_t ns_to_us(std::int64_t ns) {
+  return static_cast<std::int64_t>(std::llround(static_cast<double>(ns) / 1000.0));
+}
 
 // The device clock at the event, best first: read from the clock itself at the snapshot (exact
 // up to the host time between snapshot and event), else extrapolated from the latest frame

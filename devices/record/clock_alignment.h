@@ -4,8 +4,8 @@
 // (µs, the device's own clock) belongs to that host instant. Processing later maps TRC time 0
 // (CaptureStart + Delay) to each device's clock with it. Key list: devices/README.md.
 #include <cstdint>
-#include <optional>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <string>
 
 #include "devices/device_hub.h"

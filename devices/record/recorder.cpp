@@ -17,11 +17,16 @@ constexpr size_t kWriteChunkBytes = 1 << 20;
 
 const char* recorder_state_name(RecorderState s) {
   switch (s) {
-    case RecorderState::kIdle: return "idle";
-    case RecorderState::kRecording: return "recording";
-    case RecorderState::kStopped: return "stopped";
-    case RecorderState::kFailed: return "failed";
-    case RecorderState::kAborted: return "aborted";
+    case RecorderState::kIdle:
+      return "idle";
+    case RecorderState::kRecording:
+      return "recording";
+    case RecorderState::kStopped:
+      return "stopped";
+    case RecorderState::kFailed:
+      return "failed";
+    case RecorderState::kAborted:
+      return "aborted";
   }
   return "?";
 }
@@ -116,12 +121,25 @@ void Recorder::device_event(const DeviceEvent& event, int device_id, const std::
                       {"slot", slot},
                       {"message", event.message}};
   switch (event.kind) {
-    case DeviceEventKind::kAppeared: e["event"] = "appeared"; break;
-    case DeviceEventKind::kLost: e["event"] = "lost"; break;
-    case DeviceEventKind::kFailure: e["event"] = "failure"; break;
-    case DeviceEventKind::kDroppedFrames: e["event"] = "dropped_frames"; e["count"] = event.count; break;
-    case DeviceEventKind::kNotice: e["event"] = "notice"; break;
-    case DeviceEventKind::kTrackingMode: e["event"] = "tracking_mode"; break;
+    case DeviceEventKind::kAppeared:
+      e["event"] = "appeared";
+      break;
+    case DeviceEventKind::kLost:
+      e["event"] = "lost";
+      break;
+    case DeviceEventKind::kFailure:
+      e["event"] = "failure";
+      break;
+    case DeviceEventKind::kDroppedFrames:
+      e["event"] = "dropped_frames";
+      e["count"] = event.count;
+      break;
+    case DeviceEventKind::kNotice:
+      e["event"] = "notice";
+      break;
+    case DeviceEventKind::kTrackingMode:
+      e["event"] = "tracking_mode";
+      break;
   }
   if (!event.info.model.empty()) e["model"] = event.info.model;
   if (!event.info.tracking_mode.empty()) e["tracking_mode"] = event.info.tracking_mode;
@@ -141,8 +159,7 @@ void Recorder::device_event(const DeviceEvent& event, int device_id, const std::
 
 void Recorder::other_side_hand(int device_id, std::int64_t host_receive_ns) {
   // Counted as offer() wrote: rows outside the trial's window are not in the file.
-  if (config_.wait_for_go &&
-      (host_receive_ns < window_from_ns_.load() || host_receive_ns >= window_until_ns_.load()))
+  if (config_.wait_for_go && (host_receive_ns < window_from_ns_.load() || host_receive_ns >= window_until_ns_.load()))
     return;
   std::lock_guard lock(stats_mutex_);
   DeviceRecordStats& s = stats_[device_id];
@@ -302,8 +319,8 @@ RecorderStatus Recorder::stop(const std::vector<std::pair<std::string, std::stri
   } catch (const std::exception& e) {
     // Never swallowed: with a full disk the sidecar on disk still says "recording"
     // with no frames, so the status must say so even when another error came first.
-    const std::string why = std::string("cannot write the session sidecar (") + e.what() +
-                            "); the sidecar on disk still says 'recording'";
+    const std::string why =
+        std::string("cannot write the session sidecar (") + e.what() + "); the sidecar on disk still says 'recording'";
     {
       std::lock_guard lock(stats_mutex_);
       error_ = error_.empty() ? why : error_ + "; and " + why;
@@ -321,11 +338,16 @@ RecorderStatus Recorder::status() const {
   std::lock_guard lock(stats_mutex_);
   st.devices = stats_;
   st.error = error_;
-  if (failed_) st.state = RecorderState::kFailed;
-  else if (aborted_) st.state = RecorderState::kAborted;
-  else if (!started_) st.state = RecorderState::kIdle;
-  else if (stop_requested_ && !thread_.joinable()) st.state = RecorderState::kStopped;
-  else st.state = RecorderState::kRecording;
+  if (failed_)
+    st.state = RecorderState::kFailed;
+  else if (aborted_)
+    st.state = RecorderState::kAborted;
+  else if (!started_)
+    st.state = RecorderState::kIdle;
+  else if (stop_requested_ && !thread_.joinable())
+    st.state = RecorderState::kStopped;
+  else
+    st.state = RecorderState::kRecording;
   return st;
 }
 
@@ -386,10 +408,14 @@ RecorderSidecar Recorder::sidecar(const char* state) const {
   sc.events = events_;
   sc.ground_truth = ground_truth_;
   for (const auto& [key, value] : notes_.items()) {
-    if (key == "vicon_alignment") sc.vicon_alignment = value;
-    else if (key == "vicon_trigger_received") sc.vicon_trigger_received = value;
-    else if (key == "vicon_stop_received") sc.vicon_stop_received = value;
-    else sc.unknown[key] = value;
+    if (key == "vicon_alignment")
+      sc.vicon_alignment = value;
+    else if (key == "vicon_trigger_received")
+      sc.vicon_trigger_received = value;
+    else if (key == "vicon_stop_received")
+      sc.vicon_stop_received = value;
+    else
+      sc.unknown[key] = value;
   }
   if (config_.wait_for_go) {
     nlohmann::json w = config_.trial_window.is_object() ? config_.trial_window : nlohmann::json::object();

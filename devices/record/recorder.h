@@ -14,8 +14,8 @@
 #include <map>
 #include <memory>
 #include <mutex>
-#include <optional>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <string>
 #include <thread>
 #include <vector>
@@ -34,7 +34,7 @@ struct RecorderConfig {
   std::string trial;  // checked with validate_trial_name
   Layout layout;
   std::string backend;
-  size_t queue_capacity = 8192;            // frames (≈17 s of four devices at 120 Hz)
+  size_t queue_capacity = 8192;             // frames (≈17 s of four devices at 120 Hz)
   std::int64_t flush_interval_ms = 250;     // buffer → file at least this often (≤ 1000)
   std::int64_t gap_threshold_us = 250'000;  // a device silent this long is a gap in the sidecar
   // Tests inject failing sinks; default opens the file.
@@ -43,7 +43,8 @@ struct RecorderConfig {
   // The file holds the trial only: no row is written until open_window() says when the subject
   // was told to go (the countdown before it is not part of the trial). Off: every row from start().
   bool wait_for_go = false;
-  nlohmann::json trial_window = nlohmann::json::object();  // more of the sidecar's trial_window (countdown_s, planned_s)
+  nlohmann::json trial_window =
+      nlohmann::json::object();  // more of the sidecar's trial_window (countdown_s, planned_s)
 };
 
 // The trial's three files; the naming rule lives in one place (core/session/trial_files.h).
@@ -61,8 +62,8 @@ struct DeviceRecordStats {
   std::string serial;
   std::int64_t frames_written = 0;
   std::int64_t frames_with_hand = 0;
-  std::int64_t frames_dropped_queue = 0;   // offered while the queue was full
-  std::int64_t frame_id_gaps = 0;          // frames missing according to the device counter
+  std::int64_t frames_dropped_queue = 0;  // offered while the queue was full
+  std::int64_t frame_id_gaps = 0;         // frames missing according to the device counter
   std::int64_t first_timestamp_us = 0;
   std::int64_t last_timestamp_us = 0;
   std::vector<GapRecord> gaps;

@@ -19,22 +19,32 @@ namespace lmc::devices {
 
 const char* trial_outcome_name(TrialOutcome o) {
   switch (o) {
-    case TrialOutcome::kCompleted: return "completed";
-    case TrialOutcome::kAborted: return "aborted";
-    case TrialOutcome::kFailed: return "failed";
-    case TrialOutcome::kInterrupted: return "interrupted";
+    case TrialOutcome::kCompleted:
+      return "completed";
+    case TrialOutcome::kAborted:
+      return "aborted";
+    case TrialOutcome::kFailed:
+      return "failed";
+    case TrialOutcome::kInterrupted:
+      return "interrupted";
   }
   return "?";
 }
 
 const char* trial_phase_name(TrialPhase p) {
   switch (p) {
-    case TrialPhase::kWaitingForStreams: return "waiting_for_streams";
-    case TrialPhase::kWaitingForVicon: return "waiting_for_vicon";
-    case TrialPhase::kCountdown: return "countdown";
-    case TrialPhase::kRecording: return "recording";
-    case TrialPhase::kFinishing: return "finishing";
-    case TrialPhase::kDone: return "done";
+    case TrialPhase::kWaitingForStreams:
+      return "waiting_for_streams";
+    case TrialPhase::kWaitingForVicon:
+      return "waiting_for_vicon";
+    case TrialPhase::kCountdown:
+      return "countdown";
+    case TrialPhase::kRecording:
+      return "recording";
+    case TrialPhase::kFinishing:
+      return "finishing";
+    case TrialPhase::kDone:
+      return "done";
   }
   return "?";
 }
@@ -61,11 +71,11 @@ struct TrialEngine::Run {
   std::unique_ptr<ViconTrigger> vicon;
   std::unique_ptr<ViconListener> listener;
   std::mutex inbox_mutex;
-  int rejected_reported = 0;  // listener->rejected() already said
+  int rejected_reported = 0;                                 // listener->rejected() already said
   std::vector<std::pair<ViconMessage, std::int64_t>> inbox;  // with the host time it arrived
   Clock::time_point t0 = Clock::now();
   Clock::time_point last_report{};
-  double sim_time_at_start = 0;  // simulated time at go (the truth starts there)
+  double sim_time_at_start = 0;                                         // simulated time at go (the truth starts there)
   double countdown_from = 0, recording_from = 0, recording_until = -1;  // engine clock
   // The simulator this engine starts decides go itself (its thread opens the recorder's window at
   // the first event of the trial), so a trial run faster than real time starts exactly at go.
@@ -75,7 +85,7 @@ struct TrialEngine::Run {
   bool vicon_start_sent = false;
   bool vicon_stop_received = false;
   bool vicon_start_received = false;  // listen mode
-  std::string vicon_start_name;  // listen mode: the Name of the CaptureStart that began the trial
+  std::string vicon_start_name;       // listen mode: the Name of the CaptureStart that began the trial
   int vicon_sent = 0;
   bool interrupted = false;
   bool hub_started_here = false;
@@ -131,7 +141,8 @@ struct TrialEngine::Run {
     s.phase = phase;
     s.trial = trial;
     s.elapsed_s = wall_s();
-    if (phase == TrialPhase::kCountdown) s.countdown_remaining_s = std::max(0.0, cfg.countdown_s - (clock_s() - countdown_from));
+    if (phase == TrialPhase::kCountdown)
+      s.countdown_remaining_s = std::max(0.0, cfg.countdown_s - (clock_s() - countdown_from));
     s.recording_s = recording_s();
     // A simulator that ends the trial itself ends it after its own duration from go.
     s.remaining_s = std::max(0.0, (sim_decides_length() ? sim->duration_s() : cfg.seconds) - s.recording_s);
@@ -287,10 +298,9 @@ struct TrialEngine::Run {
               vicon_start_name + "'");
           continue;
         }
-        recorder->note("vicon_stop_received", {{"name", m.name},
-                                               {"packet_id", m.packet_id},
-                                               {"result", m.result},
-                                               {"host_time_utc", utc_now_iso8601()}});
+        recorder->note(
+            "vicon_stop_received",
+            {{"name", m.name}, {"packet_id", m.packet_id}, {"result", m.result}, {"host_time_utc", utc_now_iso8601()}});
         vicon_stop_received = true;
       }
     }

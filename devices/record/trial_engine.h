@@ -53,7 +53,7 @@ const char* trial_phase_name(TrialPhase p);  // "waiting_for_streams", "waiting_
 
 struct TrialSnapshot {
   TrialPhase phase = TrialPhase::kWaitingForStreams;
-  std::string trial;  // empty while listen mode waits for Vicon's Name
+  std::string trial;                 // empty while listen mode waits for Vicon's Name
   double elapsed_s = 0;              // wall-clock seconds since run() began
   double countdown_remaining_s = 0;  // kCountdown
   double recording_s = 0;            // trial seconds recorded (simulated with a simulator)
@@ -80,10 +80,11 @@ struct TrialEngineConfig {
   double seconds = 5;
   double countdown_s = 0;
   double stream_timeout_s = 10;
-  std::string backend;  // written to the sidecar: sim | leapc | replay
-  std::optional<ViconTriggerConfig> vicon;                            // send CaptureStart/Stop
-  std::optional<std::pair<std::string, std::uint16_t>> vicon_listen;  // wait for Vicon's CaptureStart instead (address, port)
-  bool allow_overwrite = false;                                       // lmc record --force only
+  std::string backend;                      // written to the sidecar: sim | leapc | replay
+  std::optional<ViconTriggerConfig> vicon;  // send CaptureStart/Stop
+  std::optional<std::pair<std::string, std::uint16_t>>
+      vicon_listen;                                 // wait for Vicon's CaptureStart instead (address, port)
+  bool allow_overwrite = false;                     // lmc record --force only
   nlohmann::json extra = nlohmann::json::object();  // into the sidecar's extra (simulator config, session info…)
   // The layout the sidecar records (what processing realigns with) when it is not the hub's: a
   // session block's calibrated layout, while the hub keeps the one the controllers were set up by.
@@ -98,7 +99,7 @@ struct TrialResult {
   std::string trial;
   SessionPaths paths;  // empty when no trial name was known
   RecorderStatus recorder;
-  double truth_seconds = 0;  // span of the simulator's ground truth file (0: none written)
+  double truth_seconds = 0;           // span of the simulator's ground truth file (0: none written)
   std::vector<std::string> messages;  // every message and notice, in order
   bool recorded = false;              // the recorder started: the files exist and hold the rows
   std::filesystem::path existing;     // set when refused because this file of the trial exists

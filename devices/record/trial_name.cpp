@@ -8,7 +8,9 @@
 
 namespace lmc::devices {
 
-std::string validate_trial_name(const std::string& name) { return safe_name_problem(name, "trial name"); }
+std::string validate_trial_name(const std::string& name) {
+  return safe_name_problem(name, "trial name");
+}
 
 void require_valid_trial_name(const std::string& name) {
   if (auto why = validate_trial_name(name); !why.empty()) throw Error("invalid trial name: " + why);

@@ -23,7 +23,8 @@ std::vector<std::pair<int, std::string>> sidecar_serials(const std::filesystem::
     const nlohmann::json j = read_json_file(sidecar);
     if (j.contains("devices") && j["devices"].is_array())
       for (const auto& d : j["devices"])
-        if (d.contains("device_id") && d.contains("serial") && d["serial"].is_string() && !d["serial"].get<std::string>().empty())
+        if (d.contains("device_id") && d.contains("serial") && d["serial"].is_string() &&
+            !d["serial"].get<std::string>().empty())
           out.emplace_back(d["device_id"].get<int>(), d["serial"].get<std::string>());
   } catch (const std::exception&) {
     // A damaged sidecar must not stop a replay of a readable recording: fall back to ids.
@@ -54,7 +55,9 @@ ReplaySource::ReplaySource(const std::filesystem::path& path, ReplayOptions opti
   }
 }
 
-ReplaySource::~ReplaySource() { stop(); }
+ReplaySource::~ReplaySource() {
+  stop();
+}
 
 double ReplaySource::duration_s() const {
   return static_cast<double>(rows_.back().timestamp_us - rows_.front().timestamp_us) / 1e6;
@@ -86,7 +89,8 @@ void ReplaySource::run(FrameSink& sink) {
     for (const HandFrame& row : rows_) {
       if (stop_) break;
       if (options_.speed > 0) {
-        const auto due = start_ns + static_cast<std::int64_t>(static_cast<double>(row.timestamp_us - t0) * 1000.0 / options_.speed);
+        const auto due =
+            start_ns + static_cast<std::int64_t>(static_cast<double>(row.timestamp_us - t0) * 1000.0 / options_.speed);
         for (;;) {
           const std::int64_t now = host_now_ns();
           if (now >= due || stop_) break;

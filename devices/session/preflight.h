@@ -17,7 +17,7 @@
 namespace lmc::devices {
 
 struct PreflightItem {
-  std::string check;   // "LMC1 streams", "Vicon target", "disk space", "folder writable"
+  std::string check;  // "LMC1 streams", "Vicon target", "disk space", "folder writable"
   bool ok = false;
   std::string detail;  // what was found, e.g. "SIM-1 at 23 Hz" or "no controller in this slot"
 };
@@ -35,10 +35,10 @@ nlohmann::json preflight_to_json(const PreflightReport& report);
 // What the controllers did while the probe listened, per layout slot (slot order).
 struct SlotProbe {
   std::string slot;
-  std::string serial;           // the device that streamed in this slot ("" when none)
-  std::string bound_serial;     // the layout's serial for the slot ("" when not bound)
+  std::string serial;        // the device that streamed in this slot ("" when none)
+  std::string bound_serial;  // the layout's serial for the slot ("" when not bound)
   std::int64_t frames = 0;
-  double rate_hz = 0;           // from the device timestamps of the frames seen
+  double rate_hz = 0;  // from the device timestamps of the frames seen
 };
 
 struct PreflightInputs {
@@ -48,8 +48,8 @@ struct PreflightInputs {
   double min_rate_hz = 5;
   std::optional<std::string> vicon_target;  // "HOST[:PORT]" when the session triggers Vicon
   std::filesystem::path folder;
-  std::uint64_t bytes_needed = 0;           // the rest of the session's recordings, estimated
-  double disk_margin = 3.0;                 // "several times over"
+  std::uint64_t bytes_needed = 0;  // the rest of the session's recordings, estimated
+  double disk_margin = 3.0;        // "several times over"
 };
 
 // Runs the non-device checks (Vicon, disk, folder) and turns the probe into lines.

@@ -51,7 +51,9 @@ std::string slots_differ(const Layout& hub_layout, const Layout& session_layout)
 
 }  // namespace
 
-std::string AttemptResult::verdict() const { return quality ? quality->verdict : std::string("fail"); }
+std::string AttemptResult::verdict() const {
+  return quality ? quality->verdict : std::string("fail");
+}
 
 SessionRunner::SessionRunner(session::SessionFolder& folder, SessionRunOptions options)
     : folder_(folder), options_(std::move(options)) {
@@ -160,7 +162,8 @@ PreflightReport SessionRunner::preflight(int i, std::stop_token stop) {
     PreflightReport r;
     r.block = p.layout_key;
     r.layout_name = in.layout.name;
-    r.items.push_back({"controllers", false, std::string("cannot start the ") + options_.backend + " backend: " + e.what()});
+    r.items.push_back(
+        {"controllers", false, std::string("cannot start the ") + options_.backend + " backend: " + e.what()});
     folder_.preflight(r.block, false, preflight_to_json(r));
     return r;
   }
@@ -281,7 +284,8 @@ AttemptResult SessionRunner::run_trial(int i, std::stop_token stop,
   }
   if (result.outcome != "completed" && result.quality->verdict != "fail") {
     // An attempt that did not complete is a recording fault whatever its data look like.
-    result.quality->reasons.insert(result.quality->reasons.begin(), "the trial " + result.outcome + ": " + result.reason);
+    result.quality->reasons.insert(result.quality->reasons.begin(),
+                                   "the trial " + result.outcome + ": " + result.reason);
     result.quality->verdict = "fail";
   }
   folder_.trial_verdict(i, session::quality_to_json(*result.quality));
@@ -319,11 +323,17 @@ std::optional<std::string> SessionRunner::vicon_target() const {
   return target;
 }
 
-void SessionRunner::accept(int i) { folder_.trial_accepted(i); }
+void SessionRunner::accept(int i) {
+  folder_.trial_accepted(i);
+}
 
-void SessionRunner::redo(int i) { folder_.redo(i); }
+void SessionRunner::redo(int i) {
+  folder_.redo(i);
+}
 
-void SessionRunner::note(int i, const std::string& text) { folder_.note(i, text); }
+void SessionRunner::note(int i, const std::string& text) {
+  folder_.note(i, text);
+}
 
 bool SessionRunner::needs_calibration(int i) const {
   if (!protocol_.calibration) return false;
@@ -346,7 +356,8 @@ BlockCalibration SessionRunner::calibrate_block(int i, std::stop_token stop,
   // The block's layout as created: a second calibration starts from it, not from the first's result.
   const Layout nominal = nominal_layout_for(i);
 
-  TrialEngineConfig config = engine_config(out.trial_name, step.duration_s, step.operator_cue, out.attempt, p.layout_key);
+  TrialEngineConfig config =
+      engine_config(out.trial_name, step.duration_s, step.operator_cue, out.attempt, p.layout_key);
   config.extra["session"]["calibration"] = true;
   TrialResult tr;
   try {
@@ -409,7 +420,8 @@ void SessionRunner::keep_nominal_layout(int i, const std::string& reason, const 
   const std::string& block = plan_.at(static_cast<size_t>(i)).layout_key;
   folder_.calibration_kept_nominal(block, reason, c != nullptr ? c->summary : nlohmann::json(nullptr));
   const auto& layouts = folder_.state().setup.layouts;
-  layouts_[block] = layout_from_json(layouts.at(block), (folder_.dir() / "session.json").string() + "#/layouts/" + block);
+  layouts_[block] =
+      layout_from_json(layouts.at(block), (folder_.dir() / "session.json").string() + "#/layouts/" + block);
 }
 
 std::string SessionRunner::block_instructions(int i) const {
@@ -423,8 +435,8 @@ std::string SessionRunner::block_instructions(int i) const {
     const DevicePose& pose = d.pose;
     s << "\n  " << d.slot;
     if (d.serial) s << " (" << *d.serial << ")";
-    s << " at x " << pose.x_mm << " mm, z " << pose.z_mm << " mm, tilt rx " << pose.rx_deg << "°, turn ry " << pose.ry_deg
-      << "°";
+    s << " at x " << pose.x_mm << " mm, z " << pose.z_mm << " mm, tilt rx " << pose.rx_deg << "°, turn ry "
+      << pose.ry_deg << "°";
   }
   return s.str();
 }

@@ -30,9 +30,9 @@
 namespace lmc::devices {
 
 struct SessionRunOptions {
-  std::string backend = "sim";   // sim | leapc | replay:FILE
-  bool fast = false;             // simulated time (sim and replay only)
-  SimConfig sim;                 // the simulated rig's base settings (motion comes from the protocol)
+  std::string backend = "sim";  // sim | leapc | replay:FILE
+  bool fast = false;            // simulated time (sim and replay only)
+  SimConfig sim;                // the simulated rig's base settings (motion comes from the protocol)
   double stream_timeout_s = 10;
   double countdown_s = 0;
   double preflight_timeout_s = 5;
@@ -46,14 +46,14 @@ struct SessionRunOptions {
 
 // A block's calibration step as the runner did it: recorded, fitted, not yet applied.
 struct BlockCalibration {
-  int trial = -1;              // the plan trial whose block this is
+  int trial = -1;  // the plan trial whose block this is
   std::string block;
   int attempt = 0;
-  std::string trial_name;      // Calib_<block>NN
-  std::string failure;         // why there is no fit (the recording failed, too little hand): empty when fitted
+  std::string trial_name;  // Calib_<block>NN
+  std::string failure;     // why there is no fit (the recording failed, too little hand): empty when fitted
   std::optional<calibration::TrialCalibration> fit;
-  nlohmann::json summary;      // calibration_summary_json of the fit (null without one)
-  std::string residual_table;  // calibration::residual_table, for people
+  nlohmann::json summary;             // calibration_summary_json of the fit (null without one)
+  std::string residual_table;         // calibration::residual_table, for people
   std::vector<std::string> warnings;  // every warning a person must see before applying
   bool ok() const { return fit.has_value(); }
 };
@@ -62,10 +62,10 @@ struct BlockCalibration {
 struct AttemptResult {
   int trial = -1;
   int attempt = 0;
-  std::string outcome;          // completed | aborted | failed | interrupted
+  std::string outcome;  // completed | aborted | failed | interrupted
   std::string reason;
   std::optional<session::QualityReport> quality;  // absent when nothing could be assessed
-  std::string verdict() const;  // the quality verdict, or "fail" when there is none
+  std::string verdict() const;                    // the quality verdict, or "fail" when there is none
 };
 
 class SessionRunner {
@@ -96,8 +96,8 @@ class SessionRunner {
   // `abort_reason`, asked once when the stop token ended the trial: a non-empty answer journals
   // the attempt as aborted with that reason instead of interrupted (the operator's Esc).
   AttemptResult run_trial(int i, std::stop_token stop = {},
-                          const std::function<void(const TrialSnapshot&)>& on_status = {},
-                          FrameTap* live_tap = nullptr, const std::function<std::string()>& abort_reason = {});
+                          const std::function<void(const TrialSnapshot&)>& on_status = {}, FrameTap* live_tap = nullptr,
+                          const std::function<std::string()>& abort_reason = {});
   // The operator keeps the last attempt of trial `i`.
   void accept(int i);
   // The last attempt of trial `i` goes under superseded/; the trial is pending again.
@@ -111,7 +111,8 @@ class SessionRunner {
   // Journals the start, records a still open hand for the protocol's duration as trial
   // Calib_<block>NN (the same trial engine and files as any trial) and calibrates it against the
   // block's nominal layout: with the trial's Vicon file (<trial>.trc in vicon_export_dir or the
-  // session folder) when there is one, else the controllers against each other. Applies nothing: the operator looks first.
+  // session folder) when there is one, else the controllers against each other. Applies nothing: the operator looks
+  // first.
   BlockCalibration calibrate_block(int i, std::stop_token stop = {},
                                    const std::function<void(const TrialSnapshot&)>& on_status = {});
   // The fit becomes the block's layout (journaled; the next trials record with it).
@@ -133,8 +134,8 @@ class SessionRunner {
   std::optional<std::string> vicon_target() const;  // "HOST[:PORT]" when the session triggers Vicon
   // The trial engine's settings for one recording of this session (a trial or a calibration trial):
   // folder, timing, the Vicon trigger with the cue as its description, the session's sidecar notes.
-  TrialEngineConfig engine_config(const std::string& name, double seconds, const std::string& operator_cue,
-                                  int attempt, const std::string& block) const;
+  TrialEngineConfig engine_config(const std::string& name, double seconds, const std::string& operator_cue, int attempt,
+                                  const std::string& block) const;
 
   session::SessionFolder& folder_;
   SessionRunOptions options_;

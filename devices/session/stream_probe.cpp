@@ -25,7 +25,8 @@ double StreamProbe::rate_hz(int device_id) const {
   std::lock_guard lock(mutex_);
   auto it = seen_.find(device_id);
   if (it == seen_.end() || it->second.frames < 2 || it->second.last_us <= it->second.first_us) return 0;
-  return static_cast<double>(it->second.frames - 1) * 1e6 / static_cast<double>(it->second.last_us - it->second.first_us);
+  return static_cast<double>(it->second.frames - 1) * 1e6 /
+         static_cast<double>(it->second.last_us - it->second.first_us);
 }
 
 std::vector<SlotProbe> probe_streams(DeviceHub& hub, std::chrono::milliseconds timeout, std::int64_t frames_wanted,

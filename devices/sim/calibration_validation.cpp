@@ -46,8 +46,8 @@ calibration::CalibrationInput input_of(const RecordedSim& sim, bool with_vicon) 
 }
 
 // Over the controllers `scored` (all when null).
-void worst_error(const std::vector<RigidTransform>& got, const std::vector<RigidTransform>& want, double& mm, double& deg,
-                 const calibration::CalibrationResult* scored = nullptr) {
+void worst_error(const std::vector<RigidTransform>& got, const std::vector<RigidTransform>& want, double& mm,
+                 double& deg, const calibration::CalibrationResult* scored = nullptr) {
   mm = deg = 0;
   for (size_t d = 0; d < got.size(); ++d) {
     if (scored != nullptr && !scored->devices[d].fitted) continue;
@@ -73,11 +73,13 @@ SimConfig validation_sim_config(std::uint64_t seed, const CalibrationValidationO
   return c;
 }
 
-CalibrationValidationCase run_calibration_case(const Layout& layout, std::uint64_t seed, const CalibrationValidationOptions& options) {
+CalibrationValidationCase run_calibration_case(const Layout& layout, std::uint64_t seed,
+                                               const CalibrationValidationOptions& options) {
   return run_calibration_case(layout, validation_sim_config(seed, options), options);
 }
 
-CalibrationValidationCase run_calibration_case(const Layout& layout, const SimConfig& config, const CalibrationValidationOptions& options) {
+CalibrationValidationCase run_calibration_case(const Layout& layout, const SimConfig& config,
+                                               const CalibrationValidationOptions& options) {
   CalibrationValidationCase c;
   c.seed = config.seed;
   const RecordedSim sim = record(layout, config, options.seconds);
@@ -114,7 +116,8 @@ CalibrationValidationCase run_calibration_case(const Layout& layout, const SimCo
   return c;
 }
 
-std::vector<std::string> swapped_serial_warnings(const Layout& layout, int slot_a, int slot_b, std::uint64_t seed, bool with_vicon) {
+std::vector<std::string> swapped_serial_warnings(const Layout& layout, int slot_a, int slot_b, std::uint64_t seed,
+                                                 bool with_vicon) {
   CalibrationValidationOptions options;
   options.max_translation_mm = 0;
   options.max_rotation_deg = 0;
@@ -122,13 +125,16 @@ std::vector<std::string> swapped_serial_warnings(const Layout& layout, int slot_
   const RecordedSim sim = record(layout, validation_sim_config(seed, options), options.seconds);
   Layout swapped = layout;
   std::swap(swapped.devices[static_cast<size_t>(slot_a)].pose, swapped.devices[static_cast<size_t>(slot_b)].pose);
-  std::swap(swapped.devices[static_cast<size_t>(slot_a)].offset_mm, swapped.devices[static_cast<size_t>(slot_b)].offset_mm);
+  std::swap(swapped.devices[static_cast<size_t>(slot_a)].offset_mm,
+            swapped.devices[static_cast<size_t>(slot_b)].offset_mm);
   return calibration::calibrate(input_of(sim, with_vicon), swapped).warnings;
 }
 
-std::string validation_table(const std::vector<CalibrationValidationCase>& cases, const CalibrationValidationOptions& options) {
+std::string validation_table(const std::vector<CalibrationValidationCase>& cases,
+                             const CalibrationValidationOptions& options) {
   std::ostringstream o;
-  o << "| seed | injected mm | injected ° | Vicon: left mm | left ° | no Vicon: left mm | left ° | ms (Vicon / none) |\n";
+  o << "| seed | injected mm | injected ° | Vicon: left mm | left ° | no Vicon: left mm | left ° | ms (Vicon / none) "
+       "|\n";
   o << "|---:|---:|---:|---:|---:|---:|---:|---:|\n";
   CalibrationValidationCase worst;
   int vicon_ok = 0, consensus_ok = 0;
@@ -136,9 +142,9 @@ std::string validation_table(const std::vector<CalibrationValidationCase>& cases
   int unfitted = 0, unfitted_cases = 0;
   for (const auto& c : cases) {
     o << "| " << c.seed << " | " << format_fixed(c.injected_mm, 1) << " | " << format_fixed(c.injected_deg, 2) << " | "
-      << format_fixed(c.vicon_mm, 2) << " | " << format_fixed(c.vicon_deg, 3) << " | " << format_fixed(c.consensus_mm, 2) << " | "
-      << format_fixed(c.consensus_deg, 3) << " | " << format_fixed(c.vicon_seconds * 1000, 1) << " / "
-      << format_fixed(c.consensus_seconds * 1000, 1) << " |\n";
+      << format_fixed(c.vicon_mm, 2) << " | " << format_fixed(c.vicon_deg, 3) << " | "
+      << format_fixed(c.consensus_mm, 2) << " | " << format_fixed(c.consensus_deg, 3) << " | "
+      << format_fixed(c.vicon_seconds * 1000, 1) << " / " << format_fixed(c.consensus_seconds * 1000, 1) << " |\n";
     worst.vicon_mm = std::max(worst.vicon_mm, c.vicon_mm);
     worst.vicon_deg = std::max(worst.vicon_deg, c.vicon_deg);
     worst.consensus_mm = std::max(worst.consensus_mm, c.consensus_mm);
@@ -149,13 +155,16 @@ std::string validation_table(const std::vector<CalibrationValidationCase>& cases
     vicon_ok += c.vicon_ok ? 1 : 0;
     consensus_ok += c.consensus_ok ? 1 : 0;
   }
-  o << "\nWith Vicon: " << vicon_ok << " of " << cases.size() << " cases within " << format_fixed(options.vicon_limit_mm, 1) << " mm and "
-    << format_fixed(options.vicon_limit_deg, 1) << "° (worst " << format_fixed(worst.vicon_mm, 2) << " mm, " << format_fixed(worst.vicon_deg, 3)
-    << "°). Without Vicon: " << consensus_ok << " of " << cases.size() << " within " << format_fixed(options.consensus_limit_mm, 1)
-    << " mm and " << format_fixed(options.consensus_limit_deg, 1) << "° (worst " << format_fixed(worst.consensus_mm, 2) << " mm, "
-    << format_fixed(worst.consensus_deg, 3) << "°). Slowest calibration " << format_fixed(slowest * 1000, 1) << " ms. "
-    << unfitted << " controller(s) in " << unfitted_cases
-    << " case(s) never saw the hand (their injected error moved it out of view): left as they were with a warning, not scored.\n";
+  o << "\nWith Vicon: " << vicon_ok << " of " << cases.size() << " cases within "
+    << format_fixed(options.vicon_limit_mm, 1) << " mm and " << format_fixed(options.vicon_limit_deg, 1) << "° (worst "
+    << format_fixed(worst.vicon_mm, 2) << " mm, " << format_fixed(worst.vicon_deg, 3)
+    << "°). Without Vicon: " << consensus_ok << " of " << cases.size() << " within "
+    << format_fixed(options.consensus_limit_mm, 1) << " mm and " << format_fixed(options.consensus_limit_deg, 1)
+    << "° (worst " << format_fixed(worst.consensus_mm, 2) << " mm, " << format_fixed(worst.consensus_deg, 3)
+    << "°). Slowest calibration " << format_fixed(slowest * 1000, 1) << " ms. " << unfitted << " controller(s) in "
+    << unfitted_cases
+    << " case(s) never saw the hand (their injected error moved it out of view): left as they were with a warning, not "
+       "scored.\n";
   return o.str();
 }
 

@@ -27,31 +27,35 @@ struct CalibrationValidationOptions {
 
 struct CalibrationValidationCase {
   std::uint64_t seed = 0;
-  double injected_mm = 0, injected_deg = 0;          // largest injected error of any controller
-  double vicon_mm = 0, vicon_deg = 0;                // largest error left, with Vicon truth
-  double consensus_mm = 0, consensus_deg = 0;        // without Vicon, relative to the anchor
-  double vicon_seconds = 0, consensus_seconds = 0;   // calibrate() alone, wall time
+  double injected_mm = 0, injected_deg = 0;         // largest injected error of any controller
+  double vicon_mm = 0, vicon_deg = 0;               // largest error left, with Vicon truth
+  double consensus_mm = 0, consensus_deg = 0;       // without Vicon, relative to the anchor
+  double vicon_seconds = 0, consensus_seconds = 0;  // calibrate() alone, wall time
   bool vicon_ok = false, consensus_ok = false;
   // Controllers the calibration left as they were (their injected error took the hand out of their
   // view, so they have no samples): not scored, counted here and named in `warnings`.
   int vicon_unfitted = 0, consensus_unfitted = 0;
-  std::vector<std::string> warnings;                 // any warning is unexpected here
+  std::vector<std::string> warnings;  // any warning is unexpected here
 };
 
 // Sim configuration of case `seed`: the defaults, a still open hand, random calibration errors.
 SimConfig validation_sim_config(std::uint64_t seed, const CalibrationValidationOptions& options);
 
 // One case: records the simulated trial, calibrates it both ways and measures what is left.
-CalibrationValidationCase run_calibration_case(const Layout& layout, std::uint64_t seed, const CalibrationValidationOptions& options);
+CalibrationValidationCase run_calibration_case(const Layout& layout, std::uint64_t seed,
+                                               const CalibrationValidationOptions& options);
 // The same with a rig of the caller's (e.g. the Devices tab capture's errors per slot); `config`'s
 // own seed and errors are used, options' error sizes are not.
-CalibrationValidationCase run_calibration_case(const Layout& layout, const SimConfig& config, const CalibrationValidationOptions& options);
+CalibrationValidationCase run_calibration_case(const Layout& layout, const SimConfig& config,
+                                               const CalibrationValidationOptions& options);
 
 // The calibration of a trial recorded with `layout` against the same layout with two slots'
 // poses exchanged (their serials swapped): the result's set-level warnings.
-std::vector<std::string> swapped_serial_warnings(const Layout& layout, int slot_a, int slot_b, std::uint64_t seed, bool with_vicon);
+std::vector<std::string> swapped_serial_warnings(const Layout& layout, int slot_a, int slot_b, std::uint64_t seed,
+                                                 bool with_vicon);
 
 // A Markdown table of the cases with a summary line (worst case, how many within the limits).
-std::string validation_table(const std::vector<CalibrationValidationCase>& cases, const CalibrationValidationOptions& options);
+std::string validation_table(const std::vector<CalibrationValidationCase>& cases,
+                             const CalibrationValidationOptions& options);
 
 }  // namespace lmc::devices

@@ -46,9 +46,8 @@ void apply_controller_hand_model(const ControllerHandModel& model, HandFrame& ha
     std::array<Vec3, kJointsPerDigit> out = truth;
     for (int b = 0; b + 1 < kJointsPerDigit; ++b)
       out[static_cast<size_t>(b + 1)] =
-          out[static_cast<size_t>(b)] +
-          model.scale[static_cast<size_t>(dg)][static_cast<size_t>(b)] *
-              (truth[static_cast<size_t>(b + 1)] - truth[static_cast<size_t>(b)]);
+          out[static_cast<size_t>(b)] + model.scale[static_cast<size_t>(dg)][static_cast<size_t>(b)] *
+                                            (truth[static_cast<size_t>(b + 1)] - truth[static_cast<size_t>(b)]);
     for (int j = 0; j < kJointsPerDigit; ++j) {
       const Vec3 along = controller_hand_model_detail::joint_bone_direction(truth, j);
       if (along.isZero()) continue;  // no bone: leave the joint

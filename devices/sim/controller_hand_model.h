@@ -10,7 +10,7 @@
 namespace lmc::devices {
 
 struct ControllerHandModel {
-  std::array<std::array<double, 4>, kNumDigits> scale{};       // per digit, per bone
+  std::array<std::array<double, 4>, kNumDigits> scale{};                     // per digit, per bone
   std::array<std::array<Vec3, kJointsPerDigit>, kNumDigits> offset_local{};  // (along bone, palm side, lateral), mm
 };
 

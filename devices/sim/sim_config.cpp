@@ -4,17 +4,20 @@
 #include <nlohmann/json.hpp>
 
 #include "core/common/error.h"
-#include "core/io/json_checked.h"
 #include "core/io/delimited_text.h"
+#include "core/io/json_checked.h"
 
 namespace lmc::devices {
 namespace {
 
 const char* calibration_name(SimConfig::Calibration c) {
   switch (c) {
-    case SimConfig::Calibration::kLayout: return "layout";
-    case SimConfig::Calibration::kNone: return "none";
-    case SimConfig::Calibration::kCustom: return "custom";
+    case SimConfig::Calibration::kLayout:
+      return "layout";
+    case SimConfig::Calibration::kNone:
+      return "none";
+    case SimConfig::Calibration::kCustom:
+      return "custom";
   }
   return "layout";
 }
@@ -31,11 +34,16 @@ void apply_motion_spec(SimConfig& c, const std::string& spec) {
       break;
     }
   }
-  if (m == "static" || m == "open") c.motion = HandMotion::kOpen;
-  else if (m == "index") c.motion = HandMotion::kIndexFlexion;
-  else if (m == "thumb") c.motion = HandMotion::kThumbFlexion;
-  else if (m == "wrist" || m == "wrist-flexion") c.motion = HandMotion::kWristFlexion;
-  else if (m == "wrist-extension") c.motion = HandMotion::kWristExtension;
+  if (m == "static" || m == "open")
+    c.motion = HandMotion::kOpen;
+  else if (m == "index")
+    c.motion = HandMotion::kIndexFlexion;
+  else if (m == "thumb")
+    c.motion = HandMotion::kThumbFlexion;
+  else if (m == "wrist" || m == "wrist-flexion")
+    c.motion = HandMotion::kWristFlexion;
+  else if (m == "wrist-extension")
+    c.motion = HandMotion::kWristExtension;
   else if (std::error_code ec; std::filesystem::exists(spec, ec)) {
     c.pose_set_path = spec;
     return;
@@ -52,11 +60,21 @@ std::string motion_spec(const SimConfig& c) {
   if (!c.pose_set_path.empty()) return c.pose_set_path;
   std::string m;
   switch (c.motion) {
-    case HandMotion::kOpen: m = "static"; break;
-    case HandMotion::kIndexFlexion: m = "index"; break;
-    case HandMotion::kThumbFlexion: m = "thumb"; break;
-    case HandMotion::kWristFlexion: m = "wrist"; break;
-    case HandMotion::kWristExtension: m = "wrist-extension"; break;
+    case HandMotion::kOpen:
+      m = "static";
+      break;
+    case HandMotion::kIndexFlexion:
+      m = "index";
+      break;
+    case HandMotion::kThumbFlexion:
+      m = "thumb";
+      break;
+    case HandMotion::kWristFlexion:
+      m = "wrist";
+      break;
+    case HandMotion::kWristExtension:
+      m = "wrist-extension";
+      break;
   }
   return std::string(orientation_name(c.orientation)) + "/" + m;
 }
@@ -66,14 +84,42 @@ SimConfig sim_config_from_json(const nlohmann::json& j, const std::string& sourc
   JsonReader r(j, source);
   r.require_object();
   // A misspelt switch ("noize": false) must not leave the behaviour on in silence.
-  r.only_keys({"seed", "calibration_seed", "motion", "pose_set_rate_hz", "motion_period_s", "sway_mm", "hand_length_mm",
-               "hand_breadth_mm", "rate_min_hz", "rate_max_hz", "rate_wander", "latency_min_ms", "latency_max_ms",
-               "noise", "noise_sigma_mm", "fov_test", "range_mm", "occlusion", "phalanx_radius_mm",
-               "internal_model_bias", "axis_cut", "axis_cut_mm", "elbow_error", "elbow_error_min_mm",
-               "elbow_error_max_mm", "calibration", "calibration_offsets_mm", "calibration_rotations_deg",
-               "calibration_random_translation_mm", "calibration_random_rotation_deg", "study_errors",
-               "hand_model_error", "unplugs", "serial_prefix",
-               "truth_rate_hz", "device_clock_start_us"});
+  r.only_keys({"seed",
+               "calibration_seed",
+               "motion",
+               "pose_set_rate_hz",
+               "motion_period_s",
+               "sway_mm",
+               "hand_length_mm",
+               "hand_breadth_mm",
+               "rate_min_hz",
+               "rate_max_hz",
+               "rate_wander",
+               "latency_min_ms",
+               "latency_max_ms",
+               "noise",
+               "noise_sigma_mm",
+               "fov_test",
+               "range_mm",
+               "occlusion",
+               "phalanx_radius_mm",
+               "internal_model_bias",
+               "axis_cut",
+               "axis_cut_mm",
+               "elbow_error",
+               "elbow_error_min_mm",
+               "elbow_error_max_mm",
+               "calibration",
+               "calibration_offsets_mm",
+               "calibration_rotations_deg",
+               "calibration_random_translation_mm",
+               "calibration_random_rotation_deg",
+               "study_errors",
+               "hand_model_error",
+               "unplugs",
+               "serial_prefix",
+               "truth_rate_hz",
+               "device_clock_start_us"});
   // The preset first, so that any key given beside it overrides one of its values.
   if (r.has("study_errors") && r.at("study_errors").boolean()) {
     c.study_errors = true;
@@ -81,7 +127,8 @@ SimConfig sim_config_from_json(const nlohmann::json& j, const std::string& sourc
     c.calibration_random_translation_mm = kStudyCalibrationTranslationMm;
     c.calibration_random_rotation_deg = kStudyCalibrationRotationDeg;
   }
-  if (r.has("hand_model_error")) c.hand_model_error = hand_model_error_from_json(r.at("hand_model_error"), c.hand_model_error);
+  if (r.has("hand_model_error"))
+    c.hand_model_error = hand_model_error_from_json(r.at("hand_model_error"), c.hand_model_error);
   if (r.has("seed")) c.seed = static_cast<std::uint64_t>(r.at("seed").integer());
   if (r.has("calibration_seed")) c.calibration_seed = static_cast<std::uint64_t>(r.at("calibration_seed").integer());
   if (r.has("motion")) {
@@ -115,10 +162,14 @@ SimConfig sim_config_from_json(const nlohmann::json& j, const std::string& sourc
   c.elbow_error_max_mm = r.number_or("elbow_error_max_mm", c.elbow_error_max_mm);
   if (r.has("calibration")) {
     const std::string cal = r.string("calibration");
-    if (cal == "layout") c.calibration = SimConfig::Calibration::kLayout;
-    else if (cal == "none") c.calibration = SimConfig::Calibration::kNone;
-    else if (cal == "custom") c.calibration = SimConfig::Calibration::kCustom;
-    else r.at("calibration").fail("expected \"layout\", \"none\" or \"custom\"");
+    if (cal == "layout")
+      c.calibration = SimConfig::Calibration::kLayout;
+    else if (cal == "none")
+      c.calibration = SimConfig::Calibration::kNone;
+    else if (cal == "custom")
+      c.calibration = SimConfig::Calibration::kCustom;
+    else
+      r.at("calibration").fail("expected \"layout\", \"none\" or \"custom\"");
   }
   if (r.has("calibration_offsets_mm")) {
     JsonReader offs = r.at("calibration_offsets_mm");
@@ -135,10 +186,12 @@ SimConfig sim_config_from_json(const nlohmann::json& j, const std::string& sourc
     for (const auto& [slot, v] : rots.json().items()) {
       JsonReader e = rots.at(slot.c_str());
       if (e.array_size() != 3) e.fail("expected [rx, ry, rz] in degrees");
-      c.calibration_rotations_deg[slot] = {e.at(size_t{0}).number(), e.at(size_t{1}).number(), e.at(size_t{2}).number()};
+      c.calibration_rotations_deg[slot] = {e.at(size_t{0}).number(), e.at(size_t{1}).number(),
+                                           e.at(size_t{2}).number()};
     }
   }
-  c.calibration_random_translation_mm = r.number_or("calibration_random_translation_mm", c.calibration_random_translation_mm);
+  c.calibration_random_translation_mm =
+      r.number_or("calibration_random_translation_mm", c.calibration_random_translation_mm);
   c.calibration_random_rotation_deg = r.number_or("calibration_random_rotation_deg", c.calibration_random_rotation_deg);
   if (c.calibration_random_translation_mm < 0) r.at("calibration_random_translation_mm").fail("must be ≥ 0");
   if (c.calibration_random_rotation_deg < 0 || c.calibration_random_rotation_deg > 180)
@@ -162,7 +215,8 @@ SimConfig sim_config_from_json(const nlohmann::json& j, const std::string& sourc
     c.device_clock_start_us = static_cast<std::int64_t>(start_us);
   }
   if (!(c.rate_min_hz > 0) || c.rate_max_hz < c.rate_min_hz) r.fail("rate_min_hz must be > 0 and ≤ rate_max_hz");
-  if (c.latency_max_ms < c.latency_min_ms || c.latency_min_ms < 0) r.fail("latency_min_ms must be ≥ 0 and ≤ latency_max_ms");
+  if (c.latency_max_ms < c.latency_min_ms || c.latency_min_ms < 0)
+    r.fail("latency_min_ms must be ≥ 0 and ≤ latency_max_ms");
   if (c.elbow_error_max_mm < c.elbow_error_min_mm) r.fail("elbow_error_min_mm must be ≤ elbow_error_max_mm");
   if (!(c.truth_rate_hz > 0)) r.at("truth_rate_hz").fail("must be > 0");
   if (!(c.motion_period_s > 0)) r.at("motion_period_s").fail("must be > 0");
@@ -208,7 +262,8 @@ nlohmann::json sim_config_to_json(const SimConfig& c) {
   j["calibration_random_rotation_deg"] = c.calibration_random_rotation_deg;
   // Written only when used, so that sidecars of the default simulator stay as they were.
   if (c.study_errors) j["study_errors"] = true;
-  if (c.hand_model_error.enabled || c.study_errors) j["hand_model_error"] = hand_model_error_to_json(c.hand_model_error);
+  if (c.hand_model_error.enabled || c.study_errors)
+    j["hand_model_error"] = hand_model_error_to_json(c.hand_model_error);
   nlohmann::json unplugs = nlohmann::json::array();
   for (const auto& u : c.unplugs) unplugs.push_back({{"slot", u.slot}, {"at_s", u.at_s}, {"duration_s", u.duration_s}});
   j["unplugs"] = unplugs;
@@ -218,6 +273,8 @@ nlohmann::json sim_config_to_json(const SimConfig& c) {
   return j;
 }
 
-SimConfig load_sim_config(const std::string& path) { return sim_config_from_json(read_json_file(path), path); }
+SimConfig load_sim_config(const std::string& path) {
+  return sim_config_from_json(read_json_file(path), path);
+}
 
 }  // namespace lmc::devices

@@ -76,7 +76,7 @@ struct SimConfig {
   double elbow_error_min_mm = 10.0, elbow_error_max_mm = 20.0;
   enum class Calibration { kLayout, kNone, kCustom };
   Calibration calibration = Calibration::kLayout;
-  std::map<std::string, Eigen::Vector3d> calibration_offsets_mm;  // kCustom, by slot
+  std::map<std::string, Eigen::Vector3d> calibration_offsets_mm;     // kCustom, by slot
   std::map<std::string, Eigen::Vector3d> calibration_rotations_deg;  // any mode, by slot: (rx, ry, rz)
   double calibration_random_translation_mm = 0;  // seeded random error per device, up to this length
   double calibration_random_rotation_deg = 0;    // and up to this angle

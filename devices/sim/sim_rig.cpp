@@ -107,8 +107,12 @@ SimRig::SimRig(Layout layout, SimConfig config)
     d->info.model = "simulated Leap Motion Controller";
     d->info.tracking_mode = tracking_mode_name(tracking_mode_for_pose(ld.pose));
     switch (config_.calibration) {
-      case SimConfig::Calibration::kLayout: d->calibration = ld.offset_mm; break;
-      case SimConfig::Calibration::kNone: d->calibration = Vec3::Zero(); break;
+      case SimConfig::Calibration::kLayout:
+        d->calibration = ld.offset_mm;
+        break;
+      case SimConfig::Calibration::kNone:
+        d->calibration = Vec3::Zero();
+        break;
       case SimConfig::Calibration::kCustom: {
         auto it = config_.calibration_offsets_mm.find(ld.slot);
         d->calibration = it == config_.calibration_offsets_mm.end() ? Vec3::Zero() : it->second;
@@ -168,7 +172,9 @@ SimRig::SimRig(Layout layout, SimConfig config)
 
 SimRig::~SimRig() = default;
 
-Eigen::Vector3d SimRig::calibration_error(int device) const { return devices_.at(static_cast<size_t>(device))->calibration; }
+Eigen::Vector3d SimRig::calibration_error(int device) const {
+  return devices_.at(static_cast<size_t>(device))->calibration;
+}
 
 Eigen::Isometry3d SimRig::true_device_to_world(int device) const {
   const Device& d = *devices_.at(static_cast<size_t>(device));
@@ -199,9 +205,9 @@ HandFrame SimRig::truth_at(double t) const {
         config_.motion == HandMotion::kOpen ? 0.0 : 0.5 * (1.0 - std::cos(kTwoPi * motion_t / config_.motion_period_s));
     HandPlacement placement = placement_;
     const double s = config_.sway_mm;
-    placement.wrist_mm += Vec3(s * std::sin(kTwoPi * 0.23 * t + sway_phase_[0]),
-                               0.5 * s * std::sin(kTwoPi * 0.17 * t + sway_phase_[1]),
-                               s * std::sin(kTwoPi * 0.31 * t + sway_phase_[2]));
+    placement.wrist_mm +=
+        Vec3(s * std::sin(kTwoPi * 0.23 * t + sway_phase_[0]), 0.5 * s * std::sin(kTwoPi * 0.17 * t + sway_phase_[1]),
+             s * std::sin(kTwoPi * 0.31 * t + sway_phase_[2]));
     f = model_.pose(motion_angles(config_.motion, progress), placement);
   }
   f.hand_present = true;
@@ -254,7 +260,8 @@ HandFrame SimRig::device_frame(Device& d, double t) {
       // drawn towards its default open finger (biased), carried along by the palm.
       const double b = d.seen[static_cast<size_t>(dg)] ? config_.internal_model_bias : 1.0;
       for (int j = 0; j < kJointsPerDigit; ++j) {
-        const Vec3 local = (1 - b) * seen[static_cast<size_t>(j)] + b * neutral_local_[static_cast<size_t>(dg)][static_cast<size_t>(j)];
+        const Vec3 local = (1 - b) * seen[static_cast<size_t>(j)] +
+                           b * neutral_local_[static_cast<size_t>(dg)][static_cast<size_t>(j)];
         world.point(digit_point(dg, j)) = basis->origin + basis->axes * local;
       }
     }
@@ -320,7 +327,8 @@ SimEvent SimRig::next() {
     // Next frame time: the device's rate wanders inside [min, max] (shared-bus variability).
     std::uniform_real_distribution<double> u(-1.0, 1.0);
     const double span = config_.rate_max_hz - config_.rate_min_hz;
-    d->rate_hz = std::clamp(d->rate_hz + u(d->rng) * config_.rate_wander * span, config_.rate_min_hz, config_.rate_max_hz);
+    d->rate_hz =
+        std::clamp(d->rate_hz + u(d->rng) * config_.rate_wander * span, config_.rate_min_hz, config_.rate_max_hz);
     d->next_time_s = t + 1.0 / d->rate_hz;
     if (in_window) continue;
     ev.time_s = t;

@@ -10,7 +10,9 @@ namespace lmc::devices {
 SimSource::SimSource(Layout layout, SimConfig config, SimSourceOptions options)
     : rig_(std::make_unique<SimRig>(std::move(layout), std::move(config))), options_(options) {}
 
-SimSource::~SimSource() { stop(); }
+SimSource::~SimSource() {
+  stop();
+}
 
 void SimSource::start(FrameSink& sink) {
   if (thread_.joinable()) return;

@@ -27,8 +27,9 @@ struct HandModelError {
   bool enabled = false;
   // Per digit (thumb, index, middle, ring, pinky), per bone (Meta→Proxi, Proxi→Inter,
   // Inter→Dist, Dist→End): the controller's bone length over the truth's.
-  std::array<std::array<double, 4>, 5> segment_scale{{{1, 1, 1, 1}, {1, 1, 1, 1}, {1, 1, 1, 1}, {1, 1, 1, 1}, {1, 1, 1, 1}}};
-  double scale_spread = 0;  // SD of the per-controller, per-digit factor on segment_scale
+  std::array<std::array<double, 4>, 5> segment_scale{
+      {{1, 1, 1, 1}, {1, 1, 1, 1}, {1, 1, 1, 1}, {1, 1, 1, 1}, {1, 1, 1, 1}}};
+  double scale_spread = 0;                  // SD of the per-controller, per-digit factor on segment_scale
   std::array<double, 5> joint_offset_mm{};  // towards the palm side of the bone, per joint
   double joint_offset_spread_mm = 0;        // SD per axis, per controller, digit and joint
 };

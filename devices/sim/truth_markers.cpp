@@ -42,9 +42,15 @@ std::vector<Vec3> TruthMarkerMap::markers(const HandFrame& f) const {
   for (size_t m = 0; m < sources_.size(); ++m) {
     const Vec3& p = f.point(sources_[m].point);
     switch (sources_[m].source) {
-      case Source::kPoint: out[m] = p; break;
-      case Source::kPairPlus: out[m] = p + kStyloidHalfWidthMm * lateral; break;
-      case Source::kPairMinus: out[m] = p - kStyloidHalfWidthMm * lateral; break;
+      case Source::kPoint:
+        out[m] = p;
+        break;
+      case Source::kPairPlus:
+        out[m] = p + kStyloidHalfWidthMm * lateral;
+        break;
+      case Source::kPairMinus:
+        out[m] = p - kStyloidHalfWidthMm * lateral;
+        break;
     }
   }
   return out;

@@ -19,11 +19,16 @@ std::string unescape(std::string_view s) {
       continue;
     }
     const std::string_view ent = s.substr(i + 1, semi - i - 1);
-    if (ent == "amp") out += '&';
-    else if (ent == "lt") out += '<';
-    else if (ent == "gt") out += '>';
-    else if (ent == "quot") out += '"';
-    else if (ent == "apos") out += '\'';
+    if (ent == "amp")
+      out += '&';
+    else if (ent == "lt")
+      out += '<';
+    else if (ent == "gt")
+      out += '>';
+    else if (ent == "quot")
+      out += '"';
+    else if (ent == "apos")
+      out += '\'';
     else {
       out += s.substr(i, semi - i + 1);
     }
@@ -59,11 +64,21 @@ std::string xml_escape(std::string_view text) {
   out.reserve(text.size());
   for (const char c : text) {
     switch (c) {
-      case '&': out += "&amp;"; break;
-      case '<': out += "&lt;"; break;
-      case '>': out += "&gt;"; break;
-      case '"': out += "&quot;"; break;
-      case '\'': out += "&apos;"; break;
+      case '&':
+        out += "&amp;";
+        break;
+      case '<':
+        out += "&lt;";
+        break;
+      case '>':
+        out += "&gt;";
+        break;
+      case '"':
+        out += "&quot;";
+        break;
+      case '\'':
+        out += "&apos;";
+        break;
       default:
         // Control characters (and a NUL that would end the datagram early) are dropped.
         if (static_cast<unsigned char>(c) >= 0x20 || c == '\t') out += c;
@@ -103,7 +118,8 @@ std::optional<ViconMessage> parse_vicon_message(std::string_view d, std::string*
     if (error != nullptr) *error = why;
     return std::nullopt;
   };
-  while (!d.empty() && (d.back() == '\0' || d.back() == ' ' || d.back() == '\n' || d.back() == '\r')) d.remove_suffix(1);
+  while (!d.empty() && (d.back() == '\0' || d.back() == ' ' || d.back() == '\n' || d.back() == '\r'))
+    d.remove_suffix(1);
   ViconMessage m;
   const size_t start = d.find("<CaptureStart");
   const size_t stop = d.find("<CaptureStop");

@@ -13,9 +13,9 @@ namespace lmc::devices {
 struct ViconMessage {
   enum class Type { kStart, kStop };
   Type type = Type::kStart;
-  std::string name;           // trial name → the capture's file name
-  std::string notes;          // start only
-  std::string description;    // start only
+  std::string name;         // trial name → the capture's file name
+  std::string notes;        // start only
+  std::string description;  // start only
   std::string database_path;
   int delay_ms = 0;
   std::uint32_t packet_id = 0;

@@ -1,9 +1,9 @@
 #include "devices/vicon/vicon_trigger.h"
 
 #include <arpa/inet.h>
+#include <fcntl.h>
 #include <netdb.h>
 #include <netinet/in.h>
-#include <fcntl.h>
 #include <poll.h>
 #include <sys/file.h>
 #include <sys/socket.h>
@@ -42,7 +42,8 @@ std::string env_or_empty(const char* name) {
 }  // namespace
 
 std::filesystem::path default_packet_id_file() {
-  if (const std::string d = env_or_empty("LMC_STATE_DIR"); !d.empty()) return std::filesystem::path(d) / "vicon-packet-id";
+  if (const std::string d = env_or_empty("LMC_STATE_DIR"); !d.empty())
+    return std::filesystem::path(d) / "vicon-packet-id";
   if (const std::string d = env_or_empty("XDG_STATE_HOME"); !d.empty())
     return std::filesystem::path(d) / "lmc-workbench" / "vicon-packet-id";
   if (const std::string h = env_or_empty("HOME"); !h.empty())
@@ -145,7 +146,9 @@ ViconTrigger::~ViconTrigger() {
   if (fd_ >= 0) ::close(fd_);
 }
 
-std::string ViconTrigger::target() const { return config_.host + ":" + std::to_string(config_.port); }
+std::string ViconTrigger::target() const {
+  return config_.host + ":" + std::to_string(config_.port);
+}
 
 ViconSendResult ViconTrigger::send_start(const std::string& trial_name) {
   ViconMessage m;

@@ -47,7 +47,7 @@ struct ViconSendResult {
   ViconMessage message;
   int datagrams_sent = 0;
   std::int64_t first_datagram_host_ns = 0;  // host_now_ns() right after the first datagram left (0: none)
-  std::string error;  // empty when every repeat went out
+  std::string error;                        // empty when every repeat went out
   std::string warning;  // e.g. the PacketID state file could not be used (IDs then come from the clock only)
   bool ok() const { return error.empty(); }
 };

@@ -41,7 +41,9 @@ std::vector<std::string> cells_of(const std::string& line) {
   return cells;
 }
 
-nlohmann::json read_json(const fs::path& p) { return nlohmann::json::parse(read_text_file(p)); }
+nlohmann::json read_json(const fs::path& p) {
+  return nlohmann::json::parse(read_text_file(p));
+}
 
 // Two subject sessions recorded once for every test: S_01 (a '_' the BIDS label drops) and S02. A
 // study folder's sessions go in name order: S02 before S_01 ('0' sorts before '_').
@@ -51,11 +53,13 @@ class BidsExport : public ::testing::Test {
     root_ = new fs::path(test::scratch_dir("lmc_bids_export"));
     for (const char* subject : {"S_01", "S02"}) {
       const fs::path s = study() / subject;
-      CliRun r = run_lmc(std::string("session new --subject ") + subject + " --protocol quick --seconds 1 --hand-length-mm 185 " +
-                             "--hand-breadth-mm 84 --operator 'Operator Olga' --notes 'private remark' -o " + shell_quote(s.string()),
-                         *root_ / "l");
+      CliRun r = run_lmc(
+          std::string("session new --subject ") + subject + " --protocol quick --seconds 1 --hand-length-mm 185 " +
+              "--hand-breadth-mm 84 --operator 'Operator Olga' --notes 'private remark' -o " + shell_quote(s.string()),
+          *root_ / "l");
       ASSERT_EQ(r.exit_code, 0) << r.all();
-      r = run_lmc("session run " + shell_quote(s.string()) + " --backend sim --fast --auto --quiet --seed 3", *root_ / "l");
+      r = run_lmc("session run " + shell_quote(s.string()) + " --backend sim --fast --auto --quiet --seed 3",
+                  *root_ / "l");
       ASSERT_EQ(r.exit_code, 0) << r.all();
     }
   }
@@ -98,12 +102,15 @@ TEST_F(BidsExport, WritesTheDatasetAsDocumented) {
   EXPECT_EQ(read_json(ds / "layouts" / "sub-S01_acq-Naiv_layout.json")["devices"].size(), 4u);
 
   // Channels: 28 points × x, y, z of type POS in mm.
-  const std::vector<std::string> channels = lines_of(read_text_file(motion / "sub-S01_task-Index_tracksys-LMC2_acq-Naiv_run-101_channels.tsv"));
+  const std::vector<std::string> channels =
+      lines_of(read_text_file(motion / "sub-S01_task-Index_tracksys-LMC2_acq-Naiv_run-101_channels.tsv"));
   ASSERT_EQ(channels.size(), 85u);
-  EXPECT_EQ(cells_of(channels[1]), (std::vector<std::string>{"Palm_x", "x", "POS", "Palm", "mm", "world", "LMC2 realigned: palm position"}));
+  EXPECT_EQ(cells_of(channels[1]),
+            (std::vector<std::string>{"Palm_x", "x", "POS", "Palm", "mm", "world", "LMC2 realigned: palm position"}));
   // Motion rows: as many as the recording lasts at 100 Hz, 84 cells each, no header.
   const nlohmann::json mj = read_json(motion / "sub-S01_task-Index_tracksys-LMC2_acq-Naiv_run-101_motion.json");
-  const std::vector<std::string> rows = lines_of(read_text_file(motion / "sub-S01_task-Index_tracksys-LMC2_acq-Naiv_run-101_motion.tsv"));
+  const std::vector<std::string> rows =
+      lines_of(read_text_file(motion / "sub-S01_task-Index_tracksys-LMC2_acq-Naiv_run-101_motion.tsv"));
   EXPECT_NEAR(static_cast<double>(rows.size()), mj["RecordingDuration"].get<double>() * 100.0, 1e-6);
   EXPECT_GE(rows.size(), 90u);
   // Every cell a number in mm with three decimals or n/a (a controller that had not seen the hand).
@@ -135,10 +142,12 @@ TEST_F(BidsExport, WritesTheDatasetAsDocumented) {
   EXPECT_EQ(mj["ManufacturersModelName"], "simulated Leap Motion Controller");
   EXPECT_EQ(mj["MissingValues"], "n/a");
   EXPECT_NE(mj["SoftwareVersions"].get<std::string>().find("lmc-workbench " LMC_VERSION), std::string::npos);
-  EXPECT_EQ(read_json(motion / "sub-S01_task-Index_tracksys-Vicon_acq-Naiv_run-101_motion.json")["Manufacturer"], "Vicon");
+  EXPECT_EQ(read_json(motion / "sub-S01_task-Index_tracksys-Vicon_acq-Naiv_run-101_motion.json")["Manufacturer"],
+            "Vicon");
 
   // Events: go, the simulated Vicon's time zero (where the grid starts) and stop.
-  const std::vector<std::string> events = lines_of(read_text_file(motion / "sub-S01_task-Index_acq-Naiv_run-101_events.tsv"));
+  const std::vector<std::string> events =
+      lines_of(read_text_file(motion / "sub-S01_task-Index_acq-Naiv_run-101_events.tsv"));
   ASSERT_EQ(events.size(), 4u);
   EXPECT_EQ(events[0], "onset\tduration\ttrial_type");
   std::set<std::string> types;
@@ -152,7 +161,8 @@ TEST_F(BidsExport, WritesTheDatasetAsDocumented) {
 
   // Participants: from the manifests, never the operator or notes; scans list what is there.
   EXPECT_EQ(read_text_file(ds / "participants.tsv"),
-            "participant_id\thandedness\thand_length_mm\thand_breadth_mm\nsub-S02\tright\t185.0\t84.0\nsub-S01\tright\t185.0\t84.0\n");
+            "participant_id\thandedness\thand_length_mm\thand_breadth_mm\nsub-S02\tright\t185.0\t84.0\nsub-"
+            "S01\tright\t185.0\t84.0\n");
   const std::vector<std::string> scans = lines_of(read_text_file(ds / "sub-S01" / "sub-S01_scans.tsv"));
   ASSERT_EQ(scans.size(), 1u + 2 * 6);
   for (size_t i = 1; i < scans.size(); ++i) EXPECT_TRUE(fs::exists(ds / "sub-S01" / cells_of(scans[i])[0])) << scans[i];
@@ -188,7 +198,8 @@ TEST_F(BidsExport, AnonymisesWithTheKeyOutsideTheDataset) {
   req.anonymise_key = req.out_dir.parent_path() / "keys" / "anonymous-key.tsv";
   const BidsExportReport report = export_bids(req);
   EXPECT_EQ(report.trials, 4);
-  EXPECT_TRUE(fs::exists(req.out_dir / "sub-01" / "motion" / "sub-01_task-Static_tracksys-LMCfused_acq-Naiv_run-101_motion.tsv"));
+  EXPECT_TRUE(fs::exists(req.out_dir / "sub-01" / "motion" /
+                         "sub-01_task-Static_tracksys-LMCfused_acq-Naiv_run-101_motion.tsv"));
   EXPECT_TRUE(fs::exists(req.out_dir / "sub-02"));
   const std::vector<std::string> key = lines_of(read_text_file(req.anonymise_key));
   ASSERT_EQ(key.size(), 3u);
@@ -228,7 +239,8 @@ TEST_F(BidsExport, CancelledPartWayLeavesACompleteSmallerDataset) {
   none.should_stop = [] { return true; };
   EXPECT_EQ(export_bids(none).trials, 0);
   EXPECT_TRUE(fs::exists(none.out_dir / "dataset_description.json"));
-  EXPECT_EQ(read_text_file(none.out_dir / "participants.tsv"), "participant_id\thandedness\thand_length_mm\thand_breadth_mm\n");
+  EXPECT_EQ(read_text_file(none.out_dir / "participants.tsv"),
+            "participant_id\thandedness\thand_length_mm\thand_breadth_mm\n");
 }
 
 TEST_F(BidsExport, UnsafeSubjectIdIsRefusedNamingTheFile) {
@@ -266,12 +278,17 @@ TEST_F(BidsExport, UnsafeSubjectIdIsRefusedNamingTheFile) {
 
 TEST_F(BidsExport, CommandLineWritesTheDataset) {
   const fs::path out = study().parent_path() / "cli-dataset";
-  CliRun r = run_lmc("export bids " + shell_quote(study().string()) + " -o " + shell_quote(out.string()), study().parent_path() / "l");
+  CliRun r = run_lmc("export bids " + shell_quote(study().string()) + " -o " + shell_quote(out.string()),
+                     study().parent_path() / "l");
   EXPECT_EQ(r.exit_code, 0) << r.all();
-  EXPECT_NE(r.out.find("exported 4 trial(s) of 2 subject(s) as BIDS-motion (default method)"), std::string::npos) << r.all();
-  EXPECT_NE(r.out.find("wrote sub-S01/motion/sub-S01_task-Static_acq-Naiv_run-101 (Naiv_Static101): 6 tracking systems"), std::string::npos)
+  EXPECT_NE(r.out.find("exported 4 trial(s) of 2 subject(s) as BIDS-motion (default method)"), std::string::npos)
       << r.all();
-  r = run_lmc("export bids " + shell_quote(study().string()) + " -o " + shell_quote(out.string()), study().parent_path() / "l");
+  EXPECT_NE(
+      r.out.find("wrote sub-S01/motion/sub-S01_task-Static_acq-Naiv_run-101 (Naiv_Static101): 6 tracking systems"),
+      std::string::npos)
+      << r.all();
+  r = run_lmc("export bids " + shell_quote(study().string()) + " -o " + shell_quote(out.string()),
+              study().parent_path() / "l");
   EXPECT_EQ(r.exit_code, 1) << r.all();
   EXPECT_NE(r.err.find("not empty (use --force"), std::string::npos) << r.all();
 }

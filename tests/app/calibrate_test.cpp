@@ -14,8 +14,10 @@ namespace calibrate_test {
 std::filesystem::path record_trial(const std::filesystem::path& dir) {
   const auto config = dir / "sim.json";
   std::ofstream(config) << R"({"calibration_random_translation_mm": 40, "calibration_random_rotation_deg": 6})";
-  const auto r = lmc::test::run_lmc("record --backend sim --fast --quiet --seconds 6 --seed 4 --layout paper-initial --trial Naiv_Static101 "
-                                    "--motion static --sim-config " + config.string() + " -o " + (dir / "S").string());
+  const auto r = lmc::test::run_lmc(
+      "record --backend sim --fast --quiet --seconds 6 --seed 4 --layout paper-initial --trial Naiv_Static101 "
+      "--motion static --sim-config " +
+      config.string() + " -o " + (dir / "S").string());
   EXPECT_EQ(r.exit_code, 0) << r.all();
   return dir / "S";
 }
@@ -28,15 +30,17 @@ TEST(CalibrateCli, CalibratesASimulatedTrialWithAndWithoutVicon) {
   const auto trial = session / "LMC_Naiv_Static101.raw.txt";
   ASSERT_TRUE(std::filesystem::exists(trial));
   const auto out = dir / "calibrated.json";
-  const auto r = lmc::test::run_lmc("calibrate " + trial.string() + " --vicon " + (session / "Naiv_Static101.trc").string() +
-                                    " --layout paper-initial -o " + out.string());
+  const auto r =
+      lmc::test::run_lmc("calibrate " + trial.string() + " --vicon " + (session / "Naiv_Static101.trc").string() +
+                         " --layout paper-initial -o " + out.string());
   ASSERT_EQ(r.exit_code, 0) << r.all();
   EXPECT_NE(r.out.find("against Vicon"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("grid lined up with Vicon frame 0"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("4 of 4 controllers calibrated"), std::string::npos) << r.out;
   const auto layout = nlohmann::json::parse(lmc::test::read_text_file(out));
   EXPECT_EQ(layout["name"], "paper-initial (calibrated)");
-  EXPECT_NE(layout["description"].get<std::string>().find("from trial Naiv_Static101 against Vicon file"), std::string::npos);
+  EXPECT_NE(layout["description"].get<std::string>().find("from trial Naiv_Static101 against Vicon file"),
+            std::string::npos);
   // The calibrated layout is a layout like any other: `lmc info` reads it.
   const auto info = lmc::test::run_lmc("info " + out.string());
   EXPECT_EQ(info.exit_code, 0) << info.all();
@@ -52,7 +56,8 @@ TEST(CalibrateCli, CalibratesASimulatedTrialWithAndWithoutVicon) {
 TEST(CalibrateCli, BadInputsNameTheFile) {
   const auto dir = lmc::test::scratch_dir("calibrate_cli_bad");
   const auto missing = dir / "LMC_Nothing.raw.txt";
-  auto r = lmc::test::run_lmc("calibrate " + missing.string() + " --layout paper-initial -o " + (dir / "o.json").string());
+  auto r =
+      lmc::test::run_lmc("calibrate " + missing.string() + " --layout paper-initial -o " + (dir / "o.json").string());
   EXPECT_NE(r.exit_code, 0);
   EXPECT_NE(r.err.find(missing.string() + ": no such file"), std::string::npos) << r.err;
 
@@ -62,8 +67,8 @@ TEST(CalibrateCli, BadInputsNameTheFile) {
   EXPECT_NE(r.exit_code, 0);
   EXPECT_NE(r.err.find(broken.string()), std::string::npos) << r.err;
 
-  r = lmc::test::run_lmc("calibrate " + broken.string() + " --vicon " + (dir / "none.trc").string() + " --layout paper-initial -o " +
-                         (dir / "o.json").string());
+  r = lmc::test::run_lmc("calibrate " + broken.string() + " --vicon " + (dir / "none.trc").string() +
+                         " --layout paper-initial -o " + (dir / "o.json").string());
   EXPECT_NE(r.exit_code, 0);
   EXPECT_NE(r.err.find("none.trc: no such Vicon file"), std::string::npos) << r.err;
 

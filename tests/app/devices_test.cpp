@@ -49,7 +49,8 @@ TEST(LmcDevices, SimulatorListsFourSerialsInTheirSlots) {
 TEST(LmcDevices, ReplayListsTheRecordedDevices) {
   const auto path = lmc::test::reference_file("acquisition/LMC_Naiv_Static101.raw.txt");
   LMC_REQUIRE_REFERENCE_FILE(path);
-  const CliRun r = run("devices --json --backend " + lmc::test::shell_quote("replay:" + path.string()), "devices_replay");
+  const CliRun r =
+      run("devices --json --backend " + lmc::test::shell_quote("replay:" + path.string()), "devices_replay");
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const auto j = nlohmann::json::parse(r.out);
   ASSERT_EQ(j.at("devices").size(), 4u);

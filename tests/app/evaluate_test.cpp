@@ -2,8 +2,8 @@
 #include <gtest/gtest.h>
 #include <algorithm>
 
-#include <filesystem>
 #include <sys/wait.h>
+#include <filesystem>
 
 #include <cstdlib>
 #include <fstream>
@@ -28,7 +28,8 @@ TEST(LmcEvaluate, SplitsByOrientationOnAPoseFile) {
   const auto dir = lmc::test::scratch_dir("cli_evaluate");
   const auto poses = dir / "p.tsv";
   ASSERT_EQ(run_lmc("poses --frames 60 --seed 2 -o " + lmc::test::shell_quote(poses.string()), dir).exit_code, 0);
-  const CliRun r = run_lmc("evaluate --layout paper-initial --poses " + lmc::test::shell_quote(poses.string()) + " --json", dir);
+  const CliRun r =
+      run_lmc("evaluate --layout paper-initial --poses " + lmc::test::shell_quote(poses.string()) + " --json", dir);
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const auto j = nlohmann::json::parse(r.out);
   EXPECT_EQ(j["all"]["frames"], 60);
@@ -59,14 +60,16 @@ TEST(LmcEvaluate, RobustTermsAndWhatEachControllerContributes) {
   EXPECT_EQ(j["controllers"][3]["counts"], true);
   EXPECT_EQ(j["controllers"][0]["seeing_inside_cut_share"], 0.0);
   EXPECT_EQ(j["controllers"][0]["counts_inside_cut"], false);
-  EXPECT_LE(j["controllers"][3]["seeing_inside_cut_share"].get<double>(), j["controllers"][3]["seeing_share"].get<double>());
+  EXPECT_LE(j["controllers"][3]["seeing_inside_cut_share"].get<double>(),
+            j["controllers"][3]["seeing_share"].get<double>());
   const CliRun t = run_lmc("evaluate --layout paper-optimized --frames 300", dir);
   ASSERT_EQ(t.exit_code, 0) << t.err;
   EXPECT_NE(t.out.find("NO: the layout is as good without it"), std::string::npos) << t.out;
   EXPECT_NE(t.out.find("axis cut"), std::string::npos) << t.out;
   EXPECT_NE(t.out.find("the same inside the axis cuts"), std::string::npos) << t.out;
   const auto report = dir / "report";
-  const CliRun w = run_lmc("evaluate --layout paper-optimized --frames 300 --report " + lmc::test::shell_quote(report.string()), dir);
+  const CliRun w = run_lmc(
+      "evaluate --layout paper-optimized --frames 300 --report " + lmc::test::shell_quote(report.string()), dir);
   ASSERT_EQ(w.exit_code, 0) << w.err;
   const std::string md = lmc::test::read_text_file(report / "report.md");
   EXPECT_NE(md.find("**LMC1 does not count**"), std::string::npos) << md;
@@ -82,7 +85,9 @@ TEST(LmcEvaluate, RobustTermsAndWhatEachControllerContributes) {
   // The heatmap: five fingers × ten reference poses × two panels, each cell one row of its CSV.
   const std::string heatmap = lmc::test::read_text_file(report / "finger-coverage.svg");
   size_t cells = 0;
-  for (size_t i = heatmap.find("<rect class=\"cell"); i != std::string::npos; i = heatmap.find("<rect class=\"cell", i + 1)) ++cells;
+  for (size_t i = heatmap.find("<rect class=\"cell"); i != std::string::npos;
+       i = heatmap.find("<rect class=\"cell", i + 1))
+    ++cells;
   EXPECT_EQ(cells, 100u);
   const std::string csv = lmc::test::read_text_file(report / "finger-coverage.csv");
   EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'), 101);

@@ -24,7 +24,9 @@ using test::CliRun;
 using test::run_lmc;
 using test::shell_quote;
 
-bool is_missing(const Eigen::Vector3d& p) { return p.array().isNaN().any(); }
+bool is_missing(const Eigen::Vector3d& p) {
+  return p.array().isNaN().any();
+}
 
 // Compares one exported point series with the processed one; returns how many frames were missing.
 int expect_series(const std::vector<std::vector<Eigen::Vector3d>>& file, int column, const std::vector<Vec3>& want,
@@ -50,8 +52,9 @@ std::vector<Vec3> track_series(const HandTrack& t, int point, int frames) {
 }
 
 // Every exported series of `labels`/`positions` against the trial processed here in the test.
-void expect_processed_trial(const std::vector<std::string>& labels, const std::vector<std::vector<Eigen::Vector3d>>& positions,
-                            const TrialSources& job, const std::string& what) {
+void expect_processed_trial(const std::vector<std::string>& labels,
+                            const std::vector<std::vector<Eigen::Vector3d>>& positions, const TrialSources& job,
+                            const std::string& what) {
   const TrialResult r = process_sources_in_full(job, BatchOptions{});
   const int frames = r.world.frame_count;
   ASSERT_EQ(static_cast<int>(positions.size()), frames) << what;
@@ -62,7 +65,8 @@ void expect_processed_trial(const std::vector<std::string>& labels, const std::v
   };
   int device_gaps = 0;
   for (const int i : exported_hand_points()) {
-    expect_series(positions, column("F_" + landmark_name(i)), track_series(r.fused, i, frames), what + " F_" + landmark_name(i));
+    expect_series(positions, column("F_" + landmark_name(i)), track_series(r.fused, i, frames),
+                  what + " F_" + landmark_name(i));
     for (const auto& d : r.world.devices) {
       const std::string label = "LMC" + std::to_string(d.device_id) + "_" + landmark_name(i);
       device_gaps += expect_series(positions, column(label), track_series(d.track, i, frames), what + " " + label);
@@ -76,7 +80,8 @@ void expect_processed_trial(const std::vector<std::string>& labels, const std::v
     for (size_t k = 0; k < m.names.size(); ++k) {
       std::vector<Vec3> want;
       for (int f = 0; f < frames; ++f) {
-        want.push_back(static_cast<size_t>(f) < m.positions.size() ? m.positions[static_cast<size_t>(f)][k] : Vec3::Constant(std::nan("")));
+        want.push_back(static_cast<size_t>(f) < m.positions.size() ? m.positions[static_cast<size_t>(f)][k]
+                                                                   : Vec3::Constant(std::nan("")));
       }
       expect_series(positions, column("V_" + export_label(m.names[k])), want, what + " Vicon " + m.names[k]);
     }
@@ -89,18 +94,23 @@ void expect_processed_trial(const std::vector<std::string>& labels, const std::v
 TEST(LmcExport, WritesC3dAndTrcEqualToTheProcessedTrial) {
   const fs::path dir = test::scratch_dir("lmc_export");
   // One trial with its simulated Vicon (truth) file, one without.
-  CliRun r = run_lmc("record --backend sim --fast --quiet --seconds 3 --seed 7 --layout paper-initial --trial Naiv_Index101 "
-                     "--motion horizontal/index -o " + shell_quote((dir / "S01").string()),
-                     dir / "l");
+  CliRun r = run_lmc(
+      "record --backend sim --fast --quiet --seconds 3 --seed 7 --layout paper-initial --trial Naiv_Index101 "
+      "--motion horizontal/index -o " +
+          shell_quote((dir / "S01").string()),
+      dir / "l");
   ASSERT_EQ(r.exit_code, 0) << r.all();
-  r = run_lmc("record --backend sim --fast --quiet --seconds 2 --seed 8 --layout paper-initial --trial Naiv_Index102 "
-              "--motion horizontal/index -o " + shell_quote((dir / "S02").string()),
-              dir / "l");
+  r = run_lmc(
+      "record --backend sim --fast --quiet --seconds 2 --seed 8 --layout paper-initial --trial Naiv_Index102 "
+      "--motion horizontal/index -o " +
+          shell_quote((dir / "S02").string()),
+      dir / "l");
   ASSERT_EQ(r.exit_code, 0) << r.all();
   ASSERT_TRUE(fs::remove(dir / "S02" / "Naiv_Index102.trc"));
 
   const fs::path out = dir / "out";
-  const std::string inputs = shell_quote((dir / "S01" / "LMC_Naiv_Index101.raw.txt").string()) + " " + shell_quote((dir / "S02").string());
+  const std::string inputs =
+      shell_quote((dir / "S01" / "LMC_Naiv_Index101.raw.txt").string()) + " " + shell_quote((dir / "S02").string());
   r = run_lmc("export c3d " + inputs + " -o " + shell_quote(out.string()), dir / "l");
   ASSERT_EQ(r.exit_code, 0) << r.all();
   EXPECT_NE(r.out.find("exported 2 trial(s) as C3D"), std::string::npos) << r.all();
@@ -128,8 +138,8 @@ TEST(LmcExport, WritesC3dAndTrcEqualToTheProcessedTrial) {
   EXPECT_EQ(c.labels.at(static_cast<size_t>(28 + 28 + 11)), "LMC2_Index_Dist");
   EXPECT_EQ(c.descriptions.at(11), "fused hand: index finger last joint (Finger2_Dist)");
   expect_processed_trial(c.labels, c.positions, jobs1[0], "C3D with Vicon");
-  expect_processed_trial(read_c3d(out / "Naiv_Index102.c3d").labels, read_c3d(out / "Naiv_Index102.c3d").positions, jobs2[0],
-                         "C3D without Vicon");
+  expect_processed_trial(read_c3d(out / "Naiv_Index102.c3d").labels, read_c3d(out / "Naiv_Index102.c3d").positions,
+                         jobs2[0], "C3D without Vicon");
 
   // TRC, the same points.
   const fs::path trc_out = dir / "trc";
@@ -169,8 +179,8 @@ TEST(LmcExport, WritesC3dAndTrcEqualToTheProcessedTrial) {
 
   // An input that cannot be read is left out and said; the rest is written (exit code 2).
   const fs::path partial = dir / "partial";
-  r = run_lmc("export trc " + shell_quote((dir / "S02").string()) + " " + shell_quote((dir / "nowhere").string()) + " -o " +
-                  shell_quote(partial.string()),
+  r = run_lmc("export trc " + shell_quote((dir / "S02").string()) + " " + shell_quote((dir / "nowhere").string()) +
+                  " -o " + shell_quote(partial.string()),
               dir / "l");
   EXPECT_EQ(r.exit_code, 2) << r.all();
   EXPECT_NE(r.out.find("note: left out " + (dir / "nowhere").string()), std::string::npos) << r.all();
@@ -199,7 +209,8 @@ TEST(LmcExport, APartialSessionExportsWhatItCanAndSaysWhatItLeftOut) {
   const fs::path out = dir / "out";
   r = run_lmc("export trc " + shell_quote(s.string()) + " -o " + shell_quote(out.string()), dir / "l");
   EXPECT_EQ(r.exit_code, 2) << r.all();
-  EXPECT_NE(r.out.find("note: left out Naiv_Static101: the LMC recording has no data rows"), std::string::npos) << r.all();
+  EXPECT_NE(r.out.find("note: left out Naiv_Static101: the LMC recording has no data rows"), std::string::npos)
+      << r.all();
   EXPECT_NE(r.out.find("note: Naiv_Index101: no Vicon file"), std::string::npos) << r.all();
   EXPECT_NE(r.out.find("exported 1 trial(s) as TRC"), std::string::npos) << r.all();
   std::vector<fs::path> written;

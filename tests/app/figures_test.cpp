@@ -21,7 +21,8 @@ TEST(LmcFigures, WritesTheAgreementFiguresAndTablesAndReusesTheCache) {
   const fs::path dir = test::scratch_dir("lmc_figures");
   for (const char* subject : {"S01", "S02"}) {
     const fs::path s = dir / subject;
-    CliRun r = run_lmc("session new --subject " + std::string(subject) + " --protocol quick -o " + shell_quote(s.string()), dir / "l");
+    CliRun r = run_lmc(
+        "session new --subject " + std::string(subject) + " --protocol quick -o " + shell_quote(s.string()), dir / "l");
     ASSERT_EQ(r.exit_code, 0) << r.all();
     r = run_lmc("session run " + shell_quote(s.string()) + " --backend sim --fast --auto --quiet --seed " +
                     std::string(subject == std::string("S01") ? "1" : "2"),
@@ -30,15 +31,17 @@ TEST(LmcFigures, WritesTheAgreementFiguresAndTablesAndReusesTheCache) {
   }
   const std::string cache = "LMC_CACHE_DIR=" + shell_quote((dir / "cache").string());
   const fs::path out = dir / "out";
-  const std::string args = "figures " + shell_quote((dir / "S01").string()) + " " + shell_quote((dir / "S02").string()) +
-                           " --trial Naiv_Index101 -o " + shell_quote(out.string());
+  const std::string args = "figures " + shell_quote((dir / "S01").string()) + " " +
+                           shell_quote((dir / "S02").string()) + " --trial Naiv_Index101 -o " +
+                           shell_quote(out.string());
   CliRun r = run_lmc(args, dir / "l", cache);
   ASSERT_EQ(r.exit_code, 0) << r.all();
   EXPECT_NE(r.out.find("figures of 4 trial(s) (0 from the cache, 0 failed)"), std::string::npos) << r.out;
-  for (const char* f : {"agreement.csv", "agreement.json", "visibility-map.svg", "visibility-map.csv", "visibility-map.json",
-                        "visibility-map-table.csv", "study-tables.md", "study-finger-length.csv",
-                        "bland-altman-all-all-finger_length_index.svg", "bland-altman-initial-horizontal-rom_index_mcp.csv",
-                        "trial-s01-naiv_index101.svg", "trial-s01-naiv_index101.json", "trial-s02-naiv_index101.series.csv"}) {
+  for (const char* f :
+       {"agreement.csv", "agreement.json", "visibility-map.svg", "visibility-map.csv", "visibility-map.json",
+        "visibility-map-table.csv", "study-tables.md", "study-finger-length.csv",
+        "bland-altman-all-all-finger_length_index.svg", "bland-altman-initial-horizontal-rom_index_mcp.csv",
+        "trial-s01-naiv_index101.svg", "trial-s01-naiv_index101.json", "trial-s02-naiv_index101.series.csv"}) {
     ASSERT_TRUE(fs::exists(out / f)) << f << "\n" << r.all();
     EXPECT_GT(fs::file_size(out / f), 100u) << f;
   }
@@ -58,7 +61,8 @@ TEST(LmcFigures, WritesTheAgreementFiguresAndTablesAndReusesTheCache) {
   r = run_lmc(args, dir / "l", cache);
   ASSERT_EQ(r.exit_code, 0) << r.all();
   EXPECT_NE(r.out.find("(4 from the cache, 0 failed)"), std::string::npos) << r.out;
-  r = run_lmc("figures " + shell_quote((dir / "S01").string()) + " --trial Nope101 -o " + shell_quote(out.string()), dir / "l", cache);
+  r = run_lmc("figures " + shell_quote((dir / "S01").string()) + " --trial Nope101 -o " + shell_quote(out.string()),
+              dir / "l", cache);
   EXPECT_NE(r.exit_code, 0);
   EXPECT_NE(r.err.find("--trial Nope101: no such trial"), std::string::npos) << r.all();
 }

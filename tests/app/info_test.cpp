@@ -2,13 +2,13 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include <sys/wait.h>
 #include <cstdlib>
 #include <fstream>
 #include <nlohmann/json.hpp>
-#include <vector>
 #include <sstream>
 #include <string>
-#include <sys/wait.h>
+#include <vector>
 
 #include "core/io/lmc_recording.h"
 #include "tests/support/cli_runner.h"
@@ -16,10 +16,9 @@
 
 namespace {
 
-using ::testing::HasSubstr;
 using lmc::test::CliRun;
 using lmc::test::read_text_file;
-
+using ::testing::HasSubstr;
 
 // The whitespace-separated words of the output line whose first word is `first` (empty when
 // there is none). std::regex is avoided: GCC 12 warns inside <regex> at -O1 (breaks -Werror).

@@ -21,8 +21,9 @@ using lmc::test::run_lmc;
 TEST(LmcOptimize, SmallSearchWritesALayoutAndJsonSummary) {
   const auto dir = lmc::test::scratch_dir("cli_optimize");
   const auto out1 = dir / "l1.json", out2 = dir / "l2.json";
-  const std::string common = "optimize --frames 40 --particles 4 --iterations 2 --devices 3 "
-                             "--bounds x=-300:300,z=-300:300,rx=-45:45,ry=-90:90 --json --no-progress ";
+  const std::string common =
+      "optimize --frames 40 --particles 4 --iterations 2 --devices 3 "
+      "--bounds x=-300:300,z=-300:300,rx=-45:45,ry=-90:90 --json --no-progress ";
   const CliRun r1 = run_lmc(common + "--threads 1 -o " + lmc::test::shell_quote(out1.string()), dir);
   ASSERT_EQ(r1.exit_code, 0) << r1.err;
   const auto j = nlohmann::json::parse(r1.out);
@@ -101,9 +102,11 @@ TEST(LmcOptimize, RobustIsTheDefaultAndSaysWhatMadeTheLayout) {
 TEST(LmcOptimize, TextSummaryAndLocks) {
   const auto dir = lmc::test::scratch_dir("cli_optimize_text");
   const auto out = dir / "l.json";
-  const CliRun r = run_lmc("optimize --frames 30 --particles 3 --iterations 1 --start paper-initial --lock LMC2 "
-                        "--lock LMC3:x+z -o " + lmc::test::shell_quote(out.string()),
-                        dir);
+  const CliRun r = run_lmc(
+      "optimize --frames 30 --particles 3 --iterations 1 --start paper-initial --lock LMC2 "
+      "--lock LMC3:x+z -o " +
+          lmc::test::shell_quote(out.string()),
+      dir);
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_NE(r.out.find("M = "), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("c_0 = "), std::string::npos);
@@ -125,16 +128,20 @@ TEST(LmcOptimize, StartLayoutKeepsItsSensorRangeUnlessOverridden) {
                              lmc::test::shell_quote((dir / "start.json").string());
   ASSERT_EQ(run_lmc(common + " -o " + lmc::test::shell_quote((dir / "a.json").string()), dir).exit_code, 0);
   EXPECT_EQ(lmc::load_layout(dir / "a.json").sensor.range_mm, 400.0);
-  ASSERT_EQ(run_lmc(common + " --range-mm 550 -o " + lmc::test::shell_quote((dir / "b.json").string()), dir).exit_code, 0);
+  ASSERT_EQ(run_lmc(common + " --range-mm 550 -o " + lmc::test::shell_quote((dir / "b.json").string()), dir).exit_code,
+            0);
   EXPECT_EQ(lmc::load_layout(dir / "b.json").sensor.range_mm, 550.0);
 }
 
 TEST(LmcOptimize, BadBoundsAreReported) {
   const auto dir = lmc::test::scratch_dir("cli_optimize_bad");
-  const CliRun r = run_lmc("optimize --frames 10 --bounds x=9:1 -o " + lmc::test::shell_quote((dir / "l.json").string()), dir);
+  const CliRun r =
+      run_lmc("optimize --frames 10 --bounds x=9:1 -o " + lmc::test::shell_quote((dir / "l.json").string()), dir);
   EXPECT_EQ(r.exit_code, 1);
   EXPECT_NE(r.err.find("--bounds"), std::string::npos) << r.err;
-  const CliRun r2 = run_lmc("optimize --frames 10 --start paper-initial --lock LMC9 -o " + lmc::test::shell_quote((dir / "l.json").string()), dir);
+  const CliRun r2 = run_lmc(
+      "optimize --frames 10 --start paper-initial --lock LMC9 -o " + lmc::test::shell_quote((dir / "l.json").string()),
+      dir);
   EXPECT_EQ(r2.exit_code, 1);
   EXPECT_NE(r2.err.find("LMC9"), std::string::npos) << r2.err;
 }

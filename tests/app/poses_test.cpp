@@ -44,7 +44,8 @@ TEST(LmcPoses, UsesARecordedHand) {
   LMC_REQUIRE_REFERENCE_FILE(hand);
   const auto dir = lmc::test::scratch_dir("cli_poses_hand");
   const std::string out = (dir / "p.tsv").string();
-  const CliRun r = run_lmc("poses --frames 5 --hand " + lmc::test::shell_quote(hand.string()) + " -o " + lmc::test::shell_quote(out), dir);
+  const CliRun r = run_lmc(
+      "poses --frames 5 --hand " + lmc::test::shell_quote(hand.string()) + " -o " + lmc::test::shell_quote(out), dir);
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_NE(lmc::load_pose_set(out).description.find("hand="), std::string::npos);
 }
@@ -52,9 +53,9 @@ TEST(LmcPoses, UsesARecordedHand) {
 TEST(LmcPoses, MissingOutputIsAnError) {
   const auto dir = lmc::test::scratch_dir("cli_poses_bad");
   EXPECT_NE(run_lmc("poses --frames 5", dir).exit_code, 0);
-  const CliRun r = run_lmc("poses --frames 5 --hand " + lmc::test::shell_quote((dir / "missing.txt").string()) + " -o " +
-                            lmc::test::shell_quote((dir / "p.tsv").string()),
-                        dir);
+  const CliRun r = run_lmc("poses --frames 5 --hand " + lmc::test::shell_quote((dir / "missing.txt").string()) +
+                               " -o " + lmc::test::shell_quote((dir / "p.tsv").string()),
+                           dir);
   EXPECT_EQ(r.exit_code, 1);
   EXPECT_NE(r.err.find("missing.txt"), std::string::npos) << r.err;
 }

@@ -20,7 +20,9 @@ namespace {
 using lmc::test::CliRun;
 
 // Both streams together: these tests look for per-trial messages wherever they were printed.
-CliRun run(const std::string& args) { return lmc::test::run_lmc(args); }
+CliRun run(const std::string& args) {
+  return lmc::test::run_lmc(args);
+}
 
 // The four RMSE cells of a table row: reference all, default all, reference not seen, default not seen.
 std::array<double, 4> row_values(const std::string& table, const std::string& row_name) {
@@ -50,7 +52,7 @@ TEST(ProcessSim, DefaultMethodBeatsReferenceOnSimulatedTruth) {
     s >> trial >> motion;
     const std::string layout = trial.rfind("Naiv", 0) == 0 ? "paper-initial" : "paper-optimized";
     const CliRun r = run("record --backend sim --fast --quiet --seconds 3 --seed 7 --layout " + layout + " --trial " +
-                            trial + " --motion " + motion + " -o " + session.string());
+                         trial + " --motion " + motion + " -o " + session.string());
     ASSERT_EQ(r.exit_code, 0) << r.all();
   }
   const auto out = dir / "out";

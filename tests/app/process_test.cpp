@@ -24,7 +24,9 @@ namespace process_test {
 using lmc::test::CliRun;
 
 // Both streams together: these tests look for per-trial messages wherever they were printed.
-CliRun run(const std::string& args) { return lmc::test::run_lmc(args); }
+CliRun run(const std::string& args) {
+  return lmc::test::run_lmc(args);
+}
 
 std::string read_text(const std::filesystem::path& p) {
   std::ifstream in(p);
@@ -72,7 +74,7 @@ LmcRecording raw_recording(const Layout& layout, double seconds, int devices) {
       f.timestamp_us = 5'000'000 + static_cast<std::int64_t>(t * 1e6);
       for (int i = 0; i < kNumHandPoints; ++i) {
         f.point(i) = (i == kPalmNormal || i == kPalmDirection) ? Vec3(r.transpose() * w.point(i))
-                                                                : Vec3(r.transpose() * (w.point(i) - shift));
+                                                               : Vec3(r.transpose() * (w.point(i) - shift));
       }
       rec.rows.push_back(f);
     }
@@ -126,10 +128,10 @@ class ProcessCli : public ::testing::Test {
 
 TEST_F(ProcessCli, SessionWithMalformedTrialsReportsEachAndProcessesTheRest) {
   add_trial("Naiv_Static101", 4, 2.0);
-  add_trial("Naiv_Static102", 4, 0.5);       // Vicon shorter than a second
-  add_trial("Naiv_Static103", 4, 2.0, 12);   // Index3_1 missing throughout
-  add_trial("Naiv_Static104", 4, 0.0);       // no Vicon file
-  add_trial("Naiv_Static105", 5, 2.0);       // five devices, layout has four
+  add_trial("Naiv_Static102", 4, 0.5);      // Vicon shorter than a second
+  add_trial("Naiv_Static103", 4, 2.0, 12);  // Index3_1 missing throughout
+  add_trial("Naiv_Static104", 4, 0.0);      // no Vicon file
+  add_trial("Naiv_Static105", 5, 2.0);      // five devices, layout has four
   const auto out = dir_ / "out";
   const CliRun r = run("process " + session_.string() + " --method reference -o " + out.string());
   EXPECT_EQ(r.exit_code, 2) << r.all();
@@ -175,7 +177,7 @@ TEST_F(ProcessCli, SingleTrialWithExplicitViconAndBadArguments) {
   add_trial("Naiv_Index101", 4, 2.0);
   const auto out = dir_ / "one";
   const CliRun r = run("process " + (session_ / "LMC_Naiv_Index101.raw.txt").string() + " --vicon " +
-                          (session_ / "Naiv_Index101.trc").string() + " -o " + out.string());
+                       (session_ / "Naiv_Index101.trc").string() + " -o " + out.string());
   EXPECT_EQ(r.exit_code, 0) << r.all();
   EXPECT_NE(r.all().find("processed 1 of 1 trial(s) (default method)"), std::string::npos) << r.all();
   const std::string text = read_text(out / "Naiv_Index101.results.txt");
@@ -201,7 +203,8 @@ TEST_F(ProcessCli, SingleTrialWithExplicitViconAndBadArguments) {
   const auto b = nlohmann::json::parse(read_text(dir_ / "one_c3d" / "Naiv_Index101.summary.json"));
   EXPECT_NE(b["vicon_file"].get<std::string>().find(".c3d"), std::string::npos);
   for (int k = 0; k < 5; ++k) {
-    EXPECT_NEAR(a["vicon"]["finger_mean_mm"][k].get<double>(), b["vicon"]["finger_mean_mm"][k].get<double>(), 0.01) << k;
+    EXPECT_NEAR(a["vicon"]["finger_mean_mm"][k].get<double>(), b["vicon"]["finger_mean_mm"][k].get<double>(), 0.01)
+        << k;
   }
 
   const CliRun missing = run("process " + (dir_ / "nope").string() + " -o " + out.string());
@@ -210,7 +213,7 @@ TEST_F(ProcessCli, SingleTrialWithExplicitViconAndBadArguments) {
   const CliRun bad_method = run("process " + session_.string() + " --method magic -o " + out.string());
   EXPECT_NE(bad_method.exit_code, 0);
   const CliRun no_layout = run("process " + (session_ / "LMC_Naiv_Index101.raw.txt").string() +
-                                  " --layout does-not-exist -o " + out.string());
+                               " --layout does-not-exist -o " + out.string());
   EXPECT_EQ(no_layout.exit_code, 2) << no_layout.all();
   EXPECT_NE(no_layout.all().find("FAILED  Naiv_Index101"), std::string::npos) << no_layout.all();
 }

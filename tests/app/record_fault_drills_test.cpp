@@ -21,14 +21,16 @@
 namespace record_fault_drills_test {
 
 namespace fs = std::filesystem;
-using ::testing::HasSubstr;
 using lmc::test::CliRun;
 using lmc::test::complete_rows;
 using lmc::test::run_lmc;
 using lmc::test::shell_quote;
 using lmc::test::spawn_lmc;
+using ::testing::HasSubstr;
 
-std::string q(const fs::path& p) { return shell_quote(p.string()); }
+std::string q(const fs::path& p) {
+  return shell_quote(p.string());
+}
 
 // Rows keyed by device and device timestamp: the simulator's rows are the same whatever the pace
 // (real time or --fast) for one seed, so a killed real-time trial can be compared row by row.
@@ -68,7 +70,8 @@ TEST(RecordFaultDrills, SigkillMidTrialKeepsEveryRowUpToASecondBeforeAndInfoSays
   std::int64_t last_us = 0;
   for (const auto& r : killed.rows) {
     const auto it = reference.find({r.device_id, r.timestamp_us});
-    ASSERT_NE(it, reference.end()) << "row of LMC" << r.device_id << " at " << r.timestamp_us << " µs was not generated";
+    ASSERT_NE(it, reference.end()) << "row of LMC" << r.device_id << " at " << r.timestamp_us
+                                   << " µs was not generated";
     EXPECT_EQ(it->second.points[0], r.points[0]) << "row of LMC" << r.device_id << " at " << r.timestamp_us;
     last_us = std::max(last_us, r.timestamp_us);
   }
@@ -76,7 +79,8 @@ TEST(RecordFaultDrills, SigkillMidTrialKeepsEveryRowUpToASecondBeforeAndInfoSays
   const auto killed_rows = rows_by_key(killed);
   for (const auto& [key, frame] : reference) {
     if (std::get<1>(key) > last_us - 1'000'000) continue;
-    EXPECT_TRUE(killed_rows.count(key)) << "row of LMC" << std::get<0>(key) << " at " << std::get<1>(key) << " µs was lost";
+    EXPECT_TRUE(killed_rows.count(key)) << "row of LMC" << std::get<0>(key) << " at " << std::get<1>(key)
+                                        << " µs was lost";
   }
 
   const CliRun info = run_lmc("info " + q(dir / "killed" / "LMC_Naiv_Wrist101.session.json"), dir / "l3");

@@ -38,20 +38,26 @@ const bool kPrivateStateDir = [] {
   return true;
 }();
 
-CliRun run(const std::string& args, const std::filesystem::path& logs) { return run_lmc(args, logs); }
+CliRun run(const std::string& args, const std::filesystem::path& logs) {
+  return run_lmc(args, logs);
+}
 
 // `lmc <args>` under `ulimit -f <blocks>` (the shell's file-size limit).
 CliRun run_with_file_limit(int blocks, const std::string& args, const std::filesystem::path& logs) {
   return run_lmc(args, logs, "ulimit -f " + std::to_string(blocks) + " &&");
 }
 
-nlohmann::json json_file(const std::filesystem::path& p) { return nlohmann::json::parse(read_text_file(p)); }
+nlohmann::json json_file(const std::filesystem::path& p) {
+  return nlohmann::json::parse(read_text_file(p));
+}
 
 TEST(LmcRecord, SimulatedTrialWritesRecordingSidecarAndTruthThatInfoReads) {
   const auto dir = lmc::test::scratch_dir("record_sim");
-  const CliRun r = run("record --backend sim --layout paper-initial --trial S01_index_1 --seconds 4 --motion index "
-                          "--fast --seed 5 -o " + lmc::test::shell_quote((dir / "session").string()),
-                          dir / "logs");
+  const CliRun r =
+      run("record --backend sim --layout paper-initial --trial S01_index_1 --seconds 4 --motion index "
+          "--fast --seed 5 -o " +
+              lmc::test::shell_quote((dir / "session").string()),
+          dir / "logs");
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_THAT(r.out, HasSubstr("trial S01_index_1:"));
   const auto rec = dir / "session" / "LMC_S01_index_1.raw.txt";
@@ -96,9 +102,11 @@ TEST(LmcRecord, SimulatedTrialWritesRecordingSidecarAndTruthThatInfoReads) {
   EXPECT_EQ(sj.at("ground_truth").at("file"), "S01_index_1.trc");
 
   // Same seed, same trial: the simulator is reproducible through the CLI too.
-  const CliRun again = run("record --backend sim --trial S01_index_1 --seconds 4 --motion index --fast --seed 5 "
-                              "--quiet -o " + lmc::test::shell_quote((dir / "again").string()),
-                              dir / "logs2");
+  const CliRun again =
+      run("record --backend sim --trial S01_index_1 --seconds 4 --motion index --fast --seed 5 "
+          "--quiet -o " +
+              lmc::test::shell_quote((dir / "again").string()),
+          dir / "logs2");
   ASSERT_EQ(again.exit_code, 0) << again.err;
   EXPECT_TRUE(read_text_file(dir / "again" / "LMC_S01_index_1.raw.txt") == read_text_file(rec));
   // The TRC's first line names its own path; everything after it must match.
@@ -118,10 +126,11 @@ TEST(LmcRecord, SendsTheViconTriggerToALoopbackListener) {
   const int port = ntohs(addr.sin_port);
 
   const auto dir = lmc::test::scratch_dir("record_vicon");
-  const CliRun r = run("record --backend sim --trial Vic_1 --seconds 1 --quiet --vicon 127.0.0.1:" +
-                              std::to_string(port) + " --vicon-database " + lmc::test::shell_quote("D:/lab & co") + " -o " +
-                              lmc::test::shell_quote((dir / "s").string()),
-                          dir / "logs");
+  const CliRun r =
+      run("record --backend sim --trial Vic_1 --seconds 1 --quiet --vicon 127.0.0.1:" + std::to_string(port) +
+              " --vicon-database " + lmc::test::shell_quote("D:/lab & co") + " -o " +
+              lmc::test::shell_quote((dir / "s").string()),
+          dir / "logs");
   ASSERT_EQ(r.exit_code, 0) << r.err;
   std::vector<std::string> packets;
   char buf[4096];
@@ -210,9 +219,11 @@ TEST(LmcRecord, ARefusedViconTriggerAbortsTheTrialAndTheSidecarSaysWhy) {
 
 TEST(LmcRecord, InfoDescribesTheSidecar) {
   const auto dir = lmc::test::scratch_dir("record_info_sidecar");
-  const CliRun r = run("record --backend sim --layout paper-optimized --trial S02_thumb_1 --seconds 3 --motion thumb "
-                       "--fast --seed 3 --quiet -o " + lmc::test::shell_quote(dir.string()),
-                       dir / "logs");
+  const CliRun r =
+      run("record --backend sim --layout paper-optimized --trial S02_thumb_1 --seconds 3 --motion thumb "
+          "--fast --seed 3 --quiet -o " +
+              lmc::test::shell_quote(dir.string()),
+          dir / "logs");
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const auto side = dir / "LMC_S02_thumb_1.session.json";
   const auto sj = json_file(side);
@@ -270,9 +281,9 @@ TEST(LmcRecord, InfoDescribesTheSidecar) {
 TEST(LmcRecord, AFileSizeLimitStopsTheTrialWithAClearMessageAndKeepsTheRows) {
   // `ulimit -f`: without SIGXFSZ ignored the kernel would kill lmc mid-trial.
   const auto dir = lmc::test::scratch_dir("record_ulimit");
-  const CliRun r = run_with_file_limit(200, "record --backend sim --trial big --seconds 120 --fast --quiet -o " +
-                                                lmc::test::shell_quote(dir.string()),
-                                       dir / "logs");
+  const CliRun r = run_with_file_limit(
+      200, "record --backend sim --trial big --seconds 120 --fast --quiet -o " + lmc::test::shell_quote(dir.string()),
+      dir / "logs");
   ASSERT_EQ(r.exit_code, 1) << "lmc must exit with an error, not die of a signal; stderr: " << r.err;
   EXPECT_THAT(r.err, HasSubstr("File too large"));
   EXPECT_THAT(r.err, HasSubstr("ulimit -f"));
@@ -351,7 +362,8 @@ TEST(LmcRecord, GarbageDatagramsOnTheListenPortAreIgnoredAndSaid) {
   std::atomic<bool> stop_start{false};
   std::thread starter([&] { send_until(port, capture_message(true, "Naiv_Index103", 700), stop_start); });
   const auto side = dir / "s" / "LMC_Naiv_Index103.session.json";
-  for (int i = 0; i < 400 && !std::filesystem::exists(side); ++i) std::this_thread::sleep_for(std::chrono::milliseconds(25));
+  for (int i = 0; i < 400 && !std::filesystem::exists(side); ++i)
+    std::this_thread::sleep_for(std::chrono::milliseconds(25));
   std::this_thread::sleep_for(std::chrono::milliseconds(1000));
   stop_start = true;
   starter.join();
@@ -385,7 +397,8 @@ TEST(LmcRecord, ViconCaptureStartAndStopDriveTheTrial) {
   std::thread starter([&] { send_until(port, capture_message(true, "Naiv_Thumb102", 900), stop_start); });
   // Recording begins at the first CaptureStart lmc hears; give it a second of frames.
   const auto side = dir / "s" / "LMC_Naiv_Thumb102.session.json";
-  for (int i = 0; i < 200 && !std::filesystem::exists(side); ++i) std::this_thread::sleep_for(std::chrono::milliseconds(25));
+  for (int i = 0; i < 200 && !std::filesystem::exists(side); ++i)
+    std::this_thread::sleep_for(std::chrono::milliseconds(25));
   std::this_thread::sleep_for(std::chrono::milliseconds(1000));
   stop_start = true;
   starter.join();
@@ -417,8 +430,8 @@ TEST(LmcRecord, ReplayKeepsEveryRowOfEveryDevice) {
   LMC_REQUIRE_REFERENCE_FILE(path);
   const auto dir = lmc::test::scratch_dir("record_replay");
   const CliRun r = run("record --backend " + lmc::test::shell_quote("replay:" + path.string()) +
-                              " --trial again --seconds 30 --fast --quiet -o " + lmc::test::shell_quote(dir.string()),
-                          dir / "logs");
+                           " --trial again --seconds 30 --fast --quiet -o " + lmc::test::shell_quote(dir.string()),
+                       dir / "logs");
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const CliRun info = run("info --json " + lmc::test::shell_quote((dir / "LMC_again.raw.txt").string()), dir / "info");
   ASSERT_EQ(info.exit_code, 0) << info.err;
@@ -430,13 +443,16 @@ TEST(LmcRecord, ReplayKeepsEveryRowOfEveryDevice) {
 
 TEST(LmcRecord, UnsafeTrialNamesAndExistingTrialsAreRefused) {
   const auto dir = lmc::test::scratch_dir("record_refuse");
-  const CliRun bad = run("record --trial ../../etc/x --seconds 1 --fast -o " + lmc::test::shell_quote(dir.string()), dir / "l1");
+  const CliRun bad =
+      run("record --trial ../../etc/x --seconds 1 --fast -o " + lmc::test::shell_quote(dir.string()), dir / "l1");
   EXPECT_EQ(bad.exit_code, 1);
   EXPECT_THAT(bad.err, HasSubstr("invalid trial name"));
   EXPECT_FALSE(std::filesystem::exists(dir / "LMC_.raw.txt"));
-  const CliRun first = run("record --trial t1 --seconds 1 --fast --quiet -o " + lmc::test::shell_quote(dir.string()), dir / "l2");
+  const CliRun first =
+      run("record --trial t1 --seconds 1 --fast --quiet -o " + lmc::test::shell_quote(dir.string()), dir / "l2");
   ASSERT_EQ(first.exit_code, 0) << first.err;
-  const CliRun second = run("record --trial t1 --seconds 1 --fast --quiet -o " + lmc::test::shell_quote(dir.string()), dir / "l3");
+  const CliRun second =
+      run("record --trial t1 --seconds 1 --fast --quiet -o " + lmc::test::shell_quote(dir.string()), dir / "l3");
   EXPECT_EQ(second.exit_code, 1);
   EXPECT_THAT(second.err, HasSubstr("exists"));
 }

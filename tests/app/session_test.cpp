@@ -15,20 +15,20 @@
 #include <string>
 #include <thread>
 
+#include "core/common/paths.h"
 #include "core/io/lmc_recording.h"
 #include "tests/support/cli_runner.h"
-#include "core/common/paths.h"
 #include "tests/support/reference_data.h"
 
 namespace session_cli_test {  // named: test files share unity batches
 
 namespace fs = std::filesystem;
-using ::testing::HasSubstr;
 using lmc::test::CliRun;
 using lmc::test::complete_rows;
 using lmc::test::run_lmc;
-using lmc::test::spawn_lmc;
 using lmc::test::shell_quote;
+using lmc::test::spawn_lmc;
+using ::testing::HasSubstr;
 
 const bool kPrivateStateDir = [] {
   const auto dir = lmc::test::scratch_dir("state");
@@ -36,7 +36,9 @@ const bool kPrivateStateDir = [] {
   return true;
 }();
 
-std::string q(const fs::path& p) { return shell_quote(p.string()); }
+std::string q(const fs::path& p) {
+  return shell_quote(p.string());
+}
 
 nlohmann::json status_of(const fs::path& session, const fs::path& logs) {
   const CliRun r = run_lmc("session status " + q(session) + " --json", logs);
@@ -125,9 +127,11 @@ TEST(LmcSession, WholeStudyProtocolWithShortTrialsGivesEightyAcceptedTrialsPaire
 TEST(LmcSession, KillMidTrialLosesAtMostASecondAndTheNextRunResumes) {
   const auto dir = lmc::test::scratch_dir("session_kill");
   const fs::path session = dir / "S03";
-  ASSERT_EQ(run_lmc("session new --subject S03 --protocol quick --seconds 20 -o " + q(session), dir / "l1").exit_code, 0);
+  ASSERT_EQ(run_lmc("session new --subject S03 --protocol quick --seconds 20 -o " + q(session), dir / "l1").exit_code,
+            0);
   // Real time: the trial runs long enough to be killed in its middle.
-  const pid_t child = spawn_lmc("session run " + q(session) + " --backend sim --auto --countdown 0 --quiet", dir / "l2");
+  const pid_t child =
+      spawn_lmc("session run " + q(session) + " --backend sim --auto --countdown 0 --quiet", dir / "l2");
   ASSERT_GT(child, 0);
   const fs::path raw = session / "LMC_Naiv_Static101.raw.txt";
   // Wait (generously) until the trial has written a few seconds of rows, then kill it hard.
@@ -177,8 +181,8 @@ TEST(LmcSession, ACalibratingProtocolCalibratesEachBlockFirstOrSkipsItWhenTold) 
   std::ofstream(sim) << R"({"calibration_random_translation_mm": 25, "calibration_random_rotation_deg": 3})";
   for (const bool skip : {false, true}) {
     const fs::path session = dir / (skip ? "S02" : "S01");
-    CliRun r = run_lmc("session new --subject " + std::string(skip ? "S02" : "S01") + " --protocol " + q(protocol_file) +
-                           " --seconds 1 -o " + q(session),
+    CliRun r = run_lmc("session new --subject " + std::string(skip ? "S02" : "S01") + " --protocol " +
+                           q(protocol_file) + " --seconds 1 -o " + q(session),
                        dir / "new");
     ASSERT_EQ(r.exit_code, 0) << r.err;
     r = run_lmc("session run " + q(session) + " --auto --fast --quiet --sim-config " + q(sim) +
@@ -204,8 +208,10 @@ TEST(LmcSession, ACalibratingProtocolCalibratesEachBlockFirstOrSkipsItWhenTold) 
 
 TEST(LmcSession, SubjectIdsThatCouldEscapeTheFolderAreRefused) {
   const auto dir = lmc::test::scratch_dir("session_ids");
-  for (const std::string& bad : {std::string("../escape"), std::string("a/b"), std::string(200, 'x'), std::string("-rf")}) {
-    const CliRun r = run_lmc("session new --subject " + shell_quote(bad) + " --protocol quick -o " + q(dir / "s"), dir / "l");
+  for (const std::string& bad :
+       {std::string("../escape"), std::string("a/b"), std::string(200, 'x'), std::string("-rf")}) {
+    const CliRun r =
+        run_lmc("session new --subject " + shell_quote(bad) + " --protocol quick -o " + q(dir / "s"), dir / "l");
     EXPECT_NE(r.exit_code, 0) << bad;
     EXPECT_THAT(r.err, HasSubstr("subject")) << bad;
     EXPECT_FALSE(fs::exists(dir / "s")) << bad;
@@ -217,8 +223,9 @@ TEST(LmcSession, AControllerUnpluggedMidTrialFailsTheVerdictNamingIt) {
   const fs::path session = dir / "S04";
   ASSERT_EQ(run_lmc("session new --subject S04 --protocol quick -o " + q(session), dir / "l1").exit_code, 0);
   std::ofstream(dir / "sim.json") << R"({"unplugs": [{"slot": "LMC2", "at_s": 0.5, "duration_s": 2.0}]})";
-  const CliRun r = run_lmc("session run " + q(session) + " --backend sim --fast --auto --quiet --sim-config " +
-                               q(dir / "sim.json"), dir / "l2");
+  const CliRun r =
+      run_lmc("session run " + q(session) + " --backend sim --fast --auto --quiet --sim-config " + q(dir / "sim.json"),
+              dir / "l2");
   EXPECT_EQ(r.exit_code, 2) << r.out << r.err;  // ran, but trials failed
   const nlohmann::json st = status_of(session, dir / "l3");
   const auto& t = st["trials"][0];
@@ -234,7 +241,10 @@ TEST(LmcSession, AControllerUnpluggedMidTrialFailsTheVerdictNamingIt) {
 TEST(LmcSession, AnUnreachableViconHostFailsThePreflight) {
   const auto dir = lmc::test::scratch_dir("session_vicon");
   const fs::path session = dir / "S05";
-  ASSERT_EQ(run_lmc("session new --subject S05 --protocol quick --vicon no-such-host.invalid -o " + q(session), dir / "l1").exit_code, 0);
+  ASSERT_EQ(
+      run_lmc("session new --subject S05 --protocol quick --vicon no-such-host.invalid -o " + q(session), dir / "l1")
+          .exit_code,
+      0);
   const CliRun r = run_lmc("session run " + q(session) + " --backend sim --fast --auto --quiet", dir / "l2");
   EXPECT_EQ(r.exit_code, 3) << r.out << r.err;
   EXPECT_THAT(r.out, HasSubstr("[FAIL] Vicon target"));

@@ -30,7 +30,8 @@ TEST(LmcVisibility, ReproducesTheAuthorsLabelsForAllRows) {
   LMC_REQUIRE_REFERENCE_FILE(expected);
   const auto dir = lmc::test::scratch_dir("cli_visibility");
   const auto out = dir / "labels.txt";
-  const CliRun r = run_lmc("visibility " + lmc::test::shell_quote(input.string()) + " -o " + lmc::test::shell_quote(out.string()), dir);
+  const CliRun r = run_lmc(
+      "visibility " + lmc::test::shell_quote(input.string()) + " -o " + lmc::test::shell_quote(out.string()), dir);
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const lmc::LmcRecording got = lmc::read_lmc_recording(out);
   const lmc::LmcRecording want = lmc::read_lmc_recording(expected);
@@ -51,7 +52,9 @@ TEST(LmcVisibility, ShorterRangeHidesAndExplains) {
   LMC_REQUIRE_REFERENCE_FILE(input);
   const auto dir = lmc::test::scratch_dir("cli_visibility_range");
   const auto out = dir / "labels.txt";
-  const CliRun r = run_lmc("visibility " + lmc::test::shell_quote(input.string()) + " --range-mm 250 --explain -o " + lmc::test::shell_quote(out.string()), dir);
+  const CliRun r = run_lmc("visibility " + lmc::test::shell_quote(input.string()) + " --range-mm 250 --explain -o " +
+                               lmc::test::shell_quote(out.string()),
+                           dir);
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_NE(r.out.find("out of range"), std::string::npos);
   const lmc::LmcRecording got = lmc::read_lmc_recording(out);
@@ -66,7 +69,9 @@ TEST(LmcVisibility, BadInputNamesTheFile) {
     std::ofstream bad(dir / "bad.txt");
     bad << "not a recording\n1\t2\n";
   }
-  const CliRun r = run_lmc("visibility " + lmc::test::shell_quote((dir / "bad.txt").string()) + " -o " + lmc::test::shell_quote((dir / "o.txt").string()), dir);
+  const CliRun r = run_lmc("visibility " + lmc::test::shell_quote((dir / "bad.txt").string()) + " -o " +
+                               lmc::test::shell_quote((dir / "o.txt").string()),
+                           dir);
   EXPECT_EQ(r.exit_code, 1);
   EXPECT_NE(r.err.find("bad.txt"), std::string::npos) << r.err;
 }

@@ -27,7 +27,9 @@ const std::vector<lmc::PreparedFrame>& frames() {
   return f;
 }
 
-lmc::Layout preset(const char* name) { return lmc::load_layout_or_preset(name); }
+lmc::Layout preset(const char* name) {
+  return lmc::load_layout_or_preset(name);
+}
 
 // One (device, frame) at a time through the batch kernel; the paper's initial layout has the hand
 // in range and view of every device, so every test runs.
@@ -108,7 +110,8 @@ std::vector<lmc::DeviceView> random_swarm_views(int box) {
     lmc::DevicePose p;
     for (int k = 0; k < lmc::kNumPoseParams; ++k) {
       const auto& b = space.bounds[static_cast<size_t>(k)];
-      if (space.free[static_cast<size_t>(k)]) p.set(k, b.min + (b.max - b.min) * static_cast<double>(rng() >> 11) * 0x1.0p-53);
+      if (space.free[static_cast<size_t>(k)])
+        p.set(k, b.min + (b.max - b.min) * static_cast<double>(rng() >> 11) * 0x1.0p-53);
     }
     views.push_back(lmc::DeviceView::from_pose(p));
   }

@@ -50,7 +50,8 @@ void BM_LiveFusionLatencyAt4x120Hz(benchmark::State& state) {
     LiveFusion live(layout);
     const auto t0 = std::chrono::steady_clock::now();
     for (const auto& [t, frame] : frames) {
-      std::this_thread::sleep_until(t0 + std::chrono::duration_cast<std::chrono::nanoseconds>(std::chrono::duration<double>(t)));
+      std::this_thread::sleep_until(
+          t0 + std::chrono::duration_cast<std::chrono::nanoseconds>(std::chrono::duration<double>(t)));
       live.tap(frame);
     }
     // Every frame fused or dropped before the figures are read.

@@ -31,7 +31,8 @@ std::vector<HandFrame> device_frames(const Layout& layout) {
       HandFrame f = world;
       f.hand_present = true;
       for (int i = 0; i < kNumHandPoints; ++i) {
-        f.point(i) = (i == kPalmNormal || i == kPalmDirection) ? Vec3(rt * world.point(i)) : Vec3(rt * (world.point(i) - shift));
+        f.point(i) =
+            (i == kPalmNormal || i == kPalmDirection) ? Vec3(rt * world.point(i)) : Vec3(rt * (world.point(i) - shift));
       }
       out.push_back(f);
     }

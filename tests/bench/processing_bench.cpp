@@ -70,9 +70,9 @@ void BM_ProcessingFuseReference(benchmark::State& state) {
   for (const auto& d : g.devices) t.push_back(&d.track);
   for (auto _ : state) benchmark::DoNotOptimize(fuse_reference(t));
   // Per frame per coordinate, to set against the study's ≈0.57 ms.
-  state.counters["ns_per_frame_coord"] = benchmark::Counter(
-      static_cast<double>(g.frame_count) * 90.0 * static_cast<double>(state.iterations()),
-      benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
+  state.counters["ns_per_frame_coord"] =
+      benchmark::Counter(static_cast<double>(g.frame_count) * 90.0 * static_cast<double>(state.iterations()),
+                         benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
 }
 BENCHMARK(BM_ProcessingFuseReference)->Unit(benchmark::kMillisecond);
 

@@ -10,16 +10,16 @@
 // Run: build/release/tests/lmc_benchmarks --benchmark_filter=Review
 #include <benchmark/benchmark.h>
 
+#include <unistd.h>
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <stop_token>
-#include <unistd.h>
 #include <vector>
 
 #include "core/review/review_export.h"
-#include "ui/model/plot/min_max_decimation.h"
 #include "tests/support/build_paths.h"
+#include "ui/model/plot/min_max_decimation.h"
 #include "ui/model/review/review_batch_job.h"
 
 namespace {
@@ -27,7 +27,8 @@ namespace {
 namespace fs = std::filesystem;
 
 fs::path reference_validation_dir() {
-  if (const char* env = std::getenv("LMC_REFERENCE_DATA_DIR"); env != nullptr && *env != '\0') return fs::path(env) / "validation";
+  if (const char* env = std::getenv("LMC_REFERENCE_DATA_DIR"); env != nullptr && *env != '\0')
+    return fs::path(env) / "validation";
   return lmc::test::default_reference_dir() / "validation";
 }
 
@@ -52,7 +53,8 @@ const EightyTrials& eighty_trials() {
       for (const char* motion : {"Static", "Index", "Thumb", "Wrist"}) {
         for (int pose = 1; pose <= 2; ++pose) {
           for (int rep = 1; rep <= 5; ++rep) {
-            const std::string trial = std::string(layout) + "_" + motion + std::to_string(pose) + "0" + std::to_string(rep);
+            const std::string trial =
+                std::string(layout) + "_" + motion + std::to_string(pose) + "0" + std::to_string(rep);
             fs::copy_file(src / "Interp_LMC_Naiv_Static101.txt", e.folder / ("Interp_LMC_" + trial + ".txt"));
             fs::copy_file(src / "Naiv_Static101.trc", e.folder / (trial + ".trc"));
           }
@@ -111,7 +113,8 @@ void BM_ReviewFramePlots(benchmark::State& state) {
   std::vector<std::vector<double>> ys(24, std::vector<double>(n));
   for (size_t i = 0; i < n; ++i) {
     x[i] = static_cast<double>(i) * 0.01;
-    for (size_t s = 0; s < ys.size(); ++s) ys[s][i] = (i + s) % 53 == 0 ? std::nan("") : std::sin(0.02 * static_cast<double>(i + 7 * s)) * 40;
+    for (size_t s = 0; s < ys.size(); ++s)
+      ys[s][i] = (i + s) % 53 == 0 ? std::nan("") : std::sin(0.02 * static_cast<double>(i + 7 * s)) * 40;
   }
   for (auto _ : state) {
     for (const auto& y : ys) {

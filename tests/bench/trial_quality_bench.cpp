@@ -27,8 +27,8 @@ LmcRecording wrist_trial(const Layout& layout, double seconds) {
       a.wrist_flexion_deg = 30.0 * std::sin(t);
       HandFrame f = model.pose(a, reference_placement(model, HandOrientation::kHorizontal, a));
       for (int i = 0; i < kNumHandPoints; ++i) {
-        f.point(i) = (i == kPalmNormal || i == kPalmDirection) ? Vec3(rt * f.point(i))
-                                                               : Vec3(rt * (f.point(i) - shift));
+        f.point(i) =
+            (i == kPalmNormal || i == kPalmDirection) ? Vec3(rt * f.point(i)) : Vec3(rt * (f.point(i) - shift));
       }
       f.device_id = d + 1;
       f.frame_id = ++frame_id;

@@ -11,7 +11,9 @@
 
 namespace calibration_sim_test {
 
-lmc::Layout paper_initial() { return lmc::load_layout_or_preset("paper-initial"); }
+lmc::Layout paper_initial() {
+  return lmc::load_layout_or_preset("paper-initial");
+}
 
 }  // namespace calibration_sim_test
 
@@ -21,23 +23,26 @@ TEST(SimCalibrationError, DefaultsKeepTodaysTranslationOnlyError) {
   for (int d = 0; d < layout.device_count(); ++d) {
     const Eigen::Isometry3d t = rig.true_device_to_world(d);
     EXPECT_LT((t.linear() - layout.devices[static_cast<size_t>(d)].pose.rotation()).norm(), 1e-12);
-    EXPECT_LT((t.translation() - layout.devices[static_cast<size_t>(d)].pose.translation() - layout.devices[static_cast<size_t>(d)].offset_mm).norm(),
+    EXPECT_LT((t.translation() - layout.devices[static_cast<size_t>(d)].pose.translation() -
+               layout.devices[static_cast<size_t>(d)].offset_mm)
+                  .norm(),
               1e-12);
   }
 }
 
 TEST(SimCalibrationError, RotationPerSlotAndSeededRandomErrorsComeFromTheConfig) {
   const lmc::Layout layout = calibration_sim_test::paper_initial();
-  const nlohmann::json j = {{"calibration", "none"},
-                            {"calibration_rotations_deg", {{"LMC2", {0.0, 0.0, 7.0}}}},
-                            {"seed", 3}};
+  const nlohmann::json j = {
+      {"calibration", "none"}, {"calibration_rotations_deg", {{"LMC2", {0.0, 0.0, 7.0}}}}, {"seed", 3}};
   const lmc::devices::SimConfig c = lmc::devices::sim_config_from_json(j, "test.json");
   // The key survives a round trip through JSON.
-  EXPECT_EQ(lmc::devices::sim_config_from_json(lmc::devices::sim_config_to_json(c), "again").calibration_rotations_deg.at("LMC2"),
+  EXPECT_EQ(lmc::devices::sim_config_from_json(lmc::devices::sim_config_to_json(c), "again")
+                .calibration_rotations_deg.at("LMC2"),
             Eigen::Vector3d(0, 0, 7));
   const lmc::devices::SimRig rig(layout, c);
   const Eigen::Matrix3d nominal = layout.devices[1].pose.rotation();
-  EXPECT_NEAR(lmc::calibration::rotation_angle_deg(nominal.transpose() * rig.true_device_to_world(1).linear()), 7.0, 1e-9);
+  EXPECT_NEAR(lmc::calibration::rotation_angle_deg(nominal.transpose() * rig.true_device_to_world(1).linear()), 7.0,
+              1e-9);
   EXPECT_NEAR(lmc::calibration::rotation_angle_deg(rig.true_device_to_world(0).linear()), 0.0, 1e-9);
 
   lmc::devices::CalibrationValidationOptions options;
@@ -45,7 +50,8 @@ TEST(SimCalibrationError, RotationPerSlotAndSeededRandomErrorsComeFromTheConfig)
   const lmc::devices::SimRig b(layout, lmc::devices::validation_sim_config(11, options));
   for (int d = 0; d < layout.device_count(); ++d) {
     EXPECT_TRUE(a.true_device_to_world(d).isApprox(b.true_device_to_world(d)));  // seeded: the same twice
-    const lmc::Vec3 moved = a.true_device_to_world(d).translation() - layout.devices[static_cast<size_t>(d)].pose.translation() -
+    const lmc::Vec3 moved = a.true_device_to_world(d).translation() -
+                            layout.devices[static_cast<size_t>(d)].pose.translation() -
                             layout.devices[static_cast<size_t>(d)].offset_mm;
     EXPECT_LE(moved.norm(), options.max_translation_mm + 1e-9);
     EXPECT_LE(lmc::calibration::rotation_angle_deg(layout.devices[static_cast<size_t>(d)].pose.rotation().transpose() *
@@ -99,7 +105,7 @@ TEST(SimCalibrationValidation, OptimizedLayoutAsProcessedIsRecoveredWithTheCaptu
   sim.calibration_rotations_deg["LMC4"] = Eigen::Vector3d(0, 0, -3);
   sim.calibration_random_translation_mm = 15;
   lmc::devices::CalibrationValidationOptions options;
-  options.seconds = 5.0;  // the Devices tab's still-hand trial
+  options.seconds = 5.0;                           // the Devices tab's still-hand trial
   for (const std::uint64_t seed : {1U, 3U, 4U}) {  // 1: the capture's
     sim.seed = seed;
     const auto c = lmc::devices::run_calibration_case(layout, sim, options);

@@ -1,6 +1,6 @@
 // Device hub: serial → slot mapping, statistics, snapshots, fan-out.
-#include <atomic>
 #include <gtest/gtest.h>
+#include <atomic>
 
 #include "devices/device_hub.h"
 
@@ -201,8 +201,8 @@ TEST(DeviceHub, TrackingModeModelAndOtherSideHandsAreKeptPerDevice) {
   EXPECT_EQ(snap.devices[0].tracking_mode, "head-mounted");
   EXPECT_EQ(snap.devices[0].frames_other_side_hand, 1);
   EXPECT_FALSE(snap.devices[0].device_clock_us.has_value()) << "no source with a clock";
-  EXPECT_EQ(hub.take_messages(), (std::vector<std::string>{
-                                      "LMC1 (A) tracks in head-mounted mode: not the desktop mode its place in the "
+  EXPECT_EQ(hub.take_messages(),
+            (std::vector<std::string>{"LMC1 (A) tracks in head-mounted mode: not the desktop mode its place in the "
                                       "layout needs"}));
   EXPECT_EQ(c.frames.size(), 2u);
   EXPECT_EQ(c.events.back(), (std::pair<int, DeviceEventKind>{1, DeviceEventKind::kTrackingMode}));

@@ -193,14 +193,14 @@ TEST(LiveFusion, AFullQueueDropsTheOldestFrameForDisplayOnlyAndCountsIt) {
 TEST(LiveFusion, FramesOfSlotsOutsideTheLayoutAreRefusedAndStopJoinsCleanly) {
   const Layout layout = load_layout_or_preset("paper-initial");
   LiveFusion live(layout);
-  live.tap(empty_frame(0, 1));   // an unassigned device (the hub never taps these; still refused)
-  live.tap(empty_frame(9, 2));   // a slot the layout lacks
+  live.tap(empty_frame(0, 1));  // an unassigned device (the hub never taps these; still refused)
+  live.tap(empty_frame(9, 2));  // a slot the layout lacks
   ASSERT_TRUE(wait_for([&] { return live.stats().frames_refused == 2; }));
   EXPECT_EQ(live.stats().frames_fused, 0);
   EXPECT_EQ(live.stats().published, 0U);
   EXPECT_FALSE(live.latest().has_value());
   live.stop();
-  live.stop();  // twice is fine
+  live.stop();                  // twice is fine
   live.tap(empty_frame(1, 3));  // after stop: ignored
   EXPECT_EQ(live.stats().frames_tapped, 2);
 }

@@ -60,15 +60,18 @@ nlohmann::json read_json(const std::filesystem::path& p) {
 // Plays a generated trial into the hub from the calling thread, as fast as it goes.
 void play(const SimTrial& trial, DeviceHub& hub) {
   for (const auto& e : trial.events) {
-    if (e.is_frame) hub.on_frame(e.frame);
-    else hub.on_device_event(e.event);
+    if (e.is_frame)
+      hub.on_frame(e.frame);
+    else
+      hub.on_device_event(e.event);
   }
 }
 
 TEST(TrialName, OnlySafeNamesBecomeFileNames) {
   EXPECT_EQ(validate_trial_name("Naiv_Static101"), "");
   EXPECT_EQ(validate_trial_name("s01-opt-index_3"), "");
-  for (const std::string& bad : std::vector<std::string>{"", "../etc", "a b", "x/y", "%s%n", "-rf", "trial.txt", "é", std::string(65, 'a')})
+  for (const std::string& bad :
+       std::vector<std::string>{"", "../etc", "a b", "x/y", "%s%n", "-rf", "trial.txt", "é", std::string(65, 'a')})
     EXPECT_NE(validate_trial_name(bad), "") << bad;
   EXPECT_THROW(session_paths("/tmp", "../../x"), Error);
   const auto p = session_paths("/data", "Naiv_Static101");
@@ -195,7 +198,8 @@ TEST(Recorder, UnpluggedDeviceLeavesTheFileIntactWithTheGapRecorded) {
 
   // The operator is told.
   bool told = false;
-  for (const auto& m : hub.take_messages()) told = told || (m.find("LMC2") != std::string::npos && m.find("disconnected") != std::string::npos);
+  for (const auto& m : hub.take_messages())
+    told = told || (m.find("LMC2") != std::string::npos && m.find("disconnected") != std::string::npos);
   EXPECT_TRUE(told);
   // The file holds every frame of every device, LMC2 included before and after the gap.
   const auto rows = rows_per_device(rec.paths().recording);
@@ -253,7 +257,9 @@ TEST(Recorder, DiskFullStopsTheTrialWithAClearMessageAndKeepsWhatWasWritten) {
   rc.trial = "full";
   rc.layout = paper_initial();
   rc.flush_interval_ms = 20;
-  rc.open_sink = [](const std::filesystem::path& p) { return std::make_unique<FullDiskSink>(open_file_sink(p), 64 * 1024); };
+  rc.open_sink = [](const std::filesystem::path& p) {
+    return std::make_unique<FullDiskSink>(open_file_sink(p), 64 * 1024);
+  };
   Recorder rec(rc);
   rec.start();
   SimConfig sim;
@@ -358,7 +364,9 @@ TEST(Recorder, AWriteErrorStaysFailedWhateverTheAbortReason) {
   rc.flush_interval_ms = 10;
   // Room for the header and a few short rows.
   const size_t limit = lmc_recording_header(RecordingKind::kRaw).size() + 100;
-  rc.open_sink = [limit](const std::filesystem::path& p) { return std::make_unique<FullDiskSink>(open_file_sink(p), limit); };
+  rc.open_sink = [limit](const std::filesystem::path& p) {
+    return std::make_unique<FullDiskSink>(open_file_sink(p), limit);
+  };
   Recorder rec(rc);
   rec.start();
   HandFrame f;
@@ -369,7 +377,8 @@ TEST(Recorder, AWriteErrorStaysFailedWhateverTheAbortReason) {
     std::this_thread::sleep_for(std::chrono::milliseconds(2));
   }
   const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(5);
-  while (!rec.failed() && std::chrono::steady_clock::now() < deadline) std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  while (!rec.failed() && std::chrono::steady_clock::now() < deadline)
+    std::this_thread::sleep_for(std::chrono::milliseconds(5));
   ASSERT_TRUE(rec.failed());
   const auto st = rec.stop({}, "something else went wrong later");
   EXPECT_EQ(st.state, RecorderState::kFailed);
@@ -538,7 +547,8 @@ TEST(Recorder, RowsReachTheFileWhileRecording) {
   }
   // Without stop(): the writer pushes its buffer within the flush interval (≤ 1 s by contract).
   const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(5);
-  while (std::filesystem::file_size(rec.paths().recording) == header_size && std::chrono::steady_clock::now() < deadline)
+  while (std::filesystem::file_size(rec.paths().recording) == header_size &&
+         std::chrono::steady_clock::now() < deadline)
     std::this_thread::sleep_for(std::chrono::milliseconds(10));
   EXPECT_EQ(read_lmc_recording(rec.paths().recording).rows.size(), 5u);
   // The sidecar already exists and says the trial is in progress.
@@ -610,7 +620,8 @@ TEST(Recorder, SidecarKeepsEachDevicesModelModeAndOtherSideHands) {
   EXPECT_EQ(d->frames_other_side_hand, 2);
   bool mode_event = false;
   for (const auto& e : j["events"])
-    mode_event = mode_event || (e["event"] == "tracking_mode" && e["tracking_mode"] == "desktop" && e["slot"] == "LMC2");
+    mode_event =
+        mode_event || (e["event"] == "tracking_mode" && e["tracking_mode"] == "desktop" && e["slot"] == "LMC2");
   EXPECT_TRUE(mode_event) << j["events"].dump();
 }
 

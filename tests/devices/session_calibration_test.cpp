@@ -74,9 +74,11 @@ TEST(SessionCalibration, ABlockCalibratesFromItsStillHandAndRecordsWithTheResult
   double worst_nominal = 0, worst_calibrated = 0;
   for (int d = 0; d < nominal.device_count(); ++d) {
     const Eigen::Vector3d real = truth.true_device_to_world(d).translation();
-    worst_nominal = std::max(worst_nominal, (layout_device_to_world(nominal.devices[static_cast<size_t>(d)]).translation() - real).norm());
-    worst_calibrated = std::max(worst_calibrated,
-                                (layout_device_to_world(c.fit->calibrated.devices[static_cast<size_t>(d)]).translation() - real).norm());
+    worst_nominal = std::max(
+        worst_nominal, (layout_device_to_world(nominal.devices[static_cast<size_t>(d)]).translation() - real).norm());
+    worst_calibrated = std::max(
+        worst_calibrated,
+        (layout_device_to_world(c.fit->calibrated.devices[static_cast<size_t>(d)]).translation() - real).norm());
   }
   EXPECT_GT(worst_nominal, 10.0);
   EXPECT_LT(worst_calibrated, 3.0) << "nominal was " << worst_nominal << " mm off";

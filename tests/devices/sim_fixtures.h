@@ -7,7 +7,9 @@
 
 namespace lmc::devices::sim_fixtures {
 
-inline Layout paper_initial() { return load_layout(test::asset_file("layouts/paper-initial.json")); }
+inline Layout paper_initial() {
+  return load_layout(test::asset_file("layouts/paper-initial.json"));
+}
 
 inline SimConfig exact() {
   SimConfig c;

@@ -18,8 +18,8 @@
 namespace lmc::devices {
 namespace sim_study_errors_test {
 
-using sim_fixtures::paper_initial;
 using sim_fixtures::exact;
+using sim_fixtures::paper_initial;
 
 double bone(const HandFrame& f, int digit, int b) {
   return (f.point(digit_point(digit, b + 1)) - f.point(digit_point(digit, b))).norm();
@@ -93,7 +93,8 @@ TEST(SimStudyErrors, JointOffsetMovesTheJointTowardsThePalmSideOfItsBone) {
       EXPECT_GT(moved.dot(normal), 0.0) << dg;  // the palm side, where the palm normal points
       const Vec3 along = (truth.point(digit_point(dg, 3)) - truth.point(digit_point(dg, 1))).normalized();
       EXPECT_NEAR(moved.normalized().dot(along), 0.0, 0.2) << dg;  // across the bone, not along it
-      for (int j : {0, 1, 3, 4}) EXPECT_LT((dev.point(digit_point(dg, j)) - truth.point(digit_point(dg, j))).norm(), 1e-9);
+      for (int j : {0, 1, 3, 4})
+        EXPECT_LT((dev.point(digit_point(dg, j)) - truth.point(digit_point(dg, j))).norm(), 1e-9);
     }
   });
   EXPECT_GT(n, 20);
@@ -186,7 +187,8 @@ TEST(SimStudyErrors, OffChangesNothingByteForByte) {
   off.hand_model_error = study_errors_hand_model();
   off.hand_model_error.enabled = false;
   EXPECT_EQ(trial_hash(generate_sim_trial(layout, off, 1.0)), today);
-  const SimConfig from_json = sim_config_from_json(nlohmann::json{{"seed", 4}, {"motion", "horizontal/index"}, {"study_errors", false}}, "mem");
+  const SimConfig from_json =
+      sim_config_from_json(nlohmann::json{{"seed", 4}, {"motion", "horizontal/index"}, {"study_errors", false}}, "mem");
   EXPECT_EQ(trial_hash(generate_sim_trial(layout, from_json, 1.0)), today);
   EXPECT_FALSE(sim_config_to_json(c).contains("hand_model_error"));
 }
@@ -201,10 +203,10 @@ TEST(SimStudyErrors, PresetSwitchSetsTheFittedValuesAndKeysBesideItOverrideThem)
   EXPECT_TRUE(c.axis_cut);
   EXPECT_TRUE(c.elbow_error);
 
-  const SimConfig o = sim_config_from_json(
-      nlohmann::json::parse(R"({"study_errors": true, "calibration_random_rotation_deg": 0,
+  const SimConfig o =
+      sim_config_from_json(nlohmann::json::parse(R"({"study_errors": true, "calibration_random_rotation_deg": 0,
                                 "hand_model_error": {"scale_spread": 0, "segment_scale": {"ring": [1, 0.5, 0.5, 0.5]}}})"),
-      "mem");
+                           "mem");
   EXPECT_EQ(o.calibration_random_rotation_deg, 0.0);
   EXPECT_EQ(o.hand_model_error.scale_spread, 0.0);
   EXPECT_EQ(o.hand_model_error.segment_scale[3][1], 0.5);
@@ -216,8 +218,9 @@ TEST(SimStudyErrors, PresetSwitchSetsTheFittedValuesAndKeysBesideItOverrideThem)
   EXPECT_EQ(back.calibration_random_rotation_deg, 0.0);
 
   EXPECT_THROW(sim_config_from_json(nlohmann::json::parse(R"({"hand_model_error": {"scale": 1}})"), "m"), Error);
-  EXPECT_THROW(sim_config_from_json(nlohmann::json::parse(R"({"hand_model_error": {"segment_scale": {"index": [1, 0]}}})"), "m"),
-               Error);
+  EXPECT_THROW(
+      sim_config_from_json(nlohmann::json::parse(R"({"hand_model_error": {"segment_scale": {"index": [1, 0]}}})"), "m"),
+      Error);
 }
 
 }  // namespace sim_study_errors_test

@@ -6,10 +6,10 @@
 #include <nlohmann/json.hpp>
 
 #include "core/common/error.h"
+#include "core/hand/reference_poses.h"
 #include "core/io/layout_json.h"
 #include "core/io/pose_set_tsv.h"
 #include "core/io/vicon_mapping.h"
-#include "core/hand/reference_poses.h"
 #include "core/visibility/frame_prep.h"
 #include "core/visibility/visibility_explain.h"
 #include "devices/sim/sim_config.h"
@@ -20,8 +20,8 @@
 namespace lmc::devices {
 namespace sim_test {
 
-using sim_fixtures::paper_initial;
 using sim_fixtures::exact;
+using sim_fixtures::paper_initial;
 
 TEST(SimRig, SameSeedSameTrialOtherSeedOtherTrial) {
   SimConfig c;
@@ -285,7 +285,8 @@ TEST(SimConfig, ADeviceClockStartOutsideWholeMicrosecondsIsRefusedNamingTheKey) 
       sim_config_from_json(nlohmann::json{{"device_clock_start_us", bad}}, "cfg.json");
       FAIL() << bad << " was accepted";
     } catch (const Error& e) {
-      EXPECT_EQ(std::string(e.what()), "cfg.json: at /device_clock_start_us: must be between 0 and 2^53 µs (285 years)");
+      EXPECT_EQ(std::string(e.what()),
+                "cfg.json: at /device_clock_start_us: must be between 0 and 2^53 µs (285 years)");
     }
   }
   EXPECT_EQ(sim_config_from_json(nlohmann::json{{"device_clock_start_us", 9007199254740992.0}}, "cfg.json")
@@ -305,8 +306,8 @@ TEST(SimConfig, UnknownKeysAreRejectedWithTheirPath) {
     EXPECT_NE(what.find("noise"), std::string::npos) << "the message lists the known keys: " << what;
   }
   try {
-    sim_config_from_json(nlohmann::json::parse(R"({"unplugs": [{"slot": "LMC1", "at_s": 1}, {"slot": "LMC2", "at": 2}]})"),
-                         "cfg.json");
+    sim_config_from_json(
+        nlohmann::json::parse(R"({"unplugs": [{"slot": "LMC1", "at_s": 1}, {"slot": "LMC2", "at": 2}]})"), "cfg.json");
     FAIL() << "\"at\" inside an unplug was accepted";
   } catch (const Error& e) {
     EXPECT_NE(std::string(e.what()).find("/unplugs/1/at"), std::string::npos) << e.what();

@@ -27,7 +27,9 @@ namespace trial_engine_test {  // named: test files share unity batches
 using ::testing::ElementsAre;
 using ::testing::HasSubstr;
 
-Layout paper_initial_layout() { return load_layout(test::asset_file("layouts/paper-initial.json")); }
+Layout paper_initial_layout() {
+  return load_layout(test::asset_file("layouts/paper-initial.json"));
+}
 
 // A hub playing a simulator of `sim_layout` (default: the hub's own) for `duration_s` simulated
 // seconds (0: until stopped) at `speed` (0: simulated time, as fast as the recorder takes it).
@@ -215,7 +217,8 @@ TEST(TrialEngine, ListenModeSkipsATakenNameAndIgnoresAnotherTrialsStop) {
   std::vector<std::string> messages;
   int step = 0;
   const auto seen = [&](const std::string& fragment) {
-    return std::any_of(messages.begin(), messages.end(), [&](const std::string& m) { return m.find(fragment) != std::string::npos; });
+    return std::any_of(messages.begin(), messages.end(),
+                       [&](const std::string& m) { return m.find(fragment) != std::string::npos; });
   };
   const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(40);  // a hang guard only
   const std::string waiting = "waiting for CaptureStart on 127.0.0.1:";
@@ -245,7 +248,8 @@ TEST(TrialEngine, ListenModeSkipsATakenNameAndIgnoresAnotherTrialsStop) {
   EXPECT_EQ(r.outcome, TrialOutcome::kCompleted) << r.reason;
   EXPECT_EQ(r.trial, "Fresh");
   EXPECT_EQ(step, 3);
-  EXPECT_TRUE(seen("ignoring CaptureStart 'Taken': " + (dir / "Taken.trc").string() + " exists")) << ::testing::PrintToString(messages);
+  EXPECT_TRUE(seen("ignoring CaptureStart 'Taken': " + (dir / "Taken.trc").string() + " exists"))
+      << ::testing::PrintToString(messages);
   EXPECT_TRUE(seen("ignoring CaptureStop for 'Other'")) << ::testing::PrintToString(messages);
   EXPECT_EQ(read_text(dir / "Taken.trc"), "keep me\n");
   const RecorderSidecar side = read_recorder_sidecar(r.paths.sidecar);
@@ -437,8 +441,9 @@ TEST(TrialExactness, AReplayAtItsRecordedPaceIsBoundedOnTheHostClockToo) {
   const TrialResult r = TrialEngine(hub, nullptr, c).run();
   ASSERT_EQ(r.outcome, TrialOutcome::kCompleted) << r.reason;
   const RecorderSidecar side = read_recorder_sidecar(r.paths.sidecar);
-  EXPECT_EQ(side.trial_window.at("end_host_ns").get<std::int64_t>() - side.trial_window.at("go_host_ns").get<std::int64_t>(),
-            1'000'000'000);
+  EXPECT_EQ(
+      side.trial_window.at("end_host_ns").get<std::int64_t>() - side.trial_window.at("go_host_ns").get<std::int64_t>(),
+      1'000'000'000);
   EXPECT_GT(side.trial_window.at("frames_before_go").get<std::int64_t>(), 0);
   for (const auto& [id, span] : spans(read_lmc_recording(r.paths.recording))) {
     EXPECT_LE(span.last_us - span.first_us, 1'000'000) << "LMC" << id;

@@ -24,7 +24,9 @@ namespace {
 
 constexpr const char* kSource = "fuzz-input";
 
-std::istringstream as_stream(std::string_view bytes) { return std::istringstream(std::string(bytes)); }
+std::istringstream as_stream(std::string_view bytes) {
+  return std::istringstream(std::string(bytes));
+}
 
 // The study's marker mapping, read from the assets once (it is not the input under test).
 const ViconMapping& study_mapping() {
@@ -59,7 +61,9 @@ void c3d(std::string_view bytes) {
   (void)apply_vicon_mapping(study_mapping(), data.to_marker_series(kSource));
 }
 
-void layout_json(std::string_view bytes) { (void)layout_from_json(parse_json_text(std::string(bytes), kSource), kSource); }
+void layout_json(std::string_view bytes) {
+  (void)layout_from_json(parse_json_text(std::string(bytes), kSource), kSource);
+}
 
 void pose_set_tsv(std::string_view bytes) {
   auto in = as_stream(bytes);
@@ -75,7 +79,9 @@ void recorder_sidecar(std::string_view bytes) {
   if (is_recorder_sidecar(j)) (void)recorder_sidecar_from_json(j, kSource);
 }
 
-void vicon_mapping(std::string_view bytes) { (void)vicon_mapping_from_json(parse_json_text(std::string(bytes), kSource), kSource); }
+void vicon_mapping(std::string_view bytes) {
+  (void)vicon_mapping_from_json(parse_json_text(std::string(bytes), kSource), kSource);
+}
 
 // Listen mode's parser never throws: it says no, with a reason.
 void vicon_packet(std::string_view bytes) {

@@ -15,8 +15,8 @@
 namespace lmc::fuzz {
 
 struct Target {
-  const char* name;         // also the folder of its corpus: tests/fuzz/corpus/<name>/
-  const char* what;         // the reader it drives, for the README table and messages
+  const char* name;                     // also the folder of its corpus: tests/fuzz/corpus/<name>/
+  const char* what;                     // the reader it drives, for the README table and messages
   void (*run)(std::string_view bytes);  // throws only lmc::Error for bad input
 };
 

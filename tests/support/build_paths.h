@@ -6,10 +6,10 @@
 
 namespace lmc::test {
 
-std::filesystem::path source_dir();            // the repository root
-std::filesystem::path test_assets_dir();       // <source>/assets
-std::filesystem::path default_reference_dir(); // LMC_REFERENCE_DATA_DIR (CMakeLists.txt)
-std::filesystem::path cli_path();              // the built `lmc`
-std::filesystem::path workbench_path();        // the built `lmc-workbench`
+std::filesystem::path source_dir();             // the repository root
+std::filesystem::path test_assets_dir();        // <source>/assets
+std::filesystem::path default_reference_dir();  // LMC_REFERENCE_DATA_DIR (CMakeLists.txt)
+std::filesystem::path cli_path();               // the built `lmc`
+std::filesystem::path workbench_path();         // the built `lmc-workbench`
 
 }  // namespace lmc::test

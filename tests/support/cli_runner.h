@@ -50,8 +50,8 @@ inline CliRun run_lmc(const std::string& args, std::filesystem::path log_dir = {
     log_dir = pattern;
   }
   std::filesystem::create_directories(log_dir);
-  const std::string inner = shell_prefix + (shell_prefix.empty() ? "" : " exec ") + (launcher.empty() ? "" : launcher + " ") +
-                            shell_quote(cli_path().string()) + " " + args;
+  const std::string inner = shell_prefix + (shell_prefix.empty() ? "" : " exec ") +
+                            (launcher.empty() ? "" : launcher + " ") + shell_quote(cli_path().string()) + " " + args;
   const std::string cmd = "/bin/sh -c " + shell_quote(inner) + " >" + shell_quote((log_dir / "out").string()) + " 2>" +
                           shell_quote((log_dir / "err").string());
   const int status = std::system(cmd.c_str());

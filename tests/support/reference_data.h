@@ -27,10 +27,10 @@ inline std::filesystem::path asset_file(const std::string& relative) {
 }  // namespace lmc::test
 
 // Skips the current test with a message naming the missing file.
-#define LMC_REQUIRE_REFERENCE_FILE(path)                                                       \
-  do {                                                                                         \
-    if (!std::filesystem::exists(path)) {                                                      \
-      GTEST_SKIP() << "reference data not found at " << (path)                                 \
-                   << " (the study's data folder is absent; this check needs it)";            \
-    }                                                                                          \
+#define LMC_REQUIRE_REFERENCE_FILE(path)                                           \
+  do {                                                                             \
+    if (!std::filesystem::exists(path)) {                                          \
+      GTEST_SKIP() << "reference data not found at " << (path)                     \
+                   << " (the study's data folder is absent; this check needs it)"; \
+    }                                                                              \
   } while (0)

@@ -16,7 +16,9 @@
 
 namespace lmc::test::synthetic_calibration {
 
-inline Layout square_layout() { return lmc::square_layout("square"); }
+inline Layout square_layout() {
+  return lmc::square_layout("square");
+}
 
 // A rotation of `deg` degrees about a fixed, not axis-aligned direction chosen by `k`.
 inline Eigen::Matrix3d turn(double deg, int k) {
@@ -30,8 +32,8 @@ struct Trial {
 };
 
 // `truth[d]` places device d; `frames` at 100 Hz; noise σ in mm; seed for the noise.
-inline Trial make_trial(const std::vector<calibration::RigidTransform>& truth, int frames, double noise_mm, unsigned seed,
-                        bool with_vicon = true) {
+inline Trial make_trial(const std::vector<calibration::RigidTransform>& truth, int frames, double noise_mm,
+                        unsigned seed, bool with_vicon = true) {
   Trial t;
   t.truth = truth;
   const HandModel model;
@@ -74,7 +76,7 @@ inline Trial make_trial(const std::vector<calibration::RigidTransform>& truth, i
 // Truth = the layout's transforms with errors: device d moved by `moved[d]` and turned by
 // `turned_deg[d]` about its own origin.
 inline std::vector<calibration::RigidTransform> perturbed(const Layout& layout, const std::vector<Vec3>& moved,
-                                                           const std::vector<double>& turned_deg) {
+                                                          const std::vector<double>& turned_deg) {
   std::vector<calibration::RigidTransform> out;
   for (size_t d = 0; d < layout.devices.size(); ++d) {
     const calibration::RigidTransform n = calibration::device_transform(layout.devices[d]);

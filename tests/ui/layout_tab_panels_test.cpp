@@ -12,9 +12,9 @@
 #include "tests/ui/headless_imgui.h"
 #include "ui/model/current_layout.h"
 #include "ui/model/layout_actions.h"
-#include "ui/tabs/layout/layout_tab.h"
 #include "ui/tabs/layout/coverage_panel.h"
 #include "ui/tabs/layout/inspector_panel.h"
+#include "ui/tabs/layout/layout_tab.h"
 #include "ui/tabs/layout/optimiser_panel.h"
 #include "ui/tabs/layout/scene_panel.h"
 
@@ -120,7 +120,8 @@ TEST_F(TabFixture, DraggingAControllerMovesItAndIsOneUndoStep) {
   EXPECT_EQ(moved.y_mm, was.y_mm);
   EXPECT_EQ(moved.rx_deg, was.rx_deg);
   EXPECT_EQ(moved.ry_deg, was.ry_deg);
-  for (int i : {0, 1, 3}) EXPECT_EQ(hist.head().layout.devices[static_cast<size_t>(i)], before.layout.devices[static_cast<size_t>(i)]);
+  for (int i : {0, 1, 3})
+    EXPECT_EQ(hist.head().layout.devices[static_cast<size_t>(i)], before.layout.devices[static_cast<size_t>(i)]);
   EXPECT_TRUE(tab->has_unsaved_changes());
 
   // Ctrl+Z restores the exact pose; Ctrl+Shift+Z brings the move back.
@@ -300,7 +301,7 @@ TEST_F(OptimiserFixture, SeveralStartsKeepTheBestAndACurveEach) {
   const auto outcome = state->optimiser.outcome();
   ASSERT_TRUE(outcome);
   ASSERT_EQ(outcome->start_costs.size(), 3u);
-  ASSERT_EQ(state->optimiser.histories().size(), 3u);  // one convergence curve per start
+  ASSERT_EQ(state->optimiser.histories().size(), 3u);                          // one convergence curve per start
   for (const auto& h : state->optimiser.histories()) EXPECT_EQ(h.size(), 4u);  // iterations 0…3
   const double best = *std::min_element(outcome->start_costs.begin(), outcome->start_costs.end());
   EXPECT_DOUBLE_EQ(outcome->pso.best_cost, best);
@@ -316,7 +317,8 @@ TEST_F(OptimiserFixture, LockedParametersStayPutInTheCandidate) {
   click("start");
   wait_until_idle();
   ASSERT_TRUE(state->optimiser.outcome()) << state->optimiser.error();
-  EXPECT_EQ(state->optimiser.outcome()->pso.best_layout.devices[0].pose, state->history().head().layout.devices[0].pose);
+  EXPECT_EQ(state->optimiser.outcome()->pso.best_layout.devices[0].pose,
+            state->history().head().layout.devices[0].pose);
 }
 
 // ---- the Optimiser panel where a 1280 x 800 window puts it ------------------------------------------

@@ -10,8 +10,8 @@
 #include "tests/support/reference_data.h"
 #include "tests/ui/headless_imgui.h"
 #include "ui/app/help_window.h"
-#include "ui/app/workbench_shell.h"
 #include "ui/app/tab_status_sink.h"
+#include "ui/app/workbench_shell.h"
 #include "ui/model/layout_actions.h"
 #include "ui/tabs/layout/inspector_panel.h"
 #include "ui/tabs/layout/layout_tab.h"
@@ -37,7 +37,8 @@ TEST(TabStatusSink, EachTabsMessagesAreFiledUnderItsOwnId) {
 TEST(HelpWindow, ListsEveryShortcutTheCodeHandles) {
   const auto& rows = shortcut_rows();
   const auto has = [&](const std::string& where, const std::string& keys) {
-    return std::any_of(rows.begin(), rows.end(), [&](const ShortcutRow& r) { return r.where == where && r.keys == keys; });
+    return std::any_of(rows.begin(), rows.end(),
+                       [&](const ShortcutRow& r) { return r.where == where && r.keys == keys; });
   };
   EXPECT_TRUE(has("Everywhere", "F1"));
   EXPECT_TRUE(has("Everywhere", "Ctrl+Q"));
@@ -58,7 +59,8 @@ TEST(HelpWindow, DrawsEachSectionWhenOpenAndNothingWhenClosed) {
   };
   frame();
   EXPECT_EQ(ImGui::GetDrawData()->CmdListsCount, 0) << "closed: nothing drawn";
-  for (auto section : {HelpWindow::Section::kWalkthrough, HelpWindow::Section::kShortcuts, HelpWindow::Section::kAbout}) {
+  for (auto section :
+       {HelpWindow::Section::kWalkthrough, HelpWindow::Section::kShortcuts, HelpWindow::Section::kAbout}) {
     help.open(section);
     frame();
     frame();
@@ -72,8 +74,7 @@ TEST(SplitPanels, TheSplitterResizesTheRightPanelWithinItsLimits) {
   SplitPanels split(400.0f);
   ImVec2 right_min{};
   const auto body = [&] {
-    split.draw([] { ImGui::TextUnformatted("left"); },
-               [&] { right_min = ImGui::GetWindowPos(); });
+    split.draw([] { ImGui::TextUnformatted("left"); }, [&] { right_min = ImGui::GetWindowPos(); });
   };
   gui.frames(2, body);
   EXPECT_FLOAT_EQ(split.right_width(), 400.0f);

@@ -254,7 +254,8 @@ TEST(CalibrationStep, RecordsAStillHandOnTheSimulatedRigThenCalibratesIt) {
   ASSERT_EQ(step.record(dir, {}, 2.0), "");
   EXPECT_EQ(step.stage(), lmc::ui::CalibrationStage::kRecording);
   EXPECT_FALSE(step.activity().empty());
-  ASSERT_TRUE(calibration_step_test::update_until(rig, step, [&] { return step.stage() != lmc::ui::CalibrationStage::kRecording; }));
+  ASSERT_TRUE(calibration_step_test::update_until(
+      rig, step, [&] { return step.stage() != lmc::ui::CalibrationStage::kRecording; }));
   ASSERT_TRUE(calibration_step_test::update_until(rig, step, [&] { return !step.busy(); }));
   ASSERT_EQ(step.stage(), lmc::ui::CalibrationStage::kResult) << step.message();
   EXPECT_TRUE(std::filesystem::exists(dir / "LMC_Calibration.raw.txt"));

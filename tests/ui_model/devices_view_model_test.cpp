@@ -14,14 +14,16 @@
 #include "core/io/layout_json.h"
 #include "core/io/lmc_recording.h"
 #include "core/io/recorder_sidecar.h"
+#include "tests/support/reference_data.h"
 #include "ui/model/devices/devices_view_model.h"
 #include "ui/model/workbench_context.h"
-#include "tests/support/reference_data.h"
 
 namespace lmc::ui {
 namespace {
 
-Layout rig_test_layout(const std::string& name) { return load_layout(test::asset_file("layouts/" + name + ".json")); }
+Layout rig_test_layout(const std::string& name) {
+  return load_layout(test::asset_file("layouts/" + name + ".json"));
+}
 
 std::string whole_file(const std::filesystem::path& p) {
   std::ifstream in(p);
@@ -52,7 +54,9 @@ bool said(const DevicesViewModel& vm, const std::string& text) {
 struct RigFixture {
   WorkbenchContext context;
   DevicesViewModel vm{context.rig()};
-  explicit RigFixture(const std::string& layout = "paper-initial") { context.layout().publish(rig_test_layout(layout)); }
+  explicit RigFixture(const std::string& layout = "paper-initial") {
+    context.layout().publish(rig_test_layout(layout));
+  }
 };
 
 TEST(DevicesViewModel, SimulatedRigStreamsFourDevicesWithHandsInTheWorldFrame) {
@@ -135,7 +139,8 @@ TEST(DevicesViewModel, ATestRecordingGoesThroughTheTrialEngine) {
   ASSERT_EQ(vm.start_recording(dir, "vm_trial", 1.0), "");
   EXPECT_TRUE(vm.recording());
   EXPECT_NE(vm.start_recording(dir, "vm_trial", 1.0), "") << "one trial at a time";
-  ASSERT_TRUE(refresh_until(vm, [&] { return !vm.recording(); }, 30.0));
+  ASSERT_TRUE(refresh_until(
+      vm, [&] { return !vm.recording(); }, 30.0));
   vm.refresh();
   const auto result = vm.rig().trial().result();
   ASSERT_NE(result, nullptr) << vm.rig().trial().error();
@@ -163,7 +168,8 @@ TEST(DevicesViewModel, RecordingTwiceWithTheSameNameKeepsBothTakes) {
   const auto dir = test::scratch_dir("vm_record_twice");
   ASSERT_EQ(vm.start_recording(dir, "test", 0.5), "");
   EXPECT_EQ(vm.recording_trial(), "test");
-  ASSERT_TRUE(refresh_until(vm, [&] { return !vm.recording(); }, 30.0));
+  ASSERT_TRUE(refresh_until(
+      vm, [&] { return !vm.recording(); }, 30.0));
   ASSERT_EQ(vm.take_recording_summary().rfind("trial test completed", 0), 0u);
   const std::string first = whole_file(dir / "LMC_test.raw.txt");
   ASSERT_FALSE(first.empty());
@@ -171,7 +177,8 @@ TEST(DevicesViewModel, RecordingTwiceWithTheSameNameKeepsBothTakes) {
   ASSERT_EQ(vm.start_recording(dir, "test", 0.5), "");
   EXPECT_EQ(vm.recording_trial(), "test-2");
   EXPECT_TRUE(said(vm, "recording test-2 to " + dir.string() + " (test is taken)"));
-  ASSERT_TRUE(refresh_until(vm, [&] { return !vm.recording(); }, 30.0));
+  ASSERT_TRUE(refresh_until(
+      vm, [&] { return !vm.recording(); }, 30.0));
   EXPECT_EQ(vm.take_recording_summary().rfind("trial test-2 completed", 0), 0u);
   EXPECT_EQ(whole_file(dir / "LMC_test.raw.txt"), first) << "the first take is untouched";
   EXPECT_TRUE(std::filesystem::exists(dir / "LMC_test-2.raw.txt"));
@@ -309,9 +316,12 @@ TEST(DevicesViewModel, TheRigsControllersAreFusedIntoOneHandWithItsLatency) {
   DevicesViewModel& vm = f.vm;
   EXPECT_FALSE(vm.fused());
   ASSERT_EQ(vm.start("sim"), "");
-  ASSERT_TRUE(refresh_until(vm, [&] {
-    return vm.fused() && vm.fused()->has_hand && vm.fusion_stats().window_frames > 20 && vm.hands().size() >= 2;
-  }, 30.0));
+  ASSERT_TRUE(refresh_until(
+      vm,
+      [&] {
+        return vm.fused() && vm.fused()->has_hand && vm.fusion_stats().window_frames > 20 && vm.hands().size() >= 2;
+      },
+      30.0));
   // The fused palm lies among the controllers' own palms (they agree within 20 mm, test above).
   const Vec3 fused_palm = vm.fused()->points[kPalm];
   EXPECT_LT((fused_palm - vm.hands()[0].world[kPalm]).norm(), 30.0);

@@ -23,7 +23,8 @@ TEST(FileManager, StartsTheOpenerWithTheFolderAsOneArgument) {
   // A stand-in for xdg-open that writes what it was given.
   const fs::path opener = dir / "fake-opener";
   // It writes beside itself and renames, so the file appears whole.
-  std::ofstream(opener) << "#!/bin/sh\nd=$(dirname \"$0\")\nprintf '%s|%s' \"$#\" \"$1\" > \"$d/opened.tmp\" && mv \"$d/opened.tmp\" \"$d/opened.txt\"\n";
+  std::ofstream(opener) << "#!/bin/sh\nd=$(dirname \"$0\")\nprintf '%s|%s' \"$#\" \"$1\" > \"$d/opened.tmp\" && mv "
+                           "\"$d/opened.tmp\" \"$d/opened.txt\"\n";
   fs::permissions(opener, fs::perms::owner_all);
   std::string error;
   ASSERT_TRUE(open_in_file_manager(folder, &error, opener.string())) << error;

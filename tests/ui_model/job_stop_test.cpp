@@ -11,8 +11,8 @@
 
 #include "core/io/layout_json.h"
 #include "core/io/lmc_recording.h"
-#include "devices/sim/sim_rig.h"
 #include "core/review/review_export.h"
+#include "devices/sim/sim_rig.h"
 #include "tests/support/reference_data.h"
 #include "tests/support/scratch_dir.h"
 #include "ui/model/devices/calibration_job.h"
@@ -31,7 +31,8 @@ std::stop_token stopped() {
 
 bool wait_until(const std::function<bool()>& done) {
   const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(180);
-  while (!done() && std::chrono::steady_clock::now() < deadline) std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  while (!done() && std::chrono::steady_clock::now() < deadline)
+    std::this_thread::sleep_for(std::chrono::milliseconds(5));
   return done();
 }
 

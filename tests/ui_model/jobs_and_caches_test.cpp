@@ -1,14 +1,15 @@
 #include <gtest/gtest.h>
 
 #include <atomic>
+#include <chrono>
 #include <filesystem>
 #include <fstream>
 #include <functional>
-#include <chrono>
 #include <stdexcept>
 #include <thread>
 
 #include "core/layout/layout.h"
+#include "tests/support/scratch_dir.h"
 #include "ui/model/coverage_cache.h"
 #include "ui/model/frame_visibility.h"
 #include "ui/model/heatmap_cache.h"
@@ -16,7 +17,6 @@
 #include "ui/model/layout_actions.h"
 #include "ui/model/layout_tab_state.h"
 #include "ui/model/pose_set_store.h"
-#include "tests/support/scratch_dir.h"
 
 namespace lmc::ui {
 namespace {
@@ -92,7 +92,9 @@ PoseSetPtr small_pose_set() {
   return p;
 }
 
-Layout square_layout() { return default_new_layout(); }
+Layout square_layout() {
+  return default_new_layout();
+}
 
 TEST(CoverageCache, MatchesADirectComputationAndRecomputesOnlyTheMovedColumn) {
   const PoseSetPtr poses = small_pose_set();

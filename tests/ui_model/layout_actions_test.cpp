@@ -7,7 +7,9 @@
 namespace lmc::ui {
 namespace layout_actions_test {
 
-UndoableLayoutDocument paper_square() { return UndoableLayoutDocument(make_document(default_new_layout())); }
+UndoableLayoutDocument paper_square() {
+  return UndoableLayoutDocument(make_document(default_new_layout()));
+}
 
 TEST(LayoutActions, SetPoseParamCommitsOneStepThatUndoRestoresExactly) {
   auto doc = paper_square();

@@ -48,8 +48,8 @@ TEST(MotionExportPlan, GroupsTrialsByFolderWithThatFoldersOptionsAndSubfolders) 
   corrections[a] = FolderLengthCorrection{"/data/a/S01-lengths.json", fake_correction(1.2)};
   BatchOptions options;
   // Every trial of a, one of b (in the table's order: b's first).
-  const MotionExportPlan plan =
-      trial_export_plan(trials, {2, 0, 1}, options, corrections, "/out", ExportFormat::kTrc, ExportAxes::kOpenSim, true);
+  const MotionExportPlan plan = trial_export_plan(trials, {2, 0, 1}, options, corrections, "/out", ExportFormat::kTrc,
+                                                  ExportAxes::kOpenSim, true);
   EXPECT_EQ(plan.folder, fs::path("/out"));
   EXPECT_EQ(plan.trials_planned(), 3);
   ASSERT_EQ(plan.trial_runs.size(), 2u);
@@ -69,14 +69,16 @@ TEST(MotionExportPlan, GroupsTrialsByFolderWithThatFoldersOptionsAndSubfolders) 
 
   // One folder: straight into the chosen folder. The reference fusion never gets a correction.
   options.process.method = FusionMethod::kReference;
-  const MotionExportPlan one = trial_export_plan(trials, {1}, options, corrections, "/out", ExportFormat::kC3d, ExportAxes::kWorld, false);
+  const MotionExportPlan one =
+      trial_export_plan(trials, {1}, options, corrections, "/out", ExportFormat::kC3d, ExportAxes::kWorld, false);
   ASSERT_EQ(one.trial_runs.size(), 1u);
   EXPECT_EQ(one.trial_runs[0].request.out_dir, fs::path("/out"));
   EXPECT_EQ(one.trial_runs[0].request.inputs, std::vector<fs::path>{a / "LMC_Naiv_Static101.raw.txt"});
   EXPECT_EQ(one.trial_runs[0].request.session.process.method, FusionMethod::kReference);
   EXPECT_FALSE(one.trial_runs[0].request.session.process.length_correction.has_value());
   // Nothing chosen: nothing planned, and running it says so.
-  const MotionExportPlan none = trial_export_plan(trials, {}, options, corrections, "/out", ExportFormat::kC3d, ExportAxes::kWorld, false);
+  const MotionExportPlan none =
+      trial_export_plan(trials, {}, options, corrections, "/out", ExportFormat::kC3d, ExportAxes::kWorld, false);
   EXPECT_TRUE(none.trial_runs.empty());
   EXPECT_THROW(run_motion_export(none, std::stop_token{}, {}, {}), Error);
 }
@@ -86,7 +88,8 @@ TEST(MotionExportPlan, BidsTakesTheOpenedFoldersAndSaysWhichCorrectionsItCannotA
   FolderLengthCorrections corrections;
   corrections[b] = FolderLengthCorrection{"/data/S02-lengths.json", fake_correction(1.1)};
   BatchOptions options;
-  const MotionExportPlan plan = bids_export_plan({a, b}, options, corrections, "/out/ds", fs::path("/out/ds-key.tsv"), false);
+  const MotionExportPlan plan =
+      bids_export_plan({a, b}, options, corrections, "/out/ds", fs::path("/out/ds-key.tsv"), false);
   ASSERT_TRUE(plan.bids.has_value());
   EXPECT_TRUE(plan.trial_runs.empty());
   EXPECT_EQ(plan.bids->inputs, (std::vector<fs::path>{a, b}));
@@ -172,11 +175,14 @@ TEST_F(MotionExport, WritesTheChosenTrialsAsC3dOnAWorkerWithProgress) {
     const C3dData c3d = read_c3d(file);
     EXPECT_GT(c3d.frame_count(), 100);
     EXPECT_EQ(c3d.point_rate_hz, 100.0);
-    const auto has = [&](const std::string& label) { return std::find(c3d.labels.begin(), c3d.labels.end(), label) != c3d.labels.end(); };
+    const auto has = [&](const std::string& label) {
+      return std::find(c3d.labels.begin(), c3d.labels.end(), label) != c3d.labels.end();
+    };
     EXPECT_TRUE(has("F_Index_Dist"));
     EXPECT_TRUE(has("LMC1_Palm"));
     // The simulator writes the truth beside the recording as Vicon would: its markers are in.
-    EXPECT_TRUE(std::any_of(c3d.labels.begin(), c3d.labels.end(), [](const std::string& l) { return l.rfind("V_", 0) == 0; }));
+    EXPECT_TRUE(
+        std::any_of(c3d.labels.begin(), c3d.labels.end(), [](const std::string& l) { return l.rfind("V_", 0) == 0; }));
   }
 }
 
@@ -187,8 +193,8 @@ TEST_F(MotionExport, ACancelAfterTheFirstTrialLeavesOneCompleteFileAndNothingEls
   std::vector<std::pair<int, int>> progress;
   int lines = 0;
   const MotionExportOutcome outcome = run_motion_export(
-      trial_export_plan(all, {0, 1}, BatchOptions{}, {}, out, ExportFormat::kC3d, ExportAxes::kWorld, false), stop.get_token(),
-      [&](int done, int total) { progress.emplace_back(done, total); },
+      trial_export_plan(all, {0, 1}, BatchOptions{}, {}, out, ExportFormat::kC3d, ExportAxes::kWorld, false),
+      stop.get_token(), [&](int done, int total) { progress.emplace_back(done, total); },
       [&](const std::string&) {
         ++lines;
         stop.request_stop();  // the first trial is written: stop before the second

@@ -77,7 +77,7 @@ TEST(RecordLiveFusion, ARealTimeTrialShowsTheFusedHandAndItsLatencyThenEscAborts
   EXPECT_EQ(m.last_attempt()->outcome, "aborted");
   EXPECT_EQ(m.last_attempt()->reason, "aborted by the operator");
   EXPECT_EQ(m.last_attempt()->verdict(), "fail");
-  EXPECT_FALSE(m.live_fused());  // the live view ends with the trial
+  EXPECT_FALSE(m.live_fused());                                           // the live view ends with the trial
   EXPECT_TRUE(fs::file_size(dir / "LMC_Naiv_Static101.raw.txt") > 1000);  // its rows are kept
 
   // The journal says so, as `lmc session status` reads it.

@@ -10,11 +10,11 @@
 
 #include <gtest/gtest.h>
 
-#include "core/session/session_folder.h"
-#include "tests/support/scratch_dir.h"
 #include "core/io/lmc_recording.h"
 #include "core/io/recorder_sidecar.h"
+#include "core/session/session_folder.h"
 #include "core/session/trial_files.h"
+#include "tests/support/scratch_dir.h"
 #include "ui/model/record/record_session_model.h"
 #include "ui/model/record/subject_view.h"
 
@@ -143,7 +143,8 @@ TEST(RecordSessionModel, StopInterruptsTheTrialKeepsItsRowsAndWaitsForTheOperato
   ASSERT_EQ(m.start_trial(), "");
   EXPECT_NE(m.start_trial(), "");  // refused while busy
   EXPECT_NE(m.redo(0), "");
-  poll_until(m, [&] { return m.live() && m.live()->recorder.frames_written > 20; }, 30);
+  poll_until(
+      m, [&] { return m.live() && m.live()->recorder.frames_written > 20; }, 30);
   ASSERT_TRUE(m.live());
   EXPECT_TRUE(m.recording());
   m.stop_trial();

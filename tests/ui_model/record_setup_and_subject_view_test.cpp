@@ -24,7 +24,9 @@ namespace record_setup_and_subject_view_test {  // named: test files share unity
 
 namespace fs = std::filesystem;
 
-void set(char* field, size_t size, const std::string& text) { std::snprintf(field, size, "%s", text.c_str()); }
+void set(char* field, size_t size, const std::string& text) {
+  std::snprintf(field, size, "%s", text.c_str());
+}
 
 RecordSettings fast_sim() {
   RecordSettings s;
@@ -161,7 +163,8 @@ TEST(RecordResumeNotice, AnInterruptedSessionSaysWhatHappenedAndWhereItContinues
   EXPECT_NE(notice[0].find("Naiv_Static101 was cut off while recording"), std::string::npos) << notice[0];
   EXPECT_NE(notice[0].find("superseded/Naiv_Static101.attempt1/"), std::string::npos) << notice[0];
   EXPECT_NE(notice[1].find("0 of 2 trials accepted"), std::string::npos) << notice[1];
-  EXPECT_NE(notice[1].find("continues with trial 1 of 2, Naiv_Static101 (layout Naiv)"), std::string::npos) << notice[1];
+  EXPECT_NE(notice[1].find("continues with trial 1 of 2, Naiv_Static101 (layout Naiv)"), std::string::npos)
+      << notice[1];
   m.close();
   // A session opened again with nothing cut off still says where it continues; a new one says nothing.
   ASSERT_EQ(m.open(dir, fast_sim()), "");
@@ -185,11 +188,11 @@ TEST(RecordResumeNotice, ACompleteSessionSaysNothingIsLeft) {
 }
 
 TEST(MotionPictogram, AnimatesBetweenTheTrialMotionsStartAndEnd) {
-  EXPECT_DOUBLE_EQ(pictogram_progress(0.0), 0.0);   // holds the start
-  EXPECT_DOUBLE_EQ(pictogram_progress(1.6), 1.0);   // holds the end
+  EXPECT_DOUBLE_EQ(pictogram_progress(0.0), 0.0);     // holds the start
+  EXPECT_DOUBLE_EQ(pictogram_progress(1.6), 1.0);     // holds the end
   EXPECT_NEAR(pictogram_progress(1.125), 0.5, 1e-9);  // half-way out
   EXPECT_NEAR(pictogram_progress(2.625), 0.5, 1e-9);  // half-way back
-  EXPECT_DOUBLE_EQ(pictogram_progress(3.0), 0.0);   // one cycle
+  EXPECT_DOUBLE_EQ(pictogram_progress(3.0), 0.0);     // one cycle
   const auto p = motion_pictogram("horizontal/index", 1.125);
   ASSERT_TRUE(p);
   EXPECT_EQ(p->motion, HandMotion::kIndexFlexion);
@@ -207,7 +210,8 @@ TEST(MotionPictogram, AnimatesBetweenTheTrialMotionsStartAndEnd) {
   // The subject's own hand size when it was measured.
   const auto big = motion_pictogram("horizontal/index", 0.0, 230, 100);
   ASSERT_TRUE(big);
-  EXPECT_GT((big->start.point(tip) - big->start.point(kPalm)).norm(), (p->start.point(tip) - p->start.point(kPalm)).norm());
+  EXPECT_GT((big->start.point(tip) - big->start.point(kPalm)).norm(),
+            (p->start.point(tip) - p->start.point(kPalm)).norm());
 }
 
 session::TrialType index_type() {

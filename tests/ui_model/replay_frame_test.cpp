@@ -21,7 +21,8 @@ TEST(ReplayFrame, NearestFrameWithEachControllersHandViconAndSeenByCounts) {
   TrialResult r;
   r.fused = track_with_hand(3, true, 0);
   r.world.frame_count = 3;
-  r.world.devices = {{1, track_with_hand(3, true, 10)}, {2, track_with_hand(3, false, 0)}, {3, track_with_hand(3, true, 30)}};
+  r.world.devices = {
+      {1, track_with_hand(3, true, 10)}, {2, track_with_hand(3, false, 0)}, {3, track_with_hand(3, true, 30)}};
   r.has_vicon = true;
   r.vicon = track_with_hand(3, true, 50);
   FingerLabels seen{}, hidden{};

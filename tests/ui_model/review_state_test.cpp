@@ -10,9 +10,9 @@
 
 #include <gtest/gtest.h>
 
+#include "core/processing/length_correction_json.h"
 #include "tests/support/cli_runner.h"
 #include "tests/support/reference_data.h"
-#include "core/processing/length_correction_json.h"
 #include "ui/model/review/review_state.h"
 
 namespace lmc::ui {
@@ -84,7 +84,8 @@ TEST_F(ReviewModel, ProcessesASessionIntoRowsAndReopensItFromTheCache) {
     EXPECT_LT(std::abs(t.row.finger_length_diff_mm), 30.0);
   }
   // Nothing was written into the recorded session.
-  for (const auto& e : fs::directory_iterator(*session_)) EXPECT_EQ(e.path().filename().string().find("summary"), std::string::npos);
+  for (const auto& e : fs::directory_iterator(*session_))
+    EXPECT_EQ(e.path().filename().string().find("summary"), std::string::npos);
 
   const ReviewBatch second = run(input(cache));
   EXPECT_EQ(second.from_cache, 2);
@@ -211,9 +212,10 @@ TEST_F(ReviewModel, ALengthCorrectionAppliesToItsFolderWithTheDefaultFusionOnly)
   ASSERT_EQ(plain.trials.size(), 2u);
   const std::string fit_trial = plain.trials[0].job.trial;
   const fs::path file = dir / "S01-lengths.json";
-  const test::CliRun fit = test::run_lmc("length-correction fit " + test::shell_quote(session_->string()) + " --trial " +
-                                             fit_trial + " --subject S01 -o " + test::shell_quote(file.string()),
-                                         dir);
+  const test::CliRun fit =
+      test::run_lmc("length-correction fit " + test::shell_quote(session_->string()) + " --trial " + fit_trial +
+                        " --subject S01 -o " + test::shell_quote(file.string()),
+                    dir);
   ASSERT_EQ(fit.exit_code, 0) << fit.all();
 
   ReviewBatchInput in = input(cache);
@@ -228,7 +230,8 @@ TEST_F(ReviewModel, ALengthCorrectionAppliesToItsFolderWithTheDefaultFusionOnly)
   }
   // Fitted on trial 0 against Vicon: its mean length difference nearly vanishes, and it says it
   // is not an independent test.
-  EXPECT_LT(std::abs(corrected.trials[0].row.finger_length_diff_mm), std::abs(plain.trials[0].row.finger_length_diff_mm));
+  EXPECT_LT(std::abs(corrected.trials[0].row.finger_length_diff_mm),
+            std::abs(plain.trials[0].row.finger_length_diff_mm));
   EXPECT_LT(std::abs(corrected.trials[0].row.finger_length_diff_mm), 1.0);
   EXPECT_EQ(corrected.trials[0].row.warnings, plain.trials[0].row.warnings + 1);
 
@@ -238,7 +241,8 @@ TEST_F(ReviewModel, ALengthCorrectionAppliesToItsFolderWithTheDefaultFusionOnly)
   ASSERT_TRUE(reference.trials[0].outcome.ok) << reference.trials[0].outcome.error;
   EXPECT_FALSE(folder_options(in.options, in.corrections, *session_).process.length_correction.has_value());
   bool noted = false;
-  for (const auto& n : reference.notes) noted = noted || n.find("not applied with the reference fusion") != std::string::npos;
+  for (const auto& n : reference.notes)
+    noted = noted || n.find("not applied with the reference fusion") != std::string::npos;
   EXPECT_TRUE(noted);
 
   // Through the state: a bad file is named and changes nothing; a good one is shown in the view.

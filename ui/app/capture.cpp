@@ -19,7 +19,8 @@ namespace {
 
 // Exports of pictures (the Review tab's PNG) render in a hidden window beside this one.
 void install_picture_renderer(WorkbenchShell& shell, GlWindow& window) {
-  shell.context().picture_renderer() = [&window](int w, int h, const std::string& png, const std::function<void()>& draw) {
+  shell.context().picture_renderer() = [&window](int w, int h, const std::string& png,
+                                                 const std::function<void()>& draw) {
     render_offscreen_png(window.handle(), w, h, png, draw);
   };
 }
@@ -75,7 +76,8 @@ int run_capture(const std::string& dir, const std::vector<std::string>& tab_ids,
   install_picture_renderer(shell, window);
   // LMC_CAPTURE_HELP=walkthrough|shortcuts|about (1 = walkthrough) shows the Help window over
   // every capture: menus are closed in captures, so this is the only way to look at it.
-  if (const char* help = std::getenv("LMC_CAPTURE_HELP"); help != nullptr && *help != '\0' && std::string(help) != "0") {
+  if (const char* help = std::getenv("LMC_CAPTURE_HELP");
+      help != nullptr && *help != '\0' && std::string(help) != "0") {
     const std::string which = help;
     shell.open_help(which == "shortcuts" ? HelpWindow::Section::kShortcuts
                     : which == "about"   ? HelpWindow::Section::kAbout

@@ -20,8 +20,8 @@ void SubjectScreen::frame(SubjectScreenLink& link, const std::string& png_path) 
   }
   const bool hidden = hidden_width_ > 0;
   const bool windowed = subject_screen_windowed(link);
-  if (window_ && (!link.open || (!hidden && (window_->options().monitor != link.monitor ||
-                                             window_->options().windowed != windowed))))
+  if (window_ && (!link.open ||
+                  (!hidden && (window_->options().monitor != link.monitor || window_->options().windowed != windowed))))
     window_.reset();
   if (link.open && !window_) {
     SubjectWindowOptions options;

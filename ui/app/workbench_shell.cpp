@@ -195,7 +195,8 @@ void WorkbenchShell::draw_file_menu() {
         select_tab(ids_[static_cast<size_t>(owner)]);
         tabs_[static_cast<size_t>(owner)]->open_document(entry.path);
       }
-      if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled)) ImGui::SetTooltip("%s", entry.path.string().c_str());
+      if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled))
+        ImGui::SetTooltip("%s", entry.path.string().c_str());
       ImGui::PopID();
     }
     ImGui::Separator();

@@ -61,8 +61,9 @@ void CoverageCache::request(const Layout& layout, const PoseSetPtr& poses) {
 void CoverageCache::start_pending() {
   if (!pending_) return;
   pending_ = false;
-  job_.start([layout = requested_layout_, poses = requested_poses_, previous = latest_](
-                 std::stop_token stop, JobChannel<int>&) { return compute_coverage_snapshot(layout, poses, previous, stop); });
+  job_.start(
+      [layout = requested_layout_, poses = requested_poses_, previous = latest_](
+          std::stop_token stop, JobChannel<int>&) { return compute_coverage_snapshot(layout, poses, previous, stop); });
 }
 
 void CoverageCache::poll() {
@@ -85,6 +86,8 @@ void CoverageCache::wait() {
   poll();
 }
 
-bool CoverageCache::up_to_date() const { return latest_ && !busy() && latest_->keys == requested_keys_; }
+bool CoverageCache::up_to_date() const {
+  return latest_ && !busy() && latest_->keys == requested_keys_;
+}
 
 }  // namespace lmc::ui

@@ -17,7 +17,8 @@ struct BrowserEntry {
 class FileBrowserModel {
  public:
   // `extension` filters files (".json"); empty shows all files.
-  explicit FileBrowserModel(std::filesystem::path start = std::filesystem::current_path(), std::string extension = ".json");
+  explicit FileBrowserModel(std::filesystem::path start = std::filesystem::current_path(),
+                            std::string extension = ".json");
 
   const std::filesystem::path& directory() const { return directory_; }
   const std::vector<BrowserEntry>& entries() const { return entries_; }

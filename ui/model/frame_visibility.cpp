@@ -7,12 +7,18 @@ namespace lmc::ui {
 
 std::string ray_reason_text(const FingerVerdict& v) {
   switch (v.reason) {
-    case HiddenReason::kVisible: return "clear";
-    case HiddenReason::kNoHand: return "no hand in this frame";
-    case HiddenReason::kWrongApproach: return "hand does not enter from the user's side (wrong approach)";
-    case HiddenReason::kOutOfRange: return "hand out of range (" + describe(v) + ")";
-    case HiddenReason::kOutOfView: return "hand out of view (" + describe(v) + ")";
-    case HiddenReason::kBehindPalm: return "behind the palm";
+    case HiddenReason::kVisible:
+      return "clear";
+    case HiddenReason::kNoHand:
+      return "no hand in this frame";
+    case HiddenReason::kWrongApproach:
+      return "hand does not enter from the user's side (wrong approach)";
+    case HiddenReason::kOutOfRange:
+      return "hand out of range (" + describe(v) + ")";
+    case HiddenReason::kOutOfView:
+      return "hand out of view (" + describe(v) + ")";
+    case HiddenReason::kBehindPalm:
+      return "behind the palm";
     case HiddenReason::kBehindFinger:
       return "behind the " + std::string(digit_name(v.occluding_finger)) + (v.occluding_finger == 0 ? "" : " finger");
   }
@@ -26,7 +32,8 @@ FrameVisibility explain_frame(const Layout& layout, const PreparedFrame& frame, 
   out.per_device.reserve(layout.devices.size());
   for (const LayoutDevice& dev : layout.devices) {
     out.per_device.push_back(explain_visibility(frame, DeviceView::from_device(dev), limits));
-    for (int k = 0; k < kNumDigits; ++k) out.seen_count[static_cast<size_t>(k)] += (out.per_device.back().bits >> k) & 1;
+    for (int k = 0; k < kNumDigits; ++k)
+      out.seen_count[static_cast<size_t>(k)] += (out.per_device.back().bits >> k) & 1;
   }
   if (ray_device < 0 || ray_device >= layout.device_count() || !frame.valid) return out;
   const LayoutDevice& dev = layout.devices[static_cast<size_t>(ray_device)];
@@ -65,7 +72,8 @@ FrameVisibility explain_frame(const Layout& layout, const PreparedFrame& frame, 
         ray.reason = ray_reason_text(v);
       } else {
         ray.clear = false;
-        ray.reason = "not tested: the " + std::string(digit_name(f)) + " is already hidden (" + ray_reason_text(v) + ")";
+        ray.reason =
+            "not tested: the " + std::string(digit_name(f)) + " is already hidden (" + ray_reason_text(v) + ")";
       }
       out.rays.push_back(std::move(ray));
     }

@@ -15,9 +15,9 @@
 namespace lmc::ui {
 
 struct FrameVisibility {
-  std::vector<VisibilityExplanation> per_device;   // layout order
+  std::vector<VisibilityExplanation> per_device;  // layout order
   std::array<int, kNumDigits> seen_count{-1, -1, -1, -1, -1};
-  std::vector<FingerRay> rays;                      // from `ray_device` to the 20 finger markers
+  std::vector<FingerRay> rays;  // from `ray_device` to the 20 finger markers
 };
 
 // `frame` is the prepared form of the hand frame on screen; `ray_device` < 0 for no rays.

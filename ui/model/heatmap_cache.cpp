@@ -31,9 +31,10 @@ HeatmapGridPtr sweep_heatmap(const HeatmapRequest& req, int cells, std::stop_tok
   const auto row_done = [&](int rows) {
     if (channel != nullptr) channel->set_progress(done_before + static_cast<long long>(rows) * cells, total);
   };
-  auto swept = sweep_placement_heatmap(req.layout, req.poses ? std::span<const PreparedFrame>(req.poses->prepared)
-                                                             : std::span<const PreparedFrame>(no_frames),
-                                       spec, stop, row_done);
+  auto swept = sweep_placement_heatmap(
+      req.layout,
+      req.poses ? std::span<const PreparedFrame>(req.poses->prepared) : std::span<const PreparedFrame>(no_frames), spec,
+      stop, row_done);
   if (!swept) return nullptr;
   auto grid = std::make_shared<HeatmapGrid>();
   static_cast<PlacementHeatmap&>(*grid) = std::move(*swept);

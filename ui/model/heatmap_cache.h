@@ -15,9 +15,9 @@
 #include <stop_token>
 
 #include "core/layout/layout.h"
-#include "ui/scene/heatmap_grid.h"
 #include "ui/model/jobs/background_job.h"
 #include "ui/model/pose_set_store.h"
+#include "ui/scene/heatmap_grid.h"
 
 namespace lmc::ui {
 
@@ -26,7 +26,7 @@ struct HeatmapRequest {
   int device = 0;
   int finger = -1;  // 0 thumb … 4 pinky, −1 all five
   HeatmapMode mode = HeatmapMode::kShareVisible;
-  int cells = 48;   // per side
+  int cells = 48;  // per side
   double half_extent_mm = 400;
   PoseSetPtr poses;
 
@@ -47,7 +47,7 @@ class HeatmapCache {
   void clear();  // heatmap switched off: stop and forget
   // Off screen: stop a sweep in progress but keep the last grid; the next request starts afresh.
   void pause();
-  void poll();   // update step: pick up published passes, reap abandoned workers
+  void poll();  // update step: pick up published passes, reap abandoned workers
 
   HeatmapGridPtr latest() const { return latest_; }
   bool computing() const { return job_.running(); }

@@ -15,7 +15,9 @@ std::string slot_of(const UndoableLayoutDocument& doc, int index) {
   return doc.scratch().layout.devices[static_cast<size_t>(index)].slot;
 }
 
-ActionResult bad_index(int index) { return ActionResult::fail("no controller #" + std::to_string(index + 1)); }
+ActionResult bad_index(int index) {
+  return ActionResult::fail("no controller #" + std::to_string(index + 1));
+}
 
 // Runs validate_layout on scratch; on failure rolls back and reports.
 ActionResult commit_checked(UndoableLayoutDocument& doc, const std::string& message) {
@@ -131,7 +133,9 @@ bool commit_device_pose(UndoableLayoutDocument& doc, int index, const std::strin
   return doc.commit(verb + " " + slot_of(doc, index));
 }
 
-void cancel_preview(UndoableLayoutDocument& doc) { doc.rollback(); }
+void cancel_preview(UndoableLayoutDocument& doc) {
+  doc.rollback();
+}
 
 ActionResult set_device_lock(UndoableLayoutDocument& doc, int index, int k, bool locked) {
   doc.rollback();
@@ -251,6 +255,8 @@ ActionResult apply_calibration(UndoableLayoutDocument& doc, const Layout& calibr
   return commit_checked(doc, "Apply calibration");
 }
 
-Layout default_new_layout() { return square_layout("untitled"); }
+Layout default_new_layout() {
+  return square_layout("untitled");
+}
 
 }  // namespace lmc::ui

@@ -25,8 +25,8 @@ struct ParamRange {
 // ±400 mm table top), not the authors' ±1000 mm box, which let the search park a controller off
 // the table.
 struct SearchBounds {
-  std::array<ParamRange, kNumPoseParams> range{ParamRange{-360, 360}, ParamRange{0, 300}, ParamRange{-360, 360},
-                                               ParamRange{-90, 90},     ParamRange{-180, 180}, ParamRange{-180, 180}};
+  std::array<ParamRange, kNumPoseParams> range{ParamRange{-360, 360}, ParamRange{0, 300},    ParamRange{-360, 360},
+                                               ParamRange{-90, 90},   ParamRange{-180, 180}, ParamRange{-180, 180}};
   bool operator==(const SearchBounds&) const = default;
 };
 

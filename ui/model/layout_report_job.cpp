@@ -23,11 +23,15 @@ void LayoutReportJob::wait() {
 
 std::string LayoutReportJob::message() const {
   switch (job_.state()) {
-    case JobState::kIdle: return {};
+    case JobState::kIdle:
+      return {};
     case JobState::kStarting:
-    case JobState::kRunning: return "writing the layout report...";
-    case JobState::kFailed: return "report not written: " + job_.error();
-    case JobState::kCancelled: return "report cancelled";
+    case JobState::kRunning:
+      return "writing the layout report...";
+    case JobState::kFailed:
+      return "report not written: " + job_.error();
+    case JobState::kCancelled:
+      return "report cancelled";
     case JobState::kCompleted: {
       const auto path = job_.result();
       return path ? "wrote " + path->string() + " (with top-view.svg and pose-redundancy.svg)" : std::string();

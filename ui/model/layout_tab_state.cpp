@@ -45,8 +45,9 @@ void LayoutTabState::redo() {
 }
 
 std::string LayoutTabState::title() const {
-  std::string t = file_path_ ? file_path_->filename().string()
-                             : (layout().name.empty() ? std::string("untitled layout") : layout().name + " (not saved)");
+  std::string t = file_path_
+                      ? file_path_->filename().string()
+                      : (layout().name.empty() ? std::string("untitled layout") : layout().name + " (not saved)");
   if (unsaved()) t += " *";  // the usual unsaved-changes mark
   return t;
 }
@@ -54,7 +55,9 @@ std::string LayoutTabState::title() const {
 namespace {
 // lmc::Error's what() already starts with "file: at /json/path: " (its constructor formats the
 // location in); formatting the location again printed it twice.
-std::string error_text(const std::exception& e) { return e.what(); }
+std::string error_text(const std::exception& e) {
+  return e.what();
+}
 }  // namespace
 
 std::string LayoutTabState::open_file(const std::filesystem::path& path) {
@@ -189,7 +192,8 @@ void LayoutTabState::update(double dt_seconds, bool on_screen) {
     coverage.request(layout(), p);
     const int j = std::clamp(timeline.frame, 0, std::max(0, p->size() - 1));
     if (p->size() > 0) {
-      frame_visibility_ = explain_frame(layout(), p->prepared[static_cast<size_t>(j)], display.show_rays ? selected : -1);
+      frame_visibility_ =
+          explain_frame(layout(), p->prepared[static_cast<size_t>(j)], display.show_rays ? selected : -1);
     }
     if (display.show_heatmap && selected >= 0) {
       HeatmapRequest req;

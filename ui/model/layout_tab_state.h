@@ -16,8 +16,8 @@
 #include "ui/model/frame_visibility.h"
 #include "ui/model/heatmap_cache.h"
 #include "ui/model/layout_actions.h"
-#include "ui/model/optimiser_job.h"
 #include "ui/model/layout_report_job.h"
+#include "ui/model/optimiser_job.h"
 #include "ui/model/pose_set_store.h"
 #include "ui/scene/colour_maps.h"
 #include "ui/scene/drag_controller.h"
@@ -26,11 +26,11 @@
 namespace lmc::ui {
 
 struct TimelineState {
-  int frame = 0;                 // index into the pose set (not into the filtered list)
+  int frame = 0;  // index into the pose set (not into the filtered list)
   bool playing = false;
   double frames_per_second = 30;
-  int orientation_filter = -1;   // −1 any, else HandOrientation
-  int motion_filter = -1;        // −1 any, else HandMotion
+  int orientation_filter = -1;  // −1 any, else HandOrientation
+  int motion_filter = -1;       // −1 any, else HandMotion
   double play_accumulator_s = 0;
 };
 

@@ -52,68 +52,69 @@ bool OptimiserJob::start(const LayoutDocument& doc, const PoseSetPtr& poses, con
   discarded_ = false;
   iterations_ = settings.iterations;
   starts_ = starts;
-  job_.start([layout = doc.layout, space, poses, settings, starts](std::stop_token stop,
-                                                                  JobChannel<OptimiserReport>& ch) {
-    ch.set_stage("Searching");
-    const long long per_start = settings.iterations + 1;
-    ch.set_progress(0, per_start * starts);
-    OptimiserOutcome out;
-    const auto report = [&ch, per_start](int start, const PsoProgress& p) {
-      ch.report({start, p.iteration, p.iterations, p.best_cost,
-                 p.best_layout.devices.empty() ? nullptr : std::make_shared<const Layout>(p.best_layout)});
-      ch.set_progress(start * per_start + p.iteration + 1, ch.total());
-    };
-    // Multi-start keeps finished starts only, which run_pso has evaluated; a single start may
-    // have been cancelled.
-    bool best_evaluated = true;
-    if (starts == 1) {
-      out.pso = run_pso(layout, space, poses->prepared, settings, [&](const PsoProgress& p) { report(0, p); }, stop);
-      best_evaluated = out.pso.status == JobStatus::kCompleted;
-      out.start_costs = {out.pso.best_cost};
-    } else {
-      MultiStartResult m = run_multi_start(layout, space, poses->prepared, settings, starts,
-                                           [&](const MultiStartProgress& p) { report(p.start, p.pso); }, stop);
-      if (m.best < 0) throw Error("no start finished");
-      for (const auto& r : m.runs) out.start_costs.push_back(r.best_cost);
-      out.best_start = m.best;
-      out.distinct_runners_up = static_cast<int>(m.runners_up.size());
-      out.pso = std::move(m.runs[static_cast<size_t>(m.best)]);
-      out.pso.status = m.status;
-    }
-    // run_pso stops as soon as it is asked and leaves a cancelled search's best unevaluated, but
-    // that best so far is a real layout the panel offers to Apply: evaluate it here like a finished
-    // one, so the comparison and the status bar show its terms, not zeros.
-    if (!best_evaluated) {
-      ch.set_stage("Evaluating the best so far");
-      out.pso.best_terms = layout_robust_terms(out.pso.best_layout, poses->prepared, settings.weights,
-                                               settings.phalanx_radius_mm, settings.axis_cut_mm);
-      // Cancelled before the initial swarm was evaluated: the best so far is the start layout,
-      // whose cost is now known.
-      if (!std::isfinite(out.pso.best_cost)) {
-        out.pso.best_cost = settings.metric == PlacementMetricKind::kStudy ? out.pso.best_terms.metric_m
-                                                                           : out.pso.best_terms.total;
-        out.start_costs = {out.pso.best_cost};
-      }
-    }
-    // The candidate says what made it, so a saved result is not mistaken for the layout it
-    // started from ("paper-optimized" stayed in the file after Apply and Save).
-    const char* metric = placement_metric_name(settings.metric);
-    out.pso.best_layout.name = std::string("optimized-") + metric;
-    out.pso.best_layout.description = std::string("Optimiser panel, ") + metric + " metric: " +
-                                      std::to_string(settings.particles) + " particles x " +
-                                      std::to_string(settings.iterations) + " iterations, swarm seed " +
-                                      std::to_string(settings.seed + static_cast<std::uint64_t>(out.best_start)) +
-                                      (starts > 1 ? " (best of " + std::to_string(starts) + " starts)" : std::string()) +
-                                      ", on " + poses->set.description +
-                                      ", from " + layout.name + "; cost " + std::to_string(out.pso.best_cost);
-    ch.set_stage("Evaluating the candidate");
-    out.candidate = evaluate_layout(out.pso.best_layout, *poses);
-    if (!best_evaluated) out.pso.best_coverage = out.candidate.all;
-    out.start_layout = layout;
-    out.start_terms = layout_robust_terms(layout, poses->prepared, settings.weights, settings.phalanx_radius_mm,
-                                          settings.axis_cut_mm);
-    return out;
-  });
+  job_.start(
+      [layout = doc.layout, space, poses, settings, starts](std::stop_token stop, JobChannel<OptimiserReport>& ch) {
+        ch.set_stage("Searching");
+        const long long per_start = settings.iterations + 1;
+        ch.set_progress(0, per_start * starts);
+        OptimiserOutcome out;
+        const auto report = [&ch, per_start](int start, const PsoProgress& p) {
+          ch.report({start, p.iteration, p.iterations, p.best_cost,
+                     p.best_layout.devices.empty() ? nullptr : std::make_shared<const Layout>(p.best_layout)});
+          ch.set_progress(start * per_start + p.iteration + 1, ch.total());
+        };
+        // Multi-start keeps finished starts only, which run_pso has evaluated; a single start may
+        // have been cancelled.
+        bool best_evaluated = true;
+        if (starts == 1) {
+          out.pso = run_pso(
+              layout, space, poses->prepared, settings, [&](const PsoProgress& p) { report(0, p); }, stop);
+          best_evaluated = out.pso.status == JobStatus::kCompleted;
+          out.start_costs = {out.pso.best_cost};
+        } else {
+          MultiStartResult m = run_multi_start(
+              layout, space, poses->prepared, settings, starts,
+              [&](const MultiStartProgress& p) { report(p.start, p.pso); }, stop);
+          if (m.best < 0) throw Error("no start finished");
+          for (const auto& r : m.runs) out.start_costs.push_back(r.best_cost);
+          out.best_start = m.best;
+          out.distinct_runners_up = static_cast<int>(m.runners_up.size());
+          out.pso = std::move(m.runs[static_cast<size_t>(m.best)]);
+          out.pso.status = m.status;
+        }
+        // run_pso stops as soon as it is asked and leaves a cancelled search's best unevaluated, but
+        // that best so far is a real layout the panel offers to Apply: evaluate it here like a finished
+        // one, so the comparison and the status bar show its terms, not zeros.
+        if (!best_evaluated) {
+          ch.set_stage("Evaluating the best so far");
+          out.pso.best_terms = layout_robust_terms(out.pso.best_layout, poses->prepared, settings.weights,
+                                                   settings.phalanx_radius_mm, settings.axis_cut_mm);
+          // Cancelled before the initial swarm was evaluated: the best so far is the start layout,
+          // whose cost is now known.
+          if (!std::isfinite(out.pso.best_cost)) {
+            out.pso.best_cost =
+                settings.metric == PlacementMetricKind::kStudy ? out.pso.best_terms.metric_m : out.pso.best_terms.total;
+            out.start_costs = {out.pso.best_cost};
+          }
+        }
+        // The candidate says what made it, so a saved result is not mistaken for the layout it
+        // started from ("paper-optimized" stayed in the file after Apply and Save).
+        const char* metric = placement_metric_name(settings.metric);
+        out.pso.best_layout.name = std::string("optimized-") + metric;
+        out.pso.best_layout.description =
+            std::string("Optimiser panel, ") + metric + " metric: " + std::to_string(settings.particles) +
+            " particles x " + std::to_string(settings.iterations) + " iterations, swarm seed " +
+            std::to_string(settings.seed + static_cast<std::uint64_t>(out.best_start)) +
+            (starts > 1 ? " (best of " + std::to_string(starts) + " starts)" : std::string()) + ", on " +
+            poses->set.description + ", from " + layout.name + "; cost " + std::to_string(out.pso.best_cost);
+        ch.set_stage("Evaluating the candidate");
+        out.candidate = evaluate_layout(out.pso.best_layout, *poses);
+        if (!best_evaluated) out.pso.best_coverage = out.candidate.all;
+        out.start_layout = layout;
+        out.start_terms = layout_robust_terms(layout, poses->prepared, settings.weights, settings.phalanx_radius_mm,
+                                              settings.axis_cut_mm);
+        return out;
+      });
   return true;
 }
 
@@ -121,7 +122,8 @@ void OptimiserJob::poll() {
   for (const auto& r : job_.drain_reports()) {
     if (r.start >= static_cast<int>(histories_.size())) histories_.resize(static_cast<size_t>(r.start) + 1);
     auto& history = histories_[static_cast<size_t>(r.start)];
-    if (r.iteration >= static_cast<int>(history.size())) history.resize(static_cast<size_t>(r.iteration) + 1, r.best_cost);
+    if (r.iteration >= static_cast<int>(history.size()))
+      history.resize(static_cast<size_t>(r.iteration) + 1, r.best_cost);
     history[static_cast<size_t>(r.iteration)] = r.best_cost;
     if (r.best_layout) live_best_ = r.best_layout;
   }
@@ -137,7 +139,9 @@ std::shared_ptr<const OptimiserOutcome> OptimiserJob::outcome() const {
   return job_.result();
 }
 
-void OptimiserJob::discard() { discarded_ = true; }
+void OptimiserJob::discard() {
+  discarded_ = true;
+}
 
 std::shared_ptr<const Layout> OptimiserJob::best_so_far() const {
   if (discarded_) return nullptr;

@@ -9,8 +9,8 @@
 #include <vector>
 
 #include "ui/model/current_layout.h"
-#include "ui/model/picture_renderer.h"
 #include "ui/model/devices/live_rig.h"
+#include "ui/model/picture_renderer.h"
 #include "ui/model/record/subject_screen_link.h"
 
 namespace lmc::ui {

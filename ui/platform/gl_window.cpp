@@ -1,11 +1,11 @@
 #include "ui/platform/gl_window.h"
 
 // epoxy must come before GLFW so GLFW does not pull in a system GL header first.
-#include <epoxy/gl.h>
 #include <GLFW/glfw3.h>
-#include <imgui.h>
 #include <backends/imgui_impl_glfw.h>
 #include <backends/imgui_impl_opengl3.h>
+#include <epoxy/gl.h>
+#include <imgui.h>
 #include <stb_image_write.h>
 
 #include <cstdlib>
@@ -113,9 +113,15 @@ GlWindow::~GlWindow() {
   glfwTerminate();
 }
 
-bool GlWindow::should_close() const { return glfwWindowShouldClose(window_) != 0; }
-void GlWindow::set_should_close(bool close) { glfwSetWindowShouldClose(window_, close ? GLFW_TRUE : GLFW_FALSE); }
-void GlWindow::set_title(const std::string& title) { glfwSetWindowTitle(window_, title.c_str()); }
+bool GlWindow::should_close() const {
+  return glfwWindowShouldClose(window_) != 0;
+}
+void GlWindow::set_should_close(bool close) {
+  glfwSetWindowShouldClose(window_, close ? GLFW_TRUE : GLFW_FALSE);
+}
+void GlWindow::set_title(const std::string& title) {
+  glfwSetWindowTitle(window_, title.c_str());
+}
 
 void GlWindow::begin_frame() {
   deliver_held_releases();
@@ -133,7 +139,9 @@ void GlWindow::end_frame() {
   ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
 }
 
-void GlWindow::present() { glfwSwapBuffers(window_); }
+void GlWindow::present() {
+  glfwSwapBuffers(window_);
+}
 
 int GlWindow::framebuffer_width() const {
   int w = 0, h = 0;
@@ -147,7 +155,9 @@ int GlWindow::framebuffer_height() const {
   return h;
 }
 
-void GlWindow::save_png(const std::string& path) const { write_back_buffer_png(path, framebuffer_width(), framebuffer_height()); }
+void GlWindow::save_png(const std::string& path) const {
+  write_back_buffer_png(path, framebuffer_width(), framebuffer_height());
+}
 
 void write_back_buffer_png(const std::string& path, int w, int h) {
   std::vector<unsigned char> pixels(static_cast<size_t>(w) * static_cast<size_t>(h) * 3);

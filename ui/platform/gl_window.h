@@ -25,9 +25,9 @@ class GlWindow {
   bool should_close() const;
   void set_should_close(bool close);
   void set_title(const std::string& title);
-  void begin_frame();                  // poll events, start an ImGui frame
-  void end_frame();                    // render ImGui into the back buffer (no swap)
-  void present();                      // swap buffers
+  void begin_frame();  // poll events, start an ImGui frame
+  void end_frame();    // render ImGui into the back buffer (no swap)
+  void present();      // swap buffers
   int framebuffer_width() const;
   int framebuffer_height() const;
   // Back buffer → PNG (call between end_frame and present). Throws on failure.

@@ -1,11 +1,11 @@
 #include "ui/platform/subject_window.h"
 
 // epoxy must come before GLFW so GLFW does not pull in a system GL header first.
-#include <epoxy/gl.h>
 #include <GLFW/glfw3.h>
-#include <imgui.h>
 #include <backends/imgui_impl_glfw.h>
 #include <backends/imgui_impl_opengl3.h>
+#include <epoxy/gl.h>
+#include <imgui.h>
 
 #include <filesystem>
 #include <stdexcept>
@@ -136,7 +136,9 @@ SubjectWindow::~SubjectWindow() {
   glfwDestroyWindow(window_);
 }
 
-bool SubjectWindow::closed_by_user() const { return glfwWindowShouldClose(window_) != 0; }
+bool SubjectWindow::closed_by_user() const {
+  return glfwWindowShouldClose(window_) != 0;
+}
 
 void SubjectWindow::frame(const std::function<void(const SubjectFonts&)>& body, const std::string& png_path) {
   ContextSwitch to(window_, imgui_);

@@ -23,9 +23,9 @@ struct MonitorInfo {
 std::vector<MonitorInfo> list_monitors();
 
 struct SubjectWindowOptions {
-  int monitor = -1;       // index into list_monitors(); -1 or out of range: the last one
-  bool windowed = false;  // a decorated 1024 × 640 window instead of covering the monitor
-  bool visible = true;    // false for --capture
+  int monitor = -1;           // index into list_monitors(); -1 or out of range: the last one
+  bool windowed = false;      // a decorated 1024 × 640 window instead of covering the monitor
+  bool visible = true;        // false for --capture
   int width = 0, height = 0;  // with !visible: the picture's size
   // > 0: the normal font's size in pixels (large and huge keep their ratio to it). The off-screen
   // figure pictures (offscreen_png.h) use the same window at a figure's text size.

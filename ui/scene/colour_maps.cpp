@@ -10,19 +10,27 @@ namespace lmc::ui {
 Rgba seen_count_colour(int devices_seeing) {
   // Red for "nobody sees it" (the metric's worst case), through orange and yellow to green.
   switch (std::clamp(devices_seeing, 0, 3)) {
-    case 0: return {0.90f, 0.20f, 0.18f, 1.0f};
-    case 1: return {0.98f, 0.55f, 0.12f, 1.0f};
-    case 2: return {0.95f, 0.85f, 0.20f, 1.0f};
-    default: return {0.25f, 0.80f, 0.35f, 1.0f};
+    case 0:
+      return {0.90f, 0.20f, 0.18f, 1.0f};
+    case 1:
+      return {0.98f, 0.55f, 0.12f, 1.0f};
+    case 2:
+      return {0.95f, 0.85f, 0.20f, 1.0f};
+    default:
+      return {0.25f, 0.80f, 0.35f, 1.0f};
   }
 }
 
 std::string seen_count_label(int category) {
   switch (category) {
-    case 0: return "seen by none";
-    case 1: return "seen by 1";
-    case 2: return "seen by 2";
-    default: return "seen by 3+";
+    case 0:
+      return "seen by none";
+    case 1:
+      return "seen by 1";
+    case 2:
+      return "seen by 2";
+    default:
+      return "seen by 3+";
   }
 }
 

@@ -12,7 +12,9 @@ constexpr double kRadToDeg = 180.0 / std::numbers::pi;
 // Below this |cos| between ray and constraint plane the plane is seen edge-on: skip the update.
 constexpr double kEdgeOnCos = 0.03;
 
-double wrap_deg(double a) { return std::remainder(a, 360.0); }
+double wrap_deg(double a) {
+  return std::remainder(a, 360.0);
+}
 
 struct RingFrame {
   Eigen::Vector3d centre, u, v, normal;

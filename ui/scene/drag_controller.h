@@ -65,7 +65,7 @@ class DragController {
   HandleKind kind_ = HandleKind::kNone;
   DevicePose start_pose_;
   DeviceLocks locks_;
-  Eigen::Vector3d centre_ = Eigen::Vector3d::Zero();  // device origin in world
+  Eigen::Vector3d centre_ = Eigen::Vector3d::Zero();   // device origin in world
   Eigen::Vector3d normal_ = Eigen::Vector3d::UnitY();  // constraint plane normal
   Eigen::Vector3d basis_u_ = Eigen::Vector3d::UnitX(), basis_v_ = Eigen::Vector3d::UnitZ();
   Eigen::Vector3d start_hit_ = Eigen::Vector3d::Zero();

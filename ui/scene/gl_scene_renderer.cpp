@@ -47,8 +47,8 @@ void push(std::vector<Vertex>& v, const Eigen::Vector3d& p, const Rgba& c, const
                static_cast<float>(n.x()), static_cast<float>(n.y()), static_cast<float>(n.z())});
 }
 
-void push_triangle(std::vector<Vertex>& v, const Eigen::Vector3d& a, const Eigen::Vector3d& b,
-                   const Eigen::Vector3d& c, const Rgba& col) {
+void push_triangle(std::vector<Vertex>& v, const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::Vector3d& c,
+                   const Rgba& col) {
   Eigen::Vector3d n = (b - a).cross(c - a);
   if (n.squaredNorm() > 0) n.normalize();
   push(v, a, col, n);
@@ -65,13 +65,13 @@ void push_quad(std::vector<Vertex>& v, const Eigen::Vector3d& a, const Eigen::Ve
 void push_box(std::vector<Vertex>& v, const SceneItem& it) {
   std::array<Eigen::Vector3d, 8> c;
   for (int i = 0; i < 8; ++i) {
-    const Eigen::Vector3d local = it.a + Eigen::Vector3d((i & 1) ? it.b.x() : -it.b.x(),
-                                                         (i & 2) ? it.b.y() : -it.b.y(),
+    const Eigen::Vector3d local = it.a + Eigen::Vector3d((i & 1) ? it.b.x() : -it.b.x(), (i & 2) ? it.b.y() : -it.b.y(),
                                                          (i & 4) ? it.b.z() : -it.b.z());
     c[static_cast<size_t>(i)] = it.transform * local;
   }
   // Faces wound counter-clockwise seen from outside.
-  static constexpr int kFaces[6][4] = {{0, 4, 6, 2}, {1, 3, 7, 5}, {0, 1, 5, 4}, {2, 6, 7, 3}, {0, 2, 3, 1}, {4, 5, 7, 6}};
+  static constexpr int kFaces[6][4] = {{0, 4, 6, 2}, {1, 3, 7, 5}, {0, 1, 5, 4},
+                                       {2, 6, 7, 3}, {0, 2, 3, 1}, {4, 5, 7, 6}};
   for (const auto& f : kFaces) {
     push_quad(v, c[static_cast<size_t>(f[0])], c[static_cast<size_t>(f[1])], c[static_cast<size_t>(f[2])],
               c[static_cast<size_t>(f[3])], it.colour);
@@ -129,7 +129,8 @@ void push_joint(std::vector<Vertex>& v, const SceneItem& it) {
 void push_pyramid(std::vector<Vertex>& v, const SceneItem& it) {
   const auto c = pyramid_corners(it.transform, it.size, it.b.x(), it.b.y());
   const Eigen::Vector3d apex = it.transform.translation();
-  for (int k = 0; k < 4; ++k) push_triangle(v, apex, c[static_cast<size_t>(k)], c[static_cast<size_t>((k + 1) % 4)], it.colour);
+  for (int k = 0; k < 4; ++k)
+    push_triangle(v, apex, c[static_cast<size_t>(k)], c[static_cast<size_t>((k + 1) % 4)], it.colour);
   Rgba cap = it.colour;
   cap.a *= 0.6f;
   push_quad(v, c[0], c[1], c[2], c[3], cap);
@@ -282,12 +283,23 @@ std::uintptr_t GlSceneRenderer::render(const SceneList& scene, const OrbitCamera
     // lines stay on top of them.
     auto& dst = (translucent && it.role != ItemRole::kHeatmap) ? translucent_ : opaque_;
     switch (it.kind) {
-      case ItemKind::kBox: push_box(dst, it); break;
-      case ItemKind::kPyramid: push_pyramid(dst, it); break;
-      case ItemKind::kBone: push_bone(dst, it); break;
-      case ItemKind::kJoint: push_joint(dst, it); break;
-      case ItemKind::kCell: push_cell(dst, it); break;
-      case ItemKind::kSegment: break;
+      case ItemKind::kBox:
+        push_box(dst, it);
+        break;
+      case ItemKind::kPyramid:
+        push_pyramid(dst, it);
+        break;
+      case ItemKind::kBone:
+        push_bone(dst, it);
+        break;
+      case ItemKind::kJoint:
+        push_joint(dst, it);
+        break;
+      case ItemKind::kCell:
+        push_cell(dst, it);
+        break;
+      case ItemKind::kSegment:
+        break;
     }
   }
 
@@ -305,7 +317,8 @@ std::uintptr_t GlSceneRenderer::render(const SceneList& scene, const OrbitCamera
   glEnable(GL_BLEND);
   glBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
 
-  const Eigen::Matrix4f vp = (camera.projection(static_cast<double>(width_px) / height_px) * camera.view()).cast<float>();
+  const Eigen::Matrix4f vp =
+      (camera.projection(static_cast<double>(width_px) / height_px) * camera.view()).cast<float>();
   const Eigen::Vector3f view_dir = camera.forward().cast<float>();
   glUseProgram(program_);
   glUniformMatrix4fv(u_vp_, 1, GL_FALSE, vp.data());  // Eigen is column-major, as GL expects

@@ -9,8 +9,8 @@
 namespace lmc::ui {
 
 struct HeatmapGrid : PlacementHeatmap {
-  bool fine = false;                 // false for the coarse preview pass
-  std::uint64_t key = 0;             // the input key the grid was computed for
+  bool fine = false;      // false for the coarse preview pass
+  std::uint64_t key = 0;  // the input key the grid was computed for
 };
 
 }  // namespace lmc::ui

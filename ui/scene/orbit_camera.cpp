@@ -28,7 +28,9 @@ Eigen::Vector3d OrbitCamera::eye() const {
   return target_ + distance_mm_ * Eigen::Vector3d(cp * sy, sp, cp * cy);
 }
 
-Eigen::Vector3d OrbitCamera::forward() const { return (target_ - eye()).normalized(); }
+Eigen::Vector3d OrbitCamera::forward() const {
+  return (target_ - eye()).normalized();
+}
 
 Eigen::Vector3d OrbitCamera::right() const {
   // Horizontal by construction: perpendicular to the yaw direction.
@@ -36,7 +38,9 @@ Eigen::Vector3d OrbitCamera::right() const {
   return Eigen::Vector3d(cy, 0.0, -sy);
 }
 
-Eigen::Vector3d OrbitCamera::up() const { return right().cross(forward()).normalized(); }
+Eigen::Vector3d OrbitCamera::up() const {
+  return right().cross(forward()).normalized();
+}
 
 Eigen::Matrix4d OrbitCamera::view() const {
   const Eigen::Vector3d f = forward(), r = right(), u = up(), e = eye();
@@ -93,8 +97,7 @@ void OrbitCamera::orbit(double dx_px, double dy_px) {
 
 void OrbitCamera::pan(double dx_px, double dy_px, double viewport_h) {
   // World size of one pixel at the target's depth.
-  const double mm_per_px =
-      2.0 * distance_mm_ * std::tan(fov_y_deg_ * kRadPerDeg * 0.5) / std::max(viewport_h, 1.0);
+  const double mm_per_px = 2.0 * distance_mm_ * std::tan(fov_y_deg_ * kRadPerDeg * 0.5) / std::max(viewport_h, 1.0);
   target_ += (-dx_px * right() + dy_px * up()) * mm_per_px;
 }
 
@@ -124,10 +127,22 @@ void OrbitCamera::frame_bounds(const Eigen::Vector3d& lo, const Eigen::Vector3d&
 
 void OrbitCamera::set_named_view(NamedView view) {
   switch (view) {
-    case NamedView::kTop: yaw_deg_ = 0.0; pitch_deg_ = kMaxPitch; break;
-    case NamedView::kFront: yaw_deg_ = 0.0; pitch_deg_ = 8.0; break;
-    case NamedView::kSide: yaw_deg_ = 90.0; pitch_deg_ = 8.0; break;
-    case NamedView::kPerspective: yaw_deg_ = 20.0; pitch_deg_ = 50.0; break;
+    case NamedView::kTop:
+      yaw_deg_ = 0.0;
+      pitch_deg_ = kMaxPitch;
+      break;
+    case NamedView::kFront:
+      yaw_deg_ = 0.0;
+      pitch_deg_ = 8.0;
+      break;
+    case NamedView::kSide:
+      yaw_deg_ = 90.0;
+      pitch_deg_ = 8.0;
+      break;
+    case NamedView::kPerspective:
+      yaw_deg_ = 20.0;
+      pitch_deg_ = 50.0;
+      break;
   }
 }
 

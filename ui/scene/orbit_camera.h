@@ -41,7 +41,7 @@ class OrbitCamera {
   std::optional<Eigen::Vector2d> project(const Eigen::Vector3d& world, double w, double h) const;
 
   // ---- gestures as deltas ---------------------------------------------------------------------
-  void orbit(double dx_px, double dy_px);                  // 0.35° per pixel
+  void orbit(double dx_px, double dy_px);                   // 0.35° per pixel
   void pan(double dx_px, double dy_px, double viewport_h);  // the target moves with the cursor
   // Zooms by `steps` wheel notches (positive = closer) keeping the point under (px, py) fixed on
   // screen: the whole camera is scaled about that point, which leaves its projection unchanged.

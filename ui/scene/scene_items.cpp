@@ -28,8 +28,8 @@ Rgba device_hue(int i, float alpha) {
   return {h[0], h[1], h[2], alpha};
 }
 
-void add_segment(SceneList& out, ItemRole role, const Eigen::Vector3d& a, const Eigen::Vector3d& b, Rgba c,
-                 int id = -1, std::uint32_t flags = kFlagNone) {
+void add_segment(SceneList& out, ItemRole role, const Eigen::Vector3d& a, const Eigen::Vector3d& b, Rgba c, int id = -1,
+                 std::uint32_t flags = kFlagNone) {
   SceneItem it;
   it.kind = ItemKind::kSegment;
   it.role = role;
@@ -147,8 +147,8 @@ void add_device(SceneList& out, const SceneInputs& in, int i) {
   }
   std::string text = d.slot;
   if (d.serial) text += " (" + *d.serial + ")";
-  out.labels.push_back({t * Eigen::Vector3d(0, 22, 0), text, i == in.selected ? kSelectedColour : Rgba{0.9f, 0.92f, 0.96f, 1.0f},
-                        i == in.selected});
+  out.labels.push_back({t * Eigen::Vector3d(0, 22, 0), text,
+                        i == in.selected ? kSelectedColour : Rgba{0.9f, 0.92f, 0.96f, 1.0f}, i == in.selected});
 
   if (i == in.selected && in.locks != nullptr && static_cast<size_t>(i) < in.locks->size()) {
     const DeviceLocks& lk = (*in.locks)[static_cast<size_t>(i)];
@@ -156,8 +156,10 @@ void add_device(SceneList& out, const SceneInputs& in, int i) {
       if (in.active_handle == k || in.hovered_handle == k) return Rgba{1.0f, 1.0f, 1.0f, 1.0f};
       return base;
     };
-    if (!lk.locked[4]) add_ring(out, HandleKind::kYaw, d, ring_colour(HandleKind::kYaw, {0.35f, 0.90f, 0.45f, 1.0f}), i);
-    if (!lk.locked[3]) add_ring(out, HandleKind::kTilt, d, ring_colour(HandleKind::kTilt, {0.95f, 0.40f, 0.40f, 1.0f}), i);
+    if (!lk.locked[4])
+      add_ring(out, HandleKind::kYaw, d, ring_colour(HandleKind::kYaw, {0.35f, 0.90f, 0.45f, 1.0f}), i);
+    if (!lk.locked[3])
+      add_ring(out, HandleKind::kTilt, d, ring_colour(HandleKind::kTilt, {0.95f, 0.40f, 0.40f, 1.0f}), i);
   }
 }
 
@@ -220,8 +222,7 @@ std::array<Eigen::Vector3d, 4> pyramid_corners(const Eigen::Isometry3d& device_t
                                                double half_long_deg, double half_short_deg) {
   // Corner directions (±tan α, 1, ±tan β) in the device frame, scaled so each edge is as long as
   // the range: the pyramid is drawn "up to the sensor range" along its edges.
-  const double tx = std::tan(half_long_deg * kRadPerDeg),
-               tz = std::tan(half_short_deg * kRadPerDeg);
+  const double tx = std::tan(half_long_deg * kRadPerDeg), tz = std::tan(half_short_deg * kRadPerDeg);
   const double sx[4] = {-1, 1, 1, -1}, sz[4] = {-1, -1, 1, 1};
   std::array<Eigen::Vector3d, 4> c;
   for (int k = 0; k < 4; ++k) {
@@ -248,7 +249,8 @@ const std::vector<BoneSpec>& hand_bones() {
 }
 
 size_t SceneList::count(ItemRole role) const {
-  return static_cast<size_t>(std::count_if(items.begin(), items.end(), [&](const SceneItem& i) { return i.role == role; }));
+  return static_cast<size_t>(
+      std::count_if(items.begin(), items.end(), [&](const SceneItem& i) { return i.role == role; }));
 }
 
 Eigen::Isometry3d device_transform(const LayoutDevice& d) {
@@ -276,7 +278,9 @@ std::array<std::array<Eigen::Vector3d, 2>, 12> box_edges(const SceneItem& box) {
 
 std::array<Eigen::Vector3d, 4> box_top_face(const SceneItem& box) {
   const Eigen::Vector3d& h = box.b;
-  const auto corner = [&](double sx, double sz) { return box.transform * (box.a + Eigen::Vector3d(sx * h.x(), h.y(), sz * h.z())); };
+  const auto corner = [&](double sx, double sz) {
+    return box.transform * (box.a + Eigen::Vector3d(sx * h.x(), h.y(), sz * h.z()));
+  };
   return {corner(-1, -1), corner(1, -1), corner(1, 1), corner(-1, 1)};
 }
 

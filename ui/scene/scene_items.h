@@ -12,11 +12,11 @@
 
 #include "core/hand/hand_frame.h"
 #include "core/layout/layout.h"
+#include "ui/scene/colour_maps.h"
+#include "ui/scene/device_locks.h"
+#include "ui/scene/drag_controller.h"
 #include "ui/scene/finger_ray.h"
 #include "ui/scene/heatmap_grid.h"
-#include "ui/scene/device_locks.h"
-#include "ui/scene/colour_maps.h"
-#include "ui/scene/drag_controller.h"
 
 namespace lmc::ui {
 
@@ -38,7 +38,20 @@ enum ItemFlags : std::uint32_t {
 };
 
 // What an item stands for, so tests and tooltips can find it.
-enum class ItemRole : int { kTable, kAxis, kDevice, kDeviceUsbMarker, kPyramid, kHandle, kHand, kFinger, kRay, kHeatmap, kGhost, kSearchBox };
+enum class ItemRole : int {
+  kTable,
+  kAxis,
+  kDevice,
+  kDeviceUsbMarker,
+  kPyramid,
+  kHandle,
+  kHand,
+  kFinger,
+  kRay,
+  kHeatmap,
+  kGhost,
+  kSearchBox
+};
 
 struct SceneItem {
   ItemKind kind = ItemKind::kSegment;

@@ -41,13 +41,15 @@ void draw_calibration_result(const std::string& trial, const calibration::Calibr
       const CalibrationRow& row = rows[i];
       ImGui::TableNextRow();
       ImGui::TableNextColumn();
-      ImGui::TextColored(ImGui::ColorConvertU32ToFloat4(device_colour_u32(static_cast<int>(i))), "%s", row.slot.c_str());
+      ImGui::TextColored(ImGui::ColorConvertU32ToFloat4(device_colour_u32(static_cast<int>(i))), "%s",
+                         row.slot.c_str());
       ImGui::TableNextColumn();
       ImGui::Text("%d", row.samples);
       if (row.beyond_cut > 0 && ImGui::IsItemHovered()) {
-        ImGui::SetTooltip("%d of its samples had a coordinate clamped at the controller's axis cut: "
-                          "only their other coordinates were used",
-                          row.beyond_cut);
+        ImGui::SetTooltip(
+            "%d of its samples had a coordinate clamped at the controller's axis cut: "
+            "only their other coordinates were used",
+            row.beyond_cut);
       }
       ImGui::TableNextColumn();
       const std::string rms = calibration_mm_text(row.before_mm) + " > " + calibration_mm_text(row.after_mm);
@@ -65,8 +67,9 @@ void draw_calibration_result(const std::string& trial, const calibration::Calibr
     }
     ImGui::EndTable();
   }
-  const std::string disagreement = "Disagreement between controllers: " + calibration_mm_text(r.disagreement_before_mm) + " > " +
-                                   calibration_mm_text(r.disagreement_after_mm) + " mm RMS";
+  const std::string disagreement =
+      "Disagreement between controllers: " + calibration_mm_text(r.disagreement_before_mm) + " > " +
+      calibration_mm_text(r.disagreement_after_mm) + " mm RMS";
   ImGui::TextUnformatted(disagreement.c_str());
   const auto warnings = r.all_warnings();
   if (warnings.empty()) ImGui::TextColored(kCalibrationGood, "No warnings.");
@@ -81,7 +84,6 @@ void draw_calibration_result(const std::string& trial, const calibration::Calibr
   for (const auto& n : notes) ImGui::TextWrapped("note: %s", n.c_str());
   for (const auto& n : r.notes) ImGui::TextWrapped("note: %s", n.c_str());
   ImGui::PopStyleColor();
-
 }
 
 }  // namespace lmc::ui

@@ -24,7 +24,9 @@ ImU32 on_dark(const figures::Rgb& c, int alpha = 255) {
   return IM_COL32(c.r, c.g, c.b, alpha);
 }
 
-std::string axis_title(const figures::Axis& a) { return a.unit.empty() ? a.label : a.label + " (" + a.unit + ")"; }
+std::string axis_title(const figures::Axis& a) {
+  return a.unit.empty() ? a.label : a.label + " (" + a.unit + ")";
+}
 
 void dashed_line(ImDrawList* dl, ImVec2 a, ImVec2 b, ImU32 colour, figures::Dash dash) {
   if (dash == figures::Dash::solid) {
@@ -32,7 +34,8 @@ void dashed_line(ImDrawList* dl, ImVec2 a, ImVec2 b, ImU32 colour, figures::Dash
     return;
   }
   const float on = dash == figures::Dash::dashed ? 7.0F : 2.0F, off = dash == figures::Dash::dashed ? 5.0F : 4.0F;
-  for (float x = a.x; x < b.x; x += on + off) dl->AddLine(ImVec2(x, a.y), ImVec2(std::min(x + on, b.x), b.y), colour, 1.2F);
+  for (float x = a.x; x < b.x; x += on + off)
+    dl->AddLine(ImVec2(x, a.y), ImVec2(std::min(x + on, b.x), b.y), colour, 1.2F);
 }
 
 }  // namespace
@@ -72,7 +75,8 @@ void draw_figure_view(const char* id, const figures::Figure& f, float height_px)
     if (y < p0.y - 1 || y > p1.y + 1) continue;
     dl->AddLine(ImVec2(p0.x, y), ImVec2(p1.x, y), kPlotGridLine);
     const std::string text = figures::tick_label(t, yticks);
-    dl->AddText(ImVec2(p0.x - ImGui::CalcTextSize(text.c_str()).x - 4, y - ImGui::GetTextLineHeight() * 0.5F), kPlotTickText, text.c_str());
+    dl->AddText(ImVec2(p0.x - ImGui::CalcTextSize(text.c_str()).x - 4, y - ImGui::GetTextLineHeight() * 0.5F),
+                kPlotTickText, text.c_str());
   }
   const auto xticks = figures::nice_ticks(xr.lo, xr.hi, std::max(2, static_cast<int>((p1.x - p0.x) / 90)));
   for (const double t : xticks) {
@@ -114,8 +118,8 @@ void draw_figure_view(const char* id, const figures::Figure& f, float height_px)
         const double d2 = (p.x - mouse.x) * (p.x - mouse.x) + (p.y - mouse.y) * (p.y - mouse.y);
         if (d2 < best_d2) {
           best_d2 = d2;
-          nearest = ser.name + ": " + axis_title(f.x) + " " + figures::tick_label(ser.x[i], {0.0, 0.01}) + ", " + axis_title(f.y) + " " +
-                    figures::tick_label(ser.y[i], {0.0, 0.01});
+          nearest = ser.name + ": " + axis_title(f.x) + " " + figures::tick_label(ser.x[i], {0.0, 0.01}) + ", " +
+                    axis_title(f.y) + " " + figures::tick_label(ser.y[i], {0.0, 0.01});
         }
       }
     }
@@ -139,7 +143,8 @@ void draw_figure_filling(const char* id, const figures::Figure& figure) {
 
 void draw_figure_grid_filling(const figures::FigureGrid& grid) {
   ImGui::TextUnformatted(grid.title.c_str());
-  const float each = (ImGui::GetContentRegionAvail().y - 6) / static_cast<float>(std::max<size_t>(1, grid.panels.size()));
+  const float each =
+      (ImGui::GetContentRegionAvail().y - 6) / static_cast<float>(std::max<size_t>(1, grid.panels.size()));
   const float overhead = 2.2F * ImGui::GetTextLineHeightWithSpacing();
   for (size_t k = 0; k < grid.panels.size(); ++k) {
     figures::Figure panel = grid.panels[k];

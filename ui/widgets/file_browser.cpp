@@ -43,7 +43,8 @@ std::optional<std::filesystem::path> FileBrowser::draw() {
         std::snprintf(label, sizeof label, "%s", e.name.c_str());
       }
       const bool is_sel = !e.is_directory && e.name == name_;
-      if (ImGui::Selectable(label, is_sel, ImGuiSelectableFlags_DontClosePopups | ImGuiSelectableFlags_AllowDoubleClick)) {
+      if (ImGui::Selectable(label, is_sel,
+                            ImGuiSelectableFlags_DontClosePopups | ImGuiSelectableFlags_AllowDoubleClick)) {
         if (e.is_directory) {
           enter_dir = e.name;
         } else {
@@ -55,8 +56,8 @@ std::optional<std::filesystem::path> FileBrowser::draw() {
     ImGui::EndChild();
     if (!enter_dir.empty()) model_.enter(enter_dir);
     ImGui::SetNextItemWidth(-1);
-    const bool enter = ImGui::InputTextWithHint("##name", "file name", name_, sizeof name_,
-                                                ImGuiInputTextFlags_EnterReturnsTrue);
+    const bool enter =
+        ImGui::InputTextWithHint("##name", "file name", name_, sizeof name_, ImGuiInputTextFlags_EnterReturnsTrue);
     const char* ok_label = mode_ == Mode::kOpen ? "Open" : "Save";
     const bool ok = ImGui::Button(ok_label, ImVec2(100, 0)) || enter;
     ImGui::SameLine();

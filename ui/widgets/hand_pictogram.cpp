@@ -84,7 +84,8 @@ void draw_hand_pictogram(const MotionPictogram& p, ImVec2 size) {
       const auto b = project(it.b);
       if (!a || !b) continue;
       const Eigen::Vector3d mid = 0.5 * (it.a + it.b);
-      strokes.push_back({(mid - cam.eye()).norm(), false, *a, *b, 2.0F * pixels(mid, it.size), to_u32(it.colour, 1.0F)});
+      strokes.push_back(
+          {(mid - cam.eye()).norm(), false, *a, *b, 2.0F * pixels(mid, it.size), to_u32(it.colour, 1.0F)});
     } else if (it.kind == ItemKind::kJoint) {
       const auto a = project(it.a);
       if (!a) continue;

@@ -62,7 +62,8 @@ void draw_label_strips(const char* id, std::span<const double> x, const std::vec
     dl->PushClipRect(ImVec2(p0.x, y), ImVec2(p1.x, y + strip_height_px), true);
     for (const LabelRun& r : label_runs(x, strip.labels, lo, hi)) {
       if (r.label < 0) continue;
-      dl->AddRectFilled(ImVec2(to_x(r.x_from), y), ImVec2(std::max(to_x(r.x_to), to_x(r.x_from) + 1.0F), y + strip_height_px),
+      dl->AddRectFilled(ImVec2(to_x(r.x_from), y),
+                        ImVec2(std::max(to_x(r.x_to), to_x(r.x_from) + 1.0F), y + strip_height_px),
                         label_colour(r.label));
     }
     dl->PopClipRect();
@@ -99,7 +100,8 @@ void draw_label_legend() {
     first = false;
     const ImVec2 at = ImGui::GetCursorScreenPos();
     const float box = ImGui::GetTextLineHeight() * 0.7F;
-    ImGui::GetWindowDrawList()->AddRectFilled(ImVec2(at.x, at.y + 3), ImVec2(at.x + box, at.y + 3 + box), label_colour(it.label));
+    ImGui::GetWindowDrawList()->AddRectFilled(ImVec2(at.x, at.y + 3), ImVec2(at.x + box, at.y + 3 + box),
+                                              label_colour(it.label));
     ImGui::Dummy(ImVec2(box + 2, box));
     ImGui::SameLine();
     ImGui::TextDisabled("%s", it.text);

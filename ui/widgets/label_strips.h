@@ -14,8 +14,8 @@
 namespace lmc::ui {
 
 struct LabelStrip {
-  std::string group;   // "LMC1": written once in the gutter for consecutive strips
-  std::string name;    // "index": the tooltip's words
+  std::string group;  // "LMC1": written once in the gutter for consecutive strips
+  std::string name;   // "index": the tooltip's words
   std::span<const std::int8_t> labels;
 };
 

@@ -15,13 +15,15 @@
 namespace lmc::ui {
 
 void draw_live_hands_view(const char* id, OrbitCamera& camera, const Layout& layout, const std::vector<LiveHand>& hands,
-                          const std::string& caption, const FusedHand* fused, const std::vector<SceneItem>* controllers) {
+                          const std::string& caption, const FusedHand* fused,
+                          const std::vector<SceneItem>* controllers) {
   ImDrawList* dl = ImGui::GetWindowDrawList();
   const ImVec2 origin = ImGui::GetCursorScreenPos();
   const ImVec2 size = ImGui::GetContentRegionAvail();
   ImGui::InvisibleButton(id, ImVec2(std::max(size.x, 1.0F), std::max(size.y, 1.0F)));
   const ImGuiIO& io = ImGui::GetIO();
-  if (ImGui::IsItemActive() && ImGui::IsMouseDragging(ImGuiMouseButton_Left)) camera.orbit(io.MouseDelta.x, io.MouseDelta.y);
+  if (ImGui::IsItemActive() && ImGui::IsMouseDragging(ImGuiMouseButton_Left))
+    camera.orbit(io.MouseDelta.x, io.MouseDelta.y);
   if (ImGui::IsItemHovered() && io.MouseWheel != 0) {
     camera.zoom_towards(io.MousePos.x - origin.x, io.MousePos.y - origin.y, size.x, size.y, io.MouseWheel);
   }
@@ -102,7 +104,8 @@ void draw_live_hands_view(const char* id, OrbitCamera& camera, const Layout& lay
       const Vec3& a = fused->points[static_cast<size_t>(b.from)];
       const Vec3& c = fused->points[static_cast<size_t>(b.to)];
       if (!a.allFinite() || !c.allFinite()) continue;
-      const Rgba rgba = b.digit >= 0 ? seen_count_colour(fused->seen_by[static_cast<size_t>(b.digit)]) : Rgba{0.9F, 0.9F, 0.9F, 1.0F};
+      const Rgba rgba =
+          b.digit >= 0 ? seen_count_colour(fused->seen_by[static_cast<size_t>(b.digit)]) : Rgba{0.9F, 0.9F, 0.9F, 1.0F};
       line(a, c, to_u32(Rgba{rgba.r, rgba.g, rgba.b, 1.0F}), 5.0F);
     }
   }

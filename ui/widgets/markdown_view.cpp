@@ -11,8 +11,9 @@ namespace {
 
 // The workbench font has Latin-1 (±, °, ×) but not these; reports use them.
 std::string displayable(std::string text) {
-  const std::pair<const char*, const char*> swaps[] = {{"\u2212", "-"}, {"\u2264", "<="}, {"\u2265", ">="}, {"\u2026", "..."},
-                                                       {"\u2013", "-"}, {"\u2014", "-"}, {"\u2192", "->"}};
+  const std::pair<const char*, const char*> swaps[] = {{"\u2212", "-"},   {"\u2264", "<="}, {"\u2265", ">="},
+                                                       {"\u2026", "..."}, {"\u2013", "-"},  {"\u2014", "-"},
+                                                       {"\u2192", "->"}};
   for (const auto& [from, to] : swaps) {
     for (size_t at = text.find(from); at != std::string::npos; at = text.find(from, at)) {
       text.replace(at, std::string(from).size(), to);
@@ -48,7 +49,8 @@ void draw_markdown_view(const char* id, const std::vector<MarkdownBlock>& blocks
       case MarkdownBlock::Kind::kTable: {
         const int columns = std::max<int>(1, static_cast<int>(b.header.size()));
         const std::string table_id = "table" + std::to_string(table++);
-        const ImGuiTableFlags flags = ImGuiTableFlags_RowBg | ImGuiTableFlags_BordersInnerV | ImGuiTableFlags_SizingFixedFit;
+        const ImGuiTableFlags flags =
+            ImGuiTableFlags_RowBg | ImGuiTableFlags_BordersInnerV | ImGuiTableFlags_SizingFixedFit;
         if (ImGui::BeginTable(table_id.c_str(), columns, flags)) {
           for (const auto& h : b.header) ImGui::TableSetupColumn(displayable(h).c_str());
           ImGui::TableHeadersRow();

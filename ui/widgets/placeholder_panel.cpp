@@ -4,8 +4,7 @@
 
 namespace lmc::ui {
 
-void draw_placeholder_panel(const char* heading, const std::string& purpose,
-                            const std::vector<std::string>& planned) {
+void draw_placeholder_panel(const char* heading, const std::string& purpose, const std::vector<std::string>& planned) {
   const ImVec2 avail = ImGui::GetContentRegionAvail();
   const float width = avail.x < 720.0f ? avail.x : 720.0f;
   ImGui::SetCursorPosX(ImGui::GetCursorPosX() + (avail.x - width) * 0.5f);

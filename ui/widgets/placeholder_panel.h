@@ -5,7 +5,6 @@
 
 namespace lmc::ui {
 
-void draw_placeholder_panel(const char* heading, const std::string& purpose,
-                            const std::vector<std::string>& planned);
+void draw_placeholder_panel(const char* heading, const std::string& purpose, const std::vector<std::string>& planned);
 
 }  // namespace lmc::ui

@@ -54,7 +54,8 @@ void SeriesPlot::draw(const char* id, const std::vector<PlotSeries>& series, con
     const float box = ImGui::GetTextLineHeight() * 0.7F;
     ImGui::PushID(static_cast<int>(s));
     const std::string label = "    " + ps.name;
-    if (ImGui::Selectable(label.c_str(), !off, 0, ImVec2(ImGui::CalcTextSize(label.c_str()).x, 0))) hidden_[ps.name] = !off;
+    if (ImGui::Selectable(label.c_str(), !off, 0, ImVec2(ImGui::CalcTextSize(label.c_str()).x, 0)))
+      hidden_[ps.name] = !off;
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("Click to %s %s", off ? "show" : "hide", ps.name.c_str());
     ImGui::PopID();
     ImDrawList* dl = ImGui::GetWindowDrawList();
@@ -155,12 +156,15 @@ void SeriesPlot::draw(const char* id, const std::vector<PlotSeries>& series, con
       const float x = p0.x + (static_cast<float>(c) + 0.5F) * column_w;
       if (col.touches_gap && !col.has_data) {
         // Missing values: a faint band, never a line at zero.
-        dl->AddRectFilled(ImVec2(x - column_w * 0.5F, p0.y), ImVec2(x + column_w * 0.5F + 0.5F, p1.y), IM_COL32(120, 120, 140, 28));
+        dl->AddRectFilled(ImVec2(x - column_w * 0.5F, p0.y), ImVec2(x + column_w * 0.5F + 0.5F, p1.y),
+                          IM_COL32(120, 120, 140, 28));
       }
       if (!col.has_data) continue;
       if (col.joins_previous) dl->AddLine(ImVec2(prev_x, prev_y), ImVec2(x, to_y(col.y_first)), colour, 1.5F);
-      if (col.y_max > col.y_min) dl->AddLine(ImVec2(x, to_y(col.y_min)), ImVec2(x, to_y(col.y_max)), colour, 1.5F);
-      else dl->AddCircleFilled(ImVec2(x, to_y(col.y_min)), 1.2F, colour);
+      if (col.y_max > col.y_min)
+        dl->AddLine(ImVec2(x, to_y(col.y_min)), ImVec2(x, to_y(col.y_max)), colour, 1.5F);
+      else
+        dl->AddCircleFilled(ImVec2(x, to_y(col.y_min)), 1.2F, colour);
       prev_x = x;
       prev_y = to_y(col.y_last);
     }
@@ -174,10 +178,11 @@ void SeriesPlot::draw(const char* id, const std::vector<PlotSeries>& series, con
       const size_t s = shown[k];
       const double v = series_value_at(series[s].x, series[s].y, *x_->cursor);
       // Read off the axis: decimals for its visible span (a log axis: of the values it spans).
-      const std::string value = o.log_y ? value_label(v, std::pow(10.0, y_lo), std::pow(10.0, y_hi))
-                                        : value_label(v, y_lo, y_hi);
+      const std::string value =
+          o.log_y ? value_label(v, std::pow(10.0, y_lo), std::pow(10.0, y_hi)) : value_label(v, y_lo, y_hi);
       const std::string text = series[s].name + " " + (std::isfinite(v) ? value : std::string("missing"));
-      dl->AddText(ImVec2(x + 4, text_y), to_u32(series_colour(series[s].colour >= 0 ? series[s].colour : static_cast<int>(s)), 1.0F),
+      dl->AddText(ImVec2(x + 4, text_y),
+                  to_u32(series_colour(series[s].colour >= 0 ? series[s].colour : static_cast<int>(s)), 1.0F),
                   text.c_str());
       text_y += ImGui::GetTextLineHeight();
     }

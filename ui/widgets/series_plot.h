@@ -20,9 +20,9 @@ namespace lmc::ui {
 inline constexpr float kSeriesPlotGutterPx = 48.0F;
 
 struct PlotSeries {
-  std::string name;               // legend text and the key of its on/off state
-  std::span<const double> x, y;   // x ascending, same length
-  int colour = -1;                // palette index; −1: the series' position
+  std::string name;              // legend text and the key of its on/off state
+  std::span<const double> x, y;  // x ascending, same length
+  int colour = -1;               // palette index; −1: the series' position
 };
 
 struct SeriesPlotOptions {
@@ -34,7 +34,8 @@ struct SeriesPlotOptions {
 
 class SeriesPlot {
  public:
-  explicit SeriesPlot(std::shared_ptr<LinkedXRange> x_range = std::make_shared<LinkedXRange>()) : x_(std::move(x_range)) {}
+  explicit SeriesPlot(std::shared_ptr<LinkedXRange> x_range = std::make_shared<LinkedXRange>())
+      : x_(std::move(x_range)) {}
   // Draws at the cursor, full available width. Series hidden with the legend stay hidden by name.
   void draw(const char* id, const std::vector<PlotSeries>& series, const SeriesPlotOptions& options);
   const std::shared_ptr<LinkedXRange>& x_range() const { return x_; }

@@ -7,7 +7,8 @@ namespace lmc::ui {
 void SplitPanels::draw(const std::function<void()>& left, const std::function<void()>& right) {
   const ImVec2 avail = ImGui::GetContentRegionAvail();
   const float splitter_w = options_.splitter_width;
-  right_width_ = std::clamp(right_width_, options_.min_right, std::max(options_.min_right, avail.x - options_.min_left));
+  right_width_ =
+      std::clamp(right_width_, options_.min_right, std::max(options_.min_right, avail.x - options_.min_left));
   // On a window too narrow for both minimums the left side still keeps a usable strip.
   const float left_w = std::max(200.0f, avail.x - right_width_ - splitter_w);
 

@@ -10,7 +10,7 @@
 namespace lmc::ui {
 
 struct SplitPanelsOptions {
-  float min_left = 300.0f;     // the splitter stops this far from the left edge
+  float min_left = 300.0f;  // the splitter stops this far from the left edge
   float min_right = 320.0f;
   float splitter_width = 6.0f;
   ImGuiWindowFlags left_flags = ImGuiWindowFlags_NoScrollbar | ImGuiWindowFlags_NoScrollWithMouse;

@@ -28,7 +28,8 @@ class WidgetAnchors {
   // or below); false when it was not drawn.
   bool fits_across(const std::string& name) const {
     const auto it = rects_.find(name);
-    return it != rects_.end() && it->second.min.x >= it->second.clip_min.x - 0.5f && it->second.max.x <= it->second.clip_max.x + 0.5f;
+    return it != rects_.end() && it->second.min.x >= it->second.clip_min.x - 0.5f &&
+           it->second.max.x <= it->second.clip_max.x + 0.5f;
   }
   // The whole item is inside the window's visible rectangle.
   bool fully_visible(const std::string& name) const {

@@ -37,8 +37,8 @@
 #include <random>
 
 #include "app/lmc/command.h"
-#include "core/io/pose_source.h"
 #include "core/io/layout_json.h"
+#include "core/io/pose_source.h"
 #include "core/metric/layout_tally.h"
 #include "core/optimise/pso.h"
 #include "core/optimise/search_space.h"
@@ -216,17 +216,14 @@ void setup_bench(CLI::App& app) {
       // The first 2,000 frames: pairs of ~0.1 s fit between the machine's slow phases.
       const std::span<const lmc::PreparedFrame> some(frames.data(), std::min<size_t>(frames.size(), 2000));
       const PairedTimes p = measure_terms_cost(views_of(layouts), 30, 4, some, limits, 2.0 * opt->min_seconds);
-      terms = {{"layouts", 30},
-               {"frames", some.size()},
-               {"bounds", lmc::format_search_bounds(table)},
-               {"pairs", p.pairs},
-               {"study_seconds", p.study_s},
-               {"robust_seconds", p.robust_s},
+      terms = {{"layouts", 30},        {"frames", some.size()},      {"bounds", lmc::format_search_bounds(table)},
+               {"pairs", p.pairs},     {"study_seconds", p.study_s}, {"robust_seconds", p.robust_s},
                {"cost", p.ratio - 1.0}};
       if (!opt->json) {
-        std::printf("robust terms per evaluation: %+.1f %% (30 random layouts on the table × %zu frames, 1 thread: "
-                    "study %.1f ms, robust %.1f ms; medians of %d adjacent pairs)\n",
-                    100.0 * (p.ratio - 1.0), some.size(), 1e3 * p.study_s, 1e3 * p.robust_s, p.pairs);
+        std::printf(
+            "robust terms per evaluation: %+.1f %% (30 random layouts on the table × %zu frames, 1 thread: "
+            "study %.1f ms, robust %.1f ms; medians of %d adjacent pairs)\n",
+            100.0 * (p.ratio - 1.0), some.size(), 1e3 * p.study_s, 1e3 * p.robust_s, p.pairs);
         std::fflush(stdout);
       }
     }
@@ -289,10 +286,11 @@ void setup_bench(CLI::App& app) {
         const double cost = seconds["robust-table"] / seconds["study-table"] - 1.0;
         j["robust_terms_cost"] = cost;
         if (!opt->json) {
-          std::printf("  the robust terms cost %+.1f %% of a search on the same bounds (robust-table against "
-                      "study-table, one run each: the machine's drift between runs is in it; the figure per "
-                      "evaluation above is not)\n",
-                      100.0 * cost);
+          std::printf(
+              "  the robust terms cost %+.1f %% of a search on the same bounds (robust-table against "
+              "study-table, one run each: the machine's drift between runs is in it; the figure per "
+              "evaluation above is not)\n",
+              100.0 * cost);
         }
       }
     }

@@ -42,12 +42,14 @@ void run_validation(const CalibrateArgs& a) {
   std::vector<lmc::devices::CalibrationValidationCase> cases;
   int unexpected = 0;
   for (int k = 0; k < options.cases; ++k) {
-    cases.push_back(lmc::devices::run_calibration_case(layout, options.first_seed + static_cast<std::uint64_t>(k), options));
+    cases.push_back(
+        lmc::devices::run_calibration_case(layout, options.first_seed + static_cast<std::uint64_t>(k), options));
     for (const auto& w : cases.back().warnings) std::cout << "seed " << cases.back().seed << ": warning: " << w << "\n";
     unexpected += cases.back().vicon_ok && cases.back().consensus_ok ? 0 : 1;
   }
-  std::cout << "Layout " << layout.name << ", " << options.cases << " simulated still-hand trials of " << lmc::format_fixed(options.seconds, 0)
-            << " s, errors injected per controller up to " << lmc::format_fixed(options.max_translation_mm, 0) << " mm and "
+  std::cout << "Layout " << layout.name << ", " << options.cases << " simulated still-hand trials of "
+            << lmc::format_fixed(options.seconds, 0) << " s, errors injected per controller up to "
+            << lmc::format_fixed(options.max_translation_mm, 0) << " mm and "
             << lmc::format_fixed(options.max_rotation_deg, 0) << "°\n\n"
             << lmc::devices::validation_table(cases, options);
   for (const bool vicon : {true, false}) {
@@ -65,7 +67,8 @@ void run_calibrate(const CalibrateArgs& a) {
     return;
   }
   if (a.trial.empty()) throw lmc::Error("give a calibration trial (an LMC recording file), or --validate-sim N");
-  if (a.layout.empty()) throw lmc::Error("give --layout: the layout the trial was recorded with (a preset name or a file)");
+  if (a.layout.empty())
+    throw lmc::Error("give --layout: the layout the trial was recorded with (a preset name or a file)");
   if (a.out.empty()) throw lmc::Error("give -o FILE: where to write the calibrated layout");
   const lmc::Layout layout = lmc::load_layout_or_preset(a.layout);
   lmc::calibration::TrialCalibrationRequest request;
@@ -92,26 +95,32 @@ void run_calibrate(const CalibrateArgs& a) {
 
 void setup_calibrate(CLI::App& app) {
   auto a = std::make_shared<CalibrateArgs>();
-  app.add_option("trial", a->trial, "The calibration trial: an LMC recording (raw or resampled) of a still open hand, 5–10 s");
-  app.add_option("--vicon", a->vicon, "Vicon file (.trc/.c3d) of the same trial: calibrate against it instead of the controllers' consensus");
+  app.add_option("trial", a->trial,
+                 "The calibration trial: an LMC recording (raw or resampled) of a still open hand, 5–10 s");
+  app.add_option(
+      "--vicon", a->vicon,
+      "Vicon file (.trc/.c3d) of the same trial: calibrate against it instead of the controllers' consensus");
   app.add_option("--layout", a->layout, "The layout the trial was recorded with (preset name or file)");
   app.add_option("--mapping", a->mapping, "Vicon → LMC point mapping (default assets/mappings/vicon-26-to-lmc.json)");
   app.add_option("--vicon-delay-ms", a->vicon_delay_ms,
                  "Nexus's trigger Delay (ms), added to the sidecar's Vicon alignment of a real recording");
-  app.add_flag("--anchor-to-layout", a->anchor_to_layout,
-               "With --vicon: keep the layout's world frame and take only the controllers' placement relative to each other "
-               "from Vicon (when the Vicon origin is not the layout's)");
+  app.add_flag(
+      "--anchor-to-layout", a->anchor_to_layout,
+      "With --vicon: keep the layout's world frame and take only the controllers' placement relative to each other "
+      "from Vicon (when the Vicon origin is not the layout's)");
   app.add_option("-o,--output", a->out, "Where to write the calibrated layout (JSON)");
-  app.add_option("--validate-sim", a->validate_sim,
-                 "Instead: run N seeded simulated trials with injected errors (≤ 80 mm, ≤ 10° per controller) and print "
-                 "how much error calibration leaves (--layout defaults to paper-initial)")
+  app.add_option(
+         "--validate-sim", a->validate_sim,
+         "Instead: run N seeded simulated trials with injected errors (≤ 80 mm, ≤ 10° per controller) and print "
+         "how much error calibration leaves (--layout defaults to paper-initial)")
       ->check(CLI::PositiveNumber);
-  app.footer("Exit code 2 when the calibration ran but warned (a controller left as it was, an implausible correction, a "
-             "residual that stays high, swapped serials).");
+  app.footer(
+      "Exit code 2 when the calibration ran but warned (a controller left as it was, an implausible correction, a "
+      "residual that stays high, swapped serials).");
   app.callback([a] { run_calibrate(*a); });
 }
 
-const lmc::cli::CommandRegistration calibrate_command{"calibrate", "Calibrate the controllers from a short trial of a still hand", 42,
-                                        setup_calibrate};
+const lmc::cli::CommandRegistration calibrate_command{
+    "calibrate", "Calibrate the controllers from a short trial of a still hand", 42, setup_calibrate};
 
 }  // namespace

@@ -52,12 +52,12 @@ void run_devices(const DevicesOptions& opt) {
     j["devices"] = nlohmann::json::array();
     for (const auto& d : devices) {
       const std::string slot = slot_of(d.serial);
-      j["devices"].push_back({{"serial", d.serial},
-                              {"backend", d.backend},
-                              {"model", d.model},
-                              {"tracking_mode", d.tracking_mode.empty() ? nlohmann::json(nullptr)
-                                                                        : nlohmann::json(d.tracking_mode)},
-                              {"slot", slot.empty() ? nlohmann::json(nullptr) : nlohmann::json(slot)}});
+      j["devices"].push_back(
+          {{"serial", d.serial},
+           {"backend", d.backend},
+           {"model", d.model},
+           {"tracking_mode", d.tracking_mode.empty() ? nlohmann::json(nullptr) : nlohmann::json(d.tracking_mode)},
+           {"slot", slot.empty() ? nlohmann::json(nullptr) : nlohmann::json(slot)}});
     }
     std::cout << j.dump(2) << "\n";
     return;
@@ -66,7 +66,8 @@ void run_devices(const DevicesOptions& opt) {
             << " (layout " << settings.layout.name << ")\n";
   if (devices.empty()) return;
   std::cout << std::left << std::setw(22) << "SERIAL" << std::setw(8) << "SLOT" << std::setw(9) << "BACKEND"
-            << std::setw(14) << "MODE" << "MODEL\n";
+            << std::setw(14) << "MODE"
+            << "MODEL\n";
   for (const auto& d : devices) {
     const std::string slot = slot_of(d.serial);
     std::cout << std::left << std::setw(22) << d.serial << std::setw(8) << (slot.empty() ? "-" : slot) << std::setw(9)
@@ -79,13 +80,14 @@ void run_devices(const DevicesOptions& opt) {
 void setup_devices(CLI::App& app) {
   auto opt = std::make_shared<DevicesOptions>();
   app.add_option("--backend", opt->backend, "sim, leapc or replay:FILE")->capture_default_str();
-  app.add_option("--layout", opt->layout, "Layout file or preset name (slots and bound serials)")->capture_default_str();
+  app.add_option("--layout", opt->layout, "Layout file or preset name (slots and bound serials)")
+      ->capture_default_str();
   app.add_option("--sim-config", opt->sim_config, "Simulator settings (JSON) for --backend sim");
   app.add_flag("--json", opt->json, "Print {backend, layout, devices[{serial, backend, model, slot|null}]}");
   app.callback([opt] { run_devices(*opt); });
 }
 
-const lmc::cli::CommandRegistration devices_command{
-    "devices", "List controllers (serial, slot, backend)", 20, setup_devices};
+const lmc::cli::CommandRegistration devices_command{"devices", "List controllers (serial, slot, backend)", 20,
+                                                    setup_devices};
 
 }  // namespace

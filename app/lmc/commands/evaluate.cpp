@@ -7,15 +7,15 @@
 #include <string>
 
 #include "app/lmc/command.h"
-#include "core/io/pose_source.h"
-#include "core/io/layout_json.h"
-#include "core/metric/coverage.h"
 #include "core/io/atomic_write.h"
+#include "core/io/layout_json.h"
+#include "core/io/pose_source.h"
 #include "core/metric/controller_contribution.h"
-#include "core/metric/layout_report.h"
-#include "core/reports/layout_report_files.h"
+#include "core/metric/coverage.h"
 #include "core/metric/coverage_report.h"
+#include "core/metric/layout_report.h"
 #include "core/metric/robust_terms_report.h"
+#include "core/reports/layout_report_files.h"
 #include "core/visibility/frame_prep.h"
 #include "core/visibility/visibility_kernel.h"
 
@@ -59,7 +59,8 @@ void setup_evaluate(CLI::App& app) {
     for (const auto& d : layout.devices) slots.push_back(d.slot);
     // Coverage split by orientation, the robust terms and each controller's contribution: the
     // layout report's numbers (core/metric/layout_report.h), computed once for text, JSON and --report.
-    const lmc::LayoutReport report = lmc::build_layout_report(layout, poses, prepared, lmc::RobustWeights{}, opt->radius_mm);
+    const lmc::LayoutReport report =
+        lmc::build_layout_report(layout, poses, prepared, lmc::RobustWeights{}, opt->radius_mm);
     const lmc::Coverage& all = report.coverage.all;
     const lmc::Coverage& horizontal = report.coverage.horizontal;
     const lmc::Coverage& vertical = report.coverage.vertical;
@@ -121,9 +122,10 @@ void setup_evaluate(CLI::App& app) {
                   100 * c.sole_share, 100 * c.cut_share, c.off_centre, c.metric_without, 100 * c.redundant_without,
                   c.counts ? "yes" : "NO: the layout is as good without it");
     }
-    std::printf("the same inside the axis cuts (a finger with a marker beyond a controller's cut unseen by it; M inside "
-                "cut %.6f):\n",
-                all_terms.metric_m_inside_cut);
+    std::printf(
+        "the same inside the axis cuts (a finger with a marker beyond a controller's cut unseen by it; M inside "
+        "cut %.6f):\n",
+        all_terms.metric_m_inside_cut);
     std::printf("  %-6s %8s %11s %13s  %s\n", "slot", "seeing", "M without", ">=2 without", "counts");
     for (const auto& c : contributions) {
       std::printf("  %-6s %7.1f%% %11.6f %12.1f%%  %s\n", c.slot.c_str(), 100 * c.seeing_inside_cut_share,

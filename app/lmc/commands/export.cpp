@@ -43,7 +43,8 @@ constexpr const char* kBidsFooter =
     "sub-<id>/motion/sub-<id>_task-<motion>_tracksys-<system>_acq-<layout>_run-<pose><repetition>_motion.tsv with its "
     "channels.tsv/.json and motion.json, events.tsv (go, stop, Vicon trigger) and the subject's scans.tsv; tracking "
     "systems LMC1... (each controller realigned), LMCfused (the fused hand), Vicon (when the trial has a Vicon file). "
-    "Labels keep letters and digits only (S_01 -> sub-S01). Top level: dataset_description.json, participants.tsv/.json "
+    "Labels keep letters and digits only (S_01 -> sub-S01). Top level: dataset_description.json, "
+    "participants.tsv/.json "
     "(handedness, hand length and breadth), README, layouts/ (named in .bidsignore). A non-empty DATASET is refused "
     "unless --force. Trials that cannot be exported are left out with a note (exit code 2). See docs/export.md.";
 
@@ -53,7 +54,8 @@ void apply_session_options(const ExportArgs& a, lmc::BatchOptions& session) {
   if (!a.length_correction.empty()) {
     // As lmc process: the reference method stays the study's algorithm.
     if (session.process.method == lmc::FusionMethod::kReference) {
-      throw lmc::Error("--length-correction applies to the default fusion only: the reference method stays the study's algorithm");
+      throw lmc::Error(
+          "--length-correction applies to the default fusion only: the reference method stays the study's algorithm");
     }
     session.process.length_correction = lmc::read_length_correction(a.length_correction);
   }
@@ -81,8 +83,9 @@ void run_export(const ExportArgs& a, lmc::ExportFormat format) {
   req.on_trial = [](const std::string& line) { std::cout << line << "\n"; };
   const lmc::TrialExportReport report = lmc::export_trials(req);
   for (const auto& n : report.notes) std::cout << "note: " << n << "\n";
-  std::cout << "exported " << report.exported.size() << " trial(s) as " << (format == lmc::ExportFormat::kC3d ? "C3D" : "TRC")
-            << " (" << lmc::export_axes_name(req.axes) << " axes, " << a.method << " method) to " << a.out;
+  std::cout << "exported " << report.exported.size() << " trial(s) as "
+            << (format == lmc::ExportFormat::kC3d ? "C3D" : "TRC") << " (" << lmc::export_axes_name(req.axes)
+            << " axes, " << a.method << " method) to " << a.out;
   if (report.left_out > 0) std::cout << "; " << report.left_out << " left out (see the notes)";
   std::cout << "\n";
   if (report.left_out > 0) lmc::cli::command_exit_code() = 2;
@@ -91,7 +94,8 @@ void run_export(const ExportArgs& a, lmc::ExportFormat format) {
 void add_format(CLI::App& parent, const char* name, const char* what, lmc::ExportFormat format) {
   auto a = std::make_shared<ExportArgs>();
   CLI::App* app = parent.add_subcommand(name, what);
-  app->add_option("trials", a->inputs, "Recordings, processed trials (Interp_LMC_…) or session folders, as lmc process takes them")
+  app->add_option("trials", a->inputs,
+                  "Recordings, processed trials (Interp_LMC_…) or session folders, as lmc process takes them")
       ->required();
   add_common_options(app, *a);
   app->add_option("--axes", a->axes, "world (the rig's frame) or opensim (X forward, Y up, Z right)")
@@ -117,8 +121,8 @@ void run_bids(const BidsArgs& a) {
   req.on_trial = [](const std::string& line) { std::cout << line << "\n"; };
   const lmc::BidsExportReport report = lmc::export_bids(req);
   for (const auto& n : report.notes) std::cout << "note: " << n << "\n";
-  std::cout << "exported " << report.trials << " trial(s) of " << report.subjects << " subject(s) as BIDS-motion (" << a.common.method
-            << " method) to " << a.common.out;
+  std::cout << "exported " << report.trials << " trial(s) of " << report.subjects << " subject(s) as BIDS-motion ("
+            << a.common.method << " method) to " << a.common.out;
   if (req.anonymise) std::cout << "; anonymisation key " << a.anonymise_key;
   if (report.left_out > 0) std::cout << "; " << report.left_out << " left out (see the notes)";
   std::cout << "\n";
@@ -128,11 +132,14 @@ void run_bids(const BidsArgs& a) {
 void add_bids(CLI::App& parent) {
   auto a = std::make_shared<BidsArgs>();
   CLI::App* app = parent.add_subcommand("bids", "The study as a BIDS-motion dataset (one subject per session folder)");
-  app->add_option("sessions", a->common.inputs, "Subject session folders, or study folders holding several")->required();
+  app->add_option("sessions", a->common.inputs, "Subject session folders, or study folders holding several")
+      ->required();
   add_common_options(app, a->common);
   app->add_option("--anonymise", a->anonymise_key,
-                  "Number the subjects sub-01, sub-02, ... and write the key (label -> subject id) to this file, outside the dataset");
-  app->add_flag("--force", a->common.force, "Write into a non-empty dataset folder (an earlier export's subjects are removed first)");
+                  "Number the subjects sub-01, sub-02, ... and write the key (label -> subject id) to this file, "
+                  "outside the dataset");
+  app->add_flag("--force", a->common.force,
+                "Write into a non-empty dataset folder (an earlier export's subjects are removed first)");
   app->footer(kBidsFooter);
   app->callback([a] { run_bids(*a); });
 }
@@ -146,6 +153,7 @@ void setup_export(CLI::App& app) {
 }
 
 const lmc::cli::CommandRegistration export_command{
-    "export", "Export processed trials as C3D or TRC point files or a study as a BIDS-motion dataset", 47, setup_export};
+    "export", "Export processed trials as C3D or TRC point files or a study as a BIDS-motion dataset", 47,
+    setup_export};
 
 }  // namespace

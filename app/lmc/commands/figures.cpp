@@ -47,7 +47,8 @@ void run_figures(const FiguresArgs& a) {
     }
   }
   for (const auto& n : notes) std::cout << "note: " << n << "\n";
-  const lmc::ProcessingCache cache = a.no_cache ? lmc::ProcessingCache(fs::path()) : lmc::ProcessingCache::in_user_cache();
+  const lmc::ProcessingCache cache =
+      a.no_cache ? lmc::ProcessingCache(fs::path()) : lmc::ProcessingCache::in_user_cache();
   const lmc::CachedBatch batch = lmc::process_session_cached(jobs, options, cache);
   for (const auto& w : batch.cache_warnings) std::cout << "warning: " << w << "\n";
 
@@ -87,7 +88,8 @@ void run_figures(const FiguresArgs& a) {
   }
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   std::cout << "figures of " << exports.trials.size() << " trial(s) (" << cached << " from the cache, " << failed
-            << " failed): " << written.size() << " files in " << a.out << " in " << lmc::format_fixed(seconds, 2) << " s\n";
+            << " failed): " << written.size() << " files in " << a.out << " in " << lmc::format_fixed(seconds, 2)
+            << " s\n";
   if (failed > 0) lmc::cli::command_exit_code() = 2;
 }
 
@@ -105,6 +107,7 @@ void setup_figures(CLI::App& app) {
 }
 
 const lmc::cli::CommandRegistration figures_command{
-    "figures", "The Review tab's tables and figures, headless: agreement, Bland-Altman, visibility map", 46, setup_figures};
+    "figures", "The Review tab's tables and figures, headless: agreement, Bland-Altman, visibility map", 46,
+    setup_figures};
 
 }  // namespace

@@ -52,11 +52,11 @@
 #include "app/lmc/command.h"
 #include "core/common/error.h"
 #include "core/io/c3d.h"
+#include "core/io/delimited_text.h"
 #include "core/io/json_checked.h"
 #include "core/io/layout_json.h"
 #include "core/io/lmc_recording.h"
 #include "core/io/recorder_sidecar.h"
-#include "core/io/delimited_text.h"
 #include "core/io/trc.h"
 #include "core/processing/resample.h"
 #include "core/stats/percentile.h"
@@ -67,18 +67,22 @@ namespace {
 using nlohmann::json;
 
 constexpr const char* kJsonKeysHelp =
-    "--json prints one object. Keys: file, type (recording|trc|c3d|layout|session), warnings[]; recording: variant, rows, "
+    "--json prints one object. Keys: file, type (recording|trc|c3d|layout|session), warnings[]; recording: variant, "
+    "rows, "
     "hand_rows, device_count, device_ids[], duration_s, devices[{id, rows, hand_rows, hand_fraction, duration_s, "
     "rate_median_hz, rate_p5_hz, rate_p95_hz, reported_rate_median_hz, visibility_fraction (raytraced)}]; trc: "
     "markers, frames, data_rate_hz, camera_rate_hz, units, duration_s, missing_fraction, marker_stats[{name, "
-    "missing_fraction}]; c3d: as trc without camera_rate_hz (marker_stats[] also with description), first_frame, storage, "
-    "point_scale, processor, analog_per_frame, manufacturer{company, software, version}, parameters[]; layout: name, description, device_count, sensor{range_mm, fov_long_deg, fov_short_deg}, "
+    "missing_fraction}]; c3d: as trc without camera_rate_hz (marker_stats[] also with description), first_frame, "
+    "storage, "
+    "point_scale, processor, analog_per_frame, manufacturer{company, software, version}, parameters[]; layout: name, "
+    "description, device_count, sensor{range_mm, fov_long_deg, fov_short_deg}, "
     "devices[{slot, serial, pose{x,y,z,rx,ry,rz}, offset_mm[3]}]; session (recorder sidecar): trial, status, error, "
     "backend, recording_file, layout_name, layout_device_count, host_start_utc, host_stop_utc, duration_s, "
     "serial_to_slot{}, frames_written, frames_dropped, devices[{device_id, slot, serial, frames_written, "
     "frames_with_hand, hand_fraction, frames_dropped_queue, frame_id_gaps, gaps, gap_ms, disconnects, "
     "first_timestamp_us, last_timestamp_us}], vicon_packets[{type, packet_id, target, datagrams_sent, error}], "
-    "vicon_alignment, vicon_trigger_received, vicon_stop_received, stopped_by, trial_window, ground_truth. Unknown values are "
+    "vicon_alignment, vicon_trigger_received, vicon_stop_received, stopped_by, trial_window, ground_truth. Unknown "
+    "values are "
     "null.";
 
 struct InfoOptions {
@@ -86,7 +90,9 @@ struct InfoOptions {
   bool json = false;
 };
 
-json number_or_null(double v) { return std::isfinite(v) ? json(v) : json(nullptr); }
+json number_or_null(double v) {
+  return std::isfinite(v) ? json(v) : json(nullptr);
+}
 
 std::string fixed(double v, int decimals) {
   if (!std::isfinite(v)) return "-";
@@ -136,7 +142,8 @@ std::vector<DeviceSummary> summarise_devices(const lmc::LmcRecording& rec) {
       if (!row.hand_present) continue;
       ++d.hand_rows;
       if (rec.kind == lmc::RecordingKind::kRaytraced) {
-        for (int f = 0; f < lmc::kNumDigits; ++f) visible[static_cast<size_t>(f)] += rec.visibility[r][static_cast<size_t>(f)] == 1;
+        for (int f = 0; f < lmc::kNumDigits; ++f)
+          visible[static_cast<size_t>(f)] += rec.visibility[r][static_cast<size_t>(f)] == 1;
       }
     }
     std::sort(stamps.begin(), stamps.end());
@@ -150,7 +157,8 @@ std::vector<DeviceSummary> summarise_devices(const lmc::LmcRecording& rec) {
     if (rec.kind == lmc::RecordingKind::kRaytraced && d.hand_rows > 0) {
       std::array<double, lmc::kNumDigits> frac{};
       for (int f = 0; f < lmc::kNumDigits; ++f) {
-        frac[static_cast<size_t>(f)] = static_cast<double>(visible[static_cast<size_t>(f)]) / static_cast<double>(d.hand_rows);
+        frac[static_cast<size_t>(f)] =
+            static_cast<double>(visible[static_cast<size_t>(f)]) / static_cast<double>(d.hand_rows);
       }
       d.visibility_fraction = frac;
     }
@@ -188,7 +196,8 @@ void info_recording(const std::string& file, bool as_json, std::ostream& out) {
     // frame, so far fewer rows than seconds means a timestamp jumped; say so before `lmc process`
     // refuses the file.
     const lmc::ResampleOptions limits;
-    const double plausible_s = limits.min_plausible_span_s + limits.max_seconds_per_row * static_cast<double>(rec.rows.size());
+    const double plausible_s =
+        limits.min_plausible_span_s + limits.max_seconds_per_row * static_cast<double>(rec.rows.size());
     if (duration_s > plausible_s) {
       std::ostringstream w;
       w << "duration " << duration_s << " s is implausible for " << rec.rows.size() << " rows (at most " << plausible_s
@@ -248,8 +257,8 @@ void info_recording(const std::string& file, bool as_json, std::ostream& out) {
     out << "\n";
     const bool vis = rec.kind == lmc::RecordingKind::kRaytraced;
     out << std::left << std::setw(8) << "device" << std::right << std::setw(7) << "rows" << std::setw(7) << "hand"
-        << std::setw(8) << "hand%" << std::setw(12) << "duration_s" << std::setw(13) << "rate_med_hz"
-        << std::setw(12) << "rate_p5_hz" << std::setw(13) << "rate_p95_hz" << std::setw(14) << "reported_hz";
+        << std::setw(8) << "hand%" << std::setw(12) << "duration_s" << std::setw(13) << "rate_med_hz" << std::setw(12)
+        << "rate_p5_hz" << std::setw(13) << "rate_p95_hz" << std::setw(14) << "reported_hz";
     if (vis) out << "  visible% thumb/index/middle/ring/pinky";
     out << "\n";
     for (const auto& d : devices) {
@@ -283,7 +292,9 @@ void info_trc(const std::string& file, bool as_json, std::ostream& out) {
       missing_all += gone ? 1 : 0;
     }
   }
-  const auto fraction = [&](long n, long of) { return of > 0 ? static_cast<double>(n) / static_cast<double>(of) : 0.0; };
+  const auto fraction = [&](long n, long of) {
+    return of > 0 ? static_cast<double>(n) / static_cast<double>(of) : 0.0;
+  };
   const double duration_s = trc.times_s.size() >= 2 ? trc.times_s.back() - trc.times_s.front() : std::nan("");
   const long samples = static_cast<long>(frames) * trc.marker_count();
 
@@ -317,7 +328,8 @@ void info_trc(const std::string& file, bool as_json, std::ostream& out) {
   out << "missing:    " << fixed(100.0 * fraction(missing_all, samples), 1) << " % of marker samples\n\n";
   size_t width = 6;
   for (const auto& n : trc.marker_names) width = std::max(width, n.size());
-  out << std::left << std::setw(static_cast<int>(width) + 2) << "marker" << "missing%\n";
+  out << std::left << std::setw(static_cast<int>(width) + 2) << "marker"
+      << "missing%\n";
   for (int m = 0; m < trc.marker_count(); ++m) {
     out << std::left << std::setw(static_cast<int>(width) + 2) << trc.marker_names[static_cast<size_t>(m)] << std::right
         << std::setw(8) << fixed(100.0 * fraction(missing[static_cast<size_t>(m)], frames), 1) << "\n";
@@ -340,10 +352,14 @@ void info_c3d(const std::string& file, const std::string& bytes, bool as_json, s
       missing_all += gone ? 1 : 0;
     }
   }
-  const auto fraction = [&](long n, long of) { return of > 0 ? static_cast<double>(n) / static_cast<double>(of) : 0.0; };
+  const auto fraction = [&](long n, long of) {
+    return of > 0 ? static_cast<double>(n) / static_cast<double>(of) : 0.0;
+  };
   const double duration_s = frames >= 2 ? (frames - 1) / c3d.point_rate_hz : std::nan("");
   const long samples = static_cast<long>(frames) * c3d.point_count();
-  const char* processor = c3d.processor == lmc::C3dProcessor::kIntel ? "intel" : c3d.processor == lmc::C3dProcessor::kDec ? "dec" : "mips";
+  const char* processor = c3d.processor == lmc::C3dProcessor::kIntel ? "intel"
+                          : c3d.processor == lmc::C3dProcessor::kDec ? "dec"
+                                                                     : "mips";
   const auto text_or_null_local = [](const std::string& s) { return s.empty() ? json(nullptr) : json(s); };
 
   if (as_json) {
@@ -368,7 +384,8 @@ void info_c3d(const std::string& file, const std::string& bytes, bool as_json, s
     for (int m = 0; m < c3d.point_count(); ++m) {
       json stat{{"name", c3d.labels[static_cast<size_t>(m)]},
                 {"missing_fraction", fraction(missing[static_cast<size_t>(m)], frames)}};
-      if (static_cast<size_t>(m) < c3d.descriptions.size()) stat["description"] = c3d.descriptions[static_cast<size_t>(m)];
+      if (static_cast<size_t>(m) < c3d.descriptions.size())
+        stat["description"] = c3d.descriptions[static_cast<size_t>(m)];
       j["marker_stats"].push_back(stat);
     }
     j["parameters"] = c3d.parameter_names;
@@ -382,17 +399,19 @@ void info_c3d(const std::string& file, const std::string& bytes, bool as_json, s
   out << "frames:     " << frames << " (first " << c3d.first_frame << ")\n";
   out << "rate:       " << c3d.point_rate_hz << " Hz\n";
   out << "units:      " << c3d.units << "\n";
-  out << "storage:    " << (c3d.float_storage ? "float" : "integer") << " (POINT:SCALE " << c3d.point_scale << "), " << processor
-      << " byte order\n";
+  out << "storage:    " << (c3d.float_storage ? "float" : "integer") << " (POINT:SCALE " << c3d.point_scale << "), "
+      << processor << " byte order\n";
   if (!c3d.manufacturer_company.empty() || !c3d.manufacturer_software.empty() || !c3d.manufacturer_version.empty()) {
-    out << "written by: " << c3d.manufacturer_company << (c3d.manufacturer_software.empty() ? "" : ", " + c3d.manufacturer_software)
+    out << "written by: " << c3d.manufacturer_company
+        << (c3d.manufacturer_software.empty() ? "" : ", " + c3d.manufacturer_software)
         << (c3d.manufacturer_version.empty() ? "" : ", version " + c3d.manufacturer_version) << "\n";
   }
   out << "duration:   " << fixed(duration_s, 3) << " s\n";
   out << "missing:    " << fixed(100.0 * fraction(missing_all, samples), 1) << " % of marker samples\n\n";
   size_t width = 6;
   for (const auto& n : c3d.labels) width = std::max(width, n.size());
-  out << std::left << std::setw(static_cast<int>(width) + 2) << "marker" << "missing%\n";
+  out << std::left << std::setw(static_cast<int>(width) + 2) << "marker"
+      << "missing%\n";
   for (int m = 0; m < c3d.point_count(); ++m) {
     out << std::left << std::setw(static_cast<int>(width) + 2) << c3d.labels[static_cast<size_t>(m)] << std::right
         << std::setw(8) << fixed(100.0 * fraction(missing[static_cast<size_t>(m)], frames), 1) << "\n";
@@ -466,7 +485,9 @@ std::string text_of(const json& v) {
 }
 
 // An empty text field of the sidecar is an unknown value.
-json text_or_null(const std::string& s) { return s.empty() ? json(nullptr) : json(s); }
+json text_or_null(const std::string& s) {
+  return s.empty() ? json(nullptr) : json(s);
+}
 
 void info_session(const std::string& file, const json& doc, bool as_json, std::ostream& out) {
   const lmc::RecorderSidecar side = lmc::recorder_sidecar_from_json(doc, file);
@@ -475,8 +496,9 @@ void info_session(const std::string& file, const json& doc, bool as_json, std::o
   const double duration_s = side.host_duration_s();
   std::vector<std::string> warnings;
   if (!side.complete())
-    warnings.push_back("status is still \"recording\": the program stopped before the trial was closed (crash?); "
-                       "the recording holds the rows written until then");
+    warnings.push_back(
+        "status is still \"recording\": the program stopped before the trial was closed (crash?); "
+        "the recording holds the rows written until then");
   const json rec_file = text_or_null(side.recording_file);
   if (!side.recording_file.empty()) {
     const auto beside = std::filesystem::path(file).parent_path() / side.recording_file;
@@ -487,22 +509,21 @@ void info_session(const std::string& file, const json& doc, bool as_json, std::o
   for (const auto& d : side.devices) {
     double gap_ms = 0;
     for (const auto& g : d.gaps) gap_ms += g.duration_ms();
-    devices.push_back(
-        {{"device_id", d.device_id},
-         {"slot", d.slot},
-         {"serial", d.serial},
-         {"frames_written", d.frames_written},
-         {"frames_with_hand", d.frames_with_hand},
-         {"hand_fraction", d.frames_written > 0
-                               ? json(static_cast<double>(d.frames_with_hand) / static_cast<double>(d.frames_written))
-                               : json(nullptr)},
-         {"frames_dropped_queue", d.frames_dropped_queue},
-         {"frame_id_gaps", d.frame_id_gaps},
-         {"gaps", d.gaps.size()},
-         {"gap_ms", gap_ms},
-         {"disconnects", d.disconnects.size()},
-         {"first_timestamp_us", d.first_timestamp_us},
-         {"last_timestamp_us", d.last_timestamp_us}});
+    devices.push_back({{"device_id", d.device_id},
+                       {"slot", d.slot},
+                       {"serial", d.serial},
+                       {"frames_written", d.frames_written},
+                       {"frames_with_hand", d.frames_with_hand},
+                       {"hand_fraction", d.frames_written > 0 ? json(static_cast<double>(d.frames_with_hand) /
+                                                                     static_cast<double>(d.frames_written))
+                                                              : json(nullptr)},
+                       {"frames_dropped_queue", d.frames_dropped_queue},
+                       {"frame_id_gaps", d.frame_id_gaps},
+                       {"gaps", d.gaps.size()},
+                       {"gap_ms", gap_ms},
+                       {"disconnects", d.disconnects.size()},
+                       {"first_timestamp_us", d.first_timestamp_us},
+                       {"last_timestamp_us", d.last_timestamp_us}});
   }
   json packets = json::array();
   for (const auto& p : side.vicon_packets)
@@ -585,7 +606,8 @@ void info_session(const std::string& file, const json& doc, bool as_json, std::o
         << " s, " << text_of(value_or_null(w, "frames_before_go")) << " frames) is not in the file\n";
   const json& align = side.vicon_alignment;
   if (align.is_object()) {
-    out << "alignment:  " << text_of(value_or_null(align, "event")) << " at " << text_of(value_or_null(align, "host_time_utc"));
+    out << "alignment:  " << text_of(value_or_null(align, "event")) << " at "
+        << text_of(value_or_null(align, "host_time_utc"));
     const json ad = value_or_null(align, "devices");
     if (ad.is_array())
       for (const auto& d : ad)
@@ -665,9 +687,10 @@ void run_info(const InfoOptions& opt) {
 
 void setup_info(CLI::App& app) {
   auto opt = std::make_shared<InfoOptions>();
-  app.add_option("file", opt->file,
-                 "Recording (.txt), TRC (.trc), C3D (.c3d), layout (.json) or session sidecar (LMC_<trial>.session.json); type "
-                 "detected from content")
+  app.add_option(
+         "file", opt->file,
+         "Recording (.txt), TRC (.trc), C3D (.c3d), layout (.json) or session sidecar (LMC_<trial>.session.json); type "
+         "detected from content")
       ->required();
   app.add_flag("--json", opt->json, "Print one JSON object instead of text");
   app.footer(kJsonKeysHelp);

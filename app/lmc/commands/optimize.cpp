@@ -11,8 +11,8 @@
 
 #include "app/lmc/command.h"
 #include "core/common/error.h"
-#include "core/io/pose_source.h"
 #include "core/io/layout_json.h"
+#include "core/io/pose_source.h"
 #include "core/metric/coverage_report.h"
 #include "core/metric/robust_terms_report.h"
 #include "core/optimise/multi_start.h"
@@ -76,7 +76,8 @@ void setup_optimize(CLI::App& app) {
   app.add_option("--frames", opt->frames, "Frames of the Monte Carlo set")->check(CLI::Range(1, 10'000'000));
   app.add_option("--seed", opt->seed, "Seed of the Monte Carlo set");
   app.add_option("--hand", opt->hand, "Monte Carlo set with the hand of this LMC recording's first row");
-  app.add_option("--devices", opt->devices, "Number of devices when no --start layout is given")->check(CLI::Range(1, 8));
+  app.add_option("--devices", opt->devices, "Number of devices when no --start layout is given")
+      ->check(CLI::Range(1, 8));
   app.add_option("--particles", opt->particles, "Swarm size")->check(CLI::Range(1, 100000));
   app.add_option("--iterations", opt->iterations, "PSO iterations")->check(CLI::Range(0, 1000000));
   app.add_option("--w", opt->w, "Inertia weight");
@@ -89,7 +90,8 @@ void setup_optimize(CLI::App& app) {
                  "Searched parameters and bounds, e.g. x=-400:400,z=-400:400,rx=-45:45,ry=-180:180 "
                  "(default with --metric study: the authors' box x,z ∈ [-1000,1000], rx ∈ [-90,90], ry ∈ [-180,180]; "
                  "with --metric robust: the table, x,z ∈ [-360,360])");
-  app.add_option("--range-mm", opt->range_mm, "Sensor range (mm); default: the --start layout's, else 600 as in the study")
+  app.add_option("--range-mm", opt->range_mm,
+                 "Sensor range (mm); default: the --start layout's, else 600 as in the study")
       ->check(CLI::PositiveNumber);
   app.add_option("--radius-mm", opt->radius_mm, "Phalanx radius (mm)")->check(CLI::NonNegativeNumber);
   app.add_option("--start", opt->start, "Start from this layout (file or preset); its devices are searched");
@@ -137,8 +139,7 @@ void setup_optimize(CLI::App& app) {
       start.sensor.range_mm = 600.0;
     }
     // The study's metric searches the authors' box (the reference); the robust one the table.
-    const lmc::SearchSpace default_space =
-        opt->metric == "study" ? lmc::SearchSpace{} : lmc::table_search_space();
+    const lmc::SearchSpace default_space = opt->metric == "study" ? lmc::SearchSpace{} : lmc::table_search_space();
     lmc::SearchSpace space = opt->bounds.empty() ? default_space : lmc::parse_search_bounds(opt->bounds);
     for (const auto& l : opt->locks) apply_lock(space, start, l);
     if (!from_layout && !opt->locks.empty()) throw lmc::Error("--lock needs --start");
@@ -182,8 +183,8 @@ void setup_optimize(CLI::App& app) {
     best.name = "optimized-" + opt->metric;
     best.description = "lmc optimize --metric " + opt->metric + ": " + std::to_string(opt->starts) + " start(s) of " +
                        std::to_string(s.particles) + " particles × " + std::to_string(s.iterations) +
-                       " iterations (seed " + std::to_string(multi.seeds.at(static_cast<size_t>(multi.best))) + ") on " +
-                       poses.description + ", " + cost_name + " = " + std::to_string(r.best_cost);
+                       " iterations (seed " + std::to_string(multi.seeds.at(static_cast<size_t>(multi.best))) +
+                       ") on " + poses.description + ", " + cost_name + " = " + std::to_string(r.best_cost);
     lmc::save_layout(best, opt->output);
     double seconds = 0;
     std::int64_t layout_evaluations = 0, device_frame_evaluations = 0, layouts_stopped_early = 0;
@@ -233,8 +234,9 @@ void setup_optimize(CLI::App& app) {
     std::cout << lmc::format_robust_terms(r.best_terms, s.weights);
     if (multi.runs.size() > 1) {
       std::cout << "starts (best first):\n";
-      std::printf("  seed %llu  %s %.6g  (best)\n", static_cast<unsigned long long>(multi.seeds[static_cast<size_t>(multi.best)]),
-                  cost_name, r.best_cost);
+      std::printf("  seed %llu  %s %.6g  (best)\n",
+                  static_cast<unsigned long long>(multi.seeds[static_cast<size_t>(multi.best)]), cost_name,
+                  r.best_cost);
       for (const int k : multi.runners_up) {
         std::printf("  seed %llu  %s %.6g  (a different layout)\n",
                     static_cast<unsigned long long>(multi.seeds[static_cast<size_t>(k)]), cost_name,
@@ -247,7 +249,7 @@ void setup_optimize(CLI::App& app) {
   });
 }
 
-const lmc::cli::CommandRegistration optimize_command{
-    "optimize", "Search device placements with a particle swarm", 50, setup_optimize};
+const lmc::cli::CommandRegistration optimize_command{"optimize", "Search device placements with a particle swarm", 50,
+                                                     setup_optimize};
 
 }  // namespace

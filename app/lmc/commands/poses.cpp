@@ -6,8 +6,8 @@
 
 #include "app/lmc/command.h"
 #include "core/hand/pose_set_generator.h"
-#include "core/io/pose_source.h"
 #include "core/io/pose_set_tsv.h"
+#include "core/io/pose_source.h"
 
 namespace {
 
@@ -28,7 +28,8 @@ void setup_poses(CLI::App& app) {
   app.add_option("--hand", opt->hand,
                  "Use the hand of the first row with a hand in this LMC recording (default: average adult hand, "
                  "190 mm)");
-  app.add_option("--joint-noise-deg", opt->joint_noise_deg, "σ of the per-joint noise (degrees)")->check(CLI::NonNegativeNumber);
+  app.add_option("--joint-noise-deg", opt->joint_noise_deg, "σ of the per-joint noise (degrees)")
+      ->check(CLI::NonNegativeNumber);
   app.add_option("--position-jitter-mm", opt->position_jitter_mm, "σ of the hand position jitter per axis (mm)")
       ->check(CLI::NonNegativeNumber);
   app.add_option("--orientation-jitter-deg", opt->orientation_jitter_deg, "σ of the hand orientation jitter (degrees)")
@@ -58,7 +59,7 @@ void setup_poses(CLI::App& app) {
   });
 }
 
-const lmc::cli::CommandRegistration poses_command{
-    "poses", "Generate a seeded Monte Carlo hand pose set", 30, setup_poses};
+const lmc::cli::CommandRegistration poses_command{"poses", "Generate a seeded Monte Carlo hand pose set", 30,
+                                                  setup_poses};
 
 }  // namespace

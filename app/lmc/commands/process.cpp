@@ -12,9 +12,9 @@
 #include "core/common/error.h"
 #include "core/common/number_format.h"
 #include "core/io/atomic_write.h"
+#include "core/processing/batch.h"
 #include "core/processing/length_correction_json.h"
 #include "core/processing/method_comparison.h"
-#include "core/processing/batch.h"
 #include "core/results/trial_outputs.h"
 #include "core/session/session_trials.h"
 
@@ -41,9 +41,11 @@ void run_process(const ProcessArgs& a) {
   if (!a.length_correction.empty()) {
     // Refused here, before any trial runs, rather than once per trial by process_trial.
     if (options.process.method == lmc::FusionMethod::kReference) {
-      throw lmc::Error("--length-correction applies to the default fusion only: the reference method stays the study's algorithm");
+      throw lmc::Error(
+          "--length-correction applies to the default fusion only: the reference method stays the study's algorithm");
     }
-    if (a.compare_methods) throw lmc::Error("--compare-methods runs the reference method too: use it without --length-correction");
+    if (a.compare_methods)
+      throw lmc::Error("--compare-methods runs the reference method too: use it without --length-correction");
     options.process.length_correction = lmc::read_length_correction(a.length_correction);
     const auto& c = *options.process.length_correction;
     std::cout << "length correction of subject " << c.subject << " (fitted on " << c.fit_trial << ", "
@@ -84,13 +86,13 @@ void run_process(const ProcessArgs& a) {
       t["layout"] = o.layout_used;
       t["warnings"] = o.warnings;
       if (!a.quiet) {
-        std::cout << "ok      " << o.trial << "  (" << o.summary["frames"].get<int>() << " frames, layout " << o.layout_used
-                  << (o.has_vicon ? ", with Vicon" : ", no Vicon");
+        std::cout << "ok      " << o.trial << "  (" << o.summary["frames"].get<int>() << " frames, layout "
+                  << o.layout_used << (o.has_vicon ? ", with Vicon" : ", no Vicon");
         if (o.summary.contains("comparison")) {
           const auto& lag = o.summary["comparison"]["lag"];
           if (lag.value("clear", false) && lag.value("frames", 0) != 0) {
-            std::cout << ", wrist lag " << lag["frames"].get<int>() << " frame(s) (r = " << lmc::format_fixed(lag["correlation"].get<double>(), 2)
-                      << ")";
+            std::cout << ", wrist lag " << lag["frames"].get<int>()
+                      << " frame(s) (r = " << lmc::format_fixed(lag["correlation"].get<double>(), 2) << ")";
           }
         }
         std::cout << ")\n";
@@ -117,15 +119,17 @@ void run_process(const ProcessArgs& a) {
     lmc::write_file_atomically(std::filesystem::path(a.out) / "method_comparison.md", table);
     std::cout << "\n" << table << "\n";
   }
-  std::cout << "processed " << outcomes.size() - static_cast<size_t>(failed) << " of " << outcomes.size() << " trial(s) ("
-            << a.method << " method) in " << lmc::format_fixed(seconds, 3) << " s; outputs in " << a.out << "\n";
+  std::cout << "processed " << outcomes.size() - static_cast<size_t>(failed) << " of " << outcomes.size()
+            << " trial(s) (" << a.method << " method) in " << lmc::format_fixed(seconds, 3) << " s; outputs in "
+            << a.out << "\n";
   if (failed > 0) lmc::cli::command_exit_code() = 2;
 }
 
 void setup_process(CLI::App& app) {
   auto a = std::make_shared<ProcessArgs>();
   app.add_option("input", a->input, "A trial recording (raw or resampled LMC file) or a session folder")->required();
-  app.add_option("--vicon", a->vicon, "Vicon file (.trc/.c3d) for one trial, or a folder of them (default: next to the input)");
+  app.add_option("--vicon", a->vicon,
+                 "Vicon file (.trc/.c3d) for one trial, or a folder of them (default: next to the input)");
   app.add_option("--layout", a->layout,
                  "Layout preset or file (default: the recorder's sidecar, else paper-initial for Naiv_ trials and "
                  "paper-optimized-as-processed for Opti_ trials)");
@@ -140,7 +144,8 @@ void setup_process(CLI::App& app) {
   app.add_flag("--compare-methods", a->compare_methods,
                "Also run the other method and print both methods' RMSE against the Vicon/truth files");
   app.add_option("--length-correction", a->length_correction,
-                 "Apply a subject's finger-length correction (lmc length-correction fit) after the default fusion; off unless given");
+                 "Apply a subject's finger-length correction (lmc length-correction fit) after the default fusion; off "
+                 "unless given");
   app.add_flag("-q,--quiet", a->quiet, "Only failures and the final line");
   app.add_option("-o,--output", a->out, "Output folder")->required();
   app.callback([a] { run_process(*a); });

@@ -65,14 +65,15 @@ struct RecordOptions {
   bool quiet = false;
 };
 
-std::string record_status_line(const HubSnapshot& snap, const RecorderStatus& rec,
-                               double elapsed_s) {
+std::string record_status_line(const HubSnapshot& snap, const RecorderStatus& rec, double elapsed_s) {
   std::ostringstream s;
   s << std::fixed << std::setprecision(1) << std::setw(6) << elapsed_s << " s ";
   for (const auto& d : snap.devices) {
     if (d.slot.empty()) continue;
     s << " | " << d.slot << ' ' << std::setprecision(0) << std::setw(3) << d.rate_hz << " Hz "
-      << (!d.connected ? "LOST" : d.hand_present ? "hand" : "----");
+      << (!d.connected     ? "LOST"
+          : d.hand_present ? "hand"
+                           : "----");
     auto it = rec.devices.find(d.slot_index + 1);
     s << ' ' << (it == rec.devices.end() ? 0 : it->second.frames_written);
   }
@@ -123,8 +124,7 @@ void print_summary(const TrialResult& r, const HubSnapshot& snap, const std::str
     if (span_s > 0)
       std::cout << std::fixed << std::setprecision(1) << std::setw(7)
                 << static_cast<double>(d.frames_written - 1) / span_s << " Hz";
-    if (d.frames_written > 0)
-      std::cout << std::setw(5) << (100 * d.frames_with_hand / d.frames_written) << "% hand";
+    if (d.frames_written > 0) std::cout << std::setw(5) << (100 * d.frames_with_hand / d.frames_written) << "% hand";
     if (!d.gaps.empty()) std::cout << "  " << d.gaps.size() << " gap(s)";
     if (!d.disconnects.empty()) std::cout << "  " << d.disconnects.size() << " disconnect(s)";
     if (d.frames_dropped_queue > 0) std::cout << "  " << d.frames_dropped_queue << " dropped";
@@ -208,7 +208,8 @@ void setup_record(CLI::App& app) {
   app.add_option("--motion", opt->motion,
                  "Simulator motion: static, index, thumb, wrist (prefix horizontal/ or vertical/), or a pose-set file");
   app.add_option("--vicon", opt->vicon, "Send the Vicon UDP capture trigger to HOST[:PORT] (port 30 by default)");
-  app.add_option("--vicon-repeats", opt->vicon_repeats, "Send each trigger packet this many times")->capture_default_str();
+  app.add_option("--vicon-repeats", opt->vicon_repeats, "Send each trigger packet this many times")
+      ->capture_default_str();
   app.add_option("--vicon-database", opt->vicon_database, "DatabasePath field of the trigger");
   app.add_option("--vicon-notes", opt->vicon_notes, "Notes field of CaptureStart");
   app.add_option("--vicon-description", opt->vicon_description, "Description field of CaptureStart");
@@ -227,7 +228,7 @@ void setup_record(CLI::App& app) {
   app.callback([opt] { run_record(*opt); });
 }
 
-const lmc::cli::CommandRegistration record_command{
-    "record", "Record a trial from the devices (headless)", 21, setup_record};
+const lmc::cli::CommandRegistration record_command{"record", "Record a trial from the devices (headless)", 21,
+                                                   setup_record};
 
 }  // namespace

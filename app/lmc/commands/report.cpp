@@ -22,7 +22,8 @@ void run_report(const ReportArgs& a) {
   std::vector<lmc::ReportInput> inputs;
   for (const auto& s : a.sessions) {
     const fs::path root(s);
-    if (!fs::is_directory(root)) throw lmc::Error(lmc::ErrorLocation(s), "not a folder (give folders written by lmc process)");
+    if (!fs::is_directory(root))
+      throw lmc::Error(lmc::ErrorLocation(s), "not a folder (give folders written by lmc process)");
     std::vector<fs::path> files;
     for (const auto& e : fs::recursive_directory_iterator(root)) {
       const std::string name = e.path().filename().string();
@@ -30,7 +31,8 @@ void run_report(const ReportArgs& a) {
     }
     std::sort(files.begin(), files.end());
     if (files.empty()) std::cout << "warning: " << s << " holds no <trial>.summary.json (run lmc process first)\n";
-    const std::string subject = root.filename().empty() ? root.parent_path().filename().string() : root.filename().string();
+    const std::string subject =
+        root.filename().empty() ? root.parent_path().filename().string() : root.filename().string();
     for (const auto& f : files) {
       try {
         inputs.push_back({subject, lmc::read_json_file(f)});
@@ -48,8 +50,8 @@ void run_report(const ReportArgs& a) {
   lmc::write_file_atomically(out / "joint_angles.csv", rep.joint_angle_csv);
   lmc::write_file_atomically(out / "visibility.csv", rep.visibility_csv);
   lmc::write_file_atomically(out / "report.md", rep.markdown);
-  std::cout << "report of " << rep.trials << " trial(s) (" << rep.trials_with_vicon << " with Vicon) written to " << a.out
-            << ": report.md, trials.csv, finger_length.csv, joint_angles.csv, visibility.csv\n";
+  std::cout << "report of " << rep.trials << " trial(s) (" << rep.trials_with_vicon << " with Vicon) written to "
+            << a.out << ": report.md, trials.csv, finger_length.csv, joint_angles.csv, visibility.csv\n";
 }
 
 void setup_report(CLI::App& app) {

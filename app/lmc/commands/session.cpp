@@ -87,7 +87,10 @@ nlohmann::json status_json(const lmc::session::SessionState& st, const fs::path&
     }
     nlohmann::json attempts = nlohmann::json::array();
     for (const auto& a : t.attempts)
-      attempts.push_back({{"attempt", a.number}, {"outcome", a.outcome}, {"reason", a.reason}, {"verdict", a.verdict()},
+      attempts.push_back({{"attempt", a.number},
+                          {"outcome", a.outcome},
+                          {"reason", a.reason},
+                          {"verdict", a.verdict()},
                           {"files", a.superseded_dir.empty() ? std::string(".") : a.superseded_dir}});
     trials.push_back({{"index", t.plan.index + 1},
                       {"name", t.plan.name},
@@ -99,25 +102,30 @@ nlohmann::json status_json(const lmc::session::SessionState& st, const fs::path&
   }
   nlohmann::json calibration = nlohmann::json::object();
   for (const auto& [block, c] : st.calibration)
-    calibration[block] = {{"status", c.status}, {"attempt", c.attempt}, {"trial", c.trial}, {"reason", c.reason}, {"summary", c.summary}};
-  return {{"subject", st.subject().subject_id},
-          {"calibration", calibration},
-          {"protocol", st.protocol.name},
-          {"folder", dir.string()},
-          {"next_trial", st.next_trial() < 0 ? nlohmann::json(nullptr) : nlohmann::json(st.trials[static_cast<size_t>(st.next_trial())].plan.name)},
-          {"warnings", st.warnings},
-          {"trials", trials}};
+    calibration[block] = {
+        {"status", c.status}, {"attempt", c.attempt}, {"trial", c.trial}, {"reason", c.reason}, {"summary", c.summary}};
+  return {
+      {"subject", st.subject().subject_id},
+      {"calibration", calibration},
+      {"protocol", st.protocol.name},
+      {"folder", dir.string()},
+      {"next_trial", st.next_trial() < 0 ? nlohmann::json(nullptr)
+                                         : nlohmann::json(st.trials[static_cast<size_t>(st.next_trial())].plan.name)},
+      {"warnings", st.warnings},
+      {"trials", trials}};
 }
 
 void print_status(const lmc::session::SessionState& st, const fs::path& dir) {
   const nlohmann::json j = status_json(st, dir);
   int accepted = 0;
-  std::cout << "subject " << j["subject"].get<std::string>() << ", protocol " << j["protocol"].get<std::string>() << "\n";
+  std::cout << "subject " << j["subject"].get<std::string>() << ", protocol " << j["protocol"].get<std::string>()
+            << "\n";
   for (const auto& t : j["trials"]) {
     const std::string status = t["status"];
     accepted += status == "accepted" ? 1 : 0;
-    std::cout << std::setw(4) << t["index"].get<int>() << "  " << std::left << std::setw(18) << t["name"].get<std::string>()
-              << std::setw(12) << status << std::right << std::setw(2) << t["attempts"].get<int>() << " attempt(s)";
+    std::cout << std::setw(4) << t["index"].get<int>() << "  " << std::left << std::setw(18)
+              << t["name"].get<std::string>() << std::setw(12) << status << std::right << std::setw(2)
+              << t["attempts"].get<int>() << " attempt(s)";
     if (!t["qc"].is_null()) {
       std::cout << "  " << t["qc"]["verdict"].get<std::string>();
       const auto& reasons = t["qc"]["reasons"];
@@ -150,15 +158,28 @@ std::string trial_status_line(const TrialSnapshot& s, const std::string& trial) 
   std::ostringstream o;
   o << std::fixed << std::setprecision(1) << trial << "  ";
   switch (s.phase) {
-    case TrialPhase::kWaitingForStreams: o << "waiting for every controller"; break;
-    case TrialPhase::kCountdown: o << "starts in " << s.countdown_remaining_s << " s"; break;
-    case TrialPhase::kRecording: o << "recording " << s.recording_s << " s, " << s.remaining_s << " s left"; break;
-    case TrialPhase::kFinishing: o << "finishing"; break;
-    default: o << "…"; break;
+    case TrialPhase::kWaitingForStreams:
+      o << "waiting for every controller";
+      break;
+    case TrialPhase::kCountdown:
+      o << "starts in " << s.countdown_remaining_s << " s";
+      break;
+    case TrialPhase::kRecording:
+      o << "recording " << s.recording_s << " s, " << s.remaining_s << " s left";
+      break;
+    case TrialPhase::kFinishing:
+      o << "finishing";
+      break;
+    default:
+      o << "…";
+      break;
   }
   for (const auto& d : s.hub.devices) {
     if (d.slot.empty()) continue;
-    o << " | " << d.slot << ' ' << std::setprecision(0) << d.rate_hz << " Hz " << (!d.connected ? "LOST" : d.hand_present ? "hand" : "----");
+    o << " | " << d.slot << ' ' << std::setprecision(0) << d.rate_hz << " Hz "
+      << (!d.connected     ? "LOST"
+          : d.hand_present ? "hand"
+                           : "----");
   }
   o << " | written " << s.recorder.frames_written;
   return o.str();
@@ -249,8 +270,8 @@ bool clear_calibration(SessionRunner& runner, int i, const RunArgs& a, bool inte
   }
   const auto& step = *runner.protocol().calibration;
   for (int tries = 0;; ++tries) {
-    std::cout << "\ncalibration of block " << block << " (" << step.duration_s << " s)\n  operator: " << step.operator_cue
-              << "\n  subject:  " << step.subject_cue << "\n";
+    std::cout << "\ncalibration of block " << block << " (" << step.duration_s
+              << " s)\n  operator: " << step.operator_cue << "\n  subject:  " << step.subject_cue << "\n";
     if (interactive) {
       std::cout << "Enter: record · n: keep the nominal layout · q: stop\n> " << std::flush;
       std::string line;
@@ -361,7 +382,8 @@ int run_interactive(SessionRunner& runner, SessionFolder& folder, const RunArgs&
         continue;
       }
       runner.redo(last);
-      std::cout << runner.plan()[static_cast<size_t>(last)].name << " will be recorded again (the earlier attempt is kept under superseded/)\n";
+      std::cout << runner.plan()[static_cast<size_t>(last)].name
+                << " will be recorded again (the earlier attempt is kept under superseded/)\n";
       continue;
     }
     const AttemptResult r = run_one(runner, i, a.quiet);
@@ -397,17 +419,25 @@ void setup_session(CLI::App& app) {
 
   auto n = std::make_shared<NewArgs>();
   CLI::App* cmd_new = app.add_subcommand("new", "Create a subject session folder from a protocol and print its plan");
-  cmd_new->add_option("--subject", n->subject, "Pseudonymous subject id (letters, digits, _ and -; it names the folder)")->required();
+  cmd_new
+      ->add_option("--subject", n->subject, "Pseudonymous subject id (letters, digits, _ and -; it names the folder)")
+      ->required();
   cmd_new->add_option("--protocol", n->protocol, "Protocol: study, quick or a protocol file")->capture_default_str();
   cmd_new->add_option("--vicon", n->vicon, "Send the Vicon capture trigger to HOST[:PORT] for every trial");
   cmd_new->add_option("--vicon-database", n->vicon_database, "DatabasePath field of the Vicon trigger");
-  cmd_new->add_option("--hand-length-mm", n->hand_length_mm, "Subject's hand length (wrist crease to middle fingertip)");
+  cmd_new->add_option("--hand-length-mm", n->hand_length_mm,
+                      "Subject's hand length (wrist crease to middle fingertip)");
   cmd_new->add_option("--hand-breadth-mm", n->hand_breadth_mm, "Subject's hand breadth across the knuckles");
-  cmd_new->add_option("--handedness", n->handedness, "Hand measured")->check(CLI::IsMember({"right", "left"}))->capture_default_str();
+  cmd_new->add_option("--handedness", n->handedness, "Hand measured")
+      ->check(CLI::IsMember({"right", "left"}))
+      ->capture_default_str();
   cmd_new->add_option("--operator", n->operator_name, "Who runs the session");
   cmd_new->add_option("--notes", n->notes, "Free text kept in the manifest");
-  cmd_new->add_option("--counterbalance", n->counterbalance, "Seed for a counterbalanced trial order (default: the protocol's block order)");
-  cmd_new->add_option("--seconds", n->seconds, "Every trial this long instead of the protocol's durations (rehearsals, demos)")
+  cmd_new->add_option("--counterbalance", n->counterbalance,
+                      "Seed for a counterbalanced trial order (default: the protocol's block order)");
+  cmd_new
+      ->add_option("--seconds", n->seconds,
+                   "Every trial this long instead of the protocol's durations (rehearsals, demos)")
       ->check(CLI::PositiveNumber);
   cmd_new->add_option("-o,--output", n->out, "Session folder to create (default: the sessions folder / SUBJECT)");
   cmd_new->callback([n] { run_new(*n); });
@@ -417,15 +447,23 @@ void setup_session(CLI::App& app) {
   cmd_run->add_option("dir", r->dir, "Session folder made by lmc session new")->required();
   cmd_run->add_option("--backend", r->backend, "sim, leapc or replay:FILE")->capture_default_str();
   cmd_run->add_flag("--fast", r->fast, "Simulated time: the simulator (or a replay) runs as fast as it can");
-  cmd_run->add_flag("--auto", r->automatic, "No questions: start every trial, accept pass and warn, retry a failed trial once");
+  cmd_run->add_flag("--auto", r->automatic,
+                    "No questions: start every trial, accept pass and warn, retry a failed trial once");
   cmd_run->add_option("--seed", r->seed, "Simulator seed (each trial and attempt derives its own from it)");
   cmd_run->add_option("--sim-config", r->sim_config, "Simulator settings (JSON)");
-  cmd_run->add_option("--countdown", r->countdown_s, "Seconds of countdown before each trial (real time only)")->capture_default_str();
-  cmd_run->add_option("--stream-timeout", r->stream_timeout_s, "Abort a trial when not every controller streams within this many s")->capture_default_str();
-  cmd_run->add_option("--vicon-export", r->vicon_export, "Folder where Vicon saves its files: each verdict says whether the trial's file appeared");
-  cmd_run->add_option("--override-preflight", r->override_reason, "Go ahead although the pre-flight fails; the reason is journaled");
-  cmd_run->add_option("--skip-calibration", r->skip_calibration,
-                      "When the protocol calibrates each block: keep the nominal layouts instead; the reason is journaled");
+  cmd_run->add_option("--countdown", r->countdown_s, "Seconds of countdown before each trial (real time only)")
+      ->capture_default_str();
+  cmd_run
+      ->add_option("--stream-timeout", r->stream_timeout_s,
+                   "Abort a trial when not every controller streams within this many s")
+      ->capture_default_str();
+  cmd_run->add_option("--vicon-export", r->vicon_export,
+                      "Folder where Vicon saves its files: each verdict says whether the trial's file appeared");
+  cmd_run->add_option("--override-preflight", r->override_reason,
+                      "Go ahead although the pre-flight fails; the reason is journaled");
+  cmd_run->add_option(
+      "--skip-calibration", r->skip_calibration,
+      "When the protocol calibrates each block: keep the nominal layouts instead; the reason is journaled");
   cmd_run->add_flag("--quiet", r->quiet, "No live status line");
   cmd_run->callback([r] { run_run(*r); });
 
@@ -437,8 +475,10 @@ void setup_session(CLI::App& app) {
     // Read-only: status never takes the lock, repairs or rewrites anything, so it is safe
     // while `lmc session run` or the workbench records into the same folder.
     const auto st = lmc::session::read_session_state(s->first);
-    if (s->second) std::cout << status_json(st, s->first).dump(2) << "\n";
-    else print_status(st, s->first);
+    if (s->second)
+      std::cout << status_json(st, s->first).dump(2) << "\n";
+    else
+      print_status(st, s->first);
   });
 }
 

@@ -13,8 +13,8 @@
 #include "app/lmc/command.h"
 #include "core/common/error.h"
 #include "core/io/recorder_sidecar.h"
-#include "core/processing/length_correction_json.h"
 #include "core/processing/batch.h"
+#include "core/processing/length_correction_json.h"
 #include "core/processing/validity.h"
 
 namespace {
@@ -31,8 +31,9 @@ void setup_validate(CLI::App& app) {
   app.add_option("inputs", opt->inputs, "LMC recordings or folders of trials (as lmc process takes them)")->required();
   app.add_option("--vicon", opt->vicon, "Vicon file (.trc/.c3d) of the LMC files given (folders find theirs by name)");
   app.add_option("--layout", opt->layout, "Layout (name or file); default: the recorder sidecar's, else by trial name");
-  app.add_option("--length-correction", opt->length_correction,
-                 "Also validate the default fusion with this subject's finger-length correction (lmc length-correction fit)");
+  app.add_option(
+      "--length-correction", opt->length_correction,
+      "Also validate the default fusion with this subject's finger-length correction (lmc length-correction fit)");
   app.callback([opt] {
     std::optional<lmc::LengthCorrection> correction;
     if (!opt->length_correction.empty()) correction = lmc::read_length_correction(opt->length_correction);
@@ -44,9 +45,8 @@ void setup_validate(CLI::App& app) {
     for (const auto& input : opt->inputs) {
       // --vicon names the Vicon file of a single LMC file; folders find theirs by trial name.
       const bool single_file = !std::filesystem::is_directory(input);
-      const auto jobs = lmc::discover_trials(input, opt->vicon.empty() || !single_file
-                                                        ? std::nullopt
-                                                        : std::optional<std::filesystem::path>(opt->vicon));
+      const auto jobs = lmc::discover_trials(
+          input, opt->vicon.empty() || !single_file ? std::nullopt : std::optional<std::filesystem::path>(opt->vicon));
       for (const auto& job : jobs) {
         bool simulated = false;
         if (job.sidecar) simulated = lmc::read_recorder_sidecar(*job.sidecar).backend == "sim";
@@ -70,11 +70,12 @@ void setup_validate(CLI::App& app) {
           if (pass == 2) methods.back().label = "corrected";
         }
         const bool with_vicon = std::isfinite(methods.front().vicon_finger_mean[0]);
-        const std::string title = std::string(simulated ? "SIMULATOR" : "REAL DATA") + ": " + job.trial + " (" + frames +
-                                  " frames, layout " + layout_used + (with_vicon ? ", with Vicon" : ", no Vicon") + ")" +
-                                  (correction ? "\n  corrected = default fusion with the finger-length correction of subject " +
-                                                    correction->subject + " (" + opt->length_correction + ")"
-                                              : std::string());
+        const std::string title =
+            std::string(simulated ? "SIMULATOR" : "REAL DATA") + ": " + job.trial + " (" + frames + " frames, layout " +
+            layout_used + (with_vicon ? ", with Vicon" : ", no Vicon") + ")" +
+            (correction ? "\n  corrected = default fusion with the finger-length correction of subject " +
+                              correction->subject + " (" + opt->length_correction + ")"
+                        : std::string());
         blocks.push_back({simulated, lmc::format_validity(title, methods)});
       }
     }

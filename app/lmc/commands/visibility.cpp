@@ -25,7 +25,9 @@ struct VisibilityOptions {
 
 void setup_visibility(CLI::App& app) {
   auto opt = std::make_shared<VisibilityOptions>();
-  app.add_option("file", opt->input, "LMC recording (raw, resampled or raytraced)")->required()->check(CLI::ExistingFile);
+  app.add_option("file", opt->input, "LMC recording (raw, resampled or raytraced)")
+      ->required()
+      ->check(CLI::ExistingFile);
   app.add_option("-o,--output", opt->output, "Output: the input columns plus visibility_thumb … visibility_pinky")
       ->required();
   app.add_option("--range-mm", opt->range_mm, "Sensor range (mm)")->check(CLI::PositiveNumber);
@@ -61,21 +63,20 @@ void setup_visibility(CLI::App& app) {
         for (int k = 0; k < lmc::kNumDigits; ++k) {
           const auto& v = ex.fingers[static_cast<size_t>(k)];
           if (!v.visible()) {
-            std::cout << "row " << (i + 1) << " device " << rec.rows[i].device_id << " " << lmc::digit_name(k)
-                      << ": " << lmc::describe(v) << "\n";
+            std::cout << "row " << (i + 1) << " device " << rec.rows[i].device_id << " " << lmc::digit_name(k) << ": "
+                      << lmc::describe(v) << "\n";
           }
         }
       }
     }
     rec.kind = lmc::RecordingKind::kRaytraced;
     lmc::save_lmc_recording(opt->output, rec);
-    std::cerr << "labelled " << rec.rows.size() << " rows: " << counts[2] << " visible, " << counts[1]
-              << " hidden, " << counts[0] << " no hand (finger labels)\n";
+    std::cerr << "labelled " << rec.rows.size() << " rows: " << counts[2] << " visible, " << counts[1] << " hidden, "
+              << counts[0] << " no hand (finger labels)\n";
   });
 }
 
 const lmc::cli::CommandRegistration visibility_command{
-    "visibility", "Label a recording's rows with ray-traced finger visibility", 40,
-    setup_visibility};
+    "visibility", "Label a recording's rows with ray-traced finger visibility", 40, setup_visibility};
 
 }  // namespace

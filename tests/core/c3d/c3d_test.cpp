@@ -42,7 +42,8 @@ void group(Bytes& x, const std::string& name, int id) {
   x.i16(3);
   x.u8(0);
 }
-void param(Bytes& x, const std::string& name, int gid, int type, std::vector<int> dims, const std::vector<std::uint8_t>& data) {
+void param(Bytes& x, const std::string& name, int gid, int type, std::vector<int> dims,
+           const std::vector<std::uint8_t>& data) {
   x.u8(static_cast<int>(name.size()));
   x.u8(gid);
   x.str(name);
@@ -73,19 +74,19 @@ std::vector<std::uint8_t> hand_made_int_file(bool dec = false) {
   x.dec = dec;
   x.u8(2);
   x.u8(0x50);
-  x.i16(9);   // points (wrong on purpose)
-  x.i16(2);   // analog samples per frame
-  x.i16(1);   // first frame
-  x.i16(3);   // last frame
-  x.i16(0);   // max gap
+  x.i16(9);  // points (wrong on purpose)
+  x.i16(2);  // analog samples per frame
+  x.i16(1);  // first frame
+  x.i16(3);  // last frame
+  x.i16(0);  // max gap
   x.f32(0.5f);
-  x.i16(3);   // data start block
-  x.i16(2);   // analog per channel
+  x.i16(3);  // data start block
+  x.i16(2);  // analog per channel
   x.f32(100.0f);
   x.pad_to(512);
   x.u8(1);
   x.u8(0x50);
-  x.u8(1);   // one parameter block
+  x.u8(1);              // one parameter block
   x.u8(dec ? 85 : 84);  // DEC or Intel (both store integers little-endian)
   group(x, "POINT", 1);
   param(x, "USED", 1, 2, {}, le16(2));
@@ -250,7 +251,8 @@ TEST_P(C3dRoundTrip, WriterOutputReadsBackExactly) {
 }
 
 INSTANTIATE_TEST_SUITE_P(AllFormats, C3dRoundTrip,
-                         ::testing::Combine(::testing::Values(C3dProcessor::kIntel, C3dProcessor::kDec, C3dProcessor::kMips),
+                         ::testing::Combine(::testing::Values(C3dProcessor::kIntel, C3dProcessor::kDec,
+                                                              C3dProcessor::kMips),
                                             ::testing::Bool()));
 
 TEST(C3d, ManyPointsUseLabels2) {

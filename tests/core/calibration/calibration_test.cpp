@@ -24,13 +24,13 @@ std::vector<RigidTransform> anchored(const std::vector<RigidTransform>& truth, c
   return lmc::calibration::anchor_to_nominal(truth, nominal, std::vector<bool>(truth.size(), true));
 }
 
-void expect_near(const RigidTransform& got, const RigidTransform& want, double mm, double deg, const std::string& what) {
+void expect_near(const RigidTransform& got, const RigidTransform& want, double mm, double deg,
+                 const std::string& what) {
   EXPECT_LT((got.t - want.t).norm(), mm) << what;
   EXPECT_LT(lmc::calibration::rotation_angle_deg(got.r.transpose() * want.r), deg) << what;
 }
 
 }  // namespace calibration_test
-
 
 TEST(CalibrationPose, SetRotationReproducesTheMatrix) {
   for (const auto& angles : {std::array<double, 3>{10, -20, 30}, {-170, 45, 5}, {0, 89.9, 0}, {12, 90, 0}}) {
@@ -58,7 +58,8 @@ TEST(CalibrationFit, KabschRecoversAKnownTransformAndHuberIgnoresOutliers) {
   // 10 % of the targets 60 mm off in one direction: least squares is pulled, Huber much less.
   for (size_t i = 0; i < dst.size(); i += 10) dst[i] += lmc::Vec3(60, 0, 0);
   const lmc::calibration::RigidTransform plain = lmc::calibration::weighted_kabsch(src, dst, ones);
-  const lmc::calibration::RigidTransform robust = lmc::calibration::robust_rigid_fit(src, dst, lmc::calibration::RigidTransform{}, {});
+  const lmc::calibration::RigidTransform robust =
+      lmc::calibration::robust_rigid_fit(src, dst, lmc::calibration::RigidTransform{}, {});
   EXPECT_GT((plain.t - truth.t).norm(), 5.0);
   EXPECT_LT((robust.t - truth.t).norm(), 0.5);
   EXPECT_LT(lmc::calibration::rotation_angle_deg(robust.r.transpose() * truth.r), 0.1);
@@ -84,12 +85,14 @@ TEST(CalibrationFit, ClampedCoordinatesAreMaskedNotFitted) {
   }
   EXPECT_GT(clamped, 200);
   const std::vector<double> ones(src.size(), 1.0);
-  const lmc::calibration::RigidTransform start{calibration_test::syn::turn(6.0, 0) * truth.r, truth.t + lmc::Vec3(12, -9, 8)};
+  const lmc::calibration::RigidTransform start{calibration_test::syn::turn(6.0, 0) * truth.r,
+                                               truth.t + lmc::Vec3(12, -9, 8)};
   const lmc::calibration::RigidTransform whole = lmc::calibration::weighted_kabsch(src, dst, ones);
   EXPECT_GT((whole.t - truth.t).norm(), 2.0);
-  calibration_test::expect_near(lmc::calibration::weighted_masked_fit(src, dst, axes, ones, start), truth, 1e-6, 1e-6, "masked");
-  calibration_test::expect_near(lmc::calibration::robust_rigid_fit(src, dst, start, {}, nullptr, axes), truth, 1e-6, 1e-6,
-                                "robust, masked");
+  calibration_test::expect_near(lmc::calibration::weighted_masked_fit(src, dst, axes, ones, start), truth, 1e-6, 1e-6,
+                                "masked");
+  calibration_test::expect_near(lmc::calibration::robust_rigid_fit(src, dst, start, {}, nullptr, axes), truth, 1e-6,
+                                1e-6, "robust, masked");
   // With every axis trusted the masked fit has Kabsch's minimum.
   const std::vector<std::uint8_t> all(src.size(), lmc::calibration::kAllAxes);
   for (size_t i = 0; i < src.size(); ++i) src[i] = truth.inverse().apply(dst[i]);
@@ -99,7 +102,8 @@ TEST(CalibrationFit, ClampedCoordinatesAreMaskedNotFitted) {
 
 TEST(CalibrationVicon, RecoversInjectedErrorsOfEveryController) {
   const lmc::Layout layout = calibration_test::syn::square_layout();
-  const auto truth = calibration_test::syn::perturbed(layout, {{40, -10, 25}, {-60, 30, 10}, {5, 5, -70}, {0, 0, 0}}, {8, -6, 10, 3});
+  const auto truth =
+      calibration_test::syn::perturbed(layout, {{40, -10, 25}, {-60, 30, 10}, {5, 5, -70}, {0, 0, 0}}, {8, -6, 10, 3});
   const auto trial = calibration_test::syn::make_trial(truth, 500, 1.0, 3);
   const auto result = lmc::calibration::calibrate(trial.input, layout);
   ASSERT_TRUE(result.with_vicon);
@@ -118,7 +122,8 @@ TEST(CalibrationVicon, RecoversInjectedErrorsOfEveryController) {
 
 TEST(CalibrationConsensus, RecoversErrorsRelativeToTheAnchorWithoutVicon) {
   const lmc::Layout layout = calibration_test::syn::square_layout();
-  const auto truth = calibration_test::syn::perturbed(layout, {{40, -10, 25}, {-60, 30, 10}, {5, 5, -70}, {20, 0, 0}}, {8, -6, 10, 3});
+  const auto truth =
+      calibration_test::syn::perturbed(layout, {{40, -10, 25}, {-60, 30, 10}, {5, 5, -70}, {20, 0, 0}}, {8, -6, 10, 3});
   const auto trial = calibration_test::syn::make_trial(truth, 500, 1.0, 4, false);
   const auto result = lmc::calibration::calibrate(trial.input, layout);
   ASSERT_FALSE(result.with_vicon);
@@ -143,7 +148,8 @@ TEST(CalibrationWarnings, SwappedSerialsAreNamedInBothModes) {
     ASSERT_EQ(result.warnings.size(), 1U) << (vicon ? "with Vicon" : "without");
     EXPECT_NE(result.warnings[0].find("LMC2 and LMC3 look swapped"), std::string::npos) << result.warnings[0];
     // The correction is then > 100 mm: the implausible-correction warning names both too.
-    EXPECT_NE(result.devices[1].warnings.front().find("larger than a misplaced controller explains"), std::string::npos);
+    EXPECT_NE(result.devices[1].warnings.front().find("larger than a misplaced controller explains"),
+              std::string::npos);
   }
 }
 
@@ -166,15 +172,20 @@ TEST(CalibrationLayout, WrittenBackLayoutReproducesTheFittedTransforms) {
   lmc::Layout layout = calibration_test::syn::square_layout();
   layout.devices[0].pose.rx_deg = 20;
   layout.devices[0].offset_mm = lmc::Vec3(1, 2, 3);
-  const auto truth = calibration_test::syn::perturbed(layout, {{10, 20, 30}, {-5, 0, 8}, {0, 0, 0}, {3, 3, 3}}, {5, 2, 1, 0.5});
+  const auto truth =
+      calibration_test::syn::perturbed(layout, {{10, 20, 30}, {-5, 0, 8}, {0, 0, 0}, {3, 3, 3}}, {5, 2, 1, 0.5});
   const auto trial = calibration_test::syn::make_trial(truth, 200, 0.5, 7);
   const auto result = lmc::calibration::calibrate(trial.input, layout);
-  const lmc::Layout out = lmc::calibration::calibrated_layout(layout, result, {"Naiv_Static101", "Naiv_Static101.trc", "2026-11-23T16:00:00Z"});
+  const lmc::Layout out = lmc::calibration::calibrated_layout(
+      layout, result, {"Naiv_Static101", "Naiv_Static101.trc", "2026-11-23T16:00:00Z"});
   EXPECT_EQ(out.name, "square (calibrated)");
-  EXPECT_NE(out.description.find("from trial Naiv_Static101 against Vicon file Naiv_Static101.trc on 2026-11-23T16:00:00Z"), std::string::npos);
+  EXPECT_NE(
+      out.description.find("from trial Naiv_Static101 against Vicon file Naiv_Static101.trc on 2026-11-23T16:00:00Z"),
+      std::string::npos);
   EXPECT_EQ(lmc::validate_layout(out), "");
   for (size_t d = 0; d < out.devices.size(); ++d) {
-    EXPECT_EQ(out.devices[d].pose.translation(), layout.devices[d].pose.translation());  // position corrections go to the offset
+    EXPECT_EQ(out.devices[d].pose.translation(),
+              layout.devices[d].pose.translation());  // position corrections go to the offset
     for (const lmc::Vec3& p : {lmc::Vec3(0, 0, 0), lmc::Vec3(10, 200, -30)})
       EXPECT_LT((out.devices[d].to_world(p) - result.devices[d].fitted_transform.apply(p)).norm(), 1e-9);
   }
@@ -194,7 +205,8 @@ TEST(CalibrationReference, PublishedStaticTrialControllersAgreeBetterAfterwards)
   LMC_REQUIRE_REFERENCE_FILE(trc_file);
   const lmc::Layout layout = lmc::load_layout_or_preset("paper-initial");
   const lmc::LmcRecording rec = lmc::read_lmc_recording(lmc_file);
-  const lmc::HandTrack vicon = lmc::apply_vicon_mapping(lmc::default_vicon_mapping(), lmc::load_vicon_markers(trc_file));
+  const lmc::HandTrack vicon =
+      lmc::apply_vicon_mapping(lmc::default_vicon_mapping(), lmc::load_vicon_markers(trc_file));
   // Without Vicon; with Vicon as it is; with Vicon anchored to the layout's frame (the trial's
   // Vicon origin is ≈ 100 mm and 10° from the layout's, which the plain run must say).
   for (const int mode : {0, 1, 2}) {
@@ -214,7 +226,8 @@ TEST(CalibrationReference, PublishedStaticTrialControllersAgreeBetterAfterwards)
     }
     if (mode == 1) {
       ASSERT_FALSE(result.warnings.empty());
-      EXPECT_NE(result.warnings[0].find("the Vicon frame is probably not the layout's world frame"), std::string::npos) << result.warnings[0];
+      EXPECT_NE(result.warnings[0].find("the Vicon frame is probably not the layout's world frame"), std::string::npos)
+          << result.warnings[0];
     }
   }
 }
@@ -224,7 +237,8 @@ TEST(CalibrationReference, PublishedStaticTrialControllersAgreeBetterAfterwards)
 TEST(CalibrationVicon, ACommonShiftIsReportedAndAnchoringKeepsTheLayoutsFrame) {
   const lmc::Layout layout = calibration_test::syn::square_layout();
   const lmc::Vec3 shift(60, -20, 30);
-  const auto truth = calibration_test::syn::perturbed(layout, {shift, shift + lmc::Vec3(10, 0, 0), shift, shift}, {0, 0, 0, 0});
+  const auto truth =
+      calibration_test::syn::perturbed(layout, {shift, shift + lmc::Vec3(10, 0, 0), shift, shift}, {0, 0, 0, 0});
   const auto trial = calibration_test::syn::make_trial(truth, 300, 1.0, 8);
   const auto plain = lmc::calibration::calibrate(trial.input, layout);
   ASSERT_FALSE(plain.warnings.empty());

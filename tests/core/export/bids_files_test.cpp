@@ -90,7 +90,8 @@ TEST(BidsMotionFiles, ChannelsAndMotionRowsAsDocumented) {
   const std::vector<std::string> channels = lines_of(bids_channels_tsv(t, systems[1]));
   ASSERT_EQ(channels.size(), 1u + 3 * 28);
   EXPECT_EQ(channels[0], "name\tcomponent\ttype\ttracked_point\tunits\treference_frame\tdescription");
-  EXPECT_EQ(cells_of(channels[1]), (std::vector<std::string>{"Palm_x", "x", "POS", "Palm", "mm", "world", "LMC1 realigned: palm position"}));
+  EXPECT_EQ(cells_of(channels[1]),
+            (std::vector<std::string>{"Palm_x", "x", "POS", "Palm", "mm", "world", "LMC1 realigned: palm position"}));
   EXPECT_EQ(cells_of(channels[3])[0], "Palm_z");
   EXPECT_EQ(cells_of(channels[3])[1], "z");
   EXPECT_EQ(cells_of(channels[84])[0], "Pinky_End_z");
@@ -145,9 +146,11 @@ TEST(BidsMotionFiles, MotionJsonHasTheSidecarKeys) {
 TEST(BidsDatasetFiles, EventsParticipantsScansAndDescription) {
   EXPECT_EQ(bids_events_tsv({{-0.0104, 3.0, "go"}, {2.5, 0.0, "stop"}}),
             "onset\tduration\ttrial_type\n-0.010\t3.000\tgo\n2.500\t0.000\tstop\n");
-  const std::string participants = bids_participants_tsv({{"S01", "right", 185.0, std::nullopt}, {"02", "left", std::nullopt, 80.5}});
+  const std::string participants =
+      bids_participants_tsv({{"S01", "right", 185.0, std::nullopt}, {"02", "left", std::nullopt, 80.5}});
   EXPECT_EQ(participants,
-            "participant_id\thandedness\thand_length_mm\thand_breadth_mm\nsub-S01\tright\t185.0\tn/a\nsub-02\tleft\tn/a\t80.5\n");
+            "participant_id\thandedness\thand_length_mm\thand_breadth_mm\nsub-S01\tright\t185.0\tn/a\nsub-02\tleft\tn/"
+            "a\t80.5\n");
   const nlohmann::json pj = bids_participants_json();
   EXPECT_EQ(pj["hand_length_mm"]["Units"], "mm");
   EXPECT_FALSE(pj.contains("operator"));

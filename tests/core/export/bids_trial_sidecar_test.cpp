@@ -46,7 +46,8 @@ TEST(BidsTrialSidecar, EventsAreSecondsFromTheFirstRow) {
   EXPECT_NEAR(e[1].duration_s, 2.990, 1e-9);
   EXPECT_EQ(e[2].type, "stop");
   EXPECT_NEAR(e[2].onset_s, 2.995, 1e-9);
-  EXPECT_EQ(bids_events_tsv(e), "onset\tduration\ttrial_type\n-0.005\t0.000\tvicon_capture_start\n0.005\t2.990\tgo\n2.995\t0.000\tstop\n");
+  EXPECT_EQ(bids_events_tsv(e),
+            "onset\tduration\ttrial_type\n-0.005\t0.000\tvicon_capture_start\n0.005\t2.990\tgo\n2.995\t0.000\tstop\n");
 
   // A sidecar from before the trial window: its first row is the recorder's start, not go.
   RecorderSidecar old = s;
@@ -81,7 +82,8 @@ TEST(BidsTrialSidecar, MotionInfoPerTrackingSystem) {
   EXPECT_EQ(c.manufacturer, "Ultraleap");
   EXPECT_EQ(c.model, "Leap Motion Controller");
   EXPECT_EQ(c.serial, "LP22222");
-  EXPECT_EQ(c.software_versions, "recorded with lmc-workbench 0.0.9 (leapc backend); processed with lmc-workbench " LMC_VERSION);
+  EXPECT_EQ(c.software_versions,
+            "recorded with lmc-workbench 0.0.9 (leapc backend); processed with lmc-workbench " LMC_VERSION);
   BidsTrackingSystem fused{kBidsFusedTracksys, 0, {}, {}};
   const BidsMotionInfo f = bids_motion_info(t, fused, &s, FusionMethod::kReference);
   EXPECT_EQ(f.serial, "");

@@ -17,7 +17,9 @@ namespace trial_points_test {  // named: test files share unity batches
 
 constexpr double kNaNv = std::numeric_limits<double>::quiet_NaN();
 
-Vec3 value(int who, int f, int i) { return {100.0 * who + 0.125 * f + i, -50.0 + 0.5 * i - f, 300.25 + who - 0.001 * i}; }
+Vec3 value(int who, int f, int i) {
+  return {100.0 * who + 0.125 * f + i, -50.0 + 0.5 * i - f, 300.25 + who - 0.001 * i};
+}
 
 // Five frames; the fused hand is missing in frame 2, LMC2 has no hand in frames 0–1, Vicon has two
 // markers (one with a character a label cannot hold, one with a gap) and only four frames.
@@ -48,7 +50,9 @@ MarkerSeries small_markers() {
   return m;
 }
 
-bool missing(const Eigen::Vector3d& p) { return p.array().isNaN().any(); }
+bool missing(const Eigen::Vector3d& p) {
+  return p.array().isNaN().any();
+}
 
 TEST(ExportPoints, LabelsValuesAndMissingPointsAsDocumented) {
   const TrialResult r = small_trial();
@@ -110,7 +114,8 @@ void expect_same_points(const PointTable& t, const std::vector<std::vector<Eigen
         ++missing_points;
         continue;
       }
-      EXPECT_LT((back[f][p] - t.positions[f][p]).cwiseAbs().maxCoeff(), 1e-3) << what << " frame " << f << " " << t.labels[p];
+      EXPECT_LT((back[f][p] - t.positions[f][p]).cwiseAbs().maxCoeff(), 1e-3)
+          << what << " frame " << f << " " << t.labels[p];
     }
   }
   EXPECT_GT(missing_points, 28) << what;
@@ -132,8 +137,9 @@ TEST(ExportPoints, C3dAndTrcReadBackToAThousandthOfAMillimetre) {
   EXPECT_EQ(c.manufacturer_company, "lmc-workbench");
   EXPECT_EQ(c.manufacturer_version, LMC_VERSION);
   EXPECT_NE(c.manufacturer_software.find("y up"), std::string::npos) << c.manufacturer_software;
-  for (const char* p : {"POINT:USED", "POINT:SCALE", "POINT:RATE", "POINT:FRAMES", "POINT:UNITS", "POINT:LABELS",
-                        "POINT:DESCRIPTIONS", "TRIAL:ACTUAL_START_FIELD", "TRIAL:ACTUAL_END_FIELD", "MANUFACTURER:VERSION_LABEL"}) {
+  for (const char* p :
+       {"POINT:USED", "POINT:SCALE", "POINT:RATE", "POINT:FRAMES", "POINT:UNITS", "POINT:LABELS", "POINT:DESCRIPTIONS",
+        "TRIAL:ACTUAL_START_FIELD", "TRIAL:ACTUAL_END_FIELD", "MANUFACTURER:VERSION_LABEL"}) {
     EXPECT_NE(std::find(c.parameter_names.begin(), c.parameter_names.end(), p), c.parameter_names.end()) << p;
   }
   expect_same_points(t, c.positions, "C3D");

@@ -21,11 +21,8 @@ Figure bland_altman_like() {
   f.title = "Index MCP: LMC vs Vicon";
   f.x = {"mean of methods", "deg", {}};
   f.y = {"difference", "deg", {}};
-  f.series.push_back({"trials",
-                      {},
-                      SeriesStyle::points,
-                      {10, 20, 30},
-                      {1, std::numeric_limits<double>::quiet_NaN(), -1}});
+  f.series.push_back(
+      {"trials", {}, SeriesStyle::points, {10, 20, 30}, {1, std::numeric_limits<double>::quiet_NaN(), -1}});
   f.references.push_back({0.0, "bias 0.0", Dash::dashed});
   return f;
 }
@@ -40,8 +37,8 @@ std::string slurp(const std::filesystem::path& p) {
 TEST(FiguresExport, TheSidecarHasEveryKey) {
   const FigureProvenance how{{"sessions/S01/trial3.lmc"}, "bland-altman", {{"limits", 1.96}}};
   const auto j = figure_sidecar(bland_altman_like(), "ba_index", how);
-  for (const char* key : {"format", "format_version", "title", "files", "inputs", "method",
-                          "parameters", "software_version", "created_utc", "csv_columns", "figure"})
+  for (const char* key : {"format", "format_version", "title", "files", "inputs", "method", "parameters",
+                          "software_version", "created_utc", "csv_columns", "figure"})
     EXPECT_TRUE(j.contains(key)) << key;
   EXPECT_EQ(j["format"], "lmc-figure-export");
   EXPECT_EQ(j["title"], "Index MCP: LMC vs Vicon");
@@ -60,8 +57,7 @@ TEST(FiguresExport, TheSidecarHasEveryKey) {
 TEST(FiguresExport, WritesTheThreeFilesWithTheSameContentAsTheWriters) {
   const auto dir = lmc::test::scratch_dir("figures_export");
   const Figure f = bland_altman_like();
-  const auto written =
-      write_figure_files(dir, "ba_index", f, {"a.lmc", "b.trc"}, "bland-altman", {{"k", 2}});
+  const auto written = write_figure_files(dir, "ba_index", f, {"a.lmc", "b.trc"}, "bland-altman", {{"k", 2}});
   EXPECT_EQ(written.svg, dir / "ba_index.svg");
   EXPECT_EQ(slurp(written.svg), to_svg(f));
   EXPECT_EQ(slurp(written.csv), to_csv(f));

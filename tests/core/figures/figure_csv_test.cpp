@@ -40,13 +40,8 @@ double read_cell(const std::string& cell) {
 
 TEST(FiguresCsv, MissingValuesAreEmptyCellsAndNumbersReadBackExactly) {
   Figure f;
-  f.series.push_back(
-      {"angle", {}, SeriesStyle::line, {0.0, 0.1, 0.2, 0.3}, {1.0 / 3.0, kNan, -2.5e-7, 0.0}});
-  f.series.push_back({"other",
-                      {},
-                      SeriesStyle::points,
-                      {1, kNan, 3},
-                      {std::numeric_limits<double>::infinity(), 4, 5}});
+  f.series.push_back({"angle", {}, SeriesStyle::line, {0.0, 0.1, 0.2, 0.3}, {1.0 / 3.0, kNan, -2.5e-7, 0.0}});
+  f.series.push_back({"other", {}, SeriesStyle::points, {1, kNan, 3}, {std::numeric_limits<double>::infinity(), 4, 5}});
   const auto lines = csv_lines(to_csv(f));
   ASSERT_EQ(lines.size(), 1u + 4u + 3u);
   EXPECT_EQ(lines[0], "series,x,y");

@@ -59,14 +59,13 @@ TEST(FiguresHeatmap, OneRectPerCellAndTheMissingOneIsMarked) {
 
 TEST(FiguresHeatmap, EveryRowColumnGroupAndPanelIsLabelled) {
   const auto texts = text_contents(to_svg(two_panels(), 800, 520));
-  for (const char* row : {"thumb", "index", "middle"})
-    EXPECT_EQ(count(texts, row), 2u) << row;  // each panel
+  for (const char* row : {"thumb", "index", "middle"}) EXPECT_EQ(count(texts, row), 2u) << row;  // each panel
   // Column labels once, under the bottom panel ("index flexion" may wrap onto two lines).
   EXPECT_EQ(count(texts, "open hand"), 2u);
   EXPECT_EQ(count(texts, "palm down"), 1u);
   EXPECT_EQ(count(texts, "palm left"), 1u);
-  for (const char* s : {"Coverage", "at least one", "two or more", "finger", "reference pose",
-                        "share of frames", "A cell: the share of frames."})
+  for (const char* s : {"Coverage", "at least one", "two or more", "finger", "reference pose", "share of frames",
+                        "A cell: the share of frames."})
     EXPECT_EQ(count(texts, s), 1u) << s;
   // The legend's ticks say what the colours stand for, in the cells' unit.
   for (const char* tick : {"0 %", "50 %", "100 %"}) EXPECT_GE(count(texts, tick), 1u) << tick;
@@ -116,9 +115,7 @@ TEST(FiguresHeatmap, TextStaysInsideTheDocument) {
       const double x = std::stod(xs[i]);
       if (x == 0) continue;  // rotated text is placed by its transform
       const double width = 0.6 * 12 * static_cast<double>(texts[i].size());
-      const double left = anchors[i] == "end"      ? x - width
-                          : anchors[i] == "middle" ? x - width / 2
-                                                   : x;
+      const double left = anchors[i] == "end" ? x - width : anchors[i] == "middle" ? x - width / 2 : x;
       EXPECT_GE(left, 0) << w << " " << texts[i];
       EXPECT_LE(left + width, w + 0.01) << w << " " << texts[i];
     }

@@ -66,8 +66,7 @@ std::string xml_balance_problem(const std::string& doc) {
   return {};
 }
 
-std::vector<std::string> attribute_values(const std::string& doc, const std::string& tag,
-                                          const std::string& name) {
+std::vector<std::string> attribute_values(const std::string& doc, const std::string& tag, const std::string& name) {
   std::vector<std::string> out;
   const std::string start = "<" + tag + " ", key = " " + name + "=\"";
   for (size_t i = doc.find(start); i != std::string::npos; i = doc.find(start, i + 1)) {

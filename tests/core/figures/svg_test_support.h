@@ -11,8 +11,7 @@ namespace lmc::figures::svg_test_support {
 std::string xml_balance_problem(const std::string& doc);
 
 // The value of attribute `name` of every element `<tag ...>` in the document, in order.
-std::vector<std::string> attribute_values(const std::string& doc, const std::string& tag,
-                                          const std::string& name);
+std::vector<std::string> attribute_values(const std::string& doc, const std::string& tag, const std::string& name);
 
 // The text between <text ...> and </text> of every text element, in order.
 std::vector<std::string> text_contents(const std::string& doc);

@@ -22,8 +22,7 @@ Figure gap_figure() {
   f.title = "Angle";
   f.x = {"time", "s", AxisRange{0.0, 4.0}};
   f.y = {"angle", "deg", AxisRange{-10.0, 10.0}};
-  f.series.push_back(
-      {"index MCP", std::nullopt, SeriesStyle::line, {0, 1, 2, 3, 4}, {5, 6, kGap, 7, 8}, true});
+  f.series.push_back({"index MCP", std::nullopt, SeriesStyle::line, {0, 1, 2, 3, 4}, {5, 6, kGap, 7, 8}, true});
   return f;
 }
 
@@ -79,9 +78,7 @@ TEST(FiguresSvg, IsAStandaloneSvgWithTitleAxisLabelsUnitsAndTicks) {
   EXPECT_NE(svg.find("xmlns=\"http://www.w3.org/2000/svg\""), std::string::npos);
   EXPECT_NE(svg.find("version=\"1.1\""), std::string::npos);
   const auto texts = text_contents(svg);
-  const auto has = [&](const std::string& s) {
-    return std::find(texts.begin(), texts.end(), s) != texts.end();
-  };
+  const auto has = [&](const std::string& s) { return std::find(texts.begin(), texts.end(), s) != texts.end(); };
   EXPECT_TRUE(has("Angle"));
   EXPECT_TRUE(has("time (s)"));
   EXPECT_NE(svg.find(">angle (deg)</text>"), std::string::npos);

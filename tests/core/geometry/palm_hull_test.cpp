@@ -12,10 +12,11 @@ namespace {
 // Slow, independent check: q is inside iff it lies in one of the tetrahedra (or, for coplanar
 // points, triangles) spanned by the points (Carathéodory). Solved by Cramer's rule rather than an
 // Eigen decomposition, whose templates cost 15 s of compile time under the sanitizers.
-double det3(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::Vector3d& c) { return a.dot(b.cross(c)); }
+double det3(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::Vector3d& c) {
+  return a.dot(b.cross(c));
+}
 
-bool hull_contains_bruteforce(const std::vector<Eigen::Vector3d>& points, const Eigen::Vector3d& q,
-                              double tolerance) {
+bool hull_contains_bruteforce(const std::vector<Eigen::Vector3d>& points, const Eigen::Vector3d& q, double tolerance) {
   const size_t n = points.size();
   // Tetrahedra: q = p0 + λ1·e1 + λ2·e2 + λ3·e3 with λ ≥ 0 and Σλ ≤ 1.
   for (size_t a = 0; a < n; ++a) {
@@ -63,8 +64,8 @@ TEST(PalmHull, TetrahedronContainsItsCentroidNotOutside) {
   EXPECT_FALSE(hull.flat);
   EXPECT_EQ(hull.plane_count, 4);
   EXPECT_TRUE(hull_contains(hull, 0.2, 0.2, 0.2));
-  EXPECT_FALSE(hull_contains(hull, 0.5, 0.5, 0.5));  // beyond the slanted face x+y+z = 1
-  EXPECT_TRUE(hull_contains(hull, 0.0, 0.0, 0.0));   // a vertex counts as inside (feasible LP)
+  EXPECT_FALSE(hull_contains(hull, 0.5, 0.5, 0.5));             // beyond the slanted face x+y+z = 1
+  EXPECT_TRUE(hull_contains(hull, 0.0, 0.0, 0.0));              // a vertex counts as inside (feasible LP)
   EXPECT_TRUE(hull_contains(hull, 1.0 / 3, 1.0 / 3, 1.0 / 3));  // on a face
   EXPECT_FALSE(hull_contains(hull, -0.001, 0.2, 0.2));
 }

@@ -11,7 +11,9 @@
 namespace lmc {
 namespace {
 
-double dist(const HandFrame& f, int a, int b) { return (f.point(a) - f.point(b)).norm(); }
+double dist(const HandFrame& f, int a, int b) {
+  return (f.point(a) - f.point(b)).norm();
+}
 
 TEST(HandModel, DefaultSegmentLengthsFollowBuchholz) {
   const HandModel model;  // HL 190 mm
@@ -71,8 +73,8 @@ TEST(HandModel, FromRecordedFrameKeepsItsLengths) {
   const HandFrame f = model.pose({});
   for (int d = 1; d < kNumDigits; ++d) {
     for (int j = 1; j < 4; ++j) {
-      EXPECT_NEAR(dist(f, digit_point(d, j), digit_point(d, j + 1)), dist(row, digit_point(d, j), digit_point(d, j + 1)),
-                  1e-9)
+      EXPECT_NEAR(dist(f, digit_point(d, j), digit_point(d, j + 1)),
+                  dist(row, digit_point(d, j), digit_point(d, j + 1)), 1e-9)
           << d << "/" << j;
     }
     EXPECT_NEAR(dist(f, digit_point(d, 0), digit_point(d, 1)), dist(row, digit_point(d, 0), digit_point(d, 1)), 1e-9);

@@ -4,8 +4,8 @@
 
 #include "core/common/error.h"
 #include "core/hand/pose_set_generator.h"
-#include "core/io/pose_source.h"
 #include "core/io/pose_set_tsv.h"
+#include "core/io/pose_source.h"
 #include "tests/support/reference_data.h"
 
 namespace lmc {

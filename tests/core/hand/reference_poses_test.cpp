@@ -70,7 +70,9 @@ TEST(ReferencePoses, PaperLayoutsSeeTheOpenHand) {
       for (int d = 0; d < t.devices && std::string(preset) == "paper-initial"; ++d) {
         const auto ex = explain_visibility(fr, DeviceView::from_device(layout.devices[static_cast<size_t>(d)]),
                                            make_limits(VisibilityParams::from_sensor(layout.sensor)));
-        for (int k = 0; k < kNumDigits; ++k) why += " | dev" + std::to_string(d) + " " + std::string(digit_name(k)) + ": " + describe(ex.fingers[static_cast<size_t>(k)]);
+        for (int k = 0; k < kNumDigits; ++k)
+          why += " | dev" + std::to_string(d) + " " + std::string(digit_name(k)) + ": " +
+                 describe(ex.fingers[static_cast<size_t>(k)]);
       }
       const bool initial_vertical = std::string(preset) == "paper-initial" && o == 1;
       for (int d = 0; d < t.devices && std::string(preset) == "paper-initial"; ++d) {
@@ -91,7 +93,6 @@ TEST(ReferencePoses, PaperLayoutsSeeTheOpenHand) {
   }
 }
 
-
 TEST(ReferencePoses, MotionPoseGoesFromTheOpenHandToTheEndOfRangeAtTheSimulatorsPlacement) {
   const HandModel model;
   const HandFrame open = motion_pose(model, HandOrientation::kHorizontal, HandMotion::kIndexFlexion, 0.0);
@@ -99,7 +100,8 @@ TEST(ReferencePoses, MotionPoseGoesFromTheOpenHandToTheEndOfRangeAtTheSimulators
   const HandFrame half = motion_pose(model, HandOrientation::kHorizontal, HandMotion::kIndexFlexion, 0.5);
   EXPECT_TRUE(open.hand_present);
   // Placed like the simulated rig's trial hand: the open hand's placement throughout.
-  const HandFrame sim_open = model.pose(motion_angles(HandMotion::kOpen, 0.0), reference_placement(model, HandOrientation::kHorizontal));
+  const HandFrame sim_open =
+      model.pose(motion_angles(HandMotion::kOpen, 0.0), reference_placement(model, HandOrientation::kHorizontal));
   for (int k = 0; k < kNumHandPoints; ++k) EXPECT_NEAR((open.point(k) - sim_open.point(k)).norm(), 0.0, 1e-9) << k;
   // The index tip curls towards the palm; the middle finger and the palm stay where they were.
   const int index_tip = digit_point(Digit::kIndex, Joint::kEnd);

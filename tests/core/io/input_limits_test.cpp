@@ -64,19 +64,30 @@ constexpr std::uintmax_t k200Mb = std::uintmax_t{200} << 20;
 TEST(InputLimits, TwoGigabytesOfGarbageAreRefusedAtTheFirstLineByEveryReader) {
   const auto dir = lmc::test::scratch_dir("input_limits_garbage");
   const auto zeros = sparse_file(dir, "zeros.txt", kTwoGb, "");
-  expect_refused_cheaply(zeros, [&] { (void)lmc::read_lmc_recording(zeros); }, "NUL byte");
-  expect_refused_cheaply(zeros, [&] { (void)lmc::read_trc(zeros); }, "NUL byte");
-  expect_refused_cheaply(zeros, [&] { (void)lmc::load_pose_set(zeros); }, "NUL byte");
-  expect_refused_cheaply(zeros, [&] { (void)lmc::read_c3d(zeros); }, "not a C3D file");
-  expect_refused_cheaply(zeros, [&] { (void)lmc::read_json_file(zeros); }, "MB");
-  expect_refused_cheaply(zeros, [&] { (void)lmc::load_layout(zeros); }, "MB");
-  expect_refused_cheaply(zeros, [&] { (void)lmc::read_recorder_sidecar(zeros); }, "MB");
-  expect_refused_cheaply(zeros, [&] { (void)lmc::session::read_journal(zeros); }, "MB");
+  expect_refused_cheaply(
+      zeros, [&] { (void)lmc::read_lmc_recording(zeros); }, "NUL byte");
+  expect_refused_cheaply(
+      zeros, [&] { (void)lmc::read_trc(zeros); }, "NUL byte");
+  expect_refused_cheaply(
+      zeros, [&] { (void)lmc::load_pose_set(zeros); }, "NUL byte");
+  expect_refused_cheaply(
+      zeros, [&] { (void)lmc::read_c3d(zeros); }, "not a C3D file");
+  expect_refused_cheaply(
+      zeros, [&] { (void)lmc::read_json_file(zeros); }, "MB");
+  expect_refused_cheaply(
+      zeros, [&] { (void)lmc::load_layout(zeros); }, "MB");
+  expect_refused_cheaply(
+      zeros, [&] { (void)lmc::read_recorder_sidecar(zeros); }, "MB");
+  expect_refused_cheaply(
+      zeros, [&] { (void)lmc::session::read_journal(zeros); }, "MB");
   // Printable garbage with line breaks: the header check refuses it before the rest is read.
   const auto words = sparse_file(dir, "words.txt", kTwoGb, "lorem ipsum\tdolor\nsit amet\n");
-  expect_refused_cheaply(words, [&] { (void)lmc::read_lmc_recording(words); }, "Device ID");
-  expect_refused_cheaply(words, [&] { (void)lmc::read_trc(words); }, "PathFileType");
-  expect_refused_cheaply(words, [&] { (void)lmc::load_pose_set(words); }, "not a pose set");
+  expect_refused_cheaply(
+      words, [&] { (void)lmc::read_lmc_recording(words); }, "Device ID");
+  expect_refused_cheaply(
+      words, [&] { (void)lmc::read_trc(words); }, "PathFileType");
+  expect_refused_cheaply(
+      words, [&] { (void)lmc::load_pose_set(words); }, "not a pose set");
   fs::remove_all(dir);
 }
 
@@ -84,9 +95,12 @@ TEST(InputLimits, AFileOfOneLongLineIsRefusedWithoutReadingIt) {
   const auto dir = lmc::test::scratch_dir("input_limits_one_line");
   const std::string letters(1 << 17, 'a');
   const auto one_line = sparse_file(dir, "one_line.txt", k200Mb, letters);
-  expect_refused_cheaply(one_line, [&] { (void)lmc::read_lmc_recording(one_line); }, "longer than 64 KB");
-  expect_refused_cheaply(one_line, [&] { (void)lmc::read_trc(one_line); }, "longer than 64 KB");
-  expect_refused_cheaply(one_line, [&] { (void)lmc::load_pose_set(one_line); }, "longer than 64 KB");
+  expect_refused_cheaply(
+      one_line, [&] { (void)lmc::read_lmc_recording(one_line); }, "longer than 64 KB");
+  expect_refused_cheaply(
+      one_line, [&] { (void)lmc::read_trc(one_line); }, "longer than 64 KB");
+  expect_refused_cheaply(
+      one_line, [&] { (void)lmc::load_pose_set(one_line); }, "longer than 64 KB");
   fs::remove_all(dir);
 }
 
@@ -99,13 +113,15 @@ TEST(InputLimits, JsonNestedAHundredThousandDeepIsAnErrorNotAStackOverflow) {
     std::ofstream out(sidecar);
     out << R"({"format": "lmc-session", "extra": )" << deep << "}";
   }
-  expect_refused_cheaply(sidecar, [&] { (void)lmc::read_recorder_sidecar(sidecar); }, "nested deeper than");
+  expect_refused_cheaply(
+      sidecar, [&] { (void)lmc::read_recorder_sidecar(sidecar); }, "nested deeper than");
   const fs::path layout = dir / "deep-layout.json";
   {
     std::ofstream out(layout);
     out << R"({"name": "deep", "devices": )" << deep << "}";
   }
-  expect_refused_cheaply(layout, [&] { (void)lmc::load_layout(layout); }, "nested deeper than");
+  expect_refused_cheaply(
+      layout, [&] { (void)lmc::load_layout(layout); }, "nested deeper than");
   fs::remove_all(dir);
 }
 

@@ -17,10 +17,10 @@
 namespace lmc {
 namespace {
 
-using ::testing::HasSubstr;
 using test::expect_error_at;
 using test::io_fixture;
 using test::same_double;
+using ::testing::HasSubstr;
 
 // A hand frame whose coordinates exercise the formatter: long fractions, negative zero, tiny
 // magnitudes and magnitudes just inside the reader's 10 m limit.
@@ -187,12 +187,14 @@ TEST(LmcRecordingRead, CrLfLineEndingsAndTabSeparatedRaytraced) {
 TEST(LmcRecordingErrors, WrongColumnCount) {
   const auto path = io_fixture("raw_wrong_column_count.txt").string();
   const long line_length = static_cast<long>(std::string("3\t12\t60\t2998390000\t1,2,3\t4,5,6\t7,8,9\t").size());
-  expect_error_at([&] { read_lmc_recording(path); }, path, 3, line_length + 1, "row has 7 fields; expected 4 (no hand) or 34");
+  expect_error_at([&] { read_lmc_recording(path); }, path, 3, line_length + 1,
+                  "row has 7 fields; expected 4 (no hand) or 34");
 }
 
 TEST(LmcRecordingErrors, NonNumericFieldIsRejectedNotTruncated) {
   const auto path = io_fixture("raw_non_numeric.txt").string();
-  expect_error_at([&] { read_lmc_recording(path); }, path, 2, 7, "Frame Rate is not a finite non-negative number: '12abc'");
+  expect_error_at([&] { read_lmc_recording(path); }, path, 2, 7,
+                  "Frame Rate is not a finite non-negative number: '12abc'");
 }
 
 TEST(LmcRecordingErrors, PointWithTwoNumbers) {
@@ -245,7 +247,8 @@ TEST(LmcRecordingErrors, ImplausibleCoordinatesAreRefusedWithTheirValue) {
 }
 
 TEST(LmcRecordingErrors, ImplausibleTimestampIsRefused) {
-  expect_recording_error(raw_text_with("2", "9223372036854775807"), "Time Stamp '9223372036854775807' µs is implausible");
+  expect_recording_error(raw_text_with("2", "9223372036854775807"),
+                         "Time Stamp '9223372036854775807' µs is implausible");
   expect_recording_error(raw_text_with("2", "-9007199254740993"), "is implausible");
   std::istringstream ok(raw_text_with("2", "9007199254740992"));
   EXPECT_EQ(parse_lmc_recording(ok, "ok.txt").rows.size(), 2u);

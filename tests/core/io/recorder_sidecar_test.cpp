@@ -15,8 +15,8 @@
 namespace lmc {
 namespace {
 
-using ::testing::HasSubstr;
 using nlohmann::json;
+using ::testing::HasSubstr;
 
 RecorderSidecar full_sidecar() {
   RecorderSidecar s;

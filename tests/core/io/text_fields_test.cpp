@@ -73,7 +73,10 @@ TEST(TextFields, LinesStripCarriageReturnAndFlagMissingNewline) {
 }
 
 TEST(TextFields, RejectsNulAndInvalidUtf8WithPosition) {
-  EXPECT_NO_THROW(require_text("Gr\xC3\xBC\xC3\x9F" "e\n", "f"));  // valid UTF-8 (Grüße)
+  EXPECT_NO_THROW(
+      require_text("Gr\xC3\xBC\xC3\x9F"
+                   "e\n",
+                   "f"));  // valid UTF-8 (Grüße)
   try {
     require_text(std::string("ab\ncd\0e", 7), "bin.dat");
     FAIL() << "NUL accepted";

@@ -15,11 +15,10 @@
 namespace lmc {
 namespace trc_test {
 
-using ::testing::HasSubstr;
 using test::expect_error_at;
 using test::io_fixture;
 using test::same_double;
-
+using ::testing::HasSubstr;
 
 TEST(TrcRead, MissingMarkersEmptyNanAndBlankLine) {
   const auto path = io_fixture("trc_missing_markers.trc");
@@ -122,17 +121,21 @@ TEST(TrcErrors, InfiniteOrImplausibleCoordinateIsRefused) {
   const auto trc_with = [](const std::string& cell, const std::string& units) {
     return "PathFileType\t3\t(X/Y/Z)\th.trc\n"
            "DataRate\tCameraRate\tNumFrames\tNumMarkers\tUnits\tOrigDataRate\tOrigDataStartFrame\tOrigNumFrames\n"
-           "100\t100\t2\t1\t" + units + "\t100\t1\t2\n"
+           "100\t100\t2\t1\t" +
+           units +
+           "\t100\t1\t2\n"
            "Frame#\tTime\tTip\t\t\n"
            "\t\tX1\tY1\tZ1\n"
            "1\t0\t1\t2\t3\n"
-           "2\t0.01\t1\t" + cell + "\t3\n";
+           "2\t0.01\t1\t" +
+           cell + "\t3\n";
   };
   const auto parse = [](const std::string& text) {
     std::istringstream in(text);
     return parse_trc(in, "hostile.trc");
   };
-  expect_error_at([&] { parse(trc_with("1e308", "mm")); }, "hostile.trc", 7, 0, "marker 'Tip' Y = '1e308' mm is implausible");
+  expect_error_at([&] { parse(trc_with("1e308", "mm")); }, "hostile.trc", 7, 0,
+                  "marker 'Tip' Y = '1e308' mm is implausible");
   expect_error_at([&] { parse(trc_with("-200", "m")); }, "hostile.trc", 7, 0, "'-200' m is implausible");
   expect_error_at([&] { parse(trc_with("inf", "mm")); }, "hostile.trc", 7, 0, "marker 'Tip' Y is infinite: 'inf'");
   EXPECT_EQ(parse(trc_with("-99999", "mm")).frame_count(), 2);  // inside 100 m

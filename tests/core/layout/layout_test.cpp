@@ -14,7 +14,9 @@
 namespace lmc {
 namespace {
 
-std::filesystem::path asset(const std::string& rel) { return lmc::test::test_assets_dir() / rel; }
+std::filesystem::path asset(const std::string& rel) {
+  return lmc::test::test_assets_dir() / rel;
+}
 
 TEST(DevicePose, RotationIsRzRyRxAppliedXFirst) {
   DevicePose p;

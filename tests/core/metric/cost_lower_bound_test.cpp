@@ -6,8 +6,8 @@
 #include <numeric>
 #include <vector>
 
-#include "core/layout/layout.h"
 #include "core/io/layout_json.h"
+#include "core/layout/layout.h"
 #include "core/metric/placement_metric.h"
 #include "core/visibility/device_view.h"
 #include "core/visibility/visibility_params.h"
@@ -16,7 +16,9 @@
 namespace lmc {
 namespace cost_lower_bound_test {  // named: the unity build puts several tests in one file
 
-const std::vector<PreparedFrame>& bound_frames() { return test::mc_frames(300, 11); }
+const std::vector<PreparedFrame>& bound_frames() {
+  return test::mc_frames(300, 11);
+}
 
 std::vector<DeviceView> views_of(const Layout& l) {
   std::vector<DeviceView> v;
@@ -36,7 +38,8 @@ Split split_tally(const Layout& layout, int counted) {
   std::iota(first.begin(), first.end(), 0);
   Split s;
   s.full = tally_layout(views, bound_frames(), lim);
-  s.partial = counted > 0 ? tally_layout(views, bound_frames(), lim, kAxisCutMm, first) : LayoutTally(layout.device_count());
+  s.partial =
+      counted > 0 ? tally_layout(views, bound_frames(), lim, kAxisCutMm, first) : LayoutTally(layout.device_count());
   s.remaining = static_cast<std::int64_t>(bound_frames().size()) - counted;
   return s;
 }

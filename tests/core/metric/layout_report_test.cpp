@@ -50,7 +50,9 @@ TEST(LayoutReport, ThePapersOptimizedLayoutIsExplainedInOnePage) {
   EXPECT_NE(md.find("**LMC1 does not count**"), std::string::npos) << md;
   EXPECT_NE(md.find("**LMC1 and LMC2 overlap**"), std::string::npos) << md;
   EXPECT_NE(md.find("| palm left, wrist extension |"), std::string::npos) << md;
-  EXPECT_NE(md.find("| axis cut | share of seeing controller-frames with a seen marker beyond 250 mm | 0.2 |"), std::string::npos) << md;
+  EXPECT_NE(md.find("| axis cut | share of seeing controller-frames with a seen marker beyond 250 mm | 0.2 |"),
+            std::string::npos)
+      << md;
   // What the controllers can measure: M with every finger beyond a controller's cut unseen by it.
   EXPECT_NE(md.find("| M inside cut | "), std::string::npos) << md;
   EXPECT_NE(md.find("Counting only what lies inside each controller's cut"), std::string::npos) << md;
@@ -59,7 +61,8 @@ TEST(LayoutReport, ThePapersOptimizedLayoutIsExplainedInOnePage) {
   EXPECT_FALSE(r.controllers[0].counts_inside_cut);
   EXPECT_EQ(r.controllers[0].seeing_inside_cut_share, 0.0);
   EXPECT_NE(md.find("**LMC1 adds nothing inside its cut**"), std::string::npos) << md;
-  EXPECT_NE(md.find("| controller | sees some finger inside its cut | M inside cut without it |"), std::string::npos) << md;
+  EXPECT_NE(md.find("| controller | sees some finger inside its cut | M inside cut without it |"), std::string::npos)
+      << md;
 }
 
 TEST(LayoutReport, ALayoutWhereEveryControllerCountsSaysSo) {

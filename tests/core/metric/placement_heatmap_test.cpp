@@ -51,7 +51,8 @@ TEST(PlacementHeatmap, AFrameSubsetIsTheSameAsAPoseSetOfThoseFrames) {
   for (const int j : vertical) only.push_back(p.prepared[static_cast<size_t>(j)]);
   const HeatmapSpec spec{1, -1, HeatmapMode::kFramesAdded, 6, 300};
   int rows = 0;
-  const auto a = sweep_placement_heatmap(l, p.prepared, spec, {}, [&](int r) { rows = r; }, vertical);
+  const auto a = sweep_placement_heatmap(
+      l, p.prepared, spec, {}, [&](int r) { rows = r; }, vertical);
   const auto b = sweep_placement_heatmap(l, only, spec);
   ASSERT_TRUE(a && b);
   EXPECT_EQ(rows, 6);
@@ -65,7 +66,8 @@ TEST(PlacementHeatmap, StoppedSweepsReturnNothingAndABadDeviceGivesGaps) {
   std::stop_source stop;
   stop.request_stop();
   EXPECT_FALSE(sweep_placement_heatmap(l, heatmap_poses().prepared, HeatmapSpec{}, stop.get_token()));
-  const auto none = sweep_placement_heatmap(l, heatmap_poses().prepared, HeatmapSpec{5, -1, HeatmapMode::kShareVisible, 2, 400});
+  const auto none =
+      sweep_placement_heatmap(l, heatmap_poses().prepared, HeatmapSpec{5, -1, HeatmapMode::kShareVisible, 2, 400});
   ASSERT_TRUE(none);
   for (const float v : none->value) EXPECT_TRUE(std::isnan(v));
 }

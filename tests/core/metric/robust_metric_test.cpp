@@ -20,7 +20,9 @@
 namespace lmc {
 namespace robust_metric_test {
 
-const std::vector<PreparedFrame>& robust_frames() { return test::mc_frames(200, 5); }
+const std::vector<PreparedFrame>& robust_frames() {
+  return test::mc_frames(200, 5);
+}
 
 std::vector<DeviceView> views_of(const Layout& l) {
   std::vector<DeviceView> v;
@@ -54,7 +56,8 @@ TEST(RobustMetric, MInsideTheCutCountsOnlyWhatTheControllersCanMeasure) {
   EXPECT_GT(r.axis_cut, 0.5);
   EXPECT_GT(r.metric_m_inside_cut, r.metric_m + 0.2);
   EXPECT_EQ(r.metric_m_inside_cut, placement_metric(t.c_inside_cut));
-  const LayoutTally wide = tally_layout(views_of(l), robust_frames(), make_limits(VisibilityParams::from_sensor(l.sensor)), 1e9);
+  const LayoutTally wide =
+      tally_layout(views_of(l), robust_frames(), make_limits(VisibilityParams::from_sensor(l.sensor)), 1e9);
   EXPECT_EQ(wide.c_inside_cut, wide.c);
   EXPECT_EQ(wide.c, t.c);
   // Its weight adds exactly weight × M_cut to R (the default weight is 1); at 0 it is only reported.

@@ -22,7 +22,9 @@
 namespace lmc {
 namespace tally_fast_path_test {
 
-const std::vector<PreparedFrame>& some_frames() { return test::mc_frames(300, 7); }
+const std::vector<PreparedFrame>& some_frames() {
+  return test::mc_frames(300, 7);
+}
 
 // Device poses on and around the table, most of them seeing the hand.
 std::vector<DevicePose> random_poses(int count, std::uint64_t seed) {
@@ -191,8 +193,8 @@ TEST(TallyFastPath, TallyOfARunOfFramesEqualsCountingEachFrame) {
   }
   LayoutTally t(9);
   FingerBits nine[9] = {};
-  EXPECT_THROW(tally_frames(std::span<const PreparedFrame>(frames.data(), 1), random_views(9, 1), nine, nine, 1, lim, t),
-               Error);
+  EXPECT_THROW(
+      tally_frames(std::span<const PreparedFrame>(frames.data(), 1), random_views(9, 1), nine, nine, 1, lim, t), Error);
 }
 
 // The layout report counts its tallies from the tables it already has (no second kernel pass):

@@ -9,7 +9,9 @@
 namespace lmc {
 namespace multi_start_test {
 
-const std::vector<PreparedFrame>& ms_frames() { return test::mc_frames(120, 3); }
+const std::vector<PreparedFrame>& ms_frames() {
+  return test::mc_frames(120, 3);
+}
 
 PsoSettings ms_small(PlacementMetricKind metric, int threads = 0) {
   PsoSettings s;
@@ -43,7 +45,8 @@ TEST(RobustSearch, SameSeedSameLayoutOnOneOrTwoThreads) {
 }
 
 TEST(RobustSearch, TableBoundsKeepEveryControllerOnTheTable) {
-  const PsoResult r = run_pso(default_start_layout(4), table_search_space(), ms_frames(), ms_small(PlacementMetricKind::kRobust));
+  const PsoResult r =
+      run_pso(default_start_layout(4), table_search_space(), ms_frames(), ms_small(PlacementMetricKind::kRobust));
   for (const auto& d : r.best_layout.devices) {
     EXPECT_LE(std::abs(d.pose.x_mm), kTableHalfExtentMm - 40.0);
     EXPECT_LE(std::abs(d.pose.z_mm), kTableHalfExtentMm - 40.0);
@@ -51,15 +54,16 @@ TEST(RobustSearch, TableBoundsKeepEveryControllerOnTheTable) {
 }
 
 TEST(MultiStart, EachStartHasItsOwnSeedAndTheBestIsTheLowestCost) {
-  const MultiStartResult m =
-      run_multi_start(default_start_layout(3), table_search_space(), ms_frames(), ms_small(PlacementMetricKind::kRobust), 3);
+  const MultiStartResult m = run_multi_start(default_start_layout(3), table_search_space(), ms_frames(),
+                                             ms_small(PlacementMetricKind::kRobust), 3);
   ASSERT_EQ(m.runs.size(), 3u);
   EXPECT_EQ(m.seeds, (std::vector<std::uint64_t>{17, 18, 19}));
   ASSERT_GE(m.best, 0);
   for (const auto& r : m.runs) EXPECT_GE(r.best_cost, m.runs[static_cast<size_t>(m.best)].best_cost);
   for (const int k : m.runners_up) {
     EXPECT_NE(k, m.best);
-    EXPECT_FALSE(same_arrangement(m.runs[static_cast<size_t>(k)].best_layout, m.runs[static_cast<size_t>(m.best)].best_layout));
+    EXPECT_FALSE(
+        same_arrangement(m.runs[static_cast<size_t>(k)].best_layout, m.runs[static_cast<size_t>(m.best)].best_layout));
   }
   // The first start is a plain run_pso with the same seed.
   const PsoResult single =

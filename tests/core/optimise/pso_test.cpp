@@ -11,7 +11,9 @@
 namespace lmc {
 namespace {
 
-const std::vector<PreparedFrame>& frames() { return test::mc_frames(120, 3); }
+const std::vector<PreparedFrame>& frames() {
+  return test::mc_frames(120, 3);
+}
 
 PsoSettings small(int threads = 0) {
   PsoSettings s;
@@ -127,10 +129,13 @@ TEST(Pso, ReportsProgressAndStopsWhenCancelled) {
   std::vector<PsoProgress> seen;
   PsoSettings s = small();
   s.iterations = 50;
-  const PsoResult r = run_pso(default_start_layout(2), box(), frames(), s, [&](const PsoProgress& p) {
-    seen.push_back(p);
-    if (p.iteration == 3) stop.request_stop();
-  }, stop.get_token());
+  const PsoResult r = run_pso(
+      default_start_layout(2), box(), frames(), s,
+      [&](const PsoProgress& p) {
+        seen.push_back(p);
+        if (p.iteration == 3) stop.request_stop();
+      },
+      stop.get_token());
   EXPECT_EQ(r.status, JobStatus::kCancelled);
   ASSERT_EQ(seen.size(), 4u);
   EXPECT_EQ(seen[0].iteration, 0);

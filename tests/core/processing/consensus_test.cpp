@@ -37,11 +37,13 @@ HandTrack straight_hand(int frames, double segment_mm, double turn_deg = 0) {
 std::vector<std::vector<FingerLabels>> all_seen(int devices, int frames) {
   FingerLabels seen{};
   seen.fill(1);
-  return std::vector<std::vector<FingerLabels>>(static_cast<size_t>(devices), std::vector<FingerLabels>(static_cast<size_t>(frames), seen));
+  return std::vector<std::vector<FingerLabels>>(static_cast<size_t>(devices),
+                                                std::vector<FingerLabels>(static_cast<size_t>(frames), seen));
 }
 
 TEST(Consensus, TheMedianOfTheSeeingControllersAndTheFusedDifference) {
-  std::vector<DeviceTrack> devices = {{1, straight_hand(20, 25)}, {2, straight_hand(20, 30)}, {3, straight_hand(20, 40)}};
+  std::vector<DeviceTrack> devices = {
+      {1, straight_hand(20, 25)}, {2, straight_hand(20, 30)}, {3, straight_hand(20, 40)}};
   auto labels = all_seen(3, 20);
   const HandTrack fused = straight_hand(20, 28);
   const ConsensusReport r = consensus_report(devices, labels, fused);

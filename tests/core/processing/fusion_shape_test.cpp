@@ -28,7 +28,8 @@ HandTrack controller_hand(int frames, double scale, double turn_deg, const Vec3&
   HandFrame h = reference_pose(model, HandOrientation::kHorizontal, HandMotion::kOpen);
   for (int dg = 0; dg < kNumDigits; ++dg) {
     const Vec3 mcp = h.point(digit_point(dg, 1));
-    for (int j = 2; j < kJointsPerDigit; ++j) h.point(digit_point(dg, j)) = mcp + scale * (h.point(digit_point(dg, j)) - mcp);
+    for (int j = 2; j < kJointsPerDigit; ++j)
+      h.point(digit_point(dg, j)) = mcp + scale * (h.point(digit_point(dg, j)) - mcp);
   }
   const Eigen::Matrix3d r = Eigen::AngleAxisd(turn_deg * kRadPerDeg, Vec3::UnitY()).toRotationMatrix();
   const Vec3 palm = h.point(kPalm);
@@ -45,7 +46,8 @@ HandTrack controller_hand(int frames, double scale, double turn_deg, const Vec3&
 std::vector<std::vector<FingerLabels>> every_finger_seen(int devices, int frames) {
   FingerLabels seen{};
   seen.fill(1);
-  return std::vector<std::vector<FingerLabels>>(static_cast<size_t>(devices), std::vector<FingerLabels>(static_cast<size_t>(frames), seen));
+  return std::vector<std::vector<FingerLabels>>(static_cast<size_t>(devices),
+                                                std::vector<FingerLabels>(static_cast<size_t>(frames), seen));
 }
 
 struct Rig {

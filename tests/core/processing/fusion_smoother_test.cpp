@@ -19,7 +19,9 @@ HandTrack moving(int frames, double bias, double noise, std::mt19937& rng) {
   return t;
 }
 
-double truth_x(int f) { return 30.0 * std::sin(f * 0.03); }
+double truth_x(int f) {
+  return 30.0 * std::sin(f * 0.03);
+}
 
 TEST(FusionSmoother, DownweightsHiddenGuessesAndBeatsReference) {
   std::mt19937 rng(5);
@@ -50,10 +52,10 @@ TEST(FusionSmoother, HandlesNaNAnywhereAndLeavesLongGapsNaN) {
   const int n = 100;
   HandTrack a = moving(n, 0.0, 0.5, rng);
   HandTrack b = moving(n, 0.0, 0.5, rng);
-  for (int f = 0; f < 10; ++f) a.at(f, 7) = Vec3::Constant(kNaN);          // a starts late
+  for (int f = 0; f < 10; ++f) a.at(f, 7) = Vec3::Constant(kNaN);                // a starts late
   for (int f = 40; f < 60; ++f) a.at(f, 7) = b.at(f, 7) = Vec3::Constant(kNaN);  // 20-frame hole in both
   for (int f = 70; f < 73; ++f) a.at(f, 7) = b.at(f, 7) = Vec3::Constant(kNaN);  // 3-frame hole: bridged
-  b.at(90, 7).x() = kNaN;  // a single coordinate
+  b.at(90, 7).x() = kNaN;                                                        // a single coordinate
   const HandTrack fused = fuse_default({&a, &b}, {nullptr, nullptr});
   EXPECT_TRUE(is_finite(fused.at(0, 7)));
   for (int f = 40; f < 60; ++f) EXPECT_FALSE(std::isfinite(fused.at(f, 7).x())) << f;

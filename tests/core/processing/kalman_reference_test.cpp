@@ -13,7 +13,8 @@ namespace {
 double brute_variance(const std::vector<double>& x, int i) {
   std::vector<double> w;
   for (int j = i - 15; j <= i + 14; ++j) {
-    if (j >= 0 && j < static_cast<int>(x.size()) && std::isfinite(x[static_cast<size_t>(j)])) w.push_back(x[static_cast<size_t>(j)]);
+    if (j >= 0 && j < static_cast<int>(x.size()) && std::isfinite(x[static_cast<size_t>(j)]))
+      w.push_back(x[static_cast<size_t>(j)]);
   }
   if (w.size() < 2) return kNaN;
   double m = 0;
@@ -100,7 +101,8 @@ TEST(KalmanReference, MatchesMatrixFormWithNaNAndLateStart) {
   const int n = 120;
   std::vector<std::vector<double>> s(4, std::vector<double>(n));
   for (int d = 0; d < 4; ++d) {
-    for (int i = 0; i < n; ++i) s[static_cast<size_t>(d)][static_cast<size_t>(i)] = 100.0 + 20.0 * std::sin(i * 0.05) + 3.0 * d + g(rng);
+    for (int i = 0; i < n; ++i)
+      s[static_cast<size_t>(d)][static_cast<size_t>(i)] = 100.0 + 20.0 * std::sin(i * 0.05) + 3.0 * d + g(rng);
   }
   // Nobody sees the hand for the first 5 steps; device 1 starts late (device 2 initialises);
   // device 3 drops out in the middle; device 4 has single NaNs.

@@ -11,14 +11,14 @@
 
 #include "core/common/error.h"
 #include "core/hand/hand_model.h"
-#include "core/processing/length_correction.h"
-#include "core/processing/length_correction_json.h"
 #include "core/io/layout_json.h"
 #include "core/io/lmc_recording.h"
 #include "core/io/vicon_mapping.h"
+#include "core/processing/batch.h"
+#include "core/processing/length_correction.h"
+#include "core/processing/length_correction_json.h"
 #include "core/processing/measures.h"
 #include "core/processing/process_options_json.h"
-#include "core/processing/batch.h"
 #include "core/processing/trial_pipeline.h"
 #include "core/processing/trial_summary.h"
 #include "tests/support/reference_data.h"
@@ -81,7 +81,8 @@ TEST(LengthCorrection, FitToViconRecoversAKnownScaleAndApplyGivesTheTrueHandBack
   const LengthCorrection c = fit_length_correction_to_vicon(measure_track(fused), measure_track(truth), "constructed");
   EXPECT_EQ(c.source, LengthSource::kVicon);
   EXPECT_EQ(c.fit_frames, 40);
-  for (size_t f = 0; f < kNumFingers; ++f) EXPECT_NEAR(c.factor[f], 1.0 / kShort[f], 1e-12) << digit_name(static_cast<int>(f));
+  for (size_t f = 0; f < kNumFingers; ++f)
+    EXPECT_NEAR(c.factor[f], 1.0 / kShort[f], 1e-12) << digit_name(static_cast<int>(f));
   // The true hand's index is 0.265 + 0.143 + 0.097 of the hand length (Buchholz et al. 1992).
   EXPECT_NEAR(c.target_mm[1], (0.265 + 0.143 + 0.097) * 183, 1e-9);
   EXPECT_NEAR(c.fused_mm[1], 0.861 * (0.265 + 0.143 + 0.097) * 183, 1e-9);
@@ -121,7 +122,8 @@ TEST(LengthCorrection, ApplyKeepsEveryJointAngleAndScalesOnlyTheFingersLengths) 
     // Palm, vectors, forearm, metacarpal bases, MCP joints (and the thumb's MCP) do not move.
     for (int i = 0; i < kNumHandPoints; ++i) {
       const int digit = (i - kFirstDigitPoint) / kJointsPerDigit, joint = (i - kFirstDigitPoint) % kJointsPerDigit;
-      const bool moves = i >= kFirstDigitPoint && joint > (digit == 0 ? 2 : 1);  // beyond the thumb's Inter / a finger's Proxi
+      const bool moves =
+          i >= kFirstDigitPoint && joint > (digit == 0 ? 2 : 1);  // beyond the thumb's Inter / a finger's Proxi
       if (!moves) {
         EXPECT_EQ(after.at(fr, i), before.at(fr, i)) << hand_point_name(i);
       }
@@ -146,27 +148,34 @@ TEST(LengthCorrection, RefusesAMissingFingerAZeroBoneAndImplausibleInput) {
   const auto fused = measure_track(moving_track(scaled_hand(190, 85, kShort), 10));
   auto vicon = measure_track(truth);
   for (auto& m : vicon) m.finger_mm[2] = kNaN;  // the middle finger's markers never seen
-  EXPECT_NE(error_of([&] { fit_length_correction_to_vicon(fused, vicon, "trial T with T.trc"); })
-                .find("trial T with T.trc: no frame has the middle in both the fused hand and Vicon"),
+  EXPECT_NE(error_of([&] {
+              fit_length_correction_to_vicon(fused, vicon, "trial T with T.trc");
+            }).find("trial T with T.trc: no frame has the middle in both the fused hand and Vicon"),
             std::string::npos);
 
   auto collapsed = fused;
   for (auto& m : collapsed) m.segment_mm[10] = 0.0;  // Ring_distal
-  EXPECT_NE(error_of([&] { fit_length_correction_to_vicon(collapsed, measure_track(truth), "trial T"); })
-                .find("trial T: the fused Ring_distal bone is 0.00 mm long on average"),
+  EXPECT_NE(error_of([&] {
+              fit_length_correction_to_vicon(collapsed, measure_track(truth), "trial T");
+            }).find("trial T: the fused Ring_distal bone is 0.00 mm long on average"),
             std::string::npos);
 
   auto wrong_units = measure_track(truth);
   for (auto& m : wrong_units)
     for (double& v : m.finger_mm) v *= 10;  // Vicon in 0.1 mm, or another subject's file
-  EXPECT_NE(error_of([&] { fit_length_correction_to_vicon(fused, wrong_units, "trial T"); }).find("the thumb's length factor is 11.416"),
+  EXPECT_NE(error_of([&] {
+              fit_length_correction_to_vicon(fused, wrong_units, "trial T");
+            }).find("the thumb's length factor is 11.416"),
             std::string::npos);
 
-  EXPECT_NE(error_of([&] { fit_length_correction_to_hand(fused, 0, 80, "trial T"); })
-                .find("hand length and breadth must be positive numbers in mm (given 0.0 and 80.0)"),
+  EXPECT_NE(error_of([&] {
+              fit_length_correction_to_hand(fused, 0, 80, "trial T");
+            }).find("hand length and breadth must be positive numbers in mm (given 0.0 and 80.0)"),
             std::string::npos);
-  EXPECT_NE(error_of([&] { fit_length_correction_to_hand(fused, kNaN, 80, "trial T"); }).find("must be positive"), std::string::npos);
-  EXPECT_NE(error_of([&] { expected_finger_lengths_mm(1900, 85); }).find("hand length must be in (50, 400) mm"), std::string::npos);
+  EXPECT_NE(error_of([&] { fit_length_correction_to_hand(fused, kNaN, 80, "trial T"); }).find("must be positive"),
+            std::string::npos);
+  EXPECT_NE(error_of([&] { expected_finger_lengths_mm(1900, 85); }).find("hand length must be in (50, 400) mm"),
+            std::string::npos);
 }
 
 TEST(LengthCorrection, FileRoundTripsAndABadFileIsNamed) {
@@ -199,14 +208,20 @@ TEST(LengthCorrection, FileRoundTripsAndABadFileIsNamed) {
   };
   const std::string file = (dir / "bad.json").string();
   EXPECT_EQ(bad([](auto& j) { j.erase("factor"); }), file + ": at /factor: missing required field");
-  EXPECT_EQ(bad([](auto& j) { j["factor"] = {1.1, 1.2}; }), file + ": at /factor: expected 5 numbers (thumb, index, middle, ring, pinky)");
+  EXPECT_EQ(bad([](auto& j) {
+              j["factor"] = {1.1, 1.2};
+            }),
+            file + ": at /factor: expected 5 numbers (thumb, index, middle, ring, pinky)");
   EXPECT_EQ(bad([](auto& j) { j["factor"][3] = "1.2"; }), file + ": at /factor/3: expected a number");
-  EXPECT_NE(bad([](auto& j) { j["factor"][4] = 0.1; }).find(file + ": at /factor: the pinky's length factor is 0.100, outside 0.5–2.0"),
+  EXPECT_NE(bad([](auto& j) {
+              j["factor"][4] = 0.1;
+            }).find(file + ": at /factor: the pinky's length factor is 0.100, outside 0.5–2.0"),
             std::string::npos);
   EXPECT_EQ(bad([](auto& j) { j["method"] = "reference"; }),
             file + ": at /method: a length correction is fitted on and applied to the default fusion only");
   EXPECT_EQ(bad([](auto& j) { j["facter"] = 1; }).substr(0, file.size() + 17), file + ": at /facter: unk");
-  EXPECT_EQ(bad([](auto& j) { j["source"] = "guess"; }), file + ": at /source: expected \"vicon\" or \"hand_dimensions\"");
+  EXPECT_EQ(bad([](auto& j) { j["source"] = "guess"; }),
+            file + ": at /source: expected \"vicon\" or \"hand_dimensions\"");
   std::ofstream(dir / "bad.json") << "{\"format\": \"lmc-length-correction\",\n \"version\": 1,,\n}";
   EXPECT_NE(error_of([&] { read_length_correction(dir / "bad.json"); }).find(file + ":2:"), std::string::npos);
 }
@@ -227,8 +242,9 @@ TEST(LengthCorrection, PipelineAppliesItAfterTheDefaultFusionOnlyAndTheReference
   reference.method = FusionMethod::kReference;
   EXPECT_FALSE(process_options_json(reference).contains("length_correction"));  // cache keys made without one unchanged
   reference.length_correction = c;
-  EXPECT_NE(error_of([&] { process_trial("Naiv_Static101", rec, layout, &vicon, reference); })
-                .find("a length correction applies to the default fusion only"),
+  EXPECT_NE(error_of([&] {
+              process_trial("Naiv_Static101", rec, layout, &vicon, reference);
+            }).find("a length correction applies to the default fusion only"),
             std::string::npos);
 
   ProcessOptions plain;
@@ -247,7 +263,8 @@ TEST(LengthCorrection, PipelineAppliesItAfterTheDefaultFusionOnlyAndTheReference
         EXPECT_NEAR(after, before, kSameAngleDeg) << angle_name(static_cast<int>(a));
       }
     }
-  for (size_t f = 0; f < kNumFingers; ++f) EXPECT_NEAR(r1.lmc_stats.finger_mean[f], c.factor[f] * r0.lmc_stats.finger_mean[f], 1e-9);
+  for (size_t f = 0; f < kNumFingers; ++f)
+    EXPECT_NEAR(r1.lmc_stats.finger_mean[f], c.factor[f] * r0.lmc_stats.finger_mean[f], 1e-9);
   EXPECT_EQ(r1.vicon_stats.finger_mean, r0.vicon_stats.finger_mean);  // Vicon is never touched
   const nlohmann::json summary = trial_summary_json(r1);
   EXPECT_EQ(summary["length_correction"]["subject"], "Subject1");

@@ -32,13 +32,16 @@ HandFrame to_device(const HandFrame& world, const LayoutDevice& dev) {
   const Eigen::Vector3d shift = dev.pose.translation() + dev.offset_mm;
   HandFrame f = world;
   for (int i = 0; i < kNumHandPoints; ++i) {
-    f.point(i) = (i == kPalmNormal || i == kPalmDirection) ? Vec3(rt * world.point(i)) : Vec3(rt * (world.point(i) - shift));
+    f.point(i) =
+        (i == kPalmNormal || i == kPalmDirection) ? Vec3(rt * world.point(i)) : Vec3(rt * (world.point(i) - shift));
   }
   f.hand_present = true;
   return f;
 }
 
-bool is_position(int i) { return i != kPalmNormal && i != kPalmDirection; }
+bool is_position(int i) {
+  return i != kPalmNormal && i != kPalmDirection;
+}
 
 // A hand flexing its index and drifting sideways: world frame at time t.
 HandFrame moving_hand(const HandModel& model, double t) {
@@ -119,7 +122,8 @@ HandFrame frame_of(const HandTrack& t, int f) {
 }
 
 // The offline default fusion of a device-frame grid, as trial_pipeline runs it.
-HandTrack offline_default(const GridTrial& grid, const Layout& layout, std::vector<std::vector<FingerLabels>>* labels_out) {
+HandTrack offline_default(const GridTrial& grid, const Layout& layout,
+                          std::vector<std::vector<FingerLabels>>* labels_out) {
   std::vector<std::vector<FingerLabels>> labels;
   std::vector<std::vector<float>> quality;
   std::vector<HandTrack> world;
@@ -203,9 +207,9 @@ TEST(OnlineFusion, TracksTheOfflineFusionOfASimulatedTrialWithBoundedLag) {
       ++off_n;
     }
   }
-  std::cout << "[ simulated ] online vs offline RMS " << d0.rms << " mm (" << d0.samples << " points), best lag "
-            << lag << " frames (RMS there " << dl.rms << " mm); vs truth: online " << online_truth.rms
-            << " mm, offline " << std::sqrt(off_sum / static_cast<double>(off_n)) << " mm\n";
+  std::cout << "[ simulated ] online vs offline RMS " << d0.rms << " mm (" << d0.samples << " points), best lag " << lag
+            << " frames (RMS there " << dl.rms << " mm); vs truth: online " << online_truth.rms << " mm, offline "
+            << std::sqrt(off_sum / static_cast<double>(off_n)) << " mm\n";
   // At the last frame the smoothed result is the filtered one, and with every device on one grid
   // time the online filter is the offline forward filter: the same numbers.
   const int last = grid.frame_count - 1;
@@ -293,7 +297,8 @@ TEST(OnlineFusion, TracksTheOfflineFusionOfTheRecordedTrial) {
   for (int f = 0; f < grid.frame_count; ++f) {
     const double t_grid_us = static_cast<double>(grid.start_us) + f * grid.step_us;
     while (next < rows.size() && static_cast<double>(rows[next].timestamp_us) <= t_grid_us) {
-      fusion.add(rows[next], rows[next].device_id - 1, static_cast<double>(rows[next].timestamp_us - grid.start_us) * 1e-6);
+      fusion.add(rows[next], rows[next].device_id - 1,
+                 static_cast<double>(rows[next].timestamp_us - grid.start_us) * 1e-6);
       ++next;
     }
     online.push_back(fusion.current_at((t_grid_us - static_cast<double>(grid.start_us)) * 1e-6).points);
@@ -303,7 +308,8 @@ TEST(OnlineFusion, TracksTheOfflineFusionOfTheRecordedTrial) {
   const int lag = best_lag(online, offline.fused, warmup, 10);
   long offline_finite = 0;
   for (int f = warmup; f < grid.frame_count; ++f) {
-    for (int i = 0; i < kNumHandPoints; ++i) offline_finite += is_position(i) && is_finite(offline.fused.at(f, i)) ? 1 : 0;
+    for (int i = 0; i < kNumHandPoints; ++i)
+      offline_finite += is_position(i) && is_finite(offline.fused.at(f, i)) ? 1 : 0;
   }
   std::cout << "[ recorded ] " << grid.frame_count << " grid frames, " << rows.size()
             << " raw rows: online vs offline RMS " << d0.rms << " mm over " << d0.samples << " of " << offline_finite
@@ -339,7 +345,8 @@ TEST(OnlineFusion, SeenByEqualsTheOfflineLabelCount) {
     for (int k = 0; k < kNumDigits; ++k) {
       int expected = 0;
       for (const auto& dev : labels) expected += dev[static_cast<size_t>(f)][static_cast<size_t>(k)] == 1 ? 1 : 0;
-      EXPECT_EQ(online[static_cast<size_t>(f)].seen_by[static_cast<size_t>(k)], expected) << "frame " << f << " finger " << k;
+      EXPECT_EQ(online[static_cast<size_t>(f)].seen_by[static_cast<size_t>(k)], expected)
+          << "frame " << f << " finger " << k;
       partial += expected < 4 ? 1 : 0;
     }
   }

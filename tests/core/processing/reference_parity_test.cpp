@@ -25,7 +25,8 @@ std::vector<std::vector<double>> numeric_rows(const std::string& text) {
   std::istringstream in(text);
   std::string line;
   while (std::getline(in, line)) {
-    if (line.empty() || !(std::isdigit(static_cast<unsigned char>(line[0])) || line[0] == '-' || line[0] == 'n')) continue;
+    if (line.empty() || !(std::isdigit(static_cast<unsigned char>(line[0])) || line[0] == '-' || line[0] == 'n'))
+      continue;
     std::istringstream ls(line);
     std::vector<double> row;
     std::string cell;

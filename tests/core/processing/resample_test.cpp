@@ -5,8 +5,8 @@
 #include <sstream>
 
 #include "core/common/error.h"
-#include "core/processing/resample.h"
 #include "core/io/lmc_recording.h"
+#include "core/processing/resample.h"
 
 namespace lmc {
 namespace {
@@ -81,7 +81,7 @@ TEST(Resample, GapsAndHandLossAreNaNNotBridged) {
 // 50 ms floor. --fixed-gap (adaptive_gap = false) applies 50 ms to every device.
 TEST(Resample, GapLimitFollowsEachDevicesOwnFrameRate) {
   LmcRecording rec;
-  for (std::int64_t t = 0; t <= 770'000; t += 77'000) rec.rows.push_back(frame_at(1, t));      // 13 Hz
+  for (std::int64_t t = 0; t <= 770'000; t += 77'000) rec.rows.push_back(frame_at(1, t));            // 13 Hz
   for (std::int64_t t = 1'000'000; t <= 1'231'000; t += 77'000) rec.rows.push_back(frame_at(1, t));  // after 230 ms
   for (std::int64_t t = 0; t <= 300'000; t += 10'000) {
     if (t < 100'000 || t > 150'000) rec.rows.push_back(frame_at(2, t));  // 100 Hz with a 60 ms hole
@@ -93,7 +93,7 @@ TEST(Resample, GapLimitFollowsEachDevicesOwnFrameRate) {
   EXPECT_DOUBLE_EQ(report.devices[0].gap_limit_ms, 192.5);
   EXPECT_DOUBLE_EQ(report.devices[1].gap_limit_ms, 50.0);
   const auto& d1 = g.devices[0].track;
-  for (int f = 0; f <= 77; ++f) EXPECT_TRUE(d1.has_hand(f)) << f;  // 0 … 770 ms, no gap inside
+  for (int f = 0; f <= 77; ++f) EXPECT_TRUE(d1.has_hand(f)) << f;    // 0 … 770 ms, no gap inside
   for (int f = 78; f <= 99; ++f) EXPECT_FALSE(d1.has_hand(f)) << f;  // 230 ms pause
   EXPECT_TRUE(d1.has_hand(100));
   EXPECT_EQ(report.devices[0].gaps, 1);
@@ -123,7 +123,7 @@ TEST(Resample, ReportsOutOfOrderDuplicatesAndClockResets) {
   rec.rows.push_back(frame_at(1, 130'000));  // duplicate, same data
   rec.rows.push_back(frame_at(1, 160'000));
   rec.rows.push_back(frame_at(1, 160'000, true, 5.0));  // duplicate, different data
-  rec.rows.push_back(frame_at(1, 5'000));                // clock reset (back by 155 ms > limit 100 ms)
+  rec.rows.push_back(frame_at(1, 5'000));               // clock reset (back by 155 ms > limit 100 ms)
   rec.rows.push_back(frame_at(1, 35'000));
   ResampleOptions o;
   o.clock_reset_ms = 100.0;
@@ -210,7 +210,8 @@ TEST(ResampleLimits, TimestampJumpIsRefusedWithFileAndLine) {
 }
 
 TEST(ResampleLimits, Int64TimestampsAreAnErrorNotOverflow) {
-  for (const std::int64_t extreme : {std::numeric_limits<std::int64_t>::max(), std::numeric_limits<std::int64_t>::min()}) {
+  for (const std::int64_t extreme :
+       {std::numeric_limits<std::int64_t>::max(), std::numeric_limits<std::int64_t>::min()}) {
     LmcRecording rec;
     rec.rows.push_back(frame_at(1, 0));
     rec.rows.push_back(frame_at(1, 33'000));

@@ -2,14 +2,15 @@
 
 #include <cmath>
 
-#include "core/results/session_report.h"
 #include "core/common/number_format.h"
+#include "core/results/session_report.h"
 #include "core/results/trial_outputs.h"
 
 namespace lmc {
 namespace {
 
-nlohmann::json summary(const std::string& trial, double lmc_len, double vicon_len, double rate, double angle_diff = 0.0) {
+nlohmann::json summary(const std::string& trial, double lmc_len, double vicon_len, double rate,
+                       double angle_diff = 0.0) {
   nlohmann::json s;
   s["trial"] = trial;
   s["method"] = "default";
@@ -39,17 +40,21 @@ TEST(SessionReport, AggregatesMeanAndSdPerGroup) {
             std::string::npos)
       << r.finger_length_csv;
   // Per-frame angle difference averaged per trial: 20 and 30 → 25 ± 7.071.
-  EXPECT_NE(r.joint_angle_csv.find("initial,horizontal,index,index_mcp,2,10.000,0.000,12.000,0.000,-2.000,0.000,25.000,7.071"),
+  EXPECT_NE(r.joint_angle_csv.find(
+                "initial,horizontal,index,index_mcp,2,10.000,0.000,12.000,0.000,-2.000,0.000,25.000,7.071"),
             std::string::npos)
       << r.joint_angle_csv;
   // Visibility: five fingers × two trials, rates 1 and −1 → 0 ± 1.054.
-  EXPECT_NE(r.visibility_csv.find("initial,horizontal,index,LMC1,10,0.000,1.054"), std::string::npos) << r.visibility_csv;
+  EXPECT_NE(r.visibility_csv.find("initial,horizontal,index,LMC1,10,0.000,1.054"), std::string::npos)
+      << r.visibility_csv;
   EXPECT_NE(r.trials_csv.find("S2,Naiv_Index101,initial,horizontal,index,1,default,100,1"), std::string::npos)
       << r.trials_csv;
   EXPECT_NE(r.markdown.find("-8.00 ± 2.11 mm (n = 10)"), std::string::npos) << r.markdown;
   // Twelve values (6 joints × 2 trials), six 20s and six 30s: 25 ± 5.222.
-  EXPECT_NE(r.markdown.find("Joint angle difference (per frame, averaged per trial), all joints and trials: 25.00 ± 5.22° (n = 12)"),
-            std::string::npos)
+  EXPECT_NE(
+      r.markdown.find(
+          "Joint angle difference (per frame, averaged per trial), all joints and trials: 25.00 ± 5.22° (n = 12)"),
+      std::string::npos)
       << r.markdown;
   EXPECT_EQ(format_fixed(kNaN, 2), "nan");
 }

@@ -29,7 +29,7 @@ TEST(LayoutFigures, TopViewHasFootprintsAxesAndPalms) {
   ASSERT_GE(lmc1.x.size(), 6u);
   EXPECT_DOUBLE_EQ(lmc1.x[0], lmc1.x[4]);  // the box is closed
   EXPECT_DOUBLE_EQ(lmc1.y[0], lmc1.y[4]);
-  EXPECT_TRUE(std::isnan(lmc1.x[5]));      // then a break before the viewing axis
+  EXPECT_TRUE(std::isnan(lmc1.x[5]));  // then a break before the viewing axis
   const auto& palms = fig.series.back();
   EXPECT_EQ(palms.style, figures::SeriesStyle::points);
   ASSERT_EQ(palms.x.size(), 2u);  // every second of three frames: 0 and 2

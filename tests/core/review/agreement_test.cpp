@@ -20,19 +20,15 @@ nlohmann::json value_or_null(double v) {
 
 // A summary as trial_summary.cpp writes it: every finger has length `*_len`, every joint ROM
 // `*_rom`; NaN is written as null. The ROM difference is always −2°.
-nlohmann::json trial_json(const std::string& trial, const std::string& layout,
-                          const std::string& pose, const std::string& motion, double lmc_len,
-                          double vicon_len, bool with_vicon = true) {
+nlohmann::json trial_json(const std::string& trial, const std::string& layout, const std::string& pose,
+                          const std::string& motion, double lmc_len, double vicon_len, bool with_vicon = true) {
   nlohmann::json s;
   s["trial"] = trial;
-  s["tag"] = {
-      {"layout", layout}, {"pose", pose}, {"motion", motion}, {"repetition", 1}, {"parsed", true}};
+  s["tag"] = {{"layout", layout}, {"pose", pose}, {"motion", motion}, {"repetition", 1}, {"parsed", true}};
   s["method"] = "default";
   const double rom = std::isnan(vicon_len) ? 40.0 : vicon_len / 2.0;
-  s["lmc"] = {{"finger_mean_mm", nlohmann::json::array()},
-              {"angle_rom_deg", nlohmann::json::array()}};
-  s["vicon"] = {{"finger_mean_mm", nlohmann::json::array()},
-                {"angle_rom_deg", nlohmann::json::array()}};
+  s["lmc"] = {{"finger_mean_mm", nlohmann::json::array()}, {"angle_rom_deg", nlohmann::json::array()}};
+  s["vicon"] = {{"finger_mean_mm", nlohmann::json::array()}, {"angle_rom_deg", nlohmann::json::array()}};
   for (int k = 0; k < 5; ++k) {
     s["lmc"]["finger_mean_mm"].push_back(value_or_null(lmc_len));
     s["vicon"]["finger_mean_mm"].push_back(value_or_null(vicon_len));
@@ -45,26 +41,24 @@ nlohmann::json trial_json(const std::string& trial, const std::string& layout,
   return s;
 }
 
-AgreementTrial paired(const std::string& subject, const std::string& layout,
-                      const std::string& pose, double lmc_len, double vicon_len) {
-  return agreement_trial(subject, trial_json(subject + "_" + layout + "_" + pose, layout, pose,
-                                             "index", lmc_len, vicon_len));
+AgreementTrial paired(const std::string& subject, const std::string& layout, const std::string& pose, double lmc_len,
+                      double vicon_len) {
+  return agreement_trial(subject,
+                         trial_json(subject + "_" + layout + "_" + pose, layout, pose, "index", lmc_len, vicon_len));
 }
 
 // 3 subjects × 2 trials (initial, horizontal), differences LMC − Vicon S1: 1, 3; S2: 3, 5;
 // S3: 5, 7 on varying Vicon lengths; 3 subjects × 1 trial (optimized, vertical), differences 1,
 // 2, 6.
 std::vector<AgreementTrial> study_trials() {
-  return {
-      paired("S1", "initial", "horizontal", 51, 50), paired("S1", "initial", "horizontal", 63, 60),
-      paired("S2", "initial", "horizontal", 58, 55), paired("S2", "initial", "horizontal", 70, 65),
-      paired("S3", "initial", "horizontal", 75, 70), paired("S3", "initial", "horizontal", 59, 52),
-      paired("S1", "optimized", "vertical", 61, 60), paired("S2", "optimized", "vertical", 57, 55),
-      paired("S3", "optimized", "vertical", 66, 60)};
+  return {paired("S1", "initial", "horizontal", 51, 50), paired("S1", "initial", "horizontal", 63, 60),
+          paired("S2", "initial", "horizontal", 58, 55), paired("S2", "initial", "horizontal", 70, 65),
+          paired("S3", "initial", "horizontal", 75, 70), paired("S3", "initial", "horizontal", 59, 52),
+          paired("S1", "optimized", "vertical", 61, 60), paired("S2", "optimized", "vertical", 57, 55),
+          paired("S3", "optimized", "vertical", 66, 60)};
 }
 
-const AgreementGroup& find_group(const AgreementTable& t, const std::string& layout,
-                                 const std::string& pose) {
+const AgreementGroup& find_group(const AgreementTable& t, const std::string& layout, const std::string& pose) {
   for (const AgreementGroup& g : t.groups)
     if (g.layout == layout && g.pose == pose) return g;
   throw std::runtime_error("no group " + layout + " × " + pose);
@@ -97,8 +91,7 @@ std::vector<std::vector<std::string>> csv_rows(const std::string& csv) {
   return rows;
 }
 
-std::string column(const std::vector<std::vector<std::string>>& rows, std::size_t row,
-                   const std::string& name) {
+std::string column(const std::vector<std::vector<std::string>>& rows, std::size_t row, const std::string& name) {
   for (std::size_t c = 0; c < rows[0].size(); ++c)
     if (rows[0][c] == name) return rows[row].at(c);
   throw std::runtime_error("no column " + name);
@@ -106,8 +99,7 @@ std::string column(const std::vector<std::vector<std::string>>& rows, std::size_
 
 TEST(ReviewAgreement, ExtractsPairsFromTheSummaryAndSkipsTrialsWithoutVicon) {
   std::vector<AgreementTrial> trials = study_trials();
-  trials.push_back(agreement_trial(
-      "S4", trial_json("Naiv_Index101", "initial", "horizontal", "index", 70, 80, false)));
+  trials.push_back(agreement_trial("S4", trial_json("Naiv_Index101", "initial", "horizontal", "index", 70, 80, false)));
   const PairedTrials p = extract_paired_trials(trials);
   EXPECT_EQ(p.without_vicon, 1u);
   ASSERT_EQ(p.trials.size(), 9u);
@@ -152,8 +144,7 @@ TEST(ReviewAgreement, SeveralTrialsPerSubjectUseTheRepeatedForm) {
   EXPECT_NEAR(m.pearson.r, r.r, 1e-12);
   EXPECT_NEAR(m.pearson.ci.low, r.ci.low, 1e-12);
   EXPECT_EQ(m.icc.form, "ICC(2,1)");
-  EXPECT_EQ(m.icc.description,
-            "ICC(2,1): two-way random effects, absolute agreement, single measurement");
+  EXPECT_EQ(m.icc.description, "ICC(2,1): two-way random effects, absolute agreement, single measurement");
   EXPECT_TRUE(m.icc_reason.empty()) << m.icc_reason;
   EXPECT_GT(m.icc.value, 0.0);
   EXPECT_LT(m.icc.value, r.r);  // the 4 mm bias costs absolute agreement, not correlation
@@ -196,8 +187,7 @@ TEST(ReviewAgreement, OneTrialPerSubjectUsesTheSimpleForm) {
   const MeasureAgreement& m = find_group(t, "optimized", "vertical").measures[2];  // middle length
   EXPECT_EQ(m.n_trials, 3u);
   EXPECT_EQ(m.n_subjects, 3u);
-  EXPECT_NE(m.bland_altman.method.find("one pair per subject"), std::string::npos)
-      << m.bland_altman.method;
+  EXPECT_NE(m.bland_altman.method.find("one pair per subject"), std::string::npos) << m.bland_altman.method;
   // d = 1, 2, 6: bias 3, Σ(d − 3)² = 14 → SD √7, Σd² = 41.
   EXPECT_NEAR(m.bland_altman.bias, 3.0, 1e-12);
   EXPECT_NEAR(m.bland_altman.sd_difference, std::sqrt(7.0), 1e-12);
@@ -213,8 +203,7 @@ TEST(ReviewAgreement, NullViconValuesAreSkippedAndCountedNeverZero) {
   s["vicon"]["finger_mean_mm"][0] = nullptr;
   s["lmc"]["finger_mean_mm"][1] = nullptr;
   trials.push_back(agreement_trial("S1", s));
-  trials.push_back(agreement_trial(
-      "S5", trial_json("no_vicon", "optimized", "vertical", "index", 70, 80, false)));
+  trials.push_back(agreement_trial("S5", trial_json("no_vicon", "optimized", "vertical", "index", 70, 80, false)));
   const AgreementTable t = agreement_table(trials);
   EXPECT_EQ(t.trials, 11u);
   EXPECT_EQ(t.trials_without_vicon, 1u);
@@ -239,8 +228,7 @@ TEST(ReviewAgreement, NullViconValuesAreSkippedAndCountedNeverZero) {
 TEST(ReviewAgreement, GroupsByLayoutAndPoseThenAll) {
   std::vector<AgreementTrial> trials = study_trials();
   trials.push_back(paired("S1", "initial", "vertical", 60, 60));
-  trials.push_back(
-      agreement_trial("S2", trial_json("wrist", "initial", "vertical", "wrist", 60, 61)));
+  trials.push_back(agreement_trial("S2", trial_json("wrist", "initial", "vertical", "wrist", 60, 61)));
   const AgreementTable t = agreement_table(trials);
   ASSERT_EQ(t.groups.size(), 4u);
   EXPECT_EQ(t.groups[0].layout, "initial");
@@ -283,8 +271,7 @@ TEST(ReviewAgreement, BlandAltmanPointsCarryTheSubject) {
 
 TEST(ReviewAgreement, CsvHasOneRowPerGroupAndMeasureAndEmptyCellsForNaN) {
   std::vector<AgreementTrial> trials = study_trials();
-  trials.push_back(
-      paired("S1", "initial", "vertical", 60, 61));  // a lone trial: every statistic NaN
+  trials.push_back(paired("S1", "initial", "vertical", 60, 61));  // a lone trial: every statistic NaN
   const AgreementTable t = agreement_table(trials);
   const std::string csv = agreement_csv(t);
   const auto rows = csv_rows(csv);

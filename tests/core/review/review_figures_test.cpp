@@ -90,7 +90,8 @@ TEST(ReviewFigures, ATrialIsElevenPanelsOfFusedAgainstViconWithGapsKept) {
 
 TEST(ReviewFigures, TheVisibilityMapPlacesMotionsInOrder) {
   VisibilityMap map;
-  map.cells = {{"LMC1", "static", "initial", 1, 5, 0, 0.8, 0.1}, {"LMC1", "index", "initial", 1, 5, 0, 0.6, 0.1},
+  map.cells = {{"LMC1", "static", "initial", 1, 5, 0, 0.8, 0.1},
+               {"LMC1", "index", "initial", 1, 5, 0, 0.6, 0.1},
                {"LMC1", "static", "optimized", 1, 5, 0, 0.9, 0.1}};
   const figures::Figure f = visibility_map_figure(map);
   ASSERT_EQ(f.series.size(), 2u);
@@ -101,7 +102,8 @@ TEST(ReviewFigures, TheVisibilityMapPlacesMotionsInOrder) {
 }
 
 TEST(ReviewFigures, StemsAreSafeFileNames) {
-  EXPECT_EQ(figure_stem("bland-altman-initial-horizontal-rom_index_mcp"), "bland-altman-initial-horizontal-rom_index_mcp");
+  EXPECT_EQ(figure_stem("bland-altman-initial-horizontal-rom_index_mcp"),
+            "bland-altman-initial-horizontal-rom_index_mcp");
   EXPECT_EQ(figure_stem("../Trial A/B"), "trial-a-b");
   EXPECT_EQ(figure_stem("///"), "figure");
   EXPECT_NO_THROW(require_safe_name(figure_stem("../../etc/passwd"), "stem"));

@@ -17,7 +17,9 @@
 namespace lmc {
 namespace trial_series_test {  // named: test files share unity batches
 
-size_t count_fields(const std::string& line) { return static_cast<size_t>(std::count(line.begin(), line.end(), ',')) + 1; }
+size_t count_fields(const std::string& line) {
+  return static_cast<size_t>(std::count(line.begin(), line.end(), ',')) + 1;
+}
 
 TEST(TrialSeries, TheSharedTrialsSeriesAreProcessingsOwnMeasures) {
   const auto files = test::shared_real_trial_files();
@@ -33,10 +35,14 @@ TEST(TrialSeries, TheSharedTrialsSeriesAreProcessingsOwnMeasures) {
   for (int f = 0; f < s.frames(); ++f) {
     for (int a = 0; a < kNumAngles; ++a) {
       const double fused = r.lmc_frames[f].angle_deg[a], truth = r.vicon_frames[f].angle_deg[a];
-      if (std::isnan(fused)) EXPECT_TRUE(std::isnan(s.fused.angle_deg[a][f]));
-      else EXPECT_DOUBLE_EQ(s.fused.angle_deg[a][f], fused);
-      if (std::isnan(truth)) EXPECT_TRUE(std::isnan(s.vicon.angle_deg[a][f]));
-      else EXPECT_DOUBLE_EQ(s.vicon.angle_deg[a][f], truth);
+      if (std::isnan(fused))
+        EXPECT_TRUE(std::isnan(s.fused.angle_deg[a][f]));
+      else
+        EXPECT_DOUBLE_EQ(s.fused.angle_deg[a][f], fused);
+      if (std::isnan(truth))
+        EXPECT_TRUE(std::isnan(s.vicon.angle_deg[a][f]));
+      else
+        EXPECT_DOUBLE_EQ(s.vicon.angle_deg[a][f], truth);
     }
   }
   ASSERT_EQ(s.devices.size(), 4u);

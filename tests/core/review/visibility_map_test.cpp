@@ -15,16 +15,11 @@ nlohmann::json device_rates(const std::string& device, const std::vector<nlohman
   return {{"device", device}, {"rate", rates}};
 }
 
-AgreementTrial visibility_trial(const std::string& subject, const std::string& layout,
-                                const std::string& motion,
+AgreementTrial visibility_trial(const std::string& subject, const std::string& layout, const std::string& motion,
                                 const std::vector<nlohmann::json>& devices) {
   nlohmann::json s;
   s["trial"] = subject + "_" + layout + "_" + motion;
-  s["tag"] = {{"layout", layout},
-              {"pose", "horizontal"},
-              {"motion", motion},
-              {"repetition", 1},
-              {"parsed", true}};
+  s["tag"] = {{"layout", layout}, {"pose", "horizontal"}, {"motion", motion}, {"repetition", 1}, {"parsed", true}};
   s["visibility"] = devices;
   return agreement_trial(subject, s);
 }
@@ -32,15 +27,12 @@ AgreementTrial visibility_trial(const std::string& subject, const std::string& l
 std::vector<AgreementTrial> visibility_trials() {
   const nlohmann::json null;
   return {visibility_trial("S1", "initial", "index",
-                           {device_rates("LMC1", {1, 1, 1, 1, 1}),
-                            device_rates("LMC2", {0.5, 0.5, 0.5, 0.5, null})}),
-          visibility_trial("S2", "initial", "index",
-                           {device_rates("LMC1", {-1, -1, -1, -1, -1}),
-                            device_rates("LMC2", {0.25, 0.25, 0.25, 0.25, 0.25})}),
-          visibility_trial("S1", "optimized", "index",
-                           {device_rates("LMC1", {0.8, 0.8, 0.8, 0.8, 0.8})}),
-          visibility_trial("S1", "initial", "static",
-                           {device_rates("LMC3", {0.7, null, null, null, null})})};
+                           {device_rates("LMC1", {1, 1, 1, 1, 1}), device_rates("LMC2", {0.5, 0.5, 0.5, 0.5, null})}),
+          visibility_trial(
+              "S2", "initial", "index",
+              {device_rates("LMC1", {-1, -1, -1, -1, -1}), device_rates("LMC2", {0.25, 0.25, 0.25, 0.25, 0.25})}),
+          visibility_trial("S1", "optimized", "index", {device_rates("LMC1", {0.8, 0.8, 0.8, 0.8, 0.8})}),
+          visibility_trial("S1", "initial", "static", {device_rates("LMC3", {0.7, null, null, null, null})})};
 }
 
 TEST(ReviewVisibilityMap, MeanOverFingersAndTrialsPerDeviceMotionAndLayout) {
@@ -76,8 +68,7 @@ TEST(ReviewVisibilityMap, AgreesWithTheSessionReport) {
   for (const auto& t : trials) inputs.push_back({t.subject, t.summary});
   const SessionReport report = build_session_report(inputs);
   // The report's "initial,horizontal,index,LMC1" row is the map's LMC1 × index × initial cell.
-  EXPECT_NE(report.visibility_csv.find("initial,horizontal,index,LMC1,10,0.000,1.054"),
-            std::string::npos)
+  EXPECT_NE(report.visibility_csv.find("initial,horizontal,index,LMC1,10,0.000,1.054"), std::string::npos)
       << report.visibility_csv;
   EXPECT_NE(report.visibility_csv.find("initial,horizontal,index,LMC2,9,0.361,"), std::string::npos)
       << report.visibility_csv;
@@ -85,14 +76,11 @@ TEST(ReviewVisibilityMap, AgreesWithTheSessionReport) {
 
 TEST(ReviewVisibilityMap, CsvWritesNaNAsAnEmptyCell) {
   const std::string csv = visibility_map_csv(visibility_map(visibility_trials()));
-  EXPECT_EQ(csv.rfind("device,motion,layout,trials,values,never_saw_hand,rate_mean,rate_sd\n", 0),
-            0u)
-      << csv;
+  EXPECT_EQ(csv.rfind("device,motion,layout,trials,values,never_saw_hand,rate_mean,rate_sd\n", 0), 0u) << csv;
   EXPECT_NE(csv.find("LMC1,index,initial,2,10,5,0.000000,1.054093\n"), std::string::npos) << csv;
   EXPECT_NE(csv.find("LMC3,static,initial,1,1,0,0.700000,\n"), std::string::npos) << csv;
   EXPECT_EQ(csv.find("nan"), std::string::npos) << csv;
-  const nlohmann::json j =
-      nlohmann::json::parse(nlohmann::json(visibility_map(visibility_trials())).dump());
+  const nlohmann::json j = nlohmann::json::parse(nlohmann::json(visibility_map(visibility_trials())).dump());
   EXPECT_TRUE(j["cells"][3]["rate_sd"].is_null());
 }
 

@@ -23,7 +23,8 @@ std::string error_of(const std::string& text) {
 TEST(JournalText, ASessionCreatedEventWithoutItsSetupNamesLineAndField) {
   // Found by the fuzzer: the setup was read with the JSON library's own at(), whose exception text
   // ("key 'setup' not found") is not a message for a person and escaped as another exception type.
-  const std::string what = error_of(R"({"seq": 1, "type": "session_created", "s%tup": {}})" "\n");
+  const std::string what = error_of(R"({"seq": 1, "type": "session_created", "s%tup": {}})"
+                                    "\n");
   EXPECT_NE(what.find("journal.jsonl:1"), std::string::npos) << what;
   EXPECT_NE(what.find("/setup"), std::string::npos) << what;
 }

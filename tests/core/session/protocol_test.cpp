@@ -101,9 +101,9 @@ nlohmann::json minimal() {
 TEST(Protocol, QualityThresholdsMergeProtocolThenTrialType) {
   const Protocol p = protocol_from_json(minimal(), "t.json");
   const QualityThresholds& q = p.trial_types[0].quality;
-  EXPECT_DOUBLE_EQ(q.warn_min_rate_hz, 12);      // protocol level
-  EXPECT_DOUBLE_EQ(q.fail_max_gap_s, 2);         // trial type level
-  EXPECT_DOUBLE_EQ(q.fail_min_rate_hz, 5);       // default
+  EXPECT_DOUBLE_EQ(q.warn_min_rate_hz, 12);  // protocol level
+  EXPECT_DOUBLE_EQ(q.fail_max_gap_s, 2);     // trial type level
+  EXPECT_DOUBLE_EQ(q.fail_min_rate_hz, 5);   // default
   const Protocol back = protocol_from_json(protocol_to_json(p), "copy");
   EXPECT_DOUBLE_EQ(back.trial_types[0].quality.fail_max_gap_s, 2);
   EXPECT_EQ(plan_trials(back)[1].name, "Naiv_Index102");
@@ -153,7 +153,6 @@ TEST(Protocol, UnknownNameListsTheShippedOnes) {
     EXPECT_THAT(e.what(), HasSubstr("study"));
   }
 }
-
 
 TEST(Protocol, ShippedNamesListTheAssetsProtocolsSorted) {
   const auto names = shipped_protocol_names();

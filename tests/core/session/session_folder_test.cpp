@@ -65,7 +65,7 @@ TEST(SessionFolder, CreateWritesManifestJournalAndPlan) {
 TEST(SessionFolder, RefusesUnsafeSubjectIdsAndLeavesNothingBehind) {
   const fs::path dir = test::fresh_test_dir("session");
   for (const std::string& bad : {std::string("../x"), std::string("a/b"), std::string("a\0b", 3), std::string(200, 'a'),
-                                std::string(""), std::string("-x")}) {
+                                 std::string(""), std::string("-x")}) {
     try {
       SessionFolder::create(dir, quick_spec(bad));
       ADD_FAILURE() << "accepted subject id of length " << bad.size();
@@ -243,7 +243,8 @@ TEST(SessionFolder, ACutLastJournalLineIsSetAsideAndTheJournalGoesOn) {
   EXPECT_THAT(st.setup.notes, HasSubstr("after the crash"));
   bool fragment_kept = false;
   for (const auto& e : fs::directory_iterator(dir))
-    if (e.path().filename().string().rfind("journal.cut-", 0) == 0) fragment_kept = read_text(e.path()) == "{\"type\":\"trial_stop";
+    if (e.path().filename().string().rfind("journal.cut-", 0) == 0)
+      fragment_kept = read_text(e.path()) == "{\"type\":\"trial_stop";
   EXPECT_TRUE(fragment_kept);
   fs::remove_all(dir);
 }

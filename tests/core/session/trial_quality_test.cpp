@@ -11,10 +11,10 @@
 #include <optional>
 
 #include "core/common/error.h"
+#include "core/hand/hand_track.h"
 #include "core/hand/reference_poses.h"
 #include "core/io/layout_json.h"
 #include "core/io/lmc_recording.h"
-#include "core/hand/hand_track.h"
 #include "core/processing/measures.h"
 #include "tests/support/reference_data.h"
 
@@ -63,8 +63,7 @@ struct Trial {
 // `period_us` 0 takes the controller's rate from kPeriodUs.
 void add_stream(
     Trial& trial, int id, double seconds, const HandAt& hand,
-    const std::function<bool(double)>& keep = [](double) { return true; },
-    std::int64_t period_us = 0) {
+    const std::function<bool(double)>& keep = [](double) { return true; }, std::int64_t period_us = 0) {
   const LayoutDevice& device = trial.layout.devices[static_cast<size_t>(id - 1)];
   const std::int64_t period = period_us > 0 ? period_us : kPeriodUs[static_cast<size_t>(id - 1)];
   std::int64_t frame_id = 1000 * id;
@@ -118,9 +117,8 @@ void finish(Trial& trial, const std::string& status = "completed") {
 
 // Interleaved as the recorder writes them: by time, then device.
 void interleave(Trial& trial) {
-  std::stable_sort(
-      trial.recording.rows.begin(), trial.recording.rows.end(),
-      [](const HandFrame& a, const HandFrame& b) { return a.timestamp_us < b.timestamp_us; });
+  std::stable_sort(trial.recording.rows.begin(), trial.recording.rows.end(),
+                   [](const HandFrame& a, const HandFrame& b) { return a.timestamp_us < b.timestamp_us; });
 }
 
 Trial clean_trial(HandOrientation o = HandOrientation::kHorizontal, double seconds = 10.0) {
@@ -132,8 +130,7 @@ Trial clean_trial(HandOrientation o = HandOrientation::kHorizontal, double secon
 }
 
 bool has_reason(const QualityReport& r, const std::string& text) {
-  return std::any_of(r.reasons.begin(), r.reasons.end(),
-                     [&](const std::string& s) { return s == text; });
+  return std::any_of(r.reasons.begin(), r.reasons.end(), [&](const std::string& s) { return s == text; });
 }
 
 std::string all_reasons(const QualityReport& r) {
@@ -222,9 +219,9 @@ TEST(TrialQuality, StarvedControllerFailsAndSlowOneWarns) {
   EXPECT_DOUBLE_EQ(r.devices[0].median_rate_hz, 4.0);
   EXPECT_DOUBLE_EQ(r.devices[1].median_rate_hz, 8.0);
   EXPECT_EQ(r.verdict, "fail");
-  EXPECT_EQ(r.reasons, (std::vector<std::string>{"LMC1 is starved: 4.0 frames/s (median)",
-                                                 "LMC1 sent no frames for 0.25 s",
-                                                 "LMC2 ran slowly: 8.0 frames/s (median)"}))
+  EXPECT_EQ(r.reasons,
+            (std::vector<std::string>{"LMC1 is starved: 4.0 frames/s (median)", "LMC1 sent no frames for 0.25 s",
+                                      "LMC2 ran slowly: 8.0 frames/s (median)"}))
       << all_reasons(r);
 }
 
@@ -241,9 +238,8 @@ TEST(TrialQuality, RecorderDropsAndDisconnectsAreWarnings) {
   EXPECT_EQ(r.devices[1].frame_id_gaps, 31);
   EXPECT_EQ(r.devices[1].disconnects, 1);
   EXPECT_EQ(r.verdict, "warn");
-  EXPECT_EQ(r.reasons, (std::vector<std::string>{
-                           "LMC2: the recorder dropped 7 frames (queue full)",
-                           "LMC2 disconnected 1 time and did not come back (device lost (USB))"}))
+  EXPECT_EQ(r.reasons, (std::vector<std::string>{"LMC2: the recorder dropped 7 frames (queue full)",
+                                                 "LMC2 disconnected 1 time and did not come back (device lost (USB))"}))
       << all_reasons(r);
 }
 
@@ -254,8 +250,9 @@ TEST(TrialQuality, FramesWhoseOnlyHandWasTheOtherSideAreCountedAndWarned) {
   EXPECT_EQ(r.devices[2].other_side_hand_frames, 12);
   EXPECT_EQ(r.devices[0].other_side_hand_frames, 0);
   EXPECT_EQ(r.verdict, "warn");
-  EXPECT_EQ(r.reasons, (std::vector<std::string>{
-                           "LMC3 classified the hand as the other side in 12 frames (kept: it was the only hand in view)"}))
+  EXPECT_EQ(r.reasons,
+            (std::vector<std::string>{
+                "LMC3 classified the hand as the other side in 12 frames (kept: it was the only hand in view)"}))
       << all_reasons(r);
 
   // The count is in the journal's copy, and a report written before it was kept still reads.
@@ -273,9 +270,8 @@ TEST(TrialQuality, RecordingFileShorterThanTheRecorderWroteWarns) {
   trial.recording.warnings = {"line 3502: truncated last line dropped"};
   const QualityReport r = assess_trial(trial.inputs());
   EXPECT_EQ(r.verdict, "warn");
-  EXPECT_EQ(r.reasons,
-            (std::vector<std::string>{"recording file: line 3502: truncated last line dropped",
-                                      "LMC4: 500 frames in the file, the recorder wrote 510"}))
+  EXPECT_EQ(r.reasons, (std::vector<std::string>{"recording file: line 3502: truncated last line dropped",
+                                                 "LMC4: 500 frames in the file, the recorder wrote 510"}))
       << all_reasons(r);
 }
 
@@ -283,16 +279,13 @@ TEST(TrialQuality, ClockResetMidTrialFailsSayingSo) {
   Trial trial = clean_trial();
   // LMC3's service restarted at 6 s: its clock starts again near zero.
   for (HandFrame& row : trial.recording.rows) {
-    if (row.device_id == 3 && row.timestamp_us >= kT0 + 6 * kSecond)
-      row.timestamp_us -= kT0 - 2 * kSecond;
+    if (row.device_id == 3 && row.timestamp_us >= kT0 + 6 * kSecond) row.timestamp_us -= kT0 - 2 * kSecond;
   }
   const QualityReport r = assess_trial(trial.inputs());
   EXPECT_EQ(r.verdict, "fail");
   ASSERT_FALSE(r.reasons.empty());
   // In file order: 5.9875 s after kT0 on the old clock, then 8.0 s on the new one.
-  EXPECT_EQ(r.reasons,
-            std::vector<std::string>{
-                "LMC3's clock jumped back 4998.0 s (the tracking service restarted?)"})
+  EXPECT_EQ(r.reasons, std::vector<std::string>{"LMC3's clock jumped back 4998.0 s (the tracking service restarted?)"})
       << all_reasons(r);
   EXPECT_EQ(r.devices[2].frames, 800);
 }
@@ -311,11 +304,8 @@ TEST(TrialQuality, LayoutComesFromTheSidecarWhenNotGiven) {
 TEST(TrialQuality, HandAbsentSpanGivesTheConstructedFractionAndFails) {
   // Every controller keeps sending but reports no hand from 1.0 s to 9.5 s.
   Trial trial;
-  const HandFrame pose =
-      reference_pose(HandModel(), HandOrientation::kHorizontal, HandMotion::kOpen);
-  const HandAt hand = [pose](double t) {
-    return t < 1.0 || t >= 9.5 ? std::optional<HandFrame>(pose) : std::nullopt;
-  };
+  const HandFrame pose = reference_pose(HandModel(), HandOrientation::kHorizontal, HandMotion::kOpen);
+  const HandAt hand = [pose](double t) { return t < 1.0 || t >= 9.5 ? std::optional<HandFrame>(pose) : std::nullopt; };
   for (int id = 1; id <= 4; ++id) add_stream(trial, id, 10.0, hand);
   interleave(trial);
   finish(trial);
@@ -359,15 +349,13 @@ TEST(TrialQuality, AbortedOrFailedRecorderFailsWithItsError) {
   trial.sidecar.error = "the operator pressed Stop";
   QualityReport r = assess_trial(trial.inputs());
   EXPECT_EQ(r.verdict, "fail");
-  EXPECT_EQ(r.reasons,
-            std::vector<std::string>{"the trial was aborted: the operator pressed Stop"});
+  EXPECT_EQ(r.reasons, std::vector<std::string>{"the trial was aborted: the operator pressed Stop"});
 
   trial.sidecar.status = "failed";
   trial.sidecar.error = "write LMC_Naiv_Static101.txt: No space left on device";
   r = assess_trial(trial.inputs());
   EXPECT_EQ(r.reasons,
-            std::vector<std::string>{
-                "the recording failed: write LMC_Naiv_Static101.txt: No space left on device"});
+            std::vector<std::string>{"the recording failed: write LMC_Naiv_Static101.txt: No space left on device"});
 }
 
 TEST(TrialQuality, VerticalHandSeenPoorlyByTheInitialLayoutIsAWarnNotAFail) {
@@ -378,10 +366,8 @@ TEST(TrialQuality, VerticalHandSeenPoorlyByTheInitialLayoutIsAWarnNotAFail) {
   EXPECT_EQ(r.verdict, "warn") << all_reasons(r);
   ASSERT_EQ(r.finger_seen_fraction.size(), 5u);
   EXPECT_DOUBLE_EQ(r.finger_seen_fraction[2], 0.0);
-  EXPECT_TRUE(has_reason(r, "middle finger unseen by every controller in 100 % of frames"))
-      << all_reasons(r);
-  for (const auto& reason : r.reasons)
-    EXPECT_NE(reason.find("finger unseen"), std::string::npos) << reason;
+  EXPECT_TRUE(has_reason(r, "middle finger unseen by every controller in 100 % of frames")) << all_reasons(r);
+  for (const auto& reason : r.reasons) EXPECT_NE(reason.find("finger unseen"), std::string::npos) << reason;
 }
 
 TEST(TrialQuality, RangeOfMotionBelowExpectationWarnsWithTheNumbers) {
@@ -391,8 +377,7 @@ TEST(TrialQuality, RangeOfMotionBelowExpectationWarnsWithTheNumbers) {
   const HandAt hand = [&model](double t) {
     HandJointAngles a;
     a.wrist_flexion_deg = 20.0 * t / 10.0;
-    return std::optional<HandFrame>(
-        model.pose(a, reference_placement(model, HandOrientation::kHorizontal, a)));
+    return std::optional<HandFrame>(model.pose(a, reference_placement(model, HandOrientation::kHorizontal, a)));
   };
   for (int id = 1; id <= 4; ++id) add_stream(trial, id, 10.0, hand);
   interleave(trial);
@@ -436,34 +421,29 @@ TEST(TrialQuality, ViconExpectedButNotTriggeredFails) {
   in.vicon_expected = true;
   QualityReport r = assess_trial(in);
   EXPECT_EQ(r.verdict, "fail");
-  EXPECT_EQ(r.reasons,
-            std::vector<std::string>{"Vicon was not triggered: no CaptureStart was sent"});
+  EXPECT_EQ(r.reasons, std::vector<std::string>{"Vicon was not triggered: no CaptureStart was sent"});
 
-  trial.sidecar.vicon_packets = {
-      packet("CaptureStart", "sendto 192.168.10.2:30: Network is unreachable")};
+  trial.sidecar.vicon_packets = {packet("CaptureStart", "sendto 192.168.10.2:30: Network is unreachable")};
   in = trial.inputs();
   in.vicon_expected = true;
   r = assess_trial(in);
   EXPECT_FALSE(r.vicon.start_sent);
   EXPECT_EQ(r.vicon.error, "sendto 192.168.10.2:30: Network is unreachable");
   EXPECT_EQ(r.reasons,
-            std::vector<std::string>{
-                "Vicon was not triggered: sendto 192.168.10.2:30: Network is unreachable"});
+            std::vector<std::string>{"Vicon was not triggered: sendto 192.168.10.2:30: Network is unreachable"});
 }
 
 TEST(TrialQuality, ViconStartedButNotStoppedWarns) {
   Trial trial = clean_trial();
-  trial.sidecar.vicon_packets = {packet("CaptureStart"),
-                                 packet("CaptureStop", "sendto: Host is unreachable")};
+  trial.sidecar.vicon_packets = {packet("CaptureStart"), packet("CaptureStop", "sendto: Host is unreachable")};
   QualityInputs in = trial.inputs();
   in.vicon_expected = true;
   const QualityReport r = assess_trial(in);
   EXPECT_TRUE(r.vicon.start_sent);
   EXPECT_FALSE(r.vicon.stop_sent);
   EXPECT_EQ(r.verdict, "warn");
-  EXPECT_EQ(r.reasons,
-            std::vector<std::string>{"Vicon was not stopped (no CaptureStop sent: sendto: Host is "
-                                     "unreachable); stop its capture by hand"});
+  EXPECT_EQ(r.reasons, std::vector<std::string>{"Vicon was not stopped (no CaptureStop sent: sendto: Host is "
+                                                "unreachable); stop its capture by hand"});
 }
 
 TEST(TrialQuality, ViconExportFolderIsCheckedForThePairedFile) {
@@ -480,8 +460,7 @@ TEST(TrialQuality, ViconExportFolderIsCheckedForThePairedFile) {
   EXPECT_EQ(r.vicon.export_found, std::optional<bool>(false));
   EXPECT_EQ(r.verdict, "warn");
   EXPECT_EQ(r.reasons,
-            std::vector<std::string>{
-                "the Vicon file Naiv_Static101.trc or .c3d has not appeared in " + dir.string()});
+            std::vector<std::string>{"the Vicon file Naiv_Static101.trc or .c3d has not appeared in " + dir.string()});
 
   std::ofstream(dir / "Naiv_Static101.trc") << "PathFileType\t4\t(X/Y/Z)\tNaiv_Static101.trc\n";
   r = assess_trial(in);
@@ -555,8 +534,7 @@ TEST(TrialQuality, JsonErrorsNameTheSourceAndPath) {
     (void)quality_from_json(j, "S01/journal.json");
     FAIL() << "no error";
   } catch (const Error& e) {
-    EXPECT_NE(std::string(e.what()).find("S01/journal.json: at /vicon/exported: unknown field"),
-              std::string::npos)
+    EXPECT_NE(std::string(e.what()).find("S01/journal.json: at /vicon/exported: unknown field"), std::string::npos)
         << e.what();
   }
 }
@@ -596,9 +574,7 @@ TEST(TrialQuality, PublishedStaticTrialPasses) {
 TEST(TrialQuality, TimelineShowsWhenEachControllerHadTheHand) {
   Trial trial;
   const HandFrame pose = reference_pose(HandModel(), HandOrientation::kHorizontal, HandMotion::kOpen);
-  const HandAt hand = [pose](double t) {
-    return t < 1.0 || t >= 9.5 ? std::optional<HandFrame>(pose) : std::nullopt;
-  };
+  const HandAt hand = [pose](double t) { return t < 1.0 || t >= 9.5 ? std::optional<HandFrame>(pose) : std::nullopt; };
   for (int id = 1; id <= 4; ++id) add_stream(trial, id, 10.0, hand);
   interleave(trial);
   finish(trial);

@@ -27,8 +27,7 @@ double chi2(double p, double df) {
 std::vector<PairedObservation> identical_repeats(const std::vector<double>& diffs, int repeats) {
   std::vector<PairedObservation> obs;
   for (std::size_t i = 0; i < diffs.size(); ++i)
-    for (int r = 0; r < repeats; ++r)
-      obs.push_back({"S" + std::to_string(i), 50.0 + diffs[i], 50.0});
+    for (int r = 0; r < repeats; ++r) obs.push_back({"S" + std::to_string(i), 50.0 + diffs[i], 50.0});
   return obs;
 }
 
@@ -50,8 +49,7 @@ TEST(StatsBlandAltmanRepeated, IdenticalRepeatsReduceToTheSimpleFormOnSubjectMea
   EXPECT_NEAR(r.sd_difference, s, 1e-12);
   EXPECT_NEAR(r.loa_low, 4.0 - z975() * s, 1e-9);
   EXPECT_NEAR(r.loa_high, 4.0 + z975() * s, 1e-9);
-  const double h =
-      t975(3.0) * s / 2.0;  // the simple form's bias half-width, t(n − 1) with n subjects
+  const double h = t975(3.0) * s / 2.0;  // the simple form's bias half-width, t(n − 1) with n subjects
   EXPECT_NEAR(r.bias_ci.low, 4.0 - h, 1e-9);
   EXPECT_NEAR(r.bias_ci.high, 4.0 + h, 1e-9);
   // MOVER with only the between-subject term: s² has the exact χ²(3) interval.
@@ -85,9 +83,8 @@ TEST(StatsBlandAltmanRepeated, UnequalTrialsFollowTheAnovaFormByHand) {
   // SS_between = 2(2 − 16/3)² + (4 − 16/3)² + 3(8 − 16/3)² = 408/9 → MS_between = 68/3;
   // SS_within = 2 + 0 + 8 = 10 → MS_within = 10/3; c = (36 − 14)/(2·6) = 11/6;
   // s²_db = (68/3 − 10/3)/(11/6) = 116/11; s²_d = 116/11 + 10/3 = 458/33.
-  const std::vector<PairedObservation> obs = {{"A", 1, 0},       {"B", 4, 0}, {"C", 6, 0},
-                                              {"A", 3, 0},       {"C", 8, 0}, {"C", 10, 0},
-                                              {"B", kMissing, 0}};
+  const std::vector<PairedObservation> obs = {{"A", 1, 0}, {"B", 4, 0},  {"C", 6, 0},       {"A", 3, 0},
+                                              {"C", 8, 0}, {"C", 10, 0}, {"B", kMissing, 0}};
   const BlandAltmanResult r = bland_altman_repeated(obs);
   ASSERT_TRUE(r.ok()) << r.reason;
   EXPECT_EQ(r.n_used, 6u);
@@ -116,8 +113,7 @@ TEST(StatsBlandAltmanRepeated, UnequalTrialsFollowTheAnovaFormByHand) {
 }
 
 TEST(StatsBlandAltmanRepeated, OneSubjectGivesTheBiasButNoLimitsAndNoDataIsNaN) {
-  const std::vector<PairedObservation> one = {
-      {"A", 1, 0}, {"A", 2, 0}, {"A", 4, 0}, {"B", kMissing, 1}};
+  const std::vector<PairedObservation> one = {{"A", 1, 0}, {"A", 2, 0}, {"A", 4, 0}, {"B", kMissing, 1}};
   const BlandAltmanResult r = bland_altman_repeated(one);
   EXPECT_FALSE(r.ok());
   EXPECT_EQ(r.n_subjects, 1u);

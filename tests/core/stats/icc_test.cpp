@@ -45,13 +45,10 @@ TEST(StatsIcc, ShroutFleissTable2ToThePublishedDecimals) {
   EXPECT_NEAR(r.icc1_k.value, 0.44, 0.005);
   EXPECT_NEAR(r.icc2_k.value, 0.62, 0.005);
   EXPECT_NEAR(r.icc3_k.value, 0.91, 0.005);
-  EXPECT_EQ(r.icc2_1.description,
-            "ICC(2,1): two-way random effects, absolute agreement, single measurement");
+  EXPECT_EQ(r.icc2_1.description, "ICC(2,1): two-way random effects, absolute agreement, single measurement");
   EXPECT_EQ(r.icc3_k.form, "ICC(3,4)");
-  EXPECT_EQ(r.icc3_k.description,
-            "ICC(3,4): two-way mixed effects, consistency, average of 4 measurements");
-  EXPECT_EQ(r.icc1_1.description,
-            "ICC(1,1): one-way random effects, absolute agreement, single measurement");
+  EXPECT_EQ(r.icc3_k.description, "ICC(3,4): two-way mixed effects, consistency, average of 4 measurements");
+  EXPECT_EQ(r.icc1_1.description, "ICC(1,1): one-way random effects, absolute agreement, single measurement");
 }
 
 TEST(StatsIcc, ExactFIntervalsAgainstBoostQuantiles) {
@@ -83,18 +80,14 @@ TEST(StatsIcc, TwoWayRandomIntervalFollowsSatterthwaite) {
   // v = (n − 1)(k − 1)(kρ·Fj + b)² / ((n − 1)k²ρ²Fj² + b²), Fj = JMS/EMS, b = n(1 + (k − 1)ρ) − kρ.
   const double fj = r.jms / r.ems;
   const double b = n * (1 + (k - 1) * rho) - k * rho;
-  const double v = (n - 1) * (k - 1) * std::pow(k * rho * fj + b, 2) /
-                   ((n - 1) * k * k * rho * rho * fj * fj + b * b);
+  const double v = (n - 1) * (k - 1) * std::pow(k * rho * fj + b, 2) / ((n - 1) * k * k * rho * rho * fj * fj + b * b);
   const double fs = f975(n - 1, v), fs2 = f975(v, n - 1);
-  EXPECT_NEAR(r.icc2_1.ci.low,
-              n * (r.bms - fs * r.ems) / (fs * (k * r.jms + (k * n - k - n) * r.ems) + n * r.bms),
+  EXPECT_NEAR(r.icc2_1.ci.low, n * (r.bms - fs * r.ems) / (fs * (k * r.jms + (k * n - k - n) * r.ems) + n * r.bms),
               1e-9);
-  EXPECT_NEAR(r.icc2_1.ci.high,
-              n * (fs2 * r.bms - r.ems) / (k * r.jms + (k * n - k - n) * r.ems + n * fs2 * r.bms),
+  EXPECT_NEAR(r.icc2_1.ci.high, n * (fs2 * r.bms - r.ems) / (k * r.jms + (k * n - k - n) * r.ems + n * fs2 * r.bms),
               1e-9);
   EXPECT_NEAR(r.icc2_k.ci.low, n * (r.bms - fs * r.ems) / (fs * (r.jms - r.ems) + n * r.bms), 1e-9);
-  EXPECT_NEAR(r.icc2_k.ci.high, n * (fs2 * r.bms - r.ems) / ((r.jms - r.ems) + n * fs2 * r.bms),
-              1e-9);
+  EXPECT_NEAR(r.icc2_k.ci.high, n * (fs2 * r.bms - r.ems) / ((r.jms - r.ems) + n * fs2 * r.bms), 1e-9);
   for (const IccEstimate* e : {&r.icc1_1, &r.icc2_1, &r.icc3_1, &r.icc1_k, &r.icc2_k, &r.icc3_k}) {
     EXPECT_LT(e->ci.low, e->value) << e->form;
     EXPECT_GT(e->ci.high, e->value) << e->form;

@@ -11,7 +11,9 @@
 namespace lmc {
 namespace range_threshold_test {
 
-bool out_by_sqrt(double v2, double range) { return std::sqrt(v2) > range; }
+bool out_by_sqrt(double v2, double range) {
+  return std::sqrt(v2) > range;
+}
 
 TEST(RangeThreshold, DecidesAsTheSquareRootDoesAroundTheThreshold) {
   std::mt19937_64 rng(21);

@@ -161,10 +161,11 @@ TEST(Visibility, CylinderConditions) {
   EXPECT_FALSE(bone_hides(one_bone({-20, 100, 10.1}, {1, 0, 0}, 40), m));  // 10.1 mm: misses
   EXPECT_FALSE(bone_hides(one_bone({-20, 250, 0}, {1, 0, 0}, 40), m));     // beyond the marker
   EXPECT_FALSE(bone_hides(one_bone({-20, -50, 0}, {1, 0, 0}, 40), m));     // behind the device
-  EXPECT_FALSE(bone_hides(one_bone({5, 100, 0}, {1, 0, 0}, 40), m));       // closest point before the bone's start: no end caps
-  EXPECT_FALSE(bone_hides(one_bone({-45, 100, 0}, {1, 0, 0}, 40), m));     // … and past its end
+  EXPECT_FALSE(
+      bone_hides(one_bone({5, 100, 0}, {1, 0, 0}, 40), m));  // closest point before the bone's start: no end caps
+  EXPECT_FALSE(bone_hides(one_bone({-45, 100, 0}, {1, 0, 0}, 40), m));  // … and past its end
   EXPECT_TRUE(bone_hides(one_bone({-39, 100, 0}, {1, 0, 0}, 40), m));
-  EXPECT_FALSE(bone_hides(one_bone({-20, 100, 0}, {1, 0, 0}, 0), m));      // zero length
+  EXPECT_FALSE(bone_hides(one_bone({-20, 100, 0}, {1, 0, 0}, 0), m));  // zero length
 }
 
 TEST(Visibility, ParallelRaysDoNotDivideByZero) {
@@ -187,7 +188,8 @@ TEST(Visibility, ParallelRaysDoNotDivideByZero) {
   // …while a ray through it is.
   const DeviceView below = device_at(0, -100, 0);
   EXPECT_TRUE(vis::palm_occludes(fr, below, vis::palm_plane_numerator(fr, below), 0, 200, 0));
-  EXPECT_FALSE(vis::palm_occludes(fr, below, vis::palm_plane_numerator(fr, below), 0, 100, 0));  // q = m: not strictly between
+  EXPECT_FALSE(
+      vis::palm_occludes(fr, below, vis::palm_plane_numerator(fr, below), 0, 100, 0));  // q = m: not strictly between
 }
 
 // The study's literal formulas (unit ray, divisions) as an independent check of the rewritten,
@@ -213,7 +215,8 @@ TEST(Visibility, CylinderTestMatchesTheLiteralFormulaOnRandomCases) {
     const Eigen::Vector3d m(100 * u(rng), 200 + 100 * u(rng), 100 * u(rng));
     const Eigen::Vector3d w = Eigen::Vector3d(u(rng), u(rng), u(rng)).normalized();
     const double len = 20 + 30 * (1 + u(rng));
-    const Eigen::Vector3d b = o + (0.5 + 0.5 * u(rng)) * (m - o) + Eigen::Vector3d(20 * u(rng), 20 * u(rng), 20 * u(rng)) - 0.5 * len * w;
+    const Eigen::Vector3d b =
+        o + (0.5 + 0.5 * u(rng)) * (m - o) + Eigen::Vector3d(20 * u(rng), 20 * u(rng), 20 * u(rng)) - 0.5 * len * w;
     PreparedFrame fr = one_bone(b, w, len);
     fr.wx[3] = w.x();
     fr.wy[3] = w.y();
@@ -246,7 +249,8 @@ TEST(Visibility, KernelAndExplainAgreeOnRandomPosesAndDevices) {
     const DeviceView d = device_at(250 * u(rng), 60 * u(rng), 250 * u(rng), 60 * u(rng), 180 * u(rng), 60 * u(rng));
     for (const auto& fr : frames) {
       const auto ex = explain_visibility(fr, d, lim);
-      for (const KernelBuild build : {KernelBuild::kBest, KernelBuild::kAvx512, KernelBuild::kAvx2, KernelBuild::kBaseline}) {
+      for (const KernelBuild build :
+           {KernelBuild::kBest, KernelBuild::kAvx512, KernelBuild::kAvx2, KernelBuild::kBaseline}) {
         ASSERT_EQ(ex.bits, visible_fingers(fr, d, lim, build)) << kernel_build_name(build);
       }
       for (int k = 0; k < kNumDigits; ++k) {

@@ -14,9 +14,9 @@
 #pragma GCC system_header
 #endif
 
-#include <stdint.h>
 #include <stdbool.h>
 #include <stddef.h>
+#include <stdint.h>
 
 #define LEAP_EXPORT
 #define LEAP_CALL
@@ -58,8 +58,8 @@ typedef enum _eLeapTrackingMode {
   eLeapTrackingMode_Unknown = 3
 } eLeapTrackingMode;
 
-#define LEAP_SUCCEEDED(rs) (((uint32_t)(rs) & 0x80000000u) == 0)
-#define LEAP_FAILED(rs) (((uint32_t)(rs) & 0x80000000u) != 0)
+#define LEAP_SUCCEEDED(rs) (((uint32_t)(rs)&0x80000000u) == 0)
+#define LEAP_FAILED(rs) (((uint32_t)(rs)&0x80000000u) != 0)
 
 typedef struct _LEAP_CONNECTION* LEAP_CONNECTION;
 typedef struct _LEAP_DEVICE* LEAP_DEVICE;
@@ -312,16 +312,20 @@ typedef struct _LEAP_CONNECTION_MESSAGE {
   uint32_t device_id;
 } LEAP_CONNECTION_MESSAGE;
 
-LEAP_EXPORT eLeapRS LEAP_CALL LeapCreateConnection(const LEAP_CONNECTION_CONFIG* pConfig, LEAP_CONNECTION* phConnection);
+LEAP_EXPORT eLeapRS LEAP_CALL LeapCreateConnection(const LEAP_CONNECTION_CONFIG* pConfig,
+                                                   LEAP_CONNECTION* phConnection);
 LEAP_EXPORT eLeapRS LEAP_CALL LeapOpenConnection(LEAP_CONNECTION hConnection);
-LEAP_EXPORT eLeapRS LEAP_CALL LeapPollConnection(LEAP_CONNECTION hConnection, uint32_t timeout, LEAP_CONNECTION_MESSAGE* evt);
+LEAP_EXPORT eLeapRS LEAP_CALL LeapPollConnection(LEAP_CONNECTION hConnection, uint32_t timeout,
+                                                 LEAP_CONNECTION_MESSAGE* evt);
 LEAP_EXPORT void LEAP_CALL LeapCloseConnection(LEAP_CONNECTION hConnection);
 LEAP_EXPORT void LEAP_CALL LeapDestroyConnection(LEAP_CONNECTION hConnection);
 LEAP_EXPORT eLeapRS LEAP_CALL LeapSetPolicyFlags(LEAP_CONNECTION hConnection, uint64_t set, uint64_t clear);
 /* Per device (multi-device-aware connections; LeapSetPolicyFlags reaches only the primary device). @since 5.4.0 */
-LEAP_EXPORT eLeapRS LEAP_CALL LeapSetPolicyFlagsEx(LEAP_CONNECTION hConnection, LEAP_DEVICE hDevice, uint64_t set, uint64_t clear);
+LEAP_EXPORT eLeapRS LEAP_CALL LeapSetPolicyFlagsEx(LEAP_CONNECTION hConnection, LEAP_DEVICE hDevice, uint64_t set,
+                                                   uint64_t clear);
 /* Per device; asynchronous: the answer is a TrackingMode event for the device. @since 5.4.0 */
-LEAP_EXPORT eLeapRS LEAP_CALL LeapSetTrackingModeEx(LEAP_CONNECTION hConnection, LEAP_DEVICE hDevice, eLeapTrackingMode mode);
+LEAP_EXPORT eLeapRS LEAP_CALL LeapSetTrackingModeEx(LEAP_CONNECTION hConnection, LEAP_DEVICE hDevice,
+                                                    eLeapTrackingMode mode);
 /* Per device; asynchronous: answered by a TrackingMode event with the mode in force. @since 5.4.0 */
 LEAP_EXPORT eLeapRS LEAP_CALL LeapGetTrackingModeEx(LEAP_CONNECTION hConnection, LEAP_DEVICE hDevice);
 LEAP_EXPORT eLeapRS LEAP_CALL LeapOpenDevice(LEAP_DEVICE_REF rDevice, LEAP_DEVICE* phDevice);

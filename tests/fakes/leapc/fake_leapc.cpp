@@ -75,7 +75,9 @@ State& state() {
   return s;
 }
 
-void push_locked(std::unique_ptr<Queued> q) { state().queue.push_back(std::move(q)); }
+void push_locked(std::unique_ptr<Queued> q) {
+  state().queue.push_back(std::move(q));
+}
 
 void push(std::unique_ptr<Queued> q) {
   State& s = state();
@@ -169,8 +171,10 @@ void device_failure(std::uint32_t id, eLeapDeviceStatus status, bool with_handle
 
 void fail_policy_ex(std::uint32_t id, eLeapRS rs) {
   std::lock_guard lock(state().mutex);
-  if (rs == eLeapRS_Success) state().policy_ex_result.erase(id);
-  else state().policy_ex_result[id] = rs;
+  if (rs == eLeapRS_Success)
+    state().policy_ex_result.erase(id);
+  else
+    state().policy_ex_result[id] = rs;
 }
 
 void refuse_policy(std::uint32_t id, std::uint64_t flags) {
@@ -294,7 +298,9 @@ void set_clock_offset_us(std::int64_t offset) {
   state().clock_offset_us = offset;
 }
 
-std::int64_t now_us() { return LeapGetNow(); }
+std::int64_t now_us() {
+  return LeapGetNow();
+}
 
 Stats stats() {
   State& s = state();
@@ -315,7 +321,8 @@ eLeapRS LeapCreateConnection(const LEAP_CONNECTION_CONFIG* config, LEAP_CONNECTI
   if (out == nullptr) return eLeapRS_InvalidArgument;
   std::lock_guard lock(state().mutex);
   ++state().stats.connections_created;
-  if (config != nullptr && (config->flags & eLeapConnectionConfig_MultiDeviceAware) != 0) ++state().stats.multi_device_aware;
+  if (config != nullptr && (config->flags & eLeapConnectionConfig_MultiDeviceAware) != 0)
+    ++state().stats.multi_device_aware;
   *out = new _LEAP_CONNECTION();
   return eLeapRS_Success;
 }
@@ -437,16 +444,35 @@ eLeapRS LeapPollConnection(LEAP_CONNECTION c, uint32_t timeout, LEAP_CONNECTION_
       evt->device_id = q->device_id;
       switch (q->type) {
         case eLeapEventType_Device:
-        case eLeapEventType_DeviceLost: evt->device_event = &q->device; break;
-        case eLeapEventType_DeviceFailure: evt->device_failure_event = &q->failure; break;
-        case eLeapEventType_DeviceStatusChange: evt->device_status_change_event = &q->status; break;
-        case eLeapEventType_DroppedFrame: evt->dropped_frame_event = &q->dropped; break;
-        case eLeapEventType_Connection: evt->connection_event = &q->connection; break;
-        case eLeapEventType_ConnectionLost: evt->connection_lost_event = &q->lost; break;
-        case eLeapEventType_Policy: evt->policy_event = &q->policy; break;
-        case eLeapEventType_TrackingMode: evt->tracking_mode_event = &q->mode; break;
-        case eLeapEventType_Tracking: evt->tracking_event = &q->tracking; break;
-        default: break;
+        case eLeapEventType_DeviceLost:
+          evt->device_event = &q->device;
+          break;
+        case eLeapEventType_DeviceFailure:
+          evt->device_failure_event = &q->failure;
+          break;
+        case eLeapEventType_DeviceStatusChange:
+          evt->device_status_change_event = &q->status;
+          break;
+        case eLeapEventType_DroppedFrame:
+          evt->dropped_frame_event = &q->dropped;
+          break;
+        case eLeapEventType_Connection:
+          evt->connection_event = &q->connection;
+          break;
+        case eLeapEventType_ConnectionLost:
+          evt->connection_lost_event = &q->lost;
+          break;
+        case eLeapEventType_Policy:
+          evt->policy_event = &q->policy;
+          break;
+        case eLeapEventType_TrackingMode:
+          evt->tracking_mode_event = &q->mode;
+          break;
+        case eLeapEventType_Tracking:
+          evt->tracking_event = &q->tracking;
+          break;
+        default:
+          break;
       }
       s.current = std::move(q);
       s.polling.fetch_sub(1);
@@ -530,7 +556,8 @@ int64_t LeapGetNow(void) {
     std::lock_guard lock(state().mutex);
     offset = state().clock_offset_us;
   }
-  return std::chrono::duration_cast<std::chrono::microseconds>(std::chrono::steady_clock::now().time_since_epoch()).count() +
+  return std::chrono::duration_cast<std::chrono::microseconds>(std::chrono::steady_clock::now().time_since_epoch())
+             .count() +
          offset;
 }
 

@@ -70,18 +70,18 @@ struct Stats {
   int multi_device_aware = 0;  // LeapCreateConnection calls with the MultiDeviceAware flag
   int devices_opened = 0;
   int devices_closed = 0;
-  int open_attempts = 0;       // LeapOpenDevice calls, failed ones included
+  int open_attempts = 0;  // LeapOpenDevice calls, failed ones included
   int subscribed = 0;
   int subscribe_attempts = 0;  // LeapSubscribeEvents calls, failed ones included
   int unsubscribed = 0;
   int tracking_delivered = 0;
   int tracking_suppressed = 0;  // queued for a device nobody subscribed to
   int concurrent_polls = 0;
-  std::uint64_t policy_set = 0;  // connection-wide flags (LeapSetPolicyFlags: the primary device only)
-  int policy_ex_calls = 0;       // LeapSetPolicyFlagsEx calls (per device)
-  int tracking_mode_calls = 0;   // LeapSetTrackingModeEx calls (per device)
-  int tracking_mode_queries = 0; // LeapGetTrackingModeEx calls (per device)
-  int pending = 0;  // queued messages not yet polled
+  std::uint64_t policy_set = 0;   // connection-wide flags (LeapSetPolicyFlags: the primary device only)
+  int policy_ex_calls = 0;        // LeapSetPolicyFlagsEx calls (per device)
+  int tracking_mode_calls = 0;    // LeapSetTrackingModeEx calls (per device)
+  int tracking_mode_queries = 0;  // LeapGetTrackingModeEx calls (per device)
+  int pending = 0;                // queued messages not yet polled
 };
 Stats stats();
 

@@ -118,8 +118,9 @@ TEST_F(LeapcBackend, FourDevicesAreDiscoveredSubscribedAndMappedBySerial) {
   const std::uint32_t ids[] = {7, 3, 9, 4};
   for (int round = 0; round < 5; ++round)
     for (std::uint32_t id : ids)
-      fake_leapc::track(id, 1000 + round, 2'000'000 + round * 30'000 + id, 30.0F,
-                        {fake_leapc::make_hand(eLeapHandType_Left, 500), fake_leapc::make_hand(eLeapHandType_Right, 10.0F * id)});
+      fake_leapc::track(
+          id, 1000 + round, 2'000'000 + round * 30'000 + id, 30.0F,
+          {fake_leapc::make_hand(eLeapHandType_Left, 500), fake_leapc::make_hand(eLeapHandType_Right, 10.0F * id)});
   ASSERT_TRUE(wait_for([&] { return rec.size() == 20; }));
   hub.stop();
   EXPECT_EQ(fake_leapc::stats().concurrent_polls, 0);
@@ -130,7 +131,8 @@ TEST_F(LeapcBackend, FourDevicesAreDiscoveredSubscribedAndMappedBySerial) {
   std::map<int, int> per_slot;
   for (const auto& f : rec.frames) {
     ASSERT_TRUE(f.hand_present);
-    EXPECT_FLOAT_EQ(static_cast<float>(f.point(kPalm).x()), palm_x_by_slot.at(f.device_id)) << "the right hand, by hand type";
+    EXPECT_FLOAT_EQ(static_cast<float>(f.point(kPalm).x()), palm_x_by_slot.at(f.device_id))
+        << "the right hand, by hand type";
     // The 28 points come from the documented bones: elbow = arm.prev_joint, wrist = arm.next_joint,
     // digit joints = bones[0].prev_joint then bones[0..3].next_joint.
     const double base = palm_x_by_slot.at(f.device_id);
@@ -301,8 +303,7 @@ TEST_F(LeapcBackend, EachDeviceIsAskedForTheTrackingModeOfItsPlaceAndItsModeAndM
   fake_leapc::plug(2, "LP22222", eLeapDevicePID_LMC2, eLeapTrackingMode_HMD);
   auto modes_known = [&] {
     const auto snap = hub.snapshot();
-    return snap.devices.size() == 2 && !snap.devices[0].tracking_mode.empty() &&
-           !snap.devices[1].tracking_mode.empty();
+    return snap.devices.size() == 2 && !snap.devices[0].tracking_mode.empty() && !snap.devices[1].tracking_mode.empty();
   };
   ASSERT_TRUE(wait_for(modes_known));
   EXPECT_EQ(fake_leapc::requested_tracking_mode(1), eLeapTrackingMode_ScreenTop);
@@ -402,7 +403,8 @@ TEST_F(LeapcBackend, TwoDevicesWithOneSerialAreNeverMixedInOneSlot) {
   fake_leapc::plug(1, "device_1");
   fake_leapc::plug(2, "device_1");
   std::vector<std::string> seen;
-  ASSERT_TRUE(wait_for_message(hub, seen, {"refused the controller with device id 2", "device_1", "update the Ultraleap service"}));
+  ASSERT_TRUE(wait_for_message(
+      hub, seen, {"refused the controller with device id 2", "device_1", "update the Ultraleap service"}));
   fake_leapc::track(1, 1, 100, 0, {fake_leapc::make_hand(eLeapHandType_Right, 1)});
   fake_leapc::track(2, 1, 105, 0, {fake_leapc::make_hand(eLeapHandType_Right, 2)});
   fake_leapc::track(1, 2, 130, 0, {fake_leapc::make_hand(eLeapHandType_Right, 1)});
@@ -461,7 +463,8 @@ TEST_F(LeapcBackend, AServiceNotRunningYetIsWaitedFor) {
   ASSERT_TRUE(wait_for_message(hub, seen, {"connected to the Ultraleap service"}));
   hub.stop();
   int waiting = 0;
-  for (const auto& m : seen) waiting += m.find("waiting for the Ultraleap service (LeapC: eLeapRS_NotConnected)") != std::string::npos;
+  for (const auto& m : seen)
+    waiting += m.find("waiting for the Ultraleap service (LeapC: eLeapRS_NotConnected)") != std::string::npos;
   EXPECT_EQ(waiting, 1) << "said once, not once per poll";
 }
 

@@ -12,11 +12,16 @@ namespace lmc::ui {
 
 const char* calibration_stage_name(CalibrationStage stage) {
   switch (stage) {
-    case CalibrationStage::kIdle: return "idle";
-    case CalibrationStage::kRecording: return "recording";
-    case CalibrationStage::kCalibrating: return "calibrating";
-    case CalibrationStage::kResult: return "result";
-    case CalibrationStage::kApplied: return "applied";
+    case CalibrationStage::kIdle:
+      return "idle";
+    case CalibrationStage::kRecording:
+      return "recording";
+    case CalibrationStage::kCalibrating:
+      return "calibrating";
+    case CalibrationStage::kResult:
+      return "result";
+    case CalibrationStage::kApplied:
+      return "applied";
   }
   return "?";
 }
@@ -29,7 +34,8 @@ const char* calibration_residuals_explanation() {
          "centres.";
 }
 
-std::string CalibrationStep::record(const std::filesystem::path& dir, const CalibrationSettings& settings, double seconds) {
+std::string CalibrationStep::record(const std::filesystem::path& dir, const CalibrationSettings& settings,
+                                    double seconds) {
   if (busy()) return std::string("the Calibrate step is already ") + calibration_stage_name(stage_);
   if (!rig_.running()) return "start the controllers (or the simulated rig) first";
   const Layout layout = rig_.layout();  // what the trial records with: the workbench's layout and its serials
@@ -95,7 +101,8 @@ void CalibrationStep::update() {
       cancelling_ = false;
       stage_ = CalibrationStage::kIdle;
       message_ = "calibration recording cancelled" +
-                 (result && result->recorded ? "; the partial trial stays in " + result->paths.recording.string() : std::string());
+                 (result && result->recorded ? "; the partial trial stays in " + result->paths.recording.string()
+                                             : std::string());
       message_is_error_ = false;
       return;
     }
@@ -127,17 +134,23 @@ double CalibrationStep::recording_fraction() const {
 
 std::string CalibrationStep::activity() const {
   switch (stage_) {
-    case CalibrationStage::kIdle: return {};
+    case CalibrationStage::kIdle:
+      return {};
     case CalibrationStage::kRecording: {
       if (cancelling_) return "cancelling the recording...";
       const auto& snap = rig_.trial().snapshot();
-      if (!snap || snap->phase == devices::TrialPhase::kWaitingForStreams) return "waiting for every controller to stream...";
+      if (!snap || snap->phase == devices::TrialPhase::kWaitingForStreams)
+        return "waiting for every controller to stream...";
       if (snap->phase != devices::TrialPhase::kRecording) return std::string(devices::trial_phase_name(snap->phase));
-      return "hold the hand still and open: " + format_fixed(std::max(0.0, seconds_ - snap->recording_s), 1) + " s left";
+      return "hold the hand still and open: " + format_fixed(std::max(0.0, seconds_ - snap->recording_s), 1) +
+             " s left";
     }
-    case CalibrationStage::kCalibrating: return job_.stage().empty() ? "calibrating..." : job_.stage() + "...";
-    case CalibrationStage::kResult: return "result ready: Apply, Save layout... or Discard";
-    case CalibrationStage::kApplied: return "applied to the layout (Ctrl+Z undoes it)";
+    case CalibrationStage::kCalibrating:
+      return job_.stage().empty() ? "calibrating..." : job_.stage() + "...";
+    case CalibrationStage::kResult:
+      return "result ready: Apply, Save layout... or Discard";
+    case CalibrationStage::kApplied:
+      return "applied to the layout (Ctrl+Z undoes it)";
   }
   return {};
 }
@@ -209,7 +222,8 @@ void CalibrationStep::notice_layout(const Layout& committed) {
       continue;
     }
     stage_ = CalibrationStage::kResult;
-    message_ = "the layout no longer holds this calibration (undone or edited in the Layout tab): Apply again or Discard";
+    message_ =
+        "the layout no longer holds this calibration (undone or edited in the Layout tab): Apply again or Discard";
     message_is_error_ = false;
     return;
   }
@@ -229,8 +243,10 @@ std::string CalibrationStep::suggested_file_name() const {
   std::string stem;
   for (const char c : nominal_.name) {
     const bool keep = std::isalnum(static_cast<unsigned char>(c)) != 0 || c == '-' || c == '_';
-    if (keep) stem += c;
-    else if (!stem.empty() && stem.back() != '-') stem += '-';
+    if (keep)
+      stem += c;
+    else if (!stem.empty() && stem.back() != '-')
+      stem += '-';
   }
   while (!stem.empty() && stem.back() == '-') stem.pop_back();
   return (stem.empty() ? std::string("layout") : stem) + "-calibrated.json";

@@ -59,9 +59,11 @@ class CalibrationStep {
 
   // Records a still hand for `seconds` into `dir` through the rig, then calibrates that trial
   // with the rig's layout. Returns the reason when it cannot start (empty when it started).
-  std::string record(const std::filesystem::path& dir, const CalibrationSettings& settings, double seconds = kTrialSeconds);
+  std::string record(const std::filesystem::path& dir, const CalibrationSettings& settings,
+                     double seconds = kTrialSeconds);
   // Calibrates a trial recorded earlier with `layout` (e.g. a shared real trial).
-  std::string calibrate_file(const std::filesystem::path& trial, const Layout& layout, const CalibrationSettings& settings);
+  std::string calibrate_file(const std::filesystem::path& trial, const Layout& layout,
+                             const CalibrationSettings& settings);
   // Stops the recording (its rows stay on disk) or drops the running calibration; back to idle.
   void cancel();
   // Once a frame, after the rig's poll(): moves on when the trial or the calibration ended.

@@ -14,13 +14,18 @@ constexpr double kStalledMs = 500.0;  // no frame for this long while connected:
 
 std::string blind_controller_words(HiddenReason reason) {
   switch (reason) {
-    case HiddenReason::kWrongApproach: return "it faces away from the hand (the hand comes at it from behind)";
-    case HiddenReason::kOutOfRange: return "the hand is beyond its range";
-    case HiddenReason::kOutOfView: return "the hand is outside its field of view";
+    case HiddenReason::kWrongApproach:
+      return "it faces away from the hand (the hand comes at it from behind)";
+    case HiddenReason::kOutOfRange:
+      return "the hand is beyond its range";
+    case HiddenReason::kOutOfView:
+      return "the hand is outside its field of view";
     case HiddenReason::kBehindPalm:
-    case HiddenReason::kBehindFinger: return "the hand hides every finger from it";
+    case HiddenReason::kBehindFinger:
+      return "the hand hides every finger from it";
     case HiddenReason::kNoHand:
-    case HiddenReason::kVisible: break;
+    case HiddenReason::kVisible:
+      break;
   }
   return "it sees no finger";
 }
@@ -52,9 +57,8 @@ void DevicesViewModel::refresh() {
     for (const BlindController& b : blind_controllers(*warned_layout_)) {
       blind_slots_.push_back(b.device);
       layout_warnings_.push_back(b.slot + " cannot see the hand: in all ten reference hand poses " +
-                                 blind_controller_words(b.reason) +
-                                 ". Its \"no hand\" comes from layout '" + warned_layout_->name +
-                                 "'; move or turn it in the Layout tab.");
+                                 blind_controller_words(b.reason) + ". Its \"no hand\" comes from layout '" +
+                                 warned_layout_->name + "'; move or turn it in the Layout tab.");
     }
   }
   rows_.clear();
@@ -85,13 +89,19 @@ void DevicesViewModel::refresh() {
     r.frames = s.frames_received;
     r.dropped = s.frames_dropped + s.frames_dropped_recorder;
     r.colour = s.slot_index >= 0 ? s.slot_index : 7;
-    if (!s.connected) r.status = "disconnected";
-    else if (s.slot_index < 0) r.status = "unassigned";
-    else if (s.frames_received == 0) r.status = "waiting";
-    else if (r.age_ms > kStalledMs) r.status = "stalled";
-    else r.status = s.hand_present ? "streaming" : "no hand";
+    if (!s.connected)
+      r.status = "disconnected";
+    else if (s.slot_index < 0)
+      r.status = "unassigned";
+    else if (s.frames_received == 0)
+      r.status = "waiting";
+    else if (r.age_ms > kStalledMs)
+      r.status = "stalled";
+    else
+      r.status = s.hand_present ? "streaming" : "no hand";
     // The study saw 11–34 Hz with four devices; below that, suspect USB bandwidth or power.
-    r.warn = r.status == "disconnected" || r.status == "stalled" || (s.connected && s.frames_received > 0 && r.rate_hz < 10);
+    r.warn =
+        r.status == "disconnected" || r.status == "stalled" || (s.connected && s.frames_received > 0 && r.rate_hz < 10);
     r.warn = r.warn || std::find(blind_slots_.begin(), blind_slots_.end(), s.slot_index) != blind_slots_.end();
     if (s.slot_index >= 0 && s.connected && s.frames_received > 0 && r.age_ms <= kStalledMs) ++streaming_slots;
     if (auto h = live_hand(s, hub_layout)) hands_.push_back(std::move(*h));

@@ -26,13 +26,13 @@ struct DeviceRow {
   std::string backend;
   std::string model;          // "Leap Motion Controller 2", …; empty when the backend did not say
   std::string tracking_mode;  // "desktop", "screen-top", …; empty until the backend reports it
-  std::string status;  // "streaming", "no hand", "stalled", "disconnected", "unassigned"
+  std::string status;         // "streaming", "no hand", "stalled", "disconnected", "unassigned"
   double rate_hz = 0;
   double age_ms = -1;
   bool hand_present = false;
   std::int64_t frames = 0;
   std::int64_t dropped = 0;
-  int colour = 0;  // index into device_colour()
+  int colour = 0;     // index into device_colour()
   bool warn = false;  // also when its slot cannot see the hand (DevicesViewModel::layout_warnings)
 };
 
@@ -102,7 +102,7 @@ class DevicesViewModel {
   devices::LiveFusionStats fusion_stats_;
   bool all_streaming_ = false;
   std::vector<std::string> layout_warnings_;
-  std::vector<int> blind_slots_;  // layout indices of the controllers layout_warnings_ name
+  std::vector<int> blind_slots_;         // layout indices of the controllers layout_warnings_ name
   std::optional<Layout> warned_layout_;  // the layout layout_warnings_ describe
 };
 

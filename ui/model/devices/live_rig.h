@@ -93,7 +93,7 @@ class LiveRig {
   const CurrentLayout& current_;
   std::uint64_t layout_version_ = 0;
   bool layout_change_pending_ = false;
-  Layout layout_;  // the workbench's layout with this rig's serial bindings
+  Layout layout_;                                // the workbench's layout with this rig's serial bindings
   std::unique_ptr<devices::LiveFusion> fusion_;  // before hub_: outlives its registration on it
   std::unique_ptr<devices::DeviceHub> hub_;
   std::string backend_;

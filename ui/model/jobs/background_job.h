@@ -189,5 +189,4 @@ class BackgroundJob {
   std::jthread thread_;  // last member: destroyed (joined) first
 };
 
-
 }  // namespace lmc::ui

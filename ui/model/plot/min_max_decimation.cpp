@@ -5,8 +5,8 @@
 
 namespace lmc::ui {
 
-std::vector<PlotColumn> decimate_min_max(std::span<const double> x, std::span<const double> y, double x_lo,
-                                         double x_hi, int columns) {
+std::vector<PlotColumn> decimate_min_max(std::span<const double> x, std::span<const double> y, double x_lo, double x_hi,
+                                         int columns) {
   std::vector<PlotColumn> out(static_cast<size_t>(std::max(columns, 0)));
   if (columns <= 0 || !(x_hi > x_lo) || x.size() != y.size()) return out;
   const size_t begin = static_cast<size_t>(std::lower_bound(x.begin(), x.end(), x_lo) - x.begin());
@@ -21,11 +21,12 @@ std::vector<PlotColumn> decimate_min_max(std::span<const double> x, std::span<co
     // The column's samples are one contiguous run of the sorted x: find its end by binary search
     // (cheap next to the run itself), then a tight min/max loop without per-sample bookkeeping.
     const double column_hi = x_lo + (c + 1) * width;
-    const size_t stop = c + 1 == columns
-                            ? end
-                            : static_cast<size_t>(std::lower_bound(x.begin() + static_cast<std::ptrdiff_t>(i),
-                                                                   x.begin() + static_cast<std::ptrdiff_t>(end), column_hi) -
-                                                  x.begin());
+    const size_t stop =
+        c + 1 == columns
+            ? end
+            : static_cast<size_t>(std::lower_bound(x.begin() + static_cast<std::ptrdiff_t>(i),
+                                                   x.begin() + static_cast<std::ptrdiff_t>(end), column_hi) -
+                                  x.begin());
     if (stop == i) continue;
     PlotColumn& col = out[static_cast<size_t>(c)];
     double mn = INFINITY, mx = -INFINITY;

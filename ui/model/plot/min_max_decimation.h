@@ -19,8 +19,9 @@ struct PlotColumn {
 };
 
 // `x` ascending (NaN x not allowed), `y` the same length. Columns split [x_lo, x_hi] evenly (the
-// last column includes x_hi); samples outside are skipped (found by binary search, so zoomed views cost what they show).
-std::vector<PlotColumn> decimate_min_max(std::span<const double> x, std::span<const double> y, double x_lo,
-                                         double x_hi, int columns);
+// last column includes x_hi); samples outside are skipped (found by binary search, so zoomed views cost what they
+// show).
+std::vector<PlotColumn> decimate_min_max(std::span<const double> x, std::span<const double> y, double x_lo, double x_hi,
+                                         int columns);
 
 }  // namespace lmc::ui

@@ -18,6 +18,8 @@ inline constexpr std::array<Rgba, 8> kSeriesPalette = {{
     {0.80f, 0.80f, 0.80f, 1.0f},  // light grey
 }};
 
-inline const Rgba& series_colour(int i) { return kSeriesPalette[static_cast<size_t>(i) % kSeriesPalette.size()]; }
+inline const Rgba& series_colour(int i) {
+  return kSeriesPalette[static_cast<size_t>(i) % kSeriesPalette.size()];
+}
 
 }  // namespace lmc::ui

@@ -2,9 +2,9 @@
 
 #include <utility>
 
-#include "ui/model/record/resume_notice.h"
 #include "core/common/error.h"
 #include "ui/model/devices/live_rig.h"
+#include "ui/model/record/resume_notice.h"
 
 namespace lmc::ui {
 namespace {
@@ -16,7 +16,9 @@ constexpr const char* kAbortedByOperator = "aborted by the operator";
 
 RecordSessionModel::RecordSessionModel(LiveRig* rig) : rig_(rig) {}
 
-RecordSessionModel::~RecordSessionModel() { close(); }
+RecordSessionModel::~RecordSessionModel() {
+  close();
+}
 
 std::string RecordSessionModel::adopt(session::SessionFolder folder, const RecordSettings& settings, bool resumed) {
   folder_ = std::make_unique<session::SessionFolder>(std::move(folder));
@@ -224,7 +226,8 @@ std::string RecordSessionModel::start_calibration() {
   job_handled_ = false;
   job_.start([runner, i](std::stop_token stop, JobChannel<devices::TrialSnapshot>& channel) {
     RecordWorkResult r;
-    r.calibration = runner->calibrate_block(i, stop, [&channel](const devices::TrialSnapshot& s) { channel.report(s); });
+    r.calibration =
+        runner->calibrate_block(i, stop, [&channel](const devices::TrialSnapshot& s) { channel.report(s); });
     return r;
   });
   return {};
@@ -248,7 +251,8 @@ std::string RecordSessionModel::keep_nominal_layout(const std::string& reason) {
   if (busy()) return "a trial or pre-flight is running";
   const int i = current_trial();
   if (i < 0) return "every trial is accepted";
-  if (reason.find_first_not_of(" \t") == std::string::npos) return "say why the nominal layout is kept (it is journaled)";
+  if (reason.find_first_not_of(" \t") == std::string::npos)
+    return "say why the nominal layout is kept (it is journaled)";
   try {
     runner_->keep_nominal_layout(i, reason, pending_calibration_ ? &*pending_calibration_ : nullptr);
   } catch (const std::exception& e) {
@@ -329,12 +333,16 @@ std::string RecordSessionModel::redo(int i) {
     // A recorded trial the operator picked in the list comes first: any trial can be redone.
     const bool picked_recorded = selected_ >= 0 && selected_ < static_cast<int>(state_.trials.size()) &&
                                  !state_.trials[static_cast<size_t>(selected_)].attempts.empty();
-    if (picked_recorded) i = selected_;
-    else if (last_attempt_) i = last_attempt_->trial;
-    else return "no trial recorded in this run yet; pick a recorded trial in the list to redo it";
+    if (picked_recorded)
+      i = selected_;
+    else if (last_attempt_)
+      i = last_attempt_->trial;
+    else
+      return "no trial recorded in this run yet; pick a recorded trial in the list to redo it";
   }
   if (i >= static_cast<int>(state_.trials.size())) return "no such trial";
-  if (state_.trials[static_cast<size_t>(i)].attempts.empty()) return state_.trials[static_cast<size_t>(i)].plan.name + " has not been recorded yet";
+  if (state_.trials[static_cast<size_t>(i)].attempts.empty())
+    return state_.trials[static_cast<size_t>(i)].plan.name + " has not been recorded yet";
   try {
     runner_->redo(i);
   } catch (const std::exception& e) {

@@ -61,7 +61,8 @@ class RecordSessionModel {
 
   // ---- the session ---------------------------------------------------------------------------
   // Both return an error text ("" when done). A session already open is closed first.
-  std::string create(const std::filesystem::path& dir, const session::NewSessionSpec& spec, const RecordSettings& settings);
+  std::string create(const std::filesystem::path& dir, const session::NewSessionSpec& spec,
+                     const RecordSettings& settings);
   std::string open(const std::filesystem::path& dir, const RecordSettings& settings);
   void close();
   bool has_session() const { return folder_ != nullptr; }
@@ -164,14 +165,14 @@ class RecordSessionModel {
   std::unique_ptr<devices::LiveFusion> live_fusion_;  // per trial, with its block's layout
   std::optional<FusedHand> live_fused_;
   devices::LiveFusionStats fusion_stats_;
-  std::atomic<bool> abort_requested_{false};  // read by the worker when the trial stops
+  std::atomic<bool> abort_requested_{false};                // read by the worker when the trial stops
   std::vector<std::pair<int, std::string>> pending_notes_;  // typed while the worker held the folder
   std::string last_note_error_;
   std::optional<devices::PreflightReport> last_preflight_;
   std::optional<devices::AttemptResult> last_attempt_;
   std::optional<devices::BlockCalibration> pending_calibration_;
   bool calibrating_ = false;
-  bool job_handled_ = true;  // the finished job's result was taken by poll()
+  bool job_handled_ = true;                                      // the finished job's result was taken by poll()
   BackgroundJob<RecordWorkResult, devices::TrialSnapshot> job_;  // last: joined first
 };
 

@@ -19,7 +19,8 @@ std::vector<ProtocolChoice> protocol_choices() {
     c.label = name;
     try {
       const session::Protocol p = session::load_protocol(name);
-      const size_t trials = p.layouts.size() * p.poses.size() * p.trial_types.size() * static_cast<size_t>(p.repetitions);
+      const size_t trials =
+          p.layouts.size() * p.poses.size() * p.trial_types.size() * static_cast<size_t>(p.repetitions);
       c.label = name + ": " + std::to_string(trials) + " trials, " + std::to_string(p.layouts.size()) + " layout" +
                 (p.layouts.size() == 1 ? "" : "s");
       c.description = p.description;
@@ -33,7 +34,9 @@ std::vector<ProtocolChoice> protocol_choices() {
   return out;
 }
 
-RecordSetupForm::RecordSetupForm() : protocols(protocol_choices()) { select_protocol("study"); }
+RecordSetupForm::RecordSetupForm() : protocols(protocol_choices()) {
+  select_protocol("study");
+}
 
 bool RecordSetupForm::select_protocol(const std::string& name) {
   for (size_t i = 0; i < protocols.size(); ++i) {
@@ -47,7 +50,7 @@ bool RecordSetupForm::select_protocol(const std::string& name) {
 
 std::string RecordSetupForm::protocol_name() const {
   return protocol >= 0 && protocol < static_cast<int>(protocols.size()) ? protocols[static_cast<size_t>(protocol)].name
-                                                                          : std::string();
+                                                                        : std::string();
 }
 
 devices::NewSessionFields RecordSetupForm::fields() const {
@@ -64,7 +67,9 @@ devices::NewSessionFields RecordSetupForm::fields() const {
   return f;
 }
 
-session::NewSessionSpec RecordSetupForm::spec() const { return devices::new_session_spec(fields()); }
+session::NewSessionSpec RecordSetupForm::spec() const {
+  return devices::new_session_spec(fields());
+}
 
 fs::path RecordSetupForm::new_session_dir() const {
   return folder[0] != '\0' ? fs::path(folder) : session::default_session_dir(subject);
@@ -81,7 +86,9 @@ RecordSettings RecordSetupForm::settings() const {
   return r;
 }
 
-bool SetupFormProblems::any() const { return !first().empty(); }
+bool SetupFormProblems::any() const {
+  return !first().empty();
+}
 
 std::string SetupFormProblems::first() const {
   for (const std::string* p : {&subject, &hand_length, &hand_breadth, &protocol, &vicon, &vicon_database, &folder})
@@ -95,7 +102,8 @@ SetupFormProblems check_setup_form(const RecordSetupForm& f) {
   // 0 means "not measured"; anything else goes through the manifest's own rule.
   if (f.hand_length_mm != 0.0F) p.hand_length = session::hand_size_problem(f.hand_length_mm);
   if (f.hand_breadth_mm != 0.0F) p.hand_breadth = session::hand_size_problem(f.hand_breadth_mm);
-  if (f.protocol_name().empty()) p.protocol = "no protocol found in assets/protocols/";
+  if (f.protocol_name().empty())
+    p.protocol = "no protocol found in assets/protocols/";
   else if (const auto& chosen = f.protocols[static_cast<size_t>(f.protocol)]; !chosen.readable)
     p.protocol = chosen.label + ": " + chosen.description;
   if (f.vicon[0] != '\0') {

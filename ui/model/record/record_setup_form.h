@@ -17,7 +17,7 @@ namespace lmc::ui {
 
 // One shipped protocol: its name and a line saying what it records.
 struct ProtocolChoice {
-  std::string name;   // "study"
+  std::string name;         // "study"
   std::string label;        // "study: 80 trials, 2 layouts"
   std::string description;  // the protocol's own words, or why it cannot be read
   bool readable = true;
@@ -29,7 +29,7 @@ struct RecordSetupForm {
   RecordSetupForm();  // reads the protocol choices; "study" selected when shipped
 
   char subject[65] = "S01";
-  int handedness = 0;  // 0 right, 1 left
+  int handedness = 0;                             // 0 right, 1 left
   float hand_length_mm = 0, hand_breadth_mm = 0;  // 0: not measured
   char operator_name[64] = "";
   char notes[256] = "";

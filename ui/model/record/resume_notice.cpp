@@ -8,8 +8,9 @@ std::vector<std::string> resume_notice(const session::SessionState& st, const st
     int attempt = 0;
     for (const auto& t : st.trials)
       if (t.plan.name == name) attempt = t.attempts.empty() ? 0 : t.attempts.back().number;
-    lines.push_back(name + " was cut off while recording: the program stopped (crash, kill or power loss). The rows "
-                           "written until then are kept; recording it again moves them to superseded/" +
+    lines.push_back(name +
+                    " was cut off while recording: the program stopped (crash, kill or power loss). The rows "
+                    "written until then are kept; recording it again moves them to superseded/" +
                     name + ".attempt" + std::to_string(attempt) + "/.");
   }
   const int total = static_cast<int>(st.trials.size());

@@ -21,8 +21,8 @@ struct SubjectScreenLink {
   std::optional<bool> windowed;
   // ---- set by the window's side ----
   std::vector<std::string> monitors;
-  bool shown = false;    // a window is up and drawing
-  std::string problem;   // why the last attempt to open it failed ("" = none)
+  bool shown = false;   // a window is up and drawing
+  std::string problem;  // why the last attempt to open it failed ("" = none)
 };
 
 // `lmc-workbench --subject-screen [MONITOR|window]`: a number picks the monitor (0 = the primary;

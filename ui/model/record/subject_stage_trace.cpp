@@ -6,12 +6,18 @@ namespace lmc::ui {
 
 const char* subject_stage_name(SubjectStage s) {
   switch (s) {
-    case SubjectStage::kNoSession: return "no_session";
-    case SubjectStage::kGetReady: return "get_ready";
-    case SubjectStage::kWaiting: return "waiting";
-    case SubjectStage::kCountdown: return "countdown";
-    case SubjectStage::kRecording: return "recording";
-    case SubjectStage::kDone: return "done";
+    case SubjectStage::kNoSession:
+      return "no_session";
+    case SubjectStage::kGetReady:
+      return "get_ready";
+    case SubjectStage::kWaiting:
+      return "waiting";
+    case SubjectStage::kCountdown:
+      return "countdown";
+    case SubjectStage::kRecording:
+      return "recording";
+    case SubjectStage::kDone:
+      return "done";
   }
   return "?";
 }

@@ -19,19 +19,19 @@ enum class SubjectStage { kNoSession, kGetReady, kWaiting, kCountdown, kRecordin
 
 struct SubjectView {
   SubjectStage stage = SubjectStage::kNoSession;
-  bool red_circle = false;   // only while the trial records
-  std::string headline;      // "Get ready", "3", "Recording", "Thank you"
-  std::string cue;           // the trial type's subject cue, in large letters
-  std::string pose_cue;      // how to hold the hand ("palm facing down")
-  std::string time_text;     // "7 s left" while recording; "" otherwise
+  bool red_circle = false;  // only while the trial records
+  std::string headline;     // "Get ready", "3", "Recording", "Thank you"
+  std::string cue;          // the trial type's subject cue, in large letters
+  std::string pose_cue;     // how to hold the hand ("palm facing down")
+  std::string time_text;    // "7 s left" while recording; "" otherwise
   std::optional<MotionPictogram> pictogram;
 };
 
 // The parts of the Record tab's state the subject screen depends on.
 struct SubjectViewInputs {
   bool has_session = false;
-  bool finished = false;                           // every trial accepted
-  const session::TrialType* type = nullptr;        // the current (or recording) trial's
+  bool finished = false;                     // every trial accepted
+  const session::TrialType* type = nullptr;  // the current (or recording) trial's
   const session::ProtocolPose* pose = nullptr;
   std::string sim_motion;                          // the trial's "<pose>/<motion>"
   double hand_length_mm = 0, hand_breadth_mm = 0;  // the subject's, 0 when not measured

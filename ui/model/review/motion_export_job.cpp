@@ -25,7 +25,9 @@ std::string unique_label(const fs::path& folder, std::set<std::string>& used) {
   return label;
 }
 
-std::string trials_word(int n) { return std::to_string(n) + (n == 1 ? " trial" : " trials"); }
+std::string trials_word(int n) {
+  return std::to_string(n) + (n == 1 ? " trial" : " trials");
+}
 
 MotionExportOutcome run_trial_exports(const MotionExportPlan& plan, std::stop_token stop,
                                       const std::function<void(int, int)>& progress,
@@ -44,7 +46,8 @@ MotionExportOutcome run_trial_exports(const MotionExportPlan& plan, std::stop_to
     }
   }
   if (!existing.empty()) {
-    throw Error("these files exist (tick \"Replace files that exist\" to replace them); nothing was written:" + existing);
+    throw Error("these files exist (tick \"Replace files that exist\" to replace them); nothing was written:" +
+                existing);
   }
   // Runs learn their real number of trials as they start; until then the plan's count stands in.
   std::vector<int> totals;
@@ -79,8 +82,7 @@ MotionExportOutcome run_trial_exports(const MotionExportPlan& plan, std::stop_to
       }
       if (report.cancelled) {
         out.cancelled = true;
-        out.notes.push_back("cancelled after " + trials_word(done_before + run_done) +
-                            " of " + std::to_string(sum()));
+        out.notes.push_back("cancelled after " + trials_word(done_before + run_done) + " of " + std::to_string(sum()));
         break;
       }
       done_before += totals[r];
@@ -141,7 +143,8 @@ MotionExportPlan trial_export_plan(const std::vector<ReviewTrial>& trials, const
   std::set<std::string> labels;
   for (const auto& folder : folders) {
     const std::vector<int>& picked = by_folder[folder];
-    const auto in_folder = std::count_if(trials.begin(), trials.end(), [&](const ReviewTrial& t) { return t.folder == folder; });
+    const auto in_folder =
+        std::count_if(trials.begin(), trials.end(), [&](const ReviewTrial& t) { return t.folder == folder; });
     std::set<int> unique(picked.begin(), picked.end());
     TrialExportRun run;
     TrialExportRequest& r = run.request;
@@ -177,9 +180,10 @@ MotionExportPlan bids_export_plan(const std::vector<fs::path>& folders, const Ba
   if (options.process.method == FusionMethod::kDefault) {
     for (const auto& folder : folders) {
       if (corrections.count(folder) > 0) {
-        plan.notes.push_back(folder.filename().string() +
-                             ": its finger-length correction is not applied in the dataset (a dataset is processed with one "
-                             "set of options for every subject)");
+        plan.notes.push_back(
+            folder.filename().string() +
+            ": its finger-length correction is not applied in the dataset (a dataset is processed with one "
+            "set of options for every subject)");
       }
     }
   }

@@ -40,7 +40,8 @@ struct MotionExportPlan {
 // chosen recordings.
 MotionExportPlan trial_export_plan(const std::vector<ReviewTrial>& trials, const std::vector<int>& chosen,
                                    const BatchOptions& options, const FolderLengthCorrections& corrections,
-                                   const std::filesystem::path& out_dir, ExportFormat format, ExportAxes axes, bool force);
+                                   const std::filesystem::path& out_dir, ExportFormat format, ExportAxes axes,
+                                   bool force);
 
 // The opened folders as one BIDS dataset at `out_dir`; with `anonymise_key`, subjects become sub-01,
 // sub-02, … and the key is written there. A dataset is processed with one set of options: finger-

@@ -1,6 +1,5 @@
 #include "ui/model/review/review_batch_job.h"
 
-
 #include <algorithm>
 
 #include "core/results/processing_cache.h"
@@ -21,7 +20,7 @@ const LengthCorrection* folder_correction(const BatchOptions& options, const Fol
 }  // namespace
 
 BatchOptions folder_options(const BatchOptions& options, const FolderLengthCorrections& corrections,
-                              const std::filesystem::path& folder) {
+                            const std::filesystem::path& folder) {
   BatchOptions out = options;
   if (const LengthCorrection* c = folder_correction(options, corrections, folder)) out.process.length_correction = *c;
   return out;
@@ -49,7 +48,8 @@ ReviewBatch run_review_batch(const ReviewBatchInput& input, std::stop_token stop
   std::vector<const LengthCorrection*> group_key;  // nullptr: no correction
   std::vector<int> group_of(jobs.size(), 0);
   if (input.options.process.method != FusionMethod::kDefault && !input.corrections.empty()) {
-    batch.notes.push_back("length corrections are not applied with the reference fusion: it stays the study's algorithm");
+    batch.notes.push_back(
+        "length corrections are not applied with the reference fusion: it stays the study's algorithm");
   }
   group_key.push_back(nullptr);
   for (size_t k = 0; k < jobs.size(); ++k) {
@@ -75,7 +75,8 @@ ReviewBatch run_review_batch(const ReviewBatchInput& input, std::stop_token stop
     if (group_jobs.empty()) continue;
     BatchOptions options = folder_options(input.options, input.corrections, folder_of[index.front()]);
     options.stop = stop;
-    if (progress) options.on_progress = [&progress, done_before, total](int done, int) { progress(done_before + done, total); };
+    if (progress)
+      options.on_progress = [&progress, done_before, total](int done, int) { progress(done_before + done, total); };
     CachedBatch done = process_session_cached(group_jobs, options, cache);
     for (auto& w : done.cache_warnings) batch.cache_warnings.push_back(std::move(w));
     for (size_t i = 0; i < index.size(); ++i) {
@@ -91,7 +92,7 @@ ReviewBatch run_review_batch(const ReviewBatchInput& input, std::stop_token stop
     t.outcome = std::move(outcomes[k]);
     t.from_cache = from_cache[k];
     const std::string subject = folder_of[k].filename().empty() ? folder_of[k].parent_path().filename().string()
-                                                                 : folder_of[k].filename().string();
+                                                                : folder_of[k].filename().string();
     t.row = trial_row(subject, t.job.trial, t.outcome.ok ? t.outcome.summary : nlohmann::json(), t.outcome.error,
                       t.outcome.cancelled);
     (t.from_cache ? batch.from_cache : batch.processed_now) += t.outcome.cancelled ? 0 : 1;

@@ -17,15 +17,15 @@ namespace lmc::ui {
 
 struct ReviewTrial {
   std::filesystem::path folder;  // the opened folder it came from
-  lmc::TrialSources job;  // core's (processing), not the Devices tab's ui::TrialSources
+  lmc::TrialSources job;         // core's (processing), not the Devices tab's ui::TrialSources
   ProcessedTrial outcome;
   bool from_cache = false;
   TrialRow row;
 };
 
 struct ReviewBatch {
-  std::vector<ReviewTrial> trials;   // folder order, then trial order
-  std::vector<std::string> notes;    // files skipped and why, folders that could not be read
+  std::vector<ReviewTrial> trials;  // folder order, then trial order
+  std::vector<std::string> notes;   // files skipped and why, folders that could not be read
   std::vector<std::string> cache_warnings;
   int processed_now = 0, from_cache = 0;
 };
@@ -39,8 +39,8 @@ using FolderLengthCorrections = std::map<std::filesystem::path, FolderLengthCorr
 
 struct ReviewBatchInput {
   std::vector<std::filesystem::path> folders;
-  BatchOptions options;                 // stop/on_progress are set by the job
-  std::filesystem::path cache_dir;        // empty: no cache
+  BatchOptions options;             // stop/on_progress are set by the job
+  std::filesystem::path cache_dir;  // empty: no cache
   // A finger-length correction per folder (a subject's), applied to that folder's trials after the
   // default fusion; with the reference fusion none is applied (it stays the study's algorithm).
   FolderLengthCorrections corrections;
@@ -49,7 +49,7 @@ struct ReviewBatchInput {
 // The options one folder's trials are processed with: `options` plus that folder's correction
 // when there is one and the fusion is the default.
 BatchOptions folder_options(const BatchOptions& options, const FolderLengthCorrections& corrections,
-                              const std::filesystem::path& folder);
+                            const std::filesystem::path& folder);
 
 // The work itself, for the job and for tests (runs on the calling thread).
 ReviewBatch run_review_batch(const ReviewBatchInput& input, std::stop_token stop,

@@ -21,12 +21,19 @@ std::string lower(std::string s) {
 
 const std::string& column_value(const TrialRow& row, TrialColumn column, std::string& scratch) {
   switch (column) {
-    case TrialColumn::kSubject: return row.subject;
-    case TrialColumn::kLayout: return row.layout;
-    case TrialColumn::kPose: return row.pose;
-    case TrialColumn::kMotion: return row.motion;
-    case TrialColumn::kStatus: scratch = trial_row_status_name(row.status); return scratch;
-    default: return row.trial;
+    case TrialColumn::kSubject:
+      return row.subject;
+    case TrialColumn::kLayout:
+      return row.layout;
+    case TrialColumn::kPose:
+      return row.pose;
+    case TrialColumn::kMotion:
+      return row.motion;
+    case TrialColumn::kStatus:
+      scratch = trial_row_status_name(row.status);
+      return scratch;
+    default:
+      return row.trial;
   }
 }
 
@@ -39,10 +46,14 @@ double numeric_value(const TrialRow& row, int column) {
     return d < row.visibility_rate.size() ? row.visibility_rate[d] : std::nan("");
   }
   switch (static_cast<TrialColumn>(column)) {
-    case TrialColumn::kLengthDiff: return row.finger_length_diff_mm;
-    case TrialColumn::kRomDiff: return row.rom_abs_diff_deg;
-    case TrialColumn::kLag: return row.lag_ms;
-    default: return std::nan("");
+    case TrialColumn::kLengthDiff:
+      return row.finger_length_diff_mm;
+    case TrialColumn::kRomDiff:
+      return row.rom_abs_diff_deg;
+    case TrialColumn::kLag:
+      return row.lag_ms;
+    default:
+      return std::nan("");
   }
 }
 
@@ -51,7 +62,9 @@ bool is_numeric_column(int column) {
 }
 
 // Trials of different subjects share names (S01's and S02's Naiv_Index101): folder and name.
-std::string trial_key(const ReviewTrial& t) { return t.folder.string() + '\n' + t.job.trial; }
+std::string trial_key(const ReviewTrial& t) {
+  return t.folder.string() + '\n' + t.job.trial;
+}
 
 }  // namespace
 
@@ -71,9 +84,13 @@ std::vector<std::string> distinct_values(const std::vector<ReviewTrial>& trials,
   return {values.begin(), values.end()};
 }
 
-ReviewState::ReviewState() { cache_dir_ = ProcessingCache::in_user_cache().dir(); }
+ReviewState::ReviewState() {
+  cache_dir_ = ProcessingCache::in_user_cache().dir();
+}
 
-const std::vector<ReviewTrial>& ReviewState::trials() const { return batch_ ? batch_->trials : kNoTrials; }
+const std::vector<ReviewTrial>& ReviewState::trials() const {
+  return batch_ ? batch_->trials : kNoTrials;
+}
 
 void ReviewState::open_folders(const std::vector<std::filesystem::path>& folders) {
   for (const auto& folder : folders) {
@@ -217,11 +234,13 @@ void ReviewState::export_agreement(const std::filesystem::path& dir) {
   // Which folders' lengths were corrected, and with which file (the trials' own summaries carry
   // the factors).
   if (options_.process.method == FusionMethod::kDefault) {
-    for (const auto& [folder, c] : corrections_) in.parameters["length_correction_files"][folder.string()] = c.file.string();
+    for (const auto& [folder, c] : corrections_)
+      in.parameters["length_correction_files"][folder.string()] = c.file.string();
   }
   export_dir_ = dir;
   export_message_ = "exporting...";
-  export_job_.start([dir, in](std::stop_token stop, JobChannel<ExportReport>&) { return write_review_exports(dir, in, stop); });
+  export_job_.start(
+      [dir, in](std::stop_token stop, JobChannel<ExportReport>&) { return write_review_exports(dir, in, stop); });
 }
 
 void ReviewState::export_trial(const std::filesystem::path& dir, bool each_controller) {

@@ -102,7 +102,7 @@ class ReviewState {
   struct Agreement {
     AgreementTable table;
     VisibilityMap visibility;
-    std::vector<AgreementTrial> inputs;  // what they were computed from (for exports)
+    std::vector<AgreementTrial> inputs;       // what they were computed from (for exports)
     std::vector<MarkdownBlock> study_tables;  // the study's headline tables (lmc report's), as blocks
   };
   const Agreement& agreement() const;

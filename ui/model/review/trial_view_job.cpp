@@ -1,7 +1,5 @@
 #include "ui/model/review/trial_view_job.h"
 
-
-
 namespace lmc::ui {
 
 TrialView load_trial_view(const lmc::TrialSources& job, const BatchOptions& options, std::stop_token stop) {

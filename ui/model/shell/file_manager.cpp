@@ -19,7 +19,8 @@ bool open_in_file_manager(const std::filesystem::path& folder, std::string* erro
   if (!std::filesystem::is_directory(folder, ec)) return fail("no such folder: " + folder.string());
   // A shell starts the opener in the background and exits at once, so there is one short wait
   // here and no child left to reap; the folder and the program are arguments, never parsed.
-  const std::string script = "command -v \"$0\" >/dev/null 2>&1 || exit 127; \"$0\" \"$1\" >/dev/null 2>&1 </dev/null &";
+  const std::string script =
+      "command -v \"$0\" >/dev/null 2>&1 || exit 127; \"$0\" \"$1\" >/dev/null 2>&1 </dev/null &";
   std::vector<std::string> args{"/bin/sh", "-c", script, program, folder.string()};
   std::vector<char*> argv;
   for (auto& a : args) argv.push_back(a.data());

@@ -13,7 +13,7 @@ namespace lmc::ui {
 struct StatusLine {
   std::string text;
   bool is_error = false;
-  bool is_hint = false;     // the newcomer's hint, drawn dimmed
+  bool is_hint = false;        // the newcomer's hint, drawn dimmed
   std::uint64_t sequence = 0;  // order of posting across tabs (0 = nothing posted)
 };
 

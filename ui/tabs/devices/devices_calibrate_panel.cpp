@@ -32,7 +32,9 @@ std::filesystem::path browse_start() {
 DevicesCalibratePanel::DevicesCalibratePanel(StatusSink& status, WorkbenchContext& context)
     : status_(status), layout_(context.layout()), step_(context.rig()) {}
 
-void DevicesCalibratePanel::report(const std::string& text, bool is_error) { status_.set_status("Calibrate: " + text, is_error); }
+void DevicesCalibratePanel::report(const std::string& text, bool is_error) {
+  status_.set_status("Calibrate: " + text, is_error);
+}
 
 void DevicesCalibratePanel::update() {
   step_.update();
@@ -56,16 +58,23 @@ void DevicesCalibratePanel::draw() {
   ImGui::SameLine();
   ImGui::TextDisabled("(?)");
   if (ImGui::IsItemHovered()) {
-    ImGui::SetTooltip("Refines where every controller stands from a still, open hand held where the trials happen.\n"
-                      "Calibrate after setting up or moving the controllers, or when their hands drift apart here.\n"
-                      "Same as: lmc calibrate TRIAL [--vicon FILE [--anchor-to-layout]] --layout L -o OUT.json");
+    ImGui::SetTooltip(
+        "Refines where every controller stands from a still, open hand held where the trials happen.\n"
+        "Calibrate after setting up or moving the controllers, or when their hands drift apart here.\n"
+        "Same as: lmc calibrate TRIAL [--vicon FILE [--anchor-to-layout]] --layout L -o OUT.json");
   }
   switch (step_.stage()) {
-    case CalibrationStage::kIdle: draw_start(); break;
+    case CalibrationStage::kIdle:
+      draw_start();
+      break;
     case CalibrationStage::kRecording:
-    case CalibrationStage::kCalibrating: draw_progress(); break;
+    case CalibrationStage::kCalibrating:
+      draw_progress();
+      break;
     case CalibrationStage::kResult:
-    case CalibrationStage::kApplied: draw_result(); break;
+    case CalibrationStage::kApplied:
+      draw_result();
+      break;
   }
   if (const auto chosen = trial_browser_.draw()) {
     CalibrationSettings settings;
@@ -87,13 +96,17 @@ void DevicesCalibratePanel::draw() {
 void DevicesCalibratePanel::draw_start() {
   ImGui::SetNextItemWidth(-1);
   ImGui::InputTextWithHint("##vicon", "Vicon file of the trial (.trc), optional", vicon_, sizeof vicon_);
-  if (ImGui::IsItemHovered()) ImGui::SetTooltip("With a Vicon file each controller is fitted to the Vicon markers;\nwithout, the controllers are fitted to each other");
+  if (ImGui::IsItemHovered())
+    ImGui::SetTooltip(
+        "With a Vicon file each controller is fitted to the Vicon markers;\nwithout, the controllers are fitted to "
+        "each other");
   ImGui::BeginDisabled(vicon_[0] == '\0');
   ImGui::Checkbox("anchor to layout", &anchor_to_layout_);
   ImGui::EndDisabled();
   if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled)) {
-    ImGui::SetTooltip("With Vicon: keep the layout's world frame and take only where the controllers stand relative\n"
-                      "to each other from Vicon (when the Vicon origin is not the layout's origin)");
+    ImGui::SetTooltip(
+        "With Vicon: keep the layout's world frame and take only where the controllers stand relative\n"
+        "to each other from Vicon (when the Vicon origin is not the layout's origin)");
   }
   CalibrationSettings settings;
   settings.vicon = vicon_;
@@ -110,11 +123,14 @@ void DevicesCalibratePanel::draw_start() {
     trial_browser_.open(FileBrowser::Mode::kOpen, browse_start());
   }
   if (ImGui::IsItemHovered()) {
-    ImGui::SetTooltip("An LMC recording of a still hand (e.g. LMC_Calibration.raw.txt), recorded with the layout open now");
+    ImGui::SetTooltip(
+        "An LMC recording of a still hand (e.g. LMC_Calibration.raw.txt), recorded with the layout open now");
   }
   if (!step_.message().empty()) {
-    if (step_.message_is_error()) ImGui::TextColored(kWarningRed, "%s", step_.message().c_str());
-    else ImGui::TextDisabled("%s", step_.message().c_str());
+    if (step_.message_is_error())
+      ImGui::TextColored(kWarningRed, "%s", step_.message().c_str());
+    else
+      ImGui::TextDisabled("%s", step_.message().c_str());
   }
 }
 
@@ -140,7 +156,8 @@ void DevicesCalibratePanel::draw_result() {
       const ActionResult a = step_.apply(layout_.editor());
       if (!a) report(a.error, true);
     }
-    if (ImGui::IsItemHovered()) ImGui::SetTooltip("Write the corrections into the layout as one undo step (Ctrl+Z undoes it)");
+    if (ImGui::IsItemHovered())
+      ImGui::SetTooltip("Write the corrections into the layout as one undo step (Ctrl+Z undoes it)");
   } else {
     ImGui::TextColored(kGood, "Applied to layout '%s'.", layout_.get().name.c_str());
     if (ImGui::Button("Undo apply")) undo_shortcut();

@@ -29,8 +29,8 @@
 #include "ui/tabs/capture_scratch.h"
 #include "ui/tabs/devices/devices_calibrate_panel.h"
 #include "ui/widgets/file_browser.h"
-#include "ui/widgets/live_hands_view.h"
 #include "ui/widgets/imgui_colour.h"
+#include "ui/widgets/live_hands_view.h"
 
 namespace lmc::ui {
 namespace {
@@ -56,7 +56,8 @@ class DevicesTab final : public Tab {
     calibrate_.update();
     if (const std::string summary = vm_.take_recording_summary(); !summary.empty()) {
       // "trial NAME completed|interrupted|aborted|failed…": only the last two are errors.
-      const bool ok = summary.find(" completed") != std::string::npos || summary.find(" interrupted") != std::string::npos;
+      const bool ok =
+          summary.find(" completed") != std::string::npos || summary.find(" interrupted") != std::string::npos;
       status_.set_status(summary, !ok);
     }
     if (!vm_.running()) return;
@@ -118,9 +119,7 @@ class DevicesTab final : public Tab {
     return 30;
   }
 
-  bool busy_for_capture() const override {
-    return (vm_.running() && !vm_.all_streaming()) || calibrate_.step().busy();
-  }
+  bool busy_for_capture() const override { return (vm_.running() && !vm_.all_streaming()) || calibrate_.step().busy(); }
 
   // devices-calibrate: a finished calibration on the simulated rig with injected errors (three
   // controllers turned, every controller shifted up to 15 mm), so the corrections and the ghost
@@ -179,8 +178,9 @@ class DevicesTab final : public Tab {
       save_browser_.open(FileBrowser::Mode::kSave, sessions_dir(), vm_.layout().name + "-serials.json");
     }
     if (ImGui::IsItemHovered()) {
-      ImGui::SetTooltip("Write this layout with every controller's serial in its slot, so each controller returns to "
-                        "its slot next time");
+      ImGui::SetTooltip(
+          "Write this layout with every controller's serial in its slot, so each controller returns to "
+          "its slot next time");
     }
     if (const auto chosen = save_browser_.draw()) {
       try {
@@ -208,10 +208,11 @@ class DevicesTab final : public Tab {
 
   void draw_table() {
     const auto& rows = vm_.rows();
-    const ImGuiTableFlags flags = ImGuiTableFlags_RowBg | ImGuiTableFlags_BordersInnerV | ImGuiTableFlags_SizingFixedFit;
+    const ImGuiTableFlags flags =
+        ImGuiTableFlags_RowBg | ImGuiTableFlags_BordersInnerV | ImGuiTableFlags_SizingFixedFit;
     if (!ImGui::BeginTable("devices", 12, flags)) return;
-    for (const char* h : {"", "Serial", "Slot", "Backend", "Model", "Mode", "Status", "Rate", "Hand", "Frame age",
-                          "Frames", "Dropped"})
+    for (const char* h :
+         {"", "Serial", "Slot", "Backend", "Model", "Mode", "Status", "Rate", "Hand", "Frame age", "Frames", "Dropped"})
       ImGui::TableSetupColumn(h);
     ImGui::TableHeadersRow();
     const auto slots = vm_.slot_choices();
@@ -239,23 +240,31 @@ class DevicesTab final : public Tab {
       ImGui::TableNextColumn();
       ImGui::TextUnformatted(r.backend.c_str());
       ImGui::TableNextColumn();
-      if (r.model.empty()) ImGui::TextDisabled("-");
-      else ImGui::TextUnformatted(r.model.c_str());
+      if (r.model.empty())
+        ImGui::TextDisabled("-");
+      else
+        ImGui::TextUnformatted(r.model.c_str());
       ImGui::TableNextColumn();
       // The tracking mode the service reports: anything but what the layout implies is a warning
       // in the device messages; here it is just shown.
-      if (r.tracking_mode.empty()) ImGui::TextDisabled("-");
-      else ImGui::TextUnformatted(r.tracking_mode.c_str());
+      if (r.tracking_mode.empty())
+        ImGui::TextDisabled("-");
+      else
+        ImGui::TextUnformatted(r.tracking_mode.c_str());
       ImGui::TableNextColumn();
-      if (r.warn) ImGui::TextColored(ImVec4(1.0F, 0.55F, 0.3F, 1.0F), "%s", r.status.c_str());
-      else ImGui::TextUnformatted(r.status.c_str());
+      if (r.warn)
+        ImGui::TextColored(ImVec4(1.0F, 0.55F, 0.3F, 1.0F), "%s", r.status.c_str());
+      else
+        ImGui::TextUnformatted(r.status.c_str());
       ImGui::TableNextColumn();
       ImGui::Text("%.0f Hz", r.rate_hz);
       ImGui::TableNextColumn();
       ImGui::TextUnformatted(r.hand_present ? "yes" : "no");
       ImGui::TableNextColumn();
-      if (r.age_ms < 0) ImGui::TextDisabled("-");
-      else ImGui::Text("%.0f ms", r.age_ms);
+      if (r.age_ms < 0)
+        ImGui::TextDisabled("-");
+      else
+        ImGui::Text("%.0f ms", r.age_ms);
       ImGui::TableNextColumn();
       ImGui::Text("%lld", static_cast<long long>(r.frames));
       ImGui::TableNextColumn();
@@ -265,7 +274,8 @@ class DevicesTab final : public Tab {
     if (rows.empty()) ImGui::TextDisabled(vm_.running() ? "waiting for devices…" : "no backend running: press Start");
     // A controller the layout points away from the hand shows "no hand" forever: say it is the layout.
     ImGui::PushTextWrapPos(0.0F);
-    for (const std::string& w : vm_.layout_warnings()) ImGui::TextColored(ImVec4(1.0F, 0.55F, 0.3F, 1.0F), "%s", w.c_str());
+    for (const std::string& w : vm_.layout_warnings())
+      ImGui::TextColored(ImVec4(1.0F, 0.55F, 0.3F, 1.0F), "%s", w.c_str());
     ImGui::PopTextWrapPos();
   }
 
@@ -285,8 +295,10 @@ class DevicesTab final : public Tab {
     if (!vm_.recording()) {
       if (ImGui::Button("Record")) {
         const std::string err = vm_.start_recording(folder_, trial_, seconds_);
-        if (err.empty()) status_.set_status("recording " + vm_.recording_trial());
-        else status_.set_status(err, true);
+        if (err.empty())
+          status_.set_status("recording " + vm_.recording_trial());
+        else
+          status_.set_status(err, true);
       }
     } else {
       if (ImGui::Button("Stop recording")) vm_.stop_recording();
@@ -308,12 +320,13 @@ class DevicesTab final : public Tab {
     if (vm_.running()) ImGui::TextDisabled("%s", fusion_latency_line(vm_.fusion_stats()).c_str());
     const auto& ghosts = calibrate_.ghosts();
     const std::string caption =
-        ghosts.empty() ? "World frame (mm), one colour per device; the fused hand thick, fingers by how many controllers "
-                         "see them (red none, orange 1, yellow 2, green 3+). Drag to orbit, wheel to zoom."
-                       : "Calibration result: thin outlines = where the layout puts each controller now, bold boxes = "
-                         "where the calibration puts it, a line joins the two. Drag to orbit, wheel to zoom.";
-    draw_live_hands_view("live_canvas", camera_, vm_.layout(), vm_.hands(), caption, vm_.fused() ? &*vm_.fused() : nullptr,
-                         ghosts.empty() ? nullptr : &ghosts);
+        ghosts.empty()
+            ? "World frame (mm), one colour per device; the fused hand thick, fingers by how many controllers "
+              "see them (red none, orange 1, yellow 2, green 3+). Drag to orbit, wheel to zoom."
+            : "Calibration result: thin outlines = where the layout puts each controller now, bold boxes = "
+              "where the calibration puts it, a line joins the two. Drag to orbit, wheel to zoom.";
+    draw_live_hands_view("live_canvas", camera_, vm_.layout(), vm_.hands(), caption,
+                         vm_.fused() ? &*vm_.fused() : nullptr, ghosts.empty() ? nullptr : &ghosts);
   }
 
   void handle_shortcuts() {

@@ -35,8 +35,9 @@ void CoveragePanel::draw() {
   if (ImGui::SmallButton("Report...")) report_browser_.open(FileBrowser::Mode::kSave, sessions_dir(), "layout-report");
   ImGui::EndDisabled();
   if (ImGui::IsItemHovered()) {
-    ImGui::SetTooltip("Write the one-page layout report (report.md, a top view and per-pose redundancy as SVG with their data), "
-                      "as lmc evaluate --report does, for this layout and pose set");
+    ImGui::SetTooltip(
+        "Write the one-page layout report (report.md, a top view and per-pose redundancy as SVG with their data), "
+        "as lmc evaluate --report does, for this layout and pose set");
   }
   if (const auto chosen = report_browser_.draw()) s.report_job.start(s.layout(), poses, *chosen);
   if (const std::string m = s.report_job.message(); !m.empty()) ImGui::TextDisabled("%s", m.c_str());
@@ -77,10 +78,13 @@ void CoveragePanel::draw() {
     for (int k = 0; k < kNumDigits; ++k) {
       ImGui::TableSetColumnIndex(k + 1);
       const double f = c.finger_unseen_fraction(k);
-      if (f > 0) ImGui::TableSetBgColor(ImGuiTableBgTarget_CellBg, IM_COL32(200, 50, 45, static_cast<int>(60 + 150 * std::min(1.0, f * 3))));
+      if (f > 0)
+        ImGui::TableSetBgColor(ImGuiTableBgTarget_CellBg,
+                               IM_COL32(200, 50, 45, static_cast<int>(60 + 150 * std::min(1.0, f * 3))));
       ImGui::Text("%5.1f %%", f * 100.0);
       if (ImGui::IsItemHovered()) {
-        ImGui::SetTooltip("%lld of %lld frames: no controller sees the %s", static_cast<long long>(c.finger_unseen[static_cast<size_t>(k)]),
+        ImGui::SetTooltip("%lld of %lld frames: no controller sees the %s",
+                          static_cast<long long>(c.finger_unseen[static_cast<size_t>(k)]),
                           static_cast<long long>(c.frames), std::string(digit_name(k)).c_str());
       }
     }
@@ -89,9 +93,10 @@ void CoveragePanel::draw() {
 
   ImGui::Text("M = %.4g", c.metric);
   if (ImGui::IsItemHovered()) {
-    ImGui::SetTooltip("M = sum c_i / N^(i+1) over i < D (docs/algorithms/metric.md): lower is better, 0 when every\n"
-                      "controller sees every finger in every frame. One frame with an unseen finger\n"
-                      "outweighs any number of frames seen by a single controller.");
+    ImGui::SetTooltip(
+        "M = sum c_i / N^(i+1) over i < D (docs/algorithms/metric.md): lower is better, 0 when every\n"
+        "controller sees every finger in every frame. One frame with an unseen finger\n"
+        "outweighs any number of frames seen by a single controller.");
   }
   ImGui::SameLine(0, 18);
   ImGui::TextDisabled("horizontal M %.3g · vertical M %.3g", snap->horizontal.metric, snap->vertical.metric);

@@ -44,8 +44,8 @@ void HeatmapPanel::draw() {
   draw_colour_bar(s.heatmap_range(), std::min(300.0f, ImGui::GetContentRegionAvail().x), 100.0, 0, " %");
   const HeatmapGridPtr g = s.heatmap.latest();
   if (g) {
-    ImGui::TextDisabled("data range %.1f - %.1f %% · %d × %d cells%s", g->data_min * 100, g->data_max * 100, g->nx, g->nz,
-                        g->fine ? "" : " (preview)");
+    ImGui::TextDisabled("data range %.1f - %.1f %% · %d × %d cells%s", g->data_min * 100, g->data_max * 100, g->nx,
+                        g->nz, g->fine ? "" : " (preview)");
   }
   if (s.heatmap.computing()) {
     draw_progress_row("heatmap", s.heatmap.fraction(), s.heatmap.stage(), 0.0, std::nullopt, false);

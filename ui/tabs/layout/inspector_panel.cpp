@@ -11,7 +11,8 @@ void InspectorPanel::draw() {
   LayoutTabState& s = *state_;
   const Layout& l = s.layout();
   ImGui::TextDisabled("Controllers (%d of 1-%d)", l.device_count(), kMaxDevices);
-  ImGui::BeginChild("##devices", ImVec2(0, ImGui::GetTextLineHeightWithSpacing() * std::min(l.device_count(), 5) + 8), true);
+  ImGui::BeginChild("##devices", ImVec2(0, ImGui::GetTextLineHeightWithSpacing() * std::min(l.device_count(), 5) + 8),
+                    true);
   for (int i = 0; i < l.device_count(); ++i) {
     const LayoutDevice& d = l.devices[static_cast<size_t>(i)];
     char label[160];
@@ -74,7 +75,8 @@ void InspectorPanel::draw_device(int index) {
     bool locked = s.doc().locks[static_cast<size_t>(index)].locked[static_cast<size_t>(k)];
     if (ImGui::Checkbox("##lock", &locked)) s.report(set_device_lock(s.upd_history(), index, k, locked), "Lock");
     anchors_.remember("lock." + std::to_string(k));
-    if (ImGui::IsItemHovered()) ImGui::SetTooltip("Lock %s: the optimiser and the scene handles leave it alone", pose_param_name(k));
+    if (ImGui::IsItemHovered())
+      ImGui::SetTooltip("Lock %s: the optimiser and the scene handles leave it alone", pose_param_name(k));
     ImGui::SameLine();
     double v = d.pose.get(k);
     ImGui::SetNextItemWidth(200);
@@ -106,8 +108,7 @@ void InspectorPanel::draw_device(int index) {
     }
     ImGui::PopID();
   }
-  ImGui::TextDisabled("Offset %.2f, %.2f, %.2f mm (after the pose)", d.offset_mm.x(),
-                      d.offset_mm.y(), d.offset_mm.z());
+  ImGui::TextDisabled("Offset %.2f, %.2f, %.2f mm (after the pose)", d.offset_mm.x(), d.offset_mm.y(), d.offset_mm.z());
   ImGui::PopID();
 }
 
@@ -133,7 +134,8 @@ void InspectorPanel::draw_sensor() {
     s.report(set_sensor_model(s.upd_history(), edited), "Sensor model");
   }
   if (ImGui::IsItemHovered()) {
-    ImGui::SetTooltip("Study defaults: 600 mm, 150° × 120° (docs/algorithms/visibility.md)\nDrag to change; double-click to type");
+    ImGui::SetTooltip(
+        "Study defaults: 600 mm, 150° × 120° (docs/algorithms/visibility.md)\nDrag to change; double-click to type");
   }
 }
 

@@ -1,7 +1,7 @@
 #include "ui/tabs/layout/layout_tab.h"
 
-#include <epoxy/gl.h>
 #include <GLFW/glfw3.h>
+#include <epoxy/gl.h>
 #include <imgui.h>
 
 #include <algorithm>
@@ -112,19 +112,23 @@ void LayoutTab::report_frame_stats() const {
   std::sort(v.begin(), v.end());
   double sum = 0;
   for (double x : v) sum += x;
-  const auto pct = [&](double q) { return v[std::min(v.size() - 1, static_cast<size_t>(q * static_cast<double>(v.size())))]; };
+  const auto pct = [&](double q) {
+    return v[std::min(v.size() - 1, static_cast<size_t>(q * static_cast<double>(v.size())))];
+  };
   const PoseSetPtr p = state_->poses.current();
   std::vector<double> iv = interval_ms_;
   std::sort(iv.begin(), iv.end());
   const double whole_median = iv.empty() ? 0.0 : iv[iv.size() / 2] - 15.0;
-  std::fprintf(stderr,
-               "layout tab frame CPU (update + draw incl. scene rendering), %zu frames while dragging %s: "
-               "mean %.2f ms, median %.2f ms, p95 %.2f ms, max %.2f ms; %d controllers, %d-frame pose set, "
-               "%d coverage updates during the drag (update step %.2f ms/frame on average); whole frame incl. ImGui "
-               "rendering and buffer swap (frame-to-frame interval minus the capture loop's 15 ms pause): median %.2f ms\n",
-               v.size(), state_->selected >= 0 ? state_->layout().devices[static_cast<size_t>(state_->selected)].slot.c_str() : "-",
-               sum / static_cast<double>(v.size()), pct(0.5), pct(0.95), v.back(), state_->layout().device_count(),
-               p ? p->size() : 0, coverage_updates_, update_ms_ / std::max(1, stats_frame_), whole_median);
+  std::fprintf(
+      stderr,
+      "layout tab frame CPU (update + draw incl. scene rendering), %zu frames while dragging %s: "
+      "mean %.2f ms, median %.2f ms, p95 %.2f ms, max %.2f ms; %d controllers, %d-frame pose set, "
+      "%d coverage updates during the drag (update step %.2f ms/frame on average); whole frame incl. ImGui "
+      "rendering and buffer swap (frame-to-frame interval minus the capture loop's 15 ms pause): median %.2f ms\n",
+      v.size(),
+      state_->selected >= 0 ? state_->layout().devices[static_cast<size_t>(state_->selected)].slot.c_str() : "-",
+      sum / static_cast<double>(v.size()), pct(0.5), pct(0.95), v.back(), state_->layout().device_count(),
+      p ? p->size() : 0, coverage_updates_, update_ms_ / std::max(1, stats_frame_), whole_median);
 }
 
 SceneRenderer* LayoutTab::renderer() {
@@ -162,17 +166,31 @@ void LayoutTab::update(bool shown) {
   }
 }
 
-std::string LayoutTab::document_title() const { return state_->title(); }
-bool LayoutTab::has_unsaved_changes() const { return state_->unsaved(); }
-std::optional<std::filesystem::path> LayoutTab::document_path() const { return state_->file_path(); }
+std::string LayoutTab::document_title() const {
+  return state_->title();
+}
+bool LayoutTab::has_unsaved_changes() const {
+  return state_->unsaved();
+}
+std::optional<std::filesystem::path> LayoutTab::document_path() const {
+  return state_->file_path();
+}
 
 // The File menu runs exactly what the toolbar and the shortcuts run.
 void LayoutTab::handle_file_command(FileCommand command) {
   switch (command) {
-    case FileCommand::kNew: request(Pending::kNew); break;
-    case FileCommand::kOpen: request(Pending::kOpen); break;
-    case FileCommand::kSave: save(false); break;
-    case FileCommand::kSaveAs: save(true); break;
+    case FileCommand::kNew:
+      request(Pending::kNew);
+      break;
+    case FileCommand::kOpen:
+      request(Pending::kOpen);
+      break;
+    case FileCommand::kSave:
+      save(false);
+      break;
+    case FileCommand::kSaveAs:
+      save(true);
+      break;
   }
 }
 
@@ -235,8 +253,9 @@ int LayoutTab::prepare_for_capture() {
     // LMC_LAYOUT_CANCEL_AFTER=S: Cancel the search S seconds in, so the capture shows a cancelled
     // search's best so far (set a long search with LMC_LAYOUT_OPTIMISE).
     if (const char* after = std::getenv("LMC_LAYOUT_CANCEL_AFTER"); after != nullptr && std::atof(after) > 0) {
-      capture_cancel_at_ = std::chrono::steady_clock::now() +
-                           std::chrono::duration_cast<std::chrono::steady_clock::duration>(std::chrono::duration<double>(std::atof(after)));
+      capture_cancel_at_ =
+          std::chrono::steady_clock::now() + std::chrono::duration_cast<std::chrono::steady_clock::duration>(
+                                                 std::chrono::duration<double>(std::atof(after)));
     }
   }
   if (const char* env = std::getenv("LMC_LAYOUT_FRAME_STATS"); env != nullptr && std::atoi(env) > 0) {
@@ -285,7 +304,8 @@ void LayoutTab::run(Pending action) {
         error_open_ = modals_enabled_;
       }
       break;
-    case Pending::kNone: break;
+    case Pending::kNone:
+      break;
   }
   pending_ = Pending::kNone;
 }
@@ -300,8 +320,9 @@ void LayoutTab::save(bool save_as) {
   }
   browser_saving_ = true;
   const auto dir = state_->file_path() ? state_->file_path()->parent_path() : std::filesystem::current_path();
-  const std::string name = state_->file_path() ? state_->file_path()->filename().string()
-                                               : (state_->layout().name.empty() ? "layout" : state_->layout().name) + ".json";
+  const std::string name = state_->file_path()
+                               ? state_->file_path()->filename().string()
+                               : (state_->layout().name.empty() ? "layout" : state_->layout().name) + ".json";
   browser_.open(FileBrowser::Mode::kSave, dir, name);
 }
 
@@ -421,7 +442,10 @@ void LayoutTab::draw_scene_side() {
   ImGui::Checkbox("Pyramids", &s.display.show_pyramids);
   ImGui::SameLine();
   ImGui::Checkbox("Rays", &s.display.show_rays);
-  if (ImGui::IsItemHovered()) ImGui::SetTooltip("Lines from the selected controller to every finger marker:\ngreen clear, red blocked (hover one for the reason)");
+  if (ImGui::IsItemHovered())
+    ImGui::SetTooltip(
+        "Lines from the selected controller to every finger marker:\ngreen clear, red blocked (hover one for the "
+        "reason)");
   ImGui::SameLine();
   ImGui::Checkbox("Heatmap", &s.display.show_heatmap);
   ImGui::SameLine();
@@ -486,7 +510,8 @@ void LayoutTab::draw() {
       ++coverage_updates_;
     }
     if (frame_ms_.size() < static_cast<size_t>(stats_frames_wanted_)) {
-      frame_ms_.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - frame_start_).count());
+      frame_ms_.push_back(
+          std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - frame_start_).count());
     }
   }
 }

@@ -7,8 +7,8 @@
 #include <string>
 
 #include "core/metric/robust_metric.h"
-#include "ui/widgets/series_plot.h"
 #include "ui/widgets/progress_row.h"
+#include "ui/widgets/series_plot.h"
 
 namespace lmc::ui {
 
@@ -94,11 +94,12 @@ void OptimiserPanel::draw_settings() {
     p.metric = static_cast<PlacementMetricKind>(metric);
   }
   if (ImGui::IsItemHovered()) {
-    ImGui::SetTooltip("robust = M + tie-breakers: redundancy (fingers seen by 2+ controllers), participation\n"
-                      "(each controller sees a finger in 20 %% of frames), axis cut (seen markers within 250 mm),\n"
-                      "centring, footprints that do not overlap, and M inside the cut (what the controllers\n"
-                      "can measure: a finger with a marker beyond a controller's cut unseen by it).\n"
-                      "lmc evaluate prints every term.");
+    ImGui::SetTooltip(
+        "robust = M + tie-breakers: redundancy (fingers seen by 2+ controllers), participation\n"
+        "(each controller sees a finger in 20 %% of frames), axis cut (seen markers within 250 mm),\n"
+        "centring, footprints that do not overlap, and M inside the cut (what the controllers\n"
+        "can measure: a finger with a marker beyond a controller's cut unseen by it).\n"
+        "lmc evaluate prints every term.");
   }
   if (open_settings_once_) ImGui::SetNextItemOpen(true);
   if (p.metric == PlacementMetricKind::kRobust && ImGui::TreeNode("term weights (0 switches a term off)")) {
@@ -131,8 +132,9 @@ void OptimiserPanel::draw_settings() {
   s.optimiser_starts = std::clamp(s.optimiser_starts, 1, 8);
   anchors_.remember("starts");
   if (ImGui::IsItemHovered()) {
-    ImGui::SetTooltip("Several swarms from seeds seed, seed+1, ... one after another; the best is kept and the\n"
-                      "convergence plot draws each (lmc optimize --starts N does the same)");
+    ImGui::SetTooltip(
+        "Several swarms from seeds seed, seed+1, ... one after another; the best is kept and the\n"
+        "convergence plot draws each (lmc optimize --starts N does the same)");
   }
   ImGui::SameLine();
   ImGui::SetNextItemWidth(120);
@@ -151,7 +153,8 @@ void OptimiserPanel::draw_settings() {
     p = PsoSettings{};  // the study's metric and swarm settings
     p.threads = threads;
   }
-  if (ImGui::IsItemHovered()) ImGui::SetTooltip("30 particles, 100 iterations, w 0.9, c1 0.5, c2 0.3 (docs/algorithms/search.md)");
+  if (ImGui::IsItemHovered())
+    ImGui::SetTooltip("30 particles, 100 iterations, w 0.9, c1 0.5, c2 0.3 (docs/algorithms/search.md)");
 
   ImGui::Spacing();
   ImGui::PushTextWrapPos(0.0f);
@@ -161,7 +164,8 @@ void OptimiserPanel::draw_settings() {
   const LayoutDocument& doc = s.doc();
   for (int d = 0; d < doc.device_count(); ++d) {
     bool moves = false;
-    for (int k = 0; k < kNumPoseParams; ++k) moves = moves || !doc.locks[static_cast<size_t>(d)].locked[static_cast<size_t>(k)];
+    for (int k = 0; k < kNumPoseParams; ++k)
+      moves = moves || !doc.locks[static_cast<size_t>(d)].locked[static_cast<size_t>(k)];
     ImGui::PushID(d);
     if (d > 0) ImGui::SameLine();
     if (ImGui::Checkbox(doc.layout.devices[static_cast<size_t>(d)].slot.c_str(), &moves)) {
@@ -199,8 +203,9 @@ void OptimiserPanel::draw_run() {
     char stage[96];
     const auto& h = job.history();
     if (job.starts_planned() > 1) {
-      std::snprintf(stage, sizeof stage, "start %d of %d, iteration %d of %d", std::max(1, static_cast<int>(job.histories().size())),
-                    job.starts_planned(), h.empty() ? 0 : static_cast<int>(h.size()) - 1, job.iterations_planned());
+      std::snprintf(stage, sizeof stage, "start %d of %d, iteration %d of %d",
+                    std::max(1, static_cast<int>(job.histories().size())), job.starts_planned(),
+                    h.empty() ? 0 : static_cast<int>(h.size()) - 1, job.iterations_planned());
     } else {
       std::snprintf(stage, sizeof stage, "iteration %d of %d", h.empty() ? 0 : static_cast<int>(h.size()) - 1,
                     job.iterations_planned());
@@ -238,7 +243,8 @@ void OptimiserPanel::draw_run() {
       costs += buf;
     }
     ImGui::TextDisabled("best of %zu starts (start %d); costs %s; %d other start(s) found a different layout",
-                        outcome->start_costs.size(), outcome->best_start + 1, costs.c_str(), outcome->distinct_runners_up);
+                        outcome->start_costs.size(), outcome->best_start + 1, costs.c_str(),
+                        outcome->distinct_runners_up);
   }
   ImGui::PopTextWrapPos();
   if (ImGui::Button("Apply", ImVec2(100, 0))) s.apply_optimised();
@@ -270,7 +276,8 @@ void OptimiserPanel::draw_convergence() {
   const auto& histories = job.histories();
   for (size_t k = 0; k < histories.size(); ++k) {
     const std::string name = histories.size() == 1 ? std::string("best so far") : "start " + std::to_string(k + 1);
-    series.push_back({name, std::span<const double>(convergence_x_.data(), histories[k].size()), histories[k], static_cast<int>(k + 1)});
+    series.push_back({name, std::span<const double>(convergence_x_.data(), histories[k].size()), histories[k],
+                      static_cast<int>(k + 1)});
   }
   convergence_.draw("convergence", series, o);
 }
@@ -285,7 +292,9 @@ void OptimiserPanel::draw_comparison() {
   ImGui::TextUnformatted("Current vs candidate");
   // The label column fits its longest label; the numbers share the rest. Green is better and red
   // worse whichever way the number moved (an improvement showed in red).
-  if (!ImGui::BeginTable("##compare", 4, ImGuiTableFlags_Borders | ImGuiTableFlags_RowBg | ImGuiTableFlags_SizingFixedFit)) return;
+  if (!ImGui::BeginTable("##compare", 4,
+                         ImGuiTableFlags_Borders | ImGuiTableFlags_RowBg | ImGuiTableFlags_SizingFixedFit))
+    return;
   ImGui::TableSetupColumn("");
   ImGui::TableSetupColumn("current", ImGuiTableColumnFlags_WidthStretch);
   ImGui::TableSetupColumn("candidate", ImGuiTableColumnFlags_WidthStretch);
@@ -304,7 +313,9 @@ void OptimiserPanel::draw_comparison() {
     ImGui::TableSetColumnIndex(3);
     const double diff = b - a;
     const bool better = lower_better ? diff < 0 : diff > 0;
-    const ImVec4 col = diff == 0 ? ImVec4(0.7f, 0.7f, 0.7f, 1) : better ? ImVec4(0.4f, 0.9f, 0.45f, 1) : ImVec4(1, 0.45f, 0.4f, 1);
+    const ImVec4 col = diff == 0 ? ImVec4(0.7f, 0.7f, 0.7f, 1)
+                       : better  ? ImVec4(0.4f, 0.9f, 0.45f, 1)
+                                 : ImVec4(1, 0.45f, 0.4f, 1);
     percent ? ImGui::TextColored(col, "%+.1f pt", diff * 100) : ImGui::TextColored(col, "%+.4g", diff);
   };
   row_num("M, all frames", cur->all.metric, cand.all.metric, true, false);
@@ -336,8 +347,7 @@ void OptimiserPanel::draw_comparison() {
       b = std::max(b, cand.all.device_finger_fraction(d, k));
     }
     char name[48];
-    std::snprintf(name, sizeof name, "%s, best finger",
-                  s.layout().devices[static_cast<size_t>(d)].slot.c_str());
+    std::snprintf(name, sizeof name, "%s, best finger", s.layout().devices[static_cast<size_t>(d)].slot.c_str());
     row_num(name, a, b, false, true);
   }
   // The robust metric's terms (lower is better), when "current" is still the layout the search
@@ -355,7 +365,8 @@ void OptimiserPanel::draw_comparison() {
     }
   }
   ImGui::EndTable();
-  if (!same_start) ImGui::TextDisabled("(the robust terms are not compared: the layout changed since the search started)");
+  if (!same_start)
+    ImGui::TextDisabled("(the robust terms are not compared: the layout changed since the search started)");
   if (show_comparison_once_) {
     ImGui::SetScrollHereY(1.0f);  // the table's end: the robust terms' rows
     show_comparison_once_ = false;

@@ -28,7 +28,7 @@ class OptimiserPanel {
  private:
   void draw_pose_set();
   void draw_settings();
-  void draw_run();          // the footer: Start or progress, then the result with Apply / Discard
+  void draw_run();  // the footer: Start or progress, then the result with Apply / Discard
   void draw_convergence();
   void draw_comparison();
 
@@ -38,8 +38,8 @@ class OptimiserPanel {
   char file_buf_[512] = {};
   FileBrowser browser_{"Choose a pose-set file", ".tsv"};
   WidgetAnchors anchors_;
-  SeriesPlot convergence_;              // best cost per iteration (ui/widgets/series_plot.h)
-  std::vector<double> convergence_x_;   // 0, 1, 2, … (the iterations)
+  SeriesPlot convergence_;             // best cost per iteration (ui/widgets/series_plot.h)
+  std::vector<double> convergence_x_;  // 0, 1, 2, … (the iterations)
   bool open_settings_once_ = false;
   bool show_comparison_once_ = false;
   float footer_h_ = 0;  // height of the footer (draw_run) as last drawn

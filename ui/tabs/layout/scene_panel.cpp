@@ -25,9 +25,12 @@ double point_segment_px(const ImVec2& p, const Eigen::Vector2d& a, const Eigen::
 
 const char* verb_for(HandleKind k) {
   switch (k) {
-    case HandleKind::kYaw: return "Rotate";
-    case HandleKind::kTilt: return "Tilt";
-    default: return "Move";
+    case HandleKind::kYaw:
+      return "Rotate";
+    case HandleKind::kTilt:
+      return "Tilt";
+    default:
+      return "Move";
   }
 }
 
@@ -36,7 +39,9 @@ const char* verb_for(HandleKind k) {
 ScenePanel::ScenePanel(std::shared_ptr<LayoutTabState> state, std::function<SceneRenderer*()> renderer)
     : state_(std::move(state)), renderer_(std::move(renderer)) {}
 
-void ScenePanel::frame_all() { frame_requested_ = true; }
+void ScenePanel::frame_all() {
+  frame_requested_ = true;
+}
 
 Ray ScenePanel::mouse_ray() const {
   const ImVec2 m = ImGui::GetIO().MousePos;
@@ -52,7 +57,8 @@ int ScenePanel::pick_device(const Ray& ray) const {
     Eigen::Isometry3d t = d.pose.device_to_world();
     t.translation() += d.offset_mm;
     // A slightly larger box than drawn: 13 mm is thin to hit from the side.
-    if (const auto hit = intersect_oriented_box(ray, t, kDeviceBoxCentreMm, kDeviceBoxHalfMm + Eigen::Vector3d(4, 4, 4))) {
+    if (const auto hit =
+            intersect_oriented_box(ray, t, kDeviceBoxCentreMm, kDeviceBoxHalfMm + Eigen::Vector3d(4, 4, 4))) {
       if (*hit < best_t) {
         best_t = *hit;
         best = i;
@@ -156,7 +162,8 @@ void ScenePanel::handle_input(bool hovered) {
         gesture_ = Gesture::kNone;
       }
       break;
-    case Gesture::kNone: break;
+    case Gesture::kNone:
+      break;
   }
 
   if (hovered && io.MouseWheel != 0.0f) s.camera.zoom_towards(m.x, m.y, w, h, io.MouseWheel);
@@ -178,9 +185,9 @@ void ScenePanel::draw(ImVec2 size) {
     s.camera.frame_bounds(lo, hi, image_size_.x / image_size_.y);
   }
 
-  ImGui::InvisibleButton("##scene", image_size_,
-                         ImGuiButtonFlags_MouseButtonLeft | ImGuiButtonFlags_MouseButtonRight |
-                             ImGuiButtonFlags_MouseButtonMiddle);
+  ImGui::InvisibleButton(
+      "##scene", image_size_,
+      ImGuiButtonFlags_MouseButtonLeft | ImGuiButtonFlags_MouseButtonRight | ImGuiButtonFlags_MouseButtonMiddle);
   // The wheel zooms the view; without this ImGui also hands it to the tab's window, which then
   // scrolled by its 2 px of overflow.
   ImGui::SetItemUsingMouseWheel();
@@ -252,7 +259,8 @@ void ScenePanel::draw_overlays(ImDrawList* dl) {
     const ImVec2 size(boxes[i].width - 6.0f, boxes[i].height - 2.0f);
     const ImVec2 at(boxes[i].x + 3.0f, boxes[i].y + 1.0f);
     if (l.emphasised) {
-      dl->AddRectFilled(ImVec2(at.x - 3, at.y - 1), ImVec2(at.x + size.x + 3, at.y + size.y + 1), IM_COL32(20, 20, 24, 190), 3.0f);
+      dl->AddRectFilled(ImVec2(at.x - 3, at.y - 1), ImVec2(at.x + size.x + 3, at.y + size.y + 1),
+                        IM_COL32(20, 20, 24, 190), 3.0f);
     }
     dl->AddText(ImVec2(at.x + 1, at.y + 1), IM_COL32(0, 0, 0, 200), l.text.c_str());
     dl->AddText(at, to_u32(l.colour), l.text.c_str());
@@ -262,13 +270,15 @@ void ScenePanel::draw_overlays(ImDrawList* dl) {
   const float line = ImGui::GetTextLineHeight();
   const char* title = "Fingers:";
   float legend_w = ImGui::CalcTextSize(title).x + 10;
-  for (int c = 0; c < kSeenCountCategories; ++c) legend_w += line + 2 + ImGui::CalcTextSize(seen_count_label(c).c_str()).x + 12;
+  for (int c = 0; c < kSeenCountCategories; ++c)
+    legend_w += line + 2 + ImGui::CalcTextSize(seen_count_label(c).c_str()).x + 12;
   ImVec2 at(image_min_.x + 10, image_max.y - 10 - line * 1.6f);
   // In a narrow scene the heatmap's colour bar (bottom right, 236 px) would cover the finger
   // legend: stack the finger legend above it instead.
   const bool heat_bar = s.display.show_heatmap && s.selected >= 0;
   if (heat_bar && at.x + legend_w > image_max.x - 220 - 16 - 8) at.y -= line * 3.6f + 28;
-  dl->AddRectFilled(ImVec2(at.x - 6, at.y - 6), ImVec2(at.x + legend_w, at.y + line + 6), IM_COL32(18, 19, 23, 200), 4.0f);
+  dl->AddRectFilled(ImVec2(at.x - 6, at.y - 6), ImVec2(at.x + legend_w, at.y + line + 6), IM_COL32(18, 19, 23, 200),
+                    4.0f);
   dl->AddText(at, IM_COL32(210, 212, 218, 255), title);
   float x = at.x + ImGui::CalcTextSize(title).x + 10;
   for (int c = 0; c < kSeenCountCategories; ++c) {
@@ -283,18 +293,21 @@ void ScenePanel::draw_overlays(ImDrawList* dl) {
   if (heat_bar) {
     const HeatmapGridPtr g = s.heatmap.latest();
     const float bw = 220, bx = image_max.x - bw - 16, by = image_max.y - 14 - line * 2.6f;
-    dl->AddRectFilled(ImVec2(bx - 8, by - line - 10), ImVec2(image_max.x - 6, image_max.y - 6), IM_COL32(18, 19, 23, 200), 4.0f);
+    dl->AddRectFilled(ImVec2(bx - 8, by - line - 10), ImVec2(image_max.x - 6, image_max.y - 6),
+                      IM_COL32(18, 19, 23, 200), 4.0f);
     char head[128];
     const std::string finger =
         s.display.heatmap_finger < 0 ? std::string("all fingers") : std::string(digit_name(s.display.heatmap_finger));
-    std::snprintf(head, sizeof head, "%s, %s%s", s.display.heatmap_mode == HeatmapMode::kShareVisible ? "frames visible" : "frames added",
+    std::snprintf(head, sizeof head, "%s, %s%s",
+                  s.display.heatmap_mode == HeatmapMode::kShareVisible ? "frames visible" : "frames added",
                   finger.c_str(), (g && !g->fine) ? " (preview)" : "");
     dl->AddText(ImVec2(bx, by - line - 4), IM_COL32(210, 212, 218, 255), head);
     const ColourRange range = s.heatmap_range();
     constexpr int kSteps = 44;
     for (int i = 0; i < kSteps; ++i) {
       const float x0 = bx + bw * i / kSteps, x1 = bx + bw * (i + 1) / kSteps + 0.5f;
-      const ImU32 a = to_u32(viridis(static_cast<double>(i) / kSteps)), b = to_u32(viridis(static_cast<double>(i + 1) / kSteps));
+      const ImU32 a = to_u32(viridis(static_cast<double>(i) / kSteps)),
+                  b = to_u32(viridis(static_cast<double>(i + 1) / kSteps));
       dl->AddRectFilledMultiColor(ImVec2(x0, by), ImVec2(x1, by + line * 0.8f), a, b, b, a);
     }
     char lo[24], mid[24], hi[24];

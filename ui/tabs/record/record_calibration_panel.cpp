@@ -40,10 +40,11 @@ TrialPanelAction draw_block_calibration(const RecordSessionModel& model, TrialPa
   ImGui::TextWrapped("Operator: %s", step.operator_cue.c_str());
   ImGui::TextWrapped("Subject: %s", step.subject_cue.c_str());
   ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyle().Colors[ImGuiCol_TextDisabled]);
-  ImGui::TextWrapped("Before the block's first trial: a %.0f s still-hand trial, from which the controllers are "
-                     "calibrated against Vicon when the trial's Vicon file is found, else against each other. Nothing "
-                     "changes until you apply it.",
-                     step.duration_s);
+  ImGui::TextWrapped(
+      "Before the block's first trial: a %.0f s still-hand trial, from which the controllers are "
+      "calibrated against Vicon when the trial's Vicon file is found, else against each other. Nothing "
+      "changes until you apply it.",
+      step.duration_s);
   ImGui::PopStyleColor();
   ImGui::Spacing();
 
@@ -58,20 +59,24 @@ TrialPanelAction draw_block_calibration(const RecordSessionModel& model, TrialPa
   const auto& pending = model.pending_calibration();
   if (pending) {
     if (pending->ok()) {
-      draw_calibration_result(pending->trial_name, pending->fit->result, pending->fit->file_warnings, pending->fit->notes);
+      draw_calibration_result(pending->trial_name, pending->fit->result, pending->fit->file_warnings,
+                              pending->fit->notes);
       ImGui::Spacing();
-      if (calibration_big_button("Apply  [Enter]", ImVec4(0.15F, 0.55F, 0.25F, 1.0F))) action = TrialPanelAction::kApplyCalibration;
+      if (calibration_big_button("Apply  [Enter]", ImVec4(0.15F, 0.55F, 0.25F, 1.0F)))
+        action = TrialPanelAction::kApplyCalibration;
       input.anchors.remember("apply_calibration");
       ImGui::SameLine();
     } else {
-      ImGui::TextColored(ImVec4(1.0F, 0.38F, 0.33F, 1.0F), "%s: %s", pending->trial_name.c_str(), pending->failure.c_str());
+      ImGui::TextColored(ImVec4(1.0F, 0.38F, 0.33F, 1.0F), "%s: %s", pending->trial_name.c_str(),
+                         pending->failure.c_str());
     }
     if (ImGui::Button("Calibrate again  [R]", ImVec2(200, 48))) action = TrialPanelAction::kCalibrate;
     input.anchors.remember("calibrate_again");
     calibration_keep_nominal(input, action);
     return action;
   }
-  if (calibration_big_button("Record calibration  [Space]", ImVec4(0.2F, 0.4F, 0.7F, 1.0F))) action = TrialPanelAction::kCalibrate;
+  if (calibration_big_button("Record calibration  [Space]", ImVec4(0.2F, 0.4F, 0.7F, 1.0F)))
+    action = TrialPanelAction::kCalibrate;
   input.anchors.remember("calibrate");
   ImGui::Spacing();
   calibration_keep_nominal(input, action);

@@ -30,14 +30,18 @@ inline StatusLook trial_status_look(const session::TrialState& t, bool recording
   switch (t.status) {
     case TrialStatus::kPending:
       return t.attempts.empty() ? StatusLook{" - ", "pending", grey} : StatusLook{" ~ ", "to record again", grey};
-    case TrialStatus::kInterrupted: return {" ! ", "interrupted", {1.0F, 0.55F, 0.2F, 1.0F}};
-    case TrialStatus::kFailed: return {" x ", "fail", verdict_colour("fail")};
-    case TrialStatus::kRecorded: return {" ? ", "recorded", verdict_colour(verdict)};
+    case TrialStatus::kInterrupted:
+      return {" ! ", "interrupted", {1.0F, 0.55F, 0.2F, 1.0F}};
+    case TrialStatus::kFailed:
+      return {" x ", "fail", verdict_colour("fail")};
+    case TrialStatus::kRecorded:
+      return {" ? ", "recorded", verdict_colour(verdict)};
     case TrialStatus::kAccepted:
-      return verdict == "warn" ? StatusLook{" v ", "accepted (warn)", verdict_colour("warn")}
+      return verdict == "warn"   ? StatusLook{" v ", "accepted (warn)", verdict_colour("warn")}
              : verdict == "fail" ? StatusLook{" v ", "accepted by the operator (fail)", verdict_colour("fail")}
                                  : StatusLook{" v ", "accepted (pass)", verdict_colour("pass")};
-    default: break;
+    default:
+      break;
   }
   return {" ? ", "?", grey};
 }

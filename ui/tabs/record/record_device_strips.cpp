@@ -59,19 +59,28 @@ void draw_record_device_strips(const devices::TrialSnapshot& live) {
     ImGui::TableNextColumn();
     ImGui::TextUnformatted(d.serial.c_str());
     ImGui::TableNextColumn();
-    if (!d.connected) ImGui::TextColored(device_strips::kRed, "LOST");
-    else ImGui::Text("%.0f Hz", d.rate_hz);
+    if (!d.connected)
+      ImGui::TextColored(device_strips::kRed, "LOST");
+    else
+      ImGui::Text("%.0f Hz", d.rate_hz);
     ImGui::TableNextColumn();
-    if (d.hand_present) ImGui::TextColored(device_strips::kGreen, "hand");
-    else ImGui::TextColored(device_strips::kRed, "no hand");
+    if (d.hand_present)
+      ImGui::TextColored(device_strips::kGreen, "hand");
+    else
+      ImGui::TextColored(device_strips::kRed, "no hand");
     ImGui::TableNextColumn();
-    if (d.latest_frame_age_ms < 0) ImGui::TextDisabled("-");
-    else if (d.latest_frame_age_ms > device_strips::kStaleFrameMs) ImGui::TextColored(device_strips::kRed, "%.0f ms", d.latest_frame_age_ms);
-    else ImGui::Text("%.0f ms", d.latest_frame_age_ms);
+    if (d.latest_frame_age_ms < 0)
+      ImGui::TextDisabled("-");
+    else if (d.latest_frame_age_ms > device_strips::kStaleFrameMs)
+      ImGui::TextColored(device_strips::kRed, "%.0f ms", d.latest_frame_age_ms);
+    else
+      ImGui::Text("%.0f ms", d.latest_frame_age_ms);
     ImGui::TableNextColumn();
     const long long dropped = static_cast<long long>(d.frames_dropped + d.frames_dropped_recorder);
-    if (dropped > 0) ImGui::TextColored(device_strips::kAmber, "%lld", dropped);
-    else ImGui::TextDisabled("0");
+    if (dropped > 0)
+      ImGui::TextColored(device_strips::kAmber, "%lld", dropped);
+    else
+      ImGui::TextDisabled("0");
   }
   ImGui::EndTable();
 }

@@ -44,10 +44,12 @@ SetupAction draw_record_setup_panel(RecordSetupForm& f, const SetupFormProblems&
   problem_line(problems.hand_breadth);
   ImGui::InputText("Operator", f.operator_name, sizeof f.operator_name);
   ImGui::InputText("Notes", f.notes, sizeof f.notes);
-  const char* current = f.protocols.empty() ? "(none shipped)" : f.protocols[static_cast<size_t>(f.protocol)].label.c_str();
+  const char* current =
+      f.protocols.empty() ? "(none shipped)" : f.protocols[static_cast<size_t>(f.protocol)].label.c_str();
   if (ImGui::BeginCombo("Protocol", current)) {
     for (size_t i = 0; i < f.protocols.size(); ++i)
-      if (ImGui::Selectable(f.protocols[i].label.c_str(), static_cast<int>(i) == f.protocol)) f.protocol = static_cast<int>(i);
+      if (ImGui::Selectable(f.protocols[i].label.c_str(), static_cast<int>(i) == f.protocol))
+        f.protocol = static_cast<int>(i);
     ImGui::EndCombo();
   }
   if (problems.protocol.empty() && !f.protocols.empty()) {
@@ -94,8 +96,8 @@ SetupAction draw_record_setup_panel(RecordSetupForm& f, const SetupFormProblems&
   for (size_t i = 0; i < sessions.size(); ++i) {
     if (!sessions[i].group.empty() && (i == 0 || sessions[i - 1].group != sessions[i].group)) ++lines;  // its heading
   }
-  const float list_h =
-      std::min(160.0F, 2.0F * ImGui::GetStyle().WindowPadding.y + ImGui::GetTextLineHeightWithSpacing() * static_cast<float>(lines));
+  const float list_h = std::min(160.0F, 2.0F * ImGui::GetStyle().WindowPadding.y +
+                                            ImGui::GetTextLineHeightWithSpacing() * static_cast<float>(lines));
   if (!sessions.empty() && ImGui::BeginChild("sessions", ImVec2(0, list_h), true)) {
     const std::string* group = nullptr;
     for (const auto& s : sessions) {
@@ -111,7 +113,8 @@ SetupAction draw_record_setup_panel(RecordSetupForm& f, const SetupFormProblems&
       }
       char label[700];
       if (!s.problem.empty())
-        std::snprintf(label, sizeof label, "%s   cannot be read: %s", s.dir.filename().string().c_str(), s.problem.c_str());
+        std::snprintf(label, sizeof label, "%s   cannot be read: %s", s.dir.filename().string().c_str(),
+                      s.problem.c_str());
       else
         std::snprintf(label, sizeof label, "%s   %s, %s, %d of %d accepted%s", s.dir.filename().string().c_str(),
                       s.subject.c_str(), s.protocol.c_str(), s.accepted, s.total,

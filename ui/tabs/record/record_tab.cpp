@@ -1,8 +1,8 @@
 // The Record tab: one subject session at the bench. Set up or resume, pre-flight per
 // layout block, then trial after trial with the cue, a big red circle while recording, a strip per
 // controller, and a verdict with one-key redo. Keyboard: Space starts / stops, Enter accepts a
-// failed trial anyway, R redoes the last one, N adds a note, Esc aborts the running trial. All state and rules live in RecordSessionModel
-// (ui/model/record/); this file lays out the panels and maps keys and buttons to its actions.
+// failed trial anyway, R redoes the last one, N adds a note, Esc aborts the running trial. All state and rules live in
+// RecordSessionModel (ui/model/record/); this file lays out the panels and maps keys and buttons to its actions.
 #include "ui/tabs/record/record_tab.h"
 
 #include <imgui.h>
@@ -63,7 +63,8 @@ class RecordTab final : public Tab {
     if (capture_ && capture_stage_ != "record-resume") drive_capture();
     // The subject screen follows the session every frame, whichever tab is shown.
     subject_.view = build_subject_view(subject_view_inputs(model_), ImGui::GetTime());
-    trace_.observe(subject_.view, model_.recording() && model_.live() ? model_.live()->recording_s : 0.0, ImGui::GetTime());
+    trace_.observe(subject_.view, model_.recording() && model_.live() ? model_.live()->recording_s : 0.0,
+                   ImGui::GetTime());
   }
 
   void draw() override {
@@ -71,10 +72,17 @@ class RecordTab final : public Tab {
       draw_subject_screen_controls(subject_);
       ImGui::BeginChild("setup", ImVec2(0, 0), false);
       switch (draw_record_setup_panel(form_, check_setup_form(form_), sessions_, error_)) {
-        case SetupAction::kCreate: create(); break;
-        case SetupAction::kOpen: open(); break;
-        case SetupAction::kRefreshSessions: sessions_ = list_sessions(sessions_dir()); break;
-        case SetupAction::kNone: break;
+        case SetupAction::kCreate:
+          create();
+          break;
+        case SetupAction::kOpen:
+          open();
+          break;
+        case SetupAction::kRefreshSessions:
+          sessions_ = list_sessions(sessions_dir());
+          break;
+        case SetupAction::kNone:
+          break;
       }
       ImGui::EndChild();
       subject_screen_key();
@@ -205,8 +213,11 @@ class RecordTab final : public Tab {
   void act(TrialPanelAction a) {
     std::string why;
     switch (a) {
-      case TrialPanelAction::kNone: return;
-      case TrialPanelAction::kPreflight: why = model_.start_preflight(); break;
+      case TrialPanelAction::kNone:
+        return;
+      case TrialPanelAction::kPreflight:
+        why = model_.start_preflight();
+        break;
       case TrialPanelAction::kOverride:
         why = model_.override_preflight(panel_.override_reason);
         if (why.empty()) status_.set_status(std::string("pre-flight overridden: ") + panel_.override_reason);
@@ -215,11 +226,16 @@ class RecordTab final : public Tab {
         why = model_.start_trial();
         if (why.empty()) status_.set_status("Record: recording " + trial_name(model_.recording_trial()));
         break;
-      case TrialPanelAction::kStop: model_.stop_trial(); break;
-      case TrialPanelAction::kCalibrate: why = model_.start_calibration(); break;
+      case TrialPanelAction::kStop:
+        model_.stop_trial();
+        break;
+      case TrialPanelAction::kCalibrate:
+        why = model_.start_calibration();
+        break;
       case TrialPanelAction::kApplyCalibration:
         why = model_.apply_calibration();
-        if (why.empty()) status_.set_status("Record: calibration applied; the block records with the calibrated layout");
+        if (why.empty())
+          status_.set_status("Record: calibration applied; the block records with the calibrated layout");
         break;
       case TrialPanelAction::kKeepNominal:
         why = model_.keep_nominal_layout(panel_.nominal_reason);
@@ -227,12 +243,14 @@ class RecordTab final : public Tab {
         break;
       case TrialPanelAction::kAbort:
         why = model_.abort_trial();
-        if (why.empty()) status_.set_status("Record: trial aborted; it is kept, marked aborted, and waits for a redo (R)");
+        if (why.empty())
+          status_.set_status("Record: trial aborted; it is kept, marked aborted, and waits for a redo (R)");
         break;
       case TrialPanelAction::kNote:
         why = model_.add_note(panel_.note.text);
         if (why.empty()) {
-          status_.set_status(std::string("Record: note ") + (model_.busy() ? "kept; journaled when the trial ends: " : "journaled: ") +
+          status_.set_status(std::string("Record: note ") +
+                             (model_.busy() ? "kept; journaled when the trial ends: " : "journaled: ") +
                              panel_.note.text);
           panel_.note = {};
         }
@@ -240,7 +258,8 @@ class RecordTab final : public Tab {
       case TrialPanelAction::kAccept:
         why = model_.accept_last();
         if (why.empty() && model_.last_attempt())
-          status_.set_status("Record: " + trial_name(model_.last_attempt()->trial) + " kept despite its verdict (journaled)");
+          status_.set_status("Record: " + trial_name(model_.last_attempt()->trial) +
+                             " kept despite its verdict (journaled)");
         break;
       case TrialPanelAction::kRedo:
         why = model_.redo();
@@ -258,7 +277,8 @@ class RecordTab final : public Tab {
 
   std::string trial_name(int i) const {
     const auto& trials = model_.state().trials;
-    return i >= 0 && i < static_cast<int>(trials.size()) ? trials[static_cast<size_t>(i)].plan.name : std::string("the trial");
+    return i >= 0 && i < static_cast<int>(trials.size()) ? trials[static_cast<size_t>(i)].plan.name
+                                                         : std::string("the trial");
   }
 
   void keys() {
@@ -271,16 +291,22 @@ class RecordTab final : public Tab {
     }
     subject_screen_key();
     if (ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Space), false)) {
-      if (model_.recording() || model_.calibrating()) act(TrialPanelAction::kStop);
-      else if (model_.needs_preflight()) act(TrialPanelAction::kPreflight);
-      else if (model_.needs_calibration() && !model_.pending_calibration()) act(TrialPanelAction::kCalibrate);
-      else if (!model_.pending_calibration()) act(TrialPanelAction::kStart);
+      if (model_.recording() || model_.calibrating())
+        act(TrialPanelAction::kStop);
+      else if (model_.needs_preflight())
+        act(TrialPanelAction::kPreflight);
+      else if (model_.needs_calibration() && !model_.pending_calibration())
+        act(TrialPanelAction::kCalibrate);
+      else if (!model_.pending_calibration())
+        act(TrialPanelAction::kStart);
     }
-    if (ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Escape), false) && model_.recording()) act(TrialPanelAction::kAbort);
+    if (ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Escape), false) && model_.recording())
+      act(TrialPanelAction::kAbort);
     if (model_.busy()) return;
     if (const auto& c = model_.pending_calibration()) {
       // A calibration waiting for the operator: Enter applies it, R records it again.
-      if (ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Enter), false) && c->ok()) act(TrialPanelAction::kApplyCalibration);
+      if (ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Enter), false) && c->ok())
+        act(TrialPanelAction::kApplyCalibration);
       if (ImGui::IsKeyPressed('R', false)) act(TrialPanelAction::kCalibrate);
       return;
     }
@@ -310,8 +336,10 @@ class RecordTab final : public Tab {
     }
     if (model_.busy()) return;
     if (model_.needs_preflight()) {
-      if (!model_.last_preflight()) model_.start_preflight();
-      else model_.override_preflight("screenshot");
+      if (!model_.last_preflight())
+        model_.start_preflight();
+      else
+        model_.override_preflight("screenshot");
       return;
     }
     // A block calibration (protocols with the step) is recorded, then left for the picture.

@@ -5,12 +5,12 @@
 #include <algorithm>
 #include <cstdio>
 
+#include "ui/model/devices/fusion_readout.h"
 #include "ui/model/record/motion_pictogram.h"
 #include "ui/tabs/record/record_calibration_panel.h"
 #include "ui/tabs/record/record_colours.h"
-#include "ui/widgets/hand_pictogram.h"
-#include "ui/model/devices/fusion_readout.h"
 #include "ui/tabs/record/record_device_strips.h"
+#include "ui/widgets/hand_pictogram.h"
 #include "ui/widgets/live_hands_view.h"
 
 namespace lmc::ui {
@@ -67,8 +67,9 @@ TrialPanelAction preflight_section(const RecordSessionModel& model, TrialPanelIn
   // One action per key: Space runs the pre-flight here; Start appears once the block is cleared.
   if (big_button("Run pre-flight  [Space]", ImVec4(0.2F, 0.4F, 0.7F, 1.0F))) action = TrialPanelAction::kPreflight;
   input.anchors.remember("preflight");
-  ImGui::TextDisabled("Start [Space] comes when every pre-flight line is green, or after an override with a typed "
-                      "reason (journaled).");
+  ImGui::TextDisabled(
+      "Start [Space] comes when every pre-flight line is green, or after an override with a typed "
+      "reason (journaled).");
   if (model.last_preflight() && !model.last_preflight()->ok()) {
     ImGui::Spacing();
     ImGui::PushItemWidth(360);
@@ -85,9 +86,14 @@ TrialPanelAction preflight_section(const RecordSessionModel& model, TrialPanelIn
 // The verdict (record_verdict_panel.h) and the note line, as this panel's actions.
 void verdict_section(const RecordSessionModel& model, TrialPanelInput& input, TrialPanelAction& action) {
   switch (draw_record_verdict_panel(model, input.note)) {
-    case VerdictAction::kAccept: action = TrialPanelAction::kAccept; break;
-    case VerdictAction::kRedo: action = TrialPanelAction::kRedo; break;
-    case VerdictAction::kNone: break;
+    case VerdictAction::kAccept:
+      action = TrialPanelAction::kAccept;
+      break;
+    case VerdictAction::kRedo:
+      action = TrialPanelAction::kRedo;
+      break;
+    case VerdictAction::kNone:
+      break;
   }
   if (draw_note_line(model, input.note)) action = TrialPanelAction::kNote;
 }
@@ -99,7 +105,8 @@ void live_view(const RecordSessionModel& model, TrialPanelInput& input) {
   ImGui::Spacing();
   const auto& fused = model.live_fused();
   if (fused) {
-    ImGui::TextDisabled("Fused hand: fingers by how many controllers see them now (red none, orange 1, yellow 2, green 3+)");
+    ImGui::TextDisabled(
+        "Fused hand: fingers by how many controllers see them now (red none, orange 1, yellow 2, green 3+)");
     ImGui::TextDisabled("%s", fusion_latency_line(model.fusion_stats()).c_str());
     int unseen = 0;
     for (int n : fused->seen_by) unseen += n == 0 ? 1 : 0;
@@ -109,8 +116,9 @@ void live_view(const RecordSessionModel& model, TrialPanelInput& input) {
     }
   }
   draw_live_hands_view("record_live", input.camera, *layout, model.live_hands(),
-                       "Layout '" + layout->name + "' in the world frame (mm): each controller's hand in its colour, "
-                       "the fused hand thick.",
+                       "Layout '" + layout->name +
+                           "' in the world frame (mm): each controller's hand in its colour, "
+                           "the fused hand thick.",
                        fused ? &*fused : nullptr);
 }
 
@@ -155,9 +163,9 @@ TrialPanelAction draw_record_trial_panel(const RecordSessionModel& model, TrialP
     ImGui::TextColored(ImVec4(1.0F, 0.75F, 0.2F, 1.0F), "Pre-flight overridden: %s (journaled)", it->second.c_str());
   ImGui::PopTextWrapPos();
   const float cue_bottom = ImGui::GetCursorScreenPos().y;
-  if (const auto pictogram = motion_pictogram(trial.plan.sim_motion, ImGui::GetTime(),
-                                              state.subject().hand_length_mm.value_or(0.0),
-                                              state.subject().hand_breadth_mm.value_or(0.0))) {
+  if (const auto pictogram =
+          motion_pictogram(trial.plan.sim_motion, ImGui::GetTime(), state.subject().hand_length_mm.value_or(0.0),
+                           state.subject().hand_breadth_mm.value_or(0.0))) {
     ImGui::SetCursorScreenPos(ImVec2(cue_top.x + cue_width + 12.0F, cue_top.y));
     draw_hand_pictogram(*pictogram, ImVec2(pictogram_w, pictogram_h));
   }

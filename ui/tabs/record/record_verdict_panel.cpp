@@ -25,7 +25,8 @@ std::string percent(double f) {
 }
 
 void key_figures(const session::QualityReport& q) {
-  ImGui::Text("Recorded %.1f of %.1f s  ·  hand present %s", q.duration_s, q.planned_s, percent(q.hand_fraction).c_str());
+  ImGui::Text("Recorded %.1f of %.1f s  ·  hand present %s", q.duration_s, q.planned_s,
+              percent(q.hand_fraction).c_str());
   if (!q.finger_seen_fraction.empty()) {
     std::string line = "Seen by at least 1 controller:";
     for (size_t k = 0; k < q.finger_seen_fraction.size() && k < kNumDigits; ++k)
@@ -126,8 +127,10 @@ void open_note(NoteInput& note, bool by_key) {
     const ImVector<ImWchar>& queue = ImGui::GetIO().InputQueueCharacters;
     bool after_n = false;
     for (ImWchar c : queue) {
-      if (after_n) note.held.push_back(c);
-      else after_n = c == 'n' || c == 'N';
+      if (after_n)
+        note.held.push_back(c);
+      else
+        after_n = c == 'n' || c == 'N';
     }
   }
 }
@@ -156,17 +159,22 @@ bool draw_note_line(const RecordSessionModel& model, NoteInput& note) {
     }
     ImGui::PushItemWidth(420);
     const int target = model.note_trial();
-    const std::string hint = "note on " + (target >= 0 ? model.state().trials.at(static_cast<size_t>(target)).plan.name
-                                                       : std::string("the trial")) + ": Enter keeps it, Esc drops it";
-    const bool enter = ImGui::InputTextWithHint("##note", hint.c_str(), note.text, sizeof note.text, ImGuiInputTextFlags_EnterReturnsTrue);
+    const std::string hint =
+        "note on " +
+        (target >= 0 ? model.state().trials.at(static_cast<size_t>(target)).plan.name : std::string("the trial")) +
+        ": Enter keeps it, Esc drops it";
+    const bool enter = ImGui::InputTextWithHint("##note", hint.c_str(), note.text, sizeof note.text,
+                                                ImGuiInputTextFlags_EnterReturnsTrue);
     const bool active = ImGui::IsItemActive();
     const bool escape = ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Escape), false);
     if (active) note.took_keyboard = true;
     if (enter) {
       // An Enter in the very frame the field took the keyboard, with held letters not yet typed
       // into it, waits for them.
-      if (note.held.empty()) submitted = true;
-      else note.submit_when_typed = true;
+      if (note.held.empty())
+        submitted = true;
+      else
+        note.submit_when_typed = true;
     } else if (note.submit_when_typed && note.took_keyboard && note.held.empty()) {
       submitted = true;
       note.submit_when_typed = false;

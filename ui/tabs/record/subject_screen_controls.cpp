@@ -10,7 +10,8 @@ void draw_subject_screen_controls(SubjectScreenLink& link) {
   const int n = static_cast<int>(link.monitors.size());
   const int shown_monitor = link.monitor >= 0 && link.monitor < n ? link.monitor : n - 1;
   ImGui::SetNextItemWidth(230);
-  if (ImGui::BeginCombo("##monitor", shown_monitor >= 0 ? link.monitors[static_cast<size_t>(shown_monitor)].c_str() : "no monitor")) {
+  if (ImGui::BeginCombo(
+          "##monitor", shown_monitor >= 0 ? link.monitors[static_cast<size_t>(shown_monitor)].c_str() : "no monitor")) {
     for (int i = 0; i < n; ++i)
       if (ImGui::Selectable(link.monitors[static_cast<size_t>(i)].c_str(), i == shown_monitor)) link.monitor = i;
     ImGui::EndCombo();
@@ -21,14 +22,17 @@ void draw_subject_screen_controls(SubjectScreenLink& link) {
   if (ImGui::Checkbox("windowed", &windowed)) link.windowed = windowed;
   constexpr const char* kCoversHint = "(covers this monitor)";
   if (ImGui::IsItemHovered())
-    ImGui::SetTooltip("Off: the subject screen fills the chosen monitor. On: a plain window (the default with one monitor).");
+    ImGui::SetTooltip(
+        "Off: the subject screen fills the chosen monitor. On: a plain window (the default with one monitor).");
   if (!link.problem.empty()) {
     ImGui::TextColored(ImVec4(1.0F, 0.4F, 0.35F, 1.0F), "%s", link.problem.c_str());  // own line: it must be read whole
   } else if (link.open && n == 1 && !windowed) {
     // Only where it fits: the line is shared with the tab's key hint.
     ImGui::SameLine();
-    if (ImGui::GetContentRegionAvail().x >= ImGui::CalcTextSize(kCoversHint).x) ImGui::TextDisabled("%s", kCoversHint);
-    else ImGui::NewLine();
+    if (ImGui::GetContentRegionAvail().x >= ImGui::CalcTextSize(kCoversHint).x)
+      ImGui::TextDisabled("%s", kCoversHint);
+    else
+      ImGui::NewLine();
   }
 }
 

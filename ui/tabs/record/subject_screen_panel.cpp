@@ -36,8 +36,8 @@ void draw_subject_screen(const SubjectView& v, const SubjectFonts& fonts) {
   const ImU32 white = IM_COL32(235, 235, 235, 255);
   const ImU32 grey = IM_COL32(130, 130, 135, 255);
   if (v.stage == SubjectStage::kNoSession) {
-    text_at(fonts.normal, scale, ImVec2(0.05F * w, 0.45F * h), grey, "Subject screen: waiting for the operator to open a session.",
-            0.90F * w);
+    text_at(fonts.normal, scale, ImVec2(0.05F * w, 0.45F * h), grey,
+            "Subject screen: waiting for the operator to open a session.", 0.90F * w);
     ImGui::End();
     return;
   }
@@ -68,8 +68,10 @@ void draw_subject_screen(const SubjectView& v, const SubjectFonts& fonts) {
   const float right_of_circle = c.x + r + 0.04F * w;
   const float large_px = fonts.large->FontSize * scale;
   const std::string headline = v.stage == SubjectStage::kCountdown ? std::string("Starting") : v.headline;
-  text_at(fonts.large, scale, ImVec2(right_of_circle, c.y - large_px), v.red_circle ? IM_COL32(255, 80, 70, 255) : white, headline);
-  if (!v.time_text.empty()) text_at(fonts.large, scale, ImVec2(right_of_circle, c.y + 0.1F * large_px), white, v.time_text);
+  text_at(fonts.large, scale, ImVec2(right_of_circle, c.y - large_px),
+          v.red_circle ? IM_COL32(255, 80, 70, 255) : white, headline);
+  if (!v.time_text.empty())
+    text_at(fonts.large, scale, ImVec2(right_of_circle, c.y + 0.1F * large_px), white, v.time_text);
   // The cue on the left, the pictogram on the right; the cue and the hand line below it shrink
   // together until the last line is inside the window.
   const float top = c.y + r + 0.06F * h;

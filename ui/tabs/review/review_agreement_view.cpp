@@ -28,7 +28,8 @@ std::string with_ci(double v, const stats::Interval& ci, int decimals, bool sign
   if (!std::isfinite(v)) return "-";
   // One subject gives a bias but no interval for it: the value alone, the tooltip says why.
   if (!std::isfinite(ci.low) || !std::isfinite(ci.high)) return num(v, decimals, signed_value) + "  [no CI]";
-  return num(v, decimals, signed_value) + "  [" + num(ci.low, decimals, signed_value) + ", " + num(ci.high, decimals, signed_value) + "]";
+  return num(v, decimals, signed_value) + "  [" + num(ci.low, decimals, signed_value) + ", " +
+         num(ci.high, decimals, signed_value) + "]";
 }
 
 std::string group_label(const AgreementGroup& g) {
@@ -37,8 +38,8 @@ std::string group_label(const AgreementGroup& g) {
 }
 
 void draw_measure_table(const AgreementGroup& g, int& measure) {
-  const ImGuiTableFlags flags = ImGuiTableFlags_RowBg | ImGuiTableFlags_BordersInnerV | ImGuiTableFlags_SizingFixedFit |
-                                ImGuiTableFlags_ScrollY;
+  const ImGuiTableFlags flags =
+      ImGuiTableFlags_RowBg | ImGuiTableFlags_BordersInnerV | ImGuiTableFlags_SizingFixedFit | ImGuiTableFlags_ScrollY;
   // Every measure's row and the header, no more: the plot below takes what is left.
   const float row_px = ImGui::GetFontSize() + 2.0F * ImGui::GetStyle().CellPadding.y;
   const float height = row_px * static_cast<float>(g.measures.size() + 1) + 4.0F;
@@ -58,7 +59,8 @@ void draw_measure_table(const AgreementGroup& g, int& measure) {
     ImGui::TableNextRow();
     ImGui::TableNextColumn();
     ImGui::PushID(static_cast<int>(m));
-    const std::string name = a.measure.part + " " + (a.measure.quantity == "finger length" ? "length" : "ROM") + " (" + a.measure.unit + ")";
+    const std::string name =
+        a.measure.part + " " + (a.measure.quantity == "finger length" ? "length" : "ROM") + " (" + a.measure.unit + ")";
     if (ImGui::Selectable(name.c_str(), measure == static_cast<int>(m), ImGuiSelectableFlags_SpanAllColumns)) {
       measure = static_cast<int>(m);
     }
@@ -137,11 +139,13 @@ void draw_visibility_map(const VisibilityMap& map) {
       const Rgba colour = viridis((cell->rate_mean + 1.0) / 2.0);
       ImGui::TableSetBgColor(ImGuiTableBgTarget_CellBg, to_u32(colour, 0.85F));
       const bool light = colour.r * 0.3 + colour.g * 0.6 + colour.b * 0.1 > 0.55;
-      ImGui::TextColored(light ? ImVec4(0, 0, 0, 1) : ImVec4(1, 1, 1, 1), "%s", format_readable(cell->rate_mean, 2, true).c_str());
+      ImGui::TextColored(light ? ImVec4(0, 0, 0, 1) : ImVec4(1, 1, 1, 1), "%s",
+                         format_readable(cell->rate_mean, 2, true).c_str());
       if (ImGui::IsItemHovered()) {
-        ImGui::SetTooltip("%s, %s, %s: %.2f +/- %.2f over %d value(s) from %zu trial(s); %zu of them -1 (never saw the hand)",
-                          device.c_str(), layout.c_str(), motion.c_str(), cell->rate_mean, cell->rate_sd, cell->values, cell->trials,
-                          cell->never_saw);
+        ImGui::SetTooltip(
+            "%s, %s, %s: %.2f +/- %.2f over %d value(s) from %zu trial(s); %zu of them -1 (never saw the hand)",
+            device.c_str(), layout.c_str(), motion.c_str(), cell->rate_mean, cell->rate_sd, cell->values, cell->trials,
+            cell->never_saw);
       }
     }
   }
@@ -153,9 +157,10 @@ void draw_visibility_map(const VisibilityMap& map) {
 void ReviewAgreementView::draw(ReviewState& state, const PictureRenderer& renderer) {
   const ReviewState::Agreement& agreement = state.agreement();
   const AgreementTable& table = agreement.table;
-  ImGui::TextDisabled("Across the %zu trial(s) the table shows (its filters apply), %zu without Vicon. Differences are LMC - Vicon; "
-                      "one trial is one observation.",
-                      table.trials, table.trials_without_vicon);
+  ImGui::TextDisabled(
+      "Across the %zu trial(s) the table shows (its filters apply), %zu without Vicon. Differences are LMC - Vicon; "
+      "one trial is one observation.",
+      table.trials, table.trials_without_vicon);
   std::set<std::string> motions;
   for (const auto& t : state.trials()) motions.insert(t.row.motion);
   ImGui::SetNextItemWidth(120);
@@ -167,7 +172,8 @@ void ReviewAgreementView::draw(ReviewState& state, const PictureRenderer& render
     }
     ImGui::EndCombo();
   }
-  if (ImGui::IsItemHovered()) ImGui::SetTooltip("A joint's range of motion means something else in a static trial than in a flexion trial");
+  if (ImGui::IsItemHovered())
+    ImGui::SetTooltip("A joint's range of motion means something else in a static trial than in a flexion trial");
   if (table.groups.empty()) {
     ImGui::TextDisabled("No trial with Vicon among those shown.");
     return;
@@ -178,7 +184,8 @@ void ReviewAgreementView::draw(ReviewState& state, const PictureRenderer& render
   ImGui::SetNextItemWidth(320);
   if (ImGui::BeginCombo("group", group_label(table.groups[static_cast<size_t>(g)]).c_str())) {
     for (int k = 0; k <= last; ++k) {
-      if (ImGui::Selectable(group_label(table.groups[static_cast<size_t>(k)]).c_str(), k == g)) group_ = k == last ? -1 : k;
+      if (ImGui::Selectable(group_label(table.groups[static_cast<size_t>(k)]).c_str(), k == g))
+        group_ = k == last ? -1 : k;
     }
     ImGui::EndCombo();
   }
@@ -187,8 +194,9 @@ void ReviewAgreementView::draw(ReviewState& state, const PictureRenderer& render
   if (ImGui::Button("Export all...")) export_browser_.open(FileBrowser::Mode::kSave, sessions_dir(), "review-export");
   ImGui::EndDisabled();
   if (ImGui::IsItemHovered()) {
-    ImGui::SetTooltip("The agreement table (CSV, JSON), a Bland-Altman plot per group and measure, the visibility map and the "
-                      "study's tables: SVG with the CSV behind each figure and a JSON sidecar (lmc figures writes the same)");
+    ImGui::SetTooltip(
+        "The agreement table (CSV, JSON), a Bland-Altman plot per group and measure, the visibility map and the "
+        "study's tables: SVG with the CSV behind each figure and a JSON sidecar (lmc figures writes the same)");
   }
   if (const auto chosen = export_browser_.draw()) state.export_agreement(*chosen);
   if (!state.export_message().empty()) {
@@ -215,8 +223,9 @@ void ReviewAgreementView::draw(ReviewState& state, const PictureRenderer& render
   ImGui::BeginChild("bland_altman", ImVec2(width * 0.5F, height), false);
   if (!group.measures.empty()) {
     const figures::Figure figure = bland_altman_figure(group, group.measures[static_cast<size_t>(measure_)]);
-    png_.draw("ba_png", renderer, figure_stem("bland-altman-" + group.layout + "-" + group.pose + "-" +
-                                              group.measures[static_cast<size_t>(measure_)].measure.name),
+    png_.draw("ba_png", renderer,
+              figure_stem("bland-altman-" + group.layout + "-" + group.pose + "-" +
+                          group.measures[static_cast<size_t>(measure_)].measure.name),
               [&figure] { draw_figure_filling("ba", figure); });
     ImGui::SameLine();  // the figure's title beside its button: a line more for the plot
     draw_figure_view("ba", figure, std::max(90.0F, height - 6.6F * ImGui::GetTextLineHeightWithSpacing()));

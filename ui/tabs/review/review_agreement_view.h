@@ -4,8 +4,8 @@
 // 95 % limits with their confidence intervals (the repeated-measures form when a subject has
 // several trials), RMSE, Pearson r and ICC(2,1) with the model named; the selected measure's
 // Bland–Altman plot; and the study's visibility-rate map per controller × motion × layout.
-#include "ui/model/review/review_state.h"
 #include "ui/model/picture_renderer.h"
+#include "ui/model/review/review_state.h"
 #include "ui/widgets/file_browser.h"
 #include "ui/widgets/png_saver.h"
 

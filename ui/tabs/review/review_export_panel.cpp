@@ -14,7 +14,9 @@ namespace {
 
 const ImVec4 kErrorColour(0.95F, 0.45F, 0.35F, 1);
 
-std::string trials_word(long long n) { return std::to_string(n) + (n == 1 ? " trial" : " trials"); }
+std::string trials_word(long long n) {
+  return std::to_string(n) + (n == 1 ? " trial" : " trials");
+}
 
 std::string folder_name(const std::filesystem::path& folder) {
   return folder.filename().empty() ? folder.string() : folder.filename().string();
@@ -22,11 +24,12 @@ std::string folder_name(const std::filesystem::path& folder) {
 
 // "Exported 12 trials to …" and what was left out or stopped, in one line.
 std::string outcome_line(const MotionExportOutcome& o) {
-  std::string line = o.cancelled ? "Cancelled: " + trials_word(o.trials) + " exported to " + o.folder.string() +
-                                       " before it stopped (each file is complete)"
-                                 : "Exported " + trials_word(o.trials) +
-                                       (o.bids ? " of " + std::to_string(o.subjects) + " subject(s) as a BIDS dataset" : "") +
-                                       " to " + o.folder.string();
+  std::string line = o.cancelled
+                         ? "Cancelled: " + trials_word(o.trials) + " exported to " + o.folder.string() +
+                               " before it stopped (each file is complete)"
+                         : "Exported " + trials_word(o.trials) +
+                               (o.bids ? " of " + std::to_string(o.subjects) + " subject(s) as a BIDS dataset" : "") +
+                               " to " + o.folder.string();
   if (o.left_out > 0) line += "; " + std::to_string(o.left_out) + " left out (see the notes)";
   return line;
 }
@@ -35,7 +38,9 @@ std::string outcome_line(const MotionExportOutcome& o) {
 
 ReviewExportPanel::ReviewExportPanel(FolderOpener opener) : opener_(std::move(opener)) {
   if (!opener_) {
-    opener_ = [](const std::filesystem::path& folder, std::string* error) { return open_in_file_manager(folder, error); };
+    opener_ = [](const std::filesystem::path& folder, std::string* error) {
+      return open_in_file_manager(folder, error);
+    };
   }
 }
 
@@ -63,7 +68,8 @@ void ReviewExportPanel::suggest_paths() {
   // The key names the subjects: it must not lie in the dataset, so beside it.
   if (!key_typed_) {
     const std::filesystem::path folder(folder_);
-    std::snprintf(key_, sizeof key_, "%s", (folder.parent_path() / (folder_name(folder) + "-subject-key.tsv")).string().c_str());
+    std::snprintf(key_, sizeof key_, "%s",
+                  (folder.parent_path() / (folder_name(folder) + "-subject-key.tsv")).string().c_str());
   }
 }
 
@@ -81,8 +87,9 @@ void ReviewExportPanel::draw_button(const ReviewState& state) {
   ImGui::EndDisabled();
   anchors_.remember("export.button");
   if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled)) {
-    ImGui::SetTooltip("The selected trial or the trials the table shows as C3D or TRC (OpenSim, Visual3D, Mokka),\n"
-                      "or the opened sessions as a BIDS-motion dataset, processed as the tab shows them");
+    ImGui::SetTooltip(
+        "The selected trial or the trials the table shows as C3D or TRC (OpenSim, Visual3D, Mokka),\n"
+        "or the opened sessions as a BIDS-motion dataset, processed as the tab shows them");
   }
 }
 
@@ -92,7 +99,8 @@ void ReviewExportPanel::draw_window(ReviewState& state) {
   ImGui::SetNextWindowPos(viewport->GetCenter(), ImGuiCond_Appearing, ImVec2(0.5F, 0.5F));
   ImGui::SetNextWindowSize(ImVec2(700, 440), ImGuiCond_Appearing);
   ImGui::SetNextWindowBgAlpha(1.0F);  // over the plots, whose lines would show through
-  if (ImGui::Begin("Export###review_export_window", &open_, ImGuiWindowFlags_NoCollapse | ImGuiWindowFlags_NoSavedSettings)) {
+  if (ImGui::Begin("Export###review_export_window", &open_,
+                   ImGuiWindowFlags_NoCollapse | ImGuiWindowFlags_NoSavedSettings)) {
     const bool running = state.motion_export().running();
     ImGui::BeginDisabled(running);
     draw_what(state);
@@ -166,8 +174,9 @@ void ReviewExportPanel::draw_options(const ReviewState& state) {
     ImGui::TextUnformatted("Axes");
     ImGui::SameLine();
     ImGui::SetNextItemWidth(-1);
-    ImGui::Combo("##axes", &axes_, "world (x along the table, y up, z towards the subject)\0"
-                                   "OpenSim (X forward, Y up, Z to the subject's right)\0");
+    ImGui::Combo("##axes", &axes_,
+                 "world (x along the table, y up, z towards the subject)\0"
+                 "OpenSim (X forward, Y up, Z to the subject's right)\0");
     anchors_.remember("export.axes");
   }
   // What the points are: the fusion the table shows and each folder's length correction.
@@ -180,8 +189,9 @@ void ReviewExportPanel::draw_options(const ReviewState& state) {
     }
   }
   if (!corrected.empty()) {
-    how += what_ == What::kBids ? "; the length corrections of " + corrected + " are not applied (one set of options per dataset)"
-                                : "; lengths corrected for " + corrected;
+    how += what_ == What::kBids
+               ? "; the length corrections of " + corrected + " are not applied (one set of options per dataset)"
+               : "; lengths corrected for " + corrected;
   }
   ImGui::PushTextWrapPos(0);
   ImGui::TextDisabled("%s", how.c_str());
@@ -191,7 +201,8 @@ void ReviewExportPanel::draw_options(const ReviewState& state) {
       const auto& f = state.trials()[static_cast<size_t>(k)].folder;
       if (std::find(folders.begin(), folders.end(), f) == folders.end()) folders.push_back(f);
     }
-    if (folders.size() > 1) ImGui::TextDisabled("Trials of several folders go into one subfolder per folder (subjects share trial names).");
+    if (folders.size() > 1)
+      ImGui::TextDisabled("Trials of several folders go into one subfolder per folder (subjects share trial names).");
   }
   ImGui::PopTextWrapPos();
 }
@@ -212,11 +223,13 @@ void ReviewExportPanel::draw_folder() {
     const auto parent = std::filesystem::is_directory(folder.parent_path(), ec) ? folder.parent_path() : sessions_dir();
     folder_browser_.open(FileBrowser::Mode::kSave, parent, folder_name(folder));
   }
-  if (ImGui::IsItemHovered()) ImGui::SetTooltip("Go to where the folder should be and type its name (it is created when missing)");
+  if (ImGui::IsItemHovered())
+    ImGui::SetTooltip("Go to where the folder should be and type its name (it is created when missing)");
   if (const auto chosen = folder_browser_.draw()) set_folder(*chosen);
   ImGui::Checkbox("Replace files that exist", &replace_);
   anchors_.remember("export.replace");
-  if (ImGui::IsItemHovered()) ImGui::SetTooltip("Unticked, an export that would replace a file writes nothing and lists the files");
+  if (ImGui::IsItemHovered())
+    ImGui::SetTooltip("Unticked, an export that would replace a file writes nothing and lists the files");
 }
 
 void ReviewExportPanel::start(ReviewState& state) {
@@ -237,8 +250,10 @@ void ReviewExportPanel::start(ReviewState& state) {
 void ReviewExportPanel::draw_run(ReviewState& state) {
   const MotionExportJob& job = state.motion_export();
   if (job.running()) {
-    const std::string stage = job.total() > 0 ? std::to_string(job.done()) + " of " + trials_word(job.total()) : "finding trials...";
-    if (draw_progress_row("export.progress", job.fraction(), stage, job.elapsed_seconds(), job.eta_seconds(), true, &anchors_)) {
+    const std::string stage =
+        job.total() > 0 ? std::to_string(job.done()) + " of " + trials_word(job.total()) : "finding trials...";
+    if (draw_progress_row("export.progress", job.fraction(), stage, job.elapsed_seconds(), job.eta_seconds(), true,
+                          &anchors_)) {
       state.cancel_motion_export();
     }
     ImGui::PushTextWrapPos(0);

@@ -40,7 +40,8 @@ void ReviewReplayPanel::draw(ReviewState& state) {
   if (!frame) return;
   char caption[160];
   std::snprintf(caption, sizeof caption,
-                "%.2f s: controllers in their slot colours, Vicon light grey, the fused hand by how many controllers see each finger",
+                "%.2f s: controllers in their slot colours, Vicon light grey, the fused hand by how many controllers "
+                "see each finger",
                 frame->t_s);
   draw_live_hands_view("replay", camera_, view->layout, frame->hands, caption, frame->fused ? &*frame->fused : nullptr);
 }

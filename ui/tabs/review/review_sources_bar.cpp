@@ -4,8 +4,8 @@
 
 #include <algorithm>
 #include <cstdio>
-#include <vector>
 #include <filesystem>
+#include <vector>
 
 #include "core/common/paths.h"
 
@@ -26,16 +26,19 @@ std::vector<std::filesystem::path> demo_session_dirs() {
 void open_buttons(ReviewState& state, FileBrowser& browser) {
   if (ImGui::Button("Open folder...")) {
     std::error_code ec;
-    const auto start = std::filesystem::is_directory(sessions_dir(), ec) ? sessions_dir() : std::filesystem::current_path();
+    const auto start =
+        std::filesystem::is_directory(sessions_dir(), ec) ? sessions_dir() : std::filesystem::current_path();
     browser.open(FileBrowser::Mode::kOpen, start);
   }
   if (ImGui::IsItemHovered()) {
-    ImGui::SetTooltip("Choose any file in a subject session or a folder of trials (session.json, an LMC_*.txt); its folder opens.");
+    ImGui::SetTooltip(
+        "Choose any file in a subject session or a folder of trials (session.json, an LMC_*.txt); its folder opens.");
   }
   if (const auto sample = study_sample_dir(); !sample.empty()) {
     ImGui::SameLine();
     if (ImGui::Button("Study sample trial")) state.open_folder(sample);
-    if (ImGui::IsItemHovered()) ImGui::SetTooltip("The study's published trial Naiv_Static101 with its Vicon file:\n%s", sample.string().c_str());
+    if (ImGui::IsItemHovered())
+      ImGui::SetTooltip("The study's published trial Naiv_Static101 with its Vicon file:\n%s", sample.string().c_str());
   }
   if (const auto demo = demo_session_dirs(); !demo.empty()) {
     ImGui::SameLine();
@@ -43,8 +46,8 @@ void open_buttons(ReviewState& state, FileBrowser& browser) {
       state.open_folders(demo);
     }
     if (ImGui::IsItemHovered()) {
-      ImGui::SetTooltip("%zu simulated subject session(s) of the demo protocol (scripts/run recorded them) in\n%s", demo.size(),
-                        (sessions_dir() / "demo").string().c_str());
+      ImGui::SetTooltip("%zu simulated subject session(s) of the demo protocol (scripts/run recorded them) in\n%s",
+                        demo.size(), (sessions_dir() / "demo").string().c_str());
     }
   }
   if (const auto chosen = browser.draw()) {
@@ -73,7 +76,8 @@ bool folder_chip(ReviewState& state, ReviewBrowsers& browsers, const std::filesy
       ImGui::Text("factors: thumb %.3f, index %.3f, middle %.3f, ring %.3f, pinky %.3f", lc.factor[0], lc.factor[1],
                   lc.factor[2], lc.factor[3], lc.factor[4]);
       ImGui::TextDisabled("%s", c->file.string().c_str());
-      if (!applied) ImGui::TextDisabled("The reference fusion stays the study's algorithm: no correction is applied to it.");
+      if (!applied)
+        ImGui::TextDisabled("The reference fusion stays the study's algorithm: no correction is applied to it.");
       ImGui::EndTooltip();
     }
     ImGui::SameLine(0, 2);
@@ -85,9 +89,10 @@ bool folder_chip(ReviewState& state, ReviewBrowsers& browsers, const std::filesy
       browsers.correction.open(FileBrowser::Mode::kOpen, folder);
     }
     if (ImGui::IsItemHovered()) {
-      ImGui::SetTooltip("Correct this subject's finger lengths after the default fusion with a file from\n"
-                        "lmc length-correction fit (one factor per finger; joint angles do not change).\n"
-                        "Score it on trials other than the one it was fitted on.");
+      ImGui::SetTooltip(
+          "Correct this subject's finger lengths after the default fusion with a file from\n"
+          "lmc length-correction fit (one factor per finger; joint angles do not change).\n"
+          "Score it on trials other than the one it was fitted on.");
     }
   }
   ImGui::SameLine(0, 4);
@@ -116,7 +121,8 @@ void draw_review_sources_bar(ReviewState& state, ReviewBrowsers& browsers, Revie
     state.set_method(method == 0 ? FusionMethod::kDefault : FusionMethod::kReference);
   }
   if (ImGui::IsItemHovered()) {
-    ImGui::SetTooltip("default: our smoother (labels and axis cut weigh each point)\nreference: the study's Kalman filter, exactly");
+    ImGui::SetTooltip(
+        "default: our smoother (labels and axis cut weigh each point)\nreference: the study's Kalman filter, exactly");
   }
   // What is open, each with its length correction and a close button.
   for (const auto& folder : state.folders()) {
@@ -140,7 +146,8 @@ void draw_review_sources_bar(ReviewState& state, ReviewBrowsers& browsers, Revie
     int failed = 0;
     for (const auto& t : b->trials) failed += t.row.status == TrialRowStatus::kFailed ? 1 : 0;
     ImGui::TextDisabled("%zu trial(s): %d processed now, %d from the cache%s", b->trials.size(), b->processed_now,
-                        b->from_cache, job.state() == JobState::kCancelled ? " (cancelled: the rest were left out)" : "");
+                        b->from_cache,
+                        job.state() == JobState::kCancelled ? " (cancelled: the rest were left out)" : "");
     if (failed > 0) {
       ImGui::SameLine();
       ImGui::TextColored(ImVec4(0.95F, 0.45F, 0.35F, 1), "%d failed (status column says why)", failed);
@@ -162,7 +169,8 @@ void draw_review_sources_bar(ReviewState& state, ReviewBrowsers& browsers, Revie
 void draw_review_welcome(ReviewState& state, FileBrowser& browser) {
   ImGui::Spacing();
   ImGui::TextWrapped(
-      "Review processed trials against Vicon: open a subject session (every accepted trial), a folder of trials, or the "
+      "Review processed trials against Vicon: open a subject session (every accepted trial), a folder of trials, or "
+      "the "
       "study's sample trial. Trials are resampled, realigned and fused on a worker thread and cached, so opening them "
       "again is instant. Click a trial to see its joint angles and finger lengths against Vicon on one time axis, with "
       "the label strip of every controller explaining each gap; the Agreement view gives Bland-Altman limits, RMSE, "

@@ -23,8 +23,7 @@ namespace {
 
 class ReviewTab final : public Tab {
  public:
-  ReviewTab(StatusSink& status, WorkbenchContext& context)
-      : status_(status), context_(context) {
+  ReviewTab(StatusSink& status, WorkbenchContext& context) : status_(status), context_(context) {
     take_review_requests();
   }
 
@@ -42,8 +41,8 @@ class ReviewTab final : public Tab {
     was_processing_ = processing;
     if (processing_ended) {
       if (const ReviewBatch* b = state_.batch()) {
-        status_.set_status("Review: " + std::to_string(b->trials.size()) + " trial(s) ready (" + std::to_string(b->from_cache) +
-                           " from the cache)");
+        status_.set_status("Review: " + std::to_string(b->trials.size()) + " trial(s) ready (" +
+                           std::to_string(b->from_cache) + " from the cache)");
       }
     }
   }
@@ -105,8 +104,9 @@ class ReviewTab final : public Tab {
     if (active && ImGui::GetIO().MouseDelta.y != 0.0F)
       table_dragged_px_ = trial_table_height(available, row_px, rows, table_px + ImGui::GetIO().MouseDelta.y);
     if (active || ImGui::IsItemHovered()) ImGui::SetMouseCursor(ImGuiMouseCursor_ResizeNS);
-    const ImU32 colour = ImGui::GetColorU32(active ? ImGuiCol_SeparatorActive
-                                                   : ImGui::IsItemHovered() ? ImGuiCol_SeparatorHovered : ImGuiCol_Separator);
+    const ImU32 colour = ImGui::GetColorU32(active                   ? ImGuiCol_SeparatorActive
+                                            : ImGui::IsItemHovered() ? ImGuiCol_SeparatorHovered
+                                                                     : ImGuiCol_Separator);
     ImGui::GetWindowDrawList()->AddLine(ImVec2(at.x, at.y + 3.0F), ImVec2(at.x + width, at.y + 3.0F), colour, 2.0F);
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("Drag to give the trial table more or fewer rows");
   }
@@ -121,11 +121,12 @@ class ReviewTab final : public Tab {
 
   int prepare_for_capture() override {
     pending_view_ = 0;
-    if (const char* trial = std::getenv("LMC_REVIEW_TRIAL"); trial != nullptr && *trial != '\0') state_.prefer_trial(trial);
+    if (const char* trial = std::getenv("LMC_REVIEW_TRIAL"); trial != nullptr && *trial != '\0')
+      state_.prefer_trial(trial);
     // LMC_REVIEW_LENGTH_CORRECTION=FILE: the first opened folder's trials with that subject's
     // finger-length correction (the picture shows the chip and the corrected lengths).
-    if (const char* file = std::getenv("LMC_REVIEW_LENGTH_CORRECTION"); file != nullptr && *file != '\0' &&
-                                                                         !state_.folders().empty()) {
+    if (const char* file = std::getenv("LMC_REVIEW_LENGTH_CORRECTION");
+        file != nullptr && *file != '\0' && !state_.folders().empty()) {
       state_.set_length_correction(state_.folders().front(), file);
     }
     return 4;
@@ -135,7 +136,8 @@ class ReviewTab final : public Tab {
     std::vector<std::string> names{"review-agreement", "review-study-tables", "review-export"};
     // LMC_REVIEW_EXPORT_DIR=DIR: the trials shown are exported there as C3D and the finished
     // window is pictured too (the smoke test checks the files).
-    if (const char* dir = std::getenv("LMC_REVIEW_EXPORT_DIR"); dir != nullptr && *dir != '\0') names.push_back("review-export-done");
+    if (const char* dir = std::getenv("LMC_REVIEW_EXPORT_DIR"); dir != nullptr && *dir != '\0')
+      names.push_back("review-export-done");
     return names;
   }
   void prepare_extra_capture(const std::string& name) override {
@@ -145,7 +147,8 @@ class ReviewTab final : public Tab {
       // through the off-screen renderer, so the smoke test checks the PNG export end to end.
       const char* png = std::getenv("LMC_REVIEW_PNG");
       const auto& groups = state_.agreement().table.groups;
-      if (png != nullptr && *png != '\0' && context_.picture_renderer() && !groups.empty() && !groups.back().measures.empty()) {
+      if (png != nullptr && *png != '\0' && context_.picture_renderer() && !groups.empty() &&
+          !groups.back().measures.empty()) {
         const figures::Figure figure = bland_altman_figure(groups.back(), groups.back().measures.front());
         context_.picture_renderer()(1000, 700, png, [&figure] { draw_figure_filling("ba", figure); });
       }
@@ -170,9 +173,9 @@ class ReviewTab final : public Tab {
   ReviewTrialView trial_view_;
   ReviewAgreementView agreement_view_;
   ReviewExportPanel export_panel_;
-  bool was_processing_ = false;  // as last updated: the end of processing is reported once
-  int reported_exports_ = 0;     // the export runs whose outcome the status bar has shown
-  int pending_view_ = -1;  // a capture's request: 0 the trial view, 1 agreement, 2 study tables
+  bool was_processing_ = false;    // as last updated: the end of processing is reported once
+  int reported_exports_ = 0;       // the export runs whose outcome the status bar has shown
+  int pending_view_ = -1;          // a capture's request: 0 the trial view, 1 agreement, 2 study tables
   float table_dragged_px_ = 0.0F;  // the trial table's height once the splitter was dragged (0: the default)
 };
 

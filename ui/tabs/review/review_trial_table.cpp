@@ -38,10 +38,14 @@ void number_cell(double v, int decimals, bool signed_value, const char* suffix =
 
 ImVec4 status_colour(TrialRowStatus s) {
   switch (s) {
-    case TrialRowStatus::kOk: return ImVec4(0.55F, 0.85F, 0.55F, 1);
-    case TrialRowStatus::kNoVicon: return ImVec4(0.85F, 0.80F, 0.45F, 1);
-    case TrialRowStatus::kFailed: return ImVec4(0.95F, 0.45F, 0.35F, 1);
-    case TrialRowStatus::kCancelled: return ImVec4(0.6F, 0.6F, 0.6F, 1);
+    case TrialRowStatus::kOk:
+      return ImVec4(0.55F, 0.85F, 0.55F, 1);
+    case TrialRowStatus::kNoVicon:
+      return ImVec4(0.85F, 0.80F, 0.45F, 1);
+    case TrialRowStatus::kFailed:
+      return ImVec4(0.95F, 0.45F, 0.35F, 1);
+    case TrialRowStatus::kCancelled:
+      return ImVec4(0.6F, 0.6F, 0.6F, 1);
   }
   return ImVec4(1, 1, 1, 1);
 }
@@ -94,8 +98,8 @@ void draw_review_trial_table(ReviewState& state, float height_px) {
   fixed("status", 86, TrialColumn::kStatus);
   for (size_t d = 0; d < controllers; ++d) {
     const std::string name = "LMC" + std::to_string(d + 1) + " seen";
-    ImGui::TableSetupColumn(name.c_str(), ImGuiTableColumnFlags_WidthFixed | ImGuiTableColumnFlags_PreferSortDescending, 80,
-                            static_cast<ImGuiID>(static_cast<int>(TrialColumn::kVisibility) + static_cast<int>(d)));
+    ImGui::TableSetupColumn(name.c_str(), ImGuiTableColumnFlags_WidthFixed | ImGuiTableColumnFlags_PreferSortDescending,
+                            80, static_cast<ImGuiID>(static_cast<int>(TrialColumn::kVisibility) + static_cast<int>(d)));
   }
   fixed("length diff (mm)", 125, TrialColumn::kLengthDiff);
   fixed("|ROM diff| (deg)", 125, TrialColumn::kRomDiff);

@@ -70,7 +70,8 @@ void ReviewTrialView::draw(ReviewState& state, const PictureRenderer& renderer) 
     export_browser_.open(FileBrowser::Mode::kSave, sessions_dir(), "review-" + figure_stem(s.trial));
   }
   ImGui::EndDisabled();
-  if (ImGui::IsItemHovered()) ImGui::SetTooltip("SVG of every plot, the CSV behind it, a JSON sidecar, and every series and label as one CSV");
+  if (ImGui::IsItemHovered())
+    ImGui::SetTooltip("SVG of every plot, the CSV behind it, a JSON sidecar, and every series and label as one CSV");
   if (const auto chosen = export_browser_.draw()) state.export_trial(*chosen, each_controller_);
   ImGui::SameLine();
   // The PNG shows what the SVG export shows: every panel of the trial's figure, stacked. The
@@ -84,9 +85,10 @@ void ReviewTrialView::draw(ReviewState& state, const PictureRenderer& renderer) 
   ImGui::SameLine();
   ImGui::TextDisabled("(?)");
   if (ImGui::IsItemHovered()) {
-    ImGui::SetTooltip("Every plot shares one time axis: wheel zooms, drag pans, double-click shows the whole trial.\n"
-                      "The cursor shows each series' value; missing values are gaps over a faint band, never 0.\n"
-                      "Click a legend entry to hide or show its series.");
+    ImGui::SetTooltip(
+        "Every plot shares one time axis: wheel zooms, drag pans, double-click shows the whole trial.\n"
+        "The cursor shows each series' value; missing values are gaps over a faint band, never 0.\n"
+        "Click a legend entry to hide or show its series.");
   }
   if (!view->warnings.empty()) {
     ImGui::SameLine();

@@ -7,9 +7,9 @@
 #include <memory>
 #include <string>
 
+#include "ui/model/picture_renderer.h"
 #include "ui/model/review/review_state.h"
 #include "ui/tabs/review/review_replay_panel.h"
-#include "ui/model/picture_renderer.h"
 #include "ui/widgets/file_browser.h"
 #include "ui/widgets/png_saver.h"
 #include "ui/widgets/series_plot.h"
