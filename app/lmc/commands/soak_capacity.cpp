@@ -3,8 +3,8 @@
 // shows every run). Prints a Markdown table — controllers down, rates across, each cell the frames
 // lost per run (and what lost them: the recorder's queue, the writer; the source's share when the
 // simulator could not keep the rate) — and with --svg writes the curve with the project's SVG
-// figure code: frames per second kept against controllers, one line per rate, with every run that
-// lost a frame marked.
+// figure code: frames written per second of trial against controllers, one line per rate
+// (without loss it is controllers × rate), every run that lost a frame marked.
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -35,7 +35,7 @@ struct Run {
   int devices = 0;
   double rate_hz = 0;
   std::int64_t lost = 0, lost_queue = 0, lost_writer = 0, written = 0;
-  double elapsed_s = 0, source_fraction = 0;
+  double trial_s = 0, source_fraction = 0;  // trial_s: the trials' planned seconds, summed
 };
 
 Run read_run(const std::string& path) {
@@ -48,7 +48,8 @@ Run read_run(const std::string& path) {
   run.lost_queue = static_cast<std::int64_t>(r.number("lost_queue_full"));
   run.lost_writer = static_cast<std::int64_t>(r.number("lost_writer"));
   run.written = static_cast<std::int64_t>(r.number("frames_written"));
-  run.elapsed_s = r.number("elapsed_s");
+  const lmc::JsonReader trials = r.at("trials");
+  for (size_t i = 0; i < trials.array_size(); ++i) run.trial_s += trials.at(i).number("seconds");
   run.source_fraction = r.number("source_rate_fraction");
   return run;
 }
@@ -107,7 +108,7 @@ void run_capacity(const CapacityOptions& opt) {
   lmc::figures::Figure f;
   f.title = opt.title;
   f.x = {"controllers", "", std::nullopt};
-  f.y = {"frames kept per second", "1/s", std::nullopt};
+  f.y = {"frames written per second of trial", "1/s", std::nullopt};
   lmc::figures::Series lossy;
   lossy.name = "a run that lost frames";
   lossy.style = lmc::figures::SeriesStyle::points;
@@ -123,7 +124,7 @@ void run_capacity(const CapacityOptions& opt) {
       if (it == points.end()) continue;
       for (const Run& r : it->second) {
         const double kept =
-            r.elapsed_s > 0 ? static_cast<double>(r.written) / r.elapsed_s : std::nan("");
+            r.trial_s > 0 ? static_cast<double>(r.written) / r.trial_s : std::nan("");
         s.x.push_back(n);
         s.y.push_back(kept);
         if (r.lost > 0) {
@@ -136,9 +137,8 @@ void run_capacity(const CapacityOptions& opt) {
   }
   if (!lossy.x.empty()) f.series.push_back(std::move(lossy));
   f.notes.push_back(
-      "Each point: one lmc soak run; kept = rows written / wall time of the run (the gaps between "
-      "trials "
-      "count, so it sits below controllers × rate).");
+      "Each point: one lmc soak run, rows written / the trials' seconds; without loss it is "
+      "controllers x rate. Red: a run that lost frames.");
   lmc::write_file_atomically(opt.svg, lmc::figures::to_svg(f));
   std::cout << "figure: " << opt.svg << "\n";
 }
