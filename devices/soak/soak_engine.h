@@ -71,7 +71,7 @@ struct SoakTrial {
   std::int64_t queue_dropped = 0;  // the recorder's queue was full
   std::int64_t writer_lost = 0;    // the rest of what was lost (a write error)
   std::int64_t lost() const { return produced - written; }
-  std::string verdict;  // pass | warn | fail ("" when not judged)
+  std::string verdict;  // pass | warn | fail ("" when not judged: off, or more than kMaxDevices controllers)
   std::vector<std::string> reasons;
 };
 
