@@ -35,6 +35,7 @@ constexpr const char* kTopKeys[] = {"format",
                                     "vicon_trigger_received",
                                     "vicon_stop_received",
                                     "vicon_alignment",
+                                    "vicon_listen",
                                     "trial_window",
                                     "events",
                                     "ground_truth",
@@ -58,6 +59,8 @@ constexpr const char* kDisconnectKeys[] = {"host_time_utc", "host_ns", "message"
                                            "event",         "serial",  "slot"};
 constexpr const char* kPacketKeys[] = {"type",          "packet_id", "target", "datagrams_sent",
                                        "host_time_utc", "host_ns",   "error",  "warning"};
+constexpr const char* kListenKeys[] = {"address",      "binding",           "allowed_senders", "any_sender",
+                                       "trigger_host", "refused_datagrams", "refused_senders", "warning"};
 constexpr const char* kTruthKeys[] = {"file", "rate_hz", "frames", "device_clock_at_time_zero_us", "mapping"};
 
 template <size_t N>
@@ -172,6 +175,26 @@ SidecarViconPacket packet_from(const JsonReader& r) {
   return p;
 }
 
+SidecarViconListen listen_from(const JsonReader& r) {
+  r.require_object();
+  SidecarViconListen l;
+  get(r, "address", l.address);
+  get(r, "binding", l.binding);
+  get(r, "allowed_senders", l.allowed_senders);
+  if (r.has("any_sender")) l.any_sender = r.at("any_sender").boolean();
+  get(r, "trigger_host", l.trigger_host);
+  get(r, "refused_datagrams", l.refused_datagrams);
+  if (r.has("refused_senders")) {
+    const JsonReader map = r.at("refused_senders");
+    map.require_object();
+    for (const auto& [host, count] : map.json().items())
+      l.refused_senders.emplace_back(host, int64_of(map.at(host.c_str())));
+  }
+  get(r, "warning", l.warning);
+  l.unknown = unknown_keys(r.json(), kListenKeys);
+  return l;
+}
+
 // Written in one piece once the truth file exists, so no crash explains a missing file or clock:
 // those two are required.
 SidecarGroundTruth truth_from(const JsonReader& r) {
@@ -269,6 +292,20 @@ json sidecar_vicon_packet_to_json(const SidecarViconPacket& p) {
   return j;
 }
 
+json sidecar_vicon_listen_to_json(const SidecarViconListen& l) {
+  json j = with_unknown(l.unknown);
+  j["address"] = l.address;
+  j["binding"] = l.binding;
+  j["allowed_senders"] = l.allowed_senders;
+  j["any_sender"] = l.any_sender;
+  j["trigger_host"] = l.trigger_host;
+  j["refused_datagrams"] = l.refused_datagrams;
+  j["refused_senders"] = json::object();
+  for (const auto& [host, count] : l.refused_senders) j["refused_senders"][host] = count;
+  if (!l.warning.empty()) j["warning"] = l.warning;
+  return j;
+}
+
 json recorder_sidecar_to_json(const RecorderSidecar& s) {
   json j = with_unknown(s.unknown);
   j["format"] = "lmc-session";
@@ -296,6 +333,7 @@ json recorder_sidecar_to_json(const RecorderSidecar& s) {
   if (!s.vicon_trigger_received.is_null()) j["vicon_trigger_received"] = s.vicon_trigger_received;
   if (!s.vicon_stop_received.is_null()) j["vicon_stop_received"] = s.vicon_stop_received;
   if (!s.vicon_alignment.is_null()) j["vicon_alignment"] = s.vicon_alignment;
+  if (s.vicon_listen) j["vicon_listen"] = sidecar_vicon_listen_to_json(*s.vicon_listen);
   if (!s.trial_window.is_null()) j["trial_window"] = s.trial_window;
   j["events"] = s.events.is_array() ? s.events : json::array();
   if (s.ground_truth) j["ground_truth"] = sidecar_ground_truth_to_json(*s.ground_truth);
@@ -355,6 +393,7 @@ RecorderSidecar recorder_sidecar_from_json(const json& j, const std::string& sou
   get_object(r, "vicon_trigger_received", s.vicon_trigger_received);
   get_object(r, "vicon_stop_received", s.vicon_stop_received);
   get_object(r, "vicon_alignment", s.vicon_alignment);
+  if (r.has("vicon_listen")) s.vicon_listen = listen_from(r.at("vicon_listen"));
   get_object(r, "trial_window", s.trial_window);
   if (r.has("events")) {
     const JsonReader events = r.at("events");

@@ -68,6 +68,20 @@ struct SidecarViconPacket {
   nlohmann::json unknown = nlohmann::json::object();
 };
 
+// Listen mode: where CaptureStart was awaited, whom it was taken from and what was refused. Absent
+// (nullopt) in sidecars of trials that did not listen, and in files written before it existed.
+struct SidecarViconListen {
+  std::string address;          // where the listener listened ("0.0.0.0:30 on eth0")
+  std::string binding;          // how that was chosen
+  std::string allowed_senders;  // the allowed senders as configured, resolved; "" = any sender
+  bool any_sender = false;
+  std::string trigger_host;            // the sender of the CaptureStart that began the trial (IPv4 address)
+  std::int64_t refused_datagrams = 0;  // from senders that are not allowed
+  std::vector<std::pair<std::string, std::int64_t>> refused_senders;  // sender address → datagrams
+  std::string warning;                                                // e.g. any sender was obeyed
+  nlohmann::json unknown = nlohmann::json::object();
+};
+
 struct SidecarGroundTruth {
   std::string file;  // T.trc beside the sidecar
   double rate_hz = 0;
@@ -96,6 +110,7 @@ struct RecorderSidecar {
   nlohmann::json vicon_trigger_received;  // null unless listen mode
   nlohmann::json vicon_stop_received;
   nlohmann::json vicon_alignment;  // null when no CaptureStart (devices/record/clock_alignment.h)
+  std::optional<SidecarViconListen> vicon_listen;
   // When the subject was told to go and what of the stream lay outside the trial (null in files
   // written before the window was recorded, which hold every row from the recorder's start).
   nlohmann::json trial_window;
@@ -114,6 +129,7 @@ struct RecorderSidecar {
 nlohmann::json serial_to_slot_json(const std::vector<std::pair<std::string, std::string>>& map);
 nlohmann::json sidecar_ground_truth_to_json(const SidecarGroundTruth& truth);
 nlohmann::json sidecar_vicon_packet_to_json(const SidecarViconPacket& packet);
+nlohmann::json sidecar_vicon_listen_to_json(const SidecarViconListen& listen);
 // One packet as the recorder's callers describe it (keys as in vicon_packets[]); `source` names it in errors.
 SidecarViconPacket sidecar_vicon_packet_from_json(const nlohmann::json& j, const std::string& source);
 

@@ -151,6 +151,13 @@ ViconQuality vicon_quality(const QualityInputs& in, const std::string& trial) {
     if (p.type == "CaptureStop") v.stop_sent = v.stop_sent || ok;
     if (v.error.empty() && !p.error.empty()) v.error = p.error;
   }
+  if (const auto& l = in.sidecar->vicon_listen) {
+    v.listened = true;
+    v.trigger_host = l->trigger_host;
+    v.any_sender = l->any_sender;
+    v.refused_datagrams = l->refused_datagrams;
+    for (const auto& [host, count] : l->refused_senders) v.refused_hosts.push_back(host);
+  }
   // Only a trial that triggered Vicon can have a Vicon file; looking for one otherwise would
   // only ever report "missing".
   if (in.vicon_export_dir && v.expected) {
@@ -168,7 +175,26 @@ ViconQuality vicon_quality(const QualityInputs& in, const std::string& trial) {
   return v;
 }
 
+// Listen mode: the trial is as good as any, but someone else on the network tried to start or
+// stop it, or nobody made sure only the lab's Vicon could: the operator should know either way.
+void judge_vicon_listen(const ViconQuality& v, Reasons& reasons) {
+  if (!v.listened) return;
+  if (v.refused_datagrams > 0) {
+    std::string hosts;
+    for (const std::string& h : v.refused_hosts) hosts += (hosts.empty() ? "" : ", ") + h;
+    reasons.warn(std::to_string(v.refused_datagrams) +
+                 " Vicon datagram(s) from hosts that may not trigger were refused" +
+                 (hosts.empty() ? std::string() : " (" + hosts + ")"));
+  }
+  if (v.any_sender) {
+    reasons.warn("Vicon listen mode obeyed any sender" +
+                 (v.trigger_host.empty() ? std::string() : " (CaptureStart came from " + v.trigger_host + ")") +
+                 ": no Vicon host was configured");
+  }
+}
+
 void judge_vicon(const ViconQuality& v, const QualityInputs& in, const std::string& trial, Reasons& reasons) {
+  judge_vicon_listen(v, reasons);
   if (!v.expected) return;
   if (!v.start_sent) {
     reasons.fail("Vicon was not triggered: " + (v.error.empty() ? std::string("no CaptureStart was sent") : v.error));

@@ -51,6 +51,12 @@ struct ViconQuality {
   std::string error;                 // first sending error
   std::optional<bool> export_found;  // set when an export folder was configured
   std::string export_file;
+  // Listen mode (the sidecar's vicon_listen): who started the trial, and what was refused.
+  bool listened = false;
+  std::string trigger_host;            // "" when no CaptureStart was obeyed
+  bool any_sender = false;             // no Vicon host was configured
+  std::int64_t refused_datagrams = 0;  // from hosts that are not allowed
+  std::vector<std::string> refused_hosts;
 };
 
 // The trial over time, for the verdict's plot: the recorded span cut into equal slices. Kept in

@@ -75,11 +75,20 @@ json vicon_to_json(const ViconQuality& v) {
          {"error", v.error},
          {"export_found", v.export_found ? json(*v.export_found) : json(nullptr)},
          {"export_file", v.export_file}};
+  // Only in listen mode, so a verdict of a trial that did not listen reads as it always did.
+  if (v.listened) {
+    j["listened"] = true;
+    j["trigger_host"] = v.trigger_host;
+    j["any_sender"] = v.any_sender;
+    j["refused_datagrams"] = v.refused_datagrams;
+    j["refused_hosts"] = v.refused_hosts;
+  }
   return j;
 }
 
 ViconQuality vicon_from_json(const JsonReader& r) {
-  r.only_keys({"expected", "start_sent", "stop_sent", "error", "export_found", "export_file"});
+  r.only_keys({"expected", "start_sent", "stop_sent", "error", "export_found", "export_file", "listened",
+               "trigger_host", "any_sender", "refused_datagrams", "refused_hosts"});
   ViconQuality v;
   v.expected = r.at("expected").boolean();
   v.start_sent = r.at("start_sent").boolean();
@@ -87,6 +96,16 @@ ViconQuality vicon_from_json(const JsonReader& r) {
   v.error = r.string_or("error", "");
   if (r.has("export_found")) v.export_found = r.at("export_found").boolean();
   v.export_file = r.string_or("export_file", "");
+  if (r.has("listened")) {
+    v.listened = r.at("listened").boolean();
+    v.trigger_host = r.string_or("trigger_host", "");
+    if (r.has("any_sender")) v.any_sender = r.at("any_sender").boolean();
+    if (r.has("refused_datagrams")) v.refused_datagrams = count(r, "refused_datagrams");
+    if (r.has("refused_hosts")) {
+      const JsonReader hosts = r.at("refused_hosts");
+      for (size_t i = 0; i < hosts.array_size(); ++i) v.refused_hosts.push_back(hosts.at(i).string());
+    }
+  }
   return v;
 }
 

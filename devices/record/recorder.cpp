@@ -181,6 +181,11 @@ void Recorder::note_stopped_by(std::string what) {
   stopped_by_ = std::move(what);
 }
 
+void Recorder::note_vicon_listen(SidecarViconListen listen) {
+  std::lock_guard lock(stats_mutex_);
+  vicon_listen_ = std::move(listen);
+}
+
 void Recorder::note_ground_truth(SidecarGroundTruth truth) {
   std::lock_guard lock(stats_mutex_);
   ground_truth_ = std::move(truth);
@@ -407,6 +412,7 @@ RecorderSidecar Recorder::sidecar(const char* state) const {
   sc.vicon_packets = vicon_packets_;
   sc.events = events_;
   sc.ground_truth = ground_truth_;
+  sc.vicon_listen = vicon_listen_;
   for (const auto& [key, value] : notes_.items()) {
     if (key == "vicon_alignment")
       sc.vicon_alignment = value;

@@ -116,6 +116,9 @@ class Recorder final : public FrameConsumer {
   void note_vicon_packet(const nlohmann::json& packet);
   // What ended the trial early (sidecar "stopped_by"; any thread, before stop).
   void note_stopped_by(std::string what);
+  // Listen mode: where Vicon was awaited, who triggered, what was refused (sidecar
+  // "vicon_listen"; any thread, before stop; a later call replaces an earlier one).
+  void note_vicon_listen(SidecarViconListen listen);
   // The simulator's truth file (sidecar "ground_truth"; before stop).
   void note_ground_truth(SidecarGroundTruth truth);
   // A JSON-valued key of the sidecar: vicon_alignment, vicon_trigger_received,
@@ -171,6 +174,7 @@ class Recorder final : public FrameConsumer {
   nlohmann::json notes_ = nlohmann::json::object();
   std::string stopped_by_;
   std::optional<SidecarGroundTruth> ground_truth_;
+  std::optional<SidecarViconListen> vicon_listen_;
   std::vector<std::pair<std::string, std::string>> serial_to_slot_;
   std::string host_start_utc_, host_stop_utc_;
   std::int64_t host_start_ns_ = 0, host_stop_ns_ = 0;

@@ -14,6 +14,7 @@
 #include "devices/record/clock_alignment.h"
 #include "devices/record/trial_name.h"
 #include "devices/sim/truth_markers.h"
+#include "devices/vicon/vicon_route.h"
 
 namespace lmc::devices {
 
@@ -71,8 +72,16 @@ struct TrialEngine::Run {
   std::unique_ptr<ViconTrigger> vicon;
   std::unique_ptr<ViconListener> listener;
   std::mutex inbox_mutex;
-  int rejected_reported = 0;                                 // listener->rejected() already said
-  std::vector<std::pair<ViconMessage, std::int64_t>> inbox;  // with the host time it arrived
+  int rejected_reported = 0;  // listener->rejected() already said
+  struct Arrived {
+    ViconMessage message;
+    std::int64_t host_ns = 0;  // when it arrived
+    ViconSender from;
+  };
+  std::vector<Arrived> inbox;
+  std::string listen_binding;                 // how the listen address was chosen
+  std::string listen_warning;                 // e.g. any sender is obeyed
+  std::optional<ViconSender> trigger_sender;  // listen mode: who sent the CaptureStart obeyed
   Clock::time_point t0 = Clock::now();
   Clock::time_point last_report{};
   double sim_time_at_start = 0;                                         // simulated time at go (the truth starts there)
@@ -152,6 +161,8 @@ struct TrialEngine::Run {
     s.vicon_sending = cfg.vicon.has_value();
     s.vicon_listening = listen();
     s.vicon_listen_address = result.listen_address;
+    s.vicon_trigger_host = trigger_sender ? trigger_sender->host() : std::string();
+    s.vicon_refused = listener ? listener->refused() : 0;
     s.vicon_start_received = vicon_start_received;
     s.vicon_stop_received = vicon_stop_received;
     s.message = message;
@@ -246,9 +257,37 @@ struct TrialEngine::Run {
     }
   }
 
+  // Every refused datagram is said, with its sender: a second Vicon system or a script on the
+  // lab network trying to start a trial is something the operator must hear of.
+  void report_refusals() {
+    std::int64_t not_listed = 0;
+    for (const ViconRefusal& r : listener->take_refusals(&not_listed)) {
+      say("refused " + r.what + " from " + r.sender.text() +
+          (r.datagrams > 1 ? " (" + std::to_string(r.datagrams) + " datagrams)" : std::string()) +
+          ": not an allowed Vicon host (allowed: " + cfg.vicon_senders.describe() + ")");
+    }
+    if (not_listed > 0)
+      say("refused " + std::to_string(not_listed) + " more datagram(s) from hosts that are not allowed (not listed)");
+  }
+
+  // The sidecar's vicon_listen: where, from whom, and what was refused.
+  SidecarViconListen listen_record() const {
+    SidecarViconListen l;
+    l.address = result.listen_address;
+    l.binding = listen_binding;
+    l.any_sender = cfg.vicon_senders.any();
+    l.allowed_senders = l.any_sender ? std::string() : cfg.vicon_senders.describe();
+    l.trigger_host = trigger_sender ? trigger_sender->host() : std::string();
+    l.refused_datagrams = listener->refused();
+    l.refused_senders = listener->refused_by_host();
+    l.warning = listen_warning;
+    return l;
+  }
+
   // Vicon's own start/stop broadcasts (listen mode), in the order they arrived.
   void handle_vicon_inbox() {
     if (!listener) return;
+    report_refusals();
     // Datagrams that are not capture messages (another program on the port, a damaged packet)
     // change nothing, but the operator hears of them once per burst.
     if (const int rejected = listener->rejected(); rejected > rejected_reported) {
@@ -256,12 +295,12 @@ struct TrialEngine::Run {
           " that are not Vicon capture messages (latest: " + listener->last_rejection() + ")");
       rejected_reported = rejected;
     }
-    std::vector<std::pair<ViconMessage, std::int64_t>> got;
+    std::vector<Arrived> got;
     {
       std::lock_guard lock(inbox_mutex);
       got.swap(inbox);
     }
-    for (const auto& [m, received_ns] : got) {
+    for (const auto& [m, received_ns, from] : got) {
       if (m.type == ViconMessage::Type::kStart && !recorder) {
         if (cfg.trial.empty()) {
           if (auto why = validate_trial_name(m.name); !why.empty()) {
@@ -279,6 +318,7 @@ struct TrialEngine::Run {
         }
         vicon_start_name = m.name;
         vicon_start_received = true;
+        trigger_sender = from;
         begin_recording();
         // Vicon's start is the trial's go: no countdown of ours comes after it.
         if (sim != nullptr) sim_time_at_start = sim->simulated_time_s();
@@ -288,8 +328,10 @@ struct TrialEngine::Run {
         recorder->note("vicon_trigger_received", {{"type", "CaptureStart"},
                                                   {"name", m.name},
                                                   {"packet_id", m.packet_id},
+                                                  {"sender", from.text()},
                                                   {"host_time_utc", utc_now_iso8601()}});
-        notice("CaptureStart received: recording " + trial);
+        recorder->note_vicon_listen(listen_record());
+        notice("CaptureStart received from " + from.text() + ": recording " + trial);
       } else if (m.type == ViconMessage::Type::kStop && recorder) {
         // Another capture's CaptureStop (a second Nexus, a stale broadcast) must not end this
         // trial; a Stop without a Name, or after a Start without one, is taken as ours.
@@ -298,9 +340,18 @@ struct TrialEngine::Run {
               vicon_start_name + "'");
           continue;
         }
-        recorder->note(
-            "vicon_stop_received",
-            {{"name", m.name}, {"packet_id", m.packet_id}, {"result", m.result}, {"host_time_utc", utc_now_iso8601()}});
+        // The Vicon that started the trial stops it: with several allowed hosts (a subnet) another
+        // system's CaptureStop must not end this subject's trial.
+        if (trigger_sender && from.address != trigger_sender->address) {
+          say("ignoring CaptureStop from " + from.text() + " (PacketID " + std::to_string(m.packet_id) +
+              "): the trial was started by " + trigger_sender->host());
+          continue;
+        }
+        recorder->note("vicon_stop_received", {{"name", m.name},
+                                               {"packet_id", m.packet_id},
+                                               {"result", m.result},
+                                               {"sender", from.text()},
+                                               {"host_time_utc", utc_now_iso8601()}});
         vicon_stop_received = true;
       }
     }
@@ -329,14 +380,29 @@ struct TrialEngine::Run {
     }
     if (cfg.vicon) vicon = std::make_unique<ViconTrigger>(*cfg.vicon);
     if (listen()) {
-      listener = std::make_unique<ViconListener>(cfg.vicon_listen->first, cfg.vicon_listen->second,
-                                                 [this](const ViconMessage& m) {
-                                                   const std::int64_t at = host_now_ns();
-                                                   std::lock_guard lock(inbox_mutex);
-                                                   inbox.emplace_back(m, at);
-                                                 });
-      result.listen_address = cfg.vicon_listen->first + ":" + std::to_string(listener->port());
-      notice("waiting for CaptureStart on " + result.listen_address);
+      const ViconListenBinding binding = choose_vicon_listen_binding(cfg.vicon_listen->first, cfg.vicon_senders);
+      ViconListenerConfig lc;
+      lc.bind_address = binding.address;
+      lc.interface_name = binding.interface_name;
+      lc.port = cfg.vicon_listen->second;
+      lc.allowed = cfg.vicon_senders;
+      listener = std::make_unique<ViconListener>(lc, [this](const ViconMessage& m, const ViconSender& from) {
+        const std::int64_t at = host_now_ns();
+        std::lock_guard lock(inbox_mutex);
+        inbox.push_back({m, at, from});
+      });
+      const bool on_interface = !binding.interface_name.empty() && listener->interface_note().empty();
+      result.listen_address = binding.address + ":" + std::to_string(listener->port()) +
+                              (on_interface ? " on " + binding.interface_name : std::string());
+      listen_binding = listener->interface_note().empty() ? binding.note : listener->interface_note();
+      if (!listener->interface_note().empty()) say(listener->interface_note());
+      if (cfg.vicon_senders.any()) {
+        listen_warning =
+            "no Vicon host is configured: CaptureStart and CaptureStop from any sender on the network are obeyed; "
+            "name the lab's Vicon host(s) to accept only them";
+        say(listen_warning);
+      }
+      notice("waiting for CaptureStart on " + result.listen_address + " from " + cfg.vicon_senders.describe());
     }
     // The files exist before the devices stream (a name taken or a full disk is said before the
     // subject is cued), but no row is written before go.
@@ -459,6 +525,12 @@ struct TrialEngine::Run {
     // The engine's own hub stops first, so the simulator's truth covers exactly what was delivered.
     if (hub_started_here) hub.stop();
     hub.set_consumer(nullptr);
+    if (listener) {
+      guarded("", [&] { report_refusals(); });  // the last refusals are said too
+      result.vicon_refused = listener->refused();
+      result.vicon_trigger_host = trigger_sender ? trigger_sender->host() : std::string();
+      if (recorder) recorder->note_vicon_listen(listen_record());
+    }
     listener.reset();
     if (vicon_start_sent) guarded("cannot send CaptureStop: ", [&] { send_vicon(false); });
     if (recorder) {

@@ -65,6 +65,8 @@ struct TrialSnapshot {
   bool vicon_sending = false;
   bool vicon_listening = false;
   std::string vicon_listen_address;  // listen mode: where CaptureStart is awaited
+  std::string vicon_trigger_host;    // listen mode: who sent the CaptureStart that began the trial
+  std::int64_t vicon_refused = 0;    // listen mode: datagrams refused from senders not allowed
   bool vicon_start_received = false;
   bool vicon_stop_received = false;
   std::string message;  // what is happening now, for a status line
@@ -82,8 +84,12 @@ struct TrialEngineConfig {
   double stream_timeout_s = 10;
   std::string backend;                      // written to the sidecar: sim | leapc | replay
   std::optional<ViconTriggerConfig> vicon;  // send CaptureStart/Stop
-  std::optional<std::pair<std::string, std::uint16_t>>
-      vicon_listen;                                 // wait for Vicon's CaptureStart instead (address, port)
+  // Wait for Vicon's CaptureStart instead (address, port). An empty address: the interface that
+  // reaches vicon_senders (devices/vicon/vicon_route.h), or every interface when none are given.
+  std::optional<std::pair<std::string, std::uint16_t>> vicon_listen;
+  // Listen mode: whose CaptureStart / CaptureStop are obeyed. Empty: any sender's, with a warning
+  // in the messages, the sidecar and the verdict (vicon_senders.h says why a lab names its Vicon).
+  ViconSenders vicon_senders;
   bool allow_overwrite = false;                     // lmc record --force only
   nlohmann::json extra = nlohmann::json::object();  // into the sidecar's extra (simulator config, session info…)
   // The layout the sidecar records (what processing realigns with) when it is not the hub's: a
@@ -104,6 +110,8 @@ struct TrialResult {
   bool recorded = false;              // the recorder started: the files exist and hold the rows
   std::filesystem::path existing;     // set when refused because this file of the trial exists
   std::string listen_address;         // listen mode: where CaptureStart was awaited (port resolved)
+  std::string vicon_trigger_host;     // listen mode: the sender of the CaptureStart obeyed ("" if none)
+  std::int64_t vicon_refused = 0;     // listen mode: datagrams refused from senders not allowed
   std::string go_utc;                 // when the subject was told to go (the file's first row); "" if never
 };
 

@@ -9,6 +9,7 @@
 #include <sys/socket.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <chrono>
 #include <cstdlib>
@@ -197,12 +198,42 @@ ViconSendResult ViconTrigger::send(ViconMessage message) {
   return result;
 }
 
+std::string ViconSender::host() const {
+  return format_ipv4(address);
+}
+std::string ViconSender::text() const {
+  return host() + ":" + std::to_string(port);
+}
+
 ViconListener::ViconListener(const std::string& bind_address, std::uint16_t port, Callback callback)
-    : callback_(std::move(callback)) {
+    : callback_([cb = std::move(callback)](const ViconMessage& m, const ViconSender&) { cb(m); }) {
+  ViconListenerConfig config;
+  config.bind_address = bind_address;
+  config.port = port;
+  open(config);
+}
+
+ViconListener::ViconListener(ViconListenerConfig config, SenderCallback callback)
+    : allowed_(config.allowed), callback_(std::move(callback)) {
+  open(config);
+}
+
+void ViconListener::open(const ViconListenerConfig& config) {
+  const std::string& bind_address = config.bind_address;
+  const std::uint16_t port = config.port;
   fd_ = ::socket(AF_INET, SOCK_DGRAM | SOCK_CLOEXEC, 0);
   if (fd_ < 0) throw Error(std::string("Vicon listener: cannot open a UDP socket: ") + std::strerror(errno));
   const int on = 1;
   setsockopt(fd_, SOL_SOCKET, SO_REUSEADDR, &on, sizeof on);
+  if (!config.interface_name.empty()) {
+    // Needs no privilege on Linux 5.7 and later for an unbound socket; where it is refused the
+    // listener still works on every interface, and the sender check still keeps others out.
+    if (setsockopt(fd_, SOL_SOCKET, SO_BINDTODEVICE, config.interface_name.c_str(),
+                   static_cast<socklen_t>(config.interface_name.size())) != 0) {
+      interface_note_ = "Vicon listener: cannot listen on " + config.interface_name + " alone (" +
+                        std::strerror(errno) + "); listening on every interface, obeying only " + allowed_.describe();
+    }
+  }
   sockaddr_in addr{};
   addr.sin_family = AF_INET;
   addr.sin_port = htons(port);
@@ -232,17 +263,68 @@ std::string ViconListener::last_rejection() const {
   return last_rejection_;
 }
 
+std::vector<std::pair<std::string, std::int64_t>> ViconListener::refused_by_host() const {
+  std::lock_guard lock(rejection_mutex_);
+  return refused_by_host_;
+}
+
+std::vector<ViconRefusal> ViconListener::take_refusals(std::int64_t* not_listed) {
+  std::lock_guard lock(rejection_mutex_);
+  if (not_listed != nullptr) *not_listed = refusals_not_listed_;
+  refusals_not_listed_ = 0;
+  return std::exchange(refusals_, {});
+}
+
+void ViconListener::refuse(const ViconSender& from, std::string_view datagram) {
+  ++refused_;
+  // What it would have done, so the log says more than "something came": parsed for the log only.
+  std::string why;
+  const auto m = parse_vicon_message(datagram, &why);
+  std::string what;
+  if (m) {
+    what = std::string(m->type == ViconMessage::Type::kStart ? "CaptureStart" : "CaptureStop") + " '" + m->name +
+           "' (PacketID " + std::to_string(m->packet_id) + ")";
+  } else {
+    what = std::to_string(datagram.size()) + " bytes, not a capture message";
+  }
+  std::lock_guard lock(rejection_mutex_);
+  const std::string host = from.host();
+  auto it =
+      std::find_if(refused_by_host_.begin(), refused_by_host_.end(), [&](const auto& e) { return e.first == host; });
+  if (it != refused_by_host_.end()) {
+    ++it->second;
+  } else if (refused_by_host_.size() < kMaxRefusedHosts) {
+    refused_by_host_.emplace_back(host, 1);
+  }
+  if (!refusals_.empty() && refusals_.back().sender.address == from.address &&
+      refusals_.back().sender.port == from.port && refusals_.back().what == what) {
+    ++refusals_.back().datagrams;
+  } else if (refusals_.size() < kMaxPendingRefusals) {
+    refusals_.push_back({from, std::move(what), 1});
+  } else {
+    ++refusals_not_listed_;
+  }
+}
+
 void ViconListener::run() {
   std::set<std::uint32_t> seen;
   char buf[65536];
   while (!stop_) {
     pollfd p{fd_, POLLIN, 0};
     if (::poll(&p, 1, 50) <= 0) continue;
-    const ssize_t n = ::recv(fd_, buf, sizeof buf, 0);
+    sockaddr_in from_addr{};
+    socklen_t from_len = sizeof from_addr;
+    const ssize_t n = ::recvfrom(fd_, buf, sizeof buf, 0, reinterpret_cast<sockaddr*>(&from_addr), &from_len);
     if (n <= 0) continue;
     ++received_;
+    const ViconSender from{ntohl(from_addr.sin_addr.s_addr), ntohs(from_addr.sin_port)};
+    const std::string_view datagram(buf, static_cast<size_t>(n));
+    if (!allowed_.allows(from.address)) {
+      refuse(from, datagram);
+      continue;
+    }
     std::string why;
-    auto m = parse_vicon_message(std::string_view(buf, static_cast<size_t>(n)), &why);
+    auto m = parse_vicon_message(datagram, &why);
     if (!m) {
       {
         std::lock_guard lock(rejection_mutex_);
@@ -252,7 +334,7 @@ void ViconListener::run() {
       continue;
     }
     if (!seen.insert(m->packet_id).second) continue;  // a repeat
-    callback_(*m);
+    callback_(*m, from);
   }
 }
 

@@ -14,9 +14,13 @@
 #include <mutex>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <thread>
+#include <utility>
+#include <vector>
 
 #include "devices/vicon/vicon_message.h"
+#include "devices/vicon/vicon_senders.h"
 
 namespace lmc::devices {
 
@@ -76,34 +80,83 @@ class ViconTrigger {
   std::filesystem::path id_file_;
 };
 
+// Who sent a datagram (IPv4, host byte order).
+struct ViconSender {
+  std::uint32_t address = 0;
+  std::uint16_t port = 0;
+  std::string host() const;  // "10.0.0.5"
+  std::string text() const;  // "10.0.0.5:51234"
+};
+
+// Datagrams from a sender the listener does not allow. Consecutive datagrams of one sender with
+// the same content are one refusal (Vicon sends every message several times).
+struct ViconRefusal {
+  ViconSender sender;
+  std::string what;  // "CaptureStart 'Trial01' (PacketID 7)", or "412 bytes, not a capture message"
+  int datagrams = 0;
+};
+
+struct ViconListenerConfig {
+  std::string bind_address = "0.0.0.0";  // "127.0.0.1" in tests
+  std::string interface_name;            // tie the socket to this interface (vicon_route.h); empty: none
+  std::uint16_t port = 30;               // 0 picks a free port (see port())
+  ViconSenders allowed;                  // whose capture messages are obeyed; empty: any sender
+};
+
 // Listens for capture start/stop datagrams (Vicon's own broadcast, or our trigger in tests) and
-// calls back once per PacketID (repeats are dropped). Runs its own thread.
+// calls back once per PacketID (repeats are dropped). Runs its own thread. A datagram from a
+// sender that is not allowed is refused before it is read: counted, kept for the owner to log
+// (take_refusals) and never obeyed, whatever it says.
 class ViconListener {
  public:
   using Callback = std::function<void(const ViconMessage&)>;
-  // bind_address "127.0.0.1" in tests; port 0 picks a free port (see port()).
+  using SenderCallback = std::function<void(const ViconMessage&, const ViconSender&)>;
+  // Any sender; bind_address "127.0.0.1" in tests; port 0 picks a free port (see port()).
   ViconListener(const std::string& bind_address, std::uint16_t port, Callback callback);
+  ViconListener(ViconListenerConfig config, SenderCallback callback);
   ~ViconListener();
   ViconListener(const ViconListener&) = delete;
   ViconListener& operator=(const ViconListener&) = delete;
 
   std::uint16_t port() const { return port_; }
   int datagrams_received() const { return received_.load(); }
+  // Datagrams from allowed senders that are not capture messages.
   int rejected() const { return rejected_.load(); }
   // Why the latest rejected datagram was not a capture message, with its size ("412 bytes: …"),
   // so the operator learns what else is sending to the port.
   std::string last_rejection() const;
+  // Datagrams from senders that are not allowed, in all and per sender address (the first
+  // kMaxRefusedHosts addresses; later ones count in refused() only).
+  std::int64_t refused() const { return refused_.load(); }
+  std::vector<std::pair<std::string, std::int64_t>> refused_by_host() const;
+  // The refusals since the previous call, oldest first (at most kMaxPendingRefusals are kept
+  // between calls; *not_listed, when given, gets how many datagrams were left out).
+  std::vector<ViconRefusal> take_refusals(std::int64_t* not_listed = nullptr);
+  // Empty, or why the socket could not be tied to config.interface_name (it then listens on
+  // every interface; the sender check still applies).
+  const std::string& interface_note() const { return interface_note_; }
+
+  static constexpr size_t kMaxRefusedHosts = 64;
+  static constexpr size_t kMaxPendingRefusals = 256;
 
  private:
+  void open(const ViconListenerConfig& config);
   void run();
+  void refuse(const ViconSender& from, std::string_view datagram);
   int fd_ = -1;
   std::uint16_t port_ = 0;
-  Callback callback_;
+  ViconSenders allowed_;
+  SenderCallback callback_;
+  std::string interface_note_;
   std::atomic<bool> stop_{false};
   std::atomic<int> received_{0};
   std::atomic<int> rejected_{0};
-  mutable std::mutex rejection_mutex_;
+  std::atomic<std::int64_t> refused_{0};
+  mutable std::mutex rejection_mutex_;  // guards the four below
   std::string last_rejection_;
+  std::vector<std::pair<std::string, std::int64_t>> refused_by_host_;
+  std::vector<ViconRefusal> refusals_;
+  std::int64_t refusals_not_listed_ = 0;
   std::thread thread_;
 };
 

@@ -305,9 +305,17 @@ TEST(LmcRecord, AFileSizeLimitStopsTheTrialWithAClearMessageAndKeepsTheRows) {
   EXPECT_EQ(sj.at("frames_written"), ij.at("rows")) << "the sidecar counts the rows the file holds";
 }
 
-// Sends `payload` to 127.0.0.1:port every 50 ms until `stop` (same PacketID: the listener keeps one).
-void send_until(int port, const std::string& payload, const std::atomic<bool>& stop) {
+// Sends `payload` to 127.0.0.1:port every 50 ms until `stop` (same PacketID: the listener keeps one),
+// from `from` when given (127.0.0.2: another machine on the lab network).
+void send_until(int port, const std::string& payload, const std::atomic<bool>& stop, const char* from = nullptr) {
   const int fd = ::socket(AF_INET, SOCK_DGRAM, 0);
+  if (from != nullptr) {
+    sockaddr_in local{};
+    local.sin_family = AF_INET;
+    ::inet_pton(AF_INET, from, &local.sin_addr);
+    if (::bind(fd, reinterpret_cast<sockaddr*>(&local), sizeof local) != 0)
+      ADD_FAILURE() << "cannot send from " << from;
+  }
   sockaddr_in to{};
   to.sin_family = AF_INET;
   to.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
@@ -423,6 +431,76 @@ TEST(LmcRecord, ViconCaptureStartAndStopDriveTheTrial) {
   EXPECT_THAT(info.out, HasSubstr("CaptureStart 'Naiv_Thumb102' PacketID 900 received"));
   EXPECT_GT(sj.at("frames_written").get<int>(), 20);
   EXPECT_TRUE(std::filesystem::exists(dir / "s" / "Naiv_Thumb102.trc"));
+}
+
+// Only the lab's Vicon (--vicon-host) starts and stops the trial: a second host, 127.0.0.2, sending
+// its own CaptureStart all along is refused and named on stderr, in the sidecar and by lmc info.
+TEST(LmcRecord, OnlyTheViconHostGivenStartsTheTrialOthersAreRefusedAndNamed) {
+  const int port = free_udp_port();
+  ASSERT_GT(port, 0);
+  const auto dir = lmc::test::scratch_dir("record_listen_host");
+  CliRun r;
+  std::thread lmc([&] {
+    r = run("record --backend sim --seconds 20 --quiet --vicon-listen " + std::to_string(port) +
+                " --vicon-host 127.0.0.1 -o " + lmc::test::shell_quote((dir / "s").string()),
+            dir / "logs");
+  });
+  std::atomic<bool> stop_intruder{false};
+  std::thread intruder([&] { send_until(port, capture_message(true, "Intruder", 500), stop_intruder, "127.0.0.2"); });
+  std::this_thread::sleep_for(std::chrono::milliseconds(500));
+  std::atomic<bool> stop_start{false};
+  std::thread starter([&] { send_until(port, capture_message(true, "Naiv_Wrist104", 600), stop_start); });
+  const auto side = dir / "s" / "LMC_Naiv_Wrist104.session.json";
+  for (int i = 0; i < 400 && !std::filesystem::exists(side); ++i)
+    std::this_thread::sleep_for(std::chrono::milliseconds(25));
+  std::this_thread::sleep_for(std::chrono::milliseconds(1000));
+  stop_start = true;
+  starter.join();
+  std::atomic<bool> stop_stop{false};
+  std::thread stopper([&] { send_until(port, capture_message(false, "Naiv_Wrist104", 601), stop_stop); });
+  lmc.join();
+  stop_stop = stop_intruder = true;
+  stopper.join();
+  intruder.join();
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_FALSE(std::filesystem::exists(dir / "s" / "LMC_Intruder.session.json"));
+  EXPECT_THAT(r.err, HasSubstr("refused CaptureStart 'Intruder' (PacketID 500) from 127.0.0.2:"));
+  EXPECT_THAT(r.err, HasSubstr(": not an allowed Vicon host (allowed: 127.0.0.1)"));
+  EXPECT_THAT(r.err, ::testing::Not(HasSubstr("any sender")));
+  EXPECT_THAT(r.out, HasSubstr("vicon:     CaptureStart from 127.0.0.1 (listening on 0.0.0.0:" + std::to_string(port)));
+  const auto sj = json_file(side);
+  EXPECT_EQ(sj.at("status"), "completed");
+  EXPECT_EQ(sj.at("vicon_trigger_received").at("packet_id"), 600);
+  const auto& listen = sj.at("vicon_listen");
+  EXPECT_EQ(listen.at("trigger_host"), "127.0.0.1");
+  EXPECT_EQ(listen.at("allowed_senders"), "127.0.0.1");
+  EXPECT_EQ(listen.at("any_sender"), false);
+  const int refused = listen.at("refused_datagrams").get<int>();
+  EXPECT_GT(refused, 0);
+  EXPECT_EQ(listen.at("refused_senders").at("127.0.0.2"), refused);
+  const CliRun info = run("info " + lmc::test::shell_quote(side.string()), dir / "info");
+  ASSERT_EQ(info.exit_code, 0) << info.err;
+  EXPECT_THAT(info.out, HasSubstr("vicon from: 127.0.0.1 (listening on 0.0.0.0:"));
+  EXPECT_THAT(info.out, HasSubstr("refused:    " + std::to_string(refused) +
+                                  " datagram(s) from other hosts: 127.0.0.2 x" + std::to_string(refused)));
+  const CliRun info_json = run("info --json " + lmc::test::shell_quote(side.string()), dir / "info_json");
+  ASSERT_EQ(info_json.exit_code, 0) << info_json.err;
+  EXPECT_EQ(nlohmann::json::parse(info_json.out).at("vicon_listen").at("trigger_host"), "127.0.0.1");
+}
+
+TEST(LmcRecord, ABadViconHostListIsRefusedNamingTheEntry) {
+  const auto dir = lmc::test::scratch_dir("record_listen_bad_host");
+  const CliRun bad =
+      run("record --backend sim --seconds 1 --vicon-listen 30999 --vicon-host '10.0.0.5, 10.0.0.300' -o " +
+              lmc::test::shell_quote(dir.string()),
+          dir / "bad");
+  EXPECT_EQ(bad.exit_code, 1);
+  EXPECT_THAT(bad.err, HasSubstr("Vicon host list '10.0.0.5, 10.0.0.300': '10.0.0.300' is not an IPv4 address"));
+  const CliRun alone = run("record --backend sim --trial t --seconds 1 --fast --vicon-host 127.0.0.1 -o " +
+                               lmc::test::shell_quote(dir.string()),
+                           dir / "alone");
+  EXPECT_EQ(alone.exit_code, 1);
+  EXPECT_THAT(alone.err, HasSubstr("--vicon-host and --vicon-listen-address apply to --vicon-listen"));
 }
 
 TEST(LmcRecord, ReplayKeepsEveryRowOfEveryDevice) {

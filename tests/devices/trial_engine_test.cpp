@@ -3,6 +3,11 @@
 // status callback at a known phase, never from a timer.
 #include "devices/record/trial_engine.h"
 
+#include <arpa/inet.h>
+#include <netinet/in.h>
+#include <sys/socket.h>
+#include <unistd.h>
+
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
@@ -17,6 +22,7 @@
 #include "core/io/lmc_recording.h"
 #include "core/io/recorder_sidecar.h"
 #include "core/io/trc.h"
+#include "core/session/trial_quality.h"
 #include "devices/replay/replay_source.h"
 #include "devices/sim/sim_rig.h"
 #include "tests/support/reference_data.h"
@@ -199,7 +205,7 @@ TEST(TrialEngine, StoppedWhileWaitingForViconNothingIsRecorded) {
   EXPECT_EQ(r.reason, "no CaptureStart received; nothing recorded");
   EXPECT_THAT(r.listen_address, HasSubstr("127.0.0.1:"));
   ASSERT_FALSE(notices.empty());
-  EXPECT_EQ(notices.front(), "waiting for CaptureStart on " + r.listen_address);
+  EXPECT_EQ(notices.front(), "waiting for CaptureStart on " + r.listen_address + " from any sender");
   EXPECT_TRUE(std::filesystem::is_empty(dir));
 }
 
@@ -256,6 +262,172 @@ TEST(TrialEngine, ListenModeSkipsATakenNameAndIgnoresAnotherTrialsStop) {
   EXPECT_EQ(side.status, "completed");
   EXPECT_EQ(side.vicon_stop_received.at("name"), "Fresh");
   EXPECT_EQ(side.vicon_trigger_received.at("name"), "Fresh");
+}
+
+// Sends `message` three times from a UDP socket bound to `from` (127.0.0.2: another machine on
+// the lab network) to 127.0.0.1:port.
+void send_capture_from(const char* from, std::uint16_t port, ViconMessage message) {
+  const int fd = ::socket(AF_INET, SOCK_DGRAM, 0);
+  ASSERT_GE(fd, 0);
+  sockaddr_in local{};
+  local.sin_family = AF_INET;
+  ASSERT_EQ(inet_pton(AF_INET, from, &local.sin_addr), 1);
+  ASSERT_EQ(::bind(fd, reinterpret_cast<sockaddr*>(&local), sizeof local), 0) << from;
+  sockaddr_in to{};
+  to.sin_family = AF_INET;
+  to.sin_port = htons(port);
+  to.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
+  const std::string payload = format_vicon_message(message);
+  for (int i = 0; i < 3; ++i)
+    ::sendto(fd, payload.data(), payload.size(), 0, reinterpret_cast<sockaddr*>(&to), sizeof to);
+  ::close(fd);
+}
+
+// Only the configured Vicon host starts and stops the trial: another host's CaptureStart (even
+// with the PacketID the real one then uses) and its CaptureStop for the same trial are refused,
+// said with the sender, counted in the sidecar, and the verdict names both hosts.
+TEST(TrialEngine, ListenModeObeysOnlyTheConfiguredViconHost) {
+  const auto dir = test::scratch_dir("trial_engine_listen_hosts");
+  SimHub sh(paper_initial_layout(), 0.0, 1.0);
+  TrialEngineConfig c = config_for(dir, "", 30.0);
+  c.vicon_listen = std::make_pair(std::string(), std::uint16_t{0});  // the interface that reaches the host
+  c.vicon_senders = ViconSenders::parse("127.0.0.1");
+  TrialEngine engine(sh.hub, sh.sim, c);
+  std::stop_source stop;
+  std::unique_ptr<ViconTrigger> vicon;
+  std::uint16_t port = 0;
+  std::vector<std::string> messages;
+  int step = 0;
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(40);  // a hang guard only
+  const TrialResult r = engine.run(stop.get_token(), [&](const TrialSnapshot& s) {
+    for (const auto& m : s.new_messages) messages.push_back(m);
+    if (step == 0 && s.phase == TrialPhase::kWaitingForVicon && !s.vicon_listen_address.empty()) {
+      port = static_cast<std::uint16_t>(std::stoi(s.vicon_listen_address.substr(s.vicon_listen_address.find(':') + 1)));
+      ViconMessage intruder;
+      intruder.name = "Intruder";
+      intruder.packet_id = 900;
+      send_capture_from("127.0.0.2", port, intruder);
+      ViconTriggerConfig vc;
+      vc.host = "127.0.0.1";
+      vc.port = port;
+      vc.first_packet_id = 900;  // nothing persisted
+      vicon = std::make_unique<ViconTrigger>(vc);
+      EXPECT_TRUE(vicon->send_start("Fresh").ok());
+      step = 1;
+    }
+    if (step == 1 && s.phase == TrialPhase::kRecording && s.recording_s > 0.2) {
+      ViconMessage foreign_stop;
+      foreign_stop.type = ViconMessage::Type::kStop;
+      foreign_stop.name = "Fresh";
+      foreign_stop.packet_id = 950;
+      send_capture_from("127.0.0.2", port, foreign_stop);
+      step = 2;
+    }
+    if (step == 2 && s.vicon_refused >= 6) {
+      EXPECT_EQ(s.vicon_trigger_host, "127.0.0.1");
+      EXPECT_TRUE(vicon->send_stop("Fresh").ok());
+      step = 3;
+    }
+    if (std::chrono::steady_clock::now() > deadline) stop.request_stop();
+  });
+  EXPECT_EQ(r.outcome, TrialOutcome::kCompleted) << r.reason;
+  EXPECT_EQ(step, 3);
+  EXPECT_EQ(r.trial, "Fresh");
+  EXPECT_EQ(r.vicon_trigger_host, "127.0.0.1");
+  EXPECT_EQ(r.vicon_refused, 6);
+  // Tied to the loopback interface (" on lo"), or, where the kernel refuses that, every interface.
+  EXPECT_THAT(r.listen_address, ::testing::StartsWith("0.0.0.0:" + std::to_string(port)));
+  const std::string allowed = ": not an allowed Vicon host (allowed: 127.0.0.1)";
+  EXPECT_THAT(messages, ::testing::Contains(::testing::AllOf(
+                            HasSubstr("refused CaptureStart 'Intruder' (PacketID 900) from 127.0.0.2:"),
+                            HasSubstr("(3 datagrams)" + allowed))));
+  EXPECT_THAT(messages,
+              ::testing::Contains(::testing::AllOf(
+                  HasSubstr("refused CaptureStop 'Fresh' (PacketID 950) from 127.0.0.2:"), HasSubstr(allowed))));
+  EXPECT_THAT(messages, ::testing::Not(::testing::Contains(HasSubstr("any sender"))));
+
+  const RecorderSidecar side = read_recorder_sidecar(r.paths.sidecar);
+  EXPECT_EQ(side.status, "completed");
+  EXPECT_THAT(side.vicon_trigger_received.at("sender").get<std::string>(), ::testing::StartsWith("127.0.0.1:"));
+  EXPECT_EQ(side.vicon_stop_received.at("packet_id"), 901);
+  ASSERT_TRUE(side.vicon_listen.has_value());
+  EXPECT_EQ(side.vicon_listen->trigger_host, "127.0.0.1");
+  EXPECT_EQ(side.vicon_listen->allowed_senders, "127.0.0.1");
+  EXPECT_FALSE(side.vicon_listen->any_sender);
+  EXPECT_EQ(side.vicon_listen->refused_datagrams, 6);
+  EXPECT_THAT(side.vicon_listen->refused_senders,
+              ElementsAre(std::make_pair(std::string("127.0.0.2"), std::int64_t{6})));
+  EXPECT_THAT(side.vicon_listen->binding, HasSubstr("127.0.0.1"));
+  EXPECT_TRUE(side.vicon_listen->warning.empty());
+
+  const LmcRecording rec = read_lmc_recording(r.paths.recording);
+  session::QualityInputs in;
+  in.recording = &rec;
+  in.sidecar = &side;
+  const session::QualityReport q = session::assess_trial(in);
+  EXPECT_TRUE(q.vicon.listened);
+  EXPECT_EQ(q.vicon.trigger_host, "127.0.0.1");
+  EXPECT_EQ(q.vicon.refused_datagrams, 6);
+  EXPECT_THAT(q.reasons,
+              ::testing::Contains("6 Vicon datagram(s) from hosts that may not trigger were refused (127.0.0.2)"));
+  const session::QualityReport back = session::quality_from_json(session::quality_to_json(q), "verdict");
+  EXPECT_EQ(back.vicon.trigger_host, "127.0.0.1");
+  EXPECT_EQ(back.vicon.refused_datagrams, 6);
+  EXPECT_THAT(back.vicon.refused_hosts, ElementsAre("127.0.0.2"));
+}
+
+// No host configured: it still works, and says loudly (messages, sidecar, verdict) that anyone
+// could have triggered it.
+TEST(TrialEngine, ListenModeWithoutAViconHostWarnsThatAnySenderIsObeyed) {
+  const auto dir = test::scratch_dir("trial_engine_listen_any");
+  SimHub sh(paper_initial_layout(), 0.0, 1.0);
+  TrialEngineConfig c = config_for(dir, "", 30.0);
+  c.vicon_listen = std::make_pair(std::string("127.0.0.1"), std::uint16_t{0});
+  TrialEngine engine(sh.hub, sh.sim, c);
+  std::stop_source stop;
+  std::vector<std::string> messages;
+  bool sent = false, stopped = false;
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(40);  // a hang guard only
+  const TrialResult r = engine.run(stop.get_token(), [&](const TrialSnapshot& s) {
+    for (const auto& m : s.new_messages) messages.push_back(m);
+    const auto port = [&] {
+      return static_cast<std::uint16_t>(std::stoi(s.vicon_listen_address.substr(s.vicon_listen_address.find(':') + 1)));
+    };
+    if (!sent && s.phase == TrialPhase::kWaitingForVicon && !s.vicon_listen_address.empty()) {
+      ViconMessage start;
+      start.name = "Anyone";
+      start.packet_id = 40;
+      send_capture_from("127.0.0.2", port(), start);
+      sent = true;
+    }
+    if (sent && !stopped && s.phase == TrialPhase::kRecording && s.recording_s > 0.2) {
+      ViconMessage end;
+      end.type = ViconMessage::Type::kStop;
+      end.name = "Anyone";
+      end.packet_id = 41;
+      send_capture_from("127.0.0.2", port(), end);
+      stopped = true;
+    }
+    if (std::chrono::steady_clock::now() > deadline) stop.request_stop();
+  });
+  EXPECT_EQ(r.outcome, TrialOutcome::kCompleted) << r.reason;
+  EXPECT_EQ(r.vicon_trigger_host, "127.0.0.2");
+  EXPECT_EQ(r.vicon_refused, 0);
+  EXPECT_THAT(messages, ::testing::Contains(
+                            HasSubstr("no Vicon host is configured: CaptureStart and CaptureStop from any sender")));
+  const RecorderSidecar side = read_recorder_sidecar(r.paths.sidecar);
+  ASSERT_TRUE(side.vicon_listen.has_value());
+  EXPECT_TRUE(side.vicon_listen->any_sender);
+  EXPECT_EQ(side.vicon_listen->trigger_host, "127.0.0.2");
+  EXPECT_THAT(side.vicon_listen->warning, HasSubstr("any sender"));
+  const LmcRecording rec = read_lmc_recording(r.paths.recording);
+  session::QualityInputs in;
+  in.recording = &rec;
+  in.sidecar = &side;
+  EXPECT_THAT(
+      session::assess_trial(in).reasons,
+      ::testing::Contains(
+          "Vicon listen mode obeyed any sender (CaptureStart came from 127.0.0.2): no Vicon host was configured"));
 }
 
 TEST(TrialEngine, RefusesToOverwriteAnExistingTrial) {

@@ -1,10 +1,12 @@
-// Vicon UDP trigger: message format and, over real sockets on 127.0.0.1 only, the sender and
-// listener (docs/algorithms/vicon.md).
+// Vicon UDP trigger: message format and, over real sockets on loopback only, the sender and
+// listener (docs/algorithms/vicon.md). 127.0.0.2 stands for another machine on
+// the lab network: Linux delivers all of 127.0.0.0/8 on the loopback interface.
 #include <arpa/inet.h>
 #include <netinet/in.h>
 #include <sys/socket.h>
 #include <unistd.h>
 
+#include <atomic>
 #include <chrono>
 #include <fstream>
 #include <mutex>
@@ -15,6 +17,8 @@
 
 #include "core/common/error.h"
 #include "devices/vicon/vicon_message.h"
+#include "devices/vicon/vicon_route.h"
+#include "devices/vicon/vicon_senders.h"
 #include "devices/vicon/vicon_trigger.h"
 #include "tests/support/reference_data.h"
 
@@ -253,6 +257,111 @@ TEST(ViconTrigger, GivenFirstPacketIdIsUsedAsIsAndNothingIsPersisted) {
   EXPECT_EQ(t.send_start("t").message.packet_id, 42u);
   EXPECT_EQ(t.send_stop("t").message.packet_id, 43u);
   EXPECT_FALSE(std::filesystem::exists(file));
+}
+
+// Sends `message` `times` times from a UDP socket bound to `from` to 127.0.0.1:port.
+void vicon_send_from(const char* from, std::uint16_t port, const ViconMessage& message, int times) {
+  const int fd = ::socket(AF_INET, SOCK_DGRAM, 0);
+  ASSERT_GE(fd, 0);
+  sockaddr_in local{};
+  local.sin_family = AF_INET;
+  ASSERT_EQ(inet_pton(AF_INET, from, &local.sin_addr), 1);
+  ASSERT_EQ(::bind(fd, reinterpret_cast<sockaddr*>(&local), sizeof local), 0) << from;
+  sockaddr_in to{};
+  to.sin_family = AF_INET;
+  to.sin_port = htons(port);
+  to.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
+  const std::string payload = format_vicon_message(message);
+  for (int i = 0; i < times; ++i)
+    EXPECT_EQ(::sendto(fd, payload.data(), payload.size(), 0, reinterpret_cast<sockaddr*>(&to), sizeof to),
+              static_cast<ssize_t>(payload.size()));
+  ::close(fd);
+}
+
+ViconMessage vicon_capture(ViconMessage::Type type, const std::string& name, std::uint32_t packet_id) {
+  ViconMessage m;
+  m.type = type;
+  m.name = name;
+  m.packet_id = packet_id;
+  return m;
+}
+
+TEST(ViconListener, OnlyTheConfiguredHostIsObeyedAndEveryOtherDatagramIsCountedWithItsSender) {
+  std::mutex m;
+  std::vector<std::pair<ViconMessage, ViconSender>> got;
+  ViconListenerConfig config;
+  config.bind_address = "127.0.0.1";
+  config.port = 0;
+  config.allowed = ViconSenders::parse("127.0.0.1");
+  ViconListener listener(config, [&](const ViconMessage& msg, const ViconSender& from) {
+    std::lock_guard lock(m);
+    got.emplace_back(msg, from);
+  });
+  ASSERT_NE(listener.port(), 0);
+  // The other host speaks first, with the PacketIDs the lab's Vicon is about to use: a refused
+  // datagram must neither start anything nor make the real message look like a repeat.
+  vicon_send_from("127.0.0.2", listener.port(), vicon_capture(ViconMessage::Type::kStart, "Intruder", 800), 3);
+  ViconTriggerConfig c;
+  c.host = "127.0.0.1";
+  c.port = listener.port();
+  c.first_packet_id = 800;
+  ViconTrigger vicon(c);
+  ASSERT_TRUE(vicon.send_start("Naiv_Index103").ok());
+  ASSERT_TRUE(vicon.send_stop("Naiv_Index103").ok());
+  vicon_send_from("127.0.0.2", listener.port(), vicon_capture(ViconMessage::Type::kStop, "Naiv_Index103", 802), 3);
+
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(3);
+  while (listener.datagrams_received() < 12 && std::chrono::steady_clock::now() < deadline)
+    std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  EXPECT_EQ(listener.datagrams_received(), 12);
+  EXPECT_EQ(listener.refused(), 6);
+  EXPECT_EQ(listener.rejected(), 0);
+  {
+    std::lock_guard lock(m);
+    ASSERT_EQ(got.size(), 2u);
+    EXPECT_EQ(got[0].first.type, ViconMessage::Type::kStart);
+    EXPECT_EQ(got[0].first.name, "Naiv_Index103");
+    EXPECT_EQ(got[0].first.packet_id, 800u);
+    EXPECT_EQ(got[0].second.host(), "127.0.0.1");
+    EXPECT_EQ(got[1].first.type, ViconMessage::Type::kStop);
+    EXPECT_EQ(got[1].first.packet_id, 801u);
+    EXPECT_EQ(got[1].second.host(), "127.0.0.1");
+  }
+  const auto by_host = listener.refused_by_host();
+  ASSERT_EQ(by_host.size(), 1u);
+  EXPECT_EQ(by_host[0].first, "127.0.0.2");
+  EXPECT_EQ(by_host[0].second, 6);
+  // The repeats of one message from one sender are one refusal to report.
+  std::int64_t not_listed = -1;
+  const std::vector<ViconRefusal> refusals = listener.take_refusals(&not_listed);
+  EXPECT_EQ(not_listed, 0);
+  ASSERT_EQ(refusals.size(), 2u);
+  EXPECT_EQ(refusals[0].sender.host(), "127.0.0.2");
+  EXPECT_EQ(refusals[0].what, "CaptureStart 'Intruder' (PacketID 800)");
+  EXPECT_EQ(refusals[0].datagrams, 3);
+  EXPECT_EQ(refusals[1].what, "CaptureStop 'Naiv_Index103' (PacketID 802)");
+  EXPECT_EQ(refusals[1].datagrams, 3);
+  EXPECT_TRUE(listener.take_refusals().empty());
+}
+
+TEST(ViconListener, TiedToTheInterfaceThatReachesTheHostItStillHearsIt) {
+  const ViconSenders allowed = ViconSenders::parse("127.0.0.1");
+  const ViconListenBinding binding = choose_vicon_listen_binding("", allowed);
+  ASSERT_FALSE(binding.interface_name.empty());
+  std::atomic<int> obeyed{0};
+  ViconListenerConfig config;
+  config.bind_address = binding.address;
+  config.interface_name = binding.interface_name;
+  config.port = 0;
+  config.allowed = allowed;
+  ViconListener listener(config, [&](const ViconMessage&, const ViconSender&) { ++obeyed; });
+  vicon_send_from("127.0.0.1", listener.port(), vicon_capture(ViconMessage::Type::kStart, "t", 5), 1);
+  vicon_send_from("127.0.0.2", listener.port(), vicon_capture(ViconMessage::Type::kStart, "t", 6), 2);
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(3);
+  while (listener.datagrams_received() < 3 && std::chrono::steady_clock::now() < deadline)
+    std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  EXPECT_EQ(obeyed.load(), 1);
+  EXPECT_EQ(listener.refused(), 2);
 }
 
 }  // namespace

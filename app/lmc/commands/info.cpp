@@ -33,8 +33,10 @@
 //              frames_with_hand, hand_fraction, frames_dropped_queue, frame_id_gaps, gaps,
 //              gap_ms, disconnects, first_timestamp_us, last_timestamp_us}],
 //              vicon_packets [{type, packet_id, target, datagrams_sent, error}],
-//              vicon_alignment, vicon_trigger_received, vicon_stop_received, stopped_by, trial_window,
-//              ground_truth (each the sidecar's, or null)
+//              vicon_alignment, vicon_trigger_received, vicon_stop_received, vicon_listen {address,
+//              binding, allowed_senders, any_sender, trigger_host, refused_datagrams, refused_senders
+//              {host: datagrams}, warning}, stopped_by, trial_window, ground_truth (each the
+//              sidecar's, or null)
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
@@ -81,8 +83,9 @@ constexpr const char* kJsonKeysHelp =
     "serial_to_slot{}, frames_written, frames_dropped, devices[{device_id, slot, serial, frames_written, "
     "frames_with_hand, hand_fraction, frames_dropped_queue, frame_id_gaps, gaps, gap_ms, disconnects, "
     "first_timestamp_us, last_timestamp_us}], vicon_packets[{type, packet_id, target, datagrams_sent, error}], "
-    "vicon_alignment, vicon_trigger_received, vicon_stop_received, stopped_by, trial_window, ground_truth. Unknown "
-    "values are "
+    "vicon_alignment, vicon_trigger_received, vicon_stop_received, vicon_listen{address, binding, allowed_senders, "
+    "any_sender, trigger_host, refused_datagrams, refused_senders{}, warning}, stopped_by, trial_window, ground_truth. "
+    "Unknown values are "
     "null.";
 
 struct InfoOptions {
@@ -557,6 +560,7 @@ void info_session(const std::string& file, const json& doc, bool as_json, std::o
     j["vicon_alignment"] = side.vicon_alignment;
     j["vicon_trigger_received"] = side.vicon_trigger_received;
     j["vicon_stop_received"] = side.vicon_stop_received;
+    j["vicon_listen"] = side.vicon_listen ? lmc::sidecar_vicon_listen_to_json(*side.vicon_listen) : json(nullptr);
     j["stopped_by"] = text_or_null(side.stopped_by);
     j["trial_window"] = side.trial_window;
     j["ground_truth"] = truth;
@@ -598,6 +602,16 @@ void info_session(const std::string& file, const json& doc, bool as_json, std::o
     out << "vicon in:   " << (got == &side.vicon_stop_received ? "CaptureStop" : "CaptureStart") << " '"
         << text_of(value_or_null(*got, "name")) << "' PacketID " << text_of(value_or_null(*got, "packet_id"))
         << " received at " << text_of(value_or_null(*got, "host_time_utc")) << "\n";
+  }
+  if (const auto& l = side.vicon_listen) {
+    out << "vicon from: " << (l->trigger_host.empty() ? std::string("no CaptureStart obeyed") : l->trigger_host)
+        << " (listening on " << l->address << ", obeying "
+        << (l->any_sender ? std::string("any sender") : l->allowed_senders) << ")\n";
+    out << "refused:    " << l->refused_datagrams << " datagram(s) from other hosts";
+    for (size_t i = 0; i < l->refused_senders.size(); ++i)
+      out << (i == 0 ? ": " : ", ") << l->refused_senders[i].first << " x" << l->refused_senders[i].second;
+    out << "\n";
+    if (!l->warning.empty()) out << "warning:    " << l->warning << "\n";
   }
   if (!side.stopped_by.empty()) out << "stopped by: " << side.stopped_by << "\n";
   if (const json& w = side.trial_window; w.is_object())

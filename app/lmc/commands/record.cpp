@@ -9,7 +9,9 @@
 // CaptureStop at the end, each sent --vicon-repeats times) goes to HOST:PORT. --fast runs the
 // simulator in simulated time, faster than real time. --vicon-listen PORT instead waits for
 // Vicon's own CaptureStart (its Name becomes the trial name unless --trial is given) and records
-// until CaptureStop. Ctrl-C stops the trial cleanly. At CaptureStart (sent or received) every
+// until CaptureStop; --vicon-host names the Vicon PC(s) whose messages are obeyed (others are
+// refused, said on stderr and counted in the sidecar) and, without --vicon-listen-address, picks
+// the interface that reaches them. Ctrl-C stops the trial cleanly. At CaptureStart (sent or received) every
 // device's latest frame goes into the sidecar's "vicon_alignment" (devices/README.md). A trial
 // ended by an error (Vicon refused, a device never streamed) keeps its rows and its sidecar says
 // "aborted" with the error; a write error (disk full, `ulimit -f`) says "failed". The trial itself
@@ -59,7 +61,8 @@ struct RecordOptions {
   double speed = 1.0;
   double stream_timeout_s = 10.0;
   int vicon_listen_port = 0;
-  std::string vicon_listen_address = "0.0.0.0";
+  std::string vicon_listen_address;  // empty: the interface towards --vicon-host, else every one
+  std::string vicon_hosts;
   std::string out_dir;
   bool force = false;
   bool quiet = false;
@@ -107,8 +110,10 @@ TrialEngineConfig engine_config(const RecordOptions& opt, const SourceSpec& spec
     vc.description = opt.vicon_description;
     c.vicon = vc;
   }
-  if (opt.vicon_listen_port > 0)
+  if (opt.vicon_listen_port > 0) {
     c.vicon_listen = std::make_pair(opt.vicon_listen_address, static_cast<std::uint16_t>(opt.vicon_listen_port));
+    c.vicon_senders = ViconSenders::parse(opt.vicon_hosts);
+  }
   return c;
 }
 
@@ -132,6 +137,13 @@ void print_summary(const TrialResult& r, const HubSnapshot& snap, const std::str
   }
   for (const auto& s : snap.unassigned_serials) std::cout << "  unassigned device " << s << " (not recorded)\n";
   std::cout << "  recording: " << r.paths.recording.string() << "\n  sidecar:   " << r.paths.sidecar.string() << "\n";
+  if (!r.listen_address.empty()) {
+    std::cout << "  vicon:     "
+              << (r.vicon_trigger_host.empty() ? "no CaptureStart obeyed" : "CaptureStart from " + r.vicon_trigger_host)
+              << " (listening on " << r.listen_address << ")";
+    if (r.vicon_refused > 0) std::cout << "; " << r.vicon_refused << " datagram(s) from other hosts refused";
+    std::cout << "\n";
+  }
   if (r.truth_seconds > 0 && std::filesystem::exists(r.paths.truth_trc))
     std::cout << "  truth:     " << r.paths.truth_trc.string() << " (" << r.truth_seconds << " s at " << truth_rate_hz
               << " Hz)\n";
@@ -144,6 +156,9 @@ void run_record(const RecordOptions& opt) {
   const SourceSpec spec = parse_source_spec(opt.backend);
   if (opt.fast && spec.backend == "leapc") throw lmc::Error("--fast applies to sim and replay only");
   if (opt.fast && listen) throw lmc::Error("--fast and --vicon-listen exclude each other (Vicon runs in real time)");
+  if (!listen && (!opt.vicon_hosts.empty() || !opt.vicon_listen_address.empty()))
+    throw lmc::Error(
+        "--vicon-host and --vicon-listen-address apply to --vicon-listen (who may trigger, where to listen)");
 
   SourceSettings settings;
   settings.layout = lmc::load_layout_or_preset(opt.layout);
@@ -215,7 +230,11 @@ void setup_record(CLI::App& app) {
   app.add_option("--vicon-description", opt->vicon_description, "Description field of CaptureStart");
   app.add_option("--vicon-listen", opt->vicon_listen_port,
                  "Wait for a Vicon CaptureStart on this UDP port, record until CaptureStop (or --seconds)");
-  app.add_option("--vicon-listen-address", opt->vicon_listen_address, "Address to listen on")->capture_default_str();
+  app.add_option("--vicon-host", opt->vicon_hosts,
+                 "With --vicon-listen: obey only these senders: IPv4 addresses, subnets (10.0.0.0/24) or host names, "
+                 "comma-separated (default: any sender, with a warning)");
+  app.add_option("--vicon-listen-address", opt->vicon_listen_address,
+                 "Address to listen on (default: the interface that reaches --vicon-host, else every interface)");
   app.add_option("--sim-config", opt->sim_config, "Simulator settings (JSON; every behaviour switchable)");
   app.add_option("--seed", opt->seed, "Simulator seed (overrides --sim-config)");
   app.add_flag("--fast", opt->fast, "Simulated time: run the simulator (or a replay) as fast as possible");

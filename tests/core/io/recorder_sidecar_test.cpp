@@ -173,6 +173,40 @@ TEST(RecorderSidecar, EachDevicesModelModeAndOtherSideHandsReadBackAndOldFilesSt
   EXPECT_FALSE(recorder_sidecar_to_json(was)["devices"][0].contains("model")) << "unknown model: left out";
 }
 
+TEST(RecorderSidecar, ViconListenRoundTripsAndIsAbsentFromOlderFiles) {
+  RecorderSidecar s;
+  s.trial = "t";
+  s.status = "completed";
+  EXPECT_FALSE(recorder_sidecar_to_json(s).contains("vicon_listen"));
+  EXPECT_FALSE(recorder_sidecar_from_json(recorder_sidecar_to_json(s), "old.json").vicon_listen.has_value());
+  SidecarViconListen l;
+  l.address = "0.0.0.0:30 on eth0";
+  l.binding = "listening on eth0 (10.0.0.2), the interface that reaches 10.0.0.5";
+  l.allowed_senders = "10.0.0.5";
+  l.trigger_host = "10.0.0.5";
+  l.refused_datagrams = 7;
+  l.refused_senders = {{"10.0.0.9", 4}, {"10.0.0.10", 3}};
+  s.vicon_listen = l;
+  const json j = recorder_sidecar_to_json(s);
+  EXPECT_EQ(j.at("vicon_listen").at("refused_senders"), json({{"10.0.0.9", 4}, {"10.0.0.10", 3}}));
+  EXPECT_FALSE(j.at("vicon_listen").contains("warning")) << "written only when there is one";
+  const RecorderSidecar back = recorder_sidecar_from_json(j, "mem.json");
+  ASSERT_TRUE(back.vicon_listen.has_value());
+  EXPECT_EQ(back.vicon_listen->trigger_host, "10.0.0.5");
+  EXPECT_EQ(back.vicon_listen->refused_datagrams, 7);
+  EXPECT_FALSE(back.vicon_listen->any_sender);
+  EXPECT_EQ(recorder_sidecar_to_json(back), j);
+  // A mistyped count names its JSON path.
+  json bad = j;
+  bad["vicon_listen"]["refused_datagrams"] = "seven";
+  try {
+    recorder_sidecar_from_json(bad, "LMC_t.session.json");
+    FAIL() << "expected an error";
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("/vicon_listen/refused_datagrams"), std::string::npos) << e.what();
+  }
+}
+
 TEST(RecorderSidecar, ASidecarLeftAtRecordingReadsAsIncomplete) {
   // What the recorder writes at start: no stop time, no devices yet; a crash leaves it so.
   const json j = {{"format", "lmc-session"},

@@ -1,0 +1,198 @@
+// The soak's parts (devices/soak/): the rig of any size, the count kept at the source, the fusion
+// in groups, the process statistics, and two short soaks in real time: one that loses nothing and
+// one whose disk fills, which must be reported as lost frames, a failed trial and a failing
+// verdict.
+#include <fcntl.h>
+#include <unistd.h>
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <chrono>
+#include <regex>
+#include <thread>
+
+#include "core/io/layout_json.h"
+#include "devices/soak/counting_source.h"
+#include "devices/soak/grouped_fusion.h"
+#include "devices/soak/process_stats.h"
+#include "devices/soak/soak_engine.h"
+#include "tests/support/reference_data.h"
+
+namespace lmc::devices {
+namespace soak_test {  // named: test files share unity batches
+
+using ::testing::HasSubstr;
+
+TEST(SoakLayout, RepeatsTheInitialLayoutForAnyNumberOfControllers) {
+  const Layout base = load_layout_or_preset("paper-initial");
+  const Layout l = soak_layout(12);
+  ASSERT_EQ(l.device_count(), 12);
+  EXPECT_EQ(l.devices[0].slot, "LMC1");
+  EXPECT_EQ(l.devices[11].slot, "LMC12");
+  EXPECT_EQ(l.devices[5].pose, base.devices[1].pose);
+  EXPECT_EQ(l.devices[11].pose, base.devices[3].pose);
+  EXPECT_FALSE(l.devices[4].serial.has_value());
+}
+
+// A source that delivers frames only when the test says so.
+class ManualSource final : public FrameSource {
+ public:
+  std::string backend_name() const override { return "manual"; }
+  void start(FrameSink& sink) override { sink_ = &sink; }
+  void stop() override {}
+  void frame(std::int64_t host_ns) {
+    SourceFrame f;
+    f.serial = "M-1";
+    f.host_receive_ns = host_ns;
+    sink_->on_frame(f);
+  }
+
+ private:
+  FrameSink* sink_ = nullptr;
+};
+
+class CollectingSink final : public FrameSink {
+ public:
+  void on_device_event(const DeviceEvent&) override {}
+  void on_frame(const SourceFrame& f) override { times.push_back(f.host_receive_ns); }
+  std::vector<std::int64_t> times;
+};
+
+TEST(CountingSource, PassesEveryFrameOnAndKeepsItsTimeUntilTaken) {
+  auto inner = std::make_unique<ManualSource>();
+  ManualSource* manual = inner.get();
+  CountingSource counting(std::move(inner));
+  CollectingSink sink;
+  counting.start(sink);
+  manual->frame(10);
+  manual->frame(20);
+  EXPECT_THAT(counting.take_frame_times(), ::testing::ElementsAre(10, 20));
+  manual->frame(30);
+  EXPECT_THAT(counting.take_frame_times(), ::testing::ElementsAre(30));
+  EXPECT_TRUE(counting.take_frame_times().empty());
+  EXPECT_EQ(counting.frames_produced(), 3);
+  EXPECT_THAT(sink.times, ::testing::ElementsAre(10, 20, 30));
+  EXPECT_EQ(counting.backend_name(), "manual");
+}
+
+TEST(GroupedFusion, ARigLargerThanALayoutIsFusedInGroupsOfEight) {
+  const Layout l = soak_layout(12);
+  GroupedFusion fusion(l);
+  EXPECT_EQ(fusion.groups(), 2);
+  HandFrame f;
+  f.hand_present = false;
+  f.timestamp_us = 1000;
+  for (const int id : {1, 8, 9, 12}) {
+    f.device_id = id;
+    fusion.tap(f);
+  }
+  f.device_id = 13;  // beyond the rig: ignored, not refused by a group
+  fusion.tap(f);
+  for (int i = 0; i < 400 && fusion.stats().frames_fused < 4; ++i)
+    std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  fusion.stop();
+  const LiveFusionStats s = fusion.stats();
+  EXPECT_EQ(s.frames_tapped, 4);
+  EXPECT_EQ(s.frames_fused, 4);
+  EXPECT_EQ(s.frames_refused, 0);  // slots 9 and 12 arrived as slots 1 and 4 of the second group
+  EXPECT_EQ(layout_slice(l, 8, 4).devices[0].slot, "LMC9");
+}
+
+TEST(ProcessStats, CountsAnOpenedFile) {
+  const ProcessStats before = read_process_stats();
+  EXPECT_GT(before.rss_mb, 0);
+  EXPECT_GE(before.threads, 1);
+  const int fd = ::open("/proc/self/statm", O_RDONLY | O_CLOEXEC);
+  ASSERT_GE(fd, 0);
+  const ProcessStats during = read_process_stats();
+  ::close(fd);
+  EXPECT_EQ(during.fds, before.fds + 1);
+  EXPECT_EQ(read_process_stats().fds, before.fds);
+}
+
+SoakConfig short_soak(const std::string& name) {
+  SoakConfig c;
+  c.seconds = 3.5;
+  c.devices = 2;
+  c.rate_hz = 60;
+  c.trial_seconds = 1.5;
+  c.output_dir = test::scratch_dir(name);
+  c.background = false;  // its pose set takes a while under the sanitizers; the ctest soak runs it
+  c.progress_every_s = 0;
+  return c;
+}
+
+TEST(Soak, AShortSessionLosesNothingAndEveryFrameProducedIsARow) {
+  const SoakReport r = run_soak(short_soak("soak_short"));
+  EXPECT_TRUE(r.ok()) << ::testing::PrintToString(r.problems);
+  ASSERT_GE(r.trials.size(), 2u);
+  for (const SoakTrial& t : r.trials) {
+    EXPECT_EQ(t.status, "completed") << t.name;
+    EXPECT_GT(t.produced, 0) << t.name;
+    EXPECT_EQ(t.written, t.produced) << t.name;
+    EXPECT_EQ(t.lost(), 0) << t.name;
+    EXPECT_FALSE(t.verdict.empty()) << t.name;
+  }
+  EXPECT_EQ(r.lost, 0);
+  EXPECT_EQ(r.written, r.produced);
+  EXPECT_GT(r.fusion.frames_tapped, 0);
+  EXPECT_FALSE(r.samples.empty());
+  // Files are removed once checked.
+  EXPECT_TRUE(std::filesystem::is_empty(r.config.output_dir));
+  const std::string line = soak_summary_line(r);
+  EXPECT_TRUE(std::regex_match(line, std::regex("soak: [0-9]+ frames from 2 controllers in [0-9]+ s, 0 lost, "
+                                                "RSS [0-9]+→[0-9]+ MB, fds [0-9]+→[0-9]+")))
+      << line;
+  EXPECT_EQ(soak_report_to_json(r).at("lost"), 0);
+}
+
+// Fails like a full disk after `limit` bytes of one file.
+class FullDiskSink final : public ByteSink {
+ public:
+  FullDiskSink(std::unique_ptr<ByteSink> inner, size_t limit) : inner_(std::move(inner)), left_(limit) {}
+  bool write(std::string_view data) override {
+    if (data.size() > left_) {
+      inner_->write(data.substr(0, left_));
+      left_ = 0;
+      error_ = "write: No space left on device";
+      return false;
+    }
+    left_ -= data.size();
+    return inner_->write(data);
+  }
+  bool sync() override { return inner_->sync(); }
+  bool close() override { return inner_->close(); }
+  std::string error() const override { return error_; }
+  std::uint64_t bytes_written() const override { return inner_->bytes_written(); }
+
+ private:
+  std::unique_ptr<ByteSink> inner_;
+  size_t left_;
+  std::string error_;
+};
+
+TEST(Soak, AWriterThatFailsIsReportedAsLostFramesAFailedTrialAndAFailingVerdict) {
+  SoakConfig c = short_soak("soak_full_disk");
+  c.open_sink = [](const std::filesystem::path& p) {
+    return std::make_unique<FullDiskSink>(open_file_sink(p), 16 * 1024);
+  };
+  const SoakReport r = run_soak(c);
+  EXPECT_FALSE(r.ok());
+  ASSERT_FALSE(r.trials.empty());
+  const SoakTrial& t = r.trials.front();
+  EXPECT_EQ(t.status, "failed");
+  EXPECT_GT(t.lost(), 0);
+  EXPECT_EQ(t.lost(), t.queue_dropped + t.writer_lost);
+  EXPECT_EQ(t.verdict, "fail");
+  EXPECT_THAT(t.reasons.front(), HasSubstr("No space left on device"));
+  ASSERT_FALSE(r.problems.empty());
+  EXPECT_THAT(r.problems.front(), HasSubstr("trial soak_0001: "));
+  EXPECT_THAT(r.problems.front(), HasSubstr("frames lost"));
+  EXPECT_THAT(r.problems.front(), HasSubstr("its sidecar says failed"));
+  EXPECT_GT(r.lost, 0);
+  EXPECT_THAT(soak_summary_line(r), HasSubstr(" " + std::to_string(r.lost) + " lost"));
+}
+
+}  // namespace soak_test
+}  // namespace lmc::devices
