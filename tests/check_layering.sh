@@ -23,6 +23,14 @@ bad_scene_gl=$(grep -RInE '#[[:space:]]*include[[:space:]]*([<"](imgui|backends/
   "$root/ui/scene" --include='*.h' --include='*.cpp' 2>/dev/null | grep -v '/ui/scene/gl_')
 bad_model_up=$(grep -RInE '#[[:space:]]*include[[:space:]]*"ui/(tabs|widgets|app|platform)/' "$root/ui/model" \
   --include='*.h' --include='*.cpp' 2>/dev/null)
+# A tab's panels read its state: the Record and Devices tabs reach the controllers only through
+# their state in ui/model.
+bad_tabs_devices=$(grep -RInE '#[[:space:]]*include[[:space:]]*"devices/' "$root/ui/tabs/record" "$root/ui/tabs/devices" \
+  --include='*.h' --include='*.cpp' 2>/dev/null)
+if [ -n "$bad_tabs_devices" ]; then
+  echo "ui/tabs/record and ui/tabs/devices must not include devices/ headers (their state exposes what panels need):"
+  echo "$bad_tabs_devices"; status=1
+fi
 if [ -n "$bad_scene" ]; then
   echo "ui/scene/ may include only core, devices and ui/scene (ui/model builds on it, not the other way):"; echo "$bad_scene"; status=1
 fi

@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <chrono>
+#include <memory>
 #include <thread>
 
 #include "core/io/layout_json.h"
@@ -11,9 +12,11 @@
 #include "devices/sim/sim_rig.h"
 #include "tests/support/reference_data.h"
 #include "tests/ui/headless_imgui.h"
+#include "ui/model/devices/devices_state.h"
 #include "ui/model/layout_actions.h"
 #include "ui/model/workbench_context.h"
 #include "ui/tabs/devices/devices_calibrate_panel.h"
+#include "ui/tabs/tab.h"
 
 namespace devices_calibrate_panel_test {
 
@@ -46,39 +49,42 @@ TEST(DevicesCalibratePanel, DrawsEveryStageAndCtrlZUndoesTheAppliedCalibration) 
   lmc::ui::DocumentLayoutEditor editor(doc);
   context.layout().set_editor(&editor);
   devices_calibrate_panel_test::LastStatus status;
-  lmc::ui::DevicesCalibratePanel panel(status, context);
+  auto state = std::make_shared<lmc::ui::DevicesState>(
+      context.rig(), context.layout(),
+      [&status](const std::string& text, bool is_error) { status.set_status(text, is_error); });
+  lmc::ui::DevicesCalibratePanel panel(state);
   lmc::ui::testing::HeadlessImGui ui;
   const auto body = [&] {
-    panel.update();
+    state->update();
     panel.draw();
   };
   ui.frames(2, body);
-  EXPECT_EQ(panel.step().stage(), lmc::ui::CalibrationStage::kIdle);
+  EXPECT_EQ(state->calibration().stage(), lmc::ui::CalibrationStage::kIdle);
 
-  ASSERT_EQ(panel.step().calibrate_file(file, layout, {}), "");
+  ASSERT_EQ(state->calibration().calibrate_file(file, layout, {}), "");
   const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(180);
-  while (panel.step().busy() && std::chrono::steady_clock::now() < deadline) {
+  while (state->calibration().busy() && std::chrono::steady_clock::now() < deadline) {
     ui.frame(body);
     std::this_thread::sleep_for(std::chrono::milliseconds(5));
   }
-  ASSERT_EQ(panel.step().stage(), lmc::ui::CalibrationStage::kResult) << panel.step().message();
+  ASSERT_EQ(state->calibration().stage(), lmc::ui::CalibrationStage::kResult) << state->calibration().message();
   ui.frames(2, body);
   EXPECT_NE(status.last.find("calibrated from Calibration"), std::string::npos) << status.last;
-  EXPECT_FALSE(panel.ghosts().empty()) << "the 3D view gets the comparison while the result waits";
+  EXPECT_FALSE(state->ghosts().empty()) << "the 3D view gets the comparison while the result waits";
 
-  ASSERT_TRUE(panel.step().apply(context.layout().editor()));
+  ASSERT_TRUE(state->calibration().apply(context.layout().editor()));
   ui.frames(2, body);
-  EXPECT_TRUE(panel.ghosts().empty());
+  EXPECT_TRUE(state->ghosts().empty());
   EXPECT_EQ(doc.head().layout.name, "paper-initial (calibrated)");
-  panel.undo_shortcut();
+  state->undo_calibration();
   ui.frames(2, body);
   EXPECT_EQ(doc.head().layout, layout);
-  EXPECT_EQ(panel.step().stage(), lmc::ui::CalibrationStage::kResult);
+  EXPECT_EQ(state->calibration().stage(), lmc::ui::CalibrationStage::kResult);
 
   // Applied, then another edit: Ctrl+Z in the Devices tab says where to undo it instead.
-  ASSERT_TRUE(panel.step().apply(context.layout().editor()));
+  ASSERT_TRUE(state->calibration().apply(context.layout().editor()));
   ASSERT_TRUE(lmc::ui::rename_slot(doc, 1, "LMC2b"));
-  panel.undo_shortcut();
+  state->undo_calibration();
   EXPECT_TRUE(status.error);
   EXPECT_NE(status.last.find("Layout tab"), std::string::npos) << status.last;
   EXPECT_EQ(doc.head().layout.devices[1].slot, "LMC2b");

@@ -5,6 +5,7 @@
 #include <imgui.h>
 
 #include <functional>
+#include <string>
 
 namespace lmc::ui::testing {
 
@@ -48,6 +49,19 @@ class HeadlessImGui {
   }
   void frames(int n, const std::function<void()>& body) {
     for (int i = 0; i < n; ++i) frame(body);
+  }
+  // One frame whose drawn text (labels, table cells, button captions) comes back as one string,
+  // through ImGui's own log: a test asks whether a line is on screen, not at which pixel.
+  std::string frame_text(const std::function<void()>& body) {
+    ImGui::SetClipboardText("");  // the log leaves the clipboard as it was when nothing is drawn
+    frame([&body] {
+      ImGui::LogToClipboard();
+      body();
+      ImGui::LogFinish();
+    });
+    std::string text = ImGui::GetClipboardText() != nullptr ? ImGui::GetClipboardText() : "";
+    while (!text.empty() && text.back() == '\n') text.pop_back();  // the log ends its last line
+    return text;
   }
 
   // ---- input (applied to the next frame) -----------------------------------------------------

@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <functional>
 #include <map>
+#include <memory>
 #include <thread>
 
 #include <gtest/gtest.h>
@@ -161,6 +162,33 @@ TEST(RecordSessionModel, StopInterruptsTheTrialKeepsItsRowsAndWaitsForTheOperato
   ASSERT_FALSE(m.state().trials[0].notes.empty());
   EXPECT_NE(m.state().trials[0].notes.back().find("accepted by the operator"), std::string::npos);
   m.close();
+  fs::remove_all(dir);
+}
+
+// The worker shares ownership of the folder, runner and live fusion it records through: a model
+// taken down while a trial records (the workbench closing mid-trial) ends the trial on the
+// worker, keeps its rows, and leaves a folder that opens again with the trial cut off and waiting.
+TEST(RecordSessionModel, TakenDownMidTrialTheFolderOpensAgainWithTheTrialWaiting) {
+  const fs::path dir = test::fresh_test_dir("record_model_teardown");
+  RecordSettings real_time = fast_sim();
+  real_time.fast = false;
+  {
+    auto m = std::make_unique<RecordSessionModel>();
+    ASSERT_EQ(m->create(dir, quick(), real_time), "");
+    clear_preflight(*m);
+    ASSERT_EQ(m->start_trial(), "");
+    poll_until(
+        *m, [&] { return m->live() && m->live()->recorder.frames_written > 20; }, 30);
+    ASSERT_TRUE(m->recording());
+  }  // destroyed while the worker records
+  EXPECT_TRUE(fs::file_size(dir / "LMC_Naiv_Static101.raw.txt") > 1000) << "the rows recorded so far are kept";
+  RecordSessionModel again;
+  ASSERT_EQ(again.open(dir, fast_sim()), "") << "the folder's lock went with the model";
+  ASSERT_FALSE(again.state().trials.empty());
+  EXPECT_NE(again.state().trials[0].status, session::TrialStatus::kAccepted);
+  EXPECT_FALSE(again.state().trials[0].attempts.empty()) << "the cut-off attempt is in the journal";
+  EXPECT_EQ(again.current_trial(), 0) << "and the trial waits to be recorded again";
+  again.close();
   fs::remove_all(dir);
 }
 

@@ -39,7 +39,7 @@ void SubjectScreen::frame(SubjectScreenLink& link, const std::string& png_path) 
     }
   }
   link.shown = window_ != nullptr;
-  if (window_) window_->frame([&link](const SubjectFonts& fonts) { draw_subject_screen(link.view, fonts); }, png_path);
+  if (window_) window_->frame([&link](const SubjectFonts& fonts) { SubjectScreenPanel(link).draw(fonts); }, png_path);
 }
 
 }  // namespace lmc::ui

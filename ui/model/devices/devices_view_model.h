@@ -1,6 +1,6 @@
 #pragma once
-// Non-drawing logic of the workbench's Devices tab (issues #5, #10): a client of the workbench's
-// live rig (LiveRig, shared with the Record tab). It turns hub snapshots into table rows and
+// Non-drawing logic of the workbench's Devices tab, held by its state (devices_state.h): a client
+// of the workbench's live rig (LiveRig, shared with the Record tab). It turns hub snapshots into table rows and
 // world-frame hands for the live view and drives the rig's test recording (the one TrialEngine on
 // a worker thread). No ImGui here, so tests drive it directly; the tab only draws, with the
 // shared scene camera (ui/scene/orbit_camera.h) and bones (ui/scene/scene_items.h).

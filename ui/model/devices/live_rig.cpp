@@ -60,7 +60,7 @@ std::string LiveRig::start(const std::string& backend, const devices::SimConfig&
     devices::SourceSettings settings;
     settings.layout = layout_;
     settings.sim = sim;
-    auto hub = std::make_unique<devices::DeviceHub>(layout_);
+    auto hub = std::make_shared<devices::DeviceHub>(layout_);
     hub->add_source(devices::make_source(spec, settings));
     try {
       fusion_ = std::make_unique<devices::LiveFusion>(hub->layout());
@@ -201,7 +201,7 @@ std::string LiveRig::start_trial(const std::filesystem::path& dir, const std::st
   }
   // Wall-clock time, no simulator truth: the workbench's simulator runs in real time and never
   // ends, so the trial's length is the operator's seconds (sim = null).
-  trial_.start(*hub_, nullptr, std::move(cfg));
+  trial_.start(hub_, nullptr, std::move(cfg));
   trial_reported_ = false;
   say("recording " + name + " to " + dir.string() + (name == trial ? std::string() : " (" + trial + " is taken)"));
   return {};

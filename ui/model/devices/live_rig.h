@@ -95,7 +95,7 @@ class LiveRig {
   bool layout_change_pending_ = false;
   Layout layout_;                                // the workbench's layout with this rig's serial bindings
   std::unique_ptr<devices::LiveFusion> fusion_;  // before hub_: outlives its registration on it
-  std::unique_ptr<devices::DeviceHub> hub_;
+  std::shared_ptr<devices::DeviceHub> hub_;      // shared with a test recording's worker
   std::string backend_;
   devices::SimConfig sim_config_;
   std::int64_t started_ns_ = 0;

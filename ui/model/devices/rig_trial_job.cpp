@@ -4,13 +4,15 @@
 
 namespace lmc::ui {
 
-void RigTrialJob::start(devices::DeviceHub& hub, devices::SimSource* sim, devices::TrialEngineConfig config) {
+void RigTrialJob::start(std::shared_ptr<devices::DeviceHub> hub, devices::SimSource* sim,
+                        devices::TrialEngineConfig config) {
   job_.cancel_and_join();
   snapshot_.reset();
   trial_ = config.trial;
   // The engine and its inputs live on the worker; only the channel is shared with the UI.
-  job_.start([&hub, sim, cfg = std::move(config)](std::stop_token stop, JobChannel<devices::TrialSnapshot>& channel) {
-    devices::TrialEngine engine(hub, sim, cfg);
+  job_.start([hub = std::move(hub), sim, cfg = std::move(config)](std::stop_token stop,
+                                                                  JobChannel<devices::TrialSnapshot>& channel) {
+    devices::TrialEngine engine(*hub, sim, cfg);
     return engine.run(stop, [&channel](const devices::TrialSnapshot& s) {
       channel.set_stage(devices::trial_phase_name(s.phase));
       channel.report(s);

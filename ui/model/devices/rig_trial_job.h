@@ -23,9 +23,10 @@ class RigTrialJob {
   RigTrialJob(const RigTrialJob&) = delete;
   RigTrialJob& operator=(const RigTrialJob&) = delete;
 
-  // `hub` (and `sim`, null unless the hub plays it and the trial should run in simulated time)
-  // must outlive the job: their owner calls cancel_and_join() before letting them go.
-  void start(devices::DeviceHub& hub, devices::SimSource* sim, devices::TrialEngineConfig config);
+  // The worker shares ownership of `hub`, so nothing it records from can go away under it
+  // whatever order its owner lets go in. `sim`: null unless the trial should run in simulated
+  // time, then a source the hub plays (the hub owns it, and the worker the hub).
+  void start(std::shared_ptr<devices::DeviceHub> hub, devices::SimSource* sim, devices::TrialEngineConfig config);
   void request_stop() { job_.cancel(); }
   void cancel_and_join() { job_.cancel_and_join(); }
 

@@ -21,7 +21,7 @@ RecordSessionModel::~RecordSessionModel() {
 }
 
 std::string RecordSessionModel::adopt(session::SessionFolder folder, const RecordSettings& settings, bool resumed) {
-  folder_ = std::make_unique<session::SessionFolder>(std::move(folder));
+  folder_ = std::make_shared<session::SessionFolder>(std::move(folder));
   try {
     devices::SessionRunOptions options;
     options.backend = settings.backend;
@@ -35,7 +35,7 @@ std::string RecordSessionModel::adopt(session::SessionFolder folder, const Recor
       if (options.external_hub == nullptr) throw Error("cannot use the " + settings.backend + " controllers: " + why);
       rig_borrowed_ = true;
     }
-    runner_ = std::make_unique<devices::SessionRunner>(*folder_, options);
+    runner_ = std::make_shared<devices::SessionRunner>(*folder_, options);
   } catch (const std::exception& e) {
     folder_.reset();  // releases the folder's lock
     give_back_rig();
@@ -144,10 +144,9 @@ std::string RecordSessionModel::start_preflight() {
   if (busy()) return "a trial or pre-flight is running";
   const int i = current_trial();
   if (i < 0) return "every trial is accepted";
-  devices::SessionRunner* runner = runner_.get();
   recording_trial_ = -1;
   job_handled_ = false;
-  job_.start([runner, i](std::stop_token stop, JobChannel<devices::TrialSnapshot>&) {
+  job_.start([folder = folder_, runner = runner_, i](std::stop_token stop, JobChannel<devices::TrialSnapshot>&) {
     RecordWorkResult r;
     r.preflight = runner->preflight(i, stop);
     return r;
@@ -178,9 +177,8 @@ std::string RecordSessionModel::start_trial() {
     return state_.trials[static_cast<size_t>(i)].plan.name + " is accepted; redo it (R) to record it again";
   if (runner_->needs_preflight(i)) return "run the pre-flight for this layout first (or override it with a reason)";
   if (runner_->needs_calibration(i)) return "calibrate this layout first (or keep its nominal layout, with a reason)";
-  devices::SessionRunner* runner = runner_.get();
   try {
-    live_fusion_ = std::make_unique<devices::LiveFusion>(runner_->layout(i));
+    live_fusion_ = std::make_shared<devices::LiveFusion>(runner_->layout(i));
   } catch (const std::exception& e) {
     return "the block's layout cannot be fused live: " + std::string(e.what());
   }
@@ -189,16 +187,15 @@ std::string RecordSessionModel::start_trial() {
   live_.reset();
   live_fused_.reset();
   fusion_stats_ = {};
-  abort_requested_ = false;
+  abort_requested_ = std::make_shared<std::atomic<bool>>(false);
   // Shown as recording at once; the folder's own state says so when the worker is done.
   state_.trials[static_cast<size_t>(i)].status = session::TrialStatus::kRecording;
   job_handled_ = false;
-  devices::LiveFusion* fusion = live_fusion_.get();
-  const std::atomic<bool>* aborting = &abort_requested_;
-  job_.start([runner, i, fusion, aborting](std::stop_token stop, JobChannel<devices::TrialSnapshot>& channel) {
+  job_.start([folder = folder_, runner = runner_, i, fusion = live_fusion_, aborting = abort_requested_](
+                 std::stop_token stop, JobChannel<devices::TrialSnapshot>& channel) {
     RecordWorkResult r;
     r.attempt = runner->run_trial(
-        i, stop, [&channel](const devices::TrialSnapshot& s) { channel.report(s); }, fusion,
+        i, stop, [&channel](const devices::TrialSnapshot& s) { channel.report(s); }, fusion.get(),
         [aborting] { return aborting->load() ? std::string(kAbortedByOperator) : std::string(); });
     return r;
   });
@@ -218,18 +215,18 @@ std::string RecordSessionModel::start_calibration() {
   if (i < 0) return "every trial is accepted";
   if (runner_->needs_preflight(i)) return "run the pre-flight for this layout first (or override it with a reason)";
   if (!runner_->needs_calibration(i)) return "this layout needs no calibration";
-  devices::SessionRunner* runner = runner_.get();
   pending_calibration_.reset();
   resume_notice_.clear();
   calibrating_ = true;
   live_.reset();
   job_handled_ = false;
-  job_.start([runner, i](std::stop_token stop, JobChannel<devices::TrialSnapshot>& channel) {
-    RecordWorkResult r;
-    r.calibration =
-        runner->calibrate_block(i, stop, [&channel](const devices::TrialSnapshot& s) { channel.report(s); });
-    return r;
-  });
+  job_.start(
+      [folder = folder_, runner = runner_, i](std::stop_token stop, JobChannel<devices::TrialSnapshot>& channel) {
+        RecordWorkResult r;
+        r.calibration =
+            runner->calibrate_block(i, stop, [&channel](const devices::TrialSnapshot& s) { channel.report(s); });
+        return r;
+      });
   return {};
 }
 
@@ -269,7 +266,7 @@ void RecordSessionModel::stop_trial() {
 
 std::string RecordSessionModel::abort_trial() {
   if (!recording()) return "no trial is recording";
-  abort_requested_ = true;
+  abort_requested_->store(true);
   job_.cancel();
   return {};
 }

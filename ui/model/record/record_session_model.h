@@ -7,7 +7,9 @@
 // Threading: while the worker runs, only it touches the runner and the folder (their journal
 // writes are not shared); the UI thread reads `state()`, a copy refreshed whenever the worker is
 // idle, and the latest trial snapshot the worker published. Every action refuses (returns a reason)
-// while the worker is busy, so the two never meet.
+// while the worker is busy, so the two never meet. The worker shares ownership of what it uses
+// (folder, runner, live fusion, abort flag), so nothing it holds can go away under it, whatever
+// order the model is taken down in; a lent hub stays the rig's, given back only after the join.
 //
 // The rules are the CLI's (`lmc session run`): a pass or warn verdict accepts the trial; a fail
 // waits for the operator, who redoes it or accepts it anyway (journaled); a redo keeps the earlier
@@ -149,8 +151,8 @@ class RecordSessionModel {
 
   LiveRig* rig_ = nullptr;
   bool rig_borrowed_ = false;
-  std::unique_ptr<session::SessionFolder> folder_;
-  std::unique_ptr<devices::SessionRunner> runner_;
+  std::shared_ptr<session::SessionFolder> folder_;  // shared with the worker, as are runner_, live_fusion_
+  std::shared_ptr<devices::SessionRunner> runner_;  // and abort_requested_
   std::filesystem::path dir_;
   session::SessionState state_;
   std::vector<std::string> recovered_;
@@ -162,10 +164,11 @@ class RecordSessionModel {
   std::vector<LiveHand> live_hands_;
   void write_pending_notes();
   void give_back_rig();
-  std::unique_ptr<devices::LiveFusion> live_fusion_;  // per trial, with its block's layout
+  std::shared_ptr<devices::LiveFusion> live_fusion_;  // per trial, with its block's layout
   std::optional<FusedHand> live_fused_;
   devices::LiveFusionStats fusion_stats_;
-  std::atomic<bool> abort_requested_{false};                // read by the worker when the trial stops
+  std::shared_ptr<std::atomic<bool>> abort_requested_ =
+      std::make_shared<std::atomic<bool>>(false);           // read by the worker when the trial stops
   std::vector<std::pair<int, std::string>> pending_notes_;  // typed while the worker held the folder
   std::string last_note_error_;
   std::optional<devices::PreflightReport> last_preflight_;

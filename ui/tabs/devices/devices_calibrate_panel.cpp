@@ -29,31 +29,8 @@ std::filesystem::path browse_start() {
 
 }  // namespace
 
-DevicesCalibratePanel::DevicesCalibratePanel(StatusSink& status, WorkbenchContext& context)
-    : status_(status), layout_(context.layout()), step_(context.rig()) {}
-
-void DevicesCalibratePanel::report(const std::string& text, bool is_error) {
-  status_.set_status("Calibrate: " + text, is_error);
-}
-
-void DevicesCalibratePanel::update() {
-  step_.update();
-  step_.notice_layout(layout_.editor() != nullptr ? layout_.editor()->committed() : layout_.get());
-  if (step_.message() != last_message_) {
-    last_message_ = step_.message();
-    if (!last_message_.empty()) report(last_message_, step_.message_is_error());
-  }
-  ghosts_ = step_.ghosts();
-}
-
-void DevicesCalibratePanel::undo_shortcut() {
-  if (step_.undo_apply(layout_.editor())) return;
-  if (step_.stage() == CalibrationStage::kApplied) {
-    report("the layout's last change is not the calibration: undo it in the Layout tab", true);
-  }
-}
-
 void DevicesCalibratePanel::draw() {
+  CalibrationStep& step = state_->calibration();
   ImGui::TextUnformatted("Calibrate");
   ImGui::SameLine();
   ImGui::TextDisabled("(?)");
@@ -63,7 +40,7 @@ void DevicesCalibratePanel::draw() {
         "Calibrate after setting up or moving the controllers, or when their hands drift apart here.\n"
         "Same as: lmc calibrate TRIAL [--vicon FILE [--anchor-to-layout]] --layout L -o OUT.json");
   }
-  switch (step_.stage()) {
+  switch (step.stage()) {
     case CalibrationStage::kIdle:
       draw_start();
       break;
@@ -81,19 +58,21 @@ void DevicesCalibratePanel::draw() {
     settings.vicon = vicon_;
     settings.anchor_to_layout = anchor_to_layout_;
     // A recorded trial is calibrated against the layout open now: the one it was recorded with.
-    const Layout& layout = layout_.get();
-    if (const std::string err = step_.calibrate_file(*chosen, layout, settings); !err.empty()) report(err, true);
+    const Layout& layout = state_->shared_layout().get();
+    if (const std::string err = step.calibrate_file(*chosen, layout, settings); !err.empty())
+      state_->report_calibration(err, true);
   }
   if (const auto chosen = save_browser_.draw()) {
-    if (const std::string err = step_.save(*chosen); !err.empty()) {
-      report(err, true);
+    if (const std::string err = step.save(*chosen); !err.empty()) {
+      state_->report_calibration(err, true);
     } else {
-      report("saved the calibrated layout to " + chosen->string(), false);
+      state_->report_calibration("saved the calibrated layout to " + chosen->string(), false);
     }
   }
 }
 
 void DevicesCalibratePanel::draw_start() {
+  CalibrationStep& step = state_->calibration();
   ImGui::SetNextItemWidth(-1);
   ImGui::InputTextWithHint("##vicon", "Vicon file of the trial (.trc), optional", vicon_, sizeof vicon_);
   if (ImGui::IsItemHovered())
@@ -112,8 +91,8 @@ void DevicesCalibratePanel::draw_start() {
   settings.vicon = vicon_;
   settings.anchor_to_layout = anchor_to_layout_;
   if (ImGui::Button("Record 5 s still hand")) {
-    const std::string err = step_.record(sessions_dir() / "calibration", settings);
-    if (!err.empty()) report(err, true);
+    const std::string err = step.record(sessions_dir() / "calibration", settings);
+    if (!err.empty()) state_->report_calibration(err, true);
   }
   if (ImGui::IsItemHovered()) {
     ImGui::SetTooltip("Hold one open hand still where the trials happen, seen by every controller, for 5 s");
@@ -126,52 +105,55 @@ void DevicesCalibratePanel::draw_start() {
     ImGui::SetTooltip(
         "An LMC recording of a still hand (e.g. LMC_Calibration.raw.txt), recorded with the layout open now");
   }
-  if (!step_.message().empty()) {
-    if (step_.message_is_error())
-      ImGui::TextColored(kWarningRed, "%s", step_.message().c_str());
+  if (!step.message().empty()) {
+    if (step.message_is_error())
+      ImGui::TextColored(kWarningRed, "%s", step.message().c_str());
     else
-      ImGui::TextDisabled("%s", step_.message().c_str());
+      ImGui::TextDisabled("%s", step.message().c_str());
   }
 }
 
 void DevicesCalibratePanel::draw_progress() {
-  const bool recording = step_.stage() == CalibrationStage::kRecording;
+  CalibrationStep& step = state_->calibration();
+  const bool recording = step.stage() == CalibrationStage::kRecording;
   const float cancel_w = ImGui::CalcTextSize("Cancel").x + ImGui::GetStyle().FramePadding.x * 2;
   const float bar_w = ImGui::GetContentRegionAvail().x - cancel_w - ImGui::GetStyle().ItemSpacing.x;
-  const std::string text = step_.activity();
-  ImGui::ProgressBar(recording ? static_cast<float>(step_.recording_fraction()) : 1.0F, ImVec2(bar_w, 0),
+  const std::string text = step.activity();
+  ImGui::ProgressBar(recording ? static_cast<float>(step.recording_fraction()) : 1.0F, ImVec2(bar_w, 0),
                      recording ? "" : "calibrating");
   ImGui::SameLine();
-  if (ImGui::Button("Cancel")) step_.cancel();
+  if (ImGui::Button("Cancel")) step.cancel();
   ImGui::TextWrapped("%s", text.c_str());
 }
 
 void DevicesCalibratePanel::draw_result() {
-  const auto outcome = step_.outcome();
+  CalibrationStep& step = state_->calibration();
+  CurrentLayout& shared = state_->shared_layout();
+  const auto outcome = step.outcome();
   if (!outcome) return;
   draw_calibration_result(outcome->trial, outcome->result, outcome->file_warnings, outcome->notes);
 
-  if (step_.stage() == CalibrationStage::kResult) {
+  if (step.stage() == CalibrationStage::kResult) {
     if (ImGui::Button("Apply")) {
-      const ActionResult a = step_.apply(layout_.editor());
-      if (!a) report(a.error, true);
+      const ActionResult a = step.apply(shared.editor());
+      if (!a) state_->report_calibration(a.error, true);
     }
     if (ImGui::IsItemHovered())
       ImGui::SetTooltip("Write the corrections into the layout as one undo step (Ctrl+Z undoes it)");
   } else {
-    ImGui::TextColored(kGood, "Applied to layout '%s'.", layout_.get().name.c_str());
-    if (ImGui::Button("Undo apply")) undo_shortcut();
+    ImGui::TextColored(kGood, "Applied to layout '%s'.", shared.get().name.c_str());
+    if (ImGui::Button("Undo apply")) state_->undo_calibration();
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("Ctrl+Z");
   }
   ImGui::SameLine();
   if (ImGui::Button("Save layout...")) {
-    save_browser_.open(FileBrowser::Mode::kSave, browse_start(), step_.suggested_file_name());
+    save_browser_.open(FileBrowser::Mode::kSave, browse_start(), step.suggested_file_name());
   }
   if (ImGui::IsItemHovered()) {
     ImGui::SetTooltip("Write the calibrated layout (its description names the trial and the date) to a file");
   }
   ImGui::SameLine();
-  if (ImGui::Button(step_.stage() == CalibrationStage::kResult ? "Discard" : "Done")) step_.discard();
+  if (ImGui::Button(step.stage() == CalibrationStage::kResult ? "Discard" : "Done")) step.discard();
 }
 
 }  // namespace lmc::ui

@@ -18,19 +18,21 @@ bool calibration_big_button(const char* label, ImVec4 colour) {
   return pressed;
 }
 
-void calibration_keep_nominal(TrialPanelInput& input, TrialPanelAction& action) {
+}  // namespace
+
+void RecordCalibrationPanel::keep_nominal(TrialPanelAction& action) {
   ImGui::PushItemWidth(360);
-  ImGui::InputTextWithHint("##nominal_reason", "why keep the nominal layout (journaled)", input.nominal_reason,
-                           sizeof input.nominal_reason);
+  ImGui::InputTextWithHint("##nominal_reason", "why keep the nominal layout (journaled)", nominal_reason_,
+                           sizeof nominal_reason_);
   ImGui::PopItemWidth();
   ImGui::SameLine();
   if (ImGui::Button("Keep nominal layout")) action = TrialPanelAction::kKeepNominal;
-  input.anchors.remember("keep_nominal");
+  anchors_.remember("keep_nominal");
 }
 
-}  // namespace
-
-TrialPanelAction draw_block_calibration(const RecordSessionModel& model, TrialPanelInput& input) {
+TrialPanelAction RecordCalibrationPanel::draw() {
+  anchors_.clear();  // only what this frame drew
+  const RecordSessionModel& model = *model_;
   TrialPanelAction action = TrialPanelAction::kNone;
   const auto& step = *model.state().protocol.calibration;
   const Layout* layout = model.current_layout();
@@ -64,22 +66,22 @@ TrialPanelAction draw_block_calibration(const RecordSessionModel& model, TrialPa
       ImGui::Spacing();
       if (calibration_big_button("Apply  [Enter]", ImVec4(0.15F, 0.55F, 0.25F, 1.0F)))
         action = TrialPanelAction::kApplyCalibration;
-      input.anchors.remember("apply_calibration");
+      anchors_.remember("apply_calibration");
       ImGui::SameLine();
     } else {
       ImGui::TextColored(ImVec4(1.0F, 0.38F, 0.33F, 1.0F), "%s: %s", pending->trial_name.c_str(),
                          pending->failure.c_str());
     }
     if (ImGui::Button("Calibrate again  [R]", ImVec2(200, 48))) action = TrialPanelAction::kCalibrate;
-    input.anchors.remember("calibrate_again");
-    calibration_keep_nominal(input, action);
+    anchors_.remember("calibrate_again");
+    keep_nominal(action);
     return action;
   }
   if (calibration_big_button("Record calibration  [Space]", ImVec4(0.2F, 0.4F, 0.7F, 1.0F)))
     action = TrialPanelAction::kCalibrate;
-  input.anchors.remember("calibrate");
+  anchors_.remember("calibrate");
   ImGui::Spacing();
-  calibration_keep_nominal(input, action);
+  keep_nominal(action);
   return action;
 }
 

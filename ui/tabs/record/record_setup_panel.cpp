@@ -25,9 +25,11 @@ void hint(const char* text) {
 
 }  // namespace
 
-SetupAction draw_record_setup_panel(RecordSetupForm& f, const SetupFormProblems& problems,
-                                    const std::vector<SessionListing>& sessions, const std::string& error,
-                                    WidgetAnchors* anchors) {
+SetupAction RecordSetupPanel::draw(const std::vector<SessionListing>& sessions, const std::string& error) {
+  anchors_.clear();  // only what this frame drew
+  RecordSetupForm& f = form_;
+  const SetupFormProblems problems = check_setup_form(f);
+  WidgetAnchors* anchors = &anchors_;
   SetupAction action = SetupAction::kNone;
   ImGui::TextUnformatted("New subject session");
   ImGui::Separator();

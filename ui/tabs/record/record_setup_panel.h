@@ -13,10 +13,19 @@ namespace lmc::ui {
 
 enum class SetupAction { kNone, kCreate, kOpen, kRefreshSessions };
 
-// `sessions`: the folders under the sessions directory; a click on one fills the folder to open.
-// `anchors` (tests) gets "create" and "open".
-SetupAction draw_record_setup_panel(RecordSetupForm& form, const SetupFormProblems& problems,
-                                    const std::vector<SessionListing>& sessions, const std::string& error,
-                                    WidgetAnchors* anchors = nullptr);
+class RecordSetupPanel {
+ public:
+  // `form`: the tab's, edited in place as the operator types.
+  explicit RecordSetupPanel(RecordSetupForm& form) : form_(form) {}
+  // `sessions`: the folders under the sessions directory; a click on one fills the folder to open.
+  // `error`: why the last create or open failed ("" = none).
+  SetupAction draw(const std::vector<SessionListing>& sessions, const std::string& error);
+  // "create" and "open" as drawn (headless tests click them).
+  const WidgetAnchors& anchors() const { return anchors_; }
+
+ private:
+  RecordSetupForm& form_;
+  WidgetAnchors anchors_;
+};
 
 }  // namespace lmc::ui

@@ -2,7 +2,8 @@
 // layout block, then trial after trial with the cue, a big red circle while recording, a strip per
 // controller, and a verdict with one-key redo. Keyboard: Space starts / stops, Enter accepts a
 // failed trial anyway, R redoes the last one, N adds a note, Esc aborts the running trial. All state and rules live in
-// RecordSessionModel (ui/model/record/); this file lays out the panels and maps keys and buttons to its actions.
+// RecordSessionModel (ui/model/record/); this file lays out the panels (one class per file beside it) and maps keys and
+// the buttons they report to its actions.
 #include "ui/tabs/record/record_tab.h"
 
 #include <imgui.h>
@@ -24,7 +25,7 @@
 #include "ui/tabs/record/record_setup_panel.h"
 #include "ui/tabs/record/record_trial_list_panel.h"
 #include "ui/tabs/record/record_trial_panel.h"
-#include "ui/tabs/record/subject_screen_controls.h"
+#include "ui/tabs/record/subject_screen_controls_panel.h"
 
 namespace lmc::ui {
 namespace {
@@ -38,7 +39,14 @@ SubjectStageTrace subject_stage_trace_from_environment() {
 class RecordTab final : public Tab {
  public:
   RecordTab(StatusSink& status, WorkbenchContext& context)
-      : status_(status), context_(context), model_(&context.rig()), subject_(context.subject_screen()) {
+      : status_(status),
+        context_(context),
+        model_(std::make_shared<RecordSessionModel>(&context.rig())),
+        subject_(context.subject_screen()),
+        setup_panel_(form_),
+        trial_list_panel_(model_),
+        trial_panel_(model_),
+        subject_controls_(subject_) {
     sessions_ = list_sessions(sessions_dir());
     if (auto& startup = context.record_startup()) {
       std::snprintf(form_.open_folder, sizeof form_.open_folder, "%s", startup->session.string().c_str());
@@ -55,23 +63,23 @@ class RecordTab final : public Tab {
       open();
       if (!error_.empty()) status_.set_status("Record: " + error_, true);
     }
-    if (const std::string line = model_.poll(); !line.empty()) {
+    if (const std::string line = model_->poll(); !line.empty()) {
       const bool bad = line.find(": fail") != std::string::npos || line.find("failed") != std::string::npos;
       status_.set_status(line, bad);
     }
     // The session is driven for the mid-trial and verdict pictures; later ones stage it by hand.
     if (capture_ && capture_stage_ != "record-resume") drive_capture();
     // The subject screen follows the session every frame, whichever tab is shown.
-    subject_.view = build_subject_view(subject_view_inputs(model_), ImGui::GetTime());
-    trace_.observe(subject_.view, model_.recording() && model_.live() ? model_.live()->recording_s : 0.0,
+    subject_.view = build_subject_view(subject_view_inputs(*model_), ImGui::GetTime());
+    trace_.observe(subject_.view, model_->recording() && model_->live() ? model_->live()->recording_s : 0.0,
                    ImGui::GetTime());
   }
 
   void draw() override {
-    if (!model_.has_session()) {
-      draw_subject_screen_controls(subject_);
+    if (!model_->has_session()) {
+      subject_controls_.draw();
       ImGui::BeginChild("setup", ImVec2(0, 0), false);
-      switch (draw_record_setup_panel(form_, check_setup_form(form_), sessions_, error_)) {
+      switch (setup_panel_.draw(sessions_, error_)) {
         case SetupAction::kCreate:
           create();
           break;
@@ -91,12 +99,11 @@ class RecordTab final : public Tab {
     if (!draw_header()) return;  // closed: nothing of the session is drawn this frame
     const float list_width = 260.0F;
     ImGui::BeginChild("trials", ImVec2(list_width, 0), true);
-    const int clicked = draw_record_trial_list(model_.state(), model_.current_trial(), model_.recording_trial());
-    if (clicked >= 0 && !model_.busy()) model_.select(clicked);
+    trial_list_panel_.draw();
     ImGui::EndChild();
     ImGui::SameLine();
     ImGui::BeginChild("trial", ImVec2(0, 0), true);
-    act(draw_record_trial_panel(model_, panel_));
+    act(trial_panel_.draw());
     ImGui::EndChild();
     keys();
   }
@@ -117,17 +124,17 @@ class RecordTab final : public Tab {
     if (name == "record-resume") {
       // The session opened again with its last trial to record once more: the resume notice,
       // the layout to set up and the pre-flight's checklist.
-      const std::filesystem::path dir = model_.dir();
-      const RecordSettings settings = model_.settings();
-      model_.redo(1);
-      model_.close();
-      error_ = model_.open(dir, settings);
-      if (error_.empty()) model_.start_preflight();
+      const std::filesystem::path dir = model_->dir();
+      const RecordSettings settings = model_->settings();
+      model_->redo(1);
+      model_->close();
+      error_ = model_->open(dir, settings);
+      if (error_.empty()) model_->start_preflight();
     }
     if (name == "record-calibration") {
       // A protocol that calibrates each block, on a simulated rig whose controllers stand up to
       // 25 mm and 3 degrees away from the layout: the residual table after the still-hand trial.
-      model_.close();
+      model_->close();
       const auto dir = capture_scratch_.fresh("record-calibration");
       form_.select_protocol("study-calibrated");
       RecordSettings settings = form_.settings();
@@ -135,10 +142,10 @@ class RecordTab final : public Tab {
       settings.countdown_s = 0;
       settings.sim.calibration_random_translation_mm = 25;
       settings.sim.calibration_random_rotation_deg = 3;
-      error_ = model_.create(dir, form_.spec(), settings);
+      error_ = model_->create(dir, form_.spec(), settings);
     }
     if (name == "record-setup") {
-      model_.close();
+      model_->close();
       capture_ = false;
       // A filled-in form, as an operator would leave it before pressing Create.
       std::snprintf(form_.subject, sizeof form_.subject, "%s", "S07");
@@ -153,13 +160,14 @@ class RecordTab final : public Tab {
   }
   bool busy_for_capture() const override {
     if (!capture_) return false;
-    const bool mid_second_trial = model_.last_attempt() && model_.recording() && model_.live() &&
-                                  model_.live()->recording_s > 1.5 && model_.live_fused();
+    const bool mid_second_trial = model_->last_attempt() && model_->recording() && model_->live() &&
+                                  model_->live()->recording_s > 1.5 && model_->live_fused();
     if (capture_stage_ == "record" || capture_stage_ == "record-trial") return !mid_second_trial;
-    if (capture_stage_ == "subject-screen") return !(model_.recording() && subject_.shown);
-    if (capture_stage_ == "record-verdict") return model_.busy() || !model_.finished();
-    if (capture_stage_ == "record-resume") return model_.busy() || (model_.has_session() && !model_.last_preflight());
-    if (capture_stage_ == "record-calibration") return model_.busy() || !model_.pending_calibration();
+    if (capture_stage_ == "subject-screen") return !(model_->recording() && subject_.shown);
+    if (capture_stage_ == "record-verdict") return model_->busy() || !model_->finished();
+    if (capture_stage_ == "record-resume")
+      return model_->busy() || (model_->has_session() && !model_->last_preflight());
+    if (capture_stage_ == "record-calibration") return model_->busy() || !model_->pending_calibration();
     return false;
   }
 
@@ -170,31 +178,31 @@ class RecordTab final : public Tab {
       return;
     }
     try {
-      error_ = model_.create(form_.new_session_dir(), form_.spec(), form_.settings());
+      error_ = model_->create(form_.new_session_dir(), form_.spec(), form_.settings());
     } catch (const std::exception& e) {
       error_ = e.what();
     }
-    if (error_.empty()) status_.set_status("Record: session created in " + model_.dir().string());
+    if (error_.empty()) status_.set_status("Record: session created in " + model_->dir().string());
   }
 
   void open() {
-    error_ = model_.open(form_.open_folder, form_.settings());
-    if (error_.empty()) status_.set_status("Record: session " + model_.dir().string() + " opened");
+    error_ = model_->open(form_.open_folder, form_.settings());
+    if (error_.empty()) status_.set_status("Record: session " + model_->dir().string() + " opened");
   }
 
   // Real controllers are opened once, by the workbench's live rig: the session records through
   // its hub (the Devices tab keeps showing the same controllers and the same fused hand).
   // False when the operator closed the session.
   bool draw_header() {
-    const auto& st = model_.state();
+    const auto& st = model_->state();
     ImGui::Text("Subject %s  ·  protocol %s  ·  %d of %zu trials accepted  ·  %s", st.subject().subject_id.c_str(),
-                st.protocol.name.c_str(), model_.accepted_count(), st.trials.size(), model_.dir().string().c_str());
+                st.protocol.name.c_str(), model_->accepted_count(), st.trials.size(), model_->dir().string().c_str());
     // Close only between trials; without it the key hint below must keep its own line.
-    if (!model_.busy()) {
+    if (!model_->busy()) {
       ImGui::SameLine(ImGui::GetWindowWidth() - 90);
       if (ImGui::SmallButton("Close")) {
-        const std::string closed = model_.dir().string();
-        model_.close();
+        const std::string closed = model_->dir().string();
+        model_->close();
         sessions_ = list_sessions(sessions_dir());
         status_.set_status("Record: session " + closed + " closed; everything recorded is kept in its folder");
         return false;
@@ -202,7 +210,7 @@ class RecordTab final : public Tab {
     }
     ImGui::TextDisabled("Space: start / stop   Esc: abort   Enter: accept a failed trial anyway   R: redo   N: note");
     ImGui::SameLine();
-    draw_subject_screen_controls(subject_);
+    subject_controls_.draw();
     return true;
   }
 
@@ -216,59 +224,60 @@ class RecordTab final : public Tab {
       case TrialPanelAction::kNone:
         return;
       case TrialPanelAction::kPreflight:
-        why = model_.start_preflight();
+        why = model_->start_preflight();
         break;
       case TrialPanelAction::kOverride:
-        why = model_.override_preflight(panel_.override_reason);
-        if (why.empty()) status_.set_status(std::string("pre-flight overridden: ") + panel_.override_reason);
+        why = model_->override_preflight(trial_panel_.override_reason());
+        if (why.empty()) status_.set_status(std::string("pre-flight overridden: ") + trial_panel_.override_reason());
         break;
       case TrialPanelAction::kStart:
-        why = model_.start_trial();
-        if (why.empty()) status_.set_status("Record: recording " + trial_name(model_.recording_trial()));
+        why = model_->start_trial();
+        if (why.empty()) status_.set_status("Record: recording " + trial_name(model_->recording_trial()));
         break;
       case TrialPanelAction::kStop:
-        model_.stop_trial();
+        model_->stop_trial();
         break;
       case TrialPanelAction::kCalibrate:
-        why = model_.start_calibration();
+        why = model_->start_calibration();
         break;
       case TrialPanelAction::kApplyCalibration:
-        why = model_.apply_calibration();
+        why = model_->apply_calibration();
         if (why.empty())
           status_.set_status("Record: calibration applied; the block records with the calibrated layout");
         break;
       case TrialPanelAction::kKeepNominal:
-        why = model_.keep_nominal_layout(panel_.nominal_reason);
-        if (why.empty()) status_.set_status(std::string("Record: nominal layout kept: ") + panel_.nominal_reason);
+        why = model_->keep_nominal_layout(trial_panel_.nominal_reason());
+        if (why.empty())
+          status_.set_status(std::string("Record: nominal layout kept: ") + trial_panel_.nominal_reason());
         break;
       case TrialPanelAction::kAbort:
-        why = model_.abort_trial();
+        why = model_->abort_trial();
         if (why.empty())
           status_.set_status("Record: trial aborted; it is kept, marked aborted, and waits for a redo (R)");
         break;
       case TrialPanelAction::kNote:
-        why = model_.add_note(panel_.note.text);
+        why = model_->add_note(trial_panel_.note().text());
         if (why.empty()) {
           status_.set_status(std::string("Record: note ") +
-                             (model_.busy() ? "kept; journaled when the trial ends: " : "journaled: ") +
-                             panel_.note.text);
-          panel_.note = {};
+                             (model_->busy() ? "kept; journaled when the trial ends: " : "journaled: ") +
+                             trial_panel_.note().text());
+          trial_panel_.note().clear();
         }
         break;
       case TrialPanelAction::kAccept:
-        why = model_.accept_last();
-        if (why.empty() && model_.last_attempt())
-          status_.set_status("Record: " + trial_name(model_.last_attempt()->trial) +
+        why = model_->accept_last();
+        if (why.empty() && model_->last_attempt())
+          status_.set_status("Record: " + trial_name(model_->last_attempt()->trial) +
                              " kept despite its verdict (journaled)");
         break;
       case TrialPanelAction::kRedo:
-        why = model_.redo();
+        why = model_->redo();
         if (why.empty())
-          status_.set_status("Record: " + trial_name(model_.current_trial()) +
+          status_.set_status("Record: " + trial_name(model_->current_trial()) +
                              " is recorded again next; the earlier attempt is kept under superseded/");
         break;
       case TrialPanelAction::kReviewSession:
-        context_.review_requests().push_back(model_.dir());
+        context_.review_requests().push_back(model_->dir());
         context_.tab_request() = "review";
         break;
     }
@@ -276,42 +285,42 @@ class RecordTab final : public Tab {
   }
 
   std::string trial_name(int i) const {
-    const auto& trials = model_.state().trials;
+    const auto& trials = model_->state().trials;
     return i >= 0 && i < static_cast<int>(trials.size()) ? trials[static_cast<size_t>(i)].plan.name
                                                          : std::string("the trial");
   }
 
   void keys() {
     // Typing a reason or a note must not start a trial.
-    if (ImGui::GetIO().WantTextInput || panel_.note.awaiting_keyboard(ImGui::GetTime())) return;
+    if (ImGui::GetIO().WantTextInput || trial_panel_.note().awaiting_keyboard(ImGui::GetTime())) return;
     // N first: a Space or an R typed into the note in the same frame must not act.
     if (ImGui::IsKeyPressed('N', false)) {
-      open_note(panel_.note, true);
+      trial_panel_.note().open(true);
       return;
     }
     subject_screen_key();
     if (ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Space), false)) {
-      if (model_.recording() || model_.calibrating())
+      if (model_->recording() || model_->calibrating())
         act(TrialPanelAction::kStop);
-      else if (model_.needs_preflight())
+      else if (model_->needs_preflight())
         act(TrialPanelAction::kPreflight);
-      else if (model_.needs_calibration() && !model_.pending_calibration())
+      else if (model_->needs_calibration() && !model_->pending_calibration())
         act(TrialPanelAction::kCalibrate);
-      else if (!model_.pending_calibration())
+      else if (!model_->pending_calibration())
         act(TrialPanelAction::kStart);
     }
-    if (ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Escape), false) && model_.recording())
+    if (ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Escape), false) && model_->recording())
       act(TrialPanelAction::kAbort);
-    if (model_.busy()) return;
-    if (const auto& c = model_.pending_calibration()) {
+    if (model_->busy()) return;
+    if (const auto& c = model_->pending_calibration()) {
       // A calibration waiting for the operator: Enter applies it, R records it again.
       if (ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Enter), false) && c->ok())
         act(TrialPanelAction::kApplyCalibration);
       if (ImGui::IsKeyPressed('R', false)) act(TrialPanelAction::kCalibrate);
       return;
     }
-    if (ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Enter), false) && model_.last_attempt() &&
-        model_.last_attempt()->verdict() == "fail")
+    if (ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Enter), false) && model_->last_attempt() &&
+        model_->last_attempt()->verdict() == "fail")
       act(TrialPanelAction::kAccept);
     // GLFW key codes: letters are their ASCII codes (ImGui 1.86 has no ImGuiKey_R).
     if (ImGui::IsKeyPressed('R', false)) act(TrialPanelAction::kRedo);
@@ -321,7 +330,7 @@ class RecordTab final : public Tab {
   // is recorded to its verdict, then the picture is taken 1.5 s into the second, so it shows the
   // trial list with a verdict, the cue, the red circle, the controller strips and the fused hand.
   void drive_capture() {
-    if (!model_.has_session()) {
+    if (!model_->has_session()) {
       const auto dir = capture_scratch_.fresh("record");
       form_.select_protocol("quick");
       RecordSettings settings = form_.settings();
@@ -331,34 +340,37 @@ class RecordTab final : public Tab {
       // Trials of 6 s instead of the quick protocol's 3: the pictures taken mid-trial (the tab,
       // the subject screen) all fall inside one trial even at software rendering's frame rate.
       spec.duration_override_s = 6.0;
-      error_ = model_.create(dir, spec, settings);
+      error_ = model_->create(dir, spec, settings);
       return;
     }
-    if (model_.busy()) return;
-    if (model_.needs_preflight()) {
-      if (!model_.last_preflight())
-        model_.start_preflight();
+    if (model_->busy()) return;
+    if (model_->needs_preflight()) {
+      if (!model_->last_preflight())
+        model_->start_preflight();
       else
-        model_.override_preflight("screenshot");
+        model_->override_preflight("screenshot");
       return;
     }
     // A block calibration (protocols with the step) is recorded, then left for the picture.
-    if (model_.pending_calibration()) return;
-    if (model_.needs_calibration()) {
-      model_.start_calibration();
+    if (model_->pending_calibration()) return;
+    if (model_->needs_calibration()) {
+      model_->start_calibration();
       return;
     }
-    if (!model_.finished()) model_.start_trial();
+    if (!model_->finished()) model_->start_trial();
   }
 
   StatusSink& status_;
   WorkbenchContext& context_;
-  CaptureScratch capture_scratch_;  // before model_: removed after its session has closed
-  RecordSessionModel model_;
+  CaptureScratch capture_scratch_;             // before model_ and the panels: removed after its session has closed
+  std::shared_ptr<RecordSessionModel> model_;  // the panels share it
   RecordSetupForm form_;
   std::vector<SessionListing> sessions_;  // for "resume": the sessions folder's contents
   SubjectScreenLink& subject_;
-  TrialPanelInput panel_;
+  RecordSetupPanel setup_panel_;
+  RecordTrialListPanel trial_list_panel_;
+  RecordTrialPanel trial_panel_;
+  SubjectScreenControlsPanel subject_controls_;
   std::string error_;
   bool capture_ = false;
   std::string capture_stage_;

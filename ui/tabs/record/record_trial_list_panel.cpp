@@ -8,7 +8,12 @@
 
 namespace lmc::ui {
 
-int draw_record_trial_list(const session::SessionState& state, int current, int recording) {
+void RecordTrialListPanel::draw() {
+  anchors_.clear();  // only what this frame drew
+  RecordSessionModel& model = *model_;
+  const session::SessionState& state = model.state();
+  const int current = model.current_trial();
+  const int recording = model.recording_trial();
   int clicked = -1;
   // Grouped as the protocol records them: layout, then palm pose and motion (a sub-heading each time
   // either changes, so a counterbalanced order still reads correctly).
@@ -43,11 +48,12 @@ int draw_record_trial_list(const session::SessionState& state, int current, int 
     ImGui::SameLine();
     const std::string label = t.plan.name + (t.attempts.size() > 1 ? "  ×" + std::to_string(t.attempts.size()) : "");
     if (ImGui::Selectable(label.c_str(), t.plan.index == current)) clicked = t.plan.index;
+    anchors_.remember("trial." + std::to_string(t.plan.index));
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s, %zu attempt(s)", look.word, t.attempts.size());
     if (t.plan.index == current && ImGui::IsWindowAppearing()) ImGui::SetScrollHereY(0.3F);
     ImGui::PopID();
   }
-  return clicked;
+  if (clicked >= 0 && !model.busy()) model.select(clicked);
 }
 
 }  // namespace lmc::ui

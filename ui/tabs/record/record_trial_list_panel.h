@@ -1,11 +1,24 @@
 #pragma once
 // The whole protocol as a list: grouped by layout block, one row per trial with its
-// status (pending, recording, pass, warn, fail, interrupted, accepted) and attempt count. Returns
-// the trial clicked this frame (-1: none).
-#include "core/session/session_state.h"
+// status (pending, recording, pass, warn, fail, interrupted, accepted) and attempt count. A click
+// on a row selects that trial for the next Start or redo (not while a trial records).
+#include <memory>
+
+#include "ui/model/record/record_session_model.h"
+#include "ui/widgets/widget_anchors.h"
 
 namespace lmc::ui {
 
-int draw_record_trial_list(const session::SessionState& state, int current, int recording);
+class RecordTrialListPanel {
+ public:
+  explicit RecordTrialListPanel(std::shared_ptr<RecordSessionModel> model) : model_(std::move(model)) {}
+  void draw();
+  // "trial.N" for the row of trial N as drawn (headless tests click them).
+  const WidgetAnchors& anchors() const { return anchors_; }
+
+ private:
+  std::shared_ptr<RecordSessionModel> model_;
+  WidgetAnchors anchors_;
+};
 
 }  // namespace lmc::ui

@@ -7,9 +7,7 @@
 
 #include "ui/model/devices/fusion_readout.h"
 #include "ui/model/record/motion_pictogram.h"
-#include "ui/tabs/record/record_calibration_panel.h"
 #include "ui/tabs/record/record_colours.h"
-#include "ui/tabs/record/record_device_strips.h"
 #include "ui/widgets/hand_pictogram.h"
 #include "ui/widgets/live_hands_view.h"
 
@@ -55,7 +53,13 @@ void preflight_checklist(const devices::PreflightReport& report) {
   ImGui::Spacing();
 }
 
-TrialPanelAction preflight_section(const RecordSessionModel& model, TrialPanelInput& input) {
+}  // namespace
+
+RecordTrialPanel::RecordTrialPanel(std::shared_ptr<const RecordSessionModel> model)
+    : model_(model), note_(model), verdict_(model, note_), calibration_(model), strips_(model) {}
+
+TrialPanelAction RecordTrialPanel::preflight_section() {
+  const RecordSessionModel& model = *model_;
   TrialPanelAction action = TrialPanelAction::kNone;
   ImGui::TextWrapped("%s", model.block_instructions().c_str());
   ImGui::Spacing();
@@ -66,26 +70,25 @@ TrialPanelAction preflight_section(const RecordSessionModel& model, TrialPanelIn
   }
   // One action per key: Space runs the pre-flight here; Start appears once the block is cleared.
   if (big_button("Run pre-flight  [Space]", ImVec4(0.2F, 0.4F, 0.7F, 1.0F))) action = TrialPanelAction::kPreflight;
-  input.anchors.remember("preflight");
+  anchors_.remember("preflight");
   ImGui::TextDisabled(
       "Start [Space] comes when every pre-flight line is green, or after an override with a typed "
       "reason (journaled).");
   if (model.last_preflight() && !model.last_preflight()->ok()) {
     ImGui::Spacing();
     ImGui::PushItemWidth(360);
-    ImGui::InputTextWithHint("##reason", "why go ahead anyway (journaled)", input.override_reason,
-                             sizeof input.override_reason);
+    ImGui::InputTextWithHint("##reason", "why go ahead anyway (journaled)", override_reason_, sizeof override_reason_);
     ImGui::PopItemWidth();
     ImGui::SameLine();
     if (ImGui::Button("Override")) action = TrialPanelAction::kOverride;
-    input.anchors.remember("override");
+    anchors_.remember("override");
   }
   return action;
 }
 
 // The verdict (record_verdict_panel.h) and the note line, as this panel's actions.
-void verdict_section(const RecordSessionModel& model, TrialPanelInput& input, TrialPanelAction& action) {
-  switch (draw_record_verdict_panel(model, input.note)) {
+void RecordTrialPanel::verdict_section(TrialPanelAction& action) {
+  switch (verdict_.draw()) {
     case VerdictAction::kAccept:
       action = TrialPanelAction::kAccept;
       break;
@@ -95,11 +98,12 @@ void verdict_section(const RecordSessionModel& model, TrialPanelInput& input, Tr
     case VerdictAction::kNone:
       break;
   }
-  if (draw_note_line(model, input.note)) action = TrialPanelAction::kNote;
+  if (note_.draw()) action = TrialPanelAction::kNote;
 }
 
 // The block's controllers where the layout puts them and, while recording, each one's hand.
-void live_view(const RecordSessionModel& model, TrialPanelInput& input) {
+void RecordTrialPanel::live_view() {
+  const RecordSessionModel& model = *model_;
   const Layout* layout = model.current_layout();
   if (!layout) return;
   ImGui::Spacing();
@@ -115,16 +119,16 @@ void live_view(const RecordSessionModel& model, TrialPanelInput& input) {
       ImGui::TextColored(kRed, "  %d finger(s) seen by no controller", unseen);
     }
   }
-  draw_live_hands_view("record_live", input.camera, *layout, model.live_hands(),
+  draw_live_hands_view("record_live", camera_, *layout, model.live_hands(),
                        "Layout '" + layout->name +
                            "' in the world frame (mm): each controller's hand in its colour, "
                            "the fused hand thick.",
                        fused ? &*fused : nullptr);
 }
 
-}  // namespace
-
-TrialPanelAction draw_record_trial_panel(const RecordSessionModel& model, TrialPanelInput& input) {
+TrialPanelAction RecordTrialPanel::draw() {
+  anchors_.clear();  // only what this frame drew
+  const RecordSessionModel& model = *model_;
   TrialPanelAction action = TrialPanelAction::kNone;
   const auto& state = model.state();
   // The plain notice of a resumed session, until the first attempt of this run begins.
@@ -139,7 +143,7 @@ TrialPanelAction draw_record_trial_panel(const RecordSessionModel& model, TrialP
     if (ImGui::Button("Review this session")) action = TrialPanelAction::kReviewSession;
     ImGui::SameLine();
     ImGui::TextDisabled("opens it in the Review tab: every trial against Vicon, agreement, figures");
-    verdict_section(model, input, action);
+    verdict_section(action);
     return action;
   }
   const auto& trial = state.trials.at(static_cast<size_t>(i));
@@ -200,22 +204,22 @@ TrialPanelAction draw_record_trial_panel(const RecordSessionModel& model, TrialP
     ImGui::SameLine();
     if (ImGui::Button("Abort  [Esc]", ImVec2(160, 52))) action = TrialPanelAction::kAbort;
     ImGui::SameLine();
-    if (ImGui::Button("Note  [N]", ImVec2(120, 52))) open_note(input.note);
-    if (draw_note_line(model, input.note)) action = TrialPanelAction::kNote;
-    if (live) draw_record_device_strips(*live);
-    live_view(model, input);
+    if (ImGui::Button("Note  [N]", ImVec2(120, 52))) note_.open();
+    if (note_.draw()) action = TrialPanelAction::kNote;
+    strips_.draw();
+    live_view();
     return action;
   }
 
   if (model.needs_preflight()) {
-    const TrialPanelAction a = preflight_section(model, input);
-    verdict_section(model, input, action);
-    live_view(model, input);
+    const TrialPanelAction a = preflight_section();
+    verdict_section(action);
+    live_view();
     return a != TrialPanelAction::kNone ? a : action;
   }
   if (model.needs_calibration() || model.calibrating() || model.pending_calibration()) {
-    action = draw_block_calibration(model, input);
-    live_view(model, input);
+    action = calibration_.draw();
+    live_view();
     return action;
   }
   // The checklist that enabled Start stays in view until the block's first trial of this run.
@@ -223,12 +227,12 @@ TrialPanelAction draw_record_trial_panel(const RecordSessionModel& model, TrialP
     preflight_checklist(*report);
   if (!model.busy()) {
     if (big_button("Start  [Space]", ImVec4(0.15F, 0.55F, 0.25F, 1.0F))) action = TrialPanelAction::kStart;
-    input.anchors.remember("start");
+    anchors_.remember("start");
   }
   if (trial.attempts.size() > 0 && trial.status != session::TrialStatus::kAccepted)
     ImGui::TextDisabled("attempt %zu of this trial", trial.attempts.size() + 1);
-  verdict_section(model, input, action);
-  live_view(model, input);
+  verdict_section(action);
+  live_view();
   return action;
 }
 

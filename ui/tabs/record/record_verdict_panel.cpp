@@ -76,7 +76,9 @@ void timeline(const session::QualityTimeline& t) {
 
 }  // namespace verdict_panel
 
-VerdictAction draw_record_verdict_panel(const RecordSessionModel& model, NoteInput& note) {
+VerdictAction RecordVerdictPanel::draw() {
+  anchors_.clear();  // only what this frame drew
+  const RecordSessionModel& model = *model_;
   VerdictAction action = VerdictAction::kNone;
   const auto& a = model.last_attempt();
   if (!a) return action;
@@ -94,12 +96,17 @@ VerdictAction draw_record_verdict_panel(const RecordSessionModel& model, NoteInp
   }
   const bool accepted = trial.status == session::TrialStatus::kAccepted;
   if (!model.busy()) {
-    if (!accepted && ImGui::Button("Accept anyway  [Enter]")) action = VerdictAction::kAccept;
-    if (!accepted) ImGui::SameLine();
+    if (!accepted) {
+      if (ImGui::Button("Accept anyway  [Enter]")) action = VerdictAction::kAccept;
+      anchors_.remember("accept");
+      ImGui::SameLine();
+    }
     if (ImGui::Button("Redo this trial  [R]")) action = VerdictAction::kRedo;
+    anchors_.remember("redo");
     ImGui::SameLine();
   }
-  if (ImGui::Button("Note  [N]")) open_note(note);
+  if (ImGui::Button("Note  [N]")) note_.open();
+  anchors_.remember("note");
   if (accepted && !model.busy()) {
     ImGui::SameLine();
     ImGui::TextDisabled("accepted; R records it again and keeps this attempt under superseded/");
@@ -110,81 +117,6 @@ VerdictAction draw_record_verdict_panel(const RecordSessionModel& model, NoteInp
       for (const auto& n : attempt.notes) ImGui::TextDisabled("note: %s", n.c_str());
   if (a->quality) verdict_panel::timeline(a->quality->timeline);
   return action;
-}
-
-void open_note(NoteInput& note, bool by_key) {
-  if (note.open) {
-    note.focus = !note.took_keyboard;
-    return;
-  }
-  note = NoteInput{};
-  note.open = true;
-  note.focus = true;
-  note.opened_frame = ImGui::GetFrameCount();
-  note.opened_time = ImGui::GetTime();
-  if (by_key) {
-    // A fast typist's first letters can arrive in the same frame as the N: keep what follows it.
-    const ImVector<ImWchar>& queue = ImGui::GetIO().InputQueueCharacters;
-    bool after_n = false;
-    for (ImWchar c : queue) {
-      if (after_n)
-        note.held.push_back(c);
-      else
-        after_n = c == 'n' || c == 'N';
-    }
-  }
-}
-
-bool draw_note_line(const RecordSessionModel& model, NoteInput& note) {
-  bool submitted = false;
-  if (note.open) {
-    if (note.focus) {
-      ImGui::SetKeyboardFocusHere();
-      note.focus = false;
-    }
-    // Characters typed after N but before the field has the keyboard (the N's own 'n' arrives in
-    // the frame that opened the line and is left out); an Enter or Esc among them is kept too.
-    const bool early = !note.took_keyboard && ImGui::GetFrameCount() > note.opened_frame;
-    ImVector<ImWchar>& queue = ImGui::GetIO().InputQueueCharacters;
-    if (early) {
-      note.held.insert(note.held.end(), queue.begin(), queue.end());
-      queue.resize(0);
-      if (ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Enter), false)) note.submit_when_typed = true;
-    } else if (note.took_keyboard && !note.held.empty()) {
-      ImVector<ImWchar> typed;
-      for (ImWchar c : note.held) typed.push_back(c);
-      for (ImWchar c : queue) typed.push_back(c);
-      queue.swap(typed);
-      note.held.clear();
-    }
-    ImGui::PushItemWidth(420);
-    const int target = model.note_trial();
-    const std::string hint =
-        "note on " +
-        (target >= 0 ? model.state().trials.at(static_cast<size_t>(target)).plan.name : std::string("the trial")) +
-        ": Enter keeps it, Esc drops it";
-    const bool enter = ImGui::InputTextWithHint("##note", hint.c_str(), note.text, sizeof note.text,
-                                                ImGuiInputTextFlags_EnterReturnsTrue);
-    const bool active = ImGui::IsItemActive();
-    const bool escape = ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Escape), false);
-    if (active) note.took_keyboard = true;
-    if (enter) {
-      // An Enter in the very frame the field took the keyboard, with held letters not yet typed
-      // into it, waits for them.
-      if (note.held.empty())
-        submitted = true;
-      else
-        note.submit_when_typed = true;
-    } else if (note.submit_when_typed && note.took_keyboard && note.held.empty()) {
-      submitted = true;
-      note.submit_when_typed = false;
-    }
-    if (escape && (active || ImGui::IsItemDeactivated() || early)) {
-      note = NoteInput{};
-    }
-    ImGui::PopItemWidth();
-  }
-  return submitted;
 }
 
 }  // namespace lmc::ui

@@ -21,7 +21,8 @@ float text_height(ImFont* font, float scale, const std::string& text, float wrap
 
 }  // namespace
 
-void draw_subject_screen(const SubjectView& v, const SubjectFonts& fonts) {
+void SubjectScreenPanel::draw(const SubjectFonts& fonts) {
+  const SubjectView& v = link_.view;
   const ImVec2 size = ImGui::GetIO().DisplaySize;
   ImGui::SetNextWindowPos(ImVec2(0, 0));
   ImGui::SetNextWindowSize(size);

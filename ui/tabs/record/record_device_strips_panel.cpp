@@ -1,4 +1,4 @@
-#include "ui/tabs/record/record_device_strips.h"
+#include "ui/tabs/record/record_device_strips_panel.h"
 
 #include <imgui.h>
 
@@ -34,7 +34,9 @@ void vicon_line(const devices::TrialSnapshot& live) {
 
 }  // namespace device_strips
 
-void draw_record_device_strips(const devices::TrialSnapshot& live) {
+void RecordDeviceStripsPanel::draw() {
+  if (!model_->live()) return;
+  const devices::TrialSnapshot& live = *model_->live();
   ImGui::Text("Frames written %lld", static_cast<long long>(live.recorder.frames_written));
   ImGui::SameLine();
   ImGui::TextDisabled("  ·  ");

@@ -1,11 +1,14 @@
-#include "ui/tabs/record/subject_screen_controls.h"
+#include "ui/tabs/record/subject_screen_controls_panel.h"
 
 #include <imgui.h>
 
 namespace lmc::ui {
 
-void draw_subject_screen_controls(SubjectScreenLink& link) {
+void SubjectScreenControlsPanel::draw() {
+  anchors_.clear();  // only what this frame drew
+  SubjectScreenLink& link = link_;
   if (ImGui::SmallButton(link.open ? "Close subject screen (F2)" : "Subject screen (F2)")) link.open = !link.open;
+  anchors_.remember("toggle");
   ImGui::SameLine();
   const int n = static_cast<int>(link.monitors.size());
   const int shown_monitor = link.monitor >= 0 && link.monitor < n ? link.monitor : n - 1;

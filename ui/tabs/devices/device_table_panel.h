@@ -1,0 +1,20 @@
+#pragma once
+// Every controller the rig sees, one row each: its colour, serial, slot (assigned by dropdown),
+// backend, model, tracking mode, status, rate, hand present, latest frame age, frames and drops;
+// under the table, each controller the layout leaves blind to the hand, named with why.
+#include <memory>
+
+#include "ui/model/devices/devices_state.h"
+
+namespace lmc::ui {
+
+class DeviceTablePanel {
+ public:
+  explicit DeviceTablePanel(std::shared_ptr<DevicesState> state) : state_(std::move(state)) {}
+  void draw();
+
+ private:
+  std::shared_ptr<DevicesState> state_;
+};
+
+}  // namespace lmc::ui

@@ -1,0 +1,31 @@
+#pragma once
+// The Devices tab's top line: the backend (sim, leapc when built with the SDK, replay of a
+// recording), the layout the rig runs (the Layout tab's), Save with serials, and Start / Stop with
+// how long the rig has run.
+#include <memory>
+#include <string>
+
+#include "ui/model/devices/devices_state.h"
+#include "ui/widgets/file_browser.h"
+#include "ui/widgets/widget_anchors.h"
+
+namespace lmc::ui {
+
+class DevicesToolbarPanel {
+ public:
+  explicit DevicesToolbarPanel(std::shared_ptr<DevicesState> state) : state_(std::move(state)) {}
+  void draw();
+  // "start" or "stop" as drawn (headless tests click them).
+  const WidgetAnchors& anchors() const { return anchors_; }
+
+ private:
+  std::string backend_spec() const;
+
+  std::shared_ptr<DevicesState> state_;
+  int backend_choice_ = 0;
+  char replay_[512] = "";
+  FileBrowser save_browser_{"Save layout with serials", ".json"};
+  WidgetAnchors anchors_;
+};
+
+}  // namespace lmc::ui

@@ -1,0 +1,21 @@
+#pragma once
+// While a trial records: frames written, the Vicon trigger's state (packets sent, or in listen
+// mode whether CaptureStart / CaptureStop came) and a strip per controller (rate, hand present,
+// frame age), from the session model's latest trial snapshot. Draws only; nothing before the
+// first snapshot.
+#include <memory>
+
+#include "ui/model/record/record_session_model.h"
+
+namespace lmc::ui {
+
+class RecordDeviceStripsPanel {
+ public:
+  explicit RecordDeviceStripsPanel(std::shared_ptr<const RecordSessionModel> model) : model_(std::move(model)) {}
+  void draw();
+
+ private:
+  std::shared_ptr<const RecordSessionModel> model_;
+};
+
+}  // namespace lmc::ui

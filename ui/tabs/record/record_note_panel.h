@@ -1,0 +1,45 @@
+#pragma once
+// N: the one-line note on a trial. Opened by the key or a Note button, it takes the keyboard a
+// frame or two later; Enter submits it (the tab journals it through RecordSessionModel::add_note,
+// which while a trial records keeps it until the trial ends), Esc drops it.
+#include <imgui.h>
+
+#include <memory>
+#include <vector>
+
+#include "ui/model/record/record_session_model.h"
+
+namespace lmc::ui {
+
+class RecordNotePanel {
+ public:
+  explicit RecordNotePanel(std::shared_ptr<const RecordSessionModel> model) : model_(std::move(model)) {}
+  // Shows the note field and gives it the keyboard (by_key: N was pressed, and letters typed
+  // after it in the same frame are kept).
+  void open(bool by_key = false);
+  // The note field while open; true in the frame Enter submits it.
+  bool draw();
+  const char* text() const { return text_; }
+  void clear() { reset(); }
+  // True while the field has not yet taken the keyboard (bounded to 2 s: a note line that is not
+  // drawn in the current state must not silence the shortcuts).
+  bool awaiting_keyboard(double now) const { return open_ && !took_keyboard_ && now - opened_time_ < 2.0; }
+
+ private:
+  void reset();
+
+  std::shared_ptr<const RecordSessionModel> model_;
+  char text_[240] = "";
+  bool open_ = false;   // the note line is shown (N or the button)
+  bool focus_ = false;  // give it the keyboard on the next frame
+  // The field takes the keyboard a frame or two after N (longer on a loaded machine); what the
+  // operator types meanwhile is held here and handed to the field once it has the keyboard, so a
+  // fast typist loses no letter and no letter reaches the tab's shortcuts (Space, R) instead.
+  std::vector<ImWchar> held_;
+  int opened_frame_ = -1;
+  double opened_time_ = 0.0;
+  bool took_keyboard_ = false;
+  bool submit_when_typed_ = false;  // Enter came before the field had the keyboard
+};
+
+}  // namespace lmc::ui
