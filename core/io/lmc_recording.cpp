@@ -388,12 +388,17 @@ LmcRecording parse_lmc_recording_text(std::string_view content, const std::strin
     const bool unterminated = !line.has_newline;
     const bool ends_with_sep = line.text.back() == separator;
     auto failure = parser.parse(line.text, row);
-    if (unterminated && (failure ? failure->short_row : (lines_end_with_separator && !ends_with_sep))) {
-      rec.warnings.push_back(format_error(ErrorLocation{source_name, line.number},
-                                          "last line is incomplete (no final newline" +
-                                              std::string(failure ? ", too few fields" : ", cut off mid-field") +
-                                              "); dropped it and kept the " + std::to_string(rec.rows.size()) +
-                                              " complete rows before it"));
+    // A write cut inside the last field (a full disk mid-point: "x,y") fails on that field.
+    const size_t last_sep = line.text.rfind(separator);
+    const long last_field_column = last_sep == std::string_view::npos ? 1 : static_cast<long>(last_sep) + 2;
+    const bool cut_in_last_field = failure && failure->column >= last_field_column;
+    if (unterminated &&
+        (failure ? failure->short_row || cut_in_last_field : (lines_end_with_separator && !ends_with_sep))) {
+      rec.warnings.push_back(format_error(
+          ErrorLocation{source_name, line.number},
+          "last line is incomplete (no final newline" +
+              std::string(failure && failure->short_row ? ", too few fields" : ", cut off mid-field") +
+              "); dropped it and kept the " + std::to_string(rec.rows.size()) + " complete rows before it"));
       break;
     }
     if (failure) text::fail_at(source_name, line.number, failure->column, failure->message);

@@ -135,7 +135,17 @@ SoakTrial check_trial(const TrialResult& result, const std::vector<std::int64_t>
   // The study's recording format numbers devices 1 to kMaxDevices, and its reader holds to that:
   // a larger rig's file is counted by the recorder (rows that reached the file), not read back.
   if (config.verdict && layout.device_count() <= kMaxDevices) {
-    auto rec = std::make_shared<LmcRecording>(read_lmc_recording(result.paths.recording));
+    std::shared_ptr<LmcRecording> rec;
+    try {
+      rec = std::make_shared<LmcRecording>(read_lmc_recording(result.paths.recording));
+    } catch (const std::exception& e) {
+      // A writer that failed mid-line (a full disk) leaves a file the reader refuses: that is a
+      // failed trial with its reason, not the end of the soak.
+      t.verdict = "fail";
+      if (!side.error.empty()) t.reasons.push_back(side.error);
+      t.reasons.push_back(std::string("the recording cannot be read: ") + e.what());
+      return t;
+    }
     session::QualityInputs in;
     in.recording = rec.get();
     in.sidecar = &side;

@@ -194,5 +194,19 @@ TEST(Soak, AWriterThatFailsIsReportedAsLostFramesAFailedTrialAndAFailingVerdict)
   EXPECT_THAT(soak_summary_line(r), HasSubstr(" " + std::to_string(r.lost) + " lost"));
 }
 
+TEST(Soak, AFileCutMidLineIsAFailedTrialAndTheSoakGoesOn) {
+  SoakConfig c = short_soak("soak_cut_file");
+  // So little room that every trial's file ends inside a row the reader cannot take.
+  c.open_sink = [](const std::filesystem::path& p) { return std::make_unique<FullDiskSink>(open_file_sink(p), 3000); };
+  const SoakReport r = run_soak(c);
+  EXPECT_FALSE(r.ok());
+  ASSERT_GE(r.trials.size(), 2u) << "the soak stopped at the first unreadable file";
+  for (const SoakTrial& t : r.trials) {
+    EXPECT_EQ(t.verdict, "fail") << t.name;
+    ASSERT_FALSE(t.reasons.empty()) << t.name;
+    EXPECT_THAT(t.reasons.front(), HasSubstr("No space left on device")) << t.name;
+  }
+}
+
 }  // namespace soak_test
 }  // namespace lmc::devices

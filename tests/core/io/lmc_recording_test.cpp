@@ -309,6 +309,24 @@ TEST(LmcRecordingTruncation, CutLastLineIsDroppedWithWarning) {
   EXPECT_THAT(rec.warnings[0], HasSubstr(path.string() + ":4: last line is incomplete"));
 }
 
+TEST(LmcRecordingTruncation, APointCutInTheLastFieldIsDroppedWithWarning) {
+  // A full disk can stop a write inside the last point of a row ("x,y"): the rows before it are
+  // the recording, and they stay readable.
+  const LmcRecording whole = read_lmc_recording(io_fixture("raw_truncated_last_line.txt"));
+  ASSERT_FALSE(whole.rows.empty());
+  std::ostringstream out;
+  write_lmc_recording(out, whole);
+  const std::string text = out.str();
+  const std::string last_row = text.substr(text.rfind('\n', text.size() - 2) + 1);
+  const std::string cut = text.substr(0, text.size() - last_row.size()) +
+                          last_row.substr(0, last_row.rfind(',') - 1);  // inside the last point's "x,y"
+  std::istringstream in(cut);
+  const LmcRecording rec = parse_lmc_recording(in, "cut.txt");
+  EXPECT_EQ(rec.rows.size(), whole.rows.size() - 1);
+  ASSERT_EQ(rec.warnings.size(), 1u);
+  EXPECT_THAT(rec.warnings[0], HasSubstr("last line is incomplete (no final newline, cut off mid-field)"));
+}
+
 TEST(LmcRecordingTruncation, NumberCutMidFieldIsNotKept) {
   // A no-hand row cut inside its timestamp still has 4 fields; the missing trailing tab that every
   // other line has shows it was cut, so the bogus timestamp 29983 is not kept.
