@@ -24,6 +24,7 @@
 #include "devices/record/trial_name.h"
 #include "devices/sim/sim_rig.h"
 #include "tests/devices/sim_fixtures.h"
+#include "tests/support/full_disk_sink.h"
 #include "tests/support/reference_data.h"
 
 namespace lmc::devices {
@@ -226,29 +227,7 @@ TEST(Recorder, UnpluggedDeviceLeavesTheFileIntactWithTheGapRecorded) {
 }
 
 // Writes to the real file until `limit` bytes, then fails like a full disk.
-class FullDiskSink final : public ByteSink {
- public:
-  FullDiskSink(std::unique_ptr<ByteSink> inner, size_t limit) : inner_(std::move(inner)), left_(limit) {}
-  bool write(std::string_view data) override {
-    if (data.size() > left_) {
-      inner_->write(data.substr(0, left_));
-      left_ = 0;
-      error_ = "write: No space left on device";
-      return false;
-    }
-    left_ -= data.size();
-    return inner_->write(data);
-  }
-  bool sync() override { return inner_->sync(); }
-  bool close() override { return inner_->close(); }
-  std::string error() const override { return error_; }
-  std::uint64_t bytes_written() const override { return inner_->bytes_written(); }
-
- private:
-  std::unique_ptr<ByteSink> inner_;
-  size_t left_;
-  std::string error_;
-};
+using test::FullDiskSink;
 
 TEST(Recorder, DiskFullStopsTheTrialWithAClearMessageAndKeepsWhatWasWritten) {
   const auto dir = test::scratch_dir("rec_full");

@@ -17,6 +17,7 @@
 #include "devices/soak/grouped_fusion.h"
 #include "devices/soak/process_stats.h"
 #include "devices/soak/soak_engine.h"
+#include "tests/support/full_disk_sink.h"
 #include "tests/support/reference_data.h"
 
 namespace lmc::devices {
@@ -148,29 +149,7 @@ TEST(Soak, AShortSessionLosesNothingAndEveryFrameProducedIsARow) {
 }
 
 // Fails like a full disk after `limit` bytes of one file.
-class FullDiskSink final : public ByteSink {
- public:
-  FullDiskSink(std::unique_ptr<ByteSink> inner, size_t limit) : inner_(std::move(inner)), left_(limit) {}
-  bool write(std::string_view data) override {
-    if (data.size() > left_) {
-      inner_->write(data.substr(0, left_));
-      left_ = 0;
-      error_ = "write: No space left on device";
-      return false;
-    }
-    left_ -= data.size();
-    return inner_->write(data);
-  }
-  bool sync() override { return inner_->sync(); }
-  bool close() override { return inner_->close(); }
-  std::string error() const override { return error_; }
-  std::uint64_t bytes_written() const override { return inner_->bytes_written(); }
-
- private:
-  std::unique_ptr<ByteSink> inner_;
-  size_t left_;
-  std::string error_;
-};
+using test::FullDiskSink;
 
 TEST(Soak, AWriterThatFailsIsReportedAsLostFramesAFailedTrialAndAFailingVerdict) {
   SoakConfig c = short_soak("soak_full_disk");
