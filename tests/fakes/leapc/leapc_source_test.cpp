@@ -16,55 +16,10 @@
 #include "devices/leapc/leapc_source.h"
 #include "devices/record/clock_alignment.h"
 #include "fake_leapc.h"
+#include "leapc_test_support.h"
 
 namespace lmc::devices {
 namespace {
-
-bool wait_for(const std::function<bool()>& done, int timeout_ms = 3000) {
-  const auto deadline = std::chrono::steady_clock::now() + std::chrono::milliseconds(timeout_ms);
-  while (!done()) {
-    if (std::chrono::steady_clock::now() > deadline) return false;
-    std::this_thread::sleep_for(std::chrono::milliseconds(2));
-  }
-  return true;
-}
-
-Layout layout_with_serials() {
-  Layout l;
-  l.name = "rig";
-  const char* serials[] = {"LP11111", "LP22222", "LP33333", "LP44444"};
-  for (int i = 0; i < 4; ++i) {
-    LayoutDevice d;
-    d.slot = "LMC" + std::to_string(i + 1);
-    d.serial = serials[i];
-    l.devices.push_back(d);
-  }
-  return l;
-}
-
-struct Recorded : FrameConsumer {
-  std::mutex m;
-  std::vector<HandFrame> frames;
-  bool offer(const HandFrame& f, std::int64_t, bool) override {
-    std::lock_guard lock(m);
-    frames.push_back(f);
-    return true;
-  }
-  std::vector<DeviceEvent> events;
-  std::vector<int> other_side;  // device id of every frame marked as the other side's only hand
-  void device_event(const DeviceEvent& e, int, const std::string&) override {
-    std::lock_guard lock(m);
-    events.push_back(e);
-  }
-  void other_side_hand(int device_id, std::int64_t) override {
-    std::lock_guard lock(m);
-    other_side.push_back(device_id);
-  }
-  size_t size() {
-    std::lock_guard lock(m);
-    return frames.size();
-  }
-};
 
 bool has_message(const std::vector<std::string>& messages, std::initializer_list<const char*> parts) {
   for (const auto& m : messages) {
