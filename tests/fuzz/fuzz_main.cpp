@@ -31,6 +31,6 @@ extern "C" int LLVMFuzzerInitialize(int* argc, char*** argv) {
 }
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
-  lmc::fuzz::run_one(*g_target, {reinterpret_cast<const char*>(data), size});
+  (void)lmc::fuzz::run_one(*g_target, {reinterpret_cast<const char*>(data), size});
   return 0;
 }

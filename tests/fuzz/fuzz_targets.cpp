@@ -12,12 +12,14 @@
 #include "core/io/recorder_sidecar.h"
 #include "core/io/trc.h"
 #include "core/io/vicon_mapping.h"
+#include "core/processing/length_correction_json.h"
 #include "core/processing/resample.h"
 #include "core/session/protocol.h"
 #include "core/session/session_folder.h"
 #include "core/session/session_journal.h"
 #include "devices/sim/sim_config.h"
 #include "devices/vicon/vicon_message.h"
+#include "devices/vicon/vicon_senders.h"
 
 namespace lmc::fuzz {
 namespace {
@@ -100,6 +102,23 @@ void session_journal(std::string_view bytes) {
   (void)session::state_from_journal(journal, kSource);
 }
 
+// A fitted length correction as `lmc process --length-correction` reads it.
+void length_correction(std::string_view bytes) {
+  (void)length_correction_from_json(parse_json_text(std::string(bytes), kSource), kSource);
+}
+
+// The operator's list of Vicon hosts (`--vicon-host`), then the check every datagram's sender
+// meets. Names resolve without the network: "vicon*" to one address, anything else to none.
+void vicon_hosts(std::string_view bytes) {
+  const auto resolve = [](const std::string& name) -> std::vector<std::uint32_t> {
+    if (name.rfind("vicon", 0) == 0) return {0x0A000007u};
+    throw Error("host name '" + name + "' does not resolve");
+  };
+  const devices::ViconSenders senders = devices::ViconSenders::parse(std::string(bytes), resolve);
+  (void)senders.describe();
+  for (const std::uint32_t sender : {0x0A000007u, 0x7F000001u, 0xC0A80101u, 0xFFFFFFFFu}) (void)senders.allows(sender);
+}
+
 }  // namespace
 
 const std::vector<Target>& targets() {
@@ -115,6 +134,8 @@ const std::vector<Target>& targets() {
       {"vicon_packet", "Vicon UDP capture packet (listen mode)", vicon_packet},
       {"protocol", "session protocol JSON, then the trial plan", protocol},
       {"session_journal", "session journal (JSON lines), then the session state", session_journal},
+      {"length_correction", "fitted length-correction JSON", length_correction},
+      {"vicon_hosts", "the Vicon host list of listen mode (addresses, subnets, names)", vicon_hosts},
   };
   return all;
 }
@@ -125,11 +146,12 @@ const Target* find_target(std::string_view name) {
   return nullptr;
 }
 
-void run_one(const Target& target, std::string_view bytes) {
+bool run_one(const Target& target, std::string_view bytes) {
   try {
     target.run(bytes);
+    return true;
   } catch (const Error&) {
-    // The expected answer to bad input: a message naming the source.
+    return false;  // the expected answer to bad input: a message naming the source
   }
 }
 

@@ -23,8 +23,9 @@ struct Target {
 const std::vector<Target>& targets();
 const Target* find_target(std::string_view name);
 
-// Runs one input: lmc::Error is the expected outcome of bad input and is swallowed; any other
-// exception escapes (libFuzzer reports it as a crash, the replay test as a failure).
-void run_one(const Target& target, std::string_view bytes);
+// Runs one input: lmc::Error is the expected outcome of bad input and is swallowed (false); any
+// other exception escapes (libFuzzer reports it as a crash, the replay test as a failure). True:
+// the reader took the input.
+bool run_one(const Target& target, std::string_view bytes);
 
 }  // namespace lmc::fuzz
