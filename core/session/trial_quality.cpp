@@ -88,6 +88,18 @@ void judge_sidecar(const RecorderSidecar& sidecar, Reasons& reasons) {
     // The recorder finalises the sidecar when it stops; still "recording" means it never did.
     reasons.fail("the recorder did not finish (its sidecar still says \"recording\")" + why);
   }
+  // Controllers whose stream had not passed the trial's end when the recorder closed: a frame
+  // stamped inside the trial may have come too late to be written.
+  const nlohmann::json& w = sidecar.trial_window;
+  if (w.is_object() && w.contains("streams_behind_end") && w["streams_behind_end"].is_array()) {
+    std::string slots;
+    for (const auto& slot : w["streams_behind_end"])
+      if (slot.is_string()) slots += (slots.empty() ? "" : ", ") + slot.get<std::string>();
+    if (!slots.empty())
+      reasons.warn(slots +
+                   ": no frame from after the trial's end reached the recorder before it closed; the "
+                   "last frames of the trial may be missing");
+  }
 }
 
 // The frames are kept (the hand is the subject's), but the operator should know the controller

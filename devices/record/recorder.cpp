@@ -39,6 +39,7 @@ SessionPaths session_paths(const std::filesystem::path& dir, const std::string& 
 Recorder::Recorder(RecorderConfig config)
     : config_(std::move(config)), queue_(config_.queue_capacity == 0 ? 1 : config_.queue_capacity) {
   if (config_.flush_interval_ms <= 0 || config_.flush_interval_ms > 1000) config_.flush_interval_ms = 1000;
+  for (auto& t : latest_offered_ns_) t.store(std::numeric_limits<std::int64_t>::min());
 }
 
 Recorder::~Recorder() {
@@ -79,11 +80,28 @@ std::string Recorder::window_from_utc() const {
   return window_from_utc_;
 }
 
+std::vector<int> Recorder::devices_behind(std::int64_t host_ns) const {
+  std::vector<int> behind;
+  for (int id = 1; id <= kTrackedDevices; ++id) {
+    const std::int64_t latest = latest_offered_ns_[static_cast<size_t>(id)].load();
+    if (latest != std::numeric_limits<std::int64_t>::min() && latest < host_ns) behind.push_back(id);
+  }
+  return behind;
+}
+
+void Recorder::note_streams_behind_end(std::vector<std::string> slots) {
+  std::lock_guard lock(stats_mutex_);
+  streams_behind_end_ = std::move(slots);
+}
+
 bool Recorder::offer(const HandFrame& frame, std::int64_t host_receive_ns, bool may_wait) {
   if (failed_.load(std::memory_order_relaxed) || stop_requested_.load(std::memory_order_relaxed) || !started_) {
     dropped_.fetch_add(1);
     return false;
   }
+  // One device's frames arrive in order from its source's thread: a store keeps the latest.
+  if (frame.device_id >= 1 && frame.device_id <= kTrackedDevices)
+    latest_offered_ns_[static_cast<size_t>(frame.device_id)].store(host_receive_ns, std::memory_order_relaxed);
   if (config_.wait_for_go) {
     // Outside the trial (the countdown, or after its planned end): taken, not written, not lost.
     if (host_receive_ns < window_from_ns_.load()) {
@@ -432,6 +450,7 @@ RecorderSidecar Recorder::sidecar(const char* state) const {
     w["end_host_ns"] = until == kClosed ? nlohmann::json(nullptr) : nlohmann::json(until);
     w["frames_before_go"] = before_window_.load();
     w["frames_after_end"] = after_window_.load();
+    if (!streams_behind_end_.empty()) w["streams_behind_end"] = streams_behind_end_;
     sc.trial_window = std::move(w);
   }
   sc.extra = config_.extra;

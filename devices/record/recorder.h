@@ -6,6 +6,7 @@
 // the file at least once a second, so a crash loses at most the last second and leaves a
 // readable file. A write error (disk full) stops the recording with a clear message and keeps
 // everything written before it.
+#include <array>
 #include <atomic>
 #include <cstdint>
 #include <filesystem>
@@ -130,6 +131,14 @@ class Recorder final : public FrameConsumer {
   // takes effect before from, so no row sees an open window without its end.
   void open_window(std::int64_t from_ns, std::int64_t until_ns = std::numeric_limits<std::int64_t>::max());
   std::string window_from_utc() const;  // when open_window() was called ("" before)
+  // The window's end on the host clock; int64 max while it has none.
+  std::int64_t window_until_ns() const { return window_until_ns_.load(); }
+  // The devices (by device id) that have offered frames but none received at or after
+  // `host_ns`: a frame of theirs stamped before it may still be on its way.
+  std::vector<int> devices_behind(std::int64_t host_ns) const;
+  // Slots whose stream had not passed the window's end when the trial closed (sidecar
+  // trial_window.streams_behind_end; before stop).
+  void note_streams_behind_end(std::vector<std::string> slots);
 
   // FrameConsumer (device threads).
   bool offer(const HandFrame& frame, std::int64_t host_receive_ns, bool may_wait) override;
@@ -162,7 +171,11 @@ class Recorder final : public FrameConsumer {
   std::atomic<std::int64_t> window_from_ns_{kClosed};
   std::atomic<std::int64_t> window_until_ns_{kClosed};
   std::atomic<std::int64_t> before_window_{0}, after_window_{0};
-  std::string window_from_utc_;  // stats_mutex_
+  // The latest host_receive_ns offered per device id (1…kTrackedDevices; int64 min: none yet).
+  static constexpr int kTrackedDevices = 64;
+  std::array<std::atomic<std::int64_t>, kTrackedDevices + 1> latest_offered_ns_;
+  std::vector<std::string> streams_behind_end_;  // stats_mutex_
+  std::string window_from_utc_;                  // stats_mutex_
   std::unique_ptr<ByteSink> sink_;
   SpscQueue<Item> queue_;
   std::mutex producer_mutex_;  // serialises producers (several device threads); never taken by the writer

@@ -56,6 +56,10 @@ struct TrialEngine::Run {
   using Clock = std::chrono::steady_clock;
   static constexpr auto kPoll = std::chrono::milliseconds(20);
   static constexpr auto kStatusEvery = std::chrono::milliseconds(100);
+  // How long the end of a trial waits for every controller's stream to pass the window's end: a
+  // controller at its slowest (11 Hz) sends its next frame within 0.1 s; a busy machine can hold a
+  // device thread between stamping a frame and handing it on for a few hundred ms.
+  static constexpr auto kStreamsPastEndLimit = std::chrono::milliseconds(1000);
 
   DeviceHub& hub;
   SimSource* sim;
@@ -519,9 +523,42 @@ struct TrialEngine::Run {
     }
   }
 
+  // A frame is stamped when it arrives and handed on a moment later; a frame stamped just before
+  // the window's end may reach the recorder after it. The recorder stays attached until every
+  // controller still streaming has handed on a frame from the end on (frames of one controller
+  // come in order, so none of its window is still on its way), or the limit passes: then the
+  // controllers still behind are named in the sidecar and the verdict, never dropped silently.
+  void wait_for_streams_past_end() {
+    if (!recorder || !went.load()) return;
+    const std::int64_t until = recorder->window_until_ns();
+    if (until == std::numeric_limits<std::int64_t>::max()) return;  // open until the recorder stops
+    const auto deadline = Clock::now() + kStreamsPastEndLimit;
+    for (;;) {
+      if (hub.sources_finished()) return;  // a finished source has handed on everything
+      const HubSnapshot snap = hub.snapshot();
+      // Stopped early: the window ends now (on the hub's clock), not at its planned end.
+      const std::int64_t end = std::min(until, snap.host_time_ns);
+      std::vector<std::string> behind;
+      for (const int id : recorder->devices_behind(end))
+        for (const DeviceStatus& d : snap.devices)
+          if (d.connected && d.slot_index + 1 == id) behind.push_back(d.slot);
+      if (behind.empty()) return;
+      if (Clock::now() >= deadline) {
+        std::string names;
+        for (const auto& b : behind) names += (names.empty() ? "" : ", ") + b;
+        notice(names + ": no frame from after the trial's end within " + std::to_string(kStreamsPastEndLimit.count()) +
+               " ms; its last frames may be missing");
+        recorder->note_streams_behind_end(std::move(behind));
+        return;
+      }
+      std::this_thread::sleep_for(std::chrono::milliseconds(2));
+    }
+  }
+
   void finish() {
     recording_until = clock_s();
     guarded("", [&] { set_phase(TrialPhase::kFinishing, "finishing " + trial); });
+    guarded("", [&] { wait_for_streams_past_end(); });
     // The engine's own hub stops first, so the simulator's truth covers exactly what was delivered.
     if (hub_started_here) hub.stop();
     hub.set_consumer(nullptr);

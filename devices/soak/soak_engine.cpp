@@ -25,10 +25,6 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
-// A frame stamped just before a trial's window closes is offered to the recorder a moment later;
-// the soak keeps the recorder installed this long past the window so such a frame is never
-// counted as lost when it merely arrived late (rows past the window are not written either way).
-constexpr auto kWindowGrace = std::chrono::milliseconds(250);
 // Problems listed one by one before the rest are summed up.
 constexpr size_t kMaxListedProblems = 10;
 
@@ -253,7 +249,6 @@ SoakReport run_soak(const SoakConfig& config, const std::function<void(const std
 
   const auto on_status = [&](const TrialSnapshot& s) {
     sampler.note_queue_depth(static_cast<std::int64_t>(s.recorder.queue_depth));
-    if (s.phase == TrialPhase::kFinishing) std::this_thread::sleep_for(kWindowGrace);
   };
   for (int index = 1;; ++index) {
     const double left = config.seconds - elapsed();

@@ -17,12 +17,14 @@
 #include <map>
 #include <sstream>
 #include <stdexcept>
+#include <thread>
 
 #include "core/io/layout_json.h"
 #include "core/io/lmc_recording.h"
 #include "core/io/recorder_sidecar.h"
 #include "core/io/trc.h"
 #include "core/session/trial_quality.h"
+#include "devices/host_clock.h"
 #include "devices/replay/replay_source.h"
 #include "devices/sim/sim_rig.h"
 #include "tests/support/reference_data.h"
@@ -487,6 +489,107 @@ TEST(TrialEngine, AHubThatWasRunningKeepsRunning) {
   EXPECT_EQ(r.outcome, TrialOutcome::kInterrupted) << r.reason;
   EXPECT_TRUE(sh.hub.running());
   sh.hub.stop();
+}
+
+// One controller at 100 Hz whose frames reach the hub `delay` after they were stamped (a device
+// thread held by a busy machine between stamping a frame and handing it on), going silent but
+// staying connected from `silent_after` (from its start) when that is given.
+class LateSource final : public FrameSource {
+ public:
+  LateSource(std::chrono::milliseconds delay, std::optional<std::chrono::milliseconds> silent_after = {})
+      : delay_(delay), silent_after_(silent_after) {}
+  ~LateSource() override { stop(); }
+  std::string backend_name() const override { return "late"; }
+  void start(FrameSink& sink) override {
+    thread_ = std::jthread([this, &sink](std::stop_token st) { run(sink, st); });
+  }
+  void stop() override {
+    if (thread_.joinable()) {
+      thread_.request_stop();
+      thread_.join();
+    }
+  }
+
+ private:
+  void run(FrameSink& sink, const std::stop_token& st) {
+    DeviceEvent appeared;
+    appeared.kind = DeviceEventKind::kAppeared;
+    appeared.info = {"LATE1", "late", "test", ""};
+    appeared.host_time_ns = host_now_ns();
+    sink.on_device_event(appeared);
+    const std::int64_t t0 = host_now_ns();
+    constexpr std::int64_t kPeriodNs = 10'000'000;
+    for (std::int64_t k = 0; !st.stop_requested(); ++k) {
+      const std::int64_t stamp = t0 + k * kPeriodNs;
+      while (host_now_ns() < stamp + delay_.count() * 1'000'000 && !st.stop_requested())
+        std::this_thread::sleep_for(std::chrono::milliseconds(1));
+      if (silent_after_ && stamp - t0 >= silent_after_->count() * 1'000'000) continue;
+      SourceFrame f;
+      f.serial = "LATE1";
+      f.frame.device_id = 1;
+      f.frame.frame_id = k;
+      f.frame.timestamp_us = stamp / 1000;
+      f.host_receive_ns = stamp;
+      sink.on_frame(f);
+    }
+  }
+  std::chrono::milliseconds delay_;
+  std::optional<std::chrono::milliseconds> silent_after_;
+  std::jthread thread_;
+};
+
+Layout one_late_controller() {
+  Layout l;
+  l.name = "late";
+  LayoutDevice d;
+  d.slot = "LMC1";
+  d.serial = "LATE1";
+  l.devices.push_back(d);
+  return l;
+}
+
+TEST(TrialEngine, FramesStampedBeforeTheEndButHandedOnAfterItAreWritten) {
+  const auto dir = test::scratch_dir("trial_engine_late_frames");
+  DeviceHub hub(one_late_controller());
+  hub.add_source(std::make_unique<LateSource>(std::chrono::milliseconds(300)));
+  TrialEngineConfig c = config_for(dir, "Late1", 1.0);
+  c.countdown_s = 0;
+  TrialEngine engine(hub, nullptr, c);
+  const TrialResult r = engine.run();
+  ASSERT_EQ(r.outcome, TrialOutcome::kCompleted) << r.reason;
+  const RecorderSidecar side = read_recorder_sidecar(r.paths.sidecar);
+  // Every frame stamped inside the second is in the file, the last 300 ms of them included.
+  const auto rows = read_lmc_recording(r.paths.recording).rows.size();
+  EXPECT_GE(rows, 99u);
+  EXPECT_LE(rows, 101u);
+  EXPECT_FALSE(side.trial_window.contains("streams_behind_end"));
+  EXPECT_GE(side.trial_window.at("frames_after_end").get<std::int64_t>(), 1) << "the wait ended on a later frame";
+}
+
+TEST(TrialEngine, AControllerSilentAtTheEndIsNamedInTheSidecarAndTheVerdict) {
+  const auto dir = test::scratch_dir("trial_engine_silent_end");
+  DeviceHub hub(one_late_controller());
+  hub.add_source(std::make_unique<LateSource>(std::chrono::milliseconds(0), std::chrono::milliseconds(500)));
+  TrialEngineConfig c = config_for(dir, "Quiet1", 1.0);
+  c.countdown_s = 0;
+  TrialEngine engine(hub, nullptr, c);
+  const TrialResult r = engine.run();
+  ASSERT_TRUE(r.recorded) << r.reason;
+  const RecorderSidecar side = read_recorder_sidecar(r.paths.sidecar);
+  ASSERT_TRUE(side.trial_window.contains("streams_behind_end"));
+  EXPECT_EQ(side.trial_window.at("streams_behind_end"), nlohmann::json::array({"LMC1"}));
+  EXPECT_THAT(r.messages, ::testing::Contains(HasSubstr("LMC1: no frame from after the trial's end within 1000 ms")));
+  const LmcRecording rec = read_lmc_recording(r.paths.recording);
+  const session::QualityReport q = session::assess_trial([&] {
+    session::QualityInputs in;
+    in.recording = &rec;
+    in.sidecar = &side;
+    in.layout = one_late_controller();
+    in.planned_s = 1.0;
+    return in;
+  }());
+  EXPECT_THAT(q.reasons, ::testing::Contains(HasSubstr("LMC1: no frame from after the trial's end reached the "
+                                                       "recorder before it closed")));
 }
 
 // What the file holds of one device: the span of its rows on the device clock, and the earliest row.
