@@ -3,7 +3,10 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 #include <limits>
+#include <random>
+#include <string>
 
 namespace lmc::number_format_test {
 
@@ -24,6 +27,30 @@ TEST(NumberFormat, ReadableNeverWritesANegativeZero) {
 TEST(NumberFormat, FixedKeepsThePythonStyleOfTheStudyOutputs) {
   // The study's text outputs keep printf's form: only the readable form drops the sign.
   EXPECT_EQ(format_fixed(-0.004, 2), "-0.00");
+}
+
+// format_fixed writes through std::to_chars for speed; every output file depends on it writing
+// exactly what printf's "%.*f" writes, ties and huge values included.
+TEST(NumberFormat, FixedWritesWhatPrintfWrites) {
+  const auto printf_fixed = [](double v, int decimals) {
+    std::string out(512, '\0');
+    out.resize(static_cast<size_t>(std::snprintf(out.data(), out.size(), "%.*f", decimals, v)));
+    return out;
+  };
+  std::mt19937_64 rng(11);
+  std::uniform_real_distribution<double> mantissa(-1.0, 1.0);
+  std::uniform_int_distribution<int> exponent(-12, 12), digits(0, 9);
+  for (int k = 0; k < 200'000; ++k) {
+    const double v = std::ldexp(mantissa(rng), exponent(rng) * 3);
+    const int d = digits(rng);
+    ASSERT_EQ(format_fixed(v, d), printf_fixed(v, d)) << "v = " << v << ", " << d << " decimals";
+  }
+  // Halfway cases: printf rounds the exact binary value, so 0.125 → "0.12" and 2.675 → "2.67".
+  for (const double v : {0.125, 0.375, 2.5, 3.5, -0.5, 2.675, 1.005, 1e15 + 0.5, 0.0, -0.0})
+    for (int d = 0; d <= 3; ++d) EXPECT_EQ(format_fixed(v, d), printf_fixed(v, d)) << v << " " << d;
+  // Longer than the fast path's buffer: written whole, never cut.
+  EXPECT_EQ(format_fixed(1e300, 4), printf_fixed(1e300, 4));
+  EXPECT_EQ(format_fixed(-std::numeric_limits<double>::max(), 2), printf_fixed(-std::numeric_limits<double>::max(), 2));
 }
 
 }  // namespace lmc::number_format_test

@@ -96,5 +96,31 @@ TEST(TextFields, RejectsNulAndInvalidUtf8WithPosition) {
   EXPECT_THROW(require_text("\xED\xA0\x80", "surrogate"), Error);
 }
 
+// The check skips plain ASCII a word at a time: a bad byte at every offset of a long text, and a
+// valid multi-byte character straddling a word boundary, are judged as byte by byte.
+TEST(TextFields, ABadByteIsFoundAtEveryOffsetOfALongText) {
+  const std::string line = "1\t2.5\t-3.25\n";  // 12 bytes: lines cross the 8-byte words
+  std::string text;
+  for (int k = 0; k < 10; ++k) text += line;
+  for (size_t at = 0; at < text.size(); ++at) {
+    for (const char bad : {'\0', '\xFF'}) {
+      std::string t = text;
+      t[at] = bad;
+      try {
+        require_text(t, "t.txt");
+        FAIL() << "byte " << static_cast<int>(bad) << " at " << at << " accepted";
+      } catch (const Error& e) {
+        EXPECT_EQ(e.where().line, static_cast<long>(at / line.size()) + 1) << at;
+        EXPECT_EQ(e.where().column, static_cast<long>(at % line.size()) + 1) << at;
+      }
+    }
+  }
+  for (size_t at = 0; at + 2 <= text.size(); ++at) {
+    std::string t = text;
+    t.replace(at, 2, "\xC3\xBC");  // ü
+    EXPECT_NO_THROW(require_text(t, "t.txt")) << at;
+  }
+}
+
 }  // namespace
 }  // namespace lmc::text
