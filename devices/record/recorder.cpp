@@ -71,8 +71,25 @@ void Recorder::open_window(std::int64_t from_ns, std::int64_t until_ns) {
     std::lock_guard lock(stats_mutex_);
     window_from_utc_ = utc_now_iso8601();
   }
+  std::lock_guard lock(producer_mutex_);
   window_until_ns_ = until_ns;
   window_from_ns_ = from_ns;
+  // Go is an instant taken a moment before this call: a frame received after that instant but
+  // offered before the window opened was held back, and belongs to the trial.
+  for (const Item& item : held_before_go_) {
+    if (item.host_receive_ns < from_ns) continue;
+    before_window_.fetch_sub(1);
+    if (item.host_receive_ns >= until_ns) {
+      after_window_.fetch_add(1);
+      continue;
+    }
+    if (!queue_.try_push(item)) {
+      dropped_.fetch_add(1);
+      std::lock_guard stats_lock(stats_mutex_);
+      ++stats_[item.frame.device_id].frames_dropped_queue;
+    }
+  }
+  held_before_go_.clear();
 }
 
 std::string Recorder::window_from_utc() const {
@@ -102,10 +119,18 @@ bool Recorder::offer(const HandFrame& frame, std::int64_t host_receive_ns, bool 
   // One device's frames arrive in order from its source's thread: a store keeps the latest.
   if (frame.device_id >= 1 && frame.device_id <= kTrackedDevices)
     latest_offered_ns_[static_cast<size_t>(frame.device_id)].store(host_receive_ns, std::memory_order_relaxed);
+  Item item{frame, host_receive_ns};
+  std::unique_lock lock(producer_mutex_);
   if (config_.wait_for_go) {
     // Outside the trial (the countdown, or after its planned end): taken, not written, not lost.
-    if (host_receive_ns < window_from_ns_.load()) {
+    const std::int64_t from = window_from_ns_.load();
+    if (host_receive_ns < from) {
       before_window_.fetch_add(1);
+      if (from == kClosed) {
+        // Before go, the latest few are held: go may turn out to precede them (open_window).
+        held_before_go_.push_back(item);
+        if (held_before_go_.size() > kHeldBeforeGo) held_before_go_.pop_front();
+      }
       return true;
     }
     if (host_receive_ns >= window_until_ns_.load()) {
@@ -113,8 +138,6 @@ bool Recorder::offer(const HandFrame& frame, std::int64_t host_receive_ns, bool 
       return true;
     }
   }
-  Item item{frame, host_receive_ns};
-  std::unique_lock lock(producer_mutex_);
   bool pushed = queue_.try_push(item);
   while (!pushed && may_wait && !failed_.load() && !stop_requested_.load()) {
     lock.unlock();

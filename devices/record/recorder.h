@@ -9,6 +9,7 @@
 #include <array>
 #include <atomic>
 #include <cstdint>
+#include <deque>
 #include <filesystem>
 #include <functional>
 #include <limits>
@@ -175,7 +176,10 @@ class Recorder final : public FrameConsumer {
   static constexpr int kTrackedDevices = 64;
   std::array<std::atomic<std::int64_t>, kTrackedDevices + 1> latest_offered_ns_;
   std::vector<std::string> streams_behind_end_;  // stats_mutex_
-  std::string window_from_utc_;                  // stats_mutex_
+  // The latest frames offered before the window opened (producer_mutex_).
+  static constexpr size_t kHeldBeforeGo = 2048;
+  std::deque<Item> held_before_go_;
+  std::string window_from_utc_;  // stats_mutex_
   std::unique_ptr<ByteSink> sink_;
   SpscQueue<Item> queue_;
   std::mutex producer_mutex_;  // serialises producers (several device threads); never taken by the writer

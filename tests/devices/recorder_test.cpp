@@ -308,6 +308,39 @@ TEST(Recorder, FileSizeLimitIsAClearWriteErrorNotAKill) {
   EXPECT_EQ(std::filesystem::file_size(file), 4096u) << "what fitted is kept";
 }
 
+// Go is an instant the engine takes a moment before it opens the window; a frame received after
+// that instant but offered before the window opened belongs to the trial all the same.
+TEST(Recorder, AFrameOfferedJustBeforeTheWindowOpensButReceivedAfterGoIsWritten) {
+  const auto dir = test::scratch_dir("rec_go_race");
+  RecorderConfig rc;
+  rc.output_dir = dir;
+  rc.trial = "go_race";
+  rc.layout = paper_initial();
+  rc.wait_for_go = true;
+  Recorder rec(rc);
+  rec.start();
+  HandFrame f;
+  f.device_id = 1;
+  // Received at 100…104 ms; go is taken at 102 ms and the window opened after all five arrived.
+  for (int i = 0; i < 5; ++i) {
+    f.frame_id = i;
+    f.timestamp_us = 100'000 + 1000 * i;
+    rec.offer(f, 100'000'000 + 1'000'000 * i, false);
+  }
+  rec.open_window(102'000'000, 103'500'000);
+  f.frame_id = 5;
+  f.timestamp_us = 105'000;
+  rec.offer(f, 105'000'000, false);  // after the end
+  rec.stop();
+  const LmcRecording back = read_lmc_recording(rec.paths().recording);
+  ASSERT_EQ(back.rows.size(), 2u) << "received at 102 and 103 ms: inside [go, end)";
+  EXPECT_EQ(back.rows[0].frame_id, 2);
+  EXPECT_EQ(back.rows[1].frame_id, 3);
+  const auto side = read_json(rec.paths().sidecar);
+  EXPECT_EQ(side["trial_window"]["frames_before_go"], 2);
+  EXPECT_EQ(side["trial_window"]["frames_after_end"], 2);
+}
+
 TEST(Recorder, StopWithAReasonMarksTheTrialAborted) {
   const auto dir = test::scratch_dir("rec_abort");
   RecorderConfig rc;
