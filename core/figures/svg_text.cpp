@@ -2,8 +2,8 @@
 
 #include <algorithm>
 
+#include "core/common/xml_text.h"
 #include "core/figures/svg_marks.h"
-#include "core/figures/xml_text.h"
 
 namespace lmc::figures::svg {
 

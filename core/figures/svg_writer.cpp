@@ -5,11 +5,11 @@
 #include <string_view>
 #include <vector>
 
+#include "core/common/xml_text.h"
 #include "core/figures/axis_ticks.h"
 #include "core/figures/locale_free_number.h"
 #include "core/figures/svg_marks.h"
 #include "core/figures/svg_text.h"
-#include "core/figures/xml_text.h"
 
 namespace lmc::figures {
 namespace {

@@ -2,10 +2,10 @@
 // The recorder's sidecar `LMC_<trial>.session.json` as one type (sessions/README.md has the key
 // table). The recorder writes it with recorder_sidecar_to_json, and `lmc info`, processing, the
 // quality check and the session runner read it with read_recorder_sidecar, so the format has one
-// reader and one writer. Reading is lenient where a crash explains a gap (a sidecar left at
-// "recording" lacks the stop time and the final counts: those stay at their defaults and
-// `complete` is false) and strict where a value is present but wrong (a string where a number
-// belongs is an error naming the file and the JSON path).
+// reader and one writer, and each key is spelt once, in recorder_sidecar.cpp's tables. Reading is
+// lenient where a crash explains a gap (a sidecar left at "recording" lacks the stop time and the
+// final counts: those stay at their defaults and `complete` is false) and strict where a value is
+// present but wrong (a string where a number belongs is an error naming the file and the JSON path).
 #include <cstdint>
 #include <filesystem>
 #include <map>
@@ -142,5 +142,9 @@ RecorderSidecar recorder_sidecar_from_json(const nlohmann::json& j, const std::s
 RecorderSidecar read_recorder_sidecar(const std::filesystem::path& path);
 // True when the JSON says it is a sidecar ("format": "lmc-session").
 bool is_recorder_sidecar(const nlohmann::json& j);
+// Every key the format knows, per object: "" (the top level), "devices[]", "gaps[]",
+// "disconnects[]", "vicon_packets[]", "vicon_listen" and "ground_truth". The reader and the writer
+// use the same table; a test checks that sessions/README.md describes each key.
+std::vector<std::pair<std::string, std::vector<std::string>>> recorder_sidecar_keys();
 
 }  // namespace lmc

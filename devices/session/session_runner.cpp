@@ -27,7 +27,7 @@ using session::TrialType;
 
 struct SessionRunner::Rig {
   std::unique_ptr<DeviceHub> hub;
-  DeviceHub* hub_ref = nullptr;  // a hub the caller owns (SessionRunOptions::external_hub)
+  DeviceHub* hub_ref = nullptr;  // a hub owned elsewhere (the caller's, or the block's hardware rig's)
   SimSource* sim = nullptr;
   DeviceHub& get() const { return hub ? *hub : *hub_ref; }
 };
@@ -113,6 +113,22 @@ std::unique_ptr<SessionRunner::Rig> SessionRunner::make_rig(int i, double durati
   rig->sim = dynamic_cast<SimSource*>(source.get());
   rig->hub->add_source(std::move(source));
   return rig;
+}
+
+std::unique_ptr<SessionRunner::Rig> SessionRunner::rig_for_recording(int i, double duration_s, std::uint64_t seed,
+                                                                     const std::string& motion) const {
+  if (options_.external_hub != nullptr) {
+    auto rig = std::make_unique<Rig>();
+    rig->hub_ref = options_.external_hub;
+    return rig;
+  }
+  if (hardware_rig_ && hardware_block_ == plan_.at(static_cast<size_t>(i)).layout_key) {
+    auto rig = std::make_unique<Rig>();  // borrows the block's hub, which stays up for its next trials
+    rig->hub_ref = hardware_rig_->hub.get();
+    rig->sim = hardware_rig_->sim;
+    return rig;
+  }
+  return make_rig(i, duration_s, seed, motion);
 }
 
 std::uint64_t SessionRunner::bytes_still_needed(int from) const {
@@ -223,18 +239,7 @@ AttemptResult SessionRunner::run_trial(int i, std::stop_token stop,
   try {
     const std::uint64_t seed = options_.sim.seed + 7919ULL * static_cast<std::uint64_t>(i) +
                                104729ULL * static_cast<std::uint64_t>(result.attempt - 1);
-    std::unique_ptr<Rig> trial_rig;
-    Rig* rig = nullptr;
-    Rig external;  // non-owning: the hub is the caller's
-    if (options_.external_hub != nullptr) {
-      external.hub_ref = options_.external_hub;
-      rig = &external;
-    } else if (hardware_rig_ && hardware_block_ == p.layout_key) {
-      rig = hardware_rig_.get();
-    } else {
-      trial_rig = make_rig(i, type.duration_s, seed);
-      rig = trial_rig.get();
-    }
+    const std::unique_ptr<Rig> rig = rig_for_recording(i, type.duration_s, seed);
     if (rig->sim != nullptr) config.extra["simulator"] = sim_config_to_json(options_.sim);
     TapAttachment tap(rig->get(), live_tap);
     TrialEngine engine(rig->get(), rig->sim, config);
@@ -361,20 +366,10 @@ BlockCalibration SessionRunner::calibrate_block(int i, std::stop_token stop,
   config.extra["session"]["calibration"] = true;
   TrialResult tr;
   try {
-    std::unique_ptr<Rig> own_rig;
-    Rig* rig = nullptr;
-    Rig external;
-    if (options_.external_hub != nullptr) {
-      external.hub_ref = options_.external_hub;
-      rig = &external;
-    } else if (hardware_rig_ && hardware_block_ == p.layout_key) {
-      rig = hardware_rig_.get();
-    } else {
-      // The simulated subject holds the trial's palm pose still (the step's cue).
-      own_rig = make_rig(i, step.duration_s, options_.sim.seed + 31ULL * static_cast<std::uint64_t>(out.attempt),
-                         protocol_.poses.at(static_cast<size_t>(p.pose)).key + "/static");
-      rig = own_rig.get();
-    }
+    // The simulated subject holds the trial's palm pose still (the step's cue).
+    const std::unique_ptr<Rig> rig =
+        rig_for_recording(i, step.duration_s, options_.sim.seed + 31ULL * static_cast<std::uint64_t>(out.attempt),
+                          protocol_.poses.at(static_cast<size_t>(p.pose)).key + "/static");
     if (rig->sim != nullptr) config.extra["simulator"] = sim_config_to_json(options_.sim);
     TrialEngine engine(rig->get(), rig->sim, config);
     tr = engine.run(stop, on_status);

@@ -128,6 +128,10 @@ class SessionRunner {
   struct Rig;
   // The rig for trial `i`'s block; `motion` overrides the trial's simulated motion ("horizontal/static").
   std::unique_ptr<Rig> make_rig(int i, double duration_s, std::uint64_t seed, const std::string& motion = {}) const;
+  // The rig one recording of trial `i` (a trial or its block's calibration) runs on: the caller's
+  // hub when it gave one, the block's hub of real controllers while it is up, else one made for it.
+  std::unique_ptr<Rig> rig_for_recording(int i, double duration_s, std::uint64_t seed,
+                                         const std::string& motion = {}) const;
   const Layout& layout_for(int i) const;
   Layout nominal_layout_for(int i) const;  // before any calibration of the block
   std::uint64_t bytes_still_needed(int from) const;

@@ -2,6 +2,8 @@
 
 #include <charconv>
 
+#include "core/common/xml_text.h"
+
 namespace lmc::devices {
 namespace {
 
@@ -59,37 +61,18 @@ std::optional<std::string> element_value(std::string_view xml, std::string_view 
 
 }  // namespace
 
-std::string xml_escape(std::string_view text) {
-  std::string out;
-  out.reserve(text.size());
-  for (const char c : text) {
-    switch (c) {
-      case '&':
-        out += "&amp;";
-        break;
-      case '<':
-        out += "&lt;";
-        break;
-      case '>':
-        out += "&gt;";
-        break;
-      case '"':
-        out += "&quot;";
-        break;
-      case '\'':
-        out += "&apos;";
-        break;
-      default:
-        // Control characters (and a NUL that would end the datagram early) are dropped.
-        if (static_cast<unsigned char>(c) >= 0x20 || c == '\t') out += c;
-    }
-  }
-  return out;
+namespace {
+
+// Tab kept, line breaks dropped (core/common/xml_text.h says why the Vicon rule differs there).
+std::string vicon_escaped(std::string_view value) {
+  return xml_escape(value, XmlBreaks::kKeepTabDropLineBreaks);
 }
+
+}  // namespace
 
 std::string format_vicon_message(const ViconMessage& m) {
   auto field = [](const char* tag, std::string_view value) {
-    return "<" + std::string(tag) + " VALUE=\"" + xml_escape(value) + "\"/>";
+    return "<" + std::string(tag) + " VALUE=\"" + vicon_escaped(value) + "\"/>";
   };
   std::string xml = R"(<?xml version="1.0" encoding="UTF-8" standalone="no" ?>)";
   if (m.type == ViconMessage::Type::kStart) {
@@ -102,7 +85,7 @@ std::string format_vicon_message(const ViconMessage& m) {
     xml += field("PacketID", std::to_string(m.packet_id));
     xml += "</CaptureStart>";
   } else {
-    xml += "<CaptureStop RESULT=\"" + xml_escape(m.result) + "\">";
+    xml += "<CaptureStop RESULT=\"" + vicon_escaped(m.result) + "\">";
     xml += field("Name", m.name);
     xml += field("DatabasePath", m.database_path);
     xml += field("Delay", std::to_string(m.delay_ms));

@@ -24,7 +24,6 @@ struct ViconMessage {
   bool operator==(const ViconMessage&) const = default;
 };
 
-std::string xml_escape(std::string_view text);
 // The datagram payload, including the terminating '\0'.
 std::string format_vicon_message(const ViconMessage& message);
 // Parses a datagram (a trailing '\0' and surrounding whitespace are allowed). Returns nullopt

@@ -73,6 +73,21 @@ TEST(ViconMessage, ValuesAreXmlEscaped) {
   EXPECT_EQ(back->description, "ctlz");
 }
 
+// The escaping is core's (core/common/xml_text.h) with the Vicon rule for breaks: a tab is kept and
+// line breaks are dropped, so the bytes sent for valid text are what Vicon always received; what is
+// not UTF-8 becomes U+FFFD, so the receiver's XML parser never sees an invalid document.
+TEST(ViconMessage, TabsStayLineBreaksGoAndInvalidUtf8IsReplaced) {
+  ViconMessage m;
+  m.notes = "a\tb\nc\rd \xC2\xB0 \x7F";
+  m.description = "bad \xFF byte";
+  const std::string p = format_vicon_message(m);
+  EXPECT_NE(p.find("<Notes VALUE=\"a\tbcd \xC2\xB0 \x7F\"/>"), std::string::npos) << p;
+  EXPECT_NE(p.find("<Description VALUE=\"bad \xEF\xBF\xBD byte\"/>"), std::string::npos) << p;
+  const auto back = parse_vicon_message(p);
+  ASSERT_TRUE(back.has_value());
+  EXPECT_EQ(back->notes, "a\tbcd \xC2\xB0 \x7F");
+}
+
 TEST(ViconMessage, RejectsOtherDocuments) {
   std::string why;
   EXPECT_FALSE(parse_vicon_message("<Hello/>", &why).has_value());

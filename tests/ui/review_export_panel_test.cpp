@@ -8,6 +8,7 @@
 #include <chrono>
 #include <filesystem>
 #include <fstream>
+#include <memory>
 #include <thread>
 
 #include "core/io/c3d.h"
@@ -41,23 +42,23 @@ class ExportPanel : public ::testing::Test {
   }
 
   void SetUp() override {
-    state.set_cache_dir(*root_ / "cache");  // shared: the second test's batch comes from the cache
-    state.open_folder(*session_);
+    state->set_cache_dir(*root_ / "cache");  // shared: the second test's batch comes from the cache
+    state->open_folder(*session_);
     const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(120);
-    while ((state.batch() == nullptr || state.batch_job().running()) && std::chrono::steady_clock::now() < deadline) {
-      state.update();
+    while ((state->batch() == nullptr || state->batch_job().running()) && std::chrono::steady_clock::now() < deadline) {
+      state->update();
       std::this_thread::sleep_for(std::chrono::milliseconds(5));
     }
-    ASSERT_NE(state.batch(), nullptr);
-    ASSERT_EQ(state.trials().size(), 2u);
-    ASSERT_GE(state.selected(), 0);  // the first trial with Vicon is selected for the view
+    ASSERT_NE(state->batch(), nullptr);
+    ASSERT_EQ(state->trials().size(), 2u);
+    ASSERT_GE(state->selected(), 0);  // the first trial with Vicon is selected for the view
   }
 
   std::function<void()> body() {
     return [this] {
-      state.update();
-      panel.draw_button(state);
-      panel.draw_window(state);
+      state->update();
+      panel.draw_button();
+      panel.draw_window();
     };
   }
   void click(const std::string& anchor) {
@@ -68,7 +69,7 @@ class ExportPanel : public ::testing::Test {
   }
   void wait_while_exporting() {
     const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(60);
-    while (state.motion_export().running() && std::chrono::steady_clock::now() < deadline) {
+    while (state->motion_export().running() && std::chrono::steady_clock::now() < deadline) {
       gui.frame(body());
       std::this_thread::sleep_for(std::chrono::milliseconds(5));
     }
@@ -78,12 +79,12 @@ class ExportPanel : public ::testing::Test {
   static fs::path* root_;
   static fs::path* session_;
   HeadlessImGui gui;
-  ReviewState state;
+  std::shared_ptr<ReviewState> state = std::make_shared<ReviewState>();
   std::vector<fs::path> opened;
-  ReviewExportPanel panel{[this](const fs::path& folder, std::string*) {
-    opened.push_back(folder);
-    return true;
-  }};
+  ReviewExportPanel panel{state, [this](const fs::path& folder, std::string*) {
+                            opened.push_back(folder);
+                            return true;
+                          }};
 };
 fs::path* ExportPanel::root_ = nullptr;
 fs::path* ExportPanel::session_ = nullptr;
@@ -100,8 +101,8 @@ TEST_F(ExportPanel, ExportsTheSelectedTrialAsC3dAndOffersItsFolder) {
   panel.set_folder(out);
   click("export.start");
   wait_while_exporting();
-  ASSERT_EQ(state.motion_export().state(), JobState::kCompleted) << state.motion_export().error();
-  const std::string trial = state.trials()[static_cast<size_t>(state.selected())].job.trial;
+  ASSERT_EQ(state->motion_export().state(), JobState::kCompleted) << state->motion_export().error();
+  const std::string trial = state->trials()[static_cast<size_t>(state->selected())].job.trial;
   const fs::path file = out / (trial + ".c3d");
   ASSERT_TRUE(fs::exists(file));
   EXPECT_GT(read_c3d(file).frame_count(), 100);
@@ -115,23 +116,24 @@ TEST_F(ExportPanel, ExportsTheSelectedTrialAsC3dAndOffersItsFolder) {
 
 TEST_F(ExportPanel, AnExportThatWouldReplaceAFileSaysWhyAndGoesThroughWhenReplacing) {
   const fs::path out = test::scratch_dir("review_export_exists");
-  const fs::path existing = out / (state.trials()[0].job.trial + ".c3d");
+  const fs::path existing = out / (state->trials()[0].job.trial + ".c3d");
   std::ofstream(existing) << "an older export";
   panel.open();
   panel.choose(ReviewExportPanel::What::kShown);
   panel.set_folder(out);
   click("export.start");
   wait_while_exporting();
-  EXPECT_EQ(state.motion_export().state(), JobState::kFailed);
-  EXPECT_NE(state.motion_export().error().find(existing.string()), std::string::npos) << state.motion_export().error();
+  EXPECT_EQ(state->motion_export().state(), JobState::kFailed);
+  EXPECT_NE(state->motion_export().error().find(existing.string()), std::string::npos)
+      << state->motion_export().error();
   EXPECT_TRUE(panel.anchors().fully_visible("export.error"));
   EXPECT_FALSE(panel.anchors().centre("export.open_folder").has_value());
   EXPECT_EQ(test::read_text_file(existing), "an older export");
   click("export.replace");
   click("export.start");
   wait_while_exporting();
-  ASSERT_EQ(state.motion_export().state(), JobState::kCompleted) << state.motion_export().error();
-  EXPECT_EQ(state.motion_export().outcome()->trials, 2);
+  ASSERT_EQ(state->motion_export().state(), JobState::kCompleted) << state->motion_export().error();
+  EXPECT_EQ(state->motion_export().outcome()->trials, 2);
   EXPECT_GT(read_c3d(existing).frame_count(), 100);
   EXPECT_FALSE(panel.anchors().centre("export.error").has_value());
 }
@@ -142,11 +144,11 @@ TEST_F(ExportPanel, CancelStopsARunningExportAndTheWindowSaysWhatWasWritten) {
   const fs::path out = test::scratch_dir("review_export_cancel") / "both";
   panel.set_folder(out);
   click("export.start");
-  ASSERT_TRUE(state.motion_export().running()) << "the export ended before Cancel could be pressed";
+  ASSERT_TRUE(state->motion_export().running()) << "the export ended before Cancel could be pressed";
   click("export.progress.cancel");
   wait_while_exporting();
-  EXPECT_EQ(state.motion_export().state(), JobState::kCancelled);
-  const auto outcome = state.motion_export().outcome();
+  EXPECT_EQ(state->motion_export().state(), JobState::kCancelled);
+  const auto outcome = state->motion_export().outcome();
   ASSERT_TRUE(outcome);
   EXPECT_TRUE(outcome->cancelled);
   EXPECT_LT(outcome->trials, 2);

@@ -6,37 +6,9 @@
 //   second byte 0x50, binary    → C3D (core/io/c3d.h)
 //   first line "Device ID…"     → LMC recording, any variant (core/io/lmc_recording.h)
 //
-// --json prints ONE object. Keys (rates in Hz, times in s, fractions 0..1; null when unknown):
-//   common:    file, type ("recording" | "trc" | "layout" | "session"), warnings [string]
-//   recording: variant ("raw" | "resampled" | "raytraced"), rows, hand_rows, device_count,
-//              device_ids [int], duration_s (first to last timestamp over all devices),
-//              devices [{id, rows, hand_rows, hand_fraction, duration_s, rate_median_hz,
-//                        rate_p5_hz, rate_p95_hz, reported_rate_median_hz,
-//                        visibility_fraction {thumb..pinky} (raytraced only: share of hand rows
-//                        labelled 1)}]
-//              Rates come from consecutive differences of the device's timestamps sorted by time
-//              (equal timestamps skipped); reported_rate is the median of the device's own
-//              Frame Rate column.
-//   trc:       markers, frames, data_rate_hz, camera_rate_hz, units, duration_s,
-//              marker_stats [{name, missing_fraction}] in file order, missing_fraction (all)
-//   c3d:       as trc (no camera_rate_hz; marker_stats also carry description when the file has
-//              POINT:DESCRIPTIONS), first_frame, storage ("float" | "integer"), point_scale,
-//              processor ("intel" | "dec" | "mips"), analog_per_frame, manufacturer {company,
-//              software, version}, parameters ["GROUP:NAME" in file order]
-//   layout:    name, description, device_count, sensor {range_mm, fov_long_deg, fov_short_deg},
-//              devices [{slot, serial (null if unset), pose {x,y,z,rx,ry,rz} (mm, deg),
-//                        offset_mm [x,y,z]}]
-//   session:   trial, status ("recording" | "completed" | "failed" | "aborted"), error (null when
-//              none), backend, recording_file, layout_name, layout_device_count, host_start_utc,
-//              host_stop_utc, duration_s (host clock), serial_to_slot {serial: slot},
-//              frames_written, frames_dropped, devices [{device_id, slot, serial, frames_written,
-//              frames_with_hand, hand_fraction, frames_dropped_queue, frame_id_gaps, gaps,
-//              gap_ms, disconnects, first_timestamp_us, last_timestamp_us}],
-//              vicon_packets [{type, packet_id, target, datagrams_sent, error}],
-//              vicon_alignment, vicon_trigger_received, vicon_stop_received, vicon_listen {address,
-//              binding, allowed_senders, any_sender, trigger_host, refused_datagrams, refused_senders
-//              {host: datagrams}, warning}, stopped_by, trial_window, ground_truth (each the
-//              sidecar's, or null)
+// --json prints one object (rates in Hz, times in s, fractions 0..1; null when unknown); its keys per
+// file type are listed in docs/cli.md, and for the terminal in --help below. A session sidecar is
+// read through core/io/recorder_sidecar.h, whose tables are the only place its own keys are spelt.
 #include <algorithm>
 #include <cmath>
 #include <cstdint>

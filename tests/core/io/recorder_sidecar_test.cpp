@@ -10,6 +10,8 @@
 #include <fstream>
 
 #include "core/common/error.h"
+#include "tests/support/build_paths.h"
+#include "tests/support/cli_runner.h"
 #include "tests/support/reference_data.h"
 
 namespace lmc {
@@ -278,6 +280,22 @@ TEST(RecorderSidecar, UnknownKeysSurviveARoundTrip) {
   const json again = recorder_sidecar_to_json(s);
   EXPECT_EQ(again, j);
   EXPECT_EQ(again.at("devices")[0].at("temperature_c"), 41.5);
+}
+
+// The format's documentation (sessions/README.md) describes every key the table knows, so the two
+// cannot drift apart: a key added to the table without a word about it fails here.
+TEST(RecorderSidecar, SessionsReadmeDescribesEveryKey) {
+  const std::string doc = test::read_text_file(test::source_dir() / "sessions" / "README.md");
+  size_t keys = 0;
+  for (const auto& [object, names] : recorder_sidecar_keys()) {
+    for (const auto& key : names) {
+      ++keys;
+      const bool described =
+          doc.find("`" + key + "`") != std::string::npos || doc.find("`" + key + "[]`") != std::string::npos;
+      EXPECT_TRUE(described) << (object.empty() ? std::string("top level") : object) << ": " << key;
+    }
+  }
+  EXPECT_GT(keys, 60u);
 }
 
 }  // namespace

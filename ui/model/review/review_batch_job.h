@@ -4,12 +4,12 @@
 // process_session_cached on a worker thread, with progress, ETA and cancel. Cached trials come back
 // at once; a cancelled batch keeps what was done (the rest are rows marked "cancelled").
 #include <filesystem>
-#include <map>
 #include <memory>
 #include <string>
 #include <vector>
 
 #include "core/processing/batch.h"
+#include "core/review/folder_length_corrections.h"
 #include "core/review/trial_row.h"
 #include "ui/model/jobs/background_job.h"
 
@@ -30,26 +30,13 @@ struct ReviewBatch {
   int processed_now = 0, from_cache = 0;
 };
 
-// A subject's finger-length correction chosen for one opened folder: the file and what it holds.
-struct FolderLengthCorrection {
-  std::filesystem::path file;
-  LengthCorrection correction;
-};
-using FolderLengthCorrections = std::map<std::filesystem::path, FolderLengthCorrection>;
-
 struct ReviewBatchInput {
   std::vector<std::filesystem::path> folders;
   BatchOptions options;             // stop/on_progress are set by the job
   std::filesystem::path cache_dir;  // empty: no cache
-  // A finger-length correction per folder (a subject's), applied to that folder's trials after the
-  // default fusion; with the reference fusion none is applied (it stays the study's algorithm).
+  // A finger-length correction per folder (a subject's), applied as core/review/folder_length_corrections.h says.
   FolderLengthCorrections corrections;
 };
-
-// The options one folder's trials are processed with: `options` plus that folder's correction
-// when there is one and the fusion is the default.
-BatchOptions folder_options(const BatchOptions& options, const FolderLengthCorrections& corrections,
-                            const std::filesystem::path& folder);
 
 // The work itself, for the job and for tests (runs on the calling thread).
 ReviewBatch run_review_batch(const ReviewBatchInput& input, std::stop_token stop,

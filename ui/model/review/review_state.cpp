@@ -231,12 +231,7 @@ void ReviewState::export_agreement(const std::filesystem::path& dir) {
   for (const auto& f : folders_) in.inputs.push_back(f.string());
   in.method = fusion_method_name(options_.process.method);
   in.parameters = process_options_json(options_.process);
-  // Which folders' lengths were corrected, and with which file (the trials' own summaries carry
-  // the factors).
-  if (options_.process.method == FusionMethod::kDefault) {
-    for (const auto& [folder, c] : corrections_)
-      in.parameters["length_correction_files"][folder.string()] = c.file.string();
-  }
+  add_length_correction_files(in.parameters, options_.process.method, corrections_);
   export_dir_ = dir;
   export_message_ = "exporting...";
   export_job_.start(

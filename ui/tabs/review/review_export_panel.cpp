@@ -36,7 +36,8 @@ std::string outcome_line(const MotionExportOutcome& o) {
 
 }  // namespace
 
-ReviewExportPanel::ReviewExportPanel(FolderOpener opener) : opener_(std::move(opener)) {
+ReviewExportPanel::ReviewExportPanel(std::shared_ptr<ReviewState> state, FolderOpener opener)
+    : state_(std::move(state)), opener_(std::move(opener)) {
   if (!opener_) {
     opener_ = [](const std::filesystem::path& folder, std::string* error) {
       return open_in_file_manager(folder, error);
@@ -73,7 +74,8 @@ void ReviewExportPanel::suggest_paths() {
   }
 }
 
-void ReviewExportPanel::draw_button(const ReviewState& state) {
+void ReviewExportPanel::draw_button() {
+  const ReviewState& state = *state_;
   anchors_.clear();  // a frame's anchors are what it drew: the button comes first
   const MotionExportJob& job = state.motion_export();
   char label[96];
@@ -93,7 +95,8 @@ void ReviewExportPanel::draw_button(const ReviewState& state) {
   }
 }
 
-void ReviewExportPanel::draw_window(ReviewState& state) {
+void ReviewExportPanel::draw_window() {
+  ReviewState& state = *state_;
   if (!open_) return;
   const ImGuiViewport* viewport = ImGui::GetMainViewport();
   ImGui::SetNextWindowPos(viewport->GetCenter(), ImGuiCond_Appearing, ImVec2(0.5F, 0.5F));
@@ -232,7 +235,8 @@ void ReviewExportPanel::draw_folder() {
     ImGui::SetTooltip("Unticked, an export that would replace a file writes nothing and lists the files");
 }
 
-void ReviewExportPanel::start(ReviewState& state) {
+void ReviewExportPanel::start() {
+  ReviewState& state = *state_;
   started_ = true;
   open_error_.clear();
   const std::filesystem::path folder(folder_);
@@ -265,7 +269,7 @@ void ReviewExportPanel::draw_run(ReviewState& state) {
                        (what_ == What::kShown && state.visible_trials().empty()) ||
                        (what_ == What::kBids && state.folders().empty());
   ImGui::BeginDisabled(nothing);
-  if (ImGui::Button("Export", ImVec2(120, 0))) start(state);
+  if (ImGui::Button("Export", ImVec2(120, 0))) start();
   ImGui::EndDisabled();
   anchors_.remember("export.start");
   if (started_) draw_outcome(state);

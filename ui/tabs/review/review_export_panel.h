@@ -5,6 +5,7 @@
 // folder in the desktop's file manager.
 #include <filesystem>
 #include <functional>
+#include <memory>
 #include <string>
 
 #include "ui/model/review/review_state.h"
@@ -17,12 +18,12 @@ class ReviewExportPanel {
  public:
   // Shows a folder to the person (tests pass a recorder instead of the file manager).
   using FolderOpener = std::function<bool(const std::filesystem::path& folder, std::string* error)>;
-  explicit ReviewExportPanel(FolderOpener opener = {});
+  explicit ReviewExportPanel(std::shared_ptr<ReviewState> state, FolderOpener opener = {});
 
   // The Export... button of the sources bar; while an export runs it says how far it is.
-  void draw_button(const ReviewState& state);
+  void draw_button();
   // The Export window when open (drawn after the rest of the tab so it stays on top).
-  void draw_window(ReviewState& state);
+  void draw_window();
 
   enum class What { kSelected, kShown, kBids };
   // What the button and the window's controls do, for tests and captures.
@@ -30,7 +31,7 @@ class ReviewExportPanel {
   bool is_open() const { return open_; }
   void choose(What what);
   void set_folder(const std::filesystem::path& folder);
-  void start(ReviewState& state);  // the Export button
+  void start();  // the Export button
   // Export, progress.cancel, result, open_folder, error and the choices, as last drawn.
   const WidgetAnchors& anchors() const { return anchors_; }
 
@@ -42,6 +43,7 @@ class ReviewExportPanel {
   void draw_outcome(const ReviewState& state);
   void suggest_paths();  // the default folder (and key) for what is chosen, until one is typed
 
+  std::shared_ptr<ReviewState> state_;
   FolderOpener opener_;
   bool open_ = false;
   What what_ = What::kShown;

@@ -10,7 +10,9 @@
 
 namespace lmc::ui {
 
-void ReviewReplayPanel::draw(ReviewState& state) {
+void ReviewReplayPanel::draw() {
+  anchors_.clear();  // only what this frame drew
+  const ReviewState& state = *state_;
   const auto view = state.view();
   if (!view || !view->result || view->series.time_s.empty()) return;
   LinkedXRange& range = *state.x_range();
@@ -29,6 +31,7 @@ void ReviewReplayPanel::draw(ReviewState& state) {
     playing_ = !playing_;
     range.cursor = t;
   }
+  anchors_.remember("play");
   ImGui::SameLine();
   float slider = static_cast<float>(std::clamp(t, t0, t1));
   ImGui::SetNextItemWidth(-1);
@@ -36,6 +39,7 @@ void ReviewReplayPanel::draw(ReviewState& state) {
     range.cursor = slider;
     playing_ = false;
   }
+  anchors_.remember("time");
   const auto frame = replay_frame(*view->result, std::clamp(t, t0, t1));
   if (!frame) return;
   char caption[160];

@@ -1,46 +1,63 @@
+// The Review tab: the folders a researcher opened, processed in the background into one table
+// of trials, the selected trial against Vicon with its 3D replay, agreement across the trials shown
+// and the study's tables, and exports. Its state is ui/model/review/review_state.h; the panels
+// beside this file draw it (open buttons, Export..., sources bar, trial table, trial view with the
+// replay, agreement, study tables, the welcome shown while nothing is open) and this file lays them
+// out, reports finished work on the status bar and sets up the --capture pictures.
 #include "ui/tabs/review/review_tab.h"
 
 #include <imgui.h>
 
-#include <algorithm>
 #include <cstdlib>
+#include <memory>
 
 #include "core/review/review_figures.h"
 #include "ui/model/review/review_state.h"
-#include "ui/model/review/trial_table_height.h"
 #include "ui/model/workbench_context.h"
-#include "ui/tabs/review/review_agreement_view.h"
+#include "ui/tabs/review/review_agreement_panel.h"
 #include "ui/tabs/review/review_export_panel.h"
-#include "ui/tabs/review/review_sources_bar.h"
-#include "ui/tabs/review/review_trial_table.h"
-#include "ui/tabs/review/review_trial_view.h"
+#include "ui/tabs/review/review_open_panel.h"
+#include "ui/tabs/review/review_sources_panel.h"
+#include "ui/tabs/review/review_study_tables_panel.h"
+#include "ui/tabs/review/review_trial_table_panel.h"
+#include "ui/tabs/review/review_trial_view_panel.h"
+#include "ui/tabs/review/review_welcome_panel.h"
 #include "ui/widgets/figure_view.h"
-#include "ui/widgets/file_browser.h"
-#include "ui/widgets/markdown_view.h"
 
 namespace lmc::ui {
 namespace {
 
 class ReviewTab final : public Tab {
  public:
-  ReviewTab(StatusSink& status, WorkbenchContext& context) : status_(status), context_(context) {
+  ReviewTab(StatusSink& status, WorkbenchContext& context)
+      : status_(status),
+        context_(context),
+        state_(std::make_shared<ReviewState>()),
+        welcome_(state_),
+        open_(state_),
+        export_panel_(state_),
+        sources_(state_),
+        table_(state_),
+        trial_view_(state_),
+        agreement_(state_),
+        study_tables_(state_) {
     take_review_requests();
   }
 
   void update(bool /*shown*/) override {
     take_review_requests();
-    state_.update();
+    state_->update();
     // Jobs end on their workers whenever they end: compare with the last frame, not within this one.
-    const MotionExportJob& export_job = state_.motion_export();
+    const MotionExportJob& export_job = state_->motion_export();
     if (job_finished(export_job.state()) && export_job.runs() != reported_exports_) {
       reported_exports_ = export_job.runs();
       report_export();
     }
-    const bool processing = state_.batch_job().running();
+    const bool processing = state_->batch_job().running();
     const bool processing_ended = was_processing_ && !processing;
     was_processing_ = processing;
     if (processing_ended) {
-      if (const ReviewBatch* b = state_.batch()) {
+      if (const ReviewBatch* b = state_->batch()) {
         status_.set_status("Review: " + std::to_string(b->trials.size()) + " trial(s) ready (" +
                            std::to_string(b->from_cache) + " from the cache)");
       }
@@ -48,44 +65,40 @@ class ReviewTab final : public Tab {
   }
 
   void draw() override {
-    if (state_.folders().empty()) {
-      draw_review_welcome(state_, browsers_.folder);
+    if (state_->folders().empty()) {
+      welcome_.draw();
       return;
     }
-    draw_review_sources_bar(state_, browsers_, export_panel_);
+    // The top bar: what can be opened, Export..., then the fusion, what is open and the batch.
+    open_.draw();
+    ImGui::SameLine();
+    export_panel_.draw_button();
+    ImGui::SameLine(0, 20);
+    sources_.draw();
     ImGui::Separator();
-    // The filters' line is drawn above the table, inside draw_review_trial_table.
-    const float available = ImGui::GetContentRegionAvail().y - ImGui::GetFrameHeightWithSpacing();
-    const float row_px = ImGui::GetFontSize() + 2.0F * ImGui::GetStyle().CellPadding.y;
-    const size_t rows = state_.visible_trials().size();
-    const float table_px = trial_table_height(available, row_px, rows, table_dragged_px_);
-    draw_review_trial_table(state_, table_px);
-    draw_table_splitter(available, row_px, rows, table_px);
+    table_.draw();
     if (ImGui::BeginTabBar("review_views")) {
       if (ImGui::BeginTabItem("Trial against Vicon", nullptr, pending_view_ == 0 ? ImGuiTabItemFlags_SetSelected : 0)) {
-        trial_view_.draw(state_, context_.picture_renderer());
+        trial_view_.draw(context_.picture_renderer());
         ImGui::EndTabItem();
       }
       if (ImGui::BeginTabItem("Agreement", nullptr, pending_view_ == 1 ? ImGuiTabItemFlags_SetSelected : 0)) {
-        agreement_view_.draw(state_, context_.picture_renderer());
+        agreement_.draw(context_.picture_renderer());
         ImGui::EndTabItem();
       }
       if (ImGui::BeginTabItem("Study tables", nullptr, pending_view_ == 2 ? ImGuiTabItemFlags_SetSelected : 0)) {
-        // The study's headline numbers over the trials the table shows (lmc report's tables).
-        const auto& blocks = state_.agreement().study_tables;
-        if (blocks.empty()) ImGui::TextDisabled("No processed trial among those shown.");
-        draw_markdown_view("study_tables", blocks);
+        study_tables_.draw();
         ImGui::EndTabItem();
       }
       pending_view_ = -1;
       ImGui::EndTabBar();
     }
-    export_panel_.draw_window(state_);
+    export_panel_.draw_window();
   }
 
   // The status bar's line for a finished export (the window may have been closed meanwhile).
   void report_export() {
-    const MotionExportJob& job = state_.motion_export();
+    const MotionExportJob& job = state_->motion_export();
     if (job.state() == JobState::kFailed) {
       const std::string error = job.error();
       status_.set_status("Review: export failed: " + error.substr(0, error.find('\n')), true);  // its first line
@@ -95,43 +108,27 @@ class ReviewTab final : public Tab {
     }
   }
 
-  // A bar below the trial table: drag it to give the table more or fewer rows than the default.
-  void draw_table_splitter(float available, float row_px, size_t rows, float table_px) {
-    const ImVec2 at = ImGui::GetCursorScreenPos();
-    const float width = ImGui::GetContentRegionAvail().x;
-    ImGui::InvisibleButton("##trial_table_splitter", ImVec2(std::max(1.0F, width), 6.0F));
-    const bool active = ImGui::IsItemActive();
-    if (active && ImGui::GetIO().MouseDelta.y != 0.0F)
-      table_dragged_px_ = trial_table_height(available, row_px, rows, table_px + ImGui::GetIO().MouseDelta.y);
-    if (active || ImGui::IsItemHovered()) ImGui::SetMouseCursor(ImGuiMouseCursor_ResizeNS);
-    const ImU32 colour = ImGui::GetColorU32(active                   ? ImGuiCol_SeparatorActive
-                                            : ImGui::IsItemHovered() ? ImGuiCol_SeparatorHovered
-                                                                     : ImGuiCol_Separator);
-    ImGui::GetWindowDrawList()->AddLine(ImVec2(at.x, at.y + 3.0F), ImVec2(at.x + width, at.y + 3.0F), colour, 2.0F);
-    if (ImGui::IsItemHovered()) ImGui::SetTooltip("Drag to give the trial table more or fewer rows");
-  }
-
   // Folders other parts of the workbench asked to review (start-up, the Record tab): one run.
   void take_review_requests() {
     auto& requests = context_.review_requests();
     if (requests.empty()) return;
-    state_.open_folders(requests);
+    state_->open_folders(requests);
     requests.clear();
   }
 
   int prepare_for_capture() override {
     pending_view_ = 0;
     if (const char* trial = std::getenv("LMC_REVIEW_TRIAL"); trial != nullptr && *trial != '\0')
-      state_.prefer_trial(trial);
+      state_->prefer_trial(trial);
     // LMC_REVIEW_LENGTH_CORRECTION=FILE: the first opened folder's trials with that subject's
     // finger-length correction (the picture shows the chip and the corrected lengths).
     if (const char* file = std::getenv("LMC_REVIEW_LENGTH_CORRECTION");
-        file != nullptr && *file != '\0' && !state_.folders().empty()) {
-      state_.set_length_correction(state_.folders().front(), file);
+        file != nullptr && *file != '\0' && !state_->folders().empty()) {
+      state_->set_length_correction(state_->folders().front(), file);
     }
     return 4;
   }
-  bool busy_for_capture() const override { return state_.busy(); }
+  bool busy_for_capture() const override { return state_->busy(); }
   std::vector<std::string> extra_captures() const override {
     std::vector<std::string> names{"review-agreement", "review-study-tables", "review-export"};
     // LMC_REVIEW_EXPORT_DIR=DIR: the trials shown are exported there as C3D and the finished
@@ -146,7 +143,7 @@ class ReviewTab final : public Tab {
       // LMC_REVIEW_PNG=FILE: the pooled group's first Bland-Altman figure is also saved as a PNG
       // through the off-screen renderer, so the smoke test checks the PNG export end to end.
       const char* png = std::getenv("LMC_REVIEW_PNG");
-      const auto& groups = state_.agreement().table.groups;
+      const auto& groups = state_->agreement().table.groups;
       if (png != nullptr && *png != '\0' && context_.picture_renderer() && !groups.empty() &&
           !groups.back().measures.empty()) {
         const figures::Figure figure = bland_altman_figure(groups.back(), groups.back().measures.front());
@@ -161,22 +158,25 @@ class ReviewTab final : public Tab {
     }
     if (name == "review-export-done") {
       export_panel_.set_folder(std::getenv("LMC_REVIEW_EXPORT_DIR"));
-      export_panel_.start(state_);
+      export_panel_.start();
     }
   }
 
  private:
   StatusSink& status_;
   WorkbenchContext& context_;
-  ReviewState state_;
-  ReviewBrowsers browsers_;
-  ReviewTrialView trial_view_;
-  ReviewAgreementView agreement_view_;
+  std::shared_ptr<ReviewState> state_;  // shared with every panel
+  ReviewWelcomePanel welcome_;
+  ReviewOpenPanel open_;
   ReviewExportPanel export_panel_;
-  bool was_processing_ = false;    // as last updated: the end of processing is reported once
-  int reported_exports_ = 0;       // the export runs whose outcome the status bar has shown
-  int pending_view_ = -1;          // a capture's request: 0 the trial view, 1 agreement, 2 study tables
-  float table_dragged_px_ = 0.0F;  // the trial table's height once the splitter was dragged (0: the default)
+  ReviewSourcesPanel sources_;
+  ReviewTrialTablePanel table_;
+  ReviewTrialViewPanel trial_view_;
+  ReviewAgreementPanel agreement_;
+  ReviewStudyTablesPanel study_tables_;
+  bool was_processing_ = false;  // as last updated: the end of processing is reported once
+  int reported_exports_ = 0;     // the export runs whose outcome the status bar has shown
+  int pending_view_ = -1;        // a capture's request: 0 the trial view, 1 agreement, 2 study tables
 };
 
 }  // namespace

@@ -1,4 +1,4 @@
-#include "ui/tabs/review/review_agreement_view.h"
+#include "ui/tabs/review/review_agreement_panel.h"
 
 #include <imgui.h>
 
@@ -37,7 +37,7 @@ std::string group_label(const AgreementGroup& g) {
   return name + " (" + std::to_string(g.n_trials) + " trials, " + std::to_string(g.n_subjects) + " subj.)";
 }
 
-void draw_measure_table(const AgreementGroup& g, int& measure) {
+void draw_measure_table(const AgreementGroup& g, int& measure, WidgetAnchors& anchors) {
   const ImGuiTableFlags flags =
       ImGuiTableFlags_RowBg | ImGuiTableFlags_BordersInnerV | ImGuiTableFlags_SizingFixedFit | ImGuiTableFlags_ScrollY;
   // Every measure's row and the header, no more: the plot below takes what is left.
@@ -64,6 +64,7 @@ void draw_measure_table(const AgreementGroup& g, int& measure) {
     if (ImGui::Selectable(name.c_str(), measure == static_cast<int>(m), ImGuiSelectableFlags_SpanAllColumns)) {
       measure = static_cast<int>(m);
     }
+    anchors.remember("measure." + std::to_string(m));
     if (ImGui::IsItemHovered()) {
       ImGui::BeginTooltip();
       ImGui::TextUnformatted(a.bland_altman.method.c_str());
@@ -154,7 +155,9 @@ void draw_visibility_map(const VisibilityMap& map) {
 
 }  // namespace
 
-void ReviewAgreementView::draw(ReviewState& state, const PictureRenderer& renderer) {
+void ReviewAgreementPanel::draw(const PictureRenderer& renderer) {
+  anchors_.clear();  // only what this frame drew
+  ReviewState& state = *state_;
   const ReviewState::Agreement& agreement = state.agreement();
   const AgreementTable& table = agreement.table;
   ImGui::TextDisabled(
@@ -172,6 +175,7 @@ void ReviewAgreementView::draw(ReviewState& state, const PictureRenderer& render
     }
     ImGui::EndCombo();
   }
+  anchors_.remember("motion");
   if (ImGui::IsItemHovered())
     ImGui::SetTooltip("A joint's range of motion means something else in a static trial than in a flexion trial");
   if (table.groups.empty()) {
@@ -189,9 +193,11 @@ void ReviewAgreementView::draw(ReviewState& state, const PictureRenderer& render
     }
     ImGui::EndCombo();
   }
+  anchors_.remember("group");
   ImGui::SameLine();
   ImGui::BeginDisabled(state.exporting());
   if (ImGui::Button("Export all...")) export_browser_.open(FileBrowser::Mode::kSave, sessions_dir(), "review-export");
+  anchors_.remember("export_all");
   ImGui::EndDisabled();
   if (ImGui::IsItemHovered()) {
     ImGui::SetTooltip(
@@ -205,7 +211,7 @@ void ReviewAgreementView::draw(ReviewState& state, const PictureRenderer& render
   }
   const AgreementGroup& group = table.groups[static_cast<size_t>(g)];
   measure_ = std::clamp(measure_, 0, std::max(0, static_cast<int>(group.measures.size()) - 1));
-  draw_measure_table(group, measure_);
+  draw_measure_table(group, measure_, anchors_);
   // What the table could not compute, in words (the statistics say why; the same for every measure
   // of a one-subject group, so the selected one speaks for the rest).
   if (!group.measures.empty()) {

@@ -1,4 +1,4 @@
-#include "ui/tabs/review/review_trial_table.h"
+#include "ui/tabs/review/review_trial_table_panel.h"
 
 #include <imgui.h>
 
@@ -8,6 +8,7 @@
 #include <string>
 
 #include "core/common/number_format.h"
+#include "ui/model/review/trial_table_height.h"
 
 namespace lmc::ui {
 namespace {
@@ -52,7 +53,19 @@ ImVec4 status_colour(TrialRowStatus s) {
 
 }  // namespace
 
-void draw_review_trial_table(ReviewState& state, float height_px) {
+void ReviewTrialTablePanel::draw() {
+  anchors_.clear();  // only what this frame drew
+  // The filters' line is drawn above the table, in draw_table.
+  const float available = ImGui::GetContentRegionAvail().y - ImGui::GetFrameHeightWithSpacing();
+  const float row_px = ImGui::GetFontSize() + 2.0F * ImGui::GetStyle().CellPadding.y;
+  const size_t rows = state_->visible_trials().size();
+  const float table_px = trial_table_height(available, row_px, rows, dragged_px_);
+  draw_table(table_px);
+  draw_splitter(available, row_px, rows, table_px);
+}
+
+void ReviewTrialTablePanel::draw_table(float height_px) {
+  ReviewState& state = *state_;
   const auto& trials = state.trials();
   TrialFilter f = state.filter();
   filter_combo("subject", f.subject, distinct_values(trials, TrialColumn::kSubject), 110);
@@ -125,6 +138,7 @@ void draw_review_trial_table(ReviewState& state, float height_px) {
       if (ImGui::Selectable(row.subject.c_str(), state.selected() == index, ImGuiSelectableFlags_SpanAllColumns)) {
         state.select(index);
       }
+      anchors_.remember("trial." + std::to_string(index));
       if (ImGui::IsItemHovered()) {
         ImGui::BeginTooltip();
         ImGui::Text("%s  (%s%s)", t.job.lmc.string().c_str(), t.job.vicon ? "with Vicon" : "no Vicon file",
@@ -159,6 +173,22 @@ void draw_review_trial_table(ReviewState& state, float height_px) {
     }
   }
   ImGui::EndTable();
+}
+
+void ReviewTrialTablePanel::draw_splitter(float available, float row_px, size_t rows, float table_px) {
+  const ImVec2 at = ImGui::GetCursorScreenPos();
+  const float width = ImGui::GetContentRegionAvail().x;
+  ImGui::InvisibleButton("##trial_table_splitter", ImVec2(std::max(1.0F, width), 6.0F));
+  anchors_.remember("splitter");
+  const bool active = ImGui::IsItemActive();
+  if (active && ImGui::GetIO().MouseDelta.y != 0.0F)
+    dragged_px_ = trial_table_height(available, row_px, rows, table_px + ImGui::GetIO().MouseDelta.y);
+  if (active || ImGui::IsItemHovered()) ImGui::SetMouseCursor(ImGuiMouseCursor_ResizeNS);
+  const ImU32 colour = ImGui::GetColorU32(active                   ? ImGuiCol_SeparatorActive
+                                          : ImGui::IsItemHovered() ? ImGuiCol_SeparatorHovered
+                                                                   : ImGuiCol_Separator);
+  ImGui::GetWindowDrawList()->AddLine(ImVec2(at.x, at.y + 3.0F), ImVec2(at.x + width, at.y + 3.0F), colour, 2.0F);
+  if (ImGui::IsItemHovered()) ImGui::SetTooltip("Drag to give the trial table more or fewer rows");
 }
 
 }  // namespace lmc::ui

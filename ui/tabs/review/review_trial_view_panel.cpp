@@ -1,4 +1,4 @@
-#include "ui/tabs/review/review_trial_view.h"
+#include "ui/tabs/review/review_trial_view_panel.h"
 
 #include <imgui.h>
 
@@ -36,13 +36,15 @@ std::vector<PlotSeries> series_for(const TrialSeries& s, bool angle, int index, 
 
 }  // namespace
 
-SeriesPlot& ReviewTrialView::plot(const std::string& id, const std::shared_ptr<LinkedXRange>& range) {
+SeriesPlot& ReviewTrialViewPanel::plot(const std::string& id, const std::shared_ptr<LinkedXRange>& range) {
   auto& p = plots_[id];
   if (!p || p->x_range() != range) p = std::make_unique<SeriesPlot>(range);
   return *p;
 }
 
-void ReviewTrialView::draw(ReviewState& state, const PictureRenderer& renderer) {
+void ReviewTrialViewPanel::draw(const PictureRenderer& renderer) {
+  anchors_.clear();  // only what this frame drew
+  ReviewState& state = *state_;
   const auto view = state.view();
   if (!view) {
     if (state.view_job().running()) {
@@ -63,12 +65,14 @@ void ReviewTrialView::draw(ReviewState& state, const PictureRenderer& renderer) 
                       s.has_vicon ? ", against Vicon" : ", no Vicon file");
   ImGui::SameLine(0, 20);
   ImGui::Checkbox("each controller", &each_controller_);
+  anchors_.remember("each_controller");
   if (ImGui::IsItemHovered()) ImGui::SetTooltip("Also draw each controller's own angles after realignment (LMC1-LMC4)");
   ImGui::SameLine();
   ImGui::BeginDisabled(state.exporting());
   if (ImGui::Button("Export trial...")) {
     export_browser_.open(FileBrowser::Mode::kSave, sessions_dir(), "review-" + figure_stem(s.trial));
   }
+  anchors_.remember("export_trial");
   ImGui::EndDisabled();
   if (ImGui::IsItemHovered())
     ImGui::SetTooltip("SVG of every plot, the CSV behind it, a JSON sidecar, and every series and label as one CSV");
@@ -152,7 +156,7 @@ void ReviewTrialView::draw(ReviewState& state, const PictureRenderer& renderer) 
   ImGui::EndChild();
   ImGui::SameLine();
   ImGui::BeginChild("replay", ImVec2(0, 0), false, ImGuiWindowFlags_NoScrollbar | ImGuiWindowFlags_NoScrollWithMouse);
-  replay_.draw(state);
+  replay_.draw();
   ImGui::EndChild();
 }
 

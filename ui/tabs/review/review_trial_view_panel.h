@@ -13,16 +13,22 @@
 #include "ui/widgets/file_browser.h"
 #include "ui/widgets/png_saver.h"
 #include "ui/widgets/series_plot.h"
+#include "ui/widgets/widget_anchors.h"
 
 namespace lmc::ui {
 
-class ReviewTrialView {
+class ReviewTrialViewPanel {
  public:
-  void draw(ReviewState& state, const PictureRenderer& renderer);
+  explicit ReviewTrialViewPanel(std::shared_ptr<ReviewState> state) : state_(state), replay_(std::move(state)) {}
+  void draw(const PictureRenderer& renderer);
+  // "each_controller" and "export_trial" as drawn (headless tests click them).
+  const WidgetAnchors& anchors() const { return anchors_; }
+  bool each_controller() const { return each_controller_; }  // each controller's curves drawn too
 
  private:
   // One plot per id, all on the state's shared x range; each keeps its legend toggles.
   SeriesPlot& plot(const std::string& id, const std::shared_ptr<LinkedXRange>& range);
+  std::shared_ptr<ReviewState> state_;
   bool each_controller_ = false;
   int finger_ = 1;  // the finger-length plot's finger (0 thumb … 4 pinky)
   // What the curves take besides their four plot areas (legends, combo, axis labels), measured in
@@ -32,6 +38,7 @@ class ReviewTrialView {
   FileBrowser export_browser_{"Export the trial to a new folder", ""};
   ReviewReplayPanel replay_;
   PngSaver png_{1200, 1800};
+  WidgetAnchors anchors_;
 };
 
 }  // namespace lmc::ui

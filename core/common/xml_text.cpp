@@ -1,6 +1,6 @@
-#include "core/figures/xml_text.h"
+#include "core/common/xml_text.h"
 
-namespace lmc::figures {
+namespace lmc {
 namespace {
 
 // Length of the valid UTF-8 sequence starting at s[i], or 0 when it is not one (overlong forms,
@@ -34,7 +34,7 @@ size_t utf8_length(std::string_view s, size_t i) {
 
 }  // namespace
 
-std::string xml_escape(std::string_view text) {
+std::string xml_escape(std::string_view text, XmlBreaks breaks) {
   std::string out;
   out.reserve(text.size());
   for (size_t i = 0; i < text.size();) {
@@ -57,12 +57,15 @@ std::string xml_escape(std::string_view text) {
           out += "&apos;";
           break;
         case '\t':
+          out += breaks == XmlBreaks::kSpace ? ' ' : '\t';
+          break;
         case '\n':
         case '\r':
-          out += ' ';
+          if (breaks == XmlBreaks::kSpace) out += ' ';
           break;
         default:
-          if (c >= 0x20 && c != 0x7F) out += static_cast<char>(c);
+          // DEL is an XML 1.0 character: kept, as every other printable byte.
+          if (c >= 0x20) out += static_cast<char>(c);
       }
       ++i;
       continue;
@@ -78,4 +81,4 @@ std::string xml_escape(std::string_view text) {
   return out;
 }
 
-}  // namespace lmc::figures
+}  // namespace lmc
