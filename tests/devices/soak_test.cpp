@@ -114,10 +114,12 @@ TEST(ProcessStats, CountsAnOpenedFile) {
 
 SoakConfig short_soak(const std::string& name) {
   SoakConfig c;
-  c.seconds = 3.5;
+  // Two trials at least, with room for a loaded machine: a trial's checks (file read back, verdict,
+  // under the sanitizers) can take over a second, and a trial starts only with a second left.
+  c.seconds = 4.0;
   c.devices = 2;
   c.rate_hz = 60;
-  c.trial_seconds = 1.5;
+  c.trial_seconds = 1.0;
   c.output_dir = test::scratch_dir(name);
   c.background = false;  // its pose set takes a while under the sanitizers; the ctest soak runs it
   c.progress_every_s = 0;
