@@ -3,6 +3,10 @@
 #include <algorithm>
 #include <utility>
 
+#include "core/common/error.h"
+#include "core/io/sensor_catalogue_json.h"
+#include "core/layout/sensor_catalogue.h"
+
 namespace lmc::devices {
 namespace {
 constexpr std::int64_t kRateWindowNs = 1'000'000'000;
@@ -102,6 +106,21 @@ DeviceHub::Device& DeviceHub::device_for_locked(const std::string& serial) {
   return d;
 }
 
+void DeviceHub::check_model_locked(Device& d) {
+  DeviceStatus& s = d.status;
+  const std::string before = s.model_warning;
+  s.model_warning.clear();
+  if (s.slot_index >= 0 && s.product_id != 0) {
+    const LayoutDevice& ld = layout_.devices[static_cast<size_t>(s.slot_index)];
+    try {
+      s.model_warning = slot_model_mismatch(ld.slot, ld.model, s.product_id, sensor_catalogue());
+    } catch (const Error& e) {
+      s.model_warning = std::string("cannot check ") + ld.slot + "'s model: " + e.what();
+    }
+  }
+  if (!s.model_warning.empty() && s.model_warning != before) message_locked("warning: " + s.model_warning);
+}
+
 void DeviceHub::try_auto_assign_locked(Device& d) {
   if (!options_.auto_assign) return;
   for (size_t i = 0; i < layout_.devices.size(); ++i) {
@@ -139,6 +158,7 @@ std::string DeviceHub::assign(const std::string& serial, const std::string& slot
   target->status.slot = slot;
   target->auto_assigned = false;
   message_locked(serial + " assigned to " + slot);
+  check_model_locked(*target);
   return {};
 }
 
@@ -177,6 +197,7 @@ void DeviceHub::on_device_event(const DeviceEvent& event) {
         case DeviceEventKind::kAppeared:
           if (!event.info.backend.empty()) s.backend = event.info.backend;
           if (!event.info.model.empty()) s.model = event.info.model;
+          if (event.info.product_id != 0) s.product_id = event.info.product_id;
           if (!event.info.tracking_mode.empty()) s.tracking_mode = event.info.tracking_mode;
           if (!s.connected && s.disconnects > 0) {
             message_locked(label(s) + " reconnected");
@@ -191,6 +212,7 @@ void DeviceHub::on_device_event(const DeviceEvent& event) {
           s.connected = true;
           if (s.slot_index < 0) try_auto_assign_locked(d);
           if (s.slot_index < 0) message_locked("serial " + s.serial + " is not in the layout: assign it to a slot");
+          check_model_locked(d);
           break;
         case DeviceEventKind::kLost:
           if (s.connected) ++s.disconnects;

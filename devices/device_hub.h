@@ -44,6 +44,10 @@ struct DeviceStatus {
   std::string tracking_mode;
   std::int64_t frames_other_side_hand = 0;
   std::optional<std::int64_t> device_clock_us;
+  std::uint32_t product_id = 0;  // as the backend reported it (0: not known)
+  // Set when the connected controller is not the model its slot is laid out as
+  // (slot_model_mismatch, core/layout/sensor_catalogue.h); empty otherwise.
+  std::string model_warning;
 };
 
 struct HubSnapshot {
@@ -118,6 +122,8 @@ class DeviceHub final : public FrameSink {
   };
   Device& device_for_locked(const std::string& serial);
   void try_auto_assign_locked(Device& d);
+  // Sets d's model_warning from its product id and its slot's model, saying so when it is new.
+  void check_model_locked(Device& d);
   void message_locked(std::string text);
   static std::string label(const DeviceStatus& s);
 

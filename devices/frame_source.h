@@ -17,6 +17,9 @@ struct DeviceInfo {
   std::string model;    // "Leap Motion Controller", "simulated", ...
   // "desktop", "screen-top", "head-mounted" (devices/tracking_mode.h); empty until known.
   std::string tracking_mode;
+  // The LeapC product id (LEAP_DEVICE_INFO::pid) of the hardware, or of the model a simulated
+  // device stands in for; 0 when not known (replay).
+  std::uint32_t product_id = 0;
 };
 
 // One tracking event of one device, copied out of the backend's buffers.

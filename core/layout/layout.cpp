@@ -1,8 +1,11 @@
 #include "core/layout/layout.h"
 
+#include <algorithm>
 #include <cmath>
+
 #include <set>
 #include <utility>
+#include "core/common/error.h"
 
 namespace lmc {
 
@@ -20,17 +23,60 @@ int Layout::find_serial(const std::string& serial) const {
   return -1;
 }
 
+void set_device_model(LayoutDevice& device, const SensorSpec& spec) {
+  device.model = spec.id;
+  device.sensor = spec.sensor;
+  device.footprint_mm = spec.footprint_mm.head<2>();
+}
+
+void set_all_models(Layout& layout, const SensorSpec& spec) {
+  for (auto& d : layout.devices) set_device_model(d, spec);
+}
+
+void set_all_sensors(Layout& layout, const SensorModel& sensor) {
+  for (auto& d : layout.devices) d.sensor = sensor;
+}
+
+void set_models_from_list(Layout& layout, const std::string& ids, const SensorCatalogue& catalogue) {
+  std::vector<std::string> list;
+  size_t start = 0;
+  while (start <= ids.size()) {
+    const size_t comma = std::min(ids.find(',', start), ids.size());
+    list.push_back(ids.substr(start, comma - start));
+    start = comma + 1;
+  }
+  const std::string where = "--models " + ids;
+  if (list.size() != 1 && list.size() != layout.devices.size()) {
+    throw Error(where + ": " + std::to_string(list.size()) + " models for " + std::to_string(layout.devices.size()) +
+                " devices (give one for all, or one per device)");
+  }
+  for (size_t i = 0; i < layout.devices.size(); ++i) {
+    const std::string& id = list.size() == 1 ? list.front() : list[i];
+    set_device_model(layout.devices[i], catalogue.at(id, where));
+  }
+}
+
+bool uniform_sensors(const Layout& layout) {
+  for (const auto& d : layout.devices) {
+    if (!(d.sensor == layout.devices.front().sensor)) return false;
+  }
+  return true;
+}
+
+const SensorModel& common_sensor(const Layout& layout) {
+  static const SensorModel study;
+  if (layout.devices.empty()) return study;
+  for (const auto& d : layout.devices) {
+    if (!(d.sensor == layout.devices.front().sensor)) {
+      throw Error("layout \"" + layout.name + "\": device \"" + d.slot + "\" (model \"" + d.model +
+                  "\") sees through another sensor model than \"" + layout.devices.front().slot +
+                  "\"; this step models one sensor for the whole rig");
+    }
+  }
+  return layout.devices.front().sensor;
+}
+
 std::string validate_layout(const Layout& layout) {
-  const auto& s = layout.sensor;
-  if (!std::isfinite(s.range_mm) || s.range_mm <= 0 || s.range_mm > 5000) {
-    return "/sensor/range_mm: must be a finite number in (0, 5000]";
-  }
-  if (!std::isfinite(s.fov_long_deg) || s.fov_long_deg <= 0 || s.fov_long_deg >= 180) {
-    return "/sensor/fov_long_deg: must be in (0, 180)";
-  }
-  if (!std::isfinite(s.fov_short_deg) || s.fov_short_deg <= 0 || s.fov_short_deg >= 180) {
-    return "/sensor/fov_short_deg: must be in (0, 180)";
-  }
   if (layout.devices.empty() || layout.device_count() > kMaxDevices) {
     return "/devices: a layout holds 1 to " + std::to_string(kMaxDevices) + " devices, this one has " +
            std::to_string(layout.devices.size());
@@ -47,6 +93,10 @@ std::string validate_layout(const Layout& layout) {
       }
     }
     if (!slots.insert(d.slot).second) return at + "/slot: duplicate slot \"" + d.slot + "\"";
+    if (d.model.empty()) return at + "/model: empty sensor model";
+    if (const std::string problem = sensor_problem(d.sensor); !problem.empty()) {
+      return at + "/overrides/" + problem + " (device \"" + d.slot + "\", model \"" + d.model + "\")";
+    }
     if (d.serial) {
       if (d.serial->empty() || d.serial->size() > 64) return at + "/serial: must be 1–64 characters";
       for (char c : *d.serial) {

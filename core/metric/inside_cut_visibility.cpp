@@ -10,11 +10,11 @@
 namespace lmc {
 
 VisibilityWithCut visibility_with_inside_cut(const Layout& layout, std::span<const PreparedFrame> frames,
-                                             double phalanx_radius_mm, double axis_cut_mm) {
+                                             double phalanx_radius_mm) {
   std::vector<DeviceView> views;
   views.reserve(layout.devices.size());
   for (const auto& d : layout.devices) views.push_back(DeviceView::from_device(d));
-  const VisibilityLimits limits = make_limits(VisibilityParams::from_sensor(layout.sensor, phalanx_radius_mm));
+  const std::vector<VisibilityLimits> limits = device_limits(layout, phalanx_radius_mm);
   VisibilityWithCut t;
   for (VisibilityTable* table : {&t.seen, &t.inside_cut}) {
     table->devices = static_cast<int>(views.size());
@@ -29,7 +29,7 @@ VisibilityWithCut visibility_with_inside_cut(const Layout& layout, std::span<con
       const std::span<FingerBits> seen = std::span<FingerBits>(t.seen.bits).subspan(d * n + r.begin(), r.size());
       const std::span<FingerBits> inside =
           std::span<FingerBits>(t.inside_cut.bits).subspan(d * n + r.begin(), r.size());
-      device_visibility_with_cut(views[d], run, limits, axis_cut_mm, seen, cut);
+      device_visibility_with_cut(views[d], run, limits[d], limits[d].axis_cut_mm, seen, cut);
       for (size_t j = 0; j < r.size(); ++j) inside[j] = static_cast<FingerBits>(seen[j] & ~cut[j]);
     }
   });
@@ -39,8 +39,14 @@ VisibilityWithCut visibility_with_inside_cut(const Layout& layout, std::span<con
 LayoutTally tally_from_visibility(const VisibilityWithCut& tables, std::span<const DeviceView> views,
                                   std::span<const PreparedFrame> frames, const VisibilityLimits& limits,
                                   std::span<const int> subset) {
+  return tally_from_visibility(tables, views, frames, same_limits(limits, views.size()), subset);
+}
+
+LayoutTally tally_from_visibility(const VisibilityWithCut& tables, std::span<const DeviceView> views,
+                                  std::span<const PreparedFrame> frames, std::span<const VisibilityLimits> limits,
+                                  std::span<const int> subset) {
   const int nd = tables.seen.devices;
-  if (nd < 1 || nd > kMaxDevices || static_cast<size_t>(nd) != views.size() ||
+  if (nd < 1 || nd > kMaxDevices || static_cast<size_t>(nd) != views.size() || limits.size() != views.size() ||
       static_cast<size_t>(tables.seen.frames) != frames.size()) {
     throw Error("tally_from_visibility: the tables are of another layout or pose set");
   }

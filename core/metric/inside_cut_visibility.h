@@ -20,14 +20,19 @@ struct VisibilityWithCut {
   VisibilityTable seen;
   VisibilityTable inside_cut;
 };
+// Each device's axis cut is its own sensor model's (SensorModel::axis_cut_mm).
 VisibilityWithCut visibility_with_inside_cut(const Layout& layout, std::span<const PreparedFrame> frames,
-                                             double phalanx_radius_mm = 10.0, double axis_cut_mm = kAxisCutMm);
+                                             double phalanx_radius_mm = 10.0);
 
 // The robust metric's tally of the same layout from those tables, without running the kernel again
 // (a finger seen but not inside the cut has a marker beyond it): what tally_layout gives for the
 // same views, frames, limits and cut. With `frame_subset`, only those frames.
 LayoutTally tally_from_visibility(const VisibilityWithCut& tables, std::span<const DeviceView> views,
                                   std::span<const PreparedFrame> frames, const VisibilityLimits& limits,
+                                  std::span<const int> frame_subset = {});
+// A mixed rig: device d through limits[d].
+LayoutTally tally_from_visibility(const VisibilityWithCut& tables, std::span<const DeviceView> views,
+                                  std::span<const PreparedFrame> frames, std::span<const VisibilityLimits> limits,
                                   std::span<const int> frame_subset = {});
 
 }  // namespace lmc

@@ -33,7 +33,7 @@ LayoutReport build_layout_report(const Layout& layout, const PoseSet& poses, std
   for (const auto& d : layout.devices) r.slots.push_back(d.slot);
   // One kernel pass gives what each controller sees and what it sees inside its axis cut; the
   // coverage, the robust terms and each controller's contribution are all counted from it.
-  const VisibilityWithCut tables = visibility_with_inside_cut(layout, prepared, phalanx_radius_mm, kAxisCutMm);
+  const VisibilityWithCut tables = visibility_with_inside_cut(layout, prepared, phalanx_radius_mm);
   const VisibilityTable& table = tables.seen;
   const std::vector<int> horizontal = poses.indices_with(HandOrientation::kHorizontal);
   const std::vector<int> vertical = poses.indices_with(HandOrientation::kVertical);
@@ -41,7 +41,7 @@ LayoutReport build_layout_report(const Layout& layout, const PoseSet& poses, std
 
   std::vector<DeviceView> views;
   for (const auto& d : layout.devices) views.push_back(DeviceView::from_device(d));
-  const VisibilityLimits limits = make_limits(VisibilityParams::from_sensor(layout.sensor, phalanx_radius_mm));
+  const std::vector<VisibilityLimits> limits = device_limits(layout, phalanx_radius_mm);
   const double footprint = footprint_overlap_share(layout);
   // The tallies from the same tables: the kernel runs once for the whole report.
   const LayoutTally all = tally_from_visibility(tables, views, prepared, limits);

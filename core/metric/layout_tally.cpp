@@ -103,10 +103,27 @@ double off_centre_penalty(const PreparedFrame& f, const DeviceView& v, const Vis
 // Frames counted together by tally_frames: byte arrays of this many frames stay in registers or L1.
 constexpr size_t kTallyBlockFrames = 64;
 
+std::vector<VisibilityLimits> same_limits(const VisibilityLimits& limits, size_t devices, double axis_cut_mm) {
+  std::vector<VisibilityLimits> out(devices, limits);
+  if (axis_cut_mm >= 0) {
+    for (auto& l : out) l.axis_cut_mm = axis_cut_mm;
+  }
+  return out;
+}
+
 void tally_frames(std::span<const PreparedFrame> frames, std::span<const DeviceView> views, const FingerBits* bits,
                   const FingerBits* cut_bits, size_t stride, const VisibilityLimits& limits, LayoutTally& t) {
+  VisibilityLimits each[kMaxDevices];
+  for (size_t d = 0; d < views.size() && d < static_cast<size_t>(kMaxDevices); ++d) each[d] = limits;
+  tally_frames(frames, views, bits, cut_bits, stride,
+               std::span<const VisibilityLimits>(each, std::min(views.size(), static_cast<size_t>(kMaxDevices))), t);
+}
+
+void tally_frames(std::span<const PreparedFrame> frames, std::span<const DeviceView> views, const FingerBits* bits,
+                  const FingerBits* cut_bits, size_t stride, std::span<const VisibilityLimits> limits, LayoutTally& t) {
   const size_t nd = views.size();
   if (nd < 1 || nd > static_cast<size_t>(kMaxDevices)) throw Error("a layout needs 1 to 8 devices");
+  if (limits.size() != nd) throw Error("tally_frames: one limits entry per device");
   if (t.c.size() != nd + 1) throw Error("tally_frames: the tally is for another number of devices");
   for (size_t b0 = 0; b0 < frames.size(); b0 += kTallyBlockFrames) {
     const size_t m = std::min(kTallyBlockFrames, frames.size() - b0);
@@ -155,7 +172,7 @@ void tally_frames(std::span<const PreparedFrame> frames, std::span<const DeviceV
       }
       for (size_t j = 0; j < m; ++j) {
         if (b[j] != 0)
-          off_centre += round_millionths(off_centre_penalty(frames[b0 + j], views[d], limits) * kOffCentreScale);
+          off_centre += round_millionths(off_centre_penalty(frames[b0 + j], views[d], limits[d]) * kOffCentreScale);
       }
       t.device_seeing_frames[d] += seeing_frames;
       t.device_sole_frames[d] += sole_frames;
@@ -185,10 +202,21 @@ void tally_frame(const PreparedFrame& frame, std::span<const DeviceView> views, 
   tally_frames(std::span<const PreparedFrame>(&frame, 1), views, bits, cut_bits, 1, limits, t);
 }
 
+void tally_frame(const PreparedFrame& frame, std::span<const DeviceView> views, const FingerBits* bits,
+                 const FingerBits* cut_bits, std::span<const VisibilityLimits> limits, LayoutTally& t) {
+  tally_frames(std::span<const PreparedFrame>(&frame, 1), views, bits, cut_bits, 1, limits, t);
+}
+
 LayoutTally tally_layout(std::span<const DeviceView> views, std::span<const PreparedFrame> frames,
                          const VisibilityLimits& limits, double axis_cut_mm, std::span<const int> subset) {
+  return tally_layout(views, frames, same_limits(limits, views.size(), axis_cut_mm), subset);
+}
+
+LayoutTally tally_layout(std::span<const DeviceView> views, std::span<const PreparedFrame> frames,
+                         std::span<const VisibilityLimits> limits, std::span<const int> subset) {
   const int nd = static_cast<int>(views.size());
   if (nd < 1 || nd > kMaxDevices) throw Error("a layout needs 1 to 8 devices");
+  if (limits.size() != views.size()) throw Error("tally_layout: one limits entry per device");
   const size_t n = subset.empty() ? frames.size() : subset.size();
   tbb::enumerable_thread_specific<LayoutTally> local([&] { return LayoutTally(nd); });
   tbb::parallel_for(tbb::blocked_range<size_t>(0, n, kTallyChunkFrames), [&](const tbb::blocked_range<size_t>& r) {
@@ -200,12 +228,12 @@ LayoutTally tally_layout(std::span<const DeviceView> views, std::span<const Prep
       // Each device over the run of frames (one kernel call per run); with a subset, frame by frame.
       for (size_t d = 0; d < views.size(); ++d) {
         if (subset.empty()) {
-          device_visibility_with_cut(views[d], frames.subspan(begin, count), limits, axis_cut_mm,
+          device_visibility_with_cut(views[d], frames.subspan(begin, count), limits[d], limits[d].axis_cut_mm,
                                      std::span<FingerBits>(bits[d], count), std::span<FingerBits>(cut[d], count));
         } else {
           for (size_t i = 0; i < count; ++i) {
-            device_visibility_with_cut(views[d], frames.subspan(static_cast<size_t>(subset[begin + i]), 1), limits,
-                                       axis_cut_mm, std::span<FingerBits>(&bits[d][i], 1),
+            device_visibility_with_cut(views[d], frames.subspan(static_cast<size_t>(subset[begin + i]), 1), limits[d],
+                                       limits[d].axis_cut_mm, std::span<FingerBits>(&bits[d][i], 1),
                                        std::span<FingerBits>(&cut[d][i], 1));
           }
         }

@@ -57,6 +57,8 @@ void tally_frame(const PreparedFrame& frame, std::span<const DeviceView> views, 
 // Adds exactly what the overload above adds when cut_bits came from the same axis_cut_mm.
 void tally_frame(const PreparedFrame& frame, std::span<const DeviceView> views, const FingerBits* bits,
                  const FingerBits* cut_bits, const VisibilityLimits& limits, LayoutTally& tally);
+void tally_frame(const PreparedFrame& frame, std::span<const DeviceView> views, const FingerBits* bits,
+                 const FingerBits* cut_bits, std::span<const VisibilityLimits> limits, LayoutTally& tally);
 
 // A run of frames at once, as the search counts them: bits[d·stride + j] and cut_bits[d·stride + j]
 // are device d's bits in frames[j] (the kernel's per-device columns of a chunk). Adds exactly what
@@ -64,6 +66,10 @@ void tally_frame(const PreparedFrame& frame, std::span<const DeviceView> views, 
 // for many frames in byte-wide vector operations (the search's tally was ~10 % of its time).
 void tally_frames(std::span<const PreparedFrame> frames, std::span<const DeviceView> views, const FingerBits* bits,
                   const FingerBits* cut_bits, size_t stride, const VisibilityLimits& limits, LayoutTally& tally);
+// The same for a mixed rig: device d's off-centre penalty through its own pyramid, limits[d].
+void tally_frames(std::span<const PreparedFrame> frames, std::span<const DeviceView> views, const FingerBits* bits,
+                  const FingerBits* cut_bits, size_t stride, std::span<const VisibilityLimits> limits,
+                  LayoutTally& tally);
 
 // Seen-marker axis cut and off-centre penalty of one seeing pair (exposed for tests).
 bool seen_marker_beyond_cut(const PreparedFrame& frame, const DeviceView& view, FingerBits bits, double axis_cut_mm);
@@ -74,5 +80,12 @@ double off_centre_penalty(const PreparedFrame& frame, const DeviceView& view, co
 LayoutTally tally_layout(std::span<const DeviceView> views, std::span<const PreparedFrame> frames,
                          const VisibilityLimits& limits, double axis_cut_mm = kAxisCutMm,
                          std::span<const int> frame_subset = {});
+// A mixed rig: device d through limits[d] (one entry per view), its axis cut limits[d].axis_cut_mm.
+LayoutTally tally_layout(std::span<const DeviceView> views, std::span<const PreparedFrame> frames,
+                         std::span<const VisibilityLimits> limits, std::span<const int> frame_subset = {});
+
+// `devices` copies of one device's limits, with the axis cut `axis_cut_mm` when it is given: the
+// uniform rig as a mixed one.
+std::vector<VisibilityLimits> same_limits(const VisibilityLimits& limits, size_t devices, double axis_cut_mm = -1.0);
 
 }  // namespace lmc

@@ -33,7 +33,7 @@ std::shared_ptr<PlacementHeatmap> sweep_placement_heatmap(const Layout& layout,
   }
   const size_t n = frames.size();
   if (n == 0) return grid;
-  const VisibilityLimits limits = make_limits(VisibilityParams::from_sensor(layout.sensor));
+  const std::vector<VisibilityLimits> limits = device_limits(layout);
 
   // Fingers no other controller sees, per frame (only the "added" mode needs them).
   std::vector<FingerBits> missing(n, kAllFingersVisible);
@@ -42,7 +42,8 @@ std::shared_ptr<PlacementHeatmap> sweep_placement_heatmap(const Layout& layout,
     std::vector<FingerBits> others(n, 0);
     for (int d = 0; d < layout.device_count(); ++d) {
       if (d == spec.device) continue;
-      device_visibility(DeviceView::from_device(layout.devices[static_cast<size_t>(d)]), frames, limits, column);
+      device_visibility(DeviceView::from_device(layout.devices[static_cast<size_t>(d)]), frames,
+                        limits[static_cast<size_t>(d)], column);
       for (size_t j = 0; j < n; ++j) others[j] |= column[j];
       if (stop.stop_requested()) return nullptr;
     }
@@ -61,7 +62,7 @@ std::shared_ptr<PlacementHeatmap> sweep_placement_heatmap(const Layout& layout,
       const DeviceView view = DeviceView::from_device(dev);
       long long count = 0;
       for (size_t j = 0; j < n; ++j) {
-        const FingerBits bits = visible_fingers(frames[j], view, limits);
+        const FingerBits bits = visible_fingers(frames[j], view, limits[static_cast<size_t>(spec.device)]);
         if (spec.mode == HeatmapMode::kShareVisible) {
           count += (bits & want) == want;
         } else {

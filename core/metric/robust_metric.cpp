@@ -16,7 +16,8 @@ using FootprintQuad = std::array<Eigen::Vector2d, 4>;
 FootprintQuad footprint_of(const LayoutDevice& d) {
   const Eigen::Matrix3d r = d.pose.rotation();
   const Eigen::Vector3d t = d.pose.translation() + d.offset_mm;
-  const double hx = 0.5 * kControllerLengthMm, hz = 0.5 * kControllerWidthMm;
+  // The case of the device's own model (LayoutDevice::footprint_mm: width along x, depth along z).
+  const double hx = 0.5 * d.footprint_mm.x(), hz = 0.5 * d.footprint_mm.y();
   const std::array<Eigen::Vector3d, 4> corners = {Eigen::Vector3d(-hx, 0, -hz), Eigen::Vector3d(hx, 0, -hz),
                                                   Eigen::Vector3d(hx, 0, hz), Eigen::Vector3d(-hx, 0, hz)};
   FootprintQuad q;

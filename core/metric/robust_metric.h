@@ -78,11 +78,12 @@ struct RobustTermInfo {
 std::span<const RobustTermInfo> robust_term_infos();
 double robust_term_weight(const RobustWeights& weights, const RobustTermInfo& term);
 
-// Footprint corners on the table (world x, z) of one device: its 80 × 30 mm top face.
+// Footprint corners on the table (world x, z) of one device: its model's case
+// (LayoutDevice::footprint_mm), 80 × 30 mm for the original controller.
 inline constexpr double kControllerLengthMm = 80.0;
 inline constexpr double kControllerWidthMm = 30.0;
 bool footprints_overlap(const LayoutDevice& a, const LayoutDevice& b);
-// A controller's 80 × 30 mm box on the table as the (x, z) corners the overlap test uses; the
+// A controller's case on the table as the (x, z) corners the overlap test uses; the
 // layout report's top view draws the same corners.
 std::array<Eigen::Vector2d, 4> controller_footprint(const LayoutDevice& d);
 double footprint_overlap_share(const Layout& layout);

@@ -12,10 +12,16 @@ namespace lmc {
 
 PrunedSwarmEvaluator::PrunedSwarmEvaluator(std::span<const PreparedFrame> frames, int layouts, int devices,
                                            const VisibilityLimits& limits, const SwarmCostSettings& settings)
+    : PrunedSwarmEvaluator(frames, layouts, devices,
+                           same_limits(limits, static_cast<size_t>(std::clamp(devices, 0, kMaxDevices))), settings) {}
+
+PrunedSwarmEvaluator::PrunedSwarmEvaluator(std::span<const PreparedFrame> frames, int layouts, int devices,
+                                           std::span<const VisibilityLimits> slot_limits,
+                                           const SwarmCostSettings& settings)
     : frames_(frames),
       layouts_(layouts),
       devices_(devices),
-      limits_(limits),
+      limits_(slot_limits.begin(), slot_limits.end()),
       settings_(settings),
       robust_(settings.metric == PlacementMetricKind::kRobust),
       prune_(settings.round_frames > 0 && (!robust_ || robust_bound_holds(settings.weights))) {
@@ -63,8 +69,7 @@ bool PrunedSwarmEvaluator::evaluate(std::span<const DeviceView> views, std::span
     } else {
       round_tallies_.assign(active_.size(), LayoutTally(devices_));
       arena.execute([&] {
-        ok = layout_tallies(active_views_, na, devices_, frames_, rounds_[r], limits_, settings_.axis_cut_mm,
-                            round_tallies_, stop);
+        ok = layout_tallies(active_views_, na, devices_, frames_, rounds_[r], limits_, round_tallies_, stop);
       });
       if (!ok) return false;
       for (size_t a = 0; a < active_.size(); ++a) partial_tallies_[active_[a]].add(round_tallies_[a]);

@@ -27,8 +27,7 @@ namespace lmc {
 
 struct SwarmCostSettings {
   PlacementMetricKind metric = PlacementMetricKind::kStudy;
-  RobustWeights weights;  // robust metric only; pruning needs them finite and ≥ 0
-  double axis_cut_mm = kAxisCutMm;
+  RobustWeights weights;    // robust metric only; pruning needs them finite and ≥ 0; cuts are per slot
   int round_frames = 1024;  // frames between two checks of the bound (whole chunks); 0: no pruning
 };
 
@@ -36,6 +35,9 @@ class PrunedSwarmEvaluator {
  public:
   PrunedSwarmEvaluator(std::span<const PreparedFrame> frames, int layouts, int devices, const VisibilityLimits& limits,
                        const SwarmCostSettings& settings);
+  // A mixed rig: slot d of every layout through slot_limits[d] (`devices` entries).
+  PrunedSwarmEvaluator(std::span<const PreparedFrame> frames, int layouts, int devices,
+                       std::span<const VisibilityLimits> slot_limits, const SwarmCostSettings& settings);
 
   // `views`: layouts × devices, layout-major; `footprint`: each layout's footprint-overlap share
   // (robust metric); `best`: each layout's best cost so far (+inf: none yet). Writes each layout's
@@ -50,7 +52,7 @@ class PrunedSwarmEvaluator {
  private:
   std::span<const PreparedFrame> frames_;
   int layouts_, devices_;
-  VisibilityLimits limits_;
+  std::vector<VisibilityLimits> limits_;  // per slot
   SwarmCostSettings settings_;
   bool robust_, prune_;
   std::vector<std::vector<FrameRun>> rounds_;

@@ -43,7 +43,8 @@ PsoResult run_pso(const Layout& start, const SearchSpace& space, std::span<const
   const auto np = static_cast<size_t>(s.particles);
   const auto dims = space.dimensions(devices);
   const size_t dim = dims.size();
-  const VisibilityLimits limits = make_limits(VisibilityParams::from_sensor(start.sensor, s.phalanx_radius_mm));
+  // Slot d keeps the start layout's sensor model d wherever the search moves it.
+  const std::vector<VisibilityLimits> limits = device_limits(start, s.phalanx_radius_mm);
 
   std::mt19937_64 rng(s.seed);
   std::vector<double> x(np * dim), v(np * dim), pbest(np * dim), gbest(dim);
@@ -88,7 +89,7 @@ PsoResult run_pso(const Layout& start, const SearchSpace& space, std::span<const
   result.metric = s.metric;
   const bool robust = s.metric == PlacementMetricKind::kRobust;
   PrunedSwarmEvaluator evaluator(frames, s.particles, devices, limits,
-                                 SwarmCostSettings{s.metric, s.weights, s.axis_cut_mm, s.prune_round_frames});
+                                 SwarmCostSettings{s.metric, s.weights, s.prune_round_frames});
 
   // Evaluates the whole swarm; false when cancelled.
   auto evaluate = [&]() {
@@ -171,10 +172,8 @@ PsoResult run_pso(const Layout& start, const SearchSpace& space, std::span<const
     VisibilityTable table;
     arena->execute([&] { table = compute_visibility(result.best_layout, frames, s.phalanx_radius_mm); });
     result.best_coverage = compute_coverage(table);
-    arena->execute([&] {
-      result.best_terms =
-          layout_robust_terms(result.best_layout, frames, s.weights, s.phalanx_radius_mm, s.axis_cut_mm);
-    });
+    arena->execute(
+        [&] { result.best_terms = layout_robust_terms(result.best_layout, frames, s.weights, s.phalanx_radius_mm); });
   }
   result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   return result;
@@ -186,19 +185,17 @@ double layout_cost(const Layout& layout, std::span<const PreparedFrame> frames, 
   std::vector<DeviceView> views;
   for (const auto& d : layout.devices) views.push_back(DeviceView::from_device(d));
   std::vector<std::int64_t> counts(static_cast<size_t>(devices) + 1);
-  worst_finger_histograms(views, 1, devices, frames,
-                          make_limits(VisibilityParams::from_sensor(layout.sensor, phalanx_radius_mm)), counts);
+  worst_finger_histograms(views, 1, devices, frames, chunk_runs(frames.size()),
+                          device_limits(layout, phalanx_radius_mm), counts);
   return placement_metric(counts);
 }
 
 RobustTerms layout_robust_terms(const Layout& layout, std::span<const PreparedFrame> frames,
-                                const RobustWeights& weights, double phalanx_radius_mm, double axis_cut_mm,
+                                const RobustWeights& weights, double phalanx_radius_mm,
                                 std::span<const int> frame_subset) {
   std::vector<DeviceView> views;
   for (const auto& d : layout.devices) views.push_back(DeviceView::from_device(d));
-  const LayoutTally t =
-      tally_layout(views, frames, make_limits(VisibilityParams::from_sensor(layout.sensor, phalanx_radius_mm)),
-                   axis_cut_mm, frame_subset);
+  const LayoutTally t = tally_layout(views, frames, device_limits(layout, phalanx_radius_mm), frame_subset);
   return robust_terms(t, footprint_overlap_share(layout), weights);
 }
 

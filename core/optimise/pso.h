@@ -48,8 +48,7 @@ struct PsoSettings {
   // The cost the swarm minimises: the study's M (the reference, bit for bit what run_pso always
   // did) or the robust metric R of robust_metric.h with these weights.
   PlacementMetricKind metric = PlacementMetricKind::kStudy;
-  RobustWeights weights;
-  double axis_cut_mm = kAxisCutMm;
+  RobustWeights weights;  // each slot's axis cut is its sensor model's (SensorModel::axis_cut_mm)
   // Frames counted between two checks of the pruning bound (cost_lower_bound.h; rounded down to
   // whole chunks of 64). 0 counts every particle on every frame. The result is the same either
   // way; only the time differs.
@@ -84,7 +83,8 @@ struct PsoResult {
 };
 
 // Searches placements for the devices of `start` (1–8 devices; their slots, serials, offsets and
-// sensor model are kept) on `frames`. The sensor model of `start` sets range and field of view.
+// sensor models are kept) on `frames`. Each slot sees through its own device's sensor model in
+// `start` (range, field of view, axis cut) wherever the search moves it: a mixed rig stays mixed.
 // Throws lmc::Error for an invalid search space, start layout or settings.
 PsoResult run_pso(const Layout& start, const SearchSpace& space, std::span<const PreparedFrame> frames,
                   const PsoSettings& settings, const PsoProgressCallback& progress = {}, std::stop_token stop = {});
@@ -97,6 +97,6 @@ double layout_cost(const Layout& layout, std::span<const PreparedFrame> frames, 
 // PlacementMetricKind::kRobust). With `frame_subset`, only those frames.
 RobustTerms layout_robust_terms(const Layout& layout, std::span<const PreparedFrame> frames,
                                 const RobustWeights& weights = {}, double phalanx_radius_mm = 10.0,
-                                double axis_cut_mm = kAxisCutMm, std::span<const int> frame_subset = {});
+                                std::span<const int> frame_subset = {});
 
 }  // namespace lmc

@@ -122,9 +122,9 @@ std::string format_search_bounds(const SearchSpace& space) {
 Layout default_start_layout(int devices, const SensorModel& sensor) {
   Layout l;
   l.name = "start";
-  l.sensor = sensor;
   for (int d = 0; d < devices; ++d) {
     LayoutDevice dev;
+    dev.sensor = sensor;
     dev.slot = "LMC" + std::to_string(d + 1);
     dev.pose.x_mm = (d - 0.5 * (devices - 1)) * 120.0;
     l.devices.push_back(dev);

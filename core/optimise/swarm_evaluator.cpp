@@ -43,7 +43,16 @@ bool worst_finger_histograms(std::span<const DeviceView> views, int layouts, int
 bool worst_finger_histograms(std::span<const DeviceView> views, int layouts, int devices,
                              std::span<const PreparedFrame> frames, std::span<const FrameRun> runs,
                              const VisibilityLimits& limits, std::span<std::int64_t> counts, std::stop_token stop) {
-  if (devices < 1 || devices > kMaxDevices || layouts < 0 ||
+  if (devices < 1 || devices > kMaxDevices) throw Error("worst_finger_histograms: inconsistent sizes");
+  return worst_finger_histograms(views, layouts, devices, frames, runs,
+                                 same_limits(limits, static_cast<size_t>(devices)), counts, stop);
+}
+
+bool worst_finger_histograms(std::span<const DeviceView> views, int layouts, int devices,
+                             std::span<const PreparedFrame> frames, std::span<const FrameRun> runs,
+                             std::span<const VisibilityLimits> slot_limits, std::span<std::int64_t> counts,
+                             std::stop_token stop) {
+  if (devices < 1 || devices > kMaxDevices || layouts < 0 || slot_limits.size() != static_cast<size_t>(devices) ||
       views.size() != static_cast<size_t>(layouts) * static_cast<size_t>(devices) ||
       counts.size() != static_cast<size_t>(layouts) * static_cast<size_t>(devices + 1)) {
     throw Error("worst_finger_histograms: inconsistent sizes");
@@ -64,7 +73,7 @@ bool worst_finger_histograms(std::span<const DeviceView> views, int layouts, int
         // One kernel call per device and chunk: the device's view stays in registers over the
         // chunk's frames (visibility_kernel.h).
         for (size_t d = 0; d < nd; ++d) {
-          device_visibility(views[ll * nd + d], run, limits, std::span<FingerBits>(bits[d], run.size()));
+          device_visibility(views[ll * nd + d], run, slot_limits[d], std::span<FingerBits>(bits[d], run.size()));
         }
         std::int64_t* h = hist.data() + ll * (nd + 1);
         for (size_t j = 0; j < run.size(); ++j) {
@@ -93,7 +102,15 @@ bool layout_tallies(std::span<const DeviceView> views, int layouts, int devices,
 bool layout_tallies(std::span<const DeviceView> views, int layouts, int devices, std::span<const PreparedFrame> frames,
                     std::span<const FrameRun> runs, const VisibilityLimits& limits, double axis_cut_mm,
                     std::span<LayoutTally> tallies, std::stop_token stop) {
-  if (devices < 1 || devices > kMaxDevices || layouts < 0 ||
+  if (devices < 1 || devices > kMaxDevices) throw Error("layout_tallies: inconsistent sizes");
+  return layout_tallies(views, layouts, devices, frames, runs,
+                        same_limits(limits, static_cast<size_t>(devices), axis_cut_mm), tallies, stop);
+}
+
+bool layout_tallies(std::span<const DeviceView> views, int layouts, int devices, std::span<const PreparedFrame> frames,
+                    std::span<const FrameRun> runs, std::span<const VisibilityLimits> slot_limits,
+                    std::span<LayoutTally> tallies, std::stop_token stop) {
+  if (devices < 1 || devices > kMaxDevices || layouts < 0 || slot_limits.size() != static_cast<size_t>(devices) ||
       views.size() != static_cast<size_t>(layouts) * static_cast<size_t>(devices) ||
       tallies.size() != static_cast<size_t>(layouts)) {
     throw Error("layout_tallies: inconsistent sizes");
@@ -117,11 +134,11 @@ bool layout_tallies(std::span<const DeviceView> views, int layouts, int devices,
         // The kernel decides the axis cut while it has the markers in device coordinates, so the
         // tally does not transform them a second time.
         for (size_t d = 0; d < nd; ++d) {
-          device_visibility_with_cut(layout_views[d], run, limits, axis_cut_mm,
+          device_visibility_with_cut(layout_views[d], run, slot_limits[d], slot_limits[d].axis_cut_mm,
                                      std::span<FingerBits>(bits[d], run.size()),
                                      std::span<FingerBits>(cut[d], run.size()));
         }
-        tally_frames(run, layout_views, &bits[0][0], &cut[0][0], kSwarmChunkFrames, limits, mine[ll]);
+        tally_frames(run, layout_views, &bits[0][0], &cut[0][0], kSwarmChunkFrames, slot_limits, mine[ll]);
       }
     }
   });

@@ -38,6 +38,12 @@ bool worst_finger_histograms(std::span<const DeviceView> views, int layouts, int
 bool worst_finger_histograms(std::span<const DeviceView> views, int layouts, int devices,
                              std::span<const PreparedFrame> frames, std::span<const FrameRun> runs,
                              const VisibilityLimits& limits, std::span<std::int64_t> counts, std::stop_token stop = {});
+// A mixed rig: slot d of every layout sees through slot_limits[d] (`devices` entries), so a slot
+// keeps its model while the search moves it.
+bool worst_finger_histograms(std::span<const DeviceView> views, int layouts, int devices,
+                             std::span<const PreparedFrame> frames, std::span<const FrameRun> runs,
+                             std::span<const VisibilityLimits> slot_limits, std::span<std::int64_t> counts,
+                             std::stop_token stop = {});
 
 // The robust metric's inner loop: the full tally of each layout (layout_tally.h) instead of the
 // histogram alone. `tallies` holds `layouts` entries, each made for `devices` devices. Exact for
@@ -47,6 +53,10 @@ bool layout_tallies(std::span<const DeviceView> views, int layouts, int devices,
                     std::stop_token stop = {});
 bool layout_tallies(std::span<const DeviceView> views, int layouts, int devices, std::span<const PreparedFrame> frames,
                     std::span<const FrameRun> runs, const VisibilityLimits& limits, double axis_cut_mm,
+                    std::span<LayoutTally> tallies, std::stop_token stop = {});
+// A mixed rig: slot d through slot_limits[d] and its axis cut slot_limits[d].axis_cut_mm.
+bool layout_tallies(std::span<const DeviceView> views, int layouts, int devices, std::span<const PreparedFrame> frames,
+                    std::span<const FrameRun> runs, std::span<const VisibilityLimits> slot_limits,
                     std::span<LayoutTally> tallies, std::stop_token stop = {});
 
 }  // namespace lmc

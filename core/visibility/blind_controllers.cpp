@@ -6,6 +6,7 @@
 #include "core/hand/reference_poses.h"
 #include "core/visibility/device_view.h"
 #include "core/visibility/frame_prep.h"
+#include "core/visibility/visibility_kernel.h"
 #include "core/visibility/visibility_params.h"
 
 namespace lmc {
@@ -19,9 +20,10 @@ std::vector<BlindController> blind_controllers(const Layout& layout) {
           prepare_frame(reference_pose(model, static_cast<HandOrientation>(o), static_cast<HandMotion>(m))));
     }
   }
-  const VisibilityLimits limits = make_limits(VisibilityParams::from_sensor(layout.sensor));
+  const std::vector<VisibilityLimits> device_lims = device_limits(layout);
   std::vector<BlindController> out;
   for (int d = 0; d < layout.device_count(); ++d) {
+    const VisibilityLimits& limits = device_lims[static_cast<size_t>(d)];
     const DeviceView view = DeviceView::from_device(layout.devices[static_cast<size_t>(d)]);
     // How often each reason hides a finger; a controller that sees any finger once is not blind.
     std::array<int, static_cast<size_t>(HiddenReason::kBehindFinger) + 1> reasons{};

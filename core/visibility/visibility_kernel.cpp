@@ -50,10 +50,10 @@ template <bool kCut, KernelBuild kBuild>
     const double px = d.rt[0] * x + d.rt[1] * y + d.rt[2] * z;
     const double py = d.rt[3] * x + d.rt[4] * y + d.rt[5] * z;
     const double pz = d.rt[6] * x + d.rt[7] * y + d.rt[8] * z;
-    outside |=
-        ((v2 > lim.range_sq_exact) | (std::abs(px) > py * lim.tan_half_long) | (std::abs(pz) > py * lim.tan_half_short))
-            ? -1
-            : 0;
+    outside |= ((v2 > lim.range_sq_exact) | (v2 < lim.range_near_sq) | (std::abs(px) > py * lim.tan_half_long) |
+                (std::abs(pz) > py * lim.tan_half_short))
+                   ? -1
+                   : 0;
     if constexpr (kCut) {
       far[k] = ((std::abs(px) > cut_mm) | (std::abs(py) > cut_mm) | (std::abs(pz) > cut_mm)) ? -1 : 0;
     }
@@ -297,20 +297,33 @@ void device_visibility_with_cut(const DeviceView& device, std::span<const Prepar
 }
 
 VisibilityTable compute_visibility(std::span<const DeviceView> devices, std::span<const PreparedFrame> frames,
-                                   const VisibilityParams& params) {
+                                   std::span<const VisibilityLimits> limits) {
   VisibilityTable t;
   t.devices = static_cast<int>(devices.size());
   t.frames = static_cast<int>(frames.size());
   t.bits.assign(devices.size() * frames.size(), 0);
-  const VisibilityLimits lim = make_limits(params);
   const size_t n = frames.size();
   tbb::parallel_for(tbb::blocked_range<size_t>(0, n, 256), [&](const tbb::blocked_range<size_t>& r) {
     const std::span<const PreparedFrame> run = frames.subspan(r.begin(), r.size());
     for (size_t d = 0; d < devices.size(); ++d) {
-      device_visibility(devices[d], run, lim, std::span<FingerBits>(t.bits).subspan(d * n + r.begin(), r.size()));
+      device_visibility(devices[d], run, limits[d], std::span<FingerBits>(t.bits).subspan(d * n + r.begin(), r.size()));
     }
   });
   return t;
+}
+
+VisibilityTable compute_visibility(std::span<const DeviceView> devices, std::span<const PreparedFrame> frames,
+                                   const VisibilityParams& params) {
+  const std::vector<VisibilityLimits> limits(devices.size(), make_limits(params));
+  return compute_visibility(devices, frames, limits);
+}
+
+std::vector<VisibilityLimits> device_limits(const Layout& layout, double phalanx_radius_mm) {
+  std::vector<VisibilityLimits> out;
+  out.reserve(layout.devices.size());
+  for (const auto& d : layout.devices)
+    out.push_back(make_limits(VisibilityParams::from_sensor(d.sensor, phalanx_radius_mm)));
+  return out;
 }
 
 VisibilityTable compute_visibility(const Layout& layout, std::span<const PreparedFrame> frames,
@@ -318,7 +331,7 @@ VisibilityTable compute_visibility(const Layout& layout, std::span<const Prepare
   std::vector<DeviceView> views;
   views.reserve(layout.devices.size());
   for (const auto& d : layout.devices) views.push_back(DeviceView::from_device(d));
-  return compute_visibility(views, frames, VisibilityParams::from_sensor(layout.sensor, phalanx_radius_mm));
+  return compute_visibility(views, frames, device_limits(layout, phalanx_radius_mm));
 }
 
 }  // namespace lmc

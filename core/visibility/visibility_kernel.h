@@ -62,10 +62,16 @@ struct VisibilityTable {
 };
 
 // Evaluates every device of `layout` on every frame (parallel over frames with oneTBB; the
-// result does not depend on the thread count). The sensor model comes from the layout.
+// result does not depend on the thread count). Each device sees through its own sensor model.
 VisibilityTable compute_visibility(const Layout& layout, std::span<const PreparedFrame> frames,
                                    double phalanx_radius_mm = 10.0);
 VisibilityTable compute_visibility(std::span<const DeviceView> devices, std::span<const PreparedFrame> frames,
                                    const VisibilityParams& params);
+// Each device through its own limits (limits[d] for devices[d]): a mixed rig.
+VisibilityTable compute_visibility(std::span<const DeviceView> devices, std::span<const PreparedFrame> frames,
+                                   std::span<const VisibilityLimits> limits);
+
+// Each device's limits from its own sensor model (LayoutDevice::sensor), in layout order.
+std::vector<VisibilityLimits> device_limits(const Layout& layout, double phalanx_radius_mm = 10.0);
 
 }  // namespace lmc

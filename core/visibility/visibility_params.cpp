@@ -32,6 +32,8 @@ VisibilityLimits make_limits(const VisibilityParams& p) {
   l.tan_half_long = std::tan(0.5 * p.fov_long_deg * deg);
   l.tan_half_short = std::tan(0.5 * p.fov_short_deg * deg);
   l.radius_sq = p.phalanx_radius_mm * p.phalanx_radius_mm;
+  l.axis_cut_mm = p.axis_cut_mm;
+  l.range_near_sq = p.range_near_mm * p.range_near_mm;
   return l;
 }
 

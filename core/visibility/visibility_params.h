@@ -12,9 +12,11 @@ struct VisibilityParams {
   double fov_long_deg = 150.0;
   double fov_short_deg = 120.0;
   double phalanx_radius_mm = 10.0;
+  double axis_cut_mm = 250.0;  // the robust metric's cut (layout_tally.h), the study's value
+  double range_near_mm = 0.0;  // nothing closer is tracked (0: no near limit, as in the study)
 
   static VisibilityParams from_sensor(const SensorModel& s, double phalanx_radius_mm = 10.0) {
-    return {s.range_mm, s.fov_long_deg, s.fov_short_deg, phalanx_radius_mm};
+    return {s.range_mm, s.fov_long_deg, s.fov_short_deg, phalanx_radius_mm, s.axis_cut_mm, s.range_near_mm};
   }
   bool operator==(const VisibilityParams&) const = default;
 };
@@ -30,6 +32,8 @@ struct VisibilityLimits {
   double tan_half_long = 0;
   double tan_half_short = 0;
   double radius_sq = 0;
+  double axis_cut_mm = 250.0;  // carried for the robust metric's per-device cut; the kernel does not use it
+  double range_near_sq = 0;    // |v|² below this is too near to track (0: never)
 };
 VisibilityLimits make_limits(const VisibilityParams& p);
 

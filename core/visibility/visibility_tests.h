@@ -26,7 +26,10 @@ inline ViewResult marker_in_view(double mx, double my, double mz, const DeviceVi
   const double vx = mx - d.ox, vy = my - d.oy, vz = mz - d.oz;
   // The authors compare the Euclidean norm with L; comparing |v| itself (not |v|²) keeps ties
   // identical to theirs.
-  if (std::sqrt(vx * vx + vy * vy + vz * vz) > lim.range_mm) return ViewResult::kOutOfRange;
+  const double v2 = vx * vx + vy * vy + vz * vz;
+  if (std::sqrt(v2) > lim.range_mm) return ViewResult::kOutOfRange;
+  // Too near to track (the controller's near limit; 0 in the study's model, never true then).
+  if (v2 < lim.range_near_sq) return ViewResult::kOutOfRange;
   const double px = d.rt[0] * vx + d.rt[1] * vy + d.rt[2] * vz;
   const double py = d.rt[3] * vx + d.rt[4] * vy + d.rt[5] * vz;
   const double pz = d.rt[6] * vx + d.rt[7] * vy + d.rt[8] * vz;

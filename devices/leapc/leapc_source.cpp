@@ -81,6 +81,7 @@ struct OpenDevice {
   LEAP_DEVICE handle = nullptr;
   std::string serial;
   std::string model;
+  std::uint32_t product_id = 0;  // LEAP_DEVICE_INFO::pid
   // Announced (kAppeared) once subscribed: until then it delivers nothing and is not shown.
   bool subscribed = false;
   int subscribe_attempts = 0;
@@ -305,6 +306,7 @@ void LeapcSource::run(FrameSink& sink) {
     e.info.serial = d.serial;
     e.info.backend = "leapc";
     e.info.model = d.model;
+    e.info.product_id = d.product_id;
     e.host_time_ns = host_now_ns();
     sink.on_device_event(e);
     if (prs != eLeapRS_Success)
@@ -375,6 +377,7 @@ void LeapcSource::run(FrameSink& sink) {
     d.handle = handle;
     d.serial = serial_text;
     d.model = leapc_model_name(static_cast<std::uint32_t>(info.pid));
+    d.product_id = static_cast<std::uint32_t>(info.pid);
     d.wanted_mode = tracking_mode_for_serial(options_.layout, serial_text);
     try_subscribe(ref.id, d, now_ns);
     return true;

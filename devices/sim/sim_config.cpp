@@ -6,6 +6,8 @@
 #include "core/common/error.h"
 #include "core/io/delimited_text.h"
 #include "core/io/json_checked.h"
+#include "core/io/sensor_catalogue_json.h"
+#include "core/layout/sensor_catalogue.h"
 
 namespace lmc::devices {
 namespace {
@@ -118,6 +120,7 @@ SimConfig sim_config_from_json(const nlohmann::json& j, const std::string& sourc
                "hand_model_error",
                "unplugs",
                "serial_prefix",
+               "stand_in_model",
                "truth_rate_hz",
                "device_clock_start_us"});
   // The preset first, so that any key given beside it overrides one of its values.
@@ -205,6 +208,12 @@ SimConfig sim_config_from_json(const nlohmann::json& j, const std::string& sourc
     }
   }
   c.serial_prefix = r.string_or("serial_prefix", c.serial_prefix);
+  c.stand_in_model = r.string_or("stand_in_model", c.stand_in_model);
+  if (!c.stand_in_model.empty() && !sensor_catalogue().find(c.stand_in_model)) {
+    r.at("stand_in_model")
+        .fail("unknown sensor model \"" + c.stand_in_model + "\" (known models: " + sensor_catalogue().known_ids() +
+              ")");
+  }
   c.truth_rate_hz = r.number_or("truth_rate_hz", c.truth_rate_hz);
   if (r.has("device_clock_start_us")) {
     // A clock in µs: beyond 2^53 a double no longer holds every whole µs, and beyond the int64 range
@@ -268,6 +277,7 @@ nlohmann::json sim_config_to_json(const SimConfig& c) {
   for (const auto& u : c.unplugs) unplugs.push_back({{"slot", u.slot}, {"at_s", u.at_s}, {"duration_s", u.duration_s}});
   j["unplugs"] = unplugs;
   j["serial_prefix"] = c.serial_prefix;
+  if (!c.stand_in_model.empty()) j["stand_in_model"] = c.stand_in_model;
   j["truth_rate_hz"] = c.truth_rate_hz;
   j["device_clock_start_us"] = c.device_clock_start_us;
   return j;

@@ -86,6 +86,10 @@ struct SimConfig {
   HandModelError hand_model_error;
   std::vector<SimUnplug> unplugs;
   std::string serial_prefix = "SIM";
+  // The catalogue model every simulated controller reports itself as ("lmc2"), whatever its slot
+  // is laid out as; empty: each reports its slot's model (the study's model reports as the original
+  // controller). Its range and field of view stay the slot's: the rig tests what a lab would see.
+  std::string stand_in_model;
 
   double truth_rate_hz = 100.0;  // ground-truth TRC rate
 };

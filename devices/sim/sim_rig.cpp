@@ -10,6 +10,7 @@
 #include "core/common/error.h"
 #include "core/hand/reference_poses.h"
 #include "core/io/pose_set_tsv.h"
+#include "core/io/sensor_catalogue_json.h"
 #include "core/visibility/frame_prep.h"
 #include "core/visibility/visibility_explain.h"
 #include "devices/sim/controller_hand_model.h"
@@ -57,6 +58,7 @@ struct SimRig::Device {
   DeviceView view;
   std::mt19937_64 rng;
   double rate_hz = 20;
+  double rate_scale = 1.0;  // the model's nominal rate over the study controller's
   double next_time_s = 0;
   double last_time_s = -1;
   double reported_rate_hz = 0;
@@ -78,8 +80,12 @@ SimRig::SimRig(Layout layout, SimConfig config)
     pose_set_ = load_pose_set(config_.pose_set_path);
     if (pose_set_->frames.empty()) throw Error(ErrorLocation(config_.pose_set_path), "pose set has no frames");
   }
-  visibility_ = VisibilityParams::from_sensor(layout_.sensor, config_.phalanx_radius_mm);
-  if (config_.range_mm > 0) visibility_.range_mm = config_.range_mm;
+  // Each controller sees through its own model's pyramid; a configured range replaces every far range.
+  for (const auto& dev : layout_.devices) {
+    VisibilityParams p = VisibilityParams::from_sensor(dev.sensor, config_.phalanx_radius_mm);
+    if (config_.range_mm > 0) p.range_mm = config_.range_mm;
+    visibility_.push_back(make_limits(p));
+  }
 
   // The internal model's "neutral" finger: the open hand, in palm coordinates.
   HandFrame open = model_.pose(motion_angles(HandMotion::kOpen, 0.0));
@@ -104,7 +110,20 @@ SimRig::SimRig(Layout layout, SimConfig config)
                                : config_.serial_prefix + "-" + ld.slot + "-" +
                                      std::to_string(10000 + (mix(config_.seed, 100 + i) % 90000));
     d->info.backend = "sim";
-    d->info.model = "simulated Leap Motion Controller";
+    // What the controller reports itself as: its slot's model's hardware (the study's model is the
+    // original controller), or the configured stand-in.
+    const SensorCatalogue& catalogue = sensor_catalogue();
+    const SensorSpec* reported = catalogue.find(config_.stand_in_model.empty() ? ld.model : config_.stand_in_model);
+    if (reported && !reported->leapc_product_ids.empty()) {
+      if (const SensorSpec* hw = catalogue.for_product_id(reported->leapc_product_ids.front())) reported = hw;
+    }
+    d->info.model = "simulated " + (reported ? reported->name : std::string("Leap Motion Controller"));
+    d->info.product_id = reported && !reported->leapc_product_ids.empty() ? reported->leapc_product_ids.front() : 0;
+    // The study's shared-bus rates (rate_min_hz…rate_max_hz) are for its 120 Hz controllers; a model
+    // with another nominal rate runs proportionally faster or slower.
+    const SensorSpec* own = catalogue.find(ld.model);
+    const SensorSpec* study = catalogue.find(kStudySensorId);
+    d->rate_scale = own && study ? own->frame_rate_hz / study->frame_rate_hz : 1.0;
     d->info.tracking_mode = tracking_mode_name(tracking_mode_for_pose(ld.pose));
     switch (config_.calibration) {
       case SimConfig::Calibration::kLayout:
@@ -144,7 +163,8 @@ SimRig::SimRig(Layout layout, SimConfig config)
     DevicePose true_pose = ld.pose;
     true_pose.set_rotation(d->r);
     d->view = DeviceView::from_pose(true_pose, d->calibration);
-    std::uniform_real_distribution<double> rate(config_.rate_min_hz, config_.rate_max_hz);
+    std::uniform_real_distribution<double> rate(config_.rate_min_hz * d->rate_scale,
+                                                config_.rate_max_hz * d->rate_scale);
     d->rate_hz = rate(d->rng);
     std::uniform_real_distribution<double> u01(0, 1);
     d->next_time_s = u01(d->rng) / d->rate_hz;
@@ -233,7 +253,7 @@ HandFrame SimRig::device_frame(Device& d, double t) {
   std::array<bool, kNumDigits> hidden{};
   VisibilityExplanation why;
   if (config_.fov_test || config_.occlusion) {
-    why = explain_visibility(prepare_frame(truth), d.view, make_limits(visibility_));
+    why = explain_visibility(prepare_frame(truth), d.view, visibility_[static_cast<size_t>(d.index)]);
   }
   for (int dg = 0; dg < kNumDigits && (config_.fov_test || config_.occlusion); ++dg) {
     const HiddenReason r = why.fingers[static_cast<size_t>(dg)].reason;
@@ -326,9 +346,8 @@ SimEvent SimRig::next() {
     }
     // Next frame time: the device's rate wanders inside [min, max] (shared-bus variability).
     std::uniform_real_distribution<double> u(-1.0, 1.0);
-    const double span = config_.rate_max_hz - config_.rate_min_hz;
-    d->rate_hz =
-        std::clamp(d->rate_hz + u(d->rng) * config_.rate_wander * span, config_.rate_min_hz, config_.rate_max_hz);
+    const double lo = config_.rate_min_hz * d->rate_scale, hi = config_.rate_max_hz * d->rate_scale;
+    d->rate_hz = std::clamp(d->rate_hz + u(d->rng) * config_.rate_wander * (hi - lo), lo, hi);
     d->next_time_s = t + 1.0 / d->rate_hz;
     if (in_window) continue;
     ev.time_s = t;

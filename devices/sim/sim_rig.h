@@ -75,8 +75,8 @@ class SimRig {
   std::unique_ptr<TruthMarkerMap> marker_map_;
   std::array<std::array<Vec3, kJointsPerDigit>, kNumDigits> neutral_local_{};
   std::array<double, 6> sway_phase_{};
-  VisibilityParams visibility_;
-  std::optional<HandFrame> still_truth_;  // static motion without sway: the truth never changes
+  std::vector<VisibilityLimits> visibility_;  // per device, layout order
+  std::optional<HandFrame> still_truth_;      // static motion without sway: the truth never changes
   size_t announced_ = 0;
   double hold_s_ = 0;
 };

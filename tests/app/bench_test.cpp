@@ -29,10 +29,20 @@ TEST(LmcBench, JsonHasTheDocumentedKeys) {
   const auto j = nlohmann::json::parse(r.out);
   EXPECT_EQ(j["frames"], 50);
   EXPECT_GE(j["threads"].get<int>(), 1);
-  ASSERT_EQ(j["cases"].size(), 3u);
+  ASSERT_EQ(j["cases"].size(), 6u);
   EXPECT_EQ(j["cases"][0]["name"], "paper-initial");
   EXPECT_EQ(j["cases"][2]["name"], "random");
   EXPECT_EQ(j["cases"][2]["layouts"], 30);
+  EXPECT_EQ(j["cases"][3]["name"], "random-lmc");
+  EXPECT_EQ(j["cases"][4]["name"], "random-lmc2");
+  EXPECT_EQ(j["cases"][5]["name"], "random-mixed");
+  // The mixed rigs against the uniform rigs of their two models, in adjacent rounds.
+  const auto& mixed = j["mixed_rig"];
+  EXPECT_EQ(mixed["frames"], 50);
+  EXPECT_GE(mixed["rounds"].get<int>(), 15);
+  for (const char* k : {"lmc_seconds", "lmc2_seconds", "mixed_seconds", "mixed_swapped_seconds", "ratio"}) {
+    EXPECT_GT(mixed[k].get<double>(), 0.0) << k;
+  }
   for (const auto& c : j["cases"]) {
     EXPECT_GT(c["single_thread_evals_per_s"].get<double>(), 0.0);
     EXPECT_GT(c["all_threads_evals_per_s"].get<double>(), 0.0);

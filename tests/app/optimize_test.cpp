@@ -122,15 +122,15 @@ TEST(LmcOptimize, TextSummaryAndLocks) {
 TEST(LmcOptimize, StartLayoutKeepsItsSensorRangeUnlessOverridden) {
   const auto dir = lmc::test::scratch_dir("cli_optimize_range");
   lmc::Layout start = lmc::load_layout_or_preset("paper-initial");
-  start.sensor.range_mm = 400.0;
+  for (auto& d : start.devices) d.sensor.range_mm = 400.0;
   lmc::save_layout(start, dir / "start.json");
   const std::string common = "optimize --frames 20 --particles 2 --iterations 1 --no-progress --start " +
                              lmc::test::shell_quote((dir / "start.json").string());
   ASSERT_EQ(run_lmc(common + " -o " + lmc::test::shell_quote((dir / "a.json").string()), dir).exit_code, 0);
-  EXPECT_EQ(lmc::load_layout(dir / "a.json").sensor.range_mm, 400.0);
+  EXPECT_EQ(lmc::load_layout(dir / "a.json").devices.front().sensor.range_mm, 400.0);
   ASSERT_EQ(run_lmc(common + " --range-mm 550 -o " + lmc::test::shell_quote((dir / "b.json").string()), dir).exit_code,
             0);
-  EXPECT_EQ(lmc::load_layout(dir / "b.json").sensor.range_mm, 550.0);
+  EXPECT_EQ(lmc::load_layout(dir / "b.json").devices.front().sensor.range_mm, 550.0);
 }
 
 TEST(LmcOptimize, BadBoundsAreReported) {

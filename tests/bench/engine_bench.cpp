@@ -36,7 +36,7 @@ lmc::Layout preset(const char* name) {
 void BM_EngineVisibleFingersFullTests(benchmark::State& state) {
   const auto& fr = frames();
   const lmc::Layout layout = preset("paper-initial");
-  const auto limits = lmc::make_limits(lmc::VisibilityParams::from_sensor(layout.sensor));
+  const auto limits = lmc::make_limits(lmc::VisibilityParams::from_sensor(lmc::common_sensor(layout)));
   std::vector<lmc::DeviceView> views;
   for (const auto& d : layout.devices) views.push_back(lmc::DeviceView::from_device(d));
   size_t j = 0;
@@ -53,7 +53,7 @@ BENCHMARK(BM_EngineVisibleFingersFullTests);
 void BM_EngineDeviceVisibilityRun(benchmark::State& state) {
   const auto& fr = frames();
   const lmc::Layout layout = preset("paper-initial");
-  const auto limits = lmc::make_limits(lmc::VisibilityParams::from_sensor(layout.sensor));
+  const auto limits = lmc::make_limits(lmc::VisibilityParams::from_sensor(lmc::common_sensor(layout)));
   std::vector<lmc::DeviceView> views;
   for (const auto& d : layout.devices) views.push_back(lmc::DeviceView::from_device(d));
   std::vector<lmc::FingerBits> bits(fr.size()), cut(fr.size());
@@ -74,7 +74,7 @@ BENCHMARK(BM_EngineDeviceVisibilityRun)->Arg(0)->Arg(1)->Unit(benchmark::kMillis
 void BM_EngineExplainVisibility(benchmark::State& state) {
   const auto& fr = frames();
   const lmc::Layout layout = preset("paper-initial");
-  const auto limits = lmc::make_limits(lmc::VisibilityParams::from_sensor(layout.sensor));
+  const auto limits = lmc::make_limits(lmc::VisibilityParams::from_sensor(lmc::common_sensor(layout)));
   const auto view = lmc::DeviceView::from_device(layout.devices[0]);
   size_t j = 0;
   for (auto _ : state) {
@@ -148,6 +148,28 @@ void BM_EngineSwarmTalliesRandomLayouts(benchmark::State& state) {
   state.SetItemsProcessed(state.iterations() * static_cast<int64_t>(views.size() * fr.size()));
 }
 BENCHMARK(BM_EngineSwarmTalliesRandomLayouts)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond);
+
+// The swarm histograms above for rigs of other controller models, per slot (the catalogue's
+// figures): arg 0 four LMCs, 1 four LMC2s, 2 LMC2, LMC2, LMC, LMC and 3 LMC, LMC, LMC2, LMC2. The
+// two mixed rigs place every device once as each model, as the two uniform rigs do: together they
+// should cost what those do (each device does its own model's work).
+void BM_EngineSwarmHistogramsRigModels(benchmark::State& state) {
+  const auto& fr = frames();
+  const auto views = random_swarm_views(1);
+  const char* models[] = {"lmc", "lmc2", "lmc2,lmc2,lmc,lmc", "lmc,lmc,lmc2,lmc2"};
+  lmc::Layout rig = lmc::default_start_layout(4);
+  lmc::set_models_from_list(rig, models[state.range(0)], lmc::sensor_catalogue());
+  const std::vector<lmc::VisibilityLimits> limits = lmc::device_limits(rig);
+  const std::vector<lmc::FrameRun> runs = lmc::chunk_runs(fr.size());
+  std::vector<std::int64_t> counts(30 * 5);
+  tbb::task_arena arena(1);
+  for (auto _ : state) {
+    arena.execute([&] { lmc::worst_finger_histograms(views, 30, 4, fr, runs, limits, counts); });
+    benchmark::DoNotOptimize(counts.data());
+  }
+  state.SetItemsProcessed(state.iterations() * static_cast<int64_t>(views.size() * fr.size()));
+}
+BENCHMARK(BM_EngineSwarmHistogramsRigModels)->Arg(0)->Arg(1)->Arg(2)->Arg(3)->Unit(benchmark::kMillisecond);
 
 void BM_EngineCoverageFromBits(benchmark::State& state) {
   const auto& fr = frames();

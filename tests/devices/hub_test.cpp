@@ -208,5 +208,37 @@ TEST(DeviceHub, TrackingModeModelAndOtherSideHandsAreKeptPerDevice) {
   EXPECT_EQ(c.events.back(), (std::pair<int, DeviceEventKind>{1, DeviceEventKind::kTrackingMode}));
 }
 
+// The slot check against the model a device reports (core/layout/sensor_catalogue.h): an LMC2 in a
+// slot laid out as the study's original controller is warned about, once; the right one is not.
+TEST(DeviceHub, AControllerOfAnotherModelThanItsSlotIsWarnedAbout) {
+  Layout l = four_slots();
+  DeviceHub hub(l);
+  DeviceEvent lmc = appeared("A1");
+  lmc.info.product_id = 0x0003;
+  DeviceEvent lmc2 = appeared("B2");
+  lmc2.info.product_id = 0x1206;
+  hub.on_device_event(lmc);
+  hub.on_device_event(lmc2);
+  hub.on_device_event(lmc2);  // a re-announcement does not repeat the warning
+  int warnings = 0;
+  for (const auto& m : hub.take_messages()) {
+    if (m.rfind("warning: LMC2 is laid out as a Leap Motion Controller, as the study modelled it", 0) == 0) ++warnings;
+  }
+  EXPECT_EQ(warnings, 1);
+  const auto snap = hub.snapshot();
+  EXPECT_EQ(snap.devices[0].model_warning, "");
+  EXPECT_NE(snap.devices[1].model_warning.find("Leap Motion Controller 2 (lmc2)"), std::string::npos);
+  // Assigned to a slot of its own model, the warning goes.
+  l.devices[3].model = "lmc2";
+  DeviceHub hub2(l);
+  DeviceEvent again = appeared("B2");
+  again.info.product_id = 0x1206;
+  hub2.on_device_event(appeared("X0"));
+  hub2.on_device_event(again);
+  EXPECT_NE(hub2.snapshot().devices[1].model_warning, "");
+  EXPECT_EQ(hub2.assign("B2", "LMC4"), "");
+  EXPECT_EQ(hub2.snapshot().devices[1].model_warning, "");
+}
+
 }  // namespace
 }  // namespace lmc::devices

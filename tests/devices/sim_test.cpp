@@ -75,6 +75,40 @@ TEST(SimRig, EachDeviceStreamsAtAVariableRateInsideTheStudysRange) {
   }
 }
 
+// Each simulated controller is its slot's model: it reports that model's name and product id, and a
+// model with another nominal rate runs proportionally faster or slower than the study's 11–34 Hz;
+// a stand-in model makes every controller report itself as that one.
+TEST(SimRig, EachControllerIsItsSlotsModelOrTheStandIn) {
+  Layout l = paper_initial();
+  set_models_from_list(l, "ir170,lmc2,lmc,study", sensor_catalogue());
+  const SimTrial t = generate_sim_trial(l, SimConfig{}, 10.0);
+  ASSERT_EQ(t.devices.size(), 4u);
+  EXPECT_EQ(t.devices[0].model, "simulated Stereo IR 170");
+  EXPECT_EQ(t.devices[0].product_id, 0x1203u);
+  EXPECT_EQ(t.devices[1].model, "simulated Leap Motion Controller 2");
+  EXPECT_EQ(t.devices[1].product_id, 0x1206u);
+  EXPECT_EQ(t.devices[2].model, "simulated Leap Motion Controller");
+  EXPECT_EQ(t.devices[3].model, "simulated Leap Motion Controller");
+  EXPECT_EQ(t.devices[3].product_id, 0x0003u);
+  std::map<std::string, int> frames;
+  for (const auto& e : t.events)
+    if (e.is_frame) ++frames[e.frame.serial];
+  const double ir170_rate = frames[t.devices[0].serial] / 10.0;
+  EXPECT_GE(ir170_rate, 11.0 * 0.75);
+  EXPECT_LE(ir170_rate, 34.0 * 0.75);
+  SimConfig c;
+  c.stand_in_model = "lmc2";
+  const SimTrial stand_in = generate_sim_trial(paper_initial(), c, 1.0);
+  for (const auto& d : stand_in.devices) {
+    EXPECT_EQ(d.model, "simulated Leap Motion Controller 2");
+    EXPECT_EQ(d.product_id, 0x1206u);
+  }
+  nlohmann::json j = sim_config_to_json(c);
+  EXPECT_EQ(j["stand_in_model"], "lmc2");
+  j["stand_in_model"] = "lmc9";
+  EXPECT_THROW(sim_config_from_json(j, "sim.json"), Error);
+}
+
 TEST(SimRig, RealigningWithPoseAndLayoutOffsetGivesTheTruth) {
   const Layout layout = paper_initial();
   SimRig rig(layout, exact());
@@ -180,7 +214,7 @@ TEST(SimRig, HiddenFingersComeFromALaggingBiasedInternalModel) {
   c.occlusion = true;
   apply_motion_spec(c, "vertical/index");
   SimRig rig(layout, c);
-  const VisibilityLimits limits = make_limits(VisibilityParams::from_sensor(layout.sensor));
+  const VisibilityLimits limits = make_limits(VisibilityParams::from_sensor(common_sensor(layout)));
   int hidden = 0, hidden_and_off = 0, visible_exact = 0, visible = 0;
   for (int i = 0; i < 1500; ++i) {
     const SimEvent e = rig.next();

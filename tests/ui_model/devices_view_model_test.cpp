@@ -101,7 +101,7 @@ TEST(DevicesViewModel, EachRowShowsTheControllersModelAndTrackingMode) {
   ASSERT_NE(hub, nullptr);
   devices::DeviceEvent appeared;
   appeared.kind = devices::DeviceEventKind::kAppeared;
-  appeared.info = {"LP22222", "leapc", "Leap Motion Controller 2", ""};
+  appeared.info = {"LP22222", "leapc", "Leap Motion Controller 2", "", 0x1206};
   hub->on_device_event(appeared);
   devices::DeviceEvent mode;
   mode.kind = devices::DeviceEventKind::kTrackingMode;
@@ -113,6 +113,21 @@ TEST(DevicesViewModel, EachRowShowsTheControllersModelAndTrackingMode) {
   EXPECT_EQ(lmc2.serial, "LP22222");
   EXPECT_EQ(lmc2.model, "Leap Motion Controller 2");
   EXPECT_EQ(lmc2.tracking_mode, "screen-top");
+  EXPECT_EQ(lmc2.model_warning, "");  // unassigned: no slot model to differ from
+  // In a slot laid out as the study's original controller, the LMC2 is flagged.
+  EXPECT_EQ(vm.assign("LP22222", "LMC1"), "");
+  ASSERT_TRUE(refresh_until(vm, [&] {
+    for (const DeviceRow& r : vm.rows())
+      if (r.serial == "LP22222") return !r.model_warning.empty();
+    return false;
+  }));
+  for (const DeviceRow& r : vm.rows()) {
+    if (r.serial != "LP22222") continue;
+    EXPECT_TRUE(r.warn);
+    EXPECT_NE(r.model_warning.find("LMC1 is laid out as a Leap Motion Controller, as the study modelled it"),
+              std::string::npos)
+        << r.model_warning;
+  }
   vm.stop();
 }
 

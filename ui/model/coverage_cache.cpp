@@ -17,9 +17,9 @@ CoverageSnapshotPtr compute_coverage_snapshot(const Layout& layout, const PoseSe
   auto snap = std::make_shared<CoverageSnapshot>();
   if (!poses) return snap;
   snap->pose_set_version = poses->version;
-  const VisibilityLimits limits = make_limits(VisibilityParams::from_sensor(layout.sensor));
   for (const LayoutDevice& dev : layout.devices) {
-    const ColumnKey key = column_key(dev, layout.sensor, poses->version);
+    const VisibilityLimits limits = make_limits(VisibilityParams::from_sensor(dev.sensor));
+    const ColumnKey key = column_key(dev, dev.sensor, poses->version);
     BitColumn column;
     if (previous) {
       for (size_t i = 0; i < previous->keys.size(); ++i) {
@@ -49,7 +49,7 @@ void CoverageCache::request(const Layout& layout, const PoseSetPtr& poses) {
   if (!poses) return;
   std::vector<ColumnKey> keys;
   keys.reserve(layout.devices.size());
-  for (const auto& d : layout.devices) keys.push_back(column_key(d, layout.sensor, poses->version));
+  for (const auto& d : layout.devices) keys.push_back(column_key(d, d.sensor, poses->version));
   if (keys == requested_keys_ && requested_poses_ == poses) return;
   requested_keys_ = std::move(keys);
   requested_layout_ = layout;

@@ -27,10 +27,10 @@ std::string ray_reason_text(const FingerVerdict& v) {
 
 FrameVisibility explain_frame(const Layout& layout, const PreparedFrame& frame, int ray_device) {
   FrameVisibility out;
-  const VisibilityLimits limits = make_limits(VisibilityParams::from_sensor(layout.sensor));
   out.seen_count = {0, 0, 0, 0, 0};
   out.per_device.reserve(layout.devices.size());
   for (const LayoutDevice& dev : layout.devices) {
+    const VisibilityLimits limits = make_limits(VisibilityParams::from_sensor(dev.sensor));
     out.per_device.push_back(explain_visibility(frame, DeviceView::from_device(dev), limits));
     for (int k = 0; k < kNumDigits; ++k)
       out.seen_count[static_cast<size_t>(k)] += (out.per_device.back().bits >> k) & 1;

@@ -12,14 +12,14 @@ bool HeatmapRequest::same_sweep(const HeatmapRequest& o) const {
       half_extent_mm != o.half_extent_mm || poses != o.poses) {
     return false;
   }
-  if (layout.devices.size() != o.layout.devices.size() || !(layout.sensor == o.layout.sensor)) return false;
+  if (layout.devices.size() != o.layout.devices.size()) return false;
   for (size_t i = 0; i < layout.devices.size(); ++i) {
     LayoutDevice a = layout.devices[i], b = o.layout.devices[i];
     if (static_cast<int>(i) == device) {
       a.pose.x_mm = b.pose.x_mm = 0;
       a.pose.z_mm = b.pose.z_mm = 0;
     }
-    if (!(a.pose == b.pose) || a.offset_mm != b.offset_mm) return false;
+    if (!(a.pose == b.pose) || a.offset_mm != b.offset_mm || !(a.sensor == b.sensor)) return false;
   }
   return true;
 }

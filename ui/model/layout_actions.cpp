@@ -4,6 +4,8 @@
 #include <cmath>
 #include <map>
 
+#include "core/io/sensor_catalogue_json.h"
+
 namespace lmc::ui {
 namespace {
 
@@ -183,8 +185,27 @@ ActionResult set_pose_set_choice(UndoableLayoutDocument& doc, const PoseSetChoic
 
 ActionResult set_sensor_model(UndoableLayoutDocument& doc, const SensorModel& sensor) {
   doc.rollback();
-  doc.upd_scratch().layout.sensor = sensor;
+  set_all_sensors(doc.upd_scratch().layout, sensor);
   return commit_checked(doc, "Change sensor model");
+}
+
+ActionResult set_device_model(UndoableLayoutDocument& doc, int index, const std::string& model_id) {
+  doc.rollback();
+  if (!valid_index(doc, index)) return bad_index(index);
+  const SensorSpec* spec = sensor_catalogue().find(model_id);
+  if (!spec) {
+    return ActionResult::fail("unknown sensor model '" + model_id + "' (known: " + sensor_catalogue().known_ids() +
+                              ")");
+  }
+  lmc::set_device_model(doc.upd_scratch().layout.devices[static_cast<size_t>(index)], *spec);
+  return commit_checked(doc, slot_of(doc, index) + " is a " + spec->name);
+}
+
+ActionResult set_device_sensor(UndoableLayoutDocument& doc, int index, const SensorModel& sensor) {
+  doc.rollback();
+  if (!valid_index(doc, index)) return bad_index(index);
+  doc.upd_scratch().layout.devices[static_cast<size_t>(index)].sensor = sensor;
+  return commit_checked(doc, "Change " + slot_of(doc, index) + "'s sensor model");
 }
 
 ActionResult replace_layout(UndoableLayoutDocument& doc, const Layout& layout, const std::string& what) {

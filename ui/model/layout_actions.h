@@ -54,7 +54,13 @@ ActionResult set_device_lock(UndoableLayoutDocument& doc, int index, int k, bool
 ActionResult set_device_movable(UndoableLayoutDocument& doc, int index, bool movable);
 ActionResult set_search_range(UndoableLayoutDocument& doc, int k, double lo, double hi);
 ActionResult set_pose_set_choice(UndoableLayoutDocument& doc, const PoseSetChoice& choice);
+// Every device's sensor (their model ids stay; the values become overrides where they differ).
 ActionResult set_sensor_model(UndoableLayoutDocument& doc, const SensorModel& sensor);
+// One controller becomes a catalogue model (sensor_catalogue()), its overrides dropped: "LMC3 is a
+// Leap Motion Controller 2".
+ActionResult set_device_model(UndoableLayoutDocument& doc, int index, const std::string& model_id);
+// One controller's sensor values (overrides of its model where they differ from the catalogue's).
+ActionResult set_device_sensor(UndoableLayoutDocument& doc, int index, const SensorModel& sensor);
 
 // ---- whole layouts ----------------------------------------------------------------------------
 // Replaces the layout (keeps locks where slots survive). `what` names it in the undo label:

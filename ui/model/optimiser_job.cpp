@@ -87,8 +87,8 @@ bool OptimiserJob::start(const LayoutDocument& doc, const PoseSetPtr& poses, con
         // one, so the comparison and the status bar show its terms, not zeros.
         if (!best_evaluated) {
           ch.set_stage("Evaluating the best so far");
-          out.pso.best_terms = layout_robust_terms(out.pso.best_layout, poses->prepared, settings.weights,
-                                                   settings.phalanx_radius_mm, settings.axis_cut_mm);
+          out.pso.best_terms =
+              layout_robust_terms(out.pso.best_layout, poses->prepared, settings.weights, settings.phalanx_radius_mm);
           // Cancelled before the initial swarm was evaluated: the best so far is the start layout,
           // whose cost is now known.
           if (!std::isfinite(out.pso.best_cost)) {
@@ -111,8 +111,7 @@ bool OptimiserJob::start(const LayoutDocument& doc, const PoseSetPtr& poses, con
         out.candidate = evaluate_layout(out.pso.best_layout, *poses);
         if (!best_evaluated) out.pso.best_coverage = out.candidate.all;
         out.start_layout = layout;
-        out.start_terms = layout_robust_terms(layout, poses->prepared, settings.weights, settings.phalanx_radius_mm,
-                                              settings.axis_cut_mm);
+        out.start_terms = layout_robust_terms(layout, poses->prepared, settings.weights, settings.phalanx_radius_mm);
         return out;
       });
   return true;

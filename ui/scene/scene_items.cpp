@@ -130,8 +130,10 @@ void add_device(SceneList& out, const SceneInputs& in, int i) {
     pyr.kind = ItemKind::kPyramid;
     pyr.role = ItemRole::kPyramid;
     pyr.transform = t;
-    pyr.size = in.layout->sensor.range_mm;
-    pyr.b = Eigen::Vector3d(in.layout->sensor.fov_long_deg * 0.5, in.layout->sensor.fov_short_deg * 0.5, 0);
+    // Each controller's own model (LayoutDevice::sensor).
+    const SensorModel& sensor = d.sensor;
+    pyr.size = sensor.range_mm;
+    pyr.b = Eigen::Vector3d(sensor.fov_long_deg * 0.5, sensor.fov_short_deg * 0.5, 0);
     pyr.colour = device_hue(i, i == in.selected ? 0.12f : 0.035f);
     pyr.id = i;
     pyr.flags = flags | kFlagTranslucent;

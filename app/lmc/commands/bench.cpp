@@ -10,12 +10,19 @@
 //                        visibility tests per second including the c_i reduction, for
 //                        "paper-initial" (every device sees the whole hand: every test runs),
 //                        "paper-optimized" and "random" (30 random 4-device layouts from the
-//                        authors' search box)
-//   "terms_per_evaluation" what the robust metric's terms cost per (layout, frame), free of the
-//                        machine's drift: {"layouts": 30, "frames" (the first 2,000 or all),
-//                        "bounds" (random layouts drawn on the table), "pairs", "study_seconds",
-//                        "robust_seconds" (medians over "pairs" adjacent runs of each, one
-//                        thread), "cost": the median of the pairs' robust/study − 1}
+//                        authors' search box), then the same 30 layouts as rigs of other
+//                        controller models (assets/sensors/sensors.json): "random-lmc" (four
+//                        LMCs), "random-lmc2" (four LMC2s) and "random-mixed" (LMC2, LMC2, LMC, LMC)
+//   "mixed_rig"         what mixed rigs cost against uniform rigs of their models, free of the
+//                        machine's drift: the 30 random layouts on the first 2,000 frames (or all),
+//                        one thread, as LMC × 4, LMC2 × 4, LMC2, LMC2, LMC, LMC and LMC, LMC, LMC2,
+//                        LMC2 run in adjacent rounds of four (order rotated). The two mixed rigs
+//                        together place every device once as each model, as the two uniform rigs
+//                        do, so their times compare free of which slots happen to see the hand:
+//                        {"frames", "rounds", "lmc_seconds", "lmc2_seconds", "mixed_seconds",
+//                        "mixed_swapped_seconds" (medians), "ratio" (median of the rounds'
+//                        (mixed + swapped) / (lmc + lmc2); 1 when a mixed rig costs what its
+//                        devices cost in uniform rigs)}
 //   "search"            {"particles", "iterations", "seconds", "evals_per_s", "best_cost"} for
 //                        one PSO run on all threads with the study's metric in the authors' box
 //                        (absent with --no-search, or when --searches leaves out study-box)
@@ -29,6 +36,7 @@
 #include <tbb/task_arena.h>
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cstdio>
 #include <iostream>
@@ -82,16 +90,18 @@ struct CaseResult {
 
 // (device, frame) evaluations per second of worst_finger_histograms over `views` in an arena of
 // `threads`, repeated until at least `min_seconds` have passed.
+// Slot d of every layout sees through slot_limits[d] (a mixed rig when they differ).
 double measure(const std::vector<lmc::DeviceView>& views, int layouts, int devices,
-               const std::vector<lmc::PreparedFrame>& frames, const lmc::VisibilityLimits& limits, int threads,
-               double min_seconds) {
+               const std::vector<lmc::PreparedFrame>& frames, std::span<const lmc::VisibilityLimits> slot_limits,
+               int threads, double min_seconds) {
+  const std::vector<lmc::FrameRun> runs = lmc::chunk_runs(frames.size());
   tbb::task_arena arena(threads);
   std::vector<std::int64_t> counts(static_cast<size_t>(layouts) * static_cast<size_t>(devices + 1));
   const auto t0 = std::chrono::steady_clock::now();
   long reps = 0;
   double elapsed = 0;
   do {
-    arena.execute([&] { lmc::worst_finger_histograms(views, layouts, devices, frames, limits, counts); });
+    arena.execute([&] { lmc::worst_finger_histograms(views, layouts, devices, frames, runs, slot_limits, counts); });
     ++reps;
     elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   } while (elapsed < min_seconds);
@@ -138,6 +148,42 @@ PairedTimes measure_terms_cost(const std::vector<lmc::DeviceView>& views, int la
   }
   const auto median = [](const std::vector<double>& v) { return lmc::stats::percentile(v, 50.0); };
   return {median(study), median(robust), median(ratio), static_cast<int>(ratio.size())};
+}
+
+// Mixed rigs against uniform rigs of their models, in adjacent rounds so that the machine's drift
+// cancels: each round times LMC × 4, LMC2 × 4 and the two mixed rigs (one thread, the order rotated
+// every round) until `min_seconds` have passed and at least 15 rounds ran.
+struct MixedRigTimes {
+  double lmc_s = 0, lmc2_s = 0, mixed_s = 0, swapped_s = 0, ratio = 0;
+  int rounds = 0;
+};
+MixedRigTimes measure_mixed_rig(const std::vector<lmc::DeviceView>& views, int layouts, int devices,
+                                std::span<const lmc::PreparedFrame> frames,
+                                const std::array<std::vector<lmc::VisibilityLimits>, 4>& rigs, double min_seconds) {
+  tbb::task_arena arena(1);
+  const std::vector<lmc::FrameRun> runs = lmc::chunk_runs(frames.size());
+  std::vector<std::int64_t> counts(static_cast<size_t>(layouts) * static_cast<size_t>(devices + 1));
+  auto seconds_of = [&](size_t rig) {
+    const auto t0 = std::chrono::steady_clock::now();
+    arena.execute([&] { lmc::worst_finger_histograms(views, layouts, devices, frames, runs, rigs[rig], counts); });
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  };
+  std::array<std::vector<double>, 4> times;
+  std::vector<double> ratio;
+  double total = 0;
+  while (ratio.size() < 15 || total < min_seconds) {
+    std::array<double, 4> t{};
+    for (size_t k = 0; k < 4; ++k) {
+      const size_t rig = (k + ratio.size()) % 4;
+      t[rig] = seconds_of(rig);
+      total += t[rig];
+    }
+    for (size_t rig = 0; rig < 4; ++rig) times[rig].push_back(t[rig]);
+    ratio.push_back((t[2] + t[3]) / (t[0] + t[1]));
+  }
+  const auto median = [](const std::vector<double>& v) { return lmc::stats::percentile(v, 50.0); };
+  return {median(times[0]), median(times[1]), median(times[2]),
+          median(times[3]), median(ratio),    static_cast<int>(ratio.size())};
 }
 
 // `count` layouts of 4 devices drawn uniformly from `space` (fixed seed).
@@ -188,7 +234,8 @@ void setup_bench(CLI::App& app) {
     auto run_case = [&](const std::string& name, const std::vector<lmc::Layout>& layouts) {
       const std::vector<lmc::DeviceView> views = views_of(layouts);
       const int devices = layouts.front().device_count();
-      const auto limits = lmc::make_limits(lmc::VisibilityParams::from_sensor(layouts.front().sensor));
+      // Each slot through its own sensor model (the same in every layout of a case).
+      const std::vector<lmc::VisibilityLimits> limits = lmc::device_limits(layouts.front());
       CaseResult r{name, static_cast<int>(layouts.size()), devices, 0, 0};
       r.single = measure(views, r.layouts, devices, frames, limits, 1, opt->min_seconds);
       r.all = measure(views, r.layouts, devices, frames, limits, threads, opt->min_seconds);
@@ -209,10 +256,43 @@ void setup_bench(CLI::App& app) {
     run_case("paper-initial", {lmc::load_layout_or_preset("paper-initial")});
     run_case("paper-optimized", {lmc::load_layout_or_preset("paper-optimized")});
     run_case("random", random_layouts(lmc::SearchSpace{}, 30, 12345));
+    // The same layouts as rigs of other models: a mixed rig should cost what its devices cost in
+    // rigs of their own model.
+    for (const char* models : {"lmc", "lmc2", "lmc2,lmc2,lmc,lmc"}) {
+      std::vector<lmc::Layout> layouts = random_layouts(lmc::SearchSpace{}, 30, 12345);
+      for (auto& l : layouts) lmc::set_models_from_list(l, models, lmc::sensor_catalogue());
+      const std::string name = std::string(models).find(',') == std::string::npos ? "random-" + std::string(models)
+                                                                                  : std::string("random-mixed");
+      run_case(name, layouts);
+    }
+    nlohmann::json mixed;
+    {
+      std::array<std::vector<lmc::VisibilityLimits>, 4> rigs;
+      const char* models[] = {"lmc", "lmc2", "lmc2,lmc2,lmc,lmc", "lmc,lmc,lmc2,lmc2"};
+      for (size_t k = 0; k < 4; ++k) {
+        lmc::Layout rig = lmc::default_start_layout(4);
+        lmc::set_models_from_list(rig, models[k], lmc::sensor_catalogue());
+        rigs[k] = lmc::device_limits(rig);
+      }
+      const std::span<const lmc::PreparedFrame> some(frames.data(), std::min<size_t>(frames.size(), 2000));
+      const MixedRigTimes m = measure_mixed_rig(views_of(random_layouts(lmc::SearchSpace{}, 30, 12345)), 30, 4, some,
+                                                rigs, 2.0 * opt->min_seconds);
+      mixed = {{"frames", some.size()},    {"rounds", m.rounds},         {"lmc_seconds", m.lmc_s},
+               {"lmc2_seconds", m.lmc2_s}, {"mixed_seconds", m.mixed_s}, {"mixed_swapped_seconds", m.swapped_s},
+               {"ratio", m.ratio}};
+      if (!opt->json) {
+        std::printf(
+            "mixed rigs: %.3f × the uniform rigs of their models (30 random layouts × %zu frames, 1 thread: LMC × 4 "
+            "%.1f ms, LMC2 × 4 %.1f ms, LMC2 LMC2 LMC LMC %.1f ms, LMC LMC LMC2 LMC2 %.1f ms; medians of %d "
+            "adjacent rounds)\n",
+            m.ratio, some.size(), 1e3 * m.lmc_s, 1e3 * m.lmc2_s, 1e3 * m.mixed_s, 1e3 * m.swapped_s, m.rounds);
+        std::fflush(stdout);
+      }
+    }
     {
       const lmc::SearchSpace table = lmc::table_search_space();
       const std::vector<lmc::Layout> layouts = random_layouts(table, 30, 54321);
-      const auto limits = lmc::make_limits(lmc::VisibilityParams::from_sensor(layouts.front().sensor));
+      const auto limits = lmc::make_limits(lmc::VisibilityParams::from_sensor(lmc::common_sensor(layouts.front())));
       // The first 2,000 frames: pairs of ~0.1 s fit between the machine's slow phases.
       const std::span<const lmc::PreparedFrame> some(frames.data(), std::min<size_t>(frames.size(), 2000));
       const PairedTimes p = measure_terms_cost(views_of(layouts), 30, 4, some, limits, 2.0 * opt->min_seconds);
@@ -232,6 +312,7 @@ void setup_bench(CLI::App& app) {
     j["threads"] = threads;
     j["kernel_build"] = kernel;
     j["terms_per_evaluation"] = terms;
+    j["mixed_rig"] = mixed;
     j["cases"] = nlohmann::json::array();
     for (const auto& r : results) {
       j["cases"].push_back({{"name", r.name},

@@ -23,6 +23,7 @@ namespace {
 
 struct EvaluateOptions {
   std::string layout;
+  std::string models;  // --models: catalogue ids, one or one per device
   std::string poses = "mc";
   int frames = lmc::kDefaultMonteCarloFrames;
   std::uint64_t seed = lmc::kDefaultMonteCarloSeed;
@@ -40,7 +41,11 @@ void setup_evaluate(CLI::App& app) {
   app.add_option("--frames", opt->frames, "Frames of the Monte Carlo set")->check(CLI::Range(1, 10'000'000));
   app.add_option("--seed", opt->seed, "Seed of the Monte Carlo set");
   app.add_option("--hand", opt->hand, "Monte Carlo set with the hand of this LMC recording's first row");
-  app.add_option("--range-mm", opt->range_mm, "Override the layout's sensor range (mm)")->check(CLI::PositiveNumber);
+  app.add_option("--range-mm", opt->range_mm, "Override every controller's sensor range (mm)")
+      ->check(CLI::PositiveNumber);
+  app.add_option("--models", opt->models,
+                 "What-if sensor models from the catalogue (assets/sensors/sensors.json): one id for every "
+                 "controller, or one per controller in layout order (lmc2,lmc2,lmc,lmc)");
   app.add_option("--radius-mm", opt->radius_mm, "Phalanx radius (mm)")->check(CLI::NonNegativeNumber);
   app.add_flag("--json", opt->json, "Print JSON (keys: see core/metric/coverage_report.h) instead of text");
   app.add_option("--report", opt->report_dir,
@@ -48,7 +53,10 @@ void setup_evaluate(CLI::App& app) {
                  "each controller contributes, coverage per reference pose");
   app.callback([opt] {
     lmc::Layout layout = lmc::load_layout_or_preset(opt->layout);
-    if (opt->range_mm > 0) layout.sensor.range_mm = opt->range_mm;
+    if (!opt->models.empty()) lmc::set_models_from_list(layout, opt->models, lmc::sensor_catalogue());
+    if (opt->range_mm > 0) {
+      for (auto& d : layout.devices) d.sensor.range_mm = opt->range_mm;
+    }
     const auto hand = opt->hand.empty() ? std::nullopt : std::optional<std::string>(opt->hand);
     const lmc::PoseSet poses = lmc::load_poses(opt->poses, opt->frames, opt->seed, hand);
     const auto t0 = std::chrono::steady_clock::now();
@@ -77,7 +85,9 @@ void setup_evaluate(CLI::App& app) {
       nlohmann::json j;
       j["layout"] = layout.name;
       j["poses"] = poses.description;
-      j["range_mm"] = layout.sensor.range_mm;
+      // The shared range of a uniform rig (null for a mixed one; each controller names its own).
+      j["range_mm"] = lmc::uniform_sensors(layout) ? nlohmann::json(layout.devices.front().sensor.range_mm)
+                                                   : nlohmann::json(nullptr);
       j["phalanx_radius_mm"] = opt->radius_mm;
       j["all"] = lmc::coverage_to_json(all, slots);
       j["horizontal"] = lmc::coverage_to_json(horizontal, slots);
@@ -87,7 +97,12 @@ void setup_evaluate(CLI::App& app) {
                            {"vertical", lmc::robust_terms_to_json(vertical_terms, weights)}};
       nlohmann::json cj = nlohmann::json::array();
       for (const auto& c : contributions) {
+        const auto& dev = layout.devices[cj.size()];
         cj.push_back({{"slot", c.slot},
+                      {"model", dev.model},
+                      {"range_mm", dev.sensor.range_mm},
+                      {"fov_long_deg", dev.sensor.fov_long_deg},
+                      {"fov_short_deg", dev.sensor.fov_short_deg},
                       {"seeing_share", c.seeing_share},
                       {"sole_share", c.sole_share},
                       {"axis_cut_share", c.cut_share},
@@ -105,9 +120,18 @@ void setup_evaluate(CLI::App& app) {
       std::cout << j.dump(2) << "\n";
       return;
     }
-    std::cout << "layout " << layout.name << " on " << poses.description << " (range " << layout.sensor.range_mm
-              << " mm, FOV " << layout.sensor.fov_long_deg << "°×" << layout.sensor.fov_short_deg << "°, radius "
-              << opt->radius_mm << " mm)\n";
+    if (lmc::uniform_sensors(layout)) {
+      const lmc::SensorModel& s = layout.devices.front().sensor;
+      std::cout << "layout " << layout.name << " on " << poses.description << " (range " << s.range_mm << " mm, FOV "
+                << s.fov_long_deg << "°×" << s.fov_short_deg << "°, radius " << opt->radius_mm << " mm)\n";
+    } else {
+      std::cout << "layout " << layout.name << " on " << poses.description << " (mixed rig, radius " << opt->radius_mm
+                << " mm)\n";
+      for (const auto& d : layout.devices) {
+        std::cout << "  " << d.slot << ": " << d.model << ", range " << d.sensor.range_mm << " mm, FOV "
+                  << d.sensor.fov_long_deg << "°×" << d.sensor.fov_short_deg << "°\n";
+      }
+    }
     std::cout << "all frames:\n" << lmc::format_coverage(all, slots);
     std::cout << "horizontal poses:\n" << lmc::format_coverage(horizontal, slots);
     std::cout << "vertical poses:\n" << lmc::format_coverage(vertical, slots);

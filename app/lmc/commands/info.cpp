@@ -404,13 +404,22 @@ void info_layout(const std::string& file, const json& doc, bool as_json, std::os
     j["name"] = layout.name;
     j["description"] = layout.description;
     j["device_count"] = layout.device_count();
-    j["sensor"] = {{"range_mm", layout.sensor.range_mm},
-                   {"fov_long_deg", layout.sensor.fov_long_deg},
-                   {"fov_short_deg", layout.sensor.fov_short_deg}};
+    // The shared sensor of a uniform rig; null for a mixed one (each device lists its own).
+    j["sensor"] = lmc::uniform_sensors(layout) ? json{{"range_mm", layout.devices.front().sensor.range_mm},
+                                                      {"fov_long_deg", layout.devices.front().sensor.fov_long_deg},
+                                                      {"fov_short_deg", layout.devices.front().sensor.fov_short_deg}}
+                                               : json(nullptr);
     j["devices"] = json::array();
     for (const auto& d : layout.devices) {
       j["devices"].push_back({{"slot", d.slot},
                               {"serial", d.serial ? json(*d.serial) : json(nullptr)},
+                              {"model", d.model},
+                              {"sensor",
+                               {{"range_mm", d.sensor.range_mm},
+                                {"range_near_mm", d.sensor.range_near_mm},
+                                {"fov_long_deg", d.sensor.fov_long_deg},
+                                {"fov_short_deg", d.sensor.fov_short_deg},
+                                {"axis_cut_mm", d.sensor.axis_cut_mm}}},
                               {"pose",
                                {{"x", d.pose.x_mm},
                                 {"y", d.pose.y_mm},
@@ -428,8 +437,16 @@ void info_layout(const std::string& file, const json& doc, bool as_json, std::os
   out << "type:       layout\n";
   out << "name:       " << layout.name << "\n";
   if (!layout.description.empty()) out << "about:      " << layout.description << "\n";
-  out << "sensor:     range " << layout.sensor.range_mm << " mm, field of view " << layout.sensor.fov_long_deg << "° x "
-      << layout.sensor.fov_short_deg << "°\n";
+  if (lmc::uniform_sensors(layout)) {
+    const lmc::SensorModel& s = layout.devices.front().sensor;
+    out << "sensor:     range " << s.range_mm << " mm, field of view " << s.fov_long_deg << "° x " << s.fov_short_deg
+        << "°\n";
+  } else {
+    for (const auto& d : layout.devices) {
+      out << "sensor:     " << d.slot << " " << d.model << ", range " << d.sensor.range_mm << " mm, field of view "
+          << d.sensor.fov_long_deg << "° x " << d.sensor.fov_short_deg << "°\n";
+    }
+  }
   out << "devices:    " << layout.device_count() << "\n\n";
   out << std::left << std::setw(7) << "slot" << std::setw(12) << "serial" << std::right;
   for (const char* h : {"x_mm", "y_mm", "z_mm", "rx_deg", "ry_deg", "rz_deg", "off_x", "off_y", "off_z"}) {

@@ -34,7 +34,8 @@ struct OptimizeOptions {
   std::uint64_t pso_seed = 1;
   int threads = 0;
   std::string bounds;
-  double range_mm = 0.0;  // 0: the start layout's own range, or the study's 600 mm
+  double range_mm = 0.0;  // 0: the start layout's own ranges, or the study's 600 mm
+  std::string models;     // --models: catalogue ids, one or one per device
   double radius_mm = 10.0;
   std::string start;
   std::vector<std::string> locks;
@@ -94,6 +95,9 @@ void setup_optimize(CLI::App& app) {
                  "Sensor range (mm); default: the --start layout's, else 600 as in the study")
       ->check(CLI::PositiveNumber);
   app.add_option("--radius-mm", opt->radius_mm, "Phalanx radius (mm)")->check(CLI::NonNegativeNumber);
+  app.add_option("--models", opt->models,
+                 "Sensor models from the catalogue (assets/sensors/sensors.json) for the searched controllers: one "
+                 "id for all, or one per controller in order (lmc2,lmc2,lmc,lmc); each slot keeps its model");
   app.add_option("--start", opt->start, "Start from this layout (file or preset); its devices are searched");
   app.add_option("--lock", opt->locks, "Keep a device (SLOT) or some of its parameters (SLOT:x+rz) at the start value");
   app.add_option("-o,--output", opt->output, "Write the best layout here (JSON)")->required();
@@ -133,10 +137,9 @@ void setup_optimize(CLI::App& app) {
     } else {
       start = lmc::default_start_layout(opt->devices);
     }
+    if (!opt->models.empty()) lmc::set_models_from_list(start, opt->models, lmc::sensor_catalogue());
     if (opt->range_mm > 0) {
-      start.sensor.range_mm = opt->range_mm;
-    } else if (!from_layout) {
-      start.sensor.range_mm = 600.0;
+      for (auto& d : start.devices) d.sensor.range_mm = opt->range_mm;
     }
     // The study's metric searches the authors' box (the reference); the robust one the table.
     const lmc::SearchSpace default_space = opt->metric == "study" ? lmc::SearchSpace{} : lmc::table_search_space();

@@ -69,7 +69,7 @@ TEST(ReferencePoses, PaperLayoutsSeeTheOpenHand) {
       std::string why;
       for (int d = 0; d < t.devices && std::string(preset) == "paper-initial"; ++d) {
         const auto ex = explain_visibility(fr, DeviceView::from_device(layout.devices[static_cast<size_t>(d)]),
-                                           make_limits(VisibilityParams::from_sensor(layout.sensor)));
+                                           make_limits(VisibilityParams::from_sensor(common_sensor(layout))));
         for (int k = 0; k < kNumDigits; ++k)
           why += " | dev" + std::to_string(d) + " " + std::string(digit_name(k)) + ": " +
                  describe(ex.fingers[static_cast<size_t>(k)]);
@@ -77,7 +77,7 @@ TEST(ReferencePoses, PaperLayoutsSeeTheOpenHand) {
       const bool initial_vertical = std::string(preset) == "paper-initial" && o == 1;
       for (int d = 0; d < t.devices && std::string(preset) == "paper-initial"; ++d) {
         const auto ex = explain_visibility(fr, DeviceView::from_device(layout.devices[static_cast<size_t>(d)]),
-                                           make_limits(VisibilityParams::from_sensor(layout.sensor)));
+                                           make_limits(VisibilityParams::from_sensor(common_sensor(layout))));
         for (const auto& v : ex.fingers) {
           EXPECT_TRUE(v.reason == HiddenReason::kVisible || v.reason == HiddenReason::kBehindFinger ||
                       v.reason == HiddenReason::kBehindPalm)

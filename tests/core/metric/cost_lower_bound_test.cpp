@@ -33,7 +33,7 @@ struct Split {
 };
 Split split_tally(const Layout& layout, int counted) {
   const auto views = views_of(layout);
-  const VisibilityLimits lim = make_limits(VisibilityParams::from_sensor(layout.sensor));
+  const VisibilityLimits lim = make_limits(VisibilityParams::from_sensor(common_sensor(layout)));
   std::vector<int> first(static_cast<size_t>(counted));
   std::iota(first.begin(), first.end(), 0);
   Split s;

@@ -31,7 +31,7 @@ std::vector<DeviceView> views_of(const Layout& l) {
 }
 
 LayoutTally tally_of(const Layout& l) {
-  return tally_layout(views_of(l), robust_frames(), make_limits(VisibilityParams::from_sensor(l.sensor)));
+  return tally_layout(views_of(l), robust_frames(), make_limits(VisibilityParams::from_sensor(common_sensor(l))));
 }
 
 TEST(RobustMetric, WithEveryWeightZeroItIsTheStudysMetricExactly) {
@@ -57,7 +57,7 @@ TEST(RobustMetric, MInsideTheCutCountsOnlyWhatTheControllersCanMeasure) {
   EXPECT_GT(r.metric_m_inside_cut, r.metric_m + 0.2);
   EXPECT_EQ(r.metric_m_inside_cut, placement_metric(t.c_inside_cut));
   const LayoutTally wide =
-      tally_layout(views_of(l), robust_frames(), make_limits(VisibilityParams::from_sensor(l.sensor)), 1e9);
+      tally_layout(views_of(l), robust_frames(), make_limits(VisibilityParams::from_sensor(common_sensor(l))), 1e9);
   EXPECT_EQ(wide.c_inside_cut, wide.c);
   EXPECT_EQ(wide.c, t.c);
   // Its weight adds exactly weight × M_cut to R (the default weight is 1); at 0 it is only reported.
@@ -97,7 +97,9 @@ TEST(RobustMetric, EachControllersContributionInsideItsCutComesFromTheBitsMInsid
     some_less = some_less || c.seeing_inside_cut_share < c.seeing_share;
   }
   EXPECT_TRUE(some_less);  // two thirds of its seeing pairs have a seen marker beyond the cut
-  const VisibilityTable no_cut = visibility_with_inside_cut(l, robust_frames(), 10.0, 1e9).inside_cut;
+  Layout uncut = l;
+  for (auto& d : uncut.devices) d.sensor.axis_cut_mm = 1e9;
+  const VisibilityTable no_cut = visibility_with_inside_cut(uncut, robust_frames()).inside_cut;
   EXPECT_EQ(no_cut.bits, table.bits);
   for (const auto& c : controller_contributions(table, t, slots, {}, &no_cut)) {
     EXPECT_EQ(c.seeing_inside_cut_share, c.seeing_share) << c.slot;

@@ -211,7 +211,7 @@ TEST(TallyFastPath, TallyFromTheVisibilityTablesEqualsTallyingTheLayout) {
     std::vector<DeviceView> layout_views;
     for (const auto& dev : layout.devices) layout_views.push_back(DeviceView::from_device(dev));
     const VisibilityWithCut tables = visibility_with_inside_cut(layout, frames);
-    const VisibilityLimits limits = make_limits(VisibilityParams::from_sensor(layout.sensor));
+    const VisibilityLimits limits = make_limits(VisibilityParams::from_sensor(common_sensor(layout)));
     const LayoutTally all = tally_from_visibility(tables, layout_views, frames, limits);
     expect_same(all, tally_layout(layout_views, frames, limits));
     expect_same(tally_from_visibility(tables, layout_views, frames, limits, subset),

@@ -283,7 +283,7 @@ TEST(Visibility, ComputeVisibilityMatchesSingleCallsAndIsDeviceMajor) {
   layout.devices[2].offset_mm = {5, 0, 0};
   const VisibilityTable t = compute_visibility(layout, frames);
   ASSERT_EQ(t.bits.size(), 900u);
-  const VisibilityLimits lim = make_limits(VisibilityParams::from_sensor(layout.sensor));
+  const VisibilityLimits lim = make_limits(VisibilityParams::from_sensor(common_sensor(layout)));
   for (int d = 0; d < 3; ++d) {
     const DeviceView view = DeviceView::from_device(layout.devices[static_cast<size_t>(d)]);
     for (int j = 0; j < 300; ++j) ASSERT_EQ(t.at(d, j), visible_fingers(frames[static_cast<size_t>(j)], view, lim));

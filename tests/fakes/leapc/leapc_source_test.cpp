@@ -12,6 +12,7 @@
 
 #include <gtest/gtest.h>
 
+#include "core/io/sensor_catalogue_json.h"
 #include "devices/device_hub.h"
 #include "devices/leapc/leapc_source.h"
 #include "devices/record/clock_alignment.h"
@@ -278,6 +279,31 @@ TEST_F(LeapcBackend, EachDeviceIsAskedForTheTrackingModeOfItsPlaceAndItsModeAndM
   fake_leapc::change_tracking_mode(2, eLeapTrackingMode_HMD);
   ASSERT_TRUE(wait_for_message(hub, seen, {"LMC2 (LP22222) tracks in head-mounted mode", "not the desktop mode"}));
   EXPECT_EQ(hub.snapshot().devices[1].tracking_mode, "head-mounted");
+  hub.stop();
+}
+
+// A slot laid out as one model with another model connected: the hub warns and the Devices tab
+// shows it; the slot of the right model stays quiet.
+TEST_F(LeapcBackend, AControllerOfAnotherModelThanItsSlotGetsAWarning) {
+  Layout l = layout_with_serials();
+  l.devices.resize(2);
+  set_device_model(l.devices[0], sensor_catalogue().at("lmc", "test"));
+  set_device_model(l.devices[1], sensor_catalogue().at("lmc", "test"));
+  DeviceHub hub(l);
+  hub.add_source(std::make_unique<LeapcSource>());
+  hub.start();
+  fake_leapc::plug(1, "LP11111", eLeapDevicePID_Peripheral);
+  fake_leapc::plug(2, "LP22222", eLeapDevicePID_LMC2);
+  std::vector<std::string> seen;
+  ASSERT_TRUE(wait_for_message(
+      hub, seen,
+      {"warning: LMC2 is laid out as a Leap Motion Controller (lmc) but a Leap Motion Controller 2 (lmc2)"}));
+  const auto snap = hub.snapshot();
+  ASSERT_EQ(snap.devices.size(), 2u);
+  EXPECT_EQ(snap.devices[0].product_id, static_cast<std::uint32_t>(eLeapDevicePID_Peripheral));
+  EXPECT_EQ(snap.devices[0].model_warning, "");
+  EXPECT_EQ(snap.devices[1].product_id, static_cast<std::uint32_t>(eLeapDevicePID_LMC2));
+  EXPECT_NE(snap.devices[1].model_warning.find("change the slot's model"), std::string::npos);
   hub.stop();
 }
 

@@ -82,6 +82,7 @@ void DevicesViewModel::refresh() {
     r.slot_index = s.slot_index;
     r.backend = s.backend;
     r.model = s.model;
+    r.model_warning = s.model_warning;
     r.tracking_mode = s.tracking_mode;
     r.rate_hz = s.rate_hz;
     r.age_ms = s.latest_frame_age_ms;
@@ -103,6 +104,7 @@ void DevicesViewModel::refresh() {
     r.warn =
         r.status == "disconnected" || r.status == "stalled" || (s.connected && s.frames_received > 0 && r.rate_hz < 10);
     r.warn = r.warn || std::find(blind_slots_.begin(), blind_slots_.end(), s.slot_index) != blind_slots_.end();
+    r.warn = r.warn || !r.model_warning.empty();
     if (s.slot_index >= 0 && s.connected && s.frames_received > 0 && r.age_ms <= kStalledMs) ++streaming_slots;
     if (auto h = live_hand(s, hub_layout)) hands_.push_back(std::move(*h));
     rows_.push_back(std::move(r));

@@ -25,6 +25,7 @@ struct DeviceRow {
   int slot_index = -1;
   std::string backend;
   std::string model;          // "Leap Motion Controller 2", …; empty when the backend did not say
+  std::string model_warning;  // the controller is not the model its slot is laid out as (DeviceStatus)
   std::string tracking_mode;  // "desktop", "screen-top", …; empty until the backend reports it
   std::string status;         // "streaming", "no hand", "stalled", "disconnected", "unassigned"
   double rate_hz = 0;

@@ -40,10 +40,15 @@ void DeviceTablePanel::draw() {
     ImGui::TableNextColumn();
     ImGui::TextUnformatted(r.backend.c_str());
     ImGui::TableNextColumn();
-    if (r.model.empty())
+    if (r.model.empty()) {
       ImGui::TextDisabled("-");
-    else
+    } else if (!r.model_warning.empty()) {
+      // Another model than its slot's: the layout's visibility does not hold for it.
+      ImGui::TextColored(ImVec4(1.0F, 0.55F, 0.3F, 1.0F), "%s (!)", r.model.c_str());
+      if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", r.model_warning.c_str());
+    } else {
       ImGui::TextUnformatted(r.model.c_str());
+    }
     ImGui::TableNextColumn();
     // The tracking mode the service reports: anything but what the layout implies is a warning
     // in the device messages; here it is just shown.

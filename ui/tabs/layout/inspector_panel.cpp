@@ -114,7 +114,8 @@ void InspectorPanel::draw_device(int index) {
 
 void InspectorPanel::draw_sensor() {
   LayoutTabState& s = *state_;
-  SensorModel sensor = s.layout().sensor;
+  // Edits every controller at once (their model ids stay, the values become overrides).
+  SensorModel sensor = s.layout().devices.front().sensor;
   ImGui::TextDisabled("Sensor model (all controllers)");
   bool changed = false;
   ImGui::SetNextItemWidth(120);
@@ -128,9 +129,9 @@ void InspectorPanel::draw_sensor() {
   ImGui::SetNextItemWidth(90);
   changed |= ImGui::DragScalar("short", ImGuiDataType_Double, &sensor.fov_short_deg, 0.5f, nullptr, nullptr, "%.0f°");
   const bool done_short = ImGui::IsItemDeactivatedAfterEdit();
-  if (changed) s.upd_history().upd_scratch().layout.sensor = sensor;
+  if (changed) set_all_sensors(s.upd_history().upd_scratch().layout, sensor);
   if (done_range || done_long || done_short) {
-    const SensorModel edited = s.doc().layout.sensor;
+    const SensorModel edited = s.doc().layout.devices.front().sensor;
     s.report(set_sensor_model(s.upd_history(), edited), "Sensor model");
   }
   if (ImGui::IsItemHovered()) {

@@ -353,8 +353,7 @@ void OptimiserPanel::draw_comparison() {
   // The robust metric's terms (lower is better), when "current" is still the layout the search
   // started from: the job computed both on the same pose set with the same weights.
   // (Poses, offsets and the sensor model all change the terms; the name does not.)
-  const bool same_start =
-      outcome->start_layout.devices == s.layout().devices && outcome->start_layout.sensor == s.layout().sensor;
+  const bool same_start = outcome->start_layout.devices == s.layout().devices;
   if (same_start) {
     row_num("R (robust metric)", outcome->start_terms.total, outcome->pso.best_terms.total, true, false,
             "M plus each weight times its term");
