@@ -10,6 +10,7 @@
 #include "core/io/lmc_recording.h"
 #include "core/io/pose_set_tsv.h"
 #include "core/io/recorder_sidecar.h"
+#include "core/io/sensor_catalogue_json.h"
 #include "core/io/trc.h"
 #include "core/io/vicon_mapping.h"
 #include "core/processing/length_correction_json.h"
@@ -102,6 +103,11 @@ void session_journal(std::string_view bytes) {
   (void)session::state_from_journal(journal, kSource);
 }
 
+// A sensor catalogue as the workbench reads assets/sensors/sensors.json (or a lab's own).
+void sensor_catalogue(std::string_view bytes) {
+  (void)sensor_catalogue_from_json(parse_json_text(std::string(bytes), kSource), kSource);
+}
+
 // A fitted length correction as `lmc process --length-correction` reads it.
 void length_correction(std::string_view bytes) {
   (void)length_correction_from_json(parse_json_text(std::string(bytes), kSource), kSource);
@@ -135,6 +141,7 @@ const std::vector<Target>& targets() {
       {"protocol", "session protocol JSON, then the trial plan", protocol},
       {"session_journal", "session journal (JSON lines), then the session state", session_journal},
       {"length_correction", "fitted length-correction JSON", length_correction},
+      {"sensor_catalogue", "sensor catalogue JSON (models, fields of view, ranges)", sensor_catalogue},
       {"vicon_hosts", "the Vicon host list of listen mode (addresses, subnets, names)", vicon_hosts},
   };
   return all;
