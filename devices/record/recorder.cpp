@@ -112,11 +112,12 @@ void Recorder::note_streams_behind_end(std::vector<std::string> slots) {
 }
 
 bool Recorder::offer(const HandFrame& frame, std::int64_t host_receive_ns, bool may_wait) {
-  if (failed_.load(std::memory_order_relaxed) || stop_requested_.load(std::memory_order_relaxed) || !started_) {
+  if (!started_) {
     dropped_.fetch_add(1);
     return false;
   }
-  // One device's frames arrive in order from its source's thread: a store keeps the latest.
+  // One device's frames arrive in order from its source's thread: a store keeps the latest (also
+  // once the recorder failed: the end of the trial still waits for the streams to pass it).
   if (frame.device_id >= 1 && frame.device_id <= kTrackedDevices)
     latest_offered_ns_[static_cast<size_t>(frame.device_id)].store(host_receive_ns, std::memory_order_relaxed);
   Item item{frame, host_receive_ns};
@@ -137,6 +138,12 @@ bool Recorder::offer(const HandFrame& frame, std::int64_t host_receive_ns, bool 
       after_window_.fetch_add(1);
       return true;
     }
+  }
+  // A frame of the trial that a failed or stopping recorder cannot write is lost, and counted so;
+  // one outside the trial (above) is not.
+  if (failed_.load(std::memory_order_relaxed) || stop_requested_.load(std::memory_order_relaxed)) {
+    dropped_.fetch_add(1);
+    return false;
   }
   bool pushed = queue_.try_push(item);
   while (!pushed && may_wait && !failed_.load() && !stop_requested_.load()) {
