@@ -1,6 +1,9 @@
 #include "devices/soak/process_stats.h"
 
 #include <unistd.h>
+#if defined(__GLIBC__)
+#include <malloc.h>
+#endif
 
 #include <filesystem>
 #include <fstream>
@@ -16,6 +19,11 @@ ProcessStats read_process_stats() {
     if (statm >> size >> resident)
       s.rss_mb = static_cast<double>(resident) * static_cast<double>(::sysconf(_SC_PAGESIZE)) / (1024.0 * 1024.0);
   }
+#if defined(__GLIBC__)
+  // uordblks: bytes in use in the arenas; hblkhd: bytes in blocks the allocator mapped on their own.
+  const struct mallinfo2 heap = ::mallinfo2();
+  s.heap_in_use_mb = static_cast<double>(heap.uordblks + heap.hblkhd) / (1024.0 * 1024.0);
+#endif
   std::error_code ec;
   int fds = 0;
   for (std::filesystem::directory_iterator it("/proc/self/fd", ec), end; !ec && it != end; it.increment(ec)) ++fds;

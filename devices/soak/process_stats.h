@@ -1,13 +1,16 @@
 #pragma once
 // What a long recording must not accumulate, read from /proc/self (Linux): resident memory, open
 // file descriptors and threads. A soak samples them every second to tell a leak from a plateau.
+// Beside resident memory, the bytes the program holds from the allocator: when resident memory
+// steps up while these stay flat, the allocator kept freed pages, not the program its data.
 #include <cstdint>
 
 namespace lmc::devices {
 
 struct ProcessStats {
-  double rss_mb = 0;  // resident set size, MiB
-  int fds = 0;        // open file descriptors
+  double rss_mb = 0;          // resident set size, MiB
+  double heap_in_use_mb = 0;  // allocated and not freed (glibc's mallinfo2), MiB; 0 without glibc
+  int fds = 0;                // open file descriptors
   int threads = 0;
 };
 

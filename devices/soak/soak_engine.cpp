@@ -95,8 +95,9 @@ class Sampler {
         next_progress += config_.progress_every_s;
         progress_("soak: " + mb(s.t_s) + " s of " + mb(config_.seconds) + ": " + std::to_string(s.frames_written) +
                   " frames written in " + std::to_string(trials.load()) + " trials, " + std::to_string(lost.load()) +
-                  " lost, RSS " + mb(s.process.rss_mb) + " MB, fds " + std::to_string(s.process.fds) + ", threads " +
-                  std::to_string(s.process.threads) + ", fusion dropped " + std::to_string(s.fusion_dropped));
+                  " lost, RSS " + mb(s.process.rss_mb) + " MB (heap in use " + mb(s.process.heap_in_use_mb) +
+                  " MB), fds " + std::to_string(s.process.fds) + ", threads " + std::to_string(s.process.threads) +
+                  ", fusion dropped " + std::to_string(s.fusion_dropped));
       }
     }
   }
@@ -337,7 +338,7 @@ std::string soak_summary_line(const SoakReport& r) {
 nlohmann::json soak_report_to_json(const SoakReport& r) {
   using nlohmann::json;
   const auto stats = [](const ProcessStats& p) {
-    return json{{"rss_mb", p.rss_mb}, {"fds", p.fds}, {"threads", p.threads}};
+    return json{{"rss_mb", p.rss_mb}, {"heap_in_use_mb", p.heap_in_use_mb}, {"fds", p.fds}, {"threads", p.threads}};
   };
   const auto number = [](double v) { return std::isfinite(v) ? json(v) : json(nullptr); };
   json trials = json::array();
@@ -356,6 +357,7 @@ nlohmann::json soak_report_to_json(const SoakReport& r) {
   for (const SoakSample& s : r.samples)
     samples.push_back({{"t_s", s.t_s},
                        {"rss_mb", s.process.rss_mb},
+                       {"heap_in_use_mb", s.process.heap_in_use_mb},
                        {"fds", s.process.fds},
                        {"threads", s.process.threads},
                        {"queue_depth_max", s.queue_depth_max},

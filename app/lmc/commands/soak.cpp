@@ -10,9 +10,9 @@
 // trial_seconds, elapsed_s, frames_produced, frames_written, lost, lost_queue_full, lost_writer,
 // source_frames, source_rate_fraction, fusion{frames_tapped, frames_fused, frames_dropped,
 // latency_p50_ms, latency_p95_ms, latency_max_ms}, background{heatmaps, searches,
-// trials_processed}, process{start, baseline, end: {rss_mb, fds, threads}}, rss_max_mb,
+// trials_processed}, process{start, baseline, end: {rss_mb, heap_in_use_mb, fds, threads}}, rss_max_mb,
 // queue_depth_max, problems[], notes[], trials[{name, seconds, status, produced, written, lost,
-// queue_dropped, writer_lost, verdict, reasons[]}], samples[{t_s, rss_mb, fds, threads,
+// queue_dropped, writer_lost, verdict, reasons[]}], samples[{t_s, rss_mb, heap_in_use_mb, fds, threads,
 // queue_depth_max, fusion_dropped, frames_written}]); the summary line still ends stderr.
 // Without -o the trials go to a folder of their own under the temporary directory, removed at
 // the end unless --keep.
