@@ -242,9 +242,9 @@ class RowParser {
           return RowFailure{column, "point '" + std::string(hand_point_name(p)) + "' " + kAxes[static_cast<size_t>(a)] +
                                         " is not a number: " + text::quoted_excerpt(part)};
         }
-        if (auto bad = implausible_coordinate(
-                *v, column, "point '" + std::string(hand_point_name(p)) + "' " + kAxes[static_cast<size_t>(a)], part)) {
-          return bad;
+        if (is_implausible(*v)) {
+          return implausible_coordinate(
+              *v, column, "point '" + std::string(hand_point_name(p)) + "' " + kAxes[static_cast<size_t>(a)], part);
         }
         row.frame.points[static_cast<size_t>(p)][a] = *v;
         finite += std::isfinite(*v) ? 1 : 0;
@@ -271,10 +271,10 @@ class RowParser {
                                             kAxes[static_cast<size_t>(c % 3)] +
                                             "' is not a number: " + text::quoted_excerpt(field.text)};
       }
-      if (auto bad = implausible_coordinate(
-              *v, field.column,
-              "'" + std::string(hand_point_name(c / 3)) + "." + kAxes[static_cast<size_t>(c % 3)] + "'", field.text)) {
-        return bad;
+      if (is_implausible(*v)) {
+        return implausible_coordinate(
+            *v, field.column, "'" + std::string(hand_point_name(c / 3)) + "." + kAxes[static_cast<size_t>(c % 3)] + "'",
+            field.text);
       }
       row.frame.points[static_cast<size_t>(c / 3)][c % 3] = *v;
       finite += std::isfinite(*v) ? 1 : 0;
@@ -293,19 +293,20 @@ class RowParser {
   }
 
   // NaN is how the formats write "missing"; infinity and magnitudes no controller can measure are
-  // refused with the value, so they cannot pass as a hand or as "missing".
-  static std::optional<RowFailure> implausible_coordinate(double v, long column, const std::string& what,
-                                                          std::string_view text) {
+  // refused with the value, so they cannot pass as a hand or as "missing". The test comes apart from
+  // the message so that a coordinate's name is built only for a message (a trial has ~100,000).
+  static bool is_implausible(double v) {
+    return std::isinf(v) || (std::isfinite(v) && std::fabs(v) > kMaxAbsCoordinateMm);
+  }
+  // The message for a value is_implausible() refused.
+  static RowFailure implausible_coordinate(double v, long column, const std::string& what, std::string_view text) {
     if (std::isinf(v)) {
       return RowFailure{
           column, what + " is infinite: " + text::quoted_excerpt(text) + " (a missing coordinate is written nan)"};
     }
-    if (std::isfinite(v) && std::fabs(v) > kMaxAbsCoordinateMm) {
-      return RowFailure{column, what + " = " + text::quoted_excerpt(text) + " mm is implausible (more than " +
-                                    std::to_string(static_cast<int>(kMaxAbsCoordinateMm / 1000.0)) +
-                                    " m from the controller)"};
-    }
-    return std::nullopt;
+    return RowFailure{column, what + " = " + text::quoted_excerpt(text) + " mm is implausible (more than " +
+                                  std::to_string(static_cast<int>(kMaxAbsCoordinateMm / 1000.0)) +
+                                  " m from the controller)"};
   }
 
   static void classify(ParsedRow& row, int finite) {

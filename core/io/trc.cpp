@@ -208,19 +208,21 @@ TrcData parse_trc_text(std::string_view content, const std::string& source_name)
           continue;
         }
         const auto v = text::parse_double(cell.text);
-        const std::string what =
-            "marker '" + trc.marker_names[static_cast<size_t>(m)] + "' " + static_cast<char>('X' + a);
+        // The cell's name is built only for a message: a Vicon file holds millions of cells.
+        const auto what = [&] {
+          return "marker '" + trc.marker_names[static_cast<size_t>(m)] + "' " + static_cast<char>('X' + a);
+        };
         if (!v)
           text::fail_at(source_name, line.number, cell.column,
-                        what + " is not a number: " + text::quoted_excerpt(cell.text));
-        // Issue #14: infinity is no gap (a gap is blank or NaN), and a magnitude no capture volume
-        // holds (1e308) would turn every later computation into NaN or overflow.
+                        what() + " is not a number: " + text::quoted_excerpt(cell.text));
+        // Infinity is no gap (a gap is blank or NaN), and a magnitude no capture volume holds
+        // (1e308) would turn every later computation into NaN or overflow.
         if (std::isinf(*v))
           text::fail_at(source_name, line.number, cell.column,
-                        what + " is infinite: " + text::quoted_excerpt(cell.text));
+                        what() + " is infinite: " + text::quoted_excerpt(cell.text));
         if (std::fabs(*v) > max_coordinate) {
           text::fail_at(source_name, line.number, cell.column,
-                        what + " = " + text::quoted_excerpt(cell.text) + " " + trc.units +
+                        what() + " = " + text::quoted_excerpt(cell.text) + " " + trc.units +
                             " is implausible (more than 100 m from the lab origin)");
         }
         p[a] = *v;

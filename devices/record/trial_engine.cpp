@@ -11,6 +11,7 @@
 #include "core/common/error.h"
 #include "core/io/trc.h"
 #include "devices/host_clock.h"
+#include "devices/host_memory.h"
 #include "devices/record/clock_alignment.h"
 #include "devices/record/trial_name.h"
 #include "devices/sim/truth_markers.h"
@@ -607,6 +608,7 @@ TrialResult TrialEngine::run(std::stop_token stop, const std::function<void(cons
   Run r(hub_, sim_, config_, std::move(stop), on_status);
   r.guarded("", [&] { r.execute(); });
   r.finish();
+  return_freed_memory();
   return std::move(r.result);
 }
 

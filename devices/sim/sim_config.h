@@ -80,7 +80,7 @@ struct SimConfig {
   std::map<std::string, Eigen::Vector3d> calibration_rotations_deg;  // any mode, by slot: (rx, ry, rz)
   double calibration_random_translation_mm = 0;  // seeded random error per device, up to this length
   double calibration_random_rotation_deg = 0;    // and up to this angle
-  // Issue #16: the controllers' own hand models (study_errors.h). `study_errors` records that the
+  // The controllers' own hand models (study_errors.h). `study_errors` records that the
   // fitted preset was asked for (JSON `"study_errors": true`); the values live in the fields.
   bool study_errors = false;
   HandModelError hand_model_error;

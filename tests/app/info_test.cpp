@@ -127,7 +127,7 @@ TEST(LmcInfo, LayoutJson) {
   EXPECT_EQ(j.at("devices")[1].at("offset_mm")[0], -12.92);
 }
 
-// Issue #14: a row whose timestamp jumps by 10^4 s was reported as a 10,000 s recording without
+// A row whose timestamp jumps by 10^4 s was reported as a 10,000 s recording without
 // a word; `lmc process` refuses such a file, and `lmc info` says why beforehand.
 TEST(LmcInfo, WarnsAboutImplausibleDuration) {
   const auto dir = lmc::test::scratch_dir("info_time_jump_input");

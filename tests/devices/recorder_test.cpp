@@ -399,7 +399,7 @@ TEST(Recorder, AWriteErrorStaysFailedWhateverTheAbortReason) {
   EXPECT_NE(side["error"].get<std::string>().find("No space left"), std::string::npos) << side["error"];
 }
 
-// Issue #14: the output folder removed mid-trial went unnoticed (the trial ran on into a deleted
+// The output folder removed mid-trial went unnoticed (the trial ran on into a deleted
 // file); the recorder now notices within its flush interval and fails with that cause.
 TEST(Recorder, OutputFolderDeletedMidTrialFailsTheTrial) {
   const auto dir = test::scratch_dir("rec_folder_gone") / "trial_folder";
@@ -449,7 +449,7 @@ class MemorySink final : public ByteSink {
   std::uint64_t bytes_ = 0;
 };
 
-// Issue #14 (64 KB tmpfs): the raw file was fine but the final sidecar could not be written; it
+// On a 64 KB tmpfs the raw file was fine but the final sidecar could not be written; it
 // stayed "recording" with 0 frames and nothing said so.
 TEST(Recorder, ASidecarWriteErrorIsReportedEvenAfterAnotherError) {
   for (const std::string abort_reason : {"", "the Vicon trigger failed"}) {

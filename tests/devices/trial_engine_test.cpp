@@ -211,7 +211,7 @@ TEST(TrialEngine, StoppedWhileWaitingForViconNothingIsRecorded) {
   EXPECT_TRUE(std::filesystem::is_empty(dir));
 }
 
-// Issue #14, Vicon listen mode: a CaptureStart naming a trial already on disk is refused on its
+// Vicon listen mode: a CaptureStart naming a trial already on disk is refused on its
 // own (the session keeps listening), and another capture's CaptureStop does not end this trial.
 TEST(TrialEngine, ListenModeSkipsATakenNameAndIgnoresAnotherTrialsStop) {
   const auto dir = test::scratch_dir("trial_engine_listen_names");

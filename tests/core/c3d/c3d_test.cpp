@@ -311,7 +311,7 @@ TEST(C3d, RejectsMalformedFiles) {
   EXPECT_THROW(parse_c3d(bad_offset, "bad.c3d"), Error);
 }
 
-// Issue #14: a 1 KB file with zero points whose POINT:FRAMES (float) claims 10^8 frames made the
+// A 1 KB file with zero points whose POINT:FRAMES (float) claims 10^8 frames made the
 // reader allocate gigabytes; huge analog counts overflowed int. Both are now refused by size.
 std::vector<std::uint8_t> hostile_file(int points, float frames, float analog_rate) {
   Bytes x;

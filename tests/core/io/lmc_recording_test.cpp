@@ -214,7 +214,7 @@ TEST(LmcRecordingErrors, DeviceIdOutOfRange) {
   expect_error_at([&] { read_lmc_recording(path); }, path, 2, 1, "Device ID 9 is outside 1..8");
 }
 
-// Issue #14: 1e308 passed as a coordinate (and turned fused frames into NaN), inf was reported as
+// 1e308 passed as a coordinate (and turned fused frames into NaN), inf was reported as
 // "missing (NaN)", an INT64 timestamp overflowed the resampler. Each is refused with its value.
 std::string raw_text_with(const std::string& coordinate, const std::string& timestamp = "1000") {
   HandFrame f;

@@ -116,7 +116,7 @@ TEST(TrcErrors, NonNumericCell) {
   expect_error_at([&] { read_trc(path); }, path, 8, 23, "marker 'Tip' Y is not a number: '22x'");
 }
 
-// Issue #14: infinity was read as a gap and 1e308 as a position; both are refused with the value.
+// Infinity was read as a gap and 1e308 as a position; both are refused with the value.
 TEST(TrcErrors, InfiniteOrImplausibleCoordinateIsRefused) {
   const auto trc_with = [](const std::string& cell, const std::string& units) {
     return "PathFileType\t3\t(X/Y/Z)\th.trc\n"

@@ -179,7 +179,7 @@ TEST(Resample, ResampledRecordingRowsAreTheGrid) {
   EXPECT_NE(w2[0].find("no device saw the hand"), std::string::npos);
 }
 
-// Issue #14: one row whose timestamp jumps by 10^4 s made a 10 s recording ask for a grid of
+// One row whose timestamp jumps by 10^4 s made a 10 s recording ask for a grid of
 // several GB; the resampler refuses it, naming the file and the line of the jump.
 TEST(ResampleLimits, TimestampJumpIsRefusedWithFileAndLine) {
   LmcRecording rec;
