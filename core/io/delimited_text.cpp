@@ -196,52 +196,8 @@ bool is_blank(std::string_view s) {
   return trim(s).empty();
 }
 
-namespace {
-
-// Plain decimals ("-66.71016208025884", "250") of at most 19 digits, whose digits as an integer m
-// fit in a double's 53 bits and whose point sits at most 22 places from the end: m and 10^k are
-// then both exact doubles, so one IEEE division or multiplication gives the correctly rounded
-// value, the same bits std::from_chars gives (Clinger's fast path). Recordings hold millions of
-// such numbers; anything else (exponents, nan, longer digits) returns nullopt and goes the general
-// way.
-std::optional<double> parse_plain_decimal(std::string_view s) {
-  static constexpr double kPow10[] = {1e0,  1e1,  1e2,  1e3,  1e4,  1e5,  1e6,  1e7,  1e8,  1e9,  1e10, 1e11,
-                                      1e12, 1e13, 1e14, 1e15, 1e16, 1e17, 1e18, 1e19, 1e20, 1e21, 1e22};
-  size_t i = 0;
-  const bool negative = !s.empty() && s[0] == '-';
-  if (negative) ++i;
-  std::uint64_t m = 0;
-  int digits = 0;
-  int before_point = 0;
-  while (i < s.size() && s[i] >= '0' && s[i] <= '9') {
-    m = m * 10 + static_cast<std::uint64_t>(s[i] - '0');
-    ++digits;
-    ++before_point;
-    ++i;
-  }
-  if (before_point == 0 || digits > 19) return std::nullopt;
-  int after_point = 0;
-  if (i < s.size() && s[i] == '.') {
-    ++i;
-    while (i < s.size() && s[i] >= '0' && s[i] <= '9' && digits < 19) {
-      m = m * 10 + static_cast<std::uint64_t>(s[i] - '0');
-      ++digits;
-      ++after_point;
-      ++i;
-    }
-    if (after_point == 0) return std::nullopt;
-  }
-  constexpr std::uint64_t kExact = std::uint64_t{1} << 53;
-  if (i != s.size() || m > kExact || after_point > 22) return std::nullopt;
-  const double v = static_cast<double>(m) / kPow10[after_point];
-  return negative ? -v : v;
-}
-
-}  // namespace
-
 std::optional<double> parse_double(std::string_view s) {
   s = trim(s);
-  if (const auto plain = parse_plain_decimal(s)) return plain;
   // from_chars rejects a leading '+'; accept exactly one before a digit or '.'.
   if (s.size() > 1 && s.front() == '+' && s[1] != '-' && s[1] != '+') s.remove_prefix(1);
   if (s.empty()) return std::nullopt;
