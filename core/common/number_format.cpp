@@ -1,24 +1,91 @@
 #include "core/common/number_format.h"
 
+#include <bit>
 #include <charconv>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 
 namespace lmc {
 
-std::string format_fixed(double v, int decimals) {
-  if (std::isnan(v)) return "nan";
-  if (std::isinf(v)) return v > 0 ? "inf" : "-inf";
+namespace {
+
+// "%.*f" by integer arithmetic for up to 9 decimals and values below ~9e18 / 10^decimals: v is
+// m · 2^e exactly, so v · 10^d is m · 10^d · 2^e, a 128-bit integer shifted, and the discarded bits
+// say exactly whether the value lies below, on or above the halfway point — printf's rule (round
+// the binary value, ties to even) with no floating-point step to blur it. About a fifth of what
+// the general formatter costs; false hands a value it does not cover to the general way.
+bool append_fixed_by_integers(std::string& out, double v, int decimals) {
+  static constexpr std::uint64_t kPow10[] = {1, 10, 100, 1000, 10000, 100000, 1000000, 10000000, 100000000, 1000000000};
+  if (decimals < 0 || decimals > 9) return false;
+  const auto bits = std::bit_cast<std::uint64_t>(v);
+  const bool negative = (bits >> 63) != 0;
+  const int biased = static_cast<int>((bits >> 52) & 0x7ff);
+  const std::uint64_t fraction = bits & ((std::uint64_t{1} << 52) - 1);
+  if (biased == 0x7ff) return false;
+  const std::uint64_t m = biased == 0 ? fraction : (fraction | (std::uint64_t{1} << 52));
+  const int e = biased == 0 ? -1074 : biased - 1075;
+  __extension__ typedef unsigned __int128 u128;                 // GCC and Clang; -Wpedantic needs the marker
+  const u128 scaled = static_cast<u128>(m) * kPow10[decimals];  // < 2^83
+  u128 n = 0;
+  if (e >= 0) {
+    if (e > 40) return false;
+    n = scaled << e;
+  } else if (-e < 128) {
+    const int shift = -e;
+    n = scaled >> shift;
+    const u128 rest = scaled & ((u128{1} << shift) - 1);
+    const u128 half = u128{1} << (shift - 1);
+    if (rest > half || (rest == half && (n & 1) != 0)) ++n;
+  }  // else: below half a unit of the last decimal, n stays 0
+  if ((n >> 63) != 0) return false;
+  const auto whole = static_cast<std::uint64_t>(n);
+  if (negative) out += '-';
+  char buf[24];
+  const std::uint64_t unit = kPow10[decimals];
+  const auto [end, ec] = std::to_chars(buf, buf + sizeof buf, whole / unit);
+  out.append(buf, end);
+  if (decimals > 0) {
+    std::uint64_t rest = whole % unit;
+    char digits[9];
+    for (int k = decimals - 1; k >= 0; --k, rest /= 10) digits[k] = static_cast<char>('0' + rest % 10);
+    out += '.';
+    out.append(digits, static_cast<size_t>(decimals));
+  }
+  return true;
+}
+
+}  // namespace
+
+void append_fixed(std::string& out, double v, int decimals) {
+  if (std::isnan(v)) {
+    out += "nan";
+    return;
+  }
+  if (std::isinf(v)) {
+    out += v > 0 ? "inf" : "-inf";
+    return;
+  }
+  if (append_fixed_by_integers(out, v, decimals)) return;
   // std::to_chars with a precision writes exactly what printf's "%.*f" writes (both round the
-  // exact binary value), several times faster: the processing outputs write millions of numbers.
-  // A value or precision too long for the buffer (1e300 with 4 decimals) goes the slow way whole.
+  // exact binary value), several times faster than printf. A value or precision too long for the
+  // buffer (1e300 with 4 decimals) goes the slow way whole.
   char buf[128];
   const auto [end, ec] = std::to_chars(buf, buf + sizeof buf, v, std::chars_format::fixed, decimals);
-  if (ec == std::errc()) return std::string(buf, end);
+  if (ec == std::errc()) {
+    out.append(buf, end);
+    return;
+  }
   const int n = std::snprintf(nullptr, 0, "%.*f", decimals, v);
-  std::string out(static_cast<size_t>(n) + 1, '\0');
-  std::snprintf(out.data(), out.size(), "%.*f", decimals, v);
-  out.resize(static_cast<size_t>(n));
+  const size_t at = out.size();
+  out.resize(at + static_cast<size_t>(n) + 1);
+  std::snprintf(out.data() + at, static_cast<size_t>(n) + 1, "%.*f", decimals, v);
+  out.resize(at + static_cast<size_t>(n));
+}
+
+std::string format_fixed(double v, int decimals) {
+  std::string out;
+  append_fixed(out, v, decimals);
   return out;
 }
 

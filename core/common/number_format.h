@@ -7,6 +7,8 @@ namespace lmc {
 
 // Python-style "%f"/"%.2f": NaN → "nan", ±inf → "inf"/"-inf".
 std::string format_fixed(double v, int decimals);
+// The same characters appended to `out` (no string of its own: tables of millions of numbers).
+void append_fixed(std::string& out, double v, int decimals);
 
 // A number for a person to read (tables, plot labels, the workbench): fixed-point like
 // format_fixed, with a leading "+" on positive values when `plus_sign` (a difference), and never

@@ -48,6 +48,21 @@ TEST(NumberFormat, FixedWritesWhatPrintfWrites) {
   // Halfway cases: printf rounds the exact binary value, so 0.125 → "0.12" and 2.675 → "2.67".
   for (const double v : {0.125, 0.375, 2.5, 3.5, -0.5, 2.675, 1.005, 1e15 + 0.5, 0.0, -0.0})
     for (int d = 0; d <= 3; ++d) EXPECT_EQ(format_fixed(v, d), printf_fixed(v, d)) << v << " " << d;
+  // Every binary exponent and every decimal count the integer path covers, and its edges: ties at
+  // each decimal, the largest values it takes and the first it hands on, subnormals, signed zeros.
+  std::uniform_int_distribution<int> any_exponent(-1074, 64);
+  for (int k = 0; k < 300'000; ++k) {
+    const double v = std::ldexp(mantissa(rng), any_exponent(rng));
+    const int d = digits(rng);
+    ASSERT_EQ(format_fixed(v, d), printf_fixed(v, d)) << "v = " << v << ", " << d << " decimals";
+  }
+  for (int d = 0; d <= 9; ++d) {
+    const double unit = std::pow(10.0, -d);
+    for (const double v : {0.5 * unit, 1.5 * unit, 2.5 * unit, -0.5 * unit, 9.2e18 / std::pow(10.0, d),
+                           9.3e18 / std::pow(10.0, d), 1e19, 4.9e-324, -4.9e-324, 2.2250738585072014e-308, -0.0, 0.0,
+                           0.99999999995, 9.99999999995, -9.99999999995, 123456.78905, 0.00005})
+      EXPECT_EQ(format_fixed(v, d), printf_fixed(v, d)) << v << " " << d;
+  }
   // Longer than the fast path's buffer: written whole, never cut.
   EXPECT_EQ(format_fixed(1e300, 4), printf_fixed(1e300, 4));
   EXPECT_EQ(format_fixed(-std::numeric_limits<double>::max(), 2), printf_fixed(-std::numeric_limits<double>::max(), 2));
