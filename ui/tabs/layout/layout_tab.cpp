@@ -265,6 +265,17 @@ int LayoutTab::prepare_for_capture() {
   return 4;
 }
 
+void LayoutTab::prepare_extra_capture(const std::string& name) {
+  if (name != "layout-mixed-rig") return;
+  const char* models[] = {"lmc", "lmc", "lmc2", "lmc2"};
+  for (int i = 0; i < state_->layout().device_count() && i < 4; ++i) {
+    state_->report(set_device_model(state_->upd_history(), i, models[i]), "Model");
+  }
+  state_->select(2);
+  show_panel("inspector");
+  inspector_->show_model_once();
+}
+
 bool LayoutTab::busy_for_capture() const {
   return state_->busy() || (stats_frames_wanted_ > 0 && stats_frame_ < stats_frames_wanted_);
 }

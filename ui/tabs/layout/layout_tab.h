@@ -51,6 +51,10 @@ class LayoutTab final : public Tab {
   std::optional<std::filesystem::path> document_path() const override;
   int prepare_for_capture() override;
   bool busy_for_capture() const override;
+  // "layout-mixed-rig": the same layout as two Leap Motion Controllers and two LMC2s, the first
+  // LMC2 selected with its model in the Inspector.
+  std::vector<std::string> extra_captures() const override { return {"layout-mixed-rig"}; }
+  void prepare_extra_capture(const std::string& name) override;
 
   LayoutTabState& state() { return *state_; }
   ScenePanel& scene_panel() { return *scene_; }
