@@ -103,6 +103,8 @@ class LayoutTab final : public Tab {
   int capture_panel_frames_ = 0;
   // LMC_LAYOUT_CANCEL_AFTER=S: when to cancel the search LMC_LAYOUT_OPTIMISE started.
   std::optional<std::chrono::steady_clock::time_point> capture_cancel_at_;
+  // Undo steps the "layout-mixed-rig" capture added, taken back when another tab is shown.
+  int mixed_rig_capture_steps_ = 0;
 
   StatusSink& status_;
   CurrentLayout* shared_layout_ = nullptr;
