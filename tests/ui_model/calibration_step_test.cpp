@@ -88,10 +88,10 @@ TEST(CalibrationGhosts, CurrentControllersAreGhostsAndCalibratedOnesSolidWithALi
     const auto face = lmc::ui::box_top_face(it);
     EXPECT_NEAR((face[1] - face[0]).norm(), 80.0, 1e-9);
     EXPECT_NEAR((face[2] - face[1]).norm(), 30.0, 1e-9);
-    // Every box edge is one of the controller's three dimensions (80 × 13 × 30 mm).
+    // Every box edge is one of the case's three dimensions (the study's model: 80 × 11.3 × 30 mm).
     for (const auto& e : lmc::ui::box_edges(it)) {
       const double len = (e[1] - e[0]).norm();
-      EXPECT_TRUE(std::abs(len - 80) < 1e-9 || std::abs(len - 13) < 1e-9 || std::abs(len - 30) < 1e-9) << len;
+      EXPECT_TRUE(std::abs(len - 80) < 1e-9 || std::abs(len - 11.3) < 1e-9 || std::abs(len - 30) < 1e-9) << len;
     }
   }
   // A slot the calibrated layout lacks keeps only its ghost.

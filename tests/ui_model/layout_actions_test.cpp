@@ -4,6 +4,8 @@
 
 #include <cmath>
 
+#include "core/io/sensor_catalogue_json.h"
+
 namespace lmc::ui {
 namespace layout_actions_test {
 
@@ -178,6 +180,87 @@ TEST(UndoRedo, HeadIdReturnsAfterUndoRedoAndCommitClearsRedo) {
   EXPECT_FALSE(u.can_redo());
   EXPECT_EQ(u.head(), 2);
   EXPECT_FALSE(u.commit("nothing changed"));
+}
+
+// ---- each controller's model and sensor -------------------------------------------------------
+
+TEST(LayoutActions, SetDeviceModelChangesThatControllerOnlyAndNamesTheModel) {
+  auto doc = paper_square();
+  const LayoutDocument before = doc.head();
+  ASSERT_TRUE(set_device_model(doc, 1, "lmc2"));
+  const LayoutDevice& d = doc.head().layout.devices[1];
+  EXPECT_EQ(d.model, "lmc2");
+  EXPECT_DOUBLE_EQ(d.sensor.range_mm, 1100.0);
+  EXPECT_DOUBLE_EQ(d.sensor.range_near_mm, 100.0);
+  EXPECT_DOUBLE_EQ(d.sensor.fov_long_deg, 160.0);
+  EXPECT_DOUBLE_EQ(d.sensor.fov_short_deg, 160.0);
+  EXPECT_DOUBLE_EQ(d.sensor.axis_cut_mm, 666.0);
+  EXPECT_DOUBLE_EQ(d.footprint_mm.x(), 84.0);
+  EXPECT_DOUBLE_EQ(d.footprint_mm.y(), 20.0);
+  for (int i : {0, 2, 3})
+    EXPECT_EQ(doc.head().layout.devices[static_cast<size_t>(i)], before.layout.devices[static_cast<size_t>(i)]);
+  EXPECT_EQ(doc.undo_message(), "Model of LMC2: Leap Motion Controller 2");
+  EXPECT_EQ(doc.undo_size(), 1u);
+  ASSERT_TRUE(set_device_model(doc, 1, "lmc2"));
+  EXPECT_EQ(doc.undo_size(), 1u) << "the model it already is: no step";
+  const ActionResult bad = set_device_model(doc, 1, "lmc9");
+  EXPECT_FALSE(bad.ok);
+  EXPECT_NE(bad.error.find("'lmc9'"), std::string::npos) << bad.error;
+  EXPECT_NE(bad.error.find("lmc2"), std::string::npos) << "names the known models: " << bad.error;
+}
+
+TEST(LayoutActions, ASensorEditIsNamedForWhatChangedAndResetDropsTheOverride) {
+  auto doc = paper_square();
+  ASSERT_TRUE(set_device_model(doc, 2, "lmc"));
+  SensorModel s = doc.head().layout.devices[2].sensor;
+  s.range_mm = 450;
+  for (double near : {105.0, 110.0, 120.0}) {
+    SensorModel preview = s;
+    preview.range_near_mm = near;
+    ASSERT_TRUE(preview_device_sensor(doc, 2, preview));
+  }
+  EXPECT_DOUBLE_EQ(doc.head().layout.devices[2].sensor.range_near_mm, 100.0) << "previews leave the head alone";
+  ASSERT_TRUE(set_device_sensor(doc, 2, s));
+  EXPECT_EQ(doc.undo_message(), "Range of LMC3");
+  EXPECT_DOUBLE_EQ(doc.head().layout.devices[2].sensor.range_mm, 450.0);
+  EXPECT_DOUBLE_EQ(doc.head().layout.devices[2].sensor.range_near_mm, 100.0);
+  EXPECT_EQ(doc.head().layout.devices[2].model, "lmc") << "an override keeps the model";
+  s.fov_short_deg = 100;
+  ASSERT_TRUE(set_device_sensor(doc, 2, s));
+  EXPECT_EQ(doc.undo_message(), "Field of view of LMC3");
+  s.range_near_mm = 50;
+  s.axis_cut_mm = 300;
+  ASSERT_TRUE(set_device_sensor(doc, 2, s));
+  EXPECT_EQ(doc.undo_message(), "Sensor of LMC3");
+  const size_t steps = doc.undo_size();
+  ASSERT_TRUE(set_device_sensor(doc, 2, s));
+  EXPECT_EQ(doc.undo_size(), steps) << "no change, no step";
+  s.range_mm = -5;
+  EXPECT_FALSE(set_device_sensor(doc, 2, s).ok) << "a negative range is refused";
+  EXPECT_EQ(doc.undo_size(), steps);
+
+  ASSERT_TRUE(reset_device_sensor(doc, 2));
+  EXPECT_EQ(doc.undo_message(), "Reset LMC3 to its model");
+  EXPECT_EQ(doc.head().layout.devices[2].sensor, sensor_catalogue().at("lmc", "test").sensor);
+  doc.undo();
+  EXPECT_DOUBLE_EQ(doc.head().layout.devices[2].sensor.axis_cut_mm, 300.0);
+}
+
+TEST(LayoutActions, EveryControllerTakesOneModelInOneStep) {
+  auto doc = paper_square();
+  ASSERT_TRUE(set_device_model(doc, 0, "lmc"));
+  SensorModel s = doc.head().layout.devices[0].sensor;
+  s.range_mm = 500;
+  ASSERT_TRUE(set_device_sensor(doc, 0, s));
+  const size_t steps = doc.undo_size();
+  ASSERT_TRUE(set_every_device_model(doc, "lmc2"));
+  EXPECT_EQ(doc.undo_size(), steps + 1);
+  EXPECT_EQ(doc.undo_message(), "Model of every controller: Leap Motion Controller 2");
+  for (const LayoutDevice& d : doc.head().layout.devices) {
+    EXPECT_EQ(d.model, "lmc2");
+    EXPECT_DOUBLE_EQ(d.sensor.range_mm, 1100.0) << d.slot << ": overrides dropped";
+  }
+  EXPECT_FALSE(set_every_device_model(doc, "nope").ok);
 }
 
 }  // namespace layout_actions_test

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <vector>
 
 #include "core/io/sensor_catalogue_json.h"
 
@@ -183,29 +184,85 @@ ActionResult set_pose_set_choice(UndoableLayoutDocument& doc, const PoseSetChoic
   return ActionResult::success();
 }
 
-ActionResult set_sensor_model(UndoableLayoutDocument& doc, const SensorModel& sensor) {
-  doc.rollback();
-  set_all_sensors(doc.upd_scratch().layout, sensor);
-  return commit_checked(doc, "Change sensor model");
+namespace {
+
+// The undo label of a sensor edit: the one thing that changed, or "Sensor" for several.
+std::string sensor_change_name(const SensorModel& before, const SensorModel& after) {
+  std::vector<std::string> changed;
+  if (before.range_mm != after.range_mm) changed.emplace_back("Range");
+  if (before.range_near_mm != after.range_near_mm) changed.emplace_back("Near range");
+  if (before.fov_long_deg != after.fov_long_deg || before.fov_short_deg != after.fov_short_deg)
+    changed.emplace_back("Field of view");
+  if (before.axis_cut_mm != after.axis_cut_mm) changed.emplace_back("Axis cut");
+  return changed.size() == 1 ? changed.front() : "Sensor";
 }
+
+const SensorSpec* catalogue_model(const std::string& model_id) {
+  return sensor_catalogue().find(model_id);
+}
+
+ActionResult unknown_model_error(const std::string& model_id) {
+  return ActionResult::fail("unknown sensor model '" + model_id + "' (known: " + sensor_catalogue().known_ids() + ")");
+}
+
+}  // namespace
 
 ActionResult set_device_model(UndoableLayoutDocument& doc, int index, const std::string& model_id) {
   doc.rollback();
   if (!valid_index(doc, index)) return bad_index(index);
-  const SensorSpec* spec = sensor_catalogue().find(model_id);
-  if (!spec) {
-    return ActionResult::fail("unknown sensor model '" + model_id + "' (known: " + sensor_catalogue().known_ids() +
-                              ")");
+  const SensorSpec* spec = catalogue_model(model_id);
+  if (!spec) return unknown_model_error(model_id);
+  LayoutDevice& dev = doc.upd_scratch().layout.devices[static_cast<size_t>(index)];
+  const LayoutDevice was = dev;
+  lmc::set_device_model(dev, *spec);
+  if (dev == was) {
+    doc.rollback();
+    return ActionResult::success();
   }
-  lmc::set_device_model(doc.upd_scratch().layout.devices[static_cast<size_t>(index)], *spec);
-  return commit_checked(doc, slot_of(doc, index) + " is a " + spec->name);
+  return commit_checked(doc, "Model of " + slot_of(doc, index) + ": " + spec->name);
+}
+
+ActionResult set_every_device_model(UndoableLayoutDocument& doc, const std::string& model_id) {
+  doc.rollback();
+  const SensorSpec* spec = catalogue_model(model_id);
+  if (!spec) return unknown_model_error(model_id);
+  const Layout was = doc.scratch().layout;
+  set_all_models(doc.upd_scratch().layout, *spec);
+  if (doc.scratch().layout == was) {
+    doc.rollback();
+    return ActionResult::success();
+  }
+  return commit_checked(doc, "Model of every controller: " + spec->name);
+}
+
+ActionResult preview_device_sensor(UndoableLayoutDocument& doc, int index, const SensorModel& sensor) {
+  if (!valid_index(doc, index)) return bad_index(index);
+  doc.upd_scratch().layout.devices[static_cast<size_t>(index)].sensor = sensor;
+  return ActionResult::success();
 }
 
 ActionResult set_device_sensor(UndoableLayoutDocument& doc, int index, const SensorModel& sensor) {
   doc.rollback();
   if (!valid_index(doc, index)) return bad_index(index);
-  doc.upd_scratch().layout.devices[static_cast<size_t>(index)].sensor = sensor;
-  return commit_checked(doc, "Change " + slot_of(doc, index) + "'s sensor model");
+  SensorModel& current = doc.upd_scratch().layout.devices[static_cast<size_t>(index)].sensor;
+  const SensorModel before = current;
+  if (before == sensor) {
+    doc.rollback();
+    return ActionResult::success();
+  }
+  current = sensor;
+  return commit_checked(doc, sensor_change_name(before, sensor) + " of " + slot_of(doc, index));
+}
+
+ActionResult reset_device_sensor(UndoableLayoutDocument& doc, int index) {
+  doc.rollback();
+  if (!valid_index(doc, index)) return bad_index(index);
+  const LayoutDevice& dev = doc.scratch().layout.devices[static_cast<size_t>(index)];
+  const SensorSpec* spec = catalogue_model(dev.model);
+  if (!spec) return unknown_model_error(dev.model);
+  if (dev.sensor == spec->sensor) return ActionResult::success();
+  doc.upd_scratch().layout.devices[static_cast<size_t>(index)].sensor = spec->sensor;
+  return commit_checked(doc, "Reset " + slot_of(doc, index) + " to its model");
 }
 
 ActionResult replace_layout(UndoableLayoutDocument& doc, const Layout& layout, const std::string& what) {

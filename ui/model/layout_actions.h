@@ -47,20 +47,31 @@ bool commit_device_pose(UndoableLayoutDocument& doc, int index, const std::strin
 // Escape during a drag: throw the scratch edits away.
 void cancel_preview(UndoableLayoutDocument& doc);
 
-// ---- locks, bounds, pose set, sensor -----------------------------------------------------------
+// ---- locks, bounds, pose set -------------------------------------------------------------------
 ActionResult set_device_lock(UndoableLayoutDocument& doc, int index, int k, bool locked);
 // All six locks of one device in one step: `movable` frees the study's {x, z, rx, ry} (y and rz
 // stay locked), otherwise everything is locked ("LMC2 may move" / "LMC2 stays put").
 ActionResult set_device_movable(UndoableLayoutDocument& doc, int index, bool movable);
 ActionResult set_search_range(UndoableLayoutDocument& doc, int k, double lo, double hi);
 ActionResult set_pose_set_choice(UndoableLayoutDocument& doc, const PoseSetChoice& choice);
-// Every device's sensor (their model ids stay; the values become overrides where they differ).
-ActionResult set_sensor_model(UndoableLayoutDocument& doc, const SensorModel& sensor);
-// One controller becomes a catalogue model (sensor_catalogue()), its overrides dropped: "LMC3 is a
-// Leap Motion Controller 2".
+
+// ---- each controller's model and sensor ----------------------------------------------------------
+// One controller becomes a catalogue model (sensor_catalogue()), its overrides dropped and its case
+// the model's: "Model of LMC3: Leap Motion Controller 2". Picking the model it already is, without
+// overrides, changes nothing and adds no undo step.
 ActionResult set_device_model(UndoableLayoutDocument& doc, int index, const std::string& model_id);
-// One controller's sensor values (overrides of its model where they differ from the catalogue's).
+// Every controller becomes that model, in one undo step ("Model of every controller: …").
+ActionResult set_every_device_model(UndoableLayoutDocument& doc, const std::string& model_id);
+// A drag on one of a controller's sensor fields: the values go into the scratch copy every frame
+// without a commit, so the pyramid follows live ...
+ActionResult preview_device_sensor(UndoableLayoutDocument& doc, int index, const SensorModel& sensor);
+// ... and one commit on release: one controller's sensor values, which become overrides of its
+// model where they differ from the catalogue's. The undo step names what changed ("Range of
+// LMC3", "Near range of LMC3", "Field of view of LMC3", "Axis cut of LMC3", "Sensor of LMC3" for
+// several at once); no change adds no step.
 ActionResult set_device_sensor(UndoableLayoutDocument& doc, int index, const SensorModel& sensor);
+// Drops a controller's overrides: its sensor becomes its model's again ("Reset LMC3 to its model").
+ActionResult reset_device_sensor(UndoableLayoutDocument& doc, int index);
 
 // ---- whole layouts ----------------------------------------------------------------------------
 // Replaces the layout (keeps locks where slots survive). `what` names it in the undo label:

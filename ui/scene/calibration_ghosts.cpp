@@ -1,5 +1,6 @@
 #include "ui/scene/calibration_ghosts.h"
 
+#include "ui/scene/device_case.h"
 #include "ui/scene/drag_controller.h"
 
 namespace lmc::ui {
@@ -18,8 +19,9 @@ SceneItem device_box(const LayoutDevice& d, ItemRole role, int id, Rgba colour, 
   box.kind = ItemKind::kBox;
   box.role = role;
   box.transform = device_transform(d);
-  box.a = kDeviceBoxCentreMm;
-  box.b = kDeviceBoxHalfMm;
+  const DeviceCaseBox case_box = device_case_box(d);
+  box.a = case_box.centre_mm;
+  box.b = case_box.half_mm;
   box.colour = colour;
   box.id = id;
   box.flags = flags;

@@ -5,6 +5,8 @@
 #include <limits>
 #include <numbers>
 
+#include "ui/scene/device_case.h"
+
 namespace lmc::ui {
 namespace {
 
@@ -103,7 +105,8 @@ HandleHit hover_handle(const LayoutDevice& device, const DeviceLocks& locks, con
     const Ray ray = camera.ray_through_pixel(px, py, w, h);
     Eigen::Isometry3d to_world = device.pose.device_to_world();
     to_world.translation() += device.offset_mm;
-    if (const auto t = intersect_oriented_box(ray, to_world, kDeviceBoxCentreMm, kDeviceBoxHalfMm)) {
+    const DeviceCaseBox case_box = device_case_box(device);
+    if (const auto t = intersect_oriented_box(ray, to_world, case_box.centre_mm, case_box.half_mm)) {
       if (*t < best_depth) best = {HandleKind::kMove, *t};
     }
   }

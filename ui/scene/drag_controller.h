@@ -23,16 +23,12 @@ namespace lmc::ui {
 
 enum class HandleKind : int { kNone = 0, kMove, kYaw, kTilt };
 
-// Ring sizes in millimetres: outside the 80 × 30 mm box so they are easy to grab.
+// Ring sizes in millimetres: outside every catalogue model's case (ui/scene/device_case.h; the
+// widest, an LMC2, is 84 mm long) so they are easy to grab.
 inline constexpr double kYawRingRadiusMm = 70.0;
 inline constexpr double kTiltRingRadiusMm = 48.0;
 // Hover tolerance in screen pixels, so handles stay easy to grab at any zoom.
 inline constexpr double kHandleTolerancePx = 9.0;
-
-// Controller body in device coordinates: 80 (x, long axis) × 13 (y, height) × 30 (z) mm with the
-// device origin at the top centre (docs/algorithms/frames.md), so the box hangs below the origin.
-inline const Eigen::Vector3d kDeviceBoxHalfMm{40.0, 6.5, 15.0};
-inline const Eigen::Vector3d kDeviceBoxCentreMm{0.0, -6.5, 0.0};
 
 // Points of a handle ring in world coordinates (closed: the first point is not repeated).
 std::vector<Eigen::Vector3d> handle_ring_points(HandleKind kind, const LayoutDevice& device, int segments = 48);

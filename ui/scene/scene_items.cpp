@@ -6,6 +6,7 @@
 #include <numbers>
 
 #include "core/common/angles.h"
+#include "ui/scene/device_case.h"
 
 namespace lmc::ui {
 namespace {
@@ -98,12 +99,14 @@ void add_device(SceneList& out, const SceneInputs& in, int i) {
     flags |= kFlagHovered;
     body = kHoveredColour;
   }
+  // The case of the device's own model (an LMC2 is longer and narrower than an LMC).
+  const DeviceCaseBox case_box = device_case_box(d);
   SceneItem box;
   box.kind = ItemKind::kBox;
   box.role = ItemRole::kDevice;
   box.transform = t;
-  box.a = kDeviceBoxCentreMm;
-  box.b = kDeviceBoxHalfMm;
+  box.a = case_box.centre_mm;
+  box.b = case_box.half_mm;
   box.colour = body;
   box.id = i;
   box.flags = flags;
@@ -112,16 +115,16 @@ void add_device(SceneList& out, const SceneInputs& in, int i) {
   // (device frame) - an assumption to be checked against the lab's own controllers.
   SceneItem usb = box;
   usb.role = ItemRole::kDeviceUsbMarker;
-  usb.a = Eigen::Vector3d(-kDeviceBoxHalfMm.x() - 4.0, -6.5, 0.0);
-  usb.b = Eigen::Vector3d(4.0, 3.5, 6.0);
+  usb.a = Eigen::Vector3d(-case_box.half_mm.x() - 4.0, case_box.centre_mm.y(), 0.0);
+  usb.b = Eigen::Vector3d(4.0, std::min(3.5, case_box.half_mm.y()), std::min(6.0, case_box.half_mm.z()));
   usb.colour = kUsbColour;
   out.items.push_back(usb);
   // The green status LED side faces the user (+z): a thin strip on the top face's +z edge helps
   // read the orientation from above.
   SceneItem front = box;
   front.role = ItemRole::kDeviceUsbMarker;
-  front.a = Eigen::Vector3d(0.0, 0.3, kDeviceBoxHalfMm.z() - 3.0);
-  front.b = Eigen::Vector3d(30.0, 0.5, 2.5);
+  front.a = Eigen::Vector3d(0.0, case_box.top_y_mm() + 0.3, case_box.half_mm.z() - 3.0);
+  front.b = Eigen::Vector3d(std::min(30.0, case_box.half_mm.x() - 5.0), 0.5, 2.5);
   front.colour = {0.30f, 0.90f, 0.40f, 1.0f};
   out.items.push_back(front);
 
@@ -145,6 +148,14 @@ void add_device(SceneList& out, const SceneInputs& in, int i) {
       add_segment(out, ItemRole::kPyramid, apex, c[static_cast<size_t>(k)], edge, i, kFlagTranslucent);
       add_segment(out, ItemRole::kPyramid, c[static_cast<size_t>(k)], c[static_cast<size_t>((k + 1) % 4)], edge, i,
                   kFlagTranslucent);
+    }
+    // The near range as an outline: nothing closer than it is tracked (10 cm on the LMC and LMC2).
+    if (sensor.range_near_mm > 0) {
+      const auto n = pyramid_corners(t, sensor.range_near_mm, pyr.b.x(), pyr.b.y());
+      for (int k = 0; k < 4; ++k) {
+        add_segment(out, ItemRole::kPyramid, n[static_cast<size_t>(k)], n[static_cast<size_t>((k + 1) % 4)], edge, i,
+                    kFlagTranslucent);
+      }
     }
   }
   std::string text = d.slot;
@@ -315,8 +326,9 @@ SceneList build_scene(const SceneInputs& in) {
       g.kind = ItemKind::kBox;
       g.role = ItemRole::kGhost;
       g.transform = device_transform(d);
-      g.a = kDeviceBoxCentreMm;
-      g.b = kDeviceBoxHalfMm;
+      const DeviceCaseBox ghost_case = device_case_box(d);
+      g.a = ghost_case.centre_mm;
+      g.b = ghost_case.half_mm;
       g.colour = kGhostColour;
       g.id = i;
       g.flags = kFlagGhost | kFlagTranslucent;

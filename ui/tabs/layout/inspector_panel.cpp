@@ -4,6 +4,8 @@
 
 #include <cstdio>
 
+#include "core/io/sensor_catalogue_json.h"
+
 namespace lmc::ui {
 
 void InspectorPanel::draw() {
@@ -16,9 +18,15 @@ void InspectorPanel::draw() {
   for (int i = 0; i < l.device_count(); ++i) {
     const LayoutDevice& d = l.devices[static_cast<size_t>(i)];
     char label[160];
-    std::snprintf(label, sizeof label, "%-6s %-10s x %7.1f  z %7.1f  rx %6.1f  ry %6.1f##dev%d", d.slot.c_str(),
-                  d.serial ? d.serial->c_str() : "", d.pose.x_mm, d.pose.z_mm, d.pose.rx_deg, d.pose.ry_deg, i);
+    std::snprintf(label, sizeof label, "%-5s %-5s %-9s x %5.0f z %5.0f rx %5.1f ry %6.1f##dev%d", d.slot.c_str(),
+                  d.model.c_str(), d.serial ? d.serial->c_str() : "", d.pose.x_mm, d.pose.z_mm, d.pose.rx_deg,
+                  d.pose.ry_deg, i);
     if (ImGui::Selectable(label, s.selected == i)) s.select(i);
+    anchors_.remember("device." + std::to_string(i));
+    if (ImGui::IsItemHovered()) {
+      const SensorSpec* spec = sensor_catalogue().find(d.model);
+      ImGui::SetTooltip("%s: %s", d.slot.c_str(), spec ? spec->name.c_str() : d.model.c_str());
+    }
   }
   ImGui::EndChild();
   ImGui::BeginDisabled(l.device_count() >= kMaxDevices);
@@ -36,11 +44,11 @@ void InspectorPanel::draw() {
   ImGui::Separator();
   if (s.selected >= 0 && s.selected < s.doc().device_count()) {
     draw_device(s.selected);
+    ImGui::Separator();
+    draw_model_and_sensor(s.selected);
   } else {
     ImGui::TextDisabled("Select a controller in the scene or the list to edit it.");
   }
-  ImGui::Separator();
-  draw_sensor();
 }
 
 void InspectorPanel::draw_device(int index) {
@@ -112,32 +120,99 @@ void InspectorPanel::draw_device(int index) {
   ImGui::PopID();
 }
 
-void InspectorPanel::draw_sensor() {
+void InspectorPanel::draw_model_and_sensor(int index) {
   LayoutTabState& s = *state_;
-  // Edits every controller at once (their model ids stay, the values become overrides).
-  SensorModel sensor = s.layout().devices.front().sensor;
-  ImGui::TextDisabled("Sensor model (all controllers)");
-  bool changed = false;
-  ImGui::SetNextItemWidth(120);
-  changed |= ImGui::DragScalar("range", ImGuiDataType_Double, &sensor.range_mm, 2.0f, nullptr, nullptr, "%.0f mm");
-  const bool done_range = ImGui::IsItemDeactivatedAfterEdit();
-  ImGui::SameLine();
-  ImGui::SetNextItemWidth(90);
-  changed |= ImGui::DragScalar("long", ImGuiDataType_Double, &sensor.fov_long_deg, 0.5f, nullptr, nullptr, "%.0f°");
-  const bool done_long = ImGui::IsItemDeactivatedAfterEdit();
-  ImGui::SameLine();
-  ImGui::SetNextItemWidth(90);
-  changed |= ImGui::DragScalar("short", ImGuiDataType_Double, &sensor.fov_short_deg, 0.5f, nullptr, nullptr, "%.0f°");
-  const bool done_short = ImGui::IsItemDeactivatedAfterEdit();
-  if (changed) set_all_sensors(s.upd_history().upd_scratch().layout, sensor);
-  if (done_range || done_long || done_short) {
-    const SensorModel edited = s.doc().layout.devices.front().sensor;
-    s.report(set_sensor_model(s.upd_history(), edited), "Sensor model");
+  const std::string slot = s.layout().devices[static_cast<size_t>(index)].slot;
+  const std::string shown_model = s.layout().devices[static_cast<size_t>(index)].model;
+  const SensorSpec* shown_spec = sensor_catalogue().find(shown_model);
+  ImGui::PushID("model");
+  if (scroll_to_model_) {
+    ImGui::SetScrollHereY(0.0f);
+    scroll_to_model_ = false;
   }
+  // As wide as the panel allows beside its label: the study's model has a long name.
+  ImGui::SetNextItemWidth(-(ImGui::CalcTextSize("Model").x + ImGui::GetStyle().ItemInnerSpacing.x));
+  if (ImGui::BeginCombo("Model", shown_spec ? shown_spec->name.c_str() : shown_model.c_str())) {
+    for (const SensorSpec& m : sensor_catalogue().models) {
+      if (ImGui::Selectable(m.name.c_str(), m.id == shown_model)) {
+        s.report(set_device_model(s.upd_history(), index, m.id), "Model of " + slot);
+      }
+      anchors_.remember("model." + m.id);
+    }
+    ImGui::EndCombo();
+  }
+  anchors_.remember("model");
   if (ImGui::IsItemHovered()) {
     ImGui::SetTooltip(
-        "Study defaults: 600 mm, 150° × 120° (docs/algorithms/visibility.md)\nDrag to change; double-click to type");
+        "What %s is (assets/sensors/sensors.json): its field of view, ranges and case.\n"
+        "The values below are its model's; one you change overrides the model for %s only.",
+        slot.c_str(), slot.c_str());
   }
+
+  // Read again: the combo may just have changed the model. A value that differs from the model's
+  // is an override (what the layout file stores for this controller).
+  const LayoutDevice& d = s.layout().devices[static_cast<size_t>(index)];
+  const std::string model_id = d.model;  // kept: the actions below replace the devices `d` is in
+  const SensorSpec* spec = sensor_catalogue().find(model_id);
+  const SensorModel model_sensor = spec ? spec->sensor : d.sensor;
+  SensorModel sensor = d.sensor;
+  struct Field {
+    const char* key;  // anchor "sensor.<key>"
+    const char* label;
+    double* value;
+    double model_value;
+    const char* format;  // of the drag field
+    const char* unit;    // of the model's value beside an override
+    float speed;
+  };
+  const Field fields[] = {
+      {"fov_long", "Field of view along x", &sensor.fov_long_deg, model_sensor.fov_long_deg, "%.0f°", "°", 0.5f},
+      {"fov_short", "Field of view across (z)", &sensor.fov_short_deg, model_sensor.fov_short_deg, "%.0f°", "°", 0.5f},
+      {"range_near", "Near range", &sensor.range_near_mm, model_sensor.range_near_mm, "%.0f mm", " mm", 1.0f},
+      {"range", "Far range", &sensor.range_mm, model_sensor.range_mm, "%.0f mm", " mm", 2.0f},
+      {"axis_cut", "Axis cut", &sensor.axis_cut_mm, model_sensor.axis_cut_mm, "%.0f mm", " mm", 2.0f},
+  };
+  ImGui::TextDisabled("Sensor of %s (drag, or double-click to type)", slot.c_str());
+  bool changed = false, released = false;
+  for (const Field& f : fields) {
+    ImGui::PushID(f.key);
+    ImGui::SetNextItemWidth(110);
+    changed |= ImGui::DragScalar(f.label, ImGuiDataType_Double, f.value, f.speed, nullptr, nullptr, f.format);
+    released |= ImGui::IsItemDeactivatedAfterEdit();
+    anchors_.remember(std::string("sensor.") + f.key);
+    if (*f.value != f.model_value) {
+      char model_text[48];
+      std::snprintf(model_text, sizeof model_text, "%.0f%s", f.model_value, f.unit);
+      ImGui::SameLine();
+      ImGui::TextColored(ImVec4(1.0f, 0.70f, 0.30f, 1.0f), "overrides %s", model_text);
+      anchors_.remember(std::string("override.") + f.key);
+    }
+    ImGui::PopID();
+  }
+  if (changed) preview_device_sensor(s.upd_history(), index, sensor);
+  if (released) s.report(set_device_sensor(s.upd_history(), index, sensor), "Sensor of " + slot);
+
+  const bool overridden = spec != nullptr && !(sensor == spec->sensor);
+  ImGui::BeginDisabled(!overridden);
+  if (ImGui::Button("Reset to model")) s.report(reset_device_sensor(s.upd_history(), index), "Reset " + slot);
+  anchors_.remember("reset-sensor");
+  ImGui::EndDisabled();
+  ImGui::SameLine();
+  bool everyone_is_this = spec != nullptr;
+  for (const LayoutDevice& other : s.layout().devices) {
+    everyone_is_this = everyone_is_this && other.model == model_id && other.sensor == model_sensor;
+  }
+  ImGui::BeginDisabled(everyone_is_this);
+  if (ImGui::Button("Apply this model to all controllers")) {
+    s.report(set_every_device_model(s.upd_history(), model_id), "Model of every controller");
+  }
+  anchors_.remember("model-to-all");
+  ImGui::EndDisabled();
+  if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled)) {
+    ImGui::SetTooltip("Every controller becomes a %s, overrides dropped (one undo step)",
+                      spec ? spec->name.c_str() : model_id.c_str());
+  }
+  ImGui::PopID();
 }
 
 }  // namespace lmc::ui

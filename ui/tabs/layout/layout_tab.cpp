@@ -158,6 +158,11 @@ void LayoutTab::update(bool shown) {
     capture_cancel_at_.reset();
     state_->cancel_optimiser();
   }
+  // The mixed-rig capture's model changes are taken back once another tab is shown, so the tabs
+  // captured after it (Devices) see the layout they always saw.
+  if (!shown && mixed_rig_capture_steps_ > 0) {
+    for (; mixed_rig_capture_steps_ > 0; --mixed_rig_capture_steps_) state_->undo();
+  }
   state_->update(static_cast<double>(ImGui::GetIO().DeltaTime), shown);
   // The committed layout, not the scratch copy: a drag in progress would restart the rig every frame.
   if (shared_layout_ != nullptr) shared_layout_->publish(state_->history().head().layout);
@@ -263,6 +268,19 @@ int LayoutTab::prepare_for_capture() {
     stats_start_pose_ = state_->layout().devices[1].pose;
   }
   return 4;
+}
+
+void LayoutTab::prepare_extra_capture(const std::string& name) {
+  if (name != "layout-mixed-rig") return;
+  const char* models[] = {"lmc", "lmc", "lmc2", "lmc2"};
+  for (int i = 0; i < state_->layout().device_count() && i < 4; ++i) {
+    const size_t steps = state_->history().undo_size();
+    state_->report(set_device_model(state_->upd_history(), i, models[i]), "Model");
+    mixed_rig_capture_steps_ += static_cast<int>(state_->history().undo_size() - steps);
+  }
+  state_->select(2);
+  show_panel("inspector");
+  inspector_->show_model_once();
 }
 
 bool LayoutTab::busy_for_capture() const {

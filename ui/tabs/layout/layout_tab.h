@@ -51,6 +51,10 @@ class LayoutTab final : public Tab {
   std::optional<std::filesystem::path> document_path() const override;
   int prepare_for_capture() override;
   bool busy_for_capture() const override;
+  // "layout-mixed-rig": the same layout as two Leap Motion Controllers and two LMC2s, the first
+  // LMC2 selected with its model in the Inspector.
+  std::vector<std::string> extra_captures() const override { return {"layout-mixed-rig"}; }
+  void prepare_extra_capture(const std::string& name) override;
 
   LayoutTabState& state() { return *state_; }
   ScenePanel& scene_panel() { return *scene_; }
@@ -99,6 +103,8 @@ class LayoutTab final : public Tab {
   int capture_panel_frames_ = 0;
   // LMC_LAYOUT_CANCEL_AFTER=S: when to cancel the search LMC_LAYOUT_OPTIMISE started.
   std::optional<std::chrono::steady_clock::time_point> capture_cancel_at_;
+  // Undo steps the "layout-mixed-rig" capture added, taken back when another tab is shown.
+  int mixed_rig_capture_steps_ = 0;
 
   StatusSink& status_;
   CurrentLayout* shared_layout_ = nullptr;

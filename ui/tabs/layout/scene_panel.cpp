@@ -10,6 +10,7 @@
 
 #include "core/hand/hand_frame.h"
 #include "ui/scene/colour_maps.h"
+#include "ui/scene/device_case.h"
 #include "ui/scene/label_spreading.h"
 #include "ui/widgets/imgui_colour.h"
 
@@ -56,9 +57,10 @@ int ScenePanel::pick_device(const Ray& ray) const {
     const LayoutDevice& d = l.devices[static_cast<size_t>(i)];
     Eigen::Isometry3d t = d.pose.device_to_world();
     t.translation() += d.offset_mm;
-    // A slightly larger box than drawn: 13 mm is thin to hit from the side.
+    // A slightly larger box than drawn: a case 10-12 mm high is thin to hit from the side.
+    const DeviceCaseBox case_box = device_case_box(d);
     if (const auto hit =
-            intersect_oriented_box(ray, t, kDeviceBoxCentreMm, kDeviceBoxHalfMm + Eigen::Vector3d(4, 4, 4))) {
+            intersect_oriented_box(ray, t, case_box.centre_mm, case_box.half_mm + Eigen::Vector3d(4, 4, 4))) {
       if (*hit < best_t) {
         best_t = *hit;
         best = i;
