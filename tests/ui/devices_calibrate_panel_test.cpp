@@ -13,7 +13,7 @@
 #include "tests/support/reference_data.h"
 #include "tests/ui/headless_imgui.h"
 #include "ui/model/devices/devices_state.h"
-#include "ui/model/layout_actions.h"
+#include "ui/model/layout/layout_actions.h"
 #include "ui/model/workbench_context.h"
 #include "ui/tabs/devices/devices_calibrate_panel.h"
 #include "ui/tabs/tab.h"

@@ -11,7 +11,7 @@
 #include "core/io/sensor_catalogue_json.h"
 #include "tests/support/scratch_dir.h"
 #include "tests/ui/headless_imgui.h"
-#include "ui/model/layout_actions.h"
+#include "ui/model/layout/layout_actions.h"
 #include "ui/tabs/layout/inspector_panel.h"
 
 namespace lmc::ui {

@@ -11,7 +11,7 @@
 #include "core/visibility/blind_controllers.h"
 #include "tests/ui/headless_imgui.h"
 #include "ui/model/current_layout.h"
-#include "ui/model/layout_actions.h"
+#include "ui/model/layout/layout_actions.h"
 #include "ui/tabs/layout/coverage_panel.h"
 #include "ui/tabs/layout/inspector_panel.h"
 #include "ui/tabs/layout/layout_tab.h"

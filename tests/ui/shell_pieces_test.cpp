@@ -12,7 +12,7 @@
 #include "ui/app/help_window.h"
 #include "ui/app/tab_status_sink.h"
 #include "ui/app/workbench_shell.h"
-#include "ui/model/layout_actions.h"
+#include "ui/model/layout/layout_actions.h"
 #include "ui/tabs/layout/inspector_panel.h"
 #include "ui/tabs/layout/layout_tab.h"
 #include "ui/widgets/split_panels.h"

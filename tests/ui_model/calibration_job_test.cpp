@@ -11,7 +11,7 @@
 #include "devices/sim/sim_rig.h"
 #include "tests/support/reference_data.h"
 #include "ui/model/devices/calibration_job.h"
-#include "ui/model/layout_actions.h"
+#include "ui/model/layout/layout_actions.h"
 
 namespace calibration_job_test {
 

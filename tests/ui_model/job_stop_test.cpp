@@ -16,8 +16,8 @@
 #include "tests/support/reference_data.h"
 #include "tests/support/scratch_dir.h"
 #include "ui/model/devices/calibration_job.h"
-#include "ui/model/layout_report_job.h"
-#include "ui/model/pose_set_store.h"
+#include "ui/model/layout/layout_report_job.h"
+#include "ui/model/layout/pose_set_store.h"
 #include "ui/model/review/trial_view_job.h"
 
 namespace lmc::ui {

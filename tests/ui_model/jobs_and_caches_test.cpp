@@ -10,13 +10,13 @@
 
 #include "core/layout/layout.h"
 #include "tests/support/scratch_dir.h"
-#include "ui/model/coverage_cache.h"
-#include "ui/model/frame_visibility.h"
-#include "ui/model/heatmap_cache.h"
 #include "ui/model/jobs/background_job.h"
-#include "ui/model/layout_actions.h"
-#include "ui/model/layout_tab_state.h"
-#include "ui/model/pose_set_store.h"
+#include "ui/model/layout/coverage_cache.h"
+#include "ui/model/layout/frame_visibility.h"
+#include "ui/model/layout/heatmap_cache.h"
+#include "ui/model/layout/layout_actions.h"
+#include "ui/model/layout/layout_tab_state.h"
+#include "ui/model/layout/pose_set_store.h"
 
 namespace lmc::ui {
 namespace {

@@ -8,7 +8,7 @@
 
 #include "core/io/layout_json.h"
 #include "tests/support/reference_data.h"
-#include "ui/model/layout_report_job.h"
+#include "ui/model/layout/layout_report_job.h"
 
 namespace lmc::ui {
 namespace layout_report_job_test {  // named: test files share unity batches

@@ -3,7 +3,7 @@
 #include <gtest/gtest.h>
 
 #include "core/io/sensor_catalogue_json.h"
-#include "ui/model/layout_actions.h"
+#include "ui/model/layout/layout_actions.h"
 #include "ui/scene/device_case.h"
 #include "ui/scene/drag_controller.h"
 #include "ui/scene/scene_items.h"

@@ -2,7 +2,7 @@
 
 #include <limits>
 
-#include "ui/model/layout_actions.h"
+#include "ui/model/layout/layout_actions.h"
 #include "ui/scene/scene_items.h"
 
 namespace lmc::ui {

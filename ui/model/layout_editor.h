@@ -7,7 +7,7 @@
 #include <string>
 
 #include "core/layout/layout.h"
-#include "ui/model/layout_actions.h"
+#include "ui/model/layout/layout_actions.h"
 
 namespace lmc::ui {
 

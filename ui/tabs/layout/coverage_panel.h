@@ -5,7 +5,7 @@
 // a controller that moved, so the table follows a drag.
 #include <memory>
 
-#include "ui/model/layout_tab_state.h"
+#include "ui/model/layout/layout_tab_state.h"
 #include "ui/widgets/file_browser.h"
 
 namespace lmc::ui {

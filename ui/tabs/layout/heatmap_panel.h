@@ -4,7 +4,7 @@
 // controller sees), grid size and extent, fixed 0–100 % or data range, and the sweep's progress.
 #include <memory>
 
-#include "ui/model/layout_tab_state.h"
+#include "ui/model/layout/layout_tab_state.h"
 
 namespace lmc::ui {
 

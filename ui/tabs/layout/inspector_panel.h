@@ -8,7 +8,7 @@
 #include <memory>
 #include <string>
 
-#include "ui/model/layout_tab_state.h"
+#include "ui/model/layout/layout_tab_state.h"
 #include "ui/widgets/widget_anchors.h"
 
 namespace lmc::ui {

@@ -11,7 +11,7 @@
 #include <string>
 #include <vector>
 
-#include "ui/model/layout_tab_state.h"
+#include "ui/model/layout/layout_tab_state.h"
 #include "ui/scene/scene_renderer.h"
 #include "ui/tabs/tab.h"
 #include "ui/widgets/file_browser.h"

@@ -6,7 +6,7 @@
 // comparison table shows current vs candidate.
 #include <memory>
 
-#include "ui/model/layout_tab_state.h"
+#include "ui/model/layout/layout_tab_state.h"
 #include "ui/widgets/file_browser.h"
 #include "ui/widgets/series_plot.h"
 #include "ui/widgets/widget_anchors.h"

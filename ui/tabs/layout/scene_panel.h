@@ -10,7 +10,7 @@
 
 #include <imgui.h>
 
-#include "ui/model/layout_tab_state.h"
+#include "ui/model/layout/layout_tab_state.h"
 #include "ui/scene/drag_controller.h"
 #include "ui/scene/scene_renderer.h"
 

@@ -3,7 +3,7 @@
 // (horizontal / vertical) and motion (open, index, thumb, wrist flexion / extension).
 #include <memory>
 
-#include "ui/model/layout_tab_state.h"
+#include "ui/model/layout/layout_tab_state.h"
 
 namespace lmc::ui {
 

@@ -16,7 +16,7 @@
 #include "core/metric/coverage.h"
 #include "core/visibility/visibility_kernel.h"
 #include "ui/model/jobs/background_job.h"
-#include "ui/model/pose_set_store.h"
+#include "ui/model/layout/pose_set_store.h"
 
 namespace lmc::ui {
 

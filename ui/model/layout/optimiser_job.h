@@ -12,8 +12,8 @@
 #include "core/metric/coverage.h"
 #include "core/optimise/pso.h"
 #include "ui/model/jobs/background_job.h"
-#include "ui/model/layout_document.h"
-#include "ui/model/pose_set_store.h"
+#include "ui/model/layout/layout_document.h"
+#include "ui/model/layout/pose_set_store.h"
 
 namespace lmc::ui {
 

@@ -9,8 +9,8 @@
 #include <string>
 
 #include "core/layout/layout.h"
-#include "ui/model/layout_document.h"
-#include "ui/model/undo_redo.h"
+#include "ui/model/layout/layout_document.h"
+#include "ui/model/layout/undo_redo.h"
 
 namespace lmc::ui {
 

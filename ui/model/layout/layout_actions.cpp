@@ -1,4 +1,4 @@
-#include "ui/model/layout_actions.h"
+#include "ui/model/layout/layout_actions.h"
 
 #include <algorithm>
 #include <cmath>

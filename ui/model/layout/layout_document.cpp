@@ -1,4 +1,4 @@
-#include "ui/model/layout_document.h"
+#include "ui/model/layout/layout_document.h"
 
 #include <utility>
 

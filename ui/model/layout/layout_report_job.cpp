@@ -1,4 +1,4 @@
-#include "ui/model/layout_report_job.h"
+#include "ui/model/layout/layout_report_job.h"
 
 #include <thread>
 

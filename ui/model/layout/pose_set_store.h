@@ -10,7 +10,7 @@
 #include "core/hand/pose_set.h"
 #include "core/visibility/frame_prep.h"
 #include "ui/model/jobs/background_job.h"
-#include "ui/model/layout_document.h"
+#include "ui/model/layout/layout_document.h"
 
 namespace lmc::ui {
 

@@ -8,7 +8,7 @@
 
 #include "core/layout/layout.h"
 #include "ui/model/jobs/background_job.h"
-#include "ui/model/pose_set_store.h"
+#include "ui/model/layout/pose_set_store.h"
 
 namespace lmc::ui {
 

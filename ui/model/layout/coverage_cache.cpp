@@ -1,4 +1,4 @@
-#include "ui/model/coverage_cache.h"
+#include "ui/model/layout/coverage_cache.h"
 
 #include <chrono>
 #include <thread>

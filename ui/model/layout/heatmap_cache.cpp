@@ -1,4 +1,4 @@
-#include "ui/model/heatmap_cache.h"
+#include "ui/model/layout/heatmap_cache.h"
 
 #include <algorithm>
 #include <cmath>

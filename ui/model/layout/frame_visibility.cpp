@@ -1,4 +1,4 @@
-#include "ui/model/frame_visibility.h"
+#include "ui/model/layout/frame_visibility.h"
 
 #include "core/visibility/device_view.h"
 #include "core/visibility/visibility_params.h"

@@ -1,4 +1,4 @@
-#include "ui/model/optimiser_job.h"
+#include "ui/model/layout/optimiser_job.h"
 
 #include <chrono>
 #include <cmath>

@@ -1,4 +1,4 @@
-#include "ui/model/layout_tab_state.h"
+#include "ui/model/layout/layout_tab_state.h"
 
 #include <algorithm>
 #include <cmath>

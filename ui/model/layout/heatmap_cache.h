@@ -16,7 +16,7 @@
 
 #include "core/layout/layout.h"
 #include "ui/model/jobs/background_job.h"
-#include "ui/model/pose_set_store.h"
+#include "ui/model/layout/pose_set_store.h"
 #include "ui/scene/heatmap_grid.h"
 
 namespace lmc::ui {

@@ -1,4 +1,4 @@
-#include "ui/model/pose_set_store.h"
+#include "ui/model/layout/pose_set_store.h"
 
 #include <chrono>
 #include <thread>
