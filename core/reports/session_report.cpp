@@ -1,4 +1,4 @@
-#include "core/results/session_report.h"
+#include "core/reports/session_report.h"
 
 #include <cmath>
 #include <sstream>
