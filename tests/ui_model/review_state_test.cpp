@@ -12,6 +12,7 @@
 
 #include "core/processing/length_correction_json.h"
 #include "tests/support/cli_runner.h"
+#include "tests/support/quick_session.h"
 #include "tests/support/reference_data.h"
 #include "ui/model/review/review_state.h"
 
@@ -26,11 +27,7 @@ class ReviewModel : public ::testing::Test {
   static void SetUpTestSuite() {
     root_ = new fs::path(test::scratch_dir("review_model"));
     session_ = new fs::path(*root_ / "S01");
-    const auto q = [](const fs::path& p) { return test::shell_quote(p.string()); };
-    test::CliRun r = test::run_lmc("session new --subject S01 --protocol quick -o " + q(*session_), *root_ / "l1");
-    ASSERT_EQ(r.exit_code, 0) << r.all();
-    r = test::run_lmc("session run " + q(*session_) + " --backend sim --fast --auto --seed 5 --quiet", *root_ / "l2");
-    ASSERT_EQ(r.exit_code, 0) << r.all();
+    ASSERT_EQ(test::record_quick_session(*session_, *root_ / "logs", "S01", 5), "");
   }
   static void TearDownTestSuite() {
     fs::remove_all(*root_);
