@@ -29,7 +29,7 @@ Eigen::Vector3d to_axes(const Eigen::Vector3d& p, ExportAxes axes) {
   return p;
 }
 
-bool finite3(const Eigen::Vector3d& p) {
+bool is_finite_point(const Eigen::Vector3d& p) {
   return std::isfinite(p.x()) && std::isfinite(p.y()) && std::isfinite(p.z());
 }
 
@@ -40,7 +40,7 @@ void add_hand(PointTable& t, const HandTrack& track, const std::string& prefix, 
     t.descriptions.push_back(who + ": " + hand_point_words(i));
     for (int f = 0; f < frames; ++f) {
       Eigen::Vector3d p = Eigen::Vector3d::Constant(kNaNExport);
-      if (f < track.frame_count && finite3(track.at(f, i))) p = to_axes(track.at(f, i), t.axes);
+      if (f < track.frame_count && is_finite_point(track.at(f, i))) p = to_axes(track.at(f, i), t.axes);
       t.positions[static_cast<size_t>(f)].push_back(p);
     }
   }
@@ -127,7 +127,7 @@ PointTable trial_point_table(const TrialResult& result, const MarkerSeries* vico
         Eigen::Vector3d p = Eigen::Vector3d::Constant(kNaNExport);
         const auto& rows = vicon_markers->positions;
         if (static_cast<size_t>(f) < rows.size() && m < rows[static_cast<size_t>(f)].size() &&
-            finite3(rows[static_cast<size_t>(f)][m])) {
+            is_finite_point(rows[static_cast<size_t>(f)][m])) {
           p = to_axes(rows[static_cast<size_t>(f)][m], axes);
         }
         t.positions[static_cast<size_t>(f)].push_back(p);

@@ -1,13 +1,12 @@
 #pragma once
-// One page that explains a layout: the study's M and the robust terms, split by palm
-// orientation; what each controller contributes (what the layout loses without it, the frames in
-// which it alone sees some finger, its axis-cut violations); and per reference pose how often each
-// finger is seen by one and by two or more controllers. `lmc evaluate --report DIR` writes it as
-// Markdown; the numbers are the same ones `lmc evaluate` prints, computed here once.
+// The numbers of the page that explains a layout: the study's M and the robust terms, split by
+// palm orientation; what each controller contributes (what the layout loses without it, the frames
+// in which it alone sees some finger, its axis-cut violations); and per reference pose how often
+// each finger is seen by one and by two or more controllers. They are the same ones `lmc evaluate`
+// prints, computed here once; core/reports/ turns them into the Markdown page and its figures.
 #include <array>
 #include <span>
 #include <string>
-#include <utility>
 #include <vector>
 
 #include "core/hand/pose_set.h"
@@ -41,9 +40,5 @@ struct LayoutReport {
 // `prepared` are `poses.frames` prepared (prepare_frames).
 LayoutReport build_layout_report(const Layout& layout, const PoseSet& poses, std::span<const PreparedFrame> prepared,
                                  const RobustWeights& weights = {}, double phalanx_radius_mm = 10.0);
-
-// `figures`: (caption, file name) of pictures written beside the report; each is shown with its caption under it.
-std::string format_layout_report_markdown(const LayoutReport& report,
-                                          const std::vector<std::pair<std::string, std::string>>& figures = {});
 
 }  // namespace lmc

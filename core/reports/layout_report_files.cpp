@@ -5,6 +5,7 @@
 #include "core/figures/export_sidecar.h"
 #include "core/io/atomic_write.h"
 #include "core/reports/layout_figures.h"
+#include "core/reports/layout_report_markdown.h"
 
 namespace lmc {
 

@@ -2,7 +2,7 @@
 
 #include "core/figures/export_sidecar.h"
 #include "core/io/atomic_write.h"
-#include "core/results/session_report.h"
+#include "core/reports/session_report.h"
 #include "core/review/review_figures.h"
 #include "core/review/visibility_map.h"
 

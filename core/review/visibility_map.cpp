@@ -9,7 +9,7 @@
 #include "core/common/csv_cell.h"
 #include "core/common/nan.h"
 #include "core/common/number_format.h"
-#include "core/results/session_report.h"
+#include "core/reports/session_report.h"
 #include "core/results/summary_reading.h"
 
 namespace lmc {

@@ -76,17 +76,17 @@ void Recorder::open_window(std::int64_t from_ns, std::int64_t until_ns) {
   window_from_ns_ = from_ns;
   // Go is an instant taken a moment before this call: a frame received after that instant but
   // offered before the window opened was held back, and belongs to the trial.
-  for (const Item& item : held_before_go_) {
-    if (item.host_receive_ns < from_ns) continue;
+  for (const QueuedFrame& queued : held_before_go_) {
+    if (queued.host_receive_ns < from_ns) continue;
     before_window_.fetch_sub(1);
-    if (item.host_receive_ns >= until_ns) {
+    if (queued.host_receive_ns >= until_ns) {
       after_window_.fetch_add(1);
       continue;
     }
-    if (!queue_.try_push(item)) {
+    if (!queue_.try_push(queued)) {
       dropped_.fetch_add(1);
       std::lock_guard stats_lock(stats_mutex_);
-      ++stats_[item.frame.device_id].frames_dropped_queue;
+      ++stats_[queued.frame.device_id].frames_dropped_queue;
     }
   }
   held_before_go_.clear();
@@ -120,7 +120,7 @@ bool Recorder::offer(const HandFrame& frame, std::int64_t host_receive_ns, bool 
   // once the recorder failed: the end of the trial still waits for the streams to pass it).
   if (frame.device_id >= 1 && frame.device_id <= kTrackedDevices)
     latest_offered_ns_[static_cast<size_t>(frame.device_id)].store(host_receive_ns, std::memory_order_relaxed);
-  Item item{frame, host_receive_ns};
+  QueuedFrame queued{frame, host_receive_ns};
   std::unique_lock lock(producer_mutex_);
   if (config_.wait_for_go) {
     // Outside the trial (the countdown, or after its planned end): taken, not written, not lost.
@@ -129,7 +129,7 @@ bool Recorder::offer(const HandFrame& frame, std::int64_t host_receive_ns, bool 
       before_window_.fetch_add(1);
       if (from == kClosed) {
         // Before go, the latest few are held: go may turn out to precede them (open_window).
-        held_before_go_.push_back(item);
+        held_before_go_.push_back(queued);
         if (held_before_go_.size() > kHeldBeforeGo) held_before_go_.pop_front();
       }
       return true;
@@ -145,12 +145,12 @@ bool Recorder::offer(const HandFrame& frame, std::int64_t host_receive_ns, bool 
     dropped_.fetch_add(1);
     return false;
   }
-  bool pushed = queue_.try_push(item);
+  bool pushed = queue_.try_push(queued);
   while (!pushed && may_wait && !failed_.load() && !stop_requested_.load()) {
     lock.unlock();
     std::this_thread::sleep_for(std::chrono::microseconds(200));
     lock.lock();
-    pushed = queue_.try_push(item);
+    pushed = queue_.try_push(queued);
   }
   lock.unlock();
   if (!pushed) {
@@ -252,8 +252,8 @@ void Recorder::fail(const std::string& message) {
   failed_ = true;
 }
 
-void Recorder::write_item(const Item& item, std::string& buffer, std::vector<PendingRow>& pending) {
-  const HandFrame& f = item.frame;
+void Recorder::write_queued_frame(const QueuedFrame& queued, std::string& buffer, std::vector<PendingRow>& pending) {
+  const HandFrame& f = queued.frame;
   buffer += format_lmc_row(f, RecordingKind::kRaw);
   pending.push_back({f.device_id, f.frame_id, f.timestamp_us, f.hand_present, buffer.size()});
 }
@@ -307,14 +307,14 @@ void Recorder::run() {
   std::vector<PendingRow> pending;
   auto last_push = std::chrono::steady_clock::now();
   const auto interval = std::chrono::milliseconds(config_.flush_interval_ms);
-  Item item;
+  QueuedFrame queued;
   for (;;) {
     const bool stopping = stop_requested_.load();
     int popped = 0;
-    while (queue_.try_pop(item)) {
+    while (queue_.try_pop(queued)) {
       ++popped;
       if (failed_) continue;  // keep draining so producers are not stuck; nothing more is written
-      write_item(item, buffer, pending);
+      write_queued_frame(queued, buffer, pending);
       if (buffer.size() >= kWriteChunkBytes) push_buffer(buffer, pending);
     }
     const auto now = std::chrono::steady_clock::now();

@@ -147,7 +147,8 @@ class Recorder final : public FrameConsumer {
   void other_side_hand(int device_id, std::int64_t host_receive_ns) override;
 
  private:
-  struct Item {
+  // A frame on its way to the writer, with the host time it arrived.
+  struct QueuedFrame {
     HandFrame frame;
     std::int64_t host_receive_ns = 0;
   };
@@ -160,7 +161,7 @@ class Recorder final : public FrameConsumer {
     bool hand_present = false;
     size_t end = 0;  // offset just past the row's newline in the buffer
   };
-  void write_item(const Item& item, std::string& buffer, std::vector<PendingRow>& pending);
+  void write_queued_frame(const QueuedFrame& queued, std::string& buffer, std::vector<PendingRow>& pending);
   void count_row(const PendingRow& row);  // stats_mutex_ held
   bool push_buffer(std::string& buffer, std::vector<PendingRow>& pending);
   void fail(const std::string& message);
@@ -178,10 +179,10 @@ class Recorder final : public FrameConsumer {
   std::vector<std::string> streams_behind_end_;  // stats_mutex_
   // The latest frames offered before the window opened (producer_mutex_).
   static constexpr size_t kHeldBeforeGo = 2048;
-  std::deque<Item> held_before_go_;
+  std::deque<QueuedFrame> held_before_go_;
   std::string window_from_utc_;  // stats_mutex_
   std::unique_ptr<ByteSink> sink_;
-  SpscQueue<Item> queue_;
+  SpscQueue<QueuedFrame> queue_;
   std::mutex producer_mutex_;  // serialises producers (several device threads); never taken by the writer
   mutable std::mutex stats_mutex_;
   std::map<int, DeviceRecordStats> stats_;

@@ -51,9 +51,9 @@ const char* trial_phase_name(TrialPhase p) {
   return "?";
 }
 
-// The state of one run() call. Members are touched by the calling thread only, except `inbox`,
-// which the Vicon listener's thread fills.
-struct TrialEngine::Run {
+// The state of one trial while it records (one run() call). Members are touched by the calling
+// thread only, except `inbox`, which the Vicon listener's thread fills.
+struct TrialEngine::TrialInProgress {
   using Clock = std::chrono::steady_clock;
   static constexpr auto kPoll = std::chrono::milliseconds(20);
   static constexpr auto kStatusEvery = std::chrono::milliseconds(100);
@@ -105,8 +105,8 @@ struct TrialEngine::Run {
   bool hub_started_here = false;
   std::string failure;  // first outside error: the trial ends "aborted" with it
 
-  Run(DeviceHub& h, SimSource* s, const TrialEngineConfig& c, std::stop_token st,
-      const std::function<void(const TrialSnapshot&)>& cb)
+  TrialInProgress(DeviceHub& h, SimSource* s, const TrialEngineConfig& c, std::stop_token st,
+                  const std::function<void(const TrialSnapshot&)>& cb)
       : hub(h), sim(s), cfg(c), stop(std::move(st)), on_status(cb), trial(c.trial) {}
 
   bool listen() const { return cfg.vicon_listen.has_value(); }
@@ -605,11 +605,11 @@ TrialEngine::TrialEngine(DeviceHub& hub, SimSource* sim, TrialEngineConfig confi
 TrialEngine::~TrialEngine() = default;
 
 TrialResult TrialEngine::run(std::stop_token stop, const std::function<void(const TrialSnapshot&)>& on_status) {
-  Run r(hub_, sim_, config_, std::move(stop), on_status);
-  r.guarded("", [&] { r.execute(); });
-  r.finish();
+  TrialInProgress trial(hub_, sim_, config_, std::move(stop), on_status);
+  trial.guarded("", [&] { trial.execute(); });
+  trial.finish();
   return_freed_memory();
-  return std::move(r.result);
+  return std::move(trial.result);
 }
 
 }  // namespace lmc::devices

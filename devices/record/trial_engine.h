@@ -129,7 +129,7 @@ class TrialEngine {
   TrialResult run(std::stop_token stop = {}, const std::function<void(const TrialSnapshot&)>& on_status = {});
 
  private:
-  struct Run;
+  struct TrialInProgress;
   DeviceHub& hub_;
   SimSource* sim_;
   TrialEngineConfig config_;

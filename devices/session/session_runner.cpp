@@ -25,9 +25,9 @@ using session::PlannedTrial;
 using session::QualityReport;
 using session::TrialType;
 
-struct SessionRunner::Rig {
+struct SessionRunner::RecordingHub {
   std::unique_ptr<DeviceHub> hub;
-  DeviceHub* hub_ref = nullptr;  // a hub owned elsewhere (the caller's, or the block's hardware rig's)
+  DeviceHub* hub_ref = nullptr;  // a hub owned elsewhere (the caller's, or the block's hardware hub)
   SimSource* sim = nullptr;
   DeviceHub& get() const { return hub ? *hub : *hub_ref; }
 };
@@ -90,8 +90,9 @@ bool SessionRunner::needs_preflight(int i) const {
   return !cleared_blocks_.contains(plan_.at(static_cast<size_t>(i)).layout_key);
 }
 
-std::unique_ptr<SessionRunner::Rig> SessionRunner::make_rig(int i, double duration_s, std::uint64_t seed,
-                                                            const std::string& motion) const {
+std::unique_ptr<SessionRunner::RecordingHub> SessionRunner::make_recording_hub(int i, double duration_s,
+                                                                               std::uint64_t seed,
+                                                                               const std::string& motion) const {
   const SourceSpec spec = parse_source_spec(options_.backend);
   const PlannedTrial& p = plan_.at(static_cast<size_t>(i));
   SourceSettings settings;
@@ -107,28 +108,30 @@ std::unique_ptr<SessionRunner::Rig> SessionRunner::make_rig(int i, double durati
   settings.duration_s = spec.backend == "sim" ? duration_s : 0.0;
   HubOptions hub_options;
   hub_options.backpressure = options_.fast;
-  auto rig = std::make_unique<Rig>();
-  rig->hub = std::make_unique<DeviceHub>(settings.layout, hub_options);
+  auto recording = std::make_unique<RecordingHub>();
+  recording->hub = std::make_unique<DeviceHub>(settings.layout, hub_options);
   std::unique_ptr<FrameSource> source = make_source(spec, settings);
-  rig->sim = dynamic_cast<SimSource*>(source.get());
-  rig->hub->add_source(std::move(source));
-  return rig;
+  recording->sim = dynamic_cast<SimSource*>(source.get());
+  recording->hub->add_source(std::move(source));
+  return recording;
 }
 
-std::unique_ptr<SessionRunner::Rig> SessionRunner::rig_for_recording(int i, double duration_s, std::uint64_t seed,
-                                                                     const std::string& motion) const {
+std::unique_ptr<SessionRunner::RecordingHub> SessionRunner::hub_for_recording(int i, double duration_s,
+                                                                              std::uint64_t seed,
+                                                                              const std::string& motion) const {
   if (options_.external_hub != nullptr) {
-    auto rig = std::make_unique<Rig>();
-    rig->hub_ref = options_.external_hub;
-    return rig;
+    auto recording = std::make_unique<RecordingHub>();
+    recording->hub_ref = options_.external_hub;
+    return recording;
   }
-  if (hardware_rig_ && hardware_block_ == plan_.at(static_cast<size_t>(i)).layout_key) {
-    auto rig = std::make_unique<Rig>();  // borrows the block's hub, which stays up for its next trials
-    rig->hub_ref = hardware_rig_->hub.get();
-    rig->sim = hardware_rig_->sim;
-    return rig;
+  if (hardware_hub_ && hardware_block_ == plan_.at(static_cast<size_t>(i)).layout_key) {
+    // Borrows the block's hub, which stays up for its next trials.
+    auto recording = std::make_unique<RecordingHub>();
+    recording->hub_ref = hardware_hub_->hub.get();
+    recording->sim = hardware_hub_->sim;
+    return recording;
   }
-  return make_rig(i, duration_s, seed, motion);
+  return make_recording_hub(i, duration_s, seed, motion);
 }
 
 std::uint64_t SessionRunner::bytes_still_needed(int from) const {
@@ -151,9 +154,9 @@ PreflightReport SessionRunner::preflight(int i, std::stop_token stop) {
   in.bytes_needed = bytes_still_needed(i);
   in.min_rate_hz = protocol_.trial_types.at(static_cast<size_t>(p.trial_type)).quality.fail_min_rate_hz;
   in.vicon_target = vicon_target();
-  // The probe listens to the controllers for a moment: a rig of its own for the simulator and
-  // replays (their trial rigs are made per trial), the block's hub for real controllers.
-  std::unique_ptr<Rig> probe_rig;
+  // The probe listens to the controllers for a moment: a hub of its own for the simulator and
+  // replays (their recordings' hubs are made per trial), the block's hub for real controllers.
+  std::unique_ptr<RecordingHub> probe_hub;
   DeviceHub* hub = nullptr;
   try {
     if (options_.external_hub != nullptr) {
@@ -161,16 +164,16 @@ PreflightReport SessionRunner::preflight(int i, std::stop_token stop) {
       hub = options_.external_hub;
     } else if (parse_source_spec(options_.backend).backend == "leapc") {
       if (hardware_block_ != p.layout_key) {
-        hardware_rig_.reset();
-        hardware_rig_ = make_rig(i, 0, options_.sim.seed);
-        hardware_rig_->hub->start();
+        hardware_hub_.reset();
+        hardware_hub_ = make_recording_hub(i, 0, options_.sim.seed);
+        hardware_hub_->hub->start();
         hardware_block_ = p.layout_key;
       }
-      hub = hardware_rig_->hub.get();
+      hub = hardware_hub_->hub.get();
     } else {
-      probe_rig = make_rig(i, 2.0, options_.sim.seed);
-      probe_rig->hub->start();
-      hub = probe_rig->hub.get();
+      probe_hub = make_recording_hub(i, 2.0, options_.sim.seed);
+      probe_hub->hub->start();
+      hub = probe_hub->hub.get();
     }
     const auto timeout = std::chrono::milliseconds(static_cast<int>(options_.preflight_timeout_s * 1000));
     in.slots = probe_streams(*hub, timeout, 20, stop);
@@ -183,7 +186,7 @@ PreflightReport SessionRunner::preflight(int i, std::stop_token stop) {
     folder_.preflight(r.block, false, preflight_to_json(r));
     return r;
   }
-  if (probe_rig) probe_rig->hub->stop();
+  if (probe_hub) probe_hub->hub->stop();
   PreflightReport report = evaluate_preflight(in);
   folder_.preflight(report.block, report.ok(), preflight_to_json(report));
   if (report.ok()) cleared_blocks_.insert(p.layout_key);
@@ -239,10 +242,10 @@ AttemptResult SessionRunner::run_trial(int i, std::stop_token stop,
   try {
     const std::uint64_t seed = options_.sim.seed + 7919ULL * static_cast<std::uint64_t>(i) +
                                104729ULL * static_cast<std::uint64_t>(result.attempt - 1);
-    const std::unique_ptr<Rig> rig = rig_for_recording(i, type.duration_s, seed);
-    if (rig->sim != nullptr) config.extra["simulator"] = sim_config_to_json(options_.sim);
-    TapAttachment tap(rig->get(), live_tap);
-    TrialEngine engine(rig->get(), rig->sim, config);
+    const std::unique_ptr<RecordingHub> recording = hub_for_recording(i, type.duration_s, seed);
+    if (recording->sim != nullptr) config.extra["simulator"] = sim_config_to_json(options_.sim);
+    TapAttachment tap(recording->get(), live_tap);
+    TrialEngine engine(recording->get(), recording->sim, config);
     tr = engine.run(stop, on_status);
   } catch (const std::exception& e) {
     tr.outcome = TrialOutcome::kFailed;
@@ -367,11 +370,11 @@ BlockCalibration SessionRunner::calibrate_block(int i, std::stop_token stop,
   TrialResult tr;
   try {
     // The simulated subject holds the trial's palm pose still (the step's cue).
-    const std::unique_ptr<Rig> rig =
-        rig_for_recording(i, step.duration_s, options_.sim.seed + 31ULL * static_cast<std::uint64_t>(out.attempt),
+    const std::unique_ptr<RecordingHub> recording =
+        hub_for_recording(i, step.duration_s, options_.sim.seed + 31ULL * static_cast<std::uint64_t>(out.attempt),
                           protocol_.poses.at(static_cast<size_t>(p.pose)).key + "/static");
-    if (rig->sim != nullptr) config.extra["simulator"] = sim_config_to_json(options_.sim);
-    TrialEngine engine(rig->get(), rig->sim, config);
+    if (recording->sim != nullptr) config.extra["simulator"] = sim_config_to_json(options_.sim);
+    TrialEngine engine(recording->get(), recording->sim, config);
     tr = engine.run(stop, on_status);
   } catch (const std::exception& e) {
     tr.outcome = TrialOutcome::kFailed;

@@ -125,13 +125,16 @@ class SessionRunner {
   std::string block_instructions(int i) const;
 
  private:
-  struct Rig;
-  // The rig for trial `i`'s block; `motion` overrides the trial's simulated motion ("horizontal/static").
-  std::unique_ptr<Rig> make_rig(int i, double duration_s, std::uint64_t seed, const std::string& motion = {}) const;
-  // The rig one recording of trial `i` (a trial or its block's calibration) runs on: the caller's
+  // The hub a recording runs on (owned or borrowed) and its simulator, if it plays one.
+  struct RecordingHub;
+  // A new hub of trial `i`'s block with its source opened; `motion` overrides the trial's simulated
+  // motion ("horizontal/static").
+  std::unique_ptr<RecordingHub> make_recording_hub(int i, double duration_s, std::uint64_t seed,
+                                                   const std::string& motion = {}) const;
+  // The hub one recording of trial `i` (a trial or its block's calibration) runs on: the caller's
   // hub when it gave one, the block's hub of real controllers while it is up, else one made for it.
-  std::unique_ptr<Rig> rig_for_recording(int i, double duration_s, std::uint64_t seed,
-                                         const std::string& motion = {}) const;
+  std::unique_ptr<RecordingHub> hub_for_recording(int i, double duration_s, std::uint64_t seed,
+                                                  const std::string& motion = {}) const;
   const Layout& layout_for(int i) const;
   Layout nominal_layout_for(int i) const;  // before any calibration of the block
   std::uint64_t bytes_still_needed(int from) const;
@@ -145,9 +148,9 @@ class SessionRunner {
   SessionRunOptions options_;
   session::Protocol protocol_;
   std::vector<session::PlannedTrial> plan_;
-  std::map<std::string, Layout> layouts_;  // by layout key, from the manifest
-  std::set<std::string> cleared_blocks_;   // pre-flight passed or overridden in this run
-  std::unique_ptr<Rig> hardware_rig_;      // leapc: one hub per block, kept across its trials
+  std::map<std::string, Layout> layouts_;       // by layout key, from the manifest
+  std::set<std::string> cleared_blocks_;        // pre-flight passed or overridden in this run
+  std::unique_ptr<RecordingHub> hardware_hub_;  // leapc: one hub per block, kept across its trials
   std::string hardware_block_;
 };
 

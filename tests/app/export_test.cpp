@@ -14,6 +14,7 @@
 #include "core/io/trc.h"
 #include "core/processing/batch.h"
 #include "tests/support/cli_runner.h"
+#include "tests/support/quick_session.h"
 #include "tests/support/reference_data.h"
 
 namespace lmc {
@@ -194,10 +195,7 @@ TEST(LmcExport, WritesC3dAndTrcEqualToTheProcessedTrial) {
 TEST(LmcExport, APartialSessionExportsWhatItCanAndSaysWhatItLeftOut) {
   const fs::path dir = test::scratch_dir("lmc_export_partial");
   const fs::path s = dir / "S01";
-  CliRun r = run_lmc("session new --subject S01 --protocol quick -o " + shell_quote(s.string()), dir / "l");
-  ASSERT_EQ(r.exit_code, 0) << r.all();
-  r = run_lmc("session run " + shell_quote(s.string()) + " --backend sim --fast --auto --quiet --seed 1", dir / "l");
-  ASSERT_EQ(r.exit_code, 0) << r.all();
+  ASSERT_EQ(test::record_quick_session(s, dir / "l", "S01", 1), "");
   const fs::path broken = s / "LMC_Naiv_Static101.raw.txt";
   const std::string text = test::read_text_file(broken);
   ASSERT_TRUE(fs::exists(s / "Naiv_Index101.trc"));
@@ -207,7 +205,7 @@ TEST(LmcExport, APartialSessionExportsWhatItCanAndSaysWhatItLeftOut) {
   }
   fs::remove(s / "Naiv_Index101.trc");
   const fs::path out = dir / "out";
-  r = run_lmc("export trc " + shell_quote(s.string()) + " -o " + shell_quote(out.string()), dir / "l");
+  const CliRun r = run_lmc("export trc " + shell_quote(s.string()) + " -o " + shell_quote(out.string()), dir / "l");
   EXPECT_EQ(r.exit_code, 2) << r.all();
   EXPECT_NE(r.out.find("note: left out Naiv_Static101: the LMC recording has no data rows"), std::string::npos)
       << r.all();

@@ -8,6 +8,7 @@
 #include <string>
 
 #include "tests/support/cli_runner.h"
+#include "tests/support/quick_session.h"
 #include "tests/support/reference_data.h"
 
 namespace lmc {
@@ -21,14 +22,11 @@ using test::shell_quote;
 TEST(LmcFigures, AppliesAFoldersLengthCorrectionAsTheReviewTabDoes) {
   const fs::path dir = test::scratch_dir("lmc_figures_length_correction");
   const fs::path s01 = dir / "S01";
-  CliRun r = run_lmc("session new --subject S01 --protocol quick -o " + shell_quote(s01.string()), dir / "l");
-  ASSERT_EQ(r.exit_code, 0) << r.all();
-  r = run_lmc("session run " + shell_quote(s01.string()) + " --backend sim --fast --auto --quiet --seed 3", dir / "l");
-  ASSERT_EQ(r.exit_code, 0) << r.all();
+  ASSERT_EQ(test::record_quick_session(s01, dir / "l", "S01", 3), "");
   const fs::path lengths = dir / "S01-lengths.json";
-  r = run_lmc("length-correction fit " + shell_quote(s01.string()) + " --trial Naiv_Static101 --subject S01 -o " +
-                  shell_quote(lengths.string()),
-              dir / "l");
+  CliRun r = run_lmc("length-correction fit " + shell_quote(s01.string()) +
+                         " --trial Naiv_Static101 --subject S01 -o " + shell_quote(lengths.string()),
+                     dir / "l");
   ASSERT_EQ(r.exit_code, 0) << r.all();
 
   const std::string cache = "LMC_CACHE_DIR=" + shell_quote((dir / "cache").string());

@@ -7,6 +7,7 @@
 #include <filesystem>
 
 #include "tests/support/cli_runner.h"
+#include "tests/support/quick_session.h"
 #include "tests/support/reference_data.h"
 
 namespace lmc {
@@ -19,16 +20,8 @@ using test::shell_quote;
 
 TEST(LmcFigures, WritesTheAgreementFiguresAndTablesAndReusesTheCache) {
   const fs::path dir = test::scratch_dir("lmc_figures");
-  for (const char* subject : {"S01", "S02"}) {
-    const fs::path s = dir / subject;
-    CliRun r = run_lmc(
-        "session new --subject " + std::string(subject) + " --protocol quick -o " + shell_quote(s.string()), dir / "l");
-    ASSERT_EQ(r.exit_code, 0) << r.all();
-    r = run_lmc("session run " + shell_quote(s.string()) + " --backend sim --fast --auto --quiet --seed " +
-                    std::string(subject == std::string("S01") ? "1" : "2"),
-                dir / "l");
-    ASSERT_EQ(r.exit_code, 0) << r.all();
-  }
+  ASSERT_EQ(test::record_quick_session(dir / "S01", dir / "l" / "S01", "S01", 1), "");
+  ASSERT_EQ(test::record_quick_session(dir / "S02", dir / "l" / "S02", "S02", 2), "");
   const std::string cache = "LMC_CACHE_DIR=" + shell_quote((dir / "cache").string());
   const fs::path out = dir / "out";
   const std::string args = "figures " + shell_quote((dir / "S01").string()) + " " +

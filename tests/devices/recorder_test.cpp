@@ -26,6 +26,7 @@
 #include "tests/devices/sim_fixtures.h"
 #include "tests/support/full_disk_sink.h"
 #include "tests/support/reference_data.h"
+#include "tests/support/test_recorder.h"
 
 namespace lmc::devices {
 namespace recorder_test {
@@ -58,14 +59,29 @@ nlohmann::json read_json(const std::filesystem::path& p) {
   return nlohmann::json::parse(in);
 }
 
-// Plays a generated trial into the hub from the calling thread, as fast as it goes.
-void play(const SimTrial& trial, DeviceHub& hub) {
+// Offers device 1's frame `i`: frame id i, stamped i ms on the device clock, received at host
+// time i ns.
+bool offer_frame(Recorder& rec, int i, bool may_wait) {
+  HandFrame f;
+  f.device_id = 1;
+  f.frame_id = i;
+  f.timestamp_us = 1000 * i;
+  return rec.offer(f, i, may_wait);
+}
+
+// Records the whole of `trial` into `rec`, started here, and stops it: the trial is played into
+// the hub from the calling thread, as fast as it goes.
+RecorderStatus record_trial(const SimTrial& trial, DeviceHub& hub, Recorder& rec) {
+  rec.start();
+  hub.set_consumer(&rec);
   for (const auto& e : trial.events) {
     if (e.is_frame)
       hub.on_frame(e.frame);
     else
       hub.on_device_event(e.event);
   }
+  hub.set_consumer(nullptr);
+  return rec.stop(hub.serial_to_slot());
 }
 
 TEST(TrialName, OnlySafeNamesBecomeFileNames) {
@@ -92,22 +108,14 @@ TEST(Recorder, FourDevicesAt120HzFor60sLoseNoFrame) {
   for (const auto& [serial, n] : trial.frame_counts()) emitted += n;
   ASSERT_NEAR(static_cast<double>(emitted), 4 * 120 * 60, 8);
 
-  const auto dir = test::scratch_dir("rec_lossfree");
   HubOptions ho;
   ho.backpressure = true;  // simulated time: the producer is not hardware-paced
   DeviceHub hub(paper_initial(), ho);
-  RecorderConfig rc;
-  rc.output_dir = dir;
-  rc.trial = "lossfree";
-  rc.layout = paper_initial();
+  RecorderConfig rc = test::recorder_config(test::scratch_dir("rec_lossfree"), "lossfree");
   rc.backend = "sim";
   rc.queue_capacity = 1024;  // small on purpose: the producer outruns the disk and must wait
   Recorder rec(rc);
-  rec.start();
-  hub.set_consumer(&rec);
-  play(trial, hub);
-  hub.set_consumer(nullptr);
-  const RecorderStatus st = rec.stop(hub.serial_to_slot());
+  const RecorderStatus st = record_trial(trial, hub, rec);
   ASSERT_EQ(st.state, RecorderState::kStopped) << st.error;
   EXPECT_EQ(st.frames_dropped, 0);
   EXPECT_EQ(st.frames_written, emitted);
@@ -136,11 +144,7 @@ TEST(Recorder, FourDevicesAt120HzFor60sLoseNoFrame) {
 }
 
 TEST(Recorder, ConcurrentRealtimeProducersWithRoomLoseNothing) {
-  const auto dir = test::scratch_dir("rec_mt");
-  RecorderConfig rc;
-  rc.output_dir = dir;
-  rc.trial = "mt";
-  rc.layout = paper_initial();
+  RecorderConfig rc = test::recorder_config(test::scratch_dir("rec_mt"), "mt");
   rc.queue_capacity = 20000;
   Recorder rec(rc);
   rec.start();
@@ -181,20 +185,12 @@ TEST(Recorder, UnpluggedDeviceLeavesTheFileIntactWithTheGapRecorded) {
   sim.seed = 3;
   sim.unplugs.push_back({"LMC2", 1.0, 0.8});
   const SimTrial trial = generate_sim_trial(paper_initial(), sim, 3.0);
-  const auto dir = test::scratch_dir("rec_unplug");
   HubOptions ho;
   ho.backpressure = true;
   DeviceHub hub(paper_initial(), ho);
-  RecorderConfig rc;
-  rc.output_dir = dir;
-  rc.trial = "unplug";
-  rc.layout = paper_initial();
+  RecorderConfig rc = test::recorder_config(test::scratch_dir("rec_unplug"), "unplug");
   Recorder rec(rc);
-  rec.start();
-  hub.set_consumer(&rec);
-  play(trial, hub);
-  hub.set_consumer(nullptr);
-  const auto st = rec.stop(hub.serial_to_slot());
+  const RecorderStatus st = record_trial(trial, hub, rec);
   ASSERT_EQ(st.state, RecorderState::kStopped) << st.error;
 
   // The operator is told.
@@ -230,11 +226,7 @@ TEST(Recorder, UnpluggedDeviceLeavesTheFileIntactWithTheGapRecorded) {
 using test::FullDiskSink;
 
 TEST(Recorder, DiskFullStopsTheTrialWithAClearMessageAndKeepsWhatWasWritten) {
-  const auto dir = test::scratch_dir("rec_full");
-  RecorderConfig rc;
-  rc.output_dir = dir;
-  rc.trial = "full";
-  rc.layout = paper_initial();
+  RecorderConfig rc = test::recorder_config(test::scratch_dir("rec_full"), "full");
   rc.flush_interval_ms = 20;
   rc.open_sink = [](const std::filesystem::path& p) {
     return std::make_unique<FullDiskSink>(open_file_sink(p), 64 * 1024);
@@ -311,11 +303,7 @@ TEST(Recorder, FileSizeLimitIsAClearWriteErrorNotAKill) {
 // Go is an instant the engine takes a moment before it opens the window; a frame received after
 // that instant but offered before the window opened belongs to the trial all the same.
 TEST(Recorder, AFrameOfferedJustBeforeTheWindowOpensButReceivedAfterGoIsWritten) {
-  const auto dir = test::scratch_dir("rec_go_race");
-  RecorderConfig rc;
-  rc.output_dir = dir;
-  rc.trial = "go_race";
-  rc.layout = paper_initial();
+  RecorderConfig rc = test::recorder_config(test::scratch_dir("rec_go_race"), "go_race");
   rc.wait_for_go = true;
   Recorder rec(rc);
   rec.start();
@@ -342,20 +330,10 @@ TEST(Recorder, AFrameOfferedJustBeforeTheWindowOpensButReceivedAfterGoIsWritten)
 }
 
 TEST(Recorder, StopWithAReasonMarksTheTrialAborted) {
-  const auto dir = test::scratch_dir("rec_abort");
-  RecorderConfig rc;
-  rc.output_dir = dir;
-  rc.trial = "abort";
-  rc.layout = paper_initial();
+  RecorderConfig rc = test::recorder_config(test::scratch_dir("rec_abort"), "abort");
   Recorder rec(rc);
   rec.start();
-  HandFrame f;
-  f.device_id = 1;
-  for (int i = 0; i < 3; ++i) {
-    f.frame_id = i;
-    f.timestamp_us = 1000 * i;
-    rec.offer(f, i, false);
-  }
+  for (int i = 0; i < 3; ++i) offer_frame(rec, i, false);
   const auto st = rec.stop({}, "Vicon trigger: sending to 127.0.0.1:9 failed: Connection refused");
   EXPECT_EQ(st.state, RecorderState::kAborted);
   EXPECT_STREQ(recorder_state_name(st.state), "aborted");
@@ -368,11 +346,7 @@ TEST(Recorder, StopWithAReasonMarksTheTrialAborted) {
 }
 
 TEST(Recorder, AWriteErrorStaysFailedWhateverTheAbortReason) {
-  const auto dir = test::scratch_dir("rec_fail_abort");
-  RecorderConfig rc;
-  rc.output_dir = dir;
-  rc.trial = "fa";
-  rc.layout = paper_initial();
+  RecorderConfig rc = test::recorder_config(test::scratch_dir("rec_fail_abort"), "fa");
   rc.flush_interval_ms = 10;
   // Room for the header and a few short rows.
   const size_t limit = lmc_recording_header(RecordingKind::kRaw).size() + 100;
@@ -399,30 +373,19 @@ TEST(Recorder, AWriteErrorStaysFailedWhateverTheAbortReason) {
   EXPECT_NE(side["error"].get<std::string>().find("No space left"), std::string::npos) << side["error"];
 }
 
-// The output folder removed mid-trial went unnoticed (the trial ran on into a deleted
+// The output folder removed mid-trial once went unnoticed (the trial ran on into a deleted
 // file); the recorder now notices within its flush interval and fails with that cause.
 TEST(Recorder, OutputFolderDeletedMidTrialFailsTheTrial) {
   const auto dir = test::scratch_dir("rec_folder_gone") / "trial_folder";
-  RecorderConfig rc;
-  rc.output_dir = dir;
-  rc.trial = "gone";
-  rc.layout = paper_initial();
+  RecorderConfig rc = test::recorder_config(dir, "gone");
   rc.flush_interval_ms = 20;
   Recorder rec(rc);
   rec.start();
-  HandFrame f;
-  f.device_id = 1;
-  for (int i = 0; i < 5; ++i) {
-    f.frame_id = i;
-    f.timestamp_us = 1000 * i;
-    rec.offer(f, i, true);
-  }
+  for (int i = 0; i < 5; ++i) offer_frame(rec, i, true);
   std::filesystem::remove_all(dir);
   const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(10);  // a hang guard only
   for (int i = 5; !rec.failed() && std::chrono::steady_clock::now() < deadline; ++i) {
-    f.frame_id = i;
-    f.timestamp_us = 1000 * i;
-    rec.offer(f, i, true);
+    offer_frame(rec, i, true);
     std::this_thread::sleep_for(std::chrono::milliseconds(5));
   }
   ASSERT_TRUE(rec.failed());
@@ -454,10 +417,7 @@ class MemorySink final : public ByteSink {
 TEST(Recorder, ASidecarWriteErrorIsReportedEvenAfterAnotherError) {
   for (const std::string abort_reason : {"", "the Vicon trigger failed"}) {
     const auto dir = test::scratch_dir("rec_sidecar_fail") / "trial_folder";
-    RecorderConfig rc;
-    rc.output_dir = dir;
-    rc.trial = "side";
-    rc.layout = paper_initial();
+    RecorderConfig rc = test::recorder_config(dir, "side");
     rc.open_sink = [](const std::filesystem::path&) { return std::make_unique<MemorySink>(); };
     Recorder rec(rc);
     rec.start();
@@ -542,11 +502,7 @@ TEST(ClockAlignment, HubSnapshotCarriesTheLatestReceiveTime) {
 }
 
 TEST(Recorder, RowsReachTheFileWhileRecording) {
-  const auto dir = test::scratch_dir("rec_flush");
-  RecorderConfig rc;
-  rc.output_dir = dir;
-  rc.trial = "flush";
-  rc.layout = paper_initial();
+  RecorderConfig rc = test::recorder_config(test::scratch_dir("rec_flush"), "flush");
   rc.flush_interval_ms = 50;
   Recorder rec(rc);
   rec.start();
@@ -570,11 +526,7 @@ TEST(Recorder, RowsReachTheFileWhileRecording) {
 }
 
 TEST(Recorder, SidecarDescribesTheSession) {
-  const auto dir = test::scratch_dir("rec_side");
-  RecorderConfig rc;
-  rc.output_dir = dir;
-  rc.trial = "side";
-  rc.layout = paper_initial();
+  RecorderConfig rc = test::recorder_config(test::scratch_dir("rec_side"), "side");
   rc.backend = "sim";
   Recorder rec(rc);
   rec.start();
@@ -593,11 +545,7 @@ TEST(Recorder, SidecarDescribesTheSession) {
 }
 
 TEST(Recorder, SidecarKeepsEachDevicesModelModeAndOtherSideHands) {
-  const auto dir = test::scratch_dir("rec_model_mode");
-  RecorderConfig rc;
-  rc.output_dir = dir;
-  rc.trial = "modes";
-  rc.layout = paper_initial();
+  RecorderConfig rc = test::recorder_config(test::scratch_dir("rec_model_mode"), "modes");
   rc.backend = "leapc";
   Recorder rec(rc);
   rec.start();

@@ -25,22 +25,15 @@ namespace review_export_panel_test {  // named: test files share unity batches
 namespace fs = std::filesystem;
 using testing::HeadlessImGui;
 
-class ExportPanel : public ::testing::Test {
- protected:
-  static void SetUpTestSuite() {
-    root_ = new fs::path(test::scratch_dir("review_export_panel"));
-    session_ = new fs::path(*root_ / "S01");
-    ASSERT_EQ(test::record_quick_session(*session_, *root_ / "logs"), "");
-  }
-  static void TearDownTestSuite() {
-    fs::remove_all(*root_);
-    delete session_;
-    delete root_;
-  }
+class ExportPanel : public test::QuickSessionSuite<ExportPanel> {
+ public:
+  static constexpr const char* kScratchName = "review_export_panel";
+  static constexpr int kSeed = 6;
 
+ protected:
   void SetUp() override {
-    state->set_cache_dir(*root_ / "cache");  // shared: the second test's batch comes from the cache
-    state->open_folder(*session_);
+    state->set_cache_dir(root() / "cache");  // shared: the second test's batch comes from the cache
+    state->open_folder(session());
     const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(120);
     while ((state->batch() == nullptr || state->batch_job().running()) && std::chrono::steady_clock::now() < deadline) {
       state->update();
@@ -73,8 +66,6 @@ class ExportPanel : public ::testing::Test {
     gui.frames(2, body());
   }
 
-  static fs::path* root_;
-  static fs::path* session_;
   HeadlessImGui gui;
   std::shared_ptr<ReviewState> state = std::make_shared<ReviewState>();
   std::vector<fs::path> opened;
@@ -83,8 +74,6 @@ class ExportPanel : public ::testing::Test {
                             return true;
                           }};
 };
-fs::path* ExportPanel::root_ = nullptr;
-fs::path* ExportPanel::session_ = nullptr;
 
 TEST_F(ExportPanel, ExportsTheSelectedTrialAsC3dAndOffersItsFolder) {
   click("export.button");

@@ -35,21 +35,14 @@ bool contains(const std::string& text, const std::string& part) {
   return text.find(part) != std::string::npos;
 }
 
-class ReviewPanels : public ::testing::Test {
- protected:
-  static void SetUpTestSuite() {
-    root_ = new fs::path(test::scratch_dir("review_panels"));
-    session_ = new fs::path(*root_ / "S01");
-    ASSERT_EQ(test::record_quick_session(*session_, *root_ / "logs"), "");
-  }
-  static void TearDownTestSuite() {
-    fs::remove_all(*root_);
-    delete session_;
-    delete root_;
-  }
+class ReviewPanels : public test::QuickSessionSuite<ReviewPanels> {
+ public:
+  static constexpr const char* kScratchName = "review_panels";
+  static constexpr int kSeed = 6;
 
+ protected:
   ReviewPanels() {
-    state->set_cache_dir(*root_ / "cache");  // shared: later tests' batches come from it
+    state->set_cache_dir(root() / "cache");  // shared: later tests' batches come from it
     // The trial view's plots pass 64k vertices in one window: the workbench's OpenGL renderer
     // draws such lists in parts (vertex offsets), and so does this headless one, which draws nothing.
     ImGui::GetIO().BackendFlags |= ImGuiBackendFlags_RendererHasVtxOffset;
@@ -67,7 +60,7 @@ class ReviewPanels : public ::testing::Test {
   }
   // Opens the session and waits for its batch and the selected trial's view.
   void open_session() {
-    state->open_folder(*session_);
+    state->open_folder(session());
     ASSERT_TRUE(update_until([&] { return state->batch() != nullptr && !state->batch_job().running(); }));
     ASSERT_EQ(state->trials().size(), 2u);
     ASSERT_GE(state->selected(), 0);  // the first trial with Vicon is selected for the view
@@ -86,13 +79,9 @@ class ReviewPanels : public ::testing::Test {
     gui.click(c->x, c->y, body);
   }
 
-  static fs::path* root_;
-  static fs::path* session_;
   std::shared_ptr<ReviewState> state = std::make_shared<ReviewState>();
   HeadlessImGui gui;
 };
-fs::path* ReviewPanels::root_ = nullptr;
-fs::path* ReviewPanels::session_ = nullptr;
 
 TEST_F(ReviewPanels, WelcomeSaysWhatTheTabDoesAndOffersTheOpenButtons) {
   ReviewWelcomePanel panel(state);

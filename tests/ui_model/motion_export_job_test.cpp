@@ -16,6 +16,7 @@
 #include "core/io/trc.h"
 #include "core/session/session_trials.h"
 #include "tests/support/cli_runner.h"
+#include "tests/support/quick_session.h"
 #include "tests/support/scratch_dir.h"
 #include "ui/model/review/motion_export_job.h"
 #include "ui/model/review/review_state.h"
@@ -108,28 +109,18 @@ TEST(MotionExportPlan, BidsTakesTheOpenedFoldersAndSaysWhichCorrectionsItCannotA
 }
 
 // One quick simulated session for the suite (about two seconds to record).
-class MotionExport : public ::testing::Test {
+class MotionExport : public test::QuickSessionSuite<MotionExport> {
+ public:
+  static constexpr const char* kScratchName = "motion_export";
+  static constexpr int kSeed = 5;
+
  protected:
-  static void SetUpTestSuite() {
-    root_ = new fs::path(test::scratch_dir("motion_export"));
-    session_ = new fs::path(*root_ / "S01");
-    const auto q = [](const fs::path& p) { return test::shell_quote(p.string()); };
-    test::CliRun r = test::run_lmc("session new --subject S01 --protocol quick -o " + q(*session_), *root_ / "l1");
-    ASSERT_EQ(r.exit_code, 0) << r.all();
-    r = test::run_lmc("session run " + q(*session_) + " --backend sim --fast --auto --seed 5 --quiet", *root_ / "l2");
-    ASSERT_EQ(r.exit_code, 0) << r.all();
-  }
-  static void TearDownTestSuite() {
-    fs::remove_all(*root_);
-    delete session_;
-    delete root_;
-  }
   // The session's trials as the Review batch lists them (processing is not needed to plan).
   static std::vector<ReviewTrial> trials() {
     std::vector<ReviewTrial> out;
-    for (auto& job : session::trial_sources_for_input(*session_, std::nullopt)) {
+    for (auto& job : session::trial_sources_for_input(session(), std::nullopt)) {
       ReviewTrial t;
-      t.folder = *session_;
+      t.folder = session();
       t.job = job;
       out.push_back(t);
     }
@@ -141,11 +132,7 @@ class MotionExport : public ::testing::Test {
     std::sort(out.begin(), out.end());
     return out;
   }
-  static fs::path* root_;
-  static fs::path* session_;
 };
-fs::path* MotionExport::root_ = nullptr;
-fs::path* MotionExport::session_ = nullptr;
 
 TEST_F(MotionExport, WritesTheChosenTrialsAsC3dOnAWorkerWithProgress) {
   const auto all = trials();
@@ -239,7 +226,7 @@ TEST_F(MotionExport, ExistingFilesAreRefusedBeforeAnythingIsWrittenUnlessReplaci
 TEST_F(MotionExport, ReviewStateExportsWhatTheTableShowsAndCancels) {
   ReviewState state;
   state.set_cache_dir(test::scratch_dir("motion_export_cache"));
-  state.open_folder(*session_);
+  state.open_folder(session());
   for (int i = 0; i < 6000 && (state.batch_job().running() || state.batch() == nullptr); ++i) {
     state.update();
     std::this_thread::sleep_for(std::chrono::milliseconds(5));
@@ -285,7 +272,7 @@ TEST_F(MotionExport, ReviewStateExportsWhatTheTableShowsAndCancels) {
 TEST_F(MotionExport, ABidsExportEndsWithADatasetOrTheReasonItCouldNot) {
   ReviewState state;
   state.set_cache_dir(test::scratch_dir("motion_export_bids_cache"));
-  state.open_folder(*session_);
+  state.open_folder(session());
   const fs::path out = test::scratch_dir("motion_export_bids") / "dataset";
   state.export_bids_dataset(out, std::nullopt, false);
   state.motion_export().wait();

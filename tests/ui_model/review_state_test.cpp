@@ -12,6 +12,7 @@
 
 #include "core/processing/length_correction_json.h"
 #include "tests/support/cli_runner.h"
+#include "tests/support/quick_session.h"
 #include "tests/support/reference_data.h"
 #include "ui/model/review/review_state.h"
 
@@ -21,25 +22,15 @@ namespace review_state_test {  // named: test files share unity batches
 namespace fs = std::filesystem;
 
 // One quick simulated session for the whole suite (about two seconds to record).
-class ReviewModel : public ::testing::Test {
+class ReviewModel : public test::QuickSessionSuite<ReviewModel> {
+ public:
+  static constexpr const char* kScratchName = "review_model";
+  static constexpr int kSeed = 5;
+
  protected:
-  static void SetUpTestSuite() {
-    root_ = new fs::path(test::scratch_dir("review_model"));
-    session_ = new fs::path(*root_ / "S01");
-    const auto q = [](const fs::path& p) { return test::shell_quote(p.string()); };
-    test::CliRun r = test::run_lmc("session new --subject S01 --protocol quick -o " + q(*session_), *root_ / "l1");
-    ASSERT_EQ(r.exit_code, 0) << r.all();
-    r = test::run_lmc("session run " + q(*session_) + " --backend sim --fast --auto --seed 5 --quiet", *root_ / "l2");
-    ASSERT_EQ(r.exit_code, 0) << r.all();
-  }
-  static void TearDownTestSuite() {
-    fs::remove_all(*root_);
-    delete session_;
-    delete root_;
-  }
   ReviewBatchInput input(const fs::path& cache) const {
     ReviewBatchInput in;
-    in.folders = {*session_};
+    in.folders = {session()};
     in.cache_dir = cache;
     return in;
   }
@@ -47,11 +38,7 @@ class ReviewModel : public ::testing::Test {
     std::stop_source never;
     return run_review_batch(in, never.get_token(), {});
   }
-  static fs::path* root_;
-  static fs::path* session_;
 };
-fs::path* ReviewModel::root_ = nullptr;
-fs::path* ReviewModel::session_ = nullptr;
 
 TEST_F(ReviewModel, ProcessesASessionIntoRowsAndReopensItFromTheCache) {
   const fs::path cache = test::scratch_dir("review_cache_a");
@@ -84,7 +71,7 @@ TEST_F(ReviewModel, ProcessesASessionIntoRowsAndReopensItFromTheCache) {
     EXPECT_LT(std::abs(t.row.finger_length_diff_mm), 30.0);
   }
   // Nothing was written into the recorded session.
-  for (const auto& e : fs::directory_iterator(*session_))
+  for (const auto& e : fs::directory_iterator(session()))
     EXPECT_EQ(e.path().filename().string().find("summary"), std::string::npos);
 
   const ReviewBatch second = run(input(cache));
@@ -138,7 +125,7 @@ TEST_F(ReviewModel, ACancelledBatchLeavesTrialsOutAndStoresNothingForThem) {
 
 TEST_F(ReviewModel, AFolderThatCannotBeReadIsANoteNotAFailure) {
   ReviewBatchInput in = input(test::scratch_dir("review_cache_d"));
-  in.folders.push_back(*root_ / "no-such-folder");
+  in.folders.push_back(root() / "no-such-folder");
   const ReviewBatch b = run(in);
   EXPECT_EQ(b.trials.size(), 2u);
   ASSERT_FALSE(b.notes.empty());
@@ -150,7 +137,7 @@ TEST_F(ReviewModel, AFolderThatCannotBeReadIsANoteNotAFailure) {
 TEST_F(ReviewModel, TheStateSelectsATrialAndLoadsItsSeriesOnOneTimeAxis) {
   ReviewState state;
   state.set_cache_dir(test::scratch_dir("review_cache_e"));
-  state.open_folder(*session_);
+  state.open_folder(session());
   const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(60);
   while ((state.busy() || !state.view()) && std::chrono::steady_clock::now() < deadline) {
     state.update();
@@ -213,13 +200,13 @@ TEST_F(ReviewModel, ALengthCorrectionAppliesToItsFolderWithTheDefaultFusionOnly)
   const std::string fit_trial = plain.trials[0].job.trial;
   const fs::path file = dir / "S01-lengths.json";
   const test::CliRun fit =
-      test::run_lmc("length-correction fit " + test::shell_quote(session_->string()) + " --trial " + fit_trial +
+      test::run_lmc("length-correction fit " + test::shell_quote(session().string()) + " --trial " + fit_trial +
                         " --subject S01 -o " + test::shell_quote(file.string()),
                     dir);
   ASSERT_EQ(fit.exit_code, 0) << fit.all();
 
   ReviewBatchInput in = input(cache);
-  in.corrections.emplace(*session_, FolderLengthCorrection{file, read_length_correction(file)});
+  in.corrections.emplace(session(), FolderLengthCorrection{file, read_length_correction(file)});
   const ReviewBatch corrected = run(in);
   ASSERT_EQ(corrected.trials.size(), 2u);
   EXPECT_EQ(corrected.processed_now, 2);  // not the plain results from the cache
@@ -239,7 +226,7 @@ TEST_F(ReviewModel, ALengthCorrectionAppliesToItsFolderWithTheDefaultFusionOnly)
   in.options.process.method = FusionMethod::kReference;
   const ReviewBatch reference = run(in);
   ASSERT_TRUE(reference.trials[0].outcome.ok) << reference.trials[0].outcome.error;
-  EXPECT_FALSE(folder_options(in.options, in.corrections, *session_).process.length_correction.has_value());
+  EXPECT_FALSE(folder_options(in.options, in.corrections, session()).process.length_correction.has_value());
   bool noted = false;
   for (const auto& n : reference.notes)
     noted = noted || n.find("not applied with the reference fusion") != std::string::npos;
@@ -248,15 +235,15 @@ TEST_F(ReviewModel, ALengthCorrectionAppliesToItsFolderWithTheDefaultFusionOnly)
   // Through the state: a bad file is named and changes nothing; a good one is shown in the view.
   ReviewState state;
   state.set_cache_dir(cache);
-  state.open_folder(*session_);
+  state.open_folder(session());
   const fs::path bad = dir / "broken.json";
   std::ofstream(bad) << "{\"factor\": [1, 2";
-  EXPECT_FALSE(state.set_length_correction(*session_, bad));
+  EXPECT_FALSE(state.set_length_correction(session(), bad));
   EXPECT_NE(state.problem().find("broken.json"), std::string::npos) << state.problem();
-  EXPECT_EQ(state.length_correction(*session_), nullptr);
-  ASSERT_TRUE(state.set_length_correction(*session_, file));
-  ASSERT_NE(state.length_correction(*session_), nullptr);
-  EXPECT_EQ(state.length_correction(*session_)->correction.subject, "S01");
+  EXPECT_EQ(state.length_correction(session()), nullptr);
+  ASSERT_TRUE(state.set_length_correction(session(), file));
+  ASSERT_NE(state.length_correction(session()), nullptr);
+  EXPECT_EQ(state.length_correction(session())->correction.subject, "S01");
   const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(60);
   while ((state.busy() || !state.view() || !state.view()->result->length_correction) &&
          std::chrono::steady_clock::now() < deadline) {
@@ -265,8 +252,8 @@ TEST_F(ReviewModel, ALengthCorrectionAppliesToItsFolderWithTheDefaultFusionOnly)
   }
   ASSERT_TRUE(state.view());
   EXPECT_TRUE(state.view()->result->length_correction.has_value());
-  state.clear_length_correction(*session_);
-  EXPECT_EQ(state.length_correction(*session_), nullptr);
+  state.clear_length_correction(session());
+  EXPECT_EQ(state.length_correction(session()), nullptr);
   fs::remove_all(dir);
 }
 

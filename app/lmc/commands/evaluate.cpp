@@ -12,10 +12,10 @@
 #include "core/io/pose_source.h"
 #include "core/metric/controller_contribution.h"
 #include "core/metric/coverage.h"
-#include "core/metric/coverage_report.h"
 #include "core/metric/layout_report.h"
-#include "core/metric/robust_terms_report.h"
+#include "core/reports/coverage_report.h"
 #include "core/reports/layout_report_files.h"
+#include "core/reports/robust_terms_report.h"
 #include "core/visibility/frame_prep.h"
 #include "core/visibility/visibility_kernel.h"
 
@@ -47,7 +47,7 @@ void setup_evaluate(CLI::App& app) {
                  "What-if sensor models from the catalogue (assets/sensors/sensors.json): one id for every "
                  "controller, or one per controller in layout order (lmc2,lmc2,lmc,lmc)");
   app.add_option("--radius-mm", opt->radius_mm, "Phalanx radius (mm)")->check(CLI::NonNegativeNumber);
-  app.add_flag("--json", opt->json, "Print JSON (keys: see core/metric/coverage_report.h) instead of text");
+  app.add_flag("--json", opt->json, "Print JSON (keys: see core/reports/coverage_report.h) instead of text");
   app.add_option("--report", opt->report_dir,
                  "Also write a one-page layout report (report.md) into this folder: verdict, metric terms, what "
                  "each controller contributes, coverage per reference pose");

@@ -13,10 +13,10 @@
 #include "core/common/error.h"
 #include "core/io/layout_json.h"
 #include "core/io/pose_source.h"
-#include "core/metric/coverage_report.h"
-#include "core/metric/robust_terms_report.h"
 #include "core/optimise/multi_start.h"
 #include "core/optimise/pso.h"
+#include "core/reports/coverage_report.h"
+#include "core/reports/robust_terms_report.h"
 #include "core/visibility/frame_prep.h"
 #include "core/visibility/visibility_kernel.h"
 

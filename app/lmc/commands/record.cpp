@@ -85,8 +85,9 @@ std::string record_status_line(const HubSnapshot& snap, const RecorderStatus& re
   return s.str();
 }
 
-// Device messages go to stderr as they happen; --quiet keeps only the ones that need attention.
-bool routine(const std::string& m) {
+// Device messages go to stderr as they happen; --quiet keeps only the ones that need attention,
+// leaving out the routine notes that a controller connected or was assigned its slot.
+bool is_connection_note(const std::string& m) {
   return m.find(" connected (") != std::string::npos || m.find(" assigned to ") != std::string::npos;
 }
 
@@ -186,7 +187,7 @@ void run_record(const RecordOptions& opt) {
     for (const auto& m : s.new_notices)
       if (!opt.quiet) std::cerr << "lmc record: " << m << "\n";
     for (const auto& m : s.new_messages)
-      if (!opt.quiet || !routine(m)) std::cerr << "lmc record: " << m << "\n";
+      if (!opt.quiet || !is_connection_note(m)) std::cerr << "lmc record: " << m << "\n";
     if (lmc::cli::sigint_raised() && !stop.stop_requested()) {
       std::cerr << "\nlmc record: interrupted; stopping the trial\n";
       stop.request_stop();

@@ -1,5 +1,5 @@
 // lmc report — aggregate processed sessions (folders written by `lmc process`) across trials and
-// subjects into CSV tables and a Markdown summary (core/results/session_report.h).
+// subjects into CSV tables and a Markdown summary (core/reports/session_report.h).
 #include <algorithm>
 #include <filesystem>
 #include <iostream>
@@ -8,7 +8,7 @@
 #include "core/common/error.h"
 #include "core/io/atomic_write.h"
 #include "core/io/json_checked.h"
-#include "core/results/session_report.h"
+#include "core/reports/session_report.h"
 
 namespace {
 

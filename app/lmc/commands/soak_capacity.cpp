@@ -31,17 +31,19 @@ struct CapacityOptions {
   std::string title = "Recorder capacity on the simulated rig";
 };
 
-struct Run {
+// What one `lmc soak --json` report says about its run: the point measured, the frames lost and
+// why, the frames written and the trials' seconds.
+struct SoakRunReport {
   int devices = 0;
   double rate_hz = 0;
   std::int64_t lost = 0, lost_queue = 0, lost_writer = 0, written = 0;
   double trial_s = 0, source_fraction = 0;  // trial_s: the trials' planned seconds, summed
 };
 
-Run read_run(const std::string& path) {
+SoakRunReport read_soak_run_report(const std::string& path) {
   const nlohmann::json j = lmc::read_json_file(path);
   const lmc::JsonReader r(j, path);
-  Run run;
+  SoakRunReport run;
   run.devices = r.at("devices").integer();
   run.rate_hz = r.number("rate_hz");
   run.lost = static_cast<std::int64_t>(r.number("lost"));
@@ -54,7 +56,7 @@ Run read_run(const std::string& path) {
   return run;
 }
 
-std::string cell(const Run& r) {
+std::string losses_cell(const SoakRunReport& r) {
   std::string s = std::to_string(r.lost);
   if (r.lost > 0) {
     std::vector<std::string> why;
@@ -73,11 +75,11 @@ std::string cell(const Run& r) {
 }
 
 void run_capacity(const CapacityOptions& opt) {
-  std::map<std::pair<int, double>, std::vector<Run>> points;
+  std::map<std::pair<int, double>, std::vector<SoakRunReport>> points;
   std::set<int> devices;
   std::set<double> rates;
   for (const auto& path : opt.reports) {
-    const Run r = read_run(path);
+    const SoakRunReport r = read_soak_run_report(path);
     points[{r.devices, r.rate_hz}].push_back(r);
     devices.insert(r.devices);
     rates.insert(r.rate_hz);
@@ -94,7 +96,7 @@ void run_capacity(const CapacityOptions& opt) {
       std::string text = "—";
       if (it != points.end()) {
         text.clear();
-        for (const Run& r : it->second) text += (text.empty() ? "" : " / ") + cell(r);
+        for (const SoakRunReport& r : it->second) text += (text.empty() ? "" : " / ") + losses_cell(r);
       }
       std::cout << " " << text << " |";
     }
@@ -122,7 +124,7 @@ void run_capacity(const CapacityOptions& opt) {
     for (int n : devices) {
       const auto it = points.find({n, hz});
       if (it == points.end()) continue;
-      for (const Run& r : it->second) {
+      for (const SoakRunReport& r : it->second) {
         const double kept = r.trial_s > 0 ? static_cast<double>(r.written) / r.trial_s : std::nan("");
         s.x.push_back(n);
         s.y.push_back(kept);

@@ -2,8 +2,8 @@
 
 #include <gtest/gtest.h>
 
-#include "core/metric/coverage_report.h"
 #include "core/metric/placement_metric.h"
+#include "core/reports/coverage_report.h"
 
 namespace lmc {
 namespace {

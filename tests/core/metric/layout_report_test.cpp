@@ -4,6 +4,7 @@
 
 #include "core/hand/pose_set_generator.h"
 #include "core/io/layout_json.h"
+#include "core/reports/layout_report_markdown.h"
 
 namespace lmc {
 namespace layout_report_test {

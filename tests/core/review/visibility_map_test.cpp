@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "core/results/session_report.h"
+#include "core/reports/session_report.h"
 
 namespace lmc::visibility_map_test {
 

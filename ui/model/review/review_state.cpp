@@ -7,8 +7,8 @@
 
 #include "core/processing/length_correction_json.h"
 #include "core/processing/process_options_json.h"
+#include "core/reports/session_report.h"
 #include "core/results/processing_cache.h"
-#include "core/results/session_report.h"
 #include "core/review/review_export.h"
 
 namespace lmc::ui {

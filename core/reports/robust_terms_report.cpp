@@ -1,4 +1,4 @@
-#include "core/metric/robust_terms_report.h"
+#include "core/reports/robust_terms_report.h"
 
 #include <cstdio>
 

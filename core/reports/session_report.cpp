@@ -1,4 +1,4 @@
-#include "core/results/session_report.h"
+#include "core/reports/session_report.h"
 
 #include <cmath>
 #include <sstream>
@@ -30,18 +30,18 @@ MeanSd mean_sd(const std::vector<double>& v) {
 
 namespace {
 
-double num(const nlohmann::json& j) {
+double json_number_or_nan(const nlohmann::json& j) {
   return j.is_number() ? j.get<double>() : kNaN;
 }
 double at(const nlohmann::json& j, const char* key, size_t k) {
   return summary_element(j, key, k);
 }
 
-std::string f3(double v) {
+std::string three_decimals(double v) {
   return format_fixed(v, 3);
 }
 // A missing mean or SD (no value, or a single value has no SD) is written "n/a", never "nan" or 0.
-std::string pm(const MeanSd& m, int d = 2) {
+std::string mean_pm_sd(const MeanSd& m, int d = 2) {
   const auto part = [d](double v) { return std::isfinite(v) ? format_fixed(v, d) : std::string("n/a"); };
   return part(m.mean) + " ± " + part(m.sd);
 }
@@ -54,13 +54,13 @@ constexpr const char* kFingers[] = {"thumb", "index", "middle", "ring", "pinky"}
 
 SessionReport build_session_report(const std::vector<ReportInput>& inputs) {
   SessionReport rep;
-  struct Acc {
+  struct GroupValues {
     std::vector<double> finger_lmc[kNumFingers], finger_vicon[kNumFingers], finger_diff[kNumFingers];
     std::vector<double> rom_lmc[kNumAngles], rom_vicon[kNumAngles], rom_diff[kNumAngles], angle_diff[kNumAngles];
     std::map<std::string, std::vector<double>> vis;  // device → per-finger rates
     int trials = 0, with_vicon = 0;
   };
-  std::map<Group, Acc> groups;
+  std::map<Group, GroupValues> groups;
   std::vector<double> all_finger_diff, all_rom_diff, all_angle_diff;
   std::map<std::string, std::vector<double>> vis_by_layout;
 
@@ -76,7 +76,7 @@ SessionReport build_session_report(const std::vector<ReportInput>& inputs) {
     const auto& s = in.summary;
     const auto& tag = s.value("tag", nlohmann::json::object());
     const Group g{tag.value("layout", "unknown"), tag.value("pose", "unknown"), tag.value("motion", "unknown")};
-    Acc& acc = groups[g];
+    GroupValues& acc = groups[g];
     ++acc.trials;
     ++rep.trials;
     const bool vic = summary_has_vicon(s);
@@ -118,14 +118,15 @@ SessionReport build_session_report(const std::vector<ReportInput>& inputs) {
     trials << csv_cell(in.subject) << ',' << csv_cell(s.value("trial", "")) << ',' << std::get<0>(g) << ','
            << std::get<1>(g) << ',' << std::get<2>(g) << ',' << tag.value("repetition", 0) << ','
            << s.value("method", "") << ',' << s.value("frames", 0) << ',' << (vic ? 1 : 0);
-    for (size_t k = 0; k < kNumFingers; ++k) trials << ',' << f3(at(lmc, "finger_mean_mm", k));
-    for (size_t k = 0; k < kNumFingers; ++k) trials << ',' << f3(vic ? at(vicon, "finger_mean_mm", k) : kNaN);
-    for (size_t k = 0; k < kNumAngles; ++k) trials << ',' << f3(at(lmc, "angle_rom_deg", k));
-    for (size_t k = 0; k < kNumAngles; ++k) trials << ',' << f3(vic ? at(vicon, "angle_rom_deg", k) : kNaN);
+    for (size_t k = 0; k < kNumFingers; ++k) trials << ',' << three_decimals(at(lmc, "finger_mean_mm", k));
+    for (size_t k = 0; k < kNumFingers; ++k)
+      trials << ',' << three_decimals(vic ? at(vicon, "finger_mean_mm", k) : kNaN);
+    for (size_t k = 0; k < kNumAngles; ++k) trials << ',' << three_decimals(at(lmc, "angle_rom_deg", k));
+    for (size_t k = 0; k < kNumAngles; ++k) trials << ',' << three_decimals(vic ? at(vicon, "angle_rom_deg", k) : kNaN);
     const auto lag =
         s.contains("comparison") ? s["comparison"].value("lag", nlohmann::json::object()) : nlohmann::json::object();
     trials << ',' << (lag.value("clear", false) ? std::to_string(lag.value("frames", 0)) : std::string("nan")) << ','
-           << f3(lag.contains("correlation") ? num(lag["correlation"]) : kNaN) << '\n';
+           << three_decimals(lag.contains("correlation") ? json_number_or_nan(lag["correlation"]) : kNaN) << '\n';
   }
   rep.trials_csv = trials.str();
 
@@ -138,24 +139,25 @@ SessionReport build_session_report(const std::vector<ReportInput>& inputs) {
 
   md << "# Processing report\n\n" << rep.trials << " trial(s), " << rep.trials_with_vicon << " with Vicon.\n\n";
   md << "Differences are LMC − Vicon (the paper quotes Vicon − LMC for finger length).\n\n";
-  md << "* Finger length difference, all fingers and trials: " << pm(mean_sd(all_finger_diff))
+  md << "* Finger length difference, all fingers and trials: " << mean_pm_sd(mean_sd(all_finger_diff))
      << " mm (n = " << mean_sd(all_finger_diff).n << ")\n";
   md << "* Joint angle difference (per frame, averaged per trial), all joints and trials: "
-     << pm(mean_sd(all_angle_diff)) << "° (n = " << mean_sd(all_angle_diff).n << ")\n";
-  md << "* Range-of-motion difference, all joints and trials: " << pm(mean_sd(all_rom_diff))
+     << mean_pm_sd(mean_sd(all_angle_diff)) << "° (n = " << mean_sd(all_angle_diff).n << ")\n";
+  md << "* Range-of-motion difference, all joints and trials: " << mean_pm_sd(mean_sd(all_rom_diff))
      << "° (n = " << mean_sd(all_rom_diff).n << ")\n";
   for (const auto& [layout, v] : vis_by_layout)
-    md << "* Visibility rate, layout " << layout << ": " << pm(mean_sd(v)) << "\n";
+    md << "* Visibility rate, layout " << layout << ": " << mean_pm_sd(mean_sd(v)) << "\n";
   md << "\n## Finger length (mm): LMC, Vicon, LMC − Vicon (mean ± SD over trials)\n\n";
   md << "| layout | pose | motion | n | finger | LMC | Vicon | LMC − Vicon |\n|---|---|---|---:|---|---:|---:|---:|\n";
   for (const auto& [g, acc] : groups) {
     const auto& [layout, pose, motion] = g;
     for (size_t k = 0; k < kNumFingers; ++k) {
       const MeanSd l = mean_sd(acc.finger_lmc[k]), v = mean_sd(acc.finger_vicon[k]), d = mean_sd(acc.finger_diff[k]);
-      fl << layout << ',' << pose << ',' << motion << ',' << kFingers[k] << ',' << acc.trials << ',' << f3(l.mean)
-         << ',' << f3(l.sd) << ',' << f3(v.mean) << ',' << f3(v.sd) << ',' << f3(d.mean) << ',' << f3(d.sd) << '\n';
+      fl << layout << ',' << pose << ',' << motion << ',' << kFingers[k] << ',' << acc.trials << ','
+         << three_decimals(l.mean) << ',' << three_decimals(l.sd) << ',' << three_decimals(v.mean) << ','
+         << three_decimals(v.sd) << ',' << three_decimals(d.mean) << ',' << three_decimals(d.sd) << '\n';
       md << "| " << layout << " | " << pose << " | " << motion << " | " << acc.trials << " | " << kFingers[k] << " | "
-         << pm(l) << " | " << pm(v) << " | " << pm(d) << " |\n";
+         << mean_pm_sd(l) << " | " << mean_pm_sd(v) << " | " << mean_pm_sd(d) << " |\n";
     }
   }
   md << "\n## Joint angles (°): range of motion LMC, Vicon, LMC − Vicon, and the angle difference LMC − Vicon per "
@@ -169,10 +171,11 @@ SessionReport build_session_report(const std::vector<ReportInput>& inputs) {
       const MeanSd l = mean_sd(acc.rom_lmc[k]), v = mean_sd(acc.rom_vicon[k]), d = mean_sd(acc.rom_diff[k]);
       const MeanSd fa = mean_sd(acc.angle_diff[k]);
       ja << layout << ',' << pose << ',' << motion << ',' << angle_name(static_cast<int>(k)) << ',' << acc.trials << ','
-         << f3(l.mean) << ',' << f3(l.sd) << ',' << f3(v.mean) << ',' << f3(v.sd) << ',' << f3(d.mean) << ','
-         << f3(d.sd) << ',' << f3(fa.mean) << ',' << f3(fa.sd) << '\n';
+         << three_decimals(l.mean) << ',' << three_decimals(l.sd) << ',' << three_decimals(v.mean) << ','
+         << three_decimals(v.sd) << ',' << three_decimals(d.mean) << ',' << three_decimals(d.sd) << ','
+         << three_decimals(fa.mean) << ',' << three_decimals(fa.sd) << '\n';
       md << "| " << layout << " | " << pose << " | " << motion << " | " << angle_name(static_cast<int>(k)) << " | "
-         << pm(l) << " | " << pm(v) << " | " << pm(d) << " | " << pm(fa) << " |\n";
+         << mean_pm_sd(l) << " | " << mean_pm_sd(v) << " | " << mean_pm_sd(d) << " | " << mean_pm_sd(fa) << " |\n";
     }
   }
   md << "\n## Visibility rate per device (mean ± SD over fingers and trials; −1 = never saw the hand)\n\n";
@@ -181,9 +184,9 @@ SessionReport build_session_report(const std::vector<ReportInput>& inputs) {
     const auto& [layout, pose, motion] = g;
     for (const auto& [dev, v] : acc.vis) {
       const MeanSd m = mean_sd(v);
-      vis << layout << ',' << pose << ',' << motion << ',' << dev << ',' << m.n << ',' << f3(m.mean) << ',' << f3(m.sd)
-          << '\n';
-      md << "| " << layout << " | " << pose << " | " << motion << " | " << dev << " | " << pm(m) << " |\n";
+      vis << layout << ',' << pose << ',' << motion << ',' << dev << ',' << m.n << ',' << three_decimals(m.mean) << ','
+          << three_decimals(m.sd) << '\n';
+      md << "| " << layout << " | " << pose << " | " << motion << " | " << dev << " | " << mean_pm_sd(m) << " |\n";
     }
   }
   rep.finger_length_csv = fl.str();

@@ -3,7 +3,7 @@
 #include <cmath>
 
 #include "core/common/number_format.h"
-#include "core/results/session_report.h"
+#include "core/reports/session_report.h"
 #include "core/results/trial_outputs.h"
 
 namespace lmc {

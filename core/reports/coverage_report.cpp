@@ -1,4 +1,4 @@
-#include "core/metric/coverage_report.h"
+#include "core/reports/coverage_report.h"
 
 #include <algorithm>
 #include <cstdio>
