@@ -197,11 +197,12 @@ TEST(RecordVerdictPanel, ShowsTheVerdictWithItsFiguresAndRedoAndNoteAreItsButton
   ASSERT_TRUE(redo);
   gui.click(redo->x, redo->y, body);
   EXPECT_EQ(action, VerdictAction::kRedo);
-  EXPECT_FALSE(note.awaiting_keyboard(ImGui::GetTime()));
+  EXPECT_FALSE(note.awaiting_keyboard(ImGui::GetTime(), ImGui::GetFrameCount()));
   const auto note_button = panel.anchors().centre("note");
   ASSERT_TRUE(note_button);
   gui.click(note_button->x, note_button->y, body);
-  EXPECT_TRUE(note.awaiting_keyboard(ImGui::GetTime())) << "the Note button opened the note line";
+  EXPECT_TRUE(note.awaiting_keyboard(ImGui::GetTime(), ImGui::GetFrameCount()))
+      << "the Note button opened the note line";
 }
 
 TEST(RecordNotePanel, TypedLettersAndEnterSubmitTheNoteOnTheTrial) {
@@ -213,9 +214,15 @@ TEST(RecordNotePanel, TypedLettersAndEnterSubmitTheNoteOnTheTrial) {
   const auto body = [&] { submitted = note.draw() || submitted; };
   EXPECT_EQ(gui.frame_text(body), "") << "closed: nothing drawn";
   note.open();
-  EXPECT_TRUE(note.awaiting_keyboard(ImGui::GetTime())) << "the tab's shortcuts wait for the field";
+  EXPECT_TRUE(note.awaiting_keyboard(ImGui::GetTime(), ImGui::GetFrameCount()))
+      << "the tab's shortcuts wait for the field";
+  // A loaded machine: five seconds pass before the field has had a frame; the shortcuts still wait
+  // (a Space typed into the note started a trial when only time bounded this).
+  EXPECT_TRUE(note.awaiting_keyboard(ImGui::GetTime() + 5.0, ImGui::GetFrameCount() + 2));
+  // A note line that is never drawn does not silence the shortcuts for good.
+  EXPECT_FALSE(note.awaiting_keyboard(ImGui::GetTime() + 5.0, ImGui::GetFrameCount() + 30));
   gui.frames(3, body);
-  EXPECT_FALSE(note.awaiting_keyboard(ImGui::GetTime())) << "the field has taken the keyboard";
+  EXPECT_FALSE(note.awaiting_keyboard(ImGui::GetTime(), ImGui::GetFrameCount())) << "the field has taken the keyboard";
   for (const char c : std::string("glove slipped")) {
     ImGui::GetIO().AddInputCharacter(static_cast<unsigned>(c));
     gui.frame(body);

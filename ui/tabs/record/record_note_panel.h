@@ -21,9 +21,13 @@ class RecordNotePanel {
   bool draw();
   const char* text() const { return text_; }
   void clear() { reset(); }
-  // True while the field has not yet taken the keyboard (bounded to 2 s: a note line that is not
-  // drawn in the current state must not silence the shortcuts).
-  bool awaiting_keyboard(double now) const { return open_ && !took_keyboard_ && now - opened_time_ < 2.0; }
+  // True while the field has not yet taken the keyboard. Bounded, so that a note line not drawn in
+  // the current state cannot silence the shortcuts for good, but by frames as well as by time: on a
+  // loaded machine two seconds can pass in a few frames, before the field has had its frame to take
+  // the keyboard, and a Space typed into the note then started a trial.
+  bool awaiting_keyboard(double now, int frame) const {
+    return open_ && !took_keyboard_ && (now - opened_time_ < 2.0 || frame - opened_frame_ < 30);
+  }
 
  private:
   void reset();

@@ -292,7 +292,8 @@ class RecordTab final : public Tab {
 
   void keys() {
     // Typing a reason or a note must not start a trial.
-    if (ImGui::GetIO().WantTextInput || trial_panel_.note().awaiting_keyboard(ImGui::GetTime())) return;
+    if (ImGui::GetIO().WantTextInput || trial_panel_.note().awaiting_keyboard(ImGui::GetTime(), ImGui::GetFrameCount()))
+      return;
     // N first: a Space or an R typed into the note in the same frame must not act.
     if (ImGui::IsKeyPressed('N', false)) {
       trial_panel_.note().open(true);
