@@ -33,7 +33,10 @@ wait_for() {
   done
   # What the screen showed, when ImageMagick is there to take it.
   if command -v import >/dev/null; then import -window root "$work/timed-out.png" && echo "screen: $work/timed-out.png"; fi
-  echo "timed out waiting for $what; journal:"; cat "$journal"; exit 1
+  echo "timed out waiting for $what; journal:"; cat "$journal"
+  echo "status lines:"; cat "$work/status-trace.txt" 2>/dev/null || true
+  echo "subject screen:"; tail -40 "$work/subject-trace.txt" 2>/dev/null || true
+  exit 1
 }
 press() { xdotool key --clearmodifiers "$1"; }
 # A click held for a few frames (a press and release inside one frame can be missed), at window
@@ -95,6 +98,9 @@ press F2  # the subject screen closes; it may cover the operator's window on one
 sleep 0.5
 focus_main
 press n
+# The note field takes the keyboard a frame or two after N; on a loaded machine (the suite, a
+# build beside it) that can be a second. A person sees the line open before typing; so does this.
+sleep 1
 xdotool type --delay 30 "cuff loose"
 press Return; wait_for '"text":"cuff loose"' 1 "the note"
 sleep 0.5

@@ -10,7 +10,7 @@
 #include "core/io/layout_json.h"
 #include "core/io/sensor_catalogue_json.h"
 #include "tests/support/scratch_dir.h"
-#include "tests/ui/headless_imgui.h"
+#include "tests/ui/inspector_fixture.h"
 #include "ui/model/layout/layout_actions.h"
 #include "ui/tabs/layout/inspector_panel.h"
 
@@ -24,19 +24,7 @@ const SensorModel& model_sensor(const std::string& id) {
 }
 
 // The Inspector at the width the Layout tab gives its right-hand panels (470 px less the frame).
-struct ModelInspector : ::testing::Test {
-  HeadlessImGui gui{460, 900};
-  std::shared_ptr<LayoutTabState> state = std::make_shared<LayoutTabState>(make_document(default_new_layout()));
-  InspectorPanel inspector{state};
-  std::function<void()> body() {
-    return [this] { inspector.draw(); };
-  }
-  void click(const std::string& anchor) {
-    gui.frame(body());
-    const auto c = inspector.anchors().centre(anchor);
-    ASSERT_TRUE(c.has_value()) << anchor << " is not on screen";
-    gui.click(c->x, c->y, body());
-  }
+struct ModelInspector : test::InspectorAt<460> {
   void pick_model(const std::string& id) {
     click("model");
     click("model." + id);

@@ -10,6 +10,7 @@
 
 #include "core/visibility/blind_controllers.h"
 #include "tests/ui/headless_imgui.h"
+#include "tests/ui/inspector_fixture.h"
 #include "ui/model/current_layout.h"
 #include "ui/model/layout/layout_actions.h"
 #include "ui/tabs/layout/coverage_panel.h"
@@ -377,20 +378,7 @@ TEST_F(OptimiserAt1280x800, SettingsRunningAndCancelledLinesAreNotCut) {
 
 // ---- inspector and coverage panels on their own ---------------------------------------------------
 
-struct InspectorFixture : ::testing::Test {
-  HeadlessImGui gui{700, 900};
-  std::shared_ptr<LayoutTabState> state = std::make_shared<LayoutTabState>(make_document(default_new_layout()));
-  InspectorPanel inspector{state};
-  std::function<void()> body() {
-    return [this] { inspector.draw(); };
-  }
-  void click(const std::string& anchor) {
-    gui.frame(body());
-    const auto c = inspector.anchors().centre(anchor);
-    ASSERT_TRUE(c.has_value()) << anchor << " is not on screen";
-    gui.click(c->x, c->y, body());
-  }
-};
+using InspectorFixture = test::InspectorAt<700>;
 
 TEST_F(InspectorFixture, AddSelectsTheNewControllerAndRemoveTakesItAwayEachOneUndoStep) {
   state->select(0);
