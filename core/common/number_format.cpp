@@ -13,8 +13,8 @@ namespace {
 // "%.*f" by integer arithmetic for up to 9 decimals and values below ~9e18 / 10^decimals: v is
 // m · 2^e exactly, so v · 10^d is m · 10^d · 2^e, a 128-bit integer shifted, and the discarded bits
 // say exactly whether the value lies below, on or above the halfway point — printf's rule (round
-// the binary value, ties to even) with no floating-point step to blur it. About a fifth of what
-// the general formatter costs; false hands a value it does not cover to the general way.
+// the binary value, ties to even) with no floating-point step to blur it, and cheaper than the
+// general formatter (docs/results/processing.md); false hands a value it does not cover on.
 bool append_fixed_by_integers(std::string& out, double v, int decimals) {
   static constexpr std::uint64_t kPow10[] = {1, 10, 100, 1000, 10000, 100000, 1000000, 10000000, 100000000, 1000000000};
   if (decimals < 0 || decimals > 9) return false;

@@ -294,7 +294,8 @@ class RowParser {
 
   // NaN is how the formats write "missing"; infinity and magnitudes no controller can measure are
   // refused with the value, so they cannot pass as a hand or as "missing". The test comes apart from
-  // the message so that a coordinate's name is built only for a message (a trial has ~100,000).
+  // the message so that a coordinate's name is built only for a message (a trial has tens of
+  // thousands of coordinates).
   static bool is_implausible(double v) {
     return std::isinf(v) || (std::isfinite(v) && std::fabs(v) > kMaxAbsCoordinateMm);
   }

@@ -208,7 +208,7 @@ TrcData parse_trc_text(std::string_view content, const std::string& source_name)
           continue;
         }
         const auto v = text::parse_double(cell.text);
-        // The cell's name is built only for a message: a Vicon file holds millions of cells.
+        // The cell's name is built only for a message: a trial's file holds tens of thousands of cells.
         const auto what = [&] {
           return "marker '" + trc.marker_names[static_cast<size_t>(m)] + "' " + static_cast<char>('X' + a);
         };
