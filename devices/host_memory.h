@@ -9,4 +9,11 @@ namespace lmc::devices {
 // keeps the highest burst's size although the memory it uses stays flat.
 void return_freed_memory();
 
+// The opposite policy, for a batch that allocates and frees the same large buffers trial after
+// trial (`lmc process`): freed memory stays in the process for the next trial instead of going back
+// to the system and being faulted in and zeroed again. Both of glibc's limits must be set: setting
+// either alone stops glibc adapting the other, and the system time grew instead (80-trial subject:
+// 0.8 s of system time by default, 2.2–2.6 s with one limit, 0.3–0.4 s with both).
+void keep_freed_memory_for_reuse();
+
 }  // namespace lmc::devices

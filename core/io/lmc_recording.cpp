@@ -467,7 +467,12 @@ std::string lmc_recording_header(RecordingKind kind) {
 
 std::string format_lmc_row(const HandFrame& frame, RecordingKind kind, const FingerLabels* labels) {
   std::string out;
-  out.reserve(kind == RecordingKind::kRaytraced ? 1400 : 1100);
+  out.reserve(kind == RecordingKind::kRaytraced ? 1400 : 1700);
+  append_lmc_row(out, frame, kind, labels);
+  return out;
+}
+
+void append_lmc_row(std::string& out, const HandFrame& frame, RecordingKind kind, const FingerLabels* labels) {
   if (kind == RecordingKind::kRaytraced) {
     std::string value;
     const auto put_int = [&](std::int64_t v, bool first) {
@@ -500,7 +505,7 @@ std::string format_lmc_row(const HandFrame& frame, RecordingKind kind, const Fin
       append_padded(out, label_text(label), false);
     }
     out += '\n';
-    return out;
+    return;
   }
   text::append_int(out, frame.device_id);
   out += '\t';
@@ -519,25 +524,28 @@ std::string format_lmc_row(const HandFrame& frame, RecordingKind kind, const Fin
     for (int i = 0; i < kNumHandPoints; ++i) out += "nan,nan,nan\t";
   }
   out += '\n';
-  return out;
 }
 
-void write_lmc_recording(std::ostream& out, const LmcRecording& recording) {
+std::string format_lmc_recording(const LmcRecording& recording) {
   if (recording.kind == RecordingKind::kRaytraced && recording.visibility.size() != recording.rows.size()) {
     throw Error("raytraced recording has " + std::to_string(recording.rows.size()) + " rows but " +
                 std::to_string(recording.visibility.size()) + " visibility label sets");
   }
-  out << lmc_recording_header(recording.kind);
+  std::string out = lmc_recording_header(recording.kind);
+  out.reserve(out.size() + recording.rows.size() * (recording.kind == RecordingKind::kRaytraced ? 1400 : 1700));
   for (size_t i = 0; i < recording.rows.size(); ++i) {
     const FingerLabels* labels = recording.kind == RecordingKind::kRaytraced ? &recording.visibility[i] : nullptr;
-    out << format_lmc_row(recording.rows[i], recording.kind, labels);
+    append_lmc_row(out, recording.rows[i], recording.kind, labels);
   }
+  return out;
+}
+
+void write_lmc_recording(std::ostream& out, const LmcRecording& recording) {
+  out << format_lmc_recording(recording);
 }
 
 void save_lmc_recording(const std::filesystem::path& path, const LmcRecording& recording) {
-  std::ostringstream out;
-  write_lmc_recording(out, recording);
-  write_file_atomically(path, out.str());
+  write_file_atomically(path, format_lmc_recording(recording));
 }
 
 }  // namespace lmc

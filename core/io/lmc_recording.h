@@ -47,6 +47,8 @@ LmcRecording parse_lmc_recording_text(std::string_view content, const std::strin
 // Writes `recording` in the variant given by recording.kind; numbers are written so that
 // reading them back gives the same doubles.
 void write_lmc_recording(std::ostream& out, const LmcRecording& recording);
+// The same text as one string, built without a stream (a batch writes 80 of these).
+std::string format_lmc_recording(const LmcRecording& recording);
 // Atomic file write (temporary file + rename).
 void save_lmc_recording(const std::filesystem::path& path, const LmcRecording& recording);
 
@@ -54,5 +56,6 @@ void save_lmc_recording(const std::filesystem::path& path, const LmcRecording& r
 // row, each including its trailing newline.
 std::string lmc_recording_header(RecordingKind kind);
 std::string format_lmc_row(const HandFrame& frame, RecordingKind kind, const FingerLabels* labels = nullptr);
+void append_lmc_row(std::string& out, const HandFrame& frame, RecordingKind kind, const FingerLabels* labels = nullptr);
 
 }  // namespace lmc

@@ -137,20 +137,27 @@ std::string format_fused_points(const TrialResult& r) {
     for (int i = 0; i < kNumHandPoints; ++i) hf.point(i) = r.fused.at(f, i);
     rec.rows.push_back(hf);
   }
-  std::ostringstream o;
-  write_lmc_recording(o, rec);
-  return o.str();
+  return format_lmc_recording(rec);
+}
+
+std::string trial_summary_file_name(const TrialResult& r) {
+  return r.tag.trial + ".summary.json";
+}
+
+std::vector<TrialOutputFile> trial_output_files(const TrialResult& r) {
+  const std::string& base = r.tag.trial;
+  std::vector<TrialOutputFile> files;
+  files.push_back({base + ".results.txt", format_results_text(r)});
+  files.push_back({base + ".measures.tsv", format_measures_tsv(r)});
+  files.push_back({base + ".fused.txt", format_fused_points(r)});
+  files.push_back({trial_summary_file_name(r), trial_summary_json(r).dump(2) + "\n"});
+  return files;
 }
 
 std::filesystem::path write_trial_outputs(const TrialResult& r, const std::filesystem::path& dir) {
   std::filesystem::create_directories(dir);
-  const std::string base = r.tag.trial;
-  write_file_atomically(dir / (base + ".results.txt"), format_results_text(r));
-  write_file_atomically(dir / (base + ".measures.tsv"), format_measures_tsv(r));
-  write_file_atomically(dir / (base + ".fused.txt"), format_fused_points(r));
-  const auto summary = dir / (base + ".summary.json");
-  write_file_atomically(summary, trial_summary_json(r).dump(2) + "\n");
-  return summary;
+  for (const auto& file : trial_output_files(r)) write_file_atomically(dir / file.name, file.contents);
+  return dir / trial_summary_file_name(r);
 }
 
 }  // namespace lmc

@@ -10,6 +10,7 @@
 #include <filesystem>
 #include <nlohmann/json_fwd.hpp>
 #include <string>
+#include <vector>
 
 #include "core/processing/trial_pipeline.h"
 
@@ -19,6 +20,16 @@ namespace lmc {
 std::string format_results_text(const TrialResult& r);
 std::string format_measures_tsv(const TrialResult& r);
 std::string format_fused_points(const TrialResult& r);
+
+// The four files' names and contents, formatted but not yet written (a batch formats them on the
+// thread that processed the trial and writes them on another, core/io/file_committer.h).
+struct TrialOutputFile {
+  std::string name;
+  std::string contents;
+};
+std::vector<TrialOutputFile> trial_output_files(const TrialResult& r);
+// The summary's file name among them.
+std::string trial_summary_file_name(const TrialResult& r);
 
 // Writes the four files into `dir` (created if needed) atomically; returns the summary path.
 std::filesystem::path write_trial_outputs(const TrialResult& r, const std::filesystem::path& dir);

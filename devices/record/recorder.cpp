@@ -254,7 +254,7 @@ void Recorder::fail(const std::string& message) {
 
 void Recorder::write_queued_frame(const QueuedFrame& queued, std::string& buffer, std::vector<PendingRow>& pending) {
   const HandFrame& f = queued.frame;
-  buffer += format_lmc_row(f, RecordingKind::kRaw);
+  append_lmc_row(buffer, f, RecordingKind::kRaw);
   pending.push_back({f.device_id, f.frame_id, f.timestamp_us, f.hand_present, buffer.size()});
 }
 

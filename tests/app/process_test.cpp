@@ -173,6 +173,31 @@ TEST_F(ProcessCli, SessionWithMalformedTrialsReportsEachAndProcessesTheRest) {
   EXPECT_NE(vis.find("initial,horizontal,static,LMC1"), std::string::npos) << vis;
 }
 
+TEST_F(ProcessCli, AnOutputThatCannotBeWrittenFailsItsTrialByName) {
+  add_trial("Naiv_Static101", 4, 2.0);
+  add_trial("Naiv_Static102", 4, 2.0);
+  const auto out = dir_ / "out";
+  // A folder where one trial's fused file should go: the rename over it fails on the committer's
+  // thread, after the trial itself was processed.
+  std::filesystem::create_directories(out / "Naiv_Static102.fused.txt");
+  const CliRun r = run("process " + session_.string() + " --method reference -o " + out.string());
+  EXPECT_EQ(r.exit_code, 2) << r.all();
+  EXPECT_NE(r.all().find("ok      Naiv_Static101"), std::string::npos) << r.all();
+  EXPECT_NE(r.all().find("FAILED  Naiv_Static102: "), std::string::npos) << r.all();
+  EXPECT_NE(r.all().find("Naiv_Static102.fused.txt"), std::string::npos) << r.all();
+  EXPECT_NE(r.all().find("processed 1 of 2 trial(s)"), std::string::npos) << r.all();
+  const auto session = nlohmann::json::parse(read_text(out / "session.json"));
+  ASSERT_EQ(session["trials"].size(), 2u);
+  EXPECT_TRUE(session["trials"][0]["ok"].get<bool>());
+  EXPECT_FALSE(session["trials"][1]["ok"].get<bool>());
+  EXPECT_NE(session["trials"][1]["error"].get<std::string>().find("rename failed"), std::string::npos);
+  // The other trial's files are all there, and no temporary file is left beside them.
+  EXPECT_TRUE(std::filesystem::exists(out / "Naiv_Static101.fused.txt"));
+  for (const auto& e : std::filesystem::directory_iterator(out)) {
+    EXPECT_NE(e.path().filename().string().front(), '.') << e.path();
+  }
+}
+
 TEST_F(ProcessCli, SingleTrialWithExplicitViconAndBadArguments) {
   add_trial("Naiv_Index101", 4, 2.0);
   const auto out = dir_ / "one";
