@@ -119,13 +119,31 @@ MarkerSeries load_vicon_markers(const fs::path& path) {
   return m;
 }
 
-Layout resolve_layout(const TrialSources& job, const std::optional<std::string>& layout, std::string* used) {
+namespace {
+
+// A trial's recorder sidecar, read when first needed and then only once (the layout and the
+// simulator's ground truth both come from it).
+class SidecarOnce {
+ public:
+  explicit SidecarOnce(const TrialSources& job) : job_(job) {}
+  const RecorderSidecar& get() {
+    if (!side_) side_ = read_recorder_sidecar(*job_.sidecar);
+    return *side_;
+  }
+
+ private:
+  const TrialSources& job_;
+  std::optional<RecorderSidecar> side_;
+};
+
+Layout resolve_layout_with(const TrialSources& job, const std::optional<std::string>& layout, SidecarOnce& sidecar,
+                           std::string* used) {
   if (layout) {
     if (used) *used = *layout;
     return load_layout_or_preset(*layout);
   }
   if (job.sidecar) {
-    const RecorderSidecar side = read_recorder_sidecar(*job.sidecar);
+    const RecorderSidecar& side = sidecar.get();
     if (side.layout.is_object()) {
       if (used) *used = job.sidecar->filename().string() + " (recorded layout)";
       return layout_from_json(side.layout, job.sidecar->string() + "#/layout");
@@ -147,11 +165,19 @@ Layout resolve_layout(const TrialSources& job, const std::optional<std::string>&
   return load_layout_or_preset(preset);
 }
 
+}  // namespace
+
+Layout resolve_layout(const TrialSources& job, const std::optional<std::string>& layout, std::string* used) {
+  SidecarOnce sidecar(job);
+  return resolve_layout_with(job, layout, sidecar, used);
+}
+
 ProcessedTrial process_sources(const TrialSources& job, const BatchOptions& options, const ViconMapping& mapping) {
   ProcessedTrial out;
   out.trial = job.trial;
   try {
-    const Layout layout = resolve_layout(job, options.layout, &out.layout_used);
+    SidecarOnce sidecar(job);
+    const Layout layout = resolve_layout_with(job, options.layout, sidecar, &out.layout_used);
     const LmcRecording rec = read_lmc_recording(job.lmc);
     HandTrack vicon_track;
     const HandTrack* vicon = nullptr;
@@ -181,7 +207,7 @@ ProcessedTrial process_sources(const TrialSources& job, const BatchOptions& opti
     }
     if (job.sidecar && vicon != nullptr) {
       // The simulator notes which device-clock time its ground truth's frame 0 is (sessions/README.md).
-      const RecorderSidecar side = read_recorder_sidecar(*job.sidecar);
+      const RecorderSidecar& side = sidecar.get();
       if (side.ground_truth) popt.resample.grid_start_us = side.ground_truth->device_clock_at_time_zero_us;
     }
     TrialResult r = process_trial(job.trial, rec, layout, vicon, popt);
