@@ -211,6 +211,13 @@ ProcessedTrial process_sources(const TrialSources& job, const BatchOptions& opti
       if (side.ground_truth) popt.resample.grid_start_us = side.ground_truth->device_clock_at_time_zero_us;
     }
     TrialResult r = process_trial(job.trial, rec, layout, vicon, popt);
+    std::optional<TrialResult> other_method;
+    if (options.compare_methods && vicon != nullptr) {
+      ProcessOptions other = popt;
+      other.method =
+          options.process.method == FusionMethod::kReference ? FusionMethod::kDefault : FusionMethod::kReference;
+      other_method = process_trial_with_method(r, job.trial, other);
+    }
     r.lmc_source = job.lmc.string();
     if (job.vicon) r.vicon_source = job.vicon->string();
     for (const auto& w : r.warnings) out.warnings.push_back(w);
@@ -218,11 +225,8 @@ ProcessedTrial process_sources(const TrialSources& job, const BatchOptions& opti
     r.layout_source = out.layout_used;
     out.summary = trial_summary_json(r);
     if (options.on_result) options.on_result(r);
-    if (options.compare_methods && vicon != nullptr) {
-      ProcessOptions other = popt;
-      other.method =
-          options.process.method == FusionMethod::kReference ? FusionMethod::kDefault : FusionMethod::kReference;
-      const TrialResult r2 = process_trial(job.trial, rec, layout, vicon, other);
+    if (other_method) {
+      const TrialResult& r2 = *other_method;
       MethodErrors mine = trial_errors(r, &r2);
       MethodErrors theirs = trial_errors(r2, &r);
       if (options.process.method == FusionMethod::kReference) {

@@ -18,10 +18,61 @@ FusionMethod fusion_method_from_name(const std::string& name) {
 
 namespace {
 
+// The reference method is the study's algorithm, reproduced byte for byte; a correction fitted on
+// the default fusion's lengths would silently turn it into something else.
+void refuse_length_correction_with_reference(const ProcessOptions& options) {
+  if (options.length_correction && options.method == FusionMethod::kReference) {
+    throw Error(
+        "a length correction applies to the default fusion only (the reference method stays the study's "
+        "algorithm): drop the length correction or use the default method");
+  }
+}
+
 void trim_grid(GridTrial& g, int frames) {
   if (frames >= g.frame_count) return;
   g.frame_count = frames;
   for (auto& d : g.devices) d.track.resize(frames);
+}
+
+// Steps 4–6 on a result whose steps 1–3 are done (resampled grid, labels, world tracks, and the
+// trimmed Vicon in r.vicon when there is one).
+void fuse_measure_compare(TrialResult& r, const std::string& trial_name, const ProcessOptions& options) {
+  // 4. Fuse.
+  std::vector<const HandTrack*> tracks;
+  for (const auto& d : r.world.devices) tracks.push_back(&d.track);
+  if (options.method == FusionMethod::kReference) {
+    r.fused = fuse_reference(tracks, options.kalman);
+  } else {
+    std::vector<std::vector<float>> quality(r.device_frame.devices.size());
+    std::vector<const std::vector<float>*> qptr;
+    for (size_t d = 0; d < quality.size(); ++d) {
+      quality[d] = sample_quality(r.device_frame.devices[d].track, r.labels[d], options.smoother);
+      qptr.push_back(&quality[d]);
+    }
+    r.fused = fuse_default(tracks, qptr, options.smoother);
+  }
+
+  // 4'. Per-subject length correction (only when asked).
+  if (options.length_correction) {
+    apply_length_correction(r.fused, *options.length_correction);
+    r.length_correction = options.length_correction;
+    if (options.length_correction->fit_trial == trial_name) {
+      r.warnings.push_back(
+          "the length correction was fitted on this trial: its lengths here are not an independent test");
+    }
+  }
+
+  // 5. Measures.
+  r.lmc_frames = measure_track(r.fused);
+  r.lmc_stats = summarize(r.lmc_frames);
+
+  // 6. Compare.
+  if (r.has_vicon) {
+    r.vicon_frames = measure_track(r.vicon);
+    r.vicon_stats = summarize(r.vicon_frames);
+    r.comparison = compare_measures(r.lmc_frames, r.lmc_stats, r.vicon_frames, r.vicon_stats);
+    r.comparison.lag = estimate_lag(r.fused, r.vicon, options.max_lag_frames);
+  }
 }
 
 }  // namespace
@@ -35,13 +86,7 @@ TrialResult process_trial(const std::string& trial_name, const LmcRecording& rec
   r.input_kind = recording.kind;
   r.warnings = recording.warnings;
 
-  if (options.length_correction && options.method == FusionMethod::kReference) {
-    // The reference method is the study's algorithm, reproduced byte for byte; a correction fitted
-    // on the default fusion's lengths would silently turn it into something else.
-    throw Error(
-        "a length correction applies to the default fusion only (the reference method stays the study's "
-        "algorithm): drop the length correction or use the default method");
-  }
+  refuse_length_correction_with_reference(options);
   if (recording.rows.empty()) throw Error("the LMC recording has no data rows");
   const auto ids = recording.device_ids();
   if (!ids.empty() && ids.back() > layout.device_count()) {
@@ -91,43 +136,19 @@ TrialResult process_trial(const std::string& trial_name, const LmcRecording& rec
   r.world = r.device_frame;
   realign_to_world(r.world, layout, layout.name);
 
-  // 4. Fuse.
-  std::vector<const HandTrack*> tracks;
-  for (const auto& d : r.world.devices) tracks.push_back(&d.track);
-  if (options.method == FusionMethod::kReference) {
-    r.fused = fuse_reference(tracks, options.kalman);
-  } else {
-    std::vector<std::vector<float>> quality(r.device_frame.devices.size());
-    std::vector<const std::vector<float>*> qptr;
-    for (size_t d = 0; d < quality.size(); ++d) {
-      quality[d] = sample_quality(r.device_frame.devices[d].track, r.labels[d], options.smoother);
-      qptr.push_back(&quality[d]);
-    }
-    r.fused = fuse_default(tracks, qptr, options.smoother);
-  }
+  if (vicon != nullptr) r.vicon = std::move(vicon_trimmed);
+  fuse_measure_compare(r, trial_name, options);
+  return r;
+}
 
-  // 4'. Per-subject length correction (only when asked).
-  if (options.length_correction) {
-    apply_length_correction(r.fused, *options.length_correction);
-    r.length_correction = options.length_correction;
-    if (options.length_correction->fit_trial == trial_name) {
-      r.warnings.push_back(
-          "the length correction was fitted on this trial: its lengths here are not an independent test");
-    }
-  }
-
-  // 5. Measures.
-  r.lmc_frames = measure_track(r.fused);
-  r.lmc_stats = summarize(r.lmc_frames);
-
-  // 6. Compare.
-  if (r.has_vicon) {
-    r.vicon = std::move(vicon_trimmed);
-    r.vicon_frames = measure_track(r.vicon);
-    r.vicon_stats = summarize(r.vicon_frames);
-    r.comparison = compare_measures(r.lmc_frames, r.lmc_stats, r.vicon_frames, r.vicon_stats);
-    r.comparison.lag = estimate_lag(r.fused, r.vicon, options.max_lag_frames);
-  }
+TrialResult process_trial_with_method(const TrialResult& done, const std::string& trial_name,
+                                      const ProcessOptions& options) {
+  refuse_length_correction_with_reference(options);
+  // Everything of steps 1–3 as it is; steps 4–6 overwrite what they compute.
+  TrialResult r = done;
+  r.method = options.method;
+  r.length_correction.reset();
+  fuse_measure_compare(r, trial_name, options);
   return r;
 }
 

@@ -76,4 +76,11 @@ struct TrialResult {
 TrialResult process_trial(const std::string& trial_name, const LmcRecording& recording, const Layout& layout,
                           const HandTrack* vicon, const ProcessOptions& options);
 
+// The same trial fused by another method: `done` came from process_trial with options that differ
+// from `options` in the fusion method only, so its resampled grid, visibility labels, world tracks
+// and trimmed Vicon are reused and only fusion, measures and comparison run again (a method
+// comparison otherwise resamples and ray-traces every trial twice). Same result as process_trial.
+TrialResult process_trial_with_method(const TrialResult& done, const std::string& trial_name,
+                                      const ProcessOptions& options);
+
 }  // namespace lmc
