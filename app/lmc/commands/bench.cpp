@@ -30,6 +30,11 @@
 //                        {"name": "study-box" | "study-table" | "robust-table", "metric": "study" |
 //                        "robust", "bounds" (the --bounds text), "particles", "iterations",
 //                        "seconds", "evals_per_s", "best_cost", "layouts_stopped_early"}
+//   "processing"        with --processing DIR only (and then alone): {"input", "trials", "runs",
+//                        "threads", "default" and "both" (--compare-methods), each {"wall_seconds",
+//                        "cpu_seconds" (per run; CPU = user + system of the whole process),
+//                        "median_wall_s", "median_cpu_s"}}: the folder processed as lmc process
+//                        does, every output written and synced, into a scratch folder
 //   "robust_terms_cost" robust-table's seconds / study-table's − 1: what the robust metric's terms
 //                        cost a whole search on the same bounds (only when both ran)
 #include <tbb/info.h>
@@ -45,6 +50,7 @@
 #include <random>
 
 #include "app/lmc/command.h"
+#include "app/lmc/commands/bench_processing.h"
 #include "core/io/layout_json.h"
 #include "core/io/pose_source.h"
 #include "core/metric/layout_tally.h"
@@ -65,6 +71,8 @@ struct BenchOptions {
   bool no_search = false;
   std::vector<std::string> searches{"study-box", "study-table", "robust-table"};
   bool json = false;
+  std::string processing;  // a session folder: time processing it instead
+  int runs = 3;
 };
 
 // The timed searches. study-box is the study's search as the authors ran it; the table pair runs
@@ -225,7 +233,16 @@ void setup_bench(CLI::App& app) {
       ->delimiter(',')
       ->check(CLI::IsMember({"study-box", "study-table", "robust-table"}));
   app.add_flag("--json", opt->json, "Print JSON (keys documented in app/lmc/commands/bench.cpp)");
+  app.add_option("--processing", opt->processing,
+                 "Instead of the placement figures, time processing this session folder as lmc process does (default "
+                 "method, then both methods), outputs to a scratch folder");
+  app.add_option("--runs", opt->runs, "Runs of each processing figure (the median is reported)")
+      ->check(CLI::Range(1, 100));
   app.callback([opt] {
+    if (!opt->processing.empty()) {
+      lmc::cli::run_processing_bench(opt->processing, opt->runs, opt->json);
+      return;
+    }
     const lmc::PoseSet poses = lmc::load_poses("mc", opt->frames, lmc::kDefaultMonteCarloSeed);
     const auto frames = lmc::prepare_frames(poses.frames);
     const int threads = tbb::info::default_concurrency();

@@ -12,11 +12,10 @@
 #include "core/common/error.h"
 #include "core/common/number_format.h"
 #include "core/io/atomic_write.h"
-#include "core/io/file_committer.h"
 #include "core/processing/batch.h"
 #include "core/processing/length_correction_json.h"
 #include "core/processing/method_comparison.h"
-#include "core/results/trial_outputs.h"
+#include "core/results/batch_outputs.h"
 #include "core/session/session_trials.h"
 #include "devices/host_memory.h"
 
@@ -61,14 +60,6 @@ void run_process(const ProcessArgs& a) {
   if (!a.layout.empty()) options.layout = a.layout;
   if (!a.mapping.empty()) options.mapping = a.mapping;
   std::filesystem::create_directories(a.out);
-  // Each trial's files are formatted on the thread that processed it and written by the committer,
-  // so that no processing thread waits for the disk.
-  lmc::FileCommitter committer;
-  options.on_result = [&](const lmc::TrialResult& r) {
-    for (auto& file : lmc::trial_output_files(r)) {
-      committer.submit(std::filesystem::path(a.out) / file.name, std::move(file.contents), r.tag.trial);
-    }
-  };
   options.compare_methods = a.compare_methods;
 
   std::vector<std::string> notes;
@@ -77,14 +68,7 @@ void run_process(const ProcessArgs& a) {
   const auto jobs = lmc::session::trial_sources_for_input(a.input, vicon, &notes);
   for (const auto& n : notes) std::cout << "note: " << n << "\n";
 
-  auto outcomes = lmc::process_batch(jobs, options);
-  for (const auto& failure : committer.finish()) {
-    for (auto& o : outcomes) {
-      if (o.trial != failure.owner || !o.ok) continue;
-      o.ok = false;
-      o.error = failure.message;
-    }
-  }
+  const auto outcomes = lmc::process_and_write_batch(jobs, options, a.out);
 
   int failed = 0;
   lmc::MethodErrors ref_errors, def_errors;
