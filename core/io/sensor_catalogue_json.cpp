@@ -18,7 +18,8 @@ Eigen::Vector3d read_vec3(const JsonReader& r, const char* what) {
 
 SensorSpec read_model(const JsonReader& m) {
   m.only_keys({"id", "name", "fov_long_deg", "fov_short_deg", "range_near_mm", "range_far_mm", "axis_cut_mm",
-               "frame_rate_hz", "footprint_mm", "origin_in_case_mm", "leapc_product_ids", "sources"});
+               "frame_rate_hz", "footprint_mm", "origin_in_case_mm", "leapc_product_ids", "position_noise_sd_mm",
+               "sources"});
   SensorSpec spec;
   spec.id = m.string("id");
   if (spec.id.empty() || spec.id.size() > 32) m.at("id").fail("must be 1–32 characters");
@@ -54,10 +55,25 @@ SensorSpec read_model(const JsonReader& m) {
     if (pid < 0 || pid > 0xFFFF) pids.at(i).fail("a product id is 0 to 65535");
     spec.leapc_product_ids.push_back(static_cast<std::uint32_t>(pid));
   }
+  // Optional: a model without a published figure leaves it out (a null is a mistake, not "none").
+  if (m.json().contains("position_noise_sd_mm")) {
+    const auto sd = m.at("position_noise_sd_mm");
+    if (!sd.json().is_number() || !(sd.number() >= 0)) {
+      sd.fail("model \"" + spec.id + "\": position_noise_sd_mm must be a number ≥ 0 (mm), not " + sd.json().dump());
+    }
+    spec.position_noise_sd_mm = sd.number();
+  }
   const auto sources = m.at("sources");
-  sources.only_keys({"fov", "range", "axis_cut", "frame_rate", "footprint", "origin", "product_ids"});
+  sources.only_keys({"fov", "range", "axis_cut", "frame_rate", "footprint", "origin", "product_ids", "position_noise"});
   for (const char* key : {"fov", "range", "axis_cut", "frame_rate", "footprint", "origin", "product_ids"}) {
     if (sources.string(key).empty()) sources.at(key).fail("every figure needs its source");
+  }
+  if (spec.position_noise_sd_mm && sources.string("position_noise").empty()) {
+    sources.at("position_noise").fail("every figure needs its source");
+  }
+  if (!spec.position_noise_sd_mm && sources.has("position_noise")) {
+    sources.at("position_noise")
+        .fail("a source for position_noise_sd_mm, which model \"" + spec.id + "\" does not give");
   }
   return spec;
 }

@@ -4,10 +4,12 @@
 //     "models": [ { "id": "lmc2", "name": "Leap Motion Controller 2",
 //                   "fov_long_deg": 160, "fov_short_deg": 160, "range_near_mm": 100, "range_far_mm": 1100,
 //                   "axis_cut_mm": 666, "frame_rate_hz": 120, "footprint_mm": [84, 20, 12],
-//                   "origin_in_case_mm": [0, 12, 0], "leapc_product_ids": [4614],
+//                   "origin_in_case_mm": [0, 12, 0], "leapc_product_ids": [4614], "position_noise_sd_mm": 0.6,
 //                   "sources": { "fov": "...", "range": "...", "axis_cut": "...", "frame_rate": "...",
-//                                "footprint": "...", "origin": "...", "product_ids": "..." } }, ... ] }
-// Every figure must name its source: a model without one of the seven "sources" is refused.
+//                                "footprint": "...", "origin": "...", "product_ids": "...",
+//                                "position_noise": "..." } }, ... ] }
+// Every figure must name its source: a model without one of the seven "sources" is refused, and so is
+// one with position_noise_sd_mm (optional, a number ≥ 0) but no "position_noise" source.
 #include <filesystem>
 #include <nlohmann/json_fwd.hpp>
 #include <string>

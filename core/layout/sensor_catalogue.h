@@ -2,11 +2,13 @@
 // The controller models a layout can name (assets/sensors/sensors.json): per model what the engine
 // uses (SensorModel: field of view, near and far range, axis cut) and what the rest of the
 // workbench shows or simulates (name, nominal frame rate, case footprint, where the device origin
-// sits on the case, the LeapC product ids that identify it). The "study" entry is the study's own
-// model (600 mm, 150°×120°), what every layout without a model uses.
+// sits on the case, the LeapC product ids that identify it, how far a still point's reported position
+// scatters where the literature says). The "study" entry is the study's own model (600 mm,
+// 150°×120°), what every layout without a model uses.
 #include <Eigen/Core>
 #include <cstdint>
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -25,6 +27,10 @@ struct SensorSpec {
   // The device origin from the centre of the case's bottom face, device axes (mm).
   Eigen::Vector3d origin_in_case_mm = Eigen::Vector3d(0, 11.3, 0);
   std::vector<std::uint32_t> leapc_product_ids;
+  // How far a still point's reported position scatters, as an SD per axis (mm); empty where no
+  // figure is published (ir170) or where the model is the study's. The simulated rig uses it as
+  // this model's noise.
+  std::optional<double> position_noise_sd_mm;
 
   bool operator==(const SensorSpec&) const = default;
 };

@@ -26,6 +26,12 @@ const char* calibration_name(SimConfig::Calibration c) {
 
 }  // namespace
 
+double sim_noise_sigma_mm(const SimConfig& config, const SensorSpec* model) {
+  if (config.noise_sigma_mm) return *config.noise_sigma_mm;
+  if (model != nullptr && model->position_noise_sd_mm) return *model->position_noise_sd_mm;
+  return kDefaultSimNoiseSigmaMm;
+}
+
 void apply_motion_spec(SimConfig& c, const std::string& spec) {
   std::string m = spec;
   for (const char* prefix : {"horizontal/", "horizontal-", "vertical/", "vertical-"}) {
@@ -152,7 +158,10 @@ SimConfig sim_config_from_json(const nlohmann::json& j, const std::string& sourc
   c.latency_min_ms = r.number_or("latency_min_ms", c.latency_min_ms);
   c.latency_max_ms = r.number_or("latency_max_ms", c.latency_max_ms);
   if (r.has("noise")) c.noise = r.at("noise").boolean();
-  c.noise_sigma_mm = r.number_or("noise_sigma_mm", c.noise_sigma_mm);
+  if (r.has("noise_sigma_mm")) {
+    c.noise_sigma_mm = r.number("noise_sigma_mm");
+    if (*c.noise_sigma_mm < 0) r.at("noise_sigma_mm").fail("must be ≥ 0 mm (leave it out for each model's own)");
+  }
   if (r.has("fov_test")) c.fov_test = r.at("fov_test").boolean();
   c.range_mm = r.number_or("range_mm", c.range_mm);
   if (r.has("occlusion")) c.occlusion = r.at("occlusion").boolean();
@@ -249,7 +258,8 @@ nlohmann::json sim_config_to_json(const SimConfig& c) {
   j["latency_min_ms"] = c.latency_min_ms;
   j["latency_max_ms"] = c.latency_max_ms;
   j["noise"] = c.noise;
-  j["noise_sigma_mm"] = c.noise_sigma_mm;
+  // Only when configured: read back, a value would override every model's figure.
+  if (c.noise_sigma_mm) j["noise_sigma_mm"] = *c.noise_sigma_mm;
   j["fov_test"] = c.fov_test;
   j["range_mm"] = c.range_mm;
   j["occlusion"] = c.occlusion;

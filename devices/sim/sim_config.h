@@ -1,10 +1,11 @@
 #pragma once
 // Settings of the simulated rig. Every behaviour can be switched in JSON
 // (sim_config_from_json); the defaults imitate the study's four-controller rig: each device
-// 11–34 Hz (four devices sharing the USB bus, paper "Data Collection"), ≈1 mm noise, no hand
-// when the approach / field-of-view test fails, hidden fingers replaced by a lagging, biased
-// internal-model guess, coordinates cut at ±250 mm, an elbow 10–20 mm off (paper, Discussion)
-// and per-device calibration error equal to the layout's measured offsets.
+// 11–34 Hz (four devices sharing the USB bus, paper "Data Collection"), ≈1 mm noise (or the
+// controller model's own where the catalogue gives one: noise_sigma_mm below), no hand when the
+// approach / field-of-view test fails, hidden fingers replaced by a lagging, biased internal-model
+// guess, coordinates cut at ±250 mm, an elbow 10–20 mm off (paper, Discussion) and per-device
+// calibration error equal to the layout's measured offsets.
 //
 // Calibration convention: a simulated device reports p_d = Rᵀ·(p_true − t − c) where R, t are the
 // layout pose and c is the device's calibration error. Realigning with pose AND the layout's
@@ -30,9 +31,14 @@
 #include <Eigen/Core>
 
 #include "core/hand/reference_poses.h"
+#include "core/layout/sensor_catalogue.h"
 #include "devices/sim/study_errors.h"
 
 namespace lmc::devices {
+
+// The noise σ of a controller whose model has no figure in the catalogue (the study's model, ir170):
+// the simulator's own figure, which every rig of the study's model has always been simulated with.
+inline constexpr double kDefaultSimNoiseSigmaMm = 1.0;
 
 struct SimUnplug {
   std::string slot;
@@ -64,7 +70,12 @@ struct SimConfig {
   std::int64_t device_clock_start_us = 2'998'000'000;  // the Leap clock's epoch is arbitrary
 
   bool noise = true;
-  double noise_sigma_mm = 1.0;
+  // Gaussian noise σ per axis (mm) on every reported point. Unset (the default, JSON without the
+  // key or null): each controller uses its slot's model's catalogue figure (position_noise_sd_mm:
+  // lmc 1.75, lmc2 0.6), or kDefaultSimNoiseSigmaMm where the model has none, so a rig of the
+  // study's model is simulated as it always was. Set: this σ for every controller, whatever its
+  // model; a lab that measured its own rig's noise sets it. The stand-in model does not change it.
+  std::optional<double> noise_sigma_mm;
   bool fov_test = true;   // no hand when the approach / range / pyramid test fails
   double range_mm = 0;    // 0: the layout's sensor range
   bool occlusion = true;  // hidden fingers come from the internal model
@@ -93,6 +104,10 @@ struct SimConfig {
 
   double truth_rate_hz = 100.0;  // ground-truth TRC rate
 };
+
+// The noise σ (mm per axis) of a simulated controller of catalogue model `model` (nullptr: none):
+// the configured noise_sigma_mm, else the model's position_noise_sd_mm, else kDefaultSimNoiseSigmaMm.
+double sim_noise_sigma_mm(const SimConfig& config, const SensorSpec* model);
 
 SimConfig sim_config_from_json(const nlohmann::json& j, const std::string& source);
 nlohmann::json sim_config_to_json(const SimConfig& c);

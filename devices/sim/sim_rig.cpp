@@ -59,6 +59,7 @@ struct SimRig::Device {
   std::mt19937_64 rng;
   double rate_hz = 20;
   double rate_scale = 1.0;  // the model's nominal rate over the study controller's
+  double noise_sigma_mm = kDefaultSimNoiseSigmaMm;
   double next_time_s = 0;
   double last_time_s = -1;
   double reported_rate_hz = 0;
@@ -124,6 +125,7 @@ SimRig::SimRig(Layout layout, SimConfig config)
     const SensorSpec* own = catalogue.find(ld.model);
     const SensorSpec* study = catalogue.find(kStudySensorId);
     d->rate_scale = own && study ? own->frame_rate_hz / study->frame_rate_hz : 1.0;
+    d->noise_sigma_mm = sim_noise_sigma_mm(config_, own);
     d->info.tracking_mode = tracking_mode_name(tracking_mode_for_pose(ld.pose));
     switch (config_.calibration) {
       case SimConfig::Calibration::kLayout:
@@ -194,6 +196,10 @@ SimRig::~SimRig() = default;
 
 Eigen::Vector3d SimRig::calibration_error(int device) const {
   return devices_.at(static_cast<size_t>(device))->calibration;
+}
+
+double SimRig::noise_sigma_mm(int device) const {
+  return devices_.at(static_cast<size_t>(device))->noise_sigma_mm;
 }
 
 Eigen::Isometry3d SimRig::true_device_to_world(int device) const {
@@ -289,7 +295,10 @@ HandFrame SimRig::device_frame(Device& d, double t) {
 
   if (d.hand_model) apply_controller_hand_model(*d.hand_model, world);
 
-  std::normal_distribution<double> noise(0.0, config_.noise_sigma_mm);
+  // Unit draws scaled by the device's σ: the same draws as N(0, σ) gives (y·σ + 0), bit for bit,
+  // for every σ, and σ = 0 (which the distribution itself does not allow) still draws, so the
+  // device's stream and everything drawn after the noise stay where they were.
+  std::normal_distribution<double> noise(0.0, 1.0);
   const Eigen::Matrix3d rt = d.r.transpose();
   out.hand_present = true;
   for (int p = 0; p < kNumHandPoints; ++p) {
@@ -299,7 +308,7 @@ HandFrame SimRig::device_frame(Device& d, double t) {
     }
     Vec3 q = rt * (world.point(p) - d.origin);
     if (p == kElbow) q += d.elbow_error;
-    if (config_.noise) q += Vec3(noise(d.rng), noise(d.rng), noise(d.rng));
+    if (config_.noise) q += d.noise_sigma_mm * Vec3(noise(d.rng), noise(d.rng), noise(d.rng));
     if (config_.axis_cut)
       for (int k = 0; k < 3; ++k) q[k] = std::clamp(q[k], -config_.axis_cut_mm, config_.axis_cut_mm);
     out.point(p) = q;

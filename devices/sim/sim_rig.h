@@ -49,6 +49,8 @@ class SimRig {
   // Where device i really stands: p_world = R·p_device + t with the rotation error included
   // (sim_config.h); with no rotation error R is the layout's and t = pose + calibration_error.
   Eigen::Isometry3d true_device_to_world(int device) const;
+  // The noise σ (mm per axis) device i adds: its model's or the configured one (sim_noise_sigma_mm).
+  double noise_sigma_mm(int device) const;
 
   // A trial's countdown: the hand holds its start pose (it still sways) for `seconds` before its
   // motion begins, and unplug times count from then, so a simulated trial starts as a real one

@@ -1,8 +1,13 @@
 #pragma once
-// What the simulator's tests share: the paper's initial layout, and a simulator with every error
-// source off, so that a controller's realigned frame is exactly the hand it models.
+// What the simulator's tests share: the paper's initial layout, a simulator with every error
+// source off, so that a controller's realigned frame is exactly the hand it models, and a hash of a
+// whole trial for tests that pin the simulator's output bit for bit.
+#include <cstddef>
+#include <cstdint>
+
 #include "core/io/layout_json.h"
 #include "devices/sim/sim_config.h"
+#include "devices/sim/sim_rig.h"
 #include "tests/support/reference_data.h"
 
 namespace lmc::devices::sim_fixtures {
@@ -18,6 +23,23 @@ inline SimConfig exact() {
   c.axis_cut = false;
   c.occlusion = false;
   return c;
+}
+
+// FNV-1a over every frame's timing and coordinates, bit for bit.
+inline std::uint64_t trial_hash(const SimTrial& t) {
+  std::uint64_t h = 1469598103934665603ULL;
+  auto add = [&h](const void* p, std::size_t n) {
+    const auto* b = static_cast<const unsigned char*>(p);
+    for (std::size_t i = 0; i < n; ++i) h = (h ^ b[i]) * 1099511628211ULL;
+  };
+  for (const auto& e : t.events) {
+    add(&e.time_s, sizeof e.time_s);
+    if (!e.is_frame) continue;
+    add(&e.frame.host_receive_ns, sizeof e.frame.host_receive_ns);
+    add(&e.frame.frame.timestamp_us, sizeof e.frame.frame.timestamp_us);
+    for (const Vec3& p : e.frame.frame.points) add(p.data(), 3 * sizeof(double));
+  }
+  return h;
 }
 
 }  // namespace lmc::devices::sim_fixtures

@@ -20,6 +20,7 @@ namespace sim_study_errors_test {
 
 using sim_fixtures::exact;
 using sim_fixtures::paper_initial;
+using sim_fixtures::trial_hash;
 
 double bone(const HandFrame& f, int digit, int b) {
   return (f.point(digit_point(digit, b + 1)) - f.point(digit_point(digit, b))).norm();
@@ -42,23 +43,6 @@ int for_each_realigned(const Layout& layout, const SimConfig& c, int events, Fn 
     ++n;
   }
   return n;
-}
-
-// FNV-1a over every frame's timing and coordinates, bit for bit.
-std::uint64_t trial_hash(const SimTrial& t) {
-  std::uint64_t h = 1469598103934665603ULL;
-  auto add = [&h](const void* p, size_t n) {
-    const auto* b = static_cast<const unsigned char*>(p);
-    for (size_t i = 0; i < n; ++i) h = (h ^ b[i]) * 1099511628211ULL;
-  };
-  for (const auto& e : t.events) {
-    add(&e.time_s, sizeof e.time_s);
-    if (!e.is_frame) continue;
-    add(&e.frame.host_receive_ns, sizeof e.frame.host_receive_ns);
-    add(&e.frame.frame.timestamp_us, sizeof e.frame.frame.timestamp_us);
-    for (const Vec3& p : e.frame.frame.points) add(p.data(), 3 * sizeof(double));
-  }
-  return h;
 }
 
 TEST(SimStudyErrors, ScaleOnOneBoneMakesThatBoneScaleTimesTheTruthAndLeavesTheRest) {

@@ -37,6 +37,11 @@ TEST(SensorCatalogue, ShippedCatalogueHoldsTheFourModels) {
   EXPECT_EQ(c.for_product_id(0x0003)->id, "lmc");
   EXPECT_EQ(c.for_product_id(0x1203)->id, "ir170");
   EXPECT_EQ(c.for_product_id(0x9999), nullptr);
+  // Position noise where the literature gives it: the middle of each controller's repeatability range.
+  EXPECT_EQ(c.at("lmc", "test").position_noise_sd_mm.value_or(-1), 1.75);
+  EXPECT_EQ(lmc2.position_noise_sd_mm.value_or(-1), 0.6);
+  EXPECT_FALSE(c.at("study", "test").position_noise_sd_mm.has_value());
+  EXPECT_FALSE(c.at("ir170", "test").position_noise_sd_mm.has_value());
 }
 
 TEST(SensorCatalogue, UnknownModelIsRefusedNamingTheKnownOnes) {
@@ -99,6 +104,38 @@ TEST(SensorCatalogue, BadFilesAreRefusedNamingFileAndField) {
   j = one_model();
   j["models"][0]["colour"] = "grey";
   expect_catalogue_rejected(j, "/models/0/colour");
+}
+
+TEST(SensorCatalogue, PositionNoiseIsOptionalAndNeedsItsSource) {
+  EXPECT_FALSE(sensor_catalogue_from_json(one_model(), "ok.json").models[0].position_noise_sd_mm.has_value());
+  auto j = one_model();
+  j["models"][0]["position_noise_sd_mm"] = 1.3;
+  j["models"][0]["sources"]["position_noise"] = "h";
+  EXPECT_EQ(sensor_catalogue_from_json(j, "ok.json").models[0].position_noise_sd_mm.value_or(-1), 1.3);
+  j["models"][0]["position_noise_sd_mm"] = 0;  // a model that does not scatter at all is allowed
+  EXPECT_EQ(sensor_catalogue_from_json(j, "ok.json").models[0].position_noise_sd_mm.value_or(-1), 0.0);
+  j["models"][0]["sources"].erase("position_noise");
+  expect_catalogue_rejected(j, "/models/0/sources/position_noise");  // a figure without its source
+  j = one_model();
+  j["models"][0]["sources"]["position_noise"] = "h";
+  expect_catalogue_rejected(j, "/models/0/sources/position_noise");  // a source without its figure
+}
+
+TEST(SensorCatalogue, ABadPositionNoiseIsRefusedNamingFileModelAndField) {
+  for (const nlohmann::json& bad : {nlohmann::json(-0.5), nlohmann::json("1.3 mm"), nlohmann::json(nullptr)}) {
+    auto j = one_model();
+    j["models"][0]["position_noise_sd_mm"] = bad;
+    j["models"][0]["sources"]["position_noise"] = "h";
+    try {
+      sensor_catalogue_from_json(j, "sensors.json");
+      FAIL() << "accepted " << bad.dump();
+    } catch (const Error& e) {
+      EXPECT_EQ(std::string(e.what()),
+                "sensors.json: at /models/0/position_noise_sd_mm: model \"study\": "
+                "position_noise_sd_mm must be a number ≥ 0 (mm), not " +
+                    bad.dump());
+    }
+  }
 }
 
 nlohmann::json v2_layout() {
