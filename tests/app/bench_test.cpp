@@ -10,6 +10,7 @@
 
 #include "core/visibility/visibility_kernel.h"
 #include "tests/support/cli_runner.h"
+#include "tests/support/quick_session.h"
 #include "tests/support/reference_data.h"
 
 namespace {
@@ -106,6 +107,28 @@ TEST(LmcBench, LmcKernelPicksTheBuildAndABadValueIsSaid) {
   ASSERT_EQ(bad.exit_code, 0) << bad.err;
   EXPECT_NE(bad.err.find("LMC_KERNEL=sse9 is not avx512, avx2 or baseline"), std::string::npos) << bad.err;
   EXPECT_EQ(nlohmann::json::parse(bad.out)["kernel_build"], lmc::kernel_build_name(lmc::KernelBuild::kBest));
+}
+
+TEST(LmcBench, ProcessingTimesASubjectAsLmcProcessDoes) {
+  const auto dir = lmc::test::scratch_dir("cli_bench_processing");
+  ASSERT_EQ(lmc::test::record_quick_session(dir / "S01", dir / "logs", "S01", 2), "");
+  const CliRun r = run_lmc("bench --processing " + (dir / "S01").string() + " --runs 2 --json", dir / "bench");
+  ASSERT_EQ(r.exit_code, 0) << r.all();
+  const auto j = nlohmann::json::parse(r.out)["processing"];
+  EXPECT_GT(j["trials"].get<int>(), 0);
+  EXPECT_EQ(j["runs"], 2);
+  for (const char* method : {"default", "both"}) {
+    const auto& m = j[method];
+    ASSERT_EQ(m["wall_seconds"].size(), 2u) << method;
+    ASSERT_EQ(m["cpu_seconds"].size(), 2u) << method;
+    EXPECT_GT(m["median_wall_s"].get<double>(), 0.0) << method;
+    EXPECT_GT(m["median_cpu_s"].get<double>(), 0.0) << method;
+  }
+  // A folder without trials is refused, naming it.
+  std::filesystem::create_directories(dir / "empty");
+  const CliRun none = run_lmc("bench --processing " + (dir / "empty").string() + " --runs 1", dir / "bench-empty");
+  EXPECT_NE(none.exit_code, 0);
+  EXPECT_NE(none.all().find("empty"), std::string::npos) << none.all();
 }
 
 }  // namespace
