@@ -1,26 +1,20 @@
 // The committer that writes a batch's outputs on a thread of its own: every file arrives whole
-// and in order, a file that cannot be written is reported with its owner and path, and a small
-// memory bound makes producers wait rather than lose files.
+// and no temporary file is left, a file that cannot be written is reported with its owner and path,
+// and a small memory bound makes producers wait rather than lose files.
 #include <gtest/gtest.h>
 
-#include <fstream>
-#include <sstream>
 #include <string>
 #include <thread>
 #include <vector>
 
 #include "core/io/file_committer.h"
+#include "tests/support/cli_runner.h"
 #include "tests/support/scratch_dir.h"
 
 namespace lmc {
 namespace {
 
-std::string contents_of(const std::filesystem::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
+using test::read_text_file;
 
 TEST(FileCommitter, WritesEveryFileFromSeveralThreadsWhole) {
   const auto dir = test::scratch_dir("committer_whole");
@@ -42,7 +36,7 @@ TEST(FileCommitter, WritesEveryFileFromSeveralThreadsWhole) {
     ++files;
     const std::string name = e.path().filename().string();
     ASSERT_EQ(name.front(), 't') << "a temporary file was left behind: " << name;
-    const std::string text = contents_of(e.path());
+    const std::string text = read_text_file(e.path());
     ASSERT_EQ(text.size(), 4096 + name.size()) << name;
     EXPECT_EQ(text.substr(4096), name);
     EXPECT_EQ(text[0], static_cast<char>('a' + (name[1] - '0')));
@@ -62,8 +56,8 @@ TEST(FileCommitter, ReportsAFileThatCannotBeWrittenWithItsOwnerAndPath) {
   EXPECT_NE(failures[0].message.find("lost.txt"), std::string::npos) << failures[0].message;
   EXPECT_NE(failures[0].message.find("No such file or directory"), std::string::npos) << failures[0].message;
   // The files around the failure are written all the same.
-  EXPECT_EQ(contents_of(dir / "fine.txt"), "kept\n");
-  EXPECT_EQ(contents_of(dir / "also_fine.txt"), "kept too\n");
+  EXPECT_EQ(read_text_file(dir / "fine.txt"), "kept\n");
+  EXPECT_EQ(read_text_file(dir / "also_fine.txt"), "kept too\n");
 }
 
 TEST(FileCommitter, AFileSubmittedAfterFinishIsReportedNotDropped) {
