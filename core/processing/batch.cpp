@@ -224,7 +224,7 @@ ProcessedTrial process_sources(const TrialSources& job, const BatchOptions& opti
     r.warnings = out.warnings;
     r.layout_source = out.layout_used;
     out.summary = trial_summary_json(r);
-    if (options.on_result) options.on_result(r);
+    if (options.on_result) options.on_result(r, out.summary);
     if (other_method) {
       const TrialResult& r2 = *other_method;
       MethodErrors mine = trial_errors(r, &r2);
@@ -248,7 +248,7 @@ ProcessedTrial process_sources(const TrialSources& job, const BatchOptions& opti
 TrialResult process_sources_in_full(const TrialSources& job, const BatchOptions& options, ProcessedTrial* outcome) {
   BatchOptions o = options;
   std::optional<TrialResult> kept;
-  o.on_result = [&kept](const TrialResult& r) { kept = r; };
+  o.on_result = [&kept](const TrialResult& r, const nlohmann::json&) { kept = r; };
   o.compare_methods = false;
   const ViconMapping mapping = o.mapping ? load_vicon_mapping(*o.mapping) : default_vicon_mapping();
   ProcessedTrial out = process_sources(job, o, mapping);

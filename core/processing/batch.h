@@ -44,10 +44,11 @@ struct BatchOptions {
   ProcessOptions process;
   std::optional<std::string> layout;  // name or path; else sidecar, else by trial tag
   std::optional<std::filesystem::path> mapping;
-  // Called with each trial's whole result as soon as it is processed (from the worker threads, so
-  // it must be thread-safe): `lmc process` writes the trial's files there (core/results), which
-  // processing itself knows nothing of.
-  std::function<void(const TrialResult&)> on_result;
+  // Called with each trial's whole result and its summary (trial_summary_json, built once for the
+  // outcome) as soon as it is processed (from the worker threads, so it must be thread-safe):
+  // `lmc process` writes the trial's files there (core/results), which processing itself knows
+  // nothing of.
+  std::function<void(const TrialResult&, const nlohmann::json& summary)> on_result;
   bool compare_methods = false;  // also run the other method and collect errors vs truth
   // The workbench runs a batch on a worker thread: once `stop` is requested, trials not yet
   // started are left out (outcome "cancelled"); the ones running finish (a trial takes well under a

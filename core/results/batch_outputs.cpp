@@ -11,8 +11,10 @@ std::vector<ProcessedTrial> process_and_write_batch(const std::vector<TrialSourc
                                                     const std::filesystem::path& out) {
   std::filesystem::create_directories(out);
   FileCommitter committer;
-  options.on_result = [&](const TrialResult& r) {
-    for (auto& file : trial_output_files(r)) committer.submit(out / file.name, std::move(file.contents), r.tag.trial);
+  options.on_result = [&](const TrialResult& r, const nlohmann::json& summary) {
+    for (auto& file : trial_output_files(r, summary)) {
+      committer.submit(out / file.name, std::move(file.contents), r.tag.trial);
+    }
   };
   auto outcomes = process_batch(jobs, options);
   for (const auto& failure : committer.finish()) {

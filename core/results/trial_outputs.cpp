@@ -2,12 +2,12 @@
 
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <nlohmann/json.hpp>
 #include <sstream>
 
 #include "core/common/number_format.h"
-#include "core/io/atomic_write.h"
-#include "core/processing/trial_summary.h"
+#include "core/io/delimited_text.h"
 #include "core/processing/trial_tag.h"
 
 namespace lmc {
@@ -106,7 +106,7 @@ std::string format_measures_tsv(const TrialResult& r) {
     for (double v : m.angle_deg) append_fixed(o += '\t', v, 4);
   };
   for (size_t f = 0; f < r.lmc_frames.size(); ++f) {
-    o += std::to_string(f);
+    text::append_int(o, static_cast<std::int64_t>(f));
     append_fixed(o += '\t', static_cast<double>(f) * 0.01, 2);
     values(r.lmc_frames[f]);
     if (r.has_vicon) {
@@ -117,7 +117,7 @@ std::string format_measures_tsv(const TrialResult& r) {
       }
     }
     for (const auto& lab : r.labels) {
-      for (int k = 0; k < kNumDigits; ++k) add('\t', std::to_string(static_cast<int>(lab[f][static_cast<size_t>(k)])));
+      for (int k = 0; k < kNumDigits; ++k) text::append_int(o += '\t', lab[f][static_cast<size_t>(k)]);
     }
     o += '\n';
   }
@@ -140,24 +140,14 @@ std::string format_fused_points(const TrialResult& r) {
   return format_lmc_recording(rec);
 }
 
-std::string trial_summary_file_name(const TrialResult& r) {
-  return r.tag.trial + ".summary.json";
-}
-
-std::vector<TrialOutputFile> trial_output_files(const TrialResult& r) {
+std::vector<TrialOutputFile> trial_output_files(const TrialResult& r, const nlohmann::json& summary) {
   const std::string& base = r.tag.trial;
   std::vector<TrialOutputFile> files;
   files.push_back({base + ".results.txt", format_results_text(r)});
   files.push_back({base + ".measures.tsv", format_measures_tsv(r)});
   files.push_back({base + ".fused.txt", format_fused_points(r)});
-  files.push_back({trial_summary_file_name(r), trial_summary_json(r).dump(2) + "\n"});
+  files.push_back({base + ".summary.json", summary.dump(2) + "\n"});
   return files;
-}
-
-std::filesystem::path write_trial_outputs(const TrialResult& r, const std::filesystem::path& dir) {
-  std::filesystem::create_directories(dir);
-  for (const auto& file : trial_output_files(r)) write_file_atomically(dir / file.name, file.contents);
-  return dir / trial_summary_file_name(r);
 }
 
 }  // namespace lmc

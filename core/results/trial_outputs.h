@@ -7,7 +7,6 @@
 //  * <trial>.summary.json   statistics, visibility tables, comparison, warnings, provenance;
 //  * <trial>.results.txt    a text report laid out exactly like the authors' result file
 //                           (Subject1_Naiv.results.txt) so both can be compared side by side.
-#include <filesystem>
 #include <nlohmann/json_fwd.hpp>
 #include <string>
 #include <vector>
@@ -27,11 +26,7 @@ struct TrialOutputFile {
   std::string name;
   std::string contents;
 };
-std::vector<TrialOutputFile> trial_output_files(const TrialResult& r);
-// The summary's file name among them.
-std::string trial_summary_file_name(const TrialResult& r);
-
-// Writes the four files into `dir` (created if needed) atomically; returns the summary path.
-std::filesystem::path write_trial_outputs(const TrialResult& r, const std::filesystem::path& dir);
+// `summary` is trial_summary_json(r), which a batch has already built for the trial's outcome.
+std::vector<TrialOutputFile> trial_output_files(const TrialResult& r, const nlohmann::json& summary);
 
 }  // namespace lmc

@@ -59,7 +59,6 @@ void run_process(const ProcessArgs& a) {
   options.process.resample.adaptive_gap = !a.fixed_gap;
   if (!a.layout.empty()) options.layout = a.layout;
   if (!a.mapping.empty()) options.mapping = a.mapping;
-  std::filesystem::create_directories(a.out);
   options.compare_methods = a.compare_methods;
 
   std::vector<std::string> notes;
@@ -113,7 +112,6 @@ void run_process(const ProcessArgs& a) {
   }
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   session["seconds"] = seconds;
-  std::filesystem::create_directories(a.out);
   lmc::write_file_atomically(std::filesystem::path(a.out) / "session.json", session.dump(2) + "\n");
   if (a.compare_methods) {
     const std::string table = lmc::method_comparison_markdown(ref_errors, def_errors, compared);
