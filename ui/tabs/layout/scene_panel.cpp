@@ -275,10 +275,22 @@ void ScenePanel::draw_overlays(ImDrawList* dl) {
   for (int c = 0; c < kSeenCountCategories; ++c)
     legend_w += line + 2 + ImGui::CalcTextSize(seen_count_label(c).c_str()).x + 12;
   ImVec2 at(image_min_.x + 10, image_max.y - 10 - line * 1.6f);
-  // In a narrow scene the heatmap's colour bar (bottom right, 236 px) would cover the finger
-  // legend: stack the finger legend above it instead.
+  // The heatmap's colour bar (bottom right) is at least 220 px wide and as wide as its heading, so
+  // that "frames visible, all fingers (preview)" is never cut at the scene's edge.
   const bool heat_bar = s.display.show_heatmap && s.selected >= 0;
-  if (heat_bar && at.x + legend_w > image_max.x - 220 - 16 - 8) at.y -= line * 3.6f + 28;
+  const HeatmapGridPtr grid = heat_bar ? s.heatmap.latest() : nullptr;
+  char head[128] = "";
+  if (heat_bar) {
+    const std::string finger =
+        s.display.heatmap_finger < 0 ? std::string("all fingers") : std::string(digit_name(s.display.heatmap_finger));
+    std::snprintf(head, sizeof head, "%s, %s%s",
+                  s.display.heatmap_mode == HeatmapMode::kShareVisible ? "frames visible" : "frames added",
+                  finger.c_str(), (grid && !grid->fine) ? " (preview)" : "");
+  }
+  const float bar_w = std::max(220.0f, ImGui::CalcTextSize(head).x);
+  // In a narrow scene the colour bar would cover the finger legend: stack the finger legend above
+  // it instead.
+  if (heat_bar && at.x + legend_w > image_max.x - bar_w - 16 - 8) at.y -= line * 3.6f + 28;
   dl->AddRectFilled(ImVec2(at.x - 6, at.y - 6), ImVec2(at.x + legend_w, at.y + line + 6), IM_COL32(18, 19, 23, 200),
                     4.0f);
   dl->AddText(at, IM_COL32(210, 212, 218, 255), title);
@@ -293,16 +305,9 @@ void ScenePanel::draw_overlays(ImDrawList* dl) {
 
   // Heatmap colour bar (magnitude: sequential map with numbers).
   if (heat_bar) {
-    const HeatmapGridPtr g = s.heatmap.latest();
-    const float bw = 220, bx = image_max.x - bw - 16, by = image_max.y - 14 - line * 2.6f;
+    const float bw = bar_w, bx = image_max.x - bw - 16, by = image_max.y - 14 - line * 2.6f;
     dl->AddRectFilled(ImVec2(bx - 8, by - line - 10), ImVec2(image_max.x - 6, image_max.y - 6),
                       IM_COL32(18, 19, 23, 200), 4.0f);
-    char head[128];
-    const std::string finger =
-        s.display.heatmap_finger < 0 ? std::string("all fingers") : std::string(digit_name(s.display.heatmap_finger));
-    std::snprintf(head, sizeof head, "%s, %s%s",
-                  s.display.heatmap_mode == HeatmapMode::kShareVisible ? "frames visible" : "frames added",
-                  finger.c_str(), (g && !g->fine) ? " (preview)" : "");
     dl->AddText(ImVec2(bx, by - line - 4), IM_COL32(210, 212, 218, 255), head);
     const ColourRange range = s.heatmap_range();
     constexpr int kSteps = 44;
