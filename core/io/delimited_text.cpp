@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "core/common/error.h"
+#include "core/common/shortest_double.h"
 
 namespace lmc::text {
 
@@ -223,15 +224,18 @@ std::optional<std::int64_t> parse_int(std::string_view s) {
   return static_cast<std::int64_t>(*d);
 }
 
-void append_double(std::string& out, double v) {
+char* write_double(char* at, double v) {
+  static_assert(kMaxDoubleChars >= kShortestDoubleMaxChars);
   if (std::isnan(v)) {
-    out += "nan";  // never "-nan": every reader we care about spells it this way
-    return;
+    std::memcpy(at, "nan", 3);  // never "-nan": every reader we care about spells it this way
+    return at + 3;
   }
-  char buf[64];
-  const auto [ptr, ec] = std::to_chars(buf, buf + sizeof(buf), v);
-  (void)ec;  // 64 bytes always suffice for the shortest form of a double
-  out.append(buf, ptr);
+  return write_shortest(at, v);
+}
+
+void append_double(std::string& out, double v) {
+  char buf[kMaxDoubleChars];
+  out.append(buf, write_double(buf, v));
 }
 
 void append_int(std::string& out, std::int64_t v) {
