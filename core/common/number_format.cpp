@@ -1,5 +1,7 @@
 #include "core/common/number_format.h"
 
+#include "core/common/decimal_digits.h"
+
 #include <bit>
 #include <charconv>
 #include <cmath>
@@ -40,18 +42,20 @@ bool append_fixed_by_integers(std::string& out, double v, int decimals) {
   }  // else: below half a unit of the last decimal, n stays 0
   if ((n >> 63) != 0) return false;
   const auto whole = static_cast<std::uint64_t>(n);
-  if (negative) out += '-';
-  char buf[24];
-  const std::uint64_t unit = kPow10[decimals];
-  const auto [end, ec] = std::to_chars(buf, buf + sizeof buf, whole / unit);
-  out.append(buf, end);
+  // The digits of `whole` (at least decimals + 1 of them) with the point put in, built in one
+  // buffer from the right and appended once.
+  char buf[40];
+  char* const end = buf + sizeof buf;
+  char* start = decimal_digits::digits_ending_at(end, whole);
+  while (end - start < decimals + 1) *--start = '0';
   if (decimals > 0) {
-    std::uint64_t rest = whole % unit;
-    char digits[9];
-    for (int k = decimals - 1; k >= 0; --k, rest /= 10) digits[k] = static_cast<char>('0' + rest % 10);
-    out += '.';
-    out.append(digits, static_cast<size_t>(decimals));
+    char* const point = end - decimals - 1;
+    for (char* c = start - 1; c < point; ++c) *c = *(c + 1);
+    *point = '.';
+    --start;
   }
+  if (negative) *--start = '-';
+  out.append(start, end);
   return true;
 }
 

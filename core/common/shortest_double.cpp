@@ -1,5 +1,7 @@
 #include "core/common/shortest_double.h"
 
+#include "core/common/decimal_digits.h"
+
 #include <bit>
 #include <charconv>
 #include <cstdint>
@@ -29,44 +31,6 @@ constexpr auto kPow10 = [] {
   for (int m = 0; m < 22; ++m) t.v[m] = pow10_128(m);
   return t;
 }();
-
-constexpr char kDigitPairs[] =
-    "00010203040506070809101112131415161718192021222324252627282930313233343536373839"
-    "40414243444546474849505152535455565758596061626364656667686970717273747576777879"
-    "8081828384858687888990919293949596979899";
-
-// The eight decimal digits of d (< 10^8, with leading zeros) at `out`: four independent pairs, not
-// one chain of divisions by ten.
-void write_eight_digits(char* out, std::uint32_t d) {
-  const std::uint32_t high = d / 10000;
-  const std::uint32_t low = d % 10000;
-  std::memcpy(out, kDigitPairs + 2 * (high / 100), 2);
-  std::memcpy(out + 2, kDigitPairs + 2 * (high % 100), 2);
-  std::memcpy(out + 4, kDigitPairs + 2 * (low / 100), 2);
-  std::memcpy(out + 6, kDigitPairs + 2 * (low % 100), 2);
-}
-
-// The decimal digits of d (0 < d < 10^19) written so they end at `end`; returns where they start.
-char* digits_ending_at(char* end, std::uint64_t d) {
-  while (d >= 100000000) {
-    end -= 8;
-    write_eight_digits(end, static_cast<std::uint32_t>(d % 100000000));
-    d /= 100000000;
-  }
-  auto rest = static_cast<std::uint32_t>(d);
-  while (rest >= 100) {
-    end -= 2;
-    std::memcpy(end, kDigitPairs + 2 * (rest % 100), 2);
-    rest /= 100;
-  }
-  if (rest >= 10) {
-    end -= 2;
-    std::memcpy(end, kDigitPairs + 2 * rest, 2);
-  } else {
-    *--end = static_cast<char>('0' + rest);
-  }
-  return end;
-}
 
 // How many decimal digits d (> 0) has: an estimate from its bit length, corrected by one compare.
 int digit_count(std::uint64_t d) {
@@ -190,14 +154,14 @@ char* write_shortest(char* first, double v) {
   char* out = first;
   if (negative) *out++ = '-';
   if (exponent >= 0) {
-    digits_ending_at(out + n, digits);
+    decimal_digits::digits_ending_at(out + n, digits);
     std::memset(out + n, '0', static_cast<size_t>(exponent));
     return out + n + exponent;
   }
   if (leading >= 0) {
     // The digits one place to the right, then the whole part moved left over the point's place:
     // written where they belong, not assembled elsewhere and copied.
-    digits_ending_at(out + n + 1, digits);
+    decimal_digits::digits_ending_at(out + n + 1, digits);
     for (int i = 0; i <= leading; ++i) out[i] = out[i + 1];
     out[leading + 1] = '.';
     return out + n + 1;
@@ -206,7 +170,7 @@ char* write_shortest(char* first, double v) {
   *out++ = '.';
   std::memset(out, '0', static_cast<size_t>(-leading - 1));
   out += -leading - 1;
-  digits_ending_at(out + n, digits);
+  decimal_digits::digits_ending_at(out + n, digits);
   return out + n;
 }
 
