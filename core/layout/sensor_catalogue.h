@@ -18,6 +18,11 @@ namespace lmc {
 
 inline constexpr const char* kStudySensorId = "study";
 
+// The position noise (SD per axis, mm) the simulated rig gives a model with no published figure
+// (the study's model, ir170): the simulator's own figure, which every rig of the study's model has
+// always been simulated with.
+inline constexpr double kDefaultPositionNoiseSdMm = 1.0;
+
 struct SensorSpec {
   std::string id;    // "study", "lmc", "lmc2", "ir170": what layout files name
   std::string name;  // "Leap Motion Controller 2"

@@ -36,9 +36,9 @@
 
 namespace lmc::devices {
 
-// The noise σ of a controller whose model has no figure in the catalogue (the study's model, ir170):
-// the simulator's own figure, which every rig of the study's model has always been simulated with.
-inline constexpr double kDefaultSimNoiseSigmaMm = 1.0;
+// The noise σ of a controller whose model has no figure in the catalogue (the study's model, ir170),
+// named where the catalogue is (the Layout tab shows it too).
+inline constexpr double kDefaultSimNoiseSigmaMm = kDefaultPositionNoiseSdMm;
 
 struct SimUnplug {
   std::string slot;

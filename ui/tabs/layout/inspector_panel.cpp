@@ -191,6 +191,23 @@ void InspectorPanel::draw_model_and_sensor(int index) {
   }
   if (changed) preview_device_sensor(s.upd_history(), index, sensor);
   if (released) s.report(set_device_sensor(s.upd_history(), index, sensor), "Sensor of " + slot);
+  // Not a layout value (nothing to drag): how far this model's reported positions scatter, which
+  // the simulated rig adds to every point of a controller of this model.
+  if (spec != nullptr) {
+    char noise[160];
+    if (spec->position_noise_sd_mm) {
+      std::snprintf(noise, sizeof noise, "Position noise %.2f mm SD per axis (published); the simulated rig uses it",
+                    *spec->position_noise_sd_mm);
+    } else {
+      std::snprintf(noise, sizeof noise,
+                    "Position noise: no published figure; the simulated rig uses %.0f mm SD per axis",
+                    kDefaultPositionNoiseSdMm);
+    }
+    ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
+    ImGui::TextWrapped("%s", noise);
+    ImGui::PopStyleColor();
+    anchors_.remember("position-noise");
+  }
 
   const bool overridden = spec != nullptr && !(sensor == spec->sensor);
   ImGui::BeginDisabled(!overridden);
