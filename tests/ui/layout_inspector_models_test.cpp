@@ -70,14 +70,14 @@ TEST_F(ModelInspector, ShowsEachModelsPositionNoiseAndWhereItComesFrom) {
   state->select(1);
   pick_model("lmc2");
   std::string text = gui.frame_text(body());
-  EXPECT_NE(text.find("Position noise 0.60 mm SD per axis (published)"), std::string::npos) << text;
+  EXPECT_NE(text.find("Position noise 0.60\u00a0mm SD per axis (published)"), std::string::npos) << text;
   EXPECT_TRUE(inspector.anchors().centre("position-noise").has_value());
   pick_model("lmc");
   text = gui.frame_text(body());
-  EXPECT_NE(text.find("Position noise 1.75 mm SD per axis (published)"), std::string::npos) << text;
+  EXPECT_NE(text.find("Position noise 1.75\u00a0mm SD per axis (published)"), std::string::npos) << text;
   pick_model("study");
   text = gui.frame_text(body());
-  EXPECT_NE(text.find("no published figure; the simulated rig uses 1 mm SD per axis"), std::string::npos) << text;
+  EXPECT_NE(text.find("no published figure; the simulated rig uses 1\u00a0mm SD per axis"), std::string::npos) << text;
 }
 
 TEST_F(ModelInspector, DraggingARangeOverridesItMarkedAndResetToModelTakesItBack) {

@@ -192,15 +192,16 @@ void InspectorPanel::draw_model_and_sensor(int index) {
   if (changed) preview_device_sensor(s.upd_history(), index, sensor);
   if (released) s.report(set_device_sensor(s.upd_history(), index, sensor), "Sensor of " + slot);
   // Not a layout value (nothing to drag): how far this model's reported positions scatter, which
-  // the simulated rig adds to every point of a controller of this model.
+  // the simulated rig adds to every point of a controller of this model. A no-break space keeps
+  // the figure and its unit on one line when the text wraps.
   if (spec != nullptr) {
     char noise[160];
     if (spec->position_noise_sd_mm) {
-      std::snprintf(noise, sizeof noise, "Position noise %.2f mm SD per axis (published); the simulated rig uses it",
+      std::snprintf(noise, sizeof noise, "Position noise %.2f\u00a0mm SD per axis (published); the simulated rig uses it",
                     *spec->position_noise_sd_mm);
     } else {
       std::snprintf(noise, sizeof noise,
-                    "Position noise: no published figure; the simulated rig uses %.0f mm SD per axis",
+                    "Position noise: no published figure; the simulated rig uses %.0f\u00a0mm SD per axis",
                     kDefaultPositionNoiseSdMm);
     }
     ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
