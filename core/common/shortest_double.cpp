@@ -58,7 +58,9 @@ int digit_count(std::uint64_t d) {
   return estimate + (d >= kPow10u64[estimate] ? 1 : 0);
 }
 
-char* fallback(char* first, double v) { return std::to_chars(first, first + kShortestDoubleMaxChars, v).ptr; }
+char* fallback(char* first, double v) {
+  return std::to_chars(first, first + kShortestDoubleMaxChars, v).ptr;
+}
 
 }  // namespace
 

@@ -197,7 +197,8 @@ void InspectorPanel::draw_model_and_sensor(int index) {
   if (spec != nullptr) {
     char noise[160];
     if (spec->position_noise_sd_mm) {
-      std::snprintf(noise, sizeof noise, "Position noise %.2f\u00a0mm SD per axis (published); the simulated rig uses it",
+      std::snprintf(noise, sizeof noise,
+                    "Position noise %.2f\u00a0mm SD per axis (published); the simulated rig uses it",
                     *spec->position_noise_sd_mm);
     } else {
       std::snprintf(noise, sizeof noise,
