@@ -246,6 +246,27 @@ TEST(LmcRecordingErrors, ImplausibleCoordinatesAreRefusedWithTheirValue) {
   EXPECT_EQ(parse_lmc_recording(ok, "ok.txt").rows.size(), 2u);
 }
 
+// Bare "x,y,z" fields are read in one pass; a field with spaces or a '+' goes the careful way.
+// Both must give the same point.
+TEST(LmcRecordingErrors, ATripletWithSpacesOrAPlusReadsAsTheBareOne) {
+  std::istringstream bare_in(raw_text_with("2.5"));
+  const LmcRecording bare = parse_lmc_recording(bare_in, "bare.txt");
+  ASSERT_EQ(bare.rows.size(), 2u);
+  EXPECT_EQ(bare.rows[1].point(0), Vec3(1.0, 2.5, 3.0));
+  for (const std::string y : {"+2.5", " 2.5", "2.5 ", " +2.5 ", "2.50", "25e-1"}) {
+    std::istringstream in(raw_text_with(y));
+    const LmcRecording r = parse_lmc_recording(in, "spaced.txt");
+    ASSERT_EQ(r.rows.size(), 2u) << "'" << y << "'";
+    EXPECT_EQ(r.rows[1].point(0), bare.rows[1].point(0)) << "'" << y << "'";
+    EXPECT_TRUE(r.rows[1].hand_present) << "'" << y << "'";
+  }
+  // A missing coordinate ("nan") is read as missing by either way: the row has no hand.
+  std::istringstream nan_in(raw_text_with("nan"));
+  const LmcRecording with_nan = parse_lmc_recording(nan_in, "nan.txt");
+  ASSERT_EQ(with_nan.rows.size(), 2u);
+  EXPECT_FALSE(with_nan.rows[1].hand_present);
+}
+
 TEST(LmcRecordingErrors, ImplausibleTimestampIsRefused) {
   expect_recording_error(raw_text_with("2", "9223372036854775807"),
                          "Time Stamp '9223372036854775807' µs is implausible");
