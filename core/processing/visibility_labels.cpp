@@ -1,5 +1,8 @@
 #include "core/processing/visibility_labels.h"
 
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
 #include "core/visibility/device_view.h"
 #include "core/visibility/frame_prep.h"
 #include "core/visibility/visibility_kernel.h"
@@ -23,19 +26,19 @@ FingerLabels frame_visibility_labels(const PreparedFrame& frame, bool hand, cons
 
 std::vector<FingerLabels> visibility_labels(const HandTrack& track, const VisibilityParams& params) {
   const int n = track.frame_count;
-  std::vector<HandFrame> frames(static_cast<size_t>(n));
-  for (int f = 0; f < n; ++f) {
-    HandFrame& hf = frames[static_cast<size_t>(f)];
-    hf.hand_present = track.has_hand(f);
-    for (int i = 0; i < kNumHandPoints; ++i) hf.point(i) = track.at(f, i);
-  }
-  const std::vector<PreparedFrame> prepared = prepare_frames(frames);  // in parallel
   const VisibilityLimits limits = make_limits(params);
   std::vector<FingerLabels> labels(static_cast<size_t>(n));
-  for (int f = 0; f < n; ++f) {
-    const auto i = static_cast<size_t>(f);
-    labels[i] = frame_visibility_labels(prepared[i], frames[i].hand_present, limits);
-  }
+  // Each frame is prepared and labelled where it is used. A prepared frame is 2 KB: a trial's
+  // worth of them, written out and read back, cost more than the labels themselves. Every frame's
+  // label depends on that frame alone, so the result is the same for any thread count.
+  tbb::parallel_for(tbb::blocked_range<int>(0, n, 64), [&](const tbb::blocked_range<int>& r) {
+    HandFrame frame;
+    for (int f = r.begin(); f != r.end(); ++f) {
+      frame.hand_present = track.has_hand(f);
+      for (int i = 0; i < kNumHandPoints; ++i) frame.point(i) = track.at(f, i);
+      labels[static_cast<size_t>(f)] = frame_visibility_labels(prepare_frame(frame), frame.hand_present, limits);
+    }
+  });
   return labels;
 }
 
