@@ -1,12 +1,12 @@
 #include "core/common/number_format.h"
 
-#include "core/common/decimal_digits.h"
-
 #include <bit>
 #include <charconv>
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
+
+#include "core/common/decimal_digits.h"
 
 namespace lmc {
 

@@ -1,11 +1,11 @@
 #include "core/common/shortest_double.h"
 
-#include "core/common/decimal_digits.h"
-
 #include <bit>
 #include <charconv>
 #include <cstdint>
 #include <cstring>
+
+#include "core/common/decimal_digits.h"
 
 namespace lmc {
 
