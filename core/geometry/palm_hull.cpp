@@ -10,12 +10,15 @@ namespace {
 // Relative size below which a cross product counts as zero (collinear / coplanar points).
 constexpr double kDegenerateRel = 1e-12;
 
+// The largest distance between two of the points. One square root of the largest squared
+// distance: the square root is correctly rounded and never decreasing, so this is, to the bit, the
+// largest of the distances (and each pair is measured once, not twice).
 double extent_of(std::span<const Eigen::Vector3d> pts) {
-  double e = 0.0;
-  for (const auto& a : pts) {
-    for (const auto& b : pts) e = std::max(e, (a - b).norm());
+  double e2 = 0.0;
+  for (size_t i = 0; i < pts.size(); ++i) {
+    for (size_t j = i + 1; j < pts.size(); ++j) e2 = std::max(e2, (pts[i] - pts[j]).squaredNorm());
   }
-  return e;
+  return std::sqrt(e2);
 }
 
 // Which sides of the plane through `origin` with unit normal `nrm` the points lie on, beyond
@@ -31,6 +34,7 @@ Sides sides_of(const Eigen::Vector3d& nrm, const Eigen::Vector3d& origin, std::s
     const double s = nrm.dot(p) - d;
     if (s > tolerance) sides.positive = true;
     if (s < -tolerance) sides.negative = true;
+    if (sides.positive && sides.negative) break;  // a plane through the middle: nothing more to learn
   }
   return sides;
 }
