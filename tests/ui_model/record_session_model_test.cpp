@@ -211,6 +211,34 @@ TEST(RecordSessionModel, OpeningAnotherProcesssSessionOrABadFolderSaysWhy) {
   fs::remove_all(dir);
 }
 
+// A Space pressed while the pre-flight runs (the Record tab asks for another pre-flight) is
+// answered with what is running and when Start comes, not a generic refusal; while a trial
+// records, the answer says how to stop it.
+TEST(RecordSessionModel, AnActionWhileBusySaysWhatRunsAndWhenToActAgain) {
+  const fs::path dir = test::fresh_test_dir("record_model");
+  RecordSessionModel m;
+  RecordSettings real_time = fast_sim();
+  real_time.fast = false;  // a 3 s trial in real time: still recording when asked
+  ASSERT_EQ(m.create(dir, quick(), real_time), "");
+  ASSERT_EQ(m.start_preflight(), "");
+  if (m.busy()) {  // the simulated pre-flight can finish before the next line on a fast machine
+    EXPECT_TRUE(m.preflight_running());
+    EXPECT_FALSE(m.recording());
+    EXPECT_EQ(m.start_preflight(), "the pre-flight is still running; Start [Space] comes when every line is green");
+  }
+  poll_until(m, [&] { return !m.busy() && m.last_preflight().has_value(); });
+  ASSERT_TRUE(m.last_preflight() && m.last_preflight()->ok());
+  ASSERT_EQ(m.start_trial(), "");
+  ASSERT_TRUE(m.recording());
+  EXPECT_FALSE(m.preflight_running());
+  EXPECT_EQ(m.start_trial(), "a trial is recording; stop it first (Space, or Esc to abort)");
+  EXPECT_EQ(m.redo(0), "a trial is recording; stop it first (Space, or Esc to abort)");
+  m.stop_trial();
+  poll_until(m, [&] { return !m.busy() && m.last_attempt().has_value(); });
+  m.close();
+  fs::remove_all(dir);
+}
+
 TEST(RecordSessionModel, OverrideNeedsAReasonAndIsJournaled) {
   const fs::path dir = test::fresh_test_dir("record_model");
   RecordSessionModel m;

@@ -55,7 +55,7 @@ std::string RecordSessionModel::adopt(session::SessionFolder folder, const Recor
 
 std::string RecordSessionModel::create(const std::filesystem::path& dir, const session::NewSessionSpec& spec,
                                        const RecordSettings& settings) {
-  if (busy()) return "a trial or pre-flight is running; stop it first";
+  if (busy()) return busy_reason();
   close();
   try {
     return adopt(session::SessionFolder::create(dir, spec), settings, false);
@@ -65,7 +65,7 @@ std::string RecordSessionModel::create(const std::filesystem::path& dir, const s
 }
 
 std::string RecordSessionModel::open(const std::filesystem::path& dir, const RecordSettings& settings) {
-  if (busy()) return "a trial or pre-flight is running; stop it first";
+  if (busy()) return busy_reason();
   close();
   try {
     return adopt(session::SessionFolder::open(dir), settings, true);
@@ -139,9 +139,18 @@ bool RecordSessionModel::needs_preflight() const {
   return runner_ && i >= 0 && !busy() && runner_->needs_preflight(i);
 }
 
+std::string RecordSessionModel::busy_reason() const {
+  if (recording()) return "a trial is recording; stop it first (Space, or Esc to abort)";
+  if (calibrating()) return "the block's calibration is recording; wait for it to finish";
+  // A Space pressed while the controllers, Vicon and disk are checked lands here: it is not lost
+  // silently, and the operator learns when pressing again will start the trial.
+  if (preflight_running()) return "the pre-flight is still running; Start [Space] comes when every line is green";
+  return "the worker is busy";
+}
+
 std::string RecordSessionModel::start_preflight() {
   if (!has_session()) return "open or create a session first";
-  if (busy()) return "a trial or pre-flight is running";
+  if (busy()) return busy_reason();
   const int i = current_trial();
   if (i < 0) return "every trial is accepted";
   recording_trial_ = -1;
@@ -155,7 +164,7 @@ std::string RecordSessionModel::start_preflight() {
 }
 
 std::string RecordSessionModel::override_preflight(const std::string& reason) {
-  if (busy()) return "a trial or pre-flight is running";
+  if (busy()) return busy_reason();
   if (reason.find_first_not_of(" \t") == std::string::npos) return "type the reason for going ahead; it is journaled";
   const int i = current_trial();
   if (!runner_ || i < 0) return "no trial to record";
@@ -170,7 +179,7 @@ std::string RecordSessionModel::override_preflight(const std::string& reason) {
 
 std::string RecordSessionModel::start_trial() {
   if (!has_session()) return "open or create a session first";
-  if (busy()) return "a trial or pre-flight is running";
+  if (busy()) return busy_reason();
   const int i = current_trial();
   if (i < 0) return "every trial is accepted";
   if (state_.trials[static_cast<size_t>(i)].status == session::TrialStatus::kAccepted)
@@ -210,7 +219,7 @@ bool RecordSessionModel::needs_calibration() const {
 
 std::string RecordSessionModel::start_calibration() {
   if (!has_session()) return "open or create a session first";
-  if (busy()) return "a trial or pre-flight is running";
+  if (busy()) return busy_reason();
   const int i = current_trial();
   if (i < 0) return "every trial is accepted";
   if (runner_->needs_preflight(i)) return "run the pre-flight for this layout first (or override it with a reason)";
@@ -231,7 +240,7 @@ std::string RecordSessionModel::start_calibration() {
 }
 
 std::string RecordSessionModel::apply_calibration() {
-  if (busy()) return "a trial or pre-flight is running";
+  if (busy()) return busy_reason();
   if (!pending_calibration_) return "no calibration to apply";
   if (!pending_calibration_->ok()) return "the calibration failed: " + pending_calibration_->failure;
   try {
@@ -245,7 +254,7 @@ std::string RecordSessionModel::apply_calibration() {
 }
 
 std::string RecordSessionModel::keep_nominal_layout(const std::string& reason) {
-  if (busy()) return "a trial or pre-flight is running";
+  if (busy()) return busy_reason();
   const int i = current_trial();
   if (i < 0) return "every trial is accepted";
   if (reason.find_first_not_of(" \t") == std::string::npos)
@@ -308,7 +317,7 @@ void RecordSessionModel::write_pending_notes() {
 }
 
 std::string RecordSessionModel::accept_last() {
-  if (busy()) return "a trial is running";
+  if (busy()) return busy_reason();
   if (!last_attempt_) return "no trial recorded in this run yet";
   const int i = last_attempt_->trial;
   try {
@@ -324,7 +333,7 @@ std::string RecordSessionModel::accept_last() {
 }
 
 std::string RecordSessionModel::redo(int i) {
-  if (busy()) return "a trial is running";
+  if (busy()) return busy_reason();
   if (!has_session()) return "no session";
   if (i < 0) {
     // A recorded trial the operator picked in the list comes first: any trial can be redone.

@@ -115,6 +115,8 @@ class RecordSessionModel {
   std::string abort_trial();
   bool busy() const { return job_.running(); }
   bool recording() const { return busy() && recording_trial_ >= 0; }
+  // The block's pre-flight is being run on the worker (needs_preflight() is false meanwhile).
+  bool preflight_running() const { return busy() && recording_trial_ < 0 && !calibrating_; }
   int recording_trial() const { return recording_trial_; }
   // The latest status of the trial being recorded (phase, countdown, per-device rows).
   const std::optional<devices::TrialSnapshot>& live() const { return live_; }
@@ -146,6 +148,8 @@ class RecordSessionModel {
   std::string poll();
 
  private:
+  // What the worker is doing, for a refusal: which job runs and when the operator can act again.
+  std::string busy_reason() const;
   std::string adopt(session::SessionFolder folder, const RecordSettings& settings, bool resumed);
   void refresh_state();
 

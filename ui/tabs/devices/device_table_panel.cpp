@@ -76,7 +76,7 @@ void DeviceTablePanel::draw() {
     ImGui::Text("%lld", static_cast<long long>(r.dropped));
   }
   ImGui::EndTable();
-  if (rows.empty()) ImGui::TextDisabled(vm.running() ? "waiting for devices…" : "no backend running: press Start");
+  if (rows.empty()) ImGui::TextDisabled(vm.running() ? "waiting for devices..." : "no backend running: press Start");
   // A controller the layout points away from the hand shows "no hand" forever: say it is the layout.
   ImGui::PushTextWrapPos(0.0F);
   for (const std::string& w : vm.layout_warnings())

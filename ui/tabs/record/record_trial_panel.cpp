@@ -64,10 +64,6 @@ TrialPanelAction RecordTrialPanel::preflight_section() {
   ImGui::TextWrapped("%s", model.block_instructions().c_str());
   ImGui::Spacing();
   if (const auto& report = model.last_preflight()) preflight_checklist(*report);
-  if (model.busy()) {
-    ImGui::TextUnformatted("Checking the controllers, Vicon, disk and folder…");
-    return action;
-  }
   // One action per key: Space runs the pre-flight here; Start appears once the block is cleared.
   if (big_button("Run pre-flight  [Space]", ImVec4(0.2F, 0.4F, 0.7F, 1.0F))) action = TrialPanelAction::kPreflight;
   anchors_.remember("preflight");
@@ -183,7 +179,7 @@ TrialPanelAction RecordTrialPanel::draw() {
     ImGui::SameLine();
     ImGui::BeginGroup();
     if (!live) {
-      big_text("starting…", 1.4F);
+      big_text("starting...", 1.4F);
     } else if (live->phase == devices::TrialPhase::kWaitingForStreams) {
       big_text("waiting for every controller", 1.4F);
     } else if (counting) {
@@ -225,7 +221,11 @@ TrialPanelAction RecordTrialPanel::draw() {
   // The checklist that enabled Start stays in view until the block's first trial of this run.
   if (const auto& report = model.last_preflight(); report && report->ok() && !model.last_attempt())
     preflight_checklist(*report);
-  if (!model.busy()) {
+  if (model.preflight_running()) {
+    // The block's checks run on the worker: say so where Start will appear (a Space pressed now
+    // is answered in the status line).
+    ImGui::TextUnformatted("Pre-flight: checking the controllers, Vicon, disk and folder...");
+  } else if (!model.busy()) {
     if (big_button("Start  [Space]", ImVec4(0.15F, 0.55F, 0.25F, 1.0F))) action = TrialPanelAction::kStart;
     anchors_.remember("start");
   }
