@@ -1,10 +1,39 @@
 #pragma once
 // Decimal digits of an unsigned integer written from the right, two at a time: shared by the
 // number writers (shortest_double.cpp, number_format.cpp), whose outputs are millions of numbers.
+#include <bit>
 #include <cstdint>
 #include <cstring>
 
 namespace lmc::decimal_digits {
+
+// 10^0 … 10^19: every power of ten a uint64_t holds.
+inline constexpr std::uint64_t kPow10[] = {1ull,
+                                           10ull,
+                                           100ull,
+                                           1000ull,
+                                           10000ull,
+                                           100000ull,
+                                           1000000ull,
+                                           10000000ull,
+                                           100000000ull,
+                                           1000000000ull,
+                                           10000000000ull,
+                                           100000000000ull,
+                                           1000000000000ull,
+                                           10000000000000ull,
+                                           100000000000000ull,
+                                           1000000000000000ull,
+                                           10000000000000000ull,
+                                           100000000000000000ull,
+                                           1000000000000000000ull,
+                                           10000000000000000000ull};
+
+// How many decimal digits d (> 0) has: an estimate from its bit length, corrected by one compare.
+inline int digit_count(std::uint64_t d) {
+  const int estimate = (std::bit_width(d) * 1233) >> 12;  // floor(log10 2^bits): at most one short
+  return estimate + (d >= kPow10[estimate] ? 1 : 0);
+}
 
 inline constexpr char kDigitPairs[] =
     "00010203040506070809101112131415161718192021222324252627282930313233343536373839"

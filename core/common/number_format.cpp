@@ -18,7 +18,7 @@ namespace {
 // the binary value, ties to even) with no floating-point step to blur it, and cheaper than the
 // general formatter (docs/results/processing.md); false hands a value it does not cover on.
 bool append_fixed_by_integers(std::string& out, double v, int decimals) {
-  static constexpr std::uint64_t kPow10[] = {1, 10, 100, 1000, 10000, 100000, 1000000, 10000000, 100000000, 1000000000};
+  using decimal_digits::kPow10;
   if (decimals < 0 || decimals > 9) return false;
   const auto bits = std::bit_cast<std::uint64_t>(v);
   const bool negative = (bits >> 63) != 0;

@@ -1,5 +1,6 @@
 #include "core/common/shortest_double.h"
 
+#include <array>
 #include <bit>
 #include <charconv>
 #include <cstdint>
@@ -18,45 +19,13 @@ __extension__ typedef unsigned __int128 u128;  // GCC and Clang; -Wpedantic need
 // goes to std::to_chars, which is right for every double; so is this path, by exact arithmetic.
 constexpr int kMinExponent = -69;  // the largest p = -q for which 10^m, m = ceil(p·log10 2), is ≤ 10^21
 
-constexpr u128 pow10_128(int m) {
-  u128 r = 1;
-  for (int i = 0; i < m; ++i) r *= 10;
-  return r;
-}
-
-constexpr auto kPow10 = [] {
-  struct Table {
-    u128 v[22];
-  } t{};
-  for (int m = 0; m < 22; ++m) t.v[m] = pow10_128(m);
+// 10^0 … 10^21 as 128-bit integers (10^21 > 2^64).
+constexpr std::array<u128, 22> kWidePow10 = [] {
+  std::array<u128, 22> t{};
+  t[0] = 1;
+  for (size_t m = 1; m < t.size(); ++m) t[m] = t[m - 1] * 10;
   return t;
 }();
-
-// How many decimal digits d (> 0) has: an estimate from its bit length, corrected by one compare.
-int digit_count(std::uint64_t d) {
-  static constexpr std::uint64_t kPow10u64[] = {1ull,
-                                                10ull,
-                                                100ull,
-                                                1000ull,
-                                                10000ull,
-                                                100000ull,
-                                                1000000ull,
-                                                10000000ull,
-                                                100000000ull,
-                                                1000000000ull,
-                                                10000000000ull,
-                                                100000000000ull,
-                                                1000000000000ull,
-                                                10000000000000ull,
-                                                100000000000000ull,
-                                                1000000000000000ull,
-                                                10000000000000000ull,
-                                                100000000000000000ull,
-                                                1000000000000000000ull,
-                                                10000000000000000000ull};
-  const int estimate = (std::bit_width(d) * 1233) >> 12;  // floor(log10 2^bits): at most one short
-  return estimate + (d >= kPow10u64[estimate] ? 1 : 0);
-}
 
 char* fallback(char* first, double v) {
   return std::to_chars(first, first + kShortestDoubleMaxChars, v).ptr;
@@ -92,7 +61,7 @@ char* write_shortest(char* first, double v) {
   // 10^k the interval, 2^q wide, is at least one unit wide and under ten.
   const int k = (q * 78913) >> 18;
   const int m = -k;
-  const u128 pow_m = kPow10.v[m];
+  const u128 pow_m = kWidePow10[static_cast<size_t>(m)];
   const u128 centre = (static_cast<u128>(c) * pow_m) << 2;  // 4 · v · 10^m · 2^p
   const u128 lower = centre - 2 * pow_m;                    // 4 · (c − ½) · 10^m
   const u128 upper = centre + 2 * pow_m;                    // 4 · (c + ½) · 10^m
@@ -140,7 +109,7 @@ char* write_shortest(char* first, double v) {
 
   // Fixed or scientific, by length as std::to_chars chooses; the scientific form (rare in
   // millimetres) goes to the general route.
-  const int n = digit_count(digits);
+  const int n = decimal_digits::digit_count(digits);
   const int leading = exponent + n - 1;  // the decimal exponent of the first digit
   const int scientific_length = n + (n > 1 ? 1 : 0) + 2 + (leading >= 100 || leading <= -100 ? 3 : 2);
   int fixed_length = 0;

@@ -485,9 +485,18 @@ std::string lmc_recording_header(RecordingKind kind) {
   return out;
 }
 
+namespace {
+
+// Room for a typical row of each kind, so a row or a file of rows is built without regrowing.
+size_t typical_row_chars(RecordingKind kind) {
+  return kind == RecordingKind::kRaytraced ? 1400 : 1700;
+}
+
+}  // namespace
+
 std::string format_lmc_row(const HandFrame& frame, RecordingKind kind, const FingerLabels* labels) {
   std::string out;
-  out.reserve(kind == RecordingKind::kRaytraced ? 1400 : 1700);
+  out.reserve(typical_row_chars(kind));
   append_lmc_row(out, frame, kind, labels);
   return out;
 }
@@ -567,7 +576,7 @@ std::string format_lmc_recording(const LmcRecording& recording) {
                 std::to_string(recording.visibility.size()) + " visibility label sets");
   }
   std::string out = lmc_recording_header(recording.kind);
-  out.reserve(out.size() + recording.rows.size() * (recording.kind == RecordingKind::kRaytraced ? 1400 : 1700));
+  out.reserve(out.size() + recording.rows.size() * typical_row_chars(recording.kind));
   for (size_t i = 0; i < recording.rows.size(); ++i) {
     const FingerLabels* labels = recording.kind == RecordingKind::kRaytraced ? &recording.visibility[i] : nullptr;
     append_lmc_row(out, recording.rows[i], recording.kind, labels);

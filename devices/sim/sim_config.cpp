@@ -29,7 +29,7 @@ const char* calibration_name(SimConfig::Calibration c) {
 double sim_noise_sigma_mm(const SimConfig& config, const SensorSpec* model) {
   if (config.noise_sigma_mm) return *config.noise_sigma_mm;
   if (model != nullptr && model->position_noise_sd_mm) return *model->position_noise_sd_mm;
-  return kDefaultSimNoiseSigmaMm;
+  return kDefaultPositionNoiseSdMm;
 }
 
 void apply_motion_spec(SimConfig& c, const std::string& spec) {

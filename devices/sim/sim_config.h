@@ -36,10 +36,6 @@
 
 namespace lmc::devices {
 
-// The noise σ of a controller whose model has no figure in the catalogue (the study's model, ir170),
-// named where the catalogue is (the Layout tab shows it too).
-inline constexpr double kDefaultSimNoiseSigmaMm = kDefaultPositionNoiseSdMm;
-
 struct SimUnplug {
   std::string slot;
   double at_s = 0;
@@ -72,7 +68,7 @@ struct SimConfig {
   bool noise = true;
   // Gaussian noise σ per axis (mm) on every reported point. Unset (the default, JSON without the
   // key or null): each controller uses its slot's model's catalogue figure (position_noise_sd_mm:
-  // lmc 1.75, lmc2 0.6), or kDefaultSimNoiseSigmaMm where the model has none, so a rig of the
+  // lmc 1.75, lmc2 0.6), or kDefaultPositionNoiseSdMm where the model has none, so a rig of the
   // study's model is simulated as it always was. Set: this σ for every controller, whatever its
   // model; a lab that measured its own rig's noise sets it. The stand-in model does not change it.
   std::optional<double> noise_sigma_mm;
@@ -106,7 +102,7 @@ struct SimConfig {
 };
 
 // The noise σ (mm per axis) of a simulated controller of catalogue model `model` (nullptr: none):
-// the configured noise_sigma_mm, else the model's position_noise_sd_mm, else kDefaultSimNoiseSigmaMm.
+// the configured noise_sigma_mm, else the model's position_noise_sd_mm, else kDefaultPositionNoiseSdMm.
 double sim_noise_sigma_mm(const SimConfig& config, const SensorSpec* model);
 
 SimConfig sim_config_from_json(const nlohmann::json& j, const std::string& source);

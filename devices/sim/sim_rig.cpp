@@ -59,7 +59,7 @@ struct SimRig::Device {
   std::mt19937_64 rng;
   double rate_hz = 20;
   double rate_scale = 1.0;  // the model's nominal rate over the study controller's
-  double noise_sigma_mm = kDefaultSimNoiseSigmaMm;
+  double noise_sigma_mm = kDefaultPositionNoiseSdMm;
   double next_time_s = 0;
   double last_time_s = -1;
   double reported_rate_hz = 0;

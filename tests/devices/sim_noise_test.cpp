@@ -87,7 +87,7 @@ TEST(SimNoise, TheCatalogueGivesTheLmcAndLmc2FiguresAndNoneForTheStudyOrIr170) {
   SimConfig c;
   EXPECT_EQ(sim_noise_sigma_mm(c, cat.find("lmc")), 1.75);
   EXPECT_EQ(sim_noise_sigma_mm(c, cat.find("lmc2")), 0.6);
-  EXPECT_EQ(sim_noise_sigma_mm(c, cat.find("study")), kDefaultSimNoiseSigmaMm);
+  EXPECT_EQ(sim_noise_sigma_mm(c, cat.find("study")), kDefaultPositionNoiseSdMm);
   EXPECT_EQ(sim_noise_sigma_mm(c, cat.find("ir170")), 1.0);
   EXPECT_EQ(sim_noise_sigma_mm(c, nullptr), 1.0);
   c.noise_sigma_mm = 0.3;
