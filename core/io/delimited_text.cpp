@@ -56,8 +56,15 @@ std::string read_text_file(const std::filesystem::path& path, const std::string&
   if (!more && is_blank(without_bom(bytes))) return bytes;
   check_header(without_bom(std::string_view(bytes).substr(0, newline)));
   if (more) {
-    // Read the rest into the same buffer: one copy of the file in memory.
-    if (!ec) bytes.reserve(static_cast<size_t>(size));
+    // Read the rest into the same buffer, straight to its place: one copy of the file in memory,
+    // and no second pass over it through a chunk.
+    if (!ec && size > bytes.size()) {
+      const size_t have = bytes.size();
+      bytes.resize(static_cast<size_t>(size));
+      in.read(bytes.data() + have, static_cast<std::streamsize>(bytes.size() - have));
+      bytes.resize(have + static_cast<size_t>(in.gcount()));
+    }
+    // Whatever the file holds beyond the size it had when opened (one still being written).
     std::vector<char> chunk(1 << 16);
     while (in.read(chunk.data(), static_cast<std::streamsize>(chunk.size())) || in.gcount() > 0)
       bytes.append(chunk.data(), static_cast<size_t>(in.gcount()));
@@ -187,7 +194,7 @@ void split_whitespace(std::string_view line, std::vector<Field>& out) {
   }
 }
 
-std::optional<double> parse_double(std::string_view s) {
+std::optional<double> parse_double_general(std::string_view s) {
   double value = 0.0;
   // Nearly every field is a bare number: read whole, it is what trimming first would give too.
   if (const auto [ptr, ec] = std::from_chars(s.data(), s.data() + s.size(), value, std::chars_format::general);

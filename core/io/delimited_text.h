@@ -12,6 +12,8 @@
 #include <string_view>
 #include <vector>
 
+#include "core/common/plain_decimal.h"
+
 namespace lmc::text {
 
 // One line of a file: its text without the line break (a trailing '\r' is removed too), its
@@ -72,7 +74,14 @@ inline bool is_blank(std::string_view s) {
 
 // The whole of `s` (surrounding spaces allowed) as a double: decimal or exponent form, "nan",
 // "NaN", "inf"; a leading '+' is accepted. nullopt for anything else, incl. out-of-range values.
-std::optional<double> parse_double(std::string_view s);
+// Inline: a plain decimal (nearly every field) is read here (plain_decimal.h); the rest goes to
+// parse_double_general, which gives the same value for a plain decimal too.
+std::optional<double> parse_double_general(std::string_view s);
+inline std::optional<double> parse_double(std::string_view s) {
+  double value = 0.0;
+  if (read_plain_decimal(s.data(), s.data() + s.size(), value) == s.data() + s.size() && !s.empty()) return value;
+  return parse_double_general(s);
+}
 // The whole of `s` as an integer; an integral decimal such as "3.0" is accepted too (some
 // writers, e.g. pandas, print integer columns that way) when it is exactly representable.
 std::optional<std::int64_t> parse_int(std::string_view s);

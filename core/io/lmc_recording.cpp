@@ -270,8 +270,13 @@ class RowParser {
     const char* const end = text.data() + text.size();
     double xyz[3];
     for (int a = 0; a < 3; ++a) {
-      const auto [ptr, ec] = std::from_chars(at, end, xyz[a], std::chars_format::general);
-      if (ec != std::errc{} || ptr == at || is_implausible(xyz[a])) return false;
+      const char* ptr = read_plain_decimal(at, end, xyz[a]);
+      if (ptr == nullptr) {
+        const auto [general_end, ec] = std::from_chars(at, end, xyz[a], std::chars_format::general);
+        if (ec != std::errc{} || general_end == at) return false;
+        ptr = general_end;
+      }
+      if (is_implausible(xyz[a])) return false;
       if (a < 2) {
         if (ptr == end || *ptr != ',') return false;
         at = ptr + 1;

@@ -41,6 +41,58 @@ std::map<std::string, text::Field> header_values(const text::Line& keys, const t
   return out;
 }
 
+// A data row of plain numbers only, read in one pass: "Frame#<tab>Time<tab>X1<tab>…" with every
+// cell a plain decimal (plain_decimal.h), none beyond `max_coordinate`, and nothing after the last
+// but tabs or spaces. Nearly every row of a real or simulated file. Anything else (a blank cell, an
+// exponent, a '+', a bad value) returns false, and the row is read again by the checks in
+// parse_trc_text, which name what is wrong; the values are the same either way.
+struct PlainRow {
+  std::int64_t frame = 0;
+  double time = 0.0;
+  long zero_samples = 0;
+};
+bool read_plain_trc_row(std::string_view text, int markers, double max_coordinate, PlainRow& row,
+                        std::vector<Eigen::Vector3d>& positions) {
+  const char* at = text.data();
+  const char* const end = text.data() + text.size();
+  // Frame#: digits only (parse_int reads them alike).
+  const char* const digits = at;
+  std::int64_t frame = 0;
+  while (at != end && *at >= '0' && *at <= '9' && at - digits < 18) frame = frame * 10 + (*at++ - '0');
+  if (at == digits || at == end || *at != '\t') return false;
+  double time = 0.0;
+  at = read_plain_decimal(at + 1, end, time);
+  if (at == nullptr || at == end || *at != '\t') return false;
+  ++at;
+  long zeros = 0;
+  for (int m = 0; m < markers; ++m) {
+    double xyz[3];
+    for (int a = 0; a < 3; ++a) {
+      at = read_plain_decimal(at, end, xyz[a]);
+      if (at == nullptr || std::fabs(xyz[a]) > max_coordinate) return false;
+      const bool last = m == markers - 1 && a == 2;
+      if (!last) {
+        if (at == end || *at != '\t') return false;
+        ++at;
+      }
+    }
+    Eigen::Vector3d& p = positions[static_cast<size_t>(m)];
+    p = Eigen::Vector3d(xyz[0], xyz[1], xyz[2]);
+    if (p.isZero(0.0)) {
+      // Some exporters write 0 0 0 for a gap (docs/formats.md), as in parse_trc_text.
+      ++zeros;
+      p.setConstant(kNaN);
+    }
+  }
+  for (; at != end; ++at) {
+    if (*at != '\t' && *at != ' ') return false;
+  }
+  row.frame = frame;
+  row.time = time;
+  row.zero_samples = zeros;
+  return true;
+}
+
 }  // namespace
 
 int TrcData::marker_index(const std::string& name) const {
@@ -166,10 +218,22 @@ TrcData parse_trc_text(std::string_view content, const std::string& source_name)
   const size_t expected = 2 + 3 * static_cast<size_t>(markers);
   long partial_samples = 0;
   long zero_samples = 0;
+  const double max_coordinate = trc.units == "m" ? 100.0 : 100000.0;
   // OpenSim expects a blank line after the X1/Y1 line; the study's file has none. Both are read.
   for (size_t i = kHeaderLines; i < lines.size(); ++i) {
     const text::Line& line = lines[i];
     if (text::is_blank(line.text)) continue;
+    if (markers > 0) {
+      std::vector<Eigen::Vector3d> row(static_cast<size_t>(markers));
+      PlainRow plain;
+      if (read_plain_trc_row(line.text, markers, max_coordinate, plain, row)) {
+        zero_samples += plain.zero_samples;
+        trc.frame_numbers.push_back(static_cast<int>(plain.frame));
+        trc.times_s.push_back(plain.time);
+        trc.positions.push_back(std::move(row));
+        continue;
+      }
+    }
     text::split_fields(line.text, '\t', fields);
     while (fields.size() > expected && text::is_blank(fields.back().text)) fields.pop_back();
     if (fields.size() != expected) {
@@ -196,7 +260,6 @@ TrcData parse_trc_text(std::string_view content, const std::string& source_name)
                     "Time is not a finite number: " + text::quoted_excerpt(fields[1].text));
     }
     std::vector<Eigen::Vector3d> row(static_cast<size_t>(markers));
-    const double max_coordinate = trc.units == "m" ? 100.0 : 100000.0;
     for (int m = 0; m < markers; ++m) {
       Eigen::Vector3d p;
       int missing = 0;

@@ -39,6 +39,40 @@ TEST(TrcRead, MissingMarkersEmptyNanAndBlankLine) {
   EXPECT_EQ(trc.marker_index("Elbow"), -1);
 }
 
+// Rows of plain numbers take a quick path (trc.cpp); a row with anything else is read by the full
+// checks. Both must give the same values, frame numbers, times and gap counts.
+TEST(TrcRead, PlainRowsAndRowsWithSpacesExponentsOrGapsReadAlike) {
+  const std::string header =
+      "PathFileType\t4\t(X/Y/Z)\tt.trc\n"
+      "DataRate\tCameraRate\tNumFrames\tNumMarkers\tUnits\tOrigDataRate\tOrigDataStartFrame\tOrigNumFrames\n"
+      "100\t100\t2\t2\tmm\t100\t1\t2\n"
+      "Frame#\tTime\tA\t\t\tB\t\t\n"
+      "\t\tX1\tY1\tZ1\tX2\tY2\tZ2\n\n";
+  const TrcData plain = parse_trc_text(header +
+                                           "1\t0\t149.41004537989676\t-2.5\t0.125\t0\t0\t0\n"
+                                           "2\t0.01\t-0.000012345\t12\t7.25\t1\t2\t3\t\t\n",
+                                       "plain.trc");
+  const TrcData general = parse_trc_text(header +
+                                             "1\t0.0\t 149.41004537989676\t-2.5e0\t+0.125\t0\t0\t0\n"
+                                             "2\t1e-2\t-1.2345e-5\t12.0\t7.25 \t1\t2\t3\t \t\n",
+                                         "general.trc");
+  for (const TrcData* trc : {&plain, &general}) {
+    ASSERT_EQ(trc->frame_count(), 2);
+    EXPECT_EQ(trc->frame_numbers, (std::vector<int>{1, 2}));
+    EXPECT_EQ(trc->times_s, (std::vector<double>{0.0, 0.01}));
+    EXPECT_EQ(trc->positions[0][0], Eigen::Vector3d(149.41004537989676, -2.5, 0.125));
+    EXPECT_TRUE(trc->positions[0][1].array().isNaN().all()) << "0 0 0 is an exporter's gap";
+    EXPECT_EQ(trc->positions[1][0], Eigen::Vector3d(-0.000012345, 12, 7.25));
+    EXPECT_EQ(trc->positions[1][1], Eigen::Vector3d(1, 2, 3));
+    ASSERT_EQ(trc->warnings.size(), 1u);
+    EXPECT_THAT(trc->warnings[0], HasSubstr("1 marker sample(s) were 0,0,0"));
+  }
+  // A value beyond the plausible range in an otherwise plain row is refused by the full checks,
+  // with its place.
+  expect_error_at([&] { (void)parse_trc_text(header + "1\t0\t1\t2\t3\t4\t5\t123456.5\n", "far.trc"); }, "far.trc", 7,
+                  15, "implausible");
+}
+
 TEST(TrcRoundTrip, WriteThenReadIsExactIncludingGaps) {
   TrcData trc;
   trc.data_rate_hz = 250.0;

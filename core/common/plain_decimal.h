@@ -1,0 +1,118 @@
+#pragma once
+// A quick exact reader for the numbers the recordings and TRC files are made of: an optional '-',
+// digits, and an optional '.' followed by digits, at most 19 digits in all. It gives exactly the
+// double std::from_chars gives, or declines and leaves the number to it; a subject's files hold
+// ten million such numbers, and libstdc++'s from_chars was an eighth of processing.
+//
+// Why it is exact: the digits make an integer w < 10^19, and the value is w / 10^f.
+//  * w ≤ 2^53: w and 10^f (f ≤ 19) are both exact doubles, and one IEEE division rounds their
+//    quotient correctly (the classic fast path of decimal conversion).
+//  * w > 2^53: w / 10^f = w / 5^f · 2^−f. With R = floor(2^(63+e) / 5^f) (64 bits) and w shifted
+//    left to 64 bits, the product P = w·R is at most w below the exact w·2^(63+e)/5^f (R is at
+//    most 1 below the exact reciprocal). Its top 53 bits, rounded by the bits below, are the
+//    double, unless a halfway point between two doubles lies within that margin of P: only then
+//    could the exact value round differently, and those (about one number in a thousand) are
+//    declined. The same argument as Lemire's fast decimal conversion, on the one range we need.
+#include <array>
+#include <bit>
+#include <cstddef>
+#include <cstdint>
+
+namespace lmc {
+
+namespace plain_decimal_detail {
+
+inline constexpr double kPow10[] = {1e0,  1e1,  1e2,  1e3,  1e4,  1e5,  1e6,  1e7,  1e8,  1e9,
+                                    1e10, 1e11, 1e12, 1e13, 1e14, 1e15, 1e16, 1e17, 1e18, 1e19};
+inline constexpr int kMaxDigits = 19;  // 10^19 − 1 < 2^64
+
+__extension__ typedef unsigned __int128 u128;  // GCC and Clang; -Wpedantic needs the marker
+
+// 1/5^f as R / 2^(63+e), R = floor(2^(63+e) / 5^f) in [2^63, 2^64).
+struct Reciprocal {
+  std::uint64_t r = 0;
+  int e = 0;
+};
+inline constexpr std::array<Reciprocal, kMaxDigits + 1> kReciprocals = [] {
+  std::array<Reciprocal, kMaxDigits + 1> t{};
+  std::uint64_t pow5 = 1;
+  for (std::size_t f = 0; f < t.size(); ++f) {
+    t[f].e = f == 0 ? 0 : static_cast<int>(std::bit_width(pow5));
+    t[f].r = static_cast<std::uint64_t>((u128{1} << (63 + t[f].e)) / pow5);
+    pow5 *= 5;
+  }
+  return t;
+}();
+
+// w (> 2^53, < 2^64) / 10^f as a double, or false when w is too near a halfway point to tell.
+inline bool wide_quotient(std::uint64_t w, int f, double& out) {
+  const int shift = std::countl_zero(w);
+  const Reciprocal& rec = kReciprocals[static_cast<std::size_t>(f)];
+  const u128 product = static_cast<u128>(w << shift) * rec.r;  // in [2^126, 2^128)
+  const auto high = static_cast<std::uint64_t>(product >> 64);
+  const auto low = static_cast<std::uint64_t>(product);
+  // The product's margin (< 2^64) must not carry it from 127 to 128 bits.
+  if (high == (~std::uint64_t{0} >> 1)) return false;
+  const int top = static_cast<int>(high >> 63);
+  const int dropped = 10 + top;  // bits of `high` below the double's 53 (plus all of `low`)
+  const std::uint64_t half = std::uint64_t{1} << (dropped - 1);
+  const std::uint64_t rest = high & ((std::uint64_t{1} << dropped) - 1);
+  // A halfway point within the margin above the product: the exact value may be on either side.
+  if (rest == half - 1 || (rest == half && low == 0)) return false;
+  const std::uint64_t significand = (high >> dropped) + (rest >= half ? 1 : 0);  // ≤ 2^53
+  const int exponent = 64 + dropped - 63 - rec.e - shift - f;
+  const double scale = std::bit_cast<double>(static_cast<std::uint64_t>(1023 + exponent) << 52);
+  out = static_cast<double>(static_cast<std::int64_t>(significand)) * scale;  // exact: a power of two
+  return true;
+}
+
+inline bool is_digit(char c) {
+  return static_cast<unsigned char>(c - '0') < 10;
+}
+
+}  // namespace plain_decimal_detail
+
+// Reads a plain decimal starting at `first` and stopping at the first character that cannot
+// continue it (or at `last`). Returns where it stopped, or nullptr (`out` untouched) when the text
+// there is not a plain decimal of at most 19 digits, or when the quick conversion declines: the
+// caller then reads the field with std::from_chars and its own checks.
+inline const char* read_plain_decimal(const char* first, const char* last, double& out) {
+  namespace d = plain_decimal_detail;
+  const char* p = first;
+  const bool negative = p != last && *p == '-';
+  if (negative) ++p;
+  std::uint64_t w = 0;
+  // Digits up to `stop` (at most kMaxDigits in all); one more digit after it declines.
+  const auto digits_until = [&w, &p](const char* stop) {
+    while (p != stop) {
+      const auto digit = static_cast<unsigned char>(*p - '0');
+      if (digit > 9) break;
+      w = w * 10 + digit;
+      ++p;
+    }
+  };
+  const char* const whole = p;
+  digits_until(last - p > d::kMaxDigits ? p + d::kMaxDigits : last);
+  const auto whole_digits = static_cast<int>(p - whole);
+  if (whole_digits == 0 || (p != last && d::is_digit(*p))) return nullptr;
+  int fraction_digits = 0;
+  if (p != last && *p == '.') {
+    const char* const fraction = ++p;
+    const int room = d::kMaxDigits - whole_digits;
+    digits_until(last - p > room ? p + room : last);
+    fraction_digits = static_cast<int>(p - fraction);
+    if (fraction_digits == 0 || (p != last && d::is_digit(*p))) return nullptr;
+  }
+  // An exponent or a second point: from_chars's business.
+  if (p != last && (*p == 'e' || *p == 'E' || *p == '.')) return nullptr;
+  double v = 0.0;
+  if (w <= (std::uint64_t{1} << 53)) {
+    v = static_cast<double>(static_cast<std::int64_t>(w)) / d::kPow10[fraction_digits];
+  } else if (!d::wide_quotient(w, fraction_digits, v)) {
+    return nullptr;
+  }
+  out = negative ? -v : v;
+  return p;
+}
+
+}  // namespace lmc

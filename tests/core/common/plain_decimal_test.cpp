@@ -1,0 +1,132 @@
+#include "core/common/plain_decimal.h"
+
+#include <gtest/gtest.h>
+
+#include <bit>
+#include <charconv>
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <random>
+#include <string>
+
+namespace lmc::plain_decimal_test {
+
+// Compares read_plain_decimal with std::from_chars on texts: where ours reads a number, it must be
+// the same double (bit for bit) ending at the same character. Counts how often ours declines.
+struct Comparison {
+  long checked = 0;
+  long declined = 0;
+  long differing = 0;
+  void check(const std::string& text) {
+    ++checked;
+    double ours = 0.0;
+    const char* end = read_plain_decimal(text.data(), text.data() + text.size(), ours);
+    if (end == nullptr) {
+      ++declined;
+      return;
+    }
+    double standard = 0.0;
+    const auto [standard_end, ec] = std::from_chars(text.data(), text.data() + text.size(), standard);
+    const bool same = ec == std::errc{} && standard_end == end &&
+                      std::bit_cast<std::uint64_t>(standard) == std::bit_cast<std::uint64_t>(ours);
+    if (!same && ++differing <= 5) {
+      ADD_FAILURE() << "'" << text << "': ours " << std::hexfloat << ours << " ending at " << end - text.data()
+                    << ", std::from_chars " << standard << " ending at " << standard_end - text.data();
+    }
+  }
+};
+
+std::string shortest(double v) {
+  char buf[64];
+  return std::string(buf, std::to_chars(buf, buf + sizeof buf, v).ptr);
+}
+std::string shortest(float v) {
+  char buf[64];
+  return std::string(buf, std::to_chars(buf, buf + sizeof buf, v).ptr);
+}
+std::string with_precision(double v, int significant) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%.*g", significant, v);
+  return buf;
+}
+
+TEST(PlainDecimal, ReadsTheNumbersOfRecordingsAndTrcFilesAsFromCharsDoes) {
+  double v = 0.0;
+  const std::string text = "149.41004537989676\t-2.98976";
+  const char* end = read_plain_decimal(text.data(), text.data() + text.size(), v);
+  ASSERT_NE(end, nullptr);
+  EXPECT_EQ(*end, '\t');
+  EXPECT_EQ(v, 149.41004537989676);
+  end = read_plain_decimal(end + 1, text.data() + text.size(), v);
+  ASSERT_EQ(end, text.data() + text.size());
+  EXPECT_EQ(v, -2.98976);
+
+  Comparison c, small;
+  std::mt19937_64 rng(20261128);
+  std::uniform_real_distribution<double> coordinate(-400.0, 400.0);
+  for (int i = 0; i < 300000; ++i) {
+    const double x = coordinate(rng);
+    c.check(shortest(x));                       // our simulator and recorder: up to 17 digits
+    c.check(shortest(static_cast<float>(x)));   // a float's shortest form
+    c.check(with_precision(x, 8));              // Vicon's TRC export
+    c.check(with_precision(x, 6));              // the study's recordings
+    small.check(with_precision(x * 1e-3, 17));  // metres: with the leading zeros often over 19 digits
+  }
+  EXPECT_EQ(c.differing, 0) << "of " << c.checked;
+  EXPECT_EQ(small.differing, 0) << "of " << small.checked;
+  // The quick path must be the common one, or it buys nothing: of these forms only a number of
+  // more than 16 digits near a halfway point is declined (about 1 in 1000 of those).
+  EXPECT_LT(c.declined, c.checked / 1000) << "declined " << c.declined << " of " << c.checked;
+}
+
+TEST(PlainDecimal, AgreesOnRandomDigitStringsAndOnHalfwayIntegers) {
+  Comparison c;
+  std::mt19937_64 rng(7);
+  for (int i = 0; i < 400000; ++i) {
+    // 1–19 random digits with the point anywhere (or none), either sign, leading zeros included.
+    const int digits = 1 + static_cast<int>(rng() % 19);
+    std::string s = rng() % 2 ? "-" : "";
+    const int point = static_cast<int>(rng() % static_cast<unsigned>(digits + 1));
+    for (int d = 0; d < digits; ++d) {
+      if (d == point && d > 0) s += '.';
+      s += static_cast<char>('0' + rng() % 10);
+    }
+    c.check(s);
+  }
+  // Integers halfway between two doubles (2^53 + odd, and the like up to 10^19): from_chars rounds
+  // them to even; these are where a double rounding could go wrong.
+  for (int shift = 0; shift <= 10; ++shift) {
+    for (int i = 0; i < 20000; ++i) {
+      const std::uint64_t spacing = std::uint64_t{1} << (shift + 1);  // between doubles in [2^(53+shift), ...)
+      const std::uint64_t base = (std::uint64_t{1} << (53 + shift)) + (rng() % (std::uint64_t{1} << 40)) * spacing;
+      for (const std::uint64_t n : {base + spacing / 2, base + spacing / 2 - 1, base + spacing / 2 + 1}) {
+        if (n >= 10000000000000000000ull) continue;
+        c.check(std::to_string(n));
+        c.check(std::to_string(n / 10) + "." + std::to_string(n % 10));
+      }
+    }
+  }
+  EXPECT_EQ(c.differing, 0) << "of " << c.checked;
+  EXPECT_GT(c.checked - c.declined, c.checked / 2);
+}
+
+TEST(PlainDecimal, DeclinesWhatIsNotAPlainDecimalOfAtMost19Digits) {
+  double v = 42.0;
+  for (const std::string s : {"", "-", ".5", "5.", "+1", " 1", "1e5", "1.5E-3", "1.2.3", "nan", "inf", "-inf",
+                              "12345678901234567890", "1234567890.1234567890", "x1"}) {
+    EXPECT_EQ(read_plain_decimal(s.data(), s.data() + s.size(), v), nullptr) << "'" << s << "'";
+    EXPECT_EQ(v, 42.0) << "'" << s << "' changed the output";
+  }
+  // It stops at anything else, the way from_chars does: the caller checks the separator.
+  const std::string triplet = "1.5,-0,7";
+  const char* end = read_plain_decimal(triplet.data(), triplet.data() + triplet.size(), v);
+  ASSERT_NE(end, nullptr);
+  EXPECT_EQ(*end, ',');
+  EXPECT_EQ(v, 1.5);
+  end = read_plain_decimal(end + 1, triplet.data() + triplet.size(), v);
+  ASSERT_NE(end, nullptr);
+  EXPECT_TRUE(std::signbit(v) && v == 0.0) << "-0 keeps its sign";
+}
+
+}  // namespace lmc::plain_decimal_test
