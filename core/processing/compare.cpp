@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <vector>
 
 namespace lmc {
 
@@ -22,20 +23,39 @@ LagEstimate estimate_lag(const HandTrack& lmc, const HandTrack& vicon, int max_l
   const Vec3 ml = mean_of(lmc), mv = mean_of(vicon);
   if (!is_finite(ml) || !is_finite(mv)) return best;
   const int min_overlap = std::max(10, std::min(n, m) / 2);
+  // Each track's centred wrist, its squared norm and whether it is there, laid out in a row once:
+  // the scan below visits every pair ~100 times (once per lag), and reading the wrist out of each
+  // 30-point frame every time was most of its cost. Same values, added in the same order.
+  struct Centred {
+    std::vector<Vec3> d;
+    std::vector<double> sq;
+    std::vector<char> ok;
+  };
+  const auto centred = [](const HandTrack& t, const Vec3& mean) {
+    Centred c;
+    c.d.resize(static_cast<size_t>(t.frame_count));
+    c.sq.resize(c.d.size());
+    c.ok.resize(c.d.size());
+    for (int f = 0; f < t.frame_count; ++f) {
+      const auto k = static_cast<size_t>(f);
+      const Vec3& p = t.at(f, kWrist);
+      c.ok[k] = is_finite(p) ? 1 : 0;
+      c.d[k] = p - mean;
+      c.sq[k] = c.d[k].squaredNorm();
+    }
+    return c;
+  };
+  const Centred a = centred(lmc, ml), b = centred(vicon, mv);
   double best_corr = -2.0;
   for (int lag = -max_lag_frames; lag <= max_lag_frames; ++lag) {
     double sab = 0, saa = 0, sbb = 0;
     int count = 0;
-    for (int f = 0; f < n; ++f) {
-      const int g = f - lag;
-      if (g < 0 || g >= m) continue;
-      const Vec3& a = lmc.at(f, kWrist);
-      const Vec3& b = vicon.at(g, kWrist);
-      if (!is_finite(a) || !is_finite(b)) continue;
-      const Vec3 da = a - ml, db = b - mv;
-      sab += da.dot(db);
-      saa += da.squaredNorm();
-      sbb += db.squaredNorm();
+    for (int f = std::max(0, lag); f < std::min(n, m + lag); ++f) {
+      const auto i = static_cast<size_t>(f), j = static_cast<size_t>(f - lag);
+      if (!a.ok[i] || !b.ok[j]) continue;
+      sab += a.d[i].dot(b.d[j]);
+      saa += a.sq[i];
+      sbb += b.sq[j];
       ++count;
     }
     if (count < min_overlap || saa <= 0.0 || sbb <= 0.0) continue;

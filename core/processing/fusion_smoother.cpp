@@ -4,6 +4,7 @@
 #include <array>
 #include <cmath>
 #include <limits>
+#include <memory>
 
 #if defined(__x86_64__) && defined(__GNUC__)
 #include <immintrin.h>
@@ -21,9 +22,10 @@ int point_finger(int i) {
 }
 
 // `rows` × `cols` row-major → `cols` × `rows` row-major, eight rows at a time so that both the
-// reads and the writes stay within a few cache lines (a lane's steps are ~900 bytes apart).
-std::vector<double> transposed(const std::vector<double>& in, size_t rows, size_t cols) {
-  std::vector<double> out(rows * cols);
+// reads and the writes stay within a few cache lines (a lane's steps are ~900 bytes apart). The
+// result is not zeroed first: every element is written.
+std::unique_ptr<double[]> transposed(const std::vector<double>& in, size_t rows, size_t cols) {
+  auto out = std::make_unique_for_overwrite<double[]>(rows * cols);
   constexpr size_t kBlock = 8;
   for (size_t r0 = 0; r0 < rows; r0 += kBlock) {
     const size_t r1 = std::min(rows, r0 + kBlock);
@@ -286,8 +288,8 @@ HandTrack fuse_default(const std::vector<const HandTrack*>& devices,
 
   // The sums turned lane-major for the filter passes, which walk one lane's steps in a row; the
   // smoothed lanes are turned back step-major for lanes_to_hand.
-  const std::vector<double> wsum_lanes = transposed(wsum, steps, kL);
-  const std::vector<double> zsum_lanes = transposed(zsum, steps, kL);
+  const auto wsum_lanes = transposed(wsum, steps, kL);
+  const auto zsum_lanes = transposed(zsum, steps, kL);
   std::vector<double> smoothed(kL * steps, kNaN);  // lane-major
   constexpr size_t kGroup = 4;
   std::array<std::vector<Step>, kGroup> st;
@@ -314,10 +316,10 @@ HandTrack fuse_default(const std::vector<const HandTrack*>& devices,
                         [&](int f, double x) { smoothed[l * steps + static_cast<size_t>(f)] = x; });
     }
   }
-  const std::vector<double> fused = transposed(smoothed, kL, steps);  // step-major
+  const auto fused = transposed(smoothed, kL, steps);  // step-major
   for (int f = 0; f < n; ++f) {
     lanes_to_hand(
-        std::span<const double, kFusionLanes>(fused.data() + static_cast<size_t>(f) * kL, kL),
+        std::span<const double, kFusionLanes>(fused.get() + static_cast<size_t>(f) * kL, kL),
         std::span<Vec3, kNumHandPoints>(out.points.data() + static_cast<size_t>(f) * kNumHandPoints, kNumHandPoints));
   }
   return out;

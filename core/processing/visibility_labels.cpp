@@ -32,11 +32,13 @@ std::vector<FingerLabels> visibility_labels(const HandTrack& track, const Visibi
   // worth of them, written out and read back, cost more than the labels themselves. Every frame's
   // label depends on that frame alone, so the result is the same for any thread count.
   tbb::parallel_for(tbb::blocked_range<int>(0, n, 64), [&](const tbb::blocked_range<int>& r) {
-    HandFrame frame;
+    PreparedFrame prepared;
     for (int f = r.begin(); f != r.end(); ++f) {
-      frame.hand_present = track.has_hand(f);
-      for (int i = 0; i < kNumHandPoints; ++i) frame.point(i) = track.at(f, i);
-      labels[static_cast<size_t>(f)] = frame_visibility_labels(prepare_frame(frame), frame.hand_present, limits);
+      const bool hand = track.has_hand(f);
+      prepare_frame_into(std::span<const Vec3, kNumHandPoints>(
+                             track.points.data() + static_cast<size_t>(f) * kNumHandPoints, kNumHandPoints),
+                         hand, prepared);
+      labels[static_cast<size_t>(f)] = frame_visibility_labels(prepared, hand, limits);
     }
   });
   return labels;

@@ -16,11 +16,17 @@ int ray_marker_hand_point(int k) {
 
 PreparedFrame prepare_frame(const HandFrame& frame) {
   PreparedFrame fr;
-  if (!frame.hand_present) return fr;
+  prepare_frame_into(frame.points, frame.hand_present, fr);
+  return fr;
+}
+
+void prepare_frame_into(std::span<const Vec3, kNumHandPoints> points, bool hand_present, PreparedFrame& fr) {
+  fr.valid = false;
+  if (!hand_present) return;
   std::array<Eigen::Vector3d, kNumRayMarkers> s;
   for (int k = 0; k < kNumRayMarkers; ++k) {
-    const Eigen::Vector3d& p = frame.point(ray_marker_hand_point(k));
-    if (!p.allFinite()) return fr;
+    const Eigen::Vector3d& p = points[static_cast<size_t>(ray_marker_hand_point(k))];
+    if (!p.allFinite()) return;
     s[static_cast<size_t>(k)] = p;
     fr.mx[static_cast<size_t>(k)] = p.x();
     fr.my[static_cast<size_t>(k)] = p.y();
@@ -73,7 +79,6 @@ PreparedFrame prepare_frame(const HandFrame& frame) {
     }
   }
   fr.valid = true;
-  return fr;
 }
 
 std::vector<PreparedFrame> prepare_frames(std::span<const HandFrame> frames) {

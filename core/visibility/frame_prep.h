@@ -46,6 +46,10 @@ struct PreparedFrame {
 };
 
 PreparedFrame prepare_frame(const HandFrame& frame);
+// The same into `out`, which may hold an earlier frame: a frame without a hand or with a
+// non-finite marker only sets valid = false and leaves the rest (which nothing reads then). For
+// loops over a trial's frames, which would otherwise zero and copy a 2 KB frame each time.
+void prepare_frame_into(std::span<const Vec3, kNumHandPoints> points, bool hand_present, PreparedFrame& out);
 // Prepares many frames (in parallel; the result does not depend on the thread count).
 std::vector<PreparedFrame> prepare_frames(std::span<const HandFrame> frames);
 

@@ -1,6 +1,8 @@
-// Writing numbers as the study's text files hold them: the shortest form of a double (our
+// Numbers as the study's text files hold them. Writing: the shortest form of a double (our
 // write_shortest against std::to_chars, which it matches byte for byte) and four-decimal fixed
-// point. The fused file of a subject is millions of such numbers (docs/results/processing.md).
+// point. Reading: our plain-decimal reader against std::from_chars (the same doubles). A subject's
+// recordings, Vicon files and fused outputs are millions of such numbers
+// (docs/results/processing.md).
 // Run: build/<release>/tests/lmc_benchmarks --benchmark_filter=NumberText
 #include <benchmark/benchmark.h>
 
@@ -10,6 +12,7 @@
 #include <vector>
 
 #include "core/common/number_format.h"
+#include "core/common/plain_decimal.h"
 #include "core/common/shortest_double.h"
 
 namespace {
@@ -54,5 +57,48 @@ void BM_NumberTextFixedFourDecimals(benchmark::State& state) {
   state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(values.size()));
 }
 BENCHMARK(BM_NumberTextFixedFourDecimals);
+
+// The coordinates as text, each followed by a tab as in a TRC row.
+std::string coordinate_text() {
+  std::string text;
+  char buf[64];
+  for (const double v : coordinates()) {
+    text.append(buf, std::to_chars(buf, buf + sizeof buf, v).ptr);
+    text += '\t';
+  }
+  return text;
+}
+
+void BM_NumberTextReadStd(benchmark::State& state) {
+  const std::string text = coordinate_text();
+  for (auto _ : state) {
+    const char* at = text.data();
+    const char* const end = text.data() + text.size();
+    while (at < end) {
+      double v = 0.0;
+      at = std::from_chars(at, end, v).ptr + 1;
+      benchmark::DoNotOptimize(v);
+    }
+  }
+  state.SetItemsProcessed(state.iterations() * 4096);
+}
+BENCHMARK(BM_NumberTextReadStd);
+
+void BM_NumberTextReadOurs(benchmark::State& state) {
+  const std::string text = coordinate_text();
+  for (auto _ : state) {
+    const char* at = text.data();
+    const char* const end = text.data() + text.size();
+    while (at < end) {
+      double v = 0.0;
+      const char* stop = lmc::read_plain_decimal(at, end, v);
+      if (stop == nullptr) stop = std::from_chars(at, end, v).ptr;  // what the readers do
+      at = stop + 1;
+      benchmark::DoNotOptimize(v);
+    }
+  }
+  state.SetItemsProcessed(state.iterations() * 4096);
+}
+BENCHMARK(BM_NumberTextReadOurs);
 
 }  // namespace
