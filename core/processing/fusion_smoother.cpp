@@ -2,7 +2,9 @@
 
 #include <algorithm>
 #include <array>
+#include <bit>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 #include <memory>
 
@@ -156,6 +158,8 @@ namespace fusion_smoother_detail {
 struct Step {
   double x0, x1, p00, p01, p11;  // filtered (symmetric P)
   double z, r;                   // combined measurement (r = inf: none)
+  CvKalman::Gain k;              // the filter's gain at this step (when measured)
+  double c00, c01, c10, c11;     // the smoother's gain C from this step to the next
 };
 
 // The steps of a lane from its first to its last measurement (first < 0: never measured).
@@ -194,7 +198,10 @@ void forward_filters(const std::array<std::vector<Step>*, G>& lanes, const std::
         kf[k].start(s.z, s.r);
       } else {
         kf[k].predict(p.dt_s, p.accel_psd);
-        if (std::isfinite(s.r)) kf[k].update(s.z, s.r);
+        if (std::isfinite(s.r)) {
+          s.k = kf[k].update_covariance(s.r);
+          CvKalman::update_state(s.k, s.z, kf[k].x0, kf[k].x1);
+        }
       }
       s.x0 = kf[k].x0;
       s.x1 = kf[k].x1;
@@ -205,36 +212,67 @@ void forward_filters(const std::array<std::vector<Step>*, G>& lanes, const std::
   }
 }
 
-// After forward_filters: the backward (RTS) smoother over the lane's measured span, then the
-// smoothed positions into `out(f)`, NaN inside stretches without measurement longer than
-// max_gap_frames (and outside the measured span).
-template <typename Out>
-void smooth_and_output(std::vector<Step>& st, MeasuredSpan span, std::vector<int>& since, const SmootherParams& p,
-                       Out out) {
-  if (span.first < 0) return;  // never measured: stays NaN
-  const int first = span.first, last = span.last;
+// The forward filter of a lane measured exactly as `leader` (the same variances at the same
+// steps), after the leader's forward_filters: only the state is stepped, with the leader's gains,
+// which are bit for bit the ones this lane's own filter would compute.
+void follow_forward(std::vector<Step>& st, const std::vector<Step>& leader, MeasuredSpan span,
+                    const SmootherParams& p) {
+  double x0 = 0.0, x1 = 0.0;
+  for (int f = span.first; f <= span.last; ++f) {
+    auto& s = st[static_cast<size_t>(f)];
+    if (f == span.first) {
+      x0 = s.z;  // as CvKalman::start
+      x1 = 0.0;
+    } else {
+      CvKalman::predict_state(p.dt_s, x0, x1);
+      if (std::isfinite(s.r)) CvKalman::update_state(leader[static_cast<size_t>(f)].k, s.z, x0, x1);
+    }
+    s.x0 = x0;
+    s.x1 = x1;
+  }
+}
+
+// After forward_filters: the backward (Rauch–Tung–Striebel) smoother's gains C = P Fᵀ Pp⁻¹ over
+// the lane's measured span, from its filtered covariances.
+void smoother_gains(std::vector<Step>& st, MeasuredSpan span, const SmootherParams& p) {
   const double dt = p.dt_s;
   // Discrete white-noise-acceleration process noise.
   const double q00 = p.accel_psd * dt * dt * dt / 3.0, q01 = p.accel_psd * dt * dt / 2.0, q11 = p.accel_psd * dt;
-  // Backward (RTS) pass: smoothed state overwrites the filtered one (only the means are output).
-  for (int f = last - 1; f >= first; --f) {
+  for (int f = span.last - 1; f >= span.first; --f) {
     auto& s = st[static_cast<size_t>(f)];
-    const auto& nx = st[static_cast<size_t>(f + 1)];
-    // Predicted from s: xp = F x, Pp = F P Fᵀ + Q.
-    const double xp0 = s.x0 + dt * s.x1, xp1 = s.x1;
+    // Predicted from s: Pp = F P Fᵀ + Q.
     const double pp00 = s.p00 + 2.0 * dt * s.p01 + dt * dt * s.p11 + q00;
     const double pp01 = s.p01 + dt * s.p11 + q01;
     const double pp11 = s.p11 + q11;
-    // C = P Fᵀ Pp⁻¹.
     const double a00 = s.p00 + dt * s.p01, a01 = s.p01;  // P Fᵀ row 0: (p00 + dt p01, p01)
     const double a10 = s.p01 + dt * s.p11, a11 = s.p11;  // row 1
     const double det = pp00 * pp11 - pp01 * pp01;
     const double i00 = pp11 / det, i01 = -pp01 / det, i11 = pp00 / det;
-    const double c00 = a00 * i00 + a01 * i01, c01 = a00 * i01 + a01 * i11;
-    const double c10 = a10 * i00 + a11 * i01, c11 = a10 * i01 + a11 * i11;
+    s.c00 = a00 * i00 + a01 * i01;
+    s.c01 = a00 * i01 + a01 * i11;
+    s.c10 = a10 * i00 + a11 * i01;
+    s.c11 = a10 * i01 + a11 * i11;
+  }
+}
+
+// The backward pass of the states with the smoother gains in `gains` (the lane's own, or its
+// leader's): the smoothed state overwrites the filtered one. Then the smoothed positions into
+// `out(f)`, NaN inside stretches without measurement longer than max_gap_frames (and outside the
+// measured span).
+template <typename Out>
+void smooth_and_output(std::vector<Step>& st, const std::vector<Step>& gains, MeasuredSpan span,
+                       std::vector<int>& since, const SmootherParams& p, Out out) {
+  if (span.first < 0) return;  // never measured: stays NaN
+  const int first = span.first, last = span.last;
+  const double dt = p.dt_s;
+  for (int f = last - 1; f >= first; --f) {
+    auto& s = st[static_cast<size_t>(f)];
+    const auto& nx = st[static_cast<size_t>(f + 1)];
+    const auto& c = gains[static_cast<size_t>(f)];
+    const double xp0 = s.x0 + dt * s.x1, xp1 = s.x1;  // predicted from s: xp = F x
     const double d0 = nx.x0 - xp0, d1 = nx.x1 - xp1;
-    s.x0 += c00 * d0 + c01 * d1;
-    s.x1 += c10 * d0 + c11 * d1;
+    s.x0 += c.c00 * d0 + c.c01 * d1;
+    s.x1 += c.c10 * d0 + c.c11 * d1;
   }
   // Output, with NaN inside long stretches without any measurement.
   int gap = 0;
@@ -291,29 +329,63 @@ HandTrack fuse_default(const std::vector<const HandTrack*>& devices,
   const auto wsum_lanes = transposed(wsum, steps, kL);
   const auto zsum_lanes = transposed(zsum, steps, kL);
   std::vector<double> smoothed(kL * steps, kNaN);  // lane-major
+  // Lanes measured alike share one filter's covariances and gains: the y and z of a point are
+  // nearly always measured exactly as its x (same devices, same variances, same steps), and the
+  // covariances and gains hold the divisions. A lane whose sums of inverse variances equal its
+  // point's x lane, bit for bit, follows that lane; any other (the bone lengths, a point measured
+  // in part) runs its own filter. The result is the same either way.
+  std::vector<int> followers_of(kL, 0);  // 0, or the count of the point's lanes after x that follow it
+  std::vector<bool> follows(kL, false);
+  for (size_t l = 0; l + 2 < static_cast<size_t>(kFirstLengthLane); l += 3) {
+    const double* x = wsum_lanes.get() + l * steps;
+    for (size_t c = 1; c <= 2; ++c) {
+      if (!std::equal(x, x + steps, wsum_lanes.get() + (l + c) * steps, [](double a, double b) {
+            return std::bit_cast<std::uint64_t>(a) == std::bit_cast<std::uint64_t>(b);
+          }))
+        break;
+      follows[l + c] = true;
+      followers_of[l] = static_cast<int>(c);
+    }
+  }
+  // Each step's combined measurement of lane l: the inverse-variance mean and its variance.
+  const auto fill_measurements = [&](size_t l, std::vector<Step>& lane) {
+    for (size_t f = 0; f < steps; ++f) {
+      const double w = wsum_lanes[l * steps + f];
+      lane[f].z = w > 0.0 ? zsum_lanes[l * steps + f] / w : 0.0;
+      lane[f].r = w > 0.0 ? 1.0 / w : INFINITY;
+    }
+  };
+  std::vector<size_t> leaders;
+  for (size_t l = 0; l < kL; ++l) {
+    if (!follows[l]) leaders.push_back(l);
+  }
   constexpr size_t kGroup = 4;
   std::array<std::vector<Step>, kGroup> st;
   for (auto& lane : st) lane.resize(steps);
+  std::vector<Step> follower(steps);
   std::vector<int> since(steps);
-  for (size_t l0 = 0; l0 < kL; l0 += kGroup) {
+  for (size_t g0 = 0; g0 < leaders.size(); g0 += kGroup) {
     std::array<std::vector<Step>*, kGroup> group{};
     std::array<MeasuredSpan, kGroup> spans{};
-    for (size_t k = 0; k < kGroup && l0 + k < kL; ++k) {
-      const size_t l = l0 + k;
-      // Each step's combined measurement: the inverse-variance mean and its variance.
-      for (size_t f = 0; f < steps; ++f) {
-        const double w = wsum_lanes[l * steps + f];
-        st[k][f].z = w > 0.0 ? zsum_lanes[l * steps + f] / w : 0.0;
-        st[k][f].r = w > 0.0 ? 1.0 / w : INFINITY;
-      }
+    const size_t members = std::min(kGroup, leaders.size() - g0);
+    for (size_t k = 0; k < members; ++k) {
+      fill_measurements(leaders[g0 + k], st[k]);
       group[k] = &st[k];
       spans[k] = measured_span(st[k]);
     }
     forward_filters(group, spans, p);
-    for (size_t k = 0; k < kGroup && l0 + k < kL; ++k) {
-      const size_t l = l0 + k;
-      smooth_and_output(st[k], spans[k], since, p,
+    for (size_t k = 0; k < members; ++k) {
+      const size_t l = leaders[g0 + k];
+      if (spans[k].first < 0) continue;  // never measured: it and its followers stay NaN
+      smoother_gains(st[k], spans[k], p);
+      smooth_and_output(st[k], st[k], spans[k], since, p,
                         [&](int f, double x) { smoothed[l * steps + static_cast<size_t>(f)] = x; });
+      for (size_t c = 1; c <= static_cast<size_t>(followers_of[l]); ++c) {
+        fill_measurements(l + c, follower);
+        follow_forward(follower, st[k], spans[k], p);
+        smooth_and_output(follower, st[k], spans[k], since, p,
+                          [&](int f, double x) { smoothed[(l + c) * steps + static_cast<size_t>(f)] = x; });
+      }
     }
   }
   const auto fused = transposed(smoothed, kL, steps);  // step-major

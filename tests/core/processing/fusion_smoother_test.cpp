@@ -1,8 +1,11 @@
 #include <gtest/gtest.h>
 
+#include <bit>
 #include <cmath>
+#include <cstdint>
 #include <random>
 
+#include "core/processing/fusion_lanes.h"
 #include "core/processing/fusion_smoother.h"
 #include "core/processing/kalman_reference.h"
 
@@ -65,6 +68,35 @@ TEST(FusionSmoother, HandlesNaNAnywhereAndLeavesLongGapsNaN) {
   HandTrack empty(10);
   const HandTrack none = fuse_default({&empty}, {nullptr});
   EXPECT_FALSE(none.has_hand(5));
+}
+
+// The y and z of a point measured as its x share the x lane's covariances and gains
+// (fusion_smoother.cpp); when the y is measured otherwise (one sample missing), y and z run filters
+// of their own. The z is measured the same in both cases, so its fused values must be the same bit
+// for bit: the shared gains are exactly the ones its own filter computes.
+TEST(FusionSmoother, ALaneSharingItsPointsGainsEqualsItsOwnFilterBitForBit) {
+  std::mt19937 rng(21);
+  const int n = 200;
+  const HandTrack a = moving(n, 0.0, 0.8, rng);
+  const HandTrack b = moving(n, 2.0, 0.8, rng);
+  HandTrack b_gap = b;
+  const int point = digit_point(2, kRebuiltFromJoint);  // fused as it is, not rebuilt from bone lengths
+  b_gap.at(120, point).y() = kNaN;                      // y alone: the point's lanes no longer measured alike
+  std::vector<FingerLabels> labels(n, FingerLabels{1, 1, 0, 1, 1});
+  SmootherParams p;
+  const auto qa = sample_quality(a, labels, p), qb = sample_quality(b, labels, p);
+  const HandTrack shared = fuse_default({&a, &b}, {&qa, &qb}, p);
+  const HandTrack own = fuse_default({&a, &b_gap}, {&qa, &qb}, p);
+  int compared = 0;
+  for (int f = 0; f < n; ++f) {
+    ASSERT_EQ(std::bit_cast<std::uint64_t>(shared.at(f, point).z()), std::bit_cast<std::uint64_t>(own.at(f, point).z()))
+        << "frame " << f;
+    ASSERT_EQ(std::bit_cast<std::uint64_t>(shared.at(f, point).x()), std::bit_cast<std::uint64_t>(own.at(f, point).x()))
+        << "frame " << f;
+    compared += std::isfinite(shared.at(f, point).z()) ? 1 : 0;
+  }
+  EXPECT_EQ(compared, n);
+  EXPECT_NE(shared.at(120, point).y(), own.at(120, point).y()) << "the y lane did see the missing sample";
 }
 
 TEST(FusionSmoother, AxisCutAndElbowGetLowerWeight) {
