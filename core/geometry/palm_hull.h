@@ -29,8 +29,13 @@ struct ConvexHull6 {
   static constexpr double kTolerance_mm = 1e-7;
 };
 
+// How the 20 candidate facets of six points are computed: four at a time with AVX2 where the CPU
+// has it (kFastest), or one by one (kPlain). Both give the same planes bit for bit (the same IEEE
+// operations in the same order per facet; tests compare them).
+enum class HullBuild { kFastest, kPlain };
+
 // Builds the facet planes of the hull of 3 to 6 points.
-ConvexHull6 build_convex_hull(std::span<const Eigen::Vector3d> points);
+ConvexHull6 build_convex_hull(std::span<const Eigen::Vector3d> points, HullBuild build = HullBuild::kFastest);
 
 inline bool hull_contains(const ConvexHull6& hull, double qx, double qy, double qz) {
   if (hull.degenerate) return false;

@@ -2,7 +2,10 @@
 
 #include <gtest/gtest.h>
 
+#include <array>
+#include <bit>
 #include <cmath>
+#include <cstdint>
 #include <random>
 #include <vector>
 
@@ -127,4 +130,39 @@ TEST(PalmHull, SixPointHullHasEightTriangularFacetsInGeneralPosition) {
 }
 
 }  // namespace
+// The facets of six points four at a time (AVX2) and one by one: the same planes, bit for bit, on
+// random palms, flat and nearly flat ones, collinear and repeated points.
+TEST(PalmHull, FourAtATimeBuildsTheSamePlanesAsOneByOne) {
+  std::mt19937_64 rng(11);
+  std::uniform_real_distribution<double> coordinate(-300.0, 300.0), unit(-1.0, 1.0);
+  const auto bits = [](double v) { return std::bit_cast<std::uint64_t>(v); };
+  int facets = 0;
+  for (int trial = 0; trial < 60000; ++trial) {
+    std::array<Eigen::Vector3d, 6> pts;
+    const Eigen::Vector3d centre(coordinate(rng), coordinate(rng), coordinate(rng));
+    const int kind = trial % 4;
+    for (auto& p : pts) {
+      p = centre + 40.0 * Eigen::Vector3d(unit(rng), unit(rng), unit(rng));
+      if (kind == 1) p.z() = centre.z();                                 // flat
+      if (kind == 2) p.z() = centre.z() + 1e-9 * unit(rng);              // nearly flat
+      if (kind == 3) p = centre + unit(rng) * Eigen::Vector3d(1, 2, 3);  // collinear
+    }
+    if (trial % 7 == 0) pts[4] = pts[1];  // a repeated point
+    const ConvexHull6 fast = build_convex_hull(pts, HullBuild::kFastest);
+    const ConvexHull6 plain = build_convex_hull(pts, HullBuild::kPlain);
+    ASSERT_EQ(fast.plane_count, plain.plane_count) << "trial " << trial;
+    ASSERT_EQ(fast.flat, plain.flat) << "trial " << trial;
+    ASSERT_EQ(fast.degenerate, plain.degenerate) << "trial " << trial;
+    for (int i = 0; i < fast.plane_count; ++i) {
+      const HullPlane& a = fast.planes[static_cast<size_t>(i)];
+      const HullPlane& b = plain.planes[static_cast<size_t>(i)];
+      ASSERT_TRUE(bits(a.nx) == bits(b.nx) && bits(a.ny) == bits(b.ny) && bits(a.nz) == bits(b.nz) &&
+                  bits(a.d) == bits(b.d))
+          << "trial " << trial << " plane " << i;
+    }
+    facets += fast.flat || fast.degenerate ? 0 : fast.plane_count;
+  }
+  EXPECT_GT(facets, 60000 / 4 * 4) << "the random palms have real facets to compare";
+}
+
 }  // namespace lmc
