@@ -351,13 +351,16 @@ GridTrial resample_recording(const LmcRecording& recording, const ResampleOption
       if (first_hand < 0) first_hand = s[k].t_us;
       last_hand = s[end - 1].t_us;
       // Fit times are relative to the grid start, in seconds, for conditioning.
-      pt.clear();
-      py.clear();
+      pt.resize(end - k);
+      py.resize((end - k) * kDims);  // every value written below
       for (size_t j = k; j < end; ++j) {
-        pt.push_back(static_cast<double>(s[j].t_us - t_start) * 1e-6);
+        pt[j - k] = static_cast<double>(s[j].t_us - t_start) * 1e-6;
+        double* row = py.data() + (j - k) * kDims;
         for (int i = 0; i < kNumHandPoints; ++i) {
           const Vec3& p = s[j].frame->point(i);
-          py.insert(py.end(), {p.x(), p.y(), p.z()});
+          row[3 * i] = p.x();
+          row[3 * i + 1] = p.y();
+          row[3 * i + 2] = p.z();
         }
       }
       const double step_s = step_us * 1e-6;
