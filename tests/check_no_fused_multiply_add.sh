@@ -1,20 +1,21 @@
 #!/bin/sh
 # The visibility kernel's three builds (baseline, AVX2, AVX-512) must give bit-identical results,
-# so none of them may fuse a multiply and an add into one rounding (visibility_kernel.cpp). The
+# so none of them may fuse a multiply and an add into one rounding (visibility_kernel.cpp); nor may
+# the AVX2 forms of the palm hull and the fusion's sums, which must equal their plain forms. The
 # compiler is told so (-ffp-contract=off); this checks the program it made: no FMA instruction in
-# any build of the kernel's entry points. Usage: check_no_fused_multiply_add.sh PROGRAM
+# any build of those entry points. Usage: check_no_fused_multiply_add.sh PROGRAM
 set -eu
 program=$1
 listing=$(objdump -d -C --no-show-raw-insn "$program" |
-  awk '/^[0-9a-f]+ <.*(device_run|visible_fingers).*>:$/ {inside = 1; print; next} /^$/ {inside = 0} inside')
+  awk '/^[0-9a-f]+ <.*(device_run|visible_fingers|six_point_candidates|accumulate_lanes).*>:$/ {inside = 1; print; next} /^$/ {inside = 0} inside')
 functions=$(printf '%s\n' "$listing" | grep -c '>:$' || true)
-if [ "$functions" -lt 6 ]; then
-  echo "expected the kernel's entry points (device_run_*, visible_fingers_*) in $program, found $functions" >&2
+if [ "$functions" -lt 8 ]; then
+  echo "expected the kernel's entry points (device_run_*, visible_fingers_*, six_point_candidates_*, accumulate_lanes_*) in $program, found $functions" >&2
   exit 1
 fi
 if printf '%s\n' "$listing" | grep -E '\svf(n)?m(add|sub)[0-9]{3}' >/dev/null; then
-  echo "fused multiply-add in the visibility kernel of $program:" >&2
+  echo "fused multiply-add in the checked functions of $program:" >&2
   printf '%s\n' "$listing" | grep -E '>:$|\svf(n)?m(add|sub)[0-9]{3}' | head -20 >&2
   exit 1
 fi
-echo "no fused multiply-add in $functions kernel functions of $program"
+echo "no fused multiply-add in $functions checked functions of $program"
