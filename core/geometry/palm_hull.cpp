@@ -5,6 +5,8 @@
 #include <array>
 #include <cmath>
 
+#include "core/common/cpu_features.h"
+
 #if defined(__x86_64__) && defined(__GNUC__)
 #include <immintrin.h>
 #endif
@@ -147,11 +149,7 @@ struct Candidates {
 bool six_point_candidates(std::span<const Eigen::Vector3d> pts, double collinear_len, double side_tol,
                           Candidates& out) {
 #if defined(__x86_64__) && defined(__GNUC__)
-  static const bool avx2 = [] {
-    __builtin_cpu_init();
-    return __builtin_cpu_supports("avx2") != 0;
-  }();
-  if (avx2) {
+  if (cpu_has_avx2()) {
     out = six_point_candidates_avx2(pts, collinear_len, side_tol);
     return true;
   }

@@ -195,16 +195,11 @@ void split_whitespace(std::string_view line, std::vector<Field>& out) {
 }
 
 std::optional<double> parse_double_general(std::string_view s) {
-  double value = 0.0;
-  // Nearly every field is a bare number: read whole, it is what trimming first would give too.
-  if (const auto [ptr, ec] = std::from_chars(s.data(), s.data() + s.size(), value, std::chars_format::general);
-      ec == std::errc{} && ptr == s.data() + s.size() && !s.empty()) {
-    return value;
-  }
   s = trim(s);
   // from_chars rejects a leading '+'; accept exactly one before a digit or '.'.
   if (s.size() > 1 && s.front() == '+' && s[1] != '-' && s[1] != '+') s.remove_prefix(1);
   if (s.empty()) return std::nullopt;
+  double value = 0.0;
   const char* first = s.data();
   const char* last = s.data() + s.size();
   const auto [ptr, ec] = std::from_chars(first, last, value, std::chars_format::general);

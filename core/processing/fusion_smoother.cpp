@@ -12,6 +12,7 @@
 #include <immintrin.h>
 #endif
 
+#include "core/common/cpu_features.h"
 #include "core/processing/cv_kalman.h"
 #include "core/processing/fusion_lanes.h"
 
@@ -44,8 +45,8 @@ std::unique_ptr<double[]> transposed(const std::vector<double>& in, size_t rows,
 // either form. A skipped lane and one that adds +0 give the same sum (no sum is ever −0: they
 // start at +0, and +0 + −0 is +0).
 constexpr size_t kSumLanes = static_cast<size_t>(kFusionLanes);
-void accumulate_lanes_plain(const double* value, const double* variance, double* wsum, double* zsum) {
-  for (size_t l = 0; l < kSumLanes; ++l) {
+void accumulate_lanes_plain(const double* value, const double* variance, double* wsum, double* zsum, size_t from = 0) {
+  for (size_t l = from; l < kSumLanes; ++l) {
     if (!std::isfinite(value[l])) continue;
     wsum[l] += 1.0 / variance[l];
     zsum[l] += value[l] / variance[l];
@@ -66,28 +67,18 @@ void accumulate_lanes_plain(const double* value, const double* variance, double*
     _mm256_storeu_pd(wsum + l, _mm256_add_pd(_mm256_loadu_pd(wsum + l), w));
     _mm256_storeu_pd(zsum + l, _mm256_add_pd(_mm256_loadu_pd(zsum + l), z));
   }
-  for (; l < kSumLanes; ++l) {
-    if (!std::isfinite(value[l])) continue;
-    wsum[l] += 1.0 / variance[l];
-    zsum[l] += value[l] / variance[l];
-  }
-}
-void accumulate_lanes(const double* value, const double* variance, double* wsum, double* zsum) {
-  static const bool avx2 = [] {
-    __builtin_cpu_init();
-    return __builtin_cpu_supports("avx2") != 0;
-  }();
-  if (avx2) {
-    accumulate_lanes_avx2(value, variance, wsum, zsum);
-  } else {
-    accumulate_lanes_plain(value, variance, wsum, zsum);
-  }
-}
-#else
-void accumulate_lanes(const double* value, const double* variance, double* wsum, double* zsum) {
-  accumulate_lanes_plain(value, variance, wsum, zsum);
+  accumulate_lanes_plain(value, variance, wsum, zsum, l);  // the lanes after the last four
 }
 #endif
+void accumulate_lanes(const double* value, const double* variance, double* wsum, double* zsum) {
+#if defined(__x86_64__) && defined(__GNUC__)
+  if (cpu_has_avx2()) {
+    accumulate_lanes_avx2(value, variance, wsum, zsum);
+    return;
+  }
+#endif
+  accumulate_lanes_plain(value, variance, wsum, zsum);
+}
 
 }  // namespace
 
@@ -334,18 +325,23 @@ HandTrack fuse_default(const std::vector<const HandTrack*>& devices,
   // covariances and gains hold the divisions. A lane whose sums of inverse variances equal its
   // point's x lane, bit for bit, follows that lane; any other (the bone lengths, a point measured
   // in part) runs its own filter. The result is the same either way.
-  std::vector<int> followers_of(kL, 0);  // 0, or the count of the point's lanes after x that follow it
-  std::vector<bool> follows(kL, false);
-  for (size_t l = 0; l + 2 < static_cast<size_t>(kFirstLengthLane); l += 3) {
+  // The lanes that run a filter of their own, in order, and how many of the lanes after each
+  // (its point's y, then z) follow it.
+  std::vector<size_t> leaders;
+  std::vector<int> followers_of(kL, 0);
+  const auto same_bits = [](double a, double b) {
+    return std::bit_cast<std::uint64_t>(a) == std::bit_cast<std::uint64_t>(b);
+  };
+  for (size_t l = 0; l < kL; ++l) {
+    leaders.push_back(l);
+    if (l + 2 >= static_cast<size_t>(kFirstLengthLane) || l % 3 != 0) continue;
     const double* x = wsum_lanes.get() + l * steps;
-    for (size_t c = 1; c <= 2; ++c) {
-      if (!std::equal(x, x + steps, wsum_lanes.get() + (l + c) * steps, [](double a, double b) {
-            return std::bit_cast<std::uint64_t>(a) == std::bit_cast<std::uint64_t>(b);
-          }))
-        break;
-      follows[l + c] = true;
-      followers_of[l] = static_cast<int>(c);
+    while (followers_of[l] < 2 &&
+           std::equal(x, x + steps, wsum_lanes.get() + (l + 1 + static_cast<size_t>(followers_of[l])) * steps,
+                      same_bits)) {
+      ++followers_of[l];
     }
+    l += static_cast<size_t>(followers_of[l]);  // the followers run no filter of their own
   }
   // Each step's combined measurement of lane l: the inverse-variance mean and its variance.
   const auto fill_measurements = [&](size_t l, std::vector<Step>& lane) {
@@ -355,10 +351,6 @@ HandTrack fuse_default(const std::vector<const HandTrack*>& devices,
       lane[f].r = w > 0.0 ? 1.0 / w : INFINITY;
     }
   };
-  std::vector<size_t> leaders;
-  for (size_t l = 0; l < kL; ++l) {
-    if (!follows[l]) leaders.push_back(l);
-  }
   constexpr size_t kGroup = 4;
   std::array<std::vector<Step>, kGroup> st;
   for (auto& lane : st) lane.resize(steps);

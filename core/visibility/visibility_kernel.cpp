@@ -7,6 +7,7 @@
 #include <cstdlib>
 #include <string>
 
+#include "core/common/cpu_features.h"
 #include "core/common/error.h"
 #include "core/visibility/phalanx_block_avx512.h"
 #include "core/visibility/phalanx_ring.h"
@@ -161,27 +162,6 @@ template <bool kCut, KernelBuild kBuild>
                                                                     const VisibilityLimits& lim, double cut_mm,
                                                                     FingerBits* out, FingerBits* cut_out) {
   device_run_body<true, KernelBuild::kAvx512>(d, frames, lim, cut_mm, out, cut_out);
-}
-bool cpu_has_avx2() {
-  static const bool yes = [] {
-    __builtin_cpu_init();  // needed when first used from a static initialiser
-    return __builtin_cpu_supports("avx2") != 0;
-  }();
-  return yes;
-}
-bool cpu_has_avx512() {
-  static const bool yes = [] {
-    __builtin_cpu_init();
-    return __builtin_cpu_supports("avx512f") != 0;
-  }();
-  return yes;
-}
-#else
-bool cpu_has_avx2() {
-  return false;
-}
-bool cpu_has_avx512() {
-  return false;
 }
 #endif
 
