@@ -18,6 +18,8 @@
 #include <cstddef>
 #include <cstdint>
 
+#include "core/common/cpu_features.h"
+
 namespace lmc {
 
 namespace plain_decimal_detail {
@@ -66,6 +68,27 @@ inline bool wide_quotient(std::uint64_t w, int f, double& out) {
   return true;
 }
 
+// w / 10^f, negated when asked, as a double; false (out untouched) when w is too near a halfway
+// point to tell (wide_quotient).
+inline bool to_double(std::uint64_t w, int f, bool negative, double& out) {
+  double v = 0.0;
+  if (w <= (std::uint64_t{1} << 53)) {
+    v = static_cast<double>(static_cast<std::int64_t>(w)) / kPow10[f];
+  } else if (!wide_quotient(w, f, v)) {
+    return false;
+  }
+  out = negative ? -v : v;
+  return true;
+}
+
+#if defined(__x86_64__) && defined(__GNUC__)
+// Bytes read_plain_decimal_avx2 may load from `first` on: a sign, a 32-byte window, and 16 bytes
+// from where the fraction starts inside it.
+inline constexpr std::ptrdiff_t kWideLookahead = 64;
+// read_plain_decimal for a CPU with AVX2 and kWideLookahead bytes loadable from `first`.
+const char* read_plain_decimal_avx2(const char* first, const char* last, double& out);
+#endif
+
 inline bool is_digit(char c) {
   return static_cast<unsigned char>(c - '0') < 10;
 }
@@ -105,14 +128,21 @@ inline const char* read_plain_decimal(const char* first, const char* last, doubl
   }
   // An exponent or a second point: from_chars's business.
   if (p != last && (*p == 'e' || *p == 'E' || *p == '.')) return nullptr;
-  double v = 0.0;
-  if (w <= (std::uint64_t{1} << 53)) {
-    v = static_cast<double>(static_cast<std::int64_t>(w)) / d::kPow10[fraction_digits];
-  } else if (!d::wide_quotient(w, fraction_digits, v)) {
-    return nullptr;
+  return d::to_double(w, fraction_digits, negative, out) ? p : nullptr;
+}
+
+// The same reading, with the same result, for text inside a buffer that ends at `buffer_end`
+// (≥ last): where the buffer leaves room after `first`, the digits are found and read 16 at a time
+// (plain_decimal.cpp), with no branch per digit. A field of the study's files is 17 to 19
+// characters, and the per-digit loop's exits were most of its cost.
+inline const char* read_plain_decimal(const char* first, const char* last, const char* buffer_end, double& out) {
+#if defined(__x86_64__) && defined(__GNUC__)
+  if (buffer_end - first >= plain_decimal_detail::kWideLookahead && cpu_has_avx2()) {
+    return plain_decimal_detail::read_plain_decimal_avx2(first, last, out);
   }
-  out = negative ? -v : v;
-  return p;
+#endif
+  (void)buffer_end;
+  return read_plain_decimal(first, last, out);
 }
 
 }  // namespace lmc

@@ -151,7 +151,8 @@ struct ParsedRow {
 
 class RowParser {
  public:
-  explicit RowParser(const HeaderInfo& header) : header_(header) {}
+  // `buffer_end`: where the text the rows are in ends (the number reader may look ahead to it).
+  RowParser(const HeaderInfo& header, const char* buffer_end) : header_(header), buffer_end_(buffer_end) {}
 
   // Returns a failure instead of throwing so the caller can treat a cut-off last line gently.
   std::optional<RowFailure> parse(std::string_view line, ParsedRow& row) {
@@ -229,7 +230,7 @@ class RowParser {
     int finite = 0;
     for (int p = 0; p < kNumHandPoints; ++p) {
       const text::Field& field = fields_[static_cast<size_t>(kMetaColumns + p)];
-      if (read_plain_triplet(field.text, row.frame.points[static_cast<size_t>(p)], finite)) continue;
+      if (read_plain_triplet(field.text, buffer_end_, row.frame.points[static_cast<size_t>(p)], finite)) continue;
       std::string_view rest = field.text;
       long column = field.column;
       for (int a = 0; a < 3; ++a) {
@@ -265,12 +266,12 @@ class RowParser {
   // "x,y,z" of three bare numbers, none implausible, read in one pass: nearly every field of a
   // recording. Anything else (spaces, a '+', a bad or implausible value) returns false having
   // stored nothing, and the field is read again by the checks above, which name what is wrong.
-  static bool read_plain_triplet(std::string_view text, Vec3& point, int& finite) {
+  static bool read_plain_triplet(std::string_view text, const char* buffer_end, Vec3& point, int& finite) {
     const char* at = text.data();
     const char* const end = text.data() + text.size();
     double xyz[3];
     for (int a = 0; a < 3; ++a) {
-      const char* ptr = read_plain_decimal(at, end, xyz[a]);
+      const char* ptr = read_plain_decimal(at, end, buffer_end, xyz[a]);
       if (ptr == nullptr) {
         const auto [general_end, ec] = std::from_chars(at, end, xyz[a], std::chars_format::general);
         if (ec != std::errc{} || general_end == at) return false;
@@ -356,6 +357,7 @@ class RowParser {
   }
 
   HeaderInfo header_;
+  const char* buffer_end_ = nullptr;
   std::vector<text::Field> fields_;
   long line_length_ = 0;
 };
@@ -396,7 +398,7 @@ LmcRecording parse_lmc_recording_text(std::string_view content, const std::strin
 
   LmcRecording rec;
   rec.source = source_name;
-  RowParser parser(header);
+  RowParser parser(header, content.data() + content.size());
   ParsedRow row;
   bool any_short_no_hand = false;
   bool any_all_nan = false;

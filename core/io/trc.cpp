@@ -51,8 +51,8 @@ struct PlainRow {
   double time = 0.0;
   long zero_samples = 0;
 };
-bool read_plain_trc_row(std::string_view text, int markers, double max_coordinate, PlainRow& row,
-                        std::vector<Eigen::Vector3d>& positions) {
+bool read_plain_trc_row(std::string_view text, const char* buffer_end, int markers, double max_coordinate,
+                        PlainRow& row, std::vector<Eigen::Vector3d>& positions) {
   const char* at = text.data();
   const char* const end = text.data() + text.size();
   // Frame#: digits only (parse_int reads them alike).
@@ -61,14 +61,14 @@ bool read_plain_trc_row(std::string_view text, int markers, double max_coordinat
   while (at != end && *at >= '0' && *at <= '9' && at - digits < 18) frame = frame * 10 + (*at++ - '0');
   if (at == digits || at == end || *at != '\t') return false;
   double time = 0.0;
-  at = read_plain_decimal(at + 1, end, time);
+  at = read_plain_decimal(at + 1, end, buffer_end, time);
   if (at == nullptr || at == end || *at != '\t') return false;
   ++at;
   long zeros = 0;
   for (int m = 0; m < markers; ++m) {
     double xyz[3];
     for (int a = 0; a < 3; ++a) {
-      at = read_plain_decimal(at, end, xyz[a]);
+      at = read_plain_decimal(at, end, buffer_end, xyz[a]);
       if (at == nullptr || std::fabs(xyz[a]) > max_coordinate) return false;
       const bool last = m == markers - 1 && a == 2;
       if (!last) {
@@ -226,7 +226,7 @@ TrcData parse_trc_text(std::string_view content, const std::string& source_name)
     if (markers > 0) {
       std::vector<Eigen::Vector3d> row(static_cast<size_t>(markers));
       PlainRow plain;
-      if (read_plain_trc_row(line.text, markers, max_coordinate, plain, row)) {
+      if (read_plain_trc_row(line.text, content.data() + content.size(), markers, max_coordinate, plain, row)) {
         zero_samples += plain.zero_samples;
         trc.frame_numbers.push_back(static_cast<int>(plain.frame));
         trc.times_s.push_back(plain.time);

@@ -129,4 +129,60 @@ TEST(PlainDecimal, DeclinesWhatIsNotAPlainDecimalOfAtMost19Digits) {
   EXPECT_TRUE(std::signbit(v) && v == 0.0) << "-0 keeps its sign";
 }
 
+// The reader that looks ahead in its buffer (16 digits at a time on a CPU with AVX2) must end where
+// the digit loop ends and give the same bits, or decline alike and leave the output alone: for every
+// text, whatever follows the field in the buffer (a separator, more digits, an exponent, a point)
+// and wherever the field's end is put, the digits included.
+TEST(PlainDecimal, LookingAheadInTheBufferReadsWhatTheDigitLoopReads) {
+  std::mt19937_64 rng(28);
+  std::uniform_real_distribution<double> coordinate(-400.0, 400.0);
+  const std::string after[] = {"\t", ",", "", "7", "e5", ".", "\t1.5", "\n"};
+  long compared = 0, differing = 0, read = 0;
+  const auto compare = [&](const std::string& field) {
+    for (const std::string& next : after) {
+      std::string buffer = field + next;
+      const size_t padding = buffer.size() + 80;
+      buffer.resize(padding, '9');  // digits up to the buffer's end: nothing past `last` may be read
+      for (size_t cut = 0; cut <= field.size(); cut += field.size() < 4 ? 1 : field.size() - 2) {
+        const size_t length = field.size() - cut;
+        const char* first = buffer.data();
+        const char* last = first + length;
+        double loop = 42.0, ahead = 42.0;
+        const char* loop_end = read_plain_decimal(first, last, loop);
+        const char* ahead_end = read_plain_decimal(first, last, buffer.data() + buffer.size(), ahead);
+        ++compared;
+        read += loop_end != nullptr ? 1 : 0;
+        const bool same =
+            loop_end == ahead_end && std::bit_cast<std::uint64_t>(loop) == std::bit_cast<std::uint64_t>(ahead);
+        if (!same && ++differing <= 5) {
+          ADD_FAILURE() << "'" << buffer.substr(0, length) << "' (then '" << buffer.substr(length, 8)
+                        << "…'): the digit loop gives " << loop << " ending at " << (loop_end ? loop_end - first : -1)
+                        << ", looking ahead " << ahead << " ending at " << (ahead_end ? ahead_end - first : -1);
+        }
+      }
+    }
+  };
+  for (int i = 0; i < 40000; ++i) {
+    const double x = coordinate(rng);
+    compare(shortest(x));
+    compare(with_precision(x, 6));
+    compare(with_precision(x * 1e-3, 17));
+    const int digits = 1 + static_cast<int>(rng() % 22);
+    std::string s = rng() % 2 ? "-" : "";
+    const int point = static_cast<int>(rng() % static_cast<unsigned>(digits + 1));
+    for (int d = 0; d < digits; ++d) {
+      if (d == point && d > 0) s += '.';
+      s += static_cast<char>('0' + rng() % 10);
+    }
+    compare(s);
+  }
+  for (const std::string s :
+       {"", "-", ".5", "5.", "+1", "0", "-0", "1e5", "nan", "1234567890123456", "12345678901234567",
+        "1234567890123456.123", "0.1234567890123456789", "1.2.3", "-.", "99999999999999999999"}) {
+    compare(s);
+  }
+  EXPECT_EQ(differing, 0) << "of " << compared;
+  EXPECT_GT(read, compared / 3) << "the comparison must cover numbers read, not only declined ones";
+}
+
 }  // namespace lmc::plain_decimal_test
