@@ -1,10 +1,12 @@
 #include "core/common/number_format.h"
 
+#include <algorithm>
 #include <bit>
 #include <charconv>
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
+#include <cstring>
 
 #include "core/common/decimal_digits.h"
 
@@ -43,16 +45,22 @@ bool append_fixed_by_integers(std::string& out, double v, int decimals) {
   if ((n >> 63) != 0) return false;
   const auto whole = static_cast<std::uint64_t>(n);
   // The digits of `whole` (at least decimals + 1 of them) with the point put in, built in one
-  // buffer from the right and appended once.
-  char buf[40];
-  char* const end = buf + sizeof buf;
-  char* start = decimal_digits::digits_ending_at(end, whole);
-  while (end - start < decimals + 1) *--start = '0';
+  // buffer from the right and appended once. The decimals, a fixed count, move right to make room
+  // for the point; the whole part, whose length varies, stays where it is.
+  char buf[48];
+  char* end = buf + 40;
+  char* start = nullptr;
+  if (whole < 10000000000000000u) {
+    decimal_digits::write_sixteen_digits(end - 16, whole);  // with leading zeros, as needed below
+    start = end - std::max(whole == 0 ? 1 : decimal_digits::digit_count(whole), decimals + 1);
+  } else {
+    start = decimal_digits::digits_ending_at(end, whole);
+    while (end - start < decimals + 1) *--start = '0';
+  }
   if (decimals > 0) {
-    char* const point = end - decimals - 1;
-    for (char* c = start - 1; c < point; ++c) *c = *(c + 1);
-    *point = '.';
-    --start;
+    std::memmove(end - decimals + 1, end - decimals, static_cast<size_t>(decimals));
+    end[-decimals] = '.';
+    ++end;
   }
   if (negative) *--start = '-';
   out.append(start, end);
