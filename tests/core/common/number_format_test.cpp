@@ -3,10 +3,14 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <limits>
 #include <random>
 #include <string>
+#include <vector>
+
+#include "core/common/decimal_digits.h"
 
 namespace lmc::number_format_test {
 
@@ -66,6 +70,26 @@ TEST(NumberFormat, FixedWritesWhatPrintfWrites) {
   // Longer than the fast path's buffer: written whole, never cut.
   EXPECT_EQ(format_fixed(1e300, 4), printf_fixed(1e300, 4));
   EXPECT_EQ(format_fixed(-std::numeric_limits<double>::max(), 2), printf_fixed(-std::numeric_limits<double>::max(), 2));
+}
+
+// The sixteen-digit writer behind both number writers: every digit, leading zeros included, as
+// printf writes them, at the edges of each group of four and eight and at random.
+TEST(NumberFormat, SixteenDigitsAreWrittenAsPrintfWritesThem) {
+  std::vector<std::uint64_t> values = {0, 1, 9, 10, 99, 100, 9999, 10000, 99999999, 100000000, 9999999999999999u};
+  for (std::uint64_t p = 1; p < 10000000000000000u; p *= 10) {
+    values.push_back(p - 1);
+    values.push_back(p);
+    values.push_back(p + 1);
+  }
+  std::mt19937_64 rng(16);
+  for (int k = 0; k < 200'000; ++k) values.push_back(rng() % 10000000000000000u);
+  for (const std::uint64_t v : values) {
+    char ours[17] = {};
+    decimal_digits::write_sixteen_digits(ours, v);
+    char expected[32];
+    std::snprintf(expected, sizeof expected, "%016llu", static_cast<unsigned long long>(v));
+    ASSERT_EQ(std::string(ours, 16), std::string(expected)) << v;
+  }
 }
 
 }  // namespace lmc::number_format_test
