@@ -47,7 +47,7 @@ bool append_fixed_by_integers(std::string& out, double v, int decimals) {
   // The digits of `whole` (at least decimals + 1 of them) with the point put in, built in one
   // buffer from the right and appended once. The decimals, a fixed count, move right to make room
   // for the point; the whole part, whose length varies, stays where it is.
-  char buf[48];
+  char buf[64];
   char* end = buf + 40;
   char* start = nullptr;
   if (whole < 10000000000000000u) {
@@ -58,7 +58,10 @@ bool append_fixed_by_integers(std::string& out, double v, int decimals) {
     while (end - start < decimals + 1) *--start = '0';
   }
   if (decimals > 0) {
-    std::memmove(end - decimals + 1, end - decimals, static_cast<size_t>(decimals));
+    // Sixteen bytes from the first decimal (≤ 9 of them, the rest spare room) one place right.
+    char moved[16];
+    std::memcpy(moved, end - decimals, sizeof moved);
+    std::memcpy(end - decimals + 1, moved, sizeof moved);
     end[-decimals] = '.';
     ++end;
   }
