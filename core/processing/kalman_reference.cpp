@@ -1,6 +1,7 @@
 #include "core/processing/kalman_reference.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 
@@ -58,81 +59,139 @@ void rolling_variance(const double* x, int n, int window, double* out) {
   }
 }
 
-void kalman_reference_1d(const std::vector<const double*>& series, int n, double* out,
-                         const ReferenceKalmanParams& params) {
-  const size_t nd = series.size();
-  std::vector<double> var(nd * static_cast<size_t>(n));
-  for (size_t d = 0; d < nd; ++d)
-    rolling_variance(series[d], n, params.window, var.data() + d * static_cast<size_t>(n));
+namespace {
 
-  const double dt = params.dt_s;
+// One coordinate's filter: state, covariance, and whether it has started.
+struct ReferenceFilter {
   double x0 = 0.0, x1 = 0.0;  // position, velocity
   double p00 = 0.0, p01 = 0.0, p10 = 0.0, p11 = 0.0;
   bool started = false;
-  for (int i = 0; i < n; ++i) {
-    if (!started) {
-      for (size_t d = 0; d < nd; ++d) {
-        const double y = series[d][i];
-        if (std::isfinite(y)) {
-          x0 = y;
-          x1 = 0.0;
-          p00 = params.p0_position;
-          p01 = p10 = 0.0;
-          p11 = params.p0_velocity;
-          started = true;
-          break;
-        }
-      }
-      out[i] = started ? x0 : std::numeric_limits<double>::quiet_NaN();
-      continue;
-    }
-    // Predict: x = F x, P = F P Fᵀ + Q with F = [[1, dt], [0, 1]].
-    x0 += dt * x1;
-    const double n00 = p00 + dt * (p10 + p01) + dt * dt * p11 + params.q_position;
-    const double n01 = p01 + dt * p11;
-    const double n10 = p10 + dt * p11;
-    const double n11 = p11 + params.q_velocity;
-    p00 = n00;
-    p01 = n01;
-    p10 = n10;
-    p11 = n11;
+};
+
+// One coordinate's inputs: each device's series and its rolling variance, n values each.
+struct ReferenceSeries {
+  std::vector<const double*> values;
+  const double* variance = nullptr;  // device d's at variance + d·n
+};
+
+// Step i of one coordinate's filter; returns its output at i.
+inline double reference_step(ReferenceFilter& k, const ReferenceSeries& in, int n, int i,
+                             const ReferenceKalmanParams& params) {
+  const size_t nd = in.values.size();
+  if (!k.started) {
     for (size_t d = 0; d < nd; ++d) {
-      const double y = series[d][i];
-      const double r = var[d * static_cast<size_t>(n) + static_cast<size_t>(i)];
-      if (!std::isfinite(y) || !std::isfinite(r)) continue;
-      const double s = p00 + r;
-      const double k0 = p00 / s, k1 = p10 / s;
-      const double innovation = y - x0;
-      x0 += k0 * innovation;
-      x1 += k1 * innovation;
-      // P = P − K·H·P (the study's form, not Joseph's).
-      const double q00 = p00 - k0 * p00, q01 = p01 - k0 * p01;
-      const double q10 = p10 - k1 * p00, q11 = p11 - k1 * p01;
-      p00 = q00;
-      p01 = q01;
-      p10 = q10;
-      p11 = q11;
+      const double y = in.values[d][i];
+      if (std::isfinite(y)) {
+        k.x0 = y;
+        k.x1 = 0.0;
+        k.p00 = params.p0_position;
+        k.p01 = k.p10 = 0.0;
+        k.p11 = params.p0_velocity;
+        k.started = true;
+        break;
+      }
     }
-    out[i] = x0;
+    return k.started ? k.x0 : std::numeric_limits<double>::quiet_NaN();
   }
+  const double dt = params.dt_s;
+  // Predict: x = F x, P = F P Fᵀ + Q with F = [[1, dt], [0, 1]].
+  k.x0 += dt * k.x1;
+  const double n00 = k.p00 + dt * (k.p10 + k.p01) + dt * dt * k.p11 + params.q_position;
+  const double n01 = k.p01 + dt * k.p11;
+  const double n10 = k.p10 + dt * k.p11;
+  const double n11 = k.p11 + params.q_velocity;
+  k.p00 = n00;
+  k.p01 = n01;
+  k.p10 = n10;
+  k.p11 = n11;
+  for (size_t d = 0; d < nd; ++d) {
+    const double y = in.values[d][i];
+    const double r = in.variance[d * static_cast<size_t>(n) + static_cast<size_t>(i)];
+    if (!std::isfinite(y) || !std::isfinite(r)) continue;
+    const double s = k.p00 + r;
+    const double k0 = k.p00 / s, k1 = k.p10 / s;
+    const double innovation = y - k.x0;
+    k.x0 += k0 * innovation;
+    k.x1 += k1 * innovation;
+    // P = P − K·H·P (the study's form, not Joseph's).
+    const double q00 = k.p00 - k0 * k.p00, q01 = k.p01 - k0 * k.p01;
+    const double q10 = k.p10 - k1 * k.p00, q11 = k.p11 - k1 * k.p01;
+    k.p00 = q00;
+    k.p01 = q01;
+    k.p10 = q10;
+    k.p11 = q11;
+  }
+  return k.x0;
+}
+
+// The rolling variances of every device's series of one coordinate, into `variance` (nd · n).
+void device_variances(const std::vector<const double*>& values, int n, const ReferenceKalmanParams& params,
+                      std::vector<double>& variance) {
+  variance.resize(values.size() * static_cast<size_t>(n));
+  for (size_t d = 0; d < values.size(); ++d)
+    rolling_variance(values[d], n, params.window, variance.data() + d * static_cast<size_t>(n));
+}
+
+}  // namespace
+
+void kalman_reference_1d(const std::vector<const double*>& series, int n, double* out,
+                         const ReferenceKalmanParams& params) {
+  std::vector<double> variance;
+  device_variances(series, n, params, variance);
+  const ReferenceSeries in{series, variance.data()};
+  ReferenceFilter k;
+  for (int i = 0; i < n; ++i) out[i] = reference_step(k, in, n, i, params);
 }
 
 HandTrack fuse_reference(const std::vector<const HandTrack*>& devices, const ReferenceKalmanParams& params) {
   const int n = devices.empty() ? 0 : devices.front()->frame_count;
   HandTrack fused(n);
   const size_t nd = devices.size();
-  std::vector<double> columns(nd * static_cast<size_t>(n));
-  std::vector<double> out(static_cast<size_t>(n));
-  std::vector<const double*> series(nd);
-  for (int i = 0; i < kNumHandPoints; ++i) {
-    for (int c = 0; c < 3; ++c) {
-      for (size_t d = 0; d < nd; ++d) {
-        double* col = columns.data() + d * static_cast<size_t>(n);
-        for (int f = 0; f < n; ++f) col[f] = devices[d]->at(f, i)[c];
-        series[d] = col;
+  const auto steps = static_cast<size_t>(n);
+  constexpr int kCoordinates = 3 * kNumHandPoints;
+  // Every device's track turned coordinate-major in one pass (columns[(d · 90 + c) · n + f]): read
+  // coordinate by coordinate, a track's frames 720 bytes apart were fetched from memory anew for
+  // each of the 90.
+  std::vector<double> columns(nd * kCoordinates * steps);
+  for (size_t d = 0; d < nd; ++d) {
+    double* const device_columns = columns.data() + d * kCoordinates * steps;
+    for (size_t f = 0; f < steps; ++f) {
+      for (int i = 0; i < kNumHandPoints; ++i) {
+        const Vec3& p = devices[d]->at(static_cast<int>(f), i);
+        for (int axis = 0; axis < 3; ++axis) device_columns[static_cast<size_t>(3 * i + axis) * steps + f] = p[axis];
       }
-      kalman_reference_1d(series, n, out.data(), params);
-      for (int f = 0; f < n; ++f) fused.at(f, i)[c] = out[static_cast<size_t>(f)];
+    }
+  }
+  // Four coordinates' filters step side by side: each filter's step is a chain of dependent
+  // divisions, and four independent chains keep the CPU busy where one leaves it waiting. Every
+  // filter does exactly what it does alone.
+  constexpr int kSideBySide = 4;
+  std::array<std::vector<double>, kSideBySide> variance;
+  std::array<ReferenceSeries, kSideBySide> in;
+  std::vector<double> out(kCoordinates * steps);  // coordinate-major, turned back at the end
+  for (int first = 0; first < kCoordinates; first += kSideBySide) {
+    const int count = std::min(kSideBySide, kCoordinates - first);
+    for (int g = 0; g < count; ++g) {
+      auto& series = in[static_cast<size_t>(g)];
+      series.values.resize(nd);
+      for (size_t d = 0; d < nd; ++d) {
+        series.values[d] = columns.data() + (d * kCoordinates + static_cast<size_t>(first + g)) * steps;
+      }
+      device_variances(series.values, n, params, variance[static_cast<size_t>(g)]);
+      series.variance = variance[static_cast<size_t>(g)].data();
+    }
+    std::array<ReferenceFilter, kSideBySide> filters{};
+    for (int i = 0; i < n; ++i) {
+      for (int g = 0; g < count; ++g) {
+        out[static_cast<size_t>(first + g) * steps + static_cast<size_t>(i)] =
+            reference_step(filters[static_cast<size_t>(g)], in[static_cast<size_t>(g)], n, i, params);
+      }
+    }
+  }
+  for (size_t f = 0; f < steps; ++f) {
+    for (int i = 0; i < kNumHandPoints; ++i) {
+      Vec3& p = fused.at(static_cast<int>(f), i);
+      for (int axis = 0; axis < 3; ++axis) p[axis] = out[static_cast<size_t>(3 * i + axis) * steps + f];
     }
   }
   return fused;
