@@ -211,13 +211,6 @@ ProcessedTrial process_sources(const TrialSources& job, const BatchOptions& opti
       if (side.ground_truth) popt.resample.grid_start_us = side.ground_truth->device_clock_at_time_zero_us;
     }
     TrialResult r = process_trial(job.trial, rec, layout, vicon, popt);
-    std::optional<TrialResult> other_method;
-    if (options.compare_methods && vicon != nullptr) {
-      ProcessOptions other = popt;
-      other.method =
-          options.process.method == FusionMethod::kReference ? FusionMethod::kDefault : FusionMethod::kReference;
-      other_method = process_trial_with_method(r, job.trial, other);
-    }
     r.lmc_source = job.lmc.string();
     if (job.vicon) r.vicon_source = job.vicon->string();
     for (const auto& w : r.warnings) out.warnings.push_back(w);
@@ -225,16 +218,27 @@ ProcessedTrial process_sources(const TrialSources& job, const BatchOptions& opti
     r.layout_source = out.layout_used;
     out.summary = trial_summary_json(r);
     if (options.on_result) options.on_result(r, out.summary);
-    if (other_method) {
-      const TrialResult& r2 = *other_method;
-      MethodErrors mine = trial_errors(r, &r2);
-      MethodErrors theirs = trial_errors(r2, &r);
+    if (options.compare_methods && vicon != nullptr) {
+      ProcessOptions other = popt;
+      other.method =
+          options.process.method == FusionMethod::kReference ? FusionMethod::kDefault : FusionMethod::kReference;
+      // What the errors read of this method's result is kept aside; the rest (grids, labels,
+      // tracks, Vicon: megabytes a trial) is handed to the other method, which fuses, measures and
+      // compares again and leaves them as they are.
+      TrialResult mine;
+      mine.has_vicon = r.has_vicon;
+      mine.labels = r.labels;
+      mine.lmc_frames = std::move(r.lmc_frames);
+      mine.vicon_frames = std::move(r.vicon_frames);
+      const TrialResult theirs = process_trial_with_method(std::move(r), job.trial, other);
+      const MethodErrors mine_errors = trial_errors(mine, &theirs);
+      const MethodErrors their_errors = trial_errors(theirs, &mine);
       if (options.process.method == FusionMethod::kReference) {
-        out.reference_errors = mine;
-        out.default_errors = theirs;
+        out.reference_errors = mine_errors;
+        out.default_errors = their_errors;
       } else {
-        out.default_errors = mine;
-        out.reference_errors = theirs;
+        out.default_errors = mine_errors;
+        out.reference_errors = their_errors;
       }
     }
     out.ok = true;

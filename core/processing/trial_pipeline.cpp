@@ -143,9 +143,14 @@ TrialResult process_trial(const std::string& trial_name, const LmcRecording& rec
 
 TrialResult process_trial_with_method(const TrialResult& done, const std::string& trial_name,
                                       const ProcessOptions& options) {
+  return process_trial_with_method(TrialResult(done), trial_name, options);
+}
+
+TrialResult process_trial_with_method(TrialResult&& done, const std::string& trial_name,
+                                      const ProcessOptions& options) {
   refuse_length_correction_with_reference(options);
   // Everything of steps 1–3 as it is; steps 4–6 overwrite what they compute.
-  TrialResult r = done;
+  TrialResult r = std::move(done);
   r.method = options.method;
   r.length_correction.reset();
   fuse_measure_compare(r, trial_name, options);

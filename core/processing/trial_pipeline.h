@@ -82,5 +82,7 @@ TrialResult process_trial(const std::string& trial_name, const LmcRecording& rec
 // comparison otherwise resamples and ray-traces every trial twice). Same result as process_trial.
 TrialResult process_trial_with_method(const TrialResult& done, const std::string& trial_name,
                                       const ProcessOptions& options);
+// The same, taking `done` over instead of copying it (its grids and tracks are megabytes a trial).
+TrialResult process_trial_with_method(TrialResult&& done, const std::string& trial_name, const ProcessOptions& options);
 
 }  // namespace lmc
