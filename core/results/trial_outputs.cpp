@@ -1,5 +1,6 @@
 #include "core/results/trial_outputs.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -127,6 +128,7 @@ std::string format_measures_tsv(const TrialResult& r) {
 std::string format_fused_points(const TrialResult& r) {
   LmcRecording rec;
   rec.kind = RecordingKind::kResampled;
+  rec.rows.reserve(static_cast<size_t>(std::max(r.fused.frame_count, 0)));
   for (int f = 0; f < r.fused.frame_count; ++f) {
     HandFrame hf;
     hf.device_id = 1;  // one fused stream; the reader accepts ids 1…8 only
