@@ -10,8 +10,9 @@ namespace lmc {
 // Room write_shortest may use: a sign, 17 digits, a point, and "e-308" with margin.
 inline constexpr int kShortestDoubleMaxChars = 32;
 
-// Writes v at `first` (at least kShortestDoubleMaxChars bytes) and returns the end. NaN and the
-// infinities are written as std::to_chars writes them ("nan", "-nan", "inf", "-inf").
+// Writes v at `first` (at least kShortestDoubleMaxChars bytes) and returns the end. It may also
+// write past that end within the room (fixed-size copies). NaN and the infinities are written as
+// std::to_chars writes them ("nan", "-nan", "inf", "-inf").
 char* write_shortest(char* first, double v);
 
 }  // namespace lmc

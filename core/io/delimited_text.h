@@ -88,8 +88,8 @@ std::optional<std::int64_t> parse_int(std::string_view s);
 
 // Appends the shortest round-trip form of v ("nan" for any NaN, "inf"/"-inf").
 void append_double(std::string& out, double v);
-// The same characters written at `at`, which has room for kMaxDoubleChars; returns their end.
-// For rows built in a buffer of their own and appended once.
+// The same characters written at `at`, which has room for kMaxDoubleChars (all of which it may
+// use); returns their end. For rows built in a buffer of their own and appended once.
 inline constexpr int kMaxDoubleChars = 32;
 char* write_double(char* at, double v);
 void append_int(std::string& out, std::int64_t v);
