@@ -62,35 +62,20 @@ char* write_shortest(char* first, double v) {
   const int k = (q * 78913) >> 18;
   const int m = -k;
   const u128 pow_m = kWidePow10[static_cast<size_t>(m)];
-  // 4 · v · 10^m · 2^p. (10^m fits 64 bits for m ≤ 19, every coordinate from 0.001 mm up: one
-  // 64 × 64-bit product then.)
-  const u128 centre =
-      (m <= 19 ? static_cast<u128>(c) * static_cast<std::uint64_t>(pow_m) : static_cast<u128>(c) * pow_m) << 2;
-  const u128 lower = centre - 2 * pow_m;  // 4 · (c − ½) · 10^m
-  const u128 upper = centre + 2 * pow_m;  // 4 · (c + ½) · 10^m
+  const u128 centre = (static_cast<u128>(c) * pow_m) << 2;  // 4 · v · 10^m · 2^p
+  const u128 lower = centre - 2 * pow_m;                    // 4 · (c − ½) · 10^m
+  const u128 upper = centre + 2 * pow_m;                    // 4 · (c + ½) · 10^m
   // Round-to-nearest-even reads the interval's ends back as v when c is even. (Written without
   // branches: the parity of c is a coin toss, and a mispredicted branch costs more than the test.)
-  const bool ends_included = (c & 1) == 0;
-  // Every comparison below is of such a number X with a multiple of 2^p, Q · 2^p (+ 1 where an
-  // end is included). Split once as X = X_units · 2^p + X_rest (X_units < 2^60), each comparison
-  // is one of 64-bit integers plus whether X_rest is zero, with no 128-bit shift of its own:
-  //   X < Q·2^p + e   ⟺  X_units < Q, or X_units = Q and X_rest < e;
-  //   Q·2^p < X + e   ⟺  Q < X_units, or Q = X_units and X_rest + e > 0.
-  const u128 rest_mask = (u128{1} << p) - 1;
-  const auto lower_units = static_cast<std::uint64_t>(lower >> p);
-  const bool lower_on_unit = (lower & rest_mask) == 0;
-  const auto upper_units = static_cast<std::uint64_t>(upper >> p);
-  const bool upper_on_unit = (upper & rest_mask) == 0;
-  const auto centre_units = static_cast<std::uint64_t>(centre >> p);
-  const bool centre_on_unit = (centre & rest_mask) == 0;
+  const unsigned ends_included = (c & 1) == 0 ? 1 : 0;
   const auto above_lower = [&](std::uint64_t quarters) {
-    return lower_units < quarters || (lower_units == quarters && lower_on_unit && ends_included);
+    return lower < (static_cast<u128>(quarters) << p) + ends_included;
   };
   const auto below_upper = [&](std::uint64_t quarters) {
-    return quarters < upper_units || (quarters == upper_units && (!upper_on_unit || ends_included));
+    return (static_cast<u128>(quarters) << p) < upper + ends_included;
   };
 
-  const std::uint64_t s = centre_units >> 2;  // floor(v · 10^m), < 2^57
+  const auto s = static_cast<std::uint64_t>(centre >> (p + 2));  // floor(v · 10^m), < 2^57
   std::uint64_t digits = 0;
   int exponent = k;  // of the last digit
   bool found = false;
@@ -109,10 +94,8 @@ char* write_shortest(char* first, double v) {
     const bool up_inside = below_upper(4 * s + 4);
     if (down_inside && up_inside) {
       // The nearer of s and s + 1 to v, a tie to the even one.
-      const std::uint64_t mid = 4 * s + 2;
-      const bool above_mid = centre_units > mid || (centre_units == mid && !centre_on_unit);
-      const bool on_mid = centre_units == mid && centre_on_unit;
-      digits = s + static_cast<std::uint64_t>(above_mid | (on_mid & ((s & 1) != 0)));
+      const u128 mid = static_cast<u128>(4 * s + 2) << p;
+      digits = s + static_cast<std::uint64_t>((centre > mid) | ((centre == mid) & ((s & 1) != 0)));
     } else if (down_inside || up_inside) {
       digits = s + (up_inside ? 1 : 0);
     } else {
@@ -161,6 +144,8 @@ char* write_shortest(char* first, double v) {
     return out + n + 1;
   }
   if (leading >= 0) {
+    // A whole part of eight digits or more: the digits one place to the right, then the whole part
+    // moved left over the point's place.
     decimal_digits::digits_ending_at(out + n + 1, digits);
     for (int i = 0; i <= leading; ++i) out[i] = out[i + 1];
     out[leading + 1] = '.';

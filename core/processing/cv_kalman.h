@@ -12,8 +12,7 @@ struct CvKalman {
   // Starts at a first measurement z with variance r, at rest; the velocity spread is wide
   // ((100 mm/s)²) so the first few updates find the real velocity.
   void start(double z, double r) {
-    x0 = z;
-    x1 = 0.0;
+    start_state(z, x0, x1);
     p00 = r;
     p01 = 0.0;
     p11 = 1.0e4;
@@ -38,6 +37,10 @@ struct CvKalman {
   struct Gain {
     double k0 = 0, k1 = 0;
   };
+  static void start_state(double z, double& x0, double& x1) {
+    x0 = z;
+    x1 = 0.0;
+  }
   static void predict_state(double dt, double& x0, double x1) { x0 += dt * x1; }
   void predict_covariance(double dt, double accel_psd) {
     const double q00 = accel_psd * dt * dt * dt / 3.0, q01 = accel_psd * dt * dt / 2.0, q11 = accel_psd * dt;

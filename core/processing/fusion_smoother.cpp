@@ -212,8 +212,7 @@ void follow_forward(std::vector<Step>& st, const std::vector<Step>& leader, Meas
   for (int f = span.first; f <= span.last; ++f) {
     auto& s = st[static_cast<size_t>(f)];
     if (f == span.first) {
-      x0 = s.z;  // as CvKalman::start
-      x1 = 0.0;
+      CvKalman::start_state(s.z, x0, x1);
     } else {
       CvKalman::predict_state(p.dt_s, x0, x1);
       if (std::isfinite(s.r)) CvKalman::update_state(leader[static_cast<size_t>(f)].k, s.z, x0, x1);
