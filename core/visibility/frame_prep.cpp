@@ -14,6 +14,14 @@ int ray_marker_hand_point(int k) {
   return digit_point(4, 1 + (k - 18));                           // pinky Proxi…End
 }
 
+Eigen::Vector3d palm_plane_normal(const Eigen::Matrix<double, kNumPalmPoints, 3>& centred) {
+  // The right singular vector of the smallest singular value of `centred` is the eigenvector of
+  // the smallest eigenvalue of its scatter matrix (eigenvalues come sorted increasingly).
+  const Eigen::Matrix3d scatter = centred.transpose() * centred;
+  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eigen(scatter);
+  return eigen.eigenvectors().col(0);
+}
+
 PreparedFrame prepare_frame(const HandFrame& frame) {
   PreparedFrame fr;
   prepare_frame_into(frame.points, frame.hand_present, fr);
@@ -49,9 +57,7 @@ void prepare_frame_into(std::span<const Vec3, kNumHandPoints> points, bool hand_
   Eigen::Matrix<double, kNumPalmPoints, 3> centred;
   for (int i = 0; i < kNumPalmPoints; ++i)
     centred.row(i) = (fr.palm_points[static_cast<size_t>(i)] - centroid).transpose();
-  // Normal = right singular vector of the smallest singular value (JacobiSVD sorts decreasingly).
-  const Eigen::JacobiSVD<Eigen::Matrix<double, kNumPalmPoints, 3>> svd(centred, Eigen::ComputeFullV);
-  const Eigen::Vector3d normal = svd.matrixV().col(2);
+  const Eigen::Vector3d normal = palm_plane_normal(centred);
   fr.cx = centroid.x();
   fr.cy = centroid.y();
   fr.cz = centroid.z();
