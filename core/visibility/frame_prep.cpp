@@ -2,8 +2,10 @@
 
 #include <tbb/parallel_for.h>
 
-#include <Eigen/Dense>
+#include <Eigen/Core>
 #include <cmath>
+
+#include "core/geometry/least_variance_direction.h"
 
 namespace lmc {
 
@@ -16,10 +18,8 @@ int ray_marker_hand_point(int k) {
 
 Eigen::Vector3d palm_plane_normal(const Eigen::Matrix<double, kNumPalmPoints, 3>& centred) {
   // The right singular vector of the smallest singular value of `centred` is the eigenvector of
-  // the smallest eigenvalue of its scatter matrix (eigenvalues come sorted increasingly).
-  const Eigen::Matrix3d scatter = centred.transpose() * centred;
-  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eigen(scatter);
-  return eigen.eigenvectors().col(0);
+  // the smallest eigenvalue of its scatter matrix.
+  return least_variance_direction(centred.transpose() * centred);
 }
 
 PreparedFrame prepare_frame(const HandFrame& frame) {
