@@ -50,8 +50,16 @@ char* write_shortest(char* first, double v) {
     *out++ = '0';
     return out;
   }
+  if (biased == 0x7ff && fraction != 0) {
+    // NaN, as std::to_chars writes it: a fused file has one for every point of a frame without a
+    // hand, a twentieth of its numbers.
+    char* out = first;
+    if (negative) *out++ = '-';
+    std::memcpy(out, "nan", 3);
+    return out + 3;
+  }
   const int q = biased - 1075;
-  // Subnormals, NaN and infinities, large and small values, and powers of two (whose interval is
+  // Subnormals, the infinities, large and small values, and powers of two (whose interval is
   // lopsided) take the general route.
   if (biased == 0 || biased == 0x7ff || fraction == 0 || q > 0 || q < kMinExponent) return fallback(first, v);
 
