@@ -166,16 +166,24 @@ bool six_point_candidates(std::span<const Eigen::Vector3d> pts, double collinear
 
 ConvexHull6 build_convex_hull(std::span<const Eigen::Vector3d> points, HullBuild build) {
   ConvexHull6 hull;
+  build_convex_hull_into(points, hull, build);
+  return hull;
+}
+
+void build_convex_hull_into(std::span<const Eigen::Vector3d> points, ConvexHull6& hull, HullBuild build) {
+  hull.plane_count = 0;
+  hull.flat = false;
+  hull.degenerate = false;
   const size_t n = std::min(points.size(), static_cast<size_t>(ConvexHull6::kMaxPoints));
   const std::span<const Eigen::Vector3d> pts = points.first(n);
   if (n < 3) {
     hull.degenerate = true;
-    return hull;
+    return;
   }
   const double extent = extent_of(pts);
   if (!(extent > 0.0) || !std::isfinite(extent)) {
     hull.degenerate = true;
-    return hull;
+    return;
   }
   // Side tolerance for "all other points are behind this plane": relative to the hull's size.
   const double side_tol = 1e-9 * extent;
@@ -216,9 +224,9 @@ ConvexHull6 build_convex_hull(std::span<const Eigen::Vector3d> points, HullBuild
   }
   if (!any_nondegenerate_triple) {
     hull.degenerate = true;  // all points collinear
-    return hull;
+    return;
   }
-  if (hull.plane_count > 0) return hull;
+  if (hull.plane_count > 0) return;
 
   // Coplanar points: the hull is a convex polygon in their plane. Its edges become planes that
   // contain the polygon normal, so a query (which lies on the palm plane by construction) is
@@ -247,7 +255,6 @@ ConvexHull6 build_convex_hull(std::span<const Eigen::Vector3d> points, HullBuild
     hull.planes[static_cast<size_t>(hull.plane_count++)] = {-some_normal.x(), -some_normal.y(), -some_normal.z(),
                                                             -d0 + slack};
   }
-  return hull;
 }
 
 }  // namespace lmc

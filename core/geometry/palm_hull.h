@@ -36,6 +36,11 @@ enum class HullBuild { kFastest, kPlain };
 
 // Builds the facet planes of the hull of 3 to 6 points.
 ConvexHull6 build_convex_hull(std::span<const Eigen::Vector3d> points, HullBuild build = HullBuild::kFastest);
+// The same into `hull`, which may hold an earlier hull (its planes past plane_count are left as
+// they were, and nothing reads them): for a loop over frames, which would otherwise zero and copy
+// 650 bytes a frame.
+void build_convex_hull_into(std::span<const Eigen::Vector3d> points, ConvexHull6& hull,
+                            HullBuild build = HullBuild::kFastest);
 
 inline bool hull_contains(const ConvexHull6& hull, double qx, double qy, double qz) {
   if (hull.degenerate) return false;

@@ -3,17 +3,32 @@
 #include <tbb/parallel_for.h>
 
 #include <Eigen/Core>
+#include <array>
 #include <cmath>
 
 #include "core/geometry/least_variance_direction.h"
 
 namespace lmc {
 
-int ray_marker_hand_point(int k) {
+namespace {
+
+constexpr int marker_hand_point(int k) {
   if (k == 0) return kElbow;
   if (k == 17) return digit_point(4, 0);                         // pinky Meta
   if (k < 17) return digit_point((k - 1) / 4, 1 + (k - 1) % 4);  // Proxi…End of thumb…ring
   return digit_point(4, 1 + (k - 18));                           // pinky Proxi…End
+}
+
+constexpr std::array<int, kNumRayMarkers> kMarkerHandPoints = [] {
+  std::array<int, kNumRayMarkers> t{};
+  for (int k = 0; k < kNumRayMarkers; ++k) t[static_cast<size_t>(k)] = marker_hand_point(k);
+  return t;
+}();
+
+}  // namespace
+
+int ray_marker_hand_point(int k) {
+  return marker_hand_point(k);
 }
 
 Eigen::Vector3d palm_plane_normal(const Eigen::Matrix<double, kNumPalmPoints, 3>& centred) {
@@ -32,14 +47,18 @@ void prepare_frame_into(std::span<const Vec3, kNumHandPoints> points, bool hand_
   fr.valid = false;
   if (!hand_present) return;
   std::array<Eigen::Vector3d, kNumRayMarkers> s;
-  for (int k = 0; k < kNumRayMarkers; ++k) {
-    const Eigen::Vector3d& p = points[static_cast<size_t>(ray_marker_hand_point(k))];
-    if (!p.allFinite()) return;
-    s[static_cast<size_t>(k)] = p;
-    fr.mx[static_cast<size_t>(k)] = p.x();
-    fr.my[static_cast<size_t>(k)] = p.y();
-    fr.mz[static_cast<size_t>(k)] = p.z();
+  // x − x is 0 for a finite x and NaN for NaN or ±inf, and NaN stays in a sum: one test for all
+  // 66 coordinates instead of a branch each.
+  double finite = 0.0;
+  for (size_t k = 0; k < kNumRayMarkers; ++k) {
+    const Eigen::Vector3d& p = points[static_cast<size_t>(kMarkerHandPoints[k])];
+    s[k] = p;
+    fr.mx[k] = p.x();
+    fr.my[k] = p.y();
+    fr.mz[k] = p.z();
+    finite += (p.x() - p.x()) + (p.y() - p.y()) + (p.z() - p.z());
   }
+  if (finite != 0.0) return;
   // Visibility step 1 approach vector a = (s1 + s17)/2 − s0.
   const Eigen::Vector3d a = (s[1] + s[17]) / 2.0 - s[0];
   fr.ax = a.x();
@@ -64,7 +83,7 @@ void prepare_frame_into(std::span<const Vec3, kNumHandPoints> points, bool hand_
   fr.nx = normal.x();
   fr.ny = normal.y();
   fr.nz = normal.z();
-  fr.hull = build_convex_hull(fr.palm_points);
+  build_convex_hull_into(fr.palm_points, fr.hull);
 
   // Visibility step 4 phalanges: finger f's markers m0…m3 give three segments.
   for (int f = 0; f < kNumDigits; ++f) {

@@ -55,7 +55,7 @@ Eigen::Vector3d palm_plane_normal(const Eigen::Matrix<double, kNumPalmPoints, 3>
 
 PreparedFrame prepare_frame(const HandFrame& frame);
 // The same into `out`, which may hold an earlier frame: a frame without a hand or with a
-// non-finite marker only sets valid = false and leaves the rest (which nothing reads then). For
+// non-finite marker sets valid = false, and the rest is then unspecified (nothing reads it). For
 // loops over a trial's frames, which would otherwise zero and copy a 2 KB frame each time.
 void prepare_frame_into(std::span<const Vec3, kNumHandPoints> points, bool hand_present, PreparedFrame& out);
 // Prepares many frames (in parallel; the result does not depend on the thread count).
