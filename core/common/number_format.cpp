@@ -18,22 +18,23 @@ namespace {
 // m · 2^e exactly, so v · 10^d is m · 10^d · 2^e, a 128-bit integer shifted, and the discarded bits
 // say exactly whether the value lies below, on or above the halfway point — printf's rule (round
 // the binary value, ties to even) with no floating-point step to blur it, and cheaper than the
-// general formatter (docs/results/processing.md); false hands a value it does not cover on.
-bool append_fixed_by_integers(std::string& out, double v, int decimals) {
+// general formatter (docs/results/processing.md); nullptr hands a value it does not cover on.
+// Writes up to 32 bytes at `first`.
+char* write_fixed_by_integers(char* first, double v, int decimals) {
   using decimal_digits::kPow10;
-  if (decimals < 0 || decimals > 9) return false;
+  if (decimals < 0 || decimals > 9) return nullptr;
   const auto bits = std::bit_cast<std::uint64_t>(v);
   const bool negative = (bits >> 63) != 0;
   const int biased = static_cast<int>((bits >> 52) & 0x7ff);
   const std::uint64_t fraction = bits & ((std::uint64_t{1} << 52) - 1);
-  if (biased == 0x7ff) return false;
+  if (biased == 0x7ff) return nullptr;
   const std::uint64_t m = biased == 0 ? fraction : (fraction | (std::uint64_t{1} << 52));
   const int e = biased == 0 ? -1074 : biased - 1075;
   __extension__ typedef unsigned __int128 u128;                 // GCC and Clang; -Wpedantic needs the marker
   const u128 scaled = static_cast<u128>(m) * kPow10[decimals];  // < 2^83
   u128 n = 0;
   if (e >= 0) {
-    if (e > 40) return false;
+    if (e > 40) return nullptr;
     n = scaled << e;
   } else if (-e < 128) {
     const int shift = -e;
@@ -42,12 +43,14 @@ bool append_fixed_by_integers(std::string& out, double v, int decimals) {
     const u128 half = u128{1} << (shift - 1);
     if (rest > half || (rest == half && (n & 1) != 0)) ++n;
   }  // else: below half a unit of the last decimal, n stays 0
-  if ((n >> 63) != 0) return false;
+  if ((n >> 63) != 0) return nullptr;
   const auto whole = static_cast<std::uint64_t>(n);
   // The digits of `whole` (at least decimals + 1 of them) with the point put in, built in one
   // buffer from the right and appended once. The decimals, a fixed count, move right to make room
   // for the point; the whole part, whose length varies, stays where it is.
-  char buf[64];
+  // Built from buf + 40 leftwards; the final fixed-size copy reads up to 32 bytes from the first
+  // character, which for a short number reaches past buf + 64.
+  char buf[80];
   char* end = buf + 40;
   char* start = nullptr;
   if (whole < 10000000000000000u) {
@@ -66,22 +69,35 @@ bool append_fixed_by_integers(std::string& out, double v, int decimals) {
     ++end;
   }
   if (negative) *--start = '-';
-  out.append(start, end);
-  return true;
+  // At most 30 characters (a sign, 19 digits, a point, 9 decimals): one fixed-size copy.
+  std::memcpy(first, start, 32);
+  return first + (end - start);
 }
 
 }  // namespace
 
-void append_fixed(std::string& out, double v, int decimals) {
+char* write_fixed(char* first, double v, int decimals) {
   if (std::isnan(v)) {
-    out += "nan";
-    return;
+    std::memcpy(first, "nan", 3);
+    return first + 3;
   }
   if (std::isinf(v)) {
-    out += v > 0 ? "inf" : "-inf";
+    if (v > 0) {
+      std::memcpy(first, "inf", 3);
+      return first + 3;
+    }
+    std::memcpy(first, "-inf", 4);
+    return first + 4;
+  }
+  return write_fixed_by_integers(first, v, decimals);
+}
+
+void append_fixed(std::string& out, double v, int decimals) {
+  char quick[kFixedQuickRoom];
+  if (char* end = write_fixed(quick, v, decimals)) {
+    out.append(quick, end);
     return;
   }
-  if (append_fixed_by_integers(out, v, decimals)) return;
   // std::to_chars with a precision writes exactly what printf's "%.*f" writes (both round the
   // exact binary value), several times faster than printf. A value or precision too long for the
   // buffer (1e300 with 4 decimals) goes the slow way whole.

@@ -1,9 +1,13 @@
 #include "core/results/trial_outputs.h"
 
 #include <algorithm>
+#include <charconv>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
+#include <cstring>
 #include <filesystem>
+#include <memory>
 #include <nlohmann/json.hpp>
 #include <sstream>
 
@@ -101,26 +105,52 @@ std::string format_measures_tsv(const TrialResult& r) {
     for (int k = 0; k < kNumDigits; ++k) add("\tvis_LMC", std::to_string(d.device_id), '_', digit_name(k));
   }
   o += '\n';
+  // Each row is built in a buffer of its own and appended once (as the fused file's rows are,
+  // lmc_recording.cpp): appending number by number cost a third of writing the table. A value the
+  // quick writer does not take (1e15 mm, say) is appended the general way, the row so far first.
+  constexpr size_t kValues = kNumSegments + kNumFingers + kNumAngles;
+  const size_t row_room = (2 + 2 * kValues + r.labels.size() * kNumDigits) * 32 + static_cast<size_t>(kFixedQuickRoom);
+  const std::unique_ptr<char[]> row(new char[row_room]);
+  char* at = row.get();
+  const auto put_fixed = [&](double v, int decimals) {
+    *at++ = '\t';
+    if (char* end = write_fixed(at, v, decimals)) {
+      at = end;
+      return;
+    }
+    o.append(row.get(), at);
+    append_fixed(o, v, decimals);
+    at = row.get();
+  };
+  const auto put_int = [&](std::int64_t v) { at = std::to_chars(at, at + 24, v).ptr; };
   auto values = [&](const FrameMeasures& m) {
-    for (double v : m.segment_mm) append_fixed(o += '\t', v, 4);
-    for (double v : m.finger_mm) append_fixed(o += '\t', v, 4);
-    for (double v : m.angle_deg) append_fixed(o += '\t', v, 4);
+    for (double v : m.segment_mm) put_fixed(v, 4);
+    for (double v : m.finger_mm) put_fixed(v, 4);
+    for (double v : m.angle_deg) put_fixed(v, 4);
   };
   for (size_t f = 0; f < r.lmc_frames.size(); ++f) {
-    text::append_int(o, static_cast<std::int64_t>(f));
-    append_fixed(o += '\t', static_cast<double>(f) * 0.01, 2);
+    at = row.get();
+    put_int(static_cast<std::int64_t>(f));
+    put_fixed(static_cast<double>(f) * 0.01, 2);
     values(r.lmc_frames[f]);
     if (r.has_vicon) {
       if (f < r.vicon_frames.size()) {
         values(r.vicon_frames[f]);
       } else {
-        for (int k = 0; k < kNumSegments + kNumFingers + kNumAngles; ++k) o += "\tnan";
+        for (size_t k = 0; k < kValues; ++k) {
+          std::memcpy(at, "\tnan", 4);
+          at += 4;
+        }
       }
     }
     for (const auto& lab : r.labels) {
-      for (int k = 0; k < kNumDigits; ++k) text::append_int(o += '\t', lab[f][static_cast<size_t>(k)]);
+      for (int k = 0; k < kNumDigits; ++k) {
+        *at++ = '\t';
+        put_int(lab[f][static_cast<size_t>(k)]);
+      }
     }
-    o += '\n';
+    *at++ = '\n';
+    o.append(row.get(), at);
   }
   return o;
 }
