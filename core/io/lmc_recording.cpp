@@ -495,15 +495,32 @@ std::string lmc_recording_header(RecordingKind kind) {
 namespace {
 
 // Room for a typical row of each kind, so a row or a file of rows is built without regrowing.
-size_t typical_row_chars(RecordingKind kind) {
-  return kind == RecordingKind::kRaytraced ? 1400 : 1700;
+// The longest row append_lmc_row writes for a raw or resampled recording: four integers, 90
+// numbers in their shortest form, their separators.
+constexpr size_t kIntChars = 24;
+constexpr size_t kMaxPlainRowChars = 4 * (kIntChars + 1) + kNumHandPoints * 3 * (text::kMaxDoubleChars + 1) + 1;
+
+// Room reserved per row. A resampled recording (a trial's grid, or a fused track of full-precision
+// numbers) gets its longest row: its rows are often longer than a raw one's, and when the string
+// outgrew its room it copied itself whole. A raw recording, which may be an hour long, gets a
+// typical row; pages reserved and never written cost nothing, but a reservation is not free.
+size_t row_chars_to_reserve(RecordingKind kind) {
+  switch (kind) {
+    case RecordingKind::kRaytraced:
+      return 1400;
+    case RecordingKind::kResampled:
+      return kMaxPlainRowChars;
+    case RecordingKind::kRaw:
+      break;
+  }
+  return 1700;
 }
 
 }  // namespace
 
 std::string format_lmc_row(const HandFrame& frame, RecordingKind kind, const FingerLabels* labels) {
   std::string out;
-  out.reserve(typical_row_chars(kind));
+  out.reserve(row_chars_to_reserve(kind));
   append_lmc_row(out, frame, kind, labels);
   return out;
 }
@@ -545,9 +562,7 @@ void append_lmc_row(std::string& out, const HandFrame& frame, RecordingKind kind
   }
   // The row is built in a buffer of its own and appended once: a subject's fused files are
   // millions of numbers, and growing the string number by number was a tenth of writing them.
-  constexpr size_t kIntChars = 24;
-  constexpr size_t kRowChars = 4 * (kIntChars + 1) + kNumHandPoints * 3 * (text::kMaxDoubleChars + 1) + 1;
-  std::array<char, kRowChars> row;
+  std::array<char, kMaxPlainRowChars> row;
   char* at = row.data();
   const auto put_int = [&](std::int64_t v) {
     at = std::to_chars(at, at + kIntChars, v).ptr;
@@ -583,7 +598,7 @@ std::string format_lmc_recording(const LmcRecording& recording) {
                 std::to_string(recording.visibility.size()) + " visibility label sets");
   }
   std::string out = lmc_recording_header(recording.kind);
-  out.reserve(out.size() + recording.rows.size() * typical_row_chars(recording.kind));
+  out.reserve(out.size() + recording.rows.size() * row_chars_to_reserve(recording.kind));
   for (size_t i = 0; i < recording.rows.size(); ++i) {
     const FingerLabels* labels = recording.kind == RecordingKind::kRaytraced ? &recording.visibility[i] : nullptr;
     append_lmc_row(out, recording.rows[i], recording.kind, labels);

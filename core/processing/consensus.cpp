@@ -78,7 +78,8 @@ ConsensusReport consensus_report(const std::vector<DeviceTrack>& devices,
   ConsensusReport r;
   for (int finger = 0; finger < kNumFingers; ++finger) {
     FingerConsensus& fc = r.fingers[static_cast<size_t>(finger)];
-    fc.segments = finger_segments(finger);
+    const std::span<const int> segments = finger_segments(finger);
+    fc.segments.assign(segments.begin(), segments.end());
     fc.finger = length_consensus(devices, labels, fused, finger, min_seen_frames, [&](const HandTrack& t, int f) {
       double sum = 0;
       for (const int s : fc.segments) sum += consensus_segment_length(t, f, s);

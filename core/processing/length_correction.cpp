@@ -131,7 +131,7 @@ void check_length_factors(const std::array<double, kNumFingers>& factor, const s
 void apply_length_correction(HandTrack& track, const LengthCorrection& c) {
   for (int f = 0; f < kNumFingers; ++f) {
     const double k = c.factor[static_cast<size_t>(f)];
-    const std::vector<int> segs = finger_segments(f);
+    const std::span<const int> segs = finger_segments(f);
     for (int fr = 0; fr < track.frame_count; ++fr) {
       // The finger's segments form one chain (each starts where the previous ends): rebuild it
       // from its first joint, each bone along its own direction, k times as long.

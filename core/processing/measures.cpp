@@ -48,10 +48,12 @@ std::array<int, 2> segment_points(int s) {
   return kSegments[static_cast<size_t>(s)];
 }
 
-std::vector<int> finger_segments(int f) {
-  if (f == 0) return {0, 1};
-  const int first = 2 + 3 * (f - 1);
-  return {first, first + 1, first + 2};
+std::span<const int> finger_segments(int f) {
+  // The thumb's two segments, then three for each finger: the segment indices in order. A view,
+  // not a vector: the measures ask for it five times a frame.
+  static constexpr std::array<int, kNumSegments> kInOrder = {0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13};
+  if (f == 0) return std::span<const int>(kInOrder).first(2);
+  return std::span<const int>(kInOrder).subspan(static_cast<size_t>(2 + 3 * (f - 1)), 3);
 }
 
 double joint_angle_deg(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d) {

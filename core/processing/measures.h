@@ -3,6 +3,7 @@
 // per-trial statistics and the per-device visibility table — identical for fused LMC points and
 // for Vicon points mapped to the 30-point layout.
 #include <array>
+#include <span>
 #include <string_view>
 #include <vector>
 
@@ -24,7 +25,7 @@ std::string_view angle_name(int a);
 
 // Point pairs (from, to) of each segment; finger f's segments.
 std::array<int, 2> segment_points(int s);
-std::vector<int> finger_segments(int f);
+std::span<const int> finger_segments(int f);  // a view of a constant table (measures.cpp)
 
 struct FrameMeasures {
   std::array<double, kNumSegments> segment_mm{};
