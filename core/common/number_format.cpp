@@ -46,10 +46,9 @@ char* write_fixed_by_integers(char* first, double v, int decimals) {
   if ((n >> 63) != 0) return nullptr;
   const auto whole = static_cast<std::uint64_t>(n);
   // The digits of `whole` (at least decimals + 1 of them) with the point put in, built in one
-  // buffer from the right and appended once. The decimals, a fixed count, move right to make room
-  // for the point; the whole part, whose length varies, stays where it is.
-  // Built from buf + 40 leftwards; the final fixed-size copy reads up to 32 bytes from the first
-  // character, which for a short number reaches past buf + 64.
+  // buffer leftwards from buf + 40 and copied out once. The decimals, a fixed count, move right to
+  // make room for the point; the whole part, whose length varies, stays where it is. The final
+  // fixed-size copy reads 32 bytes from the first character: for a short number, past buf + 64.
   char buf[80];
   char* end = buf + 40;
   char* start = nullptr;

@@ -72,9 +72,7 @@ inline bool wide_quotient(std::uint64_t w, int f, double& out) {
 // point to tell (wide_quotient).
 inline bool to_double(std::uint64_t w, int f, bool negative, double& out) {
   double v = 0.0;
-  if (w != 0) {
-    if (!wide_quotient(w, f, v)) return false;
-  }
+  if (w != 0 && !wide_quotient(w, f, v)) return false;
   out = negative ? -v : v;
   return true;
 }

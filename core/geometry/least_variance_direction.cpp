@@ -13,12 +13,14 @@ struct Symmetric3 {
   double a, b, c, d, e, f;
 };
 
-// The adjugate of a symmetric 3 × 3 matrix (symmetric too): each entry a 2 × 2 cofactor.
+// The adjugate of S − μI for a symmetric S (symmetric too): each entry a 2 × 2 cofactor.
 struct Adjugate3 {
   double a00, a01, a02, a11, a12, a22;
 };
-Adjugate3 adjugate(double a, double b, double c, double d, double e, double f) {
-  return {d * f - e * e, c * e - b * f, b * e - c * d, a * f - c * c, b * c - a * e, a * d - b * b};
+Adjugate3 adjugate(const Symmetric3& s, double mu) {
+  const double a = s.a - mu, d = s.d - mu, f = s.f - mu;
+  return {d * f - s.e * s.e, s.c * s.e - s.b * f, s.b * s.e - s.c * d,
+          a * f - s.c * s.c, s.b * s.c - a * s.e, a * d - s.b * s.b};
 }
 Eigen::Vector3d times(const Adjugate3& m, const Eigen::Vector3d& n) {
   return {m.a00 * n.x() + m.a01 * n.y() + m.a02 * n.z(), m.a01 * n.x() + m.a11 * n.y() + m.a12 * n.z(),
@@ -36,7 +38,7 @@ Eigen::Vector3d times(const Adjugate3& m, const Eigen::Vector3d& n) {
 //    rounding) and the other two eigenvalues, from the trace and the 2 × 2 minors with μ taken out,
 //    are both at least twice μ: the iteration found the smallest one, well apart from the next.
 std::optional<Eigen::Vector3d> rayleigh_iteration(const Symmetric3& s) {
-  const Adjugate3 adj = adjugate(s.a, s.b, s.c, s.d, s.e, s.f);
+  const Adjugate3 adj = adjugate(s, 0.0);
   Eigen::Vector3d n = adj.a00 >= adj.a11 && adj.a00 >= adj.a22 ? Eigen::Vector3d(adj.a00, adj.a01, adj.a02)
                       : adj.a11 >= adj.a22                     ? Eigen::Vector3d(adj.a01, adj.a11, adj.a12)
                                                                : Eigen::Vector3d(adj.a02, adj.a12, adj.a22);
@@ -46,7 +48,7 @@ std::optional<Eigen::Vector3d> rayleigh_iteration(const Symmetric3& s) {
   for (int step = 0; step < 5; ++step) {
     const double mu = s.a * n.x() * n.x() + s.d * n.y() * n.y() + s.f * n.z() * n.z() +
                       2.0 * (s.b * n.x() * n.y() + s.c * n.x() * n.z() + s.e * n.y() * n.z());
-    Eigen::Vector3d next = times(adjugate(s.a - mu, s.b, s.c, s.d - mu, s.e, s.f - mu), n);
+    Eigen::Vector3d next = times(adjugate(s, mu), n);
     const double length = next.norm();
     if (!(length > 0.0) || !std::isfinite(length)) return std::nullopt;
     next *= 1.0 / length;

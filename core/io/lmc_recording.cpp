@@ -494,7 +494,6 @@ std::string lmc_recording_header(RecordingKind kind) {
 
 namespace {
 
-// Room for a typical row of each kind, so a row or a file of rows is built without regrowing.
 // The longest row append_lmc_row writes for a raw or resampled recording: four integers, 90
 // numbers in their shortest form, their separators.
 constexpr size_t kIntChars = 24;

@@ -28,7 +28,7 @@ constexpr std::array<int, kNumRayMarkers> kMarkerHandPoints = [] {
 }  // namespace
 
 int ray_marker_hand_point(int k) {
-  return marker_hand_point(k);
+  return kMarkerHandPoints[static_cast<size_t>(k)];
 }
 
 Eigen::Vector3d palm_plane_normal(const Eigen::Matrix<double, kNumPalmPoints, 3>& centred) {

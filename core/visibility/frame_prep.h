@@ -48,9 +48,9 @@ struct PreparedFrame {
 // The palm plane's unit normal from the palm points minus their centroid: the study's "right
 // singular vector of the smallest singular value", computed as the eigenvector of the smallest
 // eigenvalue of the 3 × 3 scatter matrix (least_variance_direction). That is the same line (to
-// ~1e-15 for a hand's palm; tests compare it with an SVD) in a fifth of the time of Eigen's 6 × 3
-// JacobiSVD, which was a third of preparing a frame. Its sign is arbitrary, as an SVD's is: the palm test divides one
-// dot product with it by another, so the sign cancels exactly.
+// 1e-13 or better for a hand's palm; PalmNormal.* compares it with an SVD) in a fifth of the time
+// of Eigen's 6 × 3 JacobiSVD, which was a third of preparing a frame. Its sign is arbitrary, as an
+// SVD's is: the palm test divides one dot product with it by another, so the sign cancels exactly.
 Eigen::Vector3d palm_plane_normal(const Eigen::Matrix<double, kNumPalmPoints, 3>& centred);
 
 PreparedFrame prepare_frame(const HandFrame& frame);
