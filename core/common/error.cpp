@@ -1,5 +1,7 @@
 #include "core/common/error.h"
 
+#include <utility>
+
 namespace lmc {
 
 std::string format_error(const ErrorLocation& where, const std::string& what) {

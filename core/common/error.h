@@ -3,6 +3,7 @@
 // (file, line, column or JSON path) so a lab member can open the file and fix it.
 #include <stdexcept>
 #include <string>
+#include <utility>
 
 namespace lmc {
 

@@ -1,5 +1,6 @@
 #include "core/stats/stream_rates.h"
 
+#include <utility>
 #include <vector>
 
 #include "core/stats/percentile.h"

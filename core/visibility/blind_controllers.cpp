@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include <iterator>
 
 #include "core/hand/reference_poses.h"
 #include "core/visibility/device_view.h"

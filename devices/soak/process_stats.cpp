@@ -1,7 +1,20 @@
 #include "devices/soak/process_stats.h"
 
 #include <unistd.h>
-#if defined(__GLIBC__)
+
+#include <cstddef>
+#if defined(__SANITIZE_ADDRESS__)
+#define LMC_ASAN_HEAP 1
+#elif defined(__has_feature)
+#if __has_feature(address_sanitizer)
+#define LMC_ASAN_HEAP 1
+#endif
+#endif
+#if defined(LMC_ASAN_HEAP)
+// The sanitizer runtime's own count of the bytes it has handed out and not taken back. Declared
+// here: GCC does not ship clang's <sanitizer/allocator_interface.h>, though its runtime has it.
+extern "C" std::size_t __sanitizer_get_current_allocated_bytes();
+#elif defined(__GLIBC__)
 #include <malloc.h>
 #endif
 
@@ -19,7 +32,10 @@ ProcessStats read_process_stats() {
     if (statm >> size >> resident)
       s.rss_mb = static_cast<double>(resident) * static_cast<double>(::sysconf(_SC_PAGESIZE)) / (1024.0 * 1024.0);
   }
-#if defined(__GLIBC__)
+#if defined(LMC_ASAN_HEAP)
+  // Under AddressSanitizer its allocator serves every malloc and glibc's arenas stay empty.
+  s.heap_in_use_mb = static_cast<double>(__sanitizer_get_current_allocated_bytes()) / (1024.0 * 1024.0);
+#elif defined(__GLIBC__)
   // uordblks: bytes in use in the arenas; hblkhd: bytes in blocks the allocator mapped on their own.
   const struct mallinfo2 heap = ::mallinfo2();
   s.heap_in_use_mb = static_cast<double>(heap.uordblks + heap.hblkhd) / (1024.0 * 1024.0);

@@ -174,7 +174,17 @@ std::string trial_problem(const SoakTrial& t) {
   return p;
 }
 
-void judge_growth(SoakReport& r) {
+// The least heap in use among the samples taken in [from, to), and `point` if less: memory that
+// comes and goes (a trial processed in the background, a heatmap in flight) is above it; what the
+// program keeps is under every sample.
+double heap_floor(const std::vector<SoakSample>& samples, double from, double to, double point) {
+  double floor = point;
+  for (const SoakSample& s : samples)
+    if (s.t_s >= from && s.t_s < to) floor = std::min(floor, s.process.heap_in_use_mb);
+  return floor;
+}
+
+void judge_growth(SoakReport& r, double baseline_t_s) {
   if (r.trials.size() < 2) {
     r.notes.push_back("one trial only: growth is judged from the second trial on");
     return;
@@ -183,16 +193,32 @@ void judge_growth(SoakReport& r) {
     r.notes.push_back("no /proc/self to read: growth not judged");
     return;
   }
-  const double allowed = r.config.rss_allowance_mb + 0.1 * r.baseline.rss_mb;
-  if (r.end.rss_mb - r.baseline.rss_mb > allowed)
-    r.problems.push_back("resident memory grew from " + mb(r.baseline.rss_mb) + " MB after the first trial to " +
-                         mb(r.end.rss_mb) + " MB (more than " + mb(allowed) + " MB)");
+  const double window = std::max(2.0, r.config.trial_seconds);
+  r.heap_floor_baseline_mb = heap_floor(r.samples, baseline_t_s, baseline_t_s + window, r.baseline.heap_in_use_mb);
+  r.heap_floor_end_mb = heap_floor(r.samples, r.elapsed_s - window, r.elapsed_s + 1, r.end.heap_in_use_mb);
+  if (r.baseline.heap_in_use_mb <= 0) {
+    r.notes.push_back("this allocator does not say how much it holds: memory growth not judged");
+  } else {
+    const double allowed = r.config.heap_allowance_mb + 0.1 * r.heap_floor_baseline_mb;
+    if (r.heap_floor_end_mb - r.heap_floor_baseline_mb > allowed)
+      r.problems.push_back("memory held by the program (heap in use) grew from " + mb(r.heap_floor_baseline_mb) +
+                           " MB after the first trial to " + mb(r.heap_floor_end_mb) + " MB (more than " + mb(allowed) +
+                           " MB)");
+  }
   if (r.end.fds > r.baseline.fds)
     r.problems.push_back("open file descriptors grew from " + std::to_string(r.baseline.fds) +
                          " after the first trial to " + std::to_string(r.end.fds));
   if (r.end.threads > r.baseline.threads)
     r.problems.push_back("threads grew from " + std::to_string(r.baseline.threads) + " after the first trial to " +
                          std::to_string(r.end.threads));
+}
+
+// Memory held as a leak holds it (written, so that it is resident too), for leak_mb_per_trial.
+void hold_deliberately(std::vector<std::unique_ptr<char[]>>& held, double mb_count) {
+  if (mb_count <= 0) return;
+  const auto bytes = static_cast<size_t>(mb_count * 1024 * 1024);
+  held.push_back(std::make_unique<char[]>(bytes));
+  std::fill_n(held.back().get(), bytes, static_cast<char>(held.size()));
 }
 
 }  // namespace
@@ -248,6 +274,8 @@ SoakReport run_soak(const SoakConfig& config, const std::function<void(const std
   const auto elapsed = [&] { return std::chrono::duration<double>(Clock::now() - t0).count(); };
   hub.start();
 
+  double baseline_t_s = 0;
+  std::vector<std::unique_ptr<char[]>> deliberate_leak;
   const auto on_status = [&](const TrialSnapshot& s) {
     sampler.note_queue_depth(static_cast<std::int64_t>(s.recorder.queue_depth));
   };
@@ -293,7 +321,11 @@ SoakReport run_soak(const SoakConfig& config, const std::function<void(const std
       if (report.problems.size() < kMaxListedProblems) report.problems.push_back(trial_problem(t));
     }
     report.trials.push_back(std::move(t));
-    if (index == 1) report.baseline = read_process_stats();
+    if (index == 1) {
+      report.baseline = read_process_stats();
+      baseline_t_s = elapsed();
+    }
+    hold_deliberately(deliberate_leak, config.leak_mb_per_trial);
   }
   report.end = read_process_stats();
   report.elapsed_s = elapsed();
@@ -325,14 +357,15 @@ SoakReport run_soak(const SoakConfig& config, const std::function<void(const std
   if (report.source_rate_fraction < 0.95)
     report.notes.push_back("the simulator delivered " + mb(100 * report.source_rate_fraction) +
                            " % of the frames asked for: the rig, not the recorder, set the pace");
-  judge_growth(report);
+  judge_growth(report, baseline_t_s);
   return report;
 }
 
 std::string soak_summary_line(const SoakReport& r) {
   return "soak: " + std::to_string(r.written) + " frames from " + std::to_string(r.config.devices) +
-         " controllers in " + mb(r.elapsed_s) + " s, " + std::to_string(r.lost) + " lost, RSS " + mb(r.start.rss_mb) +
-         "→" + mb(r.end.rss_mb) + " MB, fds " + std::to_string(r.start.fds) + "→" + std::to_string(r.end.fds);
+         " controllers in " + mb(r.elapsed_s) + " s, " + std::to_string(r.lost) + " lost, heap " +
+         mb(r.start.heap_in_use_mb) + "→" + mb(r.end.heap_in_use_mb) + " MB, RSS " + mb(r.start.rss_mb) + "→" +
+         mb(r.end.rss_mb) + " MB, fds " + std::to_string(r.start.fds) + "→" + std::to_string(r.end.fds);
 }
 
 nlohmann::json soak_report_to_json(const SoakReport& r) {
@@ -390,6 +423,8 @@ nlohmann::json soak_report_to_json(const SoakReport& r) {
                 {"trials_processed", r.background.trials_processed}}},
               {"process", {{"start", stats(r.start)}, {"baseline", stats(r.baseline)}, {"end", stats(r.end)}}},
               {"rss_max_mb", r.rss_max_mb},
+              {"heap_floor_baseline_mb", r.heap_floor_baseline_mb},
+              {"heap_floor_end_mb", r.heap_floor_end_mb},
               {"queue_depth_max", r.queue_depth_max},
               {"problems", r.problems},
               {"notes", r.notes},

@@ -1,6 +1,7 @@
 #include "devices/vicon/vicon_message.h"
 
 #include <charconv>
+#include <system_error>
 
 #include "core/common/xml_text.h"
 

@@ -1,6 +1,7 @@
 // Recorder: loss-free recording, unplug, disk error, flushing, sidecar.
 #include <atomic>
 #include <cerrno>
+#include <chrono>
 #include <cstring>
 #include <fstream>
 #include <map>

@@ -145,9 +145,24 @@ TEST(Soak, AShortSessionLosesNothingAndEveryFrameProducedIsARow) {
   EXPECT_TRUE(std::filesystem::is_empty(r.config.output_dir));
   const std::string line = soak_summary_line(r);
   EXPECT_TRUE(std::regex_match(line, std::regex("soak: [0-9]+ frames from 2 controllers in [0-9]+ s, 0 lost, "
-                                                "RSS [0-9]+→[0-9]+ MB, fds [0-9]+→[0-9]+")))
+                                                "heap [0-9]+→[0-9]+ MB, RSS [0-9]+→[0-9]+ MB, fds [0-9]+→[0-9]+")))
       << line;
   EXPECT_EQ(soak_report_to_json(r).at("lost"), 0);
+}
+
+// The growth test judges what the program holds, so memory held as a leak holds it must fail it,
+// whatever the allocator does with resident pages.
+TEST(Soak, MemoryHeldAfterEveryTrialIsReportedAsGrowth) {
+  SoakConfig c = short_soak("soak_deliberate_leak");
+  c.leak_mb_per_trial = 16;
+  const SoakReport r = run_soak(c);
+  ASSERT_GE(r.trials.size(), 2u);
+  EXPECT_EQ(r.lost, 0);
+  EXPECT_FALSE(r.ok());
+  ASSERT_EQ(r.problems.size(), 1u) << ::testing::PrintToString(r.problems);
+  EXPECT_THAT(r.problems.front(), HasSubstr("memory held by the program (heap in use) grew"));
+  EXPECT_GE(r.heap_floor_end_mb - r.heap_floor_baseline_mb, 16.0 * static_cast<double>(r.trials.size() - 2));
+  EXPECT_GT(r.end.heap_in_use_mb, r.baseline.heap_in_use_mb + 15.0);
 }
 
 // Fails like a full disk after `limit` bytes of one file.

@@ -50,7 +50,15 @@ def read_png(path):
 
 
 def main():
-    folder, want_w, want_h = Path(sys.argv[1]), int(sys.argv[2]), int(sys.argv[3])
+    args = sys.argv[1:]
+    # --min-colours N: more than N distinct colours among the sampled pixels (default 8: not one
+    # colour); a tab that drew only its chrome has a few dozen.
+    min_colours = 8
+    if "--min-colours" in args:
+        i = args.index("--min-colours")
+        min_colours = int(args[i + 1])
+        del args[i:i + 2]
+    folder, want_w, want_h = Path(args[0]), int(args[1]), int(args[2])
     pngs = sorted(folder.glob("*.png"))
     if not pngs:
         print(f"no PNG written to {folder}")
@@ -63,7 +71,7 @@ def main():
             row = rows[y]
             for x in range(0, w, 5):
                 colours.add(row[x * ch:x * ch + 3])
-        ok = (w, h) == (want_w, want_h) and len(colours) > 8
+        ok = (w, h) == (want_w, want_h) and len(colours) > min_colours
         print(f"{p.name}: {w}x{h}, {len(colours)} sampled colours: {'ok' if ok else 'FAIL'}")
         status |= 0 if ok else 1
     print(f"all {len(pngs)} captures look right" if status == 0 else "capture check failed")

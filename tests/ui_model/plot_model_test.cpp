@@ -2,6 +2,7 @@
 // never bridged, linked x ranges, round ticks and the y range fitted to what is visible.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <random>

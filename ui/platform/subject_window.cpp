@@ -6,6 +6,7 @@
 #include <backends/imgui_impl_opengl3.h>
 #include <epoxy/gl.h>
 #include <imgui.h>
+#include <utility>
 
 #include <filesystem>
 #include <stdexcept>

@@ -41,7 +41,8 @@ struct SoakOptions {
   bool no_background = false;
   bool no_verdict = false;
   double progress_every_s = 60;
-  double rss_allowance_mb = 32;
+  double heap_allowance_mb = 8;
+  double leak_mb_per_trial = 0;
   long long seed = 1;
 };
 
@@ -60,7 +61,8 @@ void run_soak_command(const SoakOptions& opt) {
   c.background = !opt.no_background;
   c.verdict = !opt.no_verdict;
   c.progress_every_s = opt.progress_every_s;
-  c.rss_allowance_mb = opt.rss_allowance_mb;
+  c.heap_allowance_mb = opt.heap_allowance_mb;
+  c.leak_mb_per_trial = opt.leak_mb_per_trial;
   c.seed = static_cast<std::uint64_t>(opt.seed);
   std::cerr << "soak: " << c.devices << " controllers at " << c.rate_hz << " Hz for " << c.seconds << " s (trials of "
             << c.trial_seconds << " s) in " << c.output_dir.string() << "\n";
@@ -100,8 +102,11 @@ void setup_soak(CLI::App& app) {
   app.add_flag("--no-verdict", opt->no_verdict, "Without each trial's quality verdict");
   app.add_option("--progress-every", opt->progress_every_s, "Seconds between progress lines (0: none)")
       ->capture_default_str();
-  app.add_option("--rss-allowance-mb", opt->rss_allowance_mb,
-                 "Resident memory may end this much (plus a tenth) above the first trial's end")
+  app.add_option("--heap-allowance-mb", opt->heap_allowance_mb,
+                 "The heap in use may end this much (plus a tenth) above the first trial's end")
+      ->capture_default_str();
+  app.add_option("--leak-mb-per-trial", opt->leak_mb_per_trial,
+                 "Self-check: hold this much more memory after every trial, as a leak would (the soak must fail)")
       ->capture_default_str();
   app.add_option("--seed", opt->seed, "Simulator seed")->capture_default_str();
   app.callback([opt] { run_soak_command(*opt); });

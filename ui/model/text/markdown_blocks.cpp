@@ -1,6 +1,7 @@
 #include "ui/model/text/markdown_blocks.h"
 
 #include <sstream>
+#include <utility>
 
 namespace lmc::ui {
 namespace {
