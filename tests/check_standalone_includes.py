@@ -10,7 +10,11 @@ build configuration's batches can only hold files that stand alone.
 The shared precompiled header stays in: every build configuration includes it, so what it brings
 (Eigen, the JSON library, a few standard headers) is part of every file as the project builds it.
 
-Usage: check_standalone_includes.py BUILD_DIR [--jobs N] [--list] [FILE_REGEX]
+Each file takes seconds (the whole tree about 20 minutes of CPU), so ctest runs the quick reading
+of the same rule (check_includes.py) and this is for a change's files before it lands:
+    tests/check_standalone_includes.py build/check --changed main
+
+Usage: check_standalone_includes.py BUILD_DIR [--jobs N] [--list] [--changed REF] [FILE_REGEX]
 Exit status: 0 when every file compiles alone, 1 when one does not (its errors are printed), 2 for
 a build folder without compile_commands.json.
 """
@@ -83,6 +87,7 @@ def main():
     ap.add_argument("file_regex", nargs="?", default="", help="only files whose path matches")
     ap.add_argument("--jobs", type=int, default=os.cpu_count() or 2)
     ap.add_argument("--list", action="store_true", help="print the files and their commands, compile nothing")
+    ap.add_argument("--changed", metavar="REF", help="only the files that differ from git REF (and the working tree's)")
     a = ap.parse_intermixed_args()
     build_dir = a.build_dir.resolve()
     if not (build_dir / "compile_commands.json").is_file():
@@ -93,6 +98,11 @@ def main():
     jobs = sorted(collect(build_dir, source_dir).items())
     if a.file_regex:
         jobs = [j for j in jobs if re.search(a.file_regex, str(j[0]))]
+    if a.changed:
+        names = subprocess.run(["git", "diff", "--name-only", a.changed], cwd=source_dir, capture_output=True,
+                               text=True, check=True).stdout.split()
+        changed = {(source_dir / n).resolve() for n in names}
+        jobs = [j for j in jobs if j[0] in changed]
     if a.list:
         for src, (_, cmd) in jobs:
             print(src.relative_to(source_dir), " ".join(cmd))
