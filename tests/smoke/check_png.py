@@ -51,12 +51,13 @@ def read_png(path):
 
 def main():
     args = sys.argv[1:]
-    # --min-colours N: more than N distinct colours among the sampled pixels (default 8: not one
-    # colour); a tab that drew only its chrome has a few dozen.
-    min_colours = 8
-    if "--min-colours" in args:
-        i = args.index("--min-colours")
-        min_colours = int(args[i + 1])
+    # --min-content F: in the band between the tab bar and the status bar, more than the fraction
+    # F of the sampled pixels differ from that band's most common colour (a tab that drew nothing
+    # but its chrome has none; a form of text about 5 %).
+    min_content = 0.0
+    if "--min-content" in args:
+        i = args.index("--min-content")
+        min_content = float(args[i + 1])
         del args[i:i + 2]
     folder, want_w, want_h = Path(args[0]), int(args[1]), int(args[2])
     pngs = sorted(folder.glob("*.png"))
@@ -67,12 +68,18 @@ def main():
     for p in pngs:
         w, h, ch, rows = read_png(p)
         colours = set()
+        band = {}
         for y in range(0, h, 7):
             row = rows[y]
             for x in range(0, w, 5):
-                colours.add(row[x * ch:x * ch + 3])
-        ok = (w, h) == (want_w, want_h) and len(colours) > min_colours
-        print(f"{p.name}: {w}x{h}, {len(colours)} sampled colours: {'ok' if ok else 'FAIL'}")
+                c = row[x * ch:x * ch + 3]
+                colours.add(c)
+                if 50 <= y < h - 30:
+                    band[c] = band.get(c, 0) + 1
+        content = 1 - max(band.values()) / sum(band.values()) if band else 0
+        ok = (w, h) == (want_w, want_h) and len(colours) > 8 and content > min_content
+        print(f"{p.name}: {w}x{h}, {len(colours)} sampled colours, {100 * content:.1f} % drawn on: "
+              f"{'ok' if ok else 'FAIL'}")
         status |= 0 if ok else 1
     print(f"all {len(pngs)} captures look right" if status == 0 else "capture check failed")
     return status

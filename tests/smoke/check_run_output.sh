@@ -20,7 +20,7 @@ done
 for tab in layout devices record review; do
   compgen -G "$shots/$tab*.png" >/dev/null || fail "no picture of the $tab tab in $shots"
 done
-python3 "$(dirname "$0")/check_png.py" "$shots" 1280 800 --min-colours 40 ||
+python3 "$(dirname "$0")/check_png.py" "$shots" 1280 800 --min-content 0.03 ||
   fail "a picture in $shots is blank or of the wrong size (above)"
 [ -s "$trace" ] || fail "the workbench wrote no status line to $trace"
 grep -Eq 'Review: ([1-9][0-9]*) trial' "$trace" ||
