@@ -189,10 +189,12 @@ quit "after the optimiser was cancelled"
 export LMC_SESSIONS_DIR="$work"  # the first session, $work/session (subject E2F), lies under it
 start --tab record --size 1024 --height 700
 sleep 2
-click 135 100     # the subject id field of the set-up form
-press ctrl+a
-xdotool type --delay 30 "E2F"
-sleep 0.3
+click 135 100     # the subject id field of the set-up form: "S01" out, "E2F" in
+sleep 0.5
+# One key a frame or so: a key pressed and released within one frame of the check build can be lost.
+for k in End BackSpace BackSpace BackSpace BackSpace; do press $k; sleep 0.3; done
+xdotool type --delay 80 "E2F"
+sleep 0.5
 click 155 446     # Create session and go to pre-flight: E2F is already recorded, so it asks
 sleep 1
 press a           # Add a second session of E2F
