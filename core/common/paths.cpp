@@ -25,15 +25,44 @@ std::filesystem::path asset_path(const std::filesystem::path& relative) {
   return p;
 }
 
+std::filesystem::path user_data_dir() {
+#ifdef _WIN32
+  if (const char* profile = std::getenv("USERPROFILE"); profile != nullptr && *profile != '\0')
+    return std::filesystem::path(profile) / "Documents" / "lmc-workbench";
+  return {};
+#else
+  if (const char* xdg = std::getenv("XDG_DATA_HOME"); xdg != nullptr && *xdg != '\0')
+    return std::filesystem::path(xdg) / "lmc-workbench";
+  if (const char* home = std::getenv("HOME"); home != nullptr && *home != '\0')
+    return std::filesystem::path(home) / ".local" / "share" / "lmc-workbench";
+  return {};
+#endif
+}
+
+namespace {
+
+std::filesystem::path project_sessions_dir() {
+  return std::filesystem::path(LMC_SOURCE_ASSETS_DIR).parent_path() / "sessions";
+}
+
+}  // namespace
+
 std::filesystem::path sessions_dir() {
   if (const char* env = std::getenv("LMC_SESSIONS_DIR"); env != nullptr && *env != '\0') {
     return env;
   }
-  const std::filesystem::path in_project = std::filesystem::path(LMC_SOURCE_ASSETS_DIR).parent_path() / "sessions";
+  if (std::filesystem::path data = user_data_dir(); !data.empty()) return data;
+  return project_sessions_dir();
+}
+
+std::filesystem::path demo_sessions_dir() {
+  if (const char* env = std::getenv("LMC_SESSIONS_DIR"); env != nullptr && *env != '\0') {
+    return std::filesystem::path(env) / "demo";
+  }
   std::error_code ec;
-  if (std::filesystem::is_directory(in_project, ec)) return in_project;
-  const char* home = std::getenv("HOME");
-  return std::filesystem::path(home != nullptr && *home != '\0' ? home : ".") / "lmc-sessions";
+  if (const auto in_project = project_sessions_dir() / "demo"; std::filesystem::is_directory(in_project, ec))
+    return in_project;
+  return sessions_dir() / "demo";
 }
 
 std::filesystem::path user_cache_dir() {

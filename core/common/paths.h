@@ -11,10 +11,19 @@ std::filesystem::path assets_dir();
 // assets_dir() / relative, with an Error naming the path when the file does not exist.
 std::filesystem::path asset_path(const std::filesystem::path& relative);
 
-// Where new recordings go unless the user picks another folder: $LMC_SESSIONS_DIR if set, else the
-// project's `sessions/` folder (beside assets/, ignored by git), else ~/lmc-sessions for an
-// installed copy whose source tree is gone.
+// The user's own data folder for the workbench: $XDG_DATA_HOME/lmc-workbench, else
+// ~/.local/share/lmc-workbench (Documents\lmc-workbench on Windows). Outside the program's folder,
+// so a `git clean`, an update or a second clone neither loses nor splits a lab's recordings.
+// Empty when there is no home at all.
+std::filesystem::path user_data_dir();
+
+// Where new recordings, exports and test recordings go unless the user picks another folder:
+// $LMC_SESSIONS_DIR if set, else user_data_dir(), else (no home) the project's `sessions/` folder.
 std::filesystem::path sessions_dir();
+
+// The demo sessions `scripts/run` records: $LMC_SESSIONS_DIR/demo when set, else the project's
+// sessions/demo (beside assets/) when it is there, else sessions_dir()/demo.
+std::filesystem::path demo_sessions_dir();
 
 // Where derived results may be cached (the Review tab's processed trials): $LMC_CACHE_DIR if set,
 // else $XDG_CACHE_HOME/lmc-workbench, else ~/.cache/lmc-workbench. Never inside a session folder:

@@ -104,7 +104,8 @@ struct Writer {
     if (t.job.sidecar) sidecar = read_recorder_sidecar(*t.job.sidecar);
     const RecorderSidecar* sc = sidecar ? &*sidecar : nullptr;
 
-    const fs::path subject_dir = request.out_dir / bids_subject_dir(s.label);
+    const std::string where = bids_session_dir(s.label, s.session_label);  // "sub-S01" or "sub-S01/ses-2"
+    const fs::path subject_dir = request.out_dir / where;
     fs::create_directories(subject_dir / "motion");
     const std::vector<BidsTrackingSystem> systems = bids_tracking_systems(table);
     const std::string when = bids_trial_acq_time(sc, request.anonymise);
@@ -126,28 +127,28 @@ struct Writer {
       write_file_atomically(subject_dir / "motion" / (bids_stem(t.entities) + "_events.tsv"), bids_events_tsv(events));
     }
     write_layout(s, t);
-    auto& listed = scans[s.label];
+    auto& listed = scans[where];
     listed.insert(listed.end(), added.begin(), added.end());
-    write_file_atomically(subject_dir / (bids_subject_dir(s.label) + "_scans.tsv"), bids_scans_tsv(listed));
+    write_file_atomically(subject_dir / (bids_session_prefix(s.label, s.session_label) + "_scans.tsv"),
+                          bids_scans_tsv(listed));
     if (std::none_of(participants.begin(), participants.end(),
                      [&](const BidsParticipant& p) { return p.label == s.label; })) {
       participants.push_back({s.label, s.subject.handedness, s.subject.hand_length_mm, s.subject.hand_breadth_mm});
       write_file_atomically(request.out_dir / "participants.tsv", bids_participants_tsv(participants));
       ++report.subjects;
     }
-    std::string line = "wrote " + bids_subject_dir(s.label) + "/motion/" + bids_stem(t.entities) + " (" + t.job.trial +
+    std::string line = "wrote " + where + "/motion/" + bids_stem(t.entities) + " (" + t.job.trial +
                        "): " + std::to_string(systems.size()) + " tracking systems, " +
                        std::to_string(table.frame_count()) + " frames";
     if (!table.has_vicon) {
       line += ", no Vicon";
-      report.notes.push_back(bids_subject_dir(s.label) + " " + t.job.trial +
-                             ": no Vicon file next to it: controllers and fused hand only");
+      report.notes.push_back(where + " " + t.job.trial + ": no Vicon file next to it: controllers and fused hand only");
     }
     return line;
   }
 
   void write_layout(const BidsSubjectPlan& s, const BidsTrialPlan& t) {
-    const std::string name = "sub-" + s.label + "_acq-" + t.entities.acq + "_layout.json";
+    const std::string name = bids_session_prefix(s.label, s.session_label) + "_acq-" + t.entities.acq + "_layout.json";
     if (!layouts_written.insert(name).second) return;
     std::string used;
     const Layout layout = resolve_layout(t.job, request.session.layout, &used);
@@ -185,6 +186,7 @@ BidsExportReport export_bids(const BidsExportRequest& request) {
   if (request.anonymise) {
     std::string key = "participant_id\tsubject_id\tsession_folder\n";
     for (const auto& s : plan.subjects) {
+      // One row per session folder: two sessions of one subject share the participant.
       key +=
           bids_subject_dir(s.label) + "\t" + s.subject.subject_id + "\t" + fs::absolute(s.session_dir).string() + "\n";
     }
@@ -212,8 +214,8 @@ BidsExportReport export_bids(const BidsExportRequest& request) {
       } catch (const std::exception& e) {
         const std::string what = e.what();
         const std::string prefix = t.job.trial + ": ";
-        const std::string note =
-            "left out " + bids_subject_dir(s.label) + " " + (what.rfind(prefix, 0) == 0 ? what : prefix + what);
+        const std::string note = "left out " + bids_session_dir(s.label, s.session_label) + " " +
+                                 (what.rfind(prefix, 0) == 0 ? what : prefix + what);
         report.notes.push_back(note);
         ++report.left_out;
         if (request.on_trial) request.on_trial(note);

@@ -1,8 +1,8 @@
 #pragma once
-// A study as a BIDS-motion dataset (BIDS 1.9, the motion datatype): one subject per session folder,
-// each accepted trial a recording per tracking system (each controller, the fused hand, Vicon when
-// present). One implementation for `lmc export bids` and the Review tab's Export…; the layout of
-// the dataset and its naming are described in docs/export.md.
+// A study as a BIDS-motion dataset (BIDS 1.9, the motion datatype): one subject per subject id (two session folders of
+// one id are its ses-1 and ses-2), each accepted trial a recording per tracking system (each controller, the fused
+// hand, Vicon when present). One implementation for `lmc export bids` and the Review tab's Export…; the layout of the
+// dataset and its naming are described in docs/export.md.
 #include <filesystem>
 #include <functional>
 #include <string>

@@ -28,6 +28,16 @@ nlohmann::json bids_dataset_description(const std::string& name) {
              {"Description", "lmc export bids: accepted trials of subject sessions, processed onto a 100 Hz grid"}}})}};
 }
 
+std::filesystem::path bids_dataset_root_of(const std::filesystem::path& dir) {
+  std::error_code ec;
+  for (std::filesystem::path p = std::filesystem::absolute(dir, ec).lexically_normal(); !p.empty();
+       p = p.parent_path()) {
+    if (std::filesystem::is_regular_file(p / "dataset_description.json", ec)) return p;
+    if (p == p.parent_path()) break;
+  }
+  return {};
+}
+
 bool bids_dataset_is_ours(const nlohmann::json& description) {
   if (!description.is_object() || !description.contains("GeneratedBy") || !description["GeneratedBy"].is_array())
     return false;
@@ -76,7 +86,8 @@ std::string bids_readme(bool anonymised) {
   t += "Leap Motion Controller hand tracking, several controllers at once, with Vicon\n";
   t += "==========================================================================\n\n";
   t += "Exported by lmc-workbench (`lmc export bids`, version " LMC_VERSION ") from subject session folders.\n";
-  t += "One subject per session; every accepted trial of the session, processed onto the 100 Hz grid.\n\n";
+  t += "One subject per subject id (a second session folder of one id is its ses-2); every accepted trial,\n"
+       "processed onto the 100 Hz grid.\n\n";
   t += "Naming\n------\n";
   t += "sub-<subject>/motion/"
        "sub-<subject>_task-<motion>_tracksys-<system>_acq-<layout>_run-<pose><repetition>_<suffix>\n";

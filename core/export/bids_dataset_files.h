@@ -3,6 +3,7 @@
 // (dataset_description.json, README, participants.tsv/.json, .bidsignore) and each subject's
 // scans.tsv. Only the manifest's subject fields a reader of the data needs go out (handedness,
 // hand length and breadth); the operator's name and notes never do.
+#include <filesystem>
 #include <optional>
 #include <string>
 #include <vector>
@@ -18,6 +19,10 @@ inline constexpr const char* kBidsLayoutsDir = "layouts";
 nlohmann::json bids_dataset_description(const std::string& name);
 // True when `description` (a dataset_description.json) says this program generated the dataset.
 bool bids_dataset_is_ours(const nlohmann::json& description);
+// The BIDS dataset `dir` lies in: `dir` or its nearest parent holding a dataset_description.json;
+// empty when none does. A per-trial export there would put files the dataset does not list into
+// it (the validator's NOT_INCLUDED), so it is refused.
+std::filesystem::path bids_dataset_root_of(const std::filesystem::path& dir);
 
 struct BidsParticipant {
   std::string label;  // without "sub-"

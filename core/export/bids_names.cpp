@@ -18,7 +18,7 @@ int bids_run_index(int pose_code, int repetition) {
 }
 
 std::string bids_stem(const BidsEntities& e) {
-  std::string s = "sub-" + e.subject + "_task-" + e.task;
+  std::string s = bids_session_prefix(e.subject, e.session) + "_task-" + e.task;
   if (!e.tracksys.empty()) s += "_tracksys-" + e.tracksys;
   if (!e.acq.empty()) s += "_acq-" + e.acq;
   if (e.run > 0) s += "_run-" + std::to_string(e.run);
@@ -27,6 +27,16 @@ std::string bids_stem(const BidsEntities& e) {
 
 std::string bids_subject_dir(const std::string& subject_label) {
   return "sub-" + subject_label;
+}
+
+std::string bids_session_dir(const std::string& subject_label, const std::string& session_label) {
+  return session_label.empty() ? bids_subject_dir(subject_label)
+                               : bids_subject_dir(subject_label) + "/ses-" + session_label;
+}
+
+std::string bids_session_prefix(const std::string& subject_label, const std::string& session_label) {
+  return session_label.empty() ? bids_subject_dir(subject_label)
+                               : bids_subject_dir(subject_label) + "_ses-" + session_label;
 }
 
 std::string bids_device_tracksys(int device_id) {

@@ -4,6 +4,8 @@
 // '-' (core/common/safe_name.h): those two are dropped, so "S_01" and "S-01" both become "S01".
 // The dataset builder refuses a second name that maps to a label already taken, never merging two.
 //   sub-<subject>/motion/sub-<subject>_task-<motion>_tracksys-<system>_acq-<layout>_run-<pose><rep>_<suffix>
+// A subject recorded in two sessions (two session folders with one subject id) gets a session level:
+//   sub-<subject>/ses-<n>/motion/sub-<subject>_ses-<n>_task-…
 // The run index is the trial name's own digits: the palm pose code, then the repetition in two
 // digits (Naiv_Index102 → run-102), so every trial of one motion and layout has its own run.
 #include <string>
@@ -22,12 +24,18 @@ struct BidsEntities {
   std::string tracksys;  // empty for files every tracking system of the trial shares (events)
   std::string acq;       // the layout key ("Naiv")
   int run = 0;
+  std::string session;  // label without "ses-"; empty when the subject has one session in the dataset
 };
 
 // "sub-S01_task-Index_tracksys-LMC1_acq-Naiv_run-102" (entities in the order BIDS 1.9 gives them).
 std::string bids_stem(const BidsEntities& e);
 // "sub-S01".
 std::string bids_subject_dir(const std::string& subject_label);
+// Where one session's files go, relative to the dataset: "sub-S01/ses-2", or "sub-S01" when the
+// subject has one session (no session level); and the file name prefix that goes with it
+// ("sub-S01_ses-2", "sub-S01").
+std::string bids_session_dir(const std::string& subject_label, const std::string& session_label);
+std::string bids_session_prefix(const std::string& subject_label, const std::string& session_label);
 
 // Tracking-system labels: each controller's slot ("LMC1"…), the fused hand, Vicon.
 std::string bids_device_tracksys(int device_id);

@@ -1,6 +1,7 @@
 #include "core/export/bids_study.h"
 
 #include <algorithm>
+#include <map>
 #include <set>
 
 #include "core/common/safe_name.h"
@@ -71,6 +72,7 @@ void plan_trials(const session::SessionState& state, BidsSubjectPlan& subject, B
     t.subject_cue = type.subject_cue;
     t.operator_cue = type.operator_cue;
     t.entities.subject = subject.label;
+    t.entities.session = subject.session_label;
     t.entities.task = bids_label(type.key);
     t.entities.acq = bids_label(planned.layout_key);
     t.entities.run = bids_run_index(pose.code, planned.repetition);
@@ -110,35 +112,57 @@ BidsStudyPlan plan_bids_study(const std::vector<fs::path>& inputs, bool anonymis
       }
     }
   }
-  std::set<std::string> ids, labels;
-  for (auto& [dir, state] : sessions) {
+  // A subject id seen in several folders is one person recorded in several sessions: numbered in
+  // the order they were created (then by folder), so the first session stays ses-1 whatever the
+  // inputs' order.
+  std::map<std::string, std::vector<size_t>> sessions_of;
+  for (size_t k = 0; k < sessions.size(); ++k) sessions_of[sessions[k].second.subject().subject_id].push_back(k);
+  std::map<size_t, std::string> session_label;
+  for (auto& [id, ks] : sessions_of) {
+    if (ks.size() < 2) continue;
+    std::sort(ks.begin(), ks.end(), [&](size_t a, size_t b) {
+      const auto& [da, sa] = sessions[a];
+      const auto& [db, sb] = sessions[b];
+      if (sa.setup.created_utc != sb.setup.created_utc) return sa.setup.created_utc < sb.setup.created_utc;
+      return da < db;
+    });
+    for (size_t n = 0; n < ks.size(); ++n) session_label[ks[n]] = std::to_string(n + 1);
+  }
+  std::map<std::string, std::string> id_of_label;  // BIDS label → the subject id that took it
+  std::vector<std::string> subject_order;          // distinct ids as first met (anonymised labels)
+  for (size_t k = 0; k < sessions.size(); ++k) {
+    auto& [dir, state] = sessions[k];
     const std::string& id = state.subject().subject_id;
     const std::string where = (dir / session::kManifestFile).string();
     // The reader checks ids already; checked again here because the id becomes a folder name.
     std::string problem = safe_name_problem(id, "subject id");
     const std::string label = bids_label(id);
     if (problem.empty() && label.empty()) problem = "subject id '" + id + "' has no letter or digit for a BIDS label";
-    if (problem.empty() && !ids.insert(id).second) problem = "another session already gives subject " + id;
-    if (problem.empty() && !anonymise && !labels.insert(label).second) {
-      problem = "subject id '" + id + "' becomes the BIDS label " + label + ", which another subject already has";
+    if (problem.empty() && !anonymise) {
+      const auto [it, added] = id_of_label.emplace(label, id);
+      if (!added && it->second != id)
+        problem = "subject id '" + id + "' becomes the BIDS label " + label + ", which subject " + it->second +
+                  " already has";
     }
     if (!problem.empty()) {
       plan.notes.push_back("left out " + where + ": " + problem);
       ++plan.left_out;
       continue;
     }
+    if (std::find(subject_order.begin(), subject_order.end(), id) == subject_order.end()) subject_order.push_back(id);
     BidsSubjectPlan s;
     s.session_dir = dir;
     s.subject = state.subject();
     s.label = label;
+    if (const auto it = session_label.find(k); it != session_label.end()) s.session_label = it->second;
     plan.subjects.push_back(std::move(s));
     bids_study_detail::plan_trials(state, plan.subjects.back(), plan);
   }
   if (anonymise) {
-    const int n = static_cast<int>(plan.subjects.size());
-    for (int i = 0; i < n; ++i) {
-      auto& s = plan.subjects[static_cast<size_t>(i)];
-      s.label = bids_anonymous_label(i, n);
+    const int n = static_cast<int>(subject_order.size());
+    for (auto& s : plan.subjects) {
+      const auto at = std::find(subject_order.begin(), subject_order.end(), s.subject.subject_id);
+      s.label = bids_anonymous_label(static_cast<int>(at - subject_order.begin()), n);
       for (auto& t : s.trials) t.entities.subject = s.label;
     }
   }

@@ -3,8 +3,9 @@
 // the inputs, each subject's label and each accepted trial's BIDS entities. Read-only. Names that
 // come from files (subject ids, trial names, motion and layout keys) are checked with
 // safe_name_problem before they become paths and mapped to labels with bids_label; whatever cannot
-// be exported (a folder without sessions, an unreadable journal, a label already taken, a trial that
-// is not accepted) is left out with a note naming the file.
+// be exported (a folder without sessions, an unreadable journal, a label already taken by another
+// subject id, a trial that is not accepted) is left out with a note naming the file. Sessions of one
+// subject id are never dropped for each other: each is written as a BIDS session.
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -24,15 +25,18 @@ struct BidsTrialPlan {
   std::string operator_cue;  // what the operator read
 };
 
+// One session folder. Two folders with one subject id are two sessions of one subject: the same
+// label, each with its session label (1, 2, … in the order they were created).
 struct BidsSubjectPlan {
   std::filesystem::path session_dir;
   session::SubjectInfo subject;  // as the manifest says; the id is the session's own
   std::string label;             // the BIDS label (anonymised or from the id)
+  std::string session_label;     // "" when the subject has one session in the dataset
   std::vector<BidsTrialPlan> trials;
 };
 
 struct BidsStudyPlan {
-  std::vector<BidsSubjectPlan> subjects;  // in input order, a study folder's sessions by name
+  std::vector<BidsSubjectPlan> subjects;  // one per session folder: in input order, a study folder's by name
   std::vector<std::string> notes;         // what is left out and why
   int left_out = 0;                       // trials or inputs left out
   int trial_count() const;

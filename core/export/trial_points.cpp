@@ -9,6 +9,7 @@
 
 #include "core/common/error.h"
 #include "core/common/safe_name.h"
+#include "core/export/bids_dataset_files.h"
 #include "core/hand/hand_frame.h"
 #include "core/session/session_trials.h"
 
@@ -173,6 +174,12 @@ const char* export_format_extension(ExportFormat format) {
 }
 
 TrialExportReport export_trials(const TrialExportRequest& request) {
+  if (const std::filesystem::path dataset = bids_dataset_root_of(request.out_dir); !dataset.empty()) {
+    throw Error(ErrorLocation(request.out_dir.string()),
+                "lies in the BIDS dataset " + dataset.string() +
+                    " (it holds dataset_description.json): a C3D or TRC file there is not part of the dataset "
+                    "and makes it invalid; choose a folder outside it; nothing was written");
+  }
   TrialExportReport report;
   auto say = [&](const std::string& line) {
     if (request.on_trial) request.on_trial(line);

@@ -53,6 +53,14 @@ MeasureAgreement agree_on_measure(const AgreementRows& rows, std::size_t i) {
   const stats::IccResult icc_result = stats::icc(ratings);
   m.icc = icc_result.icc2_1;
   m.icc_reason = icc_result.reason;
+  // From 2 or 3 trials the interval spans nearly every value an ICC can take and rests on the
+  // normality of a handful of values: not given, and the reason says so (as Pearson's r needs 4
+  // pairs for its interval).
+  if (m.icc_reason.empty() && m.n_trials < kMinTrialsForIccInterval) {
+    m.icc.ci = {};
+    m.icc_reason = "no interval from " + std::to_string(m.n_trials) + " trials: it needs at least " +
+                   std::to_string(kMinTrialsForIccInterval);
+  }
 
   // bland_altman_points() keeps the complete pairs in input order; walk the rows alike to name
   // them.

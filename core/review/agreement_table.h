@@ -36,6 +36,9 @@ struct AgreementPoint {
   std::string trial;
 };
 
+// The fewest complete trials an ICC's confidence interval is given for.
+inline constexpr std::size_t kMinTrialsForIccInterval = 4;
+
 struct MeasureAgreement {
   AgreementMeasure measure;
   std::size_t n_trials = 0;    // complete pairs
@@ -50,7 +53,7 @@ struct MeasureAgreement {
   // ICC(2,1) of the n_trials × 2 table (LMC, Vicon): trials are the targets, the two systems the
   // raters, absolute agreement — a constant offset between systems lowers it, as it should.
   stats::IccEstimate icc;
-  std::string icc_reason;  // why icc is NaN; empty when valid
+  std::string icc_reason;  // why icc or its interval is NaN; empty when both are valid
   std::vector<AgreementPoint> points;
 };
 

@@ -2,6 +2,7 @@
 
 #include <fcntl.h>
 #include <sys/file.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <cerrno>
@@ -37,22 +38,33 @@ nlohmann::json resolve_layout(const std::string& ref, const fs::path& protocol_f
 // Takes the folder's lock for this process; an error names the process that holds it.
 int take_lock(const fs::path& dir) {
   const fs::path path = dir / kLockFile;
-  const int fd = ::open(path.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
-  if (fd < 0)
-    throw Error(ErrorLocation{path.string()}, std::string("cannot create the session lock: ") + std::strerror(errno));
-  if (::flock(fd, LOCK_EX | LOCK_NB) != 0) {
-    char buf[32] = {};
-    const ssize_t n = ::pread(fd, buf, sizeof buf - 1, 0);
+  // A clean close removes the lock file (while holding it): a lock taken on a file removed since it
+  // was opened locks nothing, so it is taken again on the file now at the path.
+  for (int tries = 0;; ++tries) {
+    const int fd = ::open(path.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
+    if (fd < 0)
+      throw Error(ErrorLocation{path.string()}, std::string("cannot create the session lock: ") + std::strerror(errno));
+    if (::flock(fd, LOCK_EX | LOCK_NB) != 0) {
+      char buf[32] = {};
+      const ssize_t n = ::pread(fd, buf, sizeof buf - 1, 0);
+      ::close(fd);
+      const std::string holder = n > 0 ? std::string(buf, static_cast<size_t>(n)) : std::string("unknown");
+      throw Error("session " + dir.string() + " is open in another process (pid " + holder +
+                  "); close it there first — two programs recording into one session would mix its trials");
+    }
+    struct stat held {};
+    struct stat at_path {};
+    if (::fstat(fd, &held) == 0 && ::stat(path.c_str(), &at_path) == 0 && held.st_ino == at_path.st_ino &&
+        held.st_dev == at_path.st_dev) {
+      const std::string pid = std::to_string(::getpid());
+      if (::ftruncate(fd, 0) == 0) {
+        [[maybe_unused]] const ssize_t w = ::pwrite(fd, pid.data(), pid.size(), 0);
+      }
+      return fd;
+    }
     ::close(fd);
-    const std::string holder = n > 0 ? std::string(buf, static_cast<size_t>(n)) : std::string("unknown");
-    throw Error("session " + dir.string() + " is open in another process (pid " + holder +
-                "); close it there first — two programs recording into one session would mix its trials");
+    if (tries >= 10) throw Error(ErrorLocation{path.string()}, "the session lock keeps changing; try again");
   }
-  const std::string pid = std::to_string(::getpid());
-  if (::ftruncate(fd, 0) == 0) {
-    [[maybe_unused]] const ssize_t w = ::pwrite(fd, pid.data(), pid.size(), 0);
-  }
-  return fd;
 }
 
 bool lock_is_held(const fs::path& dir) {
@@ -79,8 +91,12 @@ SessionState state_from_journal(const JournalContents& journal, const std::strin
 }
 
 fs::path default_session_dir(const std::string& subject_id) {
+  return default_session_dir(subject_id, sessions_dir());
+}
+
+fs::path default_session_dir(const std::string& subject_id, const fs::path& root) {
   require_safe_name(subject_id, "subject id");
-  return sessions_dir() / (subject_id + "-" + utc_now_compact());
+  return root / (subject_id + "-" + utc_now_compact());
 }
 
 SessionFolder::SessionFolder(fs::path dir, SessionState state, JournalWriter journal, int lock_fd)
@@ -97,7 +113,12 @@ SessionFolder::SessionFolder(SessionFolder&& o) noexcept
 }
 
 SessionFolder::~SessionFolder() {
-  if (lock_fd_ >= 0) ::close(lock_fd_);  // closing releases the flock
+  if (lock_fd_ < 0) return;
+  // A clean close leaves no lock file behind (take_lock copes with one removed under it); a crash
+  // leaves it, unlocked, and the next open takes it.
+  std::error_code ec;
+  fs::remove(dir_ / kLockFile, ec);
+  ::close(lock_fd_);  // closing releases the flock
 }
 
 SessionFolder SessionFolder::create(const fs::path& dir, const NewSessionSpec& spec) {
@@ -138,6 +159,11 @@ SessionFolder SessionFolder::create(const fs::path& dir, const NewSessionSpec& s
 }
 
 SessionFolder SessionFolder::open(const fs::path& dir) {
+  std::error_code ec;
+  if (!fs::exists(dir, ec))
+    throw Error(ErrorLocation{dir.string()}, "no such folder: check the path (a typo, or a drive not mounted)");
+  if (!fs::is_directory(dir, ec))
+    throw Error(ErrorLocation{dir.string()}, "a file, not a folder: a subject session is a folder");
   if (!is_session_folder(dir))
     throw Error(ErrorLocation{dir.string()},
                 std::string("not a subject session (no ") + kJournalFile + "); create one with `lmc session new`");

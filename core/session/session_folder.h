@@ -32,6 +32,8 @@ struct NewSessionSpec {
 
 // The default folder of a new session: <sessions dir>/<subject>-<UTC date-time>.
 std::filesystem::path default_session_dir(const std::string& subject_id);
+// The same under `root` (the folder the operator chose for sessions).
+std::filesystem::path default_session_dir(const std::string& subject_id, const std::filesystem::path& root);
 
 // The session's state as its journal's events make it (the journal wins over the manifest);
 // `source` names the journal in messages. Opening a folder and the fuzzer both use this.

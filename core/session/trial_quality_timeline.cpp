@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <vector>
 
 #include "core/session/trial_quality_parts.h"
 
@@ -19,6 +20,18 @@ QualityTimeline timeline(const HeldGrid& grid, const std::vector<TracedDevice>& 
   out.hand_present.assign(dev_count, std::vector<double>(static_cast<size_t>(n), 0.0));
   out.fingers_seen.assign(dev_count, std::vector<double>(static_cast<size_t>(n), 0.0));
   out.worst_finger_seen_by.assign(static_cast<size_t>(n), std::numeric_limits<double>::quiet_NaN());
+  // Each controller's own span, from its first held row to its last: the grid starts with the
+  // first row of any controller, and the others' first frames come a frame period or more later.
+  // Counted against the whole slice, every line but one started near 0 while the verdict said
+  // 100 %; a slice wholly outside the span is a gap (NaN), not "no hand".
+  std::vector<int> first_bin(dev_count, grid.bins), last_bin(dev_count, -1);
+  for (int b = 0; b < grid.bins; ++b) {
+    for (size_t d = 0; d < dev_count; ++d) {
+      if (grid.held(b, static_cast<int>(d)) < 0) continue;
+      first_bin[d] = std::min(first_bin[d], b);
+      last_bin[d] = b;
+    }
+  }
   for (int s = 0; s < n; ++s) {
     const int b0 = static_cast<int>(std::floor(s * per_slice));
     const int b1 = std::max(b0 + 1, static_cast<int>(std::floor((s + 1) * per_slice)));
@@ -45,8 +58,14 @@ QualityTimeline timeline(const HeldGrid& grid, const std::vector<TracedDevice>& 
       ++hand_bins;
       worst_sum += *std::min_element(seen_by.begin(), seen_by.end());
     }
-    const double count = static_cast<double>(std::min(b1, grid.bins) - b0);
     for (size_t d = 0; d < dev_count; ++d) {
+      const int from = std::max(b0, first_bin[d]), to = std::min({b1, grid.bins, last_bin[d] + 1});
+      const double count = static_cast<double>(to - from);
+      if (count <= 0) {
+        out.hand_present[d][slice] = std::numeric_limits<double>::quiet_NaN();
+        out.fingers_seen[d][slice] = std::numeric_limits<double>::quiet_NaN();
+        continue;
+      }
       out.hand_present[d][slice] /= count;
       out.fingers_seen[d][slice] /= count;
     }

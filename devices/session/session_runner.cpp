@@ -51,6 +51,10 @@ std::string slots_differ(const Layout& hub_layout, const Layout& session_layout)
 
 }  // namespace
 
+std::string before_go_reason(const std::string& outcome) {
+  return (outcome == "aborted" ? std::string("aborted") : std::string("stopped")) + " before go — no data";
+}
+
 std::string AttemptResult::verdict() const {
   return quality ? quality->verdict : std::string("fail");
 }
@@ -251,6 +255,8 @@ AttemptResult SessionRunner::run_trial(int i, std::stop_token stop,
     tr.outcome = TrialOutcome::kFailed;
     tr.reason = e.what();
   }
+  // Interrupted means the stop token: the operator's Space or Esc, or the program closing.
+  const bool by_operator = tr.outcome == TrialOutcome::kInterrupted;
   if (tr.outcome == TrialOutcome::kInterrupted && abort_reason) {
     if (std::string why = abort_reason(); !why.empty()) {
       tr.outcome = TrialOutcome::kAborted;
@@ -259,12 +265,23 @@ AttemptResult SessionRunner::run_trial(int i, std::stop_token stop,
   }
   result.outcome = trial_outcome_name(tr.outcome);
   result.reason = tr.reason;
+  result.frames = tr.recorder.frames_written;
+  result.reached_go = !tr.go_utc.empty();
   folder_.trial_stopped(i, result.outcome, result.reason, tr.go_utc);
 
   // The verdict, seconds after the trial: the same recording and sidecar processing will read.
   const TrialFiles paths = trial_files(folder_.dir(), p.name);
+  // Stopped before go: the countdown is never recorded, so there is nothing to judge and the
+  // controllers are not at fault; assessing the empty file would blame each of them.
+  const bool stopped_before_go = by_operator && !result.reached_go;
   try {
-    if (fs::exists(paths.recording) && fs::exists(paths.sidecar)) {
+    if (stopped_before_go) {
+      QualityReport q;
+      q.verdict = "fail";
+      q.planned_s = type.duration_s;
+      q.reasons.push_back(before_go_reason(result.outcome));
+      result.quality = q;
+    } else if (fs::exists(paths.recording) && fs::exists(paths.sidecar)) {
       const LmcRecording recording = read_lmc_recording(paths.recording);
       const RecorderSidecar sidecar = read_recorder_sidecar(paths.sidecar);
       session::QualityInputs in;

@@ -65,8 +65,14 @@ struct AttemptResult {
   std::string outcome;  // completed | aborted | failed | interrupted
   std::string reason;
   std::optional<session::QualityReport> quality;  // absent when nothing could be assessed
+  std::int64_t frames = 0;                        // rows the recorder wrote (0: nothing to keep)
+  bool reached_go = false;                        // the subject was told to go (the window opened)
   std::string verdict() const;                    // the quality verdict, or "fail" when there is none
 };
+
+// The verdict's one reason when the operator ended a trial before go ("aborted before go — no
+// data"): the countdown is not recorded, so nothing is judged and no controller is blamed.
+std::string before_go_reason(const std::string& outcome);
 
 class SessionRunner {
  public:

@@ -3,7 +3,8 @@
 // and participants as documented, no operator field anywhere, anonymised labels with the key kept
 // outside the dataset (a key inside it refused before anything is written), a cancel part-way that
 // leaves a dataset whose every listed file exists, a non-empty folder refused without --force, and
-// a session with an unsafe subject id refused with a message naming its file.
+// a session with an unsafe subject id refused with a message naming its file, and two sessions of
+// one subject written as BIDS sessions.
 #include <gtest/gtest.h>
 
 #include <fstream>
@@ -274,6 +275,45 @@ TEST_F(BidsExport, UnsafeSubjectIdIsRefusedNamingTheFile) {
   EXPECT_EQ(report.left_out, 1);
   ASSERT_FALSE(report.notes.empty());
   EXPECT_NE(report.notes.front().find((bad / "journal.jsonl").string()), std::string::npos) << report.notes.front();
+}
+
+// One person recorded twice (two folders with subject id S02, the second created later): both
+// are written, as ses-1 and ses-2 of one participant, whichever order the folders are given in.
+TEST_F(BidsExport, TwoSessionsOfOneSubjectAreBothWrittenAsSessions) {
+  const fs::path again = study().parent_path() / "second-visit" / "S02-again";
+  CliRun r = run_lmc("session new --subject S02 --protocol quick --seconds 1 -o " + shell_quote(again.string()),
+                     study().parent_path() / "l");
+  ASSERT_EQ(r.exit_code, 0) << r.all();
+  r = run_lmc("session run " + shell_quote(again.string()) + " --backend sim --fast --auto --quiet --seed 5",
+              study().parent_path() / "l");
+  ASSERT_EQ(r.exit_code, 0) << r.all();
+  BidsExportRequest req = request("two-sessions");
+  req.inputs = {again, study() / "S02"};  // the later session first
+  const BidsExportReport report = export_bids(req);
+  EXPECT_EQ(report.left_out, 0) << (report.notes.empty() ? "" : report.notes.front());
+  EXPECT_EQ(report.trials, 4);
+  EXPECT_EQ(report.subjects, 1);
+  const fs::path ds = req.out_dir;
+  for (const char* ses : {"1", "2"}) {
+    const std::string prefix = std::string("sub-S02_ses-") + ses;
+    const fs::path dir = ds / "sub-S02" / (std::string("ses-") + ses);
+    EXPECT_TRUE(fs::exists(dir / "motion" / (prefix + "_task-Static_tracksys-LMC1_acq-Naiv_run-101_motion.tsv")))
+        << dir;
+    const std::vector<std::string> scans = lines_of(read_text_file(dir / (prefix + "_scans.tsv")));
+    ASSERT_EQ(scans.size(), 1u + 2 * 6) << dir;
+    for (size_t i = 1; i < scans.size(); ++i) EXPECT_TRUE(fs::exists(dir / cells_of(scans[i])[0])) << scans[i];
+    EXPECT_TRUE(fs::exists(ds / "layouts" / (prefix + "_acq-Naiv_layout.json")));
+  }
+  EXPECT_FALSE(fs::exists(ds / "sub-S02" / "motion")) << "no file outside the sessions";
+  EXPECT_EQ(lines_of(read_text_file(ds / "participants.tsv")).size(), 2u) << "one participant";
+  // ses-1 is the session created first, though it was given second: its trials were recorded first.
+  const auto first_time = [&](const char* ses) {
+    const std::string prefix = std::string("sub-S02_ses-") + ses;
+    return cells_of(
+               lines_of(read_text_file(ds / "sub-S02" / (std::string("ses-") + ses) / (prefix + "_scans.tsv"))).at(1))
+        .at(1);
+  };
+  EXPECT_LT(first_time("1"), first_time("2"));
 }
 
 TEST_F(BidsExport, CommandLineWritesTheDataset) {

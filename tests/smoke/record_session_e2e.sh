@@ -4,7 +4,9 @@
 # the first trial, a note, Close, Ctrl+Q; the session reopened with --session, its second trial
 # killed with SIGKILL mid-trial; reopened again: the resume, the trial recorded again, Close, Ctrl+Q;
 # then the Review tab opening the session, and in the Layout tab an optimiser search started and
-# cancelled (its best-so-far layout is evaluated, never shown as zeros). Every workbench must end with exit code 0 (Close after a
+# cancelled (its best-so-far layout is evaluated, never shown as zeros); then a careless operator in a
+# 1024x700 window (the same subject id twice, Enter after Esc in the countdown, Ctrl+Q while
+# recording). Every workbench must end with exit code 0 (Close after a
 # trial used to end the program with std::out_of_range), and the subject screen must show the red
 # circle from go for the trial's whole length (the countdown used to eat the recording: the subject
 # saw "3, 2, 1" and never the circle). Steps wait for the journal, never a fixed clock.
@@ -179,6 +181,53 @@ sleep 3
 click_until_status 1240 425 "Optimiser cancelled" "the search to stop"  # Cancel, at the end of the progress row
 sleep 0.5
 quit "after the optimiser was cancelled"
+
+# 6. The careless operator, in a 1024x700 window (a laptop with a taskbar), one monitor: the same
+# subject id again (the question; A adds a second session of E2F), Esc in the countdown then Enter
+# (nothing to keep: refused, naming why), R, Space, Ctrl+Q while recording (asks; Enter keeps
+# recording), Ctrl+Q again and S (stop, keep, quit: exit 0).
+export LMC_SESSIONS_DIR="$work"  # the first session, $work/session (subject E2F), lies under it
+start --tab record --size 1024 --height 700
+sleep 2
+click 135 100     # the subject id field of the set-up form: "S01" out, "E2F" in
+sleep 0.5
+# One key a frame or so: a key pressed and released within one frame of the check build can be lost.
+for k in End BackSpace BackSpace BackSpace BackSpace; do press $k; sleep 0.3; done
+xdotool type --delay 80 "E2F"
+sleep 0.5
+click 155 446     # Create session and go to pre-flight: E2F is already recorded, so it asks
+sleep 1
+press a           # Add a second session of E2F
+for _ in $(seq 100); do second=$(ls -d "$work"/E2F-* 2>/dev/null | head -1); [ -n "$second" ] && break; sleep 0.1; done
+[ -n "$second" ] || { echo "no second session of E2F was made"; cat "$work/status-trace.txt"; exit 1; }
+journal="$second/journal.jsonl"
+press space; wait_for '"type":"preflight"' 1 "the second session's pre-flight"
+sleep 0.5
+countdowns=$(grep -c ' countdown ' "$LMC_SUBJECT_TRACE" || true)
+press space
+for _ in $(seq 300); do [ "$(grep -c ' countdown ' "$LMC_SUBJECT_TRACE")" -gt "$countdowns" ] && break; sleep 0.05; done
+press Escape; wait_for '"type":"trial_stopped"' 1 "Esc in the countdown"
+sleep 0.5
+press Return; wait_for_status "cannot be accepted: 0 frames: aborted before go — no data" "Enter on an empty attempt"
+press r; wait_for_status "is recorded again next" "the redo"
+sleep 0.5
+circles=$(grep -c ' recording 1 ' "$LMC_SUBJECT_TRACE" || true)
+press space
+for _ in $(seq 300); do [ "$(grep -c ' recording 1 ' "$LMC_SUBJECT_TRACE")" -gt "$circles" ] && break; sleep 0.05; done
+press ctrl+q
+sleep 1.5
+kill -0 "$pid" 2>/dev/null || { echo "Ctrl+Q while recording quit at once"; exit 1; }
+press Return      # the question's default: keep recording
+sleep 0.5
+kill -0 "$pid" 2>/dev/null || { echo "Enter on the quit question quit"; exit 1; }
+[ "$(grep -c '"type":"trial_stopped"' "$journal")" -eq 1 ] || { echo "the trial stopped though recording was kept"; cat "$journal"; exit 1; }
+press ctrl+q
+sleep 0.5
+press s           # stop it, keep it, quit
+status=0
+wait "$pid" || status=$?
+[ "$status" -eq 0 ] || { echo "stop-and-quit ended with exit code $status"; cat "$work/workbench.log"; exit 1; }
+echo "$second" > "$work/second-session.txt"
 DRIVE
 chmod +x "$work/drive.sh"
 xvfb-run -a -s "-screen 0 1280x800x24" "$work/drive.sh" "$workbench" "$session" "$work"
@@ -218,6 +267,18 @@ m = re.search(r"best R = ([0-9.]+) \(M ([0-9.]+)\)", cancelled[-1])
 assert m and float(m.group(1)) > 0 and float(m.group(2)) > 0, cancelled[-1]
 countdowns = [l for l in lines if l[1] == "countdown"]
 assert len(countdowns) >= 2, "the subject saw no countdown"
+# The careless operator's session: a second session of E2F; its first trial aborted in the
+# countdown (no frames, never kept), recorded again and stopped by quitting: kept, not accepted.
+second = open(os.path.join(os.path.dirname(trace_file), "second-session.txt")).read().strip()
+second_journal = [json.loads(l) for l in open(os.path.join(second, "journal.jsonl"))]
+assert second_journal[0]["setup"]["subject"]["id"] == "E2F", second_journal[0]
+assert not [e for e in second_journal if e["type"] == "trial_accepted"], "a failed or empty attempt was accepted"
+second_stops = [e for e in second_journal if e["type"] == "trial_stopped"]
+assert [e["outcome"] for e in second_stops] == ["aborted", "interrupted"], second_stops
+assert not second_stops[0].get("go_utc"), second_stops[0]
+verdicts = [e for e in second_journal if e["type"] == "trial_verdict"]
+assert verdicts and verdicts[0]["quality"]["reasons"] == ["aborted before go — no data"], verdicts[:1]
+assert not os.path.exists(os.path.join(second, ".lock")), "the lock stayed after a clean quit"
 print("record session e2e: 2 trials accepted in the window, the circle shown %s, Close and Ctrl+Q exit 0, "
       "SIGKILL mid-trial resumed, Review processed the session, %s"
       % (", ".join("%.1f s" % c[0] for c in full), cancelled[-1].split("\t")[1]))

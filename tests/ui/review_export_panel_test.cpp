@@ -11,6 +11,7 @@
 #include <memory>
 #include <thread>
 
+#include "core/export/bids_dataset_files.h"
 #include "core/io/c3d.h"
 #include "tests/support/cli_runner.h"
 #include "tests/support/quick_session.h"
@@ -141,6 +142,36 @@ TEST_F(ExportPanel, CancelStopsARunningExportAndTheWindowSaysWhatWasWritten) {
   EXPECT_TRUE(panel.anchors().centre("export.result").has_value());
   // Whatever was written before the stop is whole.
   for (const auto& file : outcome->written) EXPECT_GT(read_c3d(file).frame_count(), 100);
+}
+
+// Exports each in their own place: after a BIDS export, choosing the selected trial brings back a
+// per-trial folder, never the dataset's; a per-trial export typed into the dataset is refused, saying
+// why, and writes nothing there.
+TEST_F(ExportPanel, APerTrialExportNeverLandsInABidsDataset) {
+  panel.open();
+  click("export.what.bids");
+  const fs::path dataset = test::scratch_dir("review_export_bids_then_c3d") / "dataset";
+  fs::remove_all(dataset);
+  panel.set_folder(dataset);
+  click("export.start");
+  wait_while_exporting();
+  ASSERT_EQ(state->motion_export().state(), JobState::kCompleted) << state->motion_export().error();
+  ASSERT_TRUE(fs::exists(dataset / "dataset_description.json"));
+  click("export.what.selected");
+  EXPECT_NE(panel.folder(), dataset) << "the per-trial export kept the dataset's folder";
+  EXPECT_TRUE(bids_dataset_root_of(panel.folder()).empty()) << panel.folder();
+  click("export.what.bids");
+  EXPECT_EQ(panel.folder(), dataset) << "the dataset's folder comes back with the BIDS choice";
+
+  click("export.what.selected");
+  panel.set_folder(dataset / "sub-S01");
+  click("export.start");
+  wait_while_exporting();
+  EXPECT_EQ(state->motion_export().state(), JobState::kFailed);
+  const std::string error = state->motion_export().error();
+  EXPECT_NE(error.find("lies in the BIDS dataset " + dataset.string()), std::string::npos) << error;
+  EXPECT_TRUE(panel.anchors().fully_visible("export.error"));
+  for (const auto& e : fs::recursive_directory_iterator(dataset)) EXPECT_NE(e.path().extension(), ".c3d") << e.path();
 }
 
 }  // namespace review_export_panel_test

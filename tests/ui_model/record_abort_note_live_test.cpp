@@ -1,6 +1,8 @@
 // The Record tab's model, the parts behind Esc, N and the live fused hand: a trial
 // recorded in real time on the simulated rig shows a fused hand from the live fusion worker with
-// measured latency; Esc aborts it (kept, journaled as aborted, verdict fail, redone next); N
+// measured latency; Esc aborts it (kept, journaled as aborted, verdict fail, redone next; in the
+// countdown, an attempt without frames that cannot be kept); a failed attempt is kept only after a
+// question whose default is No; N
 // notes are journaled at once between trials and after the trial when typed during one.
 // Waits poll with a generous deadline, never a fixed sleep.
 #include <chrono>
@@ -151,6 +153,90 @@ TEST(RecordLiveFusion, ASharedRigSessionRecordsThroughTheWorkbenchsHubAndGivesIt
   EXPECT_FALSE(rig.lent());
   rig.stop();  // the Devices tab's Stop works again
   EXPECT_FALSE(rig.running());
+  fs::remove_all(dir);
+}
+
+// Keeping a failed trial is a decision, not a keystroke: Esc in the countdown gives an attempt
+// without a frame whose verdict says so (not a controller fault) and which cannot be kept at all;
+// an attempt with frames that failed is kept only after a question naming what failed, whose
+// default answer is No.
+void start_first_trial(RecordSessionModel& m, const fs::path& dir, double countdown_s) {
+  RecordSettings settings = real_time_sim();
+  settings.countdown_s = countdown_s;
+  ASSERT_EQ(m.create(dir, quick(), settings), "");
+  ASSERT_EQ(m.override_preflight("test"), "");
+  ASSERT_EQ(m.start_trial(), "");
+}
+
+TEST(RecordAcceptDecision, EscInTheCountdownIsNoDataNotAControllerFaultAndCannotBeKept) {
+  const fs::path dir = test::fresh_test_dir("record_accept_countdown");
+  RecordSessionModel m;
+  start_first_trial(m, dir, 5.0);
+  poll_until(m, [&] { return m.live() && m.live()->phase == devices::TrialPhase::kCountdown; });
+  ASSERT_TRUE(m.live());
+  ASSERT_EQ(m.live()->phase, devices::TrialPhase::kCountdown);
+  ASSERT_EQ(m.abort_trial(), "");  // Esc
+  poll_until(m, [&] { return !m.busy() && m.last_attempt().has_value(); });
+  ASSERT_TRUE(m.last_attempt());
+  const auto& a = *m.last_attempt();
+  EXPECT_EQ(a.outcome, "aborted");
+  EXPECT_EQ(a.frames, 0);
+  EXPECT_FALSE(a.reached_go);
+  EXPECT_EQ(a.verdict(), "fail");
+  ASSERT_TRUE(a.quality);
+  ASSERT_EQ(a.quality->reasons.size(), 1U) << "one reason, and no controller blamed";
+  EXPECT_EQ(a.quality->reasons[0], "aborted before go — no data");
+
+  // Enter: nothing to ask about, the refusal names what failed; keeping it directly is refused too.
+  const std::string why = m.ask_accept();
+  EXPECT_NE(why.find("0 frames: aborted before go — no data"), std::string::npos) << why;
+  EXPECT_TRUE(m.accept_question().empty());
+  EXPECT_NE(m.accept_last(), "");
+  EXPECT_NE(m.answer_accept(true), "");
+  EXPECT_NE(m.state().trials[0].status, session::TrialStatus::kAccepted);
+  const auto on_disk = session::read_session_state(dir);
+  EXPECT_NE(on_disk.trials[0].status, session::TrialStatus::kAccepted);
+  for (const auto& n : on_disk.trials[0].notes) EXPECT_EQ(n.find("accepted by the operator"), std::string::npos);
+  m.close();
+  fs::remove_all(dir);
+}
+
+TEST(RecordAcceptDecision, AFailedAttemptWithFramesIsKeptOnlyAfterAQuestionWhoseDefaultIsNo) {
+  const fs::path dir = test::fresh_test_dir("record_accept_question");
+  RecordSessionModel m;
+  start_first_trial(m, dir, 0.0);
+  poll_until(m, [&] { return m.live() && m.live()->recorder.frames_written > 20; });
+  m.stop_trial();  // Space mid-trial: interrupted, a fail with frames
+  poll_until(m, [&] { return !m.busy() && m.last_attempt().has_value(); });
+  ASSERT_TRUE(m.last_attempt());
+  EXPECT_EQ(m.last_attempt()->verdict(), "fail");
+  EXPECT_GT(m.last_attempt()->frames, 20);
+  EXPECT_TRUE(m.last_attempt()->reached_go);
+
+  // Enter asks, naming the frames and the first reason; Enter again (No) keeps nothing.
+  ASSERT_EQ(m.ask_accept(), "");
+  const std::string q = m.accept_question();
+  EXPECT_NE(q.find("Naiv_Static101 failed ("), std::string::npos) << q;
+  ASSERT_TRUE(m.last_attempt()->quality);
+  EXPECT_NE(q.find(std::to_string(m.last_attempt()->frames) + " frames: " + m.last_attempt()->quality->reasons.front()),
+            std::string::npos)
+      << q;
+  EXPECT_NE(q.find("Keep it anyway?"), std::string::npos) << q;
+  EXPECT_EQ(m.state().trials[0].status, session::TrialStatus::kFailed) << "asking keeps nothing";
+  ASSERT_EQ(m.answer_accept(false), "");
+  EXPECT_TRUE(m.accept_question().empty());
+  EXPECT_EQ(m.state().trials[0].status, session::TrialStatus::kFailed);
+  EXPECT_NE(m.answer_accept(true), "") << "no question is open any more";
+  EXPECT_EQ(m.state().trials[0].status, session::TrialStatus::kFailed);
+
+  // Asked again and answered yes: kept, journaled with the verdict.
+  ASSERT_EQ(m.ask_accept(), "");
+  ASSERT_EQ(m.answer_accept(true), "");
+  EXPECT_EQ(m.state().trials[0].status, session::TrialStatus::kAccepted);
+  ASSERT_FALSE(m.state().trials[0].notes.empty());
+  EXPECT_NE(m.state().trials[0].notes.back().find("accepted by the operator despite its verdict (fail)"),
+            std::string::npos);
+  m.close();
   fs::remove_all(dir);
 }
 

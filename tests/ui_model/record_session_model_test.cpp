@@ -200,7 +200,16 @@ TEST(RecordSessionModel, OpeningAnotherProcesssSessionOrABadFolderSaysWhy) {
   const std::string locked = b.open(dir, fast_sim());
   EXPECT_NE(locked, "");  // the folder's lock is held by `a`
   EXPECT_FALSE(b.has_session());
-  EXPECT_NE(b.open(dir / "nothing-here", fast_sim()).find("not a subject session"), std::string::npos);
+  // A folder that is not a session, and one that does not exist (`--session` with a typo): each
+  // says which it is.
+  const fs::path empty_dir = test::fresh_test_dir("record_model_not_a_session");
+  fs::create_directories(empty_dir);
+  EXPECT_NE(b.open(empty_dir, fast_sim()).find("not a subject session"), std::string::npos);
+  const std::string missing = b.open(dir / "nothing-here", fast_sim());
+  EXPECT_NE(missing.find("no such folder"), std::string::npos) << missing;
+  EXPECT_NE(missing.find((dir / "nothing-here").string()), std::string::npos) << missing;
+  EXPECT_EQ(missing.find("lmc session new"), std::string::npos) << "it exists nowhere: creating is not the fix";
+  fs::remove_all(empty_dir);
   RecordSessionModel c;
   EXPECT_NE(c.create(test::fresh_test_dir("record_model_bad"), quick("../escape"), fast_sim()).find("subject id"),
             std::string::npos);
@@ -309,6 +318,15 @@ TEST(RecordSessionModel, CloseAfterRecordingThenReopenAndCloseAgain) {
   m.close();
   EXPECT_FALSE(m.last_attempt());
   EXPECT_EQ(session::read_session_state(dir).count(session::TrialStatus::kAccepted), 2);
+
+  // Opened complete ("nothing is left to record"), then a trial redone: the notice goes, it is no
+  // longer true.
+  ASSERT_EQ(m.open(dir, fast_sim()), "");
+  ASSERT_FALSE(m.resume_notice().empty());
+  ASSERT_EQ(m.redo(1), "");
+  EXPECT_TRUE(m.resume_notice().empty()) << "the notice still said every trial was accepted";
+  EXPECT_EQ(m.accepted_count(), 1);
+  m.close();
   fs::remove_all(dir);
 }
 

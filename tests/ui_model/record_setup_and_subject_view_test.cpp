@@ -18,6 +18,7 @@
 #include "ui/model/record/subject_screen_link.h"
 #include "ui/model/record/subject_text_scale.h"
 #include "ui/model/record/subject_view.h"
+#include "ui/model/record/subject_window_placement.h"
 
 namespace lmc::ui {
 namespace record_setup_and_subject_view_test {  // named: test files share unity batches
@@ -26,6 +27,14 @@ namespace fs = std::filesystem;
 
 void set(char* field, size_t size, const std::string& text) {
   std::snprintf(field, size, "%s", text.c_str());
+}
+
+// An empty quick session of `subject` at `dir` (its lock goes with the folder object).
+void make(const fs::path& dir, const std::string& subject) {
+  session::NewSessionSpec spec;
+  spec.subject.subject_id = subject;
+  spec.protocol = "quick";
+  (void)session::SessionFolder::create(dir, spec);
 }
 
 RecordSettings fast_sim() {
@@ -117,12 +126,6 @@ TEST(RecordSetupForm, ListsSessionsOneFolderDownGroupedByFolder) {
   // sessions/S03, sessions/demo/S01 and S02 (the demo sessions), sessions/demo/notes (not a
   // session) and sessions/old/2024/S04 (two levels down: not looked at).
   const fs::path root = test::fresh_test_dir("setup_list_nested");
-  const auto make = [](const fs::path& dir, const std::string& subject) {
-    session::NewSessionSpec spec;
-    spec.subject.subject_id = subject;
-    spec.protocol = "quick";
-    (void)session::SessionFolder::create(dir, spec);
-  };
   make(root / "S03", "S03");
   make(root / "demo" / "S01", "S01");
   make(root / "demo" / "S02", "S02");
@@ -143,6 +146,26 @@ TEST(RecordSetupForm, ListsSessionsOneFolderDownGroupedByFolder) {
   EXPECT_EQ(listed[2].group, "demo");
   EXPECT_EQ(listed[2].total, 2);
   EXPECT_TRUE(listed[2].problem.empty()) << listed[2].problem;
+  fs::remove_all(root);
+}
+
+// A subject id is a person: the sessions already recorded for the form's id, wherever they sit
+// under the sessions folder (the demo's S01 one folder down too), are found before a new one is made.
+TEST(RecordSetupForm, FindsTheSessionsAlreadyRecordedForASubjectId) {
+  const fs::path root = test::fresh_test_dir("setup_same_subject");
+  make(root / "P01-first", "P01");
+  make(root / "P02", "P02");
+  make(root / "demo" / "S01", "S01");
+  const auto listed = list_sessions(root);
+  const auto p01 = sessions_of_subject(listed, "P01");
+  ASSERT_EQ(p01.size(), 1U);
+  EXPECT_EQ(p01[0].dir, root / "P01-first");
+  ASSERT_EQ(sessions_of_subject(listed, "S01").size(), 1U);
+  EXPECT_TRUE(sessions_of_subject(listed, "P03").empty());
+  EXPECT_TRUE(sessions_of_subject(listed, "p01").empty()) << "ids are compared exactly, as the export does";
+  const std::string text = subject_clash_text("P01", p01);
+  EXPECT_NE(text.find("Subject P01 already has 1 session:"), std::string::npos) << text;
+  EXPECT_NE(text.find((root / "P01-first").string() + " (0 of 2 trials accepted)"), std::string::npos) << text;
   fs::remove_all(root);
 }
 
@@ -221,6 +244,39 @@ session::TrialType index_type() {
   t.duration_s = 3;
   t.subject_cue = "Bend your index finger";
   return t;
+}
+
+// Every stage the subject can see has words for the subject (no "operator", no session folder),
+// and the operator's countdown is the subject's number: one rule for both screens.
+TEST(SubjectView, EveryStageHasSubjectFacingWordsAndOneCountdown) {
+  const session::TrialType type = index_type();
+  SubjectViewInputs in;
+  SubjectView v = build_subject_view(in, 0);
+  EXPECT_EQ(v.stage, SubjectStage::kNoSession);
+  EXPECT_EQ(v.headline, "Welcome");
+  EXPECT_EQ(v.cue.find("operator"), std::string::npos) << v.cue;
+  EXPECT_FALSE(v.cue.empty());
+  in.has_session = true;
+  in.type = &type;
+  for (const auto phase :
+       {devices::TrialPhase::kWaitingForStreams, devices::TrialPhase::kWaitingForVicon, devices::TrialPhase::kCountdown,
+        devices::TrialPhase::kRecording, devices::TrialPhase::kFinishing, devices::TrialPhase::kDone}) {
+    in.phase = phase;
+    v = build_subject_view(in, 0);
+    EXPECT_FALSE(v.headline.empty()) << devices::trial_phase_name(phase);
+    EXPECT_FALSE(v.cue.empty()) << devices::trial_phase_name(phase);
+    EXPECT_EQ(v.headline.find("operator"), std::string::npos) << v.headline;
+  }
+  // The operator's "starts in N s" and the subject's N, at the same remaining time.
+  for (const double remaining : {2.999, 2.3, 2.0, 1.5, 1.0, 0.4, 0.0}) {
+    in.phase = devices::TrialPhase::kCountdown;
+    in.countdown_remaining_s = remaining;
+    EXPECT_EQ(build_subject_view(in, 0).headline, std::to_string(countdown_number(remaining))) << remaining;
+  }
+  EXPECT_EQ(countdown_number(2.3), 3);
+  EXPECT_EQ(countdown_number(0.0), 1);
+  EXPECT_EQ(seconds_left(4.0, 0.6), 4);
+  EXPECT_EQ(seconds_left(4.0, 5.0), 0);
 }
 
 TEST(SubjectView, ShowsTheRedCircleOnlyWhileRecordingAndNothingForTheOperator) {
@@ -318,13 +374,48 @@ TEST(SubjectScreenPlacement, OneMonitorOpensWindowedUnlessTheOperatorChose) {
   EXPECT_FALSE(subject_screen_windowed(link));  // two monitors: the second is covered
   link.monitors.clear();
   EXPECT_TRUE(subject_screen_windowed(link));  // none seen yet: nothing to cover safely
-  // The operator's choice wins either way.
+  // Full screen only on a second monitor: with one, a window even when the operator unticked it
+  // (covering the only monitor hid Start and the note field).
   link.monitors = {"eDP-1 (1920x1080, primary)"};
   link.windowed = false;
-  EXPECT_FALSE(subject_screen_windowed(link));
+  EXPECT_TRUE(subject_screen_windowed(link));
+  // With two the operator's choice wins either way.
   link.monitors.push_back("HDMI-1 (1920x1080)");
+  EXPECT_FALSE(subject_screen_windowed(link));
   link.windowed = true;
   EXPECT_TRUE(subject_screen_windowed(link));
+}
+
+// One monitor: the window opens beside the workbench when there is room, else in the corner over
+// the 3D view, never over the operator's controls; where the operator left it wins when it is
+// still on a monitor.
+TEST(SubjectScreenPlacement, TheWindowOpensBesideTheWorkbenchOrWhereTheOperatorLeftIt) {
+  const std::vector<ScreenRect> laptop = {{0, 0, 1920, 1080}};
+  // The workbench at 1280 × 800 at the left: the window fills the strip to its right.
+  const ScreenRect beside = subject_window_rect(laptop, -1, {0, 0, 1280, 800}, std::nullopt);
+  EXPECT_GE(beside.x, 1280);
+  EXPECT_LE(beside.x + beside.width, 1920);
+  EXPECT_GE(beside.width, 400);
+  EXPECT_EQ(beside.height, beside.width * 10 / 16);
+  // Maximised: a third of the monitor, bottom right, above a taskbar; the left two thirds (the
+  // trial list, Start, the verdict and the note line) stay clear.
+  const ScreenRect corner = subject_window_rect(laptop, -1, {0, 0, 1920, 1080}, std::nullopt);
+  EXPECT_EQ(corner.width, 640);
+  EXPECT_EQ(corner.height, 400);
+  EXPECT_EQ(corner.x + corner.width, 1920 - 8);
+  EXPECT_LE(corner.y + corner.height, 1080 - 48);
+  EXPECT_GE(corner.x, 1920 * 2 / 3 - 8);
+  // Never the old 1024 × 640 at (40, 40) over the controls.
+  EXPECT_NE(corner, (ScreenRect{40, 40, 1024, 640}));
+  // Remembered and still on a monitor: there; off every monitor now (a projector unplugged): ignored.
+  const ScreenRect left_there{100, 500, 700, 440};
+  EXPECT_EQ(subject_window_rect(laptop, -1, {0, 0, 1920, 1080}, left_there), left_there);
+  EXPECT_EQ(subject_window_rect(laptop, -1, {0, 0, 1920, 1080}, ScreenRect{2500, 100, 700, 440}), corner);
+  // The remembered line round-trips; a damaged one is ignored.
+  EXPECT_EQ(parse_subject_window_rect(subject_window_rect_text(left_there)), left_there);
+  EXPECT_FALSE(parse_subject_window_rect("100 500 wide").has_value());
+  EXPECT_FALSE(parse_subject_window_rect("1 2 3 4 5").has_value());
+  EXPECT_FALSE(parse_subject_window_rect("1 2 -3 4").has_value());
 }
 
 TEST(SubjectScreenPlacement, TheCommandLineChoosesOnlyWhatItNames) {
@@ -337,7 +428,11 @@ TEST(SubjectScreenPlacement, TheCommandLineChoosesOnlyWhatItNames) {
   EXPECT_TRUE(subject_screen_windowed(link));  // the bench decides: one monitor, a window
   apply_subject_screen_request(link, *parse_subject_screen_arg("0", error));
   EXPECT_EQ(link.monitor, 0);
-  EXPECT_FALSE(subject_screen_windowed(link));  // asked to cover monitor 0: it does
+  // Asked to cover monitor 0: with one monitor it stays a window (covering it would hide the
+  // operator's); with a second one it covers the one asked for.
+  EXPECT_TRUE(subject_screen_windowed(link));
+  link.monitors.push_back("HDMI-1 (1920x1080)");
+  EXPECT_FALSE(subject_screen_windowed(link));
   apply_subject_screen_request(link, *parse_subject_screen_arg("window", error));
   EXPECT_TRUE(subject_screen_windowed(link));
 }

@@ -83,6 +83,35 @@ TEST_F(ReviewModel, ProcessesASessionIntoRowsAndReopensItFromTheCache) {
   }
 }
 
+// A subject is a person, not a folder: a second session folder of subject S01 named otherwise
+// ("S01-visit2") gives rows of subject S01, so agreement counts one subject.
+TEST_F(ReviewModel, TwoSessionFoldersOfOneSubjectIdAreOneSubject) {
+  const fs::path second = test::scratch_dir("review_second_visit") / "S01-visit2";
+  fs::remove_all(second);
+  fs::copy(session(), second, fs::copy_options::recursive);
+  fs::remove(second / ".lock");
+  ReviewBatchInput in = input(test::scratch_dir("review_cache_two_visits"));
+  in.folders.push_back(second);
+  const ReviewBatch both = run(in);
+  ASSERT_EQ(both.trials.size(), 4u);
+  for (const auto& t : both.trials) EXPECT_EQ(t.row.subject, "S01") << t.folder;
+  fs::remove_all(second.parent_path());
+}
+
+// `--review` with a typo: the missing folder gets no chip of its own and the problem line names it.
+TEST_F(ReviewModel, AFolderThatDoesNotExistIsNotOpenedAndSaysSo) {
+  ReviewState state;
+  state.set_cache_dir(test::scratch_dir("review_cache_missing"));
+  const fs::path missing = session().parent_path() / "no-such-session";
+  state.open_folders({missing});
+  EXPECT_TRUE(state.folders().empty());
+  EXPECT_EQ(state.problem(), "not opened: " + missing.string() + ": no such folder");
+  state.open_folders({session(), missing});
+  ASSERT_EQ(state.folders().size(), 1u);
+  EXPECT_EQ(state.folders()[0], session().lexically_normal());
+  EXPECT_NE(state.problem().find(missing.string() + ": no such folder"), std::string::npos) << state.problem();
+}
+
 TEST_F(ReviewModel, AChangedFileOrMethodIsProcessedAgainAndADamagedEntryIsAMiss) {
   const fs::path cache = test::scratch_dir("review_cache_b");
   const ReviewBatch first = run(input(cache));

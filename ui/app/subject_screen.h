@@ -27,6 +27,10 @@ class SubjectScreen {
   bool shown() const { return window_ != nullptr; }
 
  private:
+  // A windowed subject screen's place goes to the user's config when it closes, so the next
+  // session opens it where the operator put it (subject_window_placement.h).
+  void remember_placement();
+
   GLFWwindow* main_;
   int hidden_width_, hidden_height_;
   std::unique_ptr<SubjectWindow> window_;

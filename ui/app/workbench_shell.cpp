@@ -81,8 +81,17 @@ bool WorkbenchShell::any_unsaved() const {
   return false;
 }
 
+std::string WorkbenchShell::recording_now() const {
+  for (const auto& t : tabs_)
+    if (std::string what = t->recording_now(); !what.empty()) return what;
+  return {};
+}
+
 void WorkbenchShell::request_quit() {
-  if (any_unsaved()) {
+  if (quit_after_stop_) return;  // already stopping, to quit once it has
+  if (std::string what = recording_now(); !what.empty()) {
+    recording_prompt_ = std::move(what);
+  } else if (any_unsaved()) {
     quit_prompt_open_ = true;
   } else {
     quit_requested_ = true;
@@ -103,6 +112,12 @@ std::string WorkbenchShell::window_title() const {
 void WorkbenchShell::frame() {
   const auto start = std::chrono::steady_clock::now();
   for (size_t i = 0; i < tabs_.size(); ++i) tabs_[i]->update(ids_[i] == active_id_);
+  // "Stop and keep, then quit": the trial ends on its worker; quitting goes on once it has (and
+  // still asks about unsaved work).
+  if (quit_after_stop_ && recording_now().empty()) {
+    quit_after_stop_ = false;
+    request_quit();
+  }
   if (!context_->tab_request().empty()) {
     select_tab(context_->tab_request());
     context_->tab_request().clear();
@@ -247,12 +262,36 @@ void WorkbenchShell::draw_status_bar(float height) {
     status_traced_ = line.text;
     status_trace_ << active_id_ << '\t' << line.text << std::endl;
   }
+  // A line wider than the bar (a 1024-pixel window) ends in "…" and shows whole on hover, rather
+  // than running off the window's edge.
+  std::string text = line.text;
+  const float room = ImGui::GetContentRegionAvail().x - 4.0f;
+  const bool cut = ImGui::CalcTextSize(text.c_str()).x > room;
+  if (cut) {
+    size_t lo = 0, hi = text.size();  // the longest prefix that fits with the ellipsis
+    while (lo < hi) {
+      const size_t mid = (lo + hi + 1) / 2;
+      if (ImGui::CalcTextSize((text.substr(0, mid) + "…").c_str()).x <= room)
+        lo = mid;
+      else
+        hi = mid - 1;
+    }
+    while (lo > 0 && (static_cast<unsigned char>(text[lo]) & 0xC0U) == 0x80U) --lo;  // whole UTF-8 characters
+    text = text.substr(0, lo) + "…";
+  }
   if (line.is_error) {
-    ImGui::TextColored(ImVec4(1.0f, 0.45f, 0.4f, 1.0f), "%s", line.text.c_str());
+    ImGui::TextColored(ImVec4(1.0f, 0.45f, 0.4f, 1.0f), "%s", text.c_str());
   } else if (line.is_hint) {
-    ImGui::TextColored(ImVec4(0.55f, 0.8f, 1.0f, 1.0f), "%s", line.text.c_str());
+    ImGui::TextColored(ImVec4(0.55f, 0.8f, 1.0f, 1.0f), "%s", text.c_str());
   } else {
+    ImGui::TextUnformatted(text.c_str());
+  }
+  if (cut && ImGui::IsItemHovered()) {
+    ImGui::BeginTooltip();
+    ImGui::PushTextWrapPos(ImGui::GetFontSize() * 60.0f);
     ImGui::TextUnformatted(line.text.c_str());
+    ImGui::PopTextWrapPos();
+    ImGui::EndTooltip();
   }
   if (show_frame_time_) {
     char buf[96];
@@ -264,6 +303,27 @@ void WorkbenchShell::draw_status_bar(float height) {
 }
 
 void WorkbenchShell::draw_quit_prompt() {
+  constexpr const char* kRecordingTitle = "Quit while recording?";
+  if (!recording_prompt_.empty() && !ImGui::IsPopupOpen(kRecordingTitle)) ImGui::OpenPopup(kRecordingTitle);
+  if (ImGui::BeginPopupModal(kRecordingTitle, nullptr, ImGuiWindowFlags_AlwaysAutoResize)) {
+    ImGui::Text("%s. Quitting now cuts it off.", recording_prompt_.c_str());
+    ImGui::TextUnformatted("Stop it (what is recorded is kept, the trial waits for a redo) and quit?");
+    if (ImGui::Button("Stop, keep it and quit  [S]") || ImGui::IsKeyPressed('S', false)) {
+      for (auto& t : tabs_)
+        if (!t->recording_now().empty()) t->stop_recording();
+      quit_after_stop_ = true;
+      recording_prompt_.clear();
+      ImGui::CloseCurrentPopup();
+    }
+    ImGui::SameLine();
+    // The default: Esc or Enter keep the trial going.
+    if (ImGui::Button("Keep recording  [Esc]") || ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Escape), false) ||
+        ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Enter), false) || recording_now().empty()) {
+      recording_prompt_.clear();
+      ImGui::CloseCurrentPopup();
+    }
+    ImGui::EndPopup();
+  }
   if (quit_prompt_open_) {
     ImGui::OpenPopup("Quit with unsaved changes?");
     quit_prompt_open_ = false;

@@ -58,8 +58,11 @@ class WorkbenchShell final {
 
   std::string window_title() const;
   bool quit_requested() const { return quit_requested_; }
-  // Called when the window's close button is pressed: asks first when work is unsaved.
+  // Called when the window's close button is pressed: asks first when a trial records (stop and
+  // keep it, or keep recording) or work is unsaved.
   void request_quit();
+  // What records now in any tab ("" when nothing does).
+  std::string recording_now() const;
   bool any_unsaved() const;
   void open_help(HelpWindow::Section section = HelpWindow::Section::kWalkthrough) { help_.open(section); }
   bool help_open() const { return help_.is_open(); }
@@ -95,6 +98,8 @@ class WorkbenchShell final {
   std::string status_traced_;
   bool quit_requested_ = false;
   bool quit_prompt_open_ = false;
+  std::string recording_prompt_;  // what records, while the recording question is to be asked or open
+  bool quit_after_stop_ = false;  // the operator chose "stop and keep": quit once nothing records
   std::chrono::steady_clock::time_point last_frame_start_{};
   double frame_cpu_ms_ = 0.0;
 };

@@ -37,6 +37,9 @@ class WorkbenchContext {
   // Folders for the Review tab to open: `lmc-workbench --review DIR…` at start-up, the Record tab's
   // "Review this session" later. The Review tab takes them (and clears the list) every frame.
   std::vector<std::filesystem::path>& review_requests() { return review_requests_; }
+  // The folders the Review tab has open, as it publishes them each frame (the Record tab asks
+  // before a new session reuses a subject id found there).
+  std::vector<std::filesystem::path>& review_folders() { return review_folders_; }
   // A tab the shell should show next ("review"); the shell takes it after the tabs' updates.
   std::string& tab_request() { return tab_request_; }
   // Renders ImGui drawing off screen at width × height into a PNG (ui/platform/offscreen_png.h); set
@@ -50,6 +53,7 @@ class WorkbenchContext {
   LiveRig rig_;  // after layout_: it reads it until destroyed
   std::optional<RecordStartup> record_startup_;
   std::vector<std::filesystem::path> review_requests_;
+  std::vector<std::filesystem::path> review_folders_;
   std::string tab_request_;
   SubjectScreenLink subject_screen_;
   PictureRenderer picture_renderer_;

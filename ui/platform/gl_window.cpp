@@ -14,6 +14,7 @@
 #include <string>
 #include <vector>
 
+#include "ui/platform/ui_fonts.h"
 #include "ui/platform/user_config.h"
 
 namespace lmc::ui {
@@ -92,6 +93,7 @@ GlWindow::GlWindow(const WindowOptions& options) {
   ImGuiIO& io = ImGui::GetIO();
   ini_path_ = options.visible ? user_ini_path() : std::string();
   io.IniFilename = ini_path_.empty() ? nullptr : ini_path_.c_str();
+  load_ui_fonts(io);  // the built-in font with DejaVu Sans merged in: dashes, arrows, ≤, µ …
   ImGui::StyleColorsDark();
   ImGuiStyle& style = ImGui::GetStyle();
   style.WindowRounding = 3.0f;

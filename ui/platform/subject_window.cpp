@@ -12,23 +12,10 @@
 #include <stdexcept>
 
 #include "ui/platform/gl_window.h"
+#include "ui/platform/ui_fonts.h"
 
 namespace lmc::ui {
 namespace {
-
-// A font that stays sharp when large: DejaVu Sans Bold from Debian's fonts-dejavu-core when it is
-// installed, else ImGui's built-in bitmap font scaled (readable, but coarse).
-constexpr const char* kBoldFont = "/usr/share/fonts/truetype/dejavu/DejaVuSans-Bold.ttf";
-
-ImFont* add_font(ImGuiIO& io, float size_px) {
-  std::error_code ec;
-  if (std::filesystem::exists(kBoldFont, ec)) {
-    if (ImFont* f = io.Fonts->AddFontFromFileTTF(kBoldFont, size_px)) return f;
-  }
-  ImFontConfig config;
-  config.SizePixels = size_px;
-  return io.Fonts->AddFontDefault(&config);
-}
 
 // Keeps the caller's GL and ImGui contexts and puts them back when the frame is done.
 class ContextSwitch {
@@ -85,8 +72,8 @@ SubjectWindow::SubjectWindow(GLFWwindow* share, const SubjectWindowOptions& opti
     w = options.width;
     h = options.height;
   } else if (options.windowed) {
-    w = 1024;
-    h = 640;
+    w = options.window_width;
+    h = options.window_height;
   }
   glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 3);
   glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 3);
@@ -99,11 +86,15 @@ SubjectWindow::SubjectWindow(GLFWwindow* share, const SubjectWindowOptions& opti
   // The operator drives the session from the keyboard: the subject screen must not take focus.
   glfwWindowHint(GLFW_FOCUSED, GLFW_FALSE);
   glfwWindowHint(GLFW_FOCUS_ON_SHOW, GLFW_FALSE);
-  window_ = glfwCreateWindow(w, h, "LMC Workbench — subject screen", nullptr, share);
+  // The title says how it closes: the subject screen has no controls of its own.
+  window_ = glfwCreateWindow(w, h, "Subject screen (F2 in the workbench closes it)", nullptr, share);
   glfwDefaultWindowHints();
   if (window_ == nullptr) throw std::runtime_error("cannot open the subject screen window (GLFW could not create it)");
   if (options.visible) {
-    glfwSetWindowPos(window_, where.x + (options.windowed ? 40 : 0), where.y + (options.windowed ? 40 : 0));
+    if (options.windowed)
+      glfwSetWindowPos(window_, options.window_x, options.window_y);
+    else
+      glfwSetWindowPos(window_, where.x, where.y);
     glfwShowWindow(window_);
   }
 
@@ -118,9 +109,9 @@ SubjectWindow::SubjectWindow(GLFWwindow* share, const SubjectWindowOptions& opti
   io.IniFilename = nullptr;
   ImGui::StyleColorsDark();
   const float normal = options.normal_font_px > 0 ? options.normal_font_px : 28.0F;
-  fonts_.normal = add_font(io, normal);
-  fonts_.large = add_font(io, normal * 2.0F);
-  fonts_.huge = add_font(io, normal * 150.0F / 28.0F);
+  fonts_.normal = add_large_ui_font(io, normal);
+  fonts_.large = add_large_ui_font(io, normal * 2.0F);
+  fonts_.huge = add_large_ui_font(io, normal * 150.0F / 28.0F);
   ImGui_ImplGlfw_InitForOpenGL(window_, false);  // no callbacks: no controls, no input
   ImGui_ImplOpenGL3_Init("#version 330 core");
   ImGui::SetCurrentContext(previous_imgui);
@@ -135,6 +126,15 @@ SubjectWindow::~SubjectWindow() {
   }
   ImGui::DestroyContext(imgui_);
   glfwDestroyWindow(window_);
+}
+
+void window_placement(GLFWwindow* window, int& x, int& y, int& width, int& height) {
+  glfwGetWindowPos(window, &x, &y);
+  glfwGetWindowSize(window, &width, &height);
+}
+
+void SubjectWindow::placement(int& x, int& y, int& width, int& height) const {
+  window_placement(window_, x, y, width, height);
 }
 
 bool SubjectWindow::closed_by_user() const {

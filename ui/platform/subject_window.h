@@ -21,12 +21,15 @@ struct MonitorInfo {
 // The monitors GLFW sees now (GLFW must be initialised: the main window exists). The first is
 // the primary one.
 std::vector<MonitorInfo> list_monitors();
+// Where `window` is on the desktop: its position and size in screen coordinates.
+void window_placement(GLFWwindow* window, int& x, int& y, int& width, int& height);
 
 struct SubjectWindowOptions {
-  int monitor = -1;           // index into list_monitors(); -1 or out of range: the last one
-  bool windowed = false;      // a decorated 1024 × 640 window instead of covering the monitor
-  bool visible = true;        // false for --capture
-  int width = 0, height = 0;  // with !visible: the picture's size
+  int monitor = -1;       // index into list_monitors(); -1 or out of range: the last one
+  bool windowed = false;  // a decorated window at `window_rect` instead of covering the monitor
+  int window_x = 40, window_y = 40, window_width = 1024, window_height = 640;  // windowed: where
+  bool visible = true;                                                         // false for --capture
+  int width = 0, height = 0;                                                   // with !visible: the picture's size
   // > 0: the normal font's size in pixels (large and huge keep their ratio to it). The off-screen
   // figure pictures (offscreen_png.h) use the same window at a figure's text size.
   float normal_font_px = 0;
@@ -49,6 +52,8 @@ class SubjectWindow {
   // True once the operator closed the (windowed) subject screen with its title bar.
   bool closed_by_user() const;
   const SubjectWindowOptions& options() const { return options_; }
+  // Where the window is now (the operator may have moved or resized it): x, y, width, height.
+  void placement(int& x, int& y, int& width, int& height) const;
   // One frame: makes this window's GL and ImGui contexts current, runs `body` inside its ImGui
   // frame, renders; writes the picture to `png_path` when given; swaps; then puts the caller's
   // GL and ImGui contexts back.

@@ -27,6 +27,11 @@ class Tab {
   virtual std::string document_title() const { return {}; }
   // True when quitting would lose work; the shell then asks before closing.
   virtual bool has_unsaved_changes() const { return false; }
+  // What quitting now would cut off ("Naiv_Index101 is recording"); empty when nothing records.
+  // The shell then asks: stop it and keep what was recorded, or keep recording.
+  virtual std::string recording_now() const { return {}; }
+  // Stops it as the operator's Stop does (the rows kept); the shell quits once recording_now() is empty.
+  virtual void stop_recording() {}
   // ---- the File menu (the shell forwards; the tab keeps its own dialogs and prompts) --------
   // The kind of document the tab opens and saves ("layout"); empty when it has none.
   virtual std::string document_kind() const { return {}; }

@@ -60,8 +60,13 @@ TEST(BidsNames, LabelsEntitiesAndRunIndex) {
   EXPECT_EQ(bids_label("_-_"), "");
   EXPECT_EQ(bids_run_index(1, 2), 102);
   EXPECT_EQ(bids_run_index(2, 10), 210);
-  EXPECT_EQ(bids_stem({"S01", "Index", "LMC1", "Naiv", 102}), "sub-S01_task-Index_tracksys-LMC1_acq-Naiv_run-102");
-  EXPECT_EQ(bids_stem({"S01", "Index", "", "Naiv", 102}), "sub-S01_task-Index_acq-Naiv_run-102");
+  EXPECT_EQ(bids_stem({"S01", "Index", "LMC1", "Naiv", 102, ""}), "sub-S01_task-Index_tracksys-LMC1_acq-Naiv_run-102");
+  EXPECT_EQ(bids_stem({"S01", "Index", "", "Naiv", 102, ""}), "sub-S01_task-Index_acq-Naiv_run-102");
+  // A subject's second session: the session entity right after the subject, as BIDS orders them.
+  EXPECT_EQ(bids_stem({"S01", "Index", "LMC1", "Naiv", 102, "2"}),
+            "sub-S01_ses-2_task-Index_tracksys-LMC1_acq-Naiv_run-102");
+  EXPECT_EQ(bids_session_dir("S01", "2"), "sub-S01/ses-2");
+  EXPECT_EQ(bids_session_dir("S01", ""), "sub-S01");
   EXPECT_EQ(bids_subject_dir("01"), "sub-01");
   EXPECT_EQ(bids_device_tracksys(4), "LMC4");
   EXPECT_EQ(bids_anonymous_label(0, 3), "01");

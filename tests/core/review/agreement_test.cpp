@@ -118,6 +118,29 @@ TEST(ReviewAgreement, ExtractsPairsFromTheSummaryAndSkipsTrialsWithoutVicon) {
   EXPECT_EQ(agreement_measures()[10].unit, "deg");
 }
 
+// One subject, two trials: an ICC is computed but no interval is given for it, and each missing
+// number says why (r from 2 pairs is undefined or ±1; limits need a second subject).
+TEST(ReviewAgreement, TwoTrialsOfOneSubjectGiveNoIccIntervalAndSayWhy) {
+  const AgreementTable t =
+      agreement_table({paired("P01", "initial", "horizontal", 51, 50), paired("P01", "initial", "horizontal", 63, 60)});
+  const MeasureAgreement& m = find_group(t, "initial", "horizontal").measures[0];
+  EXPECT_EQ(m.n_trials, 2u);
+  EXPECT_EQ(m.n_subjects, 1u);
+  EXPECT_TRUE(std::isfinite(m.icc.value));
+  EXPECT_FALSE(std::isfinite(m.icc.ci.low));
+  EXPECT_FALSE(std::isfinite(m.icc.ci.high));
+  EXPECT_EQ(m.icc_reason, "no interval from 2 trials: it needs at least 4");
+  EXPECT_FALSE(std::isfinite(m.pearson.r));
+  EXPECT_NE(m.pearson.reason.find("fewer than 3 complete pairs"), std::string::npos) << m.pearson.reason;
+  // Four trials: the interval is given.
+  const AgreementTable four =
+      agreement_table({paired("P01", "initial", "horizontal", 51, 50), paired("P01", "initial", "horizontal", 63, 60),
+                       paired("P02", "initial", "horizontal", 58, 55), paired("P02", "initial", "horizontal", 70, 65)});
+  const MeasureAgreement& m4 = find_group(four, "initial", "horizontal").measures[0];
+  EXPECT_TRUE(m4.icc_reason.empty()) << m4.icc_reason;
+  EXPECT_TRUE(std::isfinite(m4.icc.ci.low));
+}
+
 TEST(ReviewAgreement, SeveralTrialsPerSubjectUseTheRepeatedForm) {
   const AgreementTable t = agreement_table(study_trials());
   const MeasureAgreement& m = find_group(t, "initial", "horizontal").measures[0];  // thumb length

@@ -280,6 +280,25 @@ TEST(SessionFolder, OneProcessAtATimeAndTheManifestIsRebuiltFromTheJournal) {
   fs::remove_all(dir);
 }
 
+// A clean close leaves no lock file in the folder; the lock still keeps a second opener out while
+// the folder is open, and the folder opens again after the close.
+TEST(SessionFolder, ACleanCloseRemovesTheLockFile) {
+  const fs::path dir = test::fresh_test_dir("session_lock");
+  {
+    SessionFolder f = SessionFolder::create(dir, quick_spec());
+    EXPECT_TRUE(fs::exists(dir / ".lock"));
+    EXPECT_THROW(SessionFolder::open(dir), Error);
+  }
+  EXPECT_FALSE(fs::exists(dir / ".lock")) << "a clean close left the lock behind";
+  {
+    SessionFolder again = SessionFolder::open(dir);
+    EXPECT_TRUE(fs::exists(dir / ".lock"));
+    EXPECT_THROW(SessionFolder::open(dir), Error);
+  }
+  EXPECT_FALSE(fs::exists(dir / ".lock"));
+  fs::remove_all(dir);
+}
+
 TEST(SessionFolder, ProcessingTakesOnlyAcceptedAttempts) {
   const fs::path dir = test::fresh_test_dir("session");
   SessionFolder f = SessionFolder::create(dir, quick_spec());

@@ -602,6 +602,26 @@ TEST(TrialQuality, TimelineShowsWhenEachControllerHadTheHand) {
   EXPECT_EQ(least == 1.0, t.worst_finger_seen_by[0] >= 1.0);
 }
 
+// The grid starts with the first row of any controller; one whose first frame comes 60 ms later
+// had the hand from its first frame on, so its line starts at 1, not near 0 (the verdict said
+// 100 % while every line but one started at 0).
+TEST(TrialQuality, TimelineStartsEachControllerAtItsOwnFirstFrame) {
+  Trial trial;
+  const HandFrame pose = reference_pose(HandModel(), HandOrientation::kHorizontal, HandMotion::kOpen);
+  const HandAt hand = [pose](double) { return std::optional<HandFrame>(pose); };
+  for (int id = 1; id <= 4; ++id) add_stream(trial, id, 10.0, hand, [id](double t) { return id == 1 || t >= 0.06; });
+  interleave(trial);
+  finish(trial);
+  const QualityReport r = assess_trial(trial.inputs());
+  const QualityTimeline& t = r.timeline;
+  ASSERT_EQ(t.hand_present.size(), 4U);
+  for (size_t d = 0; d < 4; ++d) {
+    EXPECT_DOUBLE_EQ(t.hand_present[d][0], 1.0) << "LMC" << d + 1 << "'s first sample";
+    EXPECT_DOUBLE_EQ(t.hand_present[d][60], 1.0) << d;
+  }
+  EXPECT_NEAR(r.hand_fraction, 1.0, 1e-12);
+}
+
 TEST(TrialQuality, TimelineOfThePublishedStaticTrialAgreesWithItsFigures) {
   const auto path = test::reference_file("acquisition/LMC_Naiv_Static101.raw.txt");
   if (!std::filesystem::exists(path)) GTEST_SKIP() << "reference data not found: " << path;
@@ -621,10 +641,22 @@ TEST(TrialQuality, TimelineOfThePublishedStaticTrialAgreesWithItsFigures) {
   ASSERT_EQ(t.device_ids, (std::vector<int>{1, 2, 3, 4}));
   for (size_t d = 0; d < 4; ++d) {
     // The mean over the trial is the device's share of instants with a hand: close to its share
-    // of frames with a hand (107 of 118 for LMC1).
-    double mean = 0;
-    for (double v : t.hand_present[d]) mean += v / t.slices();
-    EXPECT_NEAR(mean, r.devices[d].hand_fraction, 0.05) << d;
+    // of frames with a hand (107 of 118 for LMC1). Slices before a controller's first frame or
+    // after its last are gaps (NaN), at the ends only and a slice or two at most.
+    double sum = 0;
+    int shown = 0, first_shown = -1, last_shown = -1;
+    for (int s = 0; s < t.slices(); ++s) {
+      const double v = t.hand_present[d][static_cast<size_t>(s)];
+      if (std::isnan(v)) continue;
+      sum += v;
+      ++shown;
+      if (first_shown < 0) first_shown = s;
+      last_shown = s;
+    }
+    EXPECT_LE(first_shown, 2) << d;
+    EXPECT_GE(last_shown, t.slices() - 3) << d;
+    EXPECT_EQ(shown, last_shown - first_shown + 1) << "a gap inside LMC" << d + 1 << "'s span";
+    EXPECT_NEAR(sum / shown, r.devices[d].hand_fraction, 0.05) << d;
   }
   // Every finger seen by some controller at every instant with a hand (finger_seen_fraction 1.0).
   for (int s = 0; s < t.slices(); ++s) {

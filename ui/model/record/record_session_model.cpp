@@ -102,6 +102,7 @@ void RecordSessionModel::close() {
   fusion_stats_ = {};
   last_preflight_.reset();
   last_attempt_.reset();
+  accept_question_.clear();
   pending_calibration_.reset();
   calibrating_ = false;
   job_handled_ = true;
@@ -192,6 +193,7 @@ std::string RecordSessionModel::start_trial() {
     return "the block's layout cannot be fused live: " + std::string(e.what());
   }
   recording_trial_ = i;
+  accept_question_.clear();
   resume_notice_.clear();  // it described the folder as opened; a new attempt has begun
   live_.reset();
   live_fused_.reset();
@@ -316,10 +318,25 @@ void RecordSessionModel::write_pending_notes() {
   refresh_state();
 }
 
+namespace {
+
+// What the operator reads before keeping a failed attempt, or why it cannot be kept.
+std::string attempt_failure(const devices::AttemptResult& a) {
+  std::string what = std::to_string(a.frames) + " frame" + (a.frames == 1 ? "" : "s");
+  if (a.quality && !a.quality->reasons.empty()) return what + ": " + a.quality->reasons.front();
+  return what + ": " + (a.reason.empty() ? a.outcome : a.reason);
+}
+
+}  // namespace
+
 std::string RecordSessionModel::accept_last() {
+  accept_question_.clear();
   if (busy()) return busy_reason();
   if (!last_attempt_) return "no trial recorded in this run yet";
   const int i = last_attempt_->trial;
+  if (last_attempt_->frames <= 0)
+    return state_.trials.at(static_cast<size_t>(i)).plan.name +
+           " cannot be accepted: " + attempt_failure(*last_attempt_) + "; redo it (R)";
   try {
     if (state_.trials.at(static_cast<size_t>(i)).status == session::TrialStatus::kAccepted) return {};
     runner_->note(i, "accepted by the operator despite its verdict (" + last_attempt_->verdict() + ")");
@@ -330,6 +347,27 @@ std::string RecordSessionModel::accept_last() {
   refresh_state();
   selected_ = -1;
   return {};
+}
+
+std::string RecordSessionModel::ask_accept() {
+  accept_question_.clear();
+  if (busy()) return busy_reason();
+  if (!last_attempt_) return "no trial recorded in this run yet";
+  const auto& trial = state_.trials.at(static_cast<size_t>(last_attempt_->trial));
+  if (trial.status == session::TrialStatus::kAccepted) return {};
+  if (last_attempt_->frames <= 0)
+    return trial.plan.name + " cannot be accepted: " + attempt_failure(*last_attempt_) + "; redo it (R)";
+  accept_question_ = trial.plan.name + " failed (" + attempt_failure(*last_attempt_) + "). Keep it anyway?";
+  return {};
+}
+
+std::string RecordSessionModel::answer_accept(bool keep) {
+  if (accept_question_.empty()) return "no question is open";
+  if (!keep) {
+    accept_question_.clear();
+    return {};
+  }
+  return accept_last();
 }
 
 std::string RecordSessionModel::redo(int i) {
@@ -349,6 +387,7 @@ std::string RecordSessionModel::redo(int i) {
   if (i >= static_cast<int>(state_.trials.size())) return "no such trial";
   if (state_.trials[static_cast<size_t>(i)].attempts.empty())
     return state_.trials[static_cast<size_t>(i)].plan.name + " has not been recorded yet";
+  accept_question_.clear();
   try {
     runner_->redo(i);
   } catch (const std::exception& e) {
@@ -356,6 +395,8 @@ std::string RecordSessionModel::redo(int i) {
   }
   refresh_state();
   selected_ = i;  // Start records it next
+  // The notice described the folder as it was opened ("nothing is left to record"): no longer true.
+  resume_notice_.clear();
   return {};
 }
 

@@ -133,7 +133,15 @@ class RecordSessionModel {
   // The last attempt this run recorded, with its verdict; and which trial it was.
   const std::optional<devices::AttemptResult>& last_attempt() const { return last_attempt_; }
   // Keeps the last attempt despite a fail verdict (the operator's decision, journaled as a note).
+  // An attempt without a frame is never kept: there is nothing to keep (returns why).
   std::string accept_last();
+  // Enter on a failed attempt does not keep it: it asks, naming what failed, and the answer comes
+  // from answer_accept() (the tab's default is No, so Enter twice never keeps a failed trial).
+  // Returns why not when there is nothing to ask about (no attempt, no frames, busy); "" when
+  // the attempt is already kept or the question is now open.
+  std::string ask_accept();
+  const std::string& accept_question() const { return accept_question_; }  // "" when none is open
+  std::string answer_accept(bool keep);  // keep: accept_last(); else the question closes
   // Records trial `i` again: its current attempt moves under superseded/ (i = -1: the trial picked
   // in the list if it has been recorded, else the last one recorded in this run).
   std::string redo(int i = -1);
@@ -177,6 +185,7 @@ class RecordSessionModel {
   std::string last_note_error_;
   std::optional<devices::PreflightReport> last_preflight_;
   std::optional<devices::AttemptResult> last_attempt_;
+  std::string accept_question_;
   std::optional<devices::BlockCalibration> pending_calibration_;
   bool calibrating_ = false;
   bool job_handled_ = true;                                      // the finished job's result was taken by poll()

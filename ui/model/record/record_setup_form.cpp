@@ -1,8 +1,10 @@
 #include "ui/model/record/record_setup_form.h"
 
 #include <algorithm>
+#include <cstdio>
 #include <system_error>
 
+#include "core/common/paths.h"
 #include "core/common/safe_name.h"
 #include "core/session/protocol.h"
 #include "core/session/session_state.h"
@@ -36,6 +38,11 @@ std::vector<ProtocolChoice> protocol_choices() {
 
 RecordSetupForm::RecordSetupForm() : protocols(protocol_choices()) {
   select_protocol("study");
+  std::snprintf(sessions_root, sizeof sessions_root, "%s", sessions_dir().string().c_str());
+}
+
+fs::path RecordSetupForm::sessions_folder() const {
+  return sessions_root[0] != '\0' ? fs::path(sessions_root) : sessions_dir();
 }
 
 bool RecordSetupForm::select_protocol(const std::string& name) {
@@ -72,7 +79,7 @@ session::NewSessionSpec RecordSetupForm::spec() const {
 }
 
 fs::path RecordSetupForm::new_session_dir() const {
-  return folder[0] != '\0' ? fs::path(folder) : session::default_session_dir(subject);
+  return folder[0] != '\0' ? fs::path(folder) : session::default_session_dir(subject, sessions_folder());
 }
 
 RecordSettings RecordSetupForm::settings() const {
@@ -162,6 +169,22 @@ std::vector<SessionListing> list_sessions(const fs::path& root) {
     return a.journal_written > b.journal_written;
   });
   return out;
+}
+
+std::vector<SessionListing> sessions_of_subject(const std::vector<SessionListing>& listed, const std::string& subject) {
+  std::vector<SessionListing> out;
+  for (const auto& s : listed)
+    if (s.problem.empty() && s.subject == subject) out.push_back(s);
+  return out;
+}
+
+std::string subject_clash_text(const std::string& subject, const std::vector<SessionListing>& same) {
+  std::string t = "Subject " + subject + " already has " + std::to_string(same.size()) + " session" +
+                  (same.size() == 1 ? "" : "s") + ":";
+  for (const auto& s : same)
+    t += "\n  " + s.dir.string() + " (" + std::to_string(s.accepted) + " of " + std::to_string(s.total) +
+         " trials accepted)";
+  return t;
 }
 
 }  // namespace lmc::ui

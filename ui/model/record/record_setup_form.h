@@ -37,7 +37,10 @@ struct RecordSetupForm {
   int protocol = 0;  // index into protocols
   char vicon[128] = "";
   char vicon_database[256] = "";
-  char folder[512] = "";  // empty: sessions/<subject>-<time>
+  // Where sessions live (the resume list, new sessions' default folders): the user's data folder
+  // (core/common/paths.h sessions_dir()) until the operator types another.
+  char sessions_root[512] = "";
+  char folder[512] = "";  // empty: <sessions_root>/<subject>-<time>
   char open_folder[512] = "";
   int backend = 0;  // 0 sim, 1 leapc
   bool fast = false;
@@ -48,6 +51,7 @@ struct RecordSetupForm {
   // Throws lmc::Error (the form's problems are checked first by the tab).
   session::NewSessionSpec spec() const;
   std::filesystem::path new_session_dir() const;  // the folder, or the default for the subject
+  std::filesystem::path sessions_folder() const;  // sessions_root as a path
   RecordSettings settings() const;
 };
 
@@ -75,5 +79,12 @@ struct SessionListing {
 // that folder: the sessions directly under `root` first, then each folder by name; within a
 // group, the one whose journal was written last first. Read-only: nothing is locked or repaired.
 std::vector<SessionListing> list_sessions(const std::filesystem::path& root);
+
+// The listed sessions whose subject id is `subject`: a subject id is a person, so creating a new
+// session with one of these ids asks first (continue that session, add a second session of the same
+// subject, or choose another id). Most recent first, as listed.
+std::vector<SessionListing> sessions_of_subject(const std::vector<SessionListing>& listed, const std::string& subject);
+// The question's words: "Subject P01 already has 1 session here: …/P01-… (2 of 2 trials accepted)."
+std::string subject_clash_text(const std::string& subject, const std::vector<SessionListing>& same);
 
 }  // namespace lmc::ui

@@ -34,8 +34,10 @@ void apply_subject_screen_request(SubjectScreenLink& link, const SubjectScreenRe
 }
 
 bool subject_screen_windowed(const SubjectScreenLink& link) {
+  // Covering the only monitor would hide the operator's own window: a window whatever was chosen.
+  if (link.monitors.size() < 2) return true;
   if (link.windowed) return *link.windowed;
-  return link.monitors.size() < 2;
+  return false;
 }
 
 }  // namespace lmc::ui

@@ -37,10 +37,9 @@ std::optional<SubjectScreenRequest> parse_subject_screen_arg(const std::string& 
 // to cover that monitor, neither leaves the choice to the bench.
 void apply_subject_screen_request(SubjectScreenLink& link, const SubjectScreenRequest& request);
 
-// Whether the subject screen is a plain window rather than covering its monitor: the operator's
-// choice when made; otherwise a window on a bench with one monitor (or none seen yet), where
-// covering the only monitor would hide the operator's own window, and the whole monitor on a
-// bench with two or more.
+// Whether the subject screen is a plain window rather than covering its monitor: always a window
+// on a bench with one monitor (or none seen yet), where covering the only monitor would hide the
+// operator's own window; with two or more, the operator's choice when made, else the whole monitor.
 bool subject_screen_windowed(const SubjectScreenLink& link);
 
 }  // namespace lmc::ui

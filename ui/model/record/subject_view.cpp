@@ -33,9 +33,22 @@ SubjectViewInputs subject_view_inputs(const RecordSessionModel& model) {
   return in;
 }
 
+int countdown_number(double remaining_s) {
+  return std::max(1, static_cast<int>(std::ceil(remaining_s - 1e-9)));
+}
+
+int seconds_left(double duration_s, double recording_s) {
+  return static_cast<int>(std::ceil(std::max(0.0, duration_s - recording_s) - 1e-9));
+}
+
 SubjectView build_subject_view(const SubjectViewInputs& in, double t_s) {
   SubjectView v;
-  if (!in.has_session) return v;
+  if (!in.has_session) {
+    // The subject may already sit in front of it: words for them, not for the operator.
+    v.headline = "Welcome";
+    v.cue = "Please make yourself comfortable. We will begin in a moment.";
+    return v;
+  }
   if (in.finished || in.type == nullptr) {
     v.stage = SubjectStage::kDone;
     v.headline = "Thank you";
@@ -53,9 +66,7 @@ SubjectView build_subject_view(const SubjectViewInputs& in, double t_s) {
   switch (*in.phase) {
     case devices::TrialPhase::kCountdown: {
       v.stage = SubjectStage::kCountdown;
-      // "3, 2, 1": the whole seconds still to wait, rounded up so 0 never shows before recording.
-      const int n = std::max(1, static_cast<int>(std::ceil(in.countdown_remaining_s - 1e-9)));
-      v.headline = std::to_string(n);
+      v.headline = std::to_string(countdown_number(in.countdown_remaining_s));  // "3, 2, 1"
       break;
     }
     case devices::TrialPhase::kRecording:
@@ -63,8 +74,7 @@ SubjectView build_subject_view(const SubjectViewInputs& in, double t_s) {
       v.stage = SubjectStage::kRecording;
       v.red_circle = true;
       v.headline = "Recording";
-      const double left = std::max(0.0, in.type->duration_s - in.recording_s);
-      v.time_text = std::to_string(static_cast<int>(std::ceil(left - 1e-9))) + " s left";
+      v.time_text = std::to_string(seconds_left(in.type->duration_s, in.recording_s)) + " s left";
       break;
     }
     case devices::TrialPhase::kDone:

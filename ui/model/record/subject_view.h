@@ -20,7 +20,7 @@ enum class SubjectStage { kNoSession, kGetReady, kWaiting, kCountdown, kRecordin
 struct SubjectView {
   SubjectStage stage = SubjectStage::kNoSession;
   bool red_circle = false;  // only while the trial records
-  std::string headline;     // "Get ready", "3", "Recording", "Thank you"
+  std::string headline;     // "Welcome", "Get ready", "3", "Recording", "Thank you": never empty
   std::string cue;          // the trial type's subject cue, in large letters
   std::string pose_cue;     // how to hold the hand ("palm facing down")
   std::string time_text;    // "7 s left" while recording; "" otherwise
@@ -38,6 +38,13 @@ struct SubjectViewInputs {
   std::optional<devices::TrialPhase> phase;        // set while a trial runs
   double countdown_remaining_s = 0, recording_s = 0;
 };
+
+// The countdown's number, for the subject's screen and the operator's alike (one source, so both
+// show the same number at the same moment): the whole seconds still to wait, rounded up, so 0
+// never shows before recording begins.
+int countdown_number(double remaining_s);
+// Whole seconds left of a trial of `duration_s` after `recording_s`, rounded up, for both screens.
+int seconds_left(double duration_s, double recording_s);
 
 SubjectViewInputs subject_view_inputs(const RecordSessionModel& model);
 // `t_s` drives the pictogram's animation (any steadily increasing clock).

@@ -93,11 +93,22 @@ const std::vector<ReviewTrial>& ReviewState::trials() const {
 }
 
 void ReviewState::open_folders(const std::vector<std::filesystem::path>& folders) {
+  std::string missing;
+  bool added = false;
   for (const auto& folder : folders) {
+    std::error_code ec;
+    if (!std::filesystem::exists(folder, ec)) {
+      missing += (missing.empty() ? "" : "; ") + folder.string() + ": no such folder";
+      continue;
+    }
     const auto normal = folder.lexically_normal();
-    if (std::find(folders_.begin(), folders_.end(), normal) == folders_.end()) folders_.push_back(normal);
+    if (std::find(folders_.begin(), folders_.end(), normal) == folders_.end()) {
+      folders_.push_back(normal);
+      added = true;
+    }
   }
-  reprocess();
+  if (added) reprocess();
+  if (!missing.empty()) problem_ = "not opened: " + missing;
 }
 
 void ReviewState::close_folder(const std::filesystem::path& folder) {

@@ -54,7 +54,9 @@ class ReviewState {
   // Adds a folder (a subject session, a folder of trials, or a trial's folder) and processes what
   // is open again (cached trials come back at once). A folder already open is not added twice.
   void open_folder(const std::filesystem::path& folder) { open_folders({folder}); }
-  void open_folders(const std::vector<std::filesystem::path>& folders);  // one processing run for all
+  // One processing run for all. A folder that does not exist is not opened: problem() names it
+  // ("…: no such folder"), so no chip stands for a folder that is not there.
+  void open_folders(const std::vector<std::filesystem::path>& folders);
   void close_folder(const std::filesystem::path& folder);
   void set_method(FusionMethod method);  // processes everything again with the other fusion
   // A subject's finger-length correction (`lmc length-correction fit`) for the trials of one opened

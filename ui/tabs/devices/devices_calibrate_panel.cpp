@@ -97,8 +97,12 @@ void DevicesCalibratePanel::draw_start() {
   if (ImGui::IsItemHovered()) {
     ImGui::SetTooltip("Hold one open hand still where the trials happen, seen by every controller, for 5 s");
   }
+  // Beside the first button where it fits, else under it (a 1024-pixel window).
+  constexpr const char* kFromTrial = "Calibrate from a recorded trial...";
   ImGui::SameLine();
-  if (ImGui::Button("Calibrate from a recorded trial...")) {
+  if (ImGui::GetContentRegionAvail().x < ImGui::CalcTextSize(kFromTrial).x + 2 * ImGui::GetStyle().FramePadding.x)
+    ImGui::NewLine();
+  if (ImGui::Button(kFromTrial)) {
     trial_browser_.open(FileBrowser::Mode::kOpen, browse_start());
   }
   if (ImGui::IsItemHovered()) {

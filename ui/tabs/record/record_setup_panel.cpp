@@ -66,8 +66,12 @@ SetupAction RecordSetupPanel::draw(const std::vector<SessionListing>& sessions, 
   ImGui::InputText("Vicon database", f.vicon_database, sizeof f.vicon_database);
   hint("(optional: where Nexus stores the trials)");
   problem_line(problems.vicon_database);
+  if (ImGui::InputText("Sessions folder", f.sessions_root, sizeof f.sessions_root))
+    action = SetupAction::kRefreshSessions;  // the resume list below follows it
+  if (anchors) anchors->remember("sessions_root");
+  hint("(your data folder, outside the program)");
   ImGui::InputText("Folder", f.folder, sizeof f.folder);
-  hint("(empty: sessions/<subject>-<date>)");
+  hint("(empty: <sessions folder>/<subject>-<date>)");
   problem_line(problems.folder);
   ImGui::Separator();
   ImGui::Combo("Controllers", &f.backend, "simulated rig\0Leap Motion controllers (LeapC)\0");
@@ -93,7 +97,7 @@ SetupAction RecordSetupPanel::draw(const std::vector<SessionListing>& sessions, 
   ImGui::EndDisabled();
   ImGui::SameLine();
   if (ImGui::SmallButton("Refresh list")) action = SetupAction::kRefreshSessions;
-  if (sessions.empty()) ImGui::TextDisabled("No sessions in the sessions folder yet.");
+  if (sessions.empty()) ImGui::TextDisabled("No sessions in %s yet.", f.sessions_folder().string().c_str());
   size_t lines = sessions.size();
   for (size_t i = 0; i < sessions.size(); ++i) {
     if (!sessions[i].group.empty() && (i == 0 || sessions[i - 1].group != sessions[i].group)) ++lines;  // its heading

@@ -8,6 +8,7 @@
 
 #include <imgui.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
@@ -47,7 +48,7 @@ class RecordTab final : public Tab {
         trial_list_panel_(model_),
         trial_panel_(model_),
         subject_controls_(subject_) {
-    sessions_ = list_sessions(sessions_dir());
+    sessions_ = list_sessions(form_.sessions_folder());
     if (auto& startup = context.record_startup()) {
       std::snprintf(form_.open_folder, sizeof form_.open_folder, "%s", startup->session.string().c_str());
       form_.backend = startup->backend == "leapc" ? 1 : 0;
@@ -87,11 +88,12 @@ class RecordTab final : public Tab {
           open();
           break;
         case SetupAction::kRefreshSessions:
-          sessions_ = list_sessions(sessions_dir());
+          sessions_ = list_sessions(form_.sessions_folder());
           break;
         case SetupAction::kNone:
           break;
       }
+      subject_clash_question();
       ImGui::EndChild();
       subject_screen_key();
       return;
@@ -107,6 +109,13 @@ class RecordTab final : public Tab {
     ImGui::EndChild();
     keys();
   }
+
+  std::string recording_now() const override {
+    if (model_->recording()) return trial_name(model_->recording_trial()) + " is recording";
+    if (model_->calibrating()) return "the block's calibration is recording";
+    return {};
+  }
+  void stop_recording() override { model_->stop_trial(); }
 
   // --capture: record.png and record-trial.png mid-trial with the live fused hand, the subject
   // screen at that moment, then the verdict once the trial ends, then the set-up form.
@@ -155,7 +164,7 @@ class RecordTab final : public Tab {
       std::snprintf(form_.notes, sizeof form_.notes, "%s", "right-handed, no hand injuries");
       std::snprintf(form_.vicon, sizeof form_.vicon, "%s", "192.168.10.2:30");
       form_.select_protocol("study");
-      sessions_ = list_sessions(sessions_dir());
+      sessions_ = list_sessions(form_.sessions_folder());
     }
   }
   bool busy_for_capture() const override {
@@ -172,10 +181,73 @@ class RecordTab final : public Tab {
   }
 
  private:
-  void create() {
+  // One person, one subject id: a new session for an id already recorded asks what is meant.
+  void subject_clash_question() {
+    constexpr const char* kTitle = "This subject id is already recorded";
+    if (!subject_clash_.empty() && !ImGui::IsPopupOpen(kTitle)) ImGui::OpenPopup(kTitle);
+    if (!ImGui::BeginPopupModal(kTitle, nullptr, ImGuiWindowFlags_AlwaysAutoResize)) return;
+    const std::string subject = form_.subject;
+    ImGui::TextUnformatted(subject_clash_text(subject, subject_clash_).c_str());
+    ImGui::Spacing();
+    ImGui::TextUnformatted("One subject id is one person. What is this session?");
+    const SessionListing latest = subject_clash_.front();
+    // Keys too (C, A, Esc), so the question is answered without the mouse, like the Record tab.
+    const bool typing = ImGui::GetIO().WantTextInput;
+    if (ImGui::Button(("Continue " + latest.dir.filename().string() + "  [C]").c_str()) ||
+        (!typing && ImGui::IsKeyPressed('C', false))) {
+      subject_clash_.clear();
+      ImGui::CloseCurrentPopup();
+      std::snprintf(form_.open_folder, sizeof form_.open_folder, "%s", latest.dir.string().c_str());
+      open();
+    }
+    ImGui::SameLine();
+    if (ImGui::Button(("Add a second session of " + subject + "  [A]").c_str()) ||
+        (!typing && ImGui::IsKeyPressed('A', false))) {
+      subject_clash_.clear();
+      ImGui::CloseCurrentPopup();
+      create(true);
+    }
+    ImGui::SameLine();
+    // The default: Enter or Esc keep the form open to change the id.
+    if (ImGui::Button("Choose another id  [Esc]") || ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Escape), false) ||
+        ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Enter), false)) {
+      subject_clash_.clear();
+      ImGui::CloseCurrentPopup();
+      error_ = "subject " + subject + " is already recorded; choose another id, or Create again to continue or add";
+    }
+    ImGui::EndPopup();
+  }
+
+  void create(bool same_subject_confirmed = false) {
     if (const std::string why = check_setup_form(form_).first(); !why.empty()) {
       error_ = why;
       return;
+    }
+    if (!same_subject_confirmed) {
+      sessions_ = list_sessions(form_.sessions_folder());
+      subject_clash_ = sessions_of_subject(sessions_, form_.subject);
+      // The demo's subjects too (S01, S02), wherever scripts/run put them.
+      for (const auto& s : sessions_of_subject(list_sessions(demo_sessions_dir()), form_.subject)) {
+        if (std::none_of(subject_clash_.begin(), subject_clash_.end(),
+                         [&](const SessionListing& c) { return c.dir == s.dir; }))
+          subject_clash_.push_back(s);
+      }
+      for (const auto& dir : context_.review_folders()) {
+        if (!session::is_session_folder(dir)) continue;
+        try {
+          if (session::read_session_state(dir).subject().subject_id != form_.subject) continue;
+        } catch (const std::exception&) {
+          continue;
+        }
+        const bool listed = std::any_of(subject_clash_.begin(), subject_clash_.end(),
+                                        [&](const SessionListing& s) { return s.dir == dir; });
+        if (!listed) {
+          const auto in_review = list_sessions(dir.parent_path());
+          for (const auto& s : sessions_of_subject(in_review, form_.subject))
+            if (s.dir == dir) subject_clash_.push_back(s);
+        }
+      }
+      if (!subject_clash_.empty()) return;  // the question opens in this frame's draw
     }
     try {
       error_ = model_->create(form_.new_session_dir(), form_.spec(), form_.settings());
@@ -203,13 +275,16 @@ class RecordTab final : public Tab {
       if (ImGui::SmallButton("Close")) {
         const std::string closed = model_->dir().string();
         model_->close();
-        sessions_ = list_sessions(sessions_dir());
+        sessions_ = list_sessions(form_.sessions_folder());
         status_.set_status("Record: session " + closed + " closed; everything recorded is kept in its folder");
         return false;
       }
     }
     ImGui::TextDisabled("Space: start / stop   Esc: abort   Enter: accept a failed trial anyway   R: redo   N: note");
+    // The subject screen's controls beside the hint where they fit (1280 wide), else below it.
+    constexpr float kSubjectControlsWidth = 520.0F;
     ImGui::SameLine();
+    if (ImGui::GetContentRegionAvail().x < kSubjectControlsWidth) ImGui::NewLine();
     subject_controls_.draw();
     return true;
   }
@@ -265,10 +340,20 @@ class RecordTab final : public Tab {
         }
         break;
       case TrialPanelAction::kAccept:
-        why = model_->accept_last();
+        why = model_->ask_accept();
+        if (why.empty() && !model_->accept_question().empty())
+          status_.set_status("Record: " + model_->accept_question() + " Y keeps it, Enter or Esc does not");
+        break;
+      case TrialPanelAction::kKeepAnyway:
+        why = model_->answer_accept(true);
         if (why.empty() && model_->last_attempt())
           status_.set_status("Record: " + trial_name(model_->last_attempt()->trial) +
                              " kept despite its verdict (journaled)");
+        break;
+      case TrialPanelAction::kDontKeep:
+        why = model_->answer_accept(false);
+        if (why.empty() && model_->last_attempt())
+          status_.set_status("Record: " + trial_name(model_->last_attempt()->trial) + " not kept; R records it again");
         break;
       case TrialPanelAction::kRedo:
         why = model_->redo();
@@ -294,6 +379,8 @@ class RecordTab final : public Tab {
     // Typing a reason or a note must not start a trial.
     if (ImGui::GetIO().WantTextInput || trial_panel_.note().awaiting_keyboard(ImGui::GetTime(), ImGui::GetFrameCount()))
       return;
+    // A question (quit while recording, keep a failed trial) has the keys: Esc there is not an abort.
+    if (ImGui::IsPopupOpen("", ImGuiPopupFlags_AnyPopupId | ImGuiPopupFlags_AnyPopupLevel)) return;
     // N first: a Space or an R typed into the note in the same frame must not act.
     if (ImGui::IsKeyPressed('N', false)) {
       trial_panel_.note().open(true);
@@ -313,6 +400,17 @@ class RecordTab final : public Tab {
     if (ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Escape), false) && model_->recording())
       act(TrialPanelAction::kAbort);
     if (model_->busy()) return;
+    if (!model_->accept_question().empty()) {
+      // Keeping a failed attempt is a decision: only Y keeps it; Enter (the default) and Esc do not.
+      if (ImGui::IsKeyPressed('Y', false))
+        act(TrialPanelAction::kKeepAnyway);
+      else if (ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Enter), false) ||
+               ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Escape), false))
+        act(TrialPanelAction::kDontKeep);
+      else if (ImGui::IsKeyPressed('R', false))
+        act(TrialPanelAction::kRedo);
+      return;
+    }
     if (const auto& c = model_->pending_calibration()) {
       // A calibration waiting for the operator: Enter applies it, R records it again.
       if (ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Enter), false) && c->ok())
@@ -373,6 +471,7 @@ class RecordTab final : public Tab {
   RecordTrialPanel trial_panel_;
   SubjectScreenControlsPanel subject_controls_;
   std::string error_;
+  std::vector<SessionListing> subject_clash_;  // sessions of the id being created: the question is open
   bool capture_ = false;
   std::string capture_stage_;
   bool open_at_start_ = false;

@@ -7,6 +7,7 @@
 
 #include "ui/model/devices/fusion_readout.h"
 #include "ui/model/record/motion_pictogram.h"
+#include "ui/model/record/subject_view.h"
 #include "ui/tabs/record/record_colours.h"
 #include "ui/widgets/hand_pictogram.h"
 #include "ui/widgets/live_hands_view.h"
@@ -87,6 +88,12 @@ void RecordTrialPanel::verdict_section(TrialPanelAction& action) {
   switch (verdict_.draw()) {
     case VerdictAction::kAccept:
       action = TrialPanelAction::kAccept;
+      break;
+    case VerdictAction::kKeepAnyway:
+      action = TrialPanelAction::kKeepAnyway;
+      break;
+    case VerdictAction::kDontKeep:
+      action = TrialPanelAction::kDontKeep;
       break;
     case VerdictAction::kRedo:
       action = TrialPanelAction::kRedo;
@@ -184,13 +191,14 @@ TrialPanelAction RecordTrialPanel::draw() {
       big_text("waiting for every controller", 1.4F);
     } else if (counting) {
       char text[64];
-      std::snprintf(text, sizeof text, "starts in %.0f s", std::max(0.0, live->countdown_remaining_s));
+      // The number the subject sees at this moment (subject_view.h: one rule for both screens).
+      std::snprintf(text, sizeof text, "starts in %d s", countdown_number(live->countdown_remaining_s));
       big_text(text, 1.6F);
     } else {
       char text[96];
       // Counted from the protocol's duration, which is what the subject was told.
-      const double left = std::max(0.0, type.duration_s - live->recording_s);
-      std::snprintf(text, sizeof text, "RECORDING  %.1f s  ·  %.1f s left", live->recording_s, left);
+      std::snprintf(text, sizeof text, "RECORDING  %.1f s  ·  %d s left", live->recording_s,
+                    seconds_left(type.duration_s, live->recording_s));
       big_text(text, 1.6F);
       const float f = type.duration_s > 0 ? static_cast<float>(live->recording_s / type.duration_s) : 0.0F;
       ImGui::ProgressBar(std::clamp(f, 0.0F, 1.0F), ImVec2(360, 0));
@@ -225,6 +233,10 @@ TrialPanelAction RecordTrialPanel::draw() {
     // The block's checks run on the worker: say so where Start will appear (a Space pressed now
     // is answered in the status line).
     ImGui::TextUnformatted("Pre-flight: checking the controllers, Vicon, disk and folder...");
+  } else if (!model.busy() && trial.status == session::TrialStatus::kAccepted) {
+    // A trial picked in the list that is already kept: Start would be refused, so it is not offered.
+    ImGui::TextColored(kGreen, "%s is accepted.", trial.plan.name.c_str());
+    ImGui::TextDisabled("R records it again (this attempt is kept under superseded/); pick another trial in the list.");
   } else if (!model.busy()) {
     if (big_button("Start  [Space]", ImVec4(0.15F, 0.55F, 0.25F, 1.0F))) action = TrialPanelAction::kStart;
     anchors_.remember("start");

@@ -95,7 +95,17 @@ VerdictAction RecordVerdictPanel::draw() {
     verdict_panel::key_figures(*a->quality);
   }
   const bool accepted = trial.status == session::TrialStatus::kAccepted;
-  if (!model.busy()) {
+  if (!model.busy() && !model.accept_question().empty()) {
+    // The question Enter opened: No is the default (Enter again), keeping takes a Y or a click.
+    ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0F, 0.75F, 0.2F, 1.0F));
+    ImGui::TextWrapped("%s", model.accept_question().c_str());
+    ImGui::PopStyleColor();
+    if (ImGui::Button("No, keep it failed  [Enter]")) action = VerdictAction::kDontKeep;
+    anchors_.remember("dont_keep");
+    ImGui::SameLine();
+    if (ImGui::Button("Keep it anyway (journaled)  [Y]")) action = VerdictAction::kKeepAnyway;
+    anchors_.remember("keep_anyway");
+  } else if (!model.busy()) {
     if (!accepted) {
       if (ImGui::Button("Accept anyway  [Enter]")) action = VerdictAction::kAccept;
       anchors_.remember("accept");

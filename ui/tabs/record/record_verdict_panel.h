@@ -12,7 +12,8 @@
 
 namespace lmc::ui {
 
-enum class VerdictAction { kNone, kAccept, kRedo };
+// kAccept asks (Enter); kKeepAnyway and kDontKeep answer the question it opened (Y, Enter/Esc).
+enum class VerdictAction { kNone, kAccept, kRedo, kKeepAnyway, kDontKeep };
 
 class RecordVerdictPanel {
  public:
@@ -20,7 +21,7 @@ class RecordVerdictPanel {
   RecordVerdictPanel(std::shared_ptr<const RecordSessionModel> model, RecordNotePanel& note)
       : model_(std::move(model)), note_(note) {}
   VerdictAction draw();
-  // "accept", "redo" and "note" as drawn (headless tests click them).
+  // "accept", "keep_anyway", "dont_keep", "redo" and "note" as drawn (headless tests click them).
   const WidgetAnchors& anchors() const { return anchors_; }
 
  private:

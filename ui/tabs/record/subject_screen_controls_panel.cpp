@@ -22,21 +22,16 @@ void SubjectScreenControlsPanel::draw() {
   ImGui::SameLine();
   // Shows what the window will be (the bench's default until the operator chooses).
   bool windowed = subject_screen_windowed(link);
+  // Full screen only on a second monitor: with one it would hide this window.
+  ImGui::BeginDisabled(n < 2);
   if (ImGui::Checkbox("windowed", &windowed)) link.windowed = windowed;
-  constexpr const char* kCoversHint = "(covers this monitor)";
-  if (ImGui::IsItemHovered())
-    ImGui::SetTooltip(
-        "Off: the subject screen fills the chosen monitor. On: a plain window (the default with one monitor).");
-  if (!link.problem.empty()) {
+  ImGui::EndDisabled();
+  if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled))
+    ImGui::SetTooltip(n < 2 ? "One monitor: the subject screen is a window beside this one (it opens where you last "
+                              "left it); full screen needs a second monitor."
+                            : "Off: the subject screen fills the chosen monitor. On: a plain window.");
+  if (!link.problem.empty())
     ImGui::TextColored(ImVec4(1.0F, 0.4F, 0.35F, 1.0F), "%s", link.problem.c_str());  // own line: it must be read whole
-  } else if (link.open && n == 1 && !windowed) {
-    // Only where it fits: the line is shared with the tab's key hint.
-    ImGui::SameLine();
-    if (ImGui::GetContentRegionAvail().x >= ImGui::CalcTextSize(kCoversHint).x)
-      ImGui::TextDisabled("%s", kCoversHint);
-    else
-      ImGui::NewLine();
-  }
 }
 
 }  // namespace lmc::ui

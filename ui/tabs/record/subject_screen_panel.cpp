@@ -36,13 +36,7 @@ void SubjectScreenPanel::draw(const SubjectFonts& fonts) {
   const float margin = 0.04F * h;  // kept free below the last line
   const ImU32 white = IM_COL32(235, 235, 235, 255);
   const ImU32 grey = IM_COL32(130, 130, 135, 255);
-  if (v.stage == SubjectStage::kNoSession) {
-    text_at(fonts.normal, scale, ImVec2(0.05F * w, 0.45F * h), grey,
-            "Subject screen: waiting for the operator to open a session.", 0.90F * w);
-    ImGui::End();
-    return;
-  }
-  if (v.stage == SubjectStage::kDone) {
+  if (v.stage == SubjectStage::kDone || v.stage == SubjectStage::kNoSession) {
     const float top = 0.25F * h;
     const float s = fit_subject_text_scale(scale, h - margin - top, [&](float k) {
       return fonts.huge->FontSize * k * 1.1F + text_height(fonts.large, k, v.cue, 0.88F * w);

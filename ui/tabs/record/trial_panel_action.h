@@ -11,7 +11,9 @@ enum class TrialPanelAction {
   kStart,
   kStop,
   kAbort,
-  kAccept,
+  kAccept,      // asks first (RecordSessionModel::ask_accept)
+  kKeepAnyway,  // the answer: keep the failed attempt
+  kDontKeep,    // the answer: no (the default)
   kRedo,
   kNote,
   kCalibrate,

@@ -95,7 +95,10 @@ void draw_measure_table(const AgreementGroup& g, int& measure, WidgetAnchors& an
     ImGui::TableNextColumn();
     ImGui::TextUnformatted(num(a.differences.rmse, d).c_str());
     ImGui::TableNextColumn();
-    ImGui::TextUnformatted(num(a.pearson.r, 2).c_str());
+    if (std::isfinite(a.pearson.r))
+      ImGui::TextUnformatted(num(a.pearson.r, 2).c_str());
+    else  // the line under the table gives the whole reason
+      ImGui::TextDisabled("%s", a.n_trials < 3 ? "needs 3+ trials" : "n/a (below)");
     ImGui::TableNextColumn();
     ImGui::TextUnformatted(with_ci(a.icc.value, a.icc.ci, 2).c_str());
   }
@@ -215,11 +218,17 @@ void ReviewAgreementPanel::draw(const PictureRenderer& renderer) {
   // What the table could not compute, in words (the statistics say why; the same for every measure
   // of a one-subject group, so the selected one speaks for the rest).
   if (!group.measures.empty()) {
-    const auto& selected = group.measures[static_cast<size_t>(measure_)].bland_altman;
-    if (!selected.reason.empty() && std::isfinite(selected.bias)) {
+    const MeasureAgreement& chosen = group.measures[static_cast<size_t>(measure_)];
+    const auto& selected = chosen.bland_altman;
+    std::string missing;
+    if (!selected.reason.empty() && std::isfinite(selected.bias)) missing += "Bland-Altman: " + selected.reason + ". ";
+    if (!chosen.pearson.reason.empty()) missing += "r: " + chosen.pearson.reason + ". ";
+    if (!chosen.icc_reason.empty()) missing += "ICC: " + chosen.icc_reason + ".";
+    if (!missing.empty()) {
       ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
-      ImGui::TextWrapped("Bland-Altman: %s.", selected.reason.c_str());
+      ImGui::TextWrapped("%s", missing.c_str());
       ImGui::PopStyleColor();
+      anchors_.remember("agreement.missing");
     }
   }
   ImGui::Spacing();

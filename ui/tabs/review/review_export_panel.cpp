@@ -51,6 +51,14 @@ void ReviewExportPanel::open() {
 }
 
 void ReviewExportPanel::choose(What what) {
+  // A BIDS dataset and per-trial files each keep their own folder: switching the kind brings back
+  // the folder last used (or suggested) for that kind, never the other kind's.
+  if ((what == What::kBids) != (what_ == What::kBids)) {
+    std::string current = folder_;
+    std::snprintf(folder_, sizeof folder_, "%s", other_kind_folder_.c_str());
+    other_kind_folder_ = std::move(current);
+    std::swap(folder_typed_, other_kind_folder_typed_);
+  }
   what_ = what;
   suggest_paths();
 }
@@ -62,7 +70,7 @@ void ReviewExportPanel::set_folder(const std::filesystem::path& folder) {
 }
 
 void ReviewExportPanel::suggest_paths() {
-  if (!folder_typed_) {
+  if (!folder_typed_ || folder_[0] == '\0') {
     const char* stem = what_ == What::kBids ? "bids-dataset" : format_ == 0 ? "trials-c3d" : "trials-trc";
     std::snprintf(folder_, sizeof folder_, "%s", (sessions_dir() / "exports" / stem).string().c_str());
   }
@@ -130,17 +138,17 @@ void ReviewExportPanel::draw_what(const ReviewState& state) {
   }
   const What before = what_;
   ImGui::BeginDisabled(selected < 0);
-  if (ImGui::RadioButton(selected_label.c_str(), what_ == What::kSelected)) what_ = What::kSelected;
+  if (ImGui::RadioButton(selected_label.c_str(), what_ == What::kSelected)) choose(What::kSelected);
   ImGui::EndDisabled();
   anchors_.remember("export.what.selected");
   const size_t shown = state.visible_trials().size();
   const std::string shown_label = "The " + trials_word(static_cast<long long>(shown)) + " the table shows (its filter)";
-  if (ImGui::RadioButton(shown_label.c_str(), what_ == What::kShown)) what_ = What::kShown;
+  if (ImGui::RadioButton(shown_label.c_str(), what_ == What::kShown)) choose(What::kShown);
   anchors_.remember("export.what.shown");
   const size_t folders = state.folders().size();
   const std::string bids_label = "The opened folders as a BIDS-motion dataset (" + std::to_string(folders) +
                                  (folders == 1 ? " folder" : " folders") + ", every trial)";
-  if (ImGui::RadioButton(bids_label.c_str(), what_ == What::kBids)) what_ = What::kBids;
+  if (ImGui::RadioButton(bids_label.c_str(), what_ == What::kBids)) choose(What::kBids);
   anchors_.remember("export.what.bids");
   if (what_ != before) {
     suggest_paths();

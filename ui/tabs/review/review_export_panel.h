@@ -31,7 +31,8 @@ class ReviewExportPanel {
   bool is_open() const { return open_; }
   void choose(What what);
   void set_folder(const std::filesystem::path& folder);
-  void start();  // the Export button
+  std::filesystem::path folder() const { return folder_; }  // where Export writes, as the field shows it
+  void start();                                             // the Export button
   // Export, progress.cancel, result, open_folder, error and the choices, as last drawn.
   const WidgetAnchors& anchors() const { return anchors_; }
 
@@ -53,6 +54,8 @@ class ReviewExportPanel {
   bool replace_ = false;
   bool folder_typed_ = false, key_typed_ = false;  // chosen by the person: no longer suggested
   char folder_[1024] = {};
+  std::string other_kind_folder_;  // the folder of the other kind (BIDS or per-trial) while this one is chosen
+  bool other_kind_folder_typed_ = false;
   char key_[1024] = {};
   bool started_ = false;  // an export was started from this window (its outcome is shown)
   std::string open_error_;

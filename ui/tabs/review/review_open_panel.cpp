@@ -15,7 +15,7 @@ namespace {
 std::vector<std::filesystem::path> demo_session_dirs() {
   std::vector<std::filesystem::path> dirs;
   std::error_code ec;
-  for (const auto& e : std::filesystem::directory_iterator(sessions_dir() / "demo", ec)) {
+  for (const auto& e : std::filesystem::directory_iterator(demo_sessions_dir(), ec)) {
     if (std::filesystem::exists(e.path() / "session.json", ec)) dirs.push_back(e.path());
   }
   std::sort(dirs.begin(), dirs.end());
@@ -53,7 +53,7 @@ void ReviewOpenPanel::draw() {
     anchors_.remember("demo");
     if (ImGui::IsItemHovered()) {
       ImGui::SetTooltip("%zu simulated subject session(s) of the demo protocol (scripts/run recorded them) in\n%s",
-                        demo.size(), (sessions_dir() / "demo").string().c_str());
+                        demo.size(), demo_sessions_dir().string().c_str());
     }
   }
   if (const auto chosen = browser_.draw()) {

@@ -47,20 +47,21 @@ class ReviewTab final : public Tab {
   void update(bool /*shown*/) override {
     take_review_requests();
     state_->update();
+    context_.review_folders() = state_->folders();
     // Jobs end on their workers whenever they end: compare with the last frame, not within this one.
     const MotionExportJob& export_job = state_->motion_export();
     if (job_finished(export_job.state()) && export_job.runs() != reported_exports_) {
       reported_exports_ = export_job.runs();
       report_export();
     }
-    const bool processing = state_->batch_job().running();
-    const bool processing_ended = was_processing_ && !processing;
-    was_processing_ = processing;
-    if (processing_ended) {
-      if (const ReviewBatch* b = state_->batch()) {
-        status_.set_status("Review: " + std::to_string(b->trials.size()) + " trial(s) ready (" +
-                           std::to_string(b->from_cache) + " from the cache)");
-      }
+    // Each new batch is reported once, when it is taken: a batch can begin and end between two
+    // frames (a second folder from the cache), and its count must replace the first folder's.
+    const ReviewBatch* b = state_->batch();
+    if (b != nullptr && b != reported_batch_ && !state_->batch_job().running()) {
+      reported_batch_ = b;
+      status_.set_status("Review: " + std::to_string(b->trials.size()) + " trial(s) ready in " +
+                         std::to_string(state_->folders().size()) + " folder(s) (" + std::to_string(b->from_cache) +
+                         " from the cache)");
     }
   }
 
@@ -114,6 +115,8 @@ class ReviewTab final : public Tab {
     if (requests.empty()) return;
     state_->open_folders(requests);
     requests.clear();
+    // A folder that is not there is said where it is read first, not in a tooltip.
+    if (state_->problem().rfind("not opened: ", 0) == 0) status_.set_status("Review: " + state_->problem(), true);
   }
 
   int prepare_for_capture() override {
@@ -174,9 +177,9 @@ class ReviewTab final : public Tab {
   ReviewTrialViewPanel trial_view_;
   ReviewAgreementPanel agreement_;
   ReviewStudyTablesPanel study_tables_;
-  bool was_processing_ = false;  // as last updated: the end of processing is reported once
-  int reported_exports_ = 0;     // the export runs whose outcome the status bar has shown
-  int pending_view_ = -1;        // a capture's request: 0 the trial view, 1 agreement, 2 study tables
+  const ReviewBatch* reported_batch_ = nullptr;  // the batch whose count the status line gave
+  int reported_exports_ = 0;                     // the export runs whose outcome the status bar has shown
+  int pending_view_ = -1;                        // a capture's request: 0 the trial view, 1 agreement, 2 study tables
 };
 
 }  // namespace
