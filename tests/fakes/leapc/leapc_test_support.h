@@ -10,6 +10,7 @@
 
 #include "devices/device_hub.h"
 #include "devices/frame_consumer.h"
+#include "devices/leapc/leapc_source.h"
 
 namespace lmc::devices {
 
@@ -20,6 +21,15 @@ inline bool wait_for(const std::function<bool()>& done, int timeout_ms = 3000) {
     std::this_thread::sleep_for(std::chrono::milliseconds(2));
   }
   return true;
+}
+
+// The backend's options for tests: the service's answers are judged after 50 ms instead of
+// seconds (the double answers within a few polls), and a silent service is asked about after 100 ms.
+inline LeapcOptions test_options() {
+  LeapcOptions o;
+  o.warning_grace_ms = 50;
+  o.service_check_ms = 100;
+  return o;
 }
 
 // Slots LMC1…LMCn bound to the serials LP11111, LP22222, … (n ≤ 8).
