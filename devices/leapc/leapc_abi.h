@@ -214,7 +214,9 @@ struct DeviceInfo {  // LEAP_DEVICE_INFO
   float v_fov;
   std::uint32_t range;
 };
-struct ConnectionConfig {  // LEAP_CONNECTION_CONFIG
+// LEAP_CONNECTION_CONFIG as of 5.4; 5.12 appended a tracking origin, which LeapC leaves at its
+// default when `size` says the caller's struct ends before it.
+struct ConnectionConfig {
   std::uint32_t size;
   std::uint32_t flags;
   const char* server_namespace;
