@@ -1,9 +1,9 @@
 #include "devices/source_factory.h"
 
 #include "core/common/error.h"
+#include "devices/leapc/leapc_source.h"
 #include "devices/replay/replay_source.h"
 #include "devices/sim/sim_rig.h"
-#include "devices/leapc/leapc_source.h"
 
 namespace lmc::devices {
 

@@ -29,9 +29,9 @@ bool leapc_available();
 struct SourceSettings {
   Layout layout;
   SimConfig sim;
-  double speed = 1.0;       // sim / replay: 0 = as fast as possible
-  double duration_s = 0.0;  // sim: stop after this much simulated time (0 = forever)
-  std::uint32_t leapc_wait_ms = 1500;             // list_devices, leapc: how long to listen
+  double speed = 1.0;                                 // sim / replay: 0 = as fast as possible
+  double duration_s = 0.0;                            // sim: stop after this much simulated time (0 = forever)
+  std::uint32_t leapc_wait_ms = 1500;                 // list_devices, leapc: how long to listen
   std::vector<std::string>* leapc_notices = nullptr;  // list_devices, leapc: the backend's messages
 };
 std::unique_ptr<FrameSource> make_source(const SourceSpec& spec, const SourceSettings& settings);

@@ -49,8 +49,8 @@ struct LeapcPlaceTried {
 
 struct LeapcLibrary {
   LeapcApi api;
-  std::string path;  // as opened
-  std::string what;  // which of the places it is
+  std::string path;                       // as opened
+  std::string what;                       // which of the places it is
   std::optional<leapc::Version> version;  // the library's own (LeapGetVersion), when it has the call
   std::vector<LeapcPlaceTried> tried;     // every place tried before it, and it
 };

@@ -255,6 +255,8 @@ void LeapcSession::on_status_change(const leapc::DeviceStatusChangeEvent* ev, st
   if (ev == nullptr) return;
   const OpenDevice* d = find_subscribed(ev->device.id != 0 ? ev->device.id : device_id);
   if (d == nullptr) return;  // reported once the device streams, through its own events
+  // A device that starts streaming says so as it attaches: its Appeared event said it already.
+  if (ev->last_status == 0 && ev->status == leapc::kStatusStreaming) return;
   const bool failure = (ev->status & leapc::kStatusUnknownFailure) == leapc::kStatusUnknownFailure;
   emit(failure ? DeviceEventKind::kFailure : DeviceEventKind::kNotice, d->serial,
        "status " + leapc_status_text(ev->last_status) + " → " + leapc_status_text(ev->status));
@@ -276,8 +278,7 @@ void LeapcSession::on_policy(const leapc::PolicyEvent* ev, std::uint32_t device_
   check_warnings(*d, now_ns);
 }
 
-void LeapcSession::on_tracking_mode(const leapc::TrackingModeEvent* ev, std::uint32_t device_id,
-                                    std::int64_t now_ns) {
+void LeapcSession::on_tracking_mode(const leapc::TrackingModeEvent* ev, std::uint32_t device_id, std::int64_t now_ns) {
   OpenDevice* d = find_subscribed(device_id);
   if (ev == nullptr || d == nullptr) return;
   report_mode(*d, from_leap_mode(ev->current_tracking_mode), now_ns);

@@ -51,7 +51,7 @@ class LeapcSession {
     std::int64_t subscribed_ns = 0;
     TrackingMode wanted_mode = TrackingMode::kDesktop;
     TrackingMode mode = TrackingMode::kUnknown;  // as the service last reported it
-    std::optional<bool> background_granted;     // the service's latest answer
+    std::optional<bool> background_granted;      // the service's latest answer
     bool warned_background = false;
     bool warned_mode = false;
     std::int64_t drops_pending = 0;
@@ -107,8 +107,8 @@ class LeapcSession {
   FrameSink* sink_ = nullptr;
   std::atomic<bool> stop_{false};
   std::atomic<bool> silenced_{false};
-  std::map<std::uint32_t, OpenDevice> devices_;      // by LEAP_DEVICE_REF.id
-  std::map<std::uint32_t, PendingOpen> pending_;     // announced, not opened yet
+  std::map<std::uint32_t, OpenDevice> devices_;        // by LEAP_DEVICE_REF.id
+  std::map<std::uint32_t, PendingOpen> pending_;       // announced, not opened yet
   std::map<std::uint32_t, leapc::DeviceRef> refused_;  // refused for a duplicate serial, reconsidered when one goes
   // The service: whether it ever answered, when we began waiting, what was said.
   bool connected_ = false;

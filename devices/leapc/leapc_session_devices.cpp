@@ -206,8 +206,7 @@ void LeapcSession::check_warnings(OpenDevice& d, std::int64_t now_ns) {
          "the service refused the background-frames policy: it may stop streaming while another window has focus");
     d.warned_background = true;
   }
-  if (options_.request_tracking_mode && d.mode != TrackingMode::kUnknown && d.mode != d.wanted_mode &&
-      !d.warned_mode) {
+  if (options_.request_tracking_mode && d.mode != TrackingMode::kUnknown && d.mode != d.wanted_mode && !d.warned_mode) {
     d.warned_mode = true;
     if (sink_ == nullptr || silenced_) return;
     DeviceEvent e;

@@ -94,7 +94,7 @@ leapc::Hand make_hand(std::uint32_t type, float base);
 // LeapGetNow(): the host's steady clock in µs, running 50 ppm fast from the moment of reset(),
 // plus an offset (default 0), so a test can put the Leap clock far from the host clock, as it is.
 void set_clock_offset_us(std::int64_t offset);
-std::int64_t now_us();                               // what LeapGetNow() returns now, never slowed
+std::int64_t now_us();                                // what LeapGetNow() returns now, never slowed
 void slow_get_now(int calls, std::int64_t delay_us);  // the next `calls` LeapGetNow() take this long
 // LeapGetVersion's answers (client library and service); default 5.6.1, or LMC_FAKE_LEAPC_VERSION.
 void set_version(int major, int minor, int patch);

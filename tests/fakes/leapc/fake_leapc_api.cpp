@@ -153,7 +153,7 @@ void LeapDestroyConnection(Connection c) {
 Result LeapGetConnectionInfo(Connection c, ConnectionInfo* info) {
   if (c == nullptr || info == nullptr) return lmc::devices::leapc::kInvalidArgument;
   std::lock_guard lock(state().mutex);
-  info->status = state().silent                     ? lmc::devices::leapc::kConnectionNotRunning
+  info->status = state().silent                                ? lmc::devices::leapc::kConnectionNotRunning
                  : c->open && state().not_connected_polls == 0 ? lmc::devices::leapc::kConnectionConnected
                                                                : lmc::devices::leapc::kConnectionNotConnected;
   return lmc::devices::leapc::kSuccess;
@@ -261,8 +261,7 @@ void LeapCloseDevice(Device d) {
 }
 
 Result LeapGetDeviceInfo(Device d, DeviceInfo* info) {
-  if (d == nullptr || info == nullptr || info->size != sizeof(DeviceInfo))
-    return lmc::devices::leapc::kInvalidArgument;
+  if (d == nullptr || info == nullptr || info->size != sizeof(DeviceInfo)) return lmc::devices::leapc::kInvalidArgument;
   const auto needed = static_cast<std::uint32_t>(d->serial.size() + 1);
   info->status = lmc::devices::leapc::kStatusStreaming;
   {

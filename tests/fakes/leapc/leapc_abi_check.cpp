@@ -10,8 +10,9 @@
 
 namespace ours = lmc::devices::leapc;
 
-#define LMC_SAME_SIZE(our, theirs) static_assert(sizeof(ours::our) == sizeof(theirs), #our " size differs from " #theirs)
-#define LMC_SAME_OFFSET(our, theirs, our_field, their_field)                   \
+#define LMC_SAME_SIZE(our, theirs) \
+  static_assert(sizeof(ours::our) == sizeof(theirs), #our " size differs from " #theirs)
+#define LMC_SAME_OFFSET(our, theirs, our_field, their_field)                     \
   static_assert(offsetof(ours::our, our_field) == offsetof(theirs, their_field), \
                 #our "::" #our_field " is not where " #theirs "::" #their_field " is")
 #define LMC_SAME_VALUE(our, theirs) \
