@@ -54,9 +54,8 @@ bool connected(DeviceHub& hub, const std::string& slot) {
 // ends the poll, and never waits on it unbounded.
 TEST_F(LeapcFinding, StopClosesTheConnectionBeforeJoiningSoABlockedPollCannotHangIt) {
   fake_leapc::block_polls(true, 1500);
-  DeviceHub hub(layout_with_serials());
-  hub.add_source(std::make_unique<LeapcSource>(test_options()));
-  hub.start();
+  LeapcRig rig;
+  DeviceHub& hub = rig.hub;
   std::this_thread::sleep_for(std::chrono::milliseconds(30));  // the poll thread is inside the blocked poll
   const auto t0 = std::chrono::steady_clock::now();
   hub.stop();
@@ -68,11 +67,9 @@ TEST_F(LeapcFinding, StopClosesTheConnectionBeforeJoiningSoABlockedPollCannotHan
 // 2a. A re-plugged controller whose new Device event comes before the old DeviceLost is refused
 // as a duplicate serial at first, and taken as soon as the holder goes.
 TEST_F(LeapcFinding, ADuplicateRefusedIsTakenWhenTheDeviceHoldingItsSerialGoes) {
-  DeviceHub hub(layout_with_serials());
-  Recorded rec;
-  hub.set_consumer(&rec);
-  hub.add_source(std::make_unique<LeapcSource>(test_options()));
-  hub.start();
+  LeapcRig rig;
+  DeviceHub& hub = rig.hub;
+  Recorded& rec = rig.rec;
   fake_leapc::plug(1, "LP22222");
   ASSERT_TRUE(wait_for([&] { return connected(hub, "LMC2"); }));
   fake_leapc::plug(2, "LP22222");  // the same controller, re-plugged, announced before it is lost
@@ -89,9 +86,8 @@ TEST_F(LeapcFinding, ADuplicateRefusedIsTakenWhenTheDeviceHoldingItsSerialGoes) 
 // 2b. A service that restarts without a ConnectionLost sends a Connection event while devices are
 // open: their handles are stale, so they are closed and the devices it announces again are taken.
 TEST_F(LeapcFinding, AConnectionEventWithDevicesOpenResetsThem) {
-  DeviceHub hub(layout_with_serials());
-  hub.add_source(std::make_unique<LeapcSource>(test_options()));
-  hub.start();
+  LeapcRig rig;
+  DeviceHub& hub = rig.hub;
   fake_leapc::plug(1, "LP11111");
   ASSERT_TRUE(wait_for([&] { return connected(hub, "LMC1"); }));
   fake_leapc::connection_event(0);
@@ -105,9 +101,8 @@ TEST_F(LeapcFinding, AConnectionEventWithDevicesOpenResetsThem) {
 // 2c. A Device event for an id already open: the service re-enumerated it; the stale handle is
 // closed and the device opened again.
 TEST_F(LeapcFinding, ARepeatedDeviceEventForAnOpenIdReopensIt) {
-  DeviceHub hub(layout_with_serials());
-  hub.add_source(std::make_unique<LeapcSource>(test_options()));
-  hub.start();
+  LeapcRig rig;
+  DeviceHub& hub = rig.hub;
   fake_leapc::plug(1, "LP11111");
   ASSERT_TRUE(wait_for([&] { return fake_leapc::stats().subscribed == 1; }));
   fake_leapc::announce(1);
@@ -122,9 +117,8 @@ TEST_F(LeapcFinding, ARepeatedDeviceEventForAnOpenIdReopensIt) {
 TEST_F(LeapcFinding, AFailedSerialReadIsRetriedAndNeverGivesAPlaceholderSlot) {
   LeapcOptions o = test_options();
   o.retry_interval_ms = 5;
-  DeviceHub hub(layout_with_serials());
-  hub.add_source(std::make_unique<LeapcSource>(o));
-  hub.start();
+  LeapcRig rig(o);
+  DeviceHub& hub = rig.hub;
   fake_leapc::fail_serial(3, 2);
   fake_leapc::plug(3, "LP33333");
   ASSERT_TRUE(wait_for([&] { return connected(hub, "LMC3"); }));
@@ -142,11 +136,9 @@ TEST_F(LeapcFinding, NoMessageIsReadAfterHousekeepingClosesADevice) {
   LeapcOptions o = test_options();
   o.retry_interval_ms = 1;
   o.max_attempts = 3;
-  DeviceHub hub(layout_with_serials());
-  Recorded rec;
-  hub.set_consumer(&rec);
-  hub.add_source(std::make_unique<LeapcSource>(o));
-  hub.start();
+  LeapcRig rig(o);
+  DeviceHub& hub = rig.hub;
+  Recorded& rec = rig.rec;
   fake_leapc::plug(2, "LP22222");
   ASSERT_TRUE(wait_for([&] { return connected(hub, "LMC2"); }));
   // Device 1 opens but can never be subscribed: a retry gives up and closes it while device 2's
@@ -167,9 +159,8 @@ TEST_F(LeapcFinding, NoMessageIsReadAfterHousekeepingClosesADevice) {
 TEST_F(LeapcFinding, NoFalseRefusalOrWrongModeWarningAtStart) {
   LeapcOptions o = test_options();
   o.warning_grace_ms = 300;
-  DeviceHub hub(layout_with_serials());
-  hub.add_source(std::make_unique<LeapcSource>(o));
-  hub.start();
+  LeapcRig rig(o);
+  DeviceHub& hub = rig.hub;
   fake_leapc::plug(1, "LP11111", fake_leapc::kPidPeripheral, leapc::kModeHmd);  // left head-mounted
   ASSERT_TRUE(wait_for([&] { return fake_leapc::stats().subscribed == 1; }));
   std::this_thread::sleep_for(std::chrono::milliseconds(450));
@@ -183,11 +174,9 @@ TEST_F(LeapcFinding, NoFalseRefusalOrWrongModeWarningAtStart) {
 
 // 6. A frame the service drops is a DroppedFrame event and a gap in the image frame ids: one drop.
 TEST_F(LeapcFinding, AFrameTheServiceDropsCountsOnce) {
-  DeviceHub hub(layout_with_serials());
-  Recorded rec;
-  hub.set_consumer(&rec);
-  hub.add_source(std::make_unique<LeapcSource>(test_options()));
-  hub.start();
+  LeapcRig rig;
+  DeviceHub& hub = rig.hub;
+  Recorded& rec = rig.rec;
   fake_leapc::plug(1, "LP11111");
   ASSERT_TRUE(wait_for([&] { return fake_leapc::stats().subscribed == 1; }));
   fake_leapc::track(1, 10, 1000, 30.0F, {fake_leapc::make_hand(leapc::kHandRight, 1)});
@@ -202,18 +191,16 @@ TEST_F(LeapcFinding, AFrameTheServiceDropsCountsOnce) {
 // 7. A service that is not running may leave every poll to time out: it is named all the same.
 TEST_F(LeapcFinding, AServiceThatOnlyTimesOutIsNamedWithinSeconds) {
   fake_leapc::silent_service(true);
-  DeviceHub hub(layout_with_serials());
-  hub.add_source(std::make_unique<LeapcSource>(test_options()));
-  hub.start();
+  LeapcRig rig;
+  DeviceHub& hub = rig.hub;
   EXPECT_TRUE(wait_message(hub, {"waiting for the Ultraleap service", "not running"}, 2000));
   hub.stop();
 }
 
 // 8a. The service's log events reach the Devices tab's log (the hub's messages, and the sidecar).
 TEST_F(LeapcFinding, TheServicesLogEventsAreShown) {
-  DeviceHub hub(layout_with_serials());
-  hub.add_source(std::make_unique<LeapcSource>(test_options()));
-  hub.start();
+  LeapcRig rig;
+  DeviceHub& hub = rig.hub;
   fake_leapc::log_event(leapc::kLogWarning, "camera 1 is running hot");
   EXPECT_TRUE(wait_message(hub, {"Ultraleap service (warning): camera 1 is running hot"}));
   hub.stop();
@@ -223,9 +210,8 @@ TEST_F(LeapcFinding, TheServicesLogEventsAreShown) {
 TEST_F(LeapcFinding, ADeviceHasNoRowBeforeItIsSubscribed) {
   LeapcOptions o = test_options();
   o.retry_interval_ms = 200;
-  DeviceHub hub(layout_with_serials());
-  hub.add_source(std::make_unique<LeapcSource>(o));
-  hub.start();
+  LeapcRig rig(o);
+  DeviceHub& hub = rig.hub;
   fake_leapc::fail_subscribe(1, 1);
   fake_leapc::plug(1, "LP11111");
   ASSERT_TRUE(wait_for([&] { return fake_leapc::stats().subscribe_attempts == 1; }));

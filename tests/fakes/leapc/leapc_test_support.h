@@ -3,9 +3,11 @@
 // consumer that keeps every frame and event the hub hands on.
 #include <chrono>
 #include <functional>
+#include <memory>
 #include <mutex>
 #include <string>
 #include <thread>
+#include <utility>
 #include <vector>
 
 #include "devices/device_hub.h"
@@ -67,6 +69,17 @@ struct Recorded : FrameConsumer {
     std::lock_guard lock(m);
     return frames.size();
   }
+};
+
+// A hub on the four-serial layout with one LeapC source, its frames and events kept, started.
+struct LeapcRig {
+  explicit LeapcRig(LeapcOptions options = test_options()) : hub(layout_with_serials()) {
+    hub.set_consumer(&rec);
+    hub.add_source(std::make_unique<LeapcSource>(std::move(options)));
+    hub.start();
+  }
+  Recorded rec;  // before the hub: the hub hands it frames until it stops
+  DeviceHub hub;
 };
 
 }  // namespace lmc::devices
