@@ -1,11 +1,9 @@
 #include "devices/source_factory.h"
 
 #include "core/common/error.h"
+#include "devices/leapc/leapc_source.h"
 #include "devices/replay/replay_source.h"
 #include "devices/sim/sim_rig.h"
-#if LMC_HAVE_LEAPC
-#include "devices/leapc/leapc_source.h"
-#endif
 
 namespace lmc::devices {
 
@@ -20,20 +18,8 @@ SourceSpec parse_source_spec(const std::string& text) {
 }
 
 bool leapc_available() {
-#if LMC_HAVE_LEAPC
-  return true;
-#else
-  return false;
-#endif
+  return true;  // always built: the library is looked for when the backend starts
 }
-
-namespace {
-[[noreturn]] void no_leapc() {
-  throw Error(
-      "this build has no LeapC backend: the Ultraleap SDK was not found at configure time "
-      "(install it as devices/leapc/README.md describes, then re-run CMake); use --backend sim meanwhile");
-}
-}  // namespace
 
 std::unique_ptr<FrameSource> make_source(const SourceSpec& spec, const SourceSettings& s) {
   if (spec.backend == "sim")
@@ -44,13 +30,9 @@ std::unique_ptr<FrameSource> make_source(const SourceSpec& spec, const SourceSet
     return std::make_unique<ReplaySource>(spec.replay_path, o);
   }
   if (spec.backend == "leapc") {
-#if LMC_HAVE_LEAPC
     LeapcOptions options;
     options.layout = s.layout;  // each controller's tracking mode follows its slot's pose
     return std::make_unique<LeapcSource>(options);
-#else
-    no_leapc();
-#endif
   }
   throw Error("unknown backend '" + spec.backend + "'");
 }
@@ -58,11 +40,7 @@ std::unique_ptr<FrameSource> make_source(const SourceSpec& spec, const SourceSet
 std::vector<DeviceInfo> list_devices(const SourceSpec& spec, const SourceSettings& s) {
   if (spec.backend == "sim") return SimRig(s.layout, s.sim).devices();
   if (spec.backend == "replay") return ReplaySource(spec.replay_path).devices();
-#if LMC_HAVE_LEAPC
-  if (spec.backend == "leapc") return leapc_list_devices();
-#else
-  if (spec.backend == "leapc") no_leapc();
-#endif
+  if (spec.backend == "leapc") return leapc_list_devices(s.leapc_wait_ms, s.leapc_notices);
   throw Error("unknown backend '" + spec.backend + "'");
 }
 

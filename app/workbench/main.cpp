@@ -6,6 +6,7 @@
 #include <utility>
 
 #include "core/visibility/visibility_kernel.h"
+#include "devices/leapc/leapc_library.h"
 #include "ui/app/capture.h"
 #include "ui/app/workbench_shell.h"
 #include "ui/platform/gl_window.h"
@@ -41,9 +42,13 @@ int main(int argc, char** argv) {
       "--review", review,
       "Open these folders (subject sessions, folders of trials) in the Review tab at start-up; with --capture, "
       "its picture shows them");
+  std::string leapc_library;
+  app.add_option("--leapc-library", leapc_library,
+                 "The LeapC library to load (else LMC_LEAPC_LIBRARY, else where Ultraleap installs it)");
   app.add_option("--size", width, "Window width in pixels")->check(CLI::Range(640, 7680));
   app.add_option("--height", height, "Window height in pixels")->check(CLI::Range(480, 4320));
   CLI11_PARSE(app, argc, argv);
+  if (!leapc_library.empty()) lmc::devices::set_leapc_library_path(leapc_library);
   // An unknown LMC_KERNEL leaves the fastest kernel build running; say so rather than ignore it.
   if (const std::string problem = lmc::kernel_setting_problem(); !problem.empty()) {
     std::cerr << "lmc-workbench: " << problem << "\n";

@@ -13,12 +13,14 @@
 // reported; a re-plug is re-keyed by serial, and a lost service connection is waited out (LeapC
 // reconnects by itself while polling). Everything is copied out of a message before the next poll.
 //
-// This header does not include LeapC.h, so the rest of the code base builds without the SDK.
-// The .cpp compiles against the real SDK (when CMake finds it) or the test double under
-// tests/fakes/leapc.
+// LeapC is loaded at run time (leapc_library.h): start() finds the library, or throws with every
+// place tried; the library and the service's versions are the first device message. The poll
+// loop handles a message completely before anything that may close a device, and stop() closes
+// the connection before it joins, so a poll that blocks past its timeout cannot hang it.
 #include <atomic>
 #include <cstdint>
 #include <memory>
+#include <mutex>
 #include <optional>
 #include <string>
 #include <thread>
@@ -42,6 +44,16 @@ struct LeapcOptions {
   // A device that cannot be opened or subscribed to is tried again this often, this many times.
   std::uint32_t retry_interval_ms = 500;
   int max_attempts = 10;
+  // The service answers a new device's policy and mode requests late, and sends the policies it
+  // had before: a refusal or another mode is reported only if it still holds this long after the
+  // device was subscribed.
+  std::uint32_t warning_grace_ms = 3000;
+  // A service that neither connects nor refuses (every poll times out) is asked for its state
+  // (LeapGetConnectionInfo) after this long, and named when it is not running.
+  std::uint32_t service_check_ms = 2000;
+  // stop() waits this long for the poll thread after closing the connection; a thread still stuck
+  // in LeapC after that is left to finish on its own (it touches nothing of the caller's).
+  std::uint32_t stop_timeout_ms = 2000;
 };
 
 class LeapcSource final : public FrameSource {
@@ -53,21 +65,25 @@ class LeapcSource final : public FrameSource {
   // Throws lmc::Error when the connection cannot be created.
   void start(FrameSink& sink) override;
   void stop() override;
-  // LeapGetNow(), the clock of every frame timestamp, moved to `host_ns`.
+  // LeapGetNow(), the clock of every frame timestamp, moved to `host_ns`: the best of several
+  // host/Leap/host brackets (the narrowest), so a thread switch between two reads costs nothing.
   std::optional<std::int64_t> device_clock_us(std::int64_t host_ns) const override;
+  // The half-width of the bracket behind the latest device_clock_us, µs (-1 before any).
+  std::int64_t device_clock_uncertainty_us() const { return clock_uncertainty_us_; }
 
  private:
   struct Impl;
-  void run(FrameSink& sink);
+  std::shared_ptr<Impl> current_impl() const;
   LeapcOptions options_;
-  std::unique_ptr<Impl> impl_;
-  std::atomic<bool> stop_{false};
-  std::atomic<bool> running_{false};
+  mutable std::mutex impl_mutex_;
+  std::shared_ptr<Impl> impl_;  // the running connection (null when stopped)
   std::thread thread_;
+  mutable std::atomic<std::int64_t> clock_uncertainty_us_{-1};
 };
 
-// Lists the controllers the service reports within `wait_ms` (for `lmc devices`).
-std::vector<DeviceInfo> leapc_list_devices(std::uint32_t wait_ms = 1500);
+// Lists the controllers the service reports within `wait_ms` (for `lmc devices`). `notices`, when
+// given, receives the backend's messages (the library loaded, the service's version, …).
+std::vector<DeviceInfo> leapc_list_devices(std::uint32_t wait_ms = 1500, std::vector<std::string>* notices = nullptr);
 
 // Text for a LeapC result code / device status ("eLeapRS_Timeout", "BadTransport (USB link)").
 std::string leapc_result_name(std::uint32_t rs);

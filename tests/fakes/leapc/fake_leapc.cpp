@@ -1,78 +1,79 @@
-// The LeapC test double's behaviour (see fake_leapc.h). Written from the public API reference.
-#include "fake_leapc.h"
-
-#include <atomic>
-#include <chrono>
-#include <condition_variable>
+// The LeapC test double's scripting side (fake_leapc.h). Written from the public API reference.
+#include <cstdio>
+#include <cstdlib>
 #include <cstring>
-#include <deque>
-#include <map>
-#include <memory>
-#include <mutex>
-#include <set>
-#include <thread>
+#include <sstream>
 
-struct _LEAP_CONNECTION {
-  bool open = false;
-};
-struct _LEAP_DEVICE {
-  std::uint32_t id = 0;
-  std::string serial;
-};
+#include "fake_leapc_state.h"
 
 namespace fake_leapc {
 namespace {
 
-struct Queued {
-  eLeapEventType type = eLeapEventType_None;
-  std::uint32_t device_id = 0;  // message device_id (0 = system-wide)
-  LEAP_DEVICE_EVENT device{};
-  LEAP_DEVICE_FAILURE_EVENT failure{};
-  LEAP_DEVICE_STATUS_CHANGE_EVENT status{};
-  LEAP_DROPPED_FRAME_EVENT dropped{};
-  LEAP_CONNECTION_EVENT connection{};
-  LEAP_CONNECTION_LOST_EVENT lost{};
-  LEAP_POLICY_EVENT policy{};
-  LEAP_TRACKING_MODE_EVENT mode{};
-  LEAP_TRACKING_EVENT tracking{};
-  std::vector<LEAP_HAND> hands;
-};
+leapc::Vector vec(float x, float y, float z) {
+  return {x, y, z};
+}
 
-struct Failing {
-  int times = 0;
-  eLeapRS rs = eLeapRS_Success;
-};
+std::unique_ptr<Queued> message(std::uint32_t type, std::uint32_t device_id = 0) {
+  auto q = std::make_unique<Queued>();
+  q->type = type;
+  q->device_id = device_id;
+  return q;
+}
 
-struct PluggedDevice {
-  std::string serial;
-  eLeapDevicePID pid = eLeapDevicePID_Peripheral;
-  eLeapTrackingMode mode = eLeapTrackingMode_Desktop;
-};
+// "6.1.0" → {6, 1, 0}; the default when unset or unreadable.
+leapc::Version version_from_env() {
+  leapc::Version v{5, 6, 1};
+  if (const char* text = std::getenv("LMC_FAKE_LEAPC_VERSION"); text != nullptr)
+    if (std::sscanf(text, "%d.%d.%d", &v.major, &v.minor, &v.patch) != 3) v = {5, 6, 1};
+  return v;
+}
 
-struct State {
-  std::mutex mutex;
-  std::condition_variable cv;
-  std::deque<std::unique_ptr<Queued>> queue;
-  std::unique_ptr<Queued> current;  // the message the client holds until its next poll
-  std::map<std::uint32_t, PluggedDevice> plugged;
-  std::set<std::uint32_t> subscribed;
-  std::map<std::uint32_t, LEAP_DEVICE> opened;           // the client's open handles by device id
-  std::map<std::uint32_t, std::uint64_t> device_policy;  // LeapSetPolicyFlagsEx, by device id
-  std::map<std::uint32_t, eLeapRS> policy_ex_result;     // injected failures
-  std::map<std::uint32_t, std::uint64_t> refused_policy;
-  std::map<std::uint32_t, eLeapTrackingMode> held_mode;
-  std::map<std::uint32_t, int> requested_mode;
-  std::map<std::uint32_t, Failing> failing_open, failing_subscribe;
-  std::map<std::uint32_t, std::int64_t> tracking_frame_id;
-  int not_connected_polls = 0;
-  std::int64_t clock_offset_us = 0;
-  Stats stats;
-  std::atomic<int> polling{0};
-};
+}  // namespace
 
 State& state() {
   static State s;
+  static const bool initialised = [] {
+    std::lock_guard lock(s.mutex);
+    reset_locked(s);
+    return true;
+  }();
+  (void)initialised;
   return s;
+}
+
+std::int64_t steady_us() {
+  return std::chrono::duration_cast<std::chrono::microseconds>(std::chrono::steady_clock::now().time_since_epoch())
+      .count();
+}
+
+const void* Queued::payload() {
+  switch (type) {
+    case leapc::event::kDevice:
+    case leapc::event::kDeviceLost:
+      return &device;
+    case leapc::event::kDeviceFailure:
+      return &failure;
+    case leapc::event::kDeviceStatusChange:
+      return &status;
+    case leapc::event::kDroppedFrame:
+      return &dropped;
+    case leapc::event::kConnection:
+    case leapc::event::kConnectionLost:
+      return &connection;
+    case leapc::event::kPolicy:
+      return &policy;
+    case leapc::event::kTrackingMode:
+      return &mode;
+    case leapc::event::kLogEvent:
+      log.message = log_text.c_str();
+      return &log;
+    case leapc::event::kTracking:
+      tracking.nHands = static_cast<std::uint32_t>(hands.size());
+      tracking.pHands = hands.empty() ? nullptr : hands.data();
+      return &tracking;
+    default:
+      return nullptr;
+  }
 }
 
 void push_locked(std::unique_ptr<Queued> q) {
@@ -88,77 +89,99 @@ void push(std::unique_ptr<Queued> q) {
   s.cv.notify_all();
 }
 
-void push_mode_locked(std::uint32_t id, eLeapTrackingMode mode) {
-  auto q = std::make_unique<Queued>();
-  q->type = eLeapEventType_TrackingMode;
-  q->device_id = id;
+void push_mode_locked(std::uint32_t id, std::uint32_t mode) {
+  auto q = message(leapc::event::kTrackingMode, id);
   q->mode.current_tracking_mode = mode;
   push_locked(std::move(q));
 }
 
-// One injected failure used up, or eLeapRS_Success.
-eLeapRS take_failure(std::map<std::uint32_t, Failing>& failing, std::uint32_t id) {
+void push_policy_locked(std::uint32_t id, std::uint64_t flags) {
+  auto q = message(leapc::event::kPolicy, id);
+  q->policy.current_policy = static_cast<std::uint32_t>(flags);
+  push_locked(std::move(q));
+}
+
+void announce_locked(std::uint32_t id) {
+  auto q = message(leapc::event::kDevice);
+  q->device.device.id = id;
+  q->device.device.handle = reinterpret_cast<void*>(static_cast<std::uintptr_t>(id) * 16);
+  q->device.status = leapc::kStatusStreaming;
+  push_locked(std::move(q));
+  auto st = message(leapc::event::kDeviceStatusChange, id);
+  st->status.device.id = id;
+  st->status.last_status = 0;
+  st->status.status = leapc::kStatusStreaming;
+  push_locked(std::move(st));
+  // The service says the device's policies as it connects: none that this client asked for yet.
+  push_policy_locked(id, state().plugged[id].policy);
+}
+
+leapc::Result take_failure(std::map<std::uint32_t, Failing>& failing, std::uint32_t id) {
   auto it = failing.find(id);
-  if (it == failing.end() || it->second.times <= 0) return eLeapRS_Success;
+  if (it == failing.end() || it->second.times <= 0) return leapc::kSuccess;
   --it->second.times;
   return it->second.rs;
 }
 
-LEAP_VECTOR vec(float x, float y, float z) {
-  LEAP_VECTOR v;
-  v.x = x;
-  v.y = y;
-  v.z = z;
-  return v;
-}
-
-}  // namespace
-
-void reset() {
-  State& s = state();
-  std::lock_guard lock(s.mutex);
+void reset_locked(State& s) {
   s.queue.clear();
   s.current.reset();
   s.plugged.clear();
   s.subscribed.clear();
   s.opened.clear();
-  s.device_policy.clear();
   s.policy_ex_result.clear();
   s.refused_policy.clear();
   s.held_mode.clear();
   s.requested_mode.clear();
   s.failing_open.clear();
   s.failing_subscribe.clear();
+  s.failing_serial.clear();
   s.tracking_frame_id.clear();
+  s.mode_changes.clear();
+  s.mode_delay_polls = 3;
   s.not_connected_polls = 0;
+  s.silent = false;
+  s.block = false;
+  s.overrun_every = 7;
+  s.overrun_ms = 3;
+  s.polls = 0;
   s.clock_offset_us = 0;
+  s.clock_epoch_us = steady_us();
+  s.slow_calls = 0;
+  s.version = version_from_env();
   s.stats = {};
 }
 
-void plug(std::uint32_t id, const std::string& serial, eLeapDevicePID pid, eLeapTrackingMode mode) {
+void reset() {
+  State& s = state();
+  std::lock_guard lock(s.mutex);
+  reset_locked(s);
+}
+
+void plug(std::uint32_t id, const std::string& serial, std::uint32_t pid, std::uint32_t mode) {
   {
     std::lock_guard lock(state().mutex);
-    state().plugged[id] = {serial, pid, mode};
+    state().plugged[id] = {serial, pid, mode, 0};
+    announce_locked(id);
   }
-  auto q = std::make_unique<Queued>();
-  q->type = eLeapEventType_Device;
+  state().cv.notify_all();
+}
+
+void announce(std::uint32_t id) {
+  auto q = message(leapc::event::kDevice);
   q->device.device.id = id;
-  q->device.device.handle = reinterpret_cast<void*>(static_cast<std::uintptr_t>(id) * 16);
-  q->device.status = eLeapDeviceStatus_Streaming;
+  q->device.status = leapc::kStatusStreaming;
   push(std::move(q));
 }
 
 void unplug(std::uint32_t id) {
-  auto q = std::make_unique<Queued>();
-  q->type = eLeapEventType_DeviceLost;
+  auto q = message(leapc::event::kDeviceLost);
   q->device.device.id = id;
   push(std::move(q));
 }
 
-void device_failure(std::uint32_t id, eLeapDeviceStatus status, bool with_handle, bool with_message_device_id) {
-  auto q = std::make_unique<Queued>();
-  q->type = eLeapEventType_DeviceFailure;
-  q->device_id = with_message_device_id ? id : 0;
+void device_failure(std::uint32_t id, std::uint32_t status, bool with_handle, bool with_message_device_id) {
+  auto q = message(leapc::event::kDeviceFailure, with_message_device_id ? id : 0);
   q->failure.status = status;
   q->failure.hDevice = nullptr;  // "may be NULL" per the reference
   if (with_handle) {
@@ -169,9 +192,9 @@ void device_failure(std::uint32_t id, eLeapDeviceStatus status, bool with_handle
   push(std::move(q));
 }
 
-void fail_policy_ex(std::uint32_t id, eLeapRS rs) {
+void fail_policy_ex(std::uint32_t id, leapc::Result rs) {
   std::lock_guard lock(state().mutex);
-  if (rs == eLeapRS_Success)
+  if (rs == leapc::kSuccess)
     state().policy_ex_result.erase(id);
   else
     state().policy_ex_result[id] = rs;
@@ -184,16 +207,16 @@ void refuse_policy(std::uint32_t id, std::uint64_t flags) {
 
 std::uint64_t device_policy(std::uint32_t id) {
   std::lock_guard lock(state().mutex);
-  auto it = state().device_policy.find(id);
-  return it == state().device_policy.end() ? 0 : it->second;
+  auto it = state().plugged.find(id);
+  return it == state().plugged.end() ? 0 : it->second.policy;
 }
 
-void hold_tracking_mode(std::uint32_t id, eLeapTrackingMode mode) {
+void hold_tracking_mode(std::uint32_t id, std::uint32_t mode) {
   std::lock_guard lock(state().mutex);
   state().held_mode[id] = mode;
 }
 
-void change_tracking_mode(std::uint32_t id, eLeapTrackingMode mode) {
+void change_tracking_mode(std::uint32_t id, std::uint32_t mode) {
   {
     std::lock_guard lock(state().mutex);
     state().plugged[id].mode = mode;
@@ -208,14 +231,24 @@ int requested_tracking_mode(std::uint32_t id) {
   return it == state().requested_mode.end() ? -1 : it->second;
 }
 
-void fail_open(std::uint32_t id, int times, eLeapRS rs) {
+void set_mode_delay_polls(int polls) {
+  std::lock_guard lock(state().mutex);
+  state().mode_delay_polls = polls;
+}
+
+void fail_open(std::uint32_t id, int times, leapc::Result rs) {
   std::lock_guard lock(state().mutex);
   state().failing_open[id] = {times, rs};
 }
 
-void fail_subscribe(std::uint32_t id, int times, eLeapRS rs) {
+void fail_subscribe(std::uint32_t id, int times, leapc::Result rs) {
   std::lock_guard lock(state().mutex);
   state().failing_subscribe[id] = {times, rs};
+}
+
+void fail_serial(std::uint32_t id, int times, leapc::Result rs) {
+  std::lock_guard lock(state().mutex);
+  state().failing_serial[id] = {times, rs};
 }
 
 void not_connected_polls(int polls) {
@@ -223,10 +256,29 @@ void not_connected_polls(int polls) {
   state().not_connected_polls = polls;
 }
 
+void silent_service(bool silent) {
+  std::lock_guard lock(state().mutex);
+  state().silent = silent;
+  if (silent) state().queue.clear();
+}
+
+void block_polls(bool block, int max_ms) {
+  {
+    std::lock_guard lock(state().mutex);
+    state().block = block;
+    state().block_max_ms = max_ms;
+  }
+  state().cv.notify_all();
+}
+
+void set_poll_overrun(int every, int extra_ms) {
+  std::lock_guard lock(state().mutex);
+  state().overrun_every = every;
+  state().overrun_ms = extra_ms;
+}
+
 void status_change(std::uint32_t id, std::uint32_t last_status, std::uint32_t status) {
-  auto q = std::make_unique<Queued>();
-  q->type = eLeapEventType_DeviceStatusChange;
-  q->device_id = id;
+  auto q = message(leapc::event::kDeviceStatusChange, id);
   q->status.device.id = id;
   q->status.last_status = last_status;
   q->status.status = status;
@@ -234,32 +286,61 @@ void status_change(std::uint32_t id, std::uint32_t last_status, std::uint32_t st
 }
 
 void dropped_frame(std::uint32_t id, std::int64_t frame_id) {
-  auto q = std::make_unique<Queued>();
-  q->type = eLeapEventType_DroppedFrame;
-  q->device_id = id;
+  auto q = message(leapc::event::kDroppedFrame, id);
   q->dropped.frame_id = frame_id;
-  q->dropped.type = eLeapDroppedFrameType_TrackingQueue;
+  q->dropped.type = 1;  // tracking queue
+  push(std::move(q));
+}
+
+void log_event(std::uint32_t severity, const std::string& text) {
+  auto q = message(leapc::event::kLogEvent);
+  q->log.severity = severity;
+  q->log_text = text;
   push(std::move(q));
 }
 
 void connection_lost() {
-  auto q = std::make_unique<Queued>();
-  q->type = eLeapEventType_ConnectionLost;
-  push(std::move(q));
+  {
+    std::lock_guard lock(state().mutex);
+    for (const auto& [id, d] : state().plugged) {
+      auto q = message(leapc::event::kDeviceLost);
+      q->device.device.id = id;
+      push_locked(std::move(q));
+    }
+    push_locked(message(leapc::event::kConnectionLost));
+  }
+  state().cv.notify_all();
+}
+
+std::vector<std::uint32_t> reconnect(std::uint32_t id_offset) {
+  std::vector<std::uint32_t> ids;
+  {
+    std::lock_guard lock(state().mutex);
+    State& s = state();
+    push_locked(message(leapc::event::kConnection));
+    std::map<std::uint32_t, PluggedDevice> renamed;
+    for (auto& [id, d] : s.plugged) {
+      renamed[id + id_offset] = d;
+      renamed[id + id_offset].policy = 0;
+      ids.push_back(id + id_offset);
+    }
+    s.plugged = renamed;
+    s.subscribed.clear();
+    for (const std::uint32_t id : ids) announce_locked(id);
+  }
+  state().cv.notify_all();
+  return ids;
 }
 
 void connection_event(std::uint32_t flags) {
-  auto q = std::make_unique<Queued>();
-  q->type = eLeapEventType_Connection;
+  auto q = message(leapc::event::kConnection);
   q->connection.flags = flags;
   push(std::move(q));
 }
 
 void track(std::uint32_t id, std::int64_t frame_id, std::int64_t timestamp_us, float framerate,
-           const std::vector<LEAP_HAND>& hands) {
-  auto q = std::make_unique<Queued>();
-  q->type = eLeapEventType_Tracking;
-  q->device_id = id;
+           const std::vector<leapc::Hand>& hands) {
+  auto q = message(leapc::event::kTracking, id);
   q->hands = hands;
   q->tracking.info.frame_id = frame_id;
   q->tracking.info.timestamp = timestamp_us;
@@ -272,8 +353,8 @@ void track(std::uint32_t id, std::int64_t frame_id, std::int64_t timestamp_us, f
   state().cv.notify_all();
 }
 
-LEAP_HAND make_hand(eLeapHandType type, float base) {
-  LEAP_HAND h;
+leapc::Hand make_hand(std::uint32_t type, float base) {
+  leapc::Hand h;
   std::memset(&h, 0, sizeof h);
   h.id = 1;
   h.type = type;
@@ -299,7 +380,21 @@ void set_clock_offset_us(std::int64_t offset) {
 }
 
 std::int64_t now_us() {
-  return LeapGetNow();
+  std::lock_guard lock(state().mutex);
+  const State& s = state();
+  const std::int64_t elapsed = steady_us() - s.clock_epoch_us;
+  return s.clock_epoch_us + elapsed + elapsed / 20'000 + s.clock_offset_us;  // 50 ppm fast
+}
+
+void slow_get_now(int calls, std::int64_t delay_us) {
+  std::lock_guard lock(state().mutex);
+  state().slow_calls = calls;
+  state().slow_delay_us = delay_us;
+}
+
+void set_version(int major, int minor, int patch) {
+  std::lock_guard lock(state().mutex);
+  state().version = {major, minor, patch};
 }
 
 Stats stats() {
@@ -307,258 +402,8 @@ Stats stats() {
   std::lock_guard lock(s.mutex);
   Stats out = s.stats;
   out.pending = static_cast<int>(s.queue.size());
+  out.open_handles = static_cast<int>(s.opened.size());
   return out;
 }
 
 }  // namespace fake_leapc
-
-using fake_leapc::Queued;
-using fake_leapc::state;
-
-extern "C" {
-
-eLeapRS LeapCreateConnection(const LEAP_CONNECTION_CONFIG* config, LEAP_CONNECTION* out) {
-  if (out == nullptr) return eLeapRS_InvalidArgument;
-  std::lock_guard lock(state().mutex);
-  ++state().stats.connections_created;
-  if (config != nullptr && (config->flags & eLeapConnectionConfig_MultiDeviceAware) != 0)
-    ++state().stats.multi_device_aware;
-  *out = new _LEAP_CONNECTION();
-  return eLeapRS_Success;
-}
-
-eLeapRS LeapOpenConnection(LEAP_CONNECTION c) {
-  if (c == nullptr) return eLeapRS_InvalidArgument;
-  c->open = true;
-  std::lock_guard lock(state().mutex);
-  ++state().stats.connections_opened;
-  return eLeapRS_Success;
-}
-
-void LeapCloseConnection(LEAP_CONNECTION c) {
-  if (c != nullptr) c->open = false;
-}
-
-void LeapDestroyConnection(LEAP_CONNECTION c) {
-  std::lock_guard lock(state().mutex);
-  state().current.reset();
-  delete c;
-}
-
-eLeapRS LeapSetPolicyFlags(LEAP_CONNECTION c, uint64_t set, uint64_t clear) {
-  if (c == nullptr) return eLeapRS_InvalidArgument;
-  std::lock_guard lock(state().mutex);
-  state().stats.policy_set = (state().stats.policy_set | set) & ~clear;
-  return eLeapRS_Success;
-}
-
-eLeapRS LeapSetPolicyFlagsEx(LEAP_CONNECTION c, LEAP_DEVICE d, uint64_t set, uint64_t clear) {
-  if (c == nullptr || d == nullptr) return eLeapRS_InvalidArgument;
-  {
-    std::lock_guard lock(state().mutex);
-    auto& s = state();
-    ++s.stats.policy_ex_calls;
-    if (auto it = s.policy_ex_result.find(d->id); it != s.policy_ex_result.end()) return it->second;
-    auto& flags = s.device_policy[d->id];
-    flags = (flags | set) & ~clear;
-    if (auto it = s.refused_policy.find(d->id); it != s.refused_policy.end()) flags &= ~it->second;
-    // The request is accepted; what the service made of it arrives later, as a Policy event.
-    auto q = std::make_unique<Queued>();
-    q->type = eLeapEventType_Policy;
-    q->device_id = d->id;
-    q->policy.current_policy = static_cast<uint32_t>(flags);
-    fake_leapc::push_locked(std::move(q));
-  }
-  state().cv.notify_all();
-  return eLeapRS_Success;
-}
-
-eLeapRS LeapSetTrackingModeEx(LEAP_CONNECTION c, LEAP_DEVICE d, eLeapTrackingMode mode) {
-  if (c == nullptr || d == nullptr) return eLeapRS_InvalidArgument;
-  {
-    std::lock_guard lock(state().mutex);
-    auto& s = state();
-    ++s.stats.tracking_mode_calls;
-    s.requested_mode[d->id] = mode;
-    auto& device = s.plugged[d->id];
-    auto held = s.held_mode.find(d->id);
-    device.mode = held != s.held_mode.end() ? held->second : mode;
-    fake_leapc::push_mode_locked(d->id, device.mode);
-  }
-  state().cv.notify_all();
-  return eLeapRS_Success;
-}
-
-eLeapRS LeapGetTrackingModeEx(LEAP_CONNECTION c, LEAP_DEVICE d) {
-  if (c == nullptr || d == nullptr) return eLeapRS_InvalidArgument;
-  {
-    std::lock_guard lock(state().mutex);
-    ++state().stats.tracking_mode_queries;
-    fake_leapc::push_mode_locked(d->id, state().plugged[d->id].mode);
-  }
-  state().cv.notify_all();
-  return eLeapRS_Success;
-}
-
-eLeapRS LeapPollConnection(LEAP_CONNECTION c, uint32_t timeout, LEAP_CONNECTION_MESSAGE* evt) {
-  auto& s = state();
-  if (c == nullptr || evt == nullptr) return eLeapRS_InvalidArgument;
-  if (s.polling.fetch_add(1) != 0) {
-    s.polling.fetch_sub(1);
-    std::lock_guard lock(s.mutex);
-    ++s.stats.concurrent_polls;
-    return eLeapRS_ConcurrentPoll;
-  }
-  std::unique_lock lock(s.mutex);
-  s.current.reset();  // the previous message's pointers die here, as documented
-  std::memset(evt, 0, sizeof *evt);
-  evt->size = sizeof *evt;
-  evt->type = eLeapEventType_None;
-  if (s.not_connected_polls > 0) {
-    // No service yet: LeapC answers at once, nothing is delivered. Once the service is up, the
-    // first message is the Connection event.
-    if (--s.not_connected_polls == 0) {
-      auto q = std::make_unique<Queued>();
-      q->type = eLeapEventType_Connection;
-      s.queue.push_front(std::move(q));
-    }
-    s.polling.fetch_sub(1);
-    return eLeapRS_NotConnected;
-  }
-  const auto deadline = std::chrono::steady_clock::now() + std::chrono::milliseconds(timeout);
-  for (;;) {
-    while (!s.queue.empty()) {
-      auto q = std::move(s.queue.front());
-      s.queue.pop_front();
-      if (q->type == eLeapEventType_Tracking && s.subscribed.count(q->device_id) == 0) {
-        ++s.stats.tracking_suppressed;
-        continue;
-      }
-      if (q->type == eLeapEventType_Tracking) {
-        ++s.stats.tracking_delivered;
-        q->tracking.nHands = static_cast<uint32_t>(q->hands.size());
-        q->tracking.pHands = q->hands.empty() ? nullptr : q->hands.data();
-      }
-      if (q->type == eLeapEventType_DeviceLost) s.subscribed.erase(q->device.device.id);
-      evt->type = q->type;
-      evt->device_id = q->device_id;
-      switch (q->type) {
-        case eLeapEventType_Device:
-        case eLeapEventType_DeviceLost:
-          evt->device_event = &q->device;
-          break;
-        case eLeapEventType_DeviceFailure:
-          evt->device_failure_event = &q->failure;
-          break;
-        case eLeapEventType_DeviceStatusChange:
-          evt->device_status_change_event = &q->status;
-          break;
-        case eLeapEventType_DroppedFrame:
-          evt->dropped_frame_event = &q->dropped;
-          break;
-        case eLeapEventType_Connection:
-          evt->connection_event = &q->connection;
-          break;
-        case eLeapEventType_ConnectionLost:
-          evt->connection_lost_event = &q->lost;
-          break;
-        case eLeapEventType_Policy:
-          evt->policy_event = &q->policy;
-          break;
-        case eLeapEventType_TrackingMode:
-          evt->tracking_mode_event = &q->mode;
-          break;
-        case eLeapEventType_Tracking:
-          evt->tracking_event = &q->tracking;
-          break;
-        default:
-          break;
-      }
-      s.current = std::move(q);
-      s.polling.fetch_sub(1);
-      return eLeapRS_Success;
-    }
-    if (s.cv.wait_until(lock, deadline) == std::cv_status::timeout && s.queue.empty()) break;
-  }
-  s.polling.fetch_sub(1);
-  return eLeapRS_Timeout;
-}
-
-eLeapRS LeapOpenDevice(LEAP_DEVICE_REF ref, LEAP_DEVICE* out) {
-  if (out == nullptr) return eLeapRS_InvalidArgument;
-  std::lock_guard lock(state().mutex);
-  auto& s = state();
-  ++s.stats.open_attempts;
-  auto it = s.plugged.find(ref.id);
-  if (it == s.plugged.end()) return eLeapRS_CannotOpenDevice;
-  if (const eLeapRS rs = fake_leapc::take_failure(s.failing_open, ref.id); rs != eLeapRS_Success) return rs;
-  ++s.stats.devices_opened;
-  *out = new _LEAP_DEVICE{ref.id, it->second.serial};
-  s.opened[ref.id] = *out;
-  return eLeapRS_Success;
-}
-
-void LeapCloseDevice(LEAP_DEVICE d) {
-  if (d == nullptr) return;
-  {
-    std::lock_guard lock(state().mutex);
-    ++state().stats.devices_closed;
-    if (auto it = state().opened.find(d->id); it != state().opened.end() && it->second == d) state().opened.erase(it);
-  }
-  delete d;
-}
-
-eLeapRS LeapGetDeviceInfo(LEAP_DEVICE d, LEAP_DEVICE_INFO* info) {
-  if (d == nullptr || info == nullptr || info->size != sizeof(LEAP_DEVICE_INFO)) return eLeapRS_InvalidArgument;
-  const auto needed = static_cast<uint32_t>(d->serial.size() + 1);
-  info->status = eLeapDeviceStatus_Streaming;
-  {
-    std::lock_guard lock(state().mutex);
-    auto it = state().plugged.find(d->id);
-    info->pid = it == state().plugged.end() ? eLeapDevicePID_Unknown : it->second.pid;
-  }
-  info->baseline = 40000;
-  info->h_fov = 2.618F;
-  info->v_fov = 2.094F;
-  info->range = 600000;
-  // As documented: with serial == NULL (or too short a buffer) the call reports the length.
-  if (info->serial == nullptr || info->serial_length < needed) {
-    info->serial_length = needed;
-    return info->serial == nullptr ? eLeapRS_Success : eLeapRS_InsufficientBuffer;
-  }
-  std::memcpy(info->serial, d->serial.c_str(), needed);
-  info->serial_length = needed;
-  return eLeapRS_Success;
-}
-
-eLeapRS LeapSubscribeEvents(LEAP_CONNECTION c, LEAP_DEVICE d) {
-  if (c == nullptr || d == nullptr) return eLeapRS_InvalidArgument;
-  std::lock_guard lock(state().mutex);
-  auto& s = state();
-  ++s.stats.subscribe_attempts;
-  if (const eLeapRS rs = fake_leapc::take_failure(s.failing_subscribe, d->id); rs != eLeapRS_Success) return rs;
-  ++s.stats.subscribed;
-  s.subscribed.insert(d->id);
-  return eLeapRS_Success;
-}
-
-eLeapRS LeapUnsubscribeEvents(LEAP_CONNECTION c, LEAP_DEVICE d) {
-  if (c == nullptr || d == nullptr) return eLeapRS_InvalidArgument;
-  std::lock_guard lock(state().mutex);
-  ++state().stats.unsubscribed;
-  state().subscribed.erase(d->id);
-  return eLeapRS_Success;
-}
-
-int64_t LeapGetNow(void) {
-  std::int64_t offset = 0;
-  {
-    std::lock_guard lock(state().mutex);
-    offset = state().clock_offset_us;
-  }
-  return std::chrono::duration_cast<std::chrono::microseconds>(std::chrono::steady_clock::now().time_since_epoch())
-             .count() +
-         offset;
-}
-
-}  // extern "C"

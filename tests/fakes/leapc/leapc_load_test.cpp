@@ -28,7 +28,7 @@ TEST(LeapcLoad, EightControllersAt120HzInterleavedLoseNothingAndKeepTheirSlots) 
   DeviceHub hub(layout_with_serials(kDevices));
   Recorded rec;
   hub.set_consumer(&rec);
-  hub.add_source(std::make_unique<LeapcSource>());
+  hub.add_source(std::make_unique<LeapcSource>(test_options()));
   hub.start();
   // The service's ids are not the slot order: slot s (1-based) gets id 40 + (s * 5) % 8.
   std::array<std::uint32_t, kDevices> id_of_slot{};
@@ -39,8 +39,8 @@ TEST(LeapcLoad, EightControllersAt120HzInterleavedLoseNothingAndKeepTheirSlots) 
   ASSERT_TRUE(wait_for([&] { return hub.serial_to_slot().size() == kDevices; }));
 
   // Each slot's hand is placed at 100 × slot mm, so a frame says by itself whose it is.
-  std::array<LEAP_HAND, kDevices> hand_of_slot{};
-  for (int s = 1; s <= kDevices; ++s) hand_of_slot[s - 1] = fake_leapc::make_hand(eLeapHandType_Right, 100.0F * s);
+  std::array<leapc::Hand, kDevices> hand_of_slot{};
+  for (int s = 1; s <= kDevices; ++s) hand_of_slot[s - 1] = fake_leapc::make_hand(leapc::kHandRight, 100.0F * s);
   std::mt19937 shuffle_rng(7);
   std::array<int, kDevices> order{};
   for (int i = 0; i < kDevices; ++i) order[i] = i;

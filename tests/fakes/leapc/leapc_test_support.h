@@ -3,13 +3,16 @@
 // consumer that keeps every frame and event the hub hands on.
 #include <chrono>
 #include <functional>
+#include <memory>
 #include <mutex>
 #include <string>
 #include <thread>
+#include <utility>
 #include <vector>
 
 #include "devices/device_hub.h"
 #include "devices/frame_consumer.h"
+#include "devices/leapc/leapc_source.h"
 
 namespace lmc::devices {
 
@@ -20,6 +23,15 @@ inline bool wait_for(const std::function<bool()>& done, int timeout_ms = 3000) {
     std::this_thread::sleep_for(std::chrono::milliseconds(2));
   }
   return true;
+}
+
+// The backend's options for tests: the service's answers are judged after 50 ms instead of
+// seconds (the double answers within a few polls), and a silent service is asked about after 100 ms.
+inline LeapcOptions test_options() {
+  LeapcOptions o;
+  o.warning_grace_ms = 50;
+  o.service_check_ms = 100;
+  return o;
 }
 
 // Slots LMC1…LMCn bound to the serials LP11111, LP22222, … (n ≤ 8).
@@ -57,6 +69,17 @@ struct Recorded : FrameConsumer {
     std::lock_guard lock(m);
     return frames.size();
   }
+};
+
+// A hub on the four-serial layout with one LeapC source, its frames and events kept, started.
+struct LeapcRig {
+  explicit LeapcRig(LeapcOptions options = test_options()) : hub(layout_with_serials()) {
+    hub.set_consumer(&rec);
+    hub.add_source(std::make_unique<LeapcSource>(std::move(options)));
+    hub.start();
+  }
+  Recorded rec;  // before the hub: the hub hands it frames until it stops
+  DeviceHub hub;
 };
 
 }  // namespace lmc::devices

@@ -5,6 +5,7 @@
 #include <utility>
 
 #include "core/io/layout_json.h"
+#include "devices/leapc/leapc_library.h"
 #include "devices/source_factory.h"
 
 namespace lmc::ui {
@@ -13,7 +14,8 @@ DevicesState::DevicesState(LiveRig& rig, CurrentLayout& layout, StatusFn status)
     : layout_(layout), status_(std::move(status)), view_(rig), calibration_(rig) {}
 
 bool DevicesState::leapc_available() {
-  return devices::leapc_available();
+  // Looked for now, not at build time: a library installed since the last look is found.
+  return devices::find_leapc().library != nullptr;
 }
 
 void DevicesState::update() {
@@ -40,7 +42,8 @@ void DevicesState::update() {
     report(summary, !ok);
   }
   if (!view_.running()) return;
-  // With the SDK present, LeapC is tried first; without controllers the simulated rig takes over.
+  // With Ultraleap's library installed, LeapC is tried first; without controllers the simulated rig
+  // takes over.
   if (fallback_pending_ && view_.running_seconds() > 3.0) {
     fallback_pending_ = false;
     if (view_.rows().empty()) {
@@ -57,6 +60,7 @@ void DevicesState::auto_start() {
     fallback_pending_ = true;
     start("leapc");
   } else {
+    report("no LeapC library installed: running the simulated rig (Start with leapc says where it looked)", false);
     start("sim");
   }
 }

@@ -42,9 +42,12 @@ class DevicesState {
   void update();
 
   // ---- the rig ------------------------------------------------------------------------------
+  // True when a usable LeapC library is installed now (devices/leapc/leapc_library.h).
   static bool leapc_available();
-  // The first time the tab is drawn: LeapC when the SDK is present (the simulated rig takes over
-  // if no controller shows up within 3 s), else the simulated rig.
+  // The first time the tab is drawn: LeapC when Ultraleap's library is installed (the simulated rig
+  // takes over if no controller shows up within 3 s), else the simulated rig. Start with leapc
+  // looks again, so software installed while the workbench runs is found; its log says which
+  // library was loaded from where, and a failed start every place tried.
   void auto_start();
   bool auto_started() const { return auto_started_; }
   // Starts a backend ("sim", "leapc", "replay:FILE"); an error goes to the status line and is

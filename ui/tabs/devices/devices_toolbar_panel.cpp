@@ -17,11 +17,10 @@ void DevicesToolbarPanel::draw() {
   ImGui::SetNextItemWidth(110);
   if (ImGui::BeginCombo("##backend", backend_choice_ == 0 ? "sim" : backend_choice_ == 1 ? "leapc" : "replay")) {
     if (ImGui::Selectable("sim", backend_choice_ == 0)) backend_choice_ = 0;
-    if (DevicesState::leapc_available()) {
-      if (ImGui::Selectable("leapc", backend_choice_ == 1)) backend_choice_ = 1;
-    } else {
-      ImGui::TextDisabled("leapc (built without the Ultraleap SDK)");
-    }
+    // Always offered: Start looks for Ultraleap's library and says where it looked when it is missing.
+    if (ImGui::Selectable("leapc", backend_choice_ == 1)) backend_choice_ = 1;
+    if (ImGui::IsItemHovered())
+      ImGui::SetTooltip("Ultraleap controllers through LeapC: the library is looked for at each Start");
     if (ImGui::Selectable("replay", backend_choice_ == 2)) backend_choice_ = 2;
     ImGui::EndCombo();
   }

@@ -1,5 +1,5 @@
 #pragma once
-// The Devices tab's top line: the backend (sim, leapc when built with the SDK, replay of a
+// The Devices tab's top line: the backend (sim, leapc, replay of a
 // recording), the layout the rig runs (the Layout tab's), Save with serials, and Start / Stop with
 // how long the rig has run.
 #include <memory>
