@@ -146,6 +146,8 @@ def names_anywhere(code):
     names = declared_names(code, namespace_only=False)
     for m in LOCAL.finditer(code):
         names.add(m.group(1))
+    for m in re.finditer(r"\btemplate\s*<([^;{}]*?)>\s*(?:class|struct|using|[A-Za-z_])", code):
+        names |= set(re.findall(r"\b(?:typename|class)\s*(?:\.\.\.)?\s*([A-Za-z_]\w*)", m.group(1)))
     for m in re.finditer(r"\benum\b[^{;()]*\{([^}]*)\}", code):
         names |= set(re.findall(r"(?:^|,)\s*([A-Za-z_]\w*)", m.group(1)))
     for m in re.finditer(r"\bauto\s*&{0,2}\s*\[([^\]]*)\]", code):
