@@ -560,7 +560,8 @@ void append_lmc_row(std::string& out, const HandFrame& frame, RecordingKind kind
     return;
   }
   // The row is built in a buffer of its own and appended once: a subject's fused files are
-  // millions of numbers, and growing the string number by number was a tenth of writing them.
+  // millions of numbers, and growing the string number by number costs a check and a possible
+  // reallocation per number.
   std::array<char, kMaxPlainRowChars> row;
   char* at = row.data();
   const auto put_int = [&](std::int64_t v) {
