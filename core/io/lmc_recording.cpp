@@ -20,7 +20,7 @@
 namespace lmc {
 namespace {
 
-// Column layout (reference-data/README.md): 4 bookkeeping columns, then 30 points.
+// Column layout (docs/formats.md): 4 bookkeeping columns, then 30 points.
 constexpr int kMetaColumns = 4;
 constexpr std::array<std::string_view, kMetaColumns> kMetaNames = {"Device ID", "Frame ID", "Frame Rate", "Time Stamp"};
 constexpr int kPointColumns = kMetaColumns + kNumHandPoints;                   // raw/resampled: 34

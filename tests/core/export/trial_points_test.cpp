@@ -7,6 +7,7 @@
 #include <cmath>
 #include <sstream>
 
+#include "core/common/error.h"
 #include "core/export/trial_points.h"
 #include "core/hand/hand_frame.h"
 #include "core/io/c3d.h"
