@@ -18,9 +18,9 @@ function(lmc_compile_flags target)
     target_compile_options(${target} PRIVATE -Werror)
   endif()
   if(LMC_GCC_FEWER_COLLECTIONS AND CMAKE_CXX_COMPILER_ID STREQUAL "GNU")
-    # GCC collects its own garbage every time its heap grows by a third (from 128 MB): 9 % of a
-    # test batch's compile time. Collecting when it quadruples from 1 GB cost 4-14 % less CPU per
-    # batch (a test batch's peak 1.2 -> 1.6 GB). Same objects.
+    # GCC collects its own garbage every time its heap grows by a third (from 128 MB), a visible
+    # share of a unity batch's compile time; collecting only when it quadruples from 1 GB trades
+    # some peak memory for less CPU and gives the same objects (docs/results/build-time.md).
     target_compile_options(${target} PRIVATE --param=ggc-min-expand=400 --param=ggc-min-heapsize=1048576)
   endif()
   if(LMC_SANITIZE)
@@ -33,19 +33,19 @@ function(lmc_compile_flags target)
   target_compile_definitions(${target} PRIVATE LMC_VERSION="${PROJECT_VERSION}")
 endfunction()
 
-# Files per unity batch. Larger batches instantiate the shared templates fewer times (core, devices
-# and ui_model with the check flags: 484 s of CPU in batches of 8, 409 s in batches of 16; the core
-# tests' batches 17 % less in batches of 32 than 16, so the check preset that CI builds uses 32);
-# smaller ones rebuild less after an edit and give ninja more to run in parallel. Names in
+# Files per unity batch. Larger batches instantiate the shared templates fewer times (so the check
+# preset that CI builds uses 32; docs/results/build-time.md); smaller ones rebuild less after an
+# edit and give ninja more to run in parallel. Names in
 # anonymous namespaces must be unique across a library's files.
 set(LMC_UNITY_BATCH_SIZE 8 CACHE STRING "Source files per unity batch (0: one batch per target)")
 
-# Parsing Eigen and nlohmann-json is about 40 % of compiling a typical file here, so they are
-# precompiled. Not once per target (each precompiled header costs as much as several ordinary
-# files under ASan): one small holder target builds it and every first-party target reuses it
-# (REUSE_FROM). Reuse is only valid while all of them compile with the same flags, which is why
-# every target gets its flags from lmc_compile_flags above; per-target definitions such as lmc_ui's
-# GLFW_INCLUDE_NONE are fine because the precompiled headers never look at them.
+# Parsing Eigen and nlohmann-json is a large part of compiling a typical file here, so they are
+# precompiled (docs/results/build-time.md). Not once per target (each precompiled header costs as
+# much as several ordinary files under ASan): one small holder target builds it and every
+# first-party target reuses it (REUSE_FROM). Reuse is only valid while all of them compile with
+# the same flags, which is why every target gets its flags from lmc_compile_flags above;
+# per-target definitions such as lmc_ui's GLFW_INCLUDE_NONE are fine because the precompiled
+# headers never look at them.
 set(LMC_PCH_HEADERS
     <Eigen/Dense> <nlohmann/json.hpp>
     <algorithm> <array> <cmath> <filesystem> <functional> <memory> <string> <vector>)
@@ -64,10 +64,9 @@ endfunction()
 
 # Code that only drives the engine (the test binaries, the command-line commands and the window's
 # entry point) gains little from optimisation but pays for it in compile time under the
-# sanitizers: CLI11's header alone costs 29 s of CPU per file at -O1 with ASan/UBSan and 11 s at
-# -O0, a batch of tests 33 s at -O1 and 18 s at -O0. The check preset sets these flags to -O0
-# (still with ASan/UBSan); the engine's libraries keep CMAKE_CXX_FLAGS_<CONFIG>, so what the tests
-# exercise runs as optimised as before.
+# sanitizers (CLI11's header above all; docs/results/build-time.md). The check preset sets these
+# flags to -O0 (still with ASan/UBSan); the engine's libraries keep CMAKE_CXX_FLAGS_<CONFIG>, so
+# what the tests exercise runs as optimised as before.
 set(LMC_DRIVER_FLAGS "" CACHE STRING "Extra compile flags for test binaries and program entry points (the check preset: -O0)")
 separate_arguments(LMC_DRIVER_FLAG_LIST UNIX_COMMAND "${LMC_DRIVER_FLAGS}")
 
@@ -79,10 +78,11 @@ function(lmc_driver_flags target)
 endfunction()
 
 # The engine's files the test suite spends its time in, at the flags that keep them quick to run.
-# The check preset compiles the engine at -Og: under ASan/UBSan a batch of core at -O1 took 43 s of
-# CPU and 26 s at -Og, but Eigen's small functions stay calls at -Og, so the code that does the
-# tests' arithmetic (found with perf over the whole ctest run: calibration, frame preparation and
-# the palm hull, the hand model, trial quality, the simulated rig) ran 2 to 9 times slower.
+# The check preset compiles the engine at -Og, which compiles much faster than -O1 under
+# ASan/UBSan, but Eigen's small functions stay calls at -Og, so the code that does the tests'
+# arithmetic (found with perf over the whole ctest run: calibration, frame preparation and the
+# palm hull, the hand model, trial quality, the simulated rig) runs several times slower
+# (docs/results/build-time.md).
 # Those files take LMC_HOT_FLAGS (the check preset: -O1) instead. Empty: no split (Release, dev).
 set(LMC_HOT_FLAGS "" CACHE STRING "Compile flags for the engine's hot files (lmc_hot_sources), after the build type's")
 separate_arguments(LMC_HOT_FLAG_LIST UNIX_COMMAND "${LMC_HOT_FLAGS}")

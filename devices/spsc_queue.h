@@ -1,6 +1,8 @@
 #pragma once
 // Bounded single-producer/single-consumer ring (docs/architecture.md): the producer never waits on the
-// consumer. try_push fails when full (the caller counts a drop); try_pop fails when empty.
+// consumer. try_push fails when full (the caller counts a drop); try_pop fails when empty. Several
+// producer threads may share one only by taking turns under a mutex of their own (as the recorder's
+// device threads do); the consumer never takes it.
 // Capacity is fixed at construction, storage allocated once.
 #include <atomic>
 #include <cstddef>

@@ -7,7 +7,7 @@ root=${1:?usage: check_repo_references.sh SOURCE_DIR}
 cd "$root" || exit 2
 # Spelt in pieces so this file does not match itself.
 dots='\.\.'
-outside="${dots}/shared|reference-algorithms|field-notes|record-review-notes|/style\.md|\bstyle\.md|toolchain\.md"
+outside="${dots}/shared|reference-algorithms|field-notes|record-review-notes|/style\.md|\bstyle\.md|toolchain\.md|reference-data/README"
 tag='[Ii]ssues? #''[0-9]'
 if git rev-parse --is-inside-work-tree >/dev/null 2>&1; then
   files=$(git ls-files -- core devices ui app tests assets scripts cmake docs CMakeLists.txt README.md .ci)

@@ -2,7 +2,8 @@
 // A quick exact reader for the numbers the recordings and TRC files are made of: an optional '-',
 // digits, and an optional '.' followed by digits, at most 19 digits in all. It gives exactly the
 // double std::from_chars gives, or declines and leaves the number to it; a subject's files hold
-// ten million such numbers, and libstdc++'s from_chars was an eighth of processing.
+// ten million such numbers, so reading them is a large part of processing (the measurements are in
+// docs/results/processing.md).
 //
 // Why it is exact: the digits make an integer w < 10^19, and the value is w / 10^f = w / 5^f · 2^−f.
 // With R = floor(2^(63+e) / 5^f) (64 bits) and w shifted left to 64 bits, the product P = w·R is
@@ -12,8 +13,8 @@
 // number in a thousand) are declined. The same argument as Lemire's fast decimal conversion, on the
 // one range we need. It holds for every w ≥ 1. For w ≤ 2^53 one IEEE division w / 10^f would do
 // too (the classic fast path), but a field of the study's files has 16 or 17 digits, w falls on
-// either side of 2^53 at random, and that guess the CPU kept missing cost more than the division
-// saved (the number-read benchmark: 36 → 30 ns a number).
+// either side of 2^53 at random, and that branch the CPU keeps mispredicting costs more than the
+// division saves.
 #include <array>
 #include <bit>
 #include <cstddef>

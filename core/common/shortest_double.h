@@ -1,9 +1,9 @@
 #pragma once
 // The shortest form of a double that reads back as the same double, character for character what
 // std::to_chars(first, last, v) writes (fixed or scientific, whichever is shorter, fixed on a tie;
-// among the shortest, the one nearest to v), at about a fifth of its cost for the values the
-// study's files hold. The fused output of a subject is millions of such numbers, and libstdc++'s
-// to_chars was a sixth of processing (docs/results/processing.md).
+// among the shortest, the one nearest to v), at a fraction of its cost for the values the study's
+// files hold. The fused output of a subject is millions of such numbers, so writing them is a large
+// part of processing (docs/results/processing.md).
 
 namespace lmc {
 

@@ -1,7 +1,7 @@
 #pragma once
 // Wall-clock instants for files a person reads (sidecars, session journals): ISO 8601 in UTC
-// with milliseconds, "2026-11-22T01:23:45.678Z", so they sort as text and mean the same in every
-// time zone.
+// with milliseconds, "2026-11-22T01:23:45.678Z" (contract-figure: the format's example), so they
+// sort as text and mean the same in every time zone.
 #include <string>
 
 namespace lmc {

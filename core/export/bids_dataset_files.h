@@ -37,8 +37,9 @@ struct BidsScan {
   std::string acq_time;  // BIDS datetime, or empty: n/a
 };
 std::string bids_scans_tsv(const std::vector<BidsScan>& scans);
-// "2026-11-27T16:42:03.552Z" (the sidecars' UTC times) as BIDS's "2026-11-27T16:42:03.552000Z";
-// empty when `utc` is not in that form.
+// The sidecars' UTC times as BIDS writes them (contract-figure: both formats' examples):
+// "2026-11-27T16:42:03.552Z" as "2026-11-27T16:42:03.552000Z" (contract-figure); empty when
+// `utc` is not in that form.
 std::string bids_acq_time(const std::string& utc);
 
 std::string bids_readme(bool anonymised);

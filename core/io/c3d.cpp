@@ -118,6 +118,45 @@ class Reader {
   }
 
   C3dData read() {
+    C3dData out;
+    const Codec c = read_parameter_section(out);
+    const HeaderCopies h = header_copies(c);
+    const PointLayout layout = read_point_layout(c, h, out);
+    const long frames = read_frame_count(c, h, out);
+    out.analog_per_frame = read_analog_per_frame(c, h, out.point_rate_hz);
+    read_names(layout.used, out);
+    read_points(c, layout, frames, out);
+    return out;
+  }
+
+ private:
+  // The header's copies of the point parameters (words are 1-based in the specification); the
+  // parameters win where both exist.
+  struct HeaderCopies {
+    int points = 0;
+    int analog = 0;
+    int first = 0;
+    int last = 0;
+    float scale = 0.0f;
+    int data_start = 0;
+    float rate = 0.0f;
+  };
+  HeaderCopies header_copies(const Codec& c) const {
+    auto hword = [&](int w) { return c.u16(&b_[static_cast<size_t>(2 * (w - 1))]); };
+    return {hword(2), hword(3), hword(4), hword(5), c.f32(&b_[12]), hword(9), c.f32(&b_[20])};
+  }
+
+  // What the point data looks like: how many points, their scale (negative: stored as floats) and
+  // the block the data starts at.
+  struct PointLayout {
+    int used = 0;
+    double scale = 0.0;
+    int data_start = 0;
+  };
+
+  // The header block's key, then the parameter section: its processor type (the byte order of
+  // every number) and its records.
+  Codec read_parameter_section(C3dData& out) {
     if (b_.size() < kBlock)
       fail(0, "file is " + std::to_string(b_.size()) + " bytes, too short for a C3D header (512)");
     if (b_[1] != kC3dKey) fail(1, "not a C3D file (second byte is " + std::to_string(b_[1]) + ", expected 0x50)");
@@ -130,7 +169,6 @@ class Reader {
     if (proc < 84 || proc > 86) {
       fail(pstart + 3, "unknown processor type " + std::to_string(proc) + " (expected 84 Intel, 85 DEC or 86 MIPS)");
     }
-    C3dData out;
     out.processor = static_cast<C3dProcessor>(proc);
     const Codec c(out.processor);
     const size_t nblocks = b_[pstart + 2];
@@ -141,39 +179,37 @@ class Reader {
       pend = b_.size();
     }
     parse_parameters(c, pstart + 4, pend, out);
+    return c;
+  }
 
-    // Header copies (words are 1-based in the specification).
-    auto hword = [&](int w) { return c.u16(&b_[static_cast<size_t>(2 * (w - 1))]); };
-    const int h_points = hword(2);
-    const int h_analog = hword(3);
-    const int h_first = hword(4);
-    const int h_last = hword(5);
-    const float h_scale = c.f32(&b_[12]);
-    const int h_data_start = hword(9);
-    const float h_rate = c.f32(&b_[20]);
-
-    const int used =
-        has("POINT", "USED") ? static_cast<int>(static_cast<std::uint16_t>(integer("POINT", "USED", c))) : h_points;
-    double scale = has("POINT", "SCALE") ? number("POINT", "SCALE", c) : h_scale;
-    if (scale == 0.0 || !std::isfinite(scale)) fail(12, "POINT:SCALE is zero or not a number");
-    out.point_scale = scale;
-    out.float_storage = scale < 0.0;
-    out.point_rate_hz = has("POINT", "RATE") ? number("POINT", "RATE", c) : h_rate;
+  // POINT:USED, SCALE, RATE, DATA_START and UNITS, each from the header where the parameter is missing.
+  PointLayout read_point_layout(const Codec& c, const HeaderCopies& h, C3dData& out) const {
+    PointLayout layout;
+    layout.used =
+        has("POINT", "USED") ? static_cast<int>(static_cast<std::uint16_t>(integer("POINT", "USED", c))) : h.points;
+    layout.scale = has("POINT", "SCALE") ? number("POINT", "SCALE", c) : h.scale;
+    if (layout.scale == 0.0 || !std::isfinite(layout.scale)) fail(12, "POINT:SCALE is zero or not a number");
+    out.point_scale = layout.scale;
+    out.float_storage = layout.scale < 0.0;
+    out.point_rate_hz = has("POINT", "RATE") ? number("POINT", "RATE", c) : h.rate;
     if (!(out.point_rate_hz > 0.0) || !std::isfinite(out.point_rate_hz)) {
-      out.point_rate_hz = h_rate;
+      out.point_rate_hz = h.rate;
       if (!(out.point_rate_hz > 0.0)) fail(20, "point rate is not positive");
     }
-    int data_start = has("POINT", "DATA_START") ? static_cast<std::uint16_t>(integer("POINT", "DATA_START", c)) : 0;
-    if (data_start <= 0) data_start = h_data_start;
-    if (data_start < 2) fail(16, "DATA_START block " + std::to_string(data_start) + " is invalid");
+    layout.data_start = has("POINT", "DATA_START") ? static_cast<std::uint16_t>(integer("POINT", "DATA_START", c)) : 0;
+    if (layout.data_start <= 0) layout.data_start = h.data_start;
+    if (layout.data_start < 2) fail(16, "DATA_START block " + std::to_string(layout.data_start) + " is invalid");
     if (has("POINT", "UNITS")) {
       const auto u = strings("POINT", "UNITS");
       if (!u.empty()) out.units = trim(u.front());
     }
+    return layout;
+  }
 
-    // Frames: TRIAL:ACTUAL_START/END_FIELD (two words each) for long trials, else POINT:FRAMES, else header.
-    long frames = static_cast<long>(h_last) - h_first + 1;
-    out.first_frame = h_first;
+  // Frames: TRIAL:ACTUAL_START/END_FIELD (two words each) for long trials, else POINT:FRAMES, else header.
+  long read_frame_count(const Codec& c, const HeaderCopies& h, C3dData& out) const {
+    long frames = static_cast<long>(h.last) - h.first + 1;
+    out.first_frame = h.first;
     if (has("POINT", "FRAMES")) {
       const Param& p = get("POINT", "FRAMES");
       if (p.type == 4) {
@@ -194,10 +230,12 @@ class Reader {
         if (last >= first) frames = last - first + 1;
       }
     }
-    if (frames < 0) frames = 0;
+    return frames < 0 ? 0 : frames;
+  }
 
-    // Analog samples to skip after each point frame.
-    int analog = h_analog;
+  // Analog samples to skip after each point frame.
+  int read_analog_per_frame(const Codec& c, const HeaderCopies& h, double point_rate_hz) const {
+    int analog = h.analog;
     if (has("ANALOG", "USED")) {
       const int channels = static_cast<std::uint16_t>(integer("ANALOG", "USED", c));
       double arate = has("ANALOG", "RATE") ? number("ANALOG", "RATE", c) : 0.0;
@@ -207,18 +245,21 @@ class Reader {
         // In floating point first: a hostile ANALOG:RATE / POINT:RATE ratio overflows int (and
         // lround) long before it is compared with anything. Every sample takes at least two bytes,
         // so more samples per frame than the file has bytes cannot be real.
-        const double per_frame = static_cast<double>(channels) * std::round(arate / out.point_rate_hz);
+        const double per_frame = static_cast<double>(channels) * std::round(arate / point_rate_hz);
         if (!std::isfinite(per_frame) || per_frame > static_cast<double>(b_.size())) {
           fail(0, "ANALOG:USED (" + std::to_string(channels) + ") x ANALOG:RATE (" + std::to_string(arate) +
-                      ") / POINT:RATE (" + std::to_string(out.point_rate_hz) +
+                      ") / POINT:RATE (" + std::to_string(point_rate_hz) +
                       ") claims more analog samples per frame than the file has bytes (" + std::to_string(b_.size()) +
                       "); implausible");
         }
         analog = static_cast<int>(per_frame);
       }
     }
-    out.analog_per_frame = analog;
+    return analog;
+  }
 
+  // The points' labels and descriptions, the manufacturer's texts and the parameters' names.
+  void read_names(int used, C3dData& out) const {
     // Labels: LABELS, then LABELS2, LABELS3 … for more than 255 points.
     std::vector<std::string> labels;
     for (int k = 1; static_cast<int>(labels.size()) < used; ++k) {
@@ -250,13 +291,18 @@ class Reader {
     out.manufacturer_software = text_of("SOFTWARE");
     out.manufacturer_version = text_of("VERSION_LABEL");
     out.parameter_names = parameter_order_;
+  }
 
-    // Data section.
+  // The data section: `frames` frames of `used` points (X, Y, Z, residual each) and the analog
+  // samples after them, which are skipped.
+  void read_points(const Codec& c, const PointLayout& layout, long frames, C3dData& out) const {
+    const int used = layout.used;
+    const int analog = out.analog_per_frame;
     const size_t word = out.float_storage ? 4 : 2;
     const size_t frame_bytes = (static_cast<size_t>(used) * 4 + static_cast<size_t>(std::max(analog, 0))) * word;
-    const size_t dstart = static_cast<size_t>(data_start - 1) * kBlock;
+    const size_t dstart = static_cast<size_t>(layout.data_start - 1) * kBlock;
     if (dstart > b_.size())
-      fail(16, "data section (block " + std::to_string(data_start) + ") lies past the end of the file");
+      fail(16, "data section (block " + std::to_string(layout.data_start) + ") lies past the end of the file");
     if (frame_bytes == 0 && frames > 0 && static_cast<size_t>(frames) > b_.size()) {
       // Frames without points or analog samples take no bytes, so the file's size cannot bound
       // them; a claim of more frames than the file has bytes is a corrupt or hostile count (each
@@ -271,36 +317,38 @@ class Reader {
              "data section ends after " + std::to_string(available) + " of " + std::to_string(frames) + " frames");
       }
     }
-    const double abs_scale = std::abs(scale);
+    const double abs_scale = std::abs(layout.scale);
     out.positions.assign(static_cast<size_t>(frames), std::vector<Eigen::Vector3d>(static_cast<size_t>(used)));
     for (long f = 0; f < frames; ++f) {
       const std::uint8_t* fp = &b_[dstart + static_cast<size_t>(f) * frame_bytes];
       for (int p = 0; p < used; ++p) {
-        const std::uint8_t* q = fp + static_cast<size_t>(p) * 4 * word;
-        Eigen::Vector3d v;
-        double residual = 0.0;
-        if (out.float_storage) {
-          v = {c.f32(q), c.f32(q + 4), c.f32(q + 8)};
-          const float r = c.f32(q + 12);
-          // The fourth word of a float file is an integer stored as a float (docs/formats.md).
-          residual =
-              std::isfinite(r)
-                  ? static_cast<double>(static_cast<std::int16_t>(std::lround(std::clamp(r, -32768.0f, 32767.0f))))
-                  : -1.0;
-        } else {
-          v = {c.i16(q) * abs_scale, c.i16(q + 2) * abs_scale, c.i16(q + 4) * abs_scale};
-          residual = c.i16(q + 6);
-        }
-        if (residual < 0.0 || !std::isfinite(v.x()) || !std::isfinite(v.y()) || !std::isfinite(v.z())) {
-          v = Eigen::Vector3d::Constant(std::numeric_limits<double>::quiet_NaN());
-        }
-        out.positions[static_cast<size_t>(f)][static_cast<size_t>(p)] = v;
+        out.positions[static_cast<size_t>(f)][static_cast<size_t>(p)] =
+            read_point(c, fp + static_cast<size_t>(p) * 4 * word, out.float_storage, abs_scale);
       }
     }
-    return out;
   }
 
- private:
+  // One point's X, Y, Z at `q`; NaN when its residual says it is missing or it is not finite.
+  static Eigen::Vector3d read_point(const Codec& c, const std::uint8_t* q, bool float_storage, double abs_scale) {
+    Eigen::Vector3d v;
+    double residual = 0.0;
+    if (float_storage) {
+      v = {c.f32(q), c.f32(q + 4), c.f32(q + 8)};
+      const float r = c.f32(q + 12);
+      // The fourth word of a float file is an integer stored as a float (docs/formats.md).
+      residual = std::isfinite(r)
+                     ? static_cast<double>(static_cast<std::int16_t>(std::lround(std::clamp(r, -32768.0f, 32767.0f))))
+                     : -1.0;
+    } else {
+      v = {c.i16(q) * abs_scale, c.i16(q + 2) * abs_scale, c.i16(q + 4) * abs_scale};
+      residual = c.i16(q + 6);
+    }
+    if (residual < 0.0 || !std::isfinite(v.x()) || !std::isfinite(v.y()) || !std::isfinite(v.z())) {
+      v = Eigen::Vector3d::Constant(std::numeric_limits<double>::quiet_NaN());
+    }
+    return v;
+  }
+
   void parse_parameters(const Codec& c, size_t pos, size_t end, C3dData& out) {
     std::map<int, std::string> group_names;
     struct Pending {

@@ -1,8 +1,8 @@
 #pragma once
 // Files made durable on a thread of their own. Each file still goes through
 // write_file_atomically (temporary file, fsync, rename), but the threads that compute the next
-// trial hand their finished files over instead of waiting for the disk: on a two-core machine the
-// fsyncs of a batch's outputs otherwise stall one core for a fifth of the batch.
+// trial hand their finished files over instead of waiting for the disk: on a machine with few cores
+// the fsyncs of a batch's outputs would otherwise stall a core that has trials to compute.
 #include <condition_variable>
 #include <cstddef>
 #include <deque>

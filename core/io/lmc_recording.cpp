@@ -20,7 +20,7 @@
 namespace lmc {
 namespace {
 
-// Column layout (reference-data/README.md): 4 bookkeeping columns, then 30 points.
+// Column layout (docs/formats.md): 4 bookkeeping columns, then 30 points.
 constexpr int kMetaColumns = 4;
 constexpr std::array<std::string_view, kMetaColumns> kMetaNames = {"Device ID", "Frame ID", "Frame Rate", "Time Stamp"};
 constexpr int kPointColumns = kMetaColumns + kNumHandPoints;                   // raw/resampled: 34
@@ -560,7 +560,8 @@ void append_lmc_row(std::string& out, const HandFrame& frame, RecordingKind kind
     return;
   }
   // The row is built in a buffer of its own and appended once: a subject's fused files are
-  // millions of numbers, and growing the string number by number was a tenth of writing them.
+  // millions of numbers, and growing the string number by number costs a check and a possible
+  // reallocation per number.
   std::array<char, kMaxPlainRowChars> row;
   char* at = row.data();
   const auto put_int = [&](std::int64_t v) {

@@ -1,5 +1,5 @@
 #pragma once
-// The study's LMC recording format (reference-data/README.md), read and written by one module so
+// The study's LMC recording format (docs/formats.md), read and written by one module so
 // the recorder, processing and `lmc info` agree:
 //  * raw:        tab-separated; `Device ID, Frame ID, Frame Rate, Time Stamp`, then 30 fields each
 //                "x,y,z"; a row whose device saw no hand ends after the timestamp; trailing tab.

@@ -130,21 +130,17 @@ TrcData parse_trc(std::istream& in, const std::string& source_name) {
   return parse_trc_text(text::read_stream_bytes(in), source_name);
 }
 
-TrcData parse_trc_text(std::string_view content, const std::string& source_name) {
-  if (text::is_blank(text::without_bom(content)))
-    text::fail_at(source_name, 1, 0, "empty file: expected a TRC header ('PathFileType …')");
-  text::require_text(content, source_name);
-  const auto lines = text::split_lines(content);
+namespace {
 
-  check_trc_first_line(lines[0].text, source_name);
-  std::vector<text::Field> fields;
-  if (lines.size() < static_cast<size_t>(kHeaderLines)) {
-    text::fail_at(source_name, static_cast<long>(lines.size()), 0,
-                  "TRC header is incomplete: expected " + std::to_string(kHeaderLines) + " header lines, found " +
-                      std::to_string(lines.size()));
-  }
+// What the header says the file holds, checked against the file once it is read.
+struct TrcHeaderCounts {
+  int markers = 0;
+  int frames = -1;  // −1: no NumFrames in the header (a plain int: GCC 12 warns falsely on an optional here at -O1)
+};
 
-  TrcData trc;
+// Header lines 2 and 3 (keys and values): rates, units, counts and the first frame's number.
+TrcHeaderCounts read_trc_header_values(const std::vector<text::Line>& lines, const std::string& source_name,
+                                       TrcData& trc) {
   const text::Line& values_line = lines[2];
   const auto header = header_values(lines[1], values_line, source_name);
   const auto require = [&](const char* key) -> const text::Field& {
@@ -178,14 +174,20 @@ TrcData parse_trc_text(std::string_view content, const std::string& source_name)
     text::fail_at(source_name, values_line.number, units.column,
                   "unknown units " + text::quoted_excerpt(units.text) + " (expected mm or m)");
   }
-  const int header_markers = int_of(require("NumMarkers"), "NumMarkers");
+  TrcHeaderCounts counts;
+  counts.markers = int_of(require("NumMarkers"), "NumMarkers");
   const auto nf = header.find("NumFrames");
-  // −1: no NumFrames in the header (a plain int: GCC 12 warns falsely on an optional here at -O1).
-  const int header_frames = nf == header.end() ? -1 : int_of(nf->second, "NumFrames");
+  counts.frames = nf == header.end() ? -1 : int_of(nf->second, "NumFrames");
   const auto start = header.find("OrigDataStartFrame");
   trc.orig_data_start_frame = start == header.end() ? 1 : int_of(start->second, "OrigDataStartFrame");
+  return counts;
+}
 
-  // Line 4: Frame#, Time, then each marker name followed by two empty cells.
+// Header lines 4 and 5: Frame#, Time, then each marker name followed by two empty cells; then two
+// empty cells and X1 Y1 Z1 X2 …
+void read_trc_marker_names(const std::vector<text::Line>& lines, const std::string& source_name,
+                           const TrcHeaderCounts& counts, TrcData& trc) {
+  std::vector<text::Field> fields;
   const text::Line& names_line = lines[3];
   text::split_fields(names_line.text, '\t', fields);
   if (fields.size() < 2 || text::normalise_name(fields[0].text) != "frame#" ||
@@ -202,24 +204,121 @@ TrcData parse_trc_text(std::string_view content, const std::string& source_name)
     trc.marker_names.emplace_back(text::trim(fields[i].text));
   }
   const int markers = trc.marker_count();
-  if (markers != header_markers) {
-    trc.warnings.push_back(format_error(ErrorLocation{source_name, values_line.number},
-                                        "header says NumMarkers " + std::to_string(header_markers) +
+  if (markers != counts.markers) {
+    trc.warnings.push_back(format_error(ErrorLocation{source_name, lines[2].number},
+                                        "header says NumMarkers " + std::to_string(counts.markers) +
                                             " but the column line names " + std::to_string(markers) +
                                             "; using the names"));
   }
-  // Line 5: two empty cells, then X1 Y1 Z1 X2 …
   text::split_fields(lines[4].text, '\t', fields);
   if (markers > 0 && (fields.size() < 3 || text::normalise_name(fields[2].text) != "x1")) {
     text::fail_at(source_name, lines[4].number, fields.size() >= 3 ? fields[2].column : 0,
                   "expected the coordinate line '<tab><tab>X1<tab>Y1<tab>Z1…'");
   }
+}
 
+// Marker samples the data rows read as missing, for the warnings.
+struct TrcGapCounts {
+  long partial_samples = 0;  // only some of X/Y/Z
+  long zero_samples = 0;     // 0,0,0
+};
+
+// One marker's X, Y, Z from a checked row's cells from `first`: a blank or NaN cell makes the
+// sample missing, 0,0,0 too; anything else that is not a plausible finite number is an error
+// naming the cell.
+Eigen::Vector3d read_trc_sample(const std::vector<text::Field>& fields, size_t first, int m, const text::Line& line,
+                                double max_coordinate, const std::string& source_name, const TrcData& trc,
+                                TrcGapCounts& gaps) {
+  Eigen::Vector3d p;
+  int missing = 0;
+  for (int a = 0; a < 3; ++a) {
+    const text::Field& cell = fields[first + static_cast<size_t>(a)];
+    if (text::is_blank(cell.text)) {
+      p[a] = kNaN;
+      ++missing;
+      continue;
+    }
+    const auto v = text::parse_double(cell.text);
+    // The cell's name is built only for a message: a trial's file holds tens of thousands of cells.
+    const auto what = [&] {
+      return "marker '" + trc.marker_names[static_cast<size_t>(m)] + "' " + static_cast<char>('X' + a);
+    };
+    if (!v)
+      text::fail_at(source_name, line.number, cell.column,
+                    what() + " is not a number: " + text::quoted_excerpt(cell.text));
+    // Infinity is no gap (a gap is blank or NaN), and a magnitude no capture volume holds
+    // (1e308) would turn every later computation into NaN or overflow.
+    if (std::isinf(*v))
+      text::fail_at(source_name, line.number, cell.column, what() + " is infinite: " + text::quoted_excerpt(cell.text));
+    if (std::fabs(*v) > max_coordinate) {
+      text::fail_at(source_name, line.number, cell.column,
+                    what() + " = " + text::quoted_excerpt(cell.text) + " " + trc.units +
+                        " is implausible (more than 100 m from the lab origin)");
+    }
+    p[a] = *v;
+    missing += std::isnan(*v) ? 1 : 0;
+  }
+  if (missing > 0) {
+    gaps.partial_samples += missing < 3 ? 1 : 0;
+    p.setConstant(kNaN);
+  } else if (p.isZero(0.0)) {
+    // Some exporters write 0 0 0 for a gap (docs/formats.md).
+    ++gaps.zero_samples;
+    p.setConstant(kNaN);
+  }
+  return p;
+}
+
+// A data row that is not all plain numbers, read field by field with checks that name what is
+// wrong. False when it is an incomplete last line (dropped, with a warning): reading ends there.
+bool read_checked_trc_row(const text::Line& line, std::vector<text::Field>& fields, double max_coordinate,
+                          const std::string& source_name, TrcData& trc, TrcGapCounts& gaps) {
+  const int markers = trc.marker_count();
   const size_t expected = 2 + 3 * static_cast<size_t>(markers);
-  long partial_samples = 0;
-  long zero_samples = 0;
+  text::split_fields(line.text, '\t', fields);
+  while (fields.size() > expected && text::is_blank(fields.back().text)) fields.pop_back();
+  if (fields.size() != expected) {
+    if (!line.has_newline && fields.size() < expected) {
+      trc.warnings.push_back(format_error(ErrorLocation{source_name, line.number},
+                                          "last line is incomplete (no final newline, " +
+                                              std::to_string(fields.size()) + " of " + std::to_string(expected) +
+                                              " fields); dropped it and kept the " +
+                                              std::to_string(trc.positions.size()) + " complete rows before it"));
+      return false;
+    }
+    text::fail_at(source_name, line.number,
+                  fields.size() > expected ? fields[expected].column : static_cast<long>(line.text.size()) + 1,
+                  "row has " + std::to_string(fields.size()) + " fields; expected " + std::to_string(expected) +
+                      " (Frame#, Time and 3 per marker for " + std::to_string(markers) + " markers)");
+  }
+  const auto frame = text::parse_int(fields[0].text);
+  if (!frame)
+    text::fail_at(source_name, line.number, fields[0].column,
+                  "Frame# is not an integer: " + text::quoted_excerpt(fields[0].text));
+  const auto time = text::parse_double(fields[1].text);
+  if (!time || !std::isfinite(*time)) {
+    text::fail_at(source_name, line.number, fields[1].column,
+                  "Time is not a finite number: " + text::quoted_excerpt(fields[1].text));
+  }
+  std::vector<Eigen::Vector3d> row(static_cast<size_t>(markers));
+  for (int m = 0; m < markers; ++m) {
+    row[static_cast<size_t>(m)] =
+        read_trc_sample(fields, static_cast<size_t>(2 + 3 * m), m, line, max_coordinate, source_name, trc, gaps);
+  }
+  trc.frame_numbers.push_back(static_cast<int>(*frame));
+  trc.times_s.push_back(*time);
+  trc.positions.push_back(std::move(row));
+  return true;
+}
+
+// The data rows after the header: plain rows in one pass, any other row with its checks.
+// OpenSim expects a blank line after the X1/Y1 line; the study's file has none. Both are read.
+TrcGapCounts read_trc_rows(const std::vector<text::Line>& lines, std::string_view content,
+                           const std::string& source_name, TrcData& trc) {
+  const int markers = trc.marker_count();
+  TrcGapCounts gaps;
+  std::vector<text::Field> fields;
   const double max_coordinate = trc.units == "m" ? 100.0 : 100000.0;
-  // OpenSim expects a blank line after the X1/Y1 line; the study's file has none. Both are read.
   for (size_t i = kHeaderLines; i < lines.size(); ++i) {
     const text::Line& line = lines[i];
     if (text::is_blank(line.text)) continue;
@@ -227,101 +326,57 @@ TrcData parse_trc_text(std::string_view content, const std::string& source_name)
       std::vector<Eigen::Vector3d> row(static_cast<size_t>(markers));
       PlainRow plain;
       if (read_plain_trc_row(line.text, content.data() + content.size(), markers, max_coordinate, plain, row)) {
-        zero_samples += plain.zero_samples;
+        gaps.zero_samples += plain.zero_samples;
         trc.frame_numbers.push_back(static_cast<int>(plain.frame));
         trc.times_s.push_back(plain.time);
         trc.positions.push_back(std::move(row));
         continue;
       }
     }
-    text::split_fields(line.text, '\t', fields);
-    while (fields.size() > expected && text::is_blank(fields.back().text)) fields.pop_back();
-    if (fields.size() != expected) {
-      if (!line.has_newline && fields.size() < expected) {
-        trc.warnings.push_back(format_error(ErrorLocation{source_name, line.number},
-                                            "last line is incomplete (no final newline, " +
-                                                std::to_string(fields.size()) + " of " + std::to_string(expected) +
-                                                " fields); dropped it and kept the " +
-                                                std::to_string(trc.positions.size()) + " complete rows before it"));
-        break;
-      }
-      text::fail_at(source_name, line.number,
-                    fields.size() > expected ? fields[expected].column : static_cast<long>(line.text.size()) + 1,
-                    "row has " + std::to_string(fields.size()) + " fields; expected " + std::to_string(expected) +
-                        " (Frame#, Time and 3 per marker for " + std::to_string(markers) + " markers)");
-    }
-    const auto frame = text::parse_int(fields[0].text);
-    if (!frame)
-      text::fail_at(source_name, line.number, fields[0].column,
-                    "Frame# is not an integer: " + text::quoted_excerpt(fields[0].text));
-    const auto time = text::parse_double(fields[1].text);
-    if (!time || !std::isfinite(*time)) {
-      text::fail_at(source_name, line.number, fields[1].column,
-                    "Time is not a finite number: " + text::quoted_excerpt(fields[1].text));
-    }
-    std::vector<Eigen::Vector3d> row(static_cast<size_t>(markers));
-    for (int m = 0; m < markers; ++m) {
-      Eigen::Vector3d p;
-      int missing = 0;
-      for (int a = 0; a < 3; ++a) {
-        const text::Field& cell = fields[static_cast<size_t>(2 + 3 * m + a)];
-        if (text::is_blank(cell.text)) {
-          p[a] = kNaN;
-          ++missing;
-          continue;
-        }
-        const auto v = text::parse_double(cell.text);
-        // The cell's name is built only for a message: a trial's file holds tens of thousands of cells.
-        const auto what = [&] {
-          return "marker '" + trc.marker_names[static_cast<size_t>(m)] + "' " + static_cast<char>('X' + a);
-        };
-        if (!v)
-          text::fail_at(source_name, line.number, cell.column,
-                        what() + " is not a number: " + text::quoted_excerpt(cell.text));
-        // Infinity is no gap (a gap is blank or NaN), and a magnitude no capture volume holds
-        // (1e308) would turn every later computation into NaN or overflow.
-        if (std::isinf(*v))
-          text::fail_at(source_name, line.number, cell.column,
-                        what() + " is infinite: " + text::quoted_excerpt(cell.text));
-        if (std::fabs(*v) > max_coordinate) {
-          text::fail_at(source_name, line.number, cell.column,
-                        what() + " = " + text::quoted_excerpt(cell.text) + " " + trc.units +
-                            " is implausible (more than 100 m from the lab origin)");
-        }
-        p[a] = *v;
-        missing += std::isnan(*v) ? 1 : 0;
-      }
-      if (missing > 0) {
-        partial_samples += missing < 3 ? 1 : 0;
-        p.setConstant(kNaN);
-      } else if (p.isZero(0.0)) {
-        // Some exporters write 0 0 0 for a gap (docs/formats.md).
-        ++zero_samples;
-        p.setConstant(kNaN);
-      }
-      row[static_cast<size_t>(m)] = p;
-    }
-    trc.frame_numbers.push_back(static_cast<int>(*frame));
-    trc.times_s.push_back(*time);
-    trc.positions.push_back(std::move(row));
+    if (!read_checked_trc_row(line, fields, max_coordinate, source_name, trc, gaps)) break;
   }
+  return gaps;
+}
 
-  if (header_frames >= 0 && header_frames != trc.frame_count()) {
-    trc.warnings.push_back(format_error(ErrorLocation{source_name, values_line.number},
-                                        "header says NumFrames " + std::to_string(header_frames) +
+// Warnings for what the header said and the rows did not hold, and for samples read as missing.
+void warn_trc_counts(const TrcHeaderCounts& counts, const TrcGapCounts& gaps, long values_line,
+                     const std::string& source_name, TrcData& trc) {
+  if (counts.frames >= 0 && counts.frames != trc.frame_count()) {
+    trc.warnings.push_back(format_error(ErrorLocation{source_name, values_line},
+                                        "header says NumFrames " + std::to_string(counts.frames) +
                                             " but the file holds " + std::to_string(trc.frame_count()) +
                                             " rows; using the rows"));
   }
-  if (partial_samples > 0) {
-    trc.warnings.push_back(
-        format_error(ErrorLocation{source_name},
-                     std::to_string(partial_samples) + " marker sample(s) had only some of X/Y/Z; read as missing"));
-  }
-  if (zero_samples > 0) {
+  if (gaps.partial_samples > 0) {
     trc.warnings.push_back(format_error(
         ErrorLocation{source_name},
-        std::to_string(zero_samples) + " marker sample(s) were 0,0,0 (an exporter's gap); read as missing"));
+        std::to_string(gaps.partial_samples) + " marker sample(s) had only some of X/Y/Z; read as missing"));
   }
+  if (gaps.zero_samples > 0) {
+    trc.warnings.push_back(format_error(
+        ErrorLocation{source_name},
+        std::to_string(gaps.zero_samples) + " marker sample(s) were 0,0,0 (an exporter's gap); read as missing"));
+  }
+}
+
+}  // namespace
+
+TrcData parse_trc_text(std::string_view content, const std::string& source_name) {
+  if (text::is_blank(text::without_bom(content)))
+    text::fail_at(source_name, 1, 0, "empty file: expected a TRC header ('PathFileType …')");
+  text::require_text(content, source_name);
+  const auto lines = text::split_lines(content);
+  check_trc_first_line(lines[0].text, source_name);
+  if (lines.size() < static_cast<size_t>(kHeaderLines)) {
+    text::fail_at(source_name, static_cast<long>(lines.size()), 0,
+                  "TRC header is incomplete: expected " + std::to_string(kHeaderLines) + " header lines, found " +
+                      std::to_string(lines.size()));
+  }
+  TrcData trc;
+  const TrcHeaderCounts counts = read_trc_header_values(lines, source_name, trc);
+  read_trc_marker_names(lines, source_name, counts, trc);
+  const TrcGapCounts gaps = read_trc_rows(lines, content, source_name, trc);
+  warn_trc_counts(counts, gaps, lines[2].number, source_name, trc);
   return trc;
 }
 

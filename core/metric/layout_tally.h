@@ -63,7 +63,7 @@ void tally_frame(const PreparedFrame& frame, std::span<const DeviceView> views, 
 // A run of frames at once, as the search counts them: bits[d·stride + j] and cut_bits[d·stride + j]
 // are device d's bits in frames[j] (the kernel's per-device columns of a chunk). Adds exactly what
 // tally_frame adds frame by frame (it is how tally_frame counts), with the per-frame counting done
-// for many frames in byte-wide vector operations (the search's tally was ~10 % of its time).
+// for many frames in byte-wide vector operations (the tally runs for every layout a search scores).
 void tally_frames(std::span<const PreparedFrame> frames, std::span<const DeviceView> views, const FingerBits* bits,
                   const FingerBits* cut_bits, size_t stride, const VisibilityLimits& limits, LayoutTally& tally);
 // The same for a mixed rig: device d's off-centre penalty through its own pyramid, limits[d].

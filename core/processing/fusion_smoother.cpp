@@ -295,8 +295,7 @@ HandTrack fuse_default(const std::vector<const HandTrack*>& devices,
 
   // Inverse-variance combination of the devices per lane and step, accumulated device by device
   // in order (as the online fuser combines them). Stored step-major, as hand_to_lanes produces a
-  // step's lanes together: stored lane-major, each step's writes landed ~100 cache lines apart, and
-  // those writes were a third of the fusion's time.
+  // step's lanes together: stored lane-major, each step's writes would land ~100 cache lines apart.
   const auto steps = static_cast<size_t>(n);
   std::vector<double> wsum(kL * steps, 0.0), zsum(kL * steps, 0.0);
   std::array<float, kNumHandPoints> ones;

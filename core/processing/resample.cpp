@@ -119,6 +119,228 @@ void check_plausible_span(const LmcRecording& recording, const std::vector<std::
   place.fail(worst->row, msg.str());
 }
 
+// The stream issues of one resampling: all counted by the caller, the first few of each kind and
+// device listed in the report.
+struct IssueLog {
+  ResampleReport* report;
+  std::map<std::pair<int, int>, size_t> listed;
+  void add(StreamIssue issue) { add_issue(report, listed, std::move(issue)); }
+};
+
+// The median of `values` (reordered); `values` not empty.
+std::int64_t median_of(std::vector<std::int64_t>& values) {
+  auto mid = values.begin() + static_cast<long>(values.size() / 2);
+  std::nth_element(values.begin(), mid, values.end());
+  return *mid;
+}
+
+// Device `id`'s rows in file order, on one clock: a time going back by more than `reset_us` is a
+// clock reset, and the rest of the stream is re-based to continue one typical interval after the
+// latest time seen; a smaller step back is an out-of-order row. Sorted by time (stable).
+std::vector<Sample> rebased_stream(const LmcRecording& recording, int id, std::int64_t reset_us, const RowPlace& place,
+                                   DeviceStreamStats& st, IssueLog& issues) {
+  std::vector<Sample> s;
+  std::int64_t rebase = 0, prev = 0, running_max = 0;
+  std::vector<std::int64_t> steps;
+  bool first = true;
+  for (size_t r = 0; r < recording.rows.size(); ++r) {
+    const HandFrame& f = recording.rows[r];
+    if (f.device_id != id) continue;
+    const long row = static_cast<long>(r) + 1;
+    ++st.rows;
+    std::int64_t t = add_checked(f.timestamp_us, rebase, place, row);
+    if (!first && t < add_checked(prev, -reset_us, place, row)) {
+      // Clock reset: continue one typical interval after the latest time seen so far.
+      const std::int64_t typical = steps.empty() ? 33333 : std::max<std::int64_t>(1, median_of(steps));
+      const std::int64_t shift = add_checked(add_checked(running_max, typical, place, row), -t, place, row);
+      rebase = add_checked(rebase, shift, place, row);
+      t = add_checked(t, shift, place, row);
+      ++st.clock_resets;
+      issues.add({StreamIssueKind::kClockReset, id, row, f.timestamp_us,
+                  lmc_label(id) + " row " + std::to_string(row) + ": clock went back by " +
+                      std::to_string((prev - (t - shift)) / 1000) + " ms; stream split and re-based"});
+    } else if (!first && t < running_max) {
+      ++st.out_of_order;
+      issues.add({StreamIssueKind::kOutOfOrder, id, row, f.timestamp_us,
+                  lmc_label(id) + " row " + std::to_string(row) + ": timestamp " + std::to_string(f.timestamp_us) +
+                      " is earlier than a previous row's; sorted"});
+    }
+    if (!first && t > prev) steps.push_back(t - prev);
+    running_max = first ? t : std::max(running_max, t);
+    prev = t;
+    first = false;
+    s.push_back({t, row, &f, frame_has_hand(f)});
+  }
+  std::stable_sort(s.begin(), s.end(), [](const Sample& a, const Sample& b) { return a.t_us < b.t_us; });
+  return s;
+}
+
+// Duplicates: keeps the first row of a timestamp, drops and reports the others.
+void drop_duplicate_timestamps(std::vector<Sample>& s, DeviceStreamStats& st, IssueLog& issues) {
+  std::vector<Sample> kept;
+  kept.reserve(s.size());
+  for (const Sample& smp : s) {
+    if (!kept.empty() && kept.back().t_us == smp.t_us) {
+      const bool same = same_points(*kept.back().frame, *smp.frame);
+      ++st.duplicates;
+      issues.add({same ? StreamIssueKind::kDuplicate : StreamIssueKind::kConflictingDuplicate, st.device_id, smp.row,
+                  smp.frame->timestamp_us,
+                  lmc_label(st.device_id) + " row " + std::to_string(smp.row) + ": duplicate timestamp " +
+                      std::to_string(smp.frame->timestamp_us) + (same ? "" : " with different data") +
+                      "; row dropped"});
+      continue;
+    }
+    kept.push_back(smp);
+  }
+  s.swap(kept);
+}
+
+// The stream's hand rows, the median interval between consecutive hand samples, and the gap
+// limit that follows from it (adaptive: a number of those intervals, at least max_gap_ms).
+void measure_hand_intervals(const std::vector<Sample>& s, const ResampleOptions& options, DeviceStreamStats& st) {
+  for (const Sample& smp : s) st.hand_rows += smp.hand ? 1 : 0;
+  std::vector<std::int64_t> hand_steps;
+  for (size_t j = 1; j < s.size(); ++j) {
+    if (s[j].hand && s[j - 1].hand) hand_steps.push_back(s[j].t_us - s[j - 1].t_us);
+  }
+  if (!hand_steps.empty()) st.median_interval_ms = static_cast<double>(median_of(hand_steps)) / 1000.0;
+  st.gap_limit_ms = options.max_gap_ms;
+  if (options.adaptive_gap)
+    st.gap_limit_ms = std::max(st.gap_limit_ms, options.gap_frame_intervals * st.median_interval_ms);
+}
+
+// The grid's first and last time: from the first hand sample of any device (or the given grid
+// start) to the last.
+std::pair<std::int64_t, std::int64_t> grid_span(const std::vector<std::vector<Sample>>& streams,
+                                                const ResampleOptions& options) {
+  bool any_hand = false;
+  std::int64_t t_start = 0, t_end = 0;
+  for (const auto& s : streams) {
+    for (const Sample& smp : s) {
+      if (!smp.hand) continue;
+      if (!any_hand) {
+        t_start = t_end = smp.t_us;
+        any_hand = true;
+      }
+      t_start = std::min(t_start, smp.t_us);
+      t_end = std::max(t_end, smp.t_us);
+    }
+  }
+  if (!any_hand) throw Error("resample: no device saw a hand in this recording");
+  if (options.grid_start_us) {
+    t_start = *options.grid_start_us;
+    if (t_start > kMaxRebasedUs || t_start < -kMaxRebasedUs)
+      throw Error("resample: the given grid start is out of range");
+    if (t_end < t_start) throw Error("resample: every hand sample precedes the given grid start");
+  }
+  return {t_start, t_end};
+}
+
+// A grid from t_start to t_end at step_us, one empty (NaN) track per device of `ids`.
+GridTrial empty_grid(std::int64_t t_start, std::int64_t t_end, double step_us, double rate_hz,
+                     const std::vector<int>& ids) {
+  GridTrial grid;
+  grid.start_us = t_start;
+  grid.step_us = step_us;
+  const double frames = std::floor(static_cast<double>(t_end - t_start) / step_us + 1e-9) + 1.0;
+  if (!(frames <= static_cast<double>(kMaxGridFrames))) {
+    throw Error("resample: a grid of " + std::to_string(frames) + " frames at " + std::to_string(rate_hz) +
+                " Hz is too large (at most " + std::to_string(kMaxGridFrames) + ")");
+  }
+  grid.frame_count = static_cast<int>(frames);
+  grid.devices.resize(ids.size());
+  for (size_t di = 0; di < ids.size(); ++di) {
+    grid.devices[di].device_id = ids[di];
+    grid.devices[di].track = HandTrack(grid.frame_count);
+  }
+  return grid;
+}
+
+// Scratch space of one device's interpolation, reused piece to piece.
+struct PieceBuffers {
+  std::vector<double> pt, py, qt, qv;
+  std::vector<int> qf;
+};
+
+// The natural cubic spline through samples s[k, end) (one piece: hand samples without a hand-less
+// row or a long gap between them), evaluated at the grid times the piece spans, into `track`.
+void interpolate_piece(const std::vector<Sample>& s, size_t k, size_t end, std::int64_t t_start, double step_us,
+                       int frame_count, HandTrack& track, PieceBuffers& b) {
+  // Fit times are relative to the grid start, in seconds, for conditioning.
+  b.pt.resize(end - k);
+  b.py.resize((end - k) * kDims);  // every value written below
+  for (size_t j = k; j < end; ++j) {
+    b.pt[j - k] = static_cast<double>(s[j].t_us - t_start) * 1e-6;
+    double* row = b.py.data() + (j - k) * kDims;
+    for (int i = 0; i < kNumHandPoints; ++i) {
+      const Vec3& p = s[j].frame->point(i);
+      row[3 * i] = p.x();
+      row[3 * i + 1] = p.y();
+      row[3 * i + 2] = p.z();
+    }
+  }
+  const double step_s = step_us * 1e-6;
+  const auto f0 = static_cast<int>(std::ceil(b.pt.front() / step_s - 1e-9));
+  const auto f1 = static_cast<int>(std::floor(b.pt.back() / step_s + 1e-9));
+  b.qt.clear();
+  b.qf.clear();
+  for (int f = std::max(f0, 0); f <= std::min(f1, frame_count - 1); ++f) {
+    double tq = f * step_s;
+    // A grid time within rounding of a sample end counts as inside.
+    tq = std::clamp(tq, b.pt.front(), b.pt.back());
+    b.qt.push_back(tq);
+    b.qf.push_back(f);
+  }
+  if (b.pt.size() == 1 && b.qt.empty()) {
+    // An isolated sample between grid times is placed on the nearest grid time.
+    const auto f = static_cast<int>(std::lround(b.pt.front() / step_s));
+    if (f >= 0 && f < frame_count) {
+      b.qt.push_back(b.pt.front());
+      b.qf.push_back(f);
+    }
+  }
+  b.qv.assign(b.qt.size() * kDims, kNaN);
+  cubic_spline_eval(b.pt, b.py, kDims, b.qt, b.qv);
+  for (size_t q = 0; q < b.qf.size(); ++q) {
+    for (int i = 0; i < kNumHandPoints; ++i) {
+      const size_t at = q * kDims + static_cast<size_t>(i) * 3;
+      track.at(b.qf[q], i) = Vec3(b.qv[at], b.qv[at + 1], b.qv[at + 2]);
+    }
+  }
+}
+
+// One device's stream onto the grid, piece by piece (maximal runs of hand samples with no
+// hand-less row and no gap over the device's limit inside); each long gap is counted and reported.
+void interpolate_device(const std::vector<Sample>& s, std::int64_t t_start, double step_us, int frame_count,
+                        HandTrack& track, DeviceStreamStats& st, IssueLog& issues) {
+  const auto gap_us = static_cast<std::int64_t>(std::llround(st.gap_limit_ms * 1000.0));
+  std::int64_t first_hand = -1, last_hand = -1;
+  PieceBuffers buffers;
+  size_t k = 0;
+  while (k < s.size()) {
+    if (!s[k].hand) {
+      ++k;
+      continue;
+    }
+    size_t end = k + 1;
+    while (end < s.size() && s[end].hand && s[end].t_us - s[end - 1].t_us <= gap_us) ++end;
+    if (end < s.size() && s[end].hand) {
+      ++st.gaps;
+      issues.add({StreamIssueKind::kGap, st.device_id, s[end].row, s[end].frame->timestamp_us,
+                  lmc_label(st.device_id) + " row " + std::to_string(s[end].row) + ": " +
+                      std::to_string((s[end].t_us - s[end - 1].t_us) / 1000) +
+                      " ms without a sample; not interpolated"});
+    }
+    if (first_hand < 0) first_hand = s[k].t_us;
+    last_hand = s[end - 1].t_us;
+    interpolate_piece(s, k, end, t_start, step_us, frame_count, track, buffers);
+    k = end;
+  }
+  if (first_hand >= 0 && last_hand > first_hand) {
+    st.mean_rate_hz = (st.hand_rows - 1) / (static_cast<double>(last_hand - first_hand) * 1e-6);
+  }
+}
+
 }  // namespace
 
 void cubic_spline_eval(const std::vector<double>& t, const std::vector<double>& y, int dims,
@@ -214,200 +436,25 @@ GridTrial resample_recording(const LmcRecording& recording, const ResampleOption
   }
   const double step_us = 1e6 / options.rate_hz;
   const auto reset_us = static_cast<std::int64_t>(std::llround(options.clock_reset_ms * 1000.0));
-  std::map<std::pair<int, int>, size_t> listed;
+  IssueLog issues{report, {}};
 
   const RowPlace place(recording);
   const std::vector<int> ids = recording.device_ids();
   std::vector<std::vector<Sample>> streams(ids.size());
   std::vector<DeviceStreamStats> stats(ids.size());
-
   for (size_t di = 0; di < ids.size(); ++di) {
-    const int id = ids[di];
     auto& st = stats[di];
-    st.device_id = id;
-    auto& s = streams[di];
-    std::int64_t rebase = 0, prev = 0, running_max = 0;
-    std::vector<std::int64_t> steps;
-    bool first = true;
-    for (size_t r = 0; r < recording.rows.size(); ++r) {
-      const HandFrame& f = recording.rows[r];
-      if (f.device_id != id) continue;
-      const long row = static_cast<long>(r) + 1;
-      ++st.rows;
-      std::int64_t t = add_checked(f.timestamp_us, rebase, place, row);
-      if (!first && t < add_checked(prev, -reset_us, place, row)) {
-        // Clock reset: continue one typical interval after the latest time seen so far.
-        std::int64_t typical = 33333;
-        if (!steps.empty()) {
-          auto mid = steps.begin() + static_cast<long>(steps.size() / 2);
-          std::nth_element(steps.begin(), mid, steps.end());
-          typical = std::max<std::int64_t>(1, *mid);
-        }
-        const std::int64_t shift = add_checked(add_checked(running_max, typical, place, row), -t, place, row);
-        rebase = add_checked(rebase, shift, place, row);
-        t = add_checked(t, shift, place, row);
-        ++st.clock_resets;
-        add_issue(report, listed,
-                  {StreamIssueKind::kClockReset, id, row, f.timestamp_us,
-                   lmc_label(id) + " row " + std::to_string(row) + ": clock went back by " +
-                       std::to_string((prev - (t - shift)) / 1000) + " ms; stream split and re-based"});
-      } else if (!first && t < running_max) {
-        ++st.out_of_order;
-        add_issue(report, listed,
-                  {StreamIssueKind::kOutOfOrder, id, row, f.timestamp_us,
-                   lmc_label(id) + " row " + std::to_string(row) + ": timestamp " + std::to_string(f.timestamp_us) +
-                       " is earlier than a previous row's; sorted"});
-      }
-      if (!first && t > prev) steps.push_back(t - prev);
-      running_max = first ? t : std::max(running_max, t);
-      prev = t;
-      first = false;
-      s.push_back({t, row, &f, frame_has_hand(f)});
-    }
-    std::stable_sort(s.begin(), s.end(), [](const Sample& a, const Sample& b) { return a.t_us < b.t_us; });
-    // Duplicates: keep the first row of a timestamp, drop and report the others.
-    std::vector<Sample> kept;
-    kept.reserve(s.size());
-    for (const Sample& smp : s) {
-      if (!kept.empty() && kept.back().t_us == smp.t_us) {
-        const bool same = same_points(*kept.back().frame, *smp.frame);
-        ++st.duplicates;
-        add_issue(
-            report, listed,
-            {same ? StreamIssueKind::kDuplicate : StreamIssueKind::kConflictingDuplicate, id, smp.row,
-             smp.frame->timestamp_us,
-             lmc_label(id) + " row " + std::to_string(smp.row) + ": duplicate timestamp " +
-                 std::to_string(smp.frame->timestamp_us) + (same ? "" : " with different data") + "; row dropped"});
-        continue;
-      }
-      kept.push_back(smp);
-    }
-    s.swap(kept);
-    for (const Sample& smp : s) st.hand_rows += smp.hand ? 1 : 0;
-    std::vector<std::int64_t> hand_steps;
-    for (size_t j = 1; j < s.size(); ++j) {
-      if (s[j].hand && s[j - 1].hand) hand_steps.push_back(s[j].t_us - s[j - 1].t_us);
-    }
-    if (!hand_steps.empty()) {
-      auto mid = hand_steps.begin() + static_cast<long>(hand_steps.size() / 2);
-      std::nth_element(hand_steps.begin(), mid, hand_steps.end());
-      st.median_interval_ms = static_cast<double>(*mid) / 1000.0;
-    }
-    st.gap_limit_ms = options.max_gap_ms;
-    if (options.adaptive_gap)
-      st.gap_limit_ms = std::max(st.gap_limit_ms, options.gap_frame_intervals * st.median_interval_ms);
+    st.device_id = ids[di];
+    streams[di] = rebased_stream(recording, ids[di], reset_us, place, st, issues);
+    drop_duplicate_timestamps(streams[di], st, issues);
+    measure_hand_intervals(streams[di], options, st);
   }
 
-  // Grid: from the first hand sample of any device to the last.
-  bool any_hand = false;
-  std::int64_t t_start = 0, t_end = 0;
-  for (const auto& s : streams) {
-    for (const Sample& smp : s) {
-      if (!smp.hand) continue;
-      if (!any_hand) {
-        t_start = t_end = smp.t_us;
-        any_hand = true;
-      }
-      t_start = std::min(t_start, smp.t_us);
-      t_end = std::max(t_end, smp.t_us);
-    }
-  }
-  if (!any_hand) throw Error("resample: no device saw a hand in this recording");
-  if (options.grid_start_us) {
-    t_start = *options.grid_start_us;
-    if (t_start > kMaxRebasedUs || t_start < -kMaxRebasedUs)
-      throw Error("resample: the given grid start is out of range");
-    if (t_end < t_start) throw Error("resample: every hand sample precedes the given grid start");
-  }
+  const auto [t_start, t_end] = grid_span(streams, options);
   check_plausible_span(recording, streams, t_start, t_end, options, place);
-
-  GridTrial grid;
-  grid.start_us = t_start;
-  grid.step_us = step_us;
-  const double frames = std::floor(static_cast<double>(t_end - t_start) / step_us + 1e-9) + 1.0;
-  if (!(frames <= static_cast<double>(kMaxGridFrames))) {
-    throw Error("resample: a grid of " + std::to_string(frames) + " frames at " + std::to_string(options.rate_hz) +
-                " Hz is too large (at most " + std::to_string(kMaxGridFrames) + ")");
-  }
-  grid.frame_count = static_cast<int>(frames);
-  grid.devices.resize(ids.size());
-
+  GridTrial grid = empty_grid(t_start, t_end, step_us, options.rate_hz, ids);
   for (size_t di = 0; di < ids.size(); ++di) {
-    auto& dev = grid.devices[di];
-    dev.device_id = ids[di];
-    dev.track = HandTrack(grid.frame_count);
-    const auto& s = streams[di];
-    auto& st = stats[di];
-    const auto gap_us = static_cast<std::int64_t>(std::llround(st.gap_limit_ms * 1000.0));
-    std::int64_t first_hand = -1, last_hand = -1;
-    // Walk pieces: maximal runs of hand samples with no hand-less row and no long gap inside.
-    size_t k = 0;
-    std::vector<double> pt, py, qt, qv;
-    std::vector<int> qf;
-    while (k < s.size()) {
-      if (!s[k].hand) {
-        ++k;
-        continue;
-      }
-      size_t end = k + 1;
-      while (end < s.size() && s[end].hand && s[end].t_us - s[end - 1].t_us <= gap_us) ++end;
-      if (end < s.size() && s[end].hand) {
-        ++st.gaps;
-        add_issue(
-            report, listed,
-            {StreamIssueKind::kGap, ids[di], s[end].row, s[end].frame->timestamp_us,
-             lmc_label(ids[di]) + " row " + std::to_string(s[end].row) + ": " +
-                 std::to_string((s[end].t_us - s[end - 1].t_us) / 1000) + " ms without a sample; not interpolated"});
-      }
-      if (first_hand < 0) first_hand = s[k].t_us;
-      last_hand = s[end - 1].t_us;
-      // Fit times are relative to the grid start, in seconds, for conditioning.
-      pt.resize(end - k);
-      py.resize((end - k) * kDims);  // every value written below
-      for (size_t j = k; j < end; ++j) {
-        pt[j - k] = static_cast<double>(s[j].t_us - t_start) * 1e-6;
-        double* row = py.data() + (j - k) * kDims;
-        for (int i = 0; i < kNumHandPoints; ++i) {
-          const Vec3& p = s[j].frame->point(i);
-          row[3 * i] = p.x();
-          row[3 * i + 1] = p.y();
-          row[3 * i + 2] = p.z();
-        }
-      }
-      const double step_s = step_us * 1e-6;
-      const auto f0 = static_cast<int>(std::ceil(pt.front() / step_s - 1e-9));
-      const auto f1 = static_cast<int>(std::floor(pt.back() / step_s + 1e-9));
-      qt.clear();
-      qf.clear();
-      for (int f = std::max(f0, 0); f <= std::min(f1, grid.frame_count - 1); ++f) {
-        double tq = f * step_s;
-        // A grid time within rounding of a sample end counts as inside.
-        tq = std::clamp(tq, pt.front(), pt.back());
-        qt.push_back(tq);
-        qf.push_back(f);
-      }
-      if (pt.size() == 1 && qt.empty()) {
-        // An isolated sample between grid times is placed on the nearest grid time.
-        const auto f = static_cast<int>(std::lround(pt.front() / step_s));
-        if (f >= 0 && f < grid.frame_count) {
-          qt.push_back(pt.front());
-          qf.push_back(f);
-        }
-      }
-      qv.assign(qt.size() * kDims, kNaN);
-      cubic_spline_eval(pt, py, kDims, qt, qv);
-      for (size_t q = 0; q < qf.size(); ++q) {
-        for (int i = 0; i < kNumHandPoints; ++i) {
-          dev.track.at(qf[q], i) =
-              Vec3(qv[q * kDims + static_cast<size_t>(i) * 3], qv[q * kDims + static_cast<size_t>(i) * 3 + 1],
-                   qv[q * kDims + static_cast<size_t>(i) * 3 + 2]);
-        }
-      }
-      k = end;
-    }
-    if (first_hand >= 0 && last_hand > first_hand) {
-      st.mean_rate_hz = (st.hand_rows - 1) / (static_cast<double>(last_hand - first_hand) * 1e-6);
-    }
+    interpolate_device(streams[di], t_start, step_us, grid.frame_count, grid.devices[di].track, stats[di], issues);
   }
   if (report != nullptr) report->devices = std::move(stats);
   return grid;

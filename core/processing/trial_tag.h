@@ -1,6 +1,6 @@
 #pragma once
 // What a trial's name says about it. The study names trials `<Layout>_<Motion><P><RR>`
-// (e.g. `Naiv_Static101`, reference-data/README.md; the LMC file adds `LMC_` / `Interp_LMC_`):
+// (e.g. `Naiv_Static101`, core/processing/README.md; the LMC file adds `LMC_` / `Interp_LMC_`):
 //   Layout  Naiv → "initial", Opti → "optimized"
 //   Motion  Static → "static", Index → "index", Thumb → "thumb", Wrist → "wrist" (flexion);
 //           the authors' sample files also use "Trial" for a dynamic trial → "dynamic"

@@ -106,7 +106,7 @@ std::string format_measures_tsv(const TrialResult& r) {
   }
   o += '\n';
   // Each row is built in a buffer of its own and appended once (as the fused file's rows are,
-  // lmc_recording.cpp): appending number by number cost a third of writing the table. A value the
+  // lmc_recording.cpp): appending number by number costs a check per number. A value the
   // quick writer does not take (1e15 mm, say) is appended the general way, the row so far first.
   constexpr size_t kValues = kNumSegments + kNumFingers + kNumAngles;
   const size_t row_room = (2 + 2 * kValues + r.labels.size() * kNumDigits) * 32 + static_cast<size_t>(kFixedQuickRoom);

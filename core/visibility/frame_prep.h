@@ -48,8 +48,8 @@ struct PreparedFrame {
 // The palm plane's unit normal from the palm points minus their centroid: the study's "right
 // singular vector of the smallest singular value", computed as the eigenvector of the smallest
 // eigenvalue of the 3 × 3 scatter matrix (least_variance_direction). That is the same line (to
-// 1e-13 or better for a hand's palm; PalmNormal.* compares it with an SVD) in a fifth of the time
-// of Eigen's 6 × 3 JacobiSVD, which was a third of preparing a frame. Its sign is arbitrary, as an
+// 1e-13 or better for a hand's palm; PalmNormal.* compares it with an SVD) in much less time than
+// Eigen's 6 × 3 JacobiSVD, on a path run once per frame of every device. Its sign is arbitrary, as an
 // SVD's is: the palm test divides one dot product with it by another, so the sign cancels exactly.
 Eigen::Vector3d palm_plane_normal(const Eigen::Matrix<double, kNumPalmPoints, 3>& centred);
 

@@ -2,9 +2,9 @@
 // The finger-occlusion test (visibility step 4) for CPUs with AVX-512: the ray against all 16 lanes of the ring's
 // first block (the 15 phalanges and lane 15, a copy of lane 0) in two 8-lane registers, with the
 // ray's own finger and lane 15 masked off, so the lanes tested are exactly others_occlude's 12
-// (phalanx_ring.h). Why it is faster than the AVX2 build of others_occlude (the kernel takes about
-// a quarter less time, 0.64–0.87 of it in paired runs on layouts that see the hand; README): the CPUs
-// here run two 512-bit multiplies per cycle as they run two 256-bit ones, so 8 lanes per
+// (phalanx_ring.h). Why it is faster than the AVX2 build of others_occlude (measured in
+// docs/results/placement.md): CPUs with two 512-bit FMA units run two 512-bit multiplies per cycle
+// as they run two 256-bit ones, so 8 lanes per
 // instruction halve the instructions of the AVX2 build's 4; every ray of a frame reads the same
 // block at the same aligned place, so the block stays in registers (AVX-512 has 32) instead of
 // being reloaded at a finger-dependent offset.
@@ -73,7 +73,7 @@ inline constexpr __mmask8 kAllLanes = 0xFF;
   }
   if ((near[0] | near[1]) == 0) return false;
   // Stage 2: is the closest approach inside the ray segment and inside the phalanx? Both blocks
-  // (skipping a block without a near lane was measured: no faster, the branch is unpredictable).
+  // (skipping a block without a near lane gains nothing: the branch is unpredictable).
   const __m512d v2 = _mm512_set1_pd(vv);
   __mmask8 hit_any = 0;
   for (int q = 0; q < 2; ++q) {

@@ -2,8 +2,8 @@
 // The batch kernel's form of the finger-occlusion test, visibility step 4 (visibility_tests.h has the
 // reference form, which the explaining path uses). Same expressions, evaluated in the same order
 // per (ray, phalanx), so every decision is bit-for-bit the reference's; only the work around them
-// differs. Why it is faster, measured on the 10,000-frame Monte Carlo set with layouts that see
-// the hand (where this test is ~85 % of a robust search's instructions):
+// differs. Why it is faster (this test is most of a robust search's instructions; the measurements
+// are in docs/results/placement.md):
 //
 //  * Only the 12 phalanges of the other four fingers are tested. The reference block has 16 lanes
 //    (15 phalanges + a dummy) and masks the ray's own finger away afterwards, so a quarter of the
@@ -12,12 +12,12 @@
 //    others_start(f) … others_start(f) + 11: three AVX2 vectors, no mask, no remainder.
 //  * The test runs in two stages. Stage 1 is the line-distance condition (n·e)² < r²·n·n with
 //    n·n > 0; only when some lane passes it does stage 2 compute the segment conditions on t1 and
-//    t2. Stage 1 alone clears ~45 % of rays (a ray to a seen fingertip usually passes more than a
+//    t2. Stage 1 alone clears most rays (a ray to a seen fingertip usually passes more than a
 //    radius from every other finger's line); stage 2 reuses n·n from stage 1.
 //
-// Cheaper bounding volumes were measured and rejected: a sphere around each other finger
-// (radius + 10 mm) clears only ~18 % of rays, a sphere around each phalanx ~38 %, and the
-// phalanx spheres cost about as much as stage 1, which is exact and clears more.
+// No cheaper bounding volume in front: a sphere around each other finger or around each phalanx
+// clears fewer rays than stage 1, and the phalanx spheres cost about as much as stage 1, which is
+// exact.
 #include <cstdint>
 
 #include "core/visibility/device_view.h"
@@ -67,7 +67,7 @@ struct PhalanxRing {
 // exactly phalanx_occludes(…) for any of them (see visibility_tests.h for the derivation). Plain
 // loops over all 12 lanes with branch-free bodies and integer masks, so that GCC vectorises both
 // stages. (Running stage 2 only on the groups of four lanes that kept a lane, with GCC vector
-// extensions or with 4-lane loops, was measured: both compiled to more instructions.)
+// extensions or with 4-lane loops, compiles to more instructions.)
 [[gnu::always_inline]] inline bool others_occlude(const PhalanxRing& r, int start, double vx, double vy, double vz,
                                                   double vv, double radius_sq) {
   const double* const wx = r.wx + start;

@@ -43,8 +43,9 @@ Recorder::Recorder(RecorderConfig config)
 }
 
 Recorder::~Recorder() {
+  stop_requested_ = true;
   if (thread_.joinable()) {
-    stop_requested_ = true;
+    thread_.request_stop();
     thread_.join();
   }
 }
@@ -63,7 +64,7 @@ void Recorder::start() {
     throw Error(ErrorLocation(paths_.recording.string()), "cannot write recording header: " + sink_->error());
   // A sidecar exists from the first second on, so even a crashed session says what it was.
   write_file_atomically(paths_.sidecar, recorder_sidecar_to_json(sidecar("recording")).dump(2) + "\n");
-  thread_ = std::thread([this] { run(); });
+  thread_ = std::jthread([this](std::stop_token stop) { writer_main(std::move(stop)); });
 }
 
 void Recorder::open_window(std::int64_t from_ns, std::int64_t until_ns) {
@@ -89,6 +90,7 @@ void Recorder::open_window(std::int64_t from_ns, std::int64_t until_ns) {
       ++stats_[queued.frame.device_id].frames_dropped_queue;
     }
   }
+  if (!held_before_go_.empty()) wake_writer();
   held_before_go_.clear();
 }
 
@@ -147,11 +149,15 @@ bool Recorder::offer(const HandFrame& frame, std::int64_t host_receive_ns, bool 
   }
   bool pushed = queue_.try_push(queued);
   while (!pushed && may_wait && !failed_.load() && !stop_requested_.load()) {
-    lock.unlock();
-    std::this_thread::sleep_for(std::chrono::microseconds(200));
-    lock.lock();
+    // Full: wait for the writer to take frames (it notifies room_ when a producer waits). The
+    // writer never takes producer_mutex_, so a notification may come just before this wait; the
+    // timeout bounds that case, and notices a failure or a stop.
+    producers_waiting_.fetch_add(1);
+    room_.wait_for(lock, std::chrono::milliseconds(1));
+    producers_waiting_.fetch_sub(1);
     pushed = queue_.try_push(queued);
   }
+  if (pushed) wake_writer();
   lock.unlock();
   if (!pushed) {
     dropped_.fetch_add(1);
@@ -301,7 +307,36 @@ bool Recorder::push_buffer(std::string& buffer, std::vector<PendingRow>& pending
   return ok;
 }
 
-void Recorder::run() {
+void Recorder::wake_writer() {
+  // Taking the writer's lock orders this push before its check for an empty ring: it either sees
+  // the frame or is already waiting and gets the notification.
+  { std::lock_guard lock(wake_mutex_); }
+  wake_.notify_one();
+}
+
+void Recorder::writer_main(std::stop_token stop) noexcept {
+  try {
+    run(stop);
+    return;
+  } catch (const std::exception& e) {
+    fail(std::string("recording stopped: the writer failed (") + e.what() +
+         "); the rows written before this point are kept");
+  } catch (...) {
+    fail("recording stopped: the writer failed (an unknown error); the rows written before this point are kept");
+  }
+  // Failed: producers drop what they offer from now on; what is queued is discarded, and the
+  // file is closed so that what reached it stays readable.
+  try {
+    QueuedFrame discarded;
+    while (queue_.try_pop(discarded)) {
+    }
+    if (sink_) sink_->close();
+  } catch (...) {
+    // The failure above is already the recording's error; a second one adds nothing to act on.
+  }
+}
+
+void Recorder::run(const std::stop_token& stop) {
   std::string buffer;
   buffer.reserve(kWriteChunkBytes + 4096);
   std::vector<PendingRow> pending;
@@ -309,10 +344,11 @@ void Recorder::run() {
   const auto interval = std::chrono::milliseconds(config_.flush_interval_ms);
   QueuedFrame queued;
   for (;;) {
-    const bool stopping = stop_requested_.load();
+    const bool stopping = stop.stop_requested();
     int popped = 0;
     while (queue_.try_pop(queued)) {
       ++popped;
+      if (producers_waiting_.load() > 0) room_.notify_all();
       if (failed_) continue;  // keep draining so producers are not stuck; nothing more is written
       write_queued_frame(queued, buffer, pending);
       if (buffer.size() >= kWriteChunkBytes) push_buffer(buffer, pending);
@@ -329,7 +365,11 @@ void Recorder::run() {
       last_push = now;
     }
     if (stopping && queue_.size_approx() == 0) break;
-    if (popped == 0) std::this_thread::sleep_for(std::chrono::milliseconds(2));
+    if (popped == 0) {
+      // Nothing came: sleep until a frame, the next flush or a stop request.
+      std::unique_lock lock(wake_mutex_);
+      wake_.wait_until(lock, stop, last_push + interval, [this] { return queue_.size_approx() > 0; });
+    }
   }
   if (!failed_) {
     if (!sink_->sync()) fail("recording stopped: " + sink_->error());
@@ -341,7 +381,10 @@ RecorderStatus Recorder::stop(const std::vector<std::pair<std::string, std::stri
                               const std::string& abort_reason) {
   if (!started_) return status();
   stop_requested_ = true;
-  if (thread_.joinable()) thread_.join();
+  if (thread_.joinable()) {
+    thread_.request_stop();
+    thread_.join();
+  }
   {
     std::lock_guard lock(stats_mutex_);
     // A write error of our own is the first cause and keeps "failed"; otherwise the caller's

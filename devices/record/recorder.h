@@ -1,13 +1,18 @@
 #pragma once
 // The trial recorder: every frame of every device goes to one file in the study's raw
 // format (core/io/lmc_recording.h, so existing tools read it) plus a JSON sidecar describing the
-// session (sessions/README.md). Frames arrive from device threads through a bounded SPSC queue
-// (docs/architecture.md); a writer thread of its own formats and writes them, pushing its buffer to
-// the file at least once a second, so a crash loses at most the last second and leaves a
-// readable file. A write error (disk full) stops the recording with a clear message and keeps
-// everything written before it.
+// session (sessions/README.md). Frames arrive from several device threads; they take turns
+// (producer_mutex_) to push into a bounded single-producer/single-consumer ring, so the ring sees
+// one producer at a time and the writer never takes a producer's lock (docs/architecture.md). A
+// writer thread of its own (a std::jthread, stopped through its stop token) sleeps on a condition
+// variable until frames arrive, formats and writes them, and pushes its buffer to the file at
+// least once a second, so a crash loses at most the last second and leaves a readable file. A
+// write error (disk full) stops the recording with a clear message and keeps everything written
+// before it; so does an exception in the writer, which ends the recording as failed instead of
+// terminating the program.
 #include <array>
 #include <atomic>
+#include <condition_variable>
 #include <cstdint>
 #include <deque>
 #include <filesystem>
@@ -18,6 +23,7 @@
 #include <mutex>
 #include <nlohmann/json.hpp>
 #include <optional>
+#include <stop_token>
 #include <string>
 #include <thread>
 #include <vector>
@@ -152,7 +158,11 @@ class Recorder final : public FrameConsumer {
     HandFrame frame;
     std::int64_t host_receive_ns = 0;
   };
-  void run();
+  // The writer thread's entry: run() with every exception caught and reported as the failure.
+  void writer_main(std::stop_token stop) noexcept;
+  void run(const std::stop_token& stop);
+  // Wakes the writer after a push (any producer, producer_mutex_ held).
+  void wake_writer();
   // A formatted row waiting in the write buffer; its statistics count once it reached the file.
   struct PendingRow {
     int device_id = 0;
@@ -183,7 +193,17 @@ class Recorder final : public FrameConsumer {
   std::string window_from_utc_;  // stats_mutex_
   std::unique_ptr<ByteSink> sink_;
   SpscQueue<QueuedFrame> queue_;
-  std::mutex producer_mutex_;  // serialises producers (several device threads); never taken by the writer
+  // Serialises producers (several device threads), so the ring has one producer at a time; never
+  // taken by the writer.
+  std::mutex producer_mutex_;
+  // A producer that may wait for room sleeps on room_ (under producer_mutex_) while the ring is
+  // full; the writer notifies it as it takes frames.
+  std::condition_variable room_;
+  std::atomic<int> producers_waiting_{0};
+  // The writer sleeps on wake_ (under wake_mutex_) while the ring is empty, until a push, its
+  // flush deadline or a stop request.
+  std::mutex wake_mutex_;
+  std::condition_variable_any wake_;
   mutable std::mutex stats_mutex_;
   std::map<int, DeviceRecordStats> stats_;
   std::map<int, std::int64_t> last_frame_id_;
@@ -199,11 +219,11 @@ class Recorder final : public FrameConsumer {
   std::string error_;
   std::atomic<bool> failed_{false};
   std::atomic<bool> aborted_{false};
-  std::atomic<bool> stop_requested_{false};
+  std::atomic<bool> stop_requested_{false};  // no frame of the trial is accepted any more
   std::atomic<bool> started_{false};
   std::atomic<std::int64_t> dropped_{0};
   std::atomic<std::int64_t> written_{0};
-  std::thread thread_;
+  std::jthread thread_;  // last: stopped and joined before anything it uses is destroyed
 };
 
 const char* recorder_state_name(RecorderState s);

@@ -14,8 +14,8 @@
 // `study_errors: true` in the simulator JSON switches this on with the values fitted to the
 // shared real trial and the paper (study_errors_preset(); devices/README.md, "Simulator: study
 // errors"), and sets the residual device-to-world misalignment with the existing
-// calibration_random_* settings. Every value can still be overridden key by key. Off by default,
-// so today's simulated trials are unchanged byte for byte.
+// calibration_random_* settings. Every value can still be overridden key by key. Off by default:
+// the default simulator's trials do not depend on this model.
 #include <array>
 #include <nlohmann/json_fwd.hpp>
 

@@ -111,7 +111,7 @@ Layout soak_layout(int devices);
 // time). Throws lmc::Error for a bad config or an output folder it cannot use.
 SoakReport run_soak(const SoakConfig& config, const std::function<void(const std::string&)>& progress = {});
 
-// "soak: 57600 frames from 16 controllers in 30 s, 0 lost, heap 10→10 MB, RSS 61→64 MB, fds 9→9"
+// "soak: 57600 frames from 16 controllers in 30 s, 0 lost, heap 10→10 MB, RSS 61→64 MB, fds 9→9" (contract-figure)
 std::string soak_summary_line(const SoakReport& report);
 nlohmann::json soak_report_to_json(const SoakReport& report);
 

@@ -5,6 +5,8 @@
 #include <cstring>
 #include <fstream>
 #include <map>
+#include <memory>
+#include <stdexcept>
 #include <thread>
 
 #include <sys/resource.h>
@@ -263,6 +265,53 @@ TEST(Recorder, DiskFullStopsTheTrialWithAClearMessageAndKeepsWhatWasWritten) {
   for (const auto& r : back.rows) ++per_device[r.device_id];
   for (const auto& d : side["devices"])
     EXPECT_EQ(d["frames_written"].get<std::int64_t>(), per_device[d["device_id"].get<int>()]) << d["slot"];
+}
+
+// A sink whose write throws once `throw_after` bytes reached the file: stands for anything the
+// writer thread did not expect (a formatting error, memory exhausted).
+class ThrowingSink final : public ByteSink {
+ public:
+  ThrowingSink(std::unique_ptr<ByteSink> inner, std::uint64_t throw_after)
+      : inner_(std::move(inner)), throw_after_(throw_after) {}
+  bool write(std::string_view data) override {
+    if (inner_->bytes_written() >= throw_after_) throw std::runtime_error("sink exploded");
+    return inner_->write(data);
+  }
+  bool sync() override { return inner_->sync(); }
+  bool close() override { return inner_->close(); }
+  std::string error() const override { return inner_->error(); }
+  std::uint64_t bytes_written() const override { return inner_->bytes_written(); }
+
+ private:
+  std::unique_ptr<ByteSink> inner_;
+  std::uint64_t throw_after_;
+};
+
+TEST(Recorder, AnExceptionInTheWriterFailsTheTrialInsteadOfEndingTheProgram) {
+  RecorderConfig rc = test::recorder_config(test::scratch_dir("rec_throw"), "throws");
+  rc.flush_interval_ms = 20;
+  rc.open_sink = [](const std::filesystem::path& p) { return std::make_unique<ThrowingSink>(open_file_sink(p), 1); };
+  Recorder rec(rc);
+  rec.start();  // the header (the first bytes) goes through; the first rows throw
+  int offered = 0;
+  for (int i = 1; i <= 5000 && !rec.failed(); ++i) {
+    offer_frame(rec, i, true);
+    ++offered;
+    if (i % 100 == 0) std::this_thread::sleep_for(std::chrono::milliseconds(25));
+  }
+  ASSERT_TRUE(rec.failed()) << "the writer's exception never reached the status";
+  // Frames offered after the failure are refused and counted, never queued for a dead writer.
+  EXPECT_FALSE(offer_frame(rec, offered + 1, true));
+  const auto st = rec.stop();
+  ASSERT_EQ(st.state, RecorderState::kFailed);
+  EXPECT_NE(st.error.find("the writer failed (sink exploded)"), std::string::npos) << st.error;
+  EXPECT_EQ(st.frames_written, 0);
+  EXPECT_GE(st.frames_dropped, 1);
+  const auto side = read_json(rec.paths().sidecar);
+  EXPECT_EQ(side["status"], "failed");
+  EXPECT_NE(side["error"].get<std::string>().find("sink exploded"), std::string::npos);
+  // The file holds its header and is still a readable (empty) recording.
+  EXPECT_TRUE(read_lmc_recording(rec.paths().recording).rows.empty());
 }
 
 TEST(Recorder, FileSinkReportsARealDeviceFullError) {

@@ -1,6 +1,6 @@
 #pragma once
 // Tests that read the study's data folder find it here and skip, saying why, when it is absent
-// (reference-data/README.md: the files may not be copied into the project).
+// (the study's files are distributed with the study and may not be copied into the project).
 #include <gtest/gtest.h>
 
 #include <filesystem>

@@ -1,42 +1,7 @@
 // lmc bench: visibility throughput, what the robust metric's terms cost, and search times on the
-// default Monte Carlo pose set.
-//
-// Text and --json report the same figures. JSON keys:
-//   "frames"            pose-set size (default 10000, Monte Carlo seed 1)
-//   "threads"           threads used for the "all threads" figures
-//   "kernel_build"      the visibility kernel's build that ran: "AVX-512", "AVX2" or "baseline"
-//   "cases"             array of {"name", "layouts", "devices",
-//                        "single_thread_evals_per_s", "all_threads_evals_per_s"}: (device, frame)
-//                        visibility tests per second including the c_i reduction, for
-//                        "paper-initial" (every device sees the whole hand: every test runs),
-//                        "paper-optimized" and "random" (30 random 4-device layouts from the
-//                        authors' search box), then the same 30 layouts as rigs of other
-//                        controller models (assets/sensors/sensors.json): "random-lmc" (four
-//                        LMCs), "random-lmc2" (four LMC2s) and "random-mixed" (LMC2, LMC2, LMC, LMC)
-//   "mixed_rig"         what mixed rigs cost against uniform rigs of their models, free of the
-//                        machine's drift: the 30 random layouts on the first 2,000 frames (or all),
-//                        one thread, as LMC × 4, LMC2 × 4, LMC2, LMC2, LMC, LMC and LMC, LMC, LMC2,
-//                        LMC2 run in adjacent rounds of four (order rotated). The two mixed rigs
-//                        together place every device once as each model, as the two uniform rigs
-//                        do, so their times compare free of which slots happen to see the hand:
-//                        {"frames", "rounds", "lmc_seconds", "lmc2_seconds", "mixed_seconds",
-//                        "mixed_swapped_seconds" (medians), "ratio" (median of the rounds'
-//                        (mixed + swapped) / (lmc + lmc2); 1 when a mixed rig costs what its
-//                        devices cost in uniform rigs)}
-//   "search"            {"particles", "iterations", "seconds", "evals_per_s", "best_cost"} for
-//                        one PSO run on all threads with the study's metric in the authors' box
-//                        (absent with --no-search, or when --searches leaves out study-box)
-//   "searches"          array, one per search of --searches (default all three, in this order):
-//                        {"name": "study-box" | "study-table" | "robust-table", "metric": "study" |
-//                        "robust", "bounds" (the --bounds text), "particles", "iterations",
-//                        "seconds", "evals_per_s", "best_cost", "layouts_stopped_early"}
-//   "processing"        with --processing DIR only (and then alone): {"input", "trials", "runs",
-//                        "threads", "default" and "both" (--compare-methods), each {"wall_seconds",
-//                        "cpu_seconds" (per run; CPU = user + system of the whole process),
-//                        "median_wall_s", "median_cpu_s"}}: the folder processed as lmc process
-//                        does, every output written and synced, into a scratch folder
-//   "robust_terms_cost" robust-table's seconds / study-table's − 1: what the robust metric's terms
-//                        cost a whole search on the same bounds (only when both ran)
+// default Monte Carlo pose set; with --processing DIR, what processing a session folder takes.
+// Text and --json report the same figures; the JSON keys and their meaning are documented once,
+// in docs/cli.md ("lmc bench --json"), and a key added here is added there.
 #include <tbb/info.h>
 #include <tbb/task_arena.h>
 
@@ -117,7 +82,7 @@ double measure(const std::vector<lmc::DeviceView>& views, int layouts, int devic
 }
 
 // What the robust metric's terms cost per evaluation, measured so that the machine's drift (runs
-// of the same search differ by up to 1.5× here, in phases of seconds) cancels: the study's
+// of the same search differ widely, in phases of seconds) cancels: the study's
 // histograms and the robust tallies of the same layouts on the same frames, one thread, in short
 // adjacent pairs (the order swapped every pair), until `min_seconds` have passed and at least 15
 // pairs ran; the median of the pairs' ratios, and the median time of each.

@@ -141,7 +141,7 @@ TEST(Resample, ReportsOutOfOrderDuplicatesAndClockResets) {
   bool conflicting = false;
   for (const auto& i : report.issues) conflicting = conflicting || i.kind == StreamIssueKind::kConflictingDuplicate;
   EXPECT_TRUE(conflicting);
-  // Re-based: the post-reset part continues after 160 ms (typical step 30 ms → 190 ms, 220 ms).
+  // Re-based: the post-reset part continues after 160 ms (typical step 30 ms: 190 ms, 220 ms).
   EXPECT_EQ(g.start_us, 100'000);
   EXPECT_EQ(g.frame_count, 13);  // 100 … 220 ms
 }

@@ -18,12 +18,11 @@ struct ParamRange {
   bool operator==(const ParamRange&) const = default;
 };
 
-// Search box per pose parameter, shared by all devices. Defaults: the study's box
-// (docs/algorithms/search.md): x, z ∈ [−1000, 1000] mm, rx ∈ [−90, 90]°, ry ∈ [−180, 180]°;
-// y and rz are locked by default (the paper searched {x, z, rx, ry}).
-// Default: the table drawn in the scene (core's table_search_space: every controller whole on the
-// ±400 mm table top), not the authors' ±1000 mm box, which let the search park a controller off
-// the table.
+// Search box per pose parameter, shared by all devices. Default: the table drawn in the scene, as
+// core's table_search_space: x, z ∈ [−360, 360] mm keep every controller whole on the ±400 mm
+// table top (not the authors' ±1000 mm box, which let the search park a controller off it),
+// y ∈ [0, 300] mm, rx ∈ [−90, 90]°, ry and rz ∈ [−180, 180]°. y and rz are locked by default
+// (DeviceLocks: the paper searched {x, z, rx, ry}), so their ranges apply only once unlocked.
 struct SearchBounds {
   std::array<ParamRange, kNumPoseParams> range{ParamRange{-360, 360}, ParamRange{0, 300},    ParamRange{-360, 360},
                                                ParamRange{-90, 90},   ParamRange{-180, 180}, ParamRange{-180, 180}};
