@@ -37,6 +37,9 @@ class WorkbenchContext {
   // Folders for the Review tab to open: `lmc-workbench --review DIR…` at start-up, the Record tab's
   // "Review this session" later. The Review tab takes them (and clears the list) every frame.
   std::vector<std::filesystem::path>& review_requests() { return review_requests_; }
+  // Trials the Layout tab should design for (Review's "Design a layout for these trials"): their
+  // LMC files, read as a recorded pose set (fused hand). The Layout tab takes them every frame.
+  std::vector<std::string>& layout_pose_request() { return layout_pose_request_; }
   // A tab the shell should show next ("review"); the shell takes it after the tabs' updates.
   std::string& tab_request() { return tab_request_; }
   // Renders ImGui drawing off screen at width × height into a PNG (ui/platform/offscreen_png.h); set
@@ -50,6 +53,7 @@ class WorkbenchContext {
   LiveRig rig_;  // after layout_: it reads it until destroyed
   std::optional<RecordStartup> record_startup_;
   std::vector<std::filesystem::path> review_requests_;
+  std::vector<std::string> layout_pose_request_;
   std::string tab_request_;
   SubjectScreenLink subject_screen_;
   PictureRenderer picture_renderer_;

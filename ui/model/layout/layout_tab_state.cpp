@@ -267,4 +267,21 @@ bool LayoutTabState::busy() const {
          (display.show_heatmap && selected >= 0 && !heatmap.complete() && heatmap.error().empty());
 }
 
+bool LayoutTabState::use_recorded_pose_set(std::vector<std::string> recordings, std::string source,
+                                           std::string trials_glob, int every) {
+  PoseSetChoice choice = doc().pose_set;
+  choice.source = PoseSetChoice::Source::kRecordings;
+  choice.recordings = std::move(recordings);
+  choice.recorded_source = std::move(source);
+  choice.trials_glob = std::move(trials_glob);
+  choice.every = every;
+  return report(set_pose_set_choice(document_, choice), "Pose set");
+}
+
+void LayoutTabState::cancel_pose_set_load() {
+  if (!poses.loading()) return;
+  poses.cancel();
+  if (const PoseSetPtr p = poses.current()) report(set_pose_set_choice(document_, p->choice), "Pose set");
+}
+
 }  // namespace lmc::ui
