@@ -8,6 +8,7 @@
 #include "core/io/lmc_recording.h"
 #include "tests/support/scratch_dir.h"
 #include "tests/ui/headless_imgui.h"
+#include "tests/ui/last_status.h"
 #include "ui/model/layout/layout_actions.h"
 #include "ui/model/layout/optimiser_job.h"
 #include "ui/tabs/layout/layout_tab.h"
@@ -16,16 +17,7 @@ namespace lmc::ui {
 namespace {
 
 using testing::HeadlessImGui;
-
-class QuietStatus final : public StatusSink {
- public:
-  void set_status(const std::string& text, bool is_error) override {
-    last = text;
-    error = is_error;
-  }
-  std::string last;
-  bool error = false;
-};
+using testing::LastStatus;
 
 // A processed trial's fused hand (world frame): `frames` of the Monte Carlo generator's hands.
 std::filesystem::path write_fused_trial(const std::filesystem::path& dir, const std::string& trial, int frames,
@@ -57,7 +49,7 @@ void use_small_monte_carlo(LayoutTabState& s) {
 
 TEST(LayoutRecordedPoses, ReviewsTrialsBecomeThePoseSetAndTheCoverageRunsOnThem) {
   HeadlessImGui gui;
-  QuietStatus status;
+  LastStatus status;
   LayoutTab tab(status);
   tab.set_modals_enabled(false);
   tab.state().display.show_heatmap = false;
@@ -88,6 +80,7 @@ TEST(LayoutRecordedPoses, ReviewsTrialsBecomeThePoseSetAndTheCoverageRunsOnThem)
   }
   ASSERT_TRUE(tab.state().coverage.latest());
   EXPECT_EQ(tab.state().coverage.latest()->all.frames, 40);
+  EXPECT_NE(status.last.find("Pose set: 40 recorded frames"), std::string::npos) << status.last;
   // The Optimiser panel lists where the frames came from.
   gui.frames(2, [&] {
     tab.update(true);

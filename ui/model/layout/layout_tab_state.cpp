@@ -163,6 +163,7 @@ void LayoutTabState::refresh_timeline_frames() {
 void LayoutTabState::update(double dt_seconds, bool on_screen) {
   poses.request(doc().pose_set);
   poses.poll();
+  report_recorded_pose_set();
   coverage.poll();
   heatmap.poll();
   optimiser.poll();
@@ -276,6 +277,16 @@ bool LayoutTabState::use_recorded_pose_set(std::vector<std::string> recordings, 
   choice.trials_glob = std::move(trials_glob);
   choice.every = every;
   return report(set_pose_set_choice(document_, choice), "Pose set");
+}
+
+void LayoutTabState::report_recorded_pose_set() {
+  const PoseSetPtr p = poses.current();
+  if (!p || p->version == reported_pose_set_version_) return;
+  reported_pose_set_version_ = p->version;
+  if (p->choice.source != PoseSetChoice::Source::kRecordings) return;
+  set_status("Pose set: " + std::to_string(p->size()) + " recorded frames (" + p->set.description + ")" +
+                 (p->left_out.empty() ? "" : ", " + std::to_string(p->left_out.size()) + " trials left out"),
+             false);
 }
 
 void LayoutTabState::cancel_pose_set_load() {

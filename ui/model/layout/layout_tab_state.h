@@ -127,9 +127,12 @@ class LayoutTabState {
   void refresh_timeline_frames();
   // Tells the status bar once when a search ends, whichever panel is showing.
   void report_optimiser_end();
+  // Tells the status bar once when a recorded pose set is in (how many frames, from where).
+  void report_recorded_pose_set();
 
   UndoableLayoutDocument document_;
   JobState last_optimiser_state_ = JobState::kIdle;
+  std::uint64_t reported_pose_set_version_ = 0;
   std::uint64_t saved_head_id_ = 0;
   std::optional<std::filesystem::path> file_path_;
   StatusFn status_;

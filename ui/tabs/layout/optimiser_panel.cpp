@@ -141,9 +141,13 @@ void OptimiserPanel::draw_recordings_choice() {
   if (ImGui::InputTextWithHint("trials", "*Index*", trials_buf_, sizeof trials_buf_))
     edit_choice_.trials_glob = trials_buf_;
   ImGui::SameLine();
-  ImGui::SetNextItemWidth(80);
-  ImGui::InputInt("every", &edit_choice_.every);
+  ImGui::SetNextItemWidth(50);
+  ImGui::InputInt("every", &edit_choice_.every, 0, 0);
   edit_choice_.every = std::clamp(edit_choice_.every, 1, 1000);
+  if (ImGui::IsItemHovered()) ImGui::SetTooltip("Keep every N-th frame of each trial");
+  // Review hands over one file per trial; the field shows the first.
+  if (edit_choice_.recordings.size() > 1)
+    ImGui::TextDisabled("%zu trials from Review (the field shows the first)", edit_choice_.recordings.size());
 }
 
 void OptimiserPanel::draw_settings() {
