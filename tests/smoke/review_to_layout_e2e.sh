@@ -4,8 +4,9 @@
 # must come up with those trials as its pose set (the status bar says how many recorded frames, the
 # Optimiser panel lists where they came from). The screen is saved before and after when xwd and
 # netpbm are there (WORK_DIR/review.png, WORK_DIR/layout.png). Ctrl+Q must end with exit code 0.
-# Run under xvfb-run: review_to_layout_e2e.sh LMC LMC_WORKBENCH WORK_DIR
+# Usage: review_to_layout_e2e.sh LMC LMC_WORKBENCH WORK_DIR (it starts its own Xvfb without a display).
 set -eu
+if [ -z "${DISPLAY:-}" ]; then exec xvfb-run -a -s "-screen 0 1280x800x24" "$0" "$@"; fi
 lmc=${1:?usage: review_to_layout_e2e.sh LMC LMC_WORKBENCH WORK_DIR}
 workbench=${2:?}
 work=${3:?}
