@@ -24,6 +24,10 @@ struct PoseSet {
   std::string description;        // e.g. "monte-carlo seed=1 frames=10000"
   std::vector<HandFrame> frames;  // world coordinates, hand_present = true
   std::vector<PoseLabel> labels;  // one per frame
+  // Where the frames came from, one line each for people ("source: fused hand …", "trials: …",
+  // "frames: 8120 kept, 31 skipped …"); empty for a Monte Carlo set, whose description says it all.
+  // A layout report and `lmc evaluate` print these lines as they are.
+  std::vector<std::string> provenance;
 
   int size() const { return static_cast<int>(frames.size()); }
   // Indices of the frames with this orientation (or motion).

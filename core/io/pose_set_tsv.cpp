@@ -66,6 +66,12 @@ void write_pose_set(std::ostream& out, const PoseSet& set) {
     }
     text += "# description: " + desc + "\n";
   }
+  for (std::string line : set.provenance) {
+    for (char& c : line) {
+      if (c == '\n' || c == '\r') c = ' ';
+    }
+    text += "# provenance: " + line + "\n";
+  }
   text += header_line();
   text += '\n';
   for (size_t j = 0; j < set.frames.size(); ++j) {
@@ -126,7 +132,9 @@ PoseSet parse_pose_set(std::istream& in, const std::string& source) {
     if (!line.empty() && line.back() == '\r') line.pop_back();
     if (!line.empty() && line[0] == '#') {
       constexpr std::string_view kDesc = "# description: ";
+      constexpr std::string_view kProvenance = "# provenance: ";
       if (line.rfind(kDesc, 0) == 0) set.description = line.substr(kDesc.size());
+      if (line.rfind(kProvenance, 0) == 0) set.provenance.push_back(line.substr(kProvenance.size()));
       continue;
     }
     if (line != expected_header) {

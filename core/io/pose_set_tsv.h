@@ -3,7 +3,8 @@
 // Tab-separated text, UTF-8, '\n' line ends:
 //   line 1: "# lmc-poses 1" (format tag and version)
 //   lines starting with '#' after it, before the header: comments; "# description: <text>"
-//           carries PoseSet::description
+//           carries PoseSet::description, each "# provenance: <text>" one line of
+//           PoseSet::provenance (in order); other comments are ignored
 //   header: "frame\torientation\tmotion\tprogress\t" then the 30 points × x/y/z as
 //           "<hand point name>.x" … (names as in the study's headers, hand_frame.h)
 //   one row per frame: index (0-based), "horizontal"|"vertical", "open"|"index"|"thumb"|

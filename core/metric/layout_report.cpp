@@ -22,6 +22,8 @@ LayoutReport build_layout_report(const Layout& layout, const PoseSet& poses, std
   const std::vector<int> horizontal = poses.indices_with(HandOrientation::kHorizontal);
   const std::vector<int> vertical = poses.indices_with(HandOrientation::kVertical);
   r.coverage = coverage_by_orientation(table, horizontal, vertical);
+  r.poses_provenance = poses.provenance;
+  r.sets.push_back(pose_set_score(table, "this set", poses.description));
 
   std::vector<DeviceView> views;
   for (const auto& d : layout.devices) views.push_back(DeviceView::from_device(d));

@@ -13,6 +13,7 @@
 #include "core/layout/layout.h"
 #include "core/metric/controller_contribution.h"
 #include "core/metric/coverage.h"
+#include "core/metric/pose_set_score.h"
 #include "core/metric/robust_metric.h"
 #include "core/visibility/frame_prep.h"
 
@@ -35,6 +36,11 @@ struct LayoutReport {
   std::vector<ControllerContribution> controllers;  // all frames
   std::vector<PoseCoverageRow> poses;               // the reference poses present in the set, in enum order
   std::vector<std::string> overlapping_pairs;       // "LMC1 and LMC2": footprints that overlap on the table
+  std::vector<std::string> poses_provenance;        // PoseSet::provenance: where recorded frames came from
+  // The headline figures on the report's own set first (label "this set" until the caller names
+  // it), then on any other set the caller adds (`lmc evaluate` adds the Monte Carlo set to a
+  // recorded one and the other way round), shown side by side.
+  std::vector<PoseSetScore> sets;
 };
 
 // `prepared` are `poses.frames` prepared (prepare_frames).

@@ -18,6 +18,37 @@ std::string report_weight(double w) {
   return s;
 }
 
+// The pose set an `lmc optimize` layout names in its description ("… (seed 1) on <set>, M = …").
+std::string searched_on(const std::string& description) {
+  if (description.rfind("lmc optimize", 0) != 0) return {};
+  const size_t on = description.find(") on ");
+  const size_t end = description.rfind(", ");
+  if (on == std::string::npos || end == std::string::npos || end <= on + 5) return {};
+  return description.substr(on + 5, end - on - 5);
+}
+
+std::string pose_sets_side_by_side(const LayoutReport& r) {
+  std::string md =
+      "\n## On each pose set\n\nThe same layout on every pose set given: M (lower is better), the share of frames "
+      "with every finger seen by two or more controllers, each finger seen by at least one, and each controller "
+      "seeing some finger.\n\n| set | frames | M | every finger 2+ |";
+  for (int k = 0; k < kNumDigits; ++k) md += " " + std::string(digit_name(k)) + " |";
+  for (const auto& slot : r.slots) md += " " + slot + " |";
+  md += "\n|---|---:|---:|---:|";
+  for (int k = 0; k < kNumDigits + static_cast<int>(r.slots.size()); ++k) md += "---:|";
+  md += "\n";
+  for (const auto& s : r.sets) {
+    md += "| " + s.label + " | " + std::to_string(s.frames) + " | " + format_fixed(s.metric, 4) + " | " +
+          report_percent(s.redundant_share) + " |";
+    for (const double v : s.finger_seen) md += " " + report_percent(v) + " |";
+    for (const double v : s.controller_seeing) md += " " + report_percent(v) + " |";
+    md += "\n";
+  }
+  md += "\n";
+  for (const auto& s : r.sets) md += "* " + s.label + ": " + s.description + "\n";
+  return md;
+}
+
 }  // namespace
 
 std::string format_layout_report_markdown(const LayoutReport& r,
@@ -25,6 +56,10 @@ std::string format_layout_report_markdown(const LayoutReport& r,
   std::string md = "# Layout report: " + r.layout_name + "\n\n";
   if (!r.layout_description.empty()) md += r.layout_description + "\n\n";
   md += "Pose set: " + r.poses_description + ". Written by `lmc evaluate --report` (core/metric/layout_report.h).\n\n";
+  for (const auto& line : r.poses_provenance) md += "* " + line + "\n";
+  if (!r.poses_provenance.empty()) md += "\n";
+  if (const std::string searched = searched_on(r.layout_description); !searched.empty())
+    md += "The search that made this layout used: " + searched + ".\n\n";
   // The caption also under the picture: alt text alone is only read when the picture is missing.
   for (const auto& [caption, file] : figures) md += "![" + caption + "](" + file + ")\n\n*" + caption + "*\n\n";
 
@@ -109,6 +144,8 @@ std::string format_layout_report_markdown(const LayoutReport& r,
           format_fixed(c.metric_inside_cut_without, 4) + " | " + report_percent(c.redundant_inside_cut_without) +
           " | " + (c.counts_inside_cut ? "yes" : "**no**") + " |\n";
   }
+
+  if (r.sets.size() > 1) md += pose_sets_side_by_side(r);
 
   md +=
       "\n## Coverage per reference pose\n\nShare of the pose's frames in which each finger is seen by at least one "

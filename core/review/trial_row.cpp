@@ -8,7 +8,7 @@
 namespace lmc {
 namespace {
 
-double json_number_or_nan(const nlohmann::json& v) {
+double summary_number_or_nan(const nlohmann::json& v) {
   return v.is_number() ? v.get<double>() : kNaN;
 }
 
@@ -18,7 +18,7 @@ double mean_of(const nlohmann::json& values, bool absolute) {
   int n = 0;
   if (!values.is_array()) return kNaN;
   for (const auto& v : values) {
-    const double x = json_number_or_nan(v);
+    const double x = summary_number_or_nan(v);
     if (!std::isfinite(x)) continue;
     sum += absolute ? std::abs(x) : x;
     ++n;
@@ -83,7 +83,7 @@ TrialRow trial_row(const std::string& subject, const std::string& trial, const n
   const auto& c = summary["comparison"];
   row.finger_length_diff_mm = mean_of(c.value("finger_mean_diff_mm", nlohmann::json()), false);
   row.rom_abs_diff_deg = mean_of(c.value("rom_diff_deg", nlohmann::json()), true);
-  if (c.contains("lag") && c["lag"].value("clear", false)) row.lag_ms = json_number_or_nan(c["lag"]["ms"]);
+  if (c.contains("lag") && c["lag"].value("clear", false)) row.lag_ms = summary_number_or_nan(c["lag"]["ms"]);
   return row;
 }
 

@@ -40,6 +40,9 @@ class WorkbenchContext {
   // The folders the Review tab has open, as it publishes them each frame (the Record tab asks
   // before a new session reuses a subject id found there).
   std::vector<std::filesystem::path>& review_folders() { return review_folders_; }
+  // Trials the Layout tab should design for (Review's "Design a layout for these trials"): their
+  // LMC files, read as a recorded pose set (fused hand). The Layout tab takes them every frame.
+  std::vector<std::string>& layout_pose_request() { return layout_pose_request_; }
   // A tab the shell should show next ("review"); the shell takes it after the tabs' updates.
   std::string& tab_request() { return tab_request_; }
   // Renders ImGui drawing off screen at width × height into a PNG (ui/platform/offscreen_png.h); set
@@ -54,6 +57,7 @@ class WorkbenchContext {
   std::optional<RecordStartup> record_startup_;
   std::vector<std::filesystem::path> review_requests_;
   std::vector<std::filesystem::path> review_folders_;
+  std::vector<std::string> layout_pose_request_;
   std::string tab_request_;
   SubjectScreenLink subject_screen_;
   PictureRenderer picture_renderer_;

@@ -13,6 +13,8 @@
 #include "core/metric/controller_contribution.h"
 #include "core/metric/coverage.h"
 #include "core/metric/layout_report.h"
+#include "core/metric/pose_set_score.h"
+#include "core/poses/pose_recipe.h"
 #include "core/reports/coverage_report.h"
 #include "core/reports/layout_report_files.h"
 #include "core/reports/robust_terms_report.h"
@@ -32,12 +34,19 @@ struct EvaluateOptions {
   double radius_mm = 10.0;
   bool json = false;
   std::string report_dir;
+  std::string against;  // --against: a second set to score the layout on, side by side
 };
+
+std::string pose_set_label(const std::string& spec) {
+  return spec == "mc" ? "Monte Carlo" : std::filesystem::path(spec).filename().string();
+}
 
 void setup_evaluate(CLI::App& app) {
   auto opt = std::make_shared<EvaluateOptions>();
   app.add_option("--layout", opt->layout, "Layout file or preset name (paper-initial, paper-optimized, …)")->required();
-  app.add_option("--poses", opt->poses, "\"mc\" (Monte Carlo set) or a pose-set file from `lmc poses`");
+  app.add_option("--poses", opt->poses,
+                 "\"mc\" (Monte Carlo set), a pose-set file from `lmc poses` (Monte Carlo or recorded) or a recipe "
+                 "(.json) mixing recordings and the Monte Carlo set with weights");
   app.add_option("--frames", opt->frames, "Frames of the Monte Carlo set")->check(CLI::Range(1, 10'000'000));
   app.add_option("--seed", opt->seed, "Seed of the Monte Carlo set");
   app.add_option("--hand", opt->hand, "Monte Carlo set with the hand of this LMC recording's first row");
@@ -48,6 +57,9 @@ void setup_evaluate(CLI::App& app) {
                  "controller, or one per controller in layout order (lmc2,lmc2,lmc,lmc)");
   app.add_option("--radius-mm", opt->radius_mm, "Phalanx radius (mm)")->check(CLI::NonNegativeNumber);
   app.add_flag("--json", opt->json, "Print JSON (keys: see core/reports/coverage_report.h) instead of text");
+  app.add_option("--against", opt->against,
+                 "Also score the layout on this pose set (mc, a file or a recipe), side by side; default with a "
+                 "--poses other than mc: the Monte Carlo set (\"none\": no second set)");
   app.add_option("--report", opt->report_dir,
                  "Also write a one-page layout report (report.md) into this folder: verdict, metric terms, what "
                  "each controller contributes, coverage per reference pose");
@@ -58,7 +70,9 @@ void setup_evaluate(CLI::App& app) {
       for (auto& d : layout.devices) d.sensor.range_mm = opt->range_mm;
     }
     const auto hand = opt->hand.empty() ? std::nullopt : std::optional<std::string>(opt->hand);
-    const lmc::PoseSet poses = lmc::load_poses(opt->poses, opt->frames, opt->seed, hand);
+    std::vector<std::string> notes;
+    const lmc::PoseSet poses = lmc::load_pose_spec(opt->poses, opt->frames, opt->seed, hand, &notes);
+    for (const auto& n : notes) std::cerr << "lmc: note: left out of the pose set: " << n << "\n";
     const auto t0 = std::chrono::steady_clock::now();
     const auto prepared = lmc::prepare_frames(poses.frames);
     const lmc::VisibilityTable table = lmc::compute_visibility(layout, prepared, opt->radius_mm);
@@ -67,8 +81,14 @@ void setup_evaluate(CLI::App& app) {
     for (const auto& d : layout.devices) slots.push_back(d.slot);
     // Coverage split by orientation, the robust terms and each controller's contribution: the
     // layout report's numbers (core/metric/layout_report.h), computed once for text, JSON and --report.
-    const lmc::LayoutReport report =
-        lmc::build_layout_report(layout, poses, prepared, lmc::RobustWeights{}, opt->radius_mm);
+    lmc::LayoutReport report = lmc::build_layout_report(layout, poses, prepared, lmc::RobustWeights{}, opt->radius_mm);
+    report.sets.front().label = pose_set_label(opt->poses);
+    const std::string against = opt->against.empty() ? (opt->poses == "mc" ? "none" : "mc") : opt->against;
+    if (against != "none") {
+      const lmc::PoseSet other = lmc::load_pose_spec(against, opt->frames, opt->seed, hand, &notes);
+      report.sets.push_back(lmc::pose_set_score(layout, other, lmc::prepare_frames(other.frames),
+                                                pose_set_label(against), opt->radius_mm));
+    }
     const lmc::Coverage& all = report.coverage.all;
     const lmc::Coverage& horizontal = report.coverage.horizontal;
     const lmc::Coverage& vertical = report.coverage.vertical;
@@ -116,6 +136,18 @@ void setup_evaluate(CLI::App& app) {
                       {"counts_inside_cut", c.counts_inside_cut}});
       }
       j["controllers"] = cj;
+      nlohmann::json sets = nlohmann::json::array();
+      for (const auto& set : report.sets) {
+        sets.push_back({{"label", set.label},
+                        {"description", set.description},
+                        {"frames", set.frames},
+                        {"metric", set.metric},
+                        {"every_finger_two_or_more", set.redundant_share},
+                        {"finger_seen", set.finger_seen},
+                        {"controller_seeing", set.controller_seeing}});
+      }
+      j["pose_sets"] = sets;
+      j["poses_provenance"] = poses.provenance;
       j["seconds"] = seconds;
       std::cout << j.dump(2) << "\n";
       return;
@@ -156,6 +188,19 @@ void setup_evaluate(CLI::App& app) {
                   c.metric_inside_cut_without, 100 * c.redundant_inside_cut_without,
                   c.counts_inside_cut ? "yes" : "NO: nothing inside its cut that the others lack");
     }
+    if (report.sets.size() > 1) {
+      std::printf(
+          "the layout on each pose set (M; every finger seen by >= 2; each finger seen; each controller seeing):\n");
+      for (const auto& set : report.sets) {
+        std::printf("  %-24s %7d frames  M %.6f  >=2 %5.1f%%  fingers", set.label.c_str(), set.frames, set.metric,
+                    100 * set.redundant_share);
+        for (const double v : set.finger_seen) std::printf(" %5.1f%%", 100 * v);
+        std::printf("  controllers");
+        for (const double v : set.controller_seeing) std::printf(" %5.1f%%", 100 * v);
+        std::printf("\n");
+      }
+    }
+    for (const auto& line : poses.provenance) std::printf("pose set %s\n", line.c_str());
     std::fflush(stdout);
     const double evals = static_cast<double>(table.devices) * static_cast<double>(table.frames);
     std::cout << "time " << seconds << " s (" << (seconds > 0 ? evals / seconds : 0.0)

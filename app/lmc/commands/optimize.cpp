@@ -15,6 +15,7 @@
 #include "core/io/pose_source.h"
 #include "core/optimise/multi_start.h"
 #include "core/optimise/pso.h"
+#include "core/poses/pose_recipe.h"
 #include "core/reports/coverage_report.h"
 #include "core/reports/robust_terms_report.h"
 #include "core/visibility/frame_prep.h"
@@ -73,7 +74,9 @@ void apply_lock(lmc::SearchSpace& space, const lmc::Layout& layout, const std::s
 
 void setup_optimize(CLI::App& app) {
   auto opt = std::make_shared<OptimizeOptions>();
-  app.add_option("--poses", opt->poses, "\"mc\" (Monte Carlo set) or a pose-set file from `lmc poses`");
+  app.add_option("--poses", opt->poses,
+                 "\"mc\" (Monte Carlo set), a pose-set file from `lmc poses` (Monte Carlo or recorded) or a recipe "
+                 "(.json) mixing recordings and the Monte Carlo set with weights");
   app.add_option("--frames", opt->frames, "Frames of the Monte Carlo set")->check(CLI::Range(1, 10'000'000));
   app.add_option("--seed", opt->seed, "Seed of the Monte Carlo set");
   app.add_option("--hand", opt->hand, "Monte Carlo set with the hand of this LMC recording's first row");
@@ -148,7 +151,9 @@ void setup_optimize(CLI::App& app) {
     if (!from_layout && !opt->locks.empty()) throw lmc::Error("--lock needs --start");
 
     const auto hand = opt->hand.empty() ? std::nullopt : std::optional<std::string>(opt->hand);
-    const lmc::PoseSet poses = lmc::load_poses(opt->poses, opt->frames, opt->seed, hand);
+    std::vector<std::string> notes;
+    const lmc::PoseSet poses = lmc::load_pose_spec(opt->poses, opt->frames, opt->seed, hand, &notes);
+    for (const auto& n : notes) std::cerr << "lmc: note: left out of the pose set: " << n << "\n";
     const auto prepared = lmc::prepare_frames(poses.frames);
 
     lmc::PsoSettings s;

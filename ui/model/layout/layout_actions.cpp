@@ -179,6 +179,10 @@ ActionResult set_pose_set_choice(UndoableLayoutDocument& doc, const PoseSetChoic
   if (choice.source == PoseSetChoice::Source::kFile && choice.file.empty()) {
     return ActionResult::fail("choose a pose-set file");
   }
+  if (choice.source == PoseSetChoice::Source::kRecordings) {
+    if (choice.recordings.empty()) return ActionResult::fail("choose recorded trials or a session");
+    if (choice.every < 1) return ActionResult::fail("keep every frame (1) or every N-th (N > 1)");
+  }
   doc.upd_scratch().pose_set = choice;
   doc.commit("Change pose set");
   return ActionResult::success();

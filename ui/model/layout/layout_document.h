@@ -30,13 +30,19 @@ struct SearchBounds {
 };
 
 // Which hand poses the tab shows and scores (docs/algorithms/search.md: the Monte Carlo set of
-// ten reference poses varied along the trial trajectories, or a file).
+// ten reference poses varied along the trial trajectories, a file — a pose set or a recipe — or
+// the hands of recorded trials, core/poses/recorded_poses.h).
 struct PoseSetChoice {
-  enum class Source : int { kMonteCarlo = 0, kFile = 1 };
+  enum class Source : int { kMonteCarlo = 0, kFile = 1, kRecordings = 2 };
   Source source = Source::kMonteCarlo;
   int frames = 2000;
   std::uint64_t seed = 1;
   std::string file;
+  // kRecordings: processed-trial folders or files (fused), session folders or LMC files (LMCn, vicon).
+  std::vector<std::string> recordings;
+  std::string recorded_source = "fused";  // fused, vicon, LMC1 … LMC8
+  std::string trials_glob;                // empty: every trial
+  int every = 1;
   bool operator==(const PoseSetChoice&) const = default;
 };
 

@@ -163,6 +163,7 @@ void LayoutTabState::refresh_timeline_frames() {
 void LayoutTabState::update(double dt_seconds, bool on_screen) {
   poses.request(doc().pose_set);
   poses.poll();
+  report_recorded_pose_set();
   coverage.poll();
   heatmap.poll();
   optimiser.poll();
@@ -265,6 +266,33 @@ bool LayoutTabState::apply_optimised() {
 bool LayoutTabState::busy() const {
   return poses.loading() || !poses.current() || coverage.busy() || optimiser.running() ||
          (display.show_heatmap && selected >= 0 && !heatmap.complete() && heatmap.error().empty());
+}
+
+bool LayoutTabState::use_recorded_pose_set(std::vector<std::string> recordings, std::string source,
+                                           std::string trials_glob, int every) {
+  PoseSetChoice choice = doc().pose_set;
+  choice.source = PoseSetChoice::Source::kRecordings;
+  choice.recordings = std::move(recordings);
+  choice.recorded_source = std::move(source);
+  choice.trials_glob = std::move(trials_glob);
+  choice.every = every;
+  return report(set_pose_set_choice(document_, choice), "Pose set");
+}
+
+void LayoutTabState::report_recorded_pose_set() {
+  const PoseSetPtr p = poses.current();
+  if (!p || p->version == reported_pose_set_version_) return;
+  reported_pose_set_version_ = p->version;
+  if (p->choice.source != PoseSetChoice::Source::kRecordings) return;
+  set_status("Pose set: " + std::to_string(p->size()) + " recorded frames (" + p->set.description + ")" +
+                 (p->left_out.empty() ? "" : ", " + std::to_string(p->left_out.size()) + " trials left out"),
+             false);
+}
+
+void LayoutTabState::cancel_pose_set_load() {
+  if (!poses.loading()) return;
+  poses.cancel();
+  if (const PoseSetPtr p = poses.current()) report(set_pose_set_choice(document_, p->choice), "Pose set");
 }
 
 }  // namespace lmc::ui

@@ -108,6 +108,13 @@ class LayoutTabState {
   // Start / cancel / apply the optimiser (job controls).
   bool start_optimiser();
   void cancel_optimiser() { optimiser.cancel(); }
+  // Designs on recorded hands: the pose set becomes these trials' (Review's "Design a layout for
+  // these trials", the Optimiser panel's "From recordings"); one undo step. False with the reason
+  // in the status line when there is nothing to read.
+  bool use_recorded_pose_set(std::vector<std::string> recordings, std::string source = "fused",
+                             std::string trials_glob = {}, int every = 1);
+  // Stops loading a pose set and goes back to the set loaded before (an undo step of its own).
+  void cancel_pose_set_load();
   bool apply_optimised();
   // True while background work that a screenshot should wait for is running.
   bool busy() const;
@@ -120,9 +127,12 @@ class LayoutTabState {
   void refresh_timeline_frames();
   // Tells the status bar once when a search ends, whichever panel is showing.
   void report_optimiser_end();
+  // Tells the status bar once when a recorded pose set is in (how many frames, from where).
+  void report_recorded_pose_set();
 
   UndoableLayoutDocument document_;
   JobState last_optimiser_state_ = JobState::kIdle;
+  std::uint64_t reported_pose_set_version_ = 0;
   std::uint64_t saved_head_id_ = 0;
   std::optional<std::filesystem::path> file_path_;
   StatusFn status_;

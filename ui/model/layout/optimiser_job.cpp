@@ -1,5 +1,7 @@
 #include "ui/model/layout/optimiser_job.h"
 
+#include "core/common/number_format.h"
+
 #include <chrono>
 #include <cmath>
 #include <thread>
@@ -112,6 +114,18 @@ bool OptimiserJob::start(const LayoutDocument& doc, const PoseSetPtr& poses, con
         if (!best_evaluated) out.pso.best_coverage = out.candidate.all;
         out.start_layout = layout;
         out.start_terms = layout_robust_terms(layout, poses->prepared, settings.weights, settings.phalanx_radius_mm);
+        out.start_m = out.start_terms.metric_m;
+        out.candidate_m = out.candidate.all.metric;
+        if (poses->choice.source != PoseSetChoice::Source::kMonteCarlo && !stop.stop_requested()) {
+          ch.set_stage("Scoring both layouts on the Monte Carlo set");
+          PoseSetChoice mc;
+          const PoseSetPtr mc_set = load_pose_set_for(mc, 0, stop);
+          if (mc_set) {
+            out.has_monte_carlo = true;
+            out.start_m_monte_carlo = evaluate_layout(layout, *mc_set).all.metric;
+            out.candidate_m_monte_carlo = evaluate_layout(out.pso.best_layout, *mc_set).all.metric;
+          }
+        }
         return out;
       });
   return true;
@@ -148,6 +162,28 @@ std::shared_ptr<const Layout> OptimiserJob::best_so_far() const {
     if (const auto o = outcome()) return std::shared_ptr<const Layout>(o, &o->pso.best_layout);
   }
   return live_best_;
+}
+
+namespace {
+
+std::string m_change_text(double before, double after) {
+  return format_readable(before, 3) + " -> " + format_readable(after, 3) + " (" +
+         format_readable(after - before, 3, true) + ")";
+}
+
+}  // namespace
+
+std::string specialisation_summary(const OptimiserOutcome& o) {
+  const bool recorded = o.has_monte_carlo;
+  std::string s = std::string("M on ") + (recorded ? "the poses searched on " : "the Monte Carlo set ") +
+                  m_change_text(o.start_m, o.candidate_m);
+  if (!recorded) return s + ".";
+  s += "; on the Monte Carlo set " + m_change_text(o.start_m_monte_carlo, o.candidate_m_monte_carlo);
+  const bool better_here = o.candidate_m < o.start_m;
+  const bool better_there = o.candidate_m_monte_carlo < o.start_m_monte_carlo;
+  if (better_here && !better_there) return s + ": better on these hands, not on the invented ones (specialised).";
+  if (better_here && better_there) return s + ": better on both.";
+  return s + ".";
 }
 
 }  // namespace lmc::ui

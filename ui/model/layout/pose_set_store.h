@@ -3,6 +3,7 @@
 // prepared for the visibility kernels on a worker thread. A loaded set is immutable and carries a
 // version id, so caches compare ids instead of 2,000 frames (docs/architecture.md).
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -20,14 +21,16 @@ struct LoadedPoseSet {
   PoseSet set;
   std::vector<PreparedFrame> prepared;
   std::vector<int> horizontal, vertical;  // frame indices by palm orientation
+  std::vector<std::string> left_out;      // recorded trials left out, each naming its file
 
   int size() const { return set.size(); }
 };
 using PoseSetPtr = std::shared_ptr<const LoadedPoseSet>;
 
 // Builds a loaded pose set synchronously (what the worker runs; tests call it directly).
-// Throws lmc::Error for a bad file.
-PoseSetPtr load_pose_set_for(const PoseSetChoice& choice, std::uint64_t version, std::stop_token stop = {});
+// Throws lmc::Error for a bad file. `on_progress(done, total)`: trials read (recordings only).
+PoseSetPtr load_pose_set_for(const PoseSetChoice& choice, std::uint64_t version, std::stop_token stop = {},
+                             const std::function<void(int, int)>& on_progress = {});
 
 class PoseSetStore {
  public:
@@ -38,8 +41,12 @@ class PoseSetStore {
   // Blocks until the current load finishes (tests and capture only).
   void wait();
 
+  // Stops a load (reading recordings can take seconds); the set shown stays the one loaded before.
+  void cancel();
+
   PoseSetPtr current() const { return current_; }
   bool loading() const { return job_.running(); }
+  double progress() const { return job_.fraction(); }
   const std::string& error() const { return error_; }
   std::string stage() const { return job_.stage(); }
 

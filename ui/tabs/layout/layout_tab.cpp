@@ -63,7 +63,9 @@ constexpr int kKeyDelete = 261;
 }  // namespace
 
 std::unique_ptr<Tab> make_layout_tab(StatusSink& status, WorkbenchContext& context) {
-  return std::make_unique<LayoutTab>(status, nullptr, &context.layout());
+  auto tab = std::make_unique<LayoutTab>(status, nullptr, &context.layout());
+  tab->take_pose_requests_from(&context.layout_pose_request());
+  return tab;
 }
 
 LayoutTab::LayoutTab(StatusSink& status, std::unique_ptr<SceneRenderer> renderer, CurrentLayout* shared)
@@ -162,6 +164,11 @@ void LayoutTab::update(bool shown) {
   // captured after it (Devices) see the layout they always saw.
   if (!shown && mixed_rig_capture_steps_ > 0) {
     for (; mixed_rig_capture_steps_ > 0; --mixed_rig_capture_steps_) state_->undo();
+  }
+  if (pose_requests_ != nullptr && !pose_requests_->empty()) {
+    state_->use_recorded_pose_set(std::move(*pose_requests_));
+    pose_requests_->clear();
+    optimiser_->show_pose_set_once();
   }
   state_->update(static_cast<double>(ImGui::GetIO().DeltaTime), shown);
   // The committed layout, not the scratch copy: a drag in progress would restart the rig every frame.

@@ -56,6 +56,9 @@ class LayoutTab final : public Tab {
   std::vector<std::string> extra_captures() const override { return {"layout-mixed-rig"}; }
   void prepare_extra_capture(const std::string& name) override;
 
+  // Where Review leaves trials to design for (WorkbenchContext::layout_pose_request); null in tests.
+  void take_pose_requests_from(std::vector<std::string>* requests) { pose_requests_ = requests; }
+
   LayoutTabState& state() { return *state_; }
   ScenePanel& scene_panel() { return *scene_; }
   OptimiserPanel& optimiser_panel() { return *optimiser_; }
@@ -108,6 +111,7 @@ class LayoutTab final : public Tab {
 
   StatusSink& status_;
   CurrentLayout* shared_layout_ = nullptr;
+  std::vector<std::string>* pose_requests_ = nullptr;
   std::shared_ptr<LayoutTabState> state_;
   std::unique_ptr<LayoutEditor> editor_;  // registered in shared_layout_ for the other tabs' edits
   std::unique_ptr<SceneRenderer> renderer_;

@@ -42,12 +42,18 @@ void OptimiserPanel::draw_pose_set() {
   if (!choice_synced_ || (!ImGui::IsAnyItemActive() && !(edit_choice_ == s.doc().pose_set) && !browser_.is_open())) {
     edit_choice_ = s.doc().pose_set;
     std::snprintf(file_buf_, sizeof file_buf_, "%s", edit_choice_.file.c_str());
+    std::snprintf(recordings_buf_, sizeof recordings_buf_, "%s",
+                  edit_choice_.recordings.empty() ? "" : edit_choice_.recordings.front().c_str());
+    std::snprintf(trials_buf_, sizeof trials_buf_, "%s", edit_choice_.trials_glob.c_str());
     choice_synced_ = true;
   }
   int src = static_cast<int>(edit_choice_.source);
   ImGui::RadioButton("Monte Carlo", &src, 0);
   ImGui::SameLine();
   ImGui::RadioButton("File", &src, 1);
+  ImGui::SameLine();
+  ImGui::RadioButton("From recordings...", &src, 2);
+  anchors_.remember("pose_set.from_recordings");
   edit_choice_.source = static_cast<PoseSetChoice::Source>(src);
   if (edit_choice_.source == PoseSetChoice::Source::kMonteCarlo) {
     ImGui::SetNextItemWidth(110);
@@ -56,17 +62,23 @@ void OptimiserPanel::draw_pose_set() {
     ImGui::SameLine();
     ImGui::SetNextItemWidth(110);
     ImGui::InputScalar("seed", ImGuiDataType_U64, &edit_choice_.seed);
-  } else {
+  } else if (edit_choice_.source == PoseSetChoice::Source::kFile) {
     ImGui::SetNextItemWidth(-90);
-    if (ImGui::InputTextWithHint("##file", "poses.tsv (from `lmc poses -o`)", file_buf_, sizeof file_buf_)) {
+    if (ImGui::InputTextWithHint("##file", "poses.tsv (lmc poses -o) or recipe.json", file_buf_, sizeof file_buf_)) {
       edit_choice_.file = file_buf_;
     }
     ImGui::SameLine();
     if (ImGui::Button("Browse...")) browser_.open(FileBrowser::Mode::kOpen, std::filesystem::current_path());
+  } else {
+    draw_recordings_choice();
   }
   if (auto chosen = browser_.draw()) {
     edit_choice_.file = chosen->string();
     std::snprintf(file_buf_, sizeof file_buf_, "%s", edit_choice_.file.c_str());
+  }
+  if (auto chosen = recordings_browser_.draw()) {
+    edit_choice_.recordings = {chosen->parent_path().string()};
+    std::snprintf(recordings_buf_, sizeof recordings_buf_, "%s", edit_choice_.recordings.front().c_str());
   }
   const bool differs = !(edit_choice_ == s.doc().pose_set);
   ImGui::BeginDisabled(!differs);
@@ -74,15 +86,68 @@ void OptimiserPanel::draw_pose_set() {
   ImGui::EndDisabled();
   ImGui::SameLine();
   if (s.poses.loading()) {
-    ImGui::TextDisabled("%s...", s.poses.stage().c_str());
+    ImGui::TextDisabled("%s... %.0f %%", s.poses.stage().c_str(), 100.0 * s.poses.progress());
+    ImGui::SameLine();
+    if (ImGui::SmallButton("Cancel##pose_set")) s.cancel_pose_set_load();
+    anchors_.remember("pose_set.cancel");
   } else if (const PoseSetPtr p = s.poses.current()) {
     ImGui::TextDisabled("%d frames: %zu horizontal, %zu vertical", p->size(), p->horizontal.size(), p->vertical.size());
+    if (!p->set.provenance.empty() || !p->left_out.empty()) {
+      ImGui::PushTextWrapPos(0.0f);
+      for (const auto& line : p->set.provenance) ImGui::TextDisabled("%s", line.c_str());
+      if (!p->left_out.empty()) {
+        ImGui::TextColored(ImVec4(1, 0.75f, 0.3f, 1), "%zu trials left out (hover)", p->left_out.size());
+        if (ImGui::IsItemHovered()) {
+          std::string all;
+          for (const auto& l : p->left_out) all += l + "\n";
+          ImGui::SetTooltip("%s", all.c_str());
+        }
+      }
+      ImGui::PopTextWrapPos();
+    }
   }
   if (!s.poses.error().empty()) {
     ImGui::PushTextWrapPos(0.0f);
     ImGui::TextColored(ImVec4(1, 0.45f, 0.4f, 1), "%s", s.poses.error().c_str());
     ImGui::PopTextWrapPos();
   }
+}
+
+void OptimiserPanel::draw_recordings_choice() {
+  ImGui::SetNextItemWidth(-90);
+  if (ImGui::InputTextWithHint("##recordings", "processed trials folder (lmc process -o) or session folder",
+                               recordings_buf_, sizeof recordings_buf_)) {
+    edit_choice_.recordings.clear();
+    if (recordings_buf_[0] != '\0') edit_choice_.recordings.emplace_back(recordings_buf_);
+  }
+  ImGui::SameLine();
+  if (ImGui::Button("Browse...##recordings"))
+    recordings_browser_.open(FileBrowser::Mode::kOpen, std::filesystem::current_path());
+  static const char* const kSources[] = {"fused", "vicon", "LMC1", "LMC2", "LMC3", "LMC4"};
+  int source = 0;
+  for (int i = 0; i < 6; ++i) {
+    if (edit_choice_.recorded_source == kSources[i]) source = i;
+  }
+  ImGui::SetNextItemWidth(90);
+  if (ImGui::Combo("hand from", &source, kSources, 6)) edit_choice_.recorded_source = kSources[source];
+  if (ImGui::IsItemHovered()) {
+    ImGui::SetTooltip(
+        "fused: the fused hand of processed trials (lmc process output)\n"
+        "vicon: the trials' Vicon markers mapped to the hand's points\n"
+        "LMCn: one controller's hand, realigned with each trial's layout");
+  }
+  ImGui::SameLine();
+  ImGui::SetNextItemWidth(110);
+  if (ImGui::InputTextWithHint("trials", "*Index*", trials_buf_, sizeof trials_buf_))
+    edit_choice_.trials_glob = trials_buf_;
+  ImGui::SameLine();
+  ImGui::SetNextItemWidth(50);
+  ImGui::InputInt("every", &edit_choice_.every, 0, 0);
+  edit_choice_.every = std::clamp(edit_choice_.every, 1, 1000);
+  if (ImGui::IsItemHovered()) ImGui::SetTooltip("Keep every N-th frame of each trial");
+  // Review hands over one file per trial; the field shows the first.
+  if (edit_choice_.recordings.size() > 1)
+    ImGui::TextDisabled("%zu trials from Review (the field shows the first)", edit_choice_.recordings.size());
 }
 
 void OptimiserPanel::draw_settings() {
@@ -290,6 +355,10 @@ void OptimiserPanel::draw_comparison() {
   const LayoutEvaluation& cand = outcome->candidate;
   ImGui::Spacing();
   ImGui::TextUnformatted("Current vs candidate");
+  ImGui::PushTextWrapPos(0.0f);
+  ImGui::TextUnformatted(specialisation_summary(*outcome).c_str());
+  ImGui::PopTextWrapPos();
+  anchors_.remember("specialisation");
   // The label column fits its longest label; the numbers share the rest. Green is better and red
   // worse whichever way the number moved (an improvement showed in red).
   if (!ImGui::BeginTable("##compare", 4,

@@ -74,6 +74,10 @@ class ReviewTab final : public Tab {
     open_.draw();
     ImGui::SameLine();
     export_panel_.draw_button();
+    ImGui::SameLine();
+    if (ImGui::Button("Design a layout for these trials")) design_layout_for_shown_trials();
+    if (ImGui::IsItemHovered())
+      ImGui::SetTooltip("Opens the Layout tab with the trials the table shows as its pose set (their fused hands)");
     ImGui::SameLine(0, 20);
     sources_.draw();
     ImGui::Separator();
@@ -107,6 +111,20 @@ class ReviewTab final : public Tab {
       status_.set_status(std::string("Review: ") + (o->cancelled ? "export cancelled after " : "exported ") +
                          std::to_string(o->trials) + " trial(s) to " + o->folder.string());
     }
+  }
+
+  // The trials the table shows, as the Layout tab's pose set: their LMC files, fused there.
+  void design_layout_for_shown_trials() {
+    std::vector<std::string> files;
+    for (const int i : state_->visible_trials())
+      files.push_back(state_->trials()[static_cast<size_t>(i)].job.lmc.string());
+    if (files.empty()) {
+      status_.set_status("Review: no trials shown to design a layout for", true);
+      return;
+    }
+    status_.set_status("Layout: designing for " + std::to_string(files.size()) + " trial(s) from Review");
+    context_.layout_pose_request() = std::move(files);
+    context_.tab_request() = "layout";
   }
 
   // Folders other parts of the workbench asked to review (start-up, the Record tab): one run.
