@@ -12,6 +12,7 @@
 #include "devices/sim/sim_rig.h"
 #include "tests/support/reference_data.h"
 #include "tests/ui/headless_imgui.h"
+#include "tests/ui/last_status.h"
 #include "ui/model/devices/devices_state.h"
 #include "ui/model/layout/layout_actions.h"
 #include "ui/model/workbench_context.h"
@@ -20,15 +21,7 @@
 
 namespace devices_calibrate_panel_test {
 
-class LastStatus final : public lmc::ui::StatusSink {
- public:
-  void set_status(const std::string& text, bool is_error) override {
-    last = text;
-    error = is_error;
-  }
-  std::string last;
-  bool error = false;
-};
+using lmc::ui::testing::LastStatus;
 
 }  // namespace devices_calibrate_panel_test
 

@@ -11,6 +11,7 @@
 #include "core/visibility/blind_controllers.h"
 #include "tests/ui/headless_imgui.h"
 #include "tests/ui/inspector_fixture.h"
+#include "tests/ui/last_status.h"
 #include "ui/model/current_layout.h"
 #include "ui/model/layout/layout_actions.h"
 #include "ui/tabs/layout/coverage_panel.h"
@@ -37,15 +38,7 @@ class RecordingRenderer final : public SceneRenderer {
   int width = 0, height = 0, calls = 0;
 };
 
-class SilentStatus final : public StatusSink {
- public:
-  void set_status(const std::string& text, bool is_error) override {
-    last = text;
-    error = is_error;
-  }
-  std::string last;
-  bool error = false;
-};
+using SilentStatus = lmc::ui::testing::LastStatus;
 
 // A small pose set keeps every test fast (and under ASan).
 void use_small_pose_set(LayoutTabState& s, int frames) {

@@ -9,6 +9,7 @@
 #include "core/io/layout_json.h"
 #include "tests/support/reference_data.h"
 #include "tests/ui/headless_imgui.h"
+#include "tests/ui/last_status.h"
 #include "ui/app/help_window.h"
 #include "ui/app/tab_status_sink.h"
 #include "ui/app/workbench_shell.h"
@@ -90,15 +91,7 @@ TEST(SplitPanels, TheSplitterResizesTheRightPanelWithinItsLimits) {
   EXPECT_FLOAT_EQ(split.right_width(), 320.0f) << "the right side keeps its minimum";
 }
 
-class QuietStatus final : public StatusSink {
- public:
-  void set_status(const std::string& text, bool is_error) override {
-    last = text;
-    error = is_error;
-  }
-  std::string last;
-  bool error = false;
-};
+using QuietStatus = lmc::ui::testing::LastStatus;
 
 TEST(LayoutTabFileCommands, TheShellsCommandsRunTheTabsOwnOpenAndSave) {
   HeadlessImGui gui;
