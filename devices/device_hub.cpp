@@ -291,8 +291,15 @@ HubSnapshot DeviceHub::snapshot() const {
   snap.host_time_ns = now;
   std::lock_guard lock(mutex_);
   // Each source's device clock at `now`, read once per snapshot; devices find theirs by backend.
-  std::vector<std::pair<std::string, std::optional<std::int64_t>>> clocks;
-  for (const auto& source : sources_) clocks.emplace_back(source->backend_name(), source->device_clock_us(now));
+  struct Clock {
+    std::string backend;
+    std::optional<std::int64_t> us, uncertainty_us;
+  };
+  std::vector<Clock> clocks;
+  for (const auto& source : sources_) {
+    const std::optional<std::int64_t> us = source->device_clock_us(now);
+    clocks.push_back({source->backend_name(), us, source->device_clock_uncertainty_us()});
+  }
   for (const auto& ld : layout_.devices) snap.slots.push_back(ld.slot);
   for (const auto& d : devices_) {
     DeviceStatus s = d.status;
@@ -308,9 +315,10 @@ HubSnapshot DeviceHub::snapshot() const {
       }
       s.rate_hz = count;
     }
-    for (const auto& [backend, clock] : clocks) {
-      if (backend != s.backend || !clock) continue;
-      s.device_clock_us = clock;
+    for (const Clock& clock : clocks) {
+      if (clock.backend != s.backend || !clock.us) continue;
+      s.device_clock_us = clock.us;
+      s.device_clock_uncertainty_us = clock.uncertainty_us;
       break;
     }
     if (s.slot_index < 0) snap.unassigned_serials.push_back(s.serial);

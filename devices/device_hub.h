@@ -44,7 +44,8 @@ struct DeviceStatus {
   std::string tracking_mode;
   std::int64_t frames_other_side_hand = 0;
   std::optional<std::int64_t> device_clock_us;
-  std::uint32_t product_id = 0;  // as the backend reported it (0: not known)
+  std::optional<std::int64_t> device_clock_uncertainty_us;  // FrameSource::device_clock_uncertainty_us
+  std::uint32_t product_id = 0;                             // as the backend reported it (0: not known)
   // Set when the connected controller is not the model its slot is laid out as
   // (slot_model_mismatch, core/layout/sensor_catalogue.h); empty otherwise.
   std::string model_warning;

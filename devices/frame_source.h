@@ -81,6 +81,9 @@ class FrameSource {
   // the host clock). nullopt when the source has no clock to read (replay; simulated time run
   // faster than real time); any thread.
   virtual std::optional<std::int64_t> device_clock_us(std::int64_t /*host_ns*/) const { return std::nullopt; }
+  // How far the latest device_clock_us may be off, µs: half the host interval the clock was read
+  // in. nullopt when the source does not know (or has no clock). Read it right after the clock.
+  virtual std::optional<std::int64_t> device_clock_uncertainty_us() const { return std::nullopt; }
 };
 
 }  // namespace lmc::devices

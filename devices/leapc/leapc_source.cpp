@@ -195,6 +195,11 @@ std::optional<std::int64_t> LeapcSource::device_clock_us(std::int64_t host_ns) c
   return best_leap + (host_ns - best_mid) / 1000;
 }
 
+std::optional<std::int64_t> LeapcSource::device_clock_uncertainty_us() const {
+  const std::int64_t u = clock_uncertainty_us_;
+  return u < 0 ? std::nullopt : std::optional<std::int64_t>(u);
+}
+
 std::vector<DeviceInfo> leapc_list_devices(std::uint32_t wait_ms, std::vector<std::string>* notices) {
   struct Collect final : FrameSink {
     std::mutex m;

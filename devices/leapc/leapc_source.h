@@ -68,8 +68,8 @@ class LeapcSource final : public FrameSource {
   // LeapGetNow(), the clock of every frame timestamp, moved to `host_ns`: the best of several
   // host/Leap/host brackets (the narrowest), so a thread switch between two reads costs nothing.
   std::optional<std::int64_t> device_clock_us(std::int64_t host_ns) const override;
-  // The half-width of the bracket behind the latest device_clock_us, µs (-1 before any).
-  std::int64_t device_clock_uncertainty_us() const { return clock_uncertainty_us_; }
+  // The half-width of the narrowest bracket behind the latest device_clock_us, µs.
+  std::optional<std::int64_t> device_clock_uncertainty_us() const override;
 
  private:
   struct Impl;

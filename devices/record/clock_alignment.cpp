@@ -22,6 +22,9 @@ void device_clock_at_event(const HubSnapshot& snapshot, const DeviceStatus& d, s
   if (d.device_clock_us) {
     e["device_clock_at_event_us"] = *d.device_clock_us + ns_to_us(host_ns - snapshot.host_time_ns);
     e["device_clock_method"] = "read";
+    // Half the host interval the clock was read in: the read's own error, apart from the latency.
+    e["device_clock_uncertainty_us"] =
+        d.device_clock_uncertainty_us ? nlohmann::json(*d.device_clock_uncertainty_us) : nlohmann::json(nullptr);
     e["device_clock_extrapolated_us"] = extrapolated ? nlohmann::json(*extrapolated) : nlohmann::json(nullptr);
     e["latest_frame_latency_us"] =
         have_frame ? nlohmann::json(*d.device_clock_us - ns_to_us(snapshot.host_time_ns - d.latest_host_receive_ns) -

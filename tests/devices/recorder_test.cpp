@@ -658,6 +658,7 @@ TEST(ClockAlignment, AClockReadAtTheSnapshotIsCarriedToTheEventOnTheHostClock) {
   EXPECT_EQ(d["device_clock_extrapolated_us"], 1'013'000);  // the frame's timestamp + 13 ms: 35 ms early
   EXPECT_EQ(d["latest_frame_latency_us"], 35'000);
   EXPECT_EQ(d["latest_frame_id"], 7);
+  EXPECT_TRUE(d["device_clock_uncertainty_us"].is_null()) << "a source that does not say how well it read";
 }
 
 }  // namespace recorder_test

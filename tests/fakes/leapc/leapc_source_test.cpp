@@ -503,6 +503,11 @@ TEST_F(LeapcBackend, TheDeviceClockAtAViconEventIsReadNotExtrapolatedFromTheLate
   const auto& d = j["devices"][0];
   EXPECT_EQ(d["device_clock_method"], "read");
   EXPECT_EQ(d["device_clock_at_event_us"].get<std::int64_t>(), *snap.devices[0].device_clock_us + 2'000);
+  // The sidecar says how far the read itself may be off: half its narrowest host bracket.
+  ASSERT_TRUE(snap.devices[0].device_clock_uncertainty_us.has_value());
+  EXPECT_EQ(d["device_clock_uncertainty_us"].get<std::int64_t>(), *snap.devices[0].device_clock_uncertainty_us);
+  EXPECT_GE(d["device_clock_uncertainty_us"].get<std::int64_t>(), 0);
+  EXPECT_LT(d["device_clock_uncertainty_us"].get<std::int64_t>(), 1'000);
   // The old estimate runs late by the latest frame's delivery latency (40 ms, plus however long
   // the poll thread took to pick it up); that latency is kept beside it.
   const std::int64_t late_by =
