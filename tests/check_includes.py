@@ -162,8 +162,7 @@ def forward_declared(code):
 
 
 def namespaces(code):
-    return set(re.findall(r"\bnamespace\s+([\w:]+)", code)) and \
-        {n for m in re.findall(r"\bnamespace\s+([\w:]+)", code) for n in m.split("::")}
+    return {n for m in re.findall(r"\bnamespace\s+([\w:]+)", code) for n in m.split("::")}
 
 
 def macros(text):
@@ -206,7 +205,7 @@ def analyse(text):
     namespace_names = set()
     for p in files:
         per_file_any[p] = names_anywhere(code[p]) | macros(text[p])
-        namespace_names |= namespaces(code[p]) or set()
+        namespace_names |= namespaces(code[p])
         for n in per_file_any[p]:
             everywhere[n] += 1
         if p.suffix != ".cpp":
@@ -254,7 +253,7 @@ def analyse(text):
             out.append(f"{p.relative_to(ROOT)}:{line}: uses {name} from {where} without including it")
         return out
 
-    return findings, len(owner)
+    return findings, len(owner), code, closure
 
 
 # The standard library's names and the header that declares each (any one of several will do).
@@ -341,7 +340,7 @@ def system_include_dirs():
     return dirs + [Path("/usr/include/eigen3"), Path("/usr/include/imgui")]
 
 
-def std_findings(files, text):
+def std_findings(files, text, code, closure):
     """Uses of std::name whose header is not among the headers a file reaches."""
     dirs = system_include_dirs()
     if not dirs:
@@ -403,32 +402,15 @@ def std_findings(files, text):
         return file_sys_cache[q]
 
     out = []
-    project_reach = {}
-
-    def reach(p):
-        if p in project_reach:
-            return project_reach[p]
-        seen, todo = {p}, [p]
-        while todo:
-            q = todo.pop()
-            for n in INCLUDE.findall(text.get(q, "")):
-                r = resolve_include(n, q)
-                if r is not None and r not in seen:
-                    seen.add(r)
-                    todo.append(r)
-        project_reach[p] = seen
-        return seen
-
     for p in files:
-        code = strip_code(text[p])
         used = {}
-        for m in STD_USE.finditer(code):
-            used.setdefault(m.group(1), code.count("\n", 0, m.start()) + 1)
+        for m in STD_USE.finditer(code[p]):
+            used.setdefault(m.group(1), code[p].count("\n", 0, m.start()) + 1)
         wanted = {n: STD_HEADERS[n] for n in used if n in STD_HEADERS}
         if not wanted:
             continue
         have = set()
-        for q in reach(p):
+        for q in {p} | closure(p):
             have |= file_sys(q)
         for name, headers in sorted(wanted.items(), key=lambda kv: used[kv[0]]):
             if not any(h in have for h in headers.split()):
@@ -440,10 +422,10 @@ def std_findings(files, text):
 def main():
     files = tree_files()
     text = {p: p.read_text(errors="replace") for p in files}
-    findings_of, owned = analyse(text)
+    findings_of, owned, code, closure = analyse(text)
     wanted = [Path(a).resolve() for a in sys.argv[1:]] or files
     findings = [f for p in wanted if p in set(files) for f in findings_of(p)]
-    findings += std_findings([p for p in wanted if p in set(files)], text)
+    findings += std_findings([p for p in wanted if p in set(files)], text, code, closure)
     for f in findings:
         print(f)
     if findings:

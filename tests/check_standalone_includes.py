@@ -33,7 +33,7 @@ DROP_WITH_VALUE = {"-o", "-c", "-MT", "-MF", "-MQ"}
 DROP_ALONE = {"-MD", "-MMD"}
 
 
-def sources_of(entry, build_dir):
+def sources_of(entry):
     """The first-party files one compile_commands entry compiles: a unity batch's included files,
     or the entry's own file."""
     path = Path(entry["file"])
@@ -66,7 +66,7 @@ def collect(build_dir, source_dir):
     db = json.loads((build_dir / "compile_commands.json").read_text())
     jobs = {}
     for entry in db:
-        for src in sources_of(entry, build_dir):
+        for src in sources_of(entry):
             src = src.resolve()
             # First-party files only: generated anchors and Debian's sources are not ours to check.
             if build_dir in src.parents or source_dir not in src.parents:
