@@ -133,8 +133,8 @@ std::shared_ptr<LeapcLibrary> try_place(const LeapcPlace& place, bool is_file, s
   lib->version = client_version(lib->api);
   if (lib->version && !leapc_major_supported(lib->version->major)) {
     outcome = "refused: it is LeapC " + leapc_version_text(*lib->version) +
-              "; this program was written for LeapC 5 (Gemini) and 6 (Hyperion), and another major version may "
-              "lay out the structures it reads differently";
+              "; this program was written for LeapC 5 (Gemini), 6 and 7 (Hyperion), and another major version "
+              "may lay out the structures it reads differently";
     return nullptr;
   }
   lib->path = place.path;
@@ -154,8 +154,10 @@ std::string leapc_library_text(const LeapcLibrary& library) {
   return "LeapC " + version + " from " + library.path + " (" + library.what + ")";
 }
 
+// 7: Hyperion's later client libraries; the structs and enum values the backend reads are those of
+// 5.x (devices/leapc/README.md says how that was checked).
 bool leapc_major_supported(int major) {
-  return major == 5 || major == 6;
+  return major >= 5 && major <= 7;
 }
 
 void set_leapc_library_path(const std::string& path) {

@@ -31,6 +31,7 @@ check_layout gemini-5.6-deb /usr/lib/ultraleap-hand-tracking-service/libLeapC.so
 check_layout gemini-5.6-deb-sdk /usr/share/doc/ultraleap-hand-tracking-service/lib/libLeapC.so.5 5.6.3
 check_layout gemini-5.17-deb /usr/lib/x86_64-linux-gnu/libLeapC.so.5 5.17.1
 check_layout hyperion-6-deb /usr/lib/x86_64-linux-gnu/libLeapC.so.6 6.1.0
+check_layout client-7-sdk-tarball /opt/ultraleap/LeapSDK/lib/libLeapC.so 7.4.0
 check_layout sdk-tarball /opt/ultraleap/LeapSDK/lib/libLeapC.so.5 5.6.1
 
 # Nothing installed: non-zero, every place tried and why.
@@ -51,18 +52,18 @@ out=$(LMC_LEAPC_SEARCH_ROOT="$empty" "$lmc" devices --backend leapc --wait 0.3 -
 grep -qF "from $fake (--leapc-library)" <<<"$out" || fail "--leapc-library not used: $out"
 echo "ok: --leapc-library"
 
-# A LeapC 7 where Hyperion goes is refused with its version; the Gemini one behind it is loaded.
+# A LeapC 8 where Hyperion goes is refused with its version; the Gemini one behind it is loaded.
 root="$scratch/mixed"
 mkdir -p "$root/usr/lib/x86_64-linux-gnu" "$root/opt/ultraleap/LeapSDK/lib"
 cp "$fake" "$root/usr/lib/x86_64-linux-gnu/libLeapC.so.6"
-out=$(LMC_LEAPC_SEARCH_ROOT="$root" LMC_FAKE_LEAPC_VERSION=7.0.0 "$lmc" devices --backend leapc --wait 0.3 2>&1) &&
-  fail "LeapC 7 only: lmc exited 0: $out"
-grep -q "refused: it is LeapC 7.0.0" <<<"$out" || fail "LeapC 7 not refused with its version: $out"
+out=$(LMC_LEAPC_SEARCH_ROOT="$root" LMC_FAKE_LEAPC_VERSION=8.0.0 "$lmc" devices --backend leapc --wait 0.3 2>&1) &&
+  fail "LeapC 8 only: lmc exited 0: $out"
+grep -q "refused: it is LeapC 8.0.0" <<<"$out" || fail "LeapC 8 not refused with its version: $out"
 # Not LeapC at all (another library under its name): refused for the functions it lacks.
 other=$(ldd "$lmc" | awk '/libm\.so/ {print $3; exit}')
 if [ -n "$other" ]; then
   cp "$other" "$root/opt/ultraleap/LeapSDK/lib/libLeapC.so.5"
-  out=$(LMC_LEAPC_SEARCH_ROOT="$root" LMC_FAKE_LEAPC_VERSION=7.0.0 "$lmc" devices --backend leapc --wait 0.3 2>&1)
+  out=$(LMC_LEAPC_SEARCH_ROOT="$root" LMC_FAKE_LEAPC_VERSION=8.0.0 "$lmc" devices --backend leapc --wait 0.3 2>&1)
   grep -q "refused: it lacks LeapCreateConnection" <<<"$out" || fail "a library that is not LeapC was not refused: $out"
 fi
 echo "ok: refusals"

@@ -114,17 +114,19 @@ TEST_F(LeapcLibrarySearch, ANamedLibraryIsTheOnlyOneTried) {
 
 TEST_F(LeapcLibrarySearch, AMajorVersionTheBackendWasNotWrittenForIsRefusedWithItsVersion) {
   set_leapc_library_path(named_);  // the double this binary is linked with: its version is scriptable
-  fake_leapc::set_version(7, 0, 2);
+  fake_leapc::set_version(8, 0, 2);
   const LeapcSearchResult r = find_leapc();
   ASSERT_FALSE(r.library);
   ASSERT_EQ(r.tried.size(), 1U);
-  EXPECT_NE(r.tried[0].outcome.find("refused: it is LeapC 7.0.2"), std::string::npos) << r.tried[0].outcome;
-  EXPECT_NE(r.tried[0].outcome.find("5 (Gemini) and 6 (Hyperion)"), std::string::npos) << r.tried[0].outcome;
+  EXPECT_NE(r.tried[0].outcome.find("refused: it is LeapC 8.0.2"), std::string::npos) << r.tried[0].outcome;
+  EXPECT_NE(r.tried[0].outcome.find("5 (Gemini), 6 and 7 (Hyperion)"), std::string::npos) << r.tried[0].outcome;
   fake_leapc::set_version(6, 2, 0);
   EXPECT_TRUE(find_leapc().library);
   EXPECT_TRUE(leapc_major_supported(5));
   EXPECT_TRUE(leapc_major_supported(6));
+  EXPECT_TRUE(leapc_major_supported(7));
   EXPECT_FALSE(leapc_major_supported(4));
+  EXPECT_FALSE(leapc_major_supported(8));
 }
 
 }  // namespace
