@@ -27,6 +27,9 @@ function(lmc_compile_flags target)
     target_compile_options(${target} PRIVATE -fsanitize=address,undefined -fno-sanitize-recover=all
                                              -fno-omit-frame-pointer)
     target_link_options(${target} PRIVATE -fsanitize=address,undefined)
+    # Eigen picks its allocator by whether the file is compiled with ASan: files with and without
+    # (LMC_TEST_FLAGS) would then free each other's matrices with the wrong one. One choice for all.
+    target_compile_definitions(${target} PRIVATE EIGEN_MALLOC_ALREADY_ALIGNED=0)
   endif()
   # No absolute paths here (they would tie every object to the checkout's folder): the assets
   # path is compiled into core/common/paths.cpp alone.
@@ -65,8 +68,9 @@ endfunction()
 # Code that only drives the engine (the test binaries, the command-line commands and the window's
 # entry point) gains little from optimisation but pays for it in compile time under the
 # sanitizers (CLI11's header above all; docs/results/build-time.md). The check preset sets these
-# flags to -O0 (still with ASan/UBSan); the engine's libraries keep CMAKE_CXX_FLAGS_<CONFIG>, so
-# what the tests exercise runs as optimised as before.
+# flags to -O0 and leaves UBSan out (a sixth of their compile time, for checks of code that only
+# drives the engine); the engine's libraries keep CMAKE_CXX_FLAGS_<CONFIG> and both sanitizers, so
+# what the tests exercise runs as optimised and as checked as before.
 set(LMC_DRIVER_FLAGS "" CACHE STRING "Extra compile flags for test binaries and program entry points (the check preset: -O0)")
 separate_arguments(LMC_DRIVER_FLAG_LIST UNIX_COMMAND "${LMC_DRIVER_FLAGS}")
 
@@ -74,6 +78,21 @@ separate_arguments(LMC_DRIVER_FLAG_LIST UNIX_COMMAND "${LMC_DRIVER_FLAGS}")
 function(lmc_driver_flags target)
   if(LMC_DRIVER_FLAG_LIST)
     target_compile_options(${target} PRIVATE ${LMC_DRIVER_FLAG_LIST})
+  endif()
+endfunction()
+
+# The test binaries' own files: what they exercise is the engine, whose libraries keep the
+# sanitizers, while instrumenting the tests themselves roughly doubled their compile time (and
+# with the sanitizers on, their precompiled header saved nothing). The check preset sets
+# -fno-sanitize=all here; a test's own memory errors are then found only where they reach the
+# engine's code. Applied after LMC_DRIVER_FLAGS.
+set(LMC_TEST_FLAGS "" CACHE STRING "Extra compile flags for the test binaries' own files (the check preset: no sanitizers)")
+separate_arguments(LMC_TEST_FLAG_LIST UNIX_COMMAND "${LMC_TEST_FLAGS}")
+
+# lmc_test_flags(target): LMC_TEST_FLAGS after every other flag.
+function(lmc_test_flags target)
+  if(LMC_TEST_FLAG_LIST)
+    target_compile_options(${target} PRIVATE ${LMC_TEST_FLAG_LIST})
   endif()
 endfunction()
 
