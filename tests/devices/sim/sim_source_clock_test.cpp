@@ -9,7 +9,7 @@
 #include "devices/device_hub.h"
 #include "devices/sim/sim_source.h"
 #include "devices/tracking_mode.h"
-#include "tests/devices/sim_fixtures.h"
+#include "tests/devices/sim/sim_fixtures.h"
 
 namespace lmc::devices {
 namespace sim_source_clock_test {

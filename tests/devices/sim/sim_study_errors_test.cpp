@@ -12,7 +12,7 @@
 #include "devices/sim/controller_hand_model.h"
 #include "devices/sim/sim_config.h"
 #include "devices/sim/sim_rig.h"
-#include "tests/devices/sim_fixtures.h"
+#include "tests/devices/sim/sim_fixtures.h"
 #include "tests/support/reference_data.h"
 
 namespace lmc::devices {

@@ -26,7 +26,7 @@
 #include "devices/record/recorder.h"
 #include "devices/record/trial_name.h"
 #include "devices/sim/sim_rig.h"
-#include "tests/devices/sim_fixtures.h"
+#include "tests/devices/sim/sim_fixtures.h"
 #include "tests/support/full_disk_sink.h"
 #include "tests/support/reference_data.h"
 #include "tests/support/test_recorder.h"

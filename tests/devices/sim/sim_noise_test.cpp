@@ -14,7 +14,7 @@
 #include "core/io/sensor_catalogue_json.h"
 #include "devices/sim/sim_config.h"
 #include "devices/sim/sim_rig.h"
-#include "tests/devices/sim_fixtures.h"
+#include "tests/devices/sim/sim_fixtures.h"
 #include "tests/support/reference_data.h"
 
 namespace lmc::devices {

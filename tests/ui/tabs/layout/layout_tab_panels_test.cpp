@@ -10,7 +10,7 @@
 
 #include "core/visibility/blind_controllers.h"
 #include "tests/ui/headless_imgui.h"
-#include "tests/ui/inspector_fixture.h"
+#include "tests/ui/tabs/layout/inspector_fixture.h"
 #include "tests/ui/last_status.h"
 #include "ui/model/current_layout.h"
 #include "ui/model/layout/layout_actions.h"

@@ -10,7 +10,7 @@
 #include "core/io/layout_json.h"
 #include "core/io/sensor_catalogue_json.h"
 #include "tests/support/scratch_dir.h"
-#include "tests/ui/inspector_fixture.h"
+#include "tests/ui/tabs/layout/inspector_fixture.h"
 #include "ui/model/layout/layout_actions.h"
 #include "ui/tabs/layout/inspector_panel.h"
 
