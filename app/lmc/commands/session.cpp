@@ -21,8 +21,8 @@
 #include "core/common/paths.h"
 #include "core/session/protocol.h"
 #include "core/session/session_folder.h"
-#include "devices/session/new_session_spec.h"
-#include "devices/session/session_runner.h"
+#include "devices/session_runner/new_session_spec.h"
+#include "devices/session_runner/session_runner.h"
 #include "devices/sim/sim_config.h"
 #include "devices/vicon/vicon_trigger.h"
 

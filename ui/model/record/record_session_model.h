@@ -25,7 +25,7 @@
 #include "core/session/session_folder.h"
 #include "devices/fusion/live_fusion.h"
 #include "devices/record/trial_engine.h"
-#include "devices/session/session_runner.h"
+#include "devices/session_runner/session_runner.h"
 #include "ui/model/devices/live_hands.h"
 #include "ui/model/jobs/background_job.h"
 

@@ -1,4 +1,4 @@
-#include "devices/session/stream_probe.h"
+#include "devices/session_runner/stream_probe.h"
 
 #include <thread>
 

@@ -9,7 +9,7 @@
 #include "core/io/recorder_sidecar.h"
 #include "core/session/session_folder.h"
 #include "core/session/trial_files.h"
-#include "devices/session/session_runner.h"
+#include "devices/session_runner/session_runner.h"
 #include "devices/sim/sim_rig.h"
 #include "tests/support/reference_data.h"
 

@@ -1,4 +1,4 @@
-#include "devices/session/session_runner.h"
+#include "devices/session_runner/session_runner.h"
 
 #include <cmath>
 #include <sstream>
@@ -13,7 +13,7 @@
 #include "core/session/trial_files.h"
 #include "devices/device_hub.h"
 #include "devices/record/recorder.h"
-#include "devices/session/stream_probe.h"
+#include "devices/session_runner/stream_probe.h"
 #include "devices/source_factory.h"
 #include "devices/vicon/vicon_trigger.h"
 

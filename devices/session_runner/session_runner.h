@@ -24,7 +24,7 @@
 #include "devices/device_hub.h"
 #include "devices/frame_tap.h"
 #include "devices/record/trial_engine.h"
-#include "devices/session/preflight.h"
+#include "devices/session_runner/preflight.h"
 #include "devices/sim/sim_config.h"
 
 namespace lmc::devices {

@@ -1,4 +1,4 @@
-#include "devices/session/preflight.h"
+#include "devices/session_runner/preflight.h"
 
 #include <unistd.h>
 

@@ -11,7 +11,7 @@
 
 #include "devices/device_hub.h"
 #include "devices/frame_consumer.h"
-#include "devices/session/preflight.h"
+#include "devices/session_runner/preflight.h"
 
 namespace lmc::devices {
 

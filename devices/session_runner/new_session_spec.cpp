@@ -1,4 +1,4 @@
-#include "devices/session/new_session_spec.h"
+#include "devices/session_runner/new_session_spec.h"
 
 #include <cstdint>
 
