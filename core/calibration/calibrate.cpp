@@ -3,7 +3,7 @@
 #include "core/common/error.h"
 #include "core/common/number_format.h"
 
-namespace lmc::calibration {
+namespace lmc {
 namespace {
 
 // Samples that have a finite Vicon point on their frame: (device point, Vicon point, group).
@@ -252,4 +252,4 @@ CalibrationResult calibrate(const CalibrationInput& input, const Layout& layout,
   return result;
 }
 
-}  // namespace lmc::calibration
+}  // namespace lmc

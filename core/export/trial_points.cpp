@@ -194,7 +194,7 @@ TrialExportReport export_trials(const TrialExportRequest& request) {
     std::vector<TrialSources> jobs;
     std::vector<std::string> notes;
     try {
-      jobs = session::trial_sources_for_input(input, std::nullopt, &notes);
+      jobs = trial_sources_for_input(input, std::nullopt, &notes);
     } catch (const std::exception& e) {
       report.notes.push_back("left out " + input.string() + ": " + e.what());
       ++report.left_out;

@@ -90,7 +90,7 @@ std::vector<TrialInput> recording_inputs(const fs::path& input, const RecordedPo
     out.push_back({job.trial, input, job, false});
     return out;
   }
-  for (auto& job : session::trial_sources_for_input(input, std::nullopt, &notes)) {
+  for (auto& job : trial_sources_for_input(input, std::nullopt, &notes)) {
     if (options.source == RecordedPoseSource::kVicon) {
       if (!job.vicon) {
         notes.push_back(job.lmc.string() + ": no Vicon file (" + job.trial + ".trc or .c3d) beside it; left out");

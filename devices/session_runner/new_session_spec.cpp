@@ -7,8 +7,8 @@
 
 namespace lmc::devices {
 
-session::NewSessionSpec new_session_spec(const NewSessionFields& a) {
-  session::NewSessionSpec spec;
+NewSessionSpec new_session_spec(const NewSessionFields& a) {
+  NewSessionSpec spec;
   spec.subject.subject_id = a.subject;
   spec.subject.handedness = a.handedness;
   if (a.hand_length_mm > 0) spec.subject.hand_length_mm = a.hand_length_mm;

@@ -25,6 +25,6 @@ struct NewSessionFields {
 
 // Throws lmc::Error naming the field at fault (a Vicon port that is not a number, a database path
 // without a Vicon target).
-session::NewSessionSpec new_session_spec(const NewSessionFields& fields);
+NewSessionSpec new_session_spec(const NewSessionFields& fields);
 
 }  // namespace lmc::devices

@@ -21,10 +21,6 @@ namespace fs = std::filesystem;
 
 namespace lmc::devices {
 
-using session::PlannedTrial;
-using session::QualityReport;
-using session::TrialType;
-
 struct SessionRunner::RecordingHub {
   std::unique_ptr<DeviceHub> hub;
   DeviceHub* hub_ref = nullptr;  // a hub owned elsewhere (the caller's, or the block's hardware hub)
@@ -59,7 +55,7 @@ std::string AttemptResult::verdict() const {
   return quality ? quality->verdict : std::string("fail");
 }
 
-SessionRunner::SessionRunner(session::SessionFolder& folder, SessionRunOptions options)
+SessionRunner::SessionRunner(SessionFolder& folder, SessionRunOptions options)
     : folder_(folder), options_(std::move(options)) {
   const auto& state = folder_.state();
   protocol_ = state.protocol;
@@ -142,7 +138,7 @@ std::uint64_t SessionRunner::bytes_still_needed(int from) const {
   std::uint64_t bytes = 0;
   const auto& trials = folder_.state().trials;
   for (size_t k = static_cast<size_t>(std::max(from, 0)); k < plan_.size(); ++k) {
-    if (trials[k].status == session::TrialStatus::kAccepted) continue;
+    if (trials[k].status == TrialStatus::kAccepted) continue;
     const TrialType& type = protocol_.trial_types.at(static_cast<size_t>(plan_[k].trial_type));
     bytes += estimated_trial_bytes(layout_for(static_cast<int>(k)).device_count(), type.duration_s);
   }
@@ -226,7 +222,7 @@ AttemptResult SessionRunner::run_trial(int i, std::stop_token stop,
   const PlannedTrial& p = plan_.at(static_cast<size_t>(i));
   const TrialType& type = protocol_.trial_types.at(static_cast<size_t>(p.trial_type));
   const auto& trial_state = folder_.state().trials.at(static_cast<size_t>(i));
-  if (trial_state.status == session::TrialStatus::kAccepted)
+  if (trial_state.status == TrialStatus::kAccepted)
     throw Error("trial " + p.name + " is accepted; redo it first to record it again");
   // Files of an earlier attempt still under the trial's name go under superseded/ first:
   // nothing recorded is ever overwritten.
@@ -284,7 +280,7 @@ AttemptResult SessionRunner::run_trial(int i, std::stop_token stop,
     } else if (fs::exists(paths.recording) && fs::exists(paths.sidecar)) {
       const LmcRecording recording = read_lmc_recording(paths.recording);
       const RecorderSidecar sidecar = read_recorder_sidecar(paths.sidecar);
-      session::QualityInputs in;
+      QualityInputs in;
       in.recording = &recording;
       in.sidecar = &sidecar;
       in.layout = layout_for(i);
@@ -293,7 +289,7 @@ AttemptResult SessionRunner::run_trial(int i, std::stop_token stop,
       in.rom = type.rom;
       in.vicon_expected = config.vicon.has_value();
       in.vicon_export_dir = options_.vicon_export_dir;
-      result.quality = session::assess_trial(in);
+      result.quality = assess_trial(in);
     }
   } catch (const std::exception& e) {
     QualityReport q;
@@ -313,7 +309,7 @@ AttemptResult SessionRunner::run_trial(int i, std::stop_token stop,
                                    "the trial " + result.outcome + ": " + result.reason);
     result.quality->verdict = "fail";
   }
-  folder_.trial_verdict(i, session::quality_to_json(*result.quality));
+  folder_.trial_verdict(i, quality_to_json(*result.quality));
   return result;
 }
 
@@ -371,13 +367,13 @@ BlockCalibration SessionRunner::calibrate_block(int i, std::stop_token stop,
                                                 const std::function<void(const TrialSnapshot&)>& on_status) {
   if (!protocol_.calibration) throw Error("the session's protocol has no calibration step");
   const PlannedTrial& p = plan_.at(static_cast<size_t>(i));
-  const session::CalibrationStep& step = *protocol_.calibration;
+  const CalibrationStep& step = *protocol_.calibration;
   BlockCalibration out;
   out.trial = i;
   out.block = p.layout_key;
   // Journal first: a process that dies from here on leaves the step "recording", done again on resume.
   out.attempt = folder_.calibration_started(p.layout_key);
-  out.trial_name = session::calibration_trial_name(p.layout_key, out.attempt);
+  out.trial_name = calibration_trial_name(p.layout_key, out.attempt);
   // The block's layout as created: a second calibration starts from it, not from the first's result.
   const Layout nominal = nominal_layout_for(i);
 
@@ -403,7 +399,7 @@ BlockCalibration SessionRunner::calibrate_block(int i, std::stop_token stop,
     return out;
   }
   try {
-    calibration::TrialCalibrationRequest request;
+    TrialCalibrationRequest request;
     const TrialFiles files = trial_files(folder_.dir(), out.trial_name);
     request.trial = files.recording;
     // The trial's Vicon file: where Vicon exports, else beside the recording (where the simulator
@@ -412,9 +408,9 @@ BlockCalibration SessionRunner::calibrate_block(int i, std::stop_token stop,
       if (dir.empty() || request.vicon) continue;
       if (const fs::path trc = dir / (out.trial_name + ".trc"); fs::exists(trc)) request.vicon = trc;
     }
-    out.fit = calibration::calibrate_trial(request, nominal);
-    out.summary = calibration::calibration_summary_json(out.fit->result);
-    out.residual_table = calibration::residual_table(out.fit->result);
+    out.fit = calibrate_trial(request, nominal);
+    out.summary = calibration_summary_json(out.fit->result);
+    out.residual_table = residual_table(out.fit->result);
     out.warnings = out.fit->result.all_warnings();
     for (const auto& w : out.fit->file_warnings) out.warnings.push_back(w);
   } catch (const std::exception& e) {

@@ -51,9 +51,9 @@ struct BlockCalibration {
   int attempt = 0;
   std::string trial_name;  // Calib_<block>NN
   std::string failure;     // why there is no fit (the recording failed, too little hand): empty when fitted
-  std::optional<calibration::TrialCalibration> fit;
+  std::optional<TrialCalibration> fit;
   nlohmann::json summary;             // calibration_summary_json of the fit (null without one)
-  std::string residual_table;         // calibration::residual_table, for people
+  std::string residual_table;         // residual_table, for people
   std::vector<std::string> warnings;  // every warning a person must see before applying
   bool ok() const { return fit.has_value(); }
 };
@@ -64,10 +64,10 @@ struct AttemptResult {
   int attempt = 0;
   std::string outcome;  // completed | aborted | failed | interrupted
   std::string reason;
-  std::optional<session::QualityReport> quality;  // absent when nothing could be assessed
-  std::int64_t frames = 0;                        // rows the recorder wrote (0: nothing to keep)
-  bool reached_go = false;                        // the subject was told to go (the window opened)
-  std::string verdict() const;                    // the quality verdict, or "fail" when there is none
+  std::optional<QualityReport> quality;  // absent when nothing could be assessed
+  std::int64_t frames = 0;               // rows the recorder wrote (0: nothing to keep)
+  bool reached_go = false;               // the subject was told to go (the window opened)
+  std::string verdict() const;           // the quality verdict, or "fail" when there is none
 };
 
 // The verdict's one reason when the operator ended a trial before go ("aborted before go — no
@@ -76,14 +76,14 @@ std::string before_go_reason(const std::string& outcome);
 
 class SessionRunner {
  public:
-  SessionRunner(session::SessionFolder& folder, SessionRunOptions options);
+  SessionRunner(SessionFolder& folder, SessionRunOptions options);
   ~SessionRunner();
   SessionRunner(const SessionRunner&) = delete;
   SessionRunner& operator=(const SessionRunner&) = delete;
 
-  const session::SessionFolder& folder() const { return folder_; }
-  const session::Protocol& protocol() const { return protocol_; }
-  const std::vector<session::PlannedTrial>& plan() const { return plan_; }
+  const SessionFolder& folder() const { return folder_; }
+  const Protocol& protocol() const { return protocol_; }
+  const std::vector<PlannedTrial>& plan() const { return plan_; }
   // The layout of trial `i`'s block, as the manifest keeps it (fixed after construction, so any
   // thread may read it while a trial runs).
   const Layout& layout(int i) const { return layout_for(i); }
@@ -150,10 +150,10 @@ class SessionRunner {
   TrialEngineConfig engine_config(const std::string& name, double seconds, const std::string& operator_cue, int attempt,
                                   const std::string& block) const;
 
-  session::SessionFolder& folder_;
+  SessionFolder& folder_;
   SessionRunOptions options_;
-  session::Protocol protocol_;
-  std::vector<session::PlannedTrial> plan_;
+  Protocol protocol_;
+  std::vector<PlannedTrial> plan_;
   std::map<std::string, Layout> layouts_;       // by layout key, from the manifest
   std::set<std::string> cleared_blocks_;        // pre-flight passed or overridden in this run
   std::unique_ptr<RecordingHub> hardware_hub_;  // leapc: one hub per block, kept across its trials

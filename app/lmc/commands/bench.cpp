@@ -119,7 +119,7 @@ PairedTimes measure_terms_cost(const std::vector<lmc::DeviceView>& views, int la
     ratio.push_back(robust.back() / study.back());
     total += first + second;
   }
-  const auto median = [](const std::vector<double>& v) { return lmc::stats::percentile(v, 50.0); };
+  const auto median = [](const std::vector<double>& v) { return lmc::percentile(v, 50.0); };
   return {median(study), median(robust), median(ratio), static_cast<int>(ratio.size())};
 }
 
@@ -154,7 +154,7 @@ MixedRigTimes measure_mixed_rig(const std::vector<lmc::DeviceView>& views, int l
     for (size_t rig = 0; rig < 4; ++rig) times[rig].push_back(t[rig]);
     ratio.push_back((t[2] + t[3]) / (t[0] + t[1]));
   }
-  const auto median = [](const std::vector<double>& v) { return lmc::stats::percentile(v, 50.0); };
+  const auto median = [](const std::vector<double>& v) { return lmc::percentile(v, 50.0); };
   return {median(times[0]), median(times[1]), median(times[2]),
           median(times[3]), median(ratio),    static_cast<int>(ratio.size())};
 }

@@ -122,10 +122,10 @@ std::vector<DeviceSummary> summarise_devices(const lmc::LmcRecording& rec) {
       }
     }
     std::sort(stamps.begin(), stamps.end());
-    d.reported_rate_median_hz = lmc::stats::percentile(std::move(reported), 50);
+    d.reported_rate_median_hz = lmc::percentile(std::move(reported), 50);
     if (stamps.size() >= 2) d.duration_s = static_cast<double>(stamps.back() - stamps.front()) * 1e-6;
     // The rates as the trial verdict computes them, from this device's rows in time order.
-    const lmc::stats::StreamRates rates = lmc::stats::stream_rates(stamps);
+    const lmc::StreamRates rates = lmc::stream_rates(stamps);
     d.rate_median_hz = rates.median_hz;
     d.rate_p5_hz = rates.p5_hz;
     d.rate_p95_hz = rates.p95_hz;

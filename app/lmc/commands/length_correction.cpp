@@ -30,7 +30,7 @@ lmc::TrialSources fit_trial_job(const LengthFitArgs& a) {
   if (vicon && !single_file && !std::filesystem::is_directory(*vicon)) {
     throw lmc::Error("--vicon must be a folder when the input is a folder (or give the trial's LMC file)");
   }
-  const auto jobs = lmc::session::trial_sources_for_input(a.input, vicon);
+  const auto jobs = lmc::trial_sources_for_input(a.input, vicon);
   if (!a.trial.empty()) {
     for (const auto& j : jobs)
       if (j.trial == a.trial) return j;

@@ -363,16 +363,16 @@ TEST(TrialEngine, ListenModeObeysOnlyTheConfiguredViconHost) {
   EXPECT_TRUE(side.vicon_listen->warning.empty());
 
   const LmcRecording rec = read_lmc_recording(r.paths.recording);
-  session::QualityInputs in;
+  QualityInputs in;
   in.recording = &rec;
   in.sidecar = &side;
-  const session::QualityReport q = session::assess_trial(in);
+  const QualityReport q = assess_trial(in);
   EXPECT_TRUE(q.vicon.listened);
   EXPECT_EQ(q.vicon.trigger_host, "127.0.0.1");
   EXPECT_EQ(q.vicon.refused_datagrams, 6);
   EXPECT_THAT(q.reasons,
               ::testing::Contains("6 Vicon datagram(s) from hosts that may not trigger were refused (127.0.0.2)"));
-  const session::QualityReport back = session::quality_from_json(session::quality_to_json(q), "verdict");
+  const QualityReport back = quality_from_json(quality_to_json(q), "verdict");
   EXPECT_EQ(back.vicon.trigger_host, "127.0.0.1");
   EXPECT_EQ(back.vicon.refused_datagrams, 6);
   EXPECT_THAT(back.vicon.refused_hosts, ElementsAre("127.0.0.2"));
@@ -423,11 +423,11 @@ TEST(TrialEngine, ListenModeWithoutAViconHostWarnsThatAnySenderIsObeyed) {
   EXPECT_EQ(side.vicon_listen->trigger_host, "127.0.0.2");
   EXPECT_THAT(side.vicon_listen->warning, HasSubstr("any sender"));
   const LmcRecording rec = read_lmc_recording(r.paths.recording);
-  session::QualityInputs in;
+  QualityInputs in;
   in.recording = &rec;
   in.sidecar = &side;
   EXPECT_THAT(
-      session::assess_trial(in).reasons,
+      assess_trial(in).reasons,
       ::testing::Contains(
           "Vicon listen mode obeyed any sender (CaptureStart came from 127.0.0.2): no Vicon host was configured"));
 }
@@ -580,8 +580,8 @@ TEST(TrialEngine, AControllerSilentAtTheEndIsNamedInTheSidecarAndTheVerdict) {
   EXPECT_EQ(side.trial_window.at("streams_behind_end"), nlohmann::json::array({"LMC1"}));
   EXPECT_THAT(r.messages, ::testing::Contains(HasSubstr("LMC1: no frame from after the trial's end within 1000 ms")));
   const LmcRecording rec = read_lmc_recording(r.paths.recording);
-  const session::QualityReport q = session::assess_trial([&] {
-    session::QualityInputs in;
+  const QualityReport q = assess_trial([&] {
+    QualityInputs in;
     in.recording = &rec;
     in.sidecar = &side;
     in.layout = one_late_controller();

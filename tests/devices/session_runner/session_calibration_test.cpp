@@ -29,12 +29,12 @@ fs::path calibrating_protocol(const fs::path& dir) {
   return out;
 }
 
-session::SessionFolder new_session(const fs::path& dir) {
-  session::NewSessionSpec spec;
+SessionFolder new_session(const fs::path& dir) {
+  NewSessionSpec spec;
   spec.subject.subject_id = "S07";
   spec.protocol = calibrating_protocol(dir.parent_path()).string();
   spec.duration_override_s = 1.0;
-  return session::SessionFolder::create(dir, spec);
+  return SessionFolder::create(dir, spec);
 }
 
 SessionRunOptions misplaced_rig() {
@@ -54,7 +54,7 @@ Eigen::Isometry3d layout_device_to_world(const LayoutDevice& d) {
 
 TEST(SessionCalibration, ABlockCalibratesFromItsStillHandAndRecordsWithTheResult) {
   const fs::path root = test::scratch_dir("session_calibration");
-  session::SessionFolder folder = new_session(root / "S07");
+  SessionFolder folder = new_session(root / "S07");
   const SessionRunOptions options = misplaced_rig();
   SessionRunner runner(folder, options);
   ASSERT_TRUE(runner.needs_calibration(0));
@@ -102,10 +102,10 @@ TEST(SessionCalibration, ACutOffCalibrationIsDoneAgainAndKeepingTheNominalLayout
   const fs::path root = test::scratch_dir("session_calibration_resume");
   const fs::path dir = root / "S07";
   {
-    session::SessionFolder folder = new_session(dir);
+    SessionFolder folder = new_session(dir);
     folder.calibration_started("Naiv");  // and then the program died
   }
-  session::SessionFolder folder = session::SessionFolder::open(dir);
+  SessionFolder folder = SessionFolder::open(dir);
   EXPECT_EQ(folder.state().calibration.at("Naiv").status, "recording");
   SessionRunner runner(folder, misplaced_rig());
   ASSERT_TRUE(runner.needs_calibration(0));
@@ -132,10 +132,10 @@ TEST(SessionCalibration, ACutOffCalibrationIsDoneAgainAndKeepingTheNominalLayout
 
 TEST(SessionCalibration, ProtocolsWithoutTheStepNeverAskForIt) {
   const fs::path root = test::scratch_dir("session_calibration_none");
-  session::NewSessionSpec spec;
+  NewSessionSpec spec;
   spec.subject.subject_id = "S08";
   spec.protocol = "quick";
-  session::SessionFolder folder = session::SessionFolder::create(root / "S08", spec);
+  SessionFolder folder = SessionFolder::create(root / "S08", spec);
   SessionRunner runner(folder, misplaced_rig());
   EXPECT_FALSE(runner.needs_calibration(0));
   EXPECT_THROW(folder.calibration_started("Naiv"), Error);

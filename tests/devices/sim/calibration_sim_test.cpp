@@ -41,9 +41,8 @@ TEST(SimCalibrationError, RotationPerSlotAndSeededRandomErrorsComeFromTheConfig)
             Eigen::Vector3d(0, 0, 7));
   const lmc::devices::SimRig rig(layout, c);
   const Eigen::Matrix3d nominal = layout.devices[1].pose.rotation();
-  EXPECT_NEAR(lmc::calibration::rotation_angle_deg(nominal.transpose() * rig.true_device_to_world(1).linear()), 7.0,
-              1e-9);
-  EXPECT_NEAR(lmc::calibration::rotation_angle_deg(rig.true_device_to_world(0).linear()), 0.0, 1e-9);
+  EXPECT_NEAR(lmc::rotation_angle_deg(nominal.transpose() * rig.true_device_to_world(1).linear()), 7.0, 1e-9);
+  EXPECT_NEAR(lmc::rotation_angle_deg(rig.true_device_to_world(0).linear()), 0.0, 1e-9);
 
   lmc::devices::CalibrationValidationOptions options;
   const lmc::devices::SimRig a(layout, lmc::devices::validation_sim_config(11, options));
@@ -54,8 +53,8 @@ TEST(SimCalibrationError, RotationPerSlotAndSeededRandomErrorsComeFromTheConfig)
                             layout.devices[static_cast<size_t>(d)].pose.translation() -
                             layout.devices[static_cast<size_t>(d)].offset_mm;
     EXPECT_LE(moved.norm(), options.max_translation_mm + 1e-9);
-    EXPECT_LE(lmc::calibration::rotation_angle_deg(layout.devices[static_cast<size_t>(d)].pose.rotation().transpose() *
-                                                   a.true_device_to_world(d).linear()),
+    EXPECT_LE(lmc::rotation_angle_deg(layout.devices[static_cast<size_t>(d)].pose.rotation().transpose() *
+                                      a.true_device_to_world(d).linear()),
               options.max_rotation_deg + 1e-9);
   }
   // A bad value names the key.

@@ -37,7 +37,7 @@ TEST(CalibrationJob, CalibratesARecordedTrialAndAppliesAsOneUndoStep) {
   lmc::save_lmc_recording(file, rec);
 
   lmc::ui::CalibrationJob job;
-  lmc::calibration::TrialCalibrationRequest request;
+  lmc::TrialCalibrationRequest request;
   request.trial = file;
   job.start(request, layout);
   ASSERT_TRUE(calibration_job_test::wait_until([&] { return lmc::ui::job_finished(job.state()); }));

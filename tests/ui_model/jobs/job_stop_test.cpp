@@ -90,7 +90,7 @@ TEST(JobStop, ACancelledCalibrationGivesNoCorrection) {
   const auto file = test::scratch_dir("job_stop_calibration") / "LMC_Calibration01.raw.txt";
   save_lmc_recording(file, rec);
   CalibrationJob job;
-  calibration::TrialCalibrationRequest request;
+  TrialCalibrationRequest request;
   request.trial = file;
   job.start(request, layout);
   job.cancel();  // lands while the trial is read or fitted

@@ -33,8 +33,8 @@ RecordSettings real_time_sim() {
   return s;
 }
 
-session::NewSessionSpec quick() {
-  session::NewSessionSpec spec;
+NewSessionSpec quick() {
+  NewSessionSpec spec;
   spec.subject.subject_id = "S07";
   spec.protocol = "quick";
   return spec;
@@ -83,11 +83,11 @@ TEST(RecordLiveFusion, ARealTimeTrialShowsTheFusedHandAndItsLatencyThenEscAborts
   EXPECT_TRUE(fs::file_size(dir / "LMC_Naiv_Static101.raw.txt") > 1000);  // its rows are kept
 
   // The journal says so, as `lmc session status` reads it.
-  const auto on_disk = session::read_session_state(dir);
+  const auto on_disk = read_session_state(dir);
   ASSERT_EQ(on_disk.trials[0].attempts.size(), 1U);
   EXPECT_EQ(on_disk.trials[0].attempts[0].outcome, "aborted");
   EXPECT_EQ(on_disk.trials[0].attempts[0].reason, "aborted by the operator");
-  EXPECT_EQ(on_disk.trials[0].status, session::TrialStatus::kFailed);
+  EXPECT_EQ(on_disk.trials[0].status, TrialStatus::kFailed);
   ASSERT_EQ(on_disk.trials[0].notes.size(), 1U);
   EXPECT_EQ(on_disk.trials[0].notes[0], "subject coughed at 1 s");
 
@@ -193,9 +193,9 @@ TEST(RecordAcceptDecision, EscInTheCountdownIsNoDataNotAControllerFaultAndCannot
   EXPECT_TRUE(m.accept_question().empty());
   EXPECT_NE(m.accept_last(), "");
   EXPECT_NE(m.answer_accept(true), "");
-  EXPECT_NE(m.state().trials[0].status, session::TrialStatus::kAccepted);
-  const auto on_disk = session::read_session_state(dir);
-  EXPECT_NE(on_disk.trials[0].status, session::TrialStatus::kAccepted);
+  EXPECT_NE(m.state().trials[0].status, TrialStatus::kAccepted);
+  const auto on_disk = read_session_state(dir);
+  EXPECT_NE(on_disk.trials[0].status, TrialStatus::kAccepted);
   for (const auto& n : on_disk.trials[0].notes) EXPECT_EQ(n.find("accepted by the operator"), std::string::npos);
   m.close();
   fs::remove_all(dir);
@@ -222,17 +222,17 @@ TEST(RecordAcceptDecision, AFailedAttemptWithFramesIsKeptOnlyAfterAQuestionWhose
             std::string::npos)
       << q;
   EXPECT_NE(q.find("Keep it anyway?"), std::string::npos) << q;
-  EXPECT_EQ(m.state().trials[0].status, session::TrialStatus::kFailed) << "asking keeps nothing";
+  EXPECT_EQ(m.state().trials[0].status, TrialStatus::kFailed) << "asking keeps nothing";
   ASSERT_EQ(m.answer_accept(false), "");
   EXPECT_TRUE(m.accept_question().empty());
-  EXPECT_EQ(m.state().trials[0].status, session::TrialStatus::kFailed);
+  EXPECT_EQ(m.state().trials[0].status, TrialStatus::kFailed);
   EXPECT_NE(m.answer_accept(true), "") << "no question is open any more";
-  EXPECT_EQ(m.state().trials[0].status, session::TrialStatus::kFailed);
+  EXPECT_EQ(m.state().trials[0].status, TrialStatus::kFailed);
 
   // Asked again and answered yes: kept, journaled with the verdict.
   ASSERT_EQ(m.ask_accept(), "");
   ASSERT_EQ(m.answer_accept(true), "");
-  EXPECT_EQ(m.state().trials[0].status, session::TrialStatus::kAccepted);
+  EXPECT_EQ(m.state().trials[0].status, TrialStatus::kAccepted);
   ASSERT_FALSE(m.state().trials[0].notes.empty());
   EXPECT_NE(m.state().trials[0].notes.back().find("accepted by the operator despite its verdict (fail)"),
             std::string::npos);

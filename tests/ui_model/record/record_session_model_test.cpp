@@ -32,8 +32,8 @@ RecordSettings fast_sim() {
   return s;
 }
 
-session::NewSessionSpec quick(const std::string& subject = "S01") {
-  session::NewSessionSpec spec;
+NewSessionSpec quick(const std::string& subject = "S01") {
+  NewSessionSpec spec;
   spec.subject.subject_id = subject;
   spec.protocol = "quick";
   return spec;
@@ -83,15 +83,15 @@ TEST(RecordSessionModel, AQuickSessionRecordsBothTrialsAndAcceptsPassOrWarn) {
   ASSERT_TRUE(m.last_attempt());
   EXPECT_EQ(m.last_attempt()->outcome, "completed");
   EXPECT_NE(m.last_attempt()->verdict(), "fail");
-  EXPECT_EQ(m.state().trials[0].status, session::TrialStatus::kAccepted);
+  EXPECT_EQ(m.state().trials[0].status, TrialStatus::kAccepted);
   EXPECT_EQ(m.current_trial(), 1);
 
   record_current(m);
   EXPECT_TRUE(m.finished());
   EXPECT_EQ(m.accepted_count(), 2);
   // The folder agrees with the model's copy (read as `lmc session status` would).
-  const auto on_disk = session::read_session_state(dir);
-  EXPECT_EQ(on_disk.count(session::TrialStatus::kAccepted), 2);
+  const auto on_disk = read_session_state(dir);
+  EXPECT_EQ(on_disk.count(TrialStatus::kAccepted), 2);
   m.close();
   fs::remove_all(dir);
 }
@@ -104,13 +104,13 @@ TEST(RecordSessionModel, RedoKeepsTheEarlierAttemptAndRecordsTheTrialAgain) {
   record_current(m);
   ASSERT_EQ(m.redo(), "");
   EXPECT_EQ(m.current_trial(), 0);
-  EXPECT_EQ(m.state().trials[0].status, session::TrialStatus::kPending);
+  EXPECT_EQ(m.state().trials[0].status, TrialStatus::kPending);
   const auto& superseded = m.state().trials[0].attempts.at(0).superseded_dir;
   ASSERT_FALSE(superseded.empty());
   EXPECT_TRUE(fs::exists(dir / superseded / "LMC_Naiv_Static101.raw.txt"));
   record_current(m);
   EXPECT_EQ(m.state().trials[0].attempts.size(), 2U);
-  EXPECT_EQ(m.state().trials[0].status, session::TrialStatus::kAccepted);
+  EXPECT_EQ(m.state().trials[0].status, TrialStatus::kAccepted);
   EXPECT_TRUE(fs::exists(dir / "LMC_Naiv_Static101.raw.txt"));
   m.close();
   fs::remove_all(dir);
@@ -127,8 +127,8 @@ TEST(RecordSessionModel, RedoTakesTheRecordedTrialPickedInTheListBeforeTheLastOn
   ASSERT_EQ(m.last_attempt()->trial, 1);
   m.select(0);  // the operator clicks the first trial, then presses R
   ASSERT_EQ(m.redo(), "");
-  EXPECT_EQ(m.state().trials[0].status, session::TrialStatus::kPending);
-  EXPECT_EQ(m.state().trials[1].status, session::TrialStatus::kAccepted);
+  EXPECT_EQ(m.state().trials[0].status, TrialStatus::kPending);
+  EXPECT_EQ(m.state().trials[1].status, TrialStatus::kAccepted);
   EXPECT_EQ(m.current_trial(), 0);
   m.close();
   fs::remove_all(dir);
@@ -153,12 +153,12 @@ TEST(RecordSessionModel, StopInterruptsTheTrialKeepsItsRowsAndWaitsForTheOperato
   ASSERT_TRUE(m.last_attempt());
   EXPECT_EQ(m.last_attempt()->outcome, "interrupted");
   EXPECT_EQ(m.last_attempt()->verdict(), "fail");
-  EXPECT_NE(m.state().trials[0].status, session::TrialStatus::kAccepted);
+  EXPECT_NE(m.state().trials[0].status, TrialStatus::kAccepted);
   EXPECT_EQ(m.current_trial(), 0);
   EXPECT_TRUE(fs::file_size(dir / "LMC_Naiv_Static101.raw.txt") > 1000);
   // The operator keeps it anyway: journaled, with a note saying so.
   ASSERT_EQ(m.accept_last(), "");
-  EXPECT_EQ(m.state().trials[0].status, session::TrialStatus::kAccepted);
+  EXPECT_EQ(m.state().trials[0].status, TrialStatus::kAccepted);
   ASSERT_FALSE(m.state().trials[0].notes.empty());
   EXPECT_NE(m.state().trials[0].notes.back().find("accepted by the operator"), std::string::npos);
   m.close();
@@ -185,7 +185,7 @@ TEST(RecordSessionModel, TakenDownMidTrialTheFolderOpensAgainWithTheTrialWaiting
   RecordSessionModel again;
   ASSERT_EQ(again.open(dir, fast_sim()), "") << "the folder's lock went with the model";
   ASSERT_FALSE(again.state().trials.empty());
-  EXPECT_NE(again.state().trials[0].status, session::TrialStatus::kAccepted);
+  EXPECT_NE(again.state().trials[0].status, TrialStatus::kAccepted);
   EXPECT_FALSE(again.state().trials[0].attempts.empty()) << "the cut-off attempt is in the journal";
   EXPECT_EQ(again.current_trial(), 0) << "and the trial waits to be recorded again";
   again.close();
@@ -263,7 +263,7 @@ TEST(RecordSessionModel, OverrideNeedsAReasonAndIsJournaled) {
 
 TEST(RecordSessionModel, ACalibratingProtocolCalibratesTheBlockBeforeItsFirstTrial) {
   const fs::path dir = test::fresh_test_dir("record_model_calibration");
-  session::NewSessionSpec spec = quick("S09");
+  NewSessionSpec spec = quick("S09");
   spec.protocol = "study-calibrated";  // 5 s still hand before each block
   spec.duration_override_s = 1.0;
   RecordSettings settings = fast_sim();
@@ -317,7 +317,7 @@ TEST(RecordSessionModel, CloseAfterRecordingThenReopenAndCloseAgain) {
   EXPECT_TRUE(m.finished());
   m.close();
   EXPECT_FALSE(m.last_attempt());
-  EXPECT_EQ(session::read_session_state(dir).count(session::TrialStatus::kAccepted), 2);
+  EXPECT_EQ(read_session_state(dir).count(TrialStatus::kAccepted), 2);
 
   // Opened complete ("nothing is left to record"), then a trial redone: the notice goes, it is no
   // longer true.
@@ -337,7 +337,7 @@ TEST(RecordSessionModel, ARealTimeTrialShowsTheCircleForItsWholeLengthFromGo) {
   settings.backend = "sim";
   settings.fast = false;  // real time: the countdown is the subject's
   settings.countdown_s = 1.0;
-  session::NewSessionSpec spec = quick();
+  NewSessionSpec spec = quick();
   spec.duration_override_s = 2.0;
   ASSERT_EQ(m.create(dir, spec, settings), "");
   clear_preflight(m);
@@ -370,7 +370,7 @@ TEST(RecordSessionModel, ARealTimeTrialShowsTheCircleForItsWholeLengthFromGo) {
   EXPECT_GE(first_remaining_s, 1.5) << "the status counts down the simulator's trial too (it said 0 s left)";
 
   // The journal's start, go and stop agree with the file: go is where the file starts.
-  const auto st = session::read_session_state(dir);
+  const auto st = read_session_state(dir);
   const auto& attempt = st.trials[0].attempts.at(0);
   ASSERT_FALSE(attempt.go_utc.empty());
   EXPECT_LE(attempt.started_utc, attempt.go_utc);

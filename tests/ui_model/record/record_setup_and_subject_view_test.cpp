@@ -31,10 +31,10 @@ void set(char* field, size_t size, const std::string& text) {
 
 // An empty quick session of `subject` at `dir` (its lock goes with the folder object).
 void make(const fs::path& dir, const std::string& subject) {
-  session::NewSessionSpec spec;
+  NewSessionSpec spec;
   spec.subject.subject_id = subject;
   spec.protocol = "quick";
-  (void)session::SessionFolder::create(dir, spec);
+  (void)SessionFolder::create(dir, spec);
 }
 
 RecordSettings fast_sim() {
@@ -89,7 +89,7 @@ TEST(RecordSetupForm, EachFieldIsRefusedByTheRuleTheFolderUses) {
   set(f.folder, sizeof f.folder, (busy / "new").string());
   EXPECT_FALSE(check_setup_form(f).any()) << check_setup_form(f).first();
   // The spec is the one `lmc session new` builds for the same text.
-  const session::NewSessionSpec spec = f.spec();
+  const NewSessionSpec spec = f.spec();
   EXPECT_EQ(spec.subject.subject_id, "S01");
   EXPECT_EQ(spec.subject.hand_length_mm.value_or(0), 186);
   EXPECT_FALSE(spec.subject.hand_breadth_mm.has_value());
@@ -105,10 +105,10 @@ TEST(RecordSetupForm, ListsSessionsWithTheirProgressNewestFirst) {
   const fs::path root = test::fresh_test_dir("setup_list");
   fs::create_directories(root / "not-a-session");
   {
-    session::NewSessionSpec spec;
+    NewSessionSpec spec;
     spec.subject.subject_id = "S02";
     spec.protocol = "quick";
-    auto a = session::SessionFolder::create(root / "S02-a", spec);
+    auto a = SessionFolder::create(root / "S02-a", spec);
     a.trial_started(0);
   }  // cut off while recording
   const auto listed = list_sessions(root);
@@ -133,8 +133,8 @@ TEST(RecordSetupForm, ListsSessionsOneFolderDownGroupedByFolder) {
   fs::create_directories(root / "demo" / "notes");
   // S01's journal written last: it comes first in its folder.
   const auto now = fs::file_time_type::clock::now();
-  fs::last_write_time(root / "demo" / "S02" / session::kJournalFile, now - std::chrono::hours(2));
-  fs::last_write_time(root / "demo" / "S01" / session::kJournalFile, now - std::chrono::hours(1));
+  fs::last_write_time(root / "demo" / "S02" / kJournalFile, now - std::chrono::hours(2));
+  fs::last_write_time(root / "demo" / "S01" / kJournalFile, now - std::chrono::hours(1));
   const auto listed = list_sessions(root);
   ASSERT_EQ(listed.size(), 3U);
   EXPECT_EQ(listed[0].subject, "S03");
@@ -172,10 +172,10 @@ TEST(RecordSetupForm, FindsTheSessionsAlreadyRecordedForASubjectId) {
 TEST(RecordResumeNotice, AnInterruptedSessionSaysWhatHappenedAndWhereItContinues) {
   const fs::path dir = test::fresh_test_dir("resume_notice");
   {
-    session::NewSessionSpec spec;
+    NewSessionSpec spec;
     spec.subject.subject_id = "S03";
     spec.protocol = "quick";
-    auto f = session::SessionFolder::create(dir, spec);
+    auto f = SessionFolder::create(dir, spec);
     f.trial_started(0);
     std::ofstream(lmc::trial_files(dir, "Naiv_Static101").recording) << "partial\n";
   }  // the process "dies" mid-trial
@@ -194,7 +194,7 @@ TEST(RecordResumeNotice, AnInterruptedSessionSaysWhatHappenedAndWhereItContinues
   ASSERT_EQ(m.resume_notice().size(), 1U);
   m.close();
   RecordSessionModel fresh;
-  session::NewSessionSpec spec;
+  NewSessionSpec spec;
   spec.subject.subject_id = "S04";
   spec.protocol = "quick";
   ASSERT_EQ(fresh.create(test::fresh_test_dir("resume_notice_new"), spec, fast_sim()), "");
@@ -206,7 +206,7 @@ TEST(RecordResumeNotice, AnInterruptedSessionSaysWhatHappenedAndWhereItContinues
 }
 
 TEST(RecordResumeNotice, ACompleteSessionSaysNothingIsLeft) {
-  session::SessionState st;
+  SessionState st;
   EXPECT_NE(resume_notice(st, {}).back().find("nothing is left to record"), std::string::npos);
 }
 
@@ -237,8 +237,8 @@ TEST(MotionPictogram, AnimatesBetweenTheTrialMotionsStartAndEnd) {
             (p->start.point(tip) - p->start.point(kPalm)).norm());
 }
 
-session::TrialType index_type() {
-  session::TrialType t;
+TrialType index_type() {
+  TrialType t;
   t.key = "Index";
   t.sim_motion = "index";
   t.duration_s = 3;
@@ -249,7 +249,7 @@ session::TrialType index_type() {
 // Every stage the subject can see has words for the subject (no "operator", no session folder),
 // and the operator's countdown is the subject's number: one rule for both screens.
 TEST(SubjectView, EveryStageHasSubjectFacingWordsAndOneCountdown) {
-  const session::TrialType type = index_type();
+  const TrialType type = index_type();
   SubjectViewInputs in;
   SubjectView v = build_subject_view(in, 0);
   EXPECT_EQ(v.stage, SubjectStage::kNoSession);
@@ -280,8 +280,8 @@ TEST(SubjectView, EveryStageHasSubjectFacingWordsAndOneCountdown) {
 }
 
 TEST(SubjectView, ShowsTheRedCircleOnlyWhileRecordingAndNothingForTheOperator) {
-  const session::TrialType type = index_type();
-  session::ProtocolPose pose;
+  const TrialType type = index_type();
+  ProtocolPose pose;
   pose.key = "horizontal";
   pose.cue = "palm facing down";
   SubjectViewInputs in;
@@ -333,7 +333,7 @@ TEST(SubjectView, FollowsTheRecordModelsSession) {
   const fs::path dir = test::fresh_test_dir("subject_view");
   RecordSessionModel m;
   EXPECT_EQ(build_subject_view(subject_view_inputs(m), 0).stage, SubjectStage::kNoSession);
-  session::NewSessionSpec spec;
+  NewSessionSpec spec;
   spec.subject.subject_id = "S05";
   spec.protocol = "quick";
   ASSERT_EQ(m.create(dir, spec, fast_sim()), "");

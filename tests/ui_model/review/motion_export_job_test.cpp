@@ -118,7 +118,7 @@ class MotionExport : public test::QuickSessionSuite<MotionExport> {
   // The session's trials as the Review batch lists them (processing is not needed to plan).
   static std::vector<ReviewTrial> trials() {
     std::vector<ReviewTrial> out;
-    for (auto& job : session::trial_sources_for_input(session(), std::nullopt)) {
+    for (auto& job : trial_sources_for_input(session(), std::nullopt)) {
       ReviewTrial t;
       t.folder = session();
       t.job = job;

@@ -49,7 +49,7 @@ struct RecordSetupForm {
   std::string protocol_name() const;  // "" when none is shipped
   devices::NewSessionFields fields() const;
   // Throws lmc::Error (the form's problems are checked first by the tab).
-  session::NewSessionSpec spec() const;
+  NewSessionSpec spec() const;
   std::filesystem::path new_session_dir() const;  // the folder, or the default for the subject
   std::filesystem::path sessions_folder() const;  // sessions_root as a path
   RecordSettings settings() const;

@@ -41,8 +41,8 @@ RecordSettings sim_settings(bool fast) {
   return settings;
 }
 
-session::NewSessionSpec spec_for(const std::string& subject, const std::string& protocol = "quick") {
-  session::NewSessionSpec spec;
+NewSessionSpec spec_for(const std::string& subject, const std::string& protocol = "quick") {
+  NewSessionSpec spec;
   spec.subject.subject_id = subject;
   spec.protocol = protocol;
   return spec;
@@ -239,7 +239,7 @@ TEST(RecordNotePanel, TypedLettersAndEnterSubmitTheNoteOnTheTrial) {
 TEST(RecordCalibrationPanel, ACalibratingBlockOffersTheCalibrationThenItsResidualsAndApply) {
   ScratchSession s("record_panels_calibration");
   RecordSessionModel& model = *s.model;
-  session::NewSessionSpec spec = spec_for("S06", "study-calibrated");
+  NewSessionSpec spec = spec_for("S06", "study-calibrated");
   spec.duration_override_s = 1.0;
   RecordSettings settings = sim_settings(true);
   settings.sim.calibration_random_translation_mm = 20;
@@ -331,7 +331,7 @@ TEST(SubjectScreenPanel, DrawsTheBigRedCircleOnlyWhileRecording) {
   HeadlessImGui gui(1280, 800);
   SubjectFonts fonts;
   fonts.normal = fonts.large = fonts.huge = ImGui::GetIO().Fonts->Fonts[0];
-  session::TrialType type;
+  TrialType type;
   type.duration_s = 3;
   type.subject_cue = "Bend your index finger";
   SubjectViewInputs in;
@@ -377,10 +377,10 @@ TEST(SubjectScreenPanel, TheCuesLastLineIsInsideAOneMonitorWindow) {
   unsigned char* pixels = nullptr;
   int w = 0, h = 0;
   io.Fonts->GetTexDataAsRGBA32(&pixels, &w, &h);
-  session::TrialType type;
+  TrialType type;
   type.duration_s = 5;
   type.subject_cue = "Bend your index finger fully and straighten it again, slowly, until the circle disappears.";
-  session::ProtocolPose pose;
+  ProtocolPose pose;
   pose.cue = "palm facing down";
   SubjectViewInputs in;
   in.has_session = true;
