@@ -149,7 +149,7 @@ TrialFrames read_trial(const TrialInput& in, const RecordedPoseOptions& options,
     if (options.source == RecordedPoseSource::kFused && in.process_now) {
       BatchOptions batch;
       batch.layout = options.layout;
-      const TrialResult result = process_sources_in_full(in.job, batch);
+      const TrialAnalysis result = process_sources_in_full(in.job, batch);
       std::vector<HandFrame> rows(static_cast<size_t>(result.fused.frame_count));
       for (int k = 0; k < result.fused.frame_count; ++k) {
         HandFrame& f = rows[static_cast<size_t>(k)];

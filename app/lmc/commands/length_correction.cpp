@@ -65,7 +65,7 @@ void run_length_fit(const LengthFitArgs& a) {
   lmc::BatchOptions so;
   so.process.method = lmc::FusionMethod::kDefault;  // the factors are fitted on what they will correct
   if (!a.layout.empty()) so.layout = a.layout;
-  const lmc::TrialResult r = lmc::process_sources_in_full(job, so);
+  const lmc::TrialAnalysis r = lmc::process_sources_in_full(job, so);
 
   lmc::LengthCorrection c;
   if (from_hand) {

@@ -93,8 +93,8 @@ TEST(TrialName, OnlySafeNamesBecomeFileNames) {
   for (const std::string& bad :
        std::vector<std::string>{"", "../etc", "a b", "x/y", "%s%n", "-rf", "trial.txt", "é", std::string(65, 'a')})
     EXPECT_NE(validate_trial_name(bad), "") << bad;
-  EXPECT_THROW(session_paths("/tmp", "../../x"), Error);
-  const auto p = session_paths("/data", "Naiv_Static101");
+  EXPECT_THROW(checked_trial_files("/tmp", "../../x"), Error);
+  const auto p = checked_trial_files("/data", "Naiv_Static101");
   EXPECT_EQ(p.recording, std::filesystem::path("/data/LMC_Naiv_Static101.raw.txt"));
   EXPECT_EQ(p.truth_trc, std::filesystem::path("/data/Naiv_Static101.trc"));
 }

@@ -18,7 +18,7 @@ HandTrack track_with_hand(int frames, bool hand, double x) {
 }
 
 TEST(ReplayFrame, NearestFrameWithEachControllersHandViconAndSeenByCounts) {
-  TrialResult r;
+  TrialAnalysis r;
   r.fused = track_with_hand(3, true, 0);
   r.world.frame_count = 3;
   r.world.devices = {
@@ -52,7 +52,7 @@ TEST(ReplayFrame, NearestFrameWithEachControllersHandViconAndSeenByCounts) {
   // Past either end: the first or the last frame.
   EXPECT_EQ(replay_frame(r, -5.0)->frame, 0);
   EXPECT_EQ(replay_frame(r, 99.0)->frame, 2);
-  EXPECT_FALSE(replay_frame(TrialResult{}, 0.0));
+  EXPECT_FALSE(replay_frame(TrialAnalysis{}, 0.0));
 }
 
 }  // namespace replay_frame_test
