@@ -10,8 +10,8 @@
 
 #include "core/visibility/blind_controllers.h"
 #include "tests/ui/headless_imgui.h"
-#include "tests/ui/tabs/layout/inspector_fixture.h"
 #include "tests/ui/last_status.h"
+#include "tests/ui/tabs/layout/inspector_fixture.h"
 #include "ui/model/current_layout.h"
 #include "ui/model/layout/layout_actions.h"
 #include "ui/tabs/layout/coverage_panel.h"
