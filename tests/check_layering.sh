@@ -40,24 +40,10 @@ fi
 if [ -n "$bad_model_up" ]; then
   echo "ui/model/ must not include what draws (ui/tabs, ui/widgets, ui/app, ui/platform):"; echo "$bad_model_up"; status=1
 fi
-# Inside core, data flows one way: a folder includes only folders before it in this list (files
-# and the hand model first; processing before what reports on it). A new folder joins the list.
-core_order=(common stats geometry layout hand visibility metric optimise io figures processing results reports review calibration session export poses)
-for ((i = 0; i < ${#core_order[@]}; i++)); do
-  folder=${core_order[$i]}
-  [ -d "$root/core/$folder" ] || continue
-  later=("${core_order[@]:$((i + 1))}")
-  [ ${#later[@]} -gt 0 ] || continue
-  alternatives=$(IFS='|'; echo "${later[*]}")
-  back=$(grep -RInE "#[[:space:]]*include[[:space:]]*\"core/($alternatives)/" "$root/core/$folder" --include='*.h' --include='*.cpp' 2>/dev/null)
-  if [ -n "$back" ]; then
-    echo "core/$folder may include only core/{${core_order[*]:0:$i}} (core's data flow runs one way):"; echo "$back"; status=1
-  fi
-done
-for d in "$root"/core/*/; do
-  name=$(basename "$d")
-  [[ " ${core_order[*]} " == *" $name "* ]] || { echo "core/$name is not in check_layering.sh's core order: add it"; status=1; }
-done
+# Inside core, data flows one way: core/README.md opens with core's floor table, and a folder
+# includes only folders on floors below its own. The table is held to the real includes, so it
+# cannot go stale: a folder missing from it, or on another floor than its includes put it, fails.
+python3 "$(dirname "$0")/check_core_floors.py" "$root" || status=1
 n=$(find "$root/core" "$root/ui/model" "$root/ui/scene" -name '*.h' -o -name '*.cpp' | wc -l)
 echo "checked $n core and ui files: $([ $status -eq 0 ] && echo clean || echo VIOLATIONS)"
 exit $status

@@ -23,5 +23,16 @@ bad=$(printf '%s\n' $files | grep -v '^tests/check_repo_references.sh$' | xargs 
 if [ -n "$bad" ]; then
   echo "tags an issue number (say why the code is as it is; history lives in git):"; echo "$bad"; status=1
 fi
+# A cited file of the repository exists: from the checkout's root, or as the end of a path (a README
+# citing its own subfolders, a list that names a folder once). Moving or renaming a file must carry
+# its citations along.
+cited='(?<![A-Za-z0-9_./-])(core|devices|ui|app|tests|docs|scripts|cmake|assets|sessions)/[A-Za-z0-9_./-]*[A-Za-z0-9_]\.(h|cpp|md|sh|py|json|cmake|txt)\b'
+all_files=$(printf '%s\n' $files)$'\n'
+bad=$(printf '%s\n' $files | xargs grep -IonP "$cited" 2>/dev/null | while IFS=: read -r file line path; do
+  [ -e "$path" ] || [[ "$all_files" == *"/$path"$'\n'* ]] || echo "$file:$line: $path"
+done)
+if [ -n "$bad" ]; then
+  echo "cites a file the repository does not have (moved or renamed? cite where it is now):"; echo "$bad"; status=1
+fi
 echo "checked $(printf '%s\n' $files | wc -l) files: $([ $status -eq 0 ] && echo clean || echo VIOLATIONS)"
 exit $status

@@ -3,7 +3,7 @@
 #include "core/common/error.h"
 #include "core/common/number_format.h"
 
-namespace lmc::calibration {
+namespace lmc {
 namespace {
 
 // Samples that have a finite Vicon point on their frame: (device point, Vicon point, group).
@@ -89,7 +89,11 @@ int frames_with_samples(const DeviceSamples& s) {
 
 }  // namespace
 
-CalibrationResult calibrate(const CalibrationInput& input, const Layout& layout, const CalibrationOptions& options) {
+namespace {
+
+// Every controller of the layout at its nominal placement, before anything is fitted.
+CalibrationResult nominal_result(const CalibrationInput& input, const Layout& layout, const CalibrationOptions& options,
+                                 std::vector<RigidTransform>& nominal) {
   const int n = layout.device_count();
   for (const auto& d : input.device_frame.devices) {
     if (d.device_id < 1 || d.device_id > n) {
@@ -99,8 +103,7 @@ CalibrationResult calibrate(const CalibrationInput& input, const Layout& layout,
   }
   CalibrationResult result;
   result.with_vicon = options.use_vicon && input.vicon.has_value();
-  std::vector<DeviceSamples> samples(static_cast<size_t>(n));
-  std::vector<RigidTransform> nominal(static_cast<size_t>(n));
+  nominal.assign(static_cast<size_t>(n), RigidTransform{});
   result.devices.resize(static_cast<size_t>(n));
   for (int d = 0; d < n; ++d) {
     auto& dc = result.devices[static_cast<size_t>(d)];
@@ -109,6 +112,13 @@ CalibrationResult calibrate(const CalibrationInput& input, const Layout& layout,
     nominal[static_cast<size_t>(d)] = device_transform(layout.devices[static_cast<size_t>(d)]);
     dc.nominal = dc.fitted_transform = nominal[static_cast<size_t>(d)];
   }
+  return result;
+}
+
+// Each controller's still-hand samples, with a note for those clamped at an axis cut.
+std::vector<DeviceSamples> controller_samples(const CalibrationInput& input, const CalibrationOptions& options,
+                                              CalibrationResult& result) {
+  std::vector<DeviceSamples> samples(result.devices.size());
   for (size_t k = 0; k < input.device_frame.devices.size(); ++k) {
     const auto& dev = input.device_frame.devices[k];
     auto& s = samples[static_cast<size_t>(dev.device_id - 1)];
@@ -123,133 +133,160 @@ CalibrationResult calibrate(const CalibrationInput& input, const Layout& layout,
           " mm axis cut: only their other coordinates were used");
     }
   }
-  const SampleTable table(samples, input.device_frame.frame_count);
+  return samples;
+}
 
+// With Vicon: each controller fitted to the Vicon points on its own; the controllers taking part.
+std::vector<bool> fit_to_vicon(const CalibrationInput& input, const std::vector<DeviceSamples>& samples,
+                               const std::vector<RigidTransform>& nominal, const CalibrationOptions& options,
+                               CalibrationResult& result) {
+  const int n = static_cast<int>(result.devices.size());
   std::vector<bool> included(static_cast<size_t>(n), false);
-  if (result.with_vicon) {
-    std::vector<ViconPairs> pairs(static_cast<size_t>(n));
-    std::vector<RigidTransform> fitted = nominal;
-    for (int d = 0; d < n; ++d) {
-      auto& dc = result.devices[static_cast<size_t>(d)];
-      pairs[static_cast<size_t>(d)] = vicon_pairs(samples[static_cast<size_t>(d)], *input.vicon);
-      const ViconPairs& p = pairs[static_cast<size_t>(d)];
-      dc.frames = p.frames;
-      if (static_cast<int>(p.src.size()) < options.min_samples) {
-        dc.warnings.push_back(dc.slot + ": only " + std::to_string(p.src.size()) +
-                              " usable samples with Vicon points (needs " + std::to_string(options.min_samples) +
-                              "): left as it was");
-        continue;
-      }
-      dc.fitted = true;
-      included[static_cast<size_t>(d)] = true;
-      fitted[static_cast<size_t>(d)] = robust_rigid_fit(p.src, p.dst, dc.nominal, options.fit, nullptr, p.axes);
+  std::vector<ViconPairs> pairs(static_cast<size_t>(n));
+  std::vector<RigidTransform> fitted = nominal;
+  for (int d = 0; d < n; ++d) {
+    auto& dc = result.devices[static_cast<size_t>(d)];
+    pairs[static_cast<size_t>(d)] = vicon_pairs(samples[static_cast<size_t>(d)], *input.vicon);
+    const ViconPairs& p = pairs[static_cast<size_t>(d)];
+    dc.frames = p.frames;
+    if (static_cast<int>(p.src.size()) < options.min_samples) {
+      dc.warnings.push_back(dc.slot + ": only " + std::to_string(p.src.size()) +
+                            " usable samples with Vicon points (needs " + std::to_string(options.min_samples) +
+                            "): left as it was");
+      continue;
     }
-    // The part of the corrections all controllers share: the Vicon frame against the layout's.
-    const RigidTransform common = mean_correction(fitted, nominal, included);
-    const double common_mm = common.t.norm(), common_deg = rotation_angle_deg(common.r);
-    RigidTransform to_layout;  // maps Vicon points into the frame the results are given in
-    if (options.anchor_vicon_to_layout) {
-      to_layout = common.inverse();
-      fitted = anchor_to_nominal(fitted, nominal, included);
-      result.notes.push_back("kept the layout's world frame; Vicon's frame differed from it by " +
-                             format_fixed(common_mm, 1) + " mm and " + format_fixed(common_deg, 2) + "° on average");
-    } else if ((common_mm > options.common_shift_warning_mm || common_deg > options.common_turn_warning_deg) &&
-               mean_correction_mm(anchor_to_nominal(fitted, nominal, included), nominal, included) <
-                   options.common_share_warning * mean_correction_mm(fitted, nominal, included)) {
-      result.warnings.push_back(
-          "every controller moved by " + format_fixed(common_mm, 1) + " mm and turned " + format_fixed(common_deg, 1) +
-          "° on average: the Vicon frame is probably not the layout's world frame. To keep the layout's frame and "
-          "take only the controllers' relative placement from Vicon, anchor to the layout (lmc calibrate "
-          "--anchor-to-layout)");
+    dc.fitted = true;
+    included[static_cast<size_t>(d)] = true;
+    fitted[static_cast<size_t>(d)] = robust_rigid_fit(p.src, p.dst, dc.nominal, options.fit, nullptr, p.axes);
+  }
+  // The part of the corrections all controllers share: the Vicon frame against the layout's.
+  const RigidTransform common = mean_correction(fitted, nominal, included);
+  const double common_mm = common.t.norm(), common_deg = rotation_angle_deg(common.r);
+  RigidTransform to_layout;  // maps Vicon points into the frame the results are given in
+  if (options.anchor_vicon_to_layout) {
+    to_layout = common.inverse();
+    fitted = anchor_to_nominal(fitted, nominal, included);
+    result.notes.push_back("kept the layout's world frame; Vicon's frame differed from it by " +
+                           format_fixed(common_mm, 1) + " mm and " + format_fixed(common_deg, 2) + "° on average");
+  } else if ((common_mm > options.common_shift_warning_mm || common_deg > options.common_turn_warning_deg) &&
+             mean_correction_mm(anchor_to_nominal(fitted, nominal, included), nominal, included) <
+                 options.common_share_warning * mean_correction_mm(fitted, nominal, included)) {
+    result.warnings.push_back(
+        "every controller moved by " + format_fixed(common_mm, 1) + " mm and turned " + format_fixed(common_deg, 1) +
+        "° on average: the Vicon frame is probably not the layout's world frame. To keep the layout's frame and "
+        "take only the controllers' relative placement from Vicon, anchor to the layout (lmc calibrate "
+        "--anchor-to-layout)");
+  }
+  for (int d = 0; d < n; ++d) {
+    if (!included[static_cast<size_t>(d)]) continue;
+    auto& dc = result.devices[static_cast<size_t>(d)];
+    ViconPairs& p = pairs[static_cast<size_t>(d)];
+    for (auto& v : p.dst) v = to_layout.apply(v);
+    dc.fitted_transform = fitted[static_cast<size_t>(d)];
+    store_residuals(dc, residual_sums(p, dc.nominal), residual_sums(p, dc.fitted_transform));
+  }
+  return included;
+}
+
+std::vector<RigidTransform> fitted_transforms(const CalibrationResult& result) {
+  std::vector<RigidTransform> fitted(result.devices.size());
+  for (size_t d = 0; d < result.devices.size(); ++d) fitted[d] = result.devices[d].fitted_transform;
+  return fitted;
+}
+
+// Without Vicon: the controllers fitted to each other (the consensus); the controllers taking part.
+std::vector<bool> fit_to_each_other(const std::vector<DeviceSamples>& samples, const SampleTable& table,
+                                    const std::vector<RigidTransform>& nominal, const CalibrationOptions& options,
+                                    CalibrationResult& result) {
+  const int n = static_cast<int>(result.devices.size());
+  std::vector<bool> included(static_cast<size_t>(n), false);
+  // A controller takes part when enough of its samples are shared with another controller
+  // that has enough samples of its own.
+  std::vector<bool> candidate(static_cast<size_t>(n));
+  for (int d = 0; d < n; ++d)
+    candidate[static_cast<size_t>(d)] = samples[static_cast<size_t>(d)].size() >= options.min_samples;
+  std::vector<Vec3> src, dst;
+  std::vector<int> index;
+  for (int d = 0; d < n; ++d) {
+    auto& dc = result.devices[static_cast<size_t>(d)];
+    dc.frames = frames_with_samples(samples[static_cast<size_t>(d)]);
+    leave_one_out_pairs(samples, table, nominal, candidate, d, src, dst, index);
+    if (!candidate[static_cast<size_t>(d)] || static_cast<int>(src.size()) < options.min_samples) {
+      dc.warnings.push_back(dc.slot + ": only " + std::to_string(src.size()) +
+                            " usable samples seen together with another controller (needs " +
+                            std::to_string(options.min_samples) + "): left as it was");
+      continue;
     }
-    for (int d = 0; d < n; ++d) {
-      if (!included[static_cast<size_t>(d)]) continue;
-      auto& dc = result.devices[static_cast<size_t>(d)];
-      ViconPairs& p = pairs[static_cast<size_t>(d)];
-      for (auto& v : p.dst) v = to_layout.apply(v);
-      dc.fitted_transform = fitted[static_cast<size_t>(d)];
-      store_residuals(dc, residual_sums(p, dc.nominal), residual_sums(p, dc.fitted_transform));
-    }
-  } else {
-    // A controller takes part when enough of its samples are shared with another controller
-    // that has enough samples of its own.
-    std::vector<bool> candidate(static_cast<size_t>(n));
-    for (int d = 0; d < n; ++d)
-      candidate[static_cast<size_t>(d)] = samples[static_cast<size_t>(d)].size() >= options.min_samples;
-    std::vector<Vec3> src, dst;
-    std::vector<int> index;
-    for (int d = 0; d < n; ++d) {
-      auto& dc = result.devices[static_cast<size_t>(d)];
-      dc.frames = frames_with_samples(samples[static_cast<size_t>(d)]);
-      leave_one_out_pairs(samples, table, nominal, candidate, d, src, dst, index);
-      if (!candidate[static_cast<size_t>(d)] || static_cast<int>(src.size()) < options.min_samples) {
-        dc.warnings.push_back(dc.slot + ": only " + std::to_string(src.size()) +
-                              " usable samples seen together with another controller (needs " +
-                              std::to_string(options.min_samples) + "): left as it was");
-        continue;
-      }
-      included[static_cast<size_t>(d)] = true;
-    }
-    int taking_part = 0;
-    for (const bool b : included) taking_part += b ? 1 : 0;
-    if (taking_part < 2) {
-      result.warnings.push_back(
-          "calibration without Vicon needs at least two controllers that see the hand together; " +
-          std::to_string(taking_part) + " did: nothing was changed");
-      std::fill(included.begin(), included.end(), false);
-    } else {
-      ConsensusOptions copt = options.consensus;
-      copt.fit = options.fit;
-      const ConsensusFit fit = fit_consensus(samples, table, nominal, included, copt);
-      result.sweeps = fit.sweeps;
-      if (!fit.converged)
-        result.warnings.push_back("the consensus fit did not settle within " + std::to_string(fit.sweeps) +
-                                  " sweeps: its result is approximate");
-      for (int d = 0; d < n; ++d) {
-        if (!included[static_cast<size_t>(d)]) continue;
-        auto& dc = result.devices[static_cast<size_t>(d)];
-        dc.fitted = true;
-        dc.fitted_transform = fit.transforms[static_cast<size_t>(d)];
-      }
-      std::vector<RigidTransform> fitted(static_cast<size_t>(n));
-      for (int d = 0; d < n; ++d)
-        fitted[static_cast<size_t>(d)] = result.devices[static_cast<size_t>(d)].fitted_transform;
-      for (int d = 0; d < n; ++d) {
-        if (!included[static_cast<size_t>(d)]) continue;
-        store_residuals(result.devices[static_cast<size_t>(d)], consensus_sums(samples, table, nominal, included, d),
-                        consensus_sums(samples, table, fitted, included, d));
-      }
+    included[static_cast<size_t>(d)] = true;
+  }
+  int taking_part = 0;
+  for (const bool b : included) taking_part += b ? 1 : 0;
+  if (taking_part < 2) {
+    result.warnings.push_back("calibration without Vicon needs at least two controllers that see the hand together; " +
+                              std::to_string(taking_part) + " did: nothing was changed");
+    std::fill(included.begin(), included.end(), false);
+    return included;
+  }
+  ConsensusOptions copt = options.consensus;
+  copt.fit = options.fit;
+  const ConsensusFit fit = fit_consensus(samples, table, nominal, included, copt);
+  result.sweeps = fit.sweeps;
+  if (!fit.converged)
+    result.warnings.push_back("the consensus fit did not settle within " + std::to_string(fit.sweeps) +
+                              " sweeps: its result is approximate");
+  for (int d = 0; d < n; ++d) {
+    if (!included[static_cast<size_t>(d)]) continue;
+    auto& dc = result.devices[static_cast<size_t>(d)];
+    dc.fitted = true;
+    dc.fitted_transform = fit.transforms[static_cast<size_t>(d)];
+  }
+  const std::vector<RigidTransform> fitted = fitted_transforms(result);
+  for (int d = 0; d < n; ++d) {
+    if (!included[static_cast<size_t>(d)]) continue;
+    store_residuals(result.devices[static_cast<size_t>(d)], consensus_sums(samples, table, nominal, included, d),
+                    consensus_sums(samples, table, fitted, included, d));
+  }
+  return included;
+}
+
+// Disagreement between controllers, in both modes, over the controllers that were fitted.
+void store_disagreement(const std::vector<DeviceSamples>& samples, const SampleTable& table,
+                        const std::vector<RigidTransform>& nominal, const std::vector<bool>& included,
+                        CalibrationResult& result) {
+  const std::vector<RigidTransform> fitted = fitted_transforms(result);
+  ResidualSums before, after;
+  for (int d = 0; d < static_cast<int>(result.devices.size()); ++d) {
+    if (!included[static_cast<size_t>(d)]) continue;
+    const ResidualSums b = consensus_sums(samples, table, nominal, included, d);
+    const ResidualSums a = consensus_sums(samples, table, fitted, included, d);
+    for (int g = 0; g < kNumPointGroups; ++g) {
+      before.squares[static_cast<size_t>(g)] += b.squares[static_cast<size_t>(g)];
+      before.counts[static_cast<size_t>(g)] += b.counts[static_cast<size_t>(g)];
+      after.squares[static_cast<size_t>(g)] += a.squares[static_cast<size_t>(g)];
+      after.counts[static_cast<size_t>(g)] += a.counts[static_cast<size_t>(g)];
     }
   }
+  result.covisible_samples = after.count_all();
+  result.disagreement_before_mm = before.rms_all();
+  result.disagreement_after_mm = after.rms_all();
+}
 
+}  // namespace
+
+CalibrationResult calibrate(const CalibrationInput& input, const Layout& layout, const CalibrationOptions& options) {
+  std::vector<RigidTransform> nominal;
+  CalibrationResult result = nominal_result(input, layout, options, nominal);
+  const std::vector<DeviceSamples> samples = controller_samples(input, options, result);
+  const SampleTable table(samples, input.device_frame.frame_count);
+  const std::vector<bool> included = result.with_vicon ? fit_to_vicon(input, samples, nominal, options, result)
+                                                       : fit_to_each_other(samples, table, nominal, options, result);
   for (auto& dc : result.devices) {
     dc.moved_mm = (dc.fitted_transform.t - dc.nominal.t).norm();
     dc.turned_deg = rotation_angle_deg(dc.nominal.r.transpose() * dc.fitted_transform.r);
   }
-
-  // Disagreement between controllers, in both modes, over the controllers that were fitted.
-  {
-    std::vector<RigidTransform> fitted(static_cast<size_t>(n));
-    for (int d = 0; d < n; ++d)
-      fitted[static_cast<size_t>(d)] = result.devices[static_cast<size_t>(d)].fitted_transform;
-    ResidualSums before, after;
-    for (int d = 0; d < n; ++d) {
-      if (!included[static_cast<size_t>(d)]) continue;
-      const ResidualSums b = consensus_sums(samples, table, nominal, included, d);
-      const ResidualSums a = consensus_sums(samples, table, fitted, included, d);
-      for (int g = 0; g < kNumPointGroups; ++g) {
-        before.squares[static_cast<size_t>(g)] += b.squares[static_cast<size_t>(g)];
-        before.counts[static_cast<size_t>(g)] += b.counts[static_cast<size_t>(g)];
-        after.squares[static_cast<size_t>(g)] += a.squares[static_cast<size_t>(g)];
-        after.counts[static_cast<size_t>(g)] += a.counts[static_cast<size_t>(g)];
-      }
-    }
-    result.covisible_samples = after.count_all();
-    result.disagreement_before_mm = before.rms_all();
-    result.disagreement_after_mm = after.rms_all();
-  }
+  store_disagreement(samples, table, nominal, included, result);
   add_warnings(result, options.warnings);
   return result;
 }
 
-}  // namespace lmc::calibration
+}  // namespace lmc

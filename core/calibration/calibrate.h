@@ -11,7 +11,7 @@
 #include "core/calibration/consensus_fit.h"
 #include "core/layout/layout.h"
 
-namespace lmc::calibration {
+namespace lmc {
 
 struct CalibrationOptions {
   RobustFitOptions fit;
@@ -36,4 +36,4 @@ struct CalibrationOptions {
 CalibrationResult calibrate(const CalibrationInput& input, const Layout& layout,
                             const CalibrationOptions& options = {});
 
-}  // namespace lmc::calibration
+}  // namespace lmc

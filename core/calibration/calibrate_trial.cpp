@@ -11,7 +11,7 @@
 #include "core/io/vicon_mapping.h"
 #include "core/processing/batch.h"
 
-namespace lmc::calibration {
+namespace lmc {
 namespace {
 
 namespace fs = std::filesystem;
@@ -70,4 +70,4 @@ TrialCalibration calibrate_trial(const TrialCalibrationRequest& request, const L
   return out;
 }
 
-}  // namespace lmc::calibration
+}  // namespace lmc

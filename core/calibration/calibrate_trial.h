@@ -12,7 +12,7 @@
 #include "core/calibration/calibration_result.h"
 #include "core/layout/layout.h"
 
-namespace lmc::calibration {
+namespace lmc {
 
 struct TrialCalibrationRequest {
   std::filesystem::path trial;                 // an LMC recording (raw or resampled)
@@ -35,4 +35,4 @@ struct TrialCalibration {
 // than 100 Hz, a trial without a hand).
 TrialCalibration calibrate_trial(const TrialCalibrationRequest& request, const Layout& nominal);
 
-}  // namespace lmc::calibration
+}  // namespace lmc

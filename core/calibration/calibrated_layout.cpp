@@ -6,7 +6,7 @@
 
 #include "core/common/number_format.h"
 
-namespace lmc::calibration {
+namespace lmc {
 
 Layout calibrated_layout(const Layout& nominal, const CalibrationResult& result, const CalibrationSource& source) {
   Layout out = nominal;
@@ -69,4 +69,4 @@ std::string residual_table(const CalibrationResult& result) {
   return o.str();
 }
 
-}  // namespace lmc::calibration
+}  // namespace lmc

@@ -13,7 +13,7 @@
 #include "core/calibration/calibration_result.h"
 #include "core/layout/layout.h"
 
-namespace lmc::calibration {
+namespace lmc {
 
 struct CalibrationSource {
   std::string trial;     // the calibration trial's name or file
@@ -29,4 +29,4 @@ Layout calibrated_layout(const Layout& nominal, const CalibrationResult& result,
 // the correction (mm, degrees), then the disagreement between controllers and every warning.
 std::string residual_table(const CalibrationResult& result);
 
-}  // namespace lmc::calibration
+}  // namespace lmc

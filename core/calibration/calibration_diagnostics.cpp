@@ -7,7 +7,7 @@
 #include "core/common/angles.h"
 #include "core/common/number_format.h"
 
-namespace lmc::calibration {
+namespace lmc {
 
 double ResidualSums::rms(int group) const {
   const int n = counts[static_cast<size_t>(group)];
@@ -78,4 +78,4 @@ void add_warnings(CalibrationResult& result, const WarningThresholds& th) {
   }
 }
 
-}  // namespace lmc::calibration
+}  // namespace lmc

@@ -6,7 +6,7 @@
 
 #include "core/calibration/calibration_result.h"
 
-namespace lmc::calibration {
+namespace lmc {
 
 // Sums squared residuals per point group.
 struct ResidualSums {
@@ -40,4 +40,4 @@ double transform_distance_mm(const RigidTransform& a, const RigidTransform& b);
 // and the set's (swapped serials). Expects moved/turned/residuals to be set.
 void add_warnings(CalibrationResult& result, const WarningThresholds& thresholds);
 
-}  // namespace lmc::calibration
+}  // namespace lmc

@@ -5,7 +5,7 @@
 #include "core/common/error.h"
 #include "core/processing/visibility_labels.h"
 
-namespace lmc::calibration {
+namespace lmc {
 
 CalibrationInput prepare_calibration_input(const LmcRecording& recording, const HandTrack* vicon,
                                            const InputOptions& options) {
@@ -40,4 +40,4 @@ std::optional<std::int64_t> vicon_time_zero_us(const RecorderSidecar& sidecar, d
   return clocks[clocks.size() / 2] + static_cast<std::int64_t>(delay_ms * 1000.0);
 }
 
-}  // namespace lmc::calibration
+}  // namespace lmc

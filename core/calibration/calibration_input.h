@@ -14,7 +14,7 @@
 #include "core/processing/resample.h"
 #include "core/visibility/visibility_params.h"
 
-namespace lmc::calibration {
+namespace lmc {
 
 struct CalibrationInput {
   GridTrial device_frame;                         // device coordinates, ascending device_id
@@ -38,4 +38,4 @@ CalibrationInput prepare_calibration_input(const LmcRecording& recording, const 
 // service's clock), plus `delay_ms` (Nexus's trigger Delay). nullopt when the sidecar has neither.
 std::optional<std::int64_t> vicon_time_zero_us(const RecorderSidecar& sidecar, double delay_ms = 0.0);
 
-}  // namespace lmc::calibration
+}  // namespace lmc

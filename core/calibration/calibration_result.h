@@ -10,7 +10,7 @@
 #include "core/calibration/calibration_samples.h"
 #include "core/calibration/rigid_transform.h"
 
-namespace lmc::calibration {
+namespace lmc {
 
 struct GroupResidual {
   int samples = 0;  // samples the residual is taken over (after the fit's selection)
@@ -51,4 +51,4 @@ struct CalibrationResult {
   std::vector<std::string> all_warnings() const;
 };
 
-}  // namespace lmc::calibration
+}  // namespace lmc

@@ -2,7 +2,7 @@
 
 #include <cmath>
 
-namespace lmc::calibration {
+namespace lmc {
 
 const char* point_group_name(int group) {
   switch (group) {
@@ -90,4 +90,4 @@ DeviceSamples gather_samples(const HandTrack& track, const std::vector<FingerLab
   return out;
 }
 
-}  // namespace lmc::calibration
+}  // namespace lmc

@@ -32,7 +32,7 @@
 #include "core/io/lmc_recording.h"
 #include "core/metric/layout_tally.h"
 
-namespace lmc::calibration {
+namespace lmc {
 
 enum PointGroup : int { kGroupPalm = 0, kGroupWrist = 1, kGroupMetacarpalBases = 2, kGroupKnuckles = 3 };
 inline constexpr int kNumPointGroups = 4;
@@ -87,4 +87,4 @@ std::uint8_t unclamped_axes(const Vec3& p, std::uint8_t clamping_axes, const Sam
 DeviceSamples gather_samples(const HandTrack& device_frame_track, const std::vector<FingerLabels>& labels,
                              const SampleRules& rules = {});
 
-}  // namespace lmc::calibration
+}  // namespace lmc

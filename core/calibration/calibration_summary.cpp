@@ -2,7 +2,7 @@
 
 #include <cmath>
 
-namespace lmc::calibration {
+namespace lmc {
 namespace {
 
 nlohmann::json summary_number(double v) {
@@ -32,4 +32,4 @@ nlohmann::json calibration_summary_json(const CalibrationResult& r) {
           {"devices", devices}};
 }
 
-}  // namespace lmc::calibration
+}  // namespace lmc

@@ -10,8 +10,8 @@
 
 #include "core/calibration/calibration_result.h"
 
-namespace lmc::calibration {
+namespace lmc {
 
 nlohmann::json calibration_summary_json(const CalibrationResult& result);
 
-}  // namespace lmc::calibration
+}  // namespace lmc

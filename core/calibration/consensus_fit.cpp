@@ -6,7 +6,7 @@
 
 #include "core/common/angles.h"
 
-namespace lmc::calibration {
+namespace lmc {
 
 SampleTable::SampleTable(const std::vector<DeviceSamples>& samples, int frames)
     : devices_(static_cast<int>(samples.size())),
@@ -119,4 +119,4 @@ ConsensusFit fit_consensus(const std::vector<DeviceSamples>& samples, const Samp
   return fit;
 }
 
-}  // namespace lmc::calibration
+}  // namespace lmc

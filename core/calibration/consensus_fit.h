@@ -16,7 +16,7 @@
 #include "core/calibration/calibration_samples.h"
 #include "core/calibration/rigid_transform.h"
 
-namespace lmc::calibration {
+namespace lmc {
 
 // Which samples of which controllers share a (frame, point).
 class SampleTable {
@@ -70,4 +70,4 @@ ConsensusFit fit_consensus(const std::vector<DeviceSamples>& samples, const Samp
                            const std::vector<RigidTransform>& nominal, const std::vector<bool>& included,
                            const ConsensusOptions& options);
 
-}  // namespace lmc::calibration
+}  // namespace lmc

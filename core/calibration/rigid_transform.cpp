@@ -7,7 +7,7 @@
 #include <cmath>
 #include <numbers>
 
-namespace lmc::calibration {
+namespace lmc {
 
 RigidTransform device_transform(const LayoutDevice& device) {
   return {device.pose.rotation(), device.pose.translation() + device.offset_mm};
@@ -145,4 +145,4 @@ RigidTransform robust_rigid_fit(std::span<const Vec3> src, std::span<const Vec3>
   return current;
 }
 
-}  // namespace lmc::calibration
+}  // namespace lmc

@@ -10,7 +10,7 @@
 #include "core/hand/hand_frame.h"
 #include "core/layout/layout.h"
 
-namespace lmc::calibration {
+namespace lmc {
 
 struct RigidTransform {
   Eigen::Matrix3d r = Eigen::Matrix3d::Identity();
@@ -69,4 +69,4 @@ bool any_masked(std::span<const std::uint8_t> axes);
 // The Huber weights of residuals (mm) under `options` (shared by both fits).
 void huber_weights(std::span<const double> residuals, const RobustFitOptions& options, std::vector<double>& weights);
 
-}  // namespace lmc::calibration
+}  // namespace lmc

@@ -95,7 +95,7 @@ struct Writer {
   // processed (nothing of it is then listed in scans.tsv).
   std::string write_trial(const BidsSubjectPlan& s, const BidsTrialPlan& t) {
     ProcessedTrial outcome;
-    const TrialResult r = process_sources_in_full(t.job, request.session, &outcome);
+    const TrialAnalysis r = process_sources_in_full(t.job, request.session, &outcome);
     std::optional<MarkerSeries> markers;
     if (t.job.vicon && r.has_vicon) markers = load_vicon_markers(*t.job.vicon);
     const PointTable table = trial_point_table(r, markers ? &*markers : nullptr, ExportAxes::kWorld);

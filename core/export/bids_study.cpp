@@ -15,7 +15,7 @@ namespace bids_study_detail {  // named: core compiles in unity batches
 
 // The session folders an input stands for, in a stable order.
 std::vector<fs::path> session_folders(const fs::path& input, BidsStudyPlan& plan) {
-  if (session::is_session_folder(input)) return {input};
+  if (is_session_folder(input)) return {input};
   std::error_code ec;
   if (!fs::is_directory(input, ec)) {
     plan.notes.push_back("left out " + input.string() + ": not a folder");
@@ -24,11 +24,11 @@ std::vector<fs::path> session_folders(const fs::path& input, BidsStudyPlan& plan
   }
   std::vector<fs::path> found;
   for (const auto& entry : fs::directory_iterator(input, ec)) {
-    if (entry.is_directory(ec) && session::is_session_folder(entry.path())) found.push_back(entry.path());
+    if (entry.is_directory(ec) && is_session_folder(entry.path())) found.push_back(entry.path());
   }
   std::sort(found.begin(), found.end());
   if (found.empty()) {
-    plan.notes.push_back("left out " + input.string() + ": no subject session folder (with " + session::kJournalFile +
+    plan.notes.push_back("left out " + input.string() + ": no subject session folder (with " + kJournalFile +
                          ") in it");
     ++plan.left_out;
   }
@@ -36,10 +36,10 @@ std::vector<fs::path> session_folders(const fs::path& input, BidsStudyPlan& plan
 }
 
 // The session's accepted trials with their entities; trials that cannot be named are left out.
-void plan_trials(const session::SessionState& state, BidsSubjectPlan& subject, BidsStudyPlan& plan) {
+void plan_trials(const SessionState& state, BidsSubjectPlan& subject, BidsStudyPlan& plan) {
   std::vector<std::string> notes;
-  const std::vector<TrialSources> jobs = session::accepted_trial_jobs(subject.session_dir, std::nullopt, &notes);
-  const std::string where = (subject.session_dir / session::kManifestFile).string();
+  const std::vector<TrialSources> jobs = accepted_trial_jobs(subject.session_dir, std::nullopt, &notes);
+  const std::string where = (subject.session_dir / kManifestFile).string();
   for (const auto& n : notes) {
     plan.notes.push_back(subject.session_dir.string() + ": " + n);
     ++plan.left_out;
@@ -55,9 +55,9 @@ void plan_trials(const session::SessionState& state, BidsSubjectPlan& subject, B
       leave_out("not in the session's plan");
       continue;
     }
-    const session::PlannedTrial& planned = state.trials[static_cast<size_t>(index)].plan;
-    const session::TrialType& type = state.protocol.trial_types.at(static_cast<size_t>(planned.trial_type));
-    const session::ProtocolPose& pose = state.protocol.poses.at(static_cast<size_t>(planned.pose));
+    const PlannedTrial& planned = state.trials[static_cast<size_t>(index)].plan;
+    const TrialType& type = state.protocol.trial_types.at(static_cast<size_t>(planned.trial_type));
+    const ProtocolPose& pose = state.protocol.poses.at(static_cast<size_t>(planned.pose));
     std::string problem = safe_name_problem(job.trial, "trial name");
     if (problem.empty()) problem = safe_name_problem(type.key, "motion key");
     if (problem.empty()) problem = safe_name_problem(planned.layout_key, "layout key");
@@ -99,13 +99,13 @@ int BidsStudyPlan::trial_count() const {
 
 BidsStudyPlan plan_bids_study(const std::vector<fs::path>& inputs, bool anonymise) {
   BidsStudyPlan plan;
-  std::vector<std::pair<fs::path, session::SessionState>> sessions;
+  std::vector<std::pair<fs::path, SessionState>> sessions;
   std::set<fs::path> seen;
   for (const auto& input : inputs) {
     for (const auto& dir : bids_study_detail::session_folders(input, plan)) {
       if (!seen.insert(fs::weakly_canonical(dir)).second) continue;  // given twice
       try {
-        sessions.emplace_back(dir, session::read_session_state(dir));
+        sessions.emplace_back(dir, read_session_state(dir));
       } catch (const std::exception& e) {
         plan.notes.push_back("left out " + dir.string() + ": " + e.what());
         ++plan.left_out;
@@ -133,7 +133,7 @@ BidsStudyPlan plan_bids_study(const std::vector<fs::path>& inputs, bool anonymis
   for (size_t k = 0; k < sessions.size(); ++k) {
     auto& [dir, state] = sessions[k];
     const std::string& id = state.subject().subject_id;
-    const std::string where = (dir / session::kManifestFile).string();
+    const std::string where = (dir / kManifestFile).string();
     // The reader checks ids already; checked again here because the id becomes a folder name.
     std::string problem = safe_name_problem(id, "subject id");
     const std::string label = bids_label(id);

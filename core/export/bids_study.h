@@ -29,9 +29,9 @@ struct BidsTrialPlan {
 // label, each with its session label (1, 2, … in the order they were created).
 struct BidsSubjectPlan {
   std::filesystem::path session_dir;
-  session::SubjectInfo subject;  // as the manifest says; the id is the session's own
-  std::string label;             // the BIDS label (anonymised or from the id)
-  std::string session_label;     // "" when the subject has one session in the dataset
+  SubjectInfo subject;        // as the manifest says; the id is the session's own
+  std::string label;          // the BIDS label (anonymised or from the id)
+  std::string session_label;  // "" when the subject has one session in the dataset
   std::vector<BidsTrialPlan> trials;
 };
 

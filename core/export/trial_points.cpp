@@ -101,7 +101,7 @@ int PointTable::label_index(const std::string& label) const {
   return it == labels.end() ? -1 : static_cast<int>(it - labels.begin());
 }
 
-PointTable trial_point_table(const TrialResult& result, const MarkerSeries* vicon_markers, ExportAxes axes) {
+PointTable trial_point_table(const TrialAnalysis& result, const MarkerSeries* vicon_markers, ExportAxes axes) {
   PointTable t;
   t.trial = result.tag.trial.empty() ? std::string("trial") : result.tag.trial;
   t.rate_hz = 1e6 / result.world.step_us;
@@ -194,7 +194,7 @@ TrialExportReport export_trials(const TrialExportRequest& request) {
     std::vector<TrialSources> jobs;
     std::vector<std::string> notes;
     try {
-      jobs = session::trial_sources_for_input(input, std::nullopt, &notes);
+      jobs = trial_sources_for_input(input, std::nullopt, &notes);
     } catch (const std::exception& e) {
       report.notes.push_back("left out " + input.string() + ": " + e.what());
       ++report.left_out;
@@ -244,7 +244,7 @@ TrialExportReport export_trials(const TrialExportRequest& request) {
     ++done;
     try {
       ProcessedTrial outcome;
-      const TrialResult r = process_sources_in_full(p.job, request.session, &outcome);
+      const TrialAnalysis r = process_sources_in_full(p.job, request.session, &outcome);
       std::optional<MarkerSeries> markers;
       if (p.job.vicon && r.has_vicon) markers = load_vicon_markers(*p.job.vicon);
       PointTable table = trial_point_table(r, markers ? &*markers : nullptr, request.axes);

@@ -55,7 +55,7 @@ struct PointTable {
 };
 
 // `vicon_markers` (optional) are the trial's Vicon markers as read from its file (mm).
-PointTable trial_point_table(const TrialResult& result, const MarkerSeries* vicon_markers, ExportAxes axes);
+PointTable trial_point_table(const TrialAnalysis& result, const MarkerSeries* vicon_markers, ExportAxes axes);
 
 C3dData point_table_c3d(const PointTable& table);
 TrcData point_table_trc(const PointTable& table);

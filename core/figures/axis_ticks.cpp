@@ -6,7 +6,7 @@
 #include <cmath>
 #include <limits>
 
-namespace lmc::figures {
+namespace lmc {
 
 std::vector<double> nice_ticks(double lo, double hi, int target) {
   std::vector<double> out;
@@ -67,4 +67,4 @@ std::string value_label(double value, double lo, double hi) {
   return fixed_c(value, decimals);
 }
 
-}  // namespace lmc::figures
+}  // namespace lmc

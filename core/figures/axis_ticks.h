@@ -8,7 +8,7 @@
 #include <utility>
 #include <vector>
 
-namespace lmc::figures {
+namespace lmc {
 
 std::vector<double> nice_ticks(double lo, double hi, int target = 5);
 
@@ -29,4 +29,4 @@ std::pair<double, double> fit_y_range(std::span<const std::span<const double>> x
                                       std::span<const std::span<const double>> ys, double x_lo, double x_hi,
                                       double margin = 0.05);
 
-}  // namespace lmc::figures
+}  // namespace lmc

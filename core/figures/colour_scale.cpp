@@ -3,7 +3,7 @@
 #include <array>
 #include <cmath>
 
-namespace lmc::figures {
+namespace lmc {
 namespace colour_scale_detail {
 
 // viridis at 0, 1/8, …, 1 (matplotlib's table).
@@ -42,4 +42,4 @@ bool wants_light_text(Rgb c) {
   return luma < 128.0;
 }
 
-}  // namespace lmc::figures
+}  // namespace lmc

@@ -7,7 +7,7 @@
 
 #include "core/figures/palette.h"
 
-namespace lmc::figures {
+namespace lmc {
 
 inline constexpr std::string_view kSequentialScaleName = "viridis";
 
@@ -19,4 +19,4 @@ Rgb sequential_colour(double t);
 // dark part of the scale.
 bool wants_light_text(Rgb background);
 
-}  // namespace lmc::figures
+}  // namespace lmc

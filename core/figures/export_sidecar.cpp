@@ -11,7 +11,7 @@
 #include "core/figures/svg_writer.h"
 #include "core/io/atomic_write.h"
 
-namespace lmc::figures {
+namespace lmc {
 namespace {
 
 using nlohmann::json;
@@ -160,4 +160,4 @@ WrittenFigure write_figure_files(const std::filesystem::path& dir, const std::st
                      figure_sidecar(heatmap, base_name, how));
 }
 
-}  // namespace lmc::figures
+}  // namespace lmc

@@ -13,7 +13,7 @@
 #include "core/figures/figure.h"
 #include "core/figures/heatmap.h"
 
-namespace lmc::figures {
+namespace lmc {
 
 inline constexpr const char* kFigureExportFormat = "lmc-figure-export";
 
@@ -49,4 +49,4 @@ WrittenFigure write_figure_files(const std::filesystem::path& dir, const std::st
                                  const std::vector<std::string>& inputs, const std::string& method,
                                  const nlohmann::json& parameters, int width_px = 800, int height_px = 520);
 
-}  // namespace lmc::figures
+}  // namespace lmc

@@ -4,7 +4,7 @@
 #include <cmath>
 #include <limits>
 
-namespace lmc::figures {
+namespace lmc {
 namespace {
 
 constexpr double kMargin = 0.04;  // of the data's span, on each side
@@ -59,4 +59,4 @@ AxisRange x_range(const FigureGrid& g) {
   return finished_range(e, g.x.range);
 }
 
-}  // namespace lmc::figures
+}  // namespace lmc

@@ -8,7 +8,7 @@
 
 #include "core/figures/palette.h"
 
-namespace lmc::figures {
+namespace lmc {
 
 struct AxisRange {
   double lo = 0.0, hi = 1.0;
@@ -69,4 +69,4 @@ AxisRange x_range(const Figure& f);
 AxisRange y_range(const Figure& f);
 AxisRange x_range(const FigureGrid& g);
 
-}  // namespace lmc::figures
+}  // namespace lmc

@@ -5,7 +5,7 @@
 
 #include "core/figures/locale_free_number.h"
 
-namespace lmc::figures {
+namespace lmc {
 namespace {
 
 double value_at(const std::vector<double>& v, size_t i) {
@@ -57,4 +57,4 @@ std::string to_csv(const Heatmap& heatmap) {
   return out;
 }
 
-}  // namespace lmc::figures
+}  // namespace lmc

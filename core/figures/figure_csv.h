@@ -15,7 +15,7 @@
 #include "core/figures/figure.h"
 #include "core/figures/heatmap.h"
 
-namespace lmc::figures {
+namespace lmc {
 
 std::string to_csv(const Figure& figure);
 std::string to_csv(const FigureGrid& grid);
@@ -24,4 +24,4 @@ std::string to_csv(const Heatmap& heatmap);
 // One CSV field: quoted (quotes doubled) when it holds ',', '"', '\n' or '\r'.
 std::string csv_field(const std::string& text);
 
-}  // namespace lmc::figures
+}  // namespace lmc

@@ -3,7 +3,7 @@
 #include <cmath>
 #include <limits>
 
-namespace lmc::figures {
+namespace lmc {
 
 double Heatmap::at(size_t p, size_t row, size_t column) const {
   constexpr double kMissing = std::numeric_limits<double>::quiet_NaN();
@@ -21,4 +21,4 @@ bool Heatmap::has_missing() const {
   return false;
 }
 
-}  // namespace lmc::figures
+}  // namespace lmc

@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-namespace lmc::figures {
+namespace lmc {
 
 struct HeatmapPanel {
   std::string title;           // above the panel's cells; may be empty
@@ -37,4 +37,4 @@ struct Heatmap {
   bool has_missing() const;
 };
 
-}  // namespace lmc::figures
+}  // namespace lmc

@@ -11,7 +11,7 @@
 #include "core/figures/svg_marks.h"
 #include "core/figures/svg_text.h"
 
-namespace lmc::figures {
+namespace lmc {
 namespace heatmap_svg {  // named: core compiles in unity batches beside svg_writer.cpp
 
 using svg::hex;
@@ -317,4 +317,4 @@ std::string to_svg(const Heatmap& h, int width_px, int height_px) {
   return out;
 }
 
-}  // namespace lmc::figures
+}  // namespace lmc

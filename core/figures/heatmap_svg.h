@@ -12,9 +12,9 @@
 
 #include "core/figures/heatmap.h"
 
-namespace lmc::figures {
+namespace lmc {
 
 // Sizes below 240 × 160 px are raised to it; the cells share what the labels and legend leave.
 std::string to_svg(const Heatmap& heatmap, int width_px = 800, int height_px = 520);
 
-}  // namespace lmc::figures
+}  // namespace lmc

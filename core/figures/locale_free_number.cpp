@@ -3,7 +3,7 @@
 #include <charconv>
 #include <cmath>
 
-namespace lmc::figures {
+namespace lmc {
 
 std::string fixed_c(double v, int decimals) {
   if (std::isnan(v)) return "nan";
@@ -22,4 +22,4 @@ std::string exact_c(double v) {
   return std::string(buf, res.ptr);
 }
 
-}  // namespace lmc::figures
+}  // namespace lmc

@@ -7,7 +7,7 @@
 #include <cstddef>
 #include <cstdint>
 
-namespace lmc::figures {
+namespace lmc {
 
 struct Rgb {
   std::uint8_t r = 0, g = 0, b = 0;
@@ -30,4 +30,4 @@ inline constexpr Rgb series_colour(std::size_t i) {
   return kOkabeIto[i % kOkabeIto.size()];
 }
 
-}  // namespace lmc::figures
+}  // namespace lmc

@@ -7,7 +7,7 @@
 
 #include "core/figures/locale_free_number.h"
 
-namespace lmc::figures::svg {
+namespace lmc::svg {
 namespace {
 
 constexpr double kFarOutside = 1e5;  // px beyond the plot a coordinate is clamped to
@@ -90,4 +90,4 @@ void points(std::string& out, const Series& s, const Mapper& m, Rgb c) {
   }
 }
 
-}  // namespace lmc::figures::svg
+}  // namespace lmc::svg

@@ -6,7 +6,7 @@
 
 #include "core/figures/figure.h"
 
-namespace lmc::figures::svg {
+namespace lmc::svg {
 
 struct Box {
   double x = 0, y = 0, w = 0, h = 0;
@@ -38,4 +38,4 @@ void line_pieces(std::string& out, const Series& s, const Mapper& m, Rgb c);
 // A circle per present sample.
 void points(std::string& out, const Series& s, const Mapper& m, Rgb c);
 
-}  // namespace lmc::figures::svg
+}  // namespace lmc::svg

@@ -5,7 +5,7 @@
 #include "core/common/xml_text.h"
 #include "core/figures/svg_marks.h"
 
-namespace lmc::figures::svg {
+namespace lmc::svg {
 
 double text_width(std::string_view s, double font) {
   size_t n = 0;
@@ -59,4 +59,4 @@ double title_band(std::string& out, int w, const std::string& title) {
   return 8 + kTitleFont + 10;
 }
 
-}  // namespace lmc::figures::svg
+}  // namespace lmc::svg

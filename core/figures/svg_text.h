@@ -7,7 +7,7 @@
 #include <string_view>
 #include <vector>
 
-namespace lmc::figures::svg {
+namespace lmc::svg {
 
 inline constexpr double kFont = 12.0;        // tick labels, legend, notes, cell values
 inline constexpr double kTitleFont = 15.0;   // the document's title
@@ -34,4 +34,4 @@ void document_start(std::string& out, int w, int h, const std::string& title);
 // without a title).
 double title_band(std::string& out, int w, const std::string& title);
 
-}  // namespace lmc::figures::svg
+}  // namespace lmc::svg

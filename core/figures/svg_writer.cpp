@@ -11,7 +11,7 @@
 #include "core/figures/svg_marks.h"
 #include "core/figures/svg_text.h"
 
-namespace lmc::figures {
+namespace lmc {
 namespace {
 
 using svg::Box;
@@ -249,4 +249,4 @@ std::string to_svg(const FigureGrid& grid, int width_px, int height_px) {
   return out;
 }
 
-}  // namespace lmc::figures
+}  // namespace lmc

@@ -7,7 +7,7 @@
 
 #include "core/figures/figure.h"
 
-namespace lmc::figures {
+namespace lmc {
 
 // Sizes below 240 × 160 px are raised to it (smaller leaves no room for the plot).
 std::string to_svg(const Figure& figure, int width_px = 800, int height_px = 500);
@@ -16,4 +16,4 @@ std::string to_svg(const Figure& figure, int width_px = 800, int height_px = 500
 // label only under the bottom panel.
 std::string to_svg(const FigureGrid& grid, int width_px = 800, int height_px = 800);
 
-}  // namespace lmc::figures
+}  // namespace lmc

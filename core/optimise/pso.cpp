@@ -24,11 +24,8 @@ double uniform01(std::mt19937_64& rng) {
   return static_cast<double>(rng() >> 11) * 0x1.0p-53;
 }
 
-}  // namespace
-
-PsoResult run_pso(const Layout& start, const SearchSpace& space, std::span<const PreparedFrame> frames,
-                  const PsoSettings& s, const PsoProgressCallback& progress, std::stop_token stop) {
-  const auto t0 = std::chrono::steady_clock::now();
+void check_pso_inputs(const Layout& start, const SearchSpace& space, std::span<const PreparedFrame> frames,
+                      const PsoSettings& s) {
   if (const std::string problem = validate_layout(start); !problem.empty()) throw Error("start layout " + problem);
   if (const std::string problem = space.validate(); !problem.empty()) throw Error(problem);
   if (s.particles < 1 || s.particles > 100000) throw Error("particles must be 1…100000");
@@ -37,6 +34,90 @@ PsoResult run_pso(const Layout& start, const SearchSpace& space, std::span<const
   if (s.threads < 0) throw Error("threads must be ≥ 0 (0 = all)");
   if (s.prune_round_frames < 0) throw Error("prune_round_frames must be ≥ 0 (0 = no pruning)");
   if (frames.empty()) throw Error("the pose set is empty");
+}
+
+// The swarm: positions, velocities and personal bests, particle-major ([particle * dim + k]), and
+// each searched dimension's bounds.
+struct Swarm {
+  size_t dim = 0;
+  std::vector<double> x, v, pbest, gbest, pbest_cost, lo, hi;
+  double gbest_cost = std::numeric_limits<double>::infinity();
+};
+
+Swarm initial_swarm(const Layout& start, const SearchSpace& space, const std::vector<std::pair<int, int>>& dims,
+                    const PsoSettings& s, std::mt19937_64& rng) {
+  const auto np = static_cast<size_t>(s.particles);
+  const size_t dim = dims.size();
+  Swarm sw;
+  sw.dim = dim;
+  sw.x.resize(np * dim);
+  sw.v.resize(np * dim);
+  sw.pbest.resize(np * dim);
+  sw.gbest.resize(dim);
+  sw.pbest_cost.assign(np, std::numeric_limits<double>::infinity());
+  sw.lo.resize(dim);
+  sw.hi.resize(dim);
+  std::vector<double> start_x(dim);
+  for (size_t k = 0; k < dim; ++k) {
+    const auto [d, p] = dims[k];
+    const ParamBounds& b = space.bounds[static_cast<size_t>(p)];
+    sw.lo[k] = b.min;
+    sw.hi[k] = b.max;
+    start_x[k] = std::clamp(start.devices[static_cast<size_t>(d)].pose.get(p), b.min, b.max);
+  }
+  // Initial swarm, drawn particle by particle, dimension by dimension, on this thread.
+  for (size_t i = 0; i < np; ++i) {
+    for (size_t k = 0; k < dim; ++k) {
+      const double span = sw.hi[k] - sw.lo[k];
+      const double pos = sw.lo[k] + uniform01(rng) * span;
+      const double vel = (2.0 * uniform01(rng) - 1.0) * 0.1 * span;
+      sw.x[i * dim + k] = (i == 0 && s.start_from_layout) ? start_x[k] : pos;
+      sw.v[i * dim + k] = vel;
+    }
+  }
+  return sw;
+}
+
+// One iteration's move, particle by particle, dimension by dimension (the draws in that order).
+void move_swarm(Swarm& sw, const PsoSettings& s, std::mt19937_64& rng) {
+  const size_t dim = sw.dim;
+  const auto np = static_cast<size_t>(s.particles);
+  std::vector<double>&x = sw.x, &v = sw.v;
+  for (size_t i = 0; i < np; ++i) {
+    for (size_t k = 0; k < dim; ++k) {
+      const size_t ik = i * dim + k;
+      const double r1 = uniform01(rng);
+      const double r2 = uniform01(rng);
+      v[ik] = s.w * v[ik] + s.c1 * r1 * (sw.pbest[ik] - x[ik]) + s.c2 * r2 * (sw.gbest[k] - x[ik]);
+      x[ik] += v[ik];
+      // Boundary: clamp onto the wall and stop moving across it.
+      if (x[ik] < sw.lo[k]) {
+        x[ik] = sw.lo[k];
+        v[ik] = 0.0;
+      } else if (x[ik] > sw.hi[k]) {
+        x[ik] = sw.hi[k];
+        v[ik] = 0.0;
+      }
+    }
+  }
+}
+
+// The best layout's coverage and robust terms, for the summary.
+void score_best_layout(PsoResult& result, std::span<const PreparedFrame> frames, const PsoSettings& s,
+                       tbb::task_arena& arena) {
+  VisibilityTable table;
+  arena.execute([&] { table = compute_visibility(result.best_layout, frames, s.phalanx_radius_mm); });
+  result.best_coverage = compute_coverage(table);
+  arena.execute(
+      [&] { result.best_terms = layout_robust_terms(result.best_layout, frames, s.weights, s.phalanx_radius_mm); });
+}
+
+}  // namespace
+
+PsoResult run_pso(const Layout& start, const SearchSpace& space, std::span<const PreparedFrame> frames,
+                  const PsoSettings& s, const PsoProgressCallback& progress, std::stop_token stop) {
+  const auto t0 = std::chrono::steady_clock::now();
+  check_pso_inputs(start, space, frames, s);
 
   const int devices = start.device_count();
   const auto nd = static_cast<size_t>(devices);
@@ -47,27 +128,9 @@ PsoResult run_pso(const Layout& start, const SearchSpace& space, std::span<const
   const std::vector<VisibilityLimits> limits = device_limits(start, s.phalanx_radius_mm);
 
   std::mt19937_64 rng(s.seed);
-  std::vector<double> x(np * dim), v(np * dim), pbest(np * dim), gbest(dim);
-  std::vector<double> pbest_cost(np, std::numeric_limits<double>::infinity());
-  double gbest_cost = std::numeric_limits<double>::infinity();
-  std::vector<double> lo(dim), hi(dim), start_x(dim);
-  for (size_t k = 0; k < dim; ++k) {
-    const auto [d, p] = dims[k];
-    const ParamBounds& b = space.bounds[static_cast<size_t>(p)];
-    lo[k] = b.min;
-    hi[k] = b.max;
-    start_x[k] = std::clamp(start.devices[static_cast<size_t>(d)].pose.get(p), b.min, b.max);
-  }
-  // Initial swarm, drawn particle by particle, dimension by dimension, on this thread.
-  for (size_t i = 0; i < np; ++i) {
-    for (size_t k = 0; k < dim; ++k) {
-      const double span = hi[k] - lo[k];
-      const double pos = lo[k] + uniform01(rng) * span;
-      const double vel = (2.0 * uniform01(rng) - 1.0) * 0.1 * span;
-      x[i * dim + k] = (i == 0 && s.start_from_layout) ? start_x[k] : pos;
-      v[i * dim + k] = vel;
-    }
-  }
+  Swarm sw = initial_swarm(start, space, dims, s, rng);
+  std::vector<double>&x = sw.x, &pbest = sw.pbest, &gbest = sw.gbest, &pbest_cost = sw.pbest_cost;
+  double& gbest_cost = sw.gbest_cost;
 
   auto layout_of = [&](const double* xi) {
     Layout l = start;
@@ -134,23 +197,7 @@ PsoResult run_pso(const Layout& start, const SearchSpace& space, std::span<const
       cancelled = true;
       break;
     }
-    for (size_t i = 0; i < np; ++i) {
-      for (size_t k = 0; k < dim; ++k) {
-        const size_t ik = i * dim + k;
-        const double r1 = uniform01(rng);
-        const double r2 = uniform01(rng);
-        v[ik] = s.w * v[ik] + s.c1 * r1 * (pbest[ik] - x[ik]) + s.c2 * r2 * (gbest[k] - x[ik]);
-        x[ik] += v[ik];
-        // Boundary: clamp onto the wall and stop moving across it.
-        if (x[ik] < lo[k]) {
-          x[ik] = lo[k];
-          v[ik] = 0.0;
-        } else if (x[ik] > hi[k]) {
-          x[ik] = hi[k];
-          v[ik] = 0.0;
-        }
-      }
-    }
+    move_swarm(sw, s, rng);
     if (!evaluate()) {
       cancelled = true;
       break;
@@ -168,13 +215,7 @@ PsoResult run_pso(const Layout& start, const SearchSpace& space, std::span<const
     result.best_layout = start;
     result.best_cost = std::numeric_limits<double>::infinity();
   }
-  if (!cancelled) {
-    VisibilityTable table;
-    arena->execute([&] { table = compute_visibility(result.best_layout, frames, s.phalanx_radius_mm); });
-    result.best_coverage = compute_coverage(table);
-    arena->execute(
-        [&] { result.best_terms = layout_robust_terms(result.best_layout, frames, s.weights, s.phalanx_radius_mm); });
-  }
+  if (!cancelled) score_best_layout(result, frames, s, *arena);
   result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   return result;
 }

@@ -11,13 +11,12 @@
 namespace lmc {
 namespace {
 
-std::string colour_text(figures::Rgb c) {
+std::string colour_text(Rgb c) {
   return "rgb(" + std::to_string(c.r) + "," + std::to_string(c.g) + "," + std::to_string(c.b) + ")";
 }
 
 // One histogram as a step line inside the panel box (x0, y0, w, h), shares scaled to `top`.
 std::string step_path(const std::vector<double>& share, double top, double x0, double y0, double w, double h) {
-  using figures::fixed_c;
   const double bin_w = w / static_cast<double>(std::max<size_t>(1, share.size()));
   std::string d = "M" + fixed_c(x0, 1) + "," + fixed_c(y0 + h, 1);
   for (size_t i = 0; i < share.size(); ++i) {
@@ -33,8 +32,7 @@ std::string step_path(const std::vector<double>& share, double top, double x0, d
 
 std::string pose_set_comparison_svg(const PoseSetComparison& c, const std::string& a_label,
                                     const std::string& b_label) {
-  using figures::fixed_c;
-  namespace svg = figures::svg;
+  namespace svg = svg;
   constexpr int kColumns = 3;
   constexpr double kPanelW = 300, kPanelH = 150, kGapX = 30, kGapY = 62, kMargin = 30;
   const int rows = (static_cast<int>(c.quantities.size()) + kColumns - 1) / kColumns;
@@ -45,7 +43,7 @@ std::string pose_set_comparison_svg(const PoseSetComparison& c, const std::strin
   std::string out;
   svg::document_start(out, width, height, title);
   double top = svg::title_band(out, width, title);
-  const figures::Rgb ca = figures::series_colour(4), cb = figures::series_colour(0);
+  const Rgb ca = series_colour(4), cb = series_colour(0);
   const std::string hands = "hands the other set never has (palm in 30 mm cubes x tilt in 30° steps): " + a_label +
                             " " + format_fixed(100.0 * c.a_hands_b_never_has, 1) + " % of its frames, " + b_label +
                             " " + format_fixed(100.0 * c.b_hands_a_never_has, 1) + " %";

@@ -90,7 +90,7 @@ std::vector<TrialInput> recording_inputs(const fs::path& input, const RecordedPo
     out.push_back({job.trial, input, job, false});
     return out;
   }
-  for (auto& job : session::trial_sources_for_input(input, std::nullopt, &notes)) {
+  for (auto& job : trial_sources_for_input(input, std::nullopt, &notes)) {
     if (options.source == RecordedPoseSource::kVicon) {
       if (!job.vicon) {
         notes.push_back(job.lmc.string() + ": no Vicon file (" + job.trial + ".trc or .c3d) beside it; left out");
@@ -149,7 +149,7 @@ TrialFrames read_trial(const TrialInput& in, const RecordedPoseOptions& options,
     if (options.source == RecordedPoseSource::kFused && in.process_now) {
       BatchOptions batch;
       batch.layout = options.layout;
-      const TrialResult result = process_sources_in_full(in.job, batch);
+      const TrialAnalysis result = process_sources_in_full(in.job, batch);
       std::vector<HandFrame> rows(static_cast<size_t>(result.fused.frame_count));
       for (int k = 0; k < result.fused.frame_count; ++k) {
         HandFrame& f = rows[static_cast<size_t>(k)];

@@ -210,7 +210,7 @@ ProcessedTrial process_sources(const TrialSources& job, const BatchOptions& opti
       const RecorderSidecar& side = sidecar.get();
       if (side.ground_truth) popt.resample.grid_start_us = side.ground_truth->device_clock_at_time_zero_us;
     }
-    TrialResult r = process_trial(job.trial, rec, layout, vicon, popt);
+    TrialAnalysis r = process_trial(job.trial, rec, layout, vicon, popt);
     r.lmc_source = job.lmc.string();
     if (job.vicon) r.vicon_source = job.vicon->string();
     for (const auto& w : r.warnings) out.warnings.push_back(w);
@@ -225,12 +225,12 @@ ProcessedTrial process_sources(const TrialSources& job, const BatchOptions& opti
       // What the errors read of this method's result is kept aside; the rest (grids, labels,
       // tracks, Vicon: megabytes a trial) is handed to the other method, which fuses, measures and
       // compares again and leaves them as they are.
-      TrialResult mine;
+      TrialAnalysis mine;
       mine.has_vicon = r.has_vicon;
       mine.labels = r.labels;
       mine.lmc_frames = std::move(r.lmc_frames);
       mine.vicon_frames = std::move(r.vicon_frames);
-      const TrialResult theirs = process_trial_with_method(std::move(r), job.trial, other);
+      const TrialAnalysis theirs = process_trial_with_method(std::move(r), job.trial, other);
       const MethodErrors mine_errors = trial_errors(mine, &theirs);
       const MethodErrors their_errors = trial_errors(theirs, &mine);
       if (options.process.method == FusionMethod::kReference) {
@@ -249,10 +249,10 @@ ProcessedTrial process_sources(const TrialSources& job, const BatchOptions& opti
   return out;
 }
 
-TrialResult process_sources_in_full(const TrialSources& job, const BatchOptions& options, ProcessedTrial* outcome) {
+TrialAnalysis process_sources_in_full(const TrialSources& job, const BatchOptions& options, ProcessedTrial* outcome) {
   BatchOptions o = options;
-  std::optional<TrialResult> kept;
-  o.on_result = [&kept](const TrialResult& r, const nlohmann::json&) { kept = r; };
+  std::optional<TrialAnalysis> kept;
+  o.on_result = [&kept](const TrialAnalysis& r, const nlohmann::json&) { kept = r; };
   o.compare_methods = false;
   const ViconMapping mapping = o.mapping ? load_vicon_mapping(*o.mapping) : default_vicon_mapping();
   ProcessedTrial out = process_sources(job, o, mapping);

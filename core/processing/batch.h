@@ -48,7 +48,7 @@ struct BatchOptions {
   // outcome) as soon as it is processed (from the worker threads, so it must be thread-safe):
   // `lmc process` writes the trial's files there (core/results), which processing itself knows
   // nothing of.
-  std::function<void(const TrialResult&, const nlohmann::json& summary)> on_result;
+  std::function<void(const TrialAnalysis&, const nlohmann::json& summary)> on_result;
   bool compare_methods = false;  // also run the other method and collect errors vs truth
   // The workbench runs a batch on a worker thread: once `stop` is requested, trials not yet
   // started are left out (outcome "cancelled"); the ones running finish (a trial takes well under a
@@ -79,8 +79,8 @@ ProcessedTrial process_sources(const TrialSources& job, const BatchOptions& opti
 // One trial with every intermediate kept (the Review tab's trial view, `lmc figures --trial`):
 // process_sources with options.mapping (or the default mapping) and without the method comparison.
 // `outcome` (optional) receives the summary and warnings. Throws lmc::Error naming the trial.
-TrialResult process_sources_in_full(const TrialSources& job, const BatchOptions& options,
-                                    ProcessedTrial* outcome = nullptr);
+TrialAnalysis process_sources_in_full(const TrialSources& job, const BatchOptions& options,
+                                      ProcessedTrial* outcome = nullptr);
 std::vector<ProcessedTrial> process_batch(const std::vector<TrialSources>& jobs, const BatchOptions& options);
 
 }  // namespace lmc

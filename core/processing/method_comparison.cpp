@@ -37,7 +37,7 @@ ErrorAccumulator MethodErrors::angle_pooled(bool unseen) const {
   return a;
 }
 
-MethodErrors trial_errors(const TrialResult& r, const TrialResult* other) {
+MethodErrors trial_errors(const TrialAnalysis& r, const TrialAnalysis* other) {
   MethodErrors m;
   if (!r.has_vicon) return m;
   const size_t frames = std::min(r.lmc_frames.size(), r.vicon_frames.size());

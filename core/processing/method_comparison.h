@@ -44,7 +44,7 @@ struct MethodErrors {
 // two devices' rolling variances are 0 — a clipped, constant coordinate — its update divides 0
 // by 0, as the study's did; the default method leaves NaN where no device saw the hand for longer
 // than the gap limit.)
-MethodErrors trial_errors(const TrialResult& r, const TrialResult* other = nullptr);
+MethodErrors trial_errors(const TrialAnalysis& r, const TrialAnalysis* other = nullptr);
 
 // A Markdown table: rows = measure (finger lengths pooled and per finger, angles pooled and per
 // joint), columns = reference / default RMSE overall and on not-seen frames, with frame counts.

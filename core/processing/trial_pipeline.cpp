@@ -36,7 +36,7 @@ void trim_grid(GridTrial& g, int frames) {
 
 // Steps 4–6 on a result whose steps 1–3 are done (resampled grid, labels, world tracks, and the
 // trimmed Vicon in r.vicon when there is one).
-void fuse_measure_compare(TrialResult& r, const std::string& trial_name, const ProcessOptions& options) {
+void fuse_measure_compare(TrialAnalysis& r, const std::string& trial_name, const ProcessOptions& options) {
   // 4. Fuse.
   std::vector<const HandTrack*> tracks;
   for (const auto& d : r.world.devices) tracks.push_back(&d.track);
@@ -77,9 +77,9 @@ void fuse_measure_compare(TrialResult& r, const std::string& trial_name, const P
 
 }  // namespace
 
-TrialResult process_trial(const std::string& trial_name, const LmcRecording& recording, const Layout& layout,
-                          const HandTrack* vicon, const ProcessOptions& options) {
-  TrialResult r;
+TrialAnalysis process_trial(const std::string& trial_name, const LmcRecording& recording, const Layout& layout,
+                            const HandTrack* vicon, const ProcessOptions& options) {
+  TrialAnalysis r;
   r.tag = parse_trial_tag(trial_name);
   r.method = options.method;
   r.layout_name = layout.name;
@@ -141,16 +141,16 @@ TrialResult process_trial(const std::string& trial_name, const LmcRecording& rec
   return r;
 }
 
-TrialResult process_trial_with_method(const TrialResult& done, const std::string& trial_name,
-                                      const ProcessOptions& options) {
-  return process_trial_with_method(TrialResult(done), trial_name, options);
+TrialAnalysis process_trial_with_method(const TrialAnalysis& done, const std::string& trial_name,
+                                        const ProcessOptions& options) {
+  return process_trial_with_method(TrialAnalysis(done), trial_name, options);
 }
 
-TrialResult process_trial_with_method(TrialResult&& done, const std::string& trial_name,
-                                      const ProcessOptions& options) {
+TrialAnalysis process_trial_with_method(TrialAnalysis&& done, const std::string& trial_name,
+                                        const ProcessOptions& options) {
   refuse_length_correction_with_reference(options);
   // Everything of steps 1–3 as it is; steps 4–6 overwrite what they compute.
-  TrialResult r = std::move(done);
+  TrialAnalysis r = std::move(done);
   r.method = options.method;
   r.length_correction.reset();
   fuse_measure_compare(r, trial_name, options);

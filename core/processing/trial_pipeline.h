@@ -40,7 +40,9 @@ struct ProcessOptions {
   std::optional<LengthCorrection> length_correction;
 };
 
-struct TrialResult {
+// Everything processing computed for one trial: every intermediate (the grid, the world tracks, the
+// labels, the fused hand) and the measures, kept for the trial view, the exports and the reruns.
+struct TrialAnalysis {
   TrialTag tag;
   std::string lmc_source, vicon_source;
   FusionMethod method = FusionMethod::kDefault;
@@ -73,16 +75,17 @@ struct TrialResult {
 // In memory. `vicon` (already mapped to the 30 points, 100 Hz) may be null. Throws lmc::Error
 // for problems that stop this trial (no hand at all, layout with too few devices, Vicon too short,
 // a length correction with the reference method).
-TrialResult process_trial(const std::string& trial_name, const LmcRecording& recording, const Layout& layout,
-                          const HandTrack* vicon, const ProcessOptions& options);
+TrialAnalysis process_trial(const std::string& trial_name, const LmcRecording& recording, const Layout& layout,
+                            const HandTrack* vicon, const ProcessOptions& options);
 
 // The same trial fused by another method: `done` came from process_trial with options that differ
 // from `options` in the fusion method only, so its resampled grid, visibility labels, world tracks
 // and trimmed Vicon are reused and only fusion, measures and comparison run again (a method
 // comparison otherwise resamples and ray-traces every trial twice). Same result as process_trial.
-TrialResult process_trial_with_method(const TrialResult& done, const std::string& trial_name,
-                                      const ProcessOptions& options);
+TrialAnalysis process_trial_with_method(const TrialAnalysis& done, const std::string& trial_name,
+                                        const ProcessOptions& options);
 // The same, taking `done` over instead of copying it (its grids and tracks are megabytes a trial).
-TrialResult process_trial_with_method(TrialResult&& done, const std::string& trial_name, const ProcessOptions& options);
+TrialAnalysis process_trial_with_method(TrialAnalysis&& done, const std::string& trial_name,
+                                        const ProcessOptions& options);
 
 }  // namespace lmc

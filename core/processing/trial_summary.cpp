@@ -41,7 +41,7 @@ nlohmann::json stats_json(const MeasureStats& s) {
 
 }  // namespace
 
-nlohmann::json trial_summary_json(const TrialResult& r) {
+nlohmann::json trial_summary_json(const TrialAnalysis& r) {
   nlohmann::json j;
   j["format"] = 1;
   j["trial"] = r.tag.trial;

@@ -9,6 +9,6 @@
 
 namespace lmc {
 
-nlohmann::json trial_summary_json(const TrialResult& r);
+nlohmann::json trial_summary_json(const TrialAnalysis& r);
 
 }  // namespace lmc

@@ -24,7 +24,7 @@ std::string validity_row(const std::string& label, const double* values, int n) 
 
 // Mean and RMS of LMC − Vicon over the frames both have (NaN skipped); untouched without any.
 template <typename Measure>
-void validity_bias_rmse(const TrialResult& r, Measure measure, double& bias, double& rmse) {
+void validity_bias_rmse(const TrialAnalysis& r, Measure measure, double& bias, double& rmse) {
   const size_t n = std::min(r.lmc_frames.size(), r.vicon_frames.size());
   double sum = 0, sq = 0;
   int count = 0;
@@ -48,7 +48,7 @@ std::string label_of(const MethodValidity& m) {
 
 }  // namespace
 
-MethodValidity method_validity(const TrialResult& r) {
+MethodValidity method_validity(const TrialAnalysis& r) {
   MethodValidity v;
   v.method = r.method;
   for (int f = 0; f < kNumFingers; ++f) {

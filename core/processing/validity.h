@@ -21,7 +21,7 @@ struct MethodValidity {
   ConsensusReport consensus;
 };
 
-MethodValidity method_validity(const TrialResult& result);
+MethodValidity method_validity(const TrialAnalysis& result);
 
 // A plain-text table of several methods on one trial: finger lengths (Vicon, each method, the
 // seeing controllers' median and range), fused − median, shortest seeing controller, point

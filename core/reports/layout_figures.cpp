@@ -12,8 +12,8 @@
 namespace lmc {
 namespace {}  // namespace
 
-figures::Figure layout_top_view(const Layout& layout, const PoseSet& poses, int max_hand_points) {
-  figures::Figure f;
+Figure layout_top_view(const Layout& layout, const PoseSet& poses, int max_hand_points) {
+  Figure f;
   f.title = "Top view of " + layout.name;
   f.x = {"x (across the table)", "mm", std::nullopt};
   f.y = {"z (towards the subject)", "mm", std::nullopt};
@@ -28,7 +28,7 @@ figures::Figure layout_top_view(const Layout& layout, const PoseSet& poses, int 
   }
   height = n > 0 ? height / n : 200.0;
   for (const auto& d : layout.devices) {
-    figures::Series s;
+    Series s;
     s.name = d.slot;
     const auto corners = controller_footprint(d);
     for (int i = 0; i <= 4; ++i) {
@@ -49,10 +49,10 @@ figures::Figure layout_top_view(const Layout& layout, const PoseSet& poses, int 
     }
     f.series.push_back(std::move(s));
   }
-  figures::Series hands;
+  Series hands;
   hands.name = "palm positions";
-  hands.style = figures::SeriesStyle::points;
-  hands.colour = figures::Rgb{150, 150, 150};
+  hands.style = SeriesStyle::points;
+  hands.colour = Rgb{150, 150, 150};
   const int total = poses.size();
   const int cap = std::max(1, max_hand_points);
   const int step = std::max(1, (total + cap - 1) / cap);  // rounded up: never more than the cap
@@ -68,15 +68,15 @@ figures::Figure layout_top_view(const Layout& layout, const PoseSet& poses, int 
   return f;
 }
 
-figures::Figure pose_redundancy_figure(const LayoutReport& r) {
-  figures::Figure f;
+Figure pose_redundancy_figure(const LayoutReport& r) {
+  Figure f;
   f.title = "Fingers seen by 2+ controllers: " + r.layout_name;
-  f.x = {"reference pose", "", figures::AxisRange{0.5, static_cast<double>(r.poses.size()) + 0.5}};
-  f.y = {"share of the pose's frames", "", figures::AxisRange{0.0, 1.0}};
+  f.x = {"reference pose", "", AxisRange{0.5, static_cast<double>(r.poses.size()) + 0.5}};
+  f.y = {"share of the pose's frames", "", AxisRange{0.0, 1.0}};
   for (int k = 0; k < kNumDigits; ++k) {
-    figures::Series s;
+    Series s;
     s.name = std::string(digit_name(k));
-    s.style = figures::SeriesStyle::line_and_points;
+    s.style = SeriesStyle::line_and_points;
     for (size_t p = 0; p < r.poses.size(); ++p) {
       s.x.push_back(static_cast<double>(p + 1));
       s.y.push_back(r.poses[p].seen_by_two[static_cast<size_t>(k)]);
@@ -97,14 +97,14 @@ figures::Figure pose_redundancy_figure(const LayoutReport& r) {
   return f;
 }
 
-figures::Heatmap finger_coverage_heatmap(const LayoutReport& r) {
-  figures::Heatmap h;
+Heatmap finger_coverage_heatmap(const LayoutReport& r) {
+  Heatmap h;
   h.title = "Finger coverage per pose: " + r.layout_name;
   for (int f = 0; f < kNumDigits; ++f) h.rows.emplace_back(digit_name(f));
   h.row_title = "finger";
   h.column_title = "reference pose (palm orientation, motion)";
   h.scale_label = "share of the pose's frames";
-  h.value_text = figures::HeatmapValueText::percent;
+  h.value_text = HeatmapValueText::percent;
   int fewest = 0, most = 0;
   for (const PoseCoverageRow& p : r.poses) {
     h.columns.emplace_back(motion_words(p.motion));
@@ -112,8 +112,8 @@ figures::Heatmap finger_coverage_heatmap(const LayoutReport& r) {
     fewest = fewest == 0 ? p.frames : std::min(fewest, p.frames);
     most = std::max(most, p.frames);
   }
-  figures::HeatmapPanel one{"Seen by at least one controller", {}};
-  figures::HeatmapPanel two{"Seen by two or more controllers", {}};
+  HeatmapPanel one{"Seen by at least one controller", {}};
+  HeatmapPanel two{"Seen by two or more controllers", {}};
   for (size_t k = 0; k < static_cast<size_t>(kNumDigits); ++k) {
     for (const PoseCoverageRow& p : r.poses) {
       one.values.push_back(p.seen_by_one[k]);

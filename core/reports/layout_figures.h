@@ -19,13 +19,13 @@
 namespace lmc {
 
 // At most `max_hand_points` palm positions are drawn (evenly spaced through the set).
-figures::Figure layout_top_view(const Layout& layout, const PoseSet& poses, int max_hand_points = 1500);
+Figure layout_top_view(const Layout& layout, const PoseSet& poses, int max_hand_points = 1500);
 
-figures::Figure pose_redundancy_figure(const LayoutReport& report);
+Figure pose_redundancy_figure(const LayoutReport& report);
 
 // Rows thumb … pinky; a column per reference pose present in the set (at most ten: the poses are
 // the study's labels, not the frames), grouped by palm orientation. `poses_description` names the
 // pose set in the notes.
-figures::Heatmap finger_coverage_heatmap(const LayoutReport& report);
+Heatmap finger_coverage_heatmap(const LayoutReport& report);
 
 }  // namespace lmc

@@ -15,14 +15,12 @@ std::filesystem::path write_layout_report_files(const std::filesystem::path& dir
   std::filesystem::create_directories(dir);
   const nlohmann::json parameters = {{"poses", poses.description}, {"phalanx_radius_mm", phalanx_radius_mm}};
   const std::vector<std::string> inputs = {layout.name, poses.description};
-  figures::write_figure_files(dir, "top-view", layout_top_view(layout, poses), inputs, "layout top view", parameters,
-                              800, 700);
-  figures::write_figure_files(dir, "pose-redundancy", pose_redundancy_figure(report), inputs,
-                              "fingers seen by 2+ controllers per pose", parameters);
-  figures::write_figure_files(
-      dir, "finger-coverage", finger_coverage_heatmap(report), inputs,
-      "share of each reference pose's frames in which each finger is seen by 1+ and 2+ controllers", parameters, 900,
-      560);
+  write_figure_files(dir, "top-view", layout_top_view(layout, poses), inputs, "layout top view", parameters, 800, 700);
+  write_figure_files(dir, "pose-redundancy", pose_redundancy_figure(report), inputs,
+                     "fingers seen by 2+ controllers per pose", parameters);
+  write_figure_files(dir, "finger-coverage", finger_coverage_heatmap(report), inputs,
+                     "share of each reference pose's frames in which each finger is seen by 1+ and 2+ controllers",
+                     parameters, 900, 560);
   const auto md = dir / "report.md";
   write_file_atomically(
       md, format_layout_report_markdown(

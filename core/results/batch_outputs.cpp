@@ -11,7 +11,7 @@ std::vector<ProcessedTrial> process_and_write_batch(const std::vector<TrialSourc
                                                     const std::filesystem::path& out) {
   std::filesystem::create_directories(out);
   FileCommitter committer;
-  options.on_result = [&](const TrialResult& r, const nlohmann::json& summary) {
+  options.on_result = [&](const TrialAnalysis& r, const nlohmann::json& summary) {
     for (auto& file : trial_output_files(r, summary)) {
       committer.submit(out / file.name, std::move(file.contents), r.tag.trial);
     }

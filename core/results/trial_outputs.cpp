@@ -55,7 +55,7 @@ std::string stem_of(const std::string& path, const std::string& fallback) {
 
 }  // namespace
 
-std::string format_results_text(const TrialResult& r) {
+std::string format_results_text(const TrialAnalysis& r) {
   std::ostringstream o;
   const std::string bar(72, '_');
   o << bar << "LMC Data" << bar << '\n';
@@ -86,7 +86,7 @@ std::string format_results_text(const TrialResult& r) {
   return o.str();
 }
 
-std::string format_measures_tsv(const TrialResult& r) {
+std::string format_measures_tsv(const TrialAnalysis& r) {
   // One string appended to, not a stream: the table holds ~80,000 numbers a trial, and a stream's
   // per-value insertion cost more than formatting them.
   std::string o;
@@ -155,7 +155,7 @@ std::string format_measures_tsv(const TrialResult& r) {
   return o;
 }
 
-std::string format_fused_points(const TrialResult& r) {
+std::string format_fused_points(const TrialAnalysis& r) {
   LmcRecording rec;
   rec.kind = RecordingKind::kResampled;
   rec.rows.reserve(static_cast<size_t>(std::max(r.fused.frame_count, 0)));
@@ -172,7 +172,7 @@ std::string format_fused_points(const TrialResult& r) {
   return format_lmc_recording(rec);
 }
 
-std::vector<TrialOutputFile> trial_output_files(const TrialResult& r, const nlohmann::json& summary) {
+std::vector<TrialOutputFile> trial_output_files(const TrialAnalysis& r, const nlohmann::json& summary) {
   const std::string& base = r.tag.trial;
   std::vector<TrialOutputFile> files;
   files.push_back({base + ".results.txt", format_results_text(r)});

@@ -16,9 +16,9 @@
 namespace lmc {
 
 // The authors' layout: "%f" numbers, tab-separated, "%0.2f" visibility, their headings.
-std::string format_results_text(const TrialResult& r);
-std::string format_measures_tsv(const TrialResult& r);
-std::string format_fused_points(const TrialResult& r);
+std::string format_results_text(const TrialAnalysis& r);
+std::string format_measures_tsv(const TrialAnalysis& r);
+std::string format_fused_points(const TrialAnalysis& r);
 
 // The four files' names and contents, formatted but not yet written (a batch formats them on the
 // thread that processed the trial and writes them on another, core/io/file_committer.h).
@@ -27,6 +27,6 @@ struct TrialOutputFile {
   std::string contents;
 };
 // `summary` is trial_summary_json(r), which a batch has already built for the trial's outcome.
-std::vector<TrialOutputFile> trial_output_files(const TrialResult& r, const nlohmann::json& summary);
+std::vector<TrialOutputFile> trial_output_files(const TrialAnalysis& r, const nlohmann::json& summary);
 
 }  // namespace lmc

@@ -24,13 +24,13 @@ MeasureAgreement agree_on_measure(const AgreementRows& rows, std::size_t i) {
   m.measure = agreement_measures()[i];
   // Every trial goes to the statistics, incomplete ones too, so each counts its own skipped pairs.
   std::vector<double> lmc_values, vicon_values;
-  std::vector<stats::PairedObservation> observations;
+  std::vector<PairedObservation> observations;
   std::map<std::string, std::size_t> pairs_per_subject;
   for (const PairedTrial* t : rows) {
     lmc_values.push_back(t->lmc[i]);
     vicon_values.push_back(t->vicon[i]);
     observations.push_back({t->subject, t->lmc[i], t->vicon[i]});
-    if (stats::is_usable(t->lmc[i]) && stats::is_usable(t->vicon[i])) {
+    if (is_usable(t->lmc[i]) && is_usable(t->vicon[i])) {
       ++pairs_per_subject[t->subject];
       ++m.n_trials;
     } else {
@@ -40,17 +40,16 @@ MeasureAgreement agree_on_measure(const AgreementRows& rows, std::size_t i) {
   m.n_subjects = pairs_per_subject.size();
   bool repeated = false;
   for (const auto& [subject, n] : pairs_per_subject) repeated = repeated || n > 1;
-  m.bland_altman =
-      repeated ? stats::bland_altman_repeated(observations) : stats::bland_altman(lmc_values, vicon_values);
-  m.differences = stats::describe_pairs(lmc_values, vicon_values);
-  m.pearson = stats::pearson(lmc_values, vicon_values);
+  m.bland_altman = repeated ? bland_altman_repeated(observations) : bland_altman(lmc_values, vicon_values);
+  m.differences = describe_pairs(lmc_values, vicon_values);
+  m.pearson = pearson(lmc_values, vicon_values);
 
   Eigen::MatrixXd ratings(static_cast<Eigen::Index>(rows.size()), 2);
   for (std::size_t r = 0; r < rows.size(); ++r) {
     ratings(static_cast<Eigen::Index>(r), 0) = lmc_values[r];
     ratings(static_cast<Eigen::Index>(r), 1) = vicon_values[r];
   }
-  const stats::IccResult icc_result = stats::icc(ratings);
+  const IccResult icc_result = icc(ratings);
   m.icc = icc_result.icc2_1;
   m.icc_reason = icc_result.reason;
   // From 2 or 3 trials the interval spans nearly every value an ICC can take and rests on the
@@ -64,10 +63,10 @@ MeasureAgreement agree_on_measure(const AgreementRows& rows, std::size_t i) {
 
   // bland_altman_points() keeps the complete pairs in input order; walk the rows alike to name
   // them.
-  const auto points = stats::bland_altman_points(lmc_values, vicon_values);
+  const auto points = bland_altman_points(lmc_values, vicon_values);
   std::size_t next = 0;
   for (const PairedTrial* t : rows) {
-    if (!stats::is_usable(t->lmc[i]) || !stats::is_usable(t->vicon[i])) continue;
+    if (!is_usable(t->lmc[i]) || !is_usable(t->vicon[i])) continue;
     m.points.push_back({points[next].mean, points[next].difference, t->subject, t->trial});
     ++next;
   }
@@ -88,7 +87,7 @@ AgreementGroup agree_on_group(std::string layout, std::string pose, const Agreem
 
 // Empty for NaN / ±inf: an empty cell reads as missing in a spreadsheet; "0" or "nan" would not.
 std::string agreement_number(double v) {
-  return stats::is_usable(v) ? format_fixed(v, 6) : std::string();
+  return is_usable(v) ? format_fixed(v, 6) : std::string();
 }
 
 std::string agreement_notes(const MeasureAgreement& m) {

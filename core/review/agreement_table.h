@@ -47,12 +47,12 @@ struct MeasureAgreement {
   // Several trials of one subject are not independent: the repeated-measures form (B&A 2007) is
   // used as soon as one subject has more than one complete pair, else the one-pair-per-subject
   // form; `bland_altman.method` names the one used.
-  stats::BlandAltmanResult bland_altman;
-  stats::PairedDescriptives differences;  // mean ± SD of LMC − Vicon, RMSE (A = LMC, B = Vicon)
-  stats::PearsonResult pearson;
+  BlandAltmanResult bland_altman;
+  PairedDescriptives differences;  // mean ± SD of LMC − Vicon, RMSE (A = LMC, B = Vicon)
+  PearsonResult pearson;
   // ICC(2,1) of the n_trials × 2 table (LMC, Vicon): trials are the targets, the two systems the
   // raters, absolute agreement — a constant offset between systems lowers it, as it should.
-  stats::IccEstimate icc;
+  IccEstimate icc;
   std::string icc_reason;  // why icc or its interval is NaN; empty when both are valid
   std::vector<AgreementPoint> points;
 };

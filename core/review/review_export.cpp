@@ -11,7 +11,7 @@ namespace fs = std::filesystem;
 namespace lmc {
 namespace {
 
-void add_written(std::vector<fs::path>& out, const figures::WrittenFigure& w) {
+void add_written(std::vector<fs::path>& out, const WrittenFigure& w) {
   out.push_back(w.svg);
   out.push_back(w.csv);
   out.push_back(w.json);
@@ -38,14 +38,14 @@ std::vector<fs::path> write_review_exports(const fs::path& dir, const ReviewExpo
     for (const auto& m : group.measures) {
       if (stop.stop_requested()) return written;
       const std::string stem = figure_stem("bland-altman-" + group.layout + "-" + group.pose + "-" + m.measure.name);
-      add_written(written, figures::write_figure_files(dir, stem, bland_altman_figure(group, m), in.inputs,
-                                                       "bland-altman (" + m.bland_altman.method + ")", params));
+      add_written(written, write_figure_files(dir, stem, bland_altman_figure(group, m), in.inputs,
+                                              "bland-altman (" + m.bland_altman.method + ")", params));
     }
   }
   if (stop.stop_requested()) return written;
   const VisibilityMap map = visibility_map(in.trials);
-  add_written(written, figures::write_figure_files(dir, "visibility-map", visibility_map_figure(map), in.inputs,
-                                                   "visibility rate per controller x motion x layout", params));
+  add_written(written, write_figure_files(dir, "visibility-map", visibility_map_figure(map), in.inputs,
+                                          "visibility rate per controller x motion x layout", params));
   write_text(written, dir / "visibility-map-table.csv", visibility_map_csv(map));
   if (stop.stop_requested()) return written;
   std::vector<ReportInput> report_inputs;
@@ -66,8 +66,8 @@ std::vector<fs::path> write_trial_export(const fs::path& dir, const TrialSeries&
   fs::create_directories(dir);
   std::vector<fs::path> written;
   const std::string stem = figure_stem("trial-" + series.trial);
-  add_written(written, figures::write_figure_files(dir, stem, trial_figure(series, each_controller), inputs,
-                                                   "time series (" + method + " fusion)", parameters, 900, 1600));
+  add_written(written, write_figure_files(dir, stem, trial_figure(series, each_controller), inputs,
+                                          "time series (" + method + " fusion)", parameters, 900, 1600));
   if (stop.stop_requested()) return written;
   write_text(written, dir / (stem + ".series.csv"), trial_series_csv(series));
   return written;

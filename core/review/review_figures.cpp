@@ -15,11 +15,11 @@ namespace {
 // Fused LMC and Vicon keep the same colours in every panel; controllers follow in palette order.
 constexpr std::size_t kFusedSlot = 0, kViconSlot = 7, kFirstDeviceSlot = 1;
 
-figures::Series time_series(const std::string& name, const std::vector<double>& t, const std::vector<double>& y,
-                            std::size_t slot) {
-  figures::Series s;
+Series time_series(const std::string& name, const std::vector<double>& t, const std::vector<double>& y,
+                   std::size_t slot) {
+  Series s;
   s.name = name;
-  s.colour = figures::series_colour(slot);
+  s.colour = series_colour(slot);
   s.x = t;
   s.y = y;
   s.shade_gaps = true;
@@ -33,12 +33,12 @@ std::string value_text(double v, const std::string& unit) {
 
 }  // namespace
 
-figures::FigureGrid trial_figure(const TrialSeries& s, bool each_controller) {
-  figures::FigureGrid grid;
+FigureGrid trial_figure(const TrialSeries& s, bool each_controller) {
+  FigureGrid grid;
   grid.title = s.trial + (s.has_vicon ? ": fused LMC against Vicon" : ": fused LMC (no Vicon file)");
   grid.x = {"time", "s", std::nullopt};
   const auto panel = [&](const std::string& label, const std::string& unit, auto pick) {
-    figures::Figure f;
+    Figure f;
     f.y = {label, unit, std::nullopt};
     f.series.push_back(time_series("fused LMC", s.time_s, pick(s.fused), kFusedSlot));
     if (s.has_vicon) f.series.push_back(time_series("Vicon", s.time_s, pick(s.vicon), kViconSlot));
@@ -62,8 +62,8 @@ figures::FigureGrid trial_figure(const TrialSeries& s, bool each_controller) {
   return grid;
 }
 
-figures::Figure bland_altman_figure(const AgreementGroup& group, const MeasureAgreement& m) {
-  figures::Figure f;
+Figure bland_altman_figure(const AgreementGroup& group, const MeasureAgreement& m) {
+  Figure f;
   const std::string where = group.layout == "all" ? std::string("all trials") : group.layout + " layout, " + group.pose;
   f.title = m.measure.part + " " + m.measure.quantity + ": LMC against Vicon (" + where + ")";
   f.x = {"mean of LMC and Vicon", m.measure.unit, std::nullopt};
@@ -72,9 +72,9 @@ figures::Figure bland_altman_figure(const AgreementGroup& group, const MeasureAg
   for (const auto& p : m.points) {
     auto [it, added] = by_subject.emplace(p.subject, f.series.size());
     if (added) {
-      figures::Series s;
+      Series s;
       s.name = p.subject;
-      s.style = figures::SeriesStyle::points;
+      s.style = SeriesStyle::points;
       f.series.push_back(std::move(s));
     }
     f.series[it->second].x.push_back(p.mean);
@@ -82,13 +82,13 @@ figures::Figure bland_altman_figure(const AgreementGroup& group, const MeasureAg
   }
   const auto& b = m.bland_altman;
   if (std::isfinite(b.bias)) {
-    f.references.push_back({b.bias, "bias " + value_text(b.bias, m.measure.unit), figures::Dash::dashed, {60, 60, 60}});
+    f.references.push_back({b.bias, "bias " + value_text(b.bias, m.measure.unit), Dash::dashed, {60, 60, 60}});
   }
   if (std::isfinite(b.loa_low)) {
     f.references.push_back(
-        {b.loa_low, "lower " + value_text(b.loa_low, m.measure.unit), figures::Dash::dotted, {120, 120, 120}});
+        {b.loa_low, "lower " + value_text(b.loa_low, m.measure.unit), Dash::dotted, {120, 120, 120}});
     f.references.push_back(
-        {b.loa_high, "upper " + value_text(b.loa_high, m.measure.unit), figures::Dash::dotted, {120, 120, 120}});
+        {b.loa_high, "upper " + value_text(b.loa_high, m.measure.unit), Dash::dotted, {120, 120, 120}});
   }
   f.notes.push_back(std::to_string(m.n_trials) + " trial(s) of " + std::to_string(m.n_subjects) + " subject(s); " +
                     (b.method.empty() ? std::string("Bland-Altman") : b.method));
@@ -96,10 +96,10 @@ figures::Figure bland_altman_figure(const AgreementGroup& group, const MeasureAg
   return f;
 }
 
-figures::Figure visibility_map_figure(const VisibilityMap& map) {
-  figures::Figure f;
+Figure visibility_map_figure(const VisibilityMap& map) {
+  Figure f;
   f.title = "Visibility rate per controller and motion (the study's map)";
-  f.y = {"visibility rate (-1 = never saw the hand)", "", figures::AxisRange{-1.05, 1.05}};
+  f.y = {"visibility rate (-1 = never saw the hand)", "", AxisRange{-1.05, 1.05}};
   std::vector<std::string> motions;
   std::set<std::string> seen;
   for (const auto& c : map.cells) {
@@ -111,15 +111,15 @@ figures::Figure visibility_map_figure(const VisibilityMap& map) {
     motion_index[motions[i]] = i + 1;
     names += (i > 0 ? ", " : "") + std::to_string(i + 1) + " " + motions[i];
   }
-  f.x = {"motion", "", figures::AxisRange{0.5, static_cast<double>(motions.size()) + 0.5}};
+  f.x = {"motion", "", AxisRange{0.5, static_cast<double>(motions.size()) + 0.5}};
   std::map<std::string, std::size_t> series_of;
   for (const auto& c : map.cells) {
     const std::string name = c.device + " " + c.layout;
     auto [it, added] = series_of.emplace(name, f.series.size());
     if (added) {
-      figures::Series s;
+      Series s;
       s.name = name;
-      s.style = figures::SeriesStyle::line_and_points;
+      s.style = SeriesStyle::line_and_points;
       f.series.push_back(std::move(s));
     }
     f.series[it->second].x.push_back(static_cast<double>(motion_index[c.motion]));

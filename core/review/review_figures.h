@@ -14,15 +14,15 @@ namespace lmc {
 
 // Six joint-angle panels and five finger-length panels, fused LMC against Vicon (and each
 // controller after realignment when `each_controller`).
-figures::FigureGrid trial_figure(const TrialSeries& series, bool each_controller = false);
+FigureGrid trial_figure(const TrialSeries& series, bool each_controller = false);
 
 // Points (one series per subject, so repeated trials of one subject share a colour), the bias and
 // both 95 % limits as dashed lines labelled with their values; the method is a note.
-figures::Figure bland_altman_figure(const AgreementGroup& group, const MeasureAgreement& measure);
+Figure bland_altman_figure(const AgreementGroup& group, const MeasureAgreement& measure);
 
 // The visibility-rate map as the paper reads it: per layout, the mean rate of each controller for
 // each motion (x: the motions in order, named in the notes), −1 … 1.
-figures::Figure visibility_map_figure(const VisibilityMap& map);
+Figure visibility_map_figure(const VisibilityMap& map);
 
 // "initial-horizontal-index_mcp-rom" style names: safe file stems (letters, digits, '-', '_').
 std::string figure_stem(const std::string& text);

@@ -49,7 +49,7 @@ const char* label_word(std::int8_t label) {
   return label > 0 ? "seen" : label == 0 ? "internal model" : "no hand";
 }
 
-TrialSeries trial_series(const TrialResult& r) {
+TrialSeries trial_series(const TrialAnalysis& r) {
   TrialSeries s;
   s.trial = r.tag.trial;
   const int n = r.fused.frame_count;

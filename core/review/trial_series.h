@@ -35,7 +35,7 @@ struct TrialSeries {
   int frames() const { return static_cast<int>(time_s.size()); }
 };
 
-TrialSeries trial_series(const TrialResult& result);
+TrialSeries trial_series(const TrialAnalysis& result);
 
 // Label words for a legend or tooltip: "seen", "internal model", "no hand".
 const char* label_word(std::int8_t label);

@@ -1,6 +1,6 @@
 #include "core/session/manifest_text.h"
 
-namespace lmc::session {
+namespace lmc {
 namespace {
 
 // A stand-in for the trials array that the serialiser writes as one string on the "trials" line.
@@ -58,4 +58,4 @@ std::string ManifestText::render(const SessionState& state, int changed_trial) {
   return text;
 }
 
-}  // namespace lmc::session
+}  // namespace lmc

@@ -12,7 +12,7 @@
 
 #include "core/session/session_state.h"
 
-namespace lmc::session {
+namespace lmc {
 
 class ManifestText {
  public:
@@ -25,4 +25,4 @@ class ManifestText {
   std::vector<bool> fresh_;
 };
 
-}  // namespace lmc::session
+}  // namespace lmc

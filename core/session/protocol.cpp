@@ -13,7 +13,7 @@
 
 namespace fs = std::filesystem;
 
-namespace lmc::session {
+namespace lmc {
 namespace {
 
 constexpr const char* kFormat = "lmc-protocol";
@@ -262,4 +262,4 @@ std::vector<PlannedTrial> plan_trials(const Protocol& p, std::optional<std::uint
   return plan;
 }
 
-}  // namespace lmc::session
+}  // namespace lmc

@@ -16,7 +16,7 @@
 
 #include "core/session/quality_thresholds.h"
 
-namespace lmc::session {
+namespace lmc {
 
 // A block of trials recorded with one controller layout.
 struct ProtocolLayout {
@@ -92,4 +92,4 @@ std::vector<std::string> shipped_protocol_names();
 // shuffle uses its own generator, so a seed gives the same order on every platform.
 std::vector<PlannedTrial> plan_trials(const Protocol& protocol, std::optional<std::uint64_t> counterbalance_seed = {});
 
-}  // namespace lmc::session
+}  // namespace lmc

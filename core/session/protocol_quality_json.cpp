@@ -1,6 +1,6 @@
 #include "core/session/protocol_quality_json.h"
 
-namespace lmc::session {
+namespace lmc {
 namespace {
 
 struct Field {
@@ -47,4 +47,4 @@ nlohmann::json quality_thresholds_to_json(const QualityThresholds& q) {
   return j;
 }
 
-}  // namespace lmc::session
+}  // namespace lmc

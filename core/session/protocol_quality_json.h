@@ -7,9 +7,9 @@
 #include "core/io/json_checked.h"
 #include "core/session/quality_thresholds.h"
 
-namespace lmc::session {
+namespace lmc {
 
 QualityThresholds quality_thresholds_from_json(const JsonReader& r, const QualityThresholds& defaults);
 nlohmann::json quality_thresholds_to_json(const QualityThresholds& q);
 
-}  // namespace lmc::session
+}  // namespace lmc

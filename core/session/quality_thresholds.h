@@ -6,7 +6,7 @@
 #include <optional>
 #include <string>
 
-namespace lmc::session {
+namespace lmc {
 
 // A dynamic trial's joint and the range of motion the subject is asked to reach.
 struct RomExpectation {
@@ -29,4 +29,4 @@ struct QualityThresholds {
   double fail_min_duration_fraction = 0.9;  // recorded span shorter than this share of the planned one
 };
 
-}  // namespace lmc::session
+}  // namespace lmc

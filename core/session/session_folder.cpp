@@ -21,7 +21,7 @@
 
 namespace fs = std::filesystem;
 
-namespace lmc::session {
+namespace lmc {
 namespace {
 
 constexpr const char* kLockFile = ".lock";
@@ -379,4 +379,4 @@ bool is_session_folder(const fs::path& dir) {
   return fs::is_regular_file(dir / kJournalFile, ec);
 }
 
-}  // namespace lmc::session
+}  // namespace lmc

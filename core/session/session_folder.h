@@ -17,7 +17,7 @@
 #include "core/session/session_journal.h"
 #include "core/session/session_state.h"
 
-namespace lmc::session {
+namespace lmc {
 
 // What `lmc session new` (or the Record tab's set-up) asks for.
 struct NewSessionSpec {
@@ -109,4 +109,4 @@ bool is_session_folder(const std::filesystem::path& dir);
 inline constexpr const char* kJournalFile = "journal.jsonl";
 inline constexpr const char* kManifestFile = "session.json";
 
-}  // namespace lmc::session
+}  // namespace lmc

@@ -13,7 +13,7 @@
 
 namespace fs = std::filesystem;
 
-namespace lmc::session {
+namespace lmc {
 
 JournalWriter::JournalWriter(const fs::path& path, bool create) : path_(path) {
   const int flags = O_WRONLY | O_APPEND | O_CLOEXEC | (create ? (O_CREAT | O_EXCL) : 0);
@@ -95,4 +95,4 @@ JournalContents parse_journal_text(std::string_view text, const std::string& sou
   return out;
 }
 
-}  // namespace lmc::session
+}  // namespace lmc

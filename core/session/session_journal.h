@@ -11,7 +11,7 @@
 
 #include <nlohmann/json.hpp>
 
-namespace lmc::session {
+namespace lmc {
 
 class JournalWriter {
  public:
@@ -47,4 +47,4 @@ JournalContents read_journal(const std::filesystem::path& path, std::uintmax_t m
 // The same from text already in memory; `source` names it in messages (the fuzzer feeds this).
 JournalContents parse_journal_text(std::string_view text, const std::string& source);
 
-}  // namespace lmc::session
+}  // namespace lmc

@@ -8,7 +8,7 @@
 #include "core/io/json_checked.h"
 #include "core/io/layout_json.h"
 
-namespace lmc::session {
+namespace lmc {
 
 const char* trial_status_name(TrialStatus s) {
   switch (s) {
@@ -342,4 +342,4 @@ int trial_changed_by(const nlohmann::json& event) {
   return kAllTrialsChanged;  // session_created, and anything this version does not know
 }
 
-}  // namespace lmc::session
+}  // namespace lmc

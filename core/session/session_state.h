@@ -13,7 +13,7 @@
 
 #include "core/session/protocol.h"
 
-namespace lmc::session {
+namespace lmc {
 
 // pending: never recorded (or redone); recording: an attempt started and has not stopped;
 // recorded: stopped with a pass or warn verdict, waiting for the operator; interrupted: the
@@ -121,4 +121,4 @@ inline constexpr int kNoTrialChanged = -1;
 inline constexpr int kAllTrialsChanged = -2;
 int trial_changed_by(const nlohmann::json& event);
 
-}  // namespace lmc::session
+}  // namespace lmc

@@ -6,7 +6,7 @@
 
 namespace fs = std::filesystem;
 
-namespace lmc::session {
+namespace lmc {
 
 std::vector<TrialSources> accepted_trial_jobs(const fs::path& dir, const std::optional<fs::path>& vicon_dir,
                                               std::vector<std::string>* notes) {
@@ -57,4 +57,4 @@ std::vector<TrialSources> trial_sources_for_input(const fs::path& input, const s
   return jobs;
 }
 
-}  // namespace lmc::session
+}  // namespace lmc

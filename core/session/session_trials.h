@@ -9,7 +9,7 @@
 
 #include "core/processing/batch.h"
 
-namespace lmc::session {
+namespace lmc {
 
 // `vicon_dir` (optional) is where to look for <trial>.trc / .c3d instead of the session folder.
 std::vector<TrialSources> accepted_trial_jobs(const std::filesystem::path& dir,
@@ -23,4 +23,4 @@ std::vector<TrialSources> trial_sources_for_input(const std::filesystem::path& i
                                                   const std::optional<std::filesystem::path>& vicon,
                                                   std::vector<std::string>* notes = nullptr);
 
-}  // namespace lmc::session
+}  // namespace lmc

@@ -14,7 +14,7 @@
 #include "core/processing/measures.h"
 #include "core/session/trial_quality_parts.h"
 
-namespace lmc::session {
+namespace lmc {
 
 namespace {
 
@@ -271,7 +271,7 @@ QualityReport assess_trial(const QualityInputs& in) {
   }
 
   // The trial's span on the device clocks (LeapGetNow is shared by every controller on a host).
-  const std::vector<detail::DeviceRows> rows = detail::rows_by_device(rec);
+  const std::vector<trial_quality_detail::DeviceRows> rows = trial_quality_detail::rows_by_device(rec);
   std::int64_t first_us = 0, last_us = 0;
   bool any = false;
   for (const auto& d : rows) {
@@ -288,9 +288,9 @@ QualityReport assess_trial(const QualityInputs& in) {
 
   // Timestamps from two clocks (a service restart mid-trial): spans measured across them are
   // meaningless, so that one reason replaces the gap and hand checks (the counts stay listed).
-  const std::vector<detail::ClockJump> jumps = detail::clock_jumps(rec, kClockResetUs);
+  const std::vector<trial_quality_detail::ClockJump> jumps = trial_quality_detail::clock_jumps(rec, kClockResetUs);
   const bool one_clock = jumps.empty();
-  for (const detail::ClockJump& jump : jumps) {
+  for (const trial_quality_detail::ClockJump& jump : jumps) {
     reasons.fail(layout_slot_name(layout, jump.device_id) + "'s clock jumped back " +
                  secs(static_cast<double>(jump.back_us) * 1e-6) + " (the tracking service restarted?)");
   }
@@ -298,10 +298,11 @@ QualityReport assess_trial(const QualityInputs& in) {
   // Every layout slot is expected to deliver; a device the layout lacks is a set-up fault.
   const int slots = std::max(layout.device_count(), rows.empty() ? 0 : rows.back().device_id);
   for (int id = 1; id <= slots; ++id) {
-    const auto it =
-        std::find_if(rows.begin(), rows.end(), [id](const detail::DeviceRows& d) { return d.device_id == id; });
-    DeviceQuality q = it != rows.end() ? detail::device_stream_quality(*it, first_us, last_us)
-                                       : detail::device_stream_quality(detail::DeviceRows{id, {}}, first_us, last_us);
+    const auto it = std::find_if(rows.begin(), rows.end(),
+                                 [id](const trial_quality_detail::DeviceRows& d) { return d.device_id == id; });
+    DeviceQuality q = it != rows.end() ? trial_quality_detail::device_stream_quality(*it, first_us, last_us)
+                                       : trial_quality_detail::device_stream_quality(
+                                             trial_quality_detail::DeviceRows{id, {}}, first_us, last_us);
     q.slot = layout_slot_name(layout, id);
     const SidecarDevice* sd = sidecar_device(sidecar, id, q.slot);
     if (sd != nullptr) {
@@ -325,18 +326,18 @@ QualityReport assess_trial(const QualityInputs& in) {
   }
 
   // Hand presence and finger visibility over every controller at once.
-  std::vector<detail::TracedDevice> traced;
+  std::vector<trial_quality_detail::TracedDevice> traced;
   traced.reserve(rows.size());
-  for (const auto& d : rows) traced.push_back(detail::trace_device(d));
+  for (const auto& d : rows) traced.push_back(trial_quality_detail::trace_device(d));
   const double step_us = std::max(kGridStepUs, static_cast<double>(last_us - first_us) / kMaxGridBins);
-  const detail::HeldGrid grid = detail::hold_on_grid(rows, first_us, last_us, step_us);
-  const detail::Coverage cov = detail::coverage(grid, traced);
+  const trial_quality_detail::HeldGrid grid = trial_quality_detail::hold_on_grid(rows, first_us, last_us, step_us);
+  const trial_quality_detail::Coverage cov = trial_quality_detail::coverage(grid, traced);
   report.hand_fraction = cov.hand_fraction;
   if (any && cov.hand_fraction < t.fail_min_hand_fraction) {
     reasons.fail("no controller saw the hand in " + percent_text(1.0 - cov.hand_fraction) + " of the trial");
   }
   report.finger_seen_fraction.assign(cov.finger_seen.begin(), cov.finger_seen.end());
-  report.timeline = detail::timeline(grid, traced, kTimelineSlices);
+  report.timeline = trial_quality_detail::timeline(grid, traced, kTimelineSlices);
   for (int k = 0; k < kNumDigits; ++k) {
     const double unseen = 1.0 - cov.finger_seen[static_cast<size_t>(k)];
     if (std::isfinite(unseen) && unseen > t.warn_max_finger_unseen) {
@@ -349,11 +350,11 @@ QualityReport assess_trial(const QualityInputs& in) {
   if (!in.rom.empty()) {
     const RomExpectation& want = in.rom.front();
     RomQuality rom{want.joint, want.expected_deg, kNaN};
-    const int angle = detail::angle_index(want.joint);
+    const int angle = trial_quality_detail::angle_index(want.joint);
     if (angle < 0) {
       reasons.warn("range of motion not checked: unknown joint '" + want.joint + "'");
     } else {
-      rom.reached_deg = detail::reached_rom_deg(grid, traced, layout, angle);
+      rom.reached_deg = trial_quality_detail::reached_rom_deg(grid, traced, layout, angle);
       const std::string name = joint_words(angle_name(angle));
       if (!std::isfinite(rom.reached_deg)) {
         reasons.warn(name + " range of motion unknown: the hand was never tracked");
@@ -370,4 +371,4 @@ QualityReport assess_trial(const QualityInputs& in) {
   return finish(std::move(report), std::move(reasons));
 }
 
-}  // namespace lmc::session
+}  // namespace lmc

@@ -18,7 +18,7 @@
 #include "core/layout/layout.h"
 #include "core/session/quality_thresholds.h"
 
-namespace lmc::session {
+namespace lmc {
 
 struct DeviceQuality {
   int device_id = 0;
@@ -106,4 +106,4 @@ nlohmann::json quality_to_json(const QualityReport& report);
 // Reads what quality_to_json wrote (the journal and the manifest keep it); `source` for errors.
 QualityReport quality_from_json(const nlohmann::json& j, const std::string& source);
 
-}  // namespace lmc::session
+}  // namespace lmc

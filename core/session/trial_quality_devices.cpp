@@ -7,7 +7,7 @@
 #include "core/session/trial_quality_parts.h"
 #include "core/stats/stream_rates.h"
 
-namespace lmc::session::detail {
+namespace lmc::trial_quality_detail {
 
 std::vector<DeviceRows> rows_by_device(const LmcRecording& recording) {
   std::map<int, std::vector<const HandFrame*>> by_id;
@@ -63,7 +63,7 @@ DeviceQuality device_stream_quality(const DeviceRows& device, std::int64_t trial
   for (size_t i = 1; i < stamps_us.size(); ++i)
     longest_gap_us = std::max(longest_gap_us, stamps_us[i] - stamps_us[i - 1]);
   q.longest_gap_s = seconds(longest_gap_us);
-  if (const stats::StreamRates rates = stats::stream_rates(stamps_us); rates.intervals > 0) {
+  if (const StreamRates rates = stream_rates(stamps_us); rates.intervals > 0) {
     q.median_rate_hz = rates.median_hz;
     q.rate_p5_hz = rates.p5_hz;
     q.rate_p95_hz = rates.p95_hz;
@@ -93,4 +93,4 @@ DeviceQuality device_stream_quality(const DeviceRows& device, std::int64_t trial
   return q;
 }
 
-}  // namespace lmc::session::detail
+}  // namespace lmc::trial_quality_detail

@@ -12,7 +12,7 @@
 #include "core/processing/visibility_labels.h"
 #include "core/session/trial_quality_parts.h"
 
-namespace lmc::session::detail {
+namespace lmc::trial_quality_detail {
 
 namespace {
 
@@ -179,4 +179,4 @@ double reached_rom_deg(const HeldGrid& grid, const std::vector<TracedDevice>& de
   return percentile(angles, 95) - percentile(angles, 5);
 }
 
-}  // namespace lmc::session::detail
+}  // namespace lmc::trial_quality_detail

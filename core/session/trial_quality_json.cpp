@@ -7,7 +7,7 @@
 #include "core/io/json_checked.h"
 #include "core/session/trial_quality.h"
 
-namespace lmc::session {
+namespace lmc {
 
 namespace {
 
@@ -172,4 +172,4 @@ QualityReport quality_from_json(const json& j, const std::string& source) {
   return report;
 }
 
-}  // namespace lmc::session
+}  // namespace lmc

@@ -15,7 +15,7 @@
 #include "core/session/trial_quality.h"
 #include "core/stats/percentile.h"
 
-namespace lmc::session::detail {
+namespace lmc::trial_quality_detail {
 
 // One controller's rows of the recording, sorted by device timestamp (the file interleaves
 // controllers and USB delivery can swap neighbours).
@@ -42,7 +42,6 @@ std::vector<ClockJump> clock_jumps(const LmcRecording& recording, std::int64_t l
 DeviceQuality device_stream_quality(const DeviceRows& device, std::int64_t trial_first_us, std::int64_t trial_last_us);
 
 // Linear-interpolation percentile (numpy's default) of unsorted values; NaN when empty.
-using stats::percentile;
 
 // Sample-and-hold grid: at each grid instant, for each controller, the index of its latest row
 // at or before that instant, or −1 when it has none or that row is stale (older than the hold
@@ -94,4 +93,4 @@ int angle_index(const std::string& joint);
 // never known. `devices` is in the order of `grid`.
 double reached_rom_deg(const HeldGrid& grid, const std::vector<TracedDevice>& devices, const Layout& layout, int angle);
 
-}  // namespace lmc::session::detail
+}  // namespace lmc::trial_quality_detail

@@ -7,7 +7,7 @@
 
 #include "core/session/trial_quality_parts.h"
 
-namespace lmc::session::detail {
+namespace lmc::trial_quality_detail {
 
 QualityTimeline timeline(const HeldGrid& grid, const std::vector<TracedDevice>& devices, int slices) {
   QualityTimeline out;
@@ -74,4 +74,4 @@ QualityTimeline timeline(const HeldGrid& grid, const std::vector<TracedDevice>& 
   return out;
 }
 
-}  // namespace lmc::session::detail
+}  // namespace lmc::trial_quality_detail

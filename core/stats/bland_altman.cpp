@@ -8,7 +8,7 @@
 #include "core/stats/paired_values.h"
 #include "core/stats/quantiles.h"
 
-namespace lmc::stats {
+namespace lmc {
 
 BlandAltmanResult bland_altman(std::span<const double> a, std::span<const double> b) {
   const PairedValues p = complete_pairs(a, b);
@@ -65,4 +65,4 @@ void to_json(nlohmann::json& j, const BlandAltmanResult& r) {
                      {"reason", r.reason}};
 }
 
-}  // namespace lmc::stats
+}  // namespace lmc

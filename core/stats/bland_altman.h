@@ -19,7 +19,7 @@
 
 #include "core/stats/interval.h"
 
-namespace lmc::stats {
+namespace lmc {
 
 struct BlandAltmanResult {
   std::string method;         // the form and the interval method used (also exported)
@@ -57,4 +57,4 @@ std::vector<BlandAltmanPoint> bland_altman_points(std::span<const double> a, std
 
 void to_json(nlohmann::json& j, const BlandAltmanResult& r);
 
-}  // namespace lmc::stats
+}  // namespace lmc

@@ -8,7 +8,7 @@
 #include "core/stats/paired_values.h"
 #include "core/stats/quantiles.h"
 
-namespace lmc::stats {
+namespace lmc {
 namespace {
 
 // A scaled mean square coef·MS with df degrees of freedom and its exact 95 % χ² interval.
@@ -133,4 +133,4 @@ BlandAltmanResult bland_altman_repeated(std::span<const PairedObservation> obser
   return r;
 }
 
-}  // namespace lmc::stats
+}  // namespace lmc

@@ -35,7 +35,7 @@
 
 #include "core/stats/bland_altman.h"
 
-namespace lmc::stats {
+namespace lmc {
 
 struct PairedObservation {
   std::string subject;  // groups the trials of one subject
@@ -49,4 +49,4 @@ struct PairedObservation {
 // within-subject SD are still given, with the reason saying what is missing.
 BlandAltmanResult bland_altman_repeated(std::span<const PairedObservation> observations);
 
-}  // namespace lmc::stats
+}  // namespace lmc

@@ -6,7 +6,7 @@
 
 #include "core/stats/paired_values.h"
 
-namespace lmc::stats {
+namespace lmc {
 namespace {
 
 std::string too_few(std::size_t n, const char* what) {
@@ -96,4 +96,4 @@ void to_json(nlohmann::json& j, const PairedDescriptives& d) {
                      {"reason", d.reason}};
 }
 
-}  // namespace lmc::stats
+}  // namespace lmc

@@ -9,7 +9,7 @@
 
 #include "core/stats/interval.h"
 
-namespace lmc::stats {
+namespace lmc {
 
 struct Descriptives {
   std::size_t n_used = 0;     // finite values used
@@ -46,4 +46,4 @@ void to_json(nlohmann::json& j, const PairedDescriptives& d);
 double mean_of(std::span<const double> values);
 double sample_sd_of(std::span<const double> values);
 
-}  // namespace lmc::stats
+}  // namespace lmc

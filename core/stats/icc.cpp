@@ -7,7 +7,7 @@
 #include "core/stats/paired_values.h"
 #include "core/stats/quantiles.h"
 
-namespace lmc::stats {
+namespace lmc {
 namespace {
 
 std::string average_of(std::size_t k) {
@@ -147,4 +147,4 @@ void to_json(nlohmann::json& j, const IccResult& r) {
                      {"reason", r.reason}};
 }
 
-}  // namespace lmc::stats
+}  // namespace lmc

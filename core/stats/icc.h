@@ -28,7 +28,7 @@
 
 #include "core/stats/interval.h"
 
-namespace lmc::stats {
+namespace lmc {
 
 struct IccEstimate {
   std::string form;  // "ICC(2,1)", "ICC(3,4)", …
@@ -60,4 +60,4 @@ IccResult icc(const Eigen::MatrixXd& ratings);
 void to_json(nlohmann::json& j, const IccEstimate& e);
 void to_json(nlohmann::json& j, const IccResult& r);
 
-}  // namespace lmc::stats
+}  // namespace lmc

@@ -2,10 +2,10 @@
 
 #include <nlohmann/json.hpp>
 
-namespace lmc::stats {
+namespace lmc {
 
 void to_json(nlohmann::json& j, const Interval& ci) {
   j = nlohmann::json{{"low", ci.low}, {"high", ci.high}};
 }
 
-}  // namespace lmc::stats
+}  // namespace lmc

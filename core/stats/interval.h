@@ -6,7 +6,7 @@
 
 #include "core/common/nan.h"
 
-namespace lmc::stats {
+namespace lmc {
 
 struct Interval {
   double low = kNaN;
@@ -16,4 +16,4 @@ struct Interval {
 // {"low": …, "high": …}; NaN is written as JSON null (nlohmann's rule), never as 0.
 void to_json(nlohmann::json& j, const Interval& ci);
 
-}  // namespace lmc::stats
+}  // namespace lmc

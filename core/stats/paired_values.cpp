@@ -4,7 +4,7 @@
 
 #include "core/common/error.h"
 
-namespace lmc::stats {
+namespace lmc {
 
 PairedValues complete_pairs(std::span<const double> a, std::span<const double> b) {
   if (a.size() != b.size())
@@ -24,4 +24,4 @@ PairedValues complete_pairs(std::span<const double> a, std::span<const double> b
   return out;
 }
 
-}  // namespace lmc::stats
+}  // namespace lmc

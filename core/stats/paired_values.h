@@ -6,7 +6,7 @@
 #include <span>
 #include <vector>
 
-namespace lmc::stats {
+namespace lmc {
 
 // True for a value that can enter a statistic (finite); NaN marks missing data throughout core/.
 inline bool is_usable(double v) {
@@ -22,4 +22,4 @@ struct PairedValues {
 // Throws lmc::Error when the two series differ in length (a programming error upstream, not data).
 PairedValues complete_pairs(std::span<const double> a, std::span<const double> b);
 
-}  // namespace lmc::stats
+}  // namespace lmc

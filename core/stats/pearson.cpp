@@ -9,7 +9,7 @@
 #include "core/stats/paired_values.h"
 #include "core/stats/quantiles.h"
 
-namespace lmc::stats {
+namespace lmc {
 
 PearsonResult pearson(std::span<const double> a, std::span<const double> b, double level) {
   if (!(level > 0.0 && level < 1.0)) throw Error("confidence level must be in (0, 1), got " + std::to_string(level));
@@ -56,4 +56,4 @@ void to_json(nlohmann::json& j, const PearsonResult& r) {
                      {"method", "Pearson r; CI by Fisher z transform"}};
 }
 
-}  // namespace lmc::stats
+}  // namespace lmc

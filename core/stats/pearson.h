@@ -10,7 +10,7 @@
 
 #include "core/stats/interval.h"
 
-namespace lmc::stats {
+namespace lmc {
 
 struct PearsonResult {
   std::size_t n_used = 0;
@@ -27,4 +27,4 @@ PearsonResult pearson(std::span<const double> a, std::span<const double> b, doub
 
 void to_json(nlohmann::json& j, const PearsonResult& r);
 
-}  // namespace lmc::stats
+}  // namespace lmc

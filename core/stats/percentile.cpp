@@ -4,7 +4,7 @@
 #include <cmath>
 #include <limits>
 
-namespace lmc::stats {
+namespace lmc {
 
 double percentile(std::vector<double> values, double p) {
   if (values.empty()) return std::numeric_limits<double>::quiet_NaN();
@@ -16,4 +16,4 @@ double percentile(std::vector<double> values, double p) {
   return values[lo] + (values[hi] - values[lo]) * frac;
 }
 
-}  // namespace lmc::stats
+}  // namespace lmc

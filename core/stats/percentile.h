@@ -3,9 +3,9 @@
 // for the trial verdict's rate percentiles and the live fusion's latency percentiles.
 #include <vector>
 
-namespace lmc::stats {
+namespace lmc {
 
 // p in 0..100.
 double percentile(std::vector<double> values, double p);
 
-}  // namespace lmc::stats
+}  // namespace lmc

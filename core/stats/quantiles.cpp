@@ -8,7 +8,7 @@
 
 #include "core/stats/interval.h"
 
-namespace lmc::stats {
+namespace lmc {
 namespace {
 
 // Checked here so Boost's domain errors (which throw) are never reached.
@@ -48,4 +48,4 @@ double f_upper_tail(double f, double df1, double df2) {
   return boost::math::cdf(boost::math::complement(boost::math::fisher_f_distribution<double>(df1, df2), f));
 }
 
-}  // namespace lmc::stats
+}  // namespace lmc

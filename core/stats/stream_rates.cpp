@@ -5,7 +5,7 @@
 
 #include "core/stats/percentile.h"
 
-namespace lmc::stats {
+namespace lmc {
 
 StreamRates stream_rates(std::span<const std::int64_t> timestamps_us) {
   StreamRates r;
@@ -23,4 +23,4 @@ StreamRates stream_rates(std::span<const std::int64_t> timestamps_us) {
   return r;
 }
 
-}  // namespace lmc::stats
+}  // namespace lmc

@@ -5,7 +5,7 @@
 #include <limits>
 #include <span>
 
-namespace lmc::stats {
+namespace lmc {
 
 struct StreamRates {
   int intervals = 0;  // positive differences the rates come from
@@ -19,4 +19,4 @@ struct StreamRates {
 // fewer than two distinct timestamps.
 StreamRates stream_rates(std::span<const std::int64_t> timestamps_us);
 
-}  // namespace lmc::stats
+}  // namespace lmc

@@ -126,8 +126,8 @@ LiveFusionStats LiveFusion::stats() const {
   s.window_frames = window.size();
   if (!window.empty()) {
     s.latency_max_ms = *std::max_element(window.begin(), window.end());
-    s.latency_p50_ms = stats::percentile(window, 50);
-    s.latency_p95_ms = stats::percentile(std::move(window), 95);
+    s.latency_p50_ms = percentile(window, 50);
+    s.latency_p95_ms = percentile(std::move(window), 95);
   }
   return s;
 }

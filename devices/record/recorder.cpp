@@ -31,7 +31,7 @@ const char* recorder_state_name(RecorderState s) {
   return "?";
 }
 
-SessionPaths session_paths(const std::filesystem::path& dir, const std::string& trial) {
+TrialFiles checked_trial_files(const std::filesystem::path& dir, const std::string& trial) {
   require_valid_trial_name(trial);  // a name from outside becomes a file name only after this
   return trial_files(dir, trial);
 }
@@ -52,7 +52,7 @@ Recorder::~Recorder() {
 
 void Recorder::start() {
   if (started_.exchange(true)) throw Error("recorder already started");
-  paths_ = session_paths(config_.output_dir, config_.trial);
+  paths_ = checked_trial_files(config_.output_dir, config_.trial);
   std::error_code ec;
   std::filesystem::create_directories(config_.output_dir, ec);
   if (ec) throw Error(ErrorLocation(config_.output_dir.string()), "cannot create output folder: " + ec.message());

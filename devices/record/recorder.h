@@ -55,9 +55,9 @@ struct RecorderConfig {
       nlohmann::json::object();  // more of the sidecar's trial_window (countdown_s, planned_s)
 };
 
-// The trial's three files; the naming rule lives in one place (core/session/trial_files.h).
-using SessionPaths = TrialFiles;
-SessionPaths session_paths(const std::filesystem::path& dir, const std::string& trial);
+// The trial's three files (core/session/trial_files.h, where the naming rule lives), once `trial`
+// has passed the trial-name rule: a name from outside becomes a file name only through here.
+TrialFiles checked_trial_files(const std::filesystem::path& dir, const std::string& trial);
 
 struct GapRecord {
   std::int64_t from_timestamp_us = 0;  // last frame before the gap (device clock)
@@ -116,7 +116,7 @@ class Recorder final : public FrameConsumer {
 
   RecorderStatus status() const;
   bool failed() const { return failed_.load(); }
-  const SessionPaths& paths() const { return paths_; }
+  const TrialFiles& paths() const { return paths_; }
 
   // Records a Vicon trigger packet in the sidecar (any thread). The JSON form takes the keys of
   // the sidecar's vicon_packets[] and throws lmc::Error for a mistyped one.
@@ -179,7 +179,7 @@ class Recorder final : public FrameConsumer {
 
   static constexpr std::int64_t kClosed = std::numeric_limits<std::int64_t>::max();
   RecorderConfig config_;
-  SessionPaths paths_;
+  TrialFiles paths_;
   std::atomic<std::int64_t> window_from_ns_{kClosed};
   std::atomic<std::int64_t> window_until_ns_{kClosed};
   std::atomic<std::int64_t> before_window_{0}, after_window_{0};

@@ -200,7 +200,7 @@ struct TrialEngine::TrialInProgress {
   // The first of the trial's files that already exists (none with allow_overwrite).
   std::optional<std::filesystem::path> existing_file(const std::string& name) const {
     if (cfg.allow_overwrite) return std::nullopt;
-    const SessionPaths paths = session_paths(cfg.output_dir, name);
+    const TrialFiles paths = checked_trial_files(cfg.output_dir, name);
     for (const auto& p : {paths.recording, paths.sidecar, paths.truth_trc})
       if (std::filesystem::exists(p)) return p;
     return std::nullopt;

@@ -99,11 +99,13 @@ struct TrialEngineConfig {
   std::string stopped_by = "operator";  // sidecar "stopped_by" when the stop token ends the trial
 };
 
+// What one recording attempt gave: how it ended, where its files are, what the recorder saw. What
+// processing makes of those files later is a TrialAnalysis (core/processing/trial_pipeline.h).
 struct TrialResult {
   TrialOutcome outcome = TrialOutcome::kFailed;
   std::string reason;  // empty when completed
   std::string trial;
-  SessionPaths paths;  // empty when no trial name was known
+  TrialFiles paths;  // empty when no trial name was known
   RecorderStatus recorder;
   double truth_seconds = 0;           // span of the simulator's ground truth file (0: none written)
   std::vector<std::string> messages;  // every message and notice, in order

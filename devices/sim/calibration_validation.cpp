@@ -10,8 +10,6 @@
 namespace lmc::devices {
 namespace {
 
-using calibration::RigidTransform;
-
 // The simulated trial as a recording (rows in time order) and its truth on the 100 Hz grid.
 struct RecordedSim {
   LmcRecording recording;
@@ -39,24 +37,24 @@ RecordedSim record(const Layout& layout, const SimConfig& config, double seconds
   return out;
 }
 
-calibration::CalibrationInput input_of(const RecordedSim& sim, bool with_vicon) {
-  calibration::InputOptions options;
+CalibrationInput input_of(const RecordedSim& sim, bool with_vicon) {
+  InputOptions options;
   options.resample.grid_start_us = sim.clock_at_truth_zero_us;
-  return calibration::prepare_calibration_input(sim.recording, with_vicon ? &sim.truth : nullptr, options);
+  return prepare_calibration_input(sim.recording, with_vicon ? &sim.truth : nullptr, options);
 }
 
 // Over the controllers `scored` (all when null).
 void worst_error(const std::vector<RigidTransform>& got, const std::vector<RigidTransform>& want, double& mm,
-                 double& deg, const calibration::CalibrationResult* scored = nullptr) {
+                 double& deg, const CalibrationResult* scored = nullptr) {
   mm = deg = 0;
   for (size_t d = 0; d < got.size(); ++d) {
     if (scored != nullptr && !scored->devices[d].fitted) continue;
     mm = std::max(mm, (got[d].t - want[d].t).norm());
-    deg = std::max(deg, calibration::rotation_angle_deg(got[d].r.transpose() * want[d].r));
+    deg = std::max(deg, rotation_angle_deg(got[d].r.transpose() * want[d].r));
   }
 }
 
-std::vector<RigidTransform> fitted(const calibration::CalibrationResult& r) {
+std::vector<RigidTransform> fitted(const CalibrationResult& r) {
   std::vector<RigidTransform> out;
   for (const auto& d : r.devices) out.push_back(d.fitted_transform);
   return out;
@@ -84,27 +82,27 @@ CalibrationValidationCase run_calibration_case(const Layout& layout, const SimCo
   c.seed = config.seed;
   const RecordedSim sim = record(layout, config, options.seconds);
   std::vector<RigidTransform> nominal;
-  for (const auto& d : layout.devices) nominal.push_back(calibration::device_transform(d));
+  for (const auto& d : layout.devices) nominal.push_back(device_transform(d));
   worst_error(nominal, sim.true_transforms, c.injected_mm, c.injected_deg);
 
   const auto vicon_input = input_of(sim, true);
   auto t0 = std::chrono::steady_clock::now();
-  const auto with = calibration::calibrate(vicon_input, layout);
+  const auto with = calibrate(vicon_input, layout);
   c.vicon_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   worst_error(fitted(with), sim.true_transforms, c.vicon_mm, c.vicon_deg, &with);
 
   // The same grid and labels, Vicon ignored.
-  calibration::CalibrationOptions no_vicon;
+  CalibrationOptions no_vicon;
   no_vicon.use_vicon = false;
   t0 = std::chrono::steady_clock::now();
-  const auto without = calibration::calibrate(vicon_input, layout, no_vicon);
+  const auto without = calibrate(vicon_input, layout, no_vicon);
   c.consensus_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   // Without Vicon only the controllers' relative placement is known: compare with the truth
   // under the same anchoring (consensus_fit.h).
   // Anchored over the controllers the fit anchored (a controller without samples takes no part).
   std::vector<bool> fitted_set;
   for (const auto& d : without.devices) fitted_set.push_back(d.fitted);
-  const auto anchored_fitted = calibration::anchor_to_nominal(sim.true_transforms, nominal, fitted_set);
+  const auto anchored_fitted = anchor_to_nominal(sim.true_transforms, nominal, fitted_set);
   worst_error(fitted(without), anchored_fitted, c.consensus_mm, c.consensus_deg, &without);
   for (const auto& d : with.devices) c.vicon_unfitted += d.fitted ? 0 : 1;
   for (const auto& d : without.devices) c.consensus_unfitted += d.fitted ? 0 : 1;
@@ -127,7 +125,7 @@ std::vector<std::string> swapped_serial_warnings(const Layout& layout, int slot_
   std::swap(swapped.devices[static_cast<size_t>(slot_a)].pose, swapped.devices[static_cast<size_t>(slot_b)].pose);
   std::swap(swapped.devices[static_cast<size_t>(slot_a)].offset_mm,
             swapped.devices[static_cast<size_t>(slot_b)].offset_mm);
-  return calibration::calibrate(input_of(sim, with_vicon), swapped).warnings;
+  return calibrate(input_of(sim, with_vicon), swapped).warnings;
 }
 
 std::string validation_table(const std::vector<CalibrationValidationCase>& cases,

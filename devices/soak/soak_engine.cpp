@@ -143,12 +143,12 @@ SoakTrial check_trial(const TrialResult& result, const std::vector<std::int64_t>
       t.reasons.push_back(std::string("the recording cannot be read: ") + e.what());
       return t;
     }
-    session::QualityInputs in;
+    QualityInputs in;
     in.recording = rec.get();
     in.sidecar = &side;
     in.layout = layout;
     in.planned_s = planned_s;
-    const session::QualityReport q = session::assess_trial(in);
+    const QualityReport q = assess_trial(in);
     t.verdict = q.verdict;
     t.reasons = q.reasons;
     if (static_cast<std::int64_t>(rec->rows.size()) != side.frames_written)

@@ -56,7 +56,7 @@ std::vector<Vec3> track_series(const HandTrack& t, int point, int frames) {
 void expect_processed_trial(const std::vector<std::string>& labels,
                             const std::vector<std::vector<Eigen::Vector3d>>& positions, const TrialSources& job,
                             const std::string& what) {
-  const TrialResult r = process_sources_in_full(job, BatchOptions{});
+  const TrialAnalysis r = process_sources_in_full(job, BatchOptions{});
   const int frames = r.world.frame_count;
   ASSERT_EQ(static_cast<int>(positions.size()), frames) << what;
   auto column = [&](const std::string& label) {

@@ -24,14 +24,14 @@ const lmc::test::synthetic_calibration::Trial& trial(bool vicon) {
 void BM_CalibrationWithVicon(benchmark::State& state) {
   const auto layout = lmc::test::synthetic_calibration::square_layout();
   const auto& t = trial(true);
-  for (auto _ : state) benchmark::DoNotOptimize(lmc::calibration::calibrate(t.input, layout));
+  for (auto _ : state) benchmark::DoNotOptimize(lmc::calibrate(t.input, layout));
 }
 BENCHMARK(BM_CalibrationWithVicon)->Unit(benchmark::kMillisecond);
 
 void BM_CalibrationWithoutVicon(benchmark::State& state) {
   const auto layout = lmc::test::synthetic_calibration::square_layout();
   const auto& t = trial(false);
-  for (auto _ : state) benchmark::DoNotOptimize(lmc::calibration::calibrate(t.input, layout));
+  for (auto _ : state) benchmark::DoNotOptimize(lmc::calibrate(t.input, layout));
 }
 BENCHMARK(BM_CalibrationWithoutVicon)->Unit(benchmark::kMillisecond);
 

@@ -45,13 +45,13 @@ void BM_TrialQualityTenSecondsFourControllers(benchmark::State& state) {
   RecorderSidecar sidecar;
   sidecar.trial = "Naiv_Wrist101";
   sidecar.status = "completed";
-  session::QualityInputs in;
+  QualityInputs in;
   in.recording = &rec;
   in.sidecar = &sidecar;
   in.layout = layout;
   in.planned_s = 10.0;
-  in.rom = {session::RomExpectation{"wrist", 60.0}};
-  for (auto _ : state) benchmark::DoNotOptimize(session::assess_trial(in));
+  in.rom = {RomExpectation{"wrist", 60.0}};
+  for (auto _ : state) benchmark::DoNotOptimize(assess_trial(in));
   state.SetItemsProcessed(state.iterations());
 }
 BENCHMARK(BM_TrialQualityTenSecondsFourControllers)->Unit(benchmark::kMillisecond);

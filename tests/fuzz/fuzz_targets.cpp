@@ -93,14 +93,14 @@ void vicon_packet(std::string_view bytes) {
 }
 
 void protocol(std::string_view bytes) {
-  const session::Protocol p = session::protocol_from_json(parse_json_text(std::string(bytes), kSource), kSource);
-  (void)session::plan_trials(p, 7);
+  const Protocol p = protocol_from_json(parse_json_text(std::string(bytes), kSource), kSource);
+  (void)plan_trials(p, 7);
 }
 
 // A session's journal as reopening reads it: lines, then the state its events make.
 void session_journal(std::string_view bytes) {
-  const session::JournalContents journal = session::parse_journal_text(bytes, kSource);
-  (void)session::state_from_journal(journal, kSource);
+  const JournalContents journal = parse_journal_text(bytes, kSource);
+  (void)state_from_journal(journal, kSource);
 }
 
 // A sensor catalogue as the workbench reads assets/sensors/sensors.json (or a lab's own).

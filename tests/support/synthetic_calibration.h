@@ -27,13 +27,13 @@ inline Eigen::Matrix3d turn(double deg, int k) {
 }
 
 struct Trial {
-  calibration::CalibrationInput input;
-  std::vector<calibration::RigidTransform> truth;  // true device → world per controller
+  CalibrationInput input;
+  std::vector<RigidTransform> truth;  // true device → world per controller
 };
 
 // `truth[d]` places device d; `frames` at 100 Hz; noise σ in mm; seed for the noise.
-inline Trial make_trial(const std::vector<calibration::RigidTransform>& truth, int frames, double noise_mm,
-                        unsigned seed, bool with_vicon = true) {
+inline Trial make_trial(const std::vector<RigidTransform>& truth, int frames, double noise_mm, unsigned seed,
+                        bool with_vicon = true) {
   Trial t;
   t.truth = truth;
   const HandModel model;
@@ -58,7 +58,7 @@ inline Trial make_trial(const std::vector<calibration::RigidTransform>& truth, i
     DeviceTrack dt;
     dt.device_id = static_cast<int>(d) + 1;
     dt.track = HandTrack(frames);
-    const calibration::RigidTransform inv = truth[d].inverse();
+    const RigidTransform inv = truth[d].inverse();
     for (int f = 0; f < frames; ++f) {
       for (int p = 0; p < kNumHandPoints; ++p) {
         const bool vector = p == kPalmNormal || p == kPalmDirection;
@@ -75,11 +75,11 @@ inline Trial make_trial(const std::vector<calibration::RigidTransform>& truth, i
 
 // Truth = the layout's transforms with errors: device d moved by `moved[d]` and turned by
 // `turned_deg[d]` about its own origin.
-inline std::vector<calibration::RigidTransform> perturbed(const Layout& layout, const std::vector<Vec3>& moved,
-                                                          const std::vector<double>& turned_deg) {
-  std::vector<calibration::RigidTransform> out;
+inline std::vector<RigidTransform> perturbed(const Layout& layout, const std::vector<Vec3>& moved,
+                                             const std::vector<double>& turned_deg) {
+  std::vector<RigidTransform> out;
   for (size_t d = 0; d < layout.devices.size(); ++d) {
-    const calibration::RigidTransform n = calibration::device_transform(layout.devices[d]);
+    const RigidTransform n = device_transform(layout.devices[d]);
     out.push_back({turn(turned_deg[d], static_cast<int>(d)) * n.r, n.t + moved[d]});
   }
   return out;

@@ -38,7 +38,7 @@ Rgba viridis(double t) {
   // The project's one viridis (core/figures/colour_scale.h), so the 3D heatmap and the exported
   // report heatmaps show a value in the same colour.
   if (!std::isfinite(t)) t = 0;
-  const figures::Rgb c = figures::sequential_colour(t);
+  const Rgb c = sequential_colour(t);
   return {static_cast<float>(c.r) / 255.0f, static_cast<float>(c.g) / 255.0f, static_cast<float>(c.b) / 255.0f, 1.0f};
 }
 

@@ -24,7 +24,7 @@ std::string calibration_mm_text(double v) {
 
 }  // namespace
 
-void draw_calibration_result(const std::string& trial, const calibration::CalibrationResult& r,
+void draw_calibration_result(const std::string& trial, const CalibrationResult& r,
                              const std::vector<std::string>& file_warnings, const std::vector<std::string>& notes) {
   ImGui::TextWrapped("Trial %s, %s", trial.c_str(),
                      r.with_vicon ? "against Vicon" : "controllers against each other (no Vicon)");

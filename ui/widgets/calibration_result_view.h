@@ -11,7 +11,7 @@
 namespace lmc::ui {
 
 // `file_warnings`: what reading the trial found wrong; `notes`: what was done to line things up.
-void draw_calibration_result(const std::string& trial, const calibration::CalibrationResult& result,
+void draw_calibration_result(const std::string& trial, const CalibrationResult& result,
                              const std::vector<std::string>& file_warnings, const std::vector<std::string>& notes);
 
 }  // namespace lmc::ui

@@ -18,29 +18,29 @@ constexpr float kLeftGutterPx = 52.0F;
 constexpr float kRightGutterPx = 120.0F;  // reference-line labels
 
 // A figure's colours are chosen for white paper; on the dark panel a dark colour turns light.
-ImU32 on_dark(const figures::Rgb& c, int alpha = 255) {
+ImU32 on_dark(const Rgb& c, int alpha = 255) {
   const double luminance = (0.2126 * c.r + 0.7152 * c.g + 0.0722 * c.b) / 255.0;
   if (luminance < 0.35) return IM_COL32(255 - c.r / 3, 255 - c.g / 3, 255 - c.b / 3, alpha);
   return IM_COL32(c.r, c.g, c.b, alpha);
 }
 
-std::string axis_title(const figures::Axis& a) {
+std::string axis_title(const Axis& a) {
   return a.unit.empty() ? a.label : a.label + " (" + a.unit + ")";
 }
 
-void dashed_line(ImDrawList* dl, ImVec2 a, ImVec2 b, ImU32 colour, figures::Dash dash) {
-  if (dash == figures::Dash::solid) {
+void dashed_line(ImDrawList* dl, ImVec2 a, ImVec2 b, ImU32 colour, Dash dash) {
+  if (dash == Dash::solid) {
     dl->AddLine(a, b, colour, 1.2F);
     return;
   }
-  const float on = dash == figures::Dash::dashed ? 7.0F : 2.0F, off = dash == figures::Dash::dashed ? 5.0F : 4.0F;
+  const float on = dash == Dash::dashed ? 7.0F : 2.0F, off = dash == Dash::dashed ? 5.0F : 4.0F;
   for (float x = a.x; x < b.x; x += on + off)
     dl->AddLine(ImVec2(x, a.y), ImVec2(std::min(x + on, b.x), b.y), colour, 1.2F);
 }
 
 }  // namespace
 
-void draw_figure_view(const char* id, const figures::Figure& f, float height_px) {
+void draw_figure_view(const char* id, const Figure& f, float height_px) {
   ImGui::PushID(id);
   if (!f.title.empty()) ImGui::TextUnformatted(f.title.c_str());
   // Legend above the plot: it never covers the data.
@@ -49,12 +49,12 @@ void draw_figure_view(const char* id, const figures::Figure& f, float height_px)
     const ImVec2 at = ImGui::GetCursorScreenPos();
     const float box = ImGui::GetTextLineHeight() * 0.6F;
     ImGui::GetWindowDrawList()->AddRectFilled(ImVec2(at.x, at.y + 4), ImVec2(at.x + box, at.y + 4 + box),
-                                              on_dark(figures::colour_of(f.series[s], s)));
+                                              on_dark(colour_of(f.series[s], s)));
     ImGui::Dummy(ImVec2(box + 2, box));
     ImGui::SameLine();
     ImGui::TextDisabled("%s", f.series[s].name.c_str());
   }
-  const figures::AxisRange xr = figures::x_range(f), yr = figures::y_range(f);
+  const AxisRange xr = x_range(f), yr = y_range(f);
   const ImVec2 top = ImGui::GetCursorScreenPos();
   const float width = std::max(200.0F, ImGui::GetContentRegionAvail().x);
   const float tick_h = ImGui::GetTextLineHeight() + 4;
@@ -69,21 +69,21 @@ void draw_figure_view(const char* id, const figures::Figure& f, float height_px)
   const auto to_x = [&](double x) { return p0.x + static_cast<float>((x - xr.lo) / (xr.hi - xr.lo)) * (p1.x - p0.x); };
   const auto to_y = [&](double y) { return p1.y - static_cast<float>((y - yr.lo) / (yr.hi - yr.lo)) * (p1.y - p0.y); };
 
-  const auto yticks = figures::nice_ticks(yr.lo, yr.hi, std::max(2, static_cast<int>(height_px / 60)));
+  const auto yticks = nice_ticks(yr.lo, yr.hi, std::max(2, static_cast<int>(height_px / 60)));
   for (const double t : yticks) {
     const float y = to_y(t);
     if (y < p0.y - 1 || y > p1.y + 1) continue;
     dl->AddLine(ImVec2(p0.x, y), ImVec2(p1.x, y), kPlotGridLine);
-    const std::string text = figures::tick_label(t, yticks);
+    const std::string text = tick_label(t, yticks);
     dl->AddText(ImVec2(p0.x - ImGui::CalcTextSize(text.c_str()).x - 4, y - ImGui::GetTextLineHeight() * 0.5F),
                 kPlotTickText, text.c_str());
   }
-  const auto xticks = figures::nice_ticks(xr.lo, xr.hi, std::max(2, static_cast<int>((p1.x - p0.x) / 90)));
+  const auto xticks = nice_ticks(xr.lo, xr.hi, std::max(2, static_cast<int>((p1.x - p0.x) / 90)));
   for (const double t : xticks) {
     const float x = to_x(t);
     if (x < p0.x - 1 || x > p1.x + 1) continue;
     dl->AddLine(ImVec2(x, p0.y), ImVec2(x, p1.y), kPlotGridLine);
-    dl->AddText(ImVec2(x - 8, p1.y + 2), kPlotTickText, figures::tick_label(t, xticks).c_str());
+    dl->AddText(ImVec2(x - 8, p1.y + 2), kPlotTickText, tick_label(t, xticks).c_str());
   }
   // Reference lines, their labels in the right gutter.
   for (const auto& r : f.references) {
@@ -97,10 +97,10 @@ void draw_figure_view(const char* id, const figures::Figure& f, float height_px)
   std::string nearest;
   const ImVec2 mouse = ImGui::GetIO().MousePos;
   for (size_t s = 0; s < f.series.size(); ++s) {
-    const figures::Series& ser = f.series[s];
-    const ImU32 colour = on_dark(figures::colour_of(ser, s));
-    const bool lines = ser.style != figures::SeriesStyle::points;
-    const bool points = ser.style != figures::SeriesStyle::line;
+    const Series& ser = f.series[s];
+    const ImU32 colour = on_dark(colour_of(ser, s));
+    const bool lines = ser.style != SeriesStyle::points;
+    const bool points = ser.style != SeriesStyle::line;
     const size_t n = std::min(ser.x.size(), ser.y.size());
     bool have_prev = false;
     ImVec2 prev;
@@ -118,8 +118,8 @@ void draw_figure_view(const char* id, const figures::Figure& f, float height_px)
         const double d2 = (p.x - mouse.x) * (p.x - mouse.x) + (p.y - mouse.y) * (p.y - mouse.y);
         if (d2 < best_d2) {
           best_d2 = d2;
-          nearest = ser.name + ": " + axis_title(f.x) + " " + figures::tick_label(ser.x[i], {0.0, 0.01}) + ", " +
-                    axis_title(f.y) + " " + figures::tick_label(ser.y[i], {0.0, 0.01});
+          nearest = ser.name + ": " + axis_title(f.x) + " " + tick_label(ser.x[i], {0.0, 0.01}) + ", " +
+                    axis_title(f.y) + " " + tick_label(ser.y[i], {0.0, 0.01});
         }
       }
     }
@@ -135,19 +135,19 @@ void draw_figure_view(const char* id, const figures::Figure& f, float height_px)
   ImGui::PopID();
 }
 
-void draw_figure_filling(const char* id, const figures::Figure& figure) {
+void draw_figure_filling(const char* id, const Figure& figure) {
   // Under the plot: tick labels, axis titles and the notes.
   const float below = 4.5F * ImGui::GetTextLineHeightWithSpacing();
   draw_figure_view(id, figure, std::max(60.0F, ImGui::GetContentRegionAvail().y - below));
 }
 
-void draw_figure_grid_filling(const figures::FigureGrid& grid) {
+void draw_figure_grid_filling(const FigureGrid& grid) {
   ImGui::TextUnformatted(grid.title.c_str());
   const float each =
       (ImGui::GetContentRegionAvail().y - 6) / static_cast<float>(std::max<size_t>(1, grid.panels.size()));
   const float overhead = 2.2F * ImGui::GetTextLineHeightWithSpacing();
   for (size_t k = 0; k < grid.panels.size(); ++k) {
-    figures::Figure panel = grid.panels[k];
+    Figure panel = grid.panels[k];
     panel.x = grid.x;  // the grid's shared axis, labelled under every panel of the picture
     draw_figure_view(("panel" + std::to_string(k)).c_str(), panel, std::max(30.0F, each - overhead));
   }

@@ -9,11 +9,11 @@
 
 namespace lmc::ui {
 
-void draw_figure_view(const char* id, const figures::Figure& figure, float height_px);
+void draw_figure_view(const char* id, const Figure& figure, float height_px);
 
 // The figure (or every panel of the grid, stacked) filling the rest of the window: what an
 // off-screen PNG of it draws (ui/widgets/png_saver.h).
-void draw_figure_filling(const char* id, const figures::Figure& figure);
-void draw_figure_grid_filling(const figures::FigureGrid& grid);
+void draw_figure_filling(const char* id, const Figure& figure);
+void draw_figure_grid_filling(const FigureGrid& grid);
 
 }  // namespace lmc::ui

@@ -119,7 +119,7 @@ PairedTimes measure_terms_cost(const std::vector<lmc::DeviceView>& views, int la
     ratio.push_back(robust.back() / study.back());
     total += first + second;
   }
-  const auto median = [](const std::vector<double>& v) { return lmc::stats::percentile(v, 50.0); };
+  const auto median = [](const std::vector<double>& v) { return lmc::percentile(v, 50.0); };
   return {median(study), median(robust), median(ratio), static_cast<int>(ratio.size())};
 }
 
@@ -154,7 +154,7 @@ MixedRigTimes measure_mixed_rig(const std::vector<lmc::DeviceView>& views, int l
     for (size_t rig = 0; rig < 4; ++rig) times[rig].push_back(t[rig]);
     ratio.push_back((t[2] + t[3]) / (t[0] + t[1]));
   }
-  const auto median = [](const std::vector<double>& v) { return lmc::stats::percentile(v, 50.0); };
+  const auto median = [](const std::vector<double>& v) { return lmc::percentile(v, 50.0); };
   return {median(times[0]), median(times[1]), median(times[2]),
           median(times[3]), median(ratio),    static_cast<int>(ratio.size())};
 }
@@ -185,6 +185,177 @@ std::vector<lmc::DeviceView> views_of(const std::vector<lmc::Layout>& layouts) {
   return views;
 }
 
+// Throughput of one case (layouts of one rig) on one thread and on all; printed unless --json.
+CaseResult run_case(const BenchOptions& opt, const std::string& name, const std::vector<lmc::Layout>& layouts,
+                    const std::vector<lmc::PreparedFrame>& frames, int threads) {
+  const std::vector<lmc::DeviceView> views = views_of(layouts);
+  const int devices = layouts.front().device_count();
+  // Each slot through its own sensor model (the same in every layout of a case).
+  const std::vector<lmc::VisibilityLimits> limits = lmc::device_limits(layouts.front());
+  CaseResult r{name, static_cast<int>(layouts.size()), devices, 0, 0};
+  r.single = measure(views, r.layouts, devices, frames, limits, 1, opt.min_seconds);
+  r.all = measure(views, r.layouts, devices, frames, limits, threads, opt.min_seconds);
+  if (!opt.json) {
+    std::printf("%-16s %2d layout(s) × %d devices: %12.0f evaluations/s on 1 thread, %12.0f on %d threads\n",
+                name.c_str(), r.layouts, devices, r.single, r.all, threads);
+    std::fflush(stdout);
+  }
+  return r;
+}
+
+// The paper's two layouts, 30 random ones, and the same random ones as rigs of other models: a
+// mixed rig should cost what its devices cost in rigs of their own model.
+std::vector<CaseResult> run_cases(const BenchOptions& opt, const std::vector<lmc::PreparedFrame>& frames, int threads) {
+  std::vector<CaseResult> results;
+  results.push_back(run_case(opt, "paper-initial", {lmc::load_layout_or_preset("paper-initial")}, frames, threads));
+  results.push_back(run_case(opt, "paper-optimized", {lmc::load_layout_or_preset("paper-optimized")}, frames, threads));
+  results.push_back(run_case(opt, "random", random_layouts(lmc::SearchSpace{}, 30, 12345), frames, threads));
+  for (const char* models : {"lmc", "lmc2", "lmc2,lmc2,lmc,lmc"}) {
+    std::vector<lmc::Layout> layouts = random_layouts(lmc::SearchSpace{}, 30, 12345);
+    for (auto& l : layouts) lmc::set_models_from_list(l, models, lmc::sensor_catalogue());
+    const std::string name = std::string(models).find(',') == std::string::npos ? "random-" + std::string(models)
+                                                                                : std::string("random-mixed");
+    results.push_back(run_case(opt, name, layouts, frames, threads));
+  }
+  return results;
+}
+
+nlohmann::json mixed_rig_figure(const BenchOptions& opt, const std::vector<lmc::PreparedFrame>& frames) {
+  std::array<std::vector<lmc::VisibilityLimits>, 4> rigs;
+  const char* models[] = {"lmc", "lmc2", "lmc2,lmc2,lmc,lmc", "lmc,lmc,lmc2,lmc2"};
+  for (size_t k = 0; k < 4; ++k) {
+    lmc::Layout rig = lmc::default_start_layout(4);
+    lmc::set_models_from_list(rig, models[k], lmc::sensor_catalogue());
+    rigs[k] = lmc::device_limits(rig);
+  }
+  const std::span<const lmc::PreparedFrame> some(frames.data(), std::min<size_t>(frames.size(), 2000));
+  const MixedRigTimes m = measure_mixed_rig(views_of(random_layouts(lmc::SearchSpace{}, 30, 12345)), 30, 4, some, rigs,
+                                            2.0 * opt.min_seconds);
+  if (!opt.json) {
+    std::printf(
+        "mixed rigs: %.3f × the uniform rigs of their models (30 random layouts × %zu frames, 1 thread: LMC × 4 "
+        "%.1f ms, LMC2 × 4 %.1f ms, LMC2 LMC2 LMC LMC %.1f ms, LMC LMC LMC2 LMC2 %.1f ms; medians of %d "
+        "adjacent rounds)\n",
+        m.ratio, some.size(), 1e3 * m.lmc_s, 1e3 * m.lmc2_s, 1e3 * m.mixed_s, 1e3 * m.swapped_s, m.rounds);
+    std::fflush(stdout);
+  }
+  return {{"frames", some.size()},    {"rounds", m.rounds},         {"lmc_seconds", m.lmc_s},
+          {"lmc2_seconds", m.lmc2_s}, {"mixed_seconds", m.mixed_s}, {"mixed_swapped_seconds", m.swapped_s},
+          {"ratio", m.ratio}};
+}
+
+nlohmann::json robust_terms_figure(const BenchOptions& opt, const std::vector<lmc::PreparedFrame>& frames) {
+  const lmc::SearchSpace table = lmc::table_search_space();
+  const std::vector<lmc::Layout> layouts = random_layouts(table, 30, 54321);
+  const auto limits = lmc::make_limits(lmc::VisibilityParams::from_sensor(lmc::common_sensor(layouts.front())));
+  // The first 2,000 frames: pairs of ~0.1 s fit between the machine's slow phases.
+  const std::span<const lmc::PreparedFrame> some(frames.data(), std::min<size_t>(frames.size(), 2000));
+  const PairedTimes p = measure_terms_cost(views_of(layouts), 30, 4, some, limits, 2.0 * opt.min_seconds);
+  if (!opt.json) {
+    std::printf(
+        "robust terms per evaluation: %+.1f %% (30 random layouts on the table × %zu frames, 1 thread: "
+        "study %.1f ms, robust %.1f ms; medians of %d adjacent pairs)\n",
+        100.0 * (p.ratio - 1.0), some.size(), 1e3 * p.study_s, 1e3 * p.robust_s, p.pairs);
+    std::fflush(stdout);
+  }
+  return {{"layouts", 30},        {"frames", some.size()},      {"bounds", lmc::format_search_bounds(table)},
+          {"pairs", p.pairs},     {"study_seconds", p.study_s}, {"robust_seconds", p.robust_s},
+          {"cost", p.ratio - 1.0}};
+}
+
+// The timed searches --searches names, into j["searches"] (and j["search"], j["robust_terms_cost"]).
+void run_timed_searches(const BenchOptions& opt, const std::vector<lmc::PreparedFrame>& frames, int threads,
+                        nlohmann::json& j) {
+  j["searches"] = nlohmann::json::array();
+  if (!opt.json) {
+    std::printf("searches of %d particles × %d iterations, 4 devices, %d frames, %d threads:\n", opt.particles,
+                opt.iterations, opt.frames, threads);
+  }
+  std::map<std::string, double> seconds;
+  for (const TimedSearch& t : kTimedSearches) {
+    if (std::find(opt.searches.begin(), opt.searches.end(), t.name) == opt.searches.end()) continue;
+    lmc::PsoSettings s;
+    s.particles = opt.particles;
+    s.iterations = opt.iterations;
+    s.metric = t.metric;
+    const lmc::SearchSpace space = t.table ? lmc::table_search_space() : lmc::SearchSpace{};
+    const lmc::PsoResult pr = lmc::run_pso(lmc::default_start_layout(4), space, frames, s);
+    const double rate = static_cast<double>(pr.device_frame_evaluations) / pr.seconds;
+    const std::string metric = t.metric == lmc::PlacementMetricKind::kRobust ? "robust" : "study";
+    const std::string bounds = lmc::format_search_bounds(space);
+    seconds[t.name] = pr.seconds;
+    j["searches"].push_back({{"name", t.name},
+                             {"metric", metric},
+                             {"bounds", bounds},
+                             {"particles", s.particles},
+                             {"iterations", s.iterations},
+                             {"seconds", pr.seconds},
+                             {"evals_per_s", rate},
+                             {"best_cost", pr.best_cost},
+                             {"layouts_stopped_early", pr.layouts_stopped_early}});
+    if (!t.table) {
+      j["search"] = {{"particles", s.particles},
+                     {"iterations", s.iterations},
+                     {"seconds", pr.seconds},
+                     {"evals_per_s", rate},
+                     {"best_cost", pr.best_cost}};
+    }
+    if (!opt.json) {
+      std::printf("  %-12s (%s metric, %s): %.2f s (%.0f evaluations/s), best %s %.6g\n", t.name, metric.c_str(),
+                  bounds.c_str(), pr.seconds, rate, t.metric == lmc::PlacementMetricKind::kRobust ? "R" : "M",
+                  pr.best_cost);
+      std::fflush(stdout);
+    }
+  }
+  if (seconds.contains("study-table") && seconds.contains("robust-table")) {
+    const double cost = seconds["robust-table"] / seconds["study-table"] - 1.0;
+    j["robust_terms_cost"] = cost;
+    if (!opt.json) {
+      std::printf(
+          "  the robust terms cost %+.1f %% of a search on the same bounds (robust-table against "
+          "study-table, one run each: the machine's drift between runs is in it; the figure per "
+          "evaluation above is not)\n",
+          100.0 * cost);
+    }
+  }
+}
+
+void run_bench(const BenchOptions& opt) {
+  if (!opt.processing.empty()) {
+    lmc::cli::run_processing_bench(opt.processing, opt.runs, opt.json);
+    return;
+  }
+  const lmc::PoseSet poses = lmc::load_poses("mc", opt.frames, lmc::kDefaultMonteCarloSeed);
+  const auto frames = lmc::prepare_frames(poses.frames);
+  const int threads = tbb::info::default_concurrency();
+  // Which of the kernel's builds runs here (they give the same bits; the speed differs, and
+  // LMC_KERNEL=avx2 etc. picks another to compare).
+  const char* kernel = lmc::kernel_build_name(lmc::KernelBuild::kBest);
+  if (const std::string problem = lmc::kernel_setting_problem(); !problem.empty()) {
+    std::fprintf(stderr, "lmc bench: %s\n", problem.c_str());
+  }
+  if (!opt.json) std::printf("%d Monte Carlo frames (seed 1), visibility kernel: %s build\n", opt.frames, kernel);
+  const std::vector<CaseResult> results = run_cases(opt, frames, threads);
+  const nlohmann::json mixed = mixed_rig_figure(opt, frames);
+  const nlohmann::json terms = robust_terms_figure(opt, frames);
+  nlohmann::json j;
+  j["frames"] = opt.frames;
+  j["threads"] = threads;
+  j["kernel_build"] = kernel;
+  j["terms_per_evaluation"] = terms;
+  j["mixed_rig"] = mixed;
+  j["cases"] = nlohmann::json::array();
+  for (const auto& r : results) {
+    j["cases"].push_back({{"name", r.name},
+                          {"layouts", r.layouts},
+                          {"devices", r.devices},
+                          {"single_thread_evals_per_s", r.single},
+                          {"all_threads_evals_per_s", r.all}});
+  }
+  if (!opt.no_search) run_timed_searches(opt, frames, threads, j);
+  if (opt.json) std::cout << j.dump(2) << "\n";
+}
+
 void setup_bench(CLI::App& app) {
   auto opt = std::make_shared<BenchOptions>();
   app.add_option("--frames", opt->frames, "Monte Carlo frames")->check(CLI::Range(1, 10'000'000));
@@ -203,162 +374,7 @@ void setup_bench(CLI::App& app) {
                  "method, then both methods), outputs to a scratch folder");
   app.add_option("--runs", opt->runs, "Runs of each processing figure (the median is reported)")
       ->check(CLI::Range(1, 100));
-  app.callback([opt] {
-    if (!opt->processing.empty()) {
-      lmc::cli::run_processing_bench(opt->processing, opt->runs, opt->json);
-      return;
-    }
-    const lmc::PoseSet poses = lmc::load_poses("mc", opt->frames, lmc::kDefaultMonteCarloSeed);
-    const auto frames = lmc::prepare_frames(poses.frames);
-    const int threads = tbb::info::default_concurrency();
-    std::vector<CaseResult> results;
-    nlohmann::json terms;
-    auto run_case = [&](const std::string& name, const std::vector<lmc::Layout>& layouts) {
-      const std::vector<lmc::DeviceView> views = views_of(layouts);
-      const int devices = layouts.front().device_count();
-      // Each slot through its own sensor model (the same in every layout of a case).
-      const std::vector<lmc::VisibilityLimits> limits = lmc::device_limits(layouts.front());
-      CaseResult r{name, static_cast<int>(layouts.size()), devices, 0, 0};
-      r.single = measure(views, r.layouts, devices, frames, limits, 1, opt->min_seconds);
-      r.all = measure(views, r.layouts, devices, frames, limits, threads, opt->min_seconds);
-      results.push_back(r);
-      if (!opt->json) {
-        std::printf("%-16s %2d layout(s) × %d devices: %12.0f evaluations/s on 1 thread, %12.0f on %d threads\n",
-                    name.c_str(), r.layouts, devices, r.single, r.all, threads);
-        std::fflush(stdout);
-      }
-    };
-    // Which of the kernel's builds runs here (they give the same bits; the speed differs, and
-    // LMC_KERNEL=avx2 etc. picks another to compare).
-    const char* kernel = lmc::kernel_build_name(lmc::KernelBuild::kBest);
-    if (const std::string problem = lmc::kernel_setting_problem(); !problem.empty()) {
-      std::fprintf(stderr, "lmc bench: %s\n", problem.c_str());
-    }
-    if (!opt->json) std::printf("%d Monte Carlo frames (seed 1), visibility kernel: %s build\n", opt->frames, kernel);
-    run_case("paper-initial", {lmc::load_layout_or_preset("paper-initial")});
-    run_case("paper-optimized", {lmc::load_layout_or_preset("paper-optimized")});
-    run_case("random", random_layouts(lmc::SearchSpace{}, 30, 12345));
-    // The same layouts as rigs of other models: a mixed rig should cost what its devices cost in
-    // rigs of their own model.
-    for (const char* models : {"lmc", "lmc2", "lmc2,lmc2,lmc,lmc"}) {
-      std::vector<lmc::Layout> layouts = random_layouts(lmc::SearchSpace{}, 30, 12345);
-      for (auto& l : layouts) lmc::set_models_from_list(l, models, lmc::sensor_catalogue());
-      const std::string name = std::string(models).find(',') == std::string::npos ? "random-" + std::string(models)
-                                                                                  : std::string("random-mixed");
-      run_case(name, layouts);
-    }
-    nlohmann::json mixed;
-    {
-      std::array<std::vector<lmc::VisibilityLimits>, 4> rigs;
-      const char* models[] = {"lmc", "lmc2", "lmc2,lmc2,lmc,lmc", "lmc,lmc,lmc2,lmc2"};
-      for (size_t k = 0; k < 4; ++k) {
-        lmc::Layout rig = lmc::default_start_layout(4);
-        lmc::set_models_from_list(rig, models[k], lmc::sensor_catalogue());
-        rigs[k] = lmc::device_limits(rig);
-      }
-      const std::span<const lmc::PreparedFrame> some(frames.data(), std::min<size_t>(frames.size(), 2000));
-      const MixedRigTimes m = measure_mixed_rig(views_of(random_layouts(lmc::SearchSpace{}, 30, 12345)), 30, 4, some,
-                                                rigs, 2.0 * opt->min_seconds);
-      mixed = {{"frames", some.size()},    {"rounds", m.rounds},         {"lmc_seconds", m.lmc_s},
-               {"lmc2_seconds", m.lmc2_s}, {"mixed_seconds", m.mixed_s}, {"mixed_swapped_seconds", m.swapped_s},
-               {"ratio", m.ratio}};
-      if (!opt->json) {
-        std::printf(
-            "mixed rigs: %.3f × the uniform rigs of their models (30 random layouts × %zu frames, 1 thread: LMC × 4 "
-            "%.1f ms, LMC2 × 4 %.1f ms, LMC2 LMC2 LMC LMC %.1f ms, LMC LMC LMC2 LMC2 %.1f ms; medians of %d "
-            "adjacent rounds)\n",
-            m.ratio, some.size(), 1e3 * m.lmc_s, 1e3 * m.lmc2_s, 1e3 * m.mixed_s, 1e3 * m.swapped_s, m.rounds);
-        std::fflush(stdout);
-      }
-    }
-    {
-      const lmc::SearchSpace table = lmc::table_search_space();
-      const std::vector<lmc::Layout> layouts = random_layouts(table, 30, 54321);
-      const auto limits = lmc::make_limits(lmc::VisibilityParams::from_sensor(lmc::common_sensor(layouts.front())));
-      // The first 2,000 frames: pairs of ~0.1 s fit between the machine's slow phases.
-      const std::span<const lmc::PreparedFrame> some(frames.data(), std::min<size_t>(frames.size(), 2000));
-      const PairedTimes p = measure_terms_cost(views_of(layouts), 30, 4, some, limits, 2.0 * opt->min_seconds);
-      terms = {{"layouts", 30},        {"frames", some.size()},      {"bounds", lmc::format_search_bounds(table)},
-               {"pairs", p.pairs},     {"study_seconds", p.study_s}, {"robust_seconds", p.robust_s},
-               {"cost", p.ratio - 1.0}};
-      if (!opt->json) {
-        std::printf(
-            "robust terms per evaluation: %+.1f %% (30 random layouts on the table × %zu frames, 1 thread: "
-            "study %.1f ms, robust %.1f ms; medians of %d adjacent pairs)\n",
-            100.0 * (p.ratio - 1.0), some.size(), 1e3 * p.study_s, 1e3 * p.robust_s, p.pairs);
-        std::fflush(stdout);
-      }
-    }
-    nlohmann::json j;
-    j["frames"] = opt->frames;
-    j["threads"] = threads;
-    j["kernel_build"] = kernel;
-    j["terms_per_evaluation"] = terms;
-    j["mixed_rig"] = mixed;
-    j["cases"] = nlohmann::json::array();
-    for (const auto& r : results) {
-      j["cases"].push_back({{"name", r.name},
-                            {"layouts", r.layouts},
-                            {"devices", r.devices},
-                            {"single_thread_evals_per_s", r.single},
-                            {"all_threads_evals_per_s", r.all}});
-    }
-    if (!opt->no_search) {
-      j["searches"] = nlohmann::json::array();
-      if (!opt->json) {
-        std::printf("searches of %d particles × %d iterations, 4 devices, %d frames, %d threads:\n", opt->particles,
-                    opt->iterations, opt->frames, threads);
-      }
-      std::map<std::string, double> seconds;
-      for (const TimedSearch& t : kTimedSearches) {
-        if (std::find(opt->searches.begin(), opt->searches.end(), t.name) == opt->searches.end()) continue;
-        lmc::PsoSettings s;
-        s.particles = opt->particles;
-        s.iterations = opt->iterations;
-        s.metric = t.metric;
-        const lmc::SearchSpace space = t.table ? lmc::table_search_space() : lmc::SearchSpace{};
-        const lmc::PsoResult pr = lmc::run_pso(lmc::default_start_layout(4), space, frames, s);
-        const double rate = static_cast<double>(pr.device_frame_evaluations) / pr.seconds;
-        const std::string metric = t.metric == lmc::PlacementMetricKind::kRobust ? "robust" : "study";
-        const std::string bounds = lmc::format_search_bounds(space);
-        seconds[t.name] = pr.seconds;
-        j["searches"].push_back({{"name", t.name},
-                                 {"metric", metric},
-                                 {"bounds", bounds},
-                                 {"particles", s.particles},
-                                 {"iterations", s.iterations},
-                                 {"seconds", pr.seconds},
-                                 {"evals_per_s", rate},
-                                 {"best_cost", pr.best_cost},
-                                 {"layouts_stopped_early", pr.layouts_stopped_early}});
-        if (!t.table) {
-          j["search"] = {{"particles", s.particles},
-                         {"iterations", s.iterations},
-                         {"seconds", pr.seconds},
-                         {"evals_per_s", rate},
-                         {"best_cost", pr.best_cost}};
-        }
-        if (!opt->json) {
-          std::printf("  %-12s (%s metric, %s): %.2f s (%.0f evaluations/s), best %s %.6g\n", t.name, metric.c_str(),
-                      bounds.c_str(), pr.seconds, rate, t.metric == lmc::PlacementMetricKind::kRobust ? "R" : "M",
-                      pr.best_cost);
-          std::fflush(stdout);
-        }
-      }
-      if (seconds.contains("study-table") && seconds.contains("robust-table")) {
-        const double cost = seconds["robust-table"] / seconds["study-table"] - 1.0;
-        j["robust_terms_cost"] = cost;
-        if (!opt->json) {
-          std::printf(
-              "  the robust terms cost %+.1f %% of a search on the same bounds (robust-table against "
-              "study-table, one run each: the machine's drift between runs is in it; the figure per "
-              "evaluation above is not)\n",
-              100.0 * cost);
-        }
-      }
-    }
-    if (opt->json) std::cout << j.dump(2) << "\n";
-  });
+  app.callback([opt] { run_bench(*opt); });
 }
 
 const lmc::cli::CommandRegistration bench_command{

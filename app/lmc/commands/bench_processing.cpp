@@ -29,7 +29,7 @@ double cpu_seconds() {
 }
 
 double median(const std::vector<double>& v) {
-  return stats::percentile(v, 50.0);  // the rule bench.cpp's search figures use
+  return percentile(v, 50.0);  // the rule bench.cpp's search figures use
 }
 
 struct Timing {
@@ -70,7 +70,7 @@ nlohmann::json timing_json(const Timing& t) {
 void run_processing_bench(const std::string& input, int runs, bool json) {
   devices::keep_freed_memory_for_reuse();
   std::vector<std::string> notes;
-  const auto jobs = session::trial_sources_for_input(input, std::nullopt, &notes);
+  const auto jobs = trial_sources_for_input(input, std::nullopt, &notes);
   if (jobs.empty()) throw Error(ErrorLocation(input), "no trials to process");
   const auto scratch = std::filesystem::temp_directory_path() / ("lmc-bench-processing-" + std::to_string(::getpid()));
   struct RemoveScratch {

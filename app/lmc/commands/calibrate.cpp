@@ -71,18 +71,18 @@ void run_calibrate(const CalibrateArgs& a) {
     throw lmc::Error("give --layout: the layout the trial was recorded with (a preset name or a file)");
   if (a.out.empty()) throw lmc::Error("give -o FILE: where to write the calibrated layout");
   const lmc::Layout layout = lmc::load_layout_or_preset(a.layout);
-  lmc::calibration::TrialCalibrationRequest request;
+  lmc::TrialCalibrationRequest request;
   request.trial = a.trial;
   if (!a.vicon.empty()) request.vicon = fs::path(a.vicon);
   request.mapping = a.mapping;
   request.vicon_delay_ms = a.vicon_delay_ms;
   request.anchor_to_layout = a.anchor_to_layout;
   request.when_utc = lmc::utc_now_iso8601();
-  const lmc::calibration::TrialCalibration cal = lmc::calibration::calibrate_trial(request, layout);
+  const lmc::TrialCalibration cal = lmc::calibrate_trial(request, layout);
   for (const auto& w : cal.file_warnings) std::cout << "warning: " << w << "\n";
   for (const auto& n : cal.notes) std::cout << "note: " << n << "\n";
-  const lmc::calibration::CalibrationResult& result = cal.result;
-  std::cout << lmc::calibration::residual_table(result);
+  const lmc::CalibrationResult& result = cal.result;
+  std::cout << lmc::residual_table(result);
 
   const lmc::Layout& out = cal.calibrated;
   lmc::write_file_atomically(a.out, lmc::layout_to_json(out).dump(2) + "\n");

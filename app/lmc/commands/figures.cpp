@@ -75,7 +75,7 @@ void run_figures(const FiguresArgs& a) {
   std::vector<std::string> subjects;
   std::vector<std::string> notes;
   for (const auto& input : a.inputs) {
-    for (auto& j : lmc::session::trial_sources_for_input(input, std::nullopt, &notes)) {
+    for (auto& j : lmc::trial_sources_for_input(input, std::nullopt, &notes)) {
       jobs.push_back(std::move(j));
       folder_of.push_back(fs::path(input).lexically_normal());
       subjects.push_back(subject_of(folder_of.back()));

@@ -122,10 +122,10 @@ std::vector<DeviceSummary> summarise_devices(const lmc::LmcRecording& rec) {
       }
     }
     std::sort(stamps.begin(), stamps.end());
-    d.reported_rate_median_hz = lmc::stats::percentile(std::move(reported), 50);
+    d.reported_rate_median_hz = lmc::percentile(std::move(reported), 50);
     if (stamps.size() >= 2) d.duration_s = static_cast<double>(stamps.back() - stamps.front()) * 1e-6;
     // The rates as the trial verdict computes them, from this device's rows in time order.
-    const lmc::stats::StreamRates rates = lmc::stats::stream_rates(stamps);
+    const lmc::StreamRates rates = lmc::stream_rates(stamps);
     d.rate_median_hz = rates.median_hz;
     d.rate_p5_hz = rates.p5_hz;
     d.rate_p95_hz = rates.p95_hz;
@@ -481,22 +481,7 @@ json text_or_null(const std::string& s) {
   return s.empty() ? json(nullptr) : json(s);
 }
 
-void info_session(const std::string& file, const json& doc, bool as_json, std::ostream& out) {
-  const lmc::RecorderSidecar side = lmc::recorder_sidecar_from_json(doc, file);
-  const json layout_devices = value_or_null(side.layout, "devices");
-  const json layout_name = value_or_null(side.layout, "name");
-  const double duration_s = side.host_duration_s();
-  std::vector<std::string> warnings;
-  if (!side.complete())
-    warnings.push_back(
-        "status is still \"recording\": the program stopped before the trial was closed (crash?); "
-        "the recording holds the rows written until then");
-  const json rec_file = text_or_null(side.recording_file);
-  if (!side.recording_file.empty()) {
-    const auto beside = std::filesystem::path(file).parent_path() / side.recording_file;
-    if (!std::filesystem::exists(beside))
-      warnings.push_back("recording file " + beside.string() + " not found beside the sidecar");
-  }
+json sidecar_devices_json(const lmc::RecorderSidecar& side) {
   json devices = json::array();
   for (const auto& d : side.devices) {
     double gap_ms = 0;
@@ -517,6 +502,10 @@ void info_session(const std::string& file, const json& doc, bool as_json, std::o
                        {"first_timestamp_us", d.first_timestamp_us},
                        {"last_timestamp_us", d.last_timestamp_us}});
   }
+  return devices;
+}
+
+json sidecar_packets_json(const lmc::RecorderSidecar& side) {
   json packets = json::array();
   for (const auto& p : side.vicon_packets)
     packets.push_back({{"type", text_or_null(p.type)},
@@ -524,63 +513,77 @@ void info_session(const std::string& file, const json& doc, bool as_json, std::o
                        {"target", text_or_null(p.target)},
                        {"datagrams_sent", p.datagrams_sent},
                        {"error", text_or_null(p.error)}});
-  const json serial_map = lmc::serial_to_slot_json(side.serial_to_slot);
-  const json truth = side.ground_truth ? lmc::sidecar_ground_truth_to_json(*side.ground_truth) : json(nullptr);
+  return packets;
+}
 
-  if (as_json) {
-    json j;
-    j["file"] = file;
-    j["type"] = "session";
-    j["trial"] = text_or_null(side.trial);
-    j["status"] = text_or_null(side.status);
-    j["error"] = text_or_null(side.error);
-    j["backend"] = text_or_null(side.backend);
-    j["recording_file"] = rec_file;
-    j["layout_name"] = layout_name;
-    j["layout_device_count"] = layout_devices.is_array() ? json(layout_devices.size()) : json(nullptr);
-    j["host_start_utc"] = text_or_null(side.host_start_utc);
-    j["host_stop_utc"] = text_or_null(side.host_stop_utc);
-    j["duration_s"] = number_or_null(duration_s);
-    j["serial_to_slot"] = serial_map;
-    j["frames_written"] = side.frames_written;
-    j["frames_dropped"] = side.frames_dropped;
-    j["devices"] = devices;
-    j["vicon_packets"] = packets;
-    j["vicon_alignment"] = side.vicon_alignment;
-    j["vicon_trigger_received"] = side.vicon_trigger_received;
-    j["vicon_stop_received"] = side.vicon_stop_received;
-    j["vicon_listen"] = side.vicon_listen ? lmc::sidecar_vicon_listen_to_json(*side.vicon_listen) : json(nullptr);
-    j["stopped_by"] = text_or_null(side.stopped_by);
-    j["trial_window"] = side.trial_window;
-    j["ground_truth"] = truth;
-    j["warnings"] = warnings;
-    out << j.dump(2) << "\n";
-    return;
+// What `lmc info` says of a sidecar, in both forms: the sidecar read, and what it lists worked out.
+struct SidecarView {
+  lmc::RecorderSidecar side;
+  json layout_devices, layout_name, rec_file, devices, packets, serial_map, truth;
+  double duration_s = 0;
+  std::vector<std::string> warnings;
+};
+
+SidecarView sidecar_view(const std::string& file, const json& doc) {
+  SidecarView v;
+  v.side = lmc::recorder_sidecar_from_json(doc, file);
+  const lmc::RecorderSidecar& side = v.side;
+  v.layout_devices = value_or_null(side.layout, "devices");
+  v.layout_name = value_or_null(side.layout, "name");
+  v.duration_s = side.host_duration_s();
+  if (!side.complete())
+    v.warnings.push_back(
+        "status is still \"recording\": the program stopped before the trial was closed (crash?); "
+        "the recording holds the rows written until then");
+  v.rec_file = text_or_null(side.recording_file);
+  if (!side.recording_file.empty()) {
+    const auto beside = std::filesystem::path(file).parent_path() / side.recording_file;
+    if (!std::filesystem::exists(beside))
+      v.warnings.push_back("recording file " + beside.string() + " not found beside the sidecar");
   }
-  out << "file:       " << file << "\n";
-  out << "type:       session sidecar (lmc-session " << side.format_version << ")\n";
-  out << "trial:      " << text_of(text_or_null(side.trial)) << "\n";
-  out << "status:     " << text_of(text_or_null(side.status)) << "\n";
-  if (!side.error.empty()) out << "error:      " << side.error << "\n";
-  out << "backend:    " << text_of(text_or_null(side.backend)) << "\n";
-  out << "recording:  " << text_of(rec_file) << "\n";
-  out << "layout:     " << text_of(layout_name) << " ("
-      << (layout_devices.is_array() ? std::to_string(layout_devices.size()) : std::string("?")) << " devices)\n";
-  out << "started:    " << text_of(text_or_null(side.host_start_utc)) << "\n";
-  out << "stopped:    " << text_of(text_or_null(side.host_stop_utc));
-  if (std::isfinite(duration_s)) out << " (" << fixed(duration_s, 3) << " s)";
-  out << "\n";
-  out << "frames:     " << side.frames_written << " written, " << side.frames_dropped << " dropped\n";
-  out << "serials:    ";
-  if (serial_map.empty()) out << "-";
-  bool first_serial = true;
-  for (const auto& [serial, slot] : serial_map.items()) {
-    out << (first_serial ? "" : ", ") << serial << " -> " << text_of(slot);
-    first_serial = false;
-  }
-  out << "\n";
-  out << "vicon:      " << packets.size() << " trigger packet(s) sent";
-  for (const auto& p : packets) {
+  v.devices = sidecar_devices_json(side);
+  v.packets = sidecar_packets_json(side);
+  v.serial_map = lmc::serial_to_slot_json(side.serial_to_slot);
+  v.truth = side.ground_truth ? lmc::sidecar_ground_truth_to_json(*side.ground_truth) : json(nullptr);
+  return v;
+}
+
+void print_session_json(const std::string& file, const SidecarView& v, std::ostream& out) {
+  const lmc::RecorderSidecar& side = v.side;
+  json j;
+  j["file"] = file;
+  j["type"] = "session";
+  j["trial"] = text_or_null(side.trial);
+  j["status"] = text_or_null(side.status);
+  j["error"] = text_or_null(side.error);
+  j["backend"] = text_or_null(side.backend);
+  j["recording_file"] = v.rec_file;
+  j["layout_name"] = v.layout_name;
+  j["layout_device_count"] = v.layout_devices.is_array() ? json(v.layout_devices.size()) : json(nullptr);
+  j["host_start_utc"] = text_or_null(side.host_start_utc);
+  j["host_stop_utc"] = text_or_null(side.host_stop_utc);
+  j["duration_s"] = number_or_null(v.duration_s);
+  j["serial_to_slot"] = v.serial_map;
+  j["frames_written"] = side.frames_written;
+  j["frames_dropped"] = side.frames_dropped;
+  j["devices"] = v.devices;
+  j["vicon_packets"] = v.packets;
+  j["vicon_alignment"] = side.vicon_alignment;
+  j["vicon_trigger_received"] = side.vicon_trigger_received;
+  j["vicon_stop_received"] = side.vicon_stop_received;
+  j["vicon_listen"] = side.vicon_listen ? lmc::sidecar_vicon_listen_to_json(*side.vicon_listen) : json(nullptr);
+  j["stopped_by"] = text_or_null(side.stopped_by);
+  j["trial_window"] = side.trial_window;
+  j["ground_truth"] = v.truth;
+  j["warnings"] = v.warnings;
+  out << j.dump(2) << "\n";
+}
+
+// The Vicon lines: trigger packets sent, CaptureStart/Stop received, whom a listener obeyed.
+void print_session_vicon(const SidecarView& v, std::ostream& out) {
+  const lmc::RecorderSidecar& side = v.side;
+  out << "vicon:      " << v.packets.size() << " trigger packet(s) sent";
+  for (const auto& p : v.packets) {
     out << "\n  - " << text_of(p["type"]) << " PacketID " << text_of(p["packet_id"]) << " to " << text_of(p["target"])
         << " (" << text_of(p["datagrams_sent"]) << "x)";
     if (!p["error"].is_null()) out << " ERROR: " << text_of(p["error"]);
@@ -602,7 +605,11 @@ void info_session(const std::string& file, const json& doc, bool as_json, std::o
     out << "\n";
     if (!l->warning.empty()) out << "warning:    " << l->warning << "\n";
   }
-  if (!side.stopped_by.empty()) out << "stopped by: " << side.stopped_by << "\n";
+}
+
+// The trial window, the Vicon clock alignment and the simulator's ground truth, when the sidecar has them.
+void print_session_timing(const SidecarView& v, std::ostream& out) {
+  const lmc::RecorderSidecar& side = v.side;
   if (const json& w = side.trial_window; w.is_object())
     out << "trial:      from go at " << text_of(value_or_null(w, "go_host_utc")) << " for "
         << text_of(value_or_null(w, "planned_s")) << " s; the countdown (" << text_of(value_or_null(w, "countdown_s"))
@@ -619,27 +626,64 @@ void info_session(const std::string& file, const json& doc, bool as_json, std::o
             << text_of(value_or_null(d, "latest_timestamp_us")) << " us)";
     out << "\n";
   }
-  if (truth.is_object())
-    out << "truth:      " << text_of(value_or_null(truth, "file")) << ", " << text_of(value_or_null(truth, "frames"))
-        << " frames at " << text_of(value_or_null(truth, "rate_hz")) << " Hz, device clock at time 0 "
-        << text_of(value_or_null(truth, "device_clock_at_time_zero_us")) << " us\n";
-  if (!devices.empty()) {
-    out << "\n"
-        << std::left << std::setw(7) << "slot" << std::setw(22) << "serial" << std::right << std::setw(8) << "frames"
-        << std::setw(8) << "hand%" << std::setw(9) << "dropped" << std::setw(9) << "id_gaps" << std::setw(6) << "gaps"
-        << std::setw(10) << "gap_ms" << std::setw(13) << "disconnects"
-        << "\n";
-    for (const auto& d : devices) {
-      const double pct = d["hand_fraction"].is_number() ? 100.0 * d["hand_fraction"].get<double>() : std::nan("");
-      out << std::left << std::setw(7) << text_of(d["slot"]) << std::setw(22) << text_of(d["serial"]) << std::right
-          << std::setw(8) << text_of(d["frames_written"]) << std::setw(8) << fixed(pct, 1) << std::setw(9)
-          << text_of(d["frames_dropped_queue"]) << std::setw(9) << text_of(d["frame_id_gaps"]) << std::setw(6)
-          << text_of(d["gaps"]) << std::setw(10) << fixed(d["gap_ms"].get<double>(), 0) << std::setw(13)
-          << text_of(d["disconnects"]) << "\n";
-    }
-    out << "\n";
+  if (v.truth.is_object())
+    out << "truth:      " << text_of(value_or_null(v.truth, "file")) << ", "
+        << text_of(value_or_null(v.truth, "frames")) << " frames at " << text_of(value_or_null(v.truth, "rate_hz"))
+        << " Hz, device clock at time 0 " << text_of(value_or_null(v.truth, "device_clock_at_time_zero_us")) << " us\n";
+}
+
+void print_session_devices(const json& devices, std::ostream& out) {
+  if (devices.empty()) return;
+  out << "\n"
+      << std::left << std::setw(7) << "slot" << std::setw(22) << "serial" << std::right << std::setw(8) << "frames"
+      << std::setw(8) << "hand%" << std::setw(9) << "dropped" << std::setw(9) << "id_gaps" << std::setw(6) << "gaps"
+      << std::setw(10) << "gap_ms" << std::setw(13) << "disconnects"
+      << "\n";
+  for (const auto& d : devices) {
+    const double pct = d["hand_fraction"].is_number() ? 100.0 * d["hand_fraction"].get<double>() : std::nan("");
+    out << std::left << std::setw(7) << text_of(d["slot"]) << std::setw(22) << text_of(d["serial"]) << std::right
+        << std::setw(8) << text_of(d["frames_written"]) << std::setw(8) << fixed(pct, 1) << std::setw(9)
+        << text_of(d["frames_dropped_queue"]) << std::setw(9) << text_of(d["frame_id_gaps"]) << std::setw(6)
+        << text_of(d["gaps"]) << std::setw(10) << fixed(d["gap_ms"].get<double>(), 0) << std::setw(13)
+        << text_of(d["disconnects"]) << "\n";
   }
-  print_warnings(out, warnings);
+  out << "\n";
+}
+
+void info_session(const std::string& file, const json& doc, bool as_json, std::ostream& out) {
+  const SidecarView v = sidecar_view(file, doc);
+  if (as_json) {
+    print_session_json(file, v, out);
+    return;
+  }
+  const lmc::RecorderSidecar& side = v.side;
+  out << "file:       " << file << "\n";
+  out << "type:       session sidecar (lmc-session " << side.format_version << ")\n";
+  out << "trial:      " << text_of(text_or_null(side.trial)) << "\n";
+  out << "status:     " << text_of(text_or_null(side.status)) << "\n";
+  if (!side.error.empty()) out << "error:      " << side.error << "\n";
+  out << "backend:    " << text_of(text_or_null(side.backend)) << "\n";
+  out << "recording:  " << text_of(v.rec_file) << "\n";
+  out << "layout:     " << text_of(v.layout_name) << " ("
+      << (v.layout_devices.is_array() ? std::to_string(v.layout_devices.size()) : std::string("?")) << " devices)\n";
+  out << "started:    " << text_of(text_or_null(side.host_start_utc)) << "\n";
+  out << "stopped:    " << text_of(text_or_null(side.host_stop_utc));
+  if (std::isfinite(v.duration_s)) out << " (" << fixed(v.duration_s, 3) << " s)";
+  out << "\n";
+  out << "frames:     " << side.frames_written << " written, " << side.frames_dropped << " dropped\n";
+  out << "serials:    ";
+  if (v.serial_map.empty()) out << "-";
+  bool first_serial = true;
+  for (const auto& [serial, slot] : v.serial_map.items()) {
+    out << (first_serial ? "" : ", ") << serial << " -> " << text_of(slot);
+    first_serial = false;
+  }
+  out << "\n";
+  print_session_vicon(v, out);
+  if (!side.stopped_by.empty()) out << "stopped by: " << side.stopped_by << "\n";
+  print_session_timing(v, out);
+  print_session_devices(v.devices, out);
+  print_warnings(out, v.warnings);
 }
 
 void run_info(const InfoOptions& opt) {

@@ -30,7 +30,7 @@ lmc::TrialSources fit_trial_job(const LengthFitArgs& a) {
   if (vicon && !single_file && !std::filesystem::is_directory(*vicon)) {
     throw lmc::Error("--vicon must be a folder when the input is a folder (or give the trial's LMC file)");
   }
-  const auto jobs = lmc::session::trial_sources_for_input(a.input, vicon);
+  const auto jobs = lmc::trial_sources_for_input(a.input, vicon);
   if (!a.trial.empty()) {
     for (const auto& j : jobs)
       if (j.trial == a.trial) return j;
@@ -65,7 +65,7 @@ void run_length_fit(const LengthFitArgs& a) {
   lmc::BatchOptions so;
   so.process.method = lmc::FusionMethod::kDefault;  // the factors are fitted on what they will correct
   if (!a.layout.empty()) so.layout = a.layout;
-  const lmc::TrialResult r = lmc::process_sources_in_full(job, so);
+  const lmc::TrialAnalysis r = lmc::process_sources_in_full(job, so);
 
   lmc::LengthCorrection c;
   if (from_hand) {

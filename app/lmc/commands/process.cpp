@@ -64,7 +64,7 @@ void run_process(const ProcessArgs& a) {
   std::vector<std::string> notes;
   const std::optional<std::filesystem::path> vicon =
       a.vicon.empty() ? std::nullopt : std::optional<std::filesystem::path>(a.vicon);
-  const auto jobs = lmc::session::trial_sources_for_input(a.input, vicon, &notes);
+  const auto jobs = lmc::trial_sources_for_input(a.input, vicon, &notes);
   for (const auto& n : notes) std::cout << "note: " << n << "\n";
 
   const auto outcomes = lmc::process_and_write_batch(jobs, options, a.out);

@@ -21,8 +21,8 @@
 #include "core/common/paths.h"
 #include "core/session/protocol.h"
 #include "core/session/session_folder.h"
-#include "devices/session/new_session_spec.h"
-#include "devices/session/session_runner.h"
+#include "devices/session_runner/new_session_spec.h"
+#include "devices/session_runner/session_runner.h"
 #include "devices/sim/sim_config.h"
 #include "devices/vicon/vicon_trigger.h"
 
@@ -30,8 +30,8 @@ namespace {
 
 namespace fs = std::filesystem;
 using namespace lmc::devices;
-using lmc::session::SessionFolder;
-using lmc::session::TrialStatus;
+using lmc::SessionFolder;
+using lmc::TrialStatus;
 
 // ---- new ------------------------------------------------------------------------------------
 
@@ -68,8 +68,8 @@ void run_new(const NewArgs& a) {
   fields.vicon_database = a.vicon_database;
   fields.seconds = a.seconds;
   fields.counterbalance = a.counterbalance;
-  const lmc::session::NewSessionSpec spec = new_session_spec(fields);
-  const fs::path dir = a.out.empty() ? lmc::session::default_session_dir(a.subject) : fs::path(a.out);
+  const lmc::NewSessionSpec spec = new_session_spec(fields);
+  const fs::path dir = a.out.empty() ? lmc::default_session_dir(a.subject) : fs::path(a.out);
   const SessionFolder folder = SessionFolder::create(dir, spec);
   print_plan(folder);
   std::cout << "next: lmc session run " << dir.string() << " --backend sim|leapc\n";
@@ -77,7 +77,7 @@ void run_new(const NewArgs& a) {
 
 // ---- status ---------------------------------------------------------------------------------
 
-nlohmann::json status_json(const lmc::session::SessionState& st, const fs::path& dir) {
+nlohmann::json status_json(const lmc::SessionState& st, const fs::path& dir) {
   nlohmann::json trials = nlohmann::json::array();
   for (const auto& t : st.trials) {
     nlohmann::json qc = nullptr;
@@ -95,7 +95,7 @@ nlohmann::json status_json(const lmc::session::SessionState& st, const fs::path&
     trials.push_back({{"index", t.plan.index + 1},
                       {"name", t.plan.name},
                       {"block", t.plan.layout_key},
-                      {"status", lmc::session::trial_status_name(t.status)},
+                      {"status", lmc::trial_status_name(t.status)},
                       {"attempts", static_cast<int>(t.attempts.size())},
                       {"attempt_history", attempts},
                       {"qc", qc}});
@@ -115,7 +115,7 @@ nlohmann::json status_json(const lmc::session::SessionState& st, const fs::path&
       {"trials", trials}};
 }
 
-void print_status(const lmc::session::SessionState& st, const fs::path& dir) {
+void print_status(const lmc::SessionState& st, const fs::path& dir) {
   const nlohmann::json j = status_json(st, dir);
   int accepted = 0;
   std::cout << "subject " << j["subject"].get<std::string>() << ", protocol " << j["protocol"].get<std::string>()
@@ -474,7 +474,7 @@ void setup_session(CLI::App& app) {
   cmd_status->callback([s] {
     // Read-only: status never takes the lock, repairs or rewrites anything, so it is safe
     // while `lmc session run` or the workbench records into the same folder.
-    const auto st = lmc::session::read_session_state(s->first);
+    const auto st = lmc::read_session_state(s->first);
     if (s->second)
       std::cout << status_json(st, s->first).dump(2) << "\n";
     else

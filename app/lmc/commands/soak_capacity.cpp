@@ -107,20 +107,20 @@ void run_capacity(const CapacityOptions& opt) {
                "of the same point.\n";
   if (opt.svg.empty()) return;
 
-  lmc::figures::Figure f;
+  lmc::Figure f;
   f.title = opt.title;
   f.x = {"controllers", "", std::nullopt};
   f.y = {"frames written per second of trial", "1/s", std::nullopt};
-  lmc::figures::Series lossy;
+  lmc::Series lossy;
   lossy.name = "a run that lost frames";
-  lossy.style = lmc::figures::SeriesStyle::points;
-  lossy.colour = lmc::figures::Rgb{200, 30, 30};
+  lossy.style = lmc::SeriesStyle::points;
+  lossy.colour = lmc::Rgb{200, 30, 30};
   for (double hz : rates) {
-    lmc::figures::Series s;
+    lmc::Series s;
     char name[32];
     std::snprintf(name, sizeof name, "%.0f Hz", hz);
     s.name = name;
-    s.style = lmc::figures::SeriesStyle::line_and_points;
+    s.style = lmc::SeriesStyle::line_and_points;
     for (int n : devices) {
       const auto it = points.find({n, hz});
       if (it == points.end()) continue;
@@ -140,7 +140,7 @@ void run_capacity(const CapacityOptions& opt) {
   f.notes.push_back(
       "Each point: one lmc soak run, rows written / the trials' seconds; without loss it is "
       "controllers x rate. Red: a run that lost frames.");
-  lmc::write_file_atomically(opt.svg, lmc::figures::to_svg(f));
+  lmc::write_file_atomically(opt.svg, lmc::to_svg(f));
   std::cout << "figure: " << opt.svg << "\n";
 }
 

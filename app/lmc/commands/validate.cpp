@@ -59,8 +59,8 @@ void setup_validate(CLI::App& app) {
           so.process.method = pass == 0 ? lmc::FusionMethod::kReference : lmc::FusionMethod::kDefault;
           if (pass == 2) so.process.length_correction = correction;
           if (!opt->layout.empty()) so.layout = opt->layout;
-          std::optional<lmc::TrialResult> kept;
-          so.on_result = [&kept](const lmc::TrialResult& r, const nlohmann::json&) { kept = r; };
+          std::optional<lmc::TrialAnalysis> kept;
+          so.on_result = [&kept](const lmc::TrialAnalysis& r, const nlohmann::json&) { kept = r; };
           const lmc::ProcessedTrial out = lmc::process_batch({job}, so).front();
           if (!out.error.empty()) throw lmc::Error(job.trial + ": " + out.error);
           if (!kept) throw lmc::Error(job.trial + ": no result");

@@ -13,21 +13,21 @@
 
 namespace calibration_test {
 
+using lmc::RigidTransform;
 using lmc::Vec3;
-using lmc::calibration::RigidTransform;
 namespace syn = lmc::test::synthetic_calibration;
 
 // Anchored truth for the consensus fit: the truth with the same gauge the fit uses.
 std::vector<RigidTransform> anchored(const std::vector<RigidTransform>& truth, const lmc::Layout& layout) {
   std::vector<RigidTransform> nominal;
-  for (const auto& d : layout.devices) nominal.push_back(lmc::calibration::device_transform(d));
-  return lmc::calibration::anchor_to_nominal(truth, nominal, std::vector<bool>(truth.size(), true));
+  for (const auto& d : layout.devices) nominal.push_back(lmc::device_transform(d));
+  return lmc::anchor_to_nominal(truth, nominal, std::vector<bool>(truth.size(), true));
 }
 
 void expect_near(const RigidTransform& got, const RigidTransform& want, double mm, double deg,
                  const std::string& what) {
   EXPECT_LT((got.t - want.t).norm(), mm) << what;
-  EXPECT_LT(lmc::calibration::rotation_angle_deg(got.r.transpose() * want.r), deg) << what;
+  EXPECT_LT(lmc::rotation_angle_deg(got.r.transpose() * want.r), deg) << what;
 }
 
 }  // namespace calibration_test
@@ -45,7 +45,7 @@ TEST(CalibrationPose, SetRotationReproducesTheMatrix) {
 }
 
 TEST(CalibrationFit, KabschRecoversAKnownTransformAndHuberIgnoresOutliers) {
-  const lmc::calibration::RigidTransform truth{calibration_test::syn::turn(12.0, 1), lmc::Vec3(30, -20, 55)};
+  const lmc::RigidTransform truth{calibration_test::syn::turn(12.0, 1), lmc::Vec3(30, -20, 55)};
   std::vector<lmc::Vec3> src, dst;
   std::mt19937_64 rng(7);
   std::uniform_real_distribution<double> u(-80, 80);
@@ -54,22 +54,21 @@ TEST(CalibrationFit, KabschRecoversAKnownTransformAndHuberIgnoresOutliers) {
     dst.push_back(truth.apply(src.back()));
   }
   const std::vector<double> ones(src.size(), 1.0);
-  calibration_test::expect_near(lmc::calibration::weighted_kabsch(src, dst, ones), truth, 1e-9, 1e-9, "exact");
+  calibration_test::expect_near(lmc::weighted_kabsch(src, dst, ones), truth, 1e-9, 1e-9, "exact");
   // 10 % of the targets 60 mm off in one direction: least squares is pulled, Huber much less.
   for (size_t i = 0; i < dst.size(); i += 10) dst[i] += lmc::Vec3(60, 0, 0);
-  const lmc::calibration::RigidTransform plain = lmc::calibration::weighted_kabsch(src, dst, ones);
-  const lmc::calibration::RigidTransform robust =
-      lmc::calibration::robust_rigid_fit(src, dst, lmc::calibration::RigidTransform{}, {});
+  const lmc::RigidTransform plain = lmc::weighted_kabsch(src, dst, ones);
+  const lmc::RigidTransform robust = lmc::robust_rigid_fit(src, dst, lmc::RigidTransform{}, {});
   EXPECT_GT((plain.t - truth.t).norm(), 5.0);
   EXPECT_LT((robust.t - truth.t).norm(), 0.5);
-  EXPECT_LT(lmc::calibration::rotation_angle_deg(robust.r.transpose() * truth.r), 0.1);
+  EXPECT_LT(lmc::rotation_angle_deg(robust.r.transpose() * truth.r), 0.1);
 }
 
 // A controller clamps each coordinate at its axis cut (calibration_samples.h): points beyond it read
 // on the cut. Whole-point Kabsch is pulled by them; the samples' axes inside the cut, fitted by the
 // masked fit, give the transform back, from a start as far off as a misplaced controller.
 TEST(CalibrationFit, ClampedCoordinatesAreMaskedNotFitted) {
-  const lmc::calibration::RigidTransform truth{calibration_test::syn::turn(8.0, 2), lmc::Vec3(-120, 5, -240)};
+  const lmc::RigidTransform truth{calibration_test::syn::turn(8.0, 2), lmc::Vec3(-120, 5, -240)};
   std::vector<lmc::Vec3> src, dst;
   std::vector<std::uint8_t> axes;
   std::mt19937_64 rng(11);
@@ -80,24 +79,22 @@ TEST(CalibrationFit, ClampedCoordinatesAreMaskedNotFitted) {
     dst.push_back(truth.apply(device));
     for (int k = 0; k < 3; ++k) device[k] = std::clamp(device[k], -250.0, 250.0);
     src.push_back(device);
-    axes.push_back(lmc::calibration::unclamped_axes(device, lmc::calibration::kAllAxes));
-    clamped += axes.back() == lmc::calibration::kAllAxes ? 0 : 1;
+    axes.push_back(lmc::unclamped_axes(device, lmc::kAllAxes));
+    clamped += axes.back() == lmc::kAllAxes ? 0 : 1;
   }
   EXPECT_GT(clamped, 200);
   const std::vector<double> ones(src.size(), 1.0);
-  const lmc::calibration::RigidTransform start{calibration_test::syn::turn(6.0, 0) * truth.r,
-                                               truth.t + lmc::Vec3(12, -9, 8)};
-  const lmc::calibration::RigidTransform whole = lmc::calibration::weighted_kabsch(src, dst, ones);
+  const lmc::RigidTransform start{calibration_test::syn::turn(6.0, 0) * truth.r, truth.t + lmc::Vec3(12, -9, 8)};
+  const lmc::RigidTransform whole = lmc::weighted_kabsch(src, dst, ones);
   EXPECT_GT((whole.t - truth.t).norm(), 2.0);
-  calibration_test::expect_near(lmc::calibration::weighted_masked_fit(src, dst, axes, ones, start), truth, 1e-6, 1e-6,
-                                "masked");
-  calibration_test::expect_near(lmc::calibration::robust_rigid_fit(src, dst, start, {}, nullptr, axes), truth, 1e-6,
-                                1e-6, "robust, masked");
+  calibration_test::expect_near(lmc::weighted_masked_fit(src, dst, axes, ones, start), truth, 1e-6, 1e-6, "masked");
+  calibration_test::expect_near(lmc::robust_rigid_fit(src, dst, start, {}, nullptr, axes), truth, 1e-6, 1e-6,
+                                "robust, masked");
   // With every axis trusted the masked fit has Kabsch's minimum.
-  const std::vector<std::uint8_t> all(src.size(), lmc::calibration::kAllAxes);
+  const std::vector<std::uint8_t> all(src.size(), lmc::kAllAxes);
   for (size_t i = 0; i < src.size(); ++i) src[i] = truth.inverse().apply(dst[i]);
-  calibration_test::expect_near(lmc::calibration::weighted_masked_fit(src, dst, all, ones, start),
-                                lmc::calibration::weighted_kabsch(src, dst, ones), 1e-6, 1e-6, "whole points");
+  calibration_test::expect_near(lmc::weighted_masked_fit(src, dst, all, ones, start),
+                                lmc::weighted_kabsch(src, dst, ones), 1e-6, 1e-6, "whole points");
 }
 
 TEST(CalibrationVicon, RecoversInjectedErrorsOfEveryController) {
@@ -105,7 +102,7 @@ TEST(CalibrationVicon, RecoversInjectedErrorsOfEveryController) {
   const auto truth =
       calibration_test::syn::perturbed(layout, {{40, -10, 25}, {-60, 30, 10}, {5, 5, -70}, {0, 0, 0}}, {8, -6, 10, 3});
   const auto trial = calibration_test::syn::make_trial(truth, 500, 1.0, 3);
-  const auto result = lmc::calibration::calibrate(trial.input, layout);
+  const auto result = lmc::calibrate(trial.input, layout);
   ASSERT_TRUE(result.with_vicon);
   for (size_t d = 0; d < truth.size(); ++d) {
     const auto& dc = result.devices[d];
@@ -125,7 +122,7 @@ TEST(CalibrationConsensus, RecoversErrorsRelativeToTheAnchorWithoutVicon) {
   const auto truth =
       calibration_test::syn::perturbed(layout, {{40, -10, 25}, {-60, 30, 10}, {5, 5, -70}, {20, 0, 0}}, {8, -6, 10, 3});
   const auto trial = calibration_test::syn::make_trial(truth, 500, 1.0, 4, false);
-  const auto result = lmc::calibration::calibrate(trial.input, layout);
+  const auto result = lmc::calibrate(trial.input, layout);
   ASSERT_FALSE(result.with_vicon);
   const auto want = calibration_test::anchored(truth, layout);
   for (size_t d = 0; d < truth.size(); ++d) {
@@ -139,12 +136,12 @@ TEST(CalibrationConsensus, RecoversErrorsRelativeToTheAnchorWithoutVicon) {
 
 TEST(CalibrationWarnings, SwappedSerialsAreNamedInBothModes) {
   const lmc::Layout layout = calibration_test::syn::square_layout();
-  std::vector<lmc::calibration::RigidTransform> truth;
-  for (const auto& d : layout.devices) truth.push_back(lmc::calibration::device_transform(d));
+  std::vector<lmc::RigidTransform> truth;
+  for (const auto& d : layout.devices) truth.push_back(lmc::device_transform(d));
   std::swap(truth[1], truth[2]);  // LMC2's controller stands where LMC3 should, and back
   for (const bool vicon : {true, false}) {
     const auto trial = calibration_test::syn::make_trial(truth, 300, 1.0, 5, vicon);
-    const auto result = lmc::calibration::calibrate(trial.input, layout);
+    const auto result = lmc::calibrate(trial.input, layout);
     ASSERT_EQ(result.warnings.size(), 1U) << (vicon ? "with Vicon" : "without");
     EXPECT_NE(result.warnings[0].find("LMC2 and LMC3 look swapped"), std::string::npos) << result.warnings[0];
     // The correction is then > 100 mm: the implausible-correction warning names both too.
@@ -155,16 +152,16 @@ TEST(CalibrationWarnings, SwappedSerialsAreNamedInBothModes) {
 
 TEST(CalibrationWarnings, AControllerWithoutDataIsLeftAsItWas) {
   const lmc::Layout layout = calibration_test::syn::square_layout();
-  std::vector<lmc::calibration::RigidTransform> truth;
-  for (const auto& d : layout.devices) truth.push_back(lmc::calibration::device_transform(d));
+  std::vector<lmc::RigidTransform> truth;
+  for (const auto& d : layout.devices) truth.push_back(lmc::device_transform(d));
   auto trial = calibration_test::syn::make_trial(truth, 200, 1.0, 6);
   trial.input.device_frame.devices.pop_back();  // LMC4 recorded nothing
   trial.input.labels.pop_back();
-  const auto result = lmc::calibration::calibrate(trial.input, layout);
+  const auto result = lmc::calibrate(trial.input, layout);
   EXPECT_FALSE(result.devices[3].fitted);
   ASSERT_EQ(result.devices[3].warnings.size(), 1U);
   EXPECT_EQ(result.devices[3].warnings[0], "LMC4: only 0 usable samples with Vicon points (needs 100): left as it was");
-  const lmc::Layout out = lmc::calibration::calibrated_layout(layout, result, {"T", "T.trc", "2026-01-01T00:00:00Z"});
+  const lmc::Layout out = lmc::calibrated_layout(layout, result, {"T", "T.trc", "2026-01-01T00:00:00Z"});
   EXPECT_EQ(out.devices[3], layout.devices[3]);
 }
 
@@ -175,9 +172,9 @@ TEST(CalibrationLayout, WrittenBackLayoutReproducesTheFittedTransforms) {
   const auto truth =
       calibration_test::syn::perturbed(layout, {{10, 20, 30}, {-5, 0, 8}, {0, 0, 0}, {3, 3, 3}}, {5, 2, 1, 0.5});
   const auto trial = calibration_test::syn::make_trial(truth, 200, 0.5, 7);
-  const auto result = lmc::calibration::calibrate(trial.input, layout);
-  const lmc::Layout out = lmc::calibration::calibrated_layout(
-      layout, result, {"Naiv_Static101", "Naiv_Static101.trc", "2026-11-23T16:00:00Z"});
+  const auto result = lmc::calibrate(trial.input, layout);
+  const lmc::Layout out =
+      lmc::calibrated_layout(layout, result, {"Naiv_Static101", "Naiv_Static101.trc", "2026-11-23T16:00:00Z"});
   EXPECT_EQ(out.name, "square (calibrated)");
   EXPECT_NE(
       out.description.find("from trial Naiv_Static101 against Vicon file Naiv_Static101.trc on 2026-11-23T16:00:00Z"),
@@ -191,7 +188,7 @@ TEST(CalibrationLayout, WrittenBackLayoutReproducesTheFittedTransforms) {
   }
   // Through JSON and back: the same numbers.
   EXPECT_EQ(lmc::layout_from_json(lmc::layout_to_json(out), "mem"), out);
-  const std::string table = lmc::calibration::residual_table(result);
+  const std::string table = lmc::residual_table(result);
   EXPECT_NE(table.find("LMC1"), std::string::npos);
   EXPECT_NE(table.find("Disagreement between controllers"), std::string::npos);
 }
@@ -211,11 +208,11 @@ TEST(CalibrationReference, PublishedStaticTrialControllersAgreeBetterAfterwards)
   // Vicon origin is ≈ 100 mm and 10° from the layout's, which the plain run must say).
   for (const int mode : {0, 1, 2}) {
     const bool with_vicon = mode > 0;
-    lmc::calibration::CalibrationOptions options;
+    lmc::CalibrationOptions options;
     options.anchor_vicon_to_layout = mode == 2;
-    const auto input = lmc::calibration::prepare_calibration_input(rec, with_vicon ? &vicon : nullptr, {});
-    const auto result = lmc::calibration::calibrate(input, layout, options);
-    std::cout << "mode " << mode << "\n" << lmc::calibration::residual_table(result);
+    const auto input = lmc::prepare_calibration_input(rec, with_vicon ? &vicon : nullptr, {});
+    const auto result = lmc::calibrate(input, layout, options);
+    std::cout << "mode " << mode << "\n" << lmc::residual_table(result);
     EXPECT_LT(result.disagreement_after_mm, result.disagreement_before_mm);
     EXPECT_GT(result.covisible_samples, 1000);
     for (const auto& d : result.devices) {
@@ -240,12 +237,12 @@ TEST(CalibrationVicon, ACommonShiftIsReportedAndAnchoringKeepsTheLayoutsFrame) {
   const auto truth =
       calibration_test::syn::perturbed(layout, {shift, shift + lmc::Vec3(10, 0, 0), shift, shift}, {0, 0, 0, 0});
   const auto trial = calibration_test::syn::make_trial(truth, 300, 1.0, 8);
-  const auto plain = lmc::calibration::calibrate(trial.input, layout);
+  const auto plain = lmc::calibrate(trial.input, layout);
   ASSERT_FALSE(plain.warnings.empty());
   EXPECT_NE(plain.warnings[0].find("every controller moved by 72."), std::string::npos) << plain.warnings[0];
-  lmc::calibration::CalibrationOptions options;
+  lmc::CalibrationOptions options;
   options.anchor_vicon_to_layout = true;
-  const auto anchored = lmc::calibration::calibrate(trial.input, layout, options);
+  const auto anchored = lmc::calibrate(trial.input, layout, options);
   EXPECT_TRUE(anchored.warnings.empty());
   ASSERT_EQ(anchored.notes.size(), 1U);
   // Truth relative to the anchor: LMC2 is 10 mm further along x than the others, the mean is 0.

@@ -33,7 +33,7 @@ std::vector<std::string> cells_of(const std::string& line) {
 
 // Three frames; the fused hand has no data in frame 1; LMC1 and LMC3 (no LMC2); two Vicon markers.
 PointTable small_table() {
-  TrialResult r;
+  TrialAnalysis r;
   r.tag.trial = "Naiv_Index102";
   r.world.frame_count = 3;
   r.world.step_us = 10000.0;

@@ -24,8 +24,8 @@ Vec3 value(int who, int f, int i) {
 
 // Five frames; the fused hand is missing in frame 2, LMC2 has no hand in frames 0–1, Vicon has two
 // markers (one with a character a label cannot hold, one with a gap) and only four frames.
-TrialResult small_trial() {
-  TrialResult r;
+TrialAnalysis small_trial() {
+  TrialAnalysis r;
   r.tag.trial = "Naiv_Index101";
   r.world.frame_count = 5;
   r.world.step_us = 10000.0;
@@ -56,7 +56,7 @@ bool missing(const Eigen::Vector3d& p) {
 }
 
 TEST(ExportPoints, LabelsValuesAndMissingPointsAsDocumented) {
-  const TrialResult r = small_trial();
+  const TrialAnalysis r = small_trial();
   const MarkerSeries m = small_markers();
   const PointTable t = trial_point_table(r, &m, ExportAxes::kWorld);
   ASSERT_EQ(t.frame_count(), 5);
@@ -94,7 +94,7 @@ TEST(ExportPoints, LabelsValuesAndMissingPointsAsDocumented) {
 }
 
 TEST(ExportPoints, OpenSimAxesRotateTheWorldFrame) {
-  const TrialResult r = small_trial();
+  const TrialAnalysis r = small_trial();
   const PointTable w = trial_point_table(r, nullptr, ExportAxes::kWorld);
   const PointTable o = trial_point_table(r, nullptr, ExportAxes::kOpenSim);
   const Vec3 p = w.positions[0][0], q = o.positions[0][0];
@@ -123,7 +123,7 @@ void expect_same_points(const PointTable& t, const std::vector<std::vector<Eigen
 }
 
 TEST(ExportPoints, C3dAndTrcReadBackToAThousandthOfAMillimetre) {
-  const TrialResult r = small_trial();
+  const TrialAnalysis r = small_trial();
   const MarkerSeries m = small_markers();
   const PointTable t = trial_point_table(r, &m, ExportAxes::kWorld);
 

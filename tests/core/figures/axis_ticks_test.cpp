@@ -5,7 +5,7 @@
 #include <cmath>
 #include <utility>
 
-namespace lmc::figures::axis_ticks_test {
+namespace lmc::axis_ticks_test {
 
 // True when v is 1, 2 or 5 times a power of ten.
 bool is_round_step(double v) {
@@ -74,4 +74,4 @@ TEST(FiguresAxisTicks, AValueReadOffAnAxisHasTheAxissResolution) {
   EXPECT_EQ(value_label(0.5, 0, std::nan("")), "0.50");
 }
 
-}  // namespace lmc::figures::axis_ticks_test
+}  // namespace lmc::axis_ticks_test

@@ -6,7 +6,7 @@
 
 #include <limits>
 
-namespace lmc::figures::colour_scale_test {
+namespace lmc::colour_scale_test {
 
 double luma(Rgb c) {
   return 0.2126 * c.r + 0.7152 * c.g + 0.0722 * c.b;
@@ -31,4 +31,4 @@ TEST(FiguresColourScale, GetsLighterAsTheValueGrows) {
   EXPECT_FALSE(wants_light_text(sequential_colour(0.8)));
 }
 
-}  // namespace lmc::figures::colour_scale_test
+}  // namespace lmc::colour_scale_test

@@ -14,7 +14,7 @@
 #include "core/figures/svg_writer.h"
 #include "tests/support/reference_data.h"
 
-namespace lmc::figures::export_sidecar_test {
+namespace lmc::export_sidecar_test {
 
 Figure bland_altman_like() {
   Figure f;
@@ -132,4 +132,4 @@ TEST(FiguresExport, AHeatmapIsWrittenWithItsScaleInTheSidecar) {
   EXPECT_EQ(j["figure"]["rows"], nlohmann::json::array({"thumb"}));
 }
 
-}  // namespace lmc::figures::export_sidecar_test
+}  // namespace lmc::export_sidecar_test

@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-namespace lmc::figures::figure_csv_test {
+namespace lmc::figure_csv_test {
 
 constexpr double kNan = std::numeric_limits<double>::quiet_NaN();
 
@@ -108,4 +108,4 @@ TEST(FiguresCsv, AHeatmapHasACellARowWithItsGroupAndAnEmptyCellForNoData) {
   EXPECT_EQ(csv_lines(to_csv(h))[1], "1,thumb,,open hand,0.25");
 }
 
-}  // namespace lmc::figures::figure_csv_test
+}  // namespace lmc::figure_csv_test

@@ -14,7 +14,7 @@
 #include "core/figures/svg_marks.h"
 #include "tests/core/figures/svg_test_support.h"
 
-namespace lmc::figures::heatmap_svg_test {
+namespace lmc::heatmap_svg_test {
 
 using namespace svg_test_support;
 
@@ -126,4 +126,4 @@ TEST(FiguresHeatmap, SameHeatmapSameBytes) {
   EXPECT_EQ(to_svg(two_panels()), to_svg(two_panels()));
 }
 
-}  // namespace lmc::figures::heatmap_svg_test
+}  // namespace lmc::heatmap_svg_test

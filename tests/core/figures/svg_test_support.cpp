@@ -2,7 +2,7 @@
 
 #include <cstdlib>
 
-namespace lmc::figures::svg_test_support {
+namespace lmc::svg_test_support {
 
 std::string xml_balance_problem(const std::string& doc) {
   std::vector<std::string> open;
@@ -104,4 +104,4 @@ std::vector<double> path_numbers(const std::string& d) {
   return out;
 }
 
-}  // namespace lmc::figures::svg_test_support
+}  // namespace lmc::svg_test_support

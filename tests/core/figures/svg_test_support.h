@@ -4,7 +4,7 @@
 #include <string>
 #include <vector>
 
-namespace lmc::figures::svg_test_support {
+namespace lmc::svg_test_support {
 
 // Empty when every tag is closed in order (self-closing tags, <?...?> and comments allowed) and
 // every '&' starts an entity; else what is wrong.
@@ -19,4 +19,4 @@ std::vector<std::string> text_contents(const std::string& doc);
 // Numbers in a path's d attribute, "M1.00,2.00 L3.00,4.00" → {1, 2, 3, 4}.
 std::vector<double> path_numbers(const std::string& d);
 
-}  // namespace lmc::figures::svg_test_support
+}  // namespace lmc::svg_test_support

@@ -11,7 +11,7 @@
 #include "core/figures/locale_free_number.h"
 #include "tests/core/figures/svg_test_support.h"
 
-namespace lmc::figures::svg_writer_test {
+namespace lmc::svg_writer_test {
 
 using namespace svg_test_support;
 
@@ -220,4 +220,4 @@ TEST(FiguresSvg, AFigureWithNoDataOrOnlyMissingDataIsStillAValidDocument) {
   EXPECT_EQ(xml_balance_problem(to_svg(FigureGrid{})), "");
 }
 
-}  // namespace lmc::figures::svg_writer_test
+}  // namespace lmc::svg_writer_test

@@ -79,7 +79,7 @@ TEST(InputLimits, TwoGigabytesOfGarbageAreRefusedAtTheFirstLineByEveryReader) {
   expect_refused_cheaply(
       zeros, [&] { (void)lmc::read_recorder_sidecar(zeros); }, "MB");
   expect_refused_cheaply(
-      zeros, [&] { (void)lmc::session::read_journal(zeros); }, "MB");
+      zeros, [&] { (void)lmc::read_journal(zeros); }, "MB");
   // Printable garbage with line breaks: the header check refuses it before the rest is read.
   const auto words = sparse_file(dir, "words.txt", kTwoGb, "lorem ipsum\tdolor\nsit amet\n");
   expect_refused_cheaply(

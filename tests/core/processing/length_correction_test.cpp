@@ -251,8 +251,8 @@ TEST(LengthCorrection, PipelineAppliesItAfterTheDefaultFusionOnlyAndTheReference
   ProcessOptions corrected;
   corrected.length_correction = c;
   EXPECT_EQ(process_options_json(corrected)["length_correction"]["factor"][4], 1.31);
-  const TrialResult r0 = process_trial("Naiv_Static101", rec, layout, &vicon, plain);
-  const TrialResult r1 = process_trial("Naiv_Static101", rec, layout, &vicon, corrected);
+  const TrialAnalysis r0 = process_trial("Naiv_Static101", rec, layout, &vicon, plain);
+  const TrialAnalysis r1 = process_trial("Naiv_Static101", rec, layout, &vicon, corrected);
   ASSERT_EQ(r0.lmc_frames.size(), r1.lmc_frames.size());
   for (size_t fr = 0; fr < r0.lmc_frames.size(); ++fr)
     for (size_t a = 0; a < kNumAngles; ++a) {

@@ -11,7 +11,7 @@
 namespace lmc {
 namespace {
 
-void expect_same_outputs(const TrialResult& a, const TrialResult& b) {
+void expect_same_outputs(const TrialAnalysis& a, const TrialAnalysis& b) {
   const auto fa = trial_output_files(a, trial_summary_json(a)), fb = trial_output_files(b, trial_summary_json(b));
   ASSERT_EQ(fa.size(), fb.size());
   for (size_t i = 0; i < fa.size(); ++i) {
@@ -28,14 +28,14 @@ TEST(MethodRerun, TheOtherMethodFromAProcessedTrialIsThatMethodFromScratch) {
   ProcessOptions def, ref;
   def.method = FusionMethod::kDefault;
   ref.method = FusionMethod::kReference;
-  const TrialResult by_default = process_trial("Naiv_Static101", trial.recording, trial.layout, &trial.vicon, def);
-  const TrialResult by_reference = process_trial("Naiv_Static101", trial.recording, trial.layout, &trial.vicon, ref);
+  const TrialAnalysis by_default = process_trial("Naiv_Static101", trial.recording, trial.layout, &trial.vicon, def);
+  const TrialAnalysis by_reference = process_trial("Naiv_Static101", trial.recording, trial.layout, &trial.vicon, ref);
   ASSERT_TRUE(by_default.has_vicon);
 
-  const TrialResult reference_again = process_trial_with_method(by_default, "Naiv_Static101", ref);
+  const TrialAnalysis reference_again = process_trial_with_method(by_default, "Naiv_Static101", ref);
   EXPECT_EQ(reference_again.method, FusionMethod::kReference);
   expect_same_outputs(reference_again, by_reference);
-  const TrialResult default_again = process_trial_with_method(by_reference, "Naiv_Static101", def);
+  const TrialAnalysis default_again = process_trial_with_method(by_reference, "Naiv_Static101", def);
   EXPECT_EQ(default_again.method, FusionMethod::kDefault);
   expect_same_outputs(default_again, by_default);
   // The two methods do differ on this trial, so the equality above is not that of two copies.
@@ -43,7 +43,7 @@ TEST(MethodRerun, TheOtherMethodFromAProcessedTrialIsThatMethodFromScratch) {
 }
 
 TEST(MethodRerun, RefusesALengthCorrectionWithTheReferenceMethod) {
-  TrialResult done;
+  TrialAnalysis done;
   ProcessOptions ref;
   ref.method = FusionMethod::kReference;
   ref.length_correction = LengthCorrection{};

@@ -284,7 +284,7 @@ TEST(OnlineFusion, TracksTheOfflineFusionOfTheRecordedTrial) {
   const Layout& layout = paper_initial_layout();
   ProcessOptions options;
   options.method = FusionMethod::kDefault;
-  const TrialResult offline = process_trial("Naiv_Static101", rec, layout, nullptr, options);
+  const TrialAnalysis offline = process_trial("Naiv_Static101", rec, layout, nullptr, options);
   const GridTrial& grid = offline.device_frame;
 
   // Rows in time order on the shared device clock, as a live hub would deliver them.

@@ -53,7 +53,7 @@ TEST(ReferenceParity, Subject1NaivStatic101MatchesAuthorsResults) {
   const auto [rec, vicon, layout] = test::load_shared_real_trial();
   ProcessOptions o;
   o.method = FusionMethod::kReference;
-  TrialResult r = process_trial("Naiv_Static101", rec, layout, &vicon, o);
+  TrialAnalysis r = process_trial("Naiv_Static101", rec, layout, &vicon, o);
   r.lmc_source = files.lmc.string();
   r.vicon_source = files.trc.string();
   EXPECT_EQ(r.fused.frame_count, 50);  // Vicon's 100 rows trimmed to the LMC's 50 steps

@@ -22,7 +22,7 @@ TEST(LayoutFigures, TopViewHasFootprintsAxesAndPalms) {
   for (auto& p : f.points) p = Vec3(0, 0, 0);
   f.points[kPalm] = Vec3(10, 180, -5);
   poses.frames = {f, f, f};
-  const figures::Figure fig = layout_top_view(layout, poses, 2);
+  const Figure fig = layout_top_view(layout, poses, 2);
   ASSERT_EQ(fig.series.size(), layout.devices.size() + 1);
   const auto& lmc1 = fig.series[0];
   EXPECT_EQ(lmc1.name, layout.devices[0].slot);
@@ -31,7 +31,7 @@ TEST(LayoutFigures, TopViewHasFootprintsAxesAndPalms) {
   EXPECT_DOUBLE_EQ(lmc1.y[0], lmc1.y[4]);
   EXPECT_TRUE(std::isnan(lmc1.x[5]));  // then a break before the viewing axis
   const auto& palms = fig.series.back();
-  EXPECT_EQ(palms.style, figures::SeriesStyle::points);
+  EXPECT_EQ(palms.style, SeriesStyle::points);
   ASSERT_EQ(palms.x.size(), 2u);  // every second of three frames: 0 and 2
   EXPECT_DOUBLE_EQ(palms.x[0], 10);
   EXPECT_DOUBLE_EQ(palms.y[0], -5);
@@ -44,7 +44,7 @@ TEST(LayoutFigures, RedundancyHasAFingerSeriesOverThePoses) {
   PoseCoverageRow row;
   row.seen_by_two = {0.1, 0.2, 0.3, 0.4, 0.5};
   r.poses = {row, row};
-  const figures::Figure fig = pose_redundancy_figure(r);
+  const Figure fig = pose_redundancy_figure(r);
   ASSERT_EQ(fig.series.size(), 5u);
   EXPECT_EQ(fig.series[4].name, "pinky");
   EXPECT_EQ(fig.series[4].x, (std::vector<double>{1, 2}));
@@ -66,7 +66,7 @@ TEST(LayoutFigures, CoverageHeatmapIsFingersByPosesFromTheReportsNumbers) {
   left.frames = 20;
   left.seen_by_one = {0.6, 0.6, 0.6, 0.6, 0.6};
   r.poses = {down, left};
-  const figures::Heatmap h = finger_coverage_heatmap(r);
+  const Heatmap h = finger_coverage_heatmap(r);
   EXPECT_EQ(h.rows, (std::vector<std::string>{"thumb", "index", "middle", "ring", "pinky"}));
   EXPECT_EQ(h.columns, (std::vector<std::string>{"open hand", "thumb flexion"}));
   EXPECT_EQ(h.column_groups, (std::vector<std::string>{"palm down", "palm left"}));

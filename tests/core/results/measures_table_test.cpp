@@ -31,7 +31,7 @@ void expected_values(std::string& o, const FrameMeasures& m) {
 }
 
 TEST(MeasuresTable, RowsReadAsAppendFixedWritesEveryNumber) {
-  TrialResult r;
+  TrialAnalysis r;
   r.lmc_frames = {measures_from(12.34567, 1.000049), measures_from(-0.00004, -3.3), measures_from(0.0, 0.0)};
   // Values the quick writer leaves to the general path (1e300), and NaN, ±inf, −0.
   r.lmc_frames[2].segment_mm[0] = 1e300;

@@ -163,7 +163,7 @@ TEST(ReviewAgreement, SeveralTrialsPerSubjectUseTheRepeatedForm) {
   EXPECT_NEAR(m.bland_altman.loa_high, 4.0 + 1.959963984540054 * std::sqrt(5.0), 1e-9);
   // Pearson and ICC on the six (LMC, Vicon) pairs.
   const std::vector<double> lmc = {51, 63, 58, 70, 75, 59}, vicon = {50, 60, 55, 65, 70, 52};
-  const stats::PearsonResult r = stats::pearson(lmc, vicon);
+  const PearsonResult r = pearson(lmc, vicon);
   EXPECT_NEAR(m.pearson.r, r.r, 1e-12);
   EXPECT_NEAR(m.pearson.ci.low, r.ci.low, 1e-12);
   EXPECT_EQ(m.icc.form, "ICC(2,1)");
@@ -193,7 +193,7 @@ TEST(ReviewAgreement, OneSubjectHasBiasRmseAndRButNoLimits) {
   EXPECT_NEAR(m.bland_altman.bias, 3.0, 1e-12);
   EXPECT_NEAR(m.differences.rmse, std::sqrt(35.0 / 3.0), 1e-12);
   const std::vector<double> lmc = {51, 63, 70}, vicon = {50, 60, 65};
-  EXPECT_NEAR(m.pearson.r, stats::pearson(lmc, vicon).r, 1e-12);
+  EXPECT_NEAR(m.pearson.r, pearson(lmc, vicon).r, 1e-12);
   // The limits need the spread between subjects: missing, and the reason says so.
   EXPECT_TRUE(std::isnan(m.bland_altman.loa_low));
   EXPECT_TRUE(std::isnan(m.bland_altman.loa_high));

@@ -27,12 +27,12 @@ TEST(ReviewFigures, BlandAltmanPointsBySubjectWithTheTablesLines) {
   m.bland_altman.loa_low = -4;
   m.bland_altman.loa_high = 0;
   m.bland_altman.method = "repeated measures";
-  const figures::Figure f = bland_altman_figure(g, m);
+  const Figure f = bland_altman_figure(g, m);
   ASSERT_EQ(f.series.size(), 2u);
   EXPECT_EQ(f.series[0].name, "S01");
   EXPECT_EQ(f.series[0].x, (std::vector<double>{70, 72}));
   EXPECT_EQ(f.series[0].y, (std::vector<double>{-2, -1}));
-  EXPECT_EQ(f.series[0].style, figures::SeriesStyle::points);
+  EXPECT_EQ(f.series[0].style, SeriesStyle::points);
   ASSERT_EQ(f.references.size(), 3u);
   EXPECT_DOUBLE_EQ(f.references[0].y, -2);
   EXPECT_EQ(f.references[0].label, "bias -2.0 mm");
@@ -43,7 +43,7 @@ TEST(ReviewFigures, BlandAltmanPointsBySubjectWithTheTablesLines) {
   // No limits (one subject): no lines, and the note says why.
   m.bland_altman = {};
   m.bland_altman.reason = "needs two subjects";
-  const figures::Figure none = bland_altman_figure(g, m);
+  const Figure none = bland_altman_figure(g, m);
   EXPECT_TRUE(none.references.empty());
   EXPECT_EQ(none.notes.back(), "No limits: needs two subjects");
 }
@@ -57,7 +57,7 @@ TEST(ReviewFigures, BlandAltmanLabelsNeverShowANegativeZero) {
   m.bland_altman.bias = 0.3;
   m.bland_altman.loa_low = -0.04;  // rounds to zero at one decimal
   m.bland_altman.loa_high = 0.64;
-  const figures::Figure f = bland_altman_figure(g, m);
+  const Figure f = bland_altman_figure(g, m);
   ASSERT_EQ(f.references.size(), 3u);
   EXPECT_EQ(f.references[0].label, "bias +0.3 mm");
   EXPECT_EQ(f.references[1].label, "lower 0.0 mm");
@@ -77,7 +77,7 @@ TEST(ReviewFigures, ATrialIsElevenPanelsOfFusedAgainstViconWithGapsKept) {
   d.device_id = 3;
   d.measures = s.fused;
   s.devices.push_back(d);
-  const figures::FigureGrid g = trial_figure(s);
+  const FigureGrid g = trial_figure(s);
   ASSERT_EQ(g.panels.size(), 11u);
   EXPECT_EQ(g.x.unit, "s");
   EXPECT_EQ(g.panels[0].y.label, "index_mcp");
@@ -93,7 +93,7 @@ TEST(ReviewFigures, TheVisibilityMapPlacesMotionsInOrder) {
   map.cells = {{"LMC1", "static", "initial", 1, 5, 0, 0.8, 0.1},
                {"LMC1", "index", "initial", 1, 5, 0, 0.6, 0.1},
                {"LMC1", "static", "optimized", 1, 5, 0, 0.9, 0.1}};
-  const figures::Figure f = visibility_map_figure(map);
+  const Figure f = visibility_map_figure(map);
   ASSERT_EQ(f.series.size(), 2u);
   EXPECT_EQ(f.series[0].name, "LMC1 initial");
   EXPECT_EQ(f.series[0].x, (std::vector<double>{1, 2}));

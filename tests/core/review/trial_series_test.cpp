@@ -26,7 +26,8 @@ TEST(TrialSeries, TheSharedTrialsSeriesAreProcessingsOwnMeasures) {
   LMC_REQUIRE_REFERENCE_FILE(files.lmc);
   LMC_REQUIRE_REFERENCE_FILE(files.trc);
   const test::SharedRealTrial trial = test::load_shared_real_trial();
-  const TrialResult r = process_trial("Naiv_Static101", trial.recording, trial.layout, &trial.vicon, ProcessOptions{});
+  const TrialAnalysis r =
+      process_trial("Naiv_Static101", trial.recording, trial.layout, &trial.vicon, ProcessOptions{});
   const TrialSeries s = trial_series(r);
   ASSERT_EQ(s.frames(), 50);
   EXPECT_DOUBLE_EQ(s.time_s.front(), 0.0);

@@ -13,7 +13,7 @@ namespace journal_text_test {
 
 std::string error_of(const std::string& text) {
   try {
-    (void)lmc::session::state_from_journal(lmc::session::parse_journal_text(text, "journal.jsonl"), "journal.jsonl");
+    (void)lmc::state_from_journal(lmc::parse_journal_text(text, "journal.jsonl"), "journal.jsonl");
   } catch (const lmc::Error& e) {
     return e.what();
   }
@@ -30,7 +30,7 @@ TEST(JournalText, ASessionCreatedEventWithoutItsSetupNamesLineAndField) {
 }
 
 TEST(JournalText, ACutLastLineIsDroppedWithAWarningAndABrokenMiddleLineIsAnError) {
-  const auto cut = lmc::session::parse_journal_text("{\"type\": \"note\"}\n{\"type\": \"no", "j");
+  const auto cut = lmc::parse_journal_text("{\"type\": \"note\"}\n{\"type\": \"no", "j");
   EXPECT_TRUE(cut.cut_last_line);
   EXPECT_EQ(cut.events.size(), 1u);
   EXPECT_EQ(cut.complete_bytes, 17u);

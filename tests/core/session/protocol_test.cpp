@@ -9,7 +9,7 @@
 
 #include "core/common/error.h"
 
-namespace lmc::session {
+namespace lmc {
 namespace {
 
 using ::testing::HasSubstr;
@@ -197,4 +197,4 @@ TEST(Protocol, ACalibrationStepIsOptionalValidatedAndRoundTrips) {
 }
 
 }  // namespace
-}  // namespace lmc::session
+}  // namespace lmc

@@ -12,7 +12,7 @@
 
 namespace fs = std::filesystem;
 
-namespace lmc::session {
+namespace lmc {
 namespace {
 
 using ::testing::HasSubstr;
@@ -322,4 +322,4 @@ TEST(SessionFolder, ProcessingTakesOnlyAcceptedAttempts) {
 }
 
 }  // namespace
-}  // namespace lmc::session
+}  // namespace lmc

@@ -18,7 +18,7 @@
 #include "core/processing/measures.h"
 #include "tests/support/reference_data.h"
 
-namespace lmc::session {
+namespace lmc {
 namespace {
 
 constexpr std::int64_t kT0 = 5'000'000'000;  // a device clock a few hours after the service started
@@ -668,4 +668,4 @@ TEST(TrialQuality, TimelineOfThePublishedStaticTrialAgreesWithItsFigures) {
 }
 
 }  // namespace
-}  // namespace lmc::session
+}  // namespace lmc

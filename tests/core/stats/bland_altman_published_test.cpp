@@ -30,7 +30,7 @@
 
 #include "core/stats/bland_altman_repeated.h"
 
-namespace lmc::stats::bland_altman_published_test {
+namespace lmc::bland_altman_published_test {
 
 struct CardiacOutputPair {
   int subject;
@@ -135,4 +135,4 @@ TEST(StatsBlandAltmanPublished, CardiacOutputInSinglePrecisionGivesEveryPrintedD
   EXPECT_NEAR(r.bias + kPaperMultiplier * r.sd_difference, kUpperLimit, 5e-8);
 }
 
-}  // namespace lmc::stats::bland_altman_published_test
+}  // namespace lmc::bland_altman_published_test

@@ -9,18 +9,18 @@
 
 #include "core/stats/quantiles.h"
 
-namespace lmc::stats::bland_altman_repeated_test {
+namespace lmc::bland_altman_repeated_test {
 
 constexpr double kMissing = std::numeric_limits<double>::quiet_NaN();
 
 double z975() {
-  return lmc::stats::normal_quantile(0.975);
+  return lmc::normal_quantile(0.975);
 }
 double t975(double df) {
-  return lmc::stats::t_quantile(0.975, df);
+  return lmc::t_quantile(0.975, df);
 }
 double chi2(double p, double df) {
-  return lmc::stats::chi_squared_quantile(p, df);
+  return lmc::chi_squared_quantile(p, df);
 }
 
 // Subject i has `repeats` identical trials with difference A − B = diffs[i] (B = 50).
@@ -132,4 +132,4 @@ TEST(StatsBlandAltmanRepeated, OneSubjectGivesTheBiasButNoLimitsAndNoDataIsNaN) 
   EXPECT_TRUE(nlohmann::json::parse(nlohmann::json(none).dump()).at("sd_difference").is_null());
 }
 
-}  // namespace lmc::stats::bland_altman_repeated_test
+}  // namespace lmc::bland_altman_repeated_test

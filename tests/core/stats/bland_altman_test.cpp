@@ -9,15 +9,15 @@
 
 #include "core/stats/quantiles.h"
 
-namespace lmc::stats::bland_altman_test {
+namespace lmc::bland_altman_test {
 
 constexpr double kMissing = std::numeric_limits<double>::quiet_NaN();
 
 double z975() {
-  return lmc::stats::normal_quantile(0.975);
+  return lmc::normal_quantile(0.975);
 }
 double t975(double df) {
-  return lmc::stats::t_quantile(0.975, df);
+  return lmc::t_quantile(0.975, df);
 }
 
 TEST(StatsBlandAltman, HandComputedBiasLimitsAndIntervals) {
@@ -77,4 +77,4 @@ TEST(StatsBlandAltman, FewerThanTwoPairsIsNaNWithAReason) {
   EXPECT_TRUE(std::isnan(none.sd_difference));
 }
 
-}  // namespace lmc::stats::bland_altman_test
+}  // namespace lmc::bland_altman_test

@@ -9,7 +9,7 @@
 
 #include "core/common/error.h"
 
-namespace lmc::stats::descriptives_test {
+namespace lmc::descriptives_test {
 
 constexpr double kMissing = std::numeric_limits<double>::quiet_NaN();
 
@@ -74,4 +74,4 @@ TEST(StatsDescriptives, JsonWritesNaNAsNullNeverZero) {
   EXPECT_FALSE(j.at("reason").get<std::string>().empty());
 }
 
-}  // namespace lmc::stats::descriptives_test
+}  // namespace lmc::descriptives_test

@@ -8,7 +8,7 @@
 
 #include "core/stats/quantiles.h"
 
-namespace lmc::stats::icc_test {
+namespace lmc::icc_test {
 
 constexpr double kMissing = std::numeric_limits<double>::quiet_NaN();
 
@@ -25,7 +25,7 @@ Eigen::MatrixXd shrout_fleiss_table() {
 }
 
 double f975(double df1, double df2) {
-  return lmc::stats::f_quantile(0.975, df1, df2);
+  return lmc::f_quantile(0.975, df1, df2);
 }
 
 TEST(StatsIcc, ShroutFleissTable2ToThePublishedDecimals) {
@@ -194,4 +194,4 @@ TEST(StatsIcc, JsonNamesEveryForm) {
   EXPECT_TRUE(j.at("estimates").at(1).at("ci").contains("low"));
 }
 
-}  // namespace lmc::stats::icc_test
+}  // namespace lmc::icc_test

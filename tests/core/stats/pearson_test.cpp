@@ -9,7 +9,7 @@
 
 #include "core/stats/quantiles.h"
 
-namespace lmc::stats::pearson_test {
+namespace lmc::pearson_test {
 
 constexpr double kMissing = std::numeric_limits<double>::quiet_NaN();
 
@@ -23,7 +23,7 @@ TEST(StatsPearson, HandComputedValueAndFisherInterval) {
   EXPECT_EQ(p.n_skipped, 1u);
   const double r = 6.0 / std::sqrt(60.0);
   EXPECT_NEAR(p.r, r, 1e-12);
-  const double z = lmc::stats::normal_quantile(0.975);
+  const double z = lmc::normal_quantile(0.975);
   const double half = z / std::sqrt(5.0 - 3.0);
   EXPECT_NEAR(p.ci.low, std::tanh(std::atanh(r) - half), 1e-9);
   EXPECT_NEAR(p.ci.high, std::tanh(std::atanh(r) + half), 1e-9);
@@ -64,4 +64,4 @@ TEST(StatsPearson, TooFewPairsOrNoSpreadIsNaNWithAReason) {
   EXPECT_TRUE(j.at("r").is_null());
 }
 
-}  // namespace lmc::stats::pearson_test
+}  // namespace lmc::pearson_test

@@ -4,7 +4,7 @@
 
 #include <cmath>
 
-namespace lmc::stats::quantiles_test {
+namespace lmc::quantiles_test {
 
 // Values from printed tables (to the digits shown): the wrappers must hand Boost the right
 // arguments.
@@ -28,4 +28,4 @@ TEST(StatsQuantiles, InvalidArgumentsGiveNaNNotExceptions) {
   EXPECT_TRUE(std::isnan(f_upper_tail(std::nan(""), 1.0, 1.0)));
 }
 
-}  // namespace lmc::stats::quantiles_test
+}  // namespace lmc::quantiles_test

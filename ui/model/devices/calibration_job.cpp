@@ -7,7 +7,7 @@
 
 namespace lmc::ui {
 
-void CalibrationJob::start(calibration::TrialCalibrationRequest request, Layout layout) {
+void CalibrationJob::start(TrialCalibrationRequest request, Layout layout) {
   if (request.when_utc.empty()) request.when_utc = utc_now_iso8601();
   job_.start(
       [req = std::move(request), nominal = std::move(layout)](std::stop_token stop, JobChannel<NoReport>& channel) {
@@ -16,10 +16,10 @@ void CalibrationJob::start(calibration::TrialCalibrationRequest request, Layout 
         CalibrationOutcome out;
         if (stop.stop_requested()) return out;
         channel.set_stage("calibrating from " + req.trial.filename().string() + (req.vicon ? " against Vicon" : ""));
-        calibration::TrialCalibration cal = calibration::calibrate_trial(req, nominal);
+        TrialCalibration cal = calibrate_trial(req, nominal);
         if (stop.stop_requested()) return out;
         out.trial = std::move(cal.trial);
-        out.table = calibration::residual_table(cal.result);
+        out.table = residual_table(cal.result);
         out.result = std::move(cal.result);
         out.calibrated = std::move(cal.calibrated);
         out.file_warnings = std::move(cal.file_warnings);

@@ -18,9 +18,9 @@ namespace lmc::ui {
 
 struct CalibrationOutcome {
   std::string trial;  // the trial's name
-  calibration::CalibrationResult result;
+  CalibrationResult result;
   Layout calibrated;  // the layout to apply; equal to the input's where nothing was fitted
-  std::string table;  // calibration::residual_table(result)
+  std::string table;  // residual_table(result)
   std::vector<std::string> file_warnings, notes;
 };
 
@@ -28,7 +28,7 @@ class CalibrationJob {
  public:
   // `layout` is the layout the trial was recorded with; everything is copied into the worker.
   // An empty request.when_utc is filled with the time the job starts.
-  void start(calibration::TrialCalibrationRequest request, Layout layout);
+  void start(TrialCalibrationRequest request, Layout layout);
   void cancel() { job_.cancel(); }
   void cancel_and_join() { job_.cancel_and_join(); }
 

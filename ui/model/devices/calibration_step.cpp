@@ -65,7 +65,7 @@ std::string CalibrationStep::calibrate_file(const std::filesystem::path& trial, 
 }
 
 void CalibrationStep::start_job(const std::filesystem::path& trial) {
-  calibration::TrialCalibrationRequest request;
+  TrialCalibrationRequest request;
   request.trial = trial;
   if (!settings_.vicon.empty()) request.vicon = settings_.vicon;
   request.anchor_to_layout = settings_.anchor_to_layout;
@@ -155,7 +155,7 @@ std::string CalibrationStep::activity() const {
   return {};
 }
 
-std::vector<CalibrationRow> calibration_rows(const calibration::CalibrationResult& result) {
+std::vector<CalibrationRow> calibration_rows(const CalibrationResult& result) {
   std::vector<CalibrationRow> out;
   for (const auto& d : result.devices) {
     CalibrationRow r;

@@ -45,7 +45,7 @@ struct CalibrationRow {
 
 // The table's lines for a calibration result (the Devices tab's step and the Record tab's block
 // calibration show the same table).
-std::vector<CalibrationRow> calibration_rows(const calibration::CalibrationResult& result);
+std::vector<CalibrationRow> calibration_rows(const CalibrationResult& result);
 
 // How to read the residuals, in the README's words ("Calibrating controllers").
 const char* calibration_residuals_explanation();

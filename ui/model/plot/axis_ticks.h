@@ -4,10 +4,4 @@
 // implementation, named here for ui code.
 #include "core/figures/axis_ticks.h"
 
-namespace lmc::ui {
-
-using figures::fit_y_range;
-using figures::nice_ticks;
-using figures::value_label;
-
-}  // namespace lmc::ui
+namespace lmc::ui {}  // namespace lmc::ui

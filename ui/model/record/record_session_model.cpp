@@ -20,8 +20,8 @@ RecordSessionModel::~RecordSessionModel() {
   close();
 }
 
-std::string RecordSessionModel::adopt(session::SessionFolder folder, const RecordSettings& settings, bool resumed) {
-  folder_ = std::make_shared<session::SessionFolder>(std::move(folder));
+std::string RecordSessionModel::adopt(SessionFolder folder, const RecordSettings& settings, bool resumed) {
+  folder_ = std::make_shared<SessionFolder>(std::move(folder));
   try {
     devices::SessionRunOptions options;
     options.backend = settings.backend;
@@ -53,12 +53,12 @@ std::string RecordSessionModel::adopt(session::SessionFolder folder, const Recor
   return {};
 }
 
-std::string RecordSessionModel::create(const std::filesystem::path& dir, const session::NewSessionSpec& spec,
+std::string RecordSessionModel::create(const std::filesystem::path& dir, const NewSessionSpec& spec,
                                        const RecordSettings& settings) {
   if (busy()) return busy_reason();
   close();
   try {
-    return adopt(session::SessionFolder::create(dir, spec), settings, false);
+    return adopt(SessionFolder::create(dir, spec), settings, false);
   } catch (const std::exception& e) {
     return e.what();
   }
@@ -68,7 +68,7 @@ std::string RecordSessionModel::open(const std::filesystem::path& dir, const Rec
   if (busy()) return busy_reason();
   close();
   try {
-    return adopt(session::SessionFolder::open(dir), settings, true);
+    return adopt(SessionFolder::open(dir), settings, true);
   } catch (const std::exception& e) {
     return e.what();
   }
@@ -123,7 +123,7 @@ void RecordSessionModel::select(int i) {
   selected_ = (has_session() && i >= 0 && i < static_cast<int>(state_.trials.size())) ? i : -1;
 }
 
-const session::TrialType& RecordSessionModel::trial_type(int i) const {
+const TrialType& RecordSessionModel::trial_type(int i) const {
   const auto& plan = state_.trials.at(static_cast<size_t>(i)).plan;
   return state_.protocol.trial_types.at(static_cast<size_t>(plan.trial_type));
 }
@@ -183,7 +183,7 @@ std::string RecordSessionModel::start_trial() {
   if (busy()) return busy_reason();
   const int i = current_trial();
   if (i < 0) return "every trial is accepted";
-  if (state_.trials[static_cast<size_t>(i)].status == session::TrialStatus::kAccepted)
+  if (state_.trials[static_cast<size_t>(i)].status == TrialStatus::kAccepted)
     return state_.trials[static_cast<size_t>(i)].plan.name + " is accepted; redo it (R) to record it again";
   if (runner_->needs_preflight(i)) return "run the pre-flight for this layout first (or override it with a reason)";
   if (runner_->needs_calibration(i)) return "calibrate this layout first (or keep its nominal layout, with a reason)";
@@ -200,7 +200,7 @@ std::string RecordSessionModel::start_trial() {
   fusion_stats_ = {};
   abort_requested_ = std::make_shared<std::atomic<bool>>(false);
   // Shown as recording at once; the folder's own state says so when the worker is done.
-  state_.trials[static_cast<size_t>(i)].status = session::TrialStatus::kRecording;
+  state_.trials[static_cast<size_t>(i)].status = TrialStatus::kRecording;
   job_handled_ = false;
   job_.start([folder = folder_, runner = runner_, i, fusion = live_fusion_, aborting = abort_requested_](
                  std::stop_token stop, JobChannel<devices::TrialSnapshot>& channel) {
@@ -338,7 +338,7 @@ std::string RecordSessionModel::accept_last() {
     return state_.trials.at(static_cast<size_t>(i)).plan.name +
            " cannot be accepted: " + attempt_failure(*last_attempt_) + "; redo it (R)";
   try {
-    if (state_.trials.at(static_cast<size_t>(i)).status == session::TrialStatus::kAccepted) return {};
+    if (state_.trials.at(static_cast<size_t>(i)).status == TrialStatus::kAccepted) return {};
     runner_->note(i, "accepted by the operator despite its verdict (" + last_attempt_->verdict() + ")");
     runner_->accept(i);
   } catch (const std::exception& e) {
@@ -354,7 +354,7 @@ std::string RecordSessionModel::ask_accept() {
   if (busy()) return busy_reason();
   if (!last_attempt_) return "no trial recorded in this run yet";
   const auto& trial = state_.trials.at(static_cast<size_t>(last_attempt_->trial));
-  if (trial.status == session::TrialStatus::kAccepted) return {};
+  if (trial.status == TrialStatus::kAccepted) return {};
   if (last_attempt_->frames <= 0)
     return trial.plan.name + " cannot be accepted: " + attempt_failure(*last_attempt_) + "; redo it (R)";
   accept_question_ = trial.plan.name + " failed (" + attempt_failure(*last_attempt_) + "). Keep it anyway?";

@@ -25,7 +25,7 @@
 #include "core/session/session_folder.h"
 #include "devices/fusion/live_fusion.h"
 #include "devices/record/trial_engine.h"
-#include "devices/session/session_runner.h"
+#include "devices/session_runner/session_runner.h"
 #include "ui/model/devices/live_hands.h"
 #include "ui/model/jobs/background_job.h"
 
@@ -63,14 +63,13 @@ class RecordSessionModel {
 
   // ---- the session ---------------------------------------------------------------------------
   // Both return an error text ("" when done). A session already open is closed first.
-  std::string create(const std::filesystem::path& dir, const session::NewSessionSpec& spec,
-                     const RecordSettings& settings);
+  std::string create(const std::filesystem::path& dir, const NewSessionSpec& spec, const RecordSettings& settings);
   std::string open(const std::filesystem::path& dir, const RecordSettings& settings);
   void close();
   bool has_session() const { return folder_ != nullptr; }
   const std::filesystem::path& dir() const { return dir_; }
   // A copy of the folder's state (refreshed whenever the worker is idle). Valid while has_session().
-  const session::SessionState& state() const { return state_; }
+  const SessionState& state() const { return state_; }
   // Trials found cut off when the session was opened: the plain notice the operator reads first.
   const std::vector<std::string>& recovered() const { return recovered_; }
   // Set when an existing folder was opened (not created): what happened and where it continues
@@ -82,9 +81,9 @@ class RecordSessionModel {
   // The trial Start records next: the selected one, else the first not accepted (-1: all done).
   int current_trial() const;
   void select(int i);  // -1 clears the selection (back to the protocol's order)
-  int accepted_count() const { return has_session() ? state_.count(session::TrialStatus::kAccepted) : 0; }
+  int accepted_count() const { return has_session() ? state_.count(TrialStatus::kAccepted) : 0; }
   bool finished() const { return has_session() && state_.next_trial() < 0; }
-  const session::TrialType& trial_type(int i) const;
+  const TrialType& trial_type(int i) const;
   // Plain words: which layout to set up for the current trial's block, with target positions.
   std::string block_instructions() const;
 
@@ -158,15 +157,15 @@ class RecordSessionModel {
  private:
   // What the worker is doing, for a refusal: which job runs and when the operator can act again.
   std::string busy_reason() const;
-  std::string adopt(session::SessionFolder folder, const RecordSettings& settings, bool resumed);
+  std::string adopt(SessionFolder folder, const RecordSettings& settings, bool resumed);
   void refresh_state();
 
   LiveRig* rig_ = nullptr;
   bool rig_borrowed_ = false;
-  std::shared_ptr<session::SessionFolder> folder_;  // shared with the worker, as are runner_, live_fusion_
+  std::shared_ptr<SessionFolder> folder_;           // shared with the worker, as are runner_, live_fusion_
   std::shared_ptr<devices::SessionRunner> runner_;  // and abort_requested_
   std::filesystem::path dir_;
-  session::SessionState state_;
+  SessionState state_;
   std::vector<std::string> recovered_;
   std::vector<std::string> resume_notice_;
   RecordSettings settings_;

@@ -15,12 +15,12 @@ namespace fs = std::filesystem;
 
 std::vector<ProtocolChoice> protocol_choices() {
   std::vector<ProtocolChoice> out;
-  for (const auto& name : session::shipped_protocol_names()) {
+  for (const auto& name : shipped_protocol_names()) {
     ProtocolChoice c;
     c.name = name;
     c.label = name;
     try {
-      const session::Protocol p = session::load_protocol(name);
+      const Protocol p = load_protocol(name);
       const size_t trials =
           p.layouts.size() * p.poses.size() * p.trial_types.size() * static_cast<size_t>(p.repetitions);
       c.label = name + ": " + std::to_string(trials) + " trials, " + std::to_string(p.layouts.size()) + " layout" +
@@ -74,12 +74,12 @@ devices::NewSessionFields RecordSetupForm::fields() const {
   return f;
 }
 
-session::NewSessionSpec RecordSetupForm::spec() const {
+NewSessionSpec RecordSetupForm::spec() const {
   return devices::new_session_spec(fields());
 }
 
 fs::path RecordSetupForm::new_session_dir() const {
-  return folder[0] != '\0' ? fs::path(folder) : session::default_session_dir(subject, sessions_folder());
+  return folder[0] != '\0' ? fs::path(folder) : default_session_dir(subject, sessions_folder());
 }
 
 RecordSettings RecordSetupForm::settings() const {
@@ -107,8 +107,8 @@ SetupFormProblems check_setup_form(const RecordSetupForm& f) {
   SetupFormProblems p;
   p.subject = safe_name_problem(f.subject, "subject id");
   // 0 means "not measured"; anything else goes through the manifest's own rule.
-  if (f.hand_length_mm != 0.0F) p.hand_length = session::hand_size_problem(f.hand_length_mm);
-  if (f.hand_breadth_mm != 0.0F) p.hand_breadth = session::hand_size_problem(f.hand_breadth_mm);
+  if (f.hand_length_mm != 0.0F) p.hand_length = hand_size_problem(f.hand_length_mm);
+  if (f.hand_breadth_mm != 0.0F) p.hand_breadth = hand_size_problem(f.hand_breadth_mm);
   if (f.protocol_name().empty())
     p.protocol = "no protocol found in assets/protocols/";
   else if (const auto& chosen = f.protocols[static_cast<size_t>(f.protocol)]; !chosen.readable)
@@ -138,14 +138,14 @@ std::vector<SessionListing> list_sessions(const fs::path& root) {
     SessionListing s;
     s.dir = dir;
     s.group = group;
-    s.journal_written = fs::last_write_time(dir / session::kJournalFile, ec);
+    s.journal_written = fs::last_write_time(dir / kJournalFile, ec);
     try {
-      const session::SessionState st = session::read_session_state(dir);
+      const SessionState st = read_session_state(dir);
       s.subject = st.subject().subject_id;
       s.protocol = st.protocol.name;
       s.total = static_cast<int>(st.trials.size());
-      s.accepted = st.count(session::TrialStatus::kAccepted);
-      s.interrupted = st.count(session::TrialStatus::kInterrupted);
+      s.accepted = st.count(TrialStatus::kAccepted);
+      s.interrupted = st.count(TrialStatus::kInterrupted);
     } catch (const std::exception& ex) {
       s.problem = ex.what();
     }
@@ -153,14 +153,14 @@ std::vector<SessionListing> list_sessions(const fs::path& root) {
   };
   for (const auto& e : fs::directory_iterator(root, ec)) {
     if (!e.is_directory(ec)) continue;
-    if (session::is_session_folder(e.path())) {
+    if (is_session_folder(e.path())) {
       add(e.path(), "");
       continue;
     }
     // One level only: deeper folders are more likely to be copies, exports or caches than sessions.
     std::error_code inner_ec;
     for (const auto& inner : fs::directory_iterator(e.path(), inner_ec)) {
-      if (inner.is_directory(inner_ec) && session::is_session_folder(inner.path()))
+      if (inner.is_directory(inner_ec) && is_session_folder(inner.path()))
         add(inner.path(), e.path().filename().string());
     }
   }

@@ -3,14 +3,14 @@
 // hand sizes, operator, notes, protocol from assets/protocols/, Vicon target and database, folder)
 // or an existing session folder to resume, and how to record (backend, simulated time). The
 // panel draws these fields and shows check_setup_form()'s problem under each; the spec is built
-// by the same function `lmc session new` uses (devices/session/new_session_spec.h), and every
+// by the same function `lmc session new` uses (devices/session_runner/new_session_spec.h), and every
 // check calls the core rule it mirrors, so the form refuses exactly what the folder would.
 #include <filesystem>
 #include <string>
 #include <vector>
 
 #include "core/session/session_folder.h"
-#include "devices/session/new_session_spec.h"
+#include "devices/session_runner/new_session_spec.h"
 #include "ui/model/record/record_session_model.h"
 
 namespace lmc::ui {
@@ -49,7 +49,7 @@ struct RecordSetupForm {
   std::string protocol_name() const;  // "" when none is shipped
   devices::NewSessionFields fields() const;
   // Throws lmc::Error (the form's problems are checked first by the tab).
-  session::NewSessionSpec spec() const;
+  NewSessionSpec spec() const;
   std::filesystem::path new_session_dir() const;  // the folder, or the default for the subject
   std::filesystem::path sessions_folder() const;  // sessions_root as a path
   RecordSettings settings() const;

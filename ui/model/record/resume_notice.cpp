@@ -2,7 +2,7 @@
 
 namespace lmc::ui {
 
-std::vector<std::string> resume_notice(const session::SessionState& st, const std::vector<std::string>& recovered) {
+std::vector<std::string> resume_notice(const SessionState& st, const std::vector<std::string>& recovered) {
   std::vector<std::string> lines;
   for (const auto& name : recovered) {
     int attempt = 0;
@@ -14,7 +14,7 @@ std::vector<std::string> resume_notice(const session::SessionState& st, const st
                     name + ".attempt" + std::to_string(attempt) + "/.");
   }
   const int total = static_cast<int>(st.trials.size());
-  const int accepted = st.count(session::TrialStatus::kAccepted);
+  const int accepted = st.count(TrialStatus::kAccepted);
   std::string where = "Resumed: " + std::to_string(accepted) + " of " + std::to_string(total) + " trials accepted. ";
   const int next = st.next_trial();
   if (next < 0) {

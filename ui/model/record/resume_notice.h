@@ -11,6 +11,6 @@
 namespace lmc::ui {
 
 // `recovered`: the trials SessionFolder::open found recording when their program stopped.
-std::vector<std::string> resume_notice(const session::SessionState& state, const std::vector<std::string>& recovered);
+std::vector<std::string> resume_notice(const SessionState& state, const std::vector<std::string>& recovered);
 
 }  // namespace lmc::ui

@@ -30,9 +30,9 @@ struct SubjectView {
 // The parts of the Record tab's state the subject screen depends on.
 struct SubjectViewInputs {
   bool has_session = false;
-  bool finished = false;                     // every trial accepted
-  const session::TrialType* type = nullptr;  // the current (or recording) trial's
-  const session::ProtocolPose* pose = nullptr;
+  bool finished = false;            // every trial accepted
+  const TrialType* type = nullptr;  // the current (or recording) trial's
+  const ProtocolPose* pose = nullptr;
   std::string sim_motion;                          // the trial's "<pose>/<motion>"
   double hand_length_mm = 0, hand_breadth_mm = 0;  // the subject's, 0 when not measured
   std::optional<devices::TrialPhase> phase;        // set while a trial runs

@@ -14,7 +14,7 @@ std::array<Vec3, kNumHandPoints> points_at(const HandTrack& track, int f) {
 
 }  // namespace
 
-std::optional<ReplayFrame> replay_frame(const TrialResult& r, double t_s) {
+std::optional<ReplayFrame> replay_frame(const TrialAnalysis& r, double t_s) {
   const int n = r.fused.frame_count;
   if (n <= 0) return std::nullopt;
   ReplayFrame out;

@@ -22,6 +22,6 @@ struct ReplayFrame {
 };
 
 // The frame nearest to `t_s` (clamped to the trial); nothing for a trial without frames.
-std::optional<ReplayFrame> replay_frame(const TrialResult& result, double t_s);
+std::optional<ReplayFrame> replay_frame(const TrialAnalysis& result, double t_s);
 
 }  // namespace lmc::ui

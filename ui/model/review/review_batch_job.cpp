@@ -17,9 +17,9 @@ std::string subject_of(const TrialSources& job, const std::filesystem::path& fol
   const std::filesystem::path dir = job.lmc.parent_path();
   if (const auto it = ids.find(dir); it != ids.end()) return it->second;
   std::string id;
-  if (session::is_session_folder(dir)) {
+  if (is_session_folder(dir)) {
     try {
-      id = session::read_session_state(dir).subject().subject_id;
+      id = read_session_state(dir).subject().subject_id;
     } catch (const std::exception&) {
       id.clear();  // unreadable here: the batch's notes say why; the folder names it meanwhile
     }
@@ -39,7 +39,7 @@ ReviewBatch run_review_batch(const ReviewBatchInput& input, std::stop_token stop
   std::vector<std::filesystem::path> folder_of;
   for (const auto& folder : input.folders) {
     try {
-      auto found = session::trial_sources_for_input(folder, std::nullopt, &batch.notes);
+      auto found = trial_sources_for_input(folder, std::nullopt, &batch.notes);
       for (auto& j : found) {
         jobs.push_back(std::move(j));
         folder_of.push_back(folder);

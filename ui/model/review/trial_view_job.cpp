@@ -7,7 +7,7 @@ TrialView load_trial_view(const lmc::TrialSources& job, const BatchOptions& opti
   view.trial = job.trial;
   if (stop.stop_requested()) return view;
   ProcessedTrial out;
-  auto result = std::make_shared<const TrialResult>(process_sources_in_full(job, options, &out));
+  auto result = std::make_shared<const TrialAnalysis>(process_sources_in_full(job, options, &out));
   if (stop.stop_requested()) return view;
   view.series = trial_series(*result);
   view.layout = resolve_layout(job, options.layout, nullptr);

@@ -15,7 +15,7 @@ namespace lmc::ui {
 struct TrialView {
   std::string trial;
   TrialSeries series;
-  std::shared_ptr<const TrialResult> result;
+  std::shared_ptr<const TrialAnalysis> result;
   Layout layout;  // the one the trial was processed with (the 3D replay draws its controllers)
   std::vector<std::string> warnings;
 };

@@ -22,8 +22,7 @@ inline ImVec4 verdict_colour(const std::string& verdict) {
   return {0.6F, 0.6F, 0.6F, 1.0F};
 }
 
-inline StatusLook trial_status_look(const session::TrialState& t, bool recording_now) {
-  using session::TrialStatus;
+inline StatusLook trial_status_look(const TrialState& t, bool recording_now) {
   const ImVec4 grey{0.55F, 0.55F, 0.55F, 1.0F};
   if (recording_now || t.status == TrialStatus::kRecording) return {"(o)", "recording", {1.0F, 0.25F, 0.25F, 1.0F}};
   const std::string verdict = t.attempts.empty() ? std::string() : t.attempts.back().verdict();

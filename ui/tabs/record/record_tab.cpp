@@ -233,9 +233,9 @@ class RecordTab final : public Tab {
           subject_clash_.push_back(s);
       }
       for (const auto& dir : context_.review_folders()) {
-        if (!session::is_session_folder(dir)) continue;
+        if (!is_session_folder(dir)) continue;
         try {
-          if (session::read_session_state(dir).subject().subject_id != form_.subject) continue;
+          if (read_session_state(dir).subject().subject_id != form_.subject) continue;
         } catch (const std::exception&) {
           continue;
         }
@@ -435,7 +435,7 @@ class RecordTab final : public Tab {
       RecordSettings settings = form_.settings();
       settings.fast = false;
       settings.countdown_s = 0;
-      session::NewSessionSpec spec = form_.spec();
+      NewSessionSpec spec = form_.spec();
       // Trials of 6 s instead of the quick protocol's 3: the pictures taken mid-trial (the tab,
       // the subject screen) all fall inside one trial even at software rendering's frame rate.
       spec.duration_override_s = 6.0;

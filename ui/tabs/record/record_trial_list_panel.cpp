@@ -11,7 +11,7 @@ namespace lmc::ui {
 void RecordTrialListPanel::draw() {
   anchors_.clear();  // only what this frame drew
   RecordSessionModel& model = *model_;
-  const session::SessionState& state = model.state();
+  const SessionState& state = model.state();
   const int current = model.current_trial();
   const int recording = model.recording_trial();
   int clicked = -1;

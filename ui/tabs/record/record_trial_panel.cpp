@@ -233,7 +233,7 @@ TrialPanelAction RecordTrialPanel::draw() {
     // The block's checks run on the worker: say so where Start will appear (a Space pressed now
     // is answered in the status line).
     ImGui::TextUnformatted("Pre-flight: checking the controllers, Vicon, disk and folder...");
-  } else if (!model.busy() && trial.status == session::TrialStatus::kAccepted) {
+  } else if (!model.busy() && trial.status == TrialStatus::kAccepted) {
     // A trial picked in the list that is already kept: Start would be refused, so it is not offered.
     ImGui::TextColored(kGreen, "%s is accepted.", trial.plan.name.c_str());
     ImGui::TextDisabled("R records it again (this attempt is kept under superseded/); pick another trial in the list.");
@@ -241,7 +241,7 @@ TrialPanelAction RecordTrialPanel::draw() {
     if (big_button("Start  [Space]", ImVec4(0.15F, 0.55F, 0.25F, 1.0F))) action = TrialPanelAction::kStart;
     anchors_.remember("start");
   }
-  if (trial.attempts.size() > 0 && trial.status != session::TrialStatus::kAccepted)
+  if (trial.attempts.size() > 0 && trial.status != TrialStatus::kAccepted)
     ImGui::TextDisabled("attempt %zu of this trial", trial.attempts.size() + 1);
   verdict_section(action);
   live_view();

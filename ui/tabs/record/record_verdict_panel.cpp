@@ -24,7 +24,7 @@ std::string percent(double f) {
   return buf;
 }
 
-void key_figures(const session::QualityReport& q) {
+void key_figures(const QualityReport& q) {
   ImGui::Text("Recorded %.1f of %.1f s  ·  hand present %s", q.duration_s, q.planned_s,
               percent(q.hand_fraction).c_str());
   if (!q.finger_seen_fraction.empty()) {
@@ -48,7 +48,7 @@ void key_figures(const session::QualityReport& q) {
 
 // Each controller's hand presence (0-1) and fingers seen (0-5) over the trial, one colour per
 // slot as in the live view; the worst finger's seen-by count in white.
-void timeline(const session::QualityTimeline& t) {
+void timeline(const QualityTimeline& t) {
   if (t.slices() < 2) return;
   std::vector<TimelineSeries> hands;
   std::vector<TimelineSeries> fingers;
@@ -94,7 +94,7 @@ VerdictAction RecordVerdictPanel::draw() {
     if (a->quality->reasons.empty()) ImGui::BulletText("every check passed");
     verdict_panel::key_figures(*a->quality);
   }
-  const bool accepted = trial.status == session::TrialStatus::kAccepted;
+  const bool accepted = trial.status == TrialStatus::kAccepted;
   if (!model.busy() && !model.accept_question().empty()) {
     // The question Enter opened: No is the default (Enter again), keeping takes a Y or a click.
     ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0F, 0.75F, 0.2F, 1.0F));

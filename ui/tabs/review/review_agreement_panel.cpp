@@ -24,7 +24,7 @@ std::string num(double v, int decimals, bool signed_value = false) {
   return format_readable(v, decimals, signed_value);
 }
 
-std::string with_ci(double v, const stats::Interval& ci, int decimals, bool signed_value = false) {
+std::string with_ci(double v, const Interval& ci, int decimals, bool signed_value = false) {
   if (!std::isfinite(v)) return "-";
   // One subject gives a bias but no interval for it: the value alone, the tooltip says why.
   if (!std::isfinite(ci.low) || !std::isfinite(ci.high)) return num(v, decimals, signed_value) + "  [no CI]";
@@ -81,7 +81,7 @@ void draw_measure_table(const AgreementGroup& g, int& measure, WidgetAnchors& an
     ImGui::Text("%zu (%zu)", a.n_trials, a.n_subjects);
     // A missing number says why rather than showing a dash where it can (one subject gives no
     // between-subject variance, so no limits); the row's tooltip has the whole reason.
-    const auto cell = [&a](double v, const stats::Interval& ci, int decimals, bool signed_value) {
+    const auto cell = [&a](double v, const Interval& ci, int decimals, bool signed_value) {
       ImGui::TableNextColumn();
       if (std::isfinite(v)) {
         ImGui::TextUnformatted(with_ci(v, ci, decimals, signed_value).c_str());
@@ -237,7 +237,7 @@ void ReviewAgreementPanel::draw(const PictureRenderer& renderer) {
   const float height = std::max(160.0F, ImGui::GetContentRegionAvail().y - 4);
   ImGui::BeginChild("bland_altman", ImVec2(width * 0.5F, height), false);
   if (!group.measures.empty()) {
-    const figures::Figure figure = bland_altman_figure(group, group.measures[static_cast<size_t>(measure_)]);
+    const Figure figure = bland_altman_figure(group, group.measures[static_cast<size_t>(measure_)]);
     png_.draw("ba_png", renderer,
               figure_stem("bland-altman-" + group.layout + "-" + group.pose + "-" +
                           group.measures[static_cast<size_t>(measure_)].measure.name),

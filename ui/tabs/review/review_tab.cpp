@@ -167,7 +167,7 @@ class ReviewTab final : public Tab {
       const auto& groups = state_->agreement().table.groups;
       if (png != nullptr && *png != '\0' && context_.picture_renderer() && !groups.empty() &&
           !groups.back().measures.empty()) {
-        const figures::Figure figure = bland_altman_figure(groups.back(), groups.back().measures.front());
+        const Figure figure = bland_altman_figure(groups.back(), groups.back().measures.front());
         context_.picture_renderer()(1000, 700, png, [&figure] { draw_figure_filling("ba", figure); });
       }
     }
