@@ -261,7 +261,10 @@ void find_overflowing_windows(std::vector<CutText>& out) {
   ImGuiContext& g = *GImGui;
   for (const ImGuiWindow* w : g.Windows) {
     if (!w->WasActive || w->Hidden || w->ScrollbarX || (w->Flags & ImGuiWindowFlags_Tooltip) != 0) continue;
-    const float room = w->ContentRegionRect.GetWidth();
+    // Past the window's own right edge: a table may reach into the padding and under a scrollbar,
+    // which hides nothing written.
+    const float start = w->Pos.x + w->WindowPadding.x - w->Scroll.x;
+    const float room = w->Pos.x + w->Size.x - start;
     if (w->ContentSize.x > room + 1.0f) {
       out.push_back({w->Name, "",
                      "content " + std::to_string(static_cast<int>(std::lround(w->ContentSize.x))) + " px wide in " +
