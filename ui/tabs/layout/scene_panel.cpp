@@ -272,6 +272,8 @@ void ScenePanel::draw_overlays(ImDrawList* dl) {
   const ImRect bar_box = heat_bar ? ImRect(ImVec2(image_max.x - bar_w - 24, image_max.y - 14 - line * 3.6f - 10),
                                            ImVec2(image_max.x - 6, image_max.y - 6))
                                   : ImRect();
+  // The view as the window shows it (its right edge may lie under the window's padding).
+  const ImVec2 clip_min = dl->GetClipRectMin(), clip_max = dl->GetClipRectMax();
   std::vector<const SceneLabel*> shown;
   std::vector<LabelBox> boxes;
   for (const SceneLabel& l : scene_.labels) {
@@ -288,8 +290,8 @@ void ScenePanel::draw_overlays(ImDrawList* dl) {
     const SceneLabel& l = *shown[i];
     const ImVec2 size(boxes[i].width - 6.0f, boxes[i].height - 2.0f);
     // Its shadow reaches a pixel further right and down.
-    const ImVec2 pos(std::clamp(boxes[i].x + 3.0f, image_min_.x, std::max(image_min_.x, image_max.x - size.x - 1.0f)),
-                     std::clamp(boxes[i].y + 1.0f, image_min_.y, std::max(image_min_.y, image_max.y - size.y - 1.0f)));
+    const ImVec2 pos(std::clamp(boxes[i].x + 3.0f, clip_min.x, std::max(clip_min.x, clip_max.x - size.x - 2.0f)),
+                     std::clamp(boxes[i].y + 1.0f, clip_min.y, std::max(clip_min.y, clip_max.y - size.y - 2.0f)));
     const ImRect text_box(pos, ImVec2(pos.x + size.x + 1.0f, pos.y + size.y + 1.0f));
     if (text_box.Overlaps(legend_box) || (heat_bar && text_box.Overlaps(bar_box))) continue;
     if (l.emphasised) {
