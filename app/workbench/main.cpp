@@ -1,6 +1,7 @@
 // lmc-workbench — the desktop workbench. `--capture DIR [--tab NAME]` renders tabs to PNG and exits.
 #include <CLI/CLI.hpp>
 #include <csignal>
+#include <cstdio>
 #include <filesystem>
 #include <iostream>
 #include <utility>
@@ -45,6 +46,20 @@ int main(int argc, char** argv) {
   std::string leapc_library;
   app.add_option("--leapc-library", leapc_library,
                  "The LeapC library to load (else LMC_LEAPC_LIBRARY, else where Ultraleap installs it)");
+  std::string also_size;
+  bool check_text = false;
+  app.add_option("--also-size", also_size,
+                 "With --capture: every picture again at this window size, WxH (NAME@WxH.png)")
+      ->check([](const std::string& v) {
+        int w = 0, h = 0;
+        char x = 0;
+        return std::sscanf(v.c_str(), "%d%c%d", &w, &x, &h) == 3 && x == 'x' && w >= 640 && h >= 480
+                   ? std::string()
+                   : std::string("expected WxH, at least 640x480");
+      });
+  app.add_flag("--check-text", check_text,
+               "With --capture: fail (exit 3) when a picture shows text cut by its window or its widget, shortened "
+               "with an ellipsis, or drawn over other text; the list in DIR/cut-text.txt");
   app.add_option("--size", width, "Window width in pixels")->check(CLI::Range(640, 7680));
   app.add_option("--height", height, "Window height in pixels")->check(CLI::Range(480, 4320));
   CLI11_PARSE(app, argc, argv);
@@ -56,7 +71,10 @@ int main(int argc, char** argv) {
 
   try {
     if (!capture_dir.empty()) {
-      return lmc::ui::run_capture(capture_dir, capture_tabs, width, height, {review.begin(), review.end()});
+      lmc::ui::CaptureOptions capture{capture_dir, capture_tabs, width, height, {review.begin(), review.end()}};
+      if (!also_size.empty()) std::sscanf(also_size.c_str(), "%dx%d", &capture.also_width, &capture.also_height);
+      capture.check_text = check_text;
+      return lmc::ui::run_capture(capture);
     }
     lmc::ui::ShellStartup startup;
     if (subject_screen_opt->count() > 0) {

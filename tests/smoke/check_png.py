@@ -2,6 +2,7 @@
 """Checks captured PNGs: each has the expected size and more than one colour.
 
 Reads PNGs with zlib only (no third-party modules) so the check runs on a bare Debian."""
+import re
 import struct
 import sys
 import zlib
@@ -77,7 +78,10 @@ def main():
                 if 50 <= y < h - 30:
                     band[c] = band.get(c, 0) + 1
         content = 1 - max(band.values()) / sum(band.values()) if band else 0
-        ok = (w, h) == (want_w, want_h) and len(colours) > 8 and content > min_content
+        # NAME@WxH.png is a picture taken again at a second window size (--also-size).
+        size = re.search(r"@(\d+)x(\d+)$", p.stem)
+        want = (int(size.group(1)), int(size.group(2))) if size else (want_w, want_h)
+        ok = (w, h) == want and len(colours) > 8 and content > min_content
         print(f"{p.name}: {w}x{h}, {len(colours)} sampled colours, {100 * content:.1f} % drawn on: "
               f"{'ok' if ok else 'FAIL'}")
         status |= 0 if ok else 1

@@ -3,7 +3,8 @@
 # time, the simulated rig): a new `quick` session with the subject screen open (F2), the pre-flight,
 # the first trial, a note, Close, Ctrl+Q; the session reopened with --session, its second trial
 # killed with SIGKILL mid-trial; reopened again: the resume, the trial recorded again, Close, Ctrl+Q;
-# then the Review tab opening the session, and in the Layout tab an optimiser search started and
+# then the Review tab opening the session and exporting it as BIDS then a trial as C3D (into its own
+# folder, not the dataset), and in the Layout tab an optimiser search started and
 # cancelled (its best-so-far layout is evaluated, never shown as zeros); then a careless operator in a
 # 1024x700 window (the same subject id twice, Enter after Esc in the countdown, Ctrl+Q while
 # recording). Every workbench must end with exit code 0 (Close after a
@@ -22,6 +23,8 @@ cat > "$work/drive.sh" <<'DRIVE'
 #!/usr/bin/env bash
 set -eu
 workbench=$1; session=$2; work=$3
+# shellcheck source=tests/smoke/xdotool_lib.sh
+source "$4"
 journal="$session/journal.jsonl"
 export LMC_SUBJECT_TRACE="$work/subject-trace.txt" LMC_STATUS_TRACE="$work/status-trace.txt"
 pid=""
@@ -33,38 +36,11 @@ wait_for() {
     if ! kill -0 "$pid" 2>/dev/null; then echo "the workbench exited while waiting for $what"; cat "$work/workbench.log"; exit 1; fi
     sleep 0.1
   done
-  # What the screen showed, when ImageMagick is there to take it.
-  if command -v import >/dev/null; then import -window root "$work/timed-out.png" && echo "screen: $work/timed-out.png"; fi
+  shot timed-out
   echo "timed out waiting for $what; journal:"; cat "$journal"
   echo "status lines:"; cat "$work/status-trace.txt" 2>/dev/null || true
   echo "subject screen:"; tail -40 "$work/subject-trace.txt" 2>/dev/null || true
   exit 1
-}
-press() { xdotool key --clearmodifiers "$1"; }
-# A click held for a few frames (a press and release inside one frame can be missed), at window
-# coordinates of the 1280x800 screen.
-click() {
-  xdotool mousemove --window "$window" "$1" "$2"
-  sleep 0.2
-  xdotool mousedown 1
-  sleep 0.15
-  xdotool mouseup 1
-}
-# Waits (up to 60 s) until the status bar has shown a line matching `pattern`.
-wait_for_status() {
-  for _ in $(seq 600); do
-    grep -q -- "$1" "$work/status-trace.txt" 2>/dev/null && return 0
-    kill -0 "$pid" 2>/dev/null || { echo "the workbench exited while waiting for: $2"; cat "$work/workbench.log"; exit 1; }
-    sleep 0.1
-  done
-  echo "timed out waiting for: $2; status lines:"; cat "$work/status-trace.txt"; exit 1
-}
-# Starts the workbench and gives its window the keyboard.
-start() {
-  "$workbench" "$@" >> "$work/workbench.log" 2>&1 &
-  pid=$!
-  window=$(xdotool search --sync --onlyvisible --name "LMC Workbench" | head -1)
-  xdotool windowactivate --sync "$window" 2>/dev/null || xdotool windowfocus --sync "$window" || true
 }
 # The keyboard back to the operator's window, and a moment for the focus events to settle (a key
 # pressed while the window gains focus can be dropped).
@@ -145,8 +121,11 @@ sleep 1
 kill -0 "$pid" 2>/dev/null || { echo "Close after the resumed trial ended the workbench"; cat "$work/workbench.log"; exit 1; }
 quit "after the resume"
 
-# 4. The Review tab opens the session: both trials processed into the test's own cache.
-export LMC_CACHE_DIR="$work/cache"
+# 4. The Review tab opens the session: both trials processed into the test's own cache. Then
+# Export...: the session as a BIDS dataset, and after it the selected trial as C3D, which must land
+# in the per-trial exports' own folder, never in the dataset. Exports default under the sessions
+# folder: the test's own.
+export LMC_CACHE_DIR="$work/cache" LMC_SESSIONS_DIR="$work"
 start --tab review --review "$session"
 for _ in $(seq 600); do
   [ "$(find "$work/cache" -name '*.json' 2>/dev/null | wc -l)" -ge 2 ] && break
@@ -154,6 +133,19 @@ for _ in $(seq 600); do
   sleep 0.1
 done
 [ "$(find "$work/cache" -name '*.json' | wc -l)" -ge 2 ] || { echo "Review did not process the session"; exit 1; }
+wait_for_status "trial(s) ready" "Review's count of the trials"
+click 296 55      # Export... (its window opens in the middle of the 1280x800 window)
+sleep 1
+click 308 280     # The opened folders as a BIDS-motion dataset
+sleep 0.5
+click 357 424     # Export (under the BIDS options)
+wait_for_status "exported 2 trial(s) to $work/exports/bids-dataset" "the BIDS export"
+click 308 234     # The selected trial
+sleep 0.5
+click 357 400     # Export, as C3D
+wait_for_status "exported 1 trial(s) to $work/exports/trials-c3d" "the C3D export after the BIDS export"
+ls "$work"/exports/trials-c3d/*.c3d > /dev/null || { echo "no C3D file in $work/exports/trials-c3d"; exit 1; }
+if find "$work/exports/bids-dataset" -name '*.c3d' | grep .; then echo "the C3D export landed in the BIDS dataset"; exit 1; fi
 sleep 0.5
 quit "in Review"
 
@@ -169,7 +161,7 @@ click_until_status() {
       sleep 0.1
     done
   done
-  if command -v import >/dev/null; then import -window root "$work/timed-out.png" && echo "screen: $work/timed-out.png"; fi
+  shot timed-out
   echo "timed out waiting for: $4; status lines:"; cat "$work/status-trace.txt"; exit 1
 }
 start
@@ -186,7 +178,7 @@ quit "after the optimiser was cancelled"
 # subject id again (the question; A adds a second session of E2F), Esc in the countdown then Enter
 # (nothing to keep: refused, naming why), R, Space, Ctrl+Q while recording (asks; Enter keeps
 # recording), Ctrl+Q again and S (stop, keep, quit: exit 0).
-export LMC_SESSIONS_DIR="$work"  # the first session, $work/session (subject E2F), lies under it
+# LMC_SESSIONS_DIR is $work since step 4: the first session, $work/session (subject E2F), lies under it.
 start --tab record --size 1024 --height 700
 sleep 2
 click 135 100     # the subject id field of the set-up form: "S01" out, "E2F" in
@@ -230,7 +222,7 @@ wait "$pid" || status=$?
 echo "$second" > "$work/second-session.txt"
 DRIVE
 chmod +x "$work/drive.sh"
-xvfb-run -a -s "-screen 0 1280x800x24" "$work/drive.sh" "$workbench" "$session" "$work"
+xvfb-run -a -s "-screen 0 1280x800x24" "$work/drive.sh" "$workbench" "$session" "$work" "$(cd "$(dirname "$0")" && pwd)/xdotool_lib.sh"
 
 "$lmc" session status "$session" --json > "$work/status.json"
 python3 - "$work/status.json" "$session" "$work/subject-trace.txt" "$work/status-trace.txt" <<'CHECK'

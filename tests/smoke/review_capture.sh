@@ -2,9 +2,10 @@
 # The Review tab on a processed simulated session: a quick subject session is recorded
 # on the simulated rig, opened with --review, and the pictures (the trial against Vicon, the
 # agreement view, the study tables, Export… before and after exporting the trials shown as C3D) are
-# checked: present, window-sized, not one colour; the export wrote one C3D per trial. The
+# checked: present, window-sized, not one colour, at 1280x800 and 1024x700 with no text cut
+# (--check-text); the export wrote one C3D per trial. The
 # processing cache goes to the test's own folder, never the user's.
-set -eu
+set -eu -o pipefail
 lmc=${1:?usage: review_capture.sh LMC LMC_WORKBENCH OUT_DIR}
 bin=${2:?}
 out=${3:?}
@@ -14,7 +15,7 @@ rm -rf "$out"; mkdir -p "$out"
 export LMC_CACHE_DIR="$out/cache"
 mkdir -p "$out/png"
 LMC_REVIEW_PNG="$out/png/bland-altman.png" LMC_REVIEW_EXPORT_DIR="$out/export" \
-  xvfb-run -a -s "-screen 0 1280x800x24" "$bin" --capture "$out/shots" --tab review --review "$out/S01" | tee "$out/capture.log"
+  xvfb-run -a -s "-screen 0 1280x800x24" "$bin" --capture "$out/shots" --also-size 1024x700 --check-text --tab review --review "$out/S01" | tee "$out/capture.log"
 grep -q "review.png" "$out/capture.log"
 grep -q "review-agreement.png" "$out/capture.log"
 grep -q "review-study-tables.png" "$out/capture.log"

@@ -16,46 +16,24 @@ session="$work/session"
 "$lmc" session run "$session" --backend sim --fast --auto --quiet --seed 4 > "$work/run.log"
 export LMC_STATUS_TRACE="$work/status-trace.txt" LMC_CACHE_DIR="$work/cache"
 
-shot() {
-  if command -v xwd >/dev/null && command -v xwdtopnm >/dev/null && command -v pnmtopng >/dev/null; then
-    xwd -root -silent | xwdtopnm 2>/dev/null | pnmtopng > "$work/$1.png" && echo "screen: $work/$1.png"
-  fi
-}
-wait_for_status() {
-  for _ in $(seq 1200); do
-    grep -q -- "$1" "$work/status-trace.txt" 2>/dev/null && return 0
-    kill -0 "$pid" 2>/dev/null || { echo "the workbench exited while waiting for: $2"; cat "$work/workbench.log"; exit 1; }
-    sleep 0.1
-  done
-  shot timed-out
-  echo "timed out waiting for: $2; status lines:"; cat "$work/status-trace.txt"; exit 1
-}
-click() {
-  xdotool mousemove --window "$window" "$1" "$2"
-  sleep 0.2
-  xdotool mousedown 1
-  sleep 0.15
-  xdotool mouseup 1
-}
+# shellcheck source=tests/smoke/xdotool_lib.sh
+source "$(dirname "$0")/xdotool_lib.sh"
 
-"$workbench" --tab review --review "$session" >> "$work/workbench.log" 2>&1 &
-pid=$!
-window=$(xdotool search --sync --onlyvisible --name "LMC Workbench" | head -1)
-xdotool windowactivate --sync "$window" 2>/dev/null || xdotool windowfocus --sync "$window" || true
-wait_for_status "trial(s) ready" "Review to process the session"
+start --tab review --review "$session"
+wait_for_status "trial(s) ready" "Review to process the session" 1200
 sleep 1
 shot review
 # "Design a layout for these trials", in Review's top bar after Export...
 click 457 55
-wait_for_status "Layout: designing for 2 trial(s)" "the button to hand the trials to the Layout tab"
-wait_for_status "recorded frames" "the Layout tab to read the trials as its pose set"
+wait_for_status "Layout: designing for 2 trial(s)" "the button to hand the trials to the Layout tab" 1200
+wait_for_status "recorded frames" "the Layout tab to read the trials as its pose set" 1200
 sleep 1
 click 985 87  # the Optimiser panel's tab: the pose set and where it came from
 sleep 1.5
 shot layout
 # The pose set is part of the layout document (one undo step): undo it, so Ctrl+Q has nothing to ask.
 xdotool key --clearmodifiers ctrl+z
-wait_for_status "Undid Change pose set" "the pose set change to be undone"
+wait_for_status "Undid Change pose set" "the pose set change to be undone" 1200
 # On a loaded machine a key pressed while a frame takes long can be missed: press again until it ends.
 for _ in $(seq 20); do
   xdotool key --clearmodifiers ctrl+q

@@ -3,10 +3,12 @@
 #include <chrono>
 #include <cstdlib>
 #include <filesystem>
+#include <fstream>
 #include <iostream>
 #include <thread>
 #include <utility>
 
+#include "ui/app/capture/text_fit_check.h"
 #include "ui/app/subject_screen.h"
 #include "ui/app/workbench_shell.h"
 #include "ui/platform/gl_window.h"
@@ -54,9 +56,10 @@ int run_interactive(int width, int height, ShellStartup startup) {
   return 0;
 }
 
-int run_capture(const std::string& dir, const std::vector<std::string>& tab_ids, int width, int height,
-                const std::vector<std::filesystem::path>& review) {
-  std::vector<std::string> ids = tab_ids;
+int run_capture(const CaptureOptions& options) {
+  const std::string& dir = options.dir;
+  const int width = options.width, height = options.height;
+  std::vector<std::string> ids = options.tab_ids;
   if (ids.empty()) {
     for (const auto& info : tab_registry()) ids.push_back(info.id);
   }
@@ -71,7 +74,7 @@ int run_capture(const std::string& dir, const std::vector<std::string>& tab_ids,
   std::filesystem::create_directories(dir);
   GlWindow window(WindowOptions{width, height, false, "LMC Workbench"});
   ShellStartup startup;  // no recent-files path: a capture never touches the user's list
-  startup.review = review;
+  startup.review = options.review;
   WorkbenchShell shell(std::move(startup));
   install_picture_renderer(shell, window);
   // LMC_CAPTURE_HELP=walkthrough|shortcuts|about (1 = walkthrough) shows the Help window over
@@ -108,13 +111,28 @@ int run_capture(const std::string& dir, const std::vector<std::string>& tab_ids,
     }
   };
   int status = 0;
-  const auto take = [&](const std::string& name) {
+  std::ofstream cut_list;
+  int cuts = 0;
+  const auto check_text = [&](const std::string& picture) {
+    if (!options.check_text) return;
+    for (const CutText& cut : find_cut_text()) {
+      if (!cut_list.is_open()) cut_list.open(std::filesystem::path(dir) / "cut-text.txt");
+      const std::string line = picture + ": " + describe(cut);
+      cut_list << line << "\n";
+      std::cerr << "lmc-workbench: text cut in " << line << "\n";
+      ++cuts;
+    }
+  };
+  const auto take_at_size = [&](const std::string& name) {
     const auto path = (std::filesystem::path(dir) / (name + ".png")).string();
     window.begin_frame();
     shell.frame();
     window.end_frame();
     const bool of_subject = name.rfind("subject-screen", 0) == 0;
-    if (!of_subject) window.save_png(path);
+    if (!of_subject) {
+      window.save_png(path);
+      check_text(name);
+    }
     window.present();
     subject.frame(shell.context().subject_screen(), of_subject ? path : std::string());
     if (of_subject && !subject.shown()) {
@@ -124,6 +142,18 @@ int run_capture(const std::string& dir, const std::vector<std::string>& tab_ids,
       return;
     }
     std::cout << "wrote " << path << "\n";
+  };
+  // The second size (a laptop's 1024 x 700) shows the same state: only the layout changes, so a
+  // few frames settle it. The subject screen has its own window and size.
+  const bool also = options.also_width > 0 && options.also_height > 0;
+  const auto take = [&](const std::string& name) {
+    take_at_size(name);
+    if (!also || name.rfind("subject-screen", 0) == 0) return;
+    window.set_size(options.also_width, options.also_height);
+    for (int i = 0; i < 3; ++i) draw_frame();
+    take_at_size(name + "@" + std::to_string(options.also_width) + "x" + std::to_string(options.also_height));
+    window.set_size(width, height);
+    for (int i = 0; i < 3; ++i) draw_frame();
   };
   for (const auto& id : ids) {
     size_t index = 0;
@@ -139,6 +169,10 @@ int run_capture(const std::string& dir, const std::vector<std::string>& tab_ids,
       settle(tab, 2);
       take(extra);
     }
+  }
+  if (status == 0 && cuts > 0) {
+    std::cerr << "lmc-workbench: " << cuts << " piece(s) of text not shown whole (" << dir << "/cut-text.txt)\n";
+    return 3;
   }
   return status;
 }

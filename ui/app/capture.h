@@ -9,11 +9,22 @@
 namespace lmc::ui {
 
 int run_interactive(int width, int height, ShellStartup startup = {});
-// Renders each requested tab (all when empty) in a hidden window to DIR/<tab>.png, plus the
-// tab's extra pictures (Tab::extra_captures: DIR/<name>.png); returns 0 when every PNG was
-// written, 1 when one could not be, 2 for an unknown tab name.
-// `review`: folders the Review tab opens first (`--review`), so its picture shows real trials.
-int run_capture(const std::string& dir, const std::vector<std::string>& tab_ids, int width, int height,
-                const std::vector<std::filesystem::path>& review = {});
+struct CaptureOptions {
+  std::string dir;
+  std::vector<std::string> tab_ids;  // all tabs when empty
+  int width = 1280, height = 800;
+  // Folders the Review tab opens first (`--review`), so its picture shows real trials.
+  std::vector<std::filesystem::path> review;
+  // Each picture again at this window size (DIR/<name>@WxH.png) when both are above 0.
+  int also_width = 0, also_height = 0;
+  // Every picture's text checked (ui/app/capture/text_fit_check.h); what is cut is listed on
+  // stderr and in DIR/cut-text.txt, and the capture fails.
+  bool check_text = false;
+};
+
+// Renders each requested tab in a hidden window to DIR/<tab>.png, plus the tab's extra pictures
+// (Tab::extra_captures: DIR/<name>.png); returns 0 when every PNG was written (and, when checked,
+// no text is cut), 1 when one could not be written, 2 for an unknown tab name, 3 for cut text.
+int run_capture(const CaptureOptions& options);
 
 }  // namespace lmc::ui

@@ -125,6 +125,13 @@ void GlWindow::set_title(const std::string& title) {
   glfwSetWindowTitle(window_, title.c_str());
 }
 
+void GlWindow::set_size(int width, int height) {
+  glfwSetWindowSize(window_, width, height);
+  for (int i = 0; i < 100 && (framebuffer_width() != width || framebuffer_height() != height); ++i) {
+    glfwWaitEventsTimeout(0.01);
+  }
+}
+
 void GlWindow::begin_frame() {
   deliver_held_releases();
   glfwPollEvents();

@@ -25,6 +25,9 @@ class GlWindow {
   bool should_close() const;
   void set_should_close(bool close);
   void set_title(const std::string& title);
+  // Resizes the window and waits (up to a second) until the display server reports the new size,
+  // so the next frame lays out at it.
+  void set_size(int width, int height);
   void begin_frame();  // poll events, start an ImGui frame
   void end_frame();    // render ImGui into the back buffer (no swap)
   void present();      // swap buffers

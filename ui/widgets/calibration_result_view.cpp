@@ -70,7 +70,7 @@ void draw_calibration_result(const std::string& trial, const CalibrationResult& 
   const std::string disagreement =
       "Disagreement between controllers: " + calibration_mm_text(r.disagreement_before_mm) + " > " +
       calibration_mm_text(r.disagreement_after_mm) + " mm RMS";
-  ImGui::TextUnformatted(disagreement.c_str());
+  ImGui::TextWrapped("%s", disagreement.c_str());
   const auto warnings = r.all_warnings();
   if (warnings.empty()) ImGui::TextColored(kCalibrationGood, "No warnings.");
   for (const auto& w : file_warnings) ImGui::TextColored(kCalibrationWarningRed, "%s", w.c_str());

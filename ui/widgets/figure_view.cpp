@@ -131,7 +131,9 @@ void draw_figure_view(const char* id, const Figure& f, float height_px) {
   ImGui::TextDisabled("%s", axis_title(f.x).c_str());
   ImGui::SameLine(0, 24);
   ImGui::TextDisabled("y: %s", axis_title(f.y).c_str());
+  ImGui::PushTextWrapPos(0.0F);  // a note wider than the view goes on over two lines
   for (const auto& note : f.notes) ImGui::TextDisabled("%s", note.c_str());
+  ImGui::PopTextWrapPos();
   ImGui::PopID();
 }
 

@@ -7,6 +7,7 @@
 
 #include "core/review/trial_series.h"
 #include "ui/model/plot/label_runs.h"
+#include "ui/widgets/flow_row.h"
 #include "ui/widgets/plot_frame.h"
 #include "ui/widgets/series_plot.h"
 
@@ -96,10 +97,12 @@ void draw_label_legend() {
   } items[] = {{1, "seen (ray-traced)"}, {0, "internal model (hidden)"}, {-1, "no hand"}};
   bool first = true;
   for (const auto& it : items) {
-    if (!first) ImGui::SameLine(0, 14);
+    const float box = ImGui::GetTextLineHeight() * 0.7F;
+    // Beside the last item where it fits, else on the next line (a narrow window).
+    const float width = box + 2 + ImGui::GetStyle().ItemSpacing.x + ImGui::CalcTextSize(it.text).x;
+    if (!first) same_line_or_wrap(width, 14);
     first = false;
     const ImVec2 at = ImGui::GetCursorScreenPos();
-    const float box = ImGui::GetTextLineHeight() * 0.7F;
     ImGui::GetWindowDrawList()->AddRectFilled(ImVec2(at.x, at.y + 3), ImVec2(at.x + box, at.y + 3 + box),
                                               label_colour(it.label));
     ImGui::Dummy(ImVec2(box + 2, box));

@@ -26,14 +26,16 @@ std::string displayable(std::string text) {
 }  // namespace
 
 void draw_markdown_view(const char* id, const std::vector<MarkdownBlock>& blocks) {
-  ImGui::BeginChild(id, ImVec2(0, 0), false);
+  // A table wider than the view scrolls sideways; headings and text wrap.
+  ImGui::BeginChild(id, ImVec2(0, 0), false, ImGuiWindowFlags_HorizontalScrollbar);
+  ImGui::PushTextWrapPos(0.0F);
   int table = 0;
   for (const auto& b : blocks) {
     switch (b.kind) {
       case MarkdownBlock::Kind::kHeading:
         ImGui::Spacing();
         if (b.level <= 1) {
-          ImGui::TextUnformatted(displayable(b.text).c_str());
+          ImGui::TextWrapped("%s", displayable(b.text).c_str());
           ImGui::Separator();
         } else {
           ImGui::TextColored(ImVec4(0.65F, 0.80F, 1.0F, 1.0F), "%s", displayable(b.text).c_str());
@@ -72,6 +74,7 @@ void draw_markdown_view(const char* id, const std::vector<MarkdownBlock>& blocks
       }
     }
   }
+  ImGui::PopTextWrapPos();
   ImGui::EndChild();
 }
 

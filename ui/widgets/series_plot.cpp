@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdio>
 #include <limits>
+#include <string>
 
 #include "ui/model/plot/axis_ticks.h"
 #include "ui/model/plot/min_max_decimation.h"
@@ -133,12 +134,19 @@ void SeriesPlot::draw(const char* id, const std::vector<PlotSeries>& series, con
     dl->AddLine(ImVec2(p0.x, y), ImVec2(p1.x, y), kPlotGridLine);
     const std::string text = o.log_y ? series_tick_text(std::pow(10.0, t)) : series_tick_text(t);
     const ImVec2 size = ImGui::CalcTextSize(text.c_str());
-    dl->AddText(ImVec2(p0.x - size.x - 4, y - size.y * 0.5F), kPlotTickText, text.c_str());
+    // A tick at the very top moves down into the plot's room rather than lose its top half.
+    dl->AddText(ImVec2(p0.x - size.x - 4, std::max(y - size.y * 0.5F, top.y - 2)), kPlotTickText, text.c_str());
   }
   for (const double t : nice_ticks(view_lo, view_hi, std::max(2, static_cast<int>(plot_w / 90)))) {
     const float x = to_x(t);
     dl->AddLine(ImVec2(x, p0.y), ImVec2(x, p1.y), kPlotGridLine);
-    if (!o.x_label.empty()) dl->AddText(ImVec2(x - 8, p1.y + 2), kPlotTickText, series_tick_text(t).c_str());
+    if (!o.x_label.empty()) {
+      // The last tick's number ends at the plot's right edge rather than lose its last digits
+      // ("8" for 80).
+      const std::string text = series_tick_text(t);
+      const float w = ImGui::CalcTextSize(text.c_str()).x;
+      dl->AddText(ImVec2(std::min(x - 8, p1.x - w), p1.y + 2), kPlotTickText, text.c_str());
+    }
   }
   dl->PopClipRect();
 

@@ -10,6 +10,8 @@
 #include <filesystem>
 #include <functional>
 #include <thread>
+#include <utility>
+#include <vector>
 
 #include <gtest/gtest.h>
 
@@ -40,13 +42,16 @@ NewSessionSpec quick() {
   return spec;
 }
 
-void poll_until(RecordSessionModel& m, const std::function<bool()>& done, double timeout_s = 60) {
+// Polls until `done` or the deadline; returns the status lines poll() gave.
+std::vector<StatusReport> poll_until(RecordSessionModel& m, const std::function<bool()>& done, double timeout_s = 60) {
+  std::vector<StatusReport> lines;
   const auto deadline = std::chrono::steady_clock::now() + std::chrono::duration<double>(timeout_s);
   while (std::chrono::steady_clock::now() < deadline) {
-    m.poll();
-    if (done()) return;
+    if (StatusReport line = m.poll(); !line.empty()) lines.push_back(std::move(line));
+    if (done()) break;
     std::this_thread::sleep_for(std::chrono::milliseconds(10));
   }
+  return lines;
 }
 
 TEST(RecordLiveFusion, ARealTimeTrialShowsTheFusedHandAndItsLatencyThenEscAbortsItKeptAndRedoable) {
@@ -72,9 +77,13 @@ TEST(RecordLiveFusion, ARealTimeTrialShowsTheFusedHandAndItsLatencyThenEscAborts
   EXPECT_NE(m.add_note("   "), "");
   ASSERT_EQ(m.add_note("  subject coughed at 1 s "), "");
 
-  // Esc.
+  // Esc. The status line is an error because the verdict is fail, as the model says (the tab
+  // used to guess it from the line's words).
   ASSERT_EQ(m.abort_trial(), "");
-  poll_until(m, [&] { return !m.busy() && m.last_attempt().has_value(); });
+  const auto reports = poll_until(m, [&] { return !m.busy() && m.last_attempt().has_value(); });
+  ASSERT_EQ(reports.size(), 1U);
+  EXPECT_EQ(reports[0].severity, Severity::kError) << reports[0].text;
+  EXPECT_EQ(reports[0].text.rfind("Naiv_Static101: fail", 0), 0U) << reports[0].text;
   ASSERT_TRUE(m.last_attempt());
   EXPECT_EQ(m.last_attempt()->outcome, "aborted");
   EXPECT_EQ(m.last_attempt()->reason, "aborted by the operator");

@@ -44,7 +44,7 @@ std::vector<std::string> poll_until(RecordSessionModel& m, const std::function<b
   std::vector<std::string> lines;
   const auto deadline = std::chrono::steady_clock::now() + std::chrono::duration<double>(timeout_s);
   while (std::chrono::steady_clock::now() < deadline) {
-    if (auto line = m.poll(); !line.empty()) lines.push_back(line);
+    if (auto line = m.poll(); !line.empty()) lines.push_back(line.text);
     if (done()) break;
     std::this_thread::sleep_for(std::chrono::milliseconds(10));
   }

@@ -3,6 +3,7 @@
 // new`'s, the plain notice of an interrupted session, and what the subject sees at each stage.
 #include <chrono>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 
@@ -147,6 +148,33 @@ TEST(RecordSetupForm, ListsSessionsOneFolderDownGroupedByFolder) {
   EXPECT_EQ(listed[2].total, 2);
   EXPECT_TRUE(listed[2].problem.empty()) << listed[2].problem;
   fs::remove_all(root);
+}
+
+// After scripts/run the demo lives in its own folder (LMC_SESSIONS_DIR/demo here), not in the
+// user's data folder: the resume list shows it under its full path rather than "No sessions yet",
+// and once only when the demo folder is inside the sessions folder.
+TEST(RecordSetupForm, TheResumeListShowsTheDemoSessionsToo) {
+  const fs::path base = test::fresh_test_dir("setup_resume_demo");
+  const fs::path own = base / "data";
+  make(own / "P01", "P01");
+  make(base / "project" / "demo" / "S01", "S01");
+  const char* old = std::getenv("LMC_SESSIONS_DIR");
+  const std::string saved = old != nullptr ? old : "";
+  ::setenv("LMC_SESSIONS_DIR", (base / "project").c_str(), 1);
+  const auto listed = list_resumable_sessions(own);
+  const auto inside = list_resumable_sessions(base / "project");
+  if (old != nullptr)
+    ::setenv("LMC_SESSIONS_DIR", saved.c_str(), 1);
+  else
+    ::unsetenv("LMC_SESSIONS_DIR");
+  ASSERT_EQ(listed.size(), 2U);
+  EXPECT_EQ(listed[0].subject, "P01");
+  EXPECT_EQ(listed[0].group, "");
+  EXPECT_EQ(listed[1].subject, "S01");
+  EXPECT_EQ(listed[1].group, (base / "project" / "demo").string());
+  ASSERT_EQ(inside.size(), 1U) << "the demo folder inside the sessions folder is listed once";
+  EXPECT_EQ(inside[0].group, "demo");
+  fs::remove_all(base);
 }
 
 // A subject id is a person: the sessions already recorded for the form's id, wherever they sit

@@ -406,7 +406,7 @@ const Layout* RecordSessionModel::current_layout() const {
   return &runner_->layout(i);
 }
 
-std::string RecordSessionModel::poll() {
+StatusReport RecordSessionModel::poll() {
   bool fresh = false;
   for (auto& s : job_.drain_reports()) {
     live_ = std::move(s);
@@ -424,19 +424,23 @@ std::string RecordSessionModel::poll() {
   if (job_handled_ || !job_finished(js) || !folder_) return {};
   job_handled_ = true;
   std::string line;
+  bool bad = false;
   if (js == JobState::kFailed) {
     line = "Record: " + job_.error();
+    bad = true;
   } else if (auto result = job_.result()) {
     if (result->preflight) {
       last_preflight_ = result->preflight;
       line = result->preflight->ok() ? "pre-flight passed for layout '" + result->preflight->layout_name + "'"
                                      : "pre-flight failed: " + result->preflight->failures().front();
+      bad = bad || !result->preflight->ok();
     }
     if (result->calibration) {
       pending_calibration_ = result->calibration;
       const auto& c = *result->calibration;
       line = c.ok() ? c.trial_name + ": calibrated; read the residuals, then Apply or calibrate again"
                     : c.trial_name + ": " + c.failure;
+      bad = bad || !c.ok();
     }
     if (result->attempt) {
       last_attempt_ = result->attempt;
@@ -450,10 +454,12 @@ std::string RecordSessionModel::poll() {
           runner_->accept(a.trial);
         } catch (const std::exception& e) {
           line += " (not accepted: " + std::string(e.what()) + ")";
+          bad = true;
         }
         if (selected_ == a.trial) selected_ = -1;
       } else {
         selected_ = a.trial;
+        bad = true;
       }
     }
   }
@@ -464,9 +470,12 @@ std::string RecordSessionModel::poll() {
   live_fused_.reset();
   live_fusion_.reset();  // the worker has detached it from the hub: joins its thread
   if (!pending_notes_.empty()) write_pending_notes();
-  if (!last_note_error_.empty()) line += (line.empty() ? "" : "; ") + std::exchange(last_note_error_, {});
+  if (!last_note_error_.empty()) {
+    line += (line.empty() ? "" : "; ") + std::exchange(last_note_error_, {});
+    bad = true;
+  }
   refresh_state();
-  return line;
+  return {line, bad ? Severity::kError : Severity::kInfo};
 }
 
 }  // namespace lmc::ui

@@ -28,6 +28,7 @@
 #include "devices/session_runner/session_runner.h"
 #include "ui/model/devices/live_hands.h"
 #include "ui/model/jobs/background_job.h"
+#include "ui/model/shell/status_report.h"
 
 namespace lmc::ui {
 
@@ -151,8 +152,10 @@ class RecordSessionModel {
   int note_trial() const;  // the trial add_note() writes to (-1: none)
 
   // Once a frame: takes the worker's snapshots and, when it finished, its result (accepting a
-  // pass or warn, refreshing the state). Returns one line for the status bar when something ended.
-  std::string poll();
+  // pass or warn, refreshing the state). Returns one line for the status bar when something ended:
+  // an error when the job failed, the pre-flight or calibration failed, the attempt's verdict is
+  // fail, or the attempt or a note could not be kept.
+  StatusReport poll();
 
  private:
   // What the worker is doing, for a refusal: which job runs and when the operator can act again.

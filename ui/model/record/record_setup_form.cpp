@@ -171,6 +171,22 @@ std::vector<SessionListing> list_sessions(const fs::path& root) {
   return out;
 }
 
+std::vector<SessionListing> list_resumable_sessions(const fs::path& root) {
+  std::vector<SessionListing> out = list_sessions(root);
+  std::error_code ec;
+  const fs::path demo = demo_sessions_dir();
+  const fs::path root_abs = fs::weakly_canonical(root, ec);
+  const fs::path demo_abs = fs::weakly_canonical(demo, ec);
+  // Already listed when the demo folder is the sessions folder or one of its folders.
+  if (demo_abs == root_abs || demo_abs.parent_path() == root_abs) return out;
+  for (SessionListing s : list_sessions(demo)) {
+    if (!s.group.empty()) continue;  // the demo's own sessions, not folders further down
+    s.group = demo.string();
+    out.push_back(std::move(s));
+  }
+  return out;
+}
+
 std::vector<SessionListing> sessions_of_subject(const std::vector<SessionListing>& listed, const std::string& subject) {
   std::vector<SessionListing> out;
   for (const auto& s : listed)

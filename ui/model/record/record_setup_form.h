@@ -79,6 +79,10 @@ struct SessionListing {
 // that folder: the sessions directly under `root` first, then each folder by name; within a
 // group, the one whose journal was written last first. Read-only: nothing is locked or repaired.
 std::vector<SessionListing> list_sessions(const std::filesystem::path& root);
+// The Record tab's resume list: list_sessions(root), then the demo sessions scripts/run records
+// (core/common/paths.h demo_sessions_dir()) under their folder's full path when that folder is
+// not already in the list, so a lab that just ran the demo finds it where it looks.
+std::vector<SessionListing> list_resumable_sessions(const std::filesystem::path& root);
 
 // The listed sessions whose subject id is `subject`: a subject id is a person, so creating a new
 // session with one of these ids asks first (continue that session, add a second session of the same

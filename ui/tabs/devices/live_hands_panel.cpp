@@ -12,7 +12,11 @@ namespace lmc::ui {
 void LiveHandsPanel::draw() {
   const DevicesState& s = *state_;
   const DevicesViewModel& vm = s.view();
-  if (vm.running()) ImGui::TextDisabled("%s", fusion_latency_line(vm.fusion_stats()).c_str());
+  if (vm.running()) {
+    ImGui::PushTextWrapPos(0.0f);  // two lines in a narrow window rather than cut at its edge
+    ImGui::TextDisabled("%s", fusion_latency_line(vm.fusion_stats()).c_str());
+    ImGui::PopTextWrapPos();
+  }
   const auto& ghosts = s.ghosts();
   const std::string caption =
       ghosts.empty() ? "World frame (mm), one colour per device; the fused hand thick, fingers by how many controllers "

@@ -21,6 +21,7 @@
 #include "ui/tabs/layout/optimiser_panel.h"
 #include "ui/tabs/layout/scene_panel.h"
 #include "ui/tabs/layout/timeline_panel.h"
+#include "ui/widgets/flow_row.h"
 
 namespace lmc::ui {
 namespace {
@@ -463,19 +464,19 @@ void LayoutTab::draw_scene_side() {
   if (ImGui::SmallButton("Side")) s.camera.set_named_view(NamedView::kSide);
   ImGui::SameLine();
   if (ImGui::SmallButton("Frame all (F)")) scene_->frame_all();
-  ImGui::SameLine(0, 16);
+  same_line_or_wrap(checkbox_width("Pyramids"), 16);
   ImGui::Checkbox("Pyramids", &s.display.show_pyramids);
-  ImGui::SameLine();
+  same_line_or_wrap(checkbox_width("Rays"));
   ImGui::Checkbox("Rays", &s.display.show_rays);
   if (ImGui::IsItemHovered())
     ImGui::SetTooltip(
         "Lines from the selected controller to every finger marker:\ngreen clear, red blocked (hover one for the "
         "reason)");
-  ImGui::SameLine();
+  same_line_or_wrap(checkbox_width("Heatmap"));
   ImGui::Checkbox("Heatmap", &s.display.show_heatmap);
-  ImGui::SameLine();
+  same_line_or_wrap(checkbox_width("Ghost"));
   ImGui::Checkbox("Ghost", &s.display.show_ghost);
-  const float timeline_h = ImGui::GetFrameHeightWithSpacing() + 6.0f;
+  const float timeline_h = timeline_->height(ImGui::GetContentRegionAvail().x) + 6.0f;
   const ImVec2 scene_size(ImGui::GetContentRegionAvail().x, ImGui::GetContentRegionAvail().y - timeline_h);
   scene_->draw(scene_size);
   ImGui::Spacing();

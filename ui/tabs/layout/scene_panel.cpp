@@ -242,32 +242,6 @@ void ScenePanel::draw_overlays(ImDrawList* dl) {
   const double w = image_size_.x, h = image_size_.y;
   const ImVec2 image_max(image_min_.x + image_size_.x, image_min_.y + image_size_.y);
   dl->PushClipRect(image_min_, image_max, true);
-  // Labels at projected positions, spread so none prints over another, with a shadow so they
-  // read on any background.
-  std::vector<const SceneLabel*> shown;
-  std::vector<LabelBox> boxes;
-  for (const SceneLabel& l : scene_.labels) {
-    const auto p = s.camera.project(l.position, w, h);
-    if (!p) continue;
-    const ImVec2 size = ImGui::CalcTextSize(l.text.c_str());
-    shown.push_back(&l);
-    // The box holds the text and the 3 px backing an emphasised label gets on either side.
-    boxes.push_back({image_min_.x + static_cast<float>(p->x()) - size.x * 0.5f - 3.0f,
-                     image_min_.y + static_cast<float>(p->y()) - size.y * 0.5f - 1.0f, size.x + 6.0f, size.y + 2.0f});
-  }
-  boxes = spread_labels(std::move(boxes), 1.0f);
-  for (size_t i = 0; i < shown.size(); ++i) {
-    const SceneLabel& l = *shown[i];
-    const ImVec2 size(boxes[i].width - 6.0f, boxes[i].height - 2.0f);
-    const ImVec2 at(boxes[i].x + 3.0f, boxes[i].y + 1.0f);
-    if (l.emphasised) {
-      dl->AddRectFilled(ImVec2(at.x - 3, at.y - 1), ImVec2(at.x + size.x + 3, at.y + size.y + 1),
-                        IM_COL32(20, 20, 24, 190), 3.0f);
-    }
-    dl->AddText(ImVec2(at.x + 1, at.y + 1), IM_COL32(0, 0, 0, 200), l.text.c_str());
-    dl->AddText(at, to_u32(l.colour), l.text.c_str());
-  }
-
   // Legend: finger colours (categorical, every category listed).
   const float line = ImGui::GetTextLineHeight();
   const char* title = "Fingers:";
@@ -291,6 +265,43 @@ void ScenePanel::draw_overlays(ImDrawList* dl) {
   // In a narrow scene the colour bar would cover the finger legend: stack the finger legend above
   // it instead.
   if (heat_bar && at.x + legend_w > image_max.x - bar_w - 16 - 8) at.y -= line * 3.6f + 28;
+  // Labels at projected positions, spread so none prints over another, with a shadow so they
+  // read on any background; kept inside the view (moved in from its edge) and off the legend
+  // and the colour bar, which would cover them.
+  const ImRect legend_box(ImVec2(at.x - 6, at.y - 6), ImVec2(at.x + legend_w, at.y + line + 6));
+  const ImRect bar_box = heat_bar ? ImRect(ImVec2(image_max.x - bar_w - 24, image_max.y - 14 - line * 3.6f - 10),
+                                           ImVec2(image_max.x - 6, image_max.y - 6))
+                                  : ImRect();
+  // The view as the window shows it (its right edge may lie under the window's padding).
+  const ImVec2 clip_min = dl->GetClipRectMin(), clip_max = dl->GetClipRectMax();
+  std::vector<const SceneLabel*> shown;
+  std::vector<LabelBox> boxes;
+  for (const SceneLabel& l : scene_.labels) {
+    const auto p = s.camera.project(l.position, w, h);
+    if (!p) continue;
+    const ImVec2 size = ImGui::CalcTextSize(l.text.c_str());
+    shown.push_back(&l);
+    // The box holds the text and the 3 px backing an emphasised label gets on either side.
+    boxes.push_back({image_min_.x + static_cast<float>(p->x()) - size.x * 0.5f - 3.0f,
+                     image_min_.y + static_cast<float>(p->y()) - size.y * 0.5f - 1.0f, size.x + 6.0f, size.y + 2.0f});
+  }
+  boxes = spread_labels(std::move(boxes), 1.0f);
+  for (size_t i = 0; i < shown.size(); ++i) {
+    const SceneLabel& l = *shown[i];
+    const ImVec2 size(boxes[i].width - 6.0f, boxes[i].height - 2.0f);
+    // Its shadow reaches a pixel further right and down.
+    const ImVec2 pos(std::clamp(boxes[i].x + 3.0f, clip_min.x, std::max(clip_min.x, clip_max.x - size.x - 2.0f)),
+                     std::clamp(boxes[i].y + 1.0f, clip_min.y, std::max(clip_min.y, clip_max.y - size.y - 2.0f)));
+    const ImRect text_box(pos, ImVec2(pos.x + size.x + 1.0f, pos.y + size.y + 1.0f));
+    if (text_box.Overlaps(legend_box) || (heat_bar && text_box.Overlaps(bar_box))) continue;
+    if (l.emphasised) {
+      dl->AddRectFilled(ImVec2(pos.x - 3, pos.y - 1), ImVec2(pos.x + size.x + 3, pos.y + size.y + 1),
+                        IM_COL32(20, 20, 24, 190), 3.0f);
+    }
+    dl->AddText(ImVec2(pos.x + 1, pos.y + 1), IM_COL32(0, 0, 0, 200), l.text.c_str());
+    dl->AddText(pos, to_u32(l.colour), l.text.c_str());
+  }
+
   dl->AddRectFilled(ImVec2(at.x - 6, at.y - 6), ImVec2(at.x + legend_w, at.y + line + 6), IM_COL32(18, 19, 23, 200),
                     4.0f);
   dl->AddText(at, IM_COL32(210, 212, 218, 255), title);

@@ -8,6 +8,23 @@
 #include "core/hand/reference_poses.h"
 
 namespace lmc::ui {
+namespace {
+
+// The filters, the speed and the count beside the slider; the slider wants this much at least to
+// show most descriptions ("frame 12: horizontal palm, index at 40 %").
+constexpr float kFiltersWidth = 470.0f;
+constexpr float kSliderWants = 250.0f;
+
+bool two_rows(float width) {
+  return width - 56.0f - ImGui::GetStyle().ItemSpacing.x - kFiltersWidth < kSliderWants;
+}
+
+}  // namespace
+
+float TimelinePanel::height(float width) const {
+  return two_rows(width) ? ImGui::GetFrameHeight() * 2 + ImGui::GetStyle().ItemSpacing.y
+                         : ImGui::GetFrameHeightWithSpacing();
+}
 
 void TimelinePanel::draw() {
   LayoutTabState& s = *state_;
@@ -22,8 +39,9 @@ void TimelinePanel::draw() {
     pos = static_cast<int>(std::lower_bound(frames.begin(), frames.end(), t.frame) - frames.begin());
     pos = std::clamp(pos, 0, static_cast<int>(frames.size()) - 1);
   }
-  const float right = 470;
-  ImGui::SetNextItemWidth(std::max(80.0f, ImGui::GetContentRegionAvail().x - right));
+  const bool wrapped =
+      two_rows(ImGui::GetContentRegionAvail().x + ImGui::GetItemRectSize().x + ImGui::GetStyle().ItemSpacing.x);
+  ImGui::SetNextItemWidth(wrapped ? -1.0f : ImGui::GetContentRegionAvail().x - kFiltersWidth);
   const int max_pos = std::max(0, static_cast<int>(frames.size()) - 1);
   char overlay[128] = "loading pose set...";
   if (p && !frames.empty()) {
@@ -43,7 +61,7 @@ void TimelinePanel::draw() {
     t.frame = frames[static_cast<size_t>(pos)];
     t.playing = false;
   }
-  ImGui::SameLine();
+  if (!wrapped) ImGui::SameLine();
   const char* orientations[] = {"any palm", "horizontal", "vertical"};
   int o = t.orientation_filter + 1;
   ImGui::SetNextItemWidth(110);

@@ -7,10 +7,14 @@
 
 namespace lmc::ui {
 
+// Under the scene: one row, or two in a narrow region.
 class TimelinePanel {
  public:
   explicit TimelinePanel(std::shared_ptr<LayoutTabState> state) : state_(std::move(state)) {}
   void draw();
+  // Its height in a region this wide: one row, or two when the frame slider would be too narrow
+  // to show its frame's description beside the filters (the filters then go under it).
+  float height(float width) const;
 
  private:
   std::shared_ptr<LayoutTabState> state_;

@@ -48,7 +48,7 @@ class RecordTab final : public Tab {
         trial_list_panel_(model_),
         trial_panel_(model_),
         subject_controls_(subject_) {
-    sessions_ = list_sessions(form_.sessions_folder());
+    sessions_ = list_resumable_sessions(form_.sessions_folder());
     if (auto& startup = context.record_startup()) {
       std::snprintf(form_.open_folder, sizeof form_.open_folder, "%s", startup->session.string().c_str());
       form_.backend = startup->backend == "leapc" ? 1 : 0;
@@ -64,10 +64,7 @@ class RecordTab final : public Tab {
       open();
       if (!error_.empty()) status_.set_status("Record: " + error_, true);
     }
-    if (const std::string line = model_->poll(); !line.empty()) {
-      const bool bad = line.find(": fail") != std::string::npos || line.find("failed") != std::string::npos;
-      status_.set_status(line, bad);
-    }
+    if (const StatusReport line = model_->poll(); !line.empty()) status_.set_status(line.text, line.is_error());
     // The session is driven for the mid-trial and verdict pictures; later ones stage it by hand.
     if (capture_ && capture_stage_ != "record-resume") drive_capture();
     // The subject screen follows the session every frame, whichever tab is shown.
@@ -88,7 +85,7 @@ class RecordTab final : public Tab {
           open();
           break;
         case SetupAction::kRefreshSessions:
-          sessions_ = list_sessions(form_.sessions_folder());
+          sessions_ = list_resumable_sessions(form_.sessions_folder());
           break;
         case SetupAction::kNone:
           break;
@@ -164,7 +161,7 @@ class RecordTab final : public Tab {
       std::snprintf(form_.notes, sizeof form_.notes, "%s", "right-handed, no hand injuries");
       std::snprintf(form_.vicon, sizeof form_.vicon, "%s", "192.168.10.2:30");
       form_.select_protocol("study");
-      sessions_ = list_sessions(form_.sessions_folder());
+      sessions_ = list_resumable_sessions(form_.sessions_folder());
     }
   }
   bool busy_for_capture() const override {
@@ -224,14 +221,9 @@ class RecordTab final : public Tab {
       return;
     }
     if (!same_subject_confirmed) {
-      sessions_ = list_sessions(form_.sessions_folder());
+      // The demo's subjects too (S01, S02), wherever scripts/run put them: the list holds them.
+      sessions_ = list_resumable_sessions(form_.sessions_folder());
       subject_clash_ = sessions_of_subject(sessions_, form_.subject);
-      // The demo's subjects too (S01, S02), wherever scripts/run put them.
-      for (const auto& s : sessions_of_subject(list_sessions(demo_sessions_dir()), form_.subject)) {
-        if (std::none_of(subject_clash_.begin(), subject_clash_.end(),
-                         [&](const SessionListing& c) { return c.dir == s.dir; }))
-          subject_clash_.push_back(s);
-      }
       for (const auto& dir : context_.review_folders()) {
         if (!is_session_folder(dir)) continue;
         try {
@@ -275,12 +267,13 @@ class RecordTab final : public Tab {
       if (ImGui::SmallButton("Close")) {
         const std::string closed = model_->dir().string();
         model_->close();
-        sessions_ = list_sessions(form_.sessions_folder());
+        sessions_ = list_resumable_sessions(form_.sessions_folder());
         status_.set_status("Record: session " + closed + " closed; everything recorded is kept in its folder");
         return false;
       }
     }
-    ImGui::TextDisabled("Space: start / stop   Esc: abort   Enter: accept a failed trial anyway   R: redo   N: note");
+    ImGui::TextDisabled(
+        "Space: start / stop   Esc: abort   Enter: accept (a failed trial asks first)   R: redo   N: note");
     // The subject screen's controls beside the hint where they fit (1280 wide), else below it.
     constexpr float kSubjectControlsWidth = 520.0F;
     ImGui::SameLine();

@@ -1,6 +1,7 @@
 #include "ui/tabs/review/review_trial_table_panel.h"
 
 #include <imgui.h>
+#include <imgui_internal.h>  // the table's window: does it scroll sideways
 
 #include <algorithm>
 #include <cmath>
@@ -60,7 +61,7 @@ void ReviewTrialTablePanel::draw() {
   const float row_px = ImGui::GetFontSize() + 2.0F * ImGui::GetStyle().CellPadding.y;
   const size_t rows = state_->visible_trials().size();
   const float table_px = trial_table_height(available, row_px, rows, dragged_px_);
-  draw_table(table_px);
+  draw_table(table_px + scrollbar_px_);
   draw_splitter(available, row_px, rows, table_px);
 }
 
@@ -93,26 +94,34 @@ void ReviewTrialTablePanel::draw_table(float height_px) {
   const int fixed_columns = 9;
   const int columns = fixed_columns + static_cast<int>(controllers);
   const ImGuiTableFlags flags = ImGuiTableFlags_ScrollY | ImGuiTableFlags_RowBg | ImGuiTableFlags_BordersInnerV |
-                                ImGuiTableFlags_Resizable | ImGuiTableFlags_Sortable | ImGuiTableFlags_SizingFixedFit;
+                                ImGuiTableFlags_Resizable | ImGuiTableFlags_Sortable | ImGuiTableFlags_SizingFixedFit |
+                                ImGuiTableFlags_ScrollX;  // a narrow window scrolls the columns, never squeezes them
   // The id holds the column count: a table whose columns changed starts with fresh widths.
   const std::string table_id = "trials##" + std::to_string(columns);
   if (!ImGui::BeginTable(table_id.c_str(), columns, flags, ImVec2(0, height_px))) return;
   // Widths for what the cells hold, not for the header alone (the table is first drawn empty).
-  const auto fixed = [](const char* name, float width, TrialColumn id, ImGuiTableColumnFlags extra = 0) {
-    ImGui::TableSetupColumn(name, ImGuiTableColumnFlags_WidthFixed | extra, width, static_cast<ImGuiID>(id));
+  // A header never ends in "…": each column is at least as wide as its name and the sort arrow
+  // ImGui keeps room for.
+  const auto header_width = [](const char* name, float width) {
+    return std::max(width, ImGui::CalcTextSize(name).x + ImGui::GetFontSize() + ImGui::GetStyle().FramePadding.x);
+  };
+  const auto fixed = [&header_width](const char* name, float width, TrialColumn id, ImGuiTableColumnFlags extra = 0) {
+    ImGui::TableSetupColumn(name, ImGuiTableColumnFlags_WidthFixed | extra, header_width(name, width),
+                            static_cast<ImGuiID>(id));
   };
   ImGui::TableSetupScrollFreeze(0, 1);
   // The user ids are TrialColumn values, so a sort spec maps straight to the model's sort.
-  fixed("subject", 90, TrialColumn::kSubject, ImGuiTableColumnFlags_DefaultSort);
-  fixed("trial", 130, TrialColumn::kTrial);
+  fixed("subject", 80, TrialColumn::kSubject, ImGuiTableColumnFlags_DefaultSort);
+  fixed("trial", 116, TrialColumn::kTrial);
   fixed("layout", 78, TrialColumn::kLayout);
   fixed("pose", 86, TrialColumn::kPose);
   fixed("motion", 60, TrialColumn::kMotion);
-  fixed("status", 86, TrialColumn::kStatus);
+  fixed("status", 80, TrialColumn::kStatus);
   for (size_t d = 0; d < controllers; ++d) {
     const std::string name = "LMC" + std::to_string(d + 1) + " seen";
     ImGui::TableSetupColumn(name.c_str(), ImGuiTableColumnFlags_WidthFixed | ImGuiTableColumnFlags_PreferSortDescending,
-                            80, static_cast<ImGuiID>(static_cast<int>(TrialColumn::kVisibility) + static_cast<int>(d)));
+                            header_width(name.c_str(), 80),
+                            static_cast<ImGuiID>(static_cast<int>(TrialColumn::kVisibility) + static_cast<int>(d)));
   }
   fixed("length diff (mm)", 125, TrialColumn::kLengthDiff);
   fixed("|ROM diff| (deg)", 125, TrialColumn::kRomDiff);
@@ -172,6 +181,7 @@ void ReviewTrialTablePanel::draw_table(float height_px) {
       number_cell(row.lag_ms, 0, true);
     }
   }
+  scrollbar_px_ = ImGui::GetCurrentWindow()->ScrollbarX ? ImGui::GetStyle().ScrollbarSize : 0.0F;
   ImGui::EndTable();
 }
 

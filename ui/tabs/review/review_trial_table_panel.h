@@ -24,6 +24,9 @@ class ReviewTrialTablePanel {
 
   std::shared_ptr<ReviewState> state_;
   float dragged_px_ = 0.0F;  // the table's height once the splitter was dragged (0: the default)
+  // The columns were wider than the table in the last frame: its horizontal scrollbar takes this
+  // much height, which the rows get back.
+  float scrollbar_px_ = 0.0F;
   WidgetAnchors anchors_;
 };
 

@@ -9,6 +9,7 @@
 #include "core/processing/measures.h"
 #include "core/review/review_figures.h"
 #include "ui/widgets/figure_view.h"
+#include "ui/widgets/flow_row.h"
 #include "ui/widgets/label_strips.h"
 
 namespace lmc::ui {
@@ -150,7 +151,7 @@ void ReviewTrialViewPanel::draw(const PictureRenderer& renderer) {
   ImGui::EndChild();
 
   ImGui::TextDisabled("Ray-traced labels per controller (thumb at the top):");
-  ImGui::SameLine();
+  same_line_or_wrap(ImGui::GetTextLineHeight() + ImGui::CalcTextSize("seen (ray-traced)").x);
   draw_label_legend();
   draw_label_strips("labels", s.time_s, strips, *range, kStripPx);
   ImGui::EndChild();
