@@ -134,15 +134,23 @@ for _ in $(seq 600); do
 done
 [ "$(find "$work/cache" -name '*.json' | wc -l)" -ge 2 ] || { echo "Review did not process the session"; exit 1; }
 wait_for_status "trial(s) ready" "Review's count of the trials"
-click 296 55      # Export... (its window opens in the middle of the 1280x800 window)
-sleep 1
-click 308 280     # The opened folders as a BIDS-motion dataset
-sleep 0.5
-click 357 424     # Export (under the BIDS options)
+# A click lost on a loaded machine is made again (a click that lands changes nothing the second time).
+exported() { grep -q -- "exported $1 trial(s) to $work/exports/$2" "$work/status-trace.txt"; }
+for _ in $(seq 15); do
+  click 296 55    # Export... (its window opens in the middle of the 1280x800 window)
+  sleep 1
+  click 308 280   # The opened folders as a BIDS-motion dataset
+  sleep 0.5
+  click 357 424   # Export (under the BIDS options)
+  for _ in $(seq 30); do exported 2 bids-dataset && break 2; sleep 0.1; done
+done
 wait_for_status "exported 2 trial(s) to $work/exports/bids-dataset" "the BIDS export"
-click 308 234     # The selected trial
-sleep 0.5
-click 357 400     # Export, as C3D
+for _ in $(seq 15); do
+  click 308 234   # The selected trial
+  sleep 0.5
+  click 357 400   # Export, as C3D
+  for _ in $(seq 30); do exported 1 trials-c3d && break 2; sleep 0.1; done
+done
 wait_for_status "exported 1 trial(s) to $work/exports/trials-c3d" "the C3D export after the BIDS export"
 ls "$work"/exports/trials-c3d/*.c3d > /dev/null || { echo "no C3D file in $work/exports/trials-c3d"; exit 1; }
 if find "$work/exports/bids-dataset" -name '*.c3d' | grep .; then echo "the C3D export landed in the BIDS dataset"; exit 1; fi

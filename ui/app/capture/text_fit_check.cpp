@@ -202,7 +202,10 @@ void find_glyph_cuts(const ImDrawData& data, const GlyphIndex& index, std::vecto
         out.push_back({name, run.text, "cut at the " + sides + " by its window", x, y});
       }
       // Cut on the left only is a text field scrolled to show its end (where typing goes on).
-      if (run.box_cut_right) out.push_back({name, run.text, "wider than its widget's box", x, y});
+      // A path longer than its text field is the field's ordinary state: it scrolls, and where the
+      // files go must not fail a picture taken in a deep build folder.
+      const bool path_in_field = run.text.find('/') != std::string::npos || run.text.find('\\') != std::string::npos;
+      if (run.box_cut_right && !path_in_field) out.push_back({name, run.text, "wider than its widget's box", x, y});
     }
     // Two lines of text drawn over each other (shown parts only; a few pixels of touching
     // letters are not an overlap, and the same words a pixel or two apart are a label's shadow).

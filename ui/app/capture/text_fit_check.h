@@ -17,7 +17,8 @@ struct CutText {
 // NewFrame) that is not shown whole:
 // * a glyph cut by its window's edge, where the window cannot scroll that way;
 // * a glyph cut on the right by its own widget's box (a label wider than its button or slider;
-//   cut on the left only is a text field scrolled to show where typing goes on).
+//   cut on the left only is a text field scrolled to show where typing goes on, and a file path
+//   longer than its field is not reported either: the field scrolls).
 // * a table header or tab ImGui shortened with an ellipsis;
 // * a window whose content is wider than the window, with no horizontal scrollbar;
 // * two lines of text drawn over each other in one window.
