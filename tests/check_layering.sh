@@ -42,7 +42,7 @@ if [ -n "$bad_model_up" ]; then
 fi
 # Inside core, data flows one way: a folder includes only folders before it in this list (files
 # and the hand model first; processing before what reports on it). A new folder joins the list.
-core_order=(common stats geometry layout hand visibility metric optimise io figures processing results reports review calibration session export poses)
+core_order=(common platform stats geometry layout hand visibility metric optimise io figures processing results reports review calibration session export poses)
 for ((i = 0; i < ${#core_order[@]}; i++)); do
   folder=${core_order[$i]}
   [ -d "$root/core/$folder" ] || continue

@@ -1,6 +1,5 @@
 #include "devices/session/preflight.h"
 
-#include <unistd.h>
 
 #include <cstdio>
 #include <fstream>

@@ -1,7 +1,6 @@
 // lmc optimize: search device placements with the particle swarm of docs/algorithms/search.md
 // (core/optimise/pso.h) on a pose set, save the best layout and print the same summary as
 // `lmc evaluate`.
-#include <unistd.h>
 
 #include <cmath>
 #include <cstdio>
@@ -11,6 +10,7 @@
 
 #include "app/lmc/command.h"
 #include "core/common/error.h"
+#include "core/platform/process.h"
 #include "core/io/layout_json.h"
 #include "core/io/pose_source.h"
 #include "core/optimise/multi_start.h"
@@ -171,7 +171,7 @@ void setup_optimize(CLI::App& app) {
     if (opt->exhaustive) s.prune_round_frames = 0;
     const char* cost_name = s.metric == lmc::PlacementMetricKind::kStudy ? "M" : "R";
 
-    const bool bar = !opt->no_progress && isatty(STDERR_FILENO) != 0;
+    const bool bar = !opt->no_progress && lmc::platform::stderr_is_terminal();
     auto progress = [bar, cost_name](const lmc::MultiStartProgress& m) {
       if (!bar) return;
       const lmc::PsoProgress& p = m.pso;

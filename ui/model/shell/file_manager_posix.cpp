@@ -1,5 +1,4 @@
-#include "ui/model/shell/file_manager.h"
-
+#ifndef _WIN32
 #include <spawn.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -7,6 +6,8 @@
 #include <cerrno>
 #include <cstring>
 #include <vector>
+
+#include "ui/model/shell/file_manager.h"
 
 namespace lmc::ui {
 
@@ -38,3 +39,4 @@ bool open_in_file_manager(const std::filesystem::path& folder, std::string* erro
 }
 
 }  // namespace lmc::ui
+#endif
