@@ -6,13 +6,14 @@
 #include <filesystem>
 #include <string>
 #include <string_view>
+#include <utility>
 
 namespace lmc::platform {
 
 enum class OpenMode {
-  truncate,     // created or emptied
-  append,       // must exist; every write goes to its end
-  append_new,   // must not exist yet; created, then as append
+  truncate,    // created or emptied
+  append,      // must exist; every write goes to its end
+  append_new,  // must not exist yet; created, then as append
 };
 
 class DurableFile {
@@ -23,8 +24,20 @@ class DurableFile {
   // in the message with what to close.
   DurableFile(const std::filesystem::path& path, OpenMode mode);
   ~DurableFile();
-  DurableFile(DurableFile&& other) noexcept;
-  DurableFile& operator=(DurableFile&& other) noexcept;
+  DurableFile(DurableFile&& other) noexcept
+      : handle_(other.handle_), error_(std::move(other.error_)), written_(other.written_) {
+    other.handle_ = kClosed;
+  }
+  DurableFile& operator=(DurableFile&& other) noexcept {
+    if (this != &other) {
+      close();
+      handle_ = other.handle_;
+      error_ = std::move(other.error_);
+      written_ = other.written_;
+      other.handle_ = kClosed;
+    }
+    return *this;
+  }
   DurableFile(const DurableFile&) = delete;
   DurableFile& operator=(const DurableFile&) = delete;
 

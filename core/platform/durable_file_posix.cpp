@@ -29,9 +29,15 @@ std::string write_error_text() {
 DurableFile::DurableFile(const std::filesystem::path& path, OpenMode mode) {
   int flags = O_WRONLY | O_CLOEXEC;
   switch (mode) {
-    case OpenMode::truncate: flags |= O_CREAT | O_TRUNC; break;
-    case OpenMode::append: flags |= O_APPEND; break;
-    case OpenMode::append_new: flags |= O_APPEND | O_CREAT | O_EXCL; break;
+    case OpenMode::truncate:
+      flags |= O_CREAT | O_TRUNC;
+      break;
+    case OpenMode::append:
+      flags |= O_APPEND;
+      break;
+    case OpenMode::append_new:
+      flags |= O_APPEND | O_CREAT | O_EXCL;
+      break;
   }
   const int fd = ::open(path.c_str(), flags, 0644);
   if (fd < 0) throw Error(ErrorLocation{path.string()}, "cannot open for writing: " + last_system_error());
@@ -40,22 +46,6 @@ DurableFile::DurableFile(const std::filesystem::path& path, OpenMode mode) {
 
 DurableFile::~DurableFile() {
   if (is_open()) ::close(static_cast<int>(handle_));
-}
-
-DurableFile::DurableFile(DurableFile&& other) noexcept
-    : handle_(other.handle_), error_(std::move(other.error_)), written_(other.written_) {
-  other.handle_ = kClosed;
-}
-
-DurableFile& DurableFile::operator=(DurableFile&& other) noexcept {
-  if (this != &other) {
-    if (is_open()) ::close(static_cast<int>(handle_));
-    handle_ = other.handle_;
-    error_ = std::move(other.error_);
-    written_ = other.written_;
-    other.handle_ = kClosed;
-  }
-  return *this;
 }
 
 bool DurableFile::write(std::string_view data) {

@@ -13,7 +13,9 @@
 namespace lmc::platform {
 namespace {
 
-HANDLE as_handle(std::intptr_t h) { return reinterpret_cast<HANDLE>(h); }
+HANDLE as_handle(std::intptr_t h) {
+  return reinterpret_cast<HANDLE>(h);
+}
 
 // Another program holding the file open (Excel keeps a CSV it shows open without sharing; virus
 // scanners open each new file for a moment) makes Windows refuse with one of these.
@@ -33,7 +35,8 @@ std::string held_message() {
 std::string write_error_text() {
   const DWORD error = GetLastError();
   std::string text = system_error_text(static_cast<long>(error));
-  if (error == ERROR_FILE_TOO_LARGE) text += "; the file system's file size limit was reached (FAT32 holds 4 GB at most)";
+  if (error == ERROR_FILE_TOO_LARGE)
+    text += "; the file system's file size limit was reached (FAT32 holds 4 GB at most)";
   if (error == ERROR_DISK_FULL || error == ERROR_HANDLE_DISK_FULL)
     text += "; the disk is full: free space or record to another disk";
   return text;
@@ -65,30 +68,15 @@ DurableFile::DurableFile(const std::filesystem::path& path, OpenMode mode) {
       std::this_thread::sleep_for(kHeldRetryWait);
       continue;
     }
-    throw Error(ErrorLocation{path.string()}, held_by_another_program(error)
-                                                  ? held_message()
-                                                  : "cannot open for writing: " + system_error_text(static_cast<long>(error)));
+    throw Error(ErrorLocation{path.string()},
+                held_by_another_program(error)
+                    ? held_message()
+                    : "cannot open for writing: " + system_error_text(static_cast<long>(error)));
   }
 }
 
 DurableFile::~DurableFile() {
   if (is_open()) CloseHandle(as_handle(handle_));
-}
-
-DurableFile::DurableFile(DurableFile&& other) noexcept
-    : handle_(other.handle_), error_(std::move(other.error_)), written_(other.written_) {
-  other.handle_ = kClosed;
-}
-
-DurableFile& DurableFile::operator=(DurableFile&& other) noexcept {
-  if (this != &other) {
-    if (is_open()) CloseHandle(as_handle(handle_));
-    handle_ = other.handle_;
-    error_ = std::move(other.error_);
-    written_ = other.written_;
-    other.handle_ = kClosed;
-  }
-  return *this;
 }
 
 bool DurableFile::write(std::string_view data) {
@@ -143,8 +131,9 @@ void replace_file(const std::filesystem::path& from, const std::filesystem::path
       std::this_thread::sleep_for(kHeldRetryWait);
       continue;
     }
-    throw Error(ErrorLocation{to.string()},
-                held_by_another_program(error) ? held_message() : "rename failed: " + system_error_text(static_cast<long>(error)));
+    throw Error(ErrorLocation{to.string()}, held_by_another_program(error)
+                                                ? held_message()
+                                                : "rename failed: " + system_error_text(static_cast<long>(error)));
   }
 }
 

@@ -12,15 +12,6 @@
 
 namespace lmc::platform {
 
-FileLock& FileLock::operator=(FileLock&& other) noexcept {
-  if (this != &other) {
-    release();
-    handle_ = other.handle_;
-    other.handle_ = kNone;
-  }
-  return *this;
-}
-
 void FileLock::release() {
   if (handle_ == kNone) return;
   ::close(static_cast<int>(handle_));  // closing releases the flock
@@ -32,7 +23,8 @@ FileLock FileLock::take(const std::filesystem::path& path, const std::string& ow
   // removed since it was opened locks nothing, so it is taken again on the file now at the path.
   for (int tries = 0;; ++tries) {
     const int fd = ::open(path.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
-    if (fd < 0) throw Error(ErrorLocation{path.string()}, std::string("cannot create the lock: ") + std::strerror(errno));
+    if (fd < 0)
+      throw Error(ErrorLocation{path.string()}, std::string("cannot create the lock: ") + std::strerror(errno));
     if (::flock(fd, LOCK_EX | LOCK_NB) != 0) {
       char buf[32] = {};
       const ssize_t n = ::pread(fd, buf, sizeof buf - 1, 0);

@@ -12,12 +12,14 @@ namespace {
 // sits far past the owner's text so that text stays readable for the message of the one refused.
 constexpr DWORD kLockOffsetHigh = 1;  // byte 4 GiB
 
-HANDLE lock_handle(std::intptr_t h) { return reinterpret_cast<HANDLE>(h); }
+HANDLE lock_handle(std::intptr_t h) {
+  return reinterpret_cast<HANDLE>(h);
+}
 
 HANDLE open_shared(const std::filesystem::path& path, DWORD access, DWORD disposition) {
   // Shared for reading, writing and deleting: the lock, not the sharing mode, is what excludes.
-  return CreateFileW(path.c_str(), access, FILE_SHARE_READ | FILE_SHARE_WRITE | FILE_SHARE_DELETE, nullptr,
-                     disposition, FILE_ATTRIBUTE_NORMAL, nullptr);
+  return CreateFileW(path.c_str(), access, FILE_SHARE_READ | FILE_SHARE_WRITE | FILE_SHARE_DELETE, nullptr, disposition,
+                     FILE_ATTRIBUTE_NORMAL, nullptr);
 }
 
 bool lock_range(HANDLE h, DWORD flags) {
@@ -33,15 +35,6 @@ void unlock_range(HANDLE h) {
 }
 
 }  // namespace
-
-FileLock& FileLock::operator=(FileLock&& other) noexcept {
-  if (this != &other) {
-    release();
-    handle_ = other.handle_;
-    other.handle_ = kNone;
-  }
-  return *this;
-}
 
 void FileLock::release() {
   if (handle_ == kNone) return;

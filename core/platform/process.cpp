@@ -12,11 +12,19 @@
 namespace lmc::platform {
 
 #ifdef _WIN32
-int current_process_id() { return _getpid(); }
-bool stderr_is_terminal() { return _isatty(_fileno(stderr)) != 0; }
+int current_process_id() {
+  return _getpid();
+}
+bool stderr_is_terminal() {
+  return _isatty(_fileno(stderr)) != 0;
+}
 #else
-int current_process_id() { return static_cast<int>(::getpid()); }
-bool stderr_is_terminal() { return ::isatty(STDERR_FILENO) != 0; }
+int current_process_id() {
+  return static_cast<int>(::getpid());
+}
+bool stderr_is_terminal() {
+  return ::isatty(STDERR_FILENO) != 0;
+}
 #endif
 
 }  // namespace lmc::platform

@@ -41,7 +41,9 @@ platform::FileLock take_lock(const fs::path& dir) {
   return lock;
 }
 
-bool lock_is_held(const fs::path& dir) { return platform::file_lock_is_held(dir / kLockFile); }
+bool lock_is_held(const fs::path& dir) {
+  return platform::file_lock_is_held(dir / kLockFile);
+}
 
 std::string attempt_dir_name(const std::string& trial, int attempt) {
   return trial + ".attempt" + std::to_string(attempt);

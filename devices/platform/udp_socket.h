@@ -1,7 +1,7 @@
 #pragma once
-// An IPv4 UDP socket for the Vicon trigger, listener and route probe: one interface, with the Linux
-// half (BSD sockets) in udp_socket_posix.cpp and the Windows half (Winsock 2, started once per
-// process) in udp_socket_windows.cpp. Addresses are in host byte order, as ViconSender keeps them.
+// An IPv4 UDP socket for the Vicon trigger, listener and route probe: one interface for BSD
+// sockets (Linux) and Winsock 2 (Windows, started once per process); udp_socket.cpp keeps what
+// differs side by side. Addresses are in host byte order, as ViconSender keeps them.
 #include <cstddef>
 #include <cstdint>
 #include <optional>

@@ -1,6 +1,5 @@
 #include "devices/session/preflight.h"
 
-
 #include <cstdio>
 #include <fstream>
 #include <nlohmann/json.hpp>

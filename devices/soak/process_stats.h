@@ -1,10 +1,10 @@
 #pragma once
 // What a long recording must not accumulate: resident memory, open file descriptors (handles on
 // Windows) and threads, read from /proc/self on Linux (process_stats_linux.cpp) and from the
-// process's counters on Windows (process_stats_windows.cpp). A soak samples them every second to tell a leak from a plateau.
-// Beside resident memory, the bytes the program holds from the allocator: when resident memory
-// steps up while these stay flat, the allocator kept freed pages, not the program its data. That
-// is why a soak judges growth on the heap in use and only reports resident memory.
+// process's counters on Windows (process_stats_windows.cpp). A soak samples them every second to tell a leak from a
+// plateau. Beside resident memory, the bytes the program holds from the allocator: when resident memory steps up while
+// these stay flat, the allocator kept freed pages, not the program its data. That is why a soak judges growth on the
+// heap in use and only reports resident memory.
 #include <cstdint>
 
 namespace lmc::devices {

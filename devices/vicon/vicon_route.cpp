@@ -24,7 +24,9 @@ std::optional<std::uint32_t> local_address_towards(std::uint32_t remote, std::st
   }
 }
 
-std::string interface_with_address(std::uint32_t local) { return net::interface_with_address(local); }
+std::string interface_with_address(std::uint32_t local) {
+  return net::interface_with_address(local);
+}
 
 ViconListenBinding choose_vicon_listen_binding(const std::string& listen_address, const ViconSenders& senders) {
   ViconListenBinding b;

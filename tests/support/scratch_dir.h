@@ -65,7 +65,8 @@ inline void remove_at_exit(const std::filesystem::path& path) {
 // A fresh, empty folder named for `name`. The process id keeps test processes that run at the
 // same time (ctest runs each binary in shards, in parallel) out of each other's folders.
 inline std::filesystem::path scratch_dir(const std::string& name) {
-  auto dir = std::filesystem::temp_directory_path() / ("lmc_test_" + name + "_" + std::to_string(platform::current_process_id()));
+  auto dir = std::filesystem::temp_directory_path() /
+             ("lmc_test_" + name + "_" + std::to_string(platform::current_process_id()));
   std::filesystem::remove_all(dir);
   std::filesystem::create_directories(dir);
   remove_at_exit(dir);
@@ -76,8 +77,8 @@ inline std::filesystem::path scratch_dir(const std::string& name) {
 // creates its own folder and refuses one that exists.
 inline std::filesystem::path fresh_test_dir(const std::string& name) {
   const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-  const auto dir = std::filesystem::temp_directory_path() /
-                   ("lmc_" + name + "_" + std::string(info->name()) + "_" + std::to_string(platform::current_process_id()));
+  const auto dir = std::filesystem::temp_directory_path() / ("lmc_" + name + "_" + std::string(info->name()) + "_" +
+                                                             std::to_string(platform::current_process_id()));
   std::filesystem::remove_all(dir);
   remove_at_exit(dir);
   return dir;

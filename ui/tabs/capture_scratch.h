@@ -26,7 +26,8 @@ class CaptureScratch {
 
   // A path that does not exist yet, unique to this process and `what`; removed with this object.
   std::filesystem::path fresh(const std::string& what) {
-    auto dir = std::filesystem::temp_directory_path() / ("lmc-capture-" + what + "-" + std::to_string(platform::current_process_id()));
+    auto dir = std::filesystem::temp_directory_path() /
+               ("lmc-capture-" + what + "-" + std::to_string(platform::current_process_id()));
     std::error_code ec;
     std::filesystem::remove_all(dir, ec);
     dirs_.push_back(dir);

@@ -65,7 +65,8 @@ void run_processing_bench(const std::string& input, int runs, bool json) {
   std::vector<std::string> notes;
   const auto jobs = session::trial_sources_for_input(input, std::nullopt, &notes);
   if (jobs.empty()) throw Error(ErrorLocation(input), "no trials to process");
-  const auto scratch = std::filesystem::temp_directory_path() / ("lmc-bench-processing-" + std::to_string(platform::current_process_id()));
+  const auto scratch = std::filesystem::temp_directory_path() /
+                       ("lmc-bench-processing-" + std::to_string(platform::current_process_id()));
   struct RemoveScratch {
     std::filesystem::path dir;
     ~RemoveScratch() {

@@ -10,11 +10,11 @@
 
 #include "app/lmc/command.h"
 #include "core/common/error.h"
-#include "core/platform/process.h"
 #include "core/io/layout_json.h"
 #include "core/io/pose_source.h"
 #include "core/optimise/multi_start.h"
 #include "core/optimise/pso.h"
+#include "core/platform/process.h"
 #include "core/poses/pose_recipe.h"
 #include "core/reports/coverage_report.h"
 #include "core/reports/robust_terms_report.h"

@@ -54,7 +54,8 @@ void run_soak_command(const SoakOptions& opt) {
   c.rate_hz = opt.rate_hz;
   c.trial_seconds = opt.trial_seconds;
   const bool own_folder = opt.out.empty();
-  c.output_dir = own_folder ? std::filesystem::temp_directory_path() / ("lmc-soak-" + std::to_string(lmc::platform::current_process_id()))
+  c.output_dir = own_folder ? std::filesystem::temp_directory_path() /
+                                  ("lmc-soak-" + std::to_string(lmc::platform::current_process_id()))
                             : std::filesystem::path(opt.out);
   c.keep_files = opt.keep;
   c.fusion = !opt.no_fusion;

@@ -115,7 +115,8 @@ TEST(DurableFile, AFileHeldOpenByAnotherProgramIsNamedAndNothingIsLost) {
   const auto target = dir / "trials.csv";
   lmc::write_file_atomically(target, "old");
   // What a spreadsheet does with a CSV it shows: open it and share nothing.
-  const HANDLE held = CreateFileW(target.c_str(), GENERIC_READ, 0, nullptr, OPEN_EXISTING, FILE_ATTRIBUTE_NORMAL, nullptr);
+  const HANDLE held =
+      CreateFileW(target.c_str(), GENERIC_READ, 0, nullptr, OPEN_EXISTING, FILE_ATTRIBUTE_NORMAL, nullptr);
   ASSERT_NE(held, INVALID_HANDLE_VALUE);
   try {
     lmc::write_file_atomically(target, "new");

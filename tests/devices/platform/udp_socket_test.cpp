@@ -70,8 +70,8 @@ TEST(UdpSocket, ASecondListenerOnAClaimedPort) {
 
 TEST(UdpSocket, TheViconTriggerReachesAListenerOverLoopback) {
   std::atomic<int> got{0};
-  lmc::devices::ViconListener listener("127.0.0.1", 0,
-                                       [&](const lmc::devices::ViconMessage& m) { got += m.name == "Trial 1" ? 1 : 0; });
+  lmc::devices::ViconListener listener(
+      "127.0.0.1", 0, [&](const lmc::devices::ViconMessage& m) { got += m.name == "Trial 1" ? 1 : 0; });
   lmc::devices::ViconTriggerConfig c;
   c.host = "127.0.0.1";
   c.port = listener.port();

@@ -1,8 +1,21 @@
+#include "devices/platform/udp_socket.h"
+
 #ifdef _WIN32
 #include <winsock2.h>
 // After winsock2.h, which they need.
 #include <iphlpapi.h>
 #include <ws2tcpip.h>
+#else
+#include <arpa/inet.h>
+#include <ifaddrs.h>
+#include <netdb.h>
+#include <netinet/in.h>
+#include <poll.h>
+#include <sys/socket.h>
+#include <unistd.h>
+
+#include <cerrno>
+#endif
 
 #include <algorithm>
 #include <cstring>
@@ -10,23 +23,72 @@
 
 #include "core/common/error.h"
 #include "core/platform/system_error.h"
-#include "devices/platform/udp_socket.h"
 
 namespace lmc::devices::net {
 namespace {
 
+// What differs between Winsock and BSD sockets, side by side; everything after this block is
+// written once for both.
+#ifdef _WIN32
+using Native = SOCKET;
+using AddressLength = int;
+constexpr std::intptr_t kNoSocket = static_cast<std::intptr_t>(INVALID_SOCKET);
+
+std::string socket_error() {
+  return platform::system_error_text(WSAGetLastError());
+}
+void close_socket(Native s) {
+  closesocket(s);
+}
+int wait_readable(Native s, int timeout_ms) {
+  WSAPOLLFD p{};
+  p.fd = s;
+  p.events = POLLRDNORM;
+  return WSAPoll(&p, 1, timeout_ms);
+}
+
 // Winsock must be started before any socket call; once per process, never stopped (the process's
 // end cleans up), so a socket may outlive any object that started it.
-bool start_winsock(std::string* error) {
+bool start_sockets(std::string* error) {
   static const int started = [] {
     WSADATA data{};
     return WSAStartup(MAKEWORD(2, 2), &data);
   }();
-  if (started != 0 && error != nullptr) *error = "Winsock did not start: " + platform::system_error_text(started);
+  if (started != 0) *error = "Winsock did not start: " + platform::system_error_text(started);
   return started == 0;
 }
 
-std::string last_socket_error() { return platform::system_error_text(WSAGetLastError()); }
+Native open_native() {
+  // Not inherited by programs this one starts (as SOCK_CLOEXEC on Linux).
+  return WSASocketW(AF_INET, SOCK_DGRAM, IPPROTO_UDP, nullptr, 0, WSA_FLAG_NO_HANDLE_INHERIT);
+}
+#else
+using Native = int;
+using AddressLength = socklen_t;
+constexpr std::intptr_t kNoSocket = -1;
+
+std::string socket_error() {
+  return platform::last_system_error();
+}
+void close_socket(Native s) {
+  ::close(s);
+}
+int wait_readable(Native s, int timeout_ms) {
+  pollfd p{s, POLLIN, 0};
+  const int ready = ::poll(&p, 1, timeout_ms);
+  return ready < 0 && errno == EINTR ? 0 : ready;
+}
+bool start_sockets(std::string*) {
+  return true;
+}
+Native open_native() {
+  return ::socket(AF_INET, SOCK_DGRAM | SOCK_CLOEXEC, 0);
+}
+#endif
+
+Native native(std::intptr_t handle) {
+  return static_cast<Native>(handle);
+}
 
 sockaddr_in endpoint(std::uint32_t address, std::uint16_t port) {
   sockaddr_in a{};
@@ -36,17 +98,12 @@ sockaddr_in endpoint(std::uint32_t address, std::uint16_t port) {
   return a;
 }
 
-SOCKET sock_of(std::intptr_t handle) { return static_cast<SOCKET>(handle); }
-
-constexpr std::intptr_t kNoSocket = static_cast<std::intptr_t>(INVALID_SOCKET);
-
 std::intptr_t open_socket(const std::string& who) {
   std::string why;
-  if (!start_winsock(&why)) throw Error(who + ": cannot open a UDP socket: " + why);
-  // Not inherited by programs this one starts (as SOCK_CLOEXEC on Linux).
-  const SOCKET s = WSASocketW(AF_INET, SOCK_DGRAM, IPPROTO_UDP, nullptr, 0, WSA_FLAG_NO_HANDLE_INHERIT);
-  if (s == INVALID_SOCKET) throw Error(who + ": cannot open a UDP socket: " + last_socket_error());
-  return static_cast<std::intptr_t>(s);
+  if (!start_sockets(&why)) throw Error(who + ": cannot open a UDP socket: " + why);
+  const auto s = static_cast<std::intptr_t>(open_native());
+  if (s == kNoSocket) throw Error(who + ": cannot open a UDP socket: " + socket_error());
+  return s;
 }
 
 }  // namespace
@@ -54,90 +111,104 @@ std::intptr_t open_socket(const std::string& who) {
 UdpSocket::UdpSocket(const std::string& who) : handle_(open_socket(who)) {}
 
 UdpSocket::~UdpSocket() {
-  if (handle_ != kNoSocket) closesocket(sock_of(handle_));
+  if (handle_ != kNoSocket) close_socket(native(handle_));
 }
 
 UdpSocket::UdpSocket(UdpSocket&& other) noexcept : handle_(other.handle_), error_(std::move(other.error_)) {
   other.handle_ = kNoSocket;
 }
 
-void UdpSocket::fail() { error_ = last_socket_error(); }
+void UdpSocket::fail() {
+  error_ = socket_error();
+}
 
 bool UdpSocket::enable_broadcast() {
-  const BOOL on = TRUE;
-  if (setsockopt(sock_of(handle_), SOL_SOCKET, SO_BROADCAST, reinterpret_cast<const char*>(&on), sizeof on) == 0)
+  const int on = 1;
+  if (setsockopt(native(handle_), SOL_SOCKET, SO_BROADCAST, reinterpret_cast<const char*>(&on), sizeof on) == 0)
     return true;
   fail();
   return false;
 }
 
 void UdpSocket::claim_port() {
-  const BOOL on = TRUE;
-  setsockopt(sock_of(handle_), SOL_SOCKET, SO_EXCLUSIVEADDRUSE, reinterpret_cast<const char*>(&on), sizeof on);
+  const int on = 1;
+#ifdef _WIN32
+  setsockopt(native(handle_), SOL_SOCKET, SO_EXCLUSIVEADDRUSE, reinterpret_cast<const char*>(&on), sizeof on);
+#else
+  setsockopt(native(handle_), SOL_SOCKET, SO_REUSEADDR, &on, sizeof on);
+#endif
 }
 
-bool UdpSocket::bind_to_interface(const std::string&) {
+bool UdpSocket::bind_to_interface(const std::string& name) {
+#ifdef _WIN32
+  (void)name;
   error_ = "Windows cannot tie a socket to one interface";
+#else
+  if (setsockopt(native(handle_), SOL_SOCKET, SO_BINDTODEVICE, name.c_str(), static_cast<socklen_t>(name.size())) == 0)
+    return true;
+  fail();
+#endif
   return false;
 }
 
 bool UdpSocket::bind(std::uint32_t address, std::uint16_t port) {
   const sockaddr_in a = endpoint(address, port);
-  if (::bind(sock_of(handle_), reinterpret_cast<const sockaddr*>(&a), sizeof a) == 0) return true;
+  if (::bind(native(handle_), reinterpret_cast<const sockaddr*>(&a), sizeof a) == 0) return true;
   fail();
   return false;
 }
 
 bool UdpSocket::connect(std::uint32_t address, std::uint16_t port) {
   const sockaddr_in a = endpoint(address, port);
-  if (::connect(sock_of(handle_), reinterpret_cast<const sockaddr*>(&a), sizeof a) == 0) return true;
+  if (::connect(native(handle_), reinterpret_cast<const sockaddr*>(&a), sizeof a) == 0) return true;
   fail();
   return false;
 }
 
 std::optional<std::uint32_t> UdpSocket::local_address() {
   sockaddr_in local{};
-  int len = sizeof local;
-  if (getsockname(sock_of(handle_), reinterpret_cast<sockaddr*>(&local), &len) == 0) return ntohl(local.sin_addr.s_addr);
+  AddressLength len = sizeof local;
+  if (getsockname(native(handle_), reinterpret_cast<sockaddr*>(&local), &len) == 0) return ntohl(local.sin_addr.s_addr);
   fail();
   return std::nullopt;
 }
 
 std::uint16_t UdpSocket::local_port() {
   sockaddr_in local{};
-  int len = sizeof local;
-  if (getsockname(sock_of(handle_), reinterpret_cast<sockaddr*>(&local), &len) != 0) return 0;
+  AddressLength len = sizeof local;
+  if (getsockname(native(handle_), reinterpret_cast<sockaddr*>(&local), &len) != 0) return 0;
   return ntohs(local.sin_port);
 }
 
 long long UdpSocket::send(std::string_view data) {
-  const int n = ::send(sock_of(handle_), data.data(), static_cast<int>(data.size()), 0);
-  if (n == SOCKET_ERROR) {
-    fail();
-    return -1;
-  }
+  // Winsock counts in int, BSD sockets in size_t; a datagram is far below either's limit.
+  const auto send_once = [&] {
+    return static_cast<long long>(::send(native(handle_), data.data(), static_cast<int>(data.size()), 0));
+  };
+  long long n = send_once();
+#ifndef _WIN32
+  while (n < 0 && errno == EINTR) n = send_once();
+#endif
+  if (n < 0) fail();
   return n;
 }
 
 long long UdpSocket::receive(char* buffer, std::size_t size, std::uint32_t* from_address, std::uint16_t* from_port,
                              int timeout_ms) {
-  WSAPOLLFD p{};
-  p.fd = sock_of(handle_);
-  p.events = POLLRDNORM;
-  if (const int ready = WSAPoll(&p, 1, timeout_ms); ready <= 0) {
-    if (ready < 0) {
-      fail();
-      return -1;
-    }
-    return 0;
+  if (const int ready = wait_readable(native(handle_), timeout_ms); ready <= 0) {
+    if (ready < 0) fail();
+    return ready < 0 ? -1 : 0;
   }
   sockaddr_in from{};
-  int from_len = sizeof from;
-  const int n = recvfrom(sock_of(handle_), buffer, static_cast<int>(size), 0, reinterpret_cast<sockaddr*>(&from), &from_len);
-  if (n == SOCKET_ERROR) {
+  AddressLength from_len = sizeof from;
+  const long long n =
+      recvfrom(native(handle_), buffer, static_cast<int>(size), 0, reinterpret_cast<sockaddr*>(&from), &from_len);
+  if (n < 0) {
+#ifdef _WIN32
     // A datagram larger than the buffer, or an ICMP "port unreachable" for an earlier send, which
     // Windows reports on the next receive: neither ends listening.
     if (const int e = WSAGetLastError(); e == WSAEMSGSIZE || e == WSAECONNRESET) return 0;
+#endif
     fail();
     return -1;
   }
@@ -148,14 +219,18 @@ long long UdpSocket::receive(char* buffer, std::size_t size, std::uint32_t* from
 
 std::vector<std::uint32_t> resolve_ipv4(const std::string& name, bool numeric_only, std::string* error) {
   std::vector<std::uint32_t> out;
-  if (!start_winsock(error)) return out;
+  if (!start_sockets(error)) return out;
   addrinfo hints{};
   hints.ai_family = AF_INET;
   hints.ai_socktype = SOCK_DGRAM;
   if (numeric_only) hints.ai_flags = AI_NUMERICHOST;
   addrinfo* res = nullptr;
   if (const int rc = getaddrinfo(name.c_str(), nullptr, &hints, &res); rc != 0 || res == nullptr) {
+#ifdef _WIN32
     *error = platform::system_error_text(rc);
+#else
+    *error = gai_strerror(rc);
+#endif
     return out;
   }
   for (const addrinfo* p = res; p != nullptr; p = p->ai_next) {
@@ -169,6 +244,7 @@ std::vector<std::uint32_t> resolve_ipv4(const std::string& name, bool numeric_on
   return out;
 }
 
+#ifdef _WIN32
 std::string interface_with_address(std::uint32_t local) {
   ULONG size = 16 * 1024;
   std::vector<unsigned char> buffer;
@@ -185,6 +261,7 @@ std::string interface_with_address(std::uint32_t local) {
       sockaddr_in in{};
       std::memcpy(&in, u->Address.lpSockaddr, sizeof in);
       if (ntohl(in.sin_addr.s_addr) != local) continue;
+      // The adapter's friendly name ("Ethernet 2"), as UTF-8.
       const int n = WideCharToMultiByte(CP_UTF8, 0, a->FriendlyName, -1, nullptr, 0, nullptr, nullptr);
       std::string name(n > 0 ? static_cast<size_t>(n - 1) : 0, '\0');
       if (n > 1) WideCharToMultiByte(CP_UTF8, 0, a->FriendlyName, -1, name.data(), n, nullptr, nullptr);
@@ -193,6 +270,20 @@ std::string interface_with_address(std::uint32_t local) {
   }
   return {};
 }
+#else
+std::string interface_with_address(std::uint32_t local) {
+  ifaddrs* list = nullptr;
+  if (::getifaddrs(&list) != 0) return {};
+  std::string name;
+  for (const ifaddrs* p = list; p != nullptr && name.empty(); p = p->ifa_next) {
+    if (p->ifa_addr == nullptr || p->ifa_addr->sa_family != AF_INET) continue;
+    sockaddr_in a{};
+    std::memcpy(&a, p->ifa_addr, sizeof a);
+    if (ntohl(a.sin_addr.s_addr) == local) name = p->ifa_name;
+  }
+  ::freeifaddrs(list);
+  return name;
+}
+#endif
 
 }  // namespace lmc::devices::net
-#endif
