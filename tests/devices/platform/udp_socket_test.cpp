@@ -104,7 +104,8 @@ TEST(FineTimerResolution, PacesFramesAt120Hz) {
   std::sort(intervals_ms.begin(), intervals_ms.end());
   const double median = intervals_ms[intervals_ms.size() / 2];
   EXPECT_NEAR(median, 1000.0 / 120.0, 1.0);
-  // Fewer than a tenth of the frames may come late by a whole period (a busy machine).
-  const auto late = std::count_if(intervals_ms.begin(), intervals_ms.end(), [](double v) { return v > 2 * 8.34; });
-  EXPECT_LT(late, 12);
+  // With the coarse timer every other frame comes at once after a late one (about half of them);
+  // a busy machine makes a few such pairs too, never a quarter.
+  const auto bursts = std::count_if(intervals_ms.begin(), intervals_ms.end(), [](double v) { return v < 0.5 * 8.33; });
+  EXPECT_LT(bursts, 30);
 }
