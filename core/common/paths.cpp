@@ -1,19 +1,48 @@
 #include "core/common/paths.h"
 
 #include <cstdlib>
+#include <system_error>
 
 #include "core/common/error.h"
+
+#ifdef _WIN32
+#include <windows.h>
+#endif
 
 #ifndef LMC_SOURCE_ASSETS_DIR
 #define LMC_SOURCE_ASSETS_DIR "assets"
 #endif
 
 namespace lmc {
+namespace {
+
+// The folder holding the running program: an unpacked Windows zip keeps its assets beside it.
+std::filesystem::path program_dir() {
+  std::error_code ec;
+#ifdef _WIN32
+  std::wstring buffer(32768, L'\0');
+  const DWORD n = GetModuleFileNameW(nullptr, buffer.data(), static_cast<DWORD>(buffer.size()));
+  if (n == 0 || n >= buffer.size()) return {};
+  buffer.resize(n);
+  return std::filesystem::path(buffer).parent_path();
+#else
+  const auto exe = std::filesystem::read_symlink("/proc/self/exe", ec);
+  return ec ? std::filesystem::path() : exe.parent_path();
+#endif
+}
+
+}  // namespace
 
 std::filesystem::path assets_dir() {
   if (const char* env = std::getenv("LMC_ASSETS_DIR"); env != nullptr && *env != '\0') {
     return env;
   }
+  std::error_code ec;
+  // A packed build (the Windows zip) carries its assets beside the programs; a build tree uses the
+  // checkout's.
+  if (const auto dir = program_dir(); !dir.empty() && !std::filesystem::is_directory(LMC_SOURCE_ASSETS_DIR, ec) &&
+                                      std::filesystem::is_directory(dir / "assets", ec))
+    return dir / "assets";
   return LMC_SOURCE_ASSETS_DIR;
 }
 
@@ -67,6 +96,10 @@ std::filesystem::path demo_sessions_dir() {
 
 std::filesystem::path user_cache_dir() {
   if (const char* env = std::getenv("LMC_CACHE_DIR"); env != nullptr && *env != '\0') return env;
+#ifdef _WIN32
+  if (const char* local = std::getenv("LOCALAPPDATA"); local != nullptr && *local != '\0')
+    return std::filesystem::path(local) / "lmc-workbench" / "cache";
+#endif
   if (const char* xdg = std::getenv("XDG_CACHE_HOME"); xdg != nullptr && *xdg != '\0') {
     return std::filesystem::path(xdg) / "lmc-workbench";
   }

@@ -12,7 +12,11 @@ std::tm utc_now(int* ms) {
   const std::time_t secs = std::chrono::system_clock::to_time_t(now);
   *ms = static_cast<int>(std::chrono::duration_cast<std::chrono::milliseconds>(now.time_since_epoch()).count() % 1000);
   std::tm utc{};
+#ifdef _WIN32
+  gmtime_s(&utc, &secs);  // thread-safe like gmtime_r; Microsoft's order: the result first
+#else
   gmtime_r(&secs, &utc);
+#endif
   return utc;
 }
 

@@ -1,55 +1,44 @@
 #include "core/io/atomic_write.h"
 
-#include <fcntl.h>
-#include <unistd.h>
-
-#include <cerrno>
-#include <cstring>
 #include <random>
 #include <string>
+#include <system_error>
 
 #include "core/common/error.h"
+#include "core/platform/durable_file.h"
 
 namespace lmc {
-namespace {
-
-[[noreturn]] void fail(const std::filesystem::path& path, const std::string& what) {
-  throw Error(ErrorLocation{path.string()}, what + ": " + std::strerror(errno));
-}
-
-}  // namespace
 
 void write_file_atomically(const std::filesystem::path& path, std::string_view contents) {
   std::random_device rd;
   const auto tmp = path.parent_path() / ("." + path.filename().string() + ".tmp" + std::to_string(rd() % 1000000));
-  const int fd = ::open(tmp.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
-  if (fd < 0) fail(path, "cannot create temporary file " + tmp.string());
-  const char* data = contents.data();
-  size_t left = contents.size();
-  while (left > 0) {
-    const ssize_t n = ::write(fd, data, left);
-    if (n < 0) {
-      if (errno == EINTR) continue;
-      const int saved = errno;
-      ::close(fd);
-      ::unlink(tmp.c_str());
-      errno = saved;
-      fail(path, "write failed");
-    }
-    data += n;
-    left -= static_cast<size_t>(n);
+  auto discard_tmp = [&] {
+    std::error_code ignored;
+    std::filesystem::remove(tmp, ignored);
+  };
+  platform::DurableFile file;
+  try {
+    file = platform::DurableFile(tmp, platform::OpenMode::truncate);
+  } catch (const Error& e) {
+    throw Error(ErrorLocation{path.string()}, "cannot create temporary file " + tmp.string() + ": " + e.what());
   }
-  if (::fsync(fd) != 0 || ::close(fd) != 0) {
-    const int saved = errno;
-    ::unlink(tmp.c_str());
-    errno = saved;
-    fail(path, "sync failed");
+  if (!file.write(contents)) {
+    const std::string why = file.last_error();
+    file.close();
+    discard_tmp();
+    throw Error(ErrorLocation{path.string()}, "write failed: " + why);
   }
-  if (::rename(tmp.c_str(), path.c_str()) != 0) {
-    const int saved = errno;
-    ::unlink(tmp.c_str());
-    errno = saved;
-    fail(path, "rename failed");
+  if (!file.sync() || !file.close()) {
+    const std::string why = file.last_error();
+    file.close();
+    discard_tmp();
+    throw Error(ErrorLocation{path.string()}, "sync failed: " + why);
+  }
+  try {
+    platform::replace_file(tmp, path);
+  } catch (...) {
+    discard_tmp();
+    throw;
   }
 }
 

@@ -1,6 +1,5 @@
 #include "core/poses/recorded_poses.h"
 
-#include <fnmatch.h>
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
@@ -9,6 +8,7 @@
 #include <cmath>
 
 #include "core/common/error.h"
+#include "core/common/glob_match.h"
 #include "core/hand/hand_track.h"
 #include "core/hand/palm_axes.h"
 #include "core/io/lmc_recording.h"
@@ -274,7 +274,7 @@ RecordedPoseSet pose_set_from_recordings(const std::vector<fs::path>& inputs, co
     auto found = options.source == RecordedPoseSource::kFused ? fused_inputs(input, options, notes)
                                                               : recording_inputs(input, options, notes);
     for (auto& t : found) {
-      if (!options.trials_glob.empty() && fnmatch(options.trials_glob.c_str(), t.trial.c_str(), 0) != 0) continue;
+      if (!options.trials_glob.empty() && !glob_matches(options.trials_glob, t.trial)) continue;
       trials.push_back(std::move(t));
     }
   }

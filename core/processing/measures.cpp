@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 
 namespace lmc {
 namespace {
@@ -63,7 +64,7 @@ double joint_angle_deg(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& 
   // A cosine a rounding step beyond ±1 (collinear segments) is clamped: numpy's arccos gave NaN
   // there, which dropped exactly-straight frames from the statistics.
   const double cosine = std::clamp(u.dot(v) / div, -1.0, 1.0);
-  return std::acos(cosine) * 180.0 / M_PI;
+  return std::acos(cosine) * 180.0 / std::numbers::pi;
 }
 
 FrameMeasures measure_frame(const HandTrack& track, int frame) {

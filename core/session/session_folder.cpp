@@ -1,12 +1,5 @@
 #include "core/session/session_folder.h"
 
-#include <fcntl.h>
-#include <sys/file.h>
-#include <sys/stat.h>
-#include <unistd.h>
-
-#include <cerrno>
-#include <cstring>
 #include <fstream>
 #include <utility>
 #include <vector>
@@ -17,6 +10,8 @@
 #include "core/common/utc_time.h"
 #include "core/io/atomic_write.h"
 #include "core/io/layout_json.h"
+#include "core/platform/file_lock.h"
+#include "core/platform/process.h"
 #include "core/session/trial_files.h"
 
 namespace fs = std::filesystem;
@@ -36,43 +31,18 @@ nlohmann::json resolve_layout(const std::string& ref, const fs::path& protocol_f
 }
 
 // Takes the folder's lock for this process; an error names the process that holds it.
-int take_lock(const fs::path& dir) {
-  const fs::path path = dir / kLockFile;
-  // A clean close removes the lock file (while holding it): a lock taken on a file removed since it
-  // was opened locks nothing, so it is taken again on the file now at the path.
-  for (int tries = 0;; ++tries) {
-    const int fd = ::open(path.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
-    if (fd < 0)
-      throw Error(ErrorLocation{path.string()}, std::string("cannot create the session lock: ") + std::strerror(errno));
-    if (::flock(fd, LOCK_EX | LOCK_NB) != 0) {
-      char buf[32] = {};
-      const ssize_t n = ::pread(fd, buf, sizeof buf - 1, 0);
-      ::close(fd);
-      const std::string holder = n > 0 ? std::string(buf, static_cast<size_t>(n)) : std::string("unknown");
-      throw Error("session " + dir.string() + " is open in another process (pid " + holder +
-                  "); close it there first — two programs recording into one session would mix its trials");
-    }
-    struct stat held {};
-    struct stat at_path {};
-    if (::fstat(fd, &held) == 0 && ::stat(path.c_str(), &at_path) == 0 && held.st_ino == at_path.st_ino &&
-        held.st_dev == at_path.st_dev) {
-      const std::string pid = std::to_string(::getpid());
-      if (::ftruncate(fd, 0) == 0) {
-        [[maybe_unused]] const ssize_t w = ::pwrite(fd, pid.data(), pid.size(), 0);
-      }
-      return fd;
-    }
-    ::close(fd);
-    if (tries >= 10) throw Error(ErrorLocation{path.string()}, "the session lock keeps changing; try again");
-  }
+platform::FileLock take_lock(const fs::path& dir) {
+  std::string holder;
+  platform::FileLock lock =
+      platform::FileLock::take(dir / kLockFile, std::to_string(platform::current_process_id()), &holder);
+  if (!lock.held())
+    throw Error("session " + dir.string() + " is open in another process (pid " + holder +
+                "); close it there first — two programs recording into one session would mix its trials");
+  return lock;
 }
 
 bool lock_is_held(const fs::path& dir) {
-  const int fd = ::open((dir / kLockFile).c_str(), O_RDONLY | O_CLOEXEC);
-  if (fd < 0) return false;
-  const bool held = ::flock(fd, LOCK_SH | LOCK_NB) != 0;
-  ::close(fd);
-  return held;
+  return platform::file_lock_is_held(dir / kLockFile);
 }
 
 std::string attempt_dir_name(const std::string& trial, int attempt) {
@@ -99,26 +69,24 @@ fs::path default_session_dir(const std::string& subject_id, const fs::path& root
   return root / (subject_id + "-" + utc_now_compact());
 }
 
-SessionFolder::SessionFolder(fs::path dir, SessionState state, JournalWriter journal, int lock_fd)
-    : dir_(std::move(dir)), state_(std::move(state)), journal_(std::move(journal)), lock_fd_(lock_fd) {}
+SessionFolder::SessionFolder(fs::path dir, SessionState state, JournalWriter journal, platform::FileLock lock)
+    : dir_(std::move(dir)), state_(std::move(state)), journal_(std::move(journal)), lock_(std::move(lock)) {}
 
 SessionFolder::SessionFolder(SessionFolder&& o) noexcept
     : dir_(std::move(o.dir_)),
       state_(std::move(o.state_)),
       journal_(std::move(o.journal_)),
       manifest_(std::move(o.manifest_)),
-      lock_fd_(o.lock_fd_),
-      recovered_(std::move(o.recovered_)) {
-  o.lock_fd_ = -1;
-}
+      lock_(std::move(o.lock_)),
+      recovered_(std::move(o.recovered_)) {}
 
 SessionFolder::~SessionFolder() {
-  if (lock_fd_ < 0) return;
+  if (!lock_.held()) return;
   // A clean close leaves no lock file behind (take_lock copes with one removed under it); a crash
   // leaves it, unlocked, and the next open takes it.
   std::error_code ec;
   fs::remove(dir_ / kLockFile, ec);
-  ::close(lock_fd_);  // closing releases the flock
+  lock_.release();
 }
 
 SessionFolder SessionFolder::create(const fs::path& dir, const NewSessionSpec& spec) {
@@ -151,9 +119,9 @@ SessionFolder SessionFolder::create(const fs::path& dir, const NewSessionSpec& s
 
   fs::create_directories(dir, ec);
   if (ec) throw Error(ErrorLocation{dir.string()}, "cannot create the session folder: " + ec.message());
-  const int lock = take_lock(dir);
+  platform::FileLock lock = take_lock(dir);
   JournalWriter journal(dir / kJournalFile, true);
-  SessionFolder folder(dir, SessionState{}, std::move(journal), lock);
+  SessionFolder folder(dir, SessionState{}, std::move(journal), std::move(lock));
   folder.record({{"type", "session_created"}, {"setup", setup_json}});
   return folder;
 }
@@ -167,45 +135,45 @@ SessionFolder SessionFolder::open(const fs::path& dir) {
   if (!is_session_folder(dir))
     throw Error(ErrorLocation{dir.string()},
                 std::string("not a subject session (no ") + kJournalFile + "); create one with `lmc session new`");
-  const int lock = take_lock(dir);
-  try {
-    const fs::path path = dir / kJournalFile;
-    JournalContents journal = read_journal(path);
-    if (journal.cut_last_line) {
-      // Keep the fragment for the record, then cut the journal back to its last complete line
-      // so the next event starts on a line of its own.
+  // Released by its destructor when anything below throws.
+  platform::FileLock lock = take_lock(dir);
+  const fs::path path = dir / kJournalFile;
+  JournalContents journal = read_journal(path);
+  if (journal.cut_last_line) {
+    // Keep the fragment for the record, then cut the journal back to its last complete line
+    // so the next event starts on a line of its own.
+    std::string fragment;
+    {
       std::ifstream in(path, std::ios::binary);
       in.seekg(static_cast<std::streamoff>(journal.complete_bytes));
-      std::string fragment((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-      write_file_atomically(dir / ("journal.cut-" + utc_now_compact() + ".txt"), fragment);
-      if (::truncate(path.c_str(), static_cast<off_t>(journal.complete_bytes)) != 0)
-        throw Error(ErrorLocation{path.string()},
-                    std::string("cannot cut the journal's broken last line: ") + std::strerror(errno));
+      fragment.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
     }
-    SessionState state = state_from_journal(journal, path.string());
-    SessionFolder folder(dir, std::move(state), JournalWriter(path, false), lock);
-    folder.record(
-        {{"type", "session_opened"}, {"software_version", LMC_VERSION}, {"pid", static_cast<int>(::getpid())}});
-    // Collected first: record() replaces the state the loop would otherwise be walking.
-    std::vector<std::pair<int, int>> cut_off;  // trial index, attempt
-    for (const auto& t : folder.state().trials)
-      if (t.status == TrialStatus::kRecording) cut_off.emplace_back(t.plan.index, t.attempts.back().number);
-    for (const auto& [index, attempt] : cut_off) {
-      const std::string name = folder.state().trials.at(static_cast<size_t>(index)).plan.name;
-      folder.recovered_.push_back(name);
-      folder.record({{"type", "trial_interrupted"},
-                     {"trial", index},
-                     {"name", name},
-                     {"attempt", attempt},
-                     {"reason",
-                      "the program stopped while recording (crash, kill or power loss); the rows written "
-                      "until then are kept"}});
-    }
-    return folder;
-  } catch (...) {
-    ::close(lock);
-    throw;
+    write_file_atomically(dir / ("journal.cut-" + utc_now_compact() + ".txt"), fragment);
+    std::error_code cut_ec;
+    fs::resize_file(path, journal.complete_bytes, cut_ec);
+    if (cut_ec)
+      throw Error(ErrorLocation{path.string()}, "cannot cut the journal's broken last line: " + cut_ec.message());
   }
+  SessionState state = state_from_journal(journal, path.string());
+  SessionFolder folder(dir, std::move(state), JournalWriter(path, false), std::move(lock));
+  folder.record(
+      {{"type", "session_opened"}, {"software_version", LMC_VERSION}, {"pid", platform::current_process_id()}});
+  // Collected first: record() replaces the state the loop would otherwise be walking.
+  std::vector<std::pair<int, int>> cut_off;  // trial index, attempt
+  for (const auto& t : folder.state().trials)
+    if (t.status == TrialStatus::kRecording) cut_off.emplace_back(t.plan.index, t.attempts.back().number);
+  for (const auto& [index, attempt] : cut_off) {
+    const std::string name = folder.state().trials.at(static_cast<size_t>(index)).plan.name;
+    folder.recovered_.push_back(name);
+    folder.record({{"type", "trial_interrupted"},
+                   {"trial", index},
+                   {"name", name},
+                   {"attempt", attempt},
+                   {"reason",
+                    "the program stopped while recording (crash, kill or power loss); the rows written "
+                    "until then are kept"}});
+  }
+  return folder;
 }
 
 void SessionFolder::record(nlohmann::json event) {

@@ -13,6 +13,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "core/platform/file_lock.h"
 #include "core/session/manifest_text.h"
 #include "core/session/session_journal.h"
 #include "core/session/session_state.h"
@@ -85,7 +86,7 @@ class SessionFolder {
   void calibration_kept_nominal(const std::string& block, const std::string& reason, const nlohmann::json& summary);
 
  private:
-  SessionFolder(std::filesystem::path dir, SessionState state, JournalWriter journal, int lock_fd);
+  SessionFolder(std::filesystem::path dir, SessionState state, JournalWriter journal, platform::FileLock lock);
   void write_manifest(int changed_trial);
   void require_trial(int i) const;
   int last_attempt(int i) const;
@@ -94,7 +95,7 @@ class SessionFolder {
   SessionState state_;
   JournalWriter journal_;
   ManifestText manifest_;  // session.json's text, each trial's entry kept until an event changes it
-  int lock_fd_ = -1;
+  platform::FileLock lock_;
   std::vector<std::string> recovered_;
 };
 

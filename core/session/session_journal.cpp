@@ -1,10 +1,5 @@
 #include "core/session/session_journal.h"
 
-#include <fcntl.h>
-#include <unistd.h>
-
-#include <cerrno>
-#include <cstring>
 #include <fstream>
 #include <sstream>
 
@@ -15,38 +10,16 @@ namespace fs = std::filesystem;
 
 namespace lmc {
 
-JournalWriter::JournalWriter(const fs::path& path, bool create) : path_(path) {
-  const int flags = O_WRONLY | O_APPEND | O_CLOEXEC | (create ? (O_CREAT | O_EXCL) : 0);
-  fd_ = ::open(path.c_str(), flags, 0644);
-  if (fd_ < 0)
-    throw Error(ErrorLocation{path.string()}, std::string("cannot open the journal: ") + std::strerror(errno));
-}
-
-JournalWriter::~JournalWriter() {
-  if (fd_ >= 0) ::close(fd_);
-}
-
-JournalWriter::JournalWriter(JournalWriter&& other) noexcept : path_(std::move(other.path_)), fd_(other.fd_) {
-  other.fd_ = -1;
-}
+JournalWriter::JournalWriter(const fs::path& path, bool create)
+    : path_(path), file_(path, create ? platform::OpenMode::append_new : platform::OpenMode::append) {}
 
 void JournalWriter::append(const nlohmann::json& event) {
-  // One write() of the whole line: with O_APPEND a line is never interleaved with another
-  // writer's, and a crash leaves at most this one line cut.
+  // One write of the whole line to a file opened for appending: a line is never interleaved with
+  // another writer's, and a crash leaves at most this one line cut.
   const std::string line = event.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace) + "\n";
-  const char* data = line.data();
-  size_t left = line.size();
-  while (left > 0) {
-    const ssize_t n = ::write(fd_, data, left);
-    if (n < 0) {
-      if (errno == EINTR) continue;
-      throw Error(ErrorLocation{path_.string()}, std::string("cannot append to the journal: ") + std::strerror(errno));
-    }
-    data += n;
-    left -= static_cast<size_t>(n);
-  }
-  if (::fsync(fd_) != 0)
-    throw Error(ErrorLocation{path_.string()}, std::string("cannot sync the journal: ") + std::strerror(errno));
+  if (!file_.write(line))
+    throw Error(ErrorLocation{path_.string()}, "cannot append to the journal: " + file_.last_error());
+  if (!file_.sync()) throw Error(ErrorLocation{path_.string()}, "cannot sync the journal: " + file_.last_error());
 }
 
 JournalContents read_journal(const fs::path& path, std::uintmax_t max_bytes) {

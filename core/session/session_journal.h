@@ -11,14 +11,15 @@
 
 #include <nlohmann/json.hpp>
 
+#include "core/platform/durable_file.h"
+
 namespace lmc {
 
 class JournalWriter {
  public:
   // Opens for appending (creates the file when `create`; then it must not exist yet).
   JournalWriter(const std::filesystem::path& path, bool create);
-  ~JournalWriter();
-  JournalWriter(JournalWriter&& other) noexcept;
+  JournalWriter(JournalWriter&& other) noexcept = default;
   JournalWriter& operator=(JournalWriter&&) = delete;
   JournalWriter(const JournalWriter&) = delete;
   JournalWriter& operator=(const JournalWriter&) = delete;
@@ -30,7 +31,7 @@ class JournalWriter {
 
  private:
   std::filesystem::path path_;
-  int fd_ = -1;
+  platform::DurableFile file_;
 };
 
 struct JournalContents {

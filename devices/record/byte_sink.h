@@ -1,6 +1,6 @@
 #pragma once
-// Where the recorder's bytes go. The file implementation uses POSIX calls so a full disk or an
-// I/O error surfaces as errno text; tests inject a sink that fails after N bytes.
+// Where the recorder's bytes go. The file implementation (core/platform/durable_file.h) surfaces a full disk or an
+// I/O error as the system's text; tests inject a sink that fails after N bytes.
 #include <cstdint>
 #include <filesystem>
 #include <memory>

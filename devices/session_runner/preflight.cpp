@@ -1,7 +1,5 @@
 #include "devices/session_runner/preflight.h"
 
-#include <unistd.h>
-
 #include <cstdio>
 #include <fstream>
 #include <nlohmann/json.hpp>

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "devices/host_clock.h"
+#include "devices/platform/fine_timer.h"
 
 namespace lmc::devices {
 
@@ -31,6 +32,7 @@ void SimSource::stop() {
 }
 
 void SimSource::run(FrameSink& sink) {
+  const FineTimerResolution fine_sleeps;  // 120 Hz pacing on Windows too
   const std::int64_t start_ns = host_now_ns();
   start_ns_ = start_ns;
   bool completed = false;

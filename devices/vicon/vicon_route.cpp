@@ -1,57 +1,31 @@
 #include "devices/vicon/vicon_route.h"
 
-#include <arpa/inet.h>
-#include <ifaddrs.h>
-#include <netinet/in.h>
-#include <sys/socket.h>
-#include <unistd.h>
-
-#include <cerrno>
-#include <cstring>
 #include <set>
 
 #include "core/common/error.h"
+#include "devices/platform/udp_socket.h"
 
 namespace lmc::devices {
 
 std::optional<std::uint32_t> local_address_towards(std::uint32_t remote, std::string* error) {
-  const int fd = ::socket(AF_INET, SOCK_DGRAM | SOCK_CLOEXEC, 0);
-  if (fd < 0) {
-    if (error) *error = std::string("cannot open a UDP socket: ") + std::strerror(errno);
+  try {
+    net::UdpSocket probe("route probe");
+    // Any port: connect() on UDP only picks the route, nothing is sent.
+    if (!probe.connect(remote, 9)) {
+      if (error) *error = probe.error();
+      return std::nullopt;
+    }
+    const auto local = probe.local_address();
+    if (!local && error) *error = probe.error();
+    return local;
+  } catch (const Error& e) {
+    if (error) *error = e.what();
     return std::nullopt;
   }
-  sockaddr_in to{};
-  to.sin_family = AF_INET;
-  to.sin_port = htons(9);  // any port: connect() on UDP only picks the route, nothing is sent
-  to.sin_addr.s_addr = htonl(remote);
-  std::optional<std::uint32_t> out;
-  if (::connect(fd, reinterpret_cast<const sockaddr*>(&to), sizeof to) != 0) {
-    if (error) *error = std::strerror(errno);
-  } else {
-    sockaddr_in local{};
-    socklen_t len = sizeof local;
-    if (::getsockname(fd, reinterpret_cast<sockaddr*>(&local), &len) == 0) {
-      out = ntohl(local.sin_addr.s_addr);
-    } else if (error) {
-      *error = std::strerror(errno);
-    }
-  }
-  ::close(fd);
-  return out;
 }
 
 std::string interface_with_address(std::uint32_t local) {
-  ifaddrs* list = nullptr;
-  if (::getifaddrs(&list) != 0) return {};
-  std::string name;
-  for (const ifaddrs* p = list; p != nullptr && name.empty(); p = p->ifa_next) {
-    if (p->ifa_addr == nullptr || p->ifa_addr->sa_family != AF_INET) continue;
-    sockaddr_in a{};
-    std::memcpy(&a, p->ifa_addr, sizeof a);
-    if (ntohl(a.sin_addr.s_addr) == local) name = p->ifa_name;
-  }
-  ::freeifaddrs(list);
-  return name;
+  return net::interface_with_address(local);
 }
 
 ViconListenBinding choose_vicon_listen_binding(const std::string& listen_address, const ViconSenders& senders) {

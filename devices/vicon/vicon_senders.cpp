@@ -1,15 +1,11 @@
 #include "devices/vicon/vicon_senders.h"
 
-#include <arpa/inet.h>
-#include <netdb.h>
-#include <netinet/in.h>
-#include <sys/socket.h>
-
 #include <algorithm>
 #include <cctype>
 #include <cstring>
 
 #include "core/common/error.h"
+#include "devices/platform/udp_socket.h"
 
 namespace lmc::devices {
 namespace {
@@ -75,21 +71,12 @@ bool ViconSenderRule::matches(std::uint32_t address) const {
 }
 
 std::vector<std::uint32_t> resolve_ipv4_host(const std::string& name) {
-  addrinfo hints{};
-  hints.ai_family = AF_INET;
-  hints.ai_socktype = SOCK_DGRAM;
-  addrinfo* res = nullptr;
-  if (const int rc = getaddrinfo(name.c_str(), nullptr, &hints, &res); rc != 0 || res == nullptr)
-    throw Error("Vicon host '" + name + "' cannot be resolved: " + gai_strerror(rc));
-  std::vector<std::uint32_t> out;
-  for (const addrinfo* p = res; p != nullptr; p = p->ai_next) {
-    sockaddr_in addr{};
-    std::memcpy(&addr, p->ai_addr, sizeof addr);
-    const std::uint32_t a = ntohl(addr.sin_addr.s_addr);
-    if (std::find(out.begin(), out.end(), a) == out.end()) out.push_back(a);
+  std::string why;
+  std::vector<std::uint32_t> out = net::resolve_ipv4(name, false, &why);
+  if (out.empty()) {
+    if (why == "no IPv4 address") throw Error("Vicon host '" + name + "' has no IPv4 address");
+    throw Error("Vicon host '" + name + "' cannot be resolved: " + why);
   }
-  freeaddrinfo(res);
-  if (out.empty()) throw Error("Vicon host '" + name + "' has no IPv4 address");
   return out;
 }
 

@@ -1,14 +1,5 @@
 #include "devices/vicon/vicon_trigger.h"
 
-#include <arpa/inet.h>
-#include <fcntl.h>
-#include <netdb.h>
-#include <netinet/in.h>
-#include <poll.h>
-#include <sys/file.h>
-#include <sys/socket.h>
-#include <unistd.h>
-
 #include <algorithm>
 #include <cerrno>
 #include <chrono>
@@ -17,7 +8,9 @@
 #include <set>
 
 #include "core/common/error.h"
+#include "core/platform/file_lock.h"
 #include "devices/host_clock.h"
+#include "devices/platform/udp_socket.h"
 
 namespace lmc::devices {
 namespace {
@@ -47,6 +40,10 @@ std::filesystem::path default_packet_id_file() {
     return std::filesystem::path(d) / "vicon-packet-id";
   if (const std::string d = env_or_empty("XDG_STATE_HOME"); !d.empty())
     return std::filesystem::path(d) / "lmc-workbench" / "vicon-packet-id";
+#ifdef _WIN32
+  if (const std::string d = env_or_empty("LOCALAPPDATA"); !d.empty())
+    return std::filesystem::path(d) / "lmc-workbench" / "vicon-packet-id";
+#endif
   if (const std::string h = env_or_empty("HOME"); !h.empty())
     return std::filesystem::path(h) / ".local" / "state" / "lmc-workbench" / "vicon-packet-id";
   return {};
@@ -74,35 +71,17 @@ ViconTriggerConfig parse_vicon_target(const std::string& spec) {
 }
 
 ViconTrigger::ViconTrigger(ViconTriggerConfig config) : config_(std::move(config)) {
-  addrinfo hints{};
-  hints.ai_family = AF_INET;
-  hints.ai_socktype = SOCK_DGRAM;
+  std::string why;
   // Dotted numbers are never sent to a resolver: a typo such as 300.1.1.1 fails here.
-  if (looks_numeric(config_.host)) hints.ai_flags = AI_NUMERICHOST;
-  addrinfo* res = nullptr;
-  const std::string port = std::to_string(config_.port);
-  if (const int rc = getaddrinfo(config_.host.c_str(), port.c_str(), &hints, &res); rc != 0 || res == nullptr)
-    throw Error("Vicon trigger: cannot resolve host '" + config_.host + "': " + gai_strerror(rc));
-  sockaddr_in addr{};
-  std::memcpy(&addr, res->ai_addr, sizeof addr);
-  freeaddrinfo(res);
-  fd_ = ::socket(AF_INET, SOCK_DGRAM | SOCK_CLOEXEC, 0);
-  if (fd_ < 0) throw Error(std::string("Vicon trigger: cannot open a UDP socket: ") + std::strerror(errno));
-  const std::uint32_t ip = ntohl(addr.sin_addr.s_addr);
+  const auto addresses = net::resolve_ipv4(config_.host, looks_numeric(config_.host), &why);
+  if (addresses.empty()) throw Error("Vicon trigger: cannot resolve host '" + config_.host + "': " + why);
+  const std::uint32_t ip = addresses.front();
+  socket_ = std::make_unique<net::UdpSocket>("Vicon trigger");
   broadcast_ = ip == 0xFFFFFFFFu || (ip & 0xFFu) == 0xFFu;
-  if (broadcast_) {
-    const int on = 1;
-    if (setsockopt(fd_, SOL_SOCKET, SO_BROADCAST, &on, sizeof on) != 0) {
-      const std::string why = std::strerror(errno);
-      ::close(fd_);
-      throw Error("Vicon trigger: cannot enable broadcast: " + why);
-    }
-  }
-  if (::connect(fd_, reinterpret_cast<const sockaddr*>(&addr), sizeof addr) != 0) {
-    const std::string why = std::strerror(errno);
-    ::close(fd_);
-    throw Error("Vicon trigger: cannot reach " + target() + ": " + why);
-  }
+  if (broadcast_ && !socket_->enable_broadcast())
+    throw Error("Vicon trigger: cannot enable broadcast: " + socket_->error());
+  if (!socket_->connect(ip, config_.port))
+    throw Error("Vicon trigger: cannot reach " + target() + ": " + socket_->error());
   if (config_.first_packet_id) {
     next_id_ = *config_.first_packet_id;
   } else {
@@ -117,35 +96,29 @@ std::uint32_t ViconTrigger::reserve_packet_id(std::string& warning) {
   if (config_.first_packet_id || id_file_.empty()) return next_id_++;
   std::error_code ec;
   std::filesystem::create_directories(id_file_.parent_path(), ec);
-  const int fd = ::open(id_file_.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
-  if (fd < 0) {
-    warning = "Vicon trigger: cannot use the PacketID file " + id_file_.string() + " (" + std::strerror(errno) +
+  // One writer at a time: two programs triggering at once still get different IDs.
+  std::string text;
+  platform::LockedFile file;
+  try {
+    file = platform::LockedFile::open(id_file_, &text);
+  } catch (const Error& e) {
+    warning = "Vicon trigger: cannot use the PacketID file " + id_file_.string() + " (" + e.what() +
               "); PacketIDs come from the clock only and may repeat for sessions started in the same second";
     return next_id_++;
   }
-  // One writer at a time: two programs triggering at once still get different IDs.
-  while (::flock(fd, LOCK_EX) != 0 && errno == EINTR) {
-  }
-  char buf[32] = {};
-  const ssize_t n = ::pread(fd, buf, sizeof buf - 1, 0);
   std::uint32_t id = next_id_;
-  if (n > 0) {
+  if (!text.empty()) {
     char* end = nullptr;
-    const unsigned long long last = std::strtoull(buf, &end, 10);
-    if (end != buf && last < kMaxPacketId && last + 1 > id) id = static_cast<std::uint32_t>(last + 1);
+    const unsigned long long last = std::strtoull(text.c_str(), &end, 10);
+    if (end != text.c_str() && last < kMaxPacketId && last + 1 > id) id = static_cast<std::uint32_t>(last + 1);
   }
-  const std::string text = std::to_string(id) + "\n";
-  if (::ftruncate(fd, 0) != 0 || ::pwrite(fd, text.data(), text.size(), 0) != static_cast<ssize_t>(text.size()))
-    warning = "Vicon trigger: cannot update the PacketID file " + id_file_.string() + " (" + std::strerror(errno) + ")";
-  ::flock(fd, LOCK_UN);
-  ::close(fd);
+  if (std::string why; !file.replace_text(std::to_string(id) + "\n", &why))
+    warning = "Vicon trigger: cannot update the PacketID file " + id_file_.string() + " (" + why + ")";
   next_id_ = id >= kMaxPacketId ? 0 : id + 1;
   return id;
 }
 
-ViconTrigger::~ViconTrigger() {
-  if (fd_ >= 0) ::close(fd_);
-}
+ViconTrigger::~ViconTrigger() = default;
 
 std::string ViconTrigger::target() const {
   return config_.host + ":" + std::to_string(config_.port);
@@ -180,12 +153,9 @@ ViconSendResult ViconTrigger::send(ViconMessage message) {
   for (int i = 0; i < std::max(1, config_.repeats); ++i) {
     if (i > 0 && config_.repeat_interval_ms > 0)
       std::this_thread::sleep_for(std::chrono::milliseconds(config_.repeat_interval_ms));
-    ssize_t n = -1;
-    do {
-      n = ::send(fd_, payload.data(), payload.size(), 0);
-    } while (n < 0 && errno == EINTR);
+    const long long n = socket_->send(payload);
     if (n < 0) {
-      result.error = "Vicon trigger: sending to " + target() + " failed: " + std::strerror(errno);
+      result.error = "Vicon trigger: sending to " + target() + " failed: " + socket_->error();
       return result;
     }
     if (static_cast<size_t>(n) != payload.size()) {
@@ -221,41 +191,29 @@ ViconListener::ViconListener(ViconListenerConfig config, SenderCallback callback
 void ViconListener::open(const ViconListenerConfig& config) {
   const std::string& bind_address = config.bind_address;
   const std::uint16_t port = config.port;
-  fd_ = ::socket(AF_INET, SOCK_DGRAM | SOCK_CLOEXEC, 0);
-  if (fd_ < 0) throw Error(std::string("Vicon listener: cannot open a UDP socket: ") + std::strerror(errno));
-  const int on = 1;
-  setsockopt(fd_, SOL_SOCKET, SO_REUSEADDR, &on, sizeof on);
+  socket_ = std::make_unique<net::UdpSocket>("Vicon listener");
+  socket_->claim_port();
   if (!config.interface_name.empty()) {
-    // Needs no privilege on Linux 5.7 and later for an unbound socket; where it is refused the
-    // listener still works on every interface, and the sender check still keeps others out.
-    if (setsockopt(fd_, SOL_SOCKET, SO_BINDTODEVICE, config.interface_name.c_str(),
-                   static_cast<socklen_t>(config.interface_name.size())) != 0) {
-      interface_note_ = "Vicon listener: cannot listen on " + config.interface_name + " alone (" +
-                        std::strerror(errno) + "); listening on every interface, obeying only " + allowed_.describe();
+    // Needs no privilege on Linux 5.7 and later for an unbound socket; where it is refused (and
+    // on Windows, which has no such option) the listener still works on every interface, and
+    // the sender check still keeps others out.
+    if (!socket_->bind_to_interface(config.interface_name)) {
+      interface_note_ = "Vicon listener: cannot listen on " + config.interface_name + " alone (" + socket_->error() +
+                        "); listening on every interface, obeying only " + allowed_.describe();
     }
   }
-  sockaddr_in addr{};
-  addr.sin_family = AF_INET;
-  addr.sin_port = htons(port);
-  if (inet_pton(AF_INET, bind_address.c_str(), &addr.sin_addr) != 1) {
-    ::close(fd_);
-    throw Error("Vicon listener: '" + bind_address + "' is not an IPv4 address");
-  }
-  if (::bind(fd_, reinterpret_cast<const sockaddr*>(&addr), sizeof addr) != 0) {
-    const std::string why = std::strerror(errno);
-    ::close(fd_);
-    throw Error("Vicon listener: cannot listen on " + bind_address + ":" + std::to_string(port) + ": " + why);
-  }
-  socklen_t len = sizeof addr;
-  getsockname(fd_, reinterpret_cast<sockaddr*>(&addr), &len);
-  port_ = ntohs(addr.sin_port);
+  const auto address = parse_ipv4(bind_address);
+  if (!address) throw Error("Vicon listener: '" + bind_address + "' is not an IPv4 address");
+  if (!socket_->bind(*address, port))
+    throw Error("Vicon listener: cannot listen on " + bind_address + ":" + std::to_string(port) + ": " +
+                socket_->error());
+  port_ = socket_->local_port();
   thread_ = std::thread([this] { run(); });
 }
 
 ViconListener::~ViconListener() {
   stop_ = true;
   if (thread_.joinable()) thread_.join();
-  if (fd_ >= 0) ::close(fd_);
 }
 
 std::string ViconListener::last_rejection() const {
@@ -310,14 +268,10 @@ void ViconListener::run() {
   std::set<std::uint32_t> seen;
   char buf[65536];
   while (!stop_) {
-    pollfd p{fd_, POLLIN, 0};
-    if (::poll(&p, 1, 50) <= 0) continue;
-    sockaddr_in from_addr{};
-    socklen_t from_len = sizeof from_addr;
-    const ssize_t n = ::recvfrom(fd_, buf, sizeof buf, 0, reinterpret_cast<sockaddr*>(&from_addr), &from_len);
+    ViconSender from{};
+    const long long n = socket_->receive(buf, sizeof buf, &from.address, &from.port, 50);
     if (n <= 0) continue;
     ++received_;
-    const ViconSender from{ntohl(from_addr.sin_addr.s_addr), ntohs(from_addr.sin_port)};
     const std::string_view datagram(buf, static_cast<size_t>(n));
     if (!allowed_.allows(from.address)) {
       refuse(from, datagram);

@@ -11,6 +11,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <functional>
+#include <memory>
 #include <mutex>
 #include <optional>
 #include <string>
@@ -19,6 +20,7 @@
 #include <utility>
 #include <vector>
 
+#include "devices/platform/udp_socket.h"
 #include "devices/vicon/vicon_message.h"
 #include "devices/vicon/vicon_senders.h"
 
@@ -73,7 +75,7 @@ class ViconTrigger {
 
  private:
   ViconTriggerConfig config_;
-  int fd_ = -1;
+  std::unique_ptr<net::UdpSocket> socket_;
   bool broadcast_ = false;
   std::uint32_t reserve_packet_id(std::string& warning);
   std::uint32_t next_id_ = 0;
@@ -143,7 +145,7 @@ class ViconListener {
   void open(const ViconListenerConfig& config);
   void run();
   void refuse(const ViconSender& from, std::string_view datagram);
-  int fd_ = -1;
+  std::unique_ptr<net::UdpSocket> socket_;
   std::uint16_t port_ = 0;
   ViconSenders allowed_;
   SenderCallback callback_;

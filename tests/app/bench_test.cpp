@@ -1,6 +1,5 @@
 // Runs the built `lmc bench` (lmc::test::cli_path()) on a tiny workload: checks the report, not speed.
 #include <gtest/gtest.h>
-#include <sys/wait.h>
 
 #include <cstdlib>
 #include <fstream>

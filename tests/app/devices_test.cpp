@@ -1,7 +1,6 @@
 // Runs the real `lmc devices` binary (lmc::test::cli_path()) on the simulator, a replay and bad input.
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
-#include <sys/wait.h>
 
 #include <cstdlib>
 #include <fstream>

@@ -1,6 +1,5 @@
 // Runs the built `lmc optimize` (lmc::test::cli_path()) on small searches.
 #include <gtest/gtest.h>
-#include <sys/wait.h>
 
 #include <cstdlib>
 #include <fstream>

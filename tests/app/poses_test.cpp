@@ -1,6 +1,5 @@
 // Runs the built `lmc poses` (lmc::test::cli_path()).
 #include <gtest/gtest.h>
-#include <sys/wait.h>
 
 #include <cstdlib>
 #include <fstream>

@@ -1,6 +1,5 @@
 // Runs the built `lmc visibility` (lmc::test::cli_path()) on the studys validation trial.
 #include <gtest/gtest.h>
-#include <sys/wait.h>
 
 #include <cstdlib>
 #include <fstream>

@@ -1,8 +1,12 @@
 #pragma once
 // Runs the built `lmc` binary (cli_path()) the way a user would, capturing stdout and stderr
 // separately. Shared by every test under tests/app/.
+#ifdef _WIN32
+#include <windows.h>
+#else
 #include <sys/wait.h>
 #include <unistd.h>
+#endif
 
 #include <cstdlib>
 #include <filesystem>
@@ -29,11 +33,30 @@ inline std::string read_text_file(const std::filesystem::path& p) {
   return s.str();
 }
 
-// Single-quotes `s` for /bin/sh (test paths may hold spaces).
+// Quotes `s` for the shell run_lmc uses (test paths may hold spaces): single quotes for /bin/sh;
+// double quotes for cmd.exe on Windows (where a path cannot hold a double quote).
 inline std::string shell_quote(const std::string& s) {
+#ifdef _WIN32
+  return "\"" + s + "\"";
+#else
   std::string q = "'";
   for (const char c : s) q += c == '\'' ? std::string("'\\''") : std::string(1, c);
   return q + "'";
+#endif
+}
+
+// A fresh folder of its own for one run's streams.
+inline std::filesystem::path fresh_log_dir() {
+#ifdef _WIN32
+  static int counter = 0;
+  const auto dir = std::filesystem::temp_directory_path() /
+                   ("lmc_cli_" + std::to_string(GetCurrentProcessId()) + "_" + std::to_string(++counter));
+  std::filesystem::remove_all(dir);
+  return std::filesystem::create_directories(dir) ? dir : std::filesystem::path();
+#else
+  std::string pattern = (std::filesystem::temp_directory_path() / "lmc_cli_XXXXXX").string();
+  return ::mkdtemp(pattern.data()) == nullptr ? std::filesystem::path() : std::filesystem::path(pattern);
+#endif
 }
 
 // `lmc <args>`; the streams are kept as files in `log_dir` (created when missing). With no
@@ -45,11 +68,19 @@ inline CliRun run_lmc(const std::string& args, std::filesystem::path log_dir = {
                       const std::string& launcher = {}) {
   const bool own_log_dir = log_dir.empty();
   if (own_log_dir) {
-    std::string pattern = (std::filesystem::temp_directory_path() / "lmc_cli_XXXXXX").string();
-    if (::mkdtemp(pattern.data()) == nullptr) return {};
-    log_dir = pattern;
+    log_dir = fresh_log_dir();
+    if (log_dir.empty()) return {};
   }
   std::filesystem::create_directories(log_dir);
+#ifdef _WIN32
+  // cmd.exe /c keeps a command line wrapped in one more pair of quotes as it is (its rule for a
+  // line that starts with a quote would otherwise strip the program's).
+  const std::string cmd =
+      "\"" + shell_prefix + (launcher.empty() ? "" : launcher + " ") + shell_quote(cli_path().string()) + " " + args +
+      " >" + shell_quote((log_dir / "out").string()) + " 2>" + shell_quote((log_dir / "err").string()) + "\"";
+  CliRun r;
+  r.exit_code = std::system(cmd.c_str());
+#else
   const std::string inner = shell_prefix + (shell_prefix.empty() ? "" : " exec ") +
                             (launcher.empty() ? "" : launcher + " ") + shell_quote(cli_path().string()) + " " + args;
   const std::string cmd = "/bin/sh -c " + shell_quote(inner) + " >" + shell_quote((log_dir / "out").string()) + " 2>" +
@@ -57,6 +88,7 @@ inline CliRun run_lmc(const std::string& args, std::filesystem::path log_dir = {
   const int status = std::system(cmd.c_str());
   CliRun r;
   r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+#endif
   r.out = read_text_file(log_dir / "out");
   r.err = read_text_file(log_dir / "err");
   if (own_log_dir) {
@@ -67,6 +99,7 @@ inline CliRun run_lmc(const std::string& args, std::filesystem::path log_dir = {
   return r;
 }
 
+#ifndef _WIN32
 // Starts `lmc args` as a child process, not waited for (the caller kills or waits for it); its
 // streams go to files in `logs`.
 inline pid_t spawn_lmc(const std::string& args, const std::filesystem::path& logs) {
@@ -81,6 +114,7 @@ inline pid_t spawn_lmc(const std::string& args, const std::filesystem::path& log
   }
   return pid;
 }
+#endif
 
 // Complete rows (lines ending in a newline) of a recording, not counting its header line.
 inline size_t complete_rows(const std::filesystem::path& raw) {

@@ -4,13 +4,13 @@
 // says where. (Before, every run of the suite left about a hundred folders behind in /tmp.)
 #include <gtest/gtest.h>
 
-#include <unistd.h>
-
 #include <cstdio>
 #include <filesystem>
 #include <mutex>
 #include <string>
 #include <vector>
+
+#include "core/platform/process.h"
 
 namespace lmc::test {
 
@@ -33,14 +33,14 @@ class ScratchRegistry {
 
   ~ScratchRegistry() {
     // A forked child that returns through exit() must not remove its parent's folders.
-    if (::getpid() != owner_) return;
+    if (platform::current_process_id() != owner_) return;
     const bool passed = ::testing::UnitTest::GetInstance()->Passed();
     for (const auto& dir : dirs_) {
       if (passed) {
         std::error_code ec;
         std::filesystem::remove_all(dir, ec);
       } else if (std::filesystem::exists(dir)) {
-        std::fprintf(stderr, "kept for inspection (a test failed): %s\n", dir.c_str());
+        std::fprintf(stderr, "kept for inspection (a test failed): %s\n", dir.string().c_str());
       }
     }
   }
@@ -50,7 +50,7 @@ class ScratchRegistry {
   // statics are destroyed in reverse order, so it outlives this registry's verdict.
   ScratchRegistry() { (void)::testing::UnitTest::GetInstance(); }
 
-  pid_t owner_ = ::getpid();
+  int owner_ = platform::current_process_id();
   std::mutex mutex_;
   std::vector<std::filesystem::path> dirs_;
 };
@@ -65,7 +65,8 @@ inline void remove_at_exit(const std::filesystem::path& path) {
 // A fresh, empty folder named for `name`. The process id keeps test processes that run at the
 // same time (ctest runs each binary in shards, in parallel) out of each other's folders.
 inline std::filesystem::path scratch_dir(const std::string& name) {
-  auto dir = std::filesystem::temp_directory_path() / ("lmc_test_" + name + "_" + std::to_string(::getpid()));
+  auto dir = std::filesystem::temp_directory_path() /
+             ("lmc_test_" + name + "_" + std::to_string(platform::current_process_id()));
   std::filesystem::remove_all(dir);
   std::filesystem::create_directories(dir);
   remove_at_exit(dir);
@@ -76,8 +77,8 @@ inline std::filesystem::path scratch_dir(const std::string& name) {
 // creates its own folder and refuses one that exists.
 inline std::filesystem::path fresh_test_dir(const std::string& name) {
   const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-  const auto dir = std::filesystem::temp_directory_path() /
-                   ("lmc_" + name + "_" + std::string(info->name()) + "_" + std::to_string(::getpid()));
+  const auto dir = std::filesystem::temp_directory_path() / ("lmc_" + name + "_" + std::string(info->name()) + "_" +
+                                                             std::to_string(platform::current_process_id()));
   std::filesystem::remove_all(dir);
   remove_at_exit(dir);
   return dir;

@@ -3,12 +3,12 @@
 // (the pictures are the output), so they go with the tab and never stay behind in /tmp.
 // Declare the member before whatever writes into the folders, so that
 // it is destroyed after the writer has stopped.
-#include <unistd.h>
-
 #include <filesystem>
 #include <string>
 #include <system_error>
 #include <vector>
+
+#include "core/platform/process.h"
 
 namespace lmc::ui {
 
@@ -26,7 +26,8 @@ class CaptureScratch {
 
   // A path that does not exist yet, unique to this process and `what`; removed with this object.
   std::filesystem::path fresh(const std::string& what) {
-    auto dir = std::filesystem::temp_directory_path() / ("lmc-capture-" + what + "-" + std::to_string(::getpid()));
+    auto dir = std::filesystem::temp_directory_path() /
+               ("lmc-capture-" + what + "-" + std::to_string(platform::current_process_id()));
     std::error_code ec;
     std::filesystem::remove_all(dir, ec);
     dirs_.push_back(dir);

@@ -1,8 +1,6 @@
 #include "app/lmc/commands/bench_processing.h"
 
-#include <sys/resource.h>
 #include <tbb/info.h>
-#include <unistd.h>
 
 #include <chrono>
 #include <cstdio>
@@ -13,20 +11,15 @@
 #include <vector>
 
 #include "core/common/error.h"
+#include "core/platform/process.h"
 #include "core/results/batch_outputs.h"
 #include "core/session/session_trials.h"
 #include "core/stats/percentile.h"
 #include "devices/host_memory.h"
+#include "devices/soak/process_stats.h"
 
 namespace lmc::cli {
 namespace {
-
-double cpu_seconds() {
-  rusage u{};
-  ::getrusage(RUSAGE_SELF, &u);
-  const auto s = [](const timeval& t) { return static_cast<double>(t.tv_sec) + static_cast<double>(t.tv_usec) * 1e-6; };
-  return s(u.ru_utime) + s(u.ru_stime);
-}
 
 double median(const std::vector<double>& v) {
   return percentile(v, 50.0);  // the rule bench.cpp's search figures use
@@ -44,11 +37,11 @@ Timing time_runs(const std::vector<TrialSources>& jobs, bool compare_methods, in
     std::filesystem::remove_all(scratch);
     BatchOptions options;
     options.compare_methods = compare_methods;
-    const double cpu0 = cpu_seconds();
+    const double cpu0 = devices::process_cpu_seconds();
     const auto t0 = std::chrono::steady_clock::now();
     const auto outcomes = process_and_write_batch(jobs, options, scratch);
     t.wall.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
-    t.cpu.push_back(cpu_seconds() - cpu0);
+    t.cpu.push_back(devices::process_cpu_seconds() - cpu0);
     t.trials = 0;
     for (const auto& o : outcomes) {
       if (!o.ok) throw Error(o.trial + ": " + o.error);
@@ -72,7 +65,8 @@ void run_processing_bench(const std::string& input, int runs, bool json) {
   std::vector<std::string> notes;
   const auto jobs = trial_sources_for_input(input, std::nullopt, &notes);
   if (jobs.empty()) throw Error(ErrorLocation(input), "no trials to process");
-  const auto scratch = std::filesystem::temp_directory_path() / ("lmc-bench-processing-" + std::to_string(::getpid()));
+  const auto scratch = std::filesystem::temp_directory_path() /
+                       ("lmc-bench-processing-" + std::to_string(platform::current_process_id()));
   struct RemoveScratch {
     std::filesystem::path dir;
     ~RemoveScratch() {

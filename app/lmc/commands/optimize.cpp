@@ -1,7 +1,6 @@
 // lmc optimize: search device placements with the particle swarm of docs/algorithms/search.md
 // (core/optimise/pso.h) on a pose set, save the best layout and print the same summary as
 // `lmc evaluate`.
-#include <unistd.h>
 
 #include <cmath>
 #include <cstdio>
@@ -17,6 +16,7 @@
 #include "core/io/pose_source.h"
 #include "core/optimise/multi_start.h"
 #include "core/optimise/pso.h"
+#include "core/platform/process.h"
 #include "core/poses/pose_recipe.h"
 #include "core/reports/coverage_report.h"
 #include "core/reports/robust_terms_report.h"
@@ -218,7 +218,7 @@ void run_optimize(const OptimizeOptions& opt) {
 
   const lmc::PsoSettings s = pso_settings(opt);
   const char* cost_name = s.metric == lmc::PlacementMetricKind::kStudy ? "M" : "R";
-  const bool bar = !opt.no_progress && isatty(STDERR_FILENO) != 0;
+  const bool bar = !opt.no_progress && lmc::platform::stderr_is_terminal();
   const lmc::MultiStartResult multi =
       lmc::run_multi_start(start, space, prepared, s, opt.starts, optimize_progress_bar(bar, cost_name));
   const lmc::PsoResult& r = multi.runs.at(static_cast<size_t>(multi.best));

@@ -75,8 +75,11 @@ void run_process(const ProcessArgs& a) {
   nlohmann::json session = nlohmann::json::object();
   session["format"] = "lmc-process-session";
   session["method"] = a.method;
-  if (!a.length_correction.empty()) session["length_correction_file"] = a.length_correction;
-  session["input"] = a.input;
+  // Through std::filesystem::path: on Windows an argument arrives in the ANSI code page and the
+  // path gives it back as UTF-8, which JSON requires (on Linux it is unchanged).
+  if (!a.length_correction.empty())
+    session["length_correction_file"] = std::filesystem::path(a.length_correction).string();
+  session["input"] = std::filesystem::path(a.input).string();
   session["trials"] = nlohmann::json::array();
   for (size_t k = 0; k < outcomes.size(); ++k) {
     const auto& o = outcomes[k];

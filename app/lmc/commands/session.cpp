@@ -4,7 +4,6 @@
 //           verdict after each, redo; a session that was cut off resumes where it stopped
 //   status  the trial table (--json for scripts)
 // The folder's journal is the truth (sessions/README.md); this file only talks to the operator.
-#include <unistd.h>
 
 #include <chrono>
 #include <filesystem>

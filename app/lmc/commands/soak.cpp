@@ -16,7 +16,6 @@
 // queue_depth_max, fusion_dropped, frames_written}]); the summary line still ends stderr.
 // Without -o the trials go to a folder of their own under the temporary directory, removed at
 // the end unless --keep.
-#include <unistd.h>
 
 #include <filesystem>
 #include <iostream>
@@ -25,6 +24,7 @@
 
 #include "app/lmc/command.h"
 #include "core/common/error.h"
+#include "core/platform/process.h"
 #include "devices/soak/soak_engine.h"
 
 namespace {
@@ -54,7 +54,8 @@ void run_soak_command(const SoakOptions& opt) {
   c.rate_hz = opt.rate_hz;
   c.trial_seconds = opt.trial_seconds;
   const bool own_folder = opt.out.empty();
-  c.output_dir = own_folder ? std::filesystem::temp_directory_path() / ("lmc-soak-" + std::to_string(::getpid()))
+  c.output_dir = own_folder ? std::filesystem::temp_directory_path() /
+                                  ("lmc-soak-" + std::to_string(lmc::platform::current_process_id()))
                             : std::filesystem::path(opt.out);
   c.keep_files = opt.keep;
   c.fusion = !opt.no_fusion;

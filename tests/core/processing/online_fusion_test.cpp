@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <iostream>
+#include <numbers>
 #include <random>
 #include <vector>
 
@@ -45,11 +46,12 @@ bool is_position(int i) {
 
 // A hand flexing its index and drifting sideways: world frame at time t.
 HandFrame moving_hand(const HandModel& model, double t) {
-  const double progress = 0.5 * (1.0 - std::cos(2.0 * M_PI * t / 2.0));
+  const double progress = 0.5 * (1.0 - std::cos(2.0 * std::numbers::pi * t / 2.0));
   const HandJointAngles angles = motion_angles(HandMotion::kIndexFlexion, progress);
   HandPlacement place = reference_placement(model, HandOrientation::kHorizontal, angles);
   HandFrame f = model.pose(angles, place);
-  const Vec3 drift(30.0 * std::sin(2.0 * M_PI * t / 3.0), 10.0 * std::sin(2.0 * M_PI * t / 1.7), 0.0);
+  const Vec3 drift(30.0 * std::sin(2.0 * std::numbers::pi * t / 3.0), 10.0 * std::sin(2.0 * std::numbers::pi * t / 1.7),
+                   0.0);
   for (int i = 0; i < kNumHandPoints; ++i) {
     if (is_position(i)) f.point(i) += drift;
   }

@@ -185,9 +185,9 @@ TEST(ResampleLimits, TimestampJumpIsRefusedWithFileAndLine) {
   LmcRecording rec;
   for (std::int64_t t = 0; t <= 10'000'000; t += 33'333) rec.rows.push_back(frame_at(1, t));
   for (const std::int64_t t : {10'000'000'000, 10'000'033'333}) {  // 10^4 s later, hand where it was
-    HandFrame far = frame_at(1, 10'000'000);
-    far.timestamp_us = t;
-    rec.rows.push_back(far);
+    HandFrame later = frame_at(1, 10'000'000);
+    later.timestamp_us = t;
+    rec.rows.push_back(later);
   }
   std::stringstream text;
   write_lmc_recording(text, rec);

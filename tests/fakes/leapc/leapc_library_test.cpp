@@ -3,8 +3,10 @@
 // only one tried, a major version the backend was not written for refused, and a library
 // installed after a failed search found by the next one (the workbench's Reconnect).
 #include <cstdlib>
+
 #include <filesystem>
 #include <string>
+#include "tests/support/env_var.h"
 
 #include <gtest/gtest.h>
 
@@ -23,13 +25,13 @@ class LeapcLibrarySearch : public ::testing::Test {
  protected:
   void SetUp() override {
     named_ = std::getenv("LMC_LEAPC_LIBRARY");
-    unsetenv("LMC_LEAPC_LIBRARY");
-    setenv("LMC_LEAPC_SEARCH_ROOT", root_.c_str(), 1);
+    lmc::test::unset_env("LMC_LEAPC_LIBRARY");
+    lmc::test::set_env("LMC_LEAPC_SEARCH_ROOT", root_.string().c_str());
     fake_leapc::reset();
   }
   void TearDown() override {
-    unsetenv("LMC_LEAPC_SEARCH_ROOT");
-    setenv("LMC_LEAPC_LIBRARY", named_.c_str(), 1);
+    lmc::test::unset_env("LMC_LEAPC_SEARCH_ROOT");
+    lmc::test::set_env("LMC_LEAPC_LIBRARY", named_.c_str());
     set_leapc_library_path("");
     fake_leapc::reset();
   }

@@ -2,9 +2,11 @@
 // as a lab names its library with LMC_LEAPC_LIBRARY: set before any test runs.
 #include <cstdlib>
 
+#include "tests/support/env_var.h"
+
 namespace {
 const bool kLeapcLibraryNamed = [] {
-  setenv("LMC_LEAPC_LIBRARY", LMC_FAKE_LEAPC_PATH, 1);
+  lmc::test::set_env("LMC_LEAPC_LIBRARY", LMC_FAKE_LEAPC_PATH);
   return true;
 }();
 }  // namespace

@@ -1,5 +1,5 @@
-#include "devices/soak/process_stats.h"
-
+#ifndef _WIN32
+#include <sys/resource.h>
 #include <unistd.h>
 
 #include <cstddef>
@@ -22,7 +22,16 @@ extern "C" std::size_t __sanitizer_get_current_allocated_bytes();
 #include <fstream>
 #include <string>
 
+#include "devices/soak/process_stats.h"
+
 namespace lmc::devices {
+
+double process_cpu_seconds() {
+  rusage u{};
+  ::getrusage(RUSAGE_SELF, &u);
+  const auto s = [](const timeval& t) { return static_cast<double>(t.tv_sec) + static_cast<double>(t.tv_usec) * 1e-6; };
+  return s(u.ru_utime) + s(u.ru_stime);
+}
 
 ProcessStats read_process_stats() {
   ProcessStats s;
@@ -57,3 +66,4 @@ ProcessStats read_process_stats() {
 }
 
 }  // namespace lmc::devices
+#endif

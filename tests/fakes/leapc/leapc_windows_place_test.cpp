@@ -1,0 +1,45 @@
+// On Windows LeapC is found where Ultraleap's installer puts it, with no search root and no
+// variable naming it: the double, built as LeapC.dll, is installed at
+// C:\Program Files\Ultraleap\LeapSDK\lib\x64\LeapC.dll (Wine's C: drive is its prefix) and found
+// there by the search the backend runs at every start.
+#include <cstdlib>
+#include <filesystem>
+#include <string>
+
+#include <gtest/gtest.h>
+
+#include "devices/leapc/leapc_library.h"
+#include "fake_leapc.h"
+#include "tests/support/env_var.h"
+
+namespace lmc::devices {
+namespace {
+
+namespace fs = std::filesystem;
+
+TEST(LeapcWindowsPlace, FoundInTheUltraleapSdkFolder) {
+#ifdef _WIN32
+  const char* named = std::getenv("LMC_LEAPC_LIBRARY");
+  ASSERT_NE(named, nullptr) << "the test binary names the double (leapc_test_env.cpp)";
+  const std::string double_path = named;
+  const fs::path place = "C:/Program Files/Ultraleap/LeapSDK/lib/x64/LeapC.dll";
+  if (fs::exists(place)) GTEST_SKIP() << place << " is installed on this machine: not replaced by the double";
+  fs::create_directories(place.parent_path());
+  fs::copy_file(double_path, place);
+  lmc::test::unset_env("LMC_LEAPC_LIBRARY");
+  fake_leapc::reset();
+  const LeapcSearchResult found = find_leapc();
+  lmc::test::set_env("LMC_LEAPC_LIBRARY", double_path.c_str());
+  std::error_code ec;
+  fs::remove_all("C:/Program Files/Ultraleap", ec);
+  ASSERT_NE(found.library, nullptr) << found.failure_text();
+  EXPECT_EQ(fs::path(found.library->path), place);
+  EXPECT_EQ(found.library->what, "Ultraleap SDK (Windows installer)");
+  EXPECT_EQ(found.tried.size(), 1u);
+#else
+  GTEST_SKIP() << "Windows' install folder; the Linux places are checked by LeapcLibrarySearch";
+#endif
+}
+
+}  // namespace
+}  // namespace lmc::devices
