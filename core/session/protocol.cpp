@@ -16,7 +16,7 @@ namespace fs = std::filesystem;
 namespace lmc {
 namespace {
 
-constexpr const char* kFormat = "lmc-protocol";
+constexpr const char* kProtocolFormat = "lmc-protocol";
 
 bool known_angle(const std::string& joint) {
   for (int a = 0; a < kNumAngles; ++a)
@@ -74,7 +74,7 @@ Protocol protocol_from_json(const nlohmann::json& j, const std::string& source) 
   const JsonReader r(j, source);
   r.only_keys({"format", "format_version", "name", "description", "repetitions", "layouts", "poses", "quality",
                "trial_types", "calibration"});
-  if (r.string("format") != kFormat) r.at("format").fail(std::string("expected \"") + kFormat + "\"");
+  if (r.string("format") != kProtocolFormat) r.at("format").fail(std::string("expected \"") + kProtocolFormat + "\"");
   if (r.at("format_version").integer() != 1) r.at("format_version").fail("this version reads format_version 1");
   Protocol p;
   p.name = checked_key(r, "name", "protocol name");
@@ -139,7 +139,7 @@ Protocol protocol_from_json(const nlohmann::json& j, const std::string& source) 
 }
 
 nlohmann::json protocol_to_json(const Protocol& p) {
-  nlohmann::json j = {{"format", kFormat},
+  nlohmann::json j = {{"format", kProtocolFormat},
                       {"format_version", 1},
                       {"name", p.name},
                       {"description", p.description},

@@ -3,13 +3,13 @@
 namespace lmc {
 namespace {
 
-struct Field {
+struct QualityField {
   const char* key;
   double QualityThresholds::*member;
   bool fraction;  // 0…1, else a positive number (Hz or s)
 };
 
-constexpr Field kFields[] = {
+constexpr QualityField kQualityFields[] = {
     {"fail_min_rate_hz", &QualityThresholds::fail_min_rate_hz, false},
     {"warn_min_rate_hz", &QualityThresholds::warn_min_rate_hz, false},
     {"fail_max_gap_s", &QualityThresholds::fail_max_gap_s, false},
@@ -28,7 +28,7 @@ QualityThresholds quality_thresholds_from_json(const JsonReader& r, const Qualit
                "warn_min_hand_fraction", "warn_max_finger_unseen", "warn_min_rom_fraction",
                "fail_min_duration_fraction"});
   QualityThresholds q = defaults;
-  for (const Field& f : kFields) {
+  for (const QualityField& f : kQualityFields) {
     if (!r.has(f.key)) continue;
     const JsonReader v = r.at(f.key);
     const double x = v.number();
@@ -43,7 +43,7 @@ QualityThresholds quality_thresholds_from_json(const JsonReader& r, const Qualit
 
 nlohmann::json quality_thresholds_to_json(const QualityThresholds& q) {
   nlohmann::json j = nlohmann::json::object();
-  for (const Field& f : kFields) j[f.key] = q.*f.member;
+  for (const QualityField& f : kQualityFields) j[f.key] = q.*f.member;
   return j;
 }
 
