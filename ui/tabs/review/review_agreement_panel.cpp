@@ -247,7 +247,9 @@ void ReviewAgreementPanel::draw(const PictureRenderer& renderer) {
   }
   ImGui::EndChild();
   ImGui::SameLine();
-  ImGui::BeginChild("visibility_map_panel", ImVec2(0, height), false);
+  // Its own scrollbar from the start: on a short window (1024 x 700) the map's last rows are below
+  // the panel from the first frame at that size, before ImGui would add one.
+  ImGui::BeginChild("visibility_map_panel", ImVec2(0, height), false, ImGuiWindowFlags_AlwaysVerticalScrollbar);
   ImGui::TextWrapped("Visibility rate per controller, motion and layout (the study's map; -1 = never saw the hand)");
   // The picture runs inside draw() (the renderer is synchronous), so the map is read in place and
   // its figure built only when a PNG is taken.

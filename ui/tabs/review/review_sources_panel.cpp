@@ -5,6 +5,8 @@
 #include <cstdio>
 #include <string>
 
+#include "ui/widgets/flow_row.h"
+
 namespace lmc::ui {
 
 bool ReviewSourcesPanel::folder_chip(const std::filesystem::path& folder) {
@@ -61,6 +63,22 @@ bool ReviewSourcesPanel::folder_chip(const std::filesystem::path& folder) {
   return open;
 }
 
+float ReviewSourcesPanel::fusion_width() {
+  return 150 + ImGui::GetStyle().ItemInnerSpacing.x + ImGui::CalcTextSize("fusion").x;
+}
+
+namespace {
+
+// About the width of a folder's chip: "[name", its length-correction control, "x" and "]".
+float chip_width(const std::filesystem::path& folder) {
+  const std::string name = folder.filename().empty() ? folder.string() : folder.filename().string();
+  const ImGuiStyle& style = ImGui::GetStyle();
+  return ImGui::CalcTextSize(("[" + name + "]").c_str()).x + ImGui::CalcTextSize("lengths corrected").x +
+         ImGui::CalcTextSize("x").x + 4 * style.FramePadding.x + 12;
+}
+
+}  // namespace
+
 void ReviewSourcesPanel::draw() {
   anchors_.clear();  // only what this frame drew
   ReviewState& state = *state_;
@@ -76,7 +94,7 @@ void ReviewSourcesPanel::draw() {
   }
   // What is open, each with its length correction and a close button.
   for (const auto& folder : state.folders()) {
-    ImGui::SameLine();
+    same_line_or_wrap(chip_width(folder));
     if (!folder_chip(folder)) break;  // the list changed under the loop
   }
   if (const auto chosen = correction_browser_.draw()) state.set_length_correction(correction_for_, *chosen);

@@ -15,6 +15,8 @@ class ReviewSourcesPanel {
  public:
   explicit ReviewSourcesPanel(std::shared_ptr<ReviewState> state) : state_(std::move(state)) {}
   void draw();
+  // The width of the fusion choice that starts draw()'s row (the tab wraps the row before it).
+  static float fusion_width();
   // "fusion", "cancel", and per opened folder (by its name) "lengths.NAME", "unlength.NAME" and
   // "close.NAME", as drawn (headless tests click them).
   const WidgetAnchors& anchors() const { return anchors_; }

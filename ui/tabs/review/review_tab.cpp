@@ -23,6 +23,7 @@
 #include "ui/tabs/review/review_trial_view_panel.h"
 #include "ui/tabs/review/review_welcome_panel.h"
 #include "ui/widgets/figure_view.h"
+#include "ui/widgets/flow_row.h"
 
 namespace lmc::ui {
 namespace {
@@ -78,7 +79,9 @@ class ReviewTab final : public Tab {
     if (ImGui::Button("Design a layout for these trials")) design_layout_for_shown_trials();
     if (ImGui::IsItemHovered())
       ImGui::SetTooltip("Opens the Layout tab with the trials the table shows as its pose set (their fused hands)");
-    ImGui::SameLine(0, 20);
+    // The fusion and the open folders go on a line of their own when the window is narrow (after
+    // scripts/run the demo's button makes the row too wide for a 1024-pixel screen).
+    same_line_or_wrap(ReviewSourcesPanel::fusion_width(), 20);
     sources_.draw();
     ImGui::Separator();
     table_.draw();
