@@ -74,11 +74,17 @@ endfunction()
 set(LMC_DRIVER_FLAGS "" CACHE STRING "Extra compile flags for test binaries and program entry points (the check preset: -O0)")
 separate_arguments(LMC_DRIVER_FLAG_LIST UNIX_COMMAND "${LMC_DRIVER_FLAGS}")
 
-# lmc_driver_flags(target): LMC_DRIVER_FLAGS after every other flag (the last -O wins).
-function(lmc_driver_flags target)
-  if(LMC_DRIVER_FLAG_LIST)
-    target_compile_options(${target} PRIVATE ${LMC_DRIVER_FLAG_LIST})
+# lmc_append_flags(target flag...): flags after every other flag of the target (the last -O wins);
+# none: nothing.
+function(lmc_append_flags target)
+  if(ARGN)
+    target_compile_options(${target} PRIVATE ${ARGN})
   endif()
+endfunction()
+
+# lmc_driver_flags(target): LMC_DRIVER_FLAGS after every other flag.
+function(lmc_driver_flags target)
+  lmc_append_flags(${target} ${LMC_DRIVER_FLAG_LIST})
 endfunction()
 
 # The test binaries' own files: what they exercise is the engine, whose libraries keep the
@@ -91,9 +97,7 @@ separate_arguments(LMC_TEST_FLAG_LIST UNIX_COMMAND "${LMC_TEST_FLAGS}")
 
 # lmc_test_flags(target): LMC_TEST_FLAGS after every other flag.
 function(lmc_test_flags target)
-  if(LMC_TEST_FLAG_LIST)
-    target_compile_options(${target} PRIVATE ${LMC_TEST_FLAG_LIST})
-  endif()
+  lmc_append_flags(${target} ${LMC_TEST_FLAG_LIST})
 endfunction()
 
 # The engine's files the test suite spends its time in, at the flags that keep them quick to run.
