@@ -524,6 +524,139 @@ ParamOut text_param(const std::string& name, const std::vector<std::string>& ite
   return p;
 }
 
+// The writer's four parameter groups. POINT:DATA_START (kC3dDataStartParam) is written as 0 and
+// patched once the section's size says where the data begins.
+struct C3dParamGroups {
+  std::vector<ParamOut> point, analog, trial, manufacturer;
+};
+constexpr size_t kC3dDataStartParam = 3;
+
+std::vector<ParamOut> c3d_point_params(const Codec& c, const C3dData& data, float scale) {
+  const int points = data.point_count();
+  std::vector<ParamOut> point_params;
+  point_params.push_back(int_param(c, "USED", points));
+  point_params.push_back(float_param(c, "SCALE", scale));
+  point_params.push_back(float_param(c, "RATE", static_cast<float>(data.point_rate_hz)));
+  point_params.push_back(int_param(c, "DATA_START", 0));
+  point_params.push_back(int_param(c, "FRAMES", data.frame_count()));
+  point_params.push_back(text_param("UNITS", {data.units.empty() ? std::string("mm") : data.units}, false));
+  for (int k = 0; k * 255 < std::max(points, 1); ++k) {
+    const auto b = data.labels.begin() + std::min(points, k * 255);
+    const auto e = data.labels.begin() + std::min(points, (k + 1) * 255);
+    std::vector<std::string> chunk(b, e);
+    if (chunk.empty()) chunk.emplace_back("");
+    point_params.push_back(text_param(k == 0 ? "LABELS" : "LABELS" + std::to_string(k + 1), chunk, true));
+    if (points == 0) break;
+  }
+  if (!data.descriptions.empty()) {
+    // One description per point, in 255-point chunks like the labels.
+    std::vector<std::string> all = data.descriptions;
+    all.resize(static_cast<size_t>(points));
+    for (int k = 0; k * 255 < points; ++k) {
+      std::vector<std::string> chunk(all.begin() + k * 255, all.begin() + std::min(points, (k + 1) * 255));
+      point_params.push_back(text_param(k == 0 ? "DESCRIPTIONS" : "DESCRIPTIONS" + std::to_string(k + 1), chunk, true));
+    }
+  }
+  return point_params;
+}
+
+ParamOut c3d_two_word_param(const Codec& c, const std::string& name, long v) {
+  ParamOut p{name, 2, {2}, {}};
+  c.put_i16(p.data, static_cast<std::int16_t>(static_cast<std::uint16_t>(v & 0xFFFF)));
+  c.put_i16(p.data, static_cast<std::int16_t>(static_cast<std::uint16_t>((v >> 16) & 0xFFFF)));
+  return p;
+}
+
+// TRIAL: the frame range as two 16-bit words each (low, high), so readers that take the range
+// from here rather than from the header's 16-bit fields see the same frames. None without frames.
+std::vector<ParamOut> c3d_trial_params(const Codec& c, const C3dData& data) {
+  const int frames = data.frame_count();
+  if (frames <= 0) return {};
+  const long first = std::max(data.first_frame, 1);
+  const long last = first + std::max(frames, 1) - 1;
+  return {c3d_two_word_param(c, "ACTUAL_START_FIELD", first), c3d_two_word_param(c, "ACTUAL_END_FIELD", last),
+          float_param(c, "CAMERA_RATE", static_cast<float>(data.point_rate_hz))};
+}
+
+std::vector<ParamOut> c3d_manufacturer_params(const C3dData& data) {
+  std::vector<ParamOut> manufacturer_params;
+  if (!data.manufacturer_company.empty())
+    manufacturer_params.push_back(text_param("COMPANY", {data.manufacturer_company}, false));
+  if (!data.manufacturer_software.empty())
+    manufacturer_params.push_back(text_param("SOFTWARE", {data.manufacturer_software}, false));
+  if (!data.manufacturer_version.empty())
+    manufacturer_params.push_back(text_param("VERSION_LABEL", {data.manufacturer_version}, false));
+  return manufacturer_params;
+}
+
+// The parameter records with DATA_START set; an empty TRIAL or MANUFACTURER group is left out.
+std::vector<std::uint8_t> c3d_parameter_records(const Codec& c, C3dParamGroups& groups, int data_start) {
+  groups.point[kC3dDataStartParam] = int_param(c, "DATA_START", data_start);
+  std::vector<std::uint8_t> s;
+  put_record_group(s, c, "POINT", 1);
+  for (const auto& p : groups.point) put_record_param(s, c, p, 1);
+  put_record_group(s, c, "ANALOG", 2);
+  for (const auto& p : groups.analog) put_record_param(s, c, p, 2);
+  if (!groups.trial.empty()) {
+    put_record_group(s, c, "TRIAL", 3);
+    for (const auto& p : groups.trial) put_record_param(s, c, p, 3);
+  }
+  if (!groups.manufacturer.empty()) {
+    put_record_group(s, c, "MANUFACTURER", 4);
+    for (const auto& p : groups.manufacturer) put_record_param(s, c, p, 4);
+  }
+  s.push_back(0);  // a zero name length ends the list
+  s.push_back(0);
+  return s;
+}
+
+std::vector<std::uint8_t> c3d_header_block(const Codec& c, const C3dData& data, float scale, int data_start) {
+  const int points = data.point_count();
+  const int frames = data.frame_count();
+  std::vector<std::uint8_t> header;
+  header.push_back(2);
+  header.push_back(kC3dKey);
+  c.put_i16(header, static_cast<std::int16_t>(static_cast<std::uint16_t>(points)));
+  c.put_i16(header, 0);  // analog samples per frame
+  c.put_i16(header, static_cast<std::int16_t>(static_cast<std::uint16_t>(std::max(data.first_frame, 1))));
+  c.put_i16(header, static_cast<std::int16_t>(
+                        static_cast<std::uint16_t>(std::max(data.first_frame, 1) + std::max(frames, 1) - 1)));
+  c.put_i16(header, 0);  // max interpolation gap
+  c.put_f32(header, scale);
+  c.put_i16(header, static_cast<std::int16_t>(data_start));
+  c.put_i16(header, 0);  // analog samples per channel
+  c.put_f32(header, static_cast<float>(data.point_rate_hz));
+  header.resize(kBlock, 0);
+  return header;
+}
+
+// Every frame's points (x, y, z, residual), as floats or as integers at the scale.
+void append_c3d_frames(std::vector<std::uint8_t>& out, const Codec& c, const C3dData& data,
+                       const C3dWriteOptions& options) {
+  const int points = data.point_count();
+  const int frames = data.frame_count();
+  for (int f = 0; f < frames; ++f) {
+    for (int p = 0; p < points; ++p) {
+      const Eigen::Vector3d& v = data.positions[static_cast<size_t>(f)][static_cast<size_t>(p)];
+      const bool missing = !(std::isfinite(v.x()) && std::isfinite(v.y()) && std::isfinite(v.z()));
+      if (options.float_storage) {
+        for (int k = 0; k < 3; ++k) c.put_f32(out, missing ? 0.0f : static_cast<float>(v[k]));
+        c.put_f32(out, missing ? -1.0f : 0.0f);
+      } else {
+        for (int k = 0; k < 3; ++k) {
+          const double q = missing ? 0.0 : std::round(v[k] / options.int_scale);
+          if (q < -32768.0 || q > 32767.0) {
+            throw Error("C3D writer: point " + data.labels[static_cast<size_t>(p)] + " frame " + std::to_string(f + 1) +
+                        " does not fit integer storage at scale " + std::to_string(options.int_scale));
+          }
+          c.put_i16(out, static_cast<std::int16_t>(q));
+        }
+        c.put_i16(out, missing ? -1 : 0);
+      }
+    }
+  }
+}
+
 }  // namespace
 
 MarkerSeries C3dData::to_marker_series(const std::string& source) const {
@@ -581,98 +714,20 @@ std::vector<std::uint8_t> write_c3d_bytes(const C3dData& data, const C3dWriteOpt
   if (!options.float_storage && !(options.int_scale > 0.0)) throw Error("C3D writer: integer scale must be positive");
 
   // Parameter section (built first: DATA_START depends on its size).
-  std::vector<ParamOut> point_params;
-  point_params.push_back(int_param(c, "USED", points));
-  point_params.push_back(float_param(c, "SCALE", scale));
-  point_params.push_back(float_param(c, "RATE", static_cast<float>(data.point_rate_hz)));
-  point_params.push_back(int_param(c, "DATA_START", 0));  // patched below
-  point_params.push_back(int_param(c, "FRAMES", frames));
-  point_params.push_back(text_param("UNITS", {data.units.empty() ? std::string("mm") : data.units}, false));
-  for (int k = 0; k * 255 < std::max(points, 1); ++k) {
-    const auto b = data.labels.begin() + std::min(points, k * 255);
-    const auto e = data.labels.begin() + std::min(points, (k + 1) * 255);
-    std::vector<std::string> chunk(b, e);
-    if (chunk.empty()) chunk.emplace_back("");
-    point_params.push_back(text_param(k == 0 ? "LABELS" : "LABELS" + std::to_string(k + 1), chunk, true));
-    if (points == 0) break;
-  }
-  if (!data.descriptions.empty()) {
-    // One description per point, in 255-point chunks like the labels.
-    std::vector<std::string> all = data.descriptions;
-    all.resize(static_cast<size_t>(points));
-    for (int k = 0; k * 255 < points; ++k) {
-      std::vector<std::string> chunk(all.begin() + k * 255, all.begin() + std::min(points, (k + 1) * 255));
-      point_params.push_back(text_param(k == 0 ? "DESCRIPTIONS" : "DESCRIPTIONS" + std::to_string(k + 1), chunk, true));
-    }
-  }
-  std::vector<ParamOut> analog_params{int_param(c, "USED", 0),
-                                      float_param(c, "RATE", static_cast<float>(data.point_rate_hz))};
-  // TRIAL: the frame range as two 16-bit words each (low, high), so readers that take the range
-  // from here rather than from the header's 16-bit fields see the same frames.
-  const long first = std::max(data.first_frame, 1);
-  const long last = first + std::max(frames, 1) - 1;
-  auto two_words = [&](const std::string& name, long v) {
-    ParamOut p{name, 2, {2}, {}};
-    c.put_i16(p.data, static_cast<std::int16_t>(static_cast<std::uint16_t>(v & 0xFFFF)));
-    c.put_i16(p.data, static_cast<std::int16_t>(static_cast<std::uint16_t>((v >> 16) & 0xFFFF)));
-    return p;
-  };
-  std::vector<ParamOut> trial_params;
-  if (frames > 0) {
-    trial_params = {two_words("ACTUAL_START_FIELD", first), two_words("ACTUAL_END_FIELD", last),
-                    float_param(c, "CAMERA_RATE", static_cast<float>(data.point_rate_hz))};
-  }
-  std::vector<ParamOut> manufacturer_params;
-  if (!data.manufacturer_company.empty())
-    manufacturer_params.push_back(text_param("COMPANY", {data.manufacturer_company}, false));
-  if (!data.manufacturer_software.empty())
-    manufacturer_params.push_back(text_param("SOFTWARE", {data.manufacturer_software}, false));
-  if (!data.manufacturer_version.empty())
-    manufacturer_params.push_back(text_param("VERSION_LABEL", {data.manufacturer_version}, false));
-
-  auto build = [&](int data_start) {
-    point_params[3] = int_param(c, "DATA_START", data_start);
-    std::vector<std::uint8_t> s;
-    put_record_group(s, c, "POINT", 1);
-    for (const auto& p : point_params) put_record_param(s, c, p, 1);
-    put_record_group(s, c, "ANALOG", 2);
-    for (const auto& p : analog_params) put_record_param(s, c, p, 2);
-    if (!trial_params.empty()) {
-      put_record_group(s, c, "TRIAL", 3);
-      for (const auto& p : trial_params) put_record_param(s, c, p, 3);
-    }
-    if (!manufacturer_params.empty()) {
-      put_record_group(s, c, "MANUFACTURER", 4);
-      for (const auto& p : manufacturer_params) put_record_param(s, c, p, 4);
-    }
-    s.push_back(0);  // a zero name length ends the list
-    s.push_back(0);
-    return s;
-  };
-  std::vector<std::uint8_t> records = build(0);
+  C3dParamGroups groups{c3d_point_params(c, data, scale),
+                        {int_param(c, "USED", 0), float_param(c, "RATE", static_cast<float>(data.point_rate_hz))},
+                        c3d_trial_params(c, data),
+                        c3d_manufacturer_params(data)};
+  std::vector<std::uint8_t> records = c3d_parameter_records(c, groups, 0);
   const size_t pblocks = (records.size() + 4 + kBlock - 1) / kBlock;
   if (pblocks > 255)
     throw Error("C3D writer: the parameter section needs " + std::to_string(pblocks) + " blocks (at most 255)");
   const int data_start = static_cast<int>(2 + pblocks);
-  records = build(data_start);
+  records = c3d_parameter_records(c, groups, data_start);
 
   std::vector<std::uint8_t> out;
   out.reserve(kBlock * (1 + pblocks) + static_cast<size_t>(frames) * static_cast<size_t>(points) * 16 + kBlock);
-  // Header block.
-  std::vector<std::uint8_t> header;
-  header.push_back(2);
-  header.push_back(kC3dKey);
-  c.put_i16(header, static_cast<std::int16_t>(static_cast<std::uint16_t>(points)));
-  c.put_i16(header, 0);  // analog samples per frame
-  c.put_i16(header, static_cast<std::int16_t>(static_cast<std::uint16_t>(std::max(data.first_frame, 1))));
-  c.put_i16(header, static_cast<std::int16_t>(
-                        static_cast<std::uint16_t>(std::max(data.first_frame, 1) + std::max(frames, 1) - 1)));
-  c.put_i16(header, 0);  // max interpolation gap
-  c.put_f32(header, scale);
-  c.put_i16(header, static_cast<std::int16_t>(data_start));
-  c.put_i16(header, 0);  // analog samples per channel
-  c.put_f32(header, static_cast<float>(data.point_rate_hz));
-  header.resize(kBlock, 0);
+  const std::vector<std::uint8_t> header = c3d_header_block(c, data, scale, data_start);
   out.insert(out.end(), header.begin(), header.end());
   // Parameter blocks.
   out.push_back(1);
@@ -681,27 +736,7 @@ std::vector<std::uint8_t> write_c3d_bytes(const C3dData& data, const C3dWriteOpt
   out.push_back(static_cast<std::uint8_t>(options.processor));
   out.insert(out.end(), records.begin(), records.end());
   out.resize(kBlock * (1 + pblocks), 0);
-  // Data.
-  for (int f = 0; f < frames; ++f) {
-    for (int p = 0; p < points; ++p) {
-      const Eigen::Vector3d& v = data.positions[static_cast<size_t>(f)][static_cast<size_t>(p)];
-      const bool missing = !(std::isfinite(v.x()) && std::isfinite(v.y()) && std::isfinite(v.z()));
-      if (options.float_storage) {
-        for (int k = 0; k < 3; ++k) c.put_f32(out, missing ? 0.0f : static_cast<float>(v[k]));
-        c.put_f32(out, missing ? -1.0f : 0.0f);
-      } else {
-        for (int k = 0; k < 3; ++k) {
-          const double q = missing ? 0.0 : std::round(v[k] / options.int_scale);
-          if (q < -32768.0 || q > 32767.0) {
-            throw Error("C3D writer: point " + data.labels[static_cast<size_t>(p)] + " frame " + std::to_string(f + 1) +
-                        " does not fit integer storage at scale " + std::to_string(options.int_scale));
-          }
-          c.put_i16(out, static_cast<std::int16_t>(q));
-        }
-        c.put_i16(out, missing ? -1 : 0);
-      }
-    }
-  }
+  append_c3d_frames(out, c, data, options);
   out.resize((out.size() + kBlock - 1) / kBlock * kBlock, 0);
   return out;
 }
