@@ -242,6 +242,110 @@ QualityReport finish(QualityReport report, Reasons reasons) {
   return report;
 }
 
+// The caller passes the block's layout; a caller that has only the sidecar gets the layout the
+// recorder wrote into it.
+Layout layout_to_assess(const QualityInputs& in, Reasons& reasons) {
+  Layout layout = in.layout;
+  const RecorderSidecar& sidecar = *in.sidecar;
+  if (layout.devices.empty() && sidecar.layout.is_object()) {
+    try {
+      layout = layout_from_json(sidecar.layout, "LMC_" + sidecar.trial + ".session.json (layout)");
+    } catch (const std::exception& e) {
+      reasons.fail(std::string("the layout in the sidecar cannot be read: ") + e.what());
+    }
+  }
+  return layout;
+}
+
+// The trial's span on the device clocks (LeapGetNow is shared by every controller on a host);
+// `any` is false when no device has a row.
+struct TrialSpan {
+  std::int64_t first_us = 0, last_us = 0;
+  bool any = false;
+};
+TrialSpan trial_span(const std::vector<trial_quality_detail::DeviceRows>& rows) {
+  TrialSpan span;
+  for (const auto& d : rows) {
+    for (const HandFrame* r : d.rows) {
+      span.first_us = span.any ? std::min(span.first_us, r->timestamp_us) : r->timestamp_us;
+      span.last_us = span.any ? std::max(span.last_us, r->timestamp_us) : r->timestamp_us;
+      span.any = true;
+    }
+  }
+  return span;
+}
+
+// Every layout slot is expected to deliver; a device the layout lacks is a set-up fault. The
+// devices are judged only on one clock (`judge`), their counts listed either way.
+void assess_devices(const std::vector<trial_quality_detail::DeviceRows>& rows, const TrialSpan& span,
+                    const Layout& layout, const QualityInputs& in, bool judge, QualityReport& report,
+                    Reasons& reasons) {
+  const int slots = std::max(layout.device_count(), rows.empty() ? 0 : rows.back().device_id);
+  for (int id = 1; id <= slots; ++id) {
+    const auto it = std::find_if(rows.begin(), rows.end(),
+                                 [id](const trial_quality_detail::DeviceRows& d) { return d.device_id == id; });
+    DeviceQuality q = it != rows.end() ? trial_quality_detail::device_stream_quality(*it, span.first_us, span.last_us)
+                                       : trial_quality_detail::device_stream_quality(
+                                             trial_quality_detail::DeviceRows{id, {}}, span.first_us, span.last_us);
+    q.slot = layout_slot_name(layout, id);
+    const SidecarDevice* sd = sidecar_device(*in.sidecar, id, q.slot);
+    if (sd != nullptr) {
+      q.serial = sd->serial;
+      q.frame_id_gaps = sd->frame_id_gaps;
+      q.dropped = sd->frames_dropped_queue;
+      q.disconnects = static_cast<int>(sd->disconnects.size());
+      q.other_side_hand_frames = sd->frames_other_side_hand;
+    }
+    if (id > layout.device_count()) {
+      reasons.fail("the recording has device " + std::to_string(id) + " but layout '" + layout.name + "' has only " +
+                   std::to_string(layout.device_count()));
+    }
+    if (judge) judge_device(q, sd, in.thresholds, reasons);
+    report.devices.push_back(std::move(q));
+  }
+}
+
+// Hand presence and finger visibility over every controller at once.
+void assess_coverage(const trial_quality_detail::HeldGrid& grid,
+                     const std::vector<trial_quality_detail::TracedDevice>& traced, bool any_row,
+                     const QualityThresholds& t, QualityReport& report, Reasons& reasons) {
+  const trial_quality_detail::Coverage cov = trial_quality_detail::coverage(grid, traced);
+  report.hand_fraction = cov.hand_fraction;
+  if (any_row && cov.hand_fraction < t.fail_min_hand_fraction) {
+    reasons.fail("no controller saw the hand in " + percent_text(1.0 - cov.hand_fraction) + " of the trial");
+  }
+  report.finger_seen_fraction.assign(cov.finger_seen.begin(), cov.finger_seen.end());
+  report.timeline = trial_quality_detail::timeline(grid, traced, kTimelineSlices);
+  for (int k = 0; k < kNumDigits; ++k) {
+    const double unseen = 1.0 - cov.finger_seen[static_cast<size_t>(k)];
+    if (std::isfinite(unseen) && unseen > t.warn_max_finger_unseen) {
+      reasons.warn(std::string(digit_name(k)) + " finger unseen by every controller in " + percent_text(unseen) +
+                   " of frames");
+    }
+  }
+}
+
+// Range of motion of the trial's joint (a trial type moves one joint; the first is judged).
+RomQuality assess_rom(const RomExpectation& want, const trial_quality_detail::HeldGrid& grid,
+                      const std::vector<trial_quality_detail::TracedDevice>& traced, const Layout& layout,
+                      const QualityThresholds& t, Reasons& reasons) {
+  RomQuality rom{want.joint, want.expected_deg, kNaN};
+  const int angle = trial_quality_detail::angle_index(want.joint);
+  if (angle < 0) {
+    reasons.warn("range of motion not checked: unknown joint '" + want.joint + "'");
+    return rom;
+  }
+  rom.reached_deg = trial_quality_detail::reached_rom_deg(grid, traced, layout, angle);
+  const std::string name = joint_words(angle_name(angle));
+  if (!std::isfinite(rom.reached_deg)) {
+    reasons.warn(name + " range of motion unknown: the hand was never tracked");
+  } else if (rom.reached_deg < t.warn_min_rom_fraction * want.expected_deg) {
+    reasons.warn(name + " moved through " + degrees(rom.reached_deg) + " of the " + degrees(want.expected_deg) +
+                 " expected");
+  }
+  return rom;
+}
+
 }  // namespace
 
 QualityReport assess_trial(const QualityInputs& in) {
@@ -249,39 +353,19 @@ QualityReport assess_trial(const QualityInputs& in) {
     throw Error("assess_trial: the recording and the recorder sidecar are both required");
   }
   const LmcRecording& rec = *in.recording;
-  const RecorderSidecar& sidecar = *in.sidecar;
   const QualityThresholds& t = in.thresholds;
-  const std::string trial = sidecar.trial;
+  const std::string trial = in.sidecar->trial;
   QualityReport report;
   report.planned_s = in.planned_s;
   Reasons reasons;
 
-  judge_sidecar(sidecar, reasons);
+  judge_sidecar(*in.sidecar, reasons);
   for (const std::string& w : rec.warnings) reasons.warn("recording file: " + w);
+  const Layout layout = layout_to_assess(in, reasons);
 
-  // The caller passes the block's layout; a caller that has only the sidecar gets the layout the
-  // recorder wrote into it.
-  Layout layout = in.layout;
-  if (layout.devices.empty() && sidecar.layout.is_object()) {
-    try {
-      layout = layout_from_json(sidecar.layout, "LMC_" + trial + ".session.json (layout)");
-    } catch (const std::exception& e) {
-      reasons.fail(std::string("the layout in the sidecar cannot be read: ") + e.what());
-    }
-  }
-
-  // The trial's span on the device clocks (LeapGetNow is shared by every controller on a host).
   const std::vector<trial_quality_detail::DeviceRows> rows = trial_quality_detail::rows_by_device(rec);
-  std::int64_t first_us = 0, last_us = 0;
-  bool any = false;
-  for (const auto& d : rows) {
-    for (const HandFrame* r : d.rows) {
-      first_us = any ? std::min(first_us, r->timestamp_us) : r->timestamp_us;
-      last_us = any ? std::max(last_us, r->timestamp_us) : r->timestamp_us;
-      any = true;
-    }
-  }
-  report.duration_s = static_cast<double>(last_us - first_us) * 1e-6;
+  const TrialSpan span = trial_span(rows);
+  report.duration_s = static_cast<double>(span.last_us - span.first_us) * 1e-6;
   if (in.planned_s > 0 && report.duration_s < t.fail_min_duration_fraction * in.planned_s) {
     reasons.fail("recorded " + secs(report.duration_s) + " of the planned " + secs(in.planned_s));
   }
@@ -294,76 +378,17 @@ QualityReport assess_trial(const QualityInputs& in) {
     reasons.fail(layout_slot_name(layout, jump.device_id) + "'s clock jumped back " +
                  secs(static_cast<double>(jump.back_us) * 1e-6) + " (the tracking service restarted?)");
   }
+  assess_devices(rows, span, layout, in, one_clock, report, reasons);
 
-  // Every layout slot is expected to deliver; a device the layout lacks is a set-up fault.
-  const int slots = std::max(layout.device_count(), rows.empty() ? 0 : rows.back().device_id);
-  for (int id = 1; id <= slots; ++id) {
-    const auto it = std::find_if(rows.begin(), rows.end(),
-                                 [id](const trial_quality_detail::DeviceRows& d) { return d.device_id == id; });
-    DeviceQuality q = it != rows.end() ? trial_quality_detail::device_stream_quality(*it, first_us, last_us)
-                                       : trial_quality_detail::device_stream_quality(
-                                             trial_quality_detail::DeviceRows{id, {}}, first_us, last_us);
-    q.slot = layout_slot_name(layout, id);
-    const SidecarDevice* sd = sidecar_device(sidecar, id, q.slot);
-    if (sd != nullptr) {
-      q.serial = sd->serial;
-      q.frame_id_gaps = sd->frame_id_gaps;
-      q.dropped = sd->frames_dropped_queue;
-      q.disconnects = static_cast<int>(sd->disconnects.size());
-      q.other_side_hand_frames = sd->frames_other_side_hand;
-    }
-    if (id > layout.device_count()) {
-      reasons.fail("the recording has device " + std::to_string(id) + " but layout '" + layout.name + "' has only " +
-                   std::to_string(layout.device_count()));
-    }
-    if (one_clock) judge_device(q, sd, t, reasons);
-    report.devices.push_back(std::move(q));
-  }
-  if (!one_clock) {
-    report.vicon = vicon_quality(in, trial);
-    judge_vicon(report.vicon, in, trial, reasons);
-    return finish(std::move(report), std::move(reasons));
-  }
-
-  // Hand presence and finger visibility over every controller at once.
-  std::vector<trial_quality_detail::TracedDevice> traced;
-  traced.reserve(rows.size());
-  for (const auto& d : rows) traced.push_back(trial_quality_detail::trace_device(d));
-  const double step_us = std::max(kGridStepUs, static_cast<double>(last_us - first_us) / kMaxGridBins);
-  const trial_quality_detail::HeldGrid grid = trial_quality_detail::hold_on_grid(rows, first_us, last_us, step_us);
-  const trial_quality_detail::Coverage cov = trial_quality_detail::coverage(grid, traced);
-  report.hand_fraction = cov.hand_fraction;
-  if (any && cov.hand_fraction < t.fail_min_hand_fraction) {
-    reasons.fail("no controller saw the hand in " + percent_text(1.0 - cov.hand_fraction) + " of the trial");
-  }
-  report.finger_seen_fraction.assign(cov.finger_seen.begin(), cov.finger_seen.end());
-  report.timeline = trial_quality_detail::timeline(grid, traced, kTimelineSlices);
-  for (int k = 0; k < kNumDigits; ++k) {
-    const double unseen = 1.0 - cov.finger_seen[static_cast<size_t>(k)];
-    if (std::isfinite(unseen) && unseen > t.warn_max_finger_unseen) {
-      reasons.warn(std::string(digit_name(k)) + " finger unseen by every controller in " + percent_text(unseen) +
-                   " of frames");
-    }
-  }
-
-  // Range of motion of the trial's joint (a trial type moves one joint; the first is judged).
-  if (!in.rom.empty()) {
-    const RomExpectation& want = in.rom.front();
-    RomQuality rom{want.joint, want.expected_deg, kNaN};
-    const int angle = trial_quality_detail::angle_index(want.joint);
-    if (angle < 0) {
-      reasons.warn("range of motion not checked: unknown joint '" + want.joint + "'");
-    } else {
-      rom.reached_deg = trial_quality_detail::reached_rom_deg(grid, traced, layout, angle);
-      const std::string name = joint_words(angle_name(angle));
-      if (!std::isfinite(rom.reached_deg)) {
-        reasons.warn(name + " range of motion unknown: the hand was never tracked");
-      } else if (rom.reached_deg < t.warn_min_rom_fraction * want.expected_deg) {
-        reasons.warn(name + " moved through " + degrees(rom.reached_deg) + " of the " + degrees(want.expected_deg) +
-                     " expected");
-      }
-    }
-    report.rom = rom;
+  if (one_clock) {
+    std::vector<trial_quality_detail::TracedDevice> traced;
+    traced.reserve(rows.size());
+    for (const auto& d : rows) traced.push_back(trial_quality_detail::trace_device(d));
+    const double step_us = std::max(kGridStepUs, static_cast<double>(span.last_us - span.first_us) / kMaxGridBins);
+    const trial_quality_detail::HeldGrid grid =
+        trial_quality_detail::hold_on_grid(rows, span.first_us, span.last_us, step_us);
+    assess_coverage(grid, traced, span.any, t, report, reasons);
+    if (!in.rom.empty()) report.rom = assess_rom(in.rom.front(), grid, traced, layout, t, reasons);
   }
 
   report.vicon = vicon_quality(in, trial);
