@@ -221,6 +221,73 @@ void hold_deliberately(std::vector<std::unique_ptr<char[]>>& held, double mb_cou
   std::fill_n(held.back().get(), bytes, static_cast<char>(held.size()));
 }
 
+// The engine's settings for soak trial `index`, `len` seconds long.
+TrialEngineConfig soak_trial_config(const SoakConfig& config, const std::string& name, int index, double len) {
+  TrialEngineConfig tc;
+  tc.output_dir = config.output_dir;
+  tc.trial = name;
+  tc.seconds = len;
+  tc.backend = "sim";
+  tc.allow_overwrite = true;  // the soak's own folder: a run again replaces the last one's trials
+  tc.stopped_by = "soak";
+  tc.open_sink = config.open_sink;
+  tc.extra["soak"] = {{"devices", config.devices}, {"rate_hz", config.rate_hz}, {"trial", index}};
+  return tc;
+}
+
+// A checked trial's counts into the report and the sampler's running totals, and its problem
+// when it lost frames or did not complete.
+void count_soak_trial(SoakReport& report, Sampler& sampler, SoakTrial t) {
+  report.produced += t.produced;
+  report.written += t.written;
+  report.lost += t.lost();
+  report.queue_dropped += t.queue_dropped;
+  report.writer_lost += t.writer_lost;
+  sampler.written += t.written;
+  sampler.lost += t.lost();
+  ++sampler.trials;
+  if (t.lost() != 0 || t.status != "completed") {
+    if (report.problems.size() < kMaxListedProblems) report.problems.push_back(trial_problem(t));
+  }
+  report.trials.push_back(std::move(t));
+}
+
+// Stops the hub, then the live fused hand and the background work, keeping their counts.
+void stop_soak_rig(SoakReport& report, DeviceHub& hub, GroupedFusion* fusion, BackgroundLoad* background) {
+  if (fusion) hub.remove_tap(fusion);
+  hub.stop();
+  if (fusion) {
+    fusion->stop();
+    report.fusion = fusion->stats();
+  }
+  if (background) {
+    background->stop();
+    report.background = background->counts();
+    if (!report.background.last_error.empty()) report.notes.push_back(report.background.last_error);
+  }
+}
+
+// What the source delivered, the samples' peaks, and the notes and problems of the whole run.
+void summarise_soak(SoakReport& report, const SoakConfig& config, const CountingSource& source,
+                    const Sampler& sampler) {
+  if (config.verdict && config.devices > kMaxDevices)
+    report.notes.push_back("no verdicts: the recording format holds at most " + std::to_string(kMaxDevices) +
+                           " controllers, so the files are counted by the recorder, not read back");
+  report.source_frames = source.frames_produced();
+  report.source_rate_fraction =
+      static_cast<double>(report.source_frames) / (config.devices * config.rate_hz * report.elapsed_s);
+  report.samples = sampler.samples();
+  for (const SoakSample& s : report.samples) {
+    report.rss_max_mb = std::max(report.rss_max_mb, s.process.rss_mb);
+    report.queue_depth_max = std::max(report.queue_depth_max, s.queue_depth_max);
+  }
+  if (report.lost != 0 && report.problems.size() >= kMaxListedProblems)
+    report.problems.push_back(std::to_string(report.lost) + " frames lost in all");
+  if (report.source_rate_fraction < 0.95)
+    report.notes.push_back("the simulator delivered " + mb(100 * report.source_rate_fraction) +
+                           " % of the frames asked for: the rig, not the recorder, set the pace");
+}
+
 }  // namespace
 
 Layout soak_layout(int devices) {
@@ -285,16 +352,7 @@ SoakReport run_soak(const SoakConfig& config, const std::function<void(const std
     const double len = std::max(1.0, std::min(config.trial_seconds, left));
     char name[32];
     std::snprintf(name, sizeof name, "soak_%04d", index);
-    TrialEngineConfig tc;
-    tc.output_dir = config.output_dir;
-    tc.trial = name;
-    tc.seconds = len;
-    tc.backend = "sim";
-    tc.allow_overwrite = true;  // the soak's own folder: a run again replaces the last one's trials
-    tc.stopped_by = "soak";
-    tc.open_sink = config.open_sink;
-    tc.extra["soak"] = {{"devices", config.devices}, {"rate_hz", config.rate_hz}, {"trial", index}};
-    TrialEngine engine(hub, nullptr, tc);
+    TrialEngine engine(hub, nullptr, soak_trial_config(config, name, index, len));
     const TrialResult result = engine.run({}, on_status);
     const std::vector<std::int64_t> times = source->take_frame_times();
     if (!result.recorded) {
@@ -309,18 +367,7 @@ SoakReport run_soak(const SoakConfig& config, const std::function<void(const std
       std::filesystem::remove(result.paths.recording, ec);
       std::filesystem::remove(result.paths.sidecar, ec);
     }
-    report.produced += t.produced;
-    report.written += t.written;
-    report.lost += t.lost();
-    report.queue_dropped += t.queue_dropped;
-    report.writer_lost += t.writer_lost;
-    sampler.written += t.written;
-    sampler.lost += t.lost();
-    ++sampler.trials;
-    if (t.lost() != 0 || t.status != "completed") {
-      if (report.problems.size() < kMaxListedProblems) report.problems.push_back(trial_problem(t));
-    }
-    report.trials.push_back(std::move(t));
+    count_soak_trial(report, sampler, std::move(t));
     if (index == 1) {
       report.baseline = read_process_stats();
       baseline_t_s = elapsed();
@@ -330,33 +377,8 @@ SoakReport run_soak(const SoakConfig& config, const std::function<void(const std
   report.end = read_process_stats();
   report.elapsed_s = elapsed();
   sampler.stop();
-  if (fusion) hub.remove_tap(fusion.get());
-  hub.stop();
-  if (fusion) {
-    fusion->stop();
-    report.fusion = fusion->stats();
-  }
-  if (background) {
-    background->stop();
-    report.background = background->counts();
-    if (!report.background.last_error.empty()) report.notes.push_back(report.background.last_error);
-  }
-  if (config.verdict && config.devices > kMaxDevices)
-    report.notes.push_back("no verdicts: the recording format holds at most " + std::to_string(kMaxDevices) +
-                           " controllers, so the files are counted by the recorder, not read back");
-  report.source_frames = source->frames_produced();
-  report.source_rate_fraction =
-      static_cast<double>(report.source_frames) / (config.devices * config.rate_hz * report.elapsed_s);
-  report.samples = sampler.samples();
-  for (const SoakSample& s : report.samples) {
-    report.rss_max_mb = std::max(report.rss_max_mb, s.process.rss_mb);
-    report.queue_depth_max = std::max(report.queue_depth_max, s.queue_depth_max);
-  }
-  if (report.lost != 0 && report.problems.size() >= kMaxListedProblems)
-    report.problems.push_back(std::to_string(report.lost) + " frames lost in all");
-  if (report.source_rate_fraction < 0.95)
-    report.notes.push_back("the simulator delivered " + mb(100 * report.source_rate_fraction) +
-                           " % of the frames asked for: the rig, not the recorder, set the pace");
+  stop_soak_rig(report, hub, fusion.get(), background.get());
+  summarise_soak(report, config, *source, sampler);
   judge_growth(report, baseline_t_s);
   return report;
 }
