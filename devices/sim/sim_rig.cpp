@@ -47,6 +47,74 @@ std::uint64_t mix(std::uint64_t seed, std::uint64_t k) {
   return z ^ (z >> 31);
 }
 
+// The serial a controller reports: the layout's, or one made from the seed and its slot.
+std::string sim_serial(const SimConfig& config, const LayoutDevice& ld, size_t i) {
+  if (ld.serial) return *ld.serial;
+  return config.serial_prefix + "-" + ld.slot + "-" + std::to_string(10000 + (mix(config.seed, 100 + i) % 90000));
+}
+
+// What the controller reports itself as: its slot's model's hardware (the study's model is the
+// original controller), or the configured stand-in.
+void describe_sim_hardware(DeviceInfo& info, const SimConfig& config, const LayoutDevice& ld) {
+  const SensorCatalogue& catalogue = sensor_catalogue();
+  const SensorSpec* reported = catalogue.find(config.stand_in_model.empty() ? ld.model : config.stand_in_model);
+  if (reported && !reported->leapc_product_ids.empty()) {
+    if (const SensorSpec* hw = catalogue.for_product_id(reported->leapc_product_ids.front())) reported = hw;
+  }
+  info.model = "simulated " + (reported ? reported->name : std::string("Leap Motion Controller"));
+  info.product_id = reported && !reported->leapc_product_ids.empty() ? reported->leapc_product_ids.front() : 0;
+}
+
+// The translation error the configuration gives the slot, before any random part.
+Vec3 configured_calibration(const SimConfig& config, const LayoutDevice& ld) {
+  switch (config.calibration) {
+    case SimConfig::Calibration::kLayout:
+      return ld.offset_mm;
+    case SimConfig::Calibration::kNone:
+      return Vec3::Zero();
+    case SimConfig::Calibration::kCustom: {
+      auto it = config.calibration_offsets_mm.find(ld.slot);
+      return it == config.calibration_offsets_mm.end() ? Vec3::Zero() : it->second;
+    }
+  }
+  return Vec3::Zero();
+}
+
+// Rotation error about the device's own origin (sim_config.h), drawn from a stream of its own so
+// that the rates, noise and elbow of a configuration without it do not change. The random part
+// also moves `calibration`.
+Eigen::Matrix3d calibration_turn(const SimConfig& config, const LayoutDevice& ld, size_t i, Vec3& calibration) {
+  Eigen::Matrix3d turn = Eigen::Matrix3d::Identity();
+  if (auto it = config.calibration_rotations_deg.find(ld.slot); it != config.calibration_rotations_deg.end()) {
+    DevicePose angles;
+    angles.rx_deg = it->second.x();
+    angles.ry_deg = it->second.y();
+    angles.rz_deg = it->second.z();
+    turn = angles.rotation();
+  }
+  if (config.calibration_random_translation_mm > 0 || config.calibration_random_rotation_deg > 0) {
+    std::mt19937_64 cal(mix(config.calibration_seed.value_or(config.seed), 200 + i));
+    std::normal_distribution<double> gauss(0, 1);
+    std::uniform_real_distribution<double> u01(0, 1);
+    const Vec3 dir = Vec3(gauss(cal), gauss(cal), gauss(cal)).normalized();
+    calibration += dir * (u01(cal) * config.calibration_random_translation_mm);
+    const Vec3 axis = Vec3(gauss(cal), gauss(cal), gauss(cal)).normalized();
+    const double angle = u01(cal) * config.calibration_random_rotation_deg * kRadPerDeg;
+    turn = Eigen::AngleAxisd(angle, axis).toRotationMatrix() * turn;
+  }
+  return turn;
+}
+
+// The paper saw one device's elbow 10–20 mm off in y after realignment; every simulated device
+// gets its own constant error of that size, mostly along its y axis.
+Vec3 draw_elbow_error(const SimConfig& config, std::mt19937_64& rng) {
+  std::uniform_real_distribution<double> mag(config.elbow_error_min_mm, config.elbow_error_max_mm);
+  std::normal_distribution<double> dir(0, 0.3);
+  std::uniform_real_distribution<double> u01(0, 1);
+  Vec3 e(dir(rng), (u01(rng) < 0.5 ? -1.0 : 1.0), dir(rng));
+  return e.normalized() * mag(rng);
+}
+
 }  // namespace
 
 struct SimRig::Device {
@@ -107,59 +175,19 @@ SimRig::SimRig(Layout layout, SimConfig config)
     auto d = std::make_unique<Device>();
     d->index = static_cast<int>(i);
     d->rng.seed(mix(config_.seed, i));
-    d->info.serial = ld.serial ? *ld.serial
-                               : config_.serial_prefix + "-" + ld.slot + "-" +
-                                     std::to_string(10000 + (mix(config_.seed, 100 + i) % 90000));
+    d->info.serial = sim_serial(config_, ld, i);
     d->info.backend = "sim";
-    // What the controller reports itself as: its slot's model's hardware (the study's model is the
-    // original controller), or the configured stand-in.
-    const SensorCatalogue& catalogue = sensor_catalogue();
-    const SensorSpec* reported = catalogue.find(config_.stand_in_model.empty() ? ld.model : config_.stand_in_model);
-    if (reported && !reported->leapc_product_ids.empty()) {
-      if (const SensorSpec* hw = catalogue.for_product_id(reported->leapc_product_ids.front())) reported = hw;
-    }
-    d->info.model = "simulated " + (reported ? reported->name : std::string("Leap Motion Controller"));
-    d->info.product_id = reported && !reported->leapc_product_ids.empty() ? reported->leapc_product_ids.front() : 0;
+    describe_sim_hardware(d->info, config_, ld);
     // The study's shared-bus rates (rate_min_hz…rate_max_hz) are for its 120 Hz controllers; a model
     // with another nominal rate runs proportionally faster or slower.
+    const SensorCatalogue& catalogue = sensor_catalogue();
     const SensorSpec* own = catalogue.find(ld.model);
     const SensorSpec* study = catalogue.find(kStudySensorId);
     d->rate_scale = own && study ? own->frame_rate_hz / study->frame_rate_hz : 1.0;
     d->noise_sigma_mm = sim_noise_sigma_mm(config_, own);
     d->info.tracking_mode = tracking_mode_name(tracking_mode_for_pose(ld.pose));
-    switch (config_.calibration) {
-      case SimConfig::Calibration::kLayout:
-        d->calibration = ld.offset_mm;
-        break;
-      case SimConfig::Calibration::kNone:
-        d->calibration = Vec3::Zero();
-        break;
-      case SimConfig::Calibration::kCustom: {
-        auto it = config_.calibration_offsets_mm.find(ld.slot);
-        d->calibration = it == config_.calibration_offsets_mm.end() ? Vec3::Zero() : it->second;
-        break;
-      }
-    }
-    // Rotation error about the device's own origin (sim_config.h), drawn from a stream of its
-    // own so that the rates, noise and elbow of a configuration without it do not change.
-    Eigen::Matrix3d turn = Eigen::Matrix3d::Identity();
-    if (auto it = config_.calibration_rotations_deg.find(ld.slot); it != config_.calibration_rotations_deg.end()) {
-      DevicePose angles;
-      angles.rx_deg = it->second.x();
-      angles.ry_deg = it->second.y();
-      angles.rz_deg = it->second.z();
-      turn = angles.rotation();
-    }
-    if (config_.calibration_random_translation_mm > 0 || config_.calibration_random_rotation_deg > 0) {
-      std::mt19937_64 cal(mix(config_.calibration_seed.value_or(config_.seed), 200 + i));
-      std::normal_distribution<double> gauss(0, 1);
-      std::uniform_real_distribution<double> u01(0, 1);
-      const Vec3 dir = Vec3(gauss(cal), gauss(cal), gauss(cal)).normalized();
-      d->calibration += dir * (u01(cal) * config_.calibration_random_translation_mm);
-      const Vec3 axis = Vec3(gauss(cal), gauss(cal), gauss(cal)).normalized();
-      const double angle = u01(cal) * config_.calibration_random_rotation_deg * kRadPerDeg;
-      turn = Eigen::AngleAxisd(angle, axis).toRotationMatrix() * turn;
-    }
+    d->calibration = configured_calibration(config_, ld);
+    const Eigen::Matrix3d turn = calibration_turn(config_, ld, i, d->calibration);
     d->r = turn * ld.pose.rotation();
     d->origin = ld.pose.translation() + d->calibration;
     DevicePose true_pose = ld.pose;
@@ -171,14 +199,7 @@ SimRig::SimRig(Layout layout, SimConfig config)
     std::uniform_real_distribution<double> u01(0, 1);
     d->next_time_s = u01(d->rng) / d->rate_hz;
     d->frame_id = 100 + static_cast<std::int64_t>(d->rng() % 900);
-    if (config_.elbow_error) {
-      // The paper saw one device's elbow 10–20 mm off in y after realignment; every simulated
-      // device gets its own constant error of that size, mostly along its y axis.
-      std::uniform_real_distribution<double> mag(config_.elbow_error_min_mm, config_.elbow_error_max_mm);
-      std::normal_distribution<double> dir(0, 0.3);
-      Vec3 e(dir(d->rng), (u01(d->rng) < 0.5 ? -1.0 : 1.0), dir(d->rng));
-      d->elbow_error = e.normalized() * mag(d->rng);
-    }
+    if (config_.elbow_error) d->elbow_error = draw_elbow_error(config_, d->rng);
     if (config_.hand_model_error.enabled) {
       // Its own stream of the calibration seed: a controller keeps its hand model for a session,
       // and nothing else the rig draws changes.
