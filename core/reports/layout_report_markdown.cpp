@@ -49,10 +49,9 @@ std::string pose_sets_side_by_side(const LayoutReport& r) {
   return md;
 }
 
-}  // namespace
-
-std::string format_layout_report_markdown(const LayoutReport& r,
-                                          const std::vector<std::pair<std::string, std::string>>& figures) {
+// Title, description, pose set and its provenance, and the figures with their captions.
+std::string layout_report_opening(const LayoutReport& r,
+                                  const std::vector<std::pair<std::string, std::string>>& figures) {
   std::string md = "# Layout report: " + r.layout_name + "\n\n";
   if (!r.layout_description.empty()) md += r.layout_description + "\n\n";
   md += "Pose set: " + r.poses_description + ". Written by `lmc evaluate --report` (core/metric/layout_report.h).\n\n";
@@ -62,17 +61,14 @@ std::string format_layout_report_markdown(const LayoutReport& r,
     md += "The search that made this layout used: " + searched + ".\n\n";
   // The caption also under the picture: alt text alone is only read when the picture is missing.
   for (const auto& [caption, file] : figures) md += "![" + caption + "](" + file + ")\n\n*" + caption + "*\n\n";
+  return md;
+}
 
-  md += "## Verdict\n\n";
+// The controllers that add nothing, overall and inside their axis cuts.
+std::string layout_report_idle_controllers(const LayoutReport& r) {
+  std::string md;
   int idle = 0;
   for (const auto& c : r.controllers) idle += c.counts ? 0 : 1;
-  md += "* M (the study's metric, lower is better): **" + format_fixed(r.terms_all.metric_m, 4) +
-        "**; robust R: " + format_fixed(r.terms_all.total, 4) + ".\n";
-  md +=
-      "* Every finger seen by at least two controllers in " + report_percent(redundant_share(r.coverage.all.c)) +
-      " of frames; some finger seen by none in " +
-      report_percent(r.coverage.all.frames > 0 ? static_cast<double>(r.coverage.all.c[0]) / r.coverage.all.frames : 0) +
-      ".\n";
   if (idle == 0) {
     md += "* Every controller counts: the layout is measurably worse without any one of them.\n";
   } else {
@@ -97,6 +93,19 @@ std::string format_layout_report_markdown(const LayoutReport& r,
       }
     }
   }
+  return md;
+}
+
+std::string layout_report_verdict(const LayoutReport& r) {
+  std::string md = "## Verdict\n\n";
+  md += "* M (the study's metric, lower is better): **" + format_fixed(r.terms_all.metric_m, 4) +
+        "**; robust R: " + format_fixed(r.terms_all.total, 4) + ".\n";
+  md +=
+      "* Every finger seen by at least two controllers in " + report_percent(redundant_share(r.coverage.all.c)) +
+      " of frames; some finger seen by none in " +
+      report_percent(r.coverage.all.frames > 0 ? static_cast<double>(r.coverage.all.c[0]) / r.coverage.all.frames : 0) +
+      ".\n";
+  md += layout_report_idle_controllers(r);
   for (const auto& pair : r.overlapping_pairs) {
     md += "* **" + pair +
           " overlap** on the table (their 80 x 30 mm footprints, offsets included): this layout cannot be built as "
@@ -108,8 +117,11 @@ std::string format_layout_report_markdown(const LayoutReport& r,
         "controller's cut (a finger with a marker beyond it unseen by that controller), M is " +
         format_fixed(r.terms_all.metric_m_inside_cut, 4) + " instead of " + format_fixed(r.terms_all.metric_m, 4) +
         ".\n\n";
+  return md;
+}
 
-  md +=
+std::string layout_report_metric_terms(const LayoutReport& r) {
+  std::string md =
       "## Metric terms\n\n| term | what it measures | weight | all | palm down | palm left "
       "|\n|---|---|---:|---:|---:|---:|\n";
   auto term_row = [&](const char* name, const char* meaning, const std::string& weight, double RobustTerms::*field) {
@@ -121,8 +133,12 @@ std::string format_layout_report_markdown(const LayoutReport& r,
     term_row(term.name, term.meaning, report_weight(robust_term_weight(r.weights, term)), term.value);
   }
   term_row("R", "the total: M plus each weight times its term", "", &RobustTerms::total);
+  return md;
+}
 
-  md +=
+// Each controller's share, overall and counting only what lies inside its axis cut.
+std::string layout_report_contributions(const LayoutReport& r) {
+  std::string md =
       "\n## What each controller contributes\n\n"
       "| controller | sees some finger | only one seeing some finger | seen frames beyond the axis cut | palm "
       "off-centre | M without it | every finger 2+ without it | counts |\n"
@@ -144,10 +160,11 @@ std::string format_layout_report_markdown(const LayoutReport& r,
           format_fixed(c.metric_inside_cut_without, 4) + " | " + report_percent(c.redundant_inside_cut_without) +
           " | " + (c.counts_inside_cut ? "yes" : "**no**") + " |\n";
   }
+  return md;
+}
 
-  if (r.sets.size() > 1) md += pose_sets_side_by_side(r);
-
-  md +=
+std::string layout_report_pose_coverage(const LayoutReport& r) {
+  std::string md =
       "\n## Coverage per reference pose\n\nShare of the pose's frames in which each finger is seen by at least one "
       "controller (and, after the slash, by two or more).\n\n| pose | frames |";
   for (int k = 0; k < kNumDigits; ++k) md += " " + std::string(digit_name(k)) + " |";
@@ -163,6 +180,19 @@ std::string format_layout_report_markdown(const LayoutReport& r,
     }
     md += "\n";
   }
+  return md;
+}
+
+}  // namespace
+
+std::string format_layout_report_markdown(const LayoutReport& r,
+                                          const std::vector<std::pair<std::string, std::string>>& figures) {
+  std::string md = layout_report_opening(r, figures);
+  md += layout_report_verdict(r);
+  md += layout_report_metric_terms(r);
+  md += layout_report_contributions(r);
+  if (r.sets.size() > 1) md += pose_sets_side_by_side(r);
+  md += layout_report_pose_coverage(r);
   return md;
 }
 
