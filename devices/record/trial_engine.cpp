@@ -377,40 +377,37 @@ struct TrialEngine::TrialInProgress {
     return false;
   }
 
-  void execute() {
-    if (!(cfg.seconds > 0)) throw Error("the trial length must be > 0 s");
-    if (!listen() || !trial.empty()) {
-      require_valid_trial_name(trial);
-      refuse_existing(trial);
+  // Listen mode: the listener that queues Vicon's CaptureStart and CaptureStop for the trial's loop.
+  void start_vicon_listener() {
+    const ViconListenBinding binding = choose_vicon_listen_binding(cfg.vicon_listen->first, cfg.vicon_senders);
+    ViconListenerConfig lc;
+    lc.bind_address = binding.address;
+    lc.interface_name = binding.interface_name;
+    lc.port = cfg.vicon_listen->second;
+    lc.allowed = cfg.vicon_senders;
+    listener = std::make_unique<ViconListener>(lc, [this](const ViconMessage& m, const ViconSender& from) {
+      const std::int64_t at = host_now_ns();
+      std::lock_guard lock(inbox_mutex);
+      inbox.push_back({m, at, from});
+    });
+    const bool on_interface = !binding.interface_name.empty() && listener->interface_note().empty();
+    result.listen_address = binding.address + ":" + std::to_string(listener->port()) +
+                            (on_interface ? " on " + binding.interface_name : std::string());
+    listen_binding = listener->interface_note().empty() ? binding.note : listener->interface_note();
+    if (!listener->interface_note().empty()) say(listener->interface_note());
+    if (cfg.vicon_senders.any()) {
+      listen_warning =
+          "no Vicon host is configured: CaptureStart and CaptureStop from any sender on the network are obeyed; "
+          "name the lab's Vicon host(s) to accept only them";
+      say(listen_warning);
     }
-    if (cfg.vicon) vicon = std::make_unique<ViconTrigger>(*cfg.vicon);
-    if (listen()) {
-      const ViconListenBinding binding = choose_vicon_listen_binding(cfg.vicon_listen->first, cfg.vicon_senders);
-      ViconListenerConfig lc;
-      lc.bind_address = binding.address;
-      lc.interface_name = binding.interface_name;
-      lc.port = cfg.vicon_listen->second;
-      lc.allowed = cfg.vicon_senders;
-      listener = std::make_unique<ViconListener>(lc, [this](const ViconMessage& m, const ViconSender& from) {
-        const std::int64_t at = host_now_ns();
-        std::lock_guard lock(inbox_mutex);
-        inbox.push_back({m, at, from});
-      });
-      const bool on_interface = !binding.interface_name.empty() && listener->interface_note().empty();
-      result.listen_address = binding.address + ":" + std::to_string(listener->port()) +
-                              (on_interface ? " on " + binding.interface_name : std::string());
-      listen_binding = listener->interface_note().empty() ? binding.note : listener->interface_note();
-      if (!listener->interface_note().empty()) say(listener->interface_note());
-      if (cfg.vicon_senders.any()) {
-        listen_warning =
-            "no Vicon host is configured: CaptureStart and CaptureStop from any sender on the network are obeyed; "
-            "name the lab's Vicon host(s) to accept only them";
-        say(listen_warning);
-      }
-      notice("waiting for CaptureStart on " + result.listen_address + " from " + cfg.vicon_senders.describe());
-    }
-    // The files exist before the devices stream (a name taken or a full disk is said before the
-    // subject is cued), but no row is written before go.
+    notice("waiting for CaptureStart on " + result.listen_address + " from " + cfg.vicon_senders.describe());
+  }
+
+  // The files exist before the devices stream (a name taken or a full disk is said before the
+  // subject is cued), but no row is written before go. Who opens the window: the simulator at its
+  // go, at once for a replay faster than real time, or the countdown below.
+  void prepare_start() {
     if (!listen()) begin_recording();
     sim_decides_go = sim != nullptr && !listen() && !hub.running();
     if (sim_decides_go) {
@@ -424,61 +421,69 @@ struct TrialEngine::TrialInProgress {
       hub.start();
       hub_started_here = true;
     }
+  }
 
-    if (listen()) {
-      set_phase(TrialPhase::kWaitingForVicon, "waiting for Vicon's CaptureStart");
-      while (!recorder) {
-        if (must_end()) return;
-        if (hub.sources_finished()) return;  // nothing more will stream
-        tick();
-      }
+  // Each wait below returns false when the trial must end before recording.
+  bool wait_for_vicon_start() {
+    set_phase(TrialPhase::kWaitingForVicon, "waiting for Vicon's CaptureStart");
+    while (!recorder) {
+      if (must_end()) return false;
+      if (hub.sources_finished()) return false;  // nothing more will stream
+      tick();
     }
+    return true;
+  }
 
+  bool wait_for_streams() {
     set_phase(TrialPhase::kWaitingForStreams, "waiting for every device to stream");
     const double wait_from = wall_s();
     while (!(all_streaming() || hub.sources_finished())) {
-      if (must_end()) return;
+      if (must_end()) return false;
       if (wall_s() - wait_from > cfg.stream_timeout_s) {
         std::ostringstream why;
         why << "not every device of layout '" << hub.layout().name << "' streamed within " << cfg.stream_timeout_s
             << " s";
         fail(why.str());
-        return;
+        return false;
       }
       tick();
     }
+    return true;
+  }
 
-    if (!listen()) {
-      if (sim_decides_go) {
-        // The simulator counts down in its own time and opens the window itself at go.
-        countdown_from = 0;
-        if (cfg.countdown_s > 0) set_phase(TrialPhase::kCountdown, "countdown");
-        while (!went.load()) {
-          if (must_end()) return;
+  bool count_down_to_go() {
+    if (sim_decides_go) {
+      // The simulator counts down in its own time and opens the window itself at go.
+      countdown_from = 0;
+      if (cfg.countdown_s > 0) set_phase(TrialPhase::kCountdown, "countdown");
+      while (!went.load()) {
+        if (must_end()) return false;
+        if (hub.sources_finished()) break;
+        tick();
+      }
+      sim_time_at_start = sim->go_s();
+    } else {
+      if (cfg.countdown_s > 0) {
+        countdown_from = clock_s();
+        set_phase(TrialPhase::kCountdown, "countdown");
+        while (clock_s() - countdown_from < cfg.countdown_s) {
+          if (must_end()) return false;
           if (hub.sources_finished()) break;
           tick();
         }
-        sim_time_at_start = sim->go_s();
-      } else {
-        if (cfg.countdown_s > 0) {
-          countdown_from = clock_s();
-          set_phase(TrialPhase::kCountdown, "countdown");
-          while (clock_s() - countdown_from < cfg.countdown_s) {
-            if (must_end()) return;
-            if (hub.sources_finished()) break;
-            tick();
-          }
-        }
-        if (sim != nullptr) sim_time_at_start = sim->simulated_time_s();
-        open_window(host_now_ns(), true);
       }
-      // Vicon records the same window: CaptureStart leaves at go, CaptureStop at the end.
-      if (vicon) {
-        send_vicon(true);
-        if (must_end()) return;
-      }
+      if (sim != nullptr) sim_time_at_start = sim->simulated_time_s();
+      open_window(host_now_ns(), true);
     }
+    // Vicon records the same window: CaptureStart leaves at go, CaptureStop at the end.
+    if (vicon) {
+      send_vicon(true);
+      if (must_end()) return false;
+    }
+    return true;
+  }
 
+  void record_until_end() {
     recording_from = sim_decides_go ? sim->go_s() : clock_s();
     recording_started = true;
     set_phase(TrialPhase::kRecording, "recording " + trial);
@@ -487,6 +492,21 @@ struct TrialEngine::TrialInProgress {
       if (!sim_decides_length() && clock_s() - recording_from >= cfg.seconds) break;
       tick();
     }
+  }
+
+  void execute() {
+    if (!(cfg.seconds > 0)) throw Error("the trial length must be > 0 s");
+    if (!listen() || !trial.empty()) {
+      require_valid_trial_name(trial);
+      refuse_existing(trial);
+    }
+    if (cfg.vicon) vicon = std::make_unique<ViconTrigger>(*cfg.vicon);
+    if (listen()) start_vicon_listener();
+    prepare_start();
+    if (listen() && !wait_for_vicon_start()) return;
+    if (!wait_for_streams()) return;
+    if (!listen() && !count_down_to_go()) return;
+    record_until_end();
   }
 
   void write_truth() {
