@@ -173,22 +173,17 @@ const char* export_format_extension(ExportFormat format) {
   return format == ExportFormat::kC3d ? ".c3d" : ".trc";
 }
 
-TrialExportReport export_trials(const TrialExportRequest& request) {
-  if (const std::filesystem::path dataset = bids_dataset_root_of(request.out_dir); !dataset.empty()) {
-    throw Error(ErrorLocation(request.out_dir.string()),
-                "lies in the BIDS dataset " + dataset.string() +
-                    " (it holds dataset_description.json): a C3D or TRC file there is not part of the dataset "
-                    "and makes it invalid; choose a folder outside it; nothing was written");
-  }
-  TrialExportReport report;
-  auto say = [&](const std::string& line) {
-    if (request.on_trial) request.on_trial(line);
-  };
-  struct Planned {
-    TrialSources job;
-    fs::path target;
-  };
-  std::vector<Planned> planned;
+namespace {
+
+struct PlannedExport {
+  TrialSources job;
+  fs::path target;
+};
+
+// Every trial of every input with its target file; inputs that cannot be read, unsafe trial names
+// and repeated names are left out with a note.
+std::vector<PlannedExport> plan_trial_exports(const TrialExportRequest& request, TrialExportReport& report) {
+  std::vector<PlannedExport> planned;
   std::set<std::string> names;
   for (const auto& input : request.inputs) {
     std::vector<TrialSources> jobs;
@@ -218,19 +213,66 @@ TrialExportReport export_trials(const TrialExportRequest& request) {
       planned.push_back({job, request.out_dir / (job.trial + export_format_extension(request.format))});
     }
   }
+  return planned;
+}
+
+// Nothing is written when a target exists and the request does not say to replace it.
+void refuse_existing_exports(const std::vector<PlannedExport>& planned, bool force) {
+  if (force) return;
+  std::string existing;
+  for (const auto& p : planned) {
+    if (fs::exists(p.target)) existing += "\n  " + p.target.string();
+  }
+  if (!existing.empty())
+    throw Error("these outputs exist (use --force to replace them); nothing was written:" + existing);
+}
+
+// Processes one trial in full and writes its points; returns the progress line. Throws what
+// processing or writing throws.
+std::string export_one_trial(const PlannedExport& p, const TrialExportRequest& request, TrialExportReport& report) {
+  ProcessedTrial outcome;
+  const TrialAnalysis r = process_sources_in_full(p.job, request.session, &outcome);
+  std::optional<MarkerSeries> markers;
+  if (p.job.vicon && r.has_vicon) markers = load_vicon_markers(*p.job.vicon);
+  PointTable table = trial_point_table(r, markers ? &*markers : nullptr, request.axes);
+  table.trial = p.job.trial;
+  if (table.frame_count() == 0) throw Error("the processed trial has no frames");
+  if (request.format == ExportFormat::kC3d) {
+    save_c3d(p.target, point_table_c3d(table));
+  } else {
+    save_trc(p.target, point_table_trc(table));
+  }
+  report.written.push_back(p.target);
+  report.exported.push_back(p.job.trial);
+  std::string line = "wrote " + p.target.string() + " (" + std::to_string(table.frame_count()) + " frames, " +
+                     std::to_string(table.point_count()) + " points";
+  if (table.has_vicon) {
+    line += ", with Vicon)";
+  } else {
+    line += ", no Vicon)";
+    report.notes.push_back(p.job.trial + ": no Vicon file (" + p.job.trial +
+                           ".trc or .c3d) next to it: fused and controller points only");
+  }
+  return line;
+}
+
+}  // namespace
+
+TrialExportReport export_trials(const TrialExportRequest& request) {
+  if (const std::filesystem::path dataset = bids_dataset_root_of(request.out_dir); !dataset.empty()) {
+    throw Error(ErrorLocation(request.out_dir.string()),
+                "lies in the BIDS dataset " + dataset.string() +
+                    " (it holds dataset_description.json): a C3D or TRC file there is not part of the dataset "
+                    "and makes it invalid; choose a folder outside it; nothing was written");
+  }
+  TrialExportReport report;
+  const std::vector<PlannedExport> planned = plan_trial_exports(request, report);
   if (planned.empty()) {
     std::string why = "no trial to export";
     for (const auto& n : report.notes) why += "\n  " + n;
     throw Error(why);
   }
-  if (!request.force) {
-    std::string existing;
-    for (const auto& p : planned) {
-      if (fs::exists(p.target)) existing += "\n  " + p.target.string();
-    }
-    if (!existing.empty())
-      throw Error("these outputs exist (use --force to replace them); nothing was written:" + existing);
-  }
+  refuse_existing_exports(planned, request.force);
   fs::create_directories(request.out_dir);
   const int total = static_cast<int>(planned.size());
   int done = 0;
@@ -243,30 +285,8 @@ TrialExportReport export_trials(const TrialExportRequest& request) {
     }
     ++done;
     try {
-      ProcessedTrial outcome;
-      const TrialAnalysis r = process_sources_in_full(p.job, request.session, &outcome);
-      std::optional<MarkerSeries> markers;
-      if (p.job.vicon && r.has_vicon) markers = load_vicon_markers(*p.job.vicon);
-      PointTable table = trial_point_table(r, markers ? &*markers : nullptr, request.axes);
-      table.trial = p.job.trial;
-      if (table.frame_count() == 0) throw Error("the processed trial has no frames");
-      if (request.format == ExportFormat::kC3d) {
-        save_c3d(p.target, point_table_c3d(table));
-      } else {
-        save_trc(p.target, point_table_trc(table));
-      }
-      report.written.push_back(p.target);
-      report.exported.push_back(p.job.trial);
-      std::string line = "wrote " + p.target.string() + " (" + std::to_string(table.frame_count()) + " frames, " +
-                         std::to_string(table.point_count()) + " points";
-      if (table.has_vicon) {
-        line += ", with Vicon)";
-      } else {
-        line += ", no Vicon)";
-        report.notes.push_back(p.job.trial + ": no Vicon file (" + p.job.trial +
-                               ".trc or .c3d) next to it: fused and controller points only");
-      }
-      say(line);
+      const std::string line = export_one_trial(p, request, report);
+      if (request.on_trial) request.on_trial(line);
     } catch (const std::exception& e) {
       // Processing's messages already start with the trial's name.
       const std::string what = e.what();
