@@ -112,6 +112,45 @@ void score_best_layout(PsoResult& result, std::span<const PreparedFrame> frames,
       [&] { result.best_terms = layout_robust_terms(result.best_layout, frames, s.weights, s.phalanx_radius_mm); });
 }
 
+// The layout particle `xi` stands for: the start layout with each searched dimension set.
+Layout swarm_layout(const Layout& start, const std::vector<std::pair<int, int>>& dims, const double* xi) {
+  Layout l = start;
+  for (size_t k = 0; k < dims.size(); ++k) {
+    const auto [d, p] = dims[k];
+    l.devices[static_cast<size_t>(d)].pose.set(p, xi[k]);
+  }
+  return l;
+}
+
+// Personal and global bests after an evaluation: strict improvement; ties keep the earlier
+// (lower index) one.
+void update_swarm_bests(Swarm& sw, const std::vector<double>& cost) {
+  const size_t dim = sw.dim;
+  for (size_t i = 0; i < cost.size(); ++i) {
+    if (cost[i] < sw.pbest_cost[i]) {
+      sw.pbest_cost[i] = cost[i];
+      std::copy_n(&sw.x[i * dim], dim, &sw.pbest[i * dim]);
+    }
+    if (cost[i] < sw.gbest_cost) {
+      sw.gbest_cost = cost[i];
+      std::copy_n(&sw.x[i * dim], dim, sw.gbest.begin());
+    }
+  }
+}
+
+// The result's best layout and cost; cancelled before the first evaluation finished, the best
+// known layout is the start.
+void set_best_layout(PsoResult& result, const Swarm& sw, const Layout& start,
+                     const std::vector<std::pair<int, int>>& dims) {
+  if (std::isfinite(sw.gbest_cost)) {
+    result.best_layout = swarm_layout(start, dims, sw.gbest.data());
+    result.best_cost = sw.gbest_cost;
+  } else {
+    result.best_layout = start;
+    result.best_cost = std::numeric_limits<double>::infinity();
+  }
+}
+
 }  // namespace
 
 PsoResult run_pso(const Layout& start, const SearchSpace& space, std::span<const PreparedFrame> frames,
@@ -129,17 +168,6 @@ PsoResult run_pso(const Layout& start, const SearchSpace& space, std::span<const
 
   std::mt19937_64 rng(s.seed);
   Swarm sw = initial_swarm(start, space, dims, s, rng);
-  std::vector<double>&x = sw.x, &pbest = sw.pbest, &gbest = sw.gbest, &pbest_cost = sw.pbest_cost;
-  double& gbest_cost = sw.gbest_cost;
-
-  auto layout_of = [&](const double* xi) {
-    Layout l = start;
-    for (size_t k = 0; k < dim; ++k) {
-      const auto [d, p] = dims[k];
-      l.devices[static_cast<size_t>(d)].pose.set(p, xi[k]);
-    }
-    return l;
-  };
 
   std::unique_ptr<tbb::task_arena> arena;
   arena = std::make_unique<tbb::task_arena>(s.threads > 0 ? s.threads : tbb::this_task_arena::max_concurrency());
@@ -157,35 +185,25 @@ PsoResult run_pso(const Layout& start, const SearchSpace& space, std::span<const
   // Evaluates the whole swarm; false when cancelled.
   auto evaluate = [&]() {
     for (size_t i = 0; i < np; ++i) {
-      const Layout l = layout_of(&x[i * dim]);
+      const Layout l = swarm_layout(start, dims, &sw.x[i * dim]);
       for (size_t d = 0; d < nd; ++d) views[i * nd + d] = DeviceView::from_device(l.devices[d]);
       if (robust) footprint[i] = footprint_overlap_share(l);
     }
-    const bool ok = evaluator.evaluate(views, footprint, pbest_cost, cost, *arena, stop);
+    const bool ok = evaluator.evaluate(views, footprint, sw.pbest_cost, cost, *arena, stop);
     result.device_frame_evaluations = evaluator.device_frame_evaluations();
     result.layouts_stopped_early = evaluator.layouts_stopped_early();
     if (!ok) return false;
     result.layout_evaluations += s.particles;
-    // Personal and global bests: strict improvement; ties keep the earlier (lower index) one.
-    for (size_t i = 0; i < np; ++i) {
-      if (cost[i] < pbest_cost[i]) {
-        pbest_cost[i] = cost[i];
-        std::copy_n(&x[i * dim], dim, &pbest[i * dim]);
-      }
-      if (cost[i] < gbest_cost) {
-        gbest_cost = cost[i];
-        std::copy_n(&x[i * dim], dim, gbest.begin());
-      }
-    }
+    update_swarm_bests(sw, cost);
     return true;
   };
 
   auto report = [&](int iteration) {
-    result.best_cost_history.push_back(gbest_cost);
+    result.best_cost_history.push_back(sw.gbest_cost);
     if (progress) {
-      PsoProgress p{iteration, s.iterations, gbest_cost, result.layout_evaluations, result.device_frame_evaluations,
+      PsoProgress p{iteration, s.iterations, sw.gbest_cost, result.layout_evaluations, result.device_frame_evaluations,
                     {}};
-      if (std::isfinite(gbest_cost)) p.best_layout = layout_of(gbest.data());
+      if (std::isfinite(sw.gbest_cost)) p.best_layout = swarm_layout(start, dims, sw.gbest.data());
       progress(p);
     }
   };
@@ -207,14 +225,7 @@ PsoResult run_pso(const Layout& start, const SearchSpace& space, std::span<const
   }
 
   result.status = cancelled ? JobStatus::kCancelled : JobStatus::kCompleted;
-  if (std::isfinite(gbest_cost)) {
-    result.best_layout = layout_of(gbest.data());
-    result.best_cost = gbest_cost;
-  } else {
-    // Cancelled before the first evaluation finished: the best known layout is the start.
-    result.best_layout = start;
-    result.best_cost = std::numeric_limits<double>::infinity();
-  }
+  set_best_layout(result, sw, start, dims);
   if (!cancelled) score_best_layout(result, frames, s, *arena);
   result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   return result;
