@@ -151,35 +151,89 @@ void print_warnings(std::ostream& out, const std::vector<std::string>& warnings)
   for (const auto& w : warnings) out << "  - " << w << "\n";
 }
 
-void info_recording(const std::string& file, bool as_json, std::ostream& out) {
-  const lmc::LmcRecording rec = lmc::read_lmc_recording(file);
-  const auto devices = summarise_devices(rec);
+// Rows with a hand and the span of the timestamps; the span in double: timestamps of a hostile
+// file may lie far apart (the reader bounds them to ±2^53 µs).
+struct RecordingSpan {
   long hand_rows = 0;
+  double duration_s = std::nan("");
+};
+RecordingSpan recording_span(const lmc::LmcRecording& rec) {
+  RecordingSpan span;
   std::int64_t t_min = 0;
   std::int64_t t_max = 0;
   for (size_t i = 0; i < rec.rows.size(); ++i) {
-    hand_rows += rec.rows[i].hand_present ? 1 : 0;
+    span.hand_rows += rec.rows[i].hand_present ? 1 : 0;
     t_min = i == 0 ? rec.rows[i].timestamp_us : std::min(t_min, rec.rows[i].timestamp_us);
     t_max = i == 0 ? rec.rows[i].timestamp_us : std::max(t_max, rec.rows[i].timestamp_us);
   }
-  // In double: timestamps of a hostile file may lie far apart (the reader bounds them to ±2^53 µs).
-  const double duration_s =
-      rec.rows.size() >= 2 ? (static_cast<double>(t_max) - static_cast<double>(t_min)) * 1e-6 : std::nan("");
-  std::vector<std::string> warnings = rec.warnings;
-  {
-    // The resampler's plausibility rule (ResampleOptions): the recorder writes every controller
-    // frame, so far fewer rows than seconds means a timestamp jumped; say so before `lmc process`
-    // refuses the file.
-    const lmc::ResampleOptions limits;
-    const double plausible_s =
-        limits.min_plausible_span_s + limits.max_seconds_per_row * static_cast<double>(rec.rows.size());
-    if (duration_s > plausible_s) {
-      std::ostringstream w;
-      w << "duration " << duration_s << " s is implausible for " << rec.rows.size() << " rows (at most " << plausible_s
-        << " s expected): a timestamp likely jumps; lmc process will refuse this recording";
-      warnings.push_back(w.str());
+  if (rec.rows.size() >= 2) span.duration_s = (static_cast<double>(t_max) - static_cast<double>(t_min)) * 1e-6;
+  return span;
+}
+
+// The resampler's plausibility rule (ResampleOptions): the recorder writes every controller
+// frame, so far fewer rows than seconds means a timestamp jumped; say so before `lmc process`
+// refuses the file. Empty when the duration is plausible.
+std::string implausible_duration_warning(double duration_s, size_t rows) {
+  const lmc::ResampleOptions limits;
+  const double plausible_s = limits.min_plausible_span_s + limits.max_seconds_per_row * static_cast<double>(rows);
+  if (!(duration_s > plausible_s)) return {};
+  std::ostringstream w;
+  w << "duration " << duration_s << " s is implausible for " << rows << " rows (at most " << plausible_s
+    << " s expected): a timestamp likely jumps; lmc process will refuse this recording";
+  return w.str();
+}
+
+json recording_device_json(const DeviceSummary& d) {
+  json dj;
+  dj["id"] = d.id;
+  dj["rows"] = d.rows;
+  dj["hand_rows"] = d.hand_rows;
+  dj["hand_fraction"] = d.rows > 0 ? static_cast<double>(d.hand_rows) / static_cast<double>(d.rows) : 0.0;
+  dj["duration_s"] = number_or_null(d.duration_s);
+  dj["rate_median_hz"] = number_or_null(d.rate_median_hz);
+  dj["rate_p5_hz"] = number_or_null(d.rate_p5_hz);
+  dj["rate_p95_hz"] = number_or_null(d.rate_p95_hz);
+  dj["reported_rate_median_hz"] = number_or_null(d.reported_rate_median_hz);
+  if (d.visibility_fraction) {
+    json v;
+    for (int f = 0; f < lmc::kNumDigits; ++f) {
+      v[std::string(lmc::digit_name(f))] = (*d.visibility_fraction)[static_cast<size_t>(f)];
     }
+    dj["visibility_fraction"] = v;
   }
+  return dj;
+}
+
+// The per-device table of the text form; ray-traced recordings add each finger's visible share.
+void print_recording_devices(std::ostream& out, const std::vector<DeviceSummary>& devices, bool vis) {
+  out << std::left << std::setw(8) << "device" << std::right << std::setw(7) << "rows" << std::setw(7) << "hand"
+      << std::setw(8) << "hand%" << std::setw(12) << "duration_s" << std::setw(13) << "rate_med_hz" << std::setw(12)
+      << "rate_p5_hz" << std::setw(13) << "rate_p95_hz" << std::setw(14) << "reported_hz";
+  if (vis) out << "  visible% thumb/index/middle/ring/pinky";
+  out << "\n";
+  for (const auto& d : devices) {
+    const double pct = d.rows > 0 ? 100.0 * static_cast<double>(d.hand_rows) / static_cast<double>(d.rows) : 0.0;
+    out << std::left << std::setw(8) << d.id << std::right << std::setw(7) << d.rows << std::setw(7) << d.hand_rows
+        << std::setw(8) << fixed(pct, 1) << std::setw(12) << fixed(d.duration_s, 3) << std::setw(13)
+        << fixed(d.rate_median_hz, 2) << std::setw(12) << fixed(d.rate_p5_hz, 2) << std::setw(13)
+        << fixed(d.rate_p95_hz, 2) << std::setw(14) << fixed(d.reported_rate_median_hz, 2);
+    if (vis && d.visibility_fraction) {
+      out << "  ";
+      for (int f = 0; f < lmc::kNumDigits; ++f) {
+        out << (f ? "/" : "") << fixed(100.0 * (*d.visibility_fraction)[static_cast<size_t>(f)], 0);
+      }
+    }
+    out << "\n";
+  }
+}
+
+void info_recording(const std::string& file, bool as_json, std::ostream& out) {
+  const lmc::LmcRecording rec = lmc::read_lmc_recording(file);
+  const auto devices = summarise_devices(rec);
+  const RecordingSpan span = recording_span(rec);
+  std::vector<std::string> warnings = rec.warnings;
+  if (std::string w = implausible_duration_warning(span.duration_s, rec.rows.size()); !w.empty())
+    warnings.push_back(std::move(w));
 
   if (as_json) {
     json j;
@@ -187,31 +241,12 @@ void info_recording(const std::string& file, bool as_json, std::ostream& out) {
     j["type"] = "recording";
     j["variant"] = variant_name(rec.kind);
     j["rows"] = rec.rows.size();
-    j["hand_rows"] = hand_rows;
+    j["hand_rows"] = span.hand_rows;
     j["device_count"] = devices.size();
     j["device_ids"] = rec.device_ids();
-    j["duration_s"] = number_or_null(duration_s);
+    j["duration_s"] = number_or_null(span.duration_s);
     j["devices"] = json::array();
-    for (const auto& d : devices) {
-      json dj;
-      dj["id"] = d.id;
-      dj["rows"] = d.rows;
-      dj["hand_rows"] = d.hand_rows;
-      dj["hand_fraction"] = d.rows > 0 ? static_cast<double>(d.hand_rows) / static_cast<double>(d.rows) : 0.0;
-      dj["duration_s"] = number_or_null(d.duration_s);
-      dj["rate_median_hz"] = number_or_null(d.rate_median_hz);
-      dj["rate_p5_hz"] = number_or_null(d.rate_p5_hz);
-      dj["rate_p95_hz"] = number_or_null(d.rate_p95_hz);
-      dj["reported_rate_median_hz"] = number_or_null(d.reported_rate_median_hz);
-      if (d.visibility_fraction) {
-        json v;
-        for (int f = 0; f < lmc::kNumDigits; ++f) {
-          v[std::string(lmc::digit_name(f))] = (*d.visibility_fraction)[static_cast<size_t>(f)];
-        }
-        dj["visibility_fraction"] = v;
-      }
-      j["devices"].push_back(dj);
-    }
+    for (const auto& d : devices) j["devices"].push_back(recording_device_json(d));
     j["warnings"] = warnings;
     out << j.dump(2) << "\n";
     return;
@@ -219,7 +254,7 @@ void info_recording(const std::string& file, bool as_json, std::ostream& out) {
 
   out << "file:       " << file << "\n";
   out << "type:       LMC recording (" << variant_name(rec.kind) << ")\n";
-  out << "rows:       " << rec.rows.size() << " (" << hand_rows << " with a hand)\n";
+  out << "rows:       " << rec.rows.size() << " (" << span.hand_rows << " with a hand)\n";
   out << "devices:    " << devices.size();
   if (!devices.empty()) {
     out << " (";
@@ -227,29 +262,10 @@ void info_recording(const std::string& file, bool as_json, std::ostream& out) {
     out << ")";
   }
   out << "\n";
-  out << "duration:   " << fixed(duration_s, 3) << " s\n";
+  out << "duration:   " << fixed(span.duration_s, 3) << " s\n";
   if (!devices.empty()) {
     out << "\n";
-    const bool vis = rec.kind == lmc::RecordingKind::kRaytraced;
-    out << std::left << std::setw(8) << "device" << std::right << std::setw(7) << "rows" << std::setw(7) << "hand"
-        << std::setw(8) << "hand%" << std::setw(12) << "duration_s" << std::setw(13) << "rate_med_hz" << std::setw(12)
-        << "rate_p5_hz" << std::setw(13) << "rate_p95_hz" << std::setw(14) << "reported_hz";
-    if (vis) out << "  visible% thumb/index/middle/ring/pinky";
-    out << "\n";
-    for (const auto& d : devices) {
-      const double pct = d.rows > 0 ? 100.0 * static_cast<double>(d.hand_rows) / static_cast<double>(d.rows) : 0.0;
-      out << std::left << std::setw(8) << d.id << std::right << std::setw(7) << d.rows << std::setw(7) << d.hand_rows
-          << std::setw(8) << fixed(pct, 1) << std::setw(12) << fixed(d.duration_s, 3) << std::setw(13)
-          << fixed(d.rate_median_hz, 2) << std::setw(12) << fixed(d.rate_p5_hz, 2) << std::setw(13)
-          << fixed(d.rate_p95_hz, 2) << std::setw(14) << fixed(d.reported_rate_median_hz, 2);
-      if (vis && d.visibility_fraction) {
-        out << "  ";
-        for (int f = 0; f < lmc::kNumDigits; ++f) {
-          out << (f ? "/" : "") << fixed(100.0 * (*d.visibility_fraction)[static_cast<size_t>(f)], 0);
-        }
-      }
-      out << "\n";
-    }
+    print_recording_devices(out, devices, rec.kind == lmc::RecordingKind::kRaytraced);
     out << "\n";
   }
   print_warnings(out, warnings);
