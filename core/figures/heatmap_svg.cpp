@@ -213,6 +213,67 @@ Geometry lay_out(const Heatmap& h, int w, int hgt, double top, double bar_guess)
   return g;
 }
 
+// Panel p's cells from `y` down, each with its value when it fits, and the lines between groups.
+void draw_panel_cells(std::string& out, const Heatmap& h, const Geometry& geo, size_t p, double y,
+                      const std::vector<GroupRun>& runs) {
+  const double cells_x = geo.cells_x, cell_w = geo.cell_w, cell_h = geo.cell_h;
+  const size_t rows = std::max<size_t>(1, h.rows.size());
+  out += "<g class=\"panel\">\n";
+  for (size_t r = 0; r < h.rows.size(); ++r) {
+    const double cy = y + static_cast<double>(r) * cell_h;
+    classed_text(out, "row-label", cells_x - kPad, cy + cell_h / 2 + kFont * 0.35, h.rows[r], "end");
+    for (size_t c = 0; c < h.columns.size(); ++c) {
+      const double cx = cells_x + static_cast<double>(c) * cell_w;
+      const double v = h.at(p, r, c);
+      const bool missing = std::isnan(v);
+      const Rgb fill = sequential_colour(missing ? 0.0 : v);
+      out += "<rect class=\"" + std::string(missing ? "cell no-data" : "cell") + "\" x=\"" + num(cx) + "\" y=\"" +
+             num(cy) + "\" width=\"" + num(cell_w) + "\" height=\"" + num(cell_h) + "\" fill=\"" +
+             (missing ? "url(#" + std::string(kHatchId) + ")" : hex(fill)) + "\" stroke=\"" + hex(kCellBorder) +
+             "\" stroke-width=\"1\"/>\n";
+      const std::string s = missing ? std::string() : value_text(v, h.value_text);
+      if (!s.empty() && text_width(s) <= cell_w - 4 && cell_h >= kFont + 2)
+        classed_text(out, "cell-value", cx + cell_w / 2, cy + cell_h / 2 + kFont * 0.35, s, "middle",
+                     std::string(" fill=\"") + (wants_light_text(fill) ? "#ffffff" : "#000000") + "\"");
+    }
+  }
+  // A dark line between column groups, so "palm down" and "palm left" read as two blocks.
+  for (size_t g = 1; g < runs.size(); ++g) {
+    const double gx = cells_x + static_cast<double>(runs[g].first) * cell_w;
+    out += "<line class=\"group-separator\" x1=\"" + num(gx) + "\" y1=\"" + num(y) + "\" x2=\"" + num(gx) + "\" y2=\"" +
+           num(y + static_cast<double>(rows) * cell_h) + "\" stroke=\"#000000\" stroke-width=\"2\"/>\n";
+  }
+  out += "</g>\n";
+}
+
+// The column labels under the bottom panel from `y` down, then a bracket under each run of
+// columns with its name; returns the y under them.
+double draw_column_labels(std::string& out, const Heatmap& h, const Geometry& geo, const std::vector<GroupRun>& runs,
+                          double y) {
+  const double cells_x = geo.cells_x, cell_w = geo.cell_w;
+  for (size_t c = 0; c < h.columns.size(); ++c) {
+    const double cx = cells_x + (static_cast<double>(c) + 0.5) * cell_w;
+    if (geo.labels.upright) {
+      out += "<text class=\"column-label\" x=\"0\" y=\"0\" transform=\"translate(" + num(cx + kFont * 0.35) + "," +
+             num(y) + ") rotate(-90)\" text-anchor=\"end\">" + xml_escape(h.columns[c]) + "</text>\n";
+    } else {
+      const auto& lines = geo.labels.lines[c];
+      for (size_t i = 0; i < lines.size(); ++i)
+        classed_text(out, "column-label", cx, y + kFont + static_cast<double>(i) * (kFont + 3), lines[i], "middle");
+    }
+  }
+  y += geo.labels.height + 4;
+  for (const GroupRun& g : runs) {
+    const double x0 = cells_x + static_cast<double>(g.first) * cell_w + 4;
+    const double x1 = cells_x + static_cast<double>(g.last + 1) * cell_w - 4;
+    out += "<path class=\"group-bracket\" d=\"M" + num(x0) + "," + num(y - 4) + " L" + num(x0) + "," + num(y) + " L" +
+           num(x1) + "," + num(y) + " L" + num(x1) + "," + num(y - 4) +
+           "\" fill=\"none\" stroke=\"#000000\" stroke-width=\"1\"/>\n";
+    classed_text(out, "column-group", (x0 + x1) / 2, y + kFont + 3, g.name, "middle", " font-weight=\"bold\"");
+  }
+  return y + geo.groups_h;
+}
+
 }  // namespace heatmap_svg
 
 std::string to_svg(const Heatmap& h, int width_px, int height_px) {
@@ -227,12 +288,9 @@ std::string to_svg(const Heatmap& h, int width_px, int height_px) {
   const double top = svg::title_band(out, w, h.title);
   const Geometry first = lay_out(h, w, hgt, top, 0.6 * hgt);
   const Geometry geo = lay_out(h, w, hgt, top, first.bar_h);
-  const double cells_x = geo.cells_x, cells_w = geo.cells_w, cell_w = geo.cell_w, cell_h = geo.cell_h;
-  const double panel_title_h = geo.panel_title_h, groups_h = geo.groups_h;
-  const double column_title_h = geo.column_title_h, notes_h = geo.notes_h;
-  const ColumnLabels& labels = geo.labels;
+  const double cells_x = geo.cells_x, cells_w = geo.cells_w, cell_h = geo.cell_h;
   const auto runs = group_runs(h);
-  const bool titled = panel_title_h > 0;
+  const bool titled = geo.panel_title_h > 0;
 
   double y = top;
   double first_cells_top = 0, last_cells_bottom = 0;
@@ -240,67 +298,19 @@ std::string to_svg(const Heatmap& h, int width_px, int height_px) {
     const std::string ptitle = p < h.panels.size() ? h.panels[p].title : std::string();
     if (titled) {
       text(out, cells_x, y + kPanelFont, ptitle, "start", kPanelFont, " font-weight=\"bold\"");
-      y += panel_title_h;
+      y += geo.panel_title_h;
     }
     if (p == 0) first_cells_top = y;
-    out += "<g class=\"panel\">\n";
-    for (size_t r = 0; r < h.rows.size(); ++r) {
-      const double cy = y + static_cast<double>(r) * cell_h;
-      classed_text(out, "row-label", cells_x - kPad, cy + cell_h / 2 + kFont * 0.35, h.rows[r], "end");
-      for (size_t c = 0; c < h.columns.size(); ++c) {
-        const double cx = cells_x + static_cast<double>(c) * cell_w;
-        const double v = h.at(p, r, c);
-        const bool missing = std::isnan(v);
-        const Rgb fill = sequential_colour(missing ? 0.0 : v);
-        out += "<rect class=\"" + std::string(missing ? "cell no-data" : "cell") + "\" x=\"" + num(cx) + "\" y=\"" +
-               num(cy) + "\" width=\"" + num(cell_w) + "\" height=\"" + num(cell_h) + "\" fill=\"" +
-               (missing ? "url(#" + std::string(kHatchId) + ")" : hex(fill)) + "\" stroke=\"" + hex(kCellBorder) +
-               "\" stroke-width=\"1\"/>\n";
-        const std::string s = missing ? std::string() : value_text(v, h.value_text);
-        if (!s.empty() && text_width(s) <= cell_w - 4 && cell_h >= kFont + 2)
-          classed_text(out, "cell-value", cx + cell_w / 2, cy + cell_h / 2 + kFont * 0.35, s, "middle",
-                       std::string(" fill=\"") + (wants_light_text(fill) ? "#ffffff" : "#000000") + "\"");
-      }
-    }
-    // A dark line between column groups, so "palm down" and "palm left" read as two blocks.
-    for (size_t g = 1; g < runs.size(); ++g) {
-      const double gx = cells_x + static_cast<double>(runs[g].first) * cell_w;
-      out += "<line class=\"group-separator\" x1=\"" + num(gx) + "\" y1=\"" + num(y) + "\" x2=\"" + num(gx) +
-             "\" y2=\"" + num(y + static_cast<double>(rows) * cell_h) + "\" stroke=\"#000000\" stroke-width=\"2\"/>\n";
-    }
-    out += "</g>\n";
+    draw_panel_cells(out, h, geo, p, y, runs);
     y += static_cast<double>(rows) * cell_h;
     last_cells_bottom = y;
     if (p + 1 < panels) y += kPanelGap;
   }
 
-  // Column labels under the bottom panel.
-  y = last_cells_bottom + kPad;
-  for (size_t c = 0; c < h.columns.size(); ++c) {
-    const double cx = cells_x + (static_cast<double>(c) + 0.5) * cell_w;
-    if (labels.upright) {
-      out += "<text class=\"column-label\" x=\"0\" y=\"0\" transform=\"translate(" + num(cx + kFont * 0.35) + "," +
-             num(y) + ") rotate(-90)\" text-anchor=\"end\">" + xml_escape(h.columns[c]) + "</text>\n";
-    } else {
-      const auto& lines = labels.lines[c];
-      for (size_t i = 0; i < lines.size(); ++i)
-        classed_text(out, "column-label", cx, y + kFont + static_cast<double>(i) * (kFont + 3), lines[i], "middle");
-    }
-  }
-  y += labels.height + 4;
-  // Group headers: a bracket under each run of columns and its name.
-  for (const GroupRun& g : runs) {
-    const double x0 = cells_x + static_cast<double>(g.first) * cell_w + 4;
-    const double x1 = cells_x + static_cast<double>(g.last + 1) * cell_w - 4;
-    out += "<path class=\"group-bracket\" d=\"M" + num(x0) + "," + num(y - 4) + " L" + num(x0) + "," + num(y) + " L" +
-           num(x1) + "," + num(y) + " L" + num(x1) + "," + num(y - 4) +
-           "\" fill=\"none\" stroke=\"#000000\" stroke-width=\"1\"/>\n";
-    classed_text(out, "column-group", (x0 + x1) / 2, y + kFont + 3, g.name, "middle", " font-weight=\"bold\"");
-  }
-  y += groups_h;
+  y = draw_column_labels(out, h, geo, runs, last_cells_bottom + kPad);
   if (!h.column_title.empty()) {
     text(out, cells_x + cells_w / 2, y + kFont + 2, h.column_title, "middle");
-    y += column_title_h;
+    y += geo.column_title_h;
   }
   if (!h.row_title.empty()) {
     const double cx = 10 + kFont, cy = (first_cells_top + last_cells_bottom) / 2;
@@ -311,7 +321,7 @@ std::string to_svg(const Heatmap& h, int width_px, int height_px) {
   legend(out, h, geo.legend, cells_x + cells_w + 16, first_cells_top, last_cells_bottom);
 
   for (size_t i = 0; i < h.notes.size(); ++i)
-    text(out, 10, hgt - notes_h + static_cast<double>(i) * kLineHeight + kFont, h.notes[i], "start", kFont,
+    text(out, 10, hgt - geo.notes_h + static_cast<double>(i) * kLineHeight + kFont, h.notes[i], "start", kFont,
          " fill=\"#333333\"");
   out += "</svg>\n";
   return out;
