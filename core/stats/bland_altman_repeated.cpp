@@ -30,17 +30,10 @@ VarianceTerm chi_squared_term(double coef, double ms, double df) {
   return t;
 }
 
-}  // namespace
-
-BlandAltmanResult bland_altman_repeated(std::span<const PairedObservation> observations) {
-  BlandAltmanResult r;
-  r.method =
-      "Bland & Altman 2007 repeated measures (true value varies); bias CI t(n-1) on variance "
-      "components; "
-      "limit CIs by MOVER (Zou 2013)";
-  r.loa_multiplier = normal_quantile(0.975);
-
-  // Differences per subject; groups are in order of first appearance, the map only finds them.
+// Differences per subject; groups are in order of first appearance, the map only finds them.
+// Counts the used and skipped pairs into `r`.
+std::vector<std::vector<double>> differences_by_subject(std::span<const PairedObservation> observations,
+                                                        BlandAltmanResult& r) {
   std::map<std::string, std::size_t> index;
   std::vector<std::vector<double>> groups;
   for (const PairedObservation& o : observations) {
@@ -53,67 +46,66 @@ BlandAltmanResult bland_altman_repeated(std::span<const PairedObservation> obser
     groups[it->second].push_back(o.a - o.b);
     ++r.n_used;
   }
-  r.n_subjects = groups.size();
-  if (groups.size() == 1) {
-    // One subject: the bias (the mean difference over its trials) and the spread between its
-    // trials need no second subject; the limits and every CI do, since subjects are the unit of
-    // replication and one subject says nothing about how the bias varies between subjects.
-    double sum = 0.0;
-    for (const double d : groups[0]) sum += d;
-    r.bias = sum / static_cast<double>(r.n_used);
-    if (r.n_used >= 2) {
-      double ss = 0.0;
-      for (const double d : groups[0]) ss += (d - r.bias) * (d - r.bias);
-      r.within_subject_sd = std::sqrt(ss / static_cast<double>(r.n_used - 1));
-    }
-    r.reason = "the limits of agreement and the CIs need at least 2 subjects with complete pairs (1 subject, " +
-               std::to_string(r.n_used) + " pairs usable); the bias is the mean difference over its trials";
-    return r;
-  }
-  if (r.n_used < 2 || groups.size() < 2) {
-    r.reason = "needs at least 2 subjects with complete pairs (" + std::to_string(groups.size()) + " subjects, " +
-               std::to_string(r.n_used) + " pairs usable)";
-    return r;
-  }
+  return groups;
+}
 
-  const auto n = static_cast<double>(groups.size());
-  const auto N = static_cast<double>(r.n_used);
-  double sum = 0.0, sum_m2 = 0.0;
+// One subject: the bias (the mean difference over its trials) and the spread between its
+// trials need no second subject; the limits and every CI do, since subjects are the unit of
+// replication and one subject says nothing about how the bias varies between subjects.
+void describe_one_subject(const std::vector<double>& differences, BlandAltmanResult& r) {
+  double sum = 0.0;
+  for (const double d : differences) sum += d;
+  r.bias = sum / static_cast<double>(r.n_used);
+  if (r.n_used >= 2) {
+    double ss = 0.0;
+    for (const double d : differences) ss += (d - r.bias) * (d - r.bias);
+    r.within_subject_sd = std::sqrt(ss / static_cast<double>(r.n_used - 1));
+  }
+  r.reason = "the limits of agreement and the CIs need at least 2 subjects with complete pairs (1 subject, " +
+             std::to_string(r.n_used) + " pairs usable); the bias is the mean difference over its trials";
+}
+
+// The one-way analysis of variance of the differences by subject (unequal group sizes).
+struct RepeatedAnova {
+  double n = 0, N = 0;  // subjects, observations
+  double sum_m2 = 0;    // Σ m_i², m_i the observations of subject i
+  double bias = 0;      // the mean of every difference
+  double df_between = 0, df_within = 0, ms_between = 0, ms_within = 0;
+  double c = 0;  // the divisor of the between-subject variance component
+};
+
+RepeatedAnova repeated_anova(const std::vector<std::vector<double>>& groups, std::size_t n_used) {
+  RepeatedAnova a;
+  a.n = static_cast<double>(groups.size());
+  a.N = static_cast<double>(n_used);
+  double sum = 0.0;
   for (const auto& g : groups) {
     for (const double d : g) sum += d;
-    sum_m2 += static_cast<double>(g.size()) * static_cast<double>(g.size());
+    a.sum_m2 += static_cast<double>(g.size()) * static_cast<double>(g.size());
   }
-  r.bias = sum / N;
+  a.bias = sum / a.N;
   double ss_between = 0.0, ss_within = 0.0;
   for (const auto& g : groups) {
     double gsum = 0.0;
     for (const double d : g) gsum += d;
     const double gmean = gsum / static_cast<double>(g.size());
-    ss_between += static_cast<double>(g.size()) * (gmean - r.bias) * (gmean - r.bias);
+    ss_between += static_cast<double>(g.size()) * (gmean - a.bias) * (gmean - a.bias);
     for (const double d : g) ss_within += (d - gmean) * (d - gmean);
   }
-  const double df_between = n - 1.0;
-  const double df_within = N - n;  // 0 when every subject has one observation
-  const double ms_between = ss_between / df_between;
-  const double ms_within = df_within > 0.0 ? ss_within / df_within : 0.0;
-  const double c = (N * N - sum_m2) / (df_between * N);
+  a.df_between = a.n - 1.0;
+  a.df_within = a.N - a.n;  // 0 when every subject has one observation
+  a.ms_between = ss_between / a.df_between;
+  a.ms_within = a.df_within > 0.0 ? ss_within / a.df_within : 0.0;
+  a.c = (a.N * a.N - a.sum_m2) / (a.df_between * a.N);
+  return a;
+}
 
-  const double var_within = ms_within;
-  const double var_between = std::max(0.0, (ms_between - ms_within) / c);
-  const double var_total = var_between + var_within;
-  r.within_subject_sd = std::sqrt(var_within);
-  r.between_subject_sd = std::sqrt(var_between);
-  r.sd_difference = std::sqrt(var_total);
-  r.loa_low = r.bias - r.loa_multiplier * r.sd_difference;
-  r.loa_high = r.bias + r.loa_multiplier * r.sd_difference;
-
-  const double t = t_quantile(0.975, df_between);
-  const double se_bias = std::sqrt(var_between * sum_m2 / (N * N) + var_within / N);
-  r.bias_ci = {r.bias - t * se_bias, r.bias + t * se_bias};
-
-  // MOVER for SD² = MS_between/c + (1 − 1/c)·MS_within (the untruncated estimate).
-  const VarianceTerm tb = chi_squared_term(1.0 / c, ms_between, df_between);
-  const VarianceTerm tw = chi_squared_term(1.0 - 1.0 / c, ms_within, df_within);
+// The limits' CIs by MOVER for SD² = MS_between/c + (1 − 1/c)·MS_within (the untruncated
+// estimate), combined with the bias CI already in `r`.
+void mover_limit_cis(const RepeatedAnova& a, double var_total, BlandAltmanResult& r) {
+  const double c = a.c;
+  const VarianceTerm tb = chi_squared_term(1.0 / c, a.ms_between, a.df_between);
+  const VarianceTerm tw = chi_squared_term(1.0 - 1.0 / c, a.ms_within, a.df_within);
   const double var_sum = tb.value + tw.value;
   double var_low = var_sum - std::hypot(tb.value - tb.low, tw.value - tw.low);
   double var_high = var_sum + std::hypot(tb.high - tb.value, tw.high - tw.value);
@@ -130,6 +122,45 @@ BlandAltmanResult bland_altman_repeated(std::span<const PairedObservation> obser
   r.loa_high_ci = {r.loa_high - std::hypot(bias_down, zs - zs_low), r.loa_high + std::hypot(bias_up, zs_high - zs)};
   // Lower limit = bias − zσ: a larger σ moves it down.
   r.loa_low_ci = {r.loa_low - std::hypot(bias_down, zs_high - zs), r.loa_low + std::hypot(bias_up, zs - zs_low)};
+}
+
+}  // namespace
+
+BlandAltmanResult bland_altman_repeated(std::span<const PairedObservation> observations) {
+  BlandAltmanResult r;
+  r.method =
+      "Bland & Altman 2007 repeated measures (true value varies); bias CI t(n-1) on variance "
+      "components; "
+      "limit CIs by MOVER (Zou 2013)";
+  r.loa_multiplier = normal_quantile(0.975);
+
+  const std::vector<std::vector<double>> groups = differences_by_subject(observations, r);
+  r.n_subjects = groups.size();
+  if (groups.size() == 1) {
+    describe_one_subject(groups[0], r);
+    return r;
+  }
+  if (r.n_used < 2 || groups.size() < 2) {
+    r.reason = "needs at least 2 subjects with complete pairs (" + std::to_string(groups.size()) + " subjects, " +
+               std::to_string(r.n_used) + " pairs usable)";
+    return r;
+  }
+
+  const RepeatedAnova a = repeated_anova(groups, r.n_used);
+  r.bias = a.bias;
+  const double var_within = a.ms_within;
+  const double var_between = std::max(0.0, (a.ms_between - a.ms_within) / a.c);
+  const double var_total = var_between + var_within;
+  r.within_subject_sd = std::sqrt(var_within);
+  r.between_subject_sd = std::sqrt(var_between);
+  r.sd_difference = std::sqrt(var_total);
+  r.loa_low = r.bias - r.loa_multiplier * r.sd_difference;
+  r.loa_high = r.bias + r.loa_multiplier * r.sd_difference;
+
+  const double t = t_quantile(0.975, a.df_between);
+  const double se_bias = std::sqrt(var_between * a.sum_m2 / (a.N * a.N) + var_within / a.N);
+  r.bias_ci = {r.bias - t * se_bias, r.bias + t * se_bias};
+  mover_limit_cis(a, var_total, r);
   return r;
 }
 
