@@ -264,11 +264,11 @@ std::string recorded_pose_source_name(const RecordedPoseOptions& options) {
   return {};
 }
 
-RecordedPoseSet pose_set_from_recordings(const std::vector<fs::path>& inputs, const RecordedPoseOptions& options,
-                                         std::stop_token stop, const std::function<void(int, int)>& on_progress) {
-  if (inputs.empty()) throw Error("no recordings given");
-  if (options.every < 1) throw Error(ErrorLocation("--every"), "must be 1 or more");
-  std::vector<std::string> notes;
+namespace {
+
+// The trials of every input that the --trials pattern keeps; throws, with the notes, when none.
+std::vector<TrialInput> collect_pose_trials(const std::vector<fs::path>& inputs, const RecordedPoseOptions& options,
+                                            std::vector<std::string>& notes) {
   std::vector<TrialInput> trials;
   for (const auto& input : inputs) {
     auto found = options.source == RecordedPoseSource::kFused ? fused_inputs(input, options, notes)
@@ -284,28 +284,12 @@ RecordedPoseSet pose_set_from_recordings(const std::vector<fs::path>& inputs, co
     for (const auto& n : notes) why += "\n  " + n;
     throw Error(ErrorLocation(inputs.front().string()), why);
   }
-  std::optional<ViconMapping> mapping;
-  if (options.source == RecordedPoseSource::kVicon)
-    mapping = options.mapping ? load_vicon_mapping(*options.mapping) : default_vicon_mapping();
+  return trials;
+}
 
-  std::vector<TrialFrames> read(trials.size());
-  std::vector<char> done_flag(trials.size(), 0);
-  std::atomic<int> done{0};
-  const int total = static_cast<int>(trials.size());
-  tbb::parallel_for(size_t{0}, trials.size(), [&](size_t i) {
-    if (stop.stop_requested()) return;
-    read[i] = read_trial(trials[i], options, mapping ? &*mapping : nullptr);
-    done_flag[i] = 1;
-    const int d = ++done;
-    if (on_progress) on_progress(d, total);
-  });
-
-  RecordedPoseSet out;
-  out.skipped = notes;
-  int processed_now = 0;
-  for (size_t i = 0; i < trials.size(); ++i)
-    processed_now += done_flag[i] && trials[i].process_now && read[i].skipped.empty();
-  out.cancelled = stop.stop_requested();
+// The frames of the trials read (in the inputs' order), each labelled with its trial's pose;
+// trials that gave nothing are listed as skipped.
+void append_read_trials(std::vector<TrialFrames>& read, const std::vector<char>& done_flag, RecordedPoseSet& out) {
   size_t frames = 0;
   for (const auto& r : read) frames += r.frames.size();
   out.set.frames.reserve(frames);
@@ -326,11 +310,11 @@ RecordedPoseSet pose_set_from_recordings(const std::vector<fs::path>& inputs, co
     out.frames_skipped += r.count.frames_skipped;
     out.trials.push_back(r.count);
   }
-  if (out.set.frames.empty() && !out.cancelled) {
-    std::string why = "no trial gave a frame with a complete hand:";
-    for (const auto& s : out.skipped) why += "\n  " + s;
-    throw Error(ErrorLocation(inputs.front().string()), why);
-  }
+}
+
+// The set's description and provenance lines: source, inputs, trials, frames, what was left out.
+void describe_recorded_pose_set(RecordedPoseSet& out, const std::vector<fs::path>& inputs,
+                                const RecordedPoseOptions& options, int processed_now) {
   // Many inputs (the Review tab passes each trial's file): the first and a count.
   std::string where = inputs.front().string();
   if (inputs.size() == 2) where += ", " + inputs[1].string();
@@ -358,6 +342,45 @@ RecordedPoseSet pose_set_from_recordings(const std::vector<fs::path>& inputs, co
   if (!out.skipped.empty())
     out.set.provenance.push_back("trials left out: " + std::to_string(out.skipped.size()) +
                                  " (see the command's messages)");
+}
+
+}  // namespace
+
+RecordedPoseSet pose_set_from_recordings(const std::vector<fs::path>& inputs, const RecordedPoseOptions& options,
+                                         std::stop_token stop, const std::function<void(int, int)>& on_progress) {
+  if (inputs.empty()) throw Error("no recordings given");
+  if (options.every < 1) throw Error(ErrorLocation("--every"), "must be 1 or more");
+  std::vector<std::string> notes;
+  const std::vector<TrialInput> trials = collect_pose_trials(inputs, options, notes);
+  std::optional<ViconMapping> mapping;
+  if (options.source == RecordedPoseSource::kVicon)
+    mapping = options.mapping ? load_vicon_mapping(*options.mapping) : default_vicon_mapping();
+
+  std::vector<TrialFrames> read(trials.size());
+  std::vector<char> done_flag(trials.size(), 0);
+  std::atomic<int> done{0};
+  const int total = static_cast<int>(trials.size());
+  tbb::parallel_for(size_t{0}, trials.size(), [&](size_t i) {
+    if (stop.stop_requested()) return;
+    read[i] = read_trial(trials[i], options, mapping ? &*mapping : nullptr);
+    done_flag[i] = 1;
+    const int d = ++done;
+    if (on_progress) on_progress(d, total);
+  });
+
+  RecordedPoseSet out;
+  out.skipped = notes;
+  int processed_now = 0;
+  for (size_t i = 0; i < trials.size(); ++i)
+    processed_now += done_flag[i] && trials[i].process_now && read[i].skipped.empty();
+  out.cancelled = stop.stop_requested();
+  append_read_trials(read, done_flag, out);
+  if (out.set.frames.empty() && !out.cancelled) {
+    std::string why = "no trial gave a frame with a complete hand:";
+    for (const auto& s : out.skipped) why += "\n  " + s;
+    throw Error(ErrorLocation(inputs.front().string()), why);
+  }
+  describe_recorded_pose_set(out, inputs, options, processed_now);
   return out;
 }
 
