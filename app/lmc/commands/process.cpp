@@ -35,9 +35,9 @@ struct ProcessArgs {
   bool quiet = false;
 };
 
-void run_process(const ProcessArgs& a) {
-  const auto t0 = std::chrono::steady_clock::now();
-  lmc::devices::keep_freed_memory_for_reuse();
+// The batch's settings from the command line; a length correction is read (and named on
+// stdout) here, before any trial runs.
+lmc::BatchOptions batch_options_from_args(const ProcessArgs& a) {
   lmc::BatchOptions options;
   options.process.method = lmc::fusion_method_from_name(a.method);
   if (!a.length_correction.empty()) {
@@ -60,6 +60,28 @@ void run_process(const ProcessArgs& a) {
   if (!a.layout.empty()) options.layout = a.layout;
   if (!a.mapping.empty()) options.mapping = a.mapping;
   options.compare_methods = a.compare_methods;
+  return options;
+}
+
+// A processed trial's line: frames, layout, Vicon and a clear wrist lag, then its warnings.
+void print_processed_trial(const lmc::ProcessedTrial& o) {
+  std::cout << "ok      " << o.trial << "  (" << o.summary["frames"].get<int>() << " frames, layout " << o.layout_used
+            << (o.has_vicon ? ", with Vicon" : ", no Vicon");
+  if (o.summary.contains("comparison")) {
+    const auto& lag = o.summary["comparison"]["lag"];
+    if (lag.value("clear", false) && lag.value("frames", 0) != 0) {
+      std::cout << ", wrist lag " << lag["frames"].get<int>()
+                << " frame(s) (r = " << lmc::format_fixed(lag["correlation"].get<double>(), 2) << ")";
+    }
+  }
+  std::cout << ")\n";
+  for (const auto& w : o.warnings) std::cout << "        warning: " << w << "\n";
+}
+
+void run_process(const ProcessArgs& a) {
+  const auto t0 = std::chrono::steady_clock::now();
+  lmc::devices::keep_freed_memory_for_reuse();
+  const lmc::BatchOptions options = batch_options_from_args(a);
 
   std::vector<std::string> notes;
   const std::optional<std::filesystem::path> vicon =
@@ -88,19 +110,7 @@ void run_process(const ProcessArgs& a) {
       t["summary_file"] = o.trial + ".summary.json";
       t["layout"] = o.layout_used;
       t["warnings"] = o.warnings;
-      if (!a.quiet) {
-        std::cout << "ok      " << o.trial << "  (" << o.summary["frames"].get<int>() << " frames, layout "
-                  << o.layout_used << (o.has_vicon ? ", with Vicon" : ", no Vicon");
-        if (o.summary.contains("comparison")) {
-          const auto& lag = o.summary["comparison"]["lag"];
-          if (lag.value("clear", false) && lag.value("frames", 0) != 0) {
-            std::cout << ", wrist lag " << lag["frames"].get<int>()
-                      << " frame(s) (r = " << lmc::format_fixed(lag["correlation"].get<double>(), 2) << ")";
-          }
-        }
-        std::cout << ")\n";
-        for (const auto& w : o.warnings) std::cout << "        warning: " << w << "\n";
-      }
+      if (!a.quiet) print_processed_trial(o);
       if (a.compare_methods && o.has_vicon) {
         ref_errors.merge(o.reference_errors);
         def_errors.merge(o.default_errors);
