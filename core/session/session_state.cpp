@@ -175,22 +175,10 @@ AttemptState& event_attempt(TrialState& t, const JsonReader& e) {
   a.fail("trial " + t.plan.name + " has no attempt " + std::to_string(n));
 }
 
-}  // namespace
-
-void apply_journal_event(SessionState& st, const nlohmann::json& event, const std::string& where) {
-  const JsonReader e(event, where);
-  const std::string type = e.string("type");
-  const std::string utc = e.string_or("utc", "");
-  if (type == "session_created") {
-    if (st.events != 0) e.at("type").fail("session_created appears after the first line");
-    st = initial_state(session_setup_from_json(e.at("setup").json(), where + "#/setup"), where + "#/setup");
-  } else if (st.events == 0) {
-    e.at("type").fail("the journal must start with session_created");
-  } else if (type == "preflight") {
-    st.preflight[e.string("block")] = e.at("report").json();
-  } else if (type == "preflight_override") {
-    st.preflight_override[e.string("block")] = e.string("reason");
-  } else if (type == "trial_started") {
+// A trial's events (started, stopped, verdict, interrupted, accepted, redone) and notes; false
+// when `type` is none of them.
+bool apply_trial_event(SessionState& st, const std::string& type, const JsonReader& e, const std::string& utc) {
+  if (type == "trial_started") {
     TrialState& t = event_trial(st, e);
     AttemptState a;
     a.number = e.at("attempt").integer();
@@ -232,7 +220,15 @@ void apply_journal_event(SessionState& st, const nlohmann::json& event, const st
       if (!t.attempts.empty()) t.attempts.back().notes.push_back(e.string("text"));
     } else
       st.setup.notes += (st.setup.notes.empty() ? "" : "\n") + e.string("text");
-  } else if (type == "calibration_started") {
+  } else {
+    return false;
+  }
+  return true;
+}
+
+// A block's calibration events (started, applied, kept nominal); false when `type` is none of them.
+bool apply_calibration_event(SessionState& st, const std::string& type, const JsonReader& e, const std::string& where) {
+  if (type == "calibration_started") {
     const std::string block = calibration_block(st, e);
     BlockCalibrationState& c = st.calibration[block];
     c.status = "recording";
@@ -258,6 +254,29 @@ void apply_journal_event(SessionState& st, const nlohmann::json& event, const st
     c.status = "nominal";
     c.reason = e.string_or("reason", "");
     if (e.has("summary")) c.summary = e.at("summary").json();
+  } else {
+    return false;
+  }
+  return true;
+}
+
+}  // namespace
+
+void apply_journal_event(SessionState& st, const nlohmann::json& event, const std::string& where) {
+  const JsonReader e(event, where);
+  const std::string type = e.string("type");
+  const std::string utc = e.string_or("utc", "");
+  if (type == "session_created") {
+    if (st.events != 0) e.at("type").fail("session_created appears after the first line");
+    st = initial_state(session_setup_from_json(e.at("setup").json(), where + "#/setup"), where + "#/setup");
+  } else if (st.events == 0) {
+    e.at("type").fail("the journal must start with session_created");
+  } else if (type == "preflight") {
+    st.preflight[e.string("block")] = e.at("report").json();
+  } else if (type == "preflight_override") {
+    st.preflight_override[e.string("block")] = e.string("reason");
+  } else if (apply_trial_event(st, type, e, utc) || apply_calibration_event(st, type, e, where)) {
+    // Applied.
   } else if (type == "device_event" || type == "session_opened") {
     // Kept in the journal for the record; they do not change where trials stand.
   } else {
