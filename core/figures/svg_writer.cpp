@@ -98,6 +98,69 @@ double right_margin(const Figure& f) {
   return widest > 0 ? widest + 16 : 16;
 }
 
+// Grid lines and ticks, with the tick labels (the x labels only when the panel shows them).
+void draw_grid_and_ticks(std::string& out, const Mapper& m, bool x_labels) {
+  const Box& plot = m.plot;
+  const AxisRange& xr = m.xr;
+  const auto yticks = nice_ticks(m.yr.lo, m.yr.hi, std::max(2, static_cast<int>(plot.h / 50)));
+  const auto xticks = nice_ticks(xr.lo, xr.hi, std::max(2, static_cast<int>(plot.w / 90)));
+  out += "<g class=\"grid\" stroke=\"#e6e6e6\" stroke-width=\"1\">\n";
+  for (const double t : yticks)
+    out += "<line x1=\"" + num(plot.x) + "\" y1=\"" + num(m.py(t)) + "\" x2=\"" + num(plot.right()) + "\" y2=\"" +
+           num(m.py(t)) + "\"/>\n";
+  for (const double t : xticks)
+    out += "<line x1=\"" + num(m.px(t)) + "\" y1=\"" + num(plot.y) + "\" x2=\"" + num(m.px(t)) + "\" y2=\"" +
+           num(plot.bottom()) + "\"/>\n";
+  out += "</g>\n";
+  out += "<g class=\"ticks\" stroke=\"#000000\" stroke-width=\"1\">\n";
+  for (const double t : yticks)
+    out += "<line x1=\"" + num(plot.x - 5) + "\" y1=\"" + num(m.py(t)) + "\" x2=\"" + num(plot.x) + "\" y2=\"" +
+           num(m.py(t)) + "\"/>\n";
+  for (const double t : xticks)
+    out += "<line x1=\"" + num(m.px(t)) + "\" y1=\"" + num(plot.bottom()) + "\" x2=\"" + num(m.px(t)) + "\" y2=\"" +
+           num(plot.bottom() + 5) + "\"/>\n";
+  out += "</g>\n";
+  for (const double t : yticks) text(out, plot.x - 8, m.py(t) + kFont * 0.35, tick_label(t, yticks), "end");
+  if (x_labels)
+    for (const double t : xticks) text(out, m.px(t), plot.bottom() + 8 + kFont, tick_label(t, xticks), "middle");
+}
+
+// Everything data-driven, clipped to the plot: gap bands, reference lines, then each series.
+void draw_clipped_data(std::string& out, const Figure& f, const Mapper& m, int clip_id) {
+  const Box& plot = m.plot;
+  const std::string clip = "plot-clip-" + std::to_string(clip_id);
+  out += "<defs><clipPath id=\"" + clip + "\"><rect x=\"" + num(plot.x) + "\" y=\"" + num(plot.y) + "\" width=\"" +
+         num(plot.w) + "\" height=\"" + num(plot.h) + "\"/></clipPath></defs>\n";
+  out += "<g clip-path=\"url(#" + clip + ")\">\n";
+  for (const Series& s : f.series)
+    if (s.shade_gaps) svg::gap_bands(out, s, m);
+  for (const ReferenceLine& r : f.references) {
+    if (!std::isfinite(r.y)) continue;
+    out += "<line class=\"reference\" x1=\"" + num(plot.x) + "\" y1=\"" + num(m.py(r.y)) + "\" x2=\"" +
+           num(plot.right()) + "\" y2=\"" + num(m.py(r.y)) + "\" stroke=\"" + hex(r.colour) + "\" stroke-width=\"1\"" +
+           dash_attr(r.dash) + "/>\n";
+  }
+  for (size_t i = 0; i < f.series.size(); ++i) {
+    const Series& s = f.series[i];
+    const Rgb c = colour_of(s, i);
+    if (s.style != SeriesStyle::points) svg::line_pieces(out, s, m, c);
+    if (s.style != SeriesStyle::line) svg::points(out, s, m, c);
+  }
+  out += "</g>\n";
+}
+
+// Reference labels beside the plot at their line's height, nudged apart so none overlap.
+void draw_reference_labels(std::string& out, const Figure& f, const Mapper& m) {
+  const Box& plot = m.plot;
+  std::vector<std::pair<double, const ReferenceLine*>> labels;
+  for (const ReferenceLine& r : f.references)
+    if (std::isfinite(r.y) && !r.label.empty() && r.y >= m.yr.lo && r.y <= m.yr.hi) labels.push_back({m.py(r.y), &r});
+  std::stable_sort(labels.begin(), labels.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+  for (size_t i = 1; i < labels.size(); ++i)
+    labels[i].first = std::max(labels[i].first, labels[i - 1].first + kFont + 1);
+  for (const auto& [y, r] : labels) text(out, plot.right() + 6, y + kFont * 0.35, r->label, "start");
+}
+
 // One chart inside `area`: its title (grid panels), legend above the plot, axes, the clipped
 // curves and reference lines, reference labels to the right of the plot.
 void panel(std::string& out, const Figure& f, Box area, const AxisRange& xr, const PanelStyle& st) {
@@ -123,28 +186,7 @@ void panel(std::string& out, const Figure& f, Box area, const AxisRange& xr, con
     text(out, plot.x + it.x + 24, y + kFont * 0.35, s.name, "start");
   }
 
-  // Grid lines and ticks.
-  const auto yticks = nice_ticks(m.yr.lo, m.yr.hi, std::max(2, static_cast<int>(plot.h / 50)));
-  const auto xticks = nice_ticks(xr.lo, xr.hi, std::max(2, static_cast<int>(plot.w / 90)));
-  out += "<g class=\"grid\" stroke=\"#e6e6e6\" stroke-width=\"1\">\n";
-  for (const double t : yticks)
-    out += "<line x1=\"" + num(plot.x) + "\" y1=\"" + num(m.py(t)) + "\" x2=\"" + num(plot.right()) + "\" y2=\"" +
-           num(m.py(t)) + "\"/>\n";
-  for (const double t : xticks)
-    out += "<line x1=\"" + num(m.px(t)) + "\" y1=\"" + num(plot.y) + "\" x2=\"" + num(m.px(t)) + "\" y2=\"" +
-           num(plot.bottom()) + "\"/>\n";
-  out += "</g>\n";
-  out += "<g class=\"ticks\" stroke=\"#000000\" stroke-width=\"1\">\n";
-  for (const double t : yticks)
-    out += "<line x1=\"" + num(plot.x - 5) + "\" y1=\"" + num(m.py(t)) + "\" x2=\"" + num(plot.x) + "\" y2=\"" +
-           num(m.py(t)) + "\"/>\n";
-  for (const double t : xticks)
-    out += "<line x1=\"" + num(m.px(t)) + "\" y1=\"" + num(plot.bottom()) + "\" x2=\"" + num(m.px(t)) + "\" y2=\"" +
-           num(plot.bottom() + 5) + "\"/>\n";
-  out += "</g>\n";
-  for (const double t : yticks) text(out, plot.x - 8, m.py(t) + kFont * 0.35, tick_label(t, yticks), "end");
-  if (st.x_labels)
-    for (const double t : xticks) text(out, m.px(t), plot.bottom() + 8 + kFont, tick_label(t, xticks), "middle");
+  draw_grid_and_ticks(out, m, st.x_labels);
 
   // Axis labels with units.
   const std::string ylabel = axis_text(f.y);
@@ -156,37 +198,11 @@ void panel(std::string& out, const Figure& f, Box area, const AxisRange& xr, con
   if (st.x_labels && !st.x_axis_text.empty())
     text(out, plot.x + plot.w / 2, plot.bottom() + 2 * (kFont + 10) - 4, st.x_axis_text, "middle");
 
-  // Everything data-driven is clipped to the plot.
-  const std::string clip = "plot-clip-" + std::to_string(st.clip_id);
-  out += "<defs><clipPath id=\"" + clip + "\"><rect x=\"" + num(plot.x) + "\" y=\"" + num(plot.y) + "\" width=\"" +
-         num(plot.w) + "\" height=\"" + num(plot.h) + "\"/></clipPath></defs>\n";
-  out += "<g clip-path=\"url(#" + clip + ")\">\n";
-  for (const Series& s : f.series)
-    if (s.shade_gaps) svg::gap_bands(out, s, m);
-  for (const ReferenceLine& r : f.references) {
-    if (!std::isfinite(r.y)) continue;
-    out += "<line class=\"reference\" x1=\"" + num(plot.x) + "\" y1=\"" + num(m.py(r.y)) + "\" x2=\"" +
-           num(plot.right()) + "\" y2=\"" + num(m.py(r.y)) + "\" stroke=\"" + hex(r.colour) + "\" stroke-width=\"1\"" +
-           dash_attr(r.dash) + "/>\n";
-  }
-  for (size_t i = 0; i < f.series.size(); ++i) {
-    const Series& s = f.series[i];
-    const Rgb c = colour_of(s, i);
-    if (s.style != SeriesStyle::points) svg::line_pieces(out, s, m, c);
-    if (s.style != SeriesStyle::line) svg::points(out, s, m, c);
-  }
-  out += "</g>\n";
+  draw_clipped_data(out, f, m, st.clip_id);
   out += "<rect class=\"frame\" x=\"" + num(plot.x) + "\" y=\"" + num(plot.y) + "\" width=\"" + num(plot.w) +
          "\" height=\"" + num(plot.h) + "\" fill=\"none\" stroke=\"#000000\" stroke-width=\"1\"/>\n";
 
-  // Reference labels beside the plot at their line's height, nudged apart so none overlap.
-  std::vector<std::pair<double, const ReferenceLine*>> labels;
-  for (const ReferenceLine& r : f.references)
-    if (std::isfinite(r.y) && !r.label.empty() && r.y >= m.yr.lo && r.y <= m.yr.hi) labels.push_back({m.py(r.y), &r});
-  std::stable_sort(labels.begin(), labels.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
-  for (size_t i = 1; i < labels.size(); ++i)
-    labels[i].first = std::max(labels[i].first, labels[i - 1].first + kFont + 1);
-  for (const auto& [y, r] : labels) text(out, plot.right() + 6, y + kFont * 0.35, r->label, "start");
+  draw_reference_labels(out, f, m);
 }
 
 // Notes under everything, one line each; returns the height they take.
