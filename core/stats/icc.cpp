@@ -43,6 +43,43 @@ void exact_f_interval(double f0, double df1, double df2, double k, IccEstimate& 
   }
 }
 
+// The rows with a usable value in every column.
+std::vector<Eigen::Index> complete_rating_rows(const Eigen::MatrixXd& ratings) {
+  std::vector<Eigen::Index> rows;
+  for (Eigen::Index i = 0; i < ratings.rows(); ++i) {
+    bool complete = true;
+    for (Eigen::Index j = 0; j < ratings.cols(); ++j) complete = complete && is_usable(ratings(i, j));
+    if (complete) rows.push_back(i);
+  }
+  return rows;
+}
+
+// ICC(2,·): S&F's approximate interval, Satterthwaite's df v built from the single-measure
+// estimate (already in r.icc2_1), for n targets and k raters.
+void approximate_icc2_interval(double n, double k, double df_rows, double df_cols, double df_error, IccResult& r) {
+  const double bms = r.bms, jms = r.jms, ems = r.ems;
+  const double rho = r.icc2_1.value;
+  // McGraw & Wong's form of Satterthwaite's df (the same v as S&F's): it stays finite when
+  // EMS = 0, where v becomes JMS's own df.
+  const double a = k * rho / (n * (1.0 - rho));
+  const double b = 1.0 + k * rho * (n - 1.0) / (n * (1.0 - rho));
+  const double v =
+      (a * jms + b * ems) * (a * jms + b * ems) / ((a * jms) * (a * jms) / df_cols + (b * ems) * (b * ems) / df_error);
+  const double f_star = f_quantile(0.975, df_rows, v);
+  const double f_star2 = f_quantile(0.975, v, df_rows);
+  const double low = n * (bms - f_star * ems) / (f_star * (k * jms + (k * n - k - n) * ems) + n * bms);
+  const double high = n * (f_star2 * bms - ems) / (k * jms + (k * n - k - n) * ems + n * f_star2 * bms);
+  // Perfect agreement (ρ = 1: EMS = JMS = 0) leaves v undefined; the interval's limit is [1, 1].
+  r.icc2_1.ci = rho == 1.0 ? Interval{1.0, 1.0} : Interval{low, high};
+  r.icc2_k.ci = {spearman_brown(r.icc2_1.ci.low, k), spearman_brown(r.icc2_1.ci.high, k)};
+  for (IccEstimate* e : {&r.icc2_1, &r.icc2_k}) {
+    e->f_value = bms / ems;
+    e->f_df1 = df_rows;
+    e->f_df2 = df_error;
+    e->p_value = f_upper_tail(e->f_value, df_rows, df_error);
+  }
+}
+
 }  // namespace
 
 IccResult icc(const Eigen::MatrixXd& ratings) {
@@ -56,12 +93,7 @@ IccResult icc(const Eigen::MatrixXd& ratings) {
   r.icc2_k = named("ICC(2," + k_text + ")", "two-way random effects, absolute agreement", average_of(r.k));
   r.icc3_k = named("ICC(3," + k_text + ")", "two-way mixed effects, consistency", average_of(r.k));
 
-  std::vector<Eigen::Index> rows;
-  for (Eigen::Index i = 0; i < ratings.rows(); ++i) {
-    bool complete = true;
-    for (Eigen::Index j = 0; j < ratings.cols(); ++j) complete = complete && is_usable(ratings(i, j));
-    if (complete) rows.push_back(i);
-  }
+  const std::vector<Eigen::Index> rows = complete_rating_rows(ratings);
   r.n_targets = rows.size();
   r.n_dropped = static_cast<std::size_t>(ratings.rows()) - rows.size();
   if (r.k < 2 || rows.size() < 2) {
@@ -103,30 +135,7 @@ IccResult icc(const Eigen::MatrixXd& ratings) {
   exact_f_interval(bms / wms, df_rows, df_within, k, r.icc1_1, r.icc1_k);
   exact_f_interval(bms / ems, df_rows, df_error, k, r.icc3_1, r.icc3_k);
 
-  // ICC(2,·): S&F's approximate interval, Satterthwaite's df v built from the single-measure
-  // estimate.
-  {
-    const double rho = r.icc2_1.value;
-    // McGraw & Wong's form of Satterthwaite's df (the same v as S&F's): it stays finite when
-    // EMS = 0, where v becomes JMS's own df.
-    const double a = k * rho / (n * (1.0 - rho));
-    const double b = 1.0 + k * rho * (n - 1.0) / (n * (1.0 - rho));
-    const double v = (a * jms + b * ems) * (a * jms + b * ems) /
-                     ((a * jms) * (a * jms) / df_cols + (b * ems) * (b * ems) / df_error);
-    const double f_star = f_quantile(0.975, df_rows, v);
-    const double f_star2 = f_quantile(0.975, v, df_rows);
-    const double low = n * (bms - f_star * ems) / (f_star * (k * jms + (k * n - k - n) * ems) + n * bms);
-    const double high = n * (f_star2 * bms - ems) / (k * jms + (k * n - k - n) * ems + n * f_star2 * bms);
-    // Perfect agreement (ρ = 1: EMS = JMS = 0) leaves v undefined; the interval's limit is [1, 1].
-    r.icc2_1.ci = rho == 1.0 ? Interval{1.0, 1.0} : Interval{low, high};
-    r.icc2_k.ci = {spearman_brown(r.icc2_1.ci.low, k), spearman_brown(r.icc2_1.ci.high, k)};
-    for (IccEstimate* e : {&r.icc2_1, &r.icc2_k}) {
-      e->f_value = bms / ems;
-      e->f_df1 = df_rows;
-      e->f_df2 = df_error;
-      e->p_value = f_upper_tail(e->f_value, df_rows, df_error);
-    }
-  }
+  approximate_icc2_interval(n, k, df_rows, df_cols, df_error, r);
   return r;
 }
 
