@@ -8,8 +8,11 @@
 #include <gtest/gtest.h>
 
 #include <fstream>
+#include <memory>
 #include <set>
 #include <sstream>
+#include <utility>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
@@ -65,6 +68,8 @@ class BidsExport : public ::testing::Test {
     }
   }
   static void TearDownTestSuite() {
+    delete exported_;
+    exported_ = nullptr;
     delete root_;
     root_ = nullptr;
   }
@@ -75,43 +80,63 @@ class BidsExport : public ::testing::Test {
     req.out_dir = *root_ / out;
     return req;
   }
+  // The study exported once with the default settings, for the tests that read what it wrote.
+  struct Exported {
+    fs::path dir;
+    BidsExportReport report;
+    std::vector<std::pair<int, int>> progress;  // each on_progress call: done, total
+  };
+  static const Exported& documented() {
+    if (exported_ == nullptr) {
+      auto e = std::make_unique<Exported>();
+      BidsExportRequest req = request("dataset");
+      req.on_progress = [&e](int done, int total) { e->progress.emplace_back(done, total); };
+      e->report = export_bids(req);
+      e->dir = req.out_dir;
+      exported_ = e.release();
+    }
+    return *exported_;
+  }
+  static fs::path motion_file(const std::string& system, const std::string& suffix) {
+    return documented().dir / "sub-S01" / "motion" /
+           ("sub-S01_task-Index_tracksys-" + system + "_acq-Naiv_run-101" + suffix);
+  }
   static fs::path* root_;
+  static Exported* exported_;
 };
 fs::path* BidsExport::root_ = nullptr;
+BidsExport::Exported* BidsExport::exported_ = nullptr;
 
-TEST_F(BidsExport, WritesTheDatasetAsDocumented) {
-  BidsExportRequest req = request("dataset");
-  std::vector<std::pair<int, int>> progress;
-  req.on_progress = [&](int done, int total) { progress.emplace_back(done, total); };
-  const BidsExportReport report = export_bids(req);
+TEST_F(BidsExport, ReportsEveryTrialOfBothSubjectsWithItsProgress) {
+  const BidsExportReport& report = documented().report;
   EXPECT_EQ(report.subjects, 2);
   EXPECT_EQ(report.trials, 4);
   EXPECT_EQ(report.left_out, 0);
   EXPECT_FALSE(report.cancelled);
-  EXPECT_EQ(progress, (std::vector<std::pair<int, int>>{{0, 4}, {1, 4}, {2, 4}, {3, 4}, {4, 4}}));
+  EXPECT_EQ(documented().progress, (std::vector<std::pair<int, int>>{{0, 4}, {1, 4}, {2, 4}, {3, 4}, {4, 4}}));
+}
 
-  const fs::path ds = req.out_dir;
-  const fs::path motion = ds / "sub-S01" / "motion";
+TEST_F(BidsExport, WritesEveryTrackingSystemsFilesAndTheLayouts) {
+  const fs::path ds = documented().dir;
   for (const char* system : {"LMCfused", "LMC1", "LMC2", "LMC3", "LMC4", "Vicon"}) {
     for (const char* suffix : {"_motion.tsv", "_motion.json", "_channels.tsv", "_channels.json"}) {
-      const std::string name = std::string("sub-S01_task-Index_tracksys-") + system + "_acq-Naiv_run-101" + suffix;
-      EXPECT_TRUE(fs::exists(motion / name)) << name;
+      EXPECT_TRUE(fs::exists(motion_file(system, suffix))) << motion_file(system, suffix);
     }
   }
   EXPECT_TRUE(fs::exists(ds / "sub-S02" / "motion" / "sub-S02_task-Static_tracksys-Vicon_acq-Naiv_run-101_motion.tsv"));
   EXPECT_TRUE(fs::exists(ds / "layouts" / "sub-S01_acq-Naiv_layout.json"));
   EXPECT_EQ(read_json(ds / "layouts" / "sub-S01_acq-Naiv_layout.json")["devices"].size(), 4u);
+}
 
+TEST_F(BidsExport, ChannelsAndMotionRowsAreAsDocumented) {
   // Channels: 28 points × x, y, z of type POS in mm.
-  const std::vector<std::string> channels =
-      lines_of(read_text_file(motion / "sub-S01_task-Index_tracksys-LMC2_acq-Naiv_run-101_channels.tsv"));
+  const std::vector<std::string> channels = lines_of(read_text_file(motion_file("LMC2", "_channels.tsv")));
   ASSERT_EQ(channels.size(), 85u);
   EXPECT_EQ(cells_of(channels[1]),
             (std::vector<std::string>{"Palm_x", "x", "POS", "Palm", "mm", "world", "LMC2 realigned: palm position"}));
   // Motion rows: as many as the recording lasts at 100 Hz, 84 cells each, no header.
-  const nlohmann::json mj = read_json(motion / "sub-S01_task-Index_tracksys-LMC2_acq-Naiv_run-101_motion.json");
-  const std::vector<std::string> rows =
-      lines_of(read_text_file(motion / "sub-S01_task-Index_tracksys-LMC2_acq-Naiv_run-101_motion.tsv"));
+  const nlohmann::json mj = read_json(motion_file("LMC2", "_motion.json"));
+  const std::vector<std::string> rows = lines_of(read_text_file(motion_file("LMC2", "_motion.tsv")));
   EXPECT_NEAR(static_cast<double>(rows.size()), mj["RecordingDuration"].get<double>() * 100.0, 1e-6);
   EXPECT_GE(rows.size(), 90u);
   // Every cell a number in mm with three decimals or n/a (a controller that had not seen the hand).
@@ -133,7 +158,10 @@ TEST_F(BidsExport, WritesTheDatasetAsDocumented) {
   }
   EXPECT_GT(numbers, 84 * 50);
   EXPECT_EQ(missing % 3, 0) << "a point is missing with all three coordinates";
-  // motion.json: what the sidecar says of controller 2.
+}
+
+TEST_F(BidsExport, MotionJsonSaysWhatTheSidecarSays) {
+  const nlohmann::json mj = read_json(motion_file("LMC2", "_motion.json"));
   const RecorderSidecar sidecar = read_recorder_sidecar(study() / "S_01" / "LMC_Naiv_Index101.session.json");
   ASSERT_NE(sidecar.device(2), nullptr);
   EXPECT_EQ(mj["DeviceSerialNumber"], sidecar.device(2)->serial);
@@ -143,24 +171,27 @@ TEST_F(BidsExport, WritesTheDatasetAsDocumented) {
   EXPECT_EQ(mj["ManufacturersModelName"], "simulated Leap Motion Controller");
   EXPECT_EQ(mj["MissingValues"], "n/a");
   EXPECT_NE(mj["SoftwareVersions"].get<std::string>().find("lmc-workbench " LMC_VERSION), std::string::npos);
-  EXPECT_EQ(read_json(motion / "sub-S01_task-Index_tracksys-Vicon_acq-Naiv_run-101_motion.json")["Manufacturer"],
-            "Vicon");
+  EXPECT_EQ(read_json(motion_file("Vicon", "_motion.json"))["Manufacturer"], "Vicon");
+}
 
-  // Events: go, the simulated Vicon's time zero (where the grid starts) and stop.
-  const std::vector<std::string> events =
-      lines_of(read_text_file(motion / "sub-S01_task-Index_acq-Naiv_run-101_events.tsv"));
+TEST_F(BidsExport, EventsAreGoTheSimulatedViconsTimeZeroAndStop) {
+  const std::vector<std::string> events = lines_of(
+      read_text_file(documented().dir / "sub-S01" / "motion" / "sub-S01_task-Index_acq-Naiv_run-101_events.tsv"));
   ASSERT_EQ(events.size(), 4u);
   EXPECT_EQ(events[0], "onset\tduration\ttrial_type");
   std::set<std::string> types;
   for (size_t i = 1; i < events.size(); ++i) types.insert(cells_of(events[i])[2]);
   EXPECT_EQ(types, (std::set<std::string>{"go", "stop", "vicon_capture_start"}));
+  // The Vicon's time zero is where the grid starts.
   for (size_t i = 1; i < events.size(); ++i) {
     if (cells_of(events[i])[2] == "vicon_capture_start") {
       EXPECT_EQ(cells_of(events[i])[0], "0.000");
     }
   }
+}
 
-  // Participants: from the manifests, never the operator or notes; scans list what is there.
+TEST_F(BidsExport, ParticipantsAndScansComeFromTheManifestsWithoutOperatorOrNotes) {
+  const fs::path ds = documented().dir;
   EXPECT_EQ(read_text_file(ds / "participants.tsv"),
             "participant_id\thandedness\thand_length_mm\thand_breadth_mm\nsub-S02\tright\t185.0\t84.0\nsub-"
             "S01\tright\t185.0\t84.0\n");
@@ -174,14 +205,17 @@ TEST_F(BidsExport, WritesTheDatasetAsDocumented) {
     EXPECT_EQ(text.find("Olga"), std::string::npos) << e.path();
     EXPECT_EQ(text.find("private remark"), std::string::npos) << e.path();
   }
+}
 
-  // A second export into the same folder is refused without --force, nothing changed.
+TEST_F(BidsExport, ASecondExportNeedsForceWhichReplacesTheEarlierSubjects) {
+  BidsExportRequest req = request("dataset-again");
+  EXPECT_EQ(export_bids(req).trials, 4);
   EXPECT_THROW(export_bids(req), Error);
   req.force = true;
   req.inputs = {study() / "S02"};
   EXPECT_EQ(export_bids(req).trials, 2);
-  EXPECT_FALSE(fs::exists(ds / "sub-S01")) << "an earlier export's subject stays without a participants row";
-  EXPECT_EQ(lines_of(read_text_file(ds / "participants.tsv")).size(), 2u);
+  EXPECT_FALSE(fs::exists(req.out_dir / "sub-S01")) << "an earlier export's subject stays without a participants row";
+  EXPECT_EQ(lines_of(read_text_file(req.out_dir / "participants.tsv")).size(), 2u);
 }
 
 TEST_F(BidsExport, AnonymisesWithTheKeyOutsideTheDataset) {
