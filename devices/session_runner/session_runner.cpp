@@ -214,6 +214,38 @@ class TapAttachment {
   FrameTap* tap_;
 };
 
+// A fail verdict with its one reason (nothing to judge, or nothing that could be read).
+QualityReport fail_verdict(std::string reason) {
+  QualityReport q;
+  q.verdict = "fail";
+  q.reasons.push_back(std::move(reason));
+  return q;
+}
+
+// The verdict of a recorded attempt from its files, as processing will read them.
+QualityReport assess_recorded_attempt(const TrialFiles& paths, const TrialType& type, const Layout& layout,
+                                      bool vicon_expected, const std::optional<fs::path>& vicon_export_dir) {
+  const LmcRecording recording = read_lmc_recording(paths.recording);
+  const RecorderSidecar sidecar = read_recorder_sidecar(paths.sidecar);
+  QualityInputs in;
+  in.recording = &recording;
+  in.sidecar = &sidecar;
+  in.layout = layout;
+  in.planned_s = type.duration_s;
+  in.thresholds = type.quality;
+  in.rom = type.rom;
+  in.vicon_expected = vicon_expected;
+  in.vicon_export_dir = vicon_export_dir;
+  return assess_trial(in);
+}
+
+// An attempt that did not complete is a recording fault whatever its data look like.
+void fail_incomplete_attempt(AttemptResult& result) {
+  if (result.outcome == "completed" || result.quality->verdict == "fail") return;
+  result.quality->reasons.insert(result.quality->reasons.begin(), "the trial " + result.outcome + ": " + result.reason);
+  result.quality->verdict = "fail";
+}
+
 }  // namespace
 
 AttemptResult SessionRunner::run_trial(int i, std::stop_token stop,
@@ -272,43 +304,20 @@ AttemptResult SessionRunner::run_trial(int i, std::stop_token stop,
   const bool stopped_before_go = by_operator && !result.reached_go;
   try {
     if (stopped_before_go) {
-      QualityReport q;
-      q.verdict = "fail";
-      q.planned_s = type.duration_s;
-      q.reasons.push_back(before_go_reason(result.outcome));
-      result.quality = q;
+      result.quality = fail_verdict(before_go_reason(result.outcome));
+      result.quality->planned_s = type.duration_s;
     } else if (fs::exists(paths.recording) && fs::exists(paths.sidecar)) {
-      const LmcRecording recording = read_lmc_recording(paths.recording);
-      const RecorderSidecar sidecar = read_recorder_sidecar(paths.sidecar);
-      QualityInputs in;
-      in.recording = &recording;
-      in.sidecar = &sidecar;
-      in.layout = layout_for(i);
-      in.planned_s = type.duration_s;
-      in.thresholds = type.quality;
-      in.rom = type.rom;
-      in.vicon_expected = config.vicon.has_value();
-      in.vicon_export_dir = options_.vicon_export_dir;
-      result.quality = assess_trial(in);
+      result.quality =
+          assess_recorded_attempt(paths, type, layout_for(i), config.vicon.has_value(), options_.vicon_export_dir);
     }
   } catch (const std::exception& e) {
-    QualityReport q;
-    q.verdict = "fail";
-    q.reasons.push_back(std::string("the recording cannot be read back: ") + e.what());
-    result.quality = q;
+    result.quality = fail_verdict(std::string("the recording cannot be read back: ") + e.what());
   }
   if (!result.quality) {
-    QualityReport q;
-    q.verdict = "fail";
-    q.reasons.push_back("nothing was recorded: " + (result.reason.empty() ? std::string("no file") : result.reason));
-    result.quality = q;
+    result.quality =
+        fail_verdict("nothing was recorded: " + (result.reason.empty() ? std::string("no file") : result.reason));
   }
-  if (result.outcome != "completed" && result.quality->verdict != "fail") {
-    // An attempt that did not complete is a recording fault whatever its data look like.
-    result.quality->reasons.insert(result.quality->reasons.begin(),
-                                   "the trial " + result.outcome + ": " + result.reason);
-    result.quality->verdict = "fail";
-  }
+  fail_incomplete_attempt(result);
   folder_.trial_verdict(i, quality_to_json(*result.quality));
   return result;
 }
