@@ -447,6 +447,45 @@ RecorderStatus Recorder::status() const {
   return st;
 }
 
+namespace {
+
+// A device's counts, gaps and disconnections as the sidecar records them.
+SidecarDevice sidecar_device_from_stats(int id, const DeviceRecordStats& s) {
+  SidecarDevice d;
+  d.device_id = id;
+  d.slot = s.slot;
+  d.serial = s.serial;
+  d.frames_written = s.frames_written;
+  d.frames_with_hand = s.frames_with_hand;
+  d.frames_dropped_queue = s.frames_dropped_queue;
+  d.frame_id_gaps = s.frame_id_gaps;
+  d.first_timestamp_us = s.first_timestamp_us;
+  d.last_timestamp_us = s.last_timestamp_us;
+  d.model = s.model;
+  d.tracking_mode = s.tracking_mode;
+  d.frames_other_side_hand = s.frames_other_side_hand;
+  for (const auto& g : s.gaps) {
+    SidecarGap gap;
+    gap.from_timestamp_us = g.from_timestamp_us;
+    gap.to_timestamp_us = g.to_timestamp_us;
+    d.gaps.push_back(gap);
+  }
+  for (const auto& e : s.disconnects) {
+    SidecarDisconnect x;
+    x.host_time_utc = e.value("host_time_utc", "");
+    x.host_ns = e.value("host_ns", std::int64_t{0});
+    x.message = e.value("message", "");
+    x.reconnected_host_time_utc = e.value("reconnected_host_time_utc", "");
+    x.event = e.value("event", "");
+    x.serial = e.value("serial", "");
+    x.slot = e.value("slot", "");
+    d.disconnects.push_back(std::move(x));
+  }
+  return d;
+}
+
+}  // namespace
+
 RecorderSidecar Recorder::sidecar(const char* state) const {
   std::lock_guard lock(stats_mutex_);
   RecorderSidecar sc;
@@ -466,38 +505,8 @@ RecorderSidecar Recorder::sidecar(const char* state) const {
   sc.layout = layout_to_json(config_.layout);
   sc.serial_to_slot = serial_to_slot_;
   for (const auto& [id, s] : stats_) {
-    SidecarDevice d;
-    d.device_id = id;
-    d.slot = s.slot;
-    d.serial = s.serial;
-    d.frames_written = s.frames_written;
-    d.frames_with_hand = s.frames_with_hand;
-    d.frames_dropped_queue = s.frames_dropped_queue;
-    d.frame_id_gaps = s.frame_id_gaps;
-    d.first_timestamp_us = s.first_timestamp_us;
-    d.last_timestamp_us = s.last_timestamp_us;
-    d.model = s.model;
-    d.tracking_mode = s.tracking_mode;
-    d.frames_other_side_hand = s.frames_other_side_hand;
-    for (const auto& g : s.gaps) {
-      SidecarGap gap;
-      gap.from_timestamp_us = g.from_timestamp_us;
-      gap.to_timestamp_us = g.to_timestamp_us;
-      d.gaps.push_back(gap);
-    }
-    for (const auto& e : s.disconnects) {
-      SidecarDisconnect x;
-      x.host_time_utc = e.value("host_time_utc", "");
-      x.host_ns = e.value("host_ns", std::int64_t{0});
-      x.message = e.value("message", "");
-      x.reconnected_host_time_utc = e.value("reconnected_host_time_utc", "");
-      x.event = e.value("event", "");
-      x.serial = e.value("serial", "");
-      x.slot = e.value("slot", "");
-      d.disconnects.push_back(std::move(x));
-    }
+    sc.devices.push_back(sidecar_device_from_stats(id, s));
     sc.frames_written += s.frames_written;
-    sc.devices.push_back(std::move(d));
   }
   sc.frames_dropped = dropped_.load();
   sc.vicon_packets = vicon_packets_;
