@@ -109,6 +109,67 @@ void check_pose_set_first_line(std::string_view line, const std::string& source)
     throw Error(ErrorLocation(source, 1, 1), "not a pose set: the first line must be \"" + std::string(kMagic) + "\"");
 }
 
+// A header line other than the expected one: the error names its first wrong column.
+[[noreturn]] void refuse_pose_set_header(const std::string& line, const std::string& expected,
+                                         const std::string& source, long line_no) {
+  const auto got = split_tabs(line);
+  const auto want = split_tabs(expected);
+  for (size_t c = 0; c < want.size(); ++c) {
+    if (c >= got.size())
+      throw Error(ErrorLocation(source, line_no, static_cast<long>(c + 1)),
+                  "header ends early; expected column \"" + std::string(want[c]) + "\"");
+    if (got[c] != want[c]) {
+      throw Error(
+          ErrorLocation(source, line_no, static_cast<long>(c + 1)),
+          "unexpected header column \"" + std::string(got[c]) + "\", expected \"" + std::string(want[c]) + "\"");
+    }
+  }
+  throw Error(ErrorLocation(source, line_no, static_cast<long>(want.size() + 1)), "extra header columns");
+}
+
+// One data row's fields: frame `index` (checked against the column), its label and its points.
+void parse_pose_set_row(const std::vector<std::string_view>& fields, size_t index, const std::string& source,
+                        long line_no, PoseSet& set) {
+  auto fail = [&](long column, const std::string& what) -> Error {
+    return Error(ErrorLocation(source, line_no, column), what);
+  };
+  auto number = [&](size_t c) {
+    double v = 0;
+    const std::string_view f = fields[c];
+    const auto res = std::from_chars(f.data(), f.data() + f.size(), v);
+    if (res.ec != std::errc() || res.ptr != f.data() + f.size()) {
+      throw fail(static_cast<long>(c + 1), "not a number: \"" + std::string(f) + "\"");
+    }
+    return v;
+  };
+  if (number(0) != static_cast<double>(index)) {
+    throw fail(1, "frame index " + std::string(fields[0]) + " out of sequence; expected " + std::to_string(index));
+  }
+  PoseLabel label;
+  const auto o = orientation_from_name(fields[1]);
+  if (!o) throw fail(2, "unknown orientation \"" + std::string(fields[1]) + "\" (horizontal or vertical)");
+  const auto m = motion_from_name(fields[2]);
+  if (!m)
+    throw fail(
+        3, "unknown motion \"" + std::string(fields[2]) + "\" (open, index, thumb, wrist-flexion, wrist-extension)");
+  label.orientation = *o;
+  label.motion = *m;
+  label.progress = number(3);
+  HandFrame f;
+  f.hand_present = true;
+  f.frame_id = static_cast<std::int64_t>(index);
+  for (int i = 0; i < kNumHandPoints; ++i) {
+    for (int a = 0; a < 3; ++a) {
+      const size_t c = static_cast<size_t>(kFixedColumns + 3 * i + a);
+      const double v = number(c);
+      if (!std::isfinite(v)) throw fail(static_cast<long>(c + 1), "coordinates must be finite");
+      f.point(i)[a] = v;
+    }
+  }
+  set.frames.push_back(f);
+  set.labels.push_back(label);
+}
+
 }  // namespace
 
 PoseSet parse_pose_set(std::istream& in, const std::string& source) {
@@ -137,19 +198,7 @@ PoseSet parse_pose_set(std::istream& in, const std::string& source) {
       if (line.rfind(kProvenance, 0) == 0) set.provenance.push_back(line.substr(kProvenance.size()));
       continue;
     }
-    if (line != expected_header) {
-      const auto got = split_tabs(line);
-      const auto want = split_tabs(expected_header);
-      for (size_t c = 0; c < want.size(); ++c) {
-        if (c >= got.size())
-          throw fail(static_cast<long>(c + 1), "header ends early; expected column \"" + std::string(want[c]) + "\"");
-        if (got[c] != want[c]) {
-          throw fail(static_cast<long>(c + 1), "unexpected header column \"" + std::string(got[c]) + "\", expected \"" +
-                                                   std::string(want[c]) + "\"");
-        }
-      }
-      throw fail(static_cast<long>(want.size() + 1), "extra header columns");
-    }
+    if (line != expected_header) refuse_pose_set_header(line, expected_header, source, line_no);
     break;
   }
   const size_t ncols = static_cast<size_t>(kFixedColumns + 3 * kNumHandPoints);
@@ -162,43 +211,7 @@ PoseSet parse_pose_set(std::istream& in, const std::string& source) {
       throw fail(static_cast<long>(std::min(fields.size(), ncols) + 1),
                  "expected " + std::to_string(ncols) + " tab-separated fields, found " + std::to_string(fields.size()));
     }
-    auto number = [&](size_t c) {
-      double v = 0;
-      const std::string_view f = fields[c];
-      const auto res = std::from_chars(f.data(), f.data() + f.size(), v);
-      if (res.ec != std::errc() || res.ptr != f.data() + f.size()) {
-        throw fail(static_cast<long>(c + 1), "not a number: \"" + std::string(f) + "\"");
-      }
-      return v;
-    };
-    const double index = number(0);
-    if (index != static_cast<double>(set.frames.size())) {
-      throw fail(1, "frame index " + std::string(fields[0]) + " out of sequence; expected " +
-                        std::to_string(set.frames.size()));
-    }
-    PoseLabel label;
-    const auto o = orientation_from_name(fields[1]);
-    if (!o) throw fail(2, "unknown orientation \"" + std::string(fields[1]) + "\" (horizontal or vertical)");
-    const auto m = motion_from_name(fields[2]);
-    if (!m)
-      throw fail(
-          3, "unknown motion \"" + std::string(fields[2]) + "\" (open, index, thumb, wrist-flexion, wrist-extension)");
-    label.orientation = *o;
-    label.motion = *m;
-    label.progress = number(3);
-    HandFrame f;
-    f.hand_present = true;
-    f.frame_id = static_cast<std::int64_t>(set.frames.size());
-    for (int i = 0; i < kNumHandPoints; ++i) {
-      for (int a = 0; a < 3; ++a) {
-        const size_t c = static_cast<size_t>(kFixedColumns + 3 * i + a);
-        const double v = number(c);
-        if (!std::isfinite(v)) throw fail(static_cast<long>(c + 1), "coordinates must be finite");
-        f.point(i)[a] = v;
-      }
-    }
-    set.frames.push_back(f);
-    set.labels.push_back(label);
+    parse_pose_set_row(fields, set.frames.size(), source, line_no, set);
   }
   return set;
 }
