@@ -284,20 +284,15 @@ void smooth_and_output(std::vector<Step>& st, const std::vector<Step>& gains, Me
 
 }  // namespace fusion_smoother_detail
 
-HandTrack fuse_default(const std::vector<const HandTrack*>& devices,
-                       const std::vector<const std::vector<float>*>& quality, const SmootherParams& p) {
-  using namespace fusion_smoother_detail;
-  const int n = devices.empty() ? 0 : devices.front()->frame_count;
-  HandTrack out(n);
-  if (n == 0) return out;
-  const double base_var = p.noise_mm * p.noise_mm;
-  constexpr auto kL = static_cast<size_t>(kFusionLanes);
+namespace {
 
-  // Inverse-variance combination of the devices per lane and step, accumulated device by device
-  // in order (as the online fuser combines them). Stored step-major, as hand_to_lanes produces a
-  // step's lanes together: stored lane-major, each step's writes would land ~100 cache lines apart.
-  const auto steps = static_cast<size_t>(n);
-  std::vector<double> wsum(kL * steps, 0.0), zsum(kL * steps, 0.0);
+// Inverse-variance combination of the devices per lane and step, accumulated device by device
+// in order (as the online fuser combines them). Stored step-major, as hand_to_lanes produces a
+// step's lanes together: stored lane-major, each step's writes would land ~100 cache lines apart.
+void accumulate_device_sums(const std::vector<const HandTrack*>& devices,
+                            const std::vector<const std::vector<float>*>& quality, double base_var, size_t steps,
+                            std::vector<double>& wsum, std::vector<double>& zsum) {
+  constexpr auto kL = static_cast<size_t>(kFusionLanes);
   std::array<float, kNumHandPoints> ones;
   ones.fill(1.0f);
   std::array<double, kFusionLanes> value, variance;
@@ -312,35 +307,63 @@ HandTrack fuse_default(const std::vector<const HandTrack*>& devices,
       accumulate_lanes(value.data(), variance.data(), wsum.data() + f * kL, zsum.data() + f * kL);
     }
   }
+}
 
-  // The sums turned lane-major for the filter passes, which walk one lane's steps in a row; the
-  // smoothed lanes are turned back step-major for lanes_to_hand.
-  const auto wsum_lanes = transposed(wsum, steps, kL);
-  const auto zsum_lanes = transposed(zsum, steps, kL);
-  std::vector<double> smoothed(kL * steps, kNaN);  // lane-major
-  // Lanes measured alike share one filter's covariances and gains: the y and z of a point are
-  // nearly always measured exactly as its x (same devices, same variances, same steps), and the
-  // covariances and gains hold the divisions. A lane whose sums of inverse variances equal its
-  // point's x lane, bit for bit, follows that lane; any other (the bone lengths, a point measured
-  // in part) runs its own filter. The result is the same either way.
-  // The lanes that run a filter of their own, in order, and how many of the lanes after each
-  // (its point's y, then z) follow it.
-  std::vector<size_t> leaders;
-  std::vector<int> followers_of(kL, 0);
+// Lanes measured alike share one filter's covariances and gains: the y and z of a point are
+// nearly always measured exactly as its x (same devices, same variances, same steps), and the
+// covariances and gains hold the divisions. A lane whose sums of inverse variances equal its
+// point's x lane, bit for bit, follows that lane; any other (the bone lengths, a point measured
+// in part) runs its own filter. The result is the same either way.
+struct FilterLeaders {
+  std::vector<size_t> leaders;    // the lanes that run a filter of their own, in order
+  std::vector<int> followers_of;  // per lane: how many of the lanes after it (its point's y, then z) follow it
+};
+
+FilterLeaders filter_leaders(const double* wsum_lanes, size_t steps) {
+  constexpr auto kL = static_cast<size_t>(kFusionLanes);
+  FilterLeaders out;
+  std::vector<size_t>& leaders = out.leaders;
+  std::vector<int>& followers_of = out.followers_of;
+  followers_of.assign(kL, 0);
   const auto same_bits = [](double a, double b) {
     return std::bit_cast<std::uint64_t>(a) == std::bit_cast<std::uint64_t>(b);
   };
   for (size_t l = 0; l < kL; ++l) {
     leaders.push_back(l);
     if (l + 2 >= static_cast<size_t>(kFirstLengthLane) || l % 3 != 0) continue;
-    const double* x = wsum_lanes.get() + l * steps;
+    const double* x = wsum_lanes + l * steps;
     while (followers_of[l] < 2 &&
-           std::equal(x, x + steps, wsum_lanes.get() + (l + 1 + static_cast<size_t>(followers_of[l])) * steps,
-                      same_bits)) {
+           std::equal(x, x + steps, wsum_lanes + (l + 1 + static_cast<size_t>(followers_of[l])) * steps, same_bits)) {
       ++followers_of[l];
     }
     l += static_cast<size_t>(followers_of[l]);  // the followers run no filter of their own
   }
+  return out;
+}
+
+}  // namespace
+
+HandTrack fuse_default(const std::vector<const HandTrack*>& devices,
+                       const std::vector<const std::vector<float>*>& quality, const SmootherParams& p) {
+  using namespace fusion_smoother_detail;
+  const int n = devices.empty() ? 0 : devices.front()->frame_count;
+  HandTrack out(n);
+  if (n == 0) return out;
+  const double base_var = p.noise_mm * p.noise_mm;
+  constexpr auto kL = static_cast<size_t>(kFusionLanes);
+
+  const auto steps = static_cast<size_t>(n);
+  std::vector<double> wsum(kL * steps, 0.0), zsum(kL * steps, 0.0);
+  accumulate_device_sums(devices, quality, base_var, steps, wsum, zsum);
+
+  // The sums turned lane-major for the filter passes, which walk one lane's steps in a row; the
+  // smoothed lanes are turned back step-major for lanes_to_hand.
+  const auto wsum_lanes = transposed(wsum, steps, kL);
+  const auto zsum_lanes = transposed(zsum, steps, kL);
+  std::vector<double> smoothed(kL * steps, kNaN);  // lane-major
+  const FilterLeaders lanes = filter_leaders(wsum_lanes.get(), steps);
+  const std::vector<size_t>& leaders = lanes.leaders;
+  const std::vector<int>& followers_of = lanes.followers_of;
   // Each step's combined measurement of lane l: the inverse-variance mean and its variance.
   const auto fill_measurements = [&](size_t l, std::vector<Step>& lane) {
     for (size_t f = 0; f < steps; ++f) {
