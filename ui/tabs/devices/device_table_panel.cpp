@@ -5,6 +5,7 @@
 #include <string>
 
 #include "ui/widgets/imgui_colour.h"
+#include "ui/widgets/palette.h"
 
 namespace lmc::ui {
 
@@ -44,7 +45,7 @@ void DeviceTablePanel::draw() {
       ImGui::TextDisabled("-");
     } else if (!r.model_warning.empty()) {
       // Another model than its slot's: the layout's visibility does not hold for it.
-      ImGui::TextColored(ImVec4(1.0F, 0.55F, 0.3F, 1.0F), "%s (!)", r.model.c_str());
+      ImGui::TextColored(palette::kWarning, "%s (!)", r.model.c_str());
       if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", r.model_warning.c_str());
     } else {
       ImGui::TextUnformatted(r.model.c_str());
@@ -58,7 +59,7 @@ void DeviceTablePanel::draw() {
       ImGui::TextUnformatted(r.tracking_mode.c_str());
     ImGui::TableNextColumn();
     if (r.warn)
-      ImGui::TextColored(ImVec4(1.0F, 0.55F, 0.3F, 1.0F), "%s", r.status.c_str());
+      ImGui::TextColored(palette::kWarning, "%s", r.status.c_str());
     else
       ImGui::TextUnformatted(r.status.c_str());
     ImGui::TableNextColumn();
@@ -79,8 +80,7 @@ void DeviceTablePanel::draw() {
   if (rows.empty()) ImGui::TextDisabled(vm.running() ? "waiting for devices..." : "no backend running: press Start");
   // A controller the layout points away from the hand shows "no hand" forever: say it is the layout.
   ImGui::PushTextWrapPos(0.0F);
-  for (const std::string& w : vm.layout_warnings())
-    ImGui::TextColored(ImVec4(1.0F, 0.55F, 0.3F, 1.0F), "%s", w.c_str());
+  for (const std::string& w : vm.layout_warnings()) ImGui::TextColored(palette::kWarning, "%s", w.c_str());
   ImGui::PopTextWrapPos();
 }
 

@@ -20,10 +20,14 @@ class DevicesToolbarPanel {
 
  private:
   std::string backend_spec() const;
+  // The dropdown shows what runs whenever that changes (the automatic LeapC start, its fallback to
+  // the simulated rig, a start from elsewhere); the operator's own choice stands until then.
+  void follow_running_backend();
 
   std::shared_ptr<DevicesState> state_;
   int backend_choice_ = 0;
   char replay_[512] = "";
+  std::string followed_backend_;  // the running backend the dropdown last took
   FileBrowser save_browser_{"Save layout with serials", ".json"};
   WidgetAnchors anchors_;
 };
