@@ -9,6 +9,7 @@
 #include <string>
 
 #include "core/figures/axis_ticks.h"
+#include "ui/widgets/palette.h"
 #include "ui/widgets/plot_frame.h"
 
 namespace lmc::ui {
@@ -61,8 +62,8 @@ void draw_figure_view(const char* id, const Figure& f, float height_px) {
   const ImVec2 p0(top.x + kLeftGutterPx, top.y);
   const ImVec2 p1(top.x + width - kRightGutterPx, top.y + height_px);
   ImDrawList* dl = ImGui::GetWindowDrawList();
-  dl->AddRectFilled(p0, p1, IM_COL32(24, 26, 30, 255), 3.0F);
-  dl->AddRect(p0, p1, IM_COL32(80, 84, 92, 255), 3.0F);
+  dl->AddRectFilled(p0, p1, palette::kPanelBackground, 3.0F);
+  dl->AddRect(p0, p1, palette::kPanelBorder, 3.0F);
   ImGui::SetCursorScreenPos(p0);
   ImGui::InvisibleButton("figure", ImVec2(std::max(1.0F, p1.x - p0.x), height_px));
   const bool hovered = ImGui::IsItemHovered();
@@ -73,17 +74,17 @@ void draw_figure_view(const char* id, const Figure& f, float height_px) {
   for (const double t : yticks) {
     const float y = to_y(t);
     if (y < p0.y - 1 || y > p1.y + 1) continue;
-    dl->AddLine(ImVec2(p0.x, y), ImVec2(p1.x, y), kPlotGridLine);
+    dl->AddLine(ImVec2(p0.x, y), ImVec2(p1.x, y), palette::kPlotGridLine);
     const std::string text = tick_label(t, yticks);
     dl->AddText(ImVec2(p0.x - ImGui::CalcTextSize(text.c_str()).x - 4, y - ImGui::GetTextLineHeight() * 0.5F),
-                kPlotTickText, text.c_str());
+                palette::kPlotTickText, text.c_str());
   }
   const auto xticks = nice_ticks(xr.lo, xr.hi, std::max(2, static_cast<int>((p1.x - p0.x) / 90)));
   for (const double t : xticks) {
     const float x = to_x(t);
     if (x < p0.x - 1 || x > p1.x + 1) continue;
-    dl->AddLine(ImVec2(x, p0.y), ImVec2(x, p1.y), kPlotGridLine);
-    dl->AddText(ImVec2(x - 8, p1.y + 2), kPlotTickText, tick_label(t, xticks).c_str());
+    dl->AddLine(ImVec2(x, p0.y), ImVec2(x, p1.y), palette::kPlotGridLine);
+    dl->AddText(ImVec2(x - 8, p1.y + 2), palette::kPlotTickText, tick_label(t, xticks).c_str());
   }
   // Reference lines, their labels in the right gutter.
   for (const auto& r : f.references) {

@@ -11,6 +11,7 @@
 #include "ui/scene/label_spreading.h"
 #include "ui/scene/scene_items.h"
 #include "ui/widgets/imgui_colour.h"
+#include "ui/widgets/palette.h"
 
 namespace lmc::ui {
 
@@ -27,7 +28,7 @@ void draw_live_hands_view(const char* id, OrbitCamera& camera, const Layout& lay
   if (ImGui::IsItemHovered() && io.MouseWheel != 0) {
     camera.zoom_towards(io.MousePos.x - origin.x, io.MousePos.y - origin.y, size.x, size.y, io.MouseWheel);
   }
-  dl->AddRectFilled(origin, ImVec2(origin.x + size.x, origin.y + size.y), IM_COL32(24, 26, 30, 255));
+  dl->AddRectFilled(origin, ImVec2(origin.x + size.x, origin.y + size.y), palette::kPanelBackground);
   auto proj = [&](const Eigen::Vector3d& w) -> std::optional<Eigen::Vector2d> {
     auto p = camera.project(w, size.x, size.y);
     if (p) *p += Eigen::Vector2d(origin.x, origin.y);
@@ -43,13 +44,13 @@ void draw_live_hands_view(const char* id, OrbitCamera& camera, const Layout& lay
   dl->PushClipRect(origin, ImVec2(origin.x + size.x, origin.y + size.y), true);
   // The table top (y = 0), 50 mm grid, world axes at the origin.
   for (int k = -300; k <= 300; k += 50) {
-    const ImU32 col = k == 0 ? IM_COL32(90, 90, 100, 255) : IM_COL32(55, 58, 65, 255);
+    const ImU32 col = k == 0 ? palette::kGridCentre : palette::kGrid;
     line({static_cast<double>(k), 0, -300}, {static_cast<double>(k), 0, 300}, col, 1.0F);
     line({-300, 0, static_cast<double>(k)}, {300, 0, static_cast<double>(k)}, col, 1.0F);
   }
-  line({0, 0, 0}, {60, 0, 0}, IM_COL32(220, 80, 80, 255), 2.0F);
-  line({0, 0, 0}, {0, 60, 0}, IM_COL32(80, 220, 80, 255), 2.0F);
-  line({0, 0, 0}, {0, 0, 60}, IM_COL32(80, 120, 240, 255), 2.0F);
+  line({0, 0, 0}, {60, 0, 0}, palette::kAxisX, 2.0F);
+  line({0, 0, 0}, {0, 60, 0}, palette::kAxisY, 2.0F);
+  line({0, 0, 0}, {0, 0, 60}, palette::kAxisZ, 2.0F);
   struct SlotLabel {
     Eigen::Vector2d at;  // projected anchor, pixels
     ImU32 colour;
@@ -119,12 +120,12 @@ void draw_live_hands_view(const char* id, OrbitCamera& camera, const Layout& lay
   }
   boxes = spread_labels(std::move(boxes), 1.0f);
   for (size_t i = 0; i < labels.size(); ++i) {
-    dl->AddText(ImVec2(boxes[i].x + 1, boxes[i].y + 1), IM_COL32(0, 0, 0, 200), labels[i].text.c_str());
+    dl->AddText(ImVec2(boxes[i].x + 1, boxes[i].y + 1), palette::kTextShadow, labels[i].text.c_str());
     dl->AddText(ImVec2(boxes[i].x, boxes[i].y), labels[i].colour, labels[i].text.c_str());
   }
   dl->PopClipRect();
   // Wrapped to the canvas: a caption wider than a narrow view must not run off under the next panel.
-  dl->AddText(ImGui::GetFont(), ImGui::GetFontSize(), ImVec2(origin.x + 8, origin.y + 6), IM_COL32(200, 200, 210, 255),
+  dl->AddText(ImGui::GetFont(), ImGui::GetFontSize(), ImVec2(origin.x + 8, origin.y + 6), palette::kViewCaption,
               caption.c_str(), nullptr, std::max(size.x - 16.0F, 1.0F));
 }
 

@@ -8,6 +8,7 @@
 
 #include "core/common/paths.h"
 #include "ui/scene/colour_maps.h"
+#include "ui/widgets/palette.h"
 
 namespace lmc::ui {
 namespace {
@@ -25,7 +26,7 @@ void CoveragePanel::draw() {
   ImGui::SameLine();
   if (!poses) {
     ImGui::TextDisabled(s.poses.error().empty() ? "- loading the pose set..." : "- pose set failed to load");
-    if (!s.poses.error().empty()) ImGui::TextColored(ImVec4(1, 0.45f, 0.4f, 1), "%s", s.poses.error().c_str());
+    if (!s.poses.error().empty()) ImGui::TextColored(palette::kError, "%s", s.poses.error().c_str());
     return;
   }
   ImGui::TextDisabled("on %d pose-set frames", poses->size());
@@ -43,9 +44,9 @@ void CoveragePanel::draw() {
   if (const std::string m = s.report_job.message(); !m.empty()) ImGui::TextDisabled("%s", m.c_str());
   if (!s.coverage.up_to_date()) {
     ImGui::SameLine();
-    ImGui::TextColored(ImVec4(0.95f, 0.8f, 0.35f, 1.0f), "updating");
+    ImGui::TextColored(palette::kWarning, "updating");
   }
-  if (!s.coverage.error().empty()) ImGui::TextColored(ImVec4(1, 0.45f, 0.4f, 1), "%s", s.coverage.error().c_str());
+  if (!s.coverage.error().empty()) ImGui::TextColored(palette::kError, "%s", s.coverage.error().c_str());
   if (!snap || snap->all.devices == 0) return;
   const Coverage& c = snap->all;
   const Layout& l = s.layout();
@@ -61,7 +62,7 @@ void CoveragePanel::draw() {
       const bool sel = d == s.selected;
       const char* slot = d < l.device_count() ? l.devices[static_cast<size_t>(d)].slot.c_str() : "?";
       if (sel) {
-        ImGui::TextColored(ImVec4(1.0f, 0.62f, 0.2f, 1.0f), "%s", slot);
+        ImGui::TextColored(palette::kAttention, "%s", slot);
       } else {
         ImGui::TextUnformatted(slot);
       }
@@ -74,7 +75,7 @@ void CoveragePanel::draw() {
     }
     ImGui::TableNextRow();
     ImGui::TableSetColumnIndex(0);
-    ImGui::TextColored(ImVec4(1.0f, 0.5f, 0.45f, 1.0f), "nobody");
+    ImGui::TextColored(palette::kError, "nobody");
     for (int k = 0; k < kNumDigits; ++k) {
       ImGui::TableSetColumnIndex(k + 1);
       const double f = c.finger_unseen_fraction(k);
@@ -111,7 +112,7 @@ void CoveragePanel::draw() {
     const float frac = static_cast<float>(c.c[i]) / static_cast<float>(n);
     const float h = ImGui::GetTextLineHeight() - 2;
     ImDrawList* dl = ImGui::GetWindowDrawList();
-    dl->AddRectFilled(ImVec2(p.x, p.y + 1), ImVec2(p.x + full_w, p.y + 1 + h), IM_COL32(40, 42, 48, 255), 2.0f);
+    dl->AddRectFilled(ImVec2(p.x, p.y + 1), ImVec2(p.x + full_w, p.y + 1 + h), palette::kTableBar, 2.0f);
     const Rgba col = seen_count_colour(static_cast<int>(i));
     dl->AddRectFilled(ImVec2(p.x, p.y + 1), ImVec2(p.x + full_w * frac, p.y + 1 + h),
                       ImGui::ColorConvertFloat4ToU32(ImVec4(col.r, col.g, col.b, 0.9f)), 2.0f);

@@ -5,6 +5,7 @@
 #include <string>
 
 #include "ui/widgets/colour_legend.h"
+#include "ui/widgets/palette.h"
 #include "ui/widgets/progress_row.h"
 
 namespace lmc::ui {
@@ -20,7 +21,7 @@ void HeatmapPanel::draw() {
       "other controller sees the finger.");
   ImGui::PopTextWrapPos();
   if (s.selected < 0) {
-    ImGui::TextColored(ImVec4(1.0f, 0.75f, 0.3f, 1.0f), "Select a controller to sweep.");
+    ImGui::TextColored(palette::kWarning, "Select a controller to sweep.");
   } else {
     ImGui::Text("Controller: %s", s.layout().devices[static_cast<size_t>(s.selected)].slot.c_str());
   }
@@ -50,7 +51,7 @@ void HeatmapPanel::draw() {
   if (s.heatmap.computing()) {
     draw_progress_row("heatmap", s.heatmap.fraction(), s.heatmap.stage(), 0.0, std::nullopt, false);
   }
-  if (!s.heatmap.error().empty()) ImGui::TextColored(ImVec4(1, 0.45f, 0.4f, 1), "%s", s.heatmap.error().c_str());
+  if (!s.heatmap.error().empty()) ImGui::TextColored(palette::kError, "%s", s.heatmap.error().c_str());
 }
 
 }  // namespace lmc::ui

@@ -5,6 +5,7 @@
 #include <cstdio>
 
 #include "core/io/sensor_catalogue_json.h"
+#include "ui/widgets/palette.h"
 
 namespace lmc::ui {
 
@@ -184,7 +185,7 @@ void InspectorPanel::draw_model_and_sensor(int index) {
       char model_text[48];
       std::snprintf(model_text, sizeof model_text, "%.0f%s", f.model_value, f.unit);
       ImGui::SameLine();
-      ImGui::TextColored(ImVec4(1.0f, 0.70f, 0.30f, 1.0f), "overrides %s", model_text);
+      ImGui::TextColored(palette::kWarning, "overrides %s", model_text);
       anchors_.remember(std::string("override.") + f.key);
     }
     ImGui::PopID();

@@ -7,6 +7,7 @@
 #include <string>
 
 #include "core/metric/robust_metric.h"
+#include "ui/widgets/palette.h"
 #include "ui/widgets/progress_row.h"
 #include "ui/widgets/series_plot.h"
 
@@ -96,7 +97,7 @@ void OptimiserPanel::draw_pose_set() {
       ImGui::PushTextWrapPos(0.0f);
       for (const auto& line : p->set.provenance) ImGui::TextDisabled("%s", line.c_str());
       if (!p->left_out.empty()) {
-        ImGui::TextColored(ImVec4(1, 0.75f, 0.3f, 1), "%zu trials left out (hover)", p->left_out.size());
+        ImGui::TextColored(palette::kWarning, "%zu trials left out (hover)", p->left_out.size());
         if (ImGui::IsItemHovered()) {
           std::string all;
           for (const auto& l : p->left_out) all += l + "\n";
@@ -108,7 +109,7 @@ void OptimiserPanel::draw_pose_set() {
   }
   if (!s.poses.error().empty()) {
     ImGui::PushTextWrapPos(0.0f);
-    ImGui::TextColored(ImVec4(1, 0.45f, 0.4f, 1), "%s", s.poses.error().c_str());
+    ImGui::TextColored(palette::kError, "%s", s.poses.error().c_str());
     ImGui::PopTextWrapPos();
   }
 }
@@ -288,7 +289,7 @@ void OptimiserPanel::draw_run() {
   }
   if (job.state() == JobState::kFailed) {
     ImGui::PushTextWrapPos(0.0f);
-    ImGui::TextColored(ImVec4(1, 0.45f, 0.4f, 1), "Failed: %s", job.error().c_str());
+    ImGui::TextColored(palette::kError, "Failed: %s", job.error().c_str());
     ImGui::PopTextWrapPos();
   }
   const auto outcome = job.outcome();
@@ -382,9 +383,7 @@ void OptimiserPanel::draw_comparison() {
     ImGui::TableSetColumnIndex(3);
     const double diff = b - a;
     const bool better = lower_better ? diff < 0 : diff > 0;
-    const ImVec4 col = diff == 0 ? ImVec4(0.7f, 0.7f, 0.7f, 1)
-                       : better  ? ImVec4(0.4f, 0.9f, 0.45f, 1)
-                                 : ImVec4(1, 0.45f, 0.4f, 1);
+    const ImVec4 col = diff == 0 ? palette::kMuted : better ? palette::kOk : palette::kError;
     percent ? ImGui::TextColored(col, "%+.1f pt", diff * 100) : ImGui::TextColored(col, "%+.4g", diff);
   };
   row_num("M, all frames", cur->all.metric, cand.all.metric, true, false);

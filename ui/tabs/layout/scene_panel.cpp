@@ -13,6 +13,7 @@
 #include "ui/scene/device_case.h"
 #include "ui/scene/label_spreading.h"
 #include "ui/widgets/imgui_colour.h"
+#include "ui/widgets/palette.h"
 
 namespace lmc::ui {
 namespace {
@@ -232,7 +233,7 @@ void ScenePanel::draw(ImVec2 size) {
   if (tex != 0) {
     dl->AddImage(reinterpret_cast<ImTextureID>(tex), image_min_, image_max, ImVec2(0, 1), ImVec2(1, 0));
   } else {
-    dl->AddRectFilled(image_min_, image_max, IM_COL32(27, 29, 34, 255));
+    dl->AddRectFilled(image_min_, image_max, palette::kSceneBackground);
   }
   draw_overlays(dl);
 }
@@ -296,21 +297,21 @@ void ScenePanel::draw_overlays(ImDrawList* dl) {
     if (text_box.Overlaps(legend_box) || (heat_bar && text_box.Overlaps(bar_box))) continue;
     if (l.emphasised) {
       dl->AddRectFilled(ImVec2(pos.x - 3, pos.y - 1), ImVec2(pos.x + size.x + 3, pos.y + size.y + 1),
-                        IM_COL32(20, 20, 24, 190), 3.0f);
+                        palette::kLabelBackground, 3.0f);
     }
-    dl->AddText(ImVec2(pos.x + 1, pos.y + 1), IM_COL32(0, 0, 0, 200), l.text.c_str());
+    dl->AddText(ImVec2(pos.x + 1, pos.y + 1), palette::kTextShadow, l.text.c_str());
     dl->AddText(pos, to_u32(l.colour), l.text.c_str());
   }
 
-  dl->AddRectFilled(ImVec2(at.x - 6, at.y - 6), ImVec2(at.x + legend_w, at.y + line + 6), IM_COL32(18, 19, 23, 200),
+  dl->AddRectFilled(ImVec2(at.x - 6, at.y - 6), ImVec2(at.x + legend_w, at.y + line + 6), palette::kOverlayBackground,
                     4.0f);
-  dl->AddText(at, IM_COL32(210, 212, 218, 255), title);
+  dl->AddText(at, palette::kOverlayText, title);
   float x = at.x + ImGui::CalcTextSize(title).x + 10;
   for (int c = 0; c < kSeenCountCategories; ++c) {
     dl->AddRectFilled(ImVec2(x, at.y + 1), ImVec2(x + line - 2, at.y + line - 1), to_u32(seen_count_colour(c)), 2.0f);
     x += line + 2;
     const std::string label = seen_count_label(c);
-    dl->AddText(ImVec2(x, at.y), IM_COL32(210, 212, 218, 255), label.c_str());
+    dl->AddText(ImVec2(x, at.y), palette::kOverlayText, label.c_str());
     x += ImGui::CalcTextSize(label.c_str()).x + 12;
   }
 
@@ -318,8 +319,8 @@ void ScenePanel::draw_overlays(ImDrawList* dl) {
   if (heat_bar) {
     const float bw = bar_w, bx = image_max.x - bw - 16, by = image_max.y - 14 - line * 2.6f;
     dl->AddRectFilled(ImVec2(bx - 8, by - line - 10), ImVec2(image_max.x - 6, image_max.y - 6),
-                      IM_COL32(18, 19, 23, 200), 4.0f);
-    dl->AddText(ImVec2(bx, by - line - 4), IM_COL32(210, 212, 218, 255), head);
+                      palette::kOverlayBackground, 4.0f);
+    dl->AddText(ImVec2(bx, by - line - 4), palette::kOverlayText, head);
     const ColourRange range = s.heatmap_range();
     constexpr int kSteps = 44;
     for (int i = 0; i < kSteps; ++i) {
@@ -333,9 +334,9 @@ void ScenePanel::draw_overlays(ImDrawList* dl) {
     std::snprintf(mid, sizeof mid, "%.0f %%", 0.5 * (range.lo + range.hi) * 100);
     std::snprintf(hi, sizeof hi, "%.0f %%", range.hi * 100);
     const float ty = by + line * 0.9f;
-    dl->AddText(ImVec2(bx, ty), IM_COL32(200, 202, 208, 255), lo);
-    dl->AddText(ImVec2(bx + bw * 0.5f - ImGui::CalcTextSize(mid).x * 0.5f, ty), IM_COL32(200, 202, 208, 255), mid);
-    dl->AddText(ImVec2(bx + bw - ImGui::CalcTextSize(hi).x, ty), IM_COL32(200, 202, 208, 255), hi);
+    dl->AddText(ImVec2(bx, ty), palette::kOverlayTickText, lo);
+    dl->AddText(ImVec2(bx + bw * 0.5f - ImGui::CalcTextSize(mid).x * 0.5f, ty), palette::kOverlayTickText, mid);
+    dl->AddText(ImVec2(bx + bw - ImGui::CalcTextSize(hi).x, ty), palette::kOverlayTickText, hi);
   }
   dl->PopClipRect();
 

@@ -1,5 +1,7 @@
 #include "ui/tabs/record/record_setup_panel.h"
 
+#include "ui/widgets/palette.h"
+
 #include <imgui.h>
 
 #include <algorithm>
@@ -8,7 +10,7 @@
 namespace lmc::ui {
 namespace {
 
-const ImVec4 kProblem{1.0F, 0.4F, 0.35F, 1.0F};
+const ImVec4& kProblem = palette::kError;
 
 // The field's problem, in red right under it (nothing when it is fine).
 void problem_line(const std::string& problem) {

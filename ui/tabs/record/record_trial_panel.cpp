@@ -11,12 +11,13 @@
 #include "ui/tabs/record/record_colours.h"
 #include "ui/widgets/hand_pictogram.h"
 #include "ui/widgets/live_hands_view.h"
+#include "ui/widgets/palette.h"
 
 namespace lmc::ui {
 namespace {
 
-const ImVec4 kRed{1.0F, 0.3F, 0.3F, 1.0F};
-const ImVec4 kGreen{0.35F, 0.85F, 0.4F, 1.0F};
+const ImVec4& kRed = palette::kFail;
+const ImVec4& kGreen = palette::kOk;
 
 void big_text(const std::string& text, float scale) {
   ImGui::SetWindowFontScale(scale);
@@ -38,7 +39,7 @@ void recording_circle(bool counting_down) {
   ImDrawList* dl = ImGui::GetWindowDrawList();
   const ImVec2 p = ImGui::GetCursorScreenPos();
   const float r = 34.0F;
-  const ImU32 fill = counting_down ? IM_COL32(120, 120, 120, 255) : IM_COL32(230, 40, 40, 255);
+  const ImU32 fill = counting_down ? palette::kCountdownCircle : palette::kRecordingCircle;
   dl->AddCircleFilled(ImVec2(p.x + r, p.y + r), r, fill, 48);
   ImGui::Dummy(ImVec2(2 * r + 8, 2 * r));
 }
@@ -66,7 +67,7 @@ TrialPanelAction RecordTrialPanel::preflight_section() {
   ImGui::Spacing();
   if (const auto& report = model.last_preflight()) preflight_checklist(*report);
   // One action per key: Space runs the pre-flight here; Start appears once the block is cleared.
-  if (big_button("Run pre-flight  [Space]", ImVec4(0.2F, 0.4F, 0.7F, 1.0F))) action = TrialPanelAction::kPreflight;
+  if (big_button("Run pre-flight  [Space]", palette::kButtonAction)) action = TrialPanelAction::kPreflight;
   anchors_.remember("preflight");
   ImGui::TextDisabled(
       "Start [Space] comes when every pre-flight line is green, or after an override with a typed "
@@ -135,7 +136,7 @@ TrialPanelAction RecordTrialPanel::draw() {
   TrialPanelAction action = TrialPanelAction::kNone;
   const auto& state = model.state();
   // The plain notice of a resumed session, until the first attempt of this run begins.
-  ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0F, 0.6F, 0.2F, 1.0F));
+  ImGui::PushStyleColor(ImGuiCol_Text, palette::kAttention);
   for (const auto& line : model.resume_notice()) ImGui::TextWrapped("%s", line.c_str());
   ImGui::PopStyleColor();
 
@@ -161,13 +162,13 @@ TrialPanelAction RecordTrialPanel::draw() {
   ImGui::PushTextWrapPos(ImGui::GetCursorPosX() + cue_width);
   big_text(trial.plan.name, 2.0F);
   ImGui::TextWrapped("Operator: %s", type.operator_cue.c_str());
-  ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0F, 0.9F, 0.5F, 1.0F));
+  ImGui::PushStyleColor(ImGuiCol_Text, palette::kCue);
   big_text("Subject: " + type.subject_cue, 1.4F);
   ImGui::PopStyleColor();
   // Overridden in this run (a pre-flight that passed since says nothing more).
   if (const auto it = state.preflight_override.find(trial.plan.layout_key);
       it != state.preflight_override.end() && !(model.last_preflight() && model.last_preflight()->ok()))
-    ImGui::TextColored(ImVec4(1.0F, 0.75F, 0.2F, 1.0F), "Pre-flight overridden: %s (journaled)", it->second.c_str());
+    ImGui::TextColored(palette::kWarning, "Pre-flight overridden: %s (journaled)", it->second.c_str());
   ImGui::PopTextWrapPos();
   const float cue_bottom = ImGui::GetCursorScreenPos().y;
   if (const auto pictogram =
@@ -204,7 +205,7 @@ TrialPanelAction RecordTrialPanel::draw() {
       ImGui::ProgressBar(std::clamp(f, 0.0F, 1.0F), ImVec2(360, 0));
     }
     ImGui::EndGroup();
-    if (big_button("Stop  [Space]", ImVec4(0.7F, 0.15F, 0.15F, 1.0F))) action = TrialPanelAction::kStop;
+    if (big_button("Stop  [Space]", palette::kButtonStop)) action = TrialPanelAction::kStop;
     ImGui::SameLine();
     if (ImGui::Button("Abort  [Esc]", ImVec2(160, 52))) action = TrialPanelAction::kAbort;
     ImGui::SameLine();
@@ -238,7 +239,7 @@ TrialPanelAction RecordTrialPanel::draw() {
     ImGui::TextColored(kGreen, "%s is accepted.", trial.plan.name.c_str());
     ImGui::TextDisabled("R records it again (this attempt is kept under superseded/); pick another trial in the list.");
   } else if (!model.busy()) {
-    if (big_button("Start  [Space]", ImVec4(0.15F, 0.55F, 0.25F, 1.0F))) action = TrialPanelAction::kStart;
+    if (big_button("Start  [Space]", palette::kButtonGo)) action = TrialPanelAction::kStart;
     anchors_.remember("start");
   }
   if (trial.attempts.size() > 0 && trial.status != TrialStatus::kAccepted)

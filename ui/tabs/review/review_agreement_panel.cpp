@@ -15,6 +15,7 @@
 #include "ui/scene/colour_maps.h"
 #include "ui/widgets/figure_view.h"
 #include "ui/widgets/imgui_colour.h"
+#include "ui/widgets/palette.h"
 
 namespace lmc::ui {
 namespace {
@@ -143,7 +144,7 @@ void draw_visibility_map(const VisibilityMap& map) {
       const Rgba colour = viridis((cell->rate_mean + 1.0) / 2.0);
       ImGui::TableSetBgColor(ImGuiTableBgTarget_CellBg, to_u32(colour, 0.85F));
       const bool light = colour.r * 0.3 + colour.g * 0.6 + colour.b * 0.1 > 0.55;
-      ImGui::TextColored(light ? ImVec4(0, 0, 0, 1) : ImVec4(1, 1, 1, 1), "%s",
+      ImGui::TextColored(light ? palette::kBlack : palette::kWhite, "%s",
                          format_readable(cell->rate_mean, 2, true).c_str());
       if (ImGui::IsItemHovered()) {
         ImGui::SetTooltip(

@@ -10,6 +10,7 @@
 
 #include "core/common/number_format.h"
 #include "ui/model/review/trial_table_height.h"
+#include "ui/widgets/palette.h"
 
 namespace lmc::ui {
 namespace {
@@ -41,15 +42,15 @@ void number_cell(double v, int decimals, bool signed_value, const char* suffix =
 ImVec4 status_colour(TrialRowStatus s) {
   switch (s) {
     case TrialRowStatus::kOk:
-      return ImVec4(0.55F, 0.85F, 0.55F, 1);
+      return palette::kOk;
     case TrialRowStatus::kNoVicon:
-      return ImVec4(0.85F, 0.80F, 0.45F, 1);
+      return palette::kWarning;
     case TrialRowStatus::kFailed:
-      return ImVec4(0.95F, 0.45F, 0.35F, 1);
+      return palette::kError;
     case TrialRowStatus::kCancelled:
-      return ImVec4(0.6F, 0.6F, 0.6F, 1);
+      return palette::kMuted;
   }
-  return ImVec4(1, 1, 1, 1);
+  return palette::kWhite;
 }
 
 }  // namespace
@@ -152,7 +153,7 @@ void ReviewTrialTablePanel::draw_table(float height_px) {
         ImGui::BeginTooltip();
         ImGui::Text("%s  (%s%s)", t.job.lmc.string().c_str(), t.job.vicon ? "with Vicon" : "no Vicon file",
                     t.from_cache ? ", from the cache" : "");
-        if (!row.error.empty()) ImGui::TextColored(ImVec4(0.95F, 0.45F, 0.35F, 1), "%s", row.error.c_str());
+        if (!row.error.empty()) ImGui::TextColored(palette::kError, "%s", row.error.c_str());
         for (const auto& w : t.outcome.warnings) ImGui::TextDisabled("%s", w.c_str());
         ImGui::EndTooltip();
       }

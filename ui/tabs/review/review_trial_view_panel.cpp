@@ -11,6 +11,7 @@
 #include "ui/widgets/figure_view.h"
 #include "ui/widgets/flow_row.h"
 #include "ui/widgets/label_strips.h"
+#include "ui/widgets/palette.h"
 
 namespace lmc::ui {
 namespace {
@@ -53,7 +54,7 @@ void ReviewTrialViewPanel::draw(const PictureRenderer& renderer) {
     } else if (state.selected() < 0) {
       ImGui::TextDisabled("Click a trial in the table to see it against Vicon.");
     } else if (state.view_job().state() == JobState::kFailed) {
-      ImGui::TextColored(ImVec4(0.95F, 0.45F, 0.35F, 1), "%s", state.view_job().error().c_str());
+      ImGui::TextColored(palette::kError, "%s", state.view_job().error().c_str());
     }
     return;
   }
@@ -97,7 +98,7 @@ void ReviewTrialViewPanel::draw(const PictureRenderer& renderer) {
   }
   if (!view->warnings.empty()) {
     ImGui::SameLine();
-    ImGui::TextColored(ImVec4(0.85F, 0.80F, 0.45F, 1), "%zu warning(s)", view->warnings.size());
+    ImGui::TextColored(palette::kWarning, "%zu warning(s)", view->warnings.size());
     if (ImGui::IsItemHovered()) {
       ImGui::BeginTooltip();
       for (const auto& w : view->warnings) ImGui::TextUnformatted(w.c_str());
