@@ -44,6 +44,10 @@ inline constexpr ImU32 kOverlayText = IM_COL32(210, 212, 218, 255);
 inline constexpr ImU32 kOverlayTickText = IM_COL32(200, 202, 208, 255);
 inline constexpr ImU32 kRecordingCircle = IM_COL32(230, 40, 40, 255);
 inline constexpr ImU32 kCountdownCircle = IM_COL32(120, 120, 120, 255);
+// A table cell of frames in which no controller sees a finger: redder the more there are.
+inline ImU32 unseen_cell(double share) {
+  return IM_COL32(200, 50, 45, static_cast<int>(60 + 150 * (share * 3 < 1.0 ? share * 3 : 1.0)));
+}
 inline constexpr ImU32 kTableBar = IM_COL32(40, 42, 48, 255);  // the empty part of a bar in a table cell
 // A frame's label in a strip: the hand seen (bluish green), the tracker's internal model (orange),
 // no hand (the strip's background); Okabe-Ito colours, like the plots'.

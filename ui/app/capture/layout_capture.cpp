@@ -34,7 +34,7 @@ int env_int(const char* name) {
 // frame of the shell (every tab's update and this tab's draw, GL submission included).
 class FrameStats {
  public:
-  FrameStats(LayoutTabState& state, int frames) : state_(state), wanted_(frames) {
+  FrameStats(LayoutState& state, int frames) : state_(state), wanted_(frames) {
     start_pose_ = state_.layout().devices[1].pose;
   }
   bool running() const { return frame_ < wanted_; }
@@ -45,7 +45,7 @@ class FrameStats {
   }
   void after_frame() {
     if (frame_ == 0 || frame_ > wanted_) return;
-    if (const auto snap = state_.coverage.latest(); snap && snap.get() != last_snapshot_) {
+    if (const auto snap = state_.coverage().latest(); snap && snap.get() != last_snapshot_) {
       last_snapshot_ = snap.get();
       ++coverage_updates_;
     }
@@ -59,8 +59,8 @@ class FrameStats {
     return std::chrono::duration<double, std::milli>(now - frame_start_).count();
   }
   void drag_step() {
-    LayoutTabState& s = state_;
-    if (frame_ >= wanted_ || s.selected < 0 || !s.poses.current()) return;
+    LayoutState& s = state_;
+    if (frame_ >= wanted_ || s.selected() < 0 || !s.poses.current()) return;
     // Start once the heatmap and coverage have settled, so the figure is "dragging with live
     // coverage", not "dragging while the first heatmap sweep is still running".
     if (frame_ == 0 && s.busy()) return;
@@ -69,11 +69,11 @@ class FrameStats {
     DevicePose p = start_pose_;
     p.x_mm += 80.0 * std::sin(t);
     p.z_mm += 80.0 * (1.0 - std::cos(t));
-    preview_device_pose(s.upd_history(), s.selected, p);
-    if (++frame_ == wanted_) commit_device_pose(s.upd_history(), s.selected, "Move");
+    preview_device_pose(s.upd_history(), s.selected(), p);
+    if (++frame_ == wanted_) commit_device_pose(s.upd_history(), s.selected(), "Move");
   }
 
-  LayoutTabState& state_;
+  LayoutState& state_;
   int wanted_ = 0;
   int frame_ = 0;
   DevicePose start_pose_;
@@ -93,14 +93,15 @@ void FrameStats::report() const {
     return v[std::min(v.size() - 1, static_cast<size_t>(q * static_cast<double>(v.size())))];
   };
   const PoseSetPtr p = state_.poses.current();
-  std::fprintf(stderr,
-               "layout tab frame CPU (every tab's update + the layout tab's draw incl. scene rendering), %zu frames "
-               "while dragging %s: mean %.2f ms, median %.2f ms, p95 %.2f ms, max %.2f ms; %d controllers, %d-frame "
-               "pose set, %d coverage updates during the drag\n",
-               v.size(),
-               state_.selected >= 0 ? state_.layout().devices[static_cast<size_t>(state_.selected)].slot.c_str() : "-",
-               sum / static_cast<double>(v.size()), pct(0.5), pct(0.95), v.back(), state_.layout().device_count(),
-               p ? p->size() : 0, coverage_updates_);
+  std::fprintf(
+      stderr,
+      "layout tab frame CPU (every tab's update + the layout tab's draw incl. scene rendering), %zu frames "
+      "while dragging %s: mean %.2f ms, median %.2f ms, p95 %.2f ms, max %.2f ms; %d controllers, %d-frame "
+      "pose set, %d coverage updates during the drag\n",
+      v.size(),
+      state_.selected() >= 0 ? state_.layout().devices[static_cast<size_t>(state_.selected())].slot.c_str() : "-",
+      sum / static_cast<double>(v.size()), pct(0.5), pct(0.95), v.back(), state_.layout().device_count(),
+      p ? p->size() : 0, coverage_updates_);
 }
 
 class LayoutCapture final : public TabCapture {
@@ -108,7 +109,7 @@ class LayoutCapture final : public TabCapture {
   explicit LayoutCapture(LayoutTab& tab) : tab_(tab) {}
 
   int prepare() override {
-    LayoutTabState& s = tab_.state();
+    LayoutState& s = tab_.state();
     // What a new user sees first, or LMC_LAYOUT_PRESET=NAME (the Devices capture follows it).
     const char* preset = std::getenv("LMC_LAYOUT_PRESET");
     s.load_preset(preset != nullptr && *preset != '\0' ? preset : LayoutTab::kStartLayout);
@@ -148,7 +149,7 @@ class LayoutCapture final : public TabCapture {
 
   void prepare_extra(const std::string& name) override {
     if (name != "layout-mixed-rig") return;
-    LayoutTabState& s = tab_.state();
+    LayoutState& s = tab_.state();
     const char* models[] = {"lmc", "lmc", "lmc2", "lmc2"};
     for (int i = 0; i < s.layout().device_count() && i < 4; ++i) {
       const size_t steps = s.history().undo_size();
@@ -195,10 +196,12 @@ class LayoutCapture final : public TabCapture {
   }
 
   void start_search(int iterations) {
-    LayoutTabState& s = tab_.state();
-    s.pso.iterations = iterations;
+    LayoutState& s = tab_.state();
+    PsoSettings pso = s.pso();
+    pso.iterations = iterations;
+    s.set_pso(pso);
     // LMC_LAYOUT_STARTS=N: a multi-start run, so the picture shows a convergence curve per start.
-    if (const int starts = env_int("LMC_LAYOUT_STARTS"); starts > 0) s.optimiser_starts = starts;
+    if (const int starts = env_int("LMC_LAYOUT_STARTS"); starts > 0) s.set_optimiser_starts(starts);
     s.update(0.0);
     s.poses.wait();
     s.update(0.0);

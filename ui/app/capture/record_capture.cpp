@@ -134,7 +134,7 @@ class RecordCapture final : public TabCapture {
   }
 
   RecordTab& tab_;
-  RecordSessionModel& model_;
+  RecordState& model_;
   SubjectScreenLink& subject_;
   CaptureScratch scratch_;  // removed after the shell: the session writing into it has closed
   bool driving_ = false;

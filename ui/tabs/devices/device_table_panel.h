@@ -5,12 +5,13 @@
 #include <memory>
 
 #include "ui/model/devices/devices_state.h"
+#include "ui/widgets/panel.h"
 
 namespace lmc::ui {
 
-class DeviceTablePanel {
+class DeviceTablePanel : public Panel {
  public:
-  explicit DeviceTablePanel(std::shared_ptr<DevicesState> state) : state_(std::move(state)) {}
+  explicit DeviceTablePanel(std::shared_ptr<DevicesState> state) : Panel("##device_table"), state_(std::move(state)) {}
   void draw();
 
  private:

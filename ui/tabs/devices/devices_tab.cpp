@@ -46,10 +46,9 @@ void DevicesTab::draw() {
   recording_.draw();
   const ImVec2 avail = ImGui::GetContentRegionAvail();
   const float side_width = std::max(380.0F, avail.x * 0.36F);
-  ImGui::BeginChild("live_view", ImVec2(avail.x - side_width - 8.0F, avail.y), true,
-                    ImGuiWindowFlags_NoScrollbar | ImGuiWindowFlags_NoScrollWithMouse);
-  live_hands_.draw();
-  ImGui::EndChild();
+  if (const auto window = live_hands_.window(ImVec2(avail.x - side_width - 8.0F, avail.y), true,
+                                             ImGuiWindowFlags_NoScrollbar | ImGuiWindowFlags_NoScrollWithMouse))
+    live_hands_.draw();
   ImGui::SameLine();
   ImGui::BeginGroup();
   // The Calibrate step above the log: its result table needs most of the height while shown.
@@ -57,12 +56,8 @@ void DevicesTab::draw() {
   const bool result = stage == CalibrationStage::kResult || stage == CalibrationStage::kApplied;
   const float line = ImGui::GetFrameHeightWithSpacing();
   const float calibrate_height = result ? std::max(avail.y * 0.72F, avail.y - 6.0F * line) : 5.0F * line;
-  ImGui::BeginChild("calibrate", ImVec2(side_width, calibrate_height), true);
-  calibrate_.draw();
-  ImGui::EndChild();
-  ImGui::BeginChild("device_log", ImVec2(side_width, 0), true);
-  log_.draw();
-  ImGui::EndChild();
+  if (const auto window = calibrate_.window(ImVec2(side_width, calibrate_height), true)) calibrate_.draw();
+  if (const auto window = log_.window(ImVec2(side_width, 0), true)) log_.draw();
   ImGui::EndGroup();
   handle_shortcuts();
 }

@@ -7,13 +7,15 @@
 
 #include "ui/model/devices/devices_state.h"
 #include "ui/widgets/file_browser.h"
+#include "ui/widgets/panel.h"
 #include "ui/widgets/widget_anchors.h"
 
 namespace lmc::ui {
 
-class DevicesToolbarPanel {
+class DevicesToolbarPanel : public Panel {
  public:
-  explicit DevicesToolbarPanel(std::shared_ptr<DevicesState> state) : state_(std::move(state)) {}
+  explicit DevicesToolbarPanel(std::shared_ptr<DevicesState> state)
+      : Panel("##devices_toolbar"), state_(std::move(state)) {}
   void draw();
   // "start" or "stop" as drawn (headless tests click them).
   const WidgetAnchors& anchors() const { return anchors_; }

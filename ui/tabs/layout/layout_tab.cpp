@@ -39,7 +39,7 @@ LayoutDocument initial_document() {
 // and the status line follow an applied or undone calibration as they follow this tab's own edits.
 class StateLayoutEditor final : public LayoutEditor {
  public:
-  explicit StateLayoutEditor(LayoutTabState& state) : state_(state) {}
+  explicit StateLayoutEditor(LayoutState& state) : state_(state) {}
   const Layout& committed() const override { return state_.history().head().layout; }
   ActionResult apply_calibration(const Layout& calibrated) override {
     ActionResult r = ui::apply_calibration(state_.upd_history(), calibrated);
@@ -51,7 +51,7 @@ class StateLayoutEditor final : public LayoutEditor {
   void undo() override { state_.undo(); }
 
  private:
-  LayoutTabState& state_;
+  LayoutState& state_;
 };
 
 // GLFW key codes (the 1.86 GLFW backend indexes KeysDown by them); letters are their ASCII codes.
@@ -68,8 +68,8 @@ std::unique_ptr<Tab> make_layout_tab(StatusSink& status, WorkbenchContext& conte
 LayoutTab::LayoutTab(StatusSink& status, std::unique_ptr<SceneRenderer> renderer, CurrentLayout* shared)
     : status_(status),
       shared_layout_(shared),
-      state_(std::make_shared<LayoutTabState>(initial_document(),
-                                              [this](const std::string& t, bool e) { status_.set_status(t, e); })),
+      state_(std::make_shared<LayoutState>(initial_document(),
+                                           [this](const std::string& t, bool e) { status_.set_status(t, e); })),
       renderer_(std::move(renderer)) {
   scene_ = std::make_unique<ScenePanel>(state_, [this] { return this->renderer(); });
   timeline_ = std::make_unique<TimelinePanel>(state_);
@@ -217,13 +217,13 @@ void LayoutTab::handle_shortcuts() {
     return;
   }
   if (ImGui::IsKeyPressed('F', false)) scene_->frame_all();
-  if (ImGui::IsKeyPressed(kKeyDelete, false) && state_->selected >= 0) {
-    state_->report(remove_device(state_->upd_history(), state_->selected), "Remove controller");
+  if (ImGui::IsKeyPressed(kKeyDelete, false) && state_->selected() >= 0) {
+    state_->report(remove_device(state_->upd_history(), state_->selected()), "Remove controller");
   }
 }
 
 void LayoutTab::draw_toolbar() {
-  LayoutTabState& s = *state_;
+  LayoutState& s = *state_;
   if (ImGui::Button("New")) request(Pending::kNew);
   ImGui::SameLine();
   if (ImGui::Button("Open...")) request(Pending::kOpen);
@@ -306,7 +306,7 @@ void LayoutTab::draw_dialogs() {
 }
 
 void LayoutTab::draw_scene_side() {
-  LayoutTabState& s = *state_;
+  LayoutState& s = *state_;
   // View row above the scene.
   if (ImGui::SmallButton("3D")) s.camera.set_named_view(NamedView::kPerspective);
   ImGui::SameLine();
@@ -347,15 +347,11 @@ void LayoutTab::draw_panel_side() {
     };
     // Each panel scrolls inside its own child so the tab strip above it stays in view.
     if (ImGui::BeginTabItem("Inspector", nullptr, flags_for("inspector"))) {
-      ImGui::BeginChild("##inspector_body");
-      inspector_->draw();
-      ImGui::EndChild();
+      if (const auto window = inspector_->window()) inspector_->draw();
       ImGui::EndTabItem();
     }
     if (ImGui::BeginTabItem("Heatmap", nullptr, flags_for("heatmap"))) {
-      ImGui::BeginChild("##heatmap_body");
-      heatmap_->draw();
-      ImGui::EndChild();
+      if (const auto window = heatmap_->window()) heatmap_->draw();
       ImGui::EndTabItem();
     }
     bool optimiser_open = false;
@@ -370,9 +366,7 @@ void LayoutTab::draw_panel_side() {
     if (front_panel_frames_ > 0) --front_panel_frames_;
   }
   ImGui::EndChild();
-  ImGui::BeginChild("##coverage", ImVec2(0, 0), true);
-  coverage_->draw();
-  ImGui::EndChild();
+  if (const auto window = coverage_->window(ImVec2(0, 0), true)) coverage_->draw();
 }
 
 void LayoutTab::draw() {

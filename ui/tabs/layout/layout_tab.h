@@ -1,7 +1,7 @@
 #pragma once
 // The Layout tab: design where the controllers stand, see which fingers each can see,
 // and let the optimiser search for a better layout. This class is the composition root: it builds
-// the shared LayoutTabState and one object per panel, arranges them (ImGui 1.86 has no docking:
+// the shared LayoutState and one object per panel, arranges them (ImGui 1.86 has no docking:
 // child regions with a splitter), and owns the tab-level commands (file dialogs, shortcuts,
 // confirmations).
 #include <filesystem>
@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-#include "ui/model/layout/layout_tab_state.h"
+#include "ui/model/layout/layout_state.h"
 #include "ui/scene/scene_renderer.h"
 #include "ui/tabs/tab.h"
 #include "ui/widgets/file_browser.h"
@@ -55,7 +55,7 @@ class LayoutTab final : public Tab {
   // The preset the tab opens on.
   static constexpr const char* kStartLayout = "paper-optimized-as-processed";
 
-  LayoutTabState& state() { return *state_; }
+  LayoutState& state() { return *state_; }
   ScenePanel& scene_panel() { return *scene_; }
   InspectorPanel& inspector_panel() { return *inspector_; }
   OptimiserPanel& optimiser_panel() { return *optimiser_; }
@@ -85,7 +85,7 @@ class LayoutTab final : public Tab {
   StatusSink& status_;
   CurrentLayout* shared_layout_ = nullptr;
   std::vector<std::string>* pose_requests_ = nullptr;
-  std::shared_ptr<LayoutTabState> state_;
+  std::shared_ptr<LayoutState> state_;
   std::unique_ptr<LayoutEditor> editor_;  // registered in shared_layout_ for the other tabs' edits
   std::unique_ptr<SceneRenderer> renderer_;
   bool renderer_failed_ = false;

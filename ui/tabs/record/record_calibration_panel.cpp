@@ -33,7 +33,7 @@ void RecordCalibrationPanel::keep_nominal(TrialPanelAction& action) {
 
 TrialPanelAction RecordCalibrationPanel::draw() {
   anchors_.clear();  // only what this frame drew
-  const RecordSessionModel& model = *model_;
+  const RecordState& model = *model_;
   TrialPanelAction action = TrialPanelAction::kNone;
   const auto& step = *model.state().protocol.calibration;
   const Layout* layout = model.current_layout();

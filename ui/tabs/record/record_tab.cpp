@@ -2,7 +2,7 @@
 // layout block, then trial after trial with the cue, a big red circle while recording, a strip per
 // controller, and a verdict with one-key redo. Keyboard: Space starts / stops, Enter accepts a
 // failed trial anyway, R redoes the last one, N adds a note, Esc aborts the running trial. All state and rules live in
-// RecordSessionModel (ui/model/record/); this file lays out the panels (one class per file beside it) and maps keys and
+// RecordState (ui/model/record/); this file lays out the panels (one class per file beside it) and maps keys and
 // the buttons they report to its actions.
 #include "ui/tabs/record/record_tab.h"
 
@@ -28,13 +28,13 @@ std::unique_ptr<Tab> make_record_tab(StatusSink& status, WorkbenchContext& conte
 RecordTab::RecordTab(StatusSink& status, WorkbenchContext& context)
     : status_(status),
       context_(context),
-      model_(std::make_shared<RecordSessionModel>(&context.rig())),
+      model_(std::make_shared<RecordState>(&context.rig())),
       subject_(context.subject_screen()),
       setup_panel_(form_),
       trial_list_panel_(model_),
       trial_panel_(model_),
       subject_controls_(subject_) {
-  sessions_ = list_resumable_sessions(form_.sessions_folder());
+  refresh_sessions();
   if (auto& startup = context.record_startup()) {
     std::snprintf(form_.open_folder, sizeof form_.open_folder, "%s", startup->session.string().c_str());
     form_.backend = startup->backend == "leapc" ? 1 : 0;
@@ -63,35 +63,34 @@ void RecordTab::update(bool /*shown*/) {
 void RecordTab::draw() {
   if (!model_->has_session()) {
     subject_controls_.draw();
-    ImGui::BeginChild("setup", ImVec2(0, 0), false);
-    switch (setup_panel_.draw(sessions_, error_)) {
-      case SetupAction::kCreate:
-        create();
-        break;
-      case SetupAction::kOpen:
-        open();
-        break;
-      case SetupAction::kRefreshSessions:
-        sessions_ = list_resumable_sessions(form_.sessions_folder());
-        break;
-      case SetupAction::kNone:
-        break;
-    }
-    subject_clash_question();
-    ImGui::EndChild();
+    if (const auto window = setup_panel_.window()) draw_setup();
     subject_screen_key();
     return;
   }
   if (!draw_header()) return;  // closed: nothing of the session is drawn this frame
   const float list_width = 260.0F;
-  ImGui::BeginChild("trials", ImVec2(list_width, 0), true);
-  trial_list_panel_.draw();
-  ImGui::EndChild();
+  if (const auto window = trial_list_panel_.window(ImVec2(list_width, 0), true)) trial_list_panel_.draw();
   ImGui::SameLine();
-  ImGui::BeginChild("trial", ImVec2(0, 0), true);
-  act(trial_panel_.draw());
-  ImGui::EndChild();
+  if (const auto window = trial_panel_.window(ImVec2(0, 0), true)) act(trial_panel_.draw());
   keys();
+}
+
+// The set-up form and, when a new session's subject id is already recorded, the question.
+void RecordTab::draw_setup() {
+  switch (setup_panel_.draw(sessions_, error_)) {
+    case SetupAction::kCreate:
+      create();
+      break;
+    case SetupAction::kOpen:
+      open();
+      break;
+    case SetupAction::kRefreshSessions:
+      refresh_sessions();
+      break;
+    case SetupAction::kNone:
+      break;
+  }
+  subject_clash_question();
 }
 
 std::string RecordTab::recording_now() const {
@@ -144,7 +143,7 @@ void RecordTab::create(bool same_subject_confirmed) {
   }
   if (!same_subject_confirmed) {
     // The demo's subjects too (S01, S02), wherever scripts/run put them: the list holds them.
-    sessions_ = list_resumable_sessions(form_.sessions_folder());
+    refresh_sessions();
     subject_clash_ = sessions_of_subject(sessions_, form_.subject);
     for (const auto& dir : context_.review_folders()) {
       if (!is_session_folder(dir)) continue;
@@ -189,7 +188,7 @@ bool RecordTab::draw_header() {
     if (ImGui::SmallButton("Close")) {
       const std::string closed = model_->dir().string();
       model_->close();
-      sessions_ = list_resumable_sessions(form_.sessions_folder());
+      refresh_sessions();
       status_.set_status("Record: session " + closed + " closed; everything recorded is kept in its folder");
       return false;
     }

@@ -6,8 +6,8 @@
 #include <string>
 #include <vector>
 
-#include "ui/model/record/record_session_model.h"
 #include "ui/model/record/record_setup_form.h"
+#include "ui/model/record/record_state.h"
 #include "ui/tabs/record/record_setup_panel.h"
 #include "ui/tabs/record/record_trial_list_panel.h"
 #include "ui/tabs/record/record_trial_panel.h"
@@ -32,7 +32,7 @@ class RecordTab final : public Tab {
 
   // ---- what a script may drive (--capture) --------------------------------------------------
   // The session and its actions (create, open, pre-flight, trial, redo, close).
-  RecordSessionModel& model() { return *model_; }
+  RecordState& model() { return *model_; }
   // The set-up form as the operator fills it in.
   RecordSetupForm& form() { return form_; }
   // Lists the sessions folder again (the form's "resume" list).
@@ -41,6 +41,7 @@ class RecordTab final : public Tab {
   void show_setup_error(std::string why) { error_ = std::move(why); }
 
  private:
+  void draw_setup();
   void subject_clash_question();
   void create(bool same_subject_confirmed = false);
   void open();
@@ -52,7 +53,7 @@ class RecordTab final : public Tab {
 
   StatusSink& status_;
   WorkbenchContext& context_;
-  std::shared_ptr<RecordSessionModel> model_;  // the panels share it
+  std::shared_ptr<RecordState> model_;  // the panels share it
   RecordSetupForm form_;
   std::vector<SessionListing> sessions_;  // for "resume": the sessions folder's contents
   SubjectScreenLink& subject_;

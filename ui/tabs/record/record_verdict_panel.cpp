@@ -79,7 +79,7 @@ void timeline(const QualityTimeline& t) {
 
 VerdictAction RecordVerdictPanel::draw() {
   anchors_.clear();  // only what this frame drew
-  const RecordSessionModel& model = *model_;
+  const RecordState& model = *model_;
   VerdictAction action = VerdictAction::kNone;
   const auto& a = model.last_attempt();
   if (!a) return action;
