@@ -119,7 +119,7 @@ void LayoutState::select(int device) {
 
 void LayoutState::prune_selection() {
   if (selected_ >= doc().device_count()) selected_ = doc().device_count() - 1;
-  if (hovered >= doc().device_count()) hovered = -1;
+  if (hovered_ >= doc().device_count()) hovered_ = -1;
 }
 
 const HandFrame* LayoutState::current_hand() const {

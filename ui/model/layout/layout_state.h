@@ -76,9 +76,15 @@ class LayoutState {
 
   // ---- selection ------------------------------------------------------------------------------
   int selected() const { return selected_; }  // −1: none
-  int hovered = -1;
-  HandleKind hovered_handle = HandleKind::kNone;
-  HandleKind active_handle = HandleKind::kNone;
+  // The controller under the pointer (−1: none) and which of its handles; the handle being dragged.
+  int hovered() const { return hovered_; }
+  HandleKind hovered_handle() const { return hovered_handle_; }
+  HandleKind active_handle() const { return active_handle_; }
+  void set_hover(int device, HandleKind handle) {
+    hovered_ = device;
+    hovered_handle_ = handle;
+  }
+  void set_active_handle(HandleKind handle) { active_handle_ = handle; }
   void select(int device);
   // Drops selection and hover that no longer exist (after undo, remove, open).
   void prune_selection();
@@ -143,6 +149,9 @@ class LayoutState {
 
   UndoableLayoutDocument document_;
   int selected_ = -1;
+  int hovered_ = -1;
+  HandleKind hovered_handle_ = HandleKind::kNone;
+  HandleKind active_handle_ = HandleKind::kNone;
   PsoSettings pso_;
   int optimiser_starts_ = 1;
   CoverageCache coverage_;

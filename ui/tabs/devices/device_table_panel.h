@@ -3,6 +3,8 @@
 // backend, model, tracking mode, status, rate, hand present, latest frame age, frames and drops;
 // under the table, each controller the layout leaves blind to the hand, named with why.
 #include <memory>
+#include <string>
+#include <vector>
 
 #include "ui/model/devices/devices_state.h"
 #include "ui/widgets/panel.h"
@@ -15,6 +17,7 @@ class DeviceTablePanel : public Panel {
   void draw();
 
  private:
+  void draw_row(const DeviceRow& row, const std::vector<std::string>& slots);
   std::shared_ptr<DevicesState> state_;
 };
 

@@ -88,6 +88,13 @@ void OptimiserPanel::draw_pose_set() {
   if (ImGui::Button("Use this pose set")) s.report(set_pose_set_choice(s.upd_history(), edit_choice_), "Pose set");
   ImGui::EndDisabled();
   ImGui::SameLine();
+  draw_pose_set_status();
+}
+
+// The pose set in use: its loading progress (with Cancel), or its frames, where they came from and
+// the trials left out; and why it failed to load.
+void OptimiserPanel::draw_pose_set_status() {
+  LayoutState& s = *state_;
   if (s.poses.loading()) {
     ImGui::TextDisabled("%s... %.0f %%", s.poses.stage().c_str(), 100.0 * s.poses.progress());
     ImGui::SameLine();

@@ -32,6 +32,7 @@ class OptimiserPanel : public Panel {
 
  private:
   void draw_pose_set();
+  void draw_pose_set_status();
   void draw_recordings_choice();
   void draw_settings();
   void draw_metric(PsoSettings& p);  // the metric and, for the robust one, its term weights

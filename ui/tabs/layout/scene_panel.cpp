@@ -79,17 +79,15 @@ int ScenePanel::pick_device(const Ray& ray) const {
 void ScenePanel::update_hover(bool hovered, ImVec2 m) {
   if (gesture_ != Gesture::kNone) return;
   LayoutState& s = *state_;
-  s.hovered = -1;
-  s.hovered_handle = HandleKind::kNone;
+  s.set_hover(-1, HandleKind::kNone);
   if (!hovered) return;
   if (s.selected() >= 0 && s.selected() < s.doc().device_count()) {
     const HandleHit hit = hover_handle(s.layout().devices[static_cast<size_t>(s.selected())],
                                        s.doc().locks[static_cast<size_t>(s.selected())], s.camera, m.x, m.y,
                                        image_size_.x, image_size_.y);
-    s.hovered_handle = hit.kind;
-    if (hit.kind != HandleKind::kNone) s.hovered = s.selected();
+    if (hit.kind != HandleKind::kNone) s.set_hover(s.selected(), hit.kind);
   }
-  if (s.hovered_handle == HandleKind::kNone) s.hovered = pick_device(mouse_ray());
+  if (s.hovered_handle() == HandleKind::kNone) s.set_hover(pick_device(mouse_ray()), HandleKind::kNone);
 }
 
 // A press starts a gesture: on a handle or a controller a drag (which selects it), elsewhere
@@ -103,8 +101,8 @@ void ScenePanel::begin_gesture(bool hovered) {
   if (!ImGui::IsMouseClicked(ImGuiMouseButton_Left)) return;
   press_pos_ = ImGui::GetIO().MousePos;
   moved_ = false;
-  HandleKind kind = s.hovered_handle;
-  const int device = s.hovered;
+  HandleKind kind = s.hovered_handle();
+  const int device = s.hovered();
   if (kind == HandleKind::kNone && device >= 0) {
     s.select(device);
     kind = HandleKind::kMove;
@@ -116,7 +114,7 @@ void ScenePanel::begin_gesture(bool hovered) {
                   mouse_ray())) {
     gesture_ = Gesture::kHandle;
     drag_device_ = device;
-    s.active_handle = kind;
+    s.set_active_handle(kind);
   }
 }
 
@@ -128,7 +126,7 @@ void ScenePanel::continue_drag(float moved_px) {
     cancel_preview(s.upd_history());
     drag_.end();
     gesture_ = Gesture::kNone;
-    s.active_handle = HandleKind::kNone;
+    s.set_active_handle(HandleKind::kNone);
     s.set_status("Drag cancelled");
     return;
   }
@@ -146,7 +144,7 @@ void ScenePanel::continue_drag(float moved_px) {
   }
   drag_.end();
   gesture_ = Gesture::kNone;
-  s.active_handle = HandleKind::kNone;
+  s.set_active_handle(HandleKind::kNone);
 }
 
 void ScenePanel::handle_input(bool hovered) {
@@ -166,7 +164,7 @@ void ScenePanel::handle_input(bool hovered) {
         if (moved_px > 3.0f) moved_ = true;
         if (moved_) s.camera.orbit(io.MouseDelta.x, io.MouseDelta.y);
       } else {
-        if (!moved_ && s.hovered < 0) s.select(-1);  // a click on empty space clears the selection
+        if (!moved_ && s.hovered() < 0) s.select(-1);  // a click on empty space clears the selection
         gesture_ = Gesture::kNone;
       }
       break;
@@ -213,9 +211,9 @@ void ScenePanel::draw(ImVec2 size) {
   in.layout = &s.layout();
   in.locks = &s.doc().locks;
   in.selected = s.selected();
-  in.hovered = s.hovered;
-  in.hovered_handle = s.hovered_handle;
-  in.active_handle = s.active_handle;
+  in.hovered = s.hovered();
+  in.hovered_handle = s.hovered_handle();
+  in.active_handle = s.active_handle();
   in.hand = s.current_hand();
   in.finger_seen_count = s.frame_visibility().seen_count;
   in.show_pyramids = s.display.show_pyramids;
@@ -381,7 +379,7 @@ void ScenePanel::draw_tooltips() const {
   const LayoutState& s = *state_;
   const double w = image_size_.x, h = image_size_.y;
   const ImVec2 m(ImGui::GetIO().MousePos.x - image_min_.x, ImGui::GetIO().MousePos.y - image_min_.y);
-  if (s.display.show_rays && s.selected() >= 0 && s.hovered < 0) {
+  if (s.display.show_rays && s.selected() >= 0 && s.hovered() < 0) {
     const auto& rays = s.frame_visibility().rays;
     double best = 6.0;
     int best_i = -1;
@@ -401,11 +399,11 @@ void ScenePanel::draw_tooltips() const {
       return;
     }
   }
-  if (s.hovered >= 0 && s.hovered < s.layout().device_count()) {
-    const LayoutDevice& d = s.layout().devices[static_cast<size_t>(s.hovered)];
-    const char* hint = s.hovered_handle == HandleKind::kYaw    ? "drag the green ring to turn (ry)"
-                       : s.hovered_handle == HandleKind::kTilt ? "drag the red ring to tilt (rx)"
-                                                               : "drag to move on the table";
+  if (s.hovered() >= 0 && s.hovered() < s.layout().device_count()) {
+    const LayoutDevice& d = s.layout().devices[static_cast<size_t>(s.hovered())];
+    const char* hint = s.hovered_handle() == HandleKind::kYaw    ? "drag the green ring to turn (ry)"
+                       : s.hovered_handle() == HandleKind::kTilt ? "drag the red ring to tilt (rx)"
+                                                                 : "drag to move on the table";
     ImGui::SetTooltip("%s\nx %.1f  z %.1f mm · rx %.1f° ry %.1f°\n%s", d.slot.c_str(), d.pose.x_mm, d.pose.z_mm,
                       d.pose.rx_deg, d.pose.ry_deg, hint);
   }

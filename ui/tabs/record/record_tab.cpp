@@ -11,6 +11,7 @@
 #include <algorithm>
 #include <cstdio>
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -208,10 +209,16 @@ void RecordTab::subject_screen_key() {
 }
 
 void RecordTab::act(TrialPanelAction a) {
+  if (a == TrialPanelAction::kNone) return;
+  const std::optional<std::string> on_verdict = act_on_verdict(a);
+  const std::string why = on_verdict ? *on_verdict : act_on_trial(a);
+  if (!why.empty()) status_.set_status("Record: " + why, true);
+}
+
+// The pre-flight, the trial, the block's calibration and the note: what went wrong, "" when done.
+std::string RecordTab::act_on_trial(TrialPanelAction a) {
   std::string why;
   switch (a) {
-    case TrialPanelAction::kNone:
-      return;
     case TrialPanelAction::kPreflight:
       why = model_->start_preflight();
       break;
@@ -251,6 +258,17 @@ void RecordTab::act(TrialPanelAction a) {
         trial_panel_.note().clear();
       }
       break;
+    default:
+      break;
+  }
+  return why;
+}
+
+// What is done with the last attempt (accept, keep or not, redo) and Review this session: what
+// went wrong ("" when done); nullopt for another action.
+std::optional<std::string> RecordTab::act_on_verdict(TrialPanelAction a) {
+  std::string why;
+  switch (a) {
     case TrialPanelAction::kAccept:
       why = model_->ask_accept();
       if (why.empty() && !model_->accept_question().empty())
@@ -277,8 +295,10 @@ void RecordTab::act(TrialPanelAction a) {
       context_.review_requests().push_back(model_->dir());
       context_.tab_request() = "review";
       break;
+    default:
+      return std::nullopt;
   }
-  if (!why.empty()) status_.set_status("Record: " + why, true);
+  return why;
 }
 
 std::string RecordTab::trial_name(int i) const {

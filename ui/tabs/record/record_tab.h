@@ -3,6 +3,7 @@
 // the set-up form and the panels, and the keys and buttons mapped to the model's actions.
 #include <filesystem>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -48,6 +49,8 @@ class RecordTab final : public Tab {
   bool draw_header();
   void subject_screen_key();
   void act(TrialPanelAction a);
+  std::string act_on_trial(TrialPanelAction a);
+  std::optional<std::string> act_on_verdict(TrialPanelAction a);
   std::string trial_name(int i) const;
   void keys();
 
