@@ -9,6 +9,7 @@
 #include <utility>
 
 #include "ui/tabs/tab_registry.h"
+#include "ui/widgets/palette.h"
 
 namespace lmc::ui {
 
@@ -280,9 +281,9 @@ void WorkbenchShell::draw_status_bar(float height) {
     text = text.substr(0, lo) + "…";
   }
   if (line.is_error) {
-    ImGui::TextColored(ImVec4(1.0f, 0.45f, 0.4f, 1.0f), "%s", text.c_str());
+    ImGui::TextColored(palette::kError, "%s", text.c_str());
   } else if (line.is_hint) {
-    ImGui::TextColored(ImVec4(0.55f, 0.8f, 1.0f, 1.0f), "%s", text.c_str());
+    ImGui::TextColored(palette::kInfo, "%s", text.c_str());
   } else {
     ImGui::TextUnformatted(text.c_str());
   }

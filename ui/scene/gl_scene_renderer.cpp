@@ -255,10 +255,8 @@ void GlSceneRenderer::draw(const std::vector<Vertex>& verts, unsigned mode) {
   glDrawArrays(mode, 0, static_cast<GLsizei>(verts.size()));
 }
 
-std::uintptr_t GlSceneRenderer::render(const SceneList& scene, const OrbitCamera& camera, int width_px, int height_px) {
-  if (width_px < 8 || height_px < 8) return 0;
-  ensure_targets(width_px, height_px);
-
+// Sorts the scene's items into the passes' vertex lists.
+void GlSceneRenderer::fill_passes(const SceneList& scene) {
   opaque_.clear();
   lines_.clear();
   translucent_.clear();
@@ -302,6 +300,37 @@ std::uintptr_t GlSceneRenderer::render(const SceneList& scene, const OrbitCamera
         break;
     }
   }
+}
+
+// Opaque triangles and lines, then the translucent ones without depth writes (volumes behind one
+// another all show), then the x-ray of what lies below the table.
+void GlSceneRenderer::draw_passes(const OrbitCamera& camera, int width_px, int height_px) {
+  const Eigen::Matrix4f vp =
+      (camera.projection(static_cast<double>(width_px) / height_px) * camera.view()).cast<float>();
+  const Eigen::Vector3f view_dir = camera.forward().cast<float>();
+  glUseProgram(program_);
+  glUniformMatrix4fv(u_vp_, 1, GL_FALSE, vp.data());  // Eigen is column-major, as GL expects
+  glUniform3f(u_view_dir_, view_dir.x(), view_dir.y(), view_dir.z());
+  glBindVertexArray(vao_);
+  glBindBuffer(GL_ARRAY_BUFFER, vbo_);
+  glDepthMask(GL_TRUE);
+  draw(opaque_, GL_TRIANGLES);
+  draw(lines_, GL_LINES);
+  glDepthMask(GL_FALSE);
+  draw(translucent_, GL_TRIANGLES);
+  draw(translucent_lines_, GL_LINES);
+  glDepthFunc(GL_GREATER);
+  draw(xray_, GL_TRIANGLES);
+  glDepthFunc(GL_LEQUAL);
+  glDepthMask(GL_TRUE);
+  glBindVertexArray(0);
+  glUseProgram(0);
+}
+
+std::uintptr_t GlSceneRenderer::render(const SceneList& scene, const OrbitCamera& camera, int width_px, int height_px) {
+  if (width_px < 8 || height_px < 8) return 0;
+  ensure_targets(width_px, height_px);
+  fill_passes(scene);
 
   GLint prev_fbo = 0, prev_viewport[4];
   glGetIntegerv(GL_FRAMEBUFFER_BINDING, &prev_fbo);
@@ -316,30 +345,7 @@ std::uintptr_t GlSceneRenderer::render(const SceneList& scene, const OrbitCamera
   glDisable(GL_SCISSOR_TEST);
   glEnable(GL_BLEND);
   glBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
-
-  const Eigen::Matrix4f vp =
-      (camera.projection(static_cast<double>(width_px) / height_px) * camera.view()).cast<float>();
-  const Eigen::Vector3f view_dir = camera.forward().cast<float>();
-  glUseProgram(program_);
-  glUniformMatrix4fv(u_vp_, 1, GL_FALSE, vp.data());  // Eigen is column-major, as GL expects
-  glUniform3f(u_view_dir_, view_dir.x(), view_dir.y(), view_dir.z());
-  glBindVertexArray(vao_);
-  glBindBuffer(GL_ARRAY_BUFFER, vbo_);
-
-  glDepthMask(GL_TRUE);
-  draw(opaque_, GL_TRIANGLES);
-  draw(lines_, GL_LINES);
-  // Translucent pass: no depth writes, so volumes behind one another all show.
-  glDepthMask(GL_FALSE);
-  draw(translucent_, GL_TRIANGLES);
-  draw(translucent_lines_, GL_LINES);
-  glDepthFunc(GL_GREATER);
-  draw(xray_, GL_TRIANGLES);
-  glDepthFunc(GL_LEQUAL);
-  glDepthMask(GL_TRUE);
-
-  glBindVertexArray(0);
-  glUseProgram(0);
+  draw_passes(camera, width_px, height_px);
   if (msaa_fbo_) {
     glBindFramebuffer(GL_READ_FRAMEBUFFER, msaa_fbo_);
     glBindFramebuffer(GL_DRAW_FRAMEBUFFER, fbo_);

@@ -29,6 +29,8 @@ class GlSceneRenderer final : public SceneRenderer {
   void ensure_targets(int w, int h);
   void release_targets();
   void draw(const std::vector<Vertex>& verts, unsigned mode);
+  void fill_passes(const SceneList& scene);
+  void draw_passes(const OrbitCamera& camera, int width_px, int height_px);
 
   unsigned program_ = 0, vao_ = 0, vbo_ = 0;
   int u_vp_ = -1, u_view_dir_ = -1;

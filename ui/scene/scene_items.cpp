@@ -87,18 +87,9 @@ void add_table(SceneList& out, const SceneInputs& in) {
   out.labels.push_back({Eigen::Vector3d(0, 110, 0), "y", {0.45f, 0.90f, 0.45f, 1.0f}, true});
 }
 
-void add_device(SceneList& out, const SceneInputs& in, int i) {
-  const LayoutDevice& d = in.layout->devices[static_cast<size_t>(i)];
-  const Eigen::Isometry3d t = device_transform(d);
-  std::uint32_t flags = kFlagNone;
-  Rgba body = kDeviceColour;
-  if (i == in.selected) {
-    flags |= kFlagSelected;
-    body = kSelectedColour;
-  } else if (i == in.hovered) {
-    flags |= kFlagHovered;
-    body = kHoveredColour;
-  }
+// The controller's case, its USB end and its LED edge.
+void add_device_case(SceneList& out, const LayoutDevice& d, const Eigen::Isometry3d& t, int i, std::uint32_t flags,
+                     const Rgba& body) {
   // The case of the device's own model (an LMC2 is longer and narrower than an LMC).
   const DeviceCaseBox case_box = device_case_box(d);
   SceneItem box;
@@ -127,37 +118,55 @@ void add_device(SceneList& out, const SceneInputs& in, int i) {
   front.b = Eigen::Vector3d(std::min(30.0, case_box.half_mm.x() - 5.0), 0.5, 2.5);
   front.colour = {0.30f, 0.90f, 0.40f, 1.0f};
   out.items.push_back(front);
+}
 
-  if (in.show_pyramids) {
-    SceneItem pyr;
-    pyr.kind = ItemKind::kPyramid;
-    pyr.role = ItemRole::kPyramid;
-    pyr.transform = t;
-    // Each controller's own model (LayoutDevice::sensor).
-    const SensorModel& sensor = d.sensor;
-    pyr.size = sensor.range_mm;
-    pyr.b = Eigen::Vector3d(sensor.fov_long_deg * 0.5, sensor.fov_short_deg * 0.5, 0);
-    pyr.colour = device_hue(i, i == in.selected ? 0.12f : 0.035f);
-    pyr.id = i;
-    pyr.flags = flags | kFlagTranslucent;
-    out.items.push_back(pyr);
-    const auto c = pyramid_corners(t, pyr.size, pyr.b.x(), pyr.b.y());
-    const Eigen::Vector3d apex = t.translation();
-    const Rgba edge = device_hue(i, i == in.selected ? 0.85f : 0.3f);
+// The field of view as a translucent pyramid out to the far range, its edges, and the near range
+// as an outline (nothing closer than it is tracked: 10 cm on the LMC and LMC2).
+void add_device_pyramid(SceneList& out, const LayoutDevice& d, const Eigen::Isometry3d& t, int i, bool selected,
+                        std::uint32_t flags) {
+  SceneItem pyr;
+  pyr.kind = ItemKind::kPyramid;
+  pyr.role = ItemRole::kPyramid;
+  pyr.transform = t;
+  // Each controller's own model (LayoutDevice::sensor).
+  const SensorModel& sensor = d.sensor;
+  pyr.size = sensor.range_mm;
+  pyr.b = Eigen::Vector3d(sensor.fov_long_deg * 0.5, sensor.fov_short_deg * 0.5, 0);
+  pyr.colour = device_hue(i, selected ? 0.12f : 0.035f);
+  pyr.id = i;
+  pyr.flags = flags | kFlagTranslucent;
+  out.items.push_back(pyr);
+  const auto c = pyramid_corners(t, pyr.size, pyr.b.x(), pyr.b.y());
+  const Eigen::Vector3d apex = t.translation();
+  const Rgba edge = device_hue(i, selected ? 0.85f : 0.3f);
+  for (int k = 0; k < 4; ++k) {
+    add_segment(out, ItemRole::kPyramid, apex, c[static_cast<size_t>(k)], edge, i, kFlagTranslucent);
+    add_segment(out, ItemRole::kPyramid, c[static_cast<size_t>(k)], c[static_cast<size_t>((k + 1) % 4)], edge, i,
+                kFlagTranslucent);
+  }
+  if (sensor.range_near_mm > 0) {
+    const auto n = pyramid_corners(t, sensor.range_near_mm, pyr.b.x(), pyr.b.y());
     for (int k = 0; k < 4; ++k) {
-      add_segment(out, ItemRole::kPyramid, apex, c[static_cast<size_t>(k)], edge, i, kFlagTranslucent);
-      add_segment(out, ItemRole::kPyramid, c[static_cast<size_t>(k)], c[static_cast<size_t>((k + 1) % 4)], edge, i,
+      add_segment(out, ItemRole::kPyramid, n[static_cast<size_t>(k)], n[static_cast<size_t>((k + 1) % 4)], edge, i,
                   kFlagTranslucent);
     }
-    // The near range as an outline: nothing closer than it is tracked (10 cm on the LMC and LMC2).
-    if (sensor.range_near_mm > 0) {
-      const auto n = pyramid_corners(t, sensor.range_near_mm, pyr.b.x(), pyr.b.y());
-      for (int k = 0; k < 4; ++k) {
-        add_segment(out, ItemRole::kPyramid, n[static_cast<size_t>(k)], n[static_cast<size_t>((k + 1) % 4)], edge, i,
-                    kFlagTranslucent);
-      }
-    }
   }
+}
+
+void add_device(SceneList& out, const SceneInputs& in, int i) {
+  const LayoutDevice& d = in.layout->devices[static_cast<size_t>(i)];
+  const Eigen::Isometry3d t = device_transform(d);
+  std::uint32_t flags = kFlagNone;
+  Rgba body = kDeviceColour;
+  if (i == in.selected) {
+    flags |= kFlagSelected;
+    body = kSelectedColour;
+  } else if (i == in.hovered) {
+    flags |= kFlagHovered;
+    body = kHoveredColour;
+  }
+  add_device_case(out, d, t, i, flags, body);
+  if (in.show_pyramids) add_device_pyramid(out, d, t, i, i == in.selected, flags);
   std::string text = d.slot;
   if (d.serial) text += " (" + *d.serial + ")";
   out.labels.push_back({t * Eigen::Vector3d(0, 22, 0), text,

@@ -7,7 +7,6 @@
 #include <memory>
 #include <optional>
 #include <string>
-#include <vector>
 
 namespace lmc::ui {
 
@@ -40,16 +39,6 @@ class Tab {
   virtual void open_document(const std::filesystem::path& /*path*/) {}
   // The file the document was last read from or written to (feeds the recent list).
   virtual std::optional<std::filesystem::path> document_path() const { return std::nullopt; }
-  // Called before a --capture screenshot so the tab shows representative content
-  // (e.g. start the simulated rig, load the paper layout). Returns frames to wait.
-  virtual int prepare_for_capture() { return 2; }
-  // True while the tab's background work should be allowed to finish before a capture.
-  virtual bool busy_for_capture() const { return false; }
-  // More pictures --capture takes of this tab after its own, in order (file names without
-  // ".png"); a name starting "subject-screen" is taken from the subject screen's window.
-  virtual std::vector<std::string> extra_captures() const { return {}; }
-  // Moves the tab towards extra picture `name`; the capture then waits while busy_for_capture().
-  virtual void prepare_extra_capture(const std::string& /*name*/) {}
 };
 
 // What tabs may tell the shell: one line in the status bar.

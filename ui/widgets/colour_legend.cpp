@@ -5,6 +5,7 @@
 #include <cstdio>
 
 #include "ui/widgets/imgui_colour.h"
+#include "ui/widgets/palette.h"
 
 namespace lmc::ui {
 
@@ -35,7 +36,7 @@ void draw_colour_bar(const ColourRange& range, float width_px, double scale, int
     dl->AddRectFilledMultiColor(ImVec2(p.x + i * step, p.y), ImVec2(p.x + (i + 1) * step + 0.5f, p.y + h), to_u32(a),
                                 to_u32(b), to_u32(b), to_u32(a));
   }
-  dl->AddRect(p, ImVec2(p.x + width_px, p.y + h), IM_COL32(200, 200, 200, 120));
+  dl->AddRect(p, ImVec2(p.x + width_px, p.y + h), palette::kLegendBorder);
   ImGui::Dummy(ImVec2(width_px, h));
   char lo[32], mid[32], hi[32];
   std::snprintf(lo, sizeof lo, "%.*f%s", decimals, range.lo * scale, unit);

@@ -7,8 +7,10 @@
 #include <cstdio>
 #include <limits>
 #include <string>
+#include <utility>
 
 #include "core/figures/axis_ticks.h"
+#include "ui/widgets/palette.h"
 #include "ui/widgets/plot_frame.h"
 
 namespace lmc::ui {
@@ -38,12 +40,16 @@ void dashed_line(ImDrawList* dl, ImVec2 a, ImVec2 b, ImU32 colour, Dash dash) {
     dl->AddLine(ImVec2(x, a.y), ImVec2(std::min(x + on, b.x), b.y), colour, 1.2F);
 }
 
-}  // namespace
+// Where the figure's axes stand on screen.
+struct FigureArea {
+  ImVec2 p0, p1;
+  AxisRange xr, yr;
+  float to_x(double x) const { return p0.x + static_cast<float>((x - xr.lo) / (xr.hi - xr.lo)) * (p1.x - p0.x); }
+  float to_y(double y) const { return p1.y - static_cast<float>((y - yr.lo) / (yr.hi - yr.lo)) * (p1.y - p0.y); }
+};
 
-void draw_figure_view(const char* id, const Figure& f, float height_px) {
-  ImGui::PushID(id);
-  if (!f.title.empty()) ImGui::TextUnformatted(f.title.c_str());
-  // Legend above the plot: it never covers the data.
+// Legend above the plot: it never covers the data.
+void draw_legend(const Figure& f) {
   for (size_t s = 0; s < f.series.size(); ++s) {
     if (s > 0) ImGui::SameLine(0, 12);
     const ImVec2 at = ImGui::GetCursorScreenPos();
@@ -54,45 +60,37 @@ void draw_figure_view(const char* id, const Figure& f, float height_px) {
     ImGui::SameLine();
     ImGui::TextDisabled("%s", f.series[s].name.c_str());
   }
-  const AxisRange xr = x_range(f), yr = y_range(f);
-  const ImVec2 top = ImGui::GetCursorScreenPos();
-  const float width = std::max(200.0F, ImGui::GetContentRegionAvail().x);
-  const float tick_h = ImGui::GetTextLineHeight() + 4;
-  const ImVec2 p0(top.x + kLeftGutterPx, top.y);
-  const ImVec2 p1(top.x + width - kRightGutterPx, top.y + height_px);
-  ImDrawList* dl = ImGui::GetWindowDrawList();
-  dl->AddRectFilled(p0, p1, IM_COL32(24, 26, 30, 255), 3.0F);
-  dl->AddRect(p0, p1, IM_COL32(80, 84, 92, 255), 3.0F);
-  ImGui::SetCursorScreenPos(p0);
-  ImGui::InvisibleButton("figure", ImVec2(std::max(1.0F, p1.x - p0.x), height_px));
-  const bool hovered = ImGui::IsItemHovered();
-  const auto to_x = [&](double x) { return p0.x + static_cast<float>((x - xr.lo) / (xr.hi - xr.lo)) * (p1.x - p0.x); };
-  const auto to_y = [&](double y) { return p1.y - static_cast<float>((y - yr.lo) / (yr.hi - yr.lo)) * (p1.y - p0.y); };
+}
 
-  const auto yticks = nice_ticks(yr.lo, yr.hi, std::max(2, static_cast<int>(height_px / 60)));
+// Grid lines with their tick labels, and the reference lines with theirs in the right gutter.
+void draw_axes(ImDrawList* dl, const FigureArea& a, const Figure& f, float height_px) {
+  const auto yticks = nice_ticks(a.yr.lo, a.yr.hi, std::max(2, static_cast<int>(height_px / 60)));
   for (const double t : yticks) {
-    const float y = to_y(t);
-    if (y < p0.y - 1 || y > p1.y + 1) continue;
-    dl->AddLine(ImVec2(p0.x, y), ImVec2(p1.x, y), kPlotGridLine);
+    const float y = a.to_y(t);
+    if (y < a.p0.y - 1 || y > a.p1.y + 1) continue;
+    dl->AddLine(ImVec2(a.p0.x, y), ImVec2(a.p1.x, y), palette::kPlotGridLine);
     const std::string text = tick_label(t, yticks);
-    dl->AddText(ImVec2(p0.x - ImGui::CalcTextSize(text.c_str()).x - 4, y - ImGui::GetTextLineHeight() * 0.5F),
-                kPlotTickText, text.c_str());
+    dl->AddText(ImVec2(a.p0.x - ImGui::CalcTextSize(text.c_str()).x - 4, y - ImGui::GetTextLineHeight() * 0.5F),
+                palette::kPlotTickText, text.c_str());
   }
-  const auto xticks = nice_ticks(xr.lo, xr.hi, std::max(2, static_cast<int>((p1.x - p0.x) / 90)));
+  const auto xticks = nice_ticks(a.xr.lo, a.xr.hi, std::max(2, static_cast<int>((a.p1.x - a.p0.x) / 90)));
   for (const double t : xticks) {
-    const float x = to_x(t);
-    if (x < p0.x - 1 || x > p1.x + 1) continue;
-    dl->AddLine(ImVec2(x, p0.y), ImVec2(x, p1.y), kPlotGridLine);
-    dl->AddText(ImVec2(x - 8, p1.y + 2), kPlotTickText, tick_label(t, xticks).c_str());
+    const float x = a.to_x(t);
+    if (x < a.p0.x - 1 || x > a.p1.x + 1) continue;
+    dl->AddLine(ImVec2(x, a.p0.y), ImVec2(x, a.p1.y), palette::kPlotGridLine);
+    dl->AddText(ImVec2(x - 8, a.p1.y + 2), palette::kPlotTickText, tick_label(t, xticks).c_str());
   }
-  // Reference lines, their labels in the right gutter.
   for (const auto& r : f.references) {
-    const float y = to_y(r.y);
-    if (y < p0.y || y > p1.y) continue;
-    dashed_line(dl, ImVec2(p0.x, y), ImVec2(p1.x, y), on_dark(r.colour), r.dash);
-    dl->AddText(ImVec2(p1.x + 4, y - ImGui::GetTextLineHeight() * 0.5F), on_dark(r.colour), r.label.c_str());
+    const float y = a.to_y(r.y);
+    if (y < a.p0.y || y > a.p1.y) continue;
+    dashed_line(dl, ImVec2(a.p0.x, y), ImVec2(a.p1.x, y), on_dark(r.colour), r.dash);
+    dl->AddText(ImVec2(a.p1.x + 4, y - ImGui::GetTextLineHeight() * 0.5F), on_dark(r.colour), r.label.c_str());
   }
-  dl->PushClipRect(p0, p1, true);
+}
+
+// Each series as lines and / or points (a missing value is a gap, never a line to 0); returns
+// the point nearest the pointer in words, with its squared distance, while `hovered`.
+std::pair<std::string, double> draw_series(ImDrawList* dl, const FigureArea& a, const Figure& f, bool hovered) {
   double best_d2 = std::numeric_limits<double>::infinity();
   std::string nearest;
   const ImVec2 mouse = ImGui::GetIO().MousePos;
@@ -106,28 +104,53 @@ void draw_figure_view(const char* id, const Figure& f, float height_px) {
     ImVec2 prev;
     for (size_t i = 0; i < n; ++i) {
       if (!std::isfinite(ser.x[i]) || !std::isfinite(ser.y[i])) {
-        have_prev = false;  // a gap, never a line to 0
+        have_prev = false;
         continue;
       }
-      const ImVec2 p(to_x(ser.x[i]), to_y(ser.y[i]));
+      const ImVec2 p(a.to_x(ser.x[i]), a.to_y(ser.y[i]));
       if (lines && have_prev) dl->AddLine(prev, p, colour, 1.5F);
       if (points) dl->AddCircleFilled(p, 3.0F, colour);
       prev = p;
       have_prev = true;
-      if (hovered) {
-        const double d2 = (p.x - mouse.x) * (p.x - mouse.x) + (p.y - mouse.y) * (p.y - mouse.y);
-        if (d2 < best_d2) {
-          best_d2 = d2;
-          nearest = ser.name + ": " + axis_title(f.x) + " " + tick_label(ser.x[i], {0.0, 0.01}) + ", " +
-                    axis_title(f.y) + " " + tick_label(ser.y[i], {0.0, 0.01});
-        }
+      if (!hovered) continue;
+      const double d2 = (p.x - mouse.x) * (p.x - mouse.x) + (p.y - mouse.y) * (p.y - mouse.y);
+      if (d2 < best_d2) {
+        best_d2 = d2;
+        nearest = ser.name + ": " + axis_title(f.x) + " " + tick_label(ser.x[i], {0.0, 0.01}) + ", " + axis_title(f.y) +
+                  " " + tick_label(ser.y[i], {0.0, 0.01});
       }
     }
   }
+  return {nearest, best_d2};
+}
+
+}  // namespace
+
+void draw_figure_view(const char* id, const Figure& f, float height_px) {
+  ImGui::PushID(id);
+  if (!f.title.empty()) ImGui::TextUnformatted(f.title.c_str());
+  draw_legend(f);
+  FigureArea a;
+  a.xr = x_range(f);
+  a.yr = y_range(f);
+  const ImVec2 top = ImGui::GetCursorScreenPos();
+  const float width = std::max(200.0F, ImGui::GetContentRegionAvail().x);
+  const float tick_h = ImGui::GetTextLineHeight() + 4;
+  a.p0 = ImVec2(top.x + kLeftGutterPx, top.y);
+  a.p1 = ImVec2(top.x + width - kRightGutterPx, top.y + height_px);
+  ImDrawList* dl = ImGui::GetWindowDrawList();
+  dl->AddRectFilled(a.p0, a.p1, palette::kPanelBackground, 3.0F);
+  dl->AddRect(a.p0, a.p1, palette::kPanelBorder, 3.0F);
+  ImGui::SetCursorScreenPos(a.p0);
+  ImGui::InvisibleButton("figure", ImVec2(std::max(1.0F, a.p1.x - a.p0.x), height_px));
+  const bool hovered = ImGui::IsItemHovered();
+  draw_axes(dl, a, f, height_px);
+  dl->PushClipRect(a.p0, a.p1, true);
+  const auto [nearest, best_d2] = draw_series(dl, a, f, hovered);
   dl->PopClipRect();
   if (hovered && !nearest.empty() && best_d2 < 400.0) ImGui::SetTooltip("%s", nearest.c_str());
   // Axis titles: y above the tick labels at the top-left, x under the ticks.
-  ImGui::SetCursorScreenPos(ImVec2(p0.x, p1.y + tick_h));
+  ImGui::SetCursorScreenPos(ImVec2(a.p0.x, a.p1.y + tick_h));
   ImGui::TextDisabled("%s", axis_title(f.x).c_str());
   ImGui::SameLine(0, 24);
   ImGui::TextDisabled("y: %s", axis_title(f.y).c_str());

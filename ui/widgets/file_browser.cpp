@@ -1,5 +1,7 @@
 #include "ui/widgets/file_browser.h"
 
+#include "ui/widgets/palette.h"
+
 #include <imgui.h>
 
 #include <cstdio>
@@ -31,7 +33,7 @@ std::optional<std::filesystem::path> FileBrowser::draw() {
     ImGui::TextDisabled("Folder");
     ImGui::SameLine();
     ImGui::TextUnformatted(model_.directory().string().c_str());
-    if (!model_.error().empty()) ImGui::TextColored(ImVec4(1, 0.45f, 0.4f, 1), "%s", model_.error().c_str());
+    if (!model_.error().empty()) ImGui::TextColored(palette::kError, "%s", model_.error().c_str());
     const float footer = ImGui::GetFrameHeightWithSpacing() * 2 + 8;
     ImGui::BeginChild("##entries", ImVec2(0, -footer), true);
     if (ImGui::Selectable("..  (parent folder)", false, ImGuiSelectableFlags_DontClosePopups)) model_.enter("..");

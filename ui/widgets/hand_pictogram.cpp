@@ -8,6 +8,7 @@
 #include "ui/scene/orbit_camera.h"
 #include "ui/scene/scene_items.h"
 #include "ui/widgets/imgui_colour.h"
+#include "ui/widgets/palette.h"
 
 namespace lmc::ui {
 namespace {
@@ -47,7 +48,7 @@ void draw_hand_pictogram(const MotionPictogram& p, ImVec2 size) {
   ImDrawList* dl = ImGui::GetWindowDrawList();
   const ImVec2 origin = ImGui::GetCursorScreenPos();
   ImGui::Dummy(size);
-  dl->AddRectFilled(origin, ImVec2(origin.x + size.x, origin.y + size.y), IM_COL32(24, 26, 30, 255), 6.0F);
+  dl->AddRectFilled(origin, ImVec2(origin.x + size.x, origin.y + size.y), palette::kPanelBackground, 6.0F);
   if (size.x < 8 || size.y < 8) return;
   const OrbitCamera cam = pictogram_camera(p, static_cast<double>(size.x / size.y));
   const auto project = [&](const Eigen::Vector3d& w) -> std::optional<ImVec2> {
@@ -70,8 +71,8 @@ void draw_hand_pictogram(const MotionPictogram& p, ImVec2 size) {
       if (a && c) dl->AddLine(*a, *c, colour, 2.0F);
     }
   };
-  outline(p.start, IM_COL32(150, 150, 160, 110));
-  if (p.motion != HandMotion::kOpen) outline(p.end, IM_COL32(255, 190, 60, 170));
+  outline(p.start, palette::kPoseStart);
+  if (p.motion != HandMotion::kOpen) outline(p.end, palette::kPoseEnd);
   // The animated hand: the Layout tab's hand items, far to near so nearer bones cover farther ones.
   SceneInputs in;
   in.hand = &p.now;
@@ -96,9 +97,9 @@ void draw_hand_pictogram(const MotionPictogram& p, ImVec2 size) {
   for (const Stroke& s : strokes) {
     if (s.joint) {
       dl->AddCircleFilled(s.a, s.width, s.colour, 16);
-      dl->AddCircle(s.a, s.width, IM_COL32(40, 40, 45, 200), 16, 1.0F);
+      dl->AddCircle(s.a, s.width, palette::kJointOutline, 16, 1.0F);
     } else {
-      dl->AddLine(s.a, s.b, IM_COL32(40, 40, 45, 255), s.width + 2.0F);
+      dl->AddLine(s.a, s.b, palette::kBoneOutline, s.width + 2.0F);
       dl->AddLine(s.a, s.b, s.colour, s.width);
     }
   }

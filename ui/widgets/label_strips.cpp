@@ -8,6 +8,7 @@
 #include "core/review/trial_series.h"
 #include "ui/model/plot/label_runs.h"
 #include "ui/widgets/flow_row.h"
+#include "ui/widgets/palette.h"
 #include "ui/widgets/plot_frame.h"
 #include "ui/widgets/series_plot.h"
 
@@ -16,7 +17,7 @@ namespace {
 
 // Seen: bluish green; internal model: orange (the palette's own), no hand: the background shows.
 ImU32 label_colour(std::int8_t label) {
-  return label > 0 ? IM_COL32(0, 158, 115, 255) : label == 0 ? IM_COL32(230, 159, 0, 255) : IM_COL32(52, 55, 62, 255);
+  return label > 0 ? palette::kLabelSeen : label == 0 ? palette::kLabelModelled : palette::kLabelNoHand;
 }
 
 }  // namespace
@@ -56,7 +57,7 @@ void draw_label_strips(const char* id, std::span<const double> x, const std::vec
     const LabelStrip& strip = strips[s];
     if (s > 0 && strip.group != strips[s - 1].group) y += kGroupGap;
     if (s == 0 || strip.group != strips[s - 1].group) {
-      dl->AddText(ImGui::GetFont(), ImGui::GetFontSize() * 0.85F, ImVec2(top.x, y - 2), kPlotTickText,
+      dl->AddText(ImGui::GetFont(), ImGui::GetFontSize() * 0.85F, ImVec2(top.x, y - 2), palette::kPlotTickText,
                   strip.group.c_str());
     }
     dl->AddRectFilled(ImVec2(p0.x, y), ImVec2(p1.x, y + strip_height_px), label_colour(-1));
@@ -83,7 +84,7 @@ void draw_label_strips(const char* id, std::span<const double> x, const std::vec
   }
   if (range.cursor && *range.cursor >= lo && *range.cursor <= hi) {
     const float cx = to_x(*range.cursor);
-    dl->AddLine(ImVec2(cx, p0.y), ImVec2(cx, p1.y), IM_COL32(230, 230, 230, 140));
+    dl->AddLine(ImVec2(cx, p0.y), ImVec2(cx, p1.y), palette::kCursorLine);
   }
   if (!tooltip.empty()) ImGui::SetTooltip("%s", tooltip.c_str());
   ImGui::SetCursorScreenPos(ImVec2(top.x, p1.y + 4));

@@ -1,5 +1,7 @@
 #include "ui/widgets/markdown_view.h"
 
+#include "ui/widgets/palette.h"
+
 #include <imgui.h>
 
 #include <algorithm>
@@ -38,7 +40,7 @@ void draw_markdown_view(const char* id, const std::vector<MarkdownBlock>& blocks
           ImGui::TextWrapped("%s", displayable(b.text).c_str());
           ImGui::Separator();
         } else {
-          ImGui::TextColored(ImVec4(0.65F, 0.80F, 1.0F, 1.0F), "%s", displayable(b.text).c_str());
+          ImGui::TextColored(palette::kInfo, "%s", displayable(b.text).c_str());
         }
         break;
       case MarkdownBlock::Kind::kBullet:

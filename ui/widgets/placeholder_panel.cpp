@@ -1,5 +1,7 @@
 #include "ui/widgets/placeholder_panel.h"
 
+#include "ui/widgets/palette.h"
+
 #include <imgui.h>
 
 namespace lmc::ui {
@@ -10,7 +12,7 @@ void draw_placeholder_panel(const char* heading, const std::string& purpose, con
   ImGui::SetCursorPosX(ImGui::GetCursorPosX() + (avail.x - width) * 0.5f);
   ImGui::BeginChild("placeholder_card", ImVec2(width, 0), true);
   ImGui::PushTextWrapPos(0.0f);
-  ImGui::TextColored(ImVec4(0.55f, 0.80f, 1.0f, 1.0f), "%s", heading);
+  ImGui::TextColored(palette::kInfo, "%s", heading);
   ImGui::Separator();
   ImGui::TextUnformatted(purpose.c_str());
   ImGui::Spacing();

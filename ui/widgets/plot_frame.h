@@ -4,11 +4,9 @@
 // y range written at its top-left and bottom-left corners. One place, so the plots look alike.
 #include <imgui.h>
 
-namespace lmc::ui {
+#include "ui/widgets/palette.h"
 
-// The plots' text and grid colours on the dark panel.
-inline constexpr ImU32 kPlotTickText = IM_COL32(170, 175, 185, 255);
-inline constexpr ImU32 kPlotGridLine = IM_COL32(60, 64, 72, 255);
+namespace lmc::ui {
 
 struct PlotFrame {
   ImDrawList* draw = nullptr;

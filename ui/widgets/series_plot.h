@@ -42,6 +42,10 @@ class SeriesPlot {
   bool hidden(const std::string& name) const;
 
  private:
+  void draw_legend(const std::vector<PlotSeries>& series, const SeriesPlotOptions& options);
+  // On the plot's invisible button, just drawn: `plot_left` and `plot_w` in screen pixels.
+  void handle_input(float plot_left, float plot_w);
+
   std::shared_ptr<LinkedXRange> x_;
   std::map<std::string, bool> hidden_;
 };

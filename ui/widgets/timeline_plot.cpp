@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "ui/widgets/palette.h"
 #include "ui/widgets/plot_frame.h"
 
 namespace lmc::ui {
@@ -35,8 +36,8 @@ void draw_timeline_plot(const char* id, std::span<const TimelineSeries> series, 
   std::snprintf(bottom, sizeof bottom, "%.*f", o.y_decimals, o.y_min);
   draw_y_range_labels(frame, top, bottom);
   std::snprintf(buf, sizeof buf, "%.1f s", o.slice_s * static_cast<double>(n));
-  dl->AddText(ImVec2(right - ImGui::CalcTextSize(buf).x, p1.y - ImGui::GetTextLineHeight() - 2),
-              IM_COL32(120, 125, 135, 255), buf);
+  dl->AddText(ImVec2(right - ImGui::CalcTextSize(buf).x, p1.y - ImGui::GetTextLineHeight() - 2), palette::kPlotNote,
+              buf);
 
   for (const auto& s : series) {
     const ImU32 colour = ImGui::ColorConvertFloat4ToU32(ImVec4(s.rgb[0], s.rgb[1], s.rgb[2], 1.0F));
@@ -58,7 +59,7 @@ void draw_timeline_plot(const char* id, std::span<const TimelineSeries> series, 
     const float mx = ImGui::GetIO().MousePos.x;
     const float f = std::clamp((mx - left) / std::max(1.0F, right - left), 0.0F, 1.0F);
     const auto i = static_cast<size_t>(std::lround(f * static_cast<float>(n - 1)));
-    dl->AddLine(ImVec2(px(i), p0.y), ImVec2(px(i), p1.y), IM_COL32(200, 200, 200, 90));
+    dl->AddLine(ImVec2(px(i), p0.y), ImVec2(px(i), p1.y), palette::kHoverLine);
     ImGui::BeginTooltip();
     ImGui::Text("%.2f s", o.slice_s * static_cast<double>(i));
     for (const auto& s : series) {

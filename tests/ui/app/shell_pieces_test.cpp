@@ -123,7 +123,7 @@ TEST(LayoutTabFileCommands, TheShellsCommandsRunTheTabsOwnOpenAndSave) {
 
 TEST(InspectorTyping, ASingleClickOnAPoseFieldStartsTyping) {
   HeadlessImGui gui{700, 900};
-  auto state = std::make_shared<LayoutTabState>(make_document(default_new_layout()));
+  auto state = std::make_shared<LayoutState>(make_document(default_new_layout()));
   state->select(0);
   InspectorPanel inspector{state};
   const auto body = [&] { inspector.draw(); };

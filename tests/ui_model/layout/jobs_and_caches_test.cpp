@@ -15,7 +15,7 @@
 #include "ui/model/layout/frame_visibility.h"
 #include "ui/model/layout/heatmap_cache.h"
 #include "ui/model/layout/layout_actions.h"
-#include "ui/model/layout/layout_tab_state.h"
+#include "ui/model/layout/layout_state.h"
 #include "ui/model/layout/pose_set_store.h"
 
 namespace lmc::ui {
@@ -187,10 +187,10 @@ TEST(HeatmapCache, PublishesCoarseThenFineGrids) {
 
 // A hidden Layout tab sweeps no heatmap (a recording on the Record tab needs the core), keeps the
 // grid it has, and sweeps again when shown.
-TEST(LayoutTabState, OffScreenTheHeatmapSweepStopsAndResumesWhenShown) {
+TEST(LayoutState, OffScreenTheHeatmapSweepStopsAndResumesWhenShown) {
   LayoutDocument doc = make_document(square_layout());
   doc.pose_set.frames = 10;
-  LayoutTabState s(std::move(doc));
+  LayoutState s(std::move(doc));
   s.select(0);
   s.display.heatmap_cells = 8;
   wait_for([&] {
@@ -199,39 +199,39 @@ TEST(LayoutTabState, OffScreenTheHeatmapSweepStopsAndResumesWhenShown) {
   });
   ASSERT_NE(s.poses.current(), nullptr);
   for (int i = 0; i < 5; ++i) s.update(0.0, false);
-  EXPECT_FALSE(s.heatmap.computing());
-  EXPECT_EQ(s.heatmap.latest(), nullptr) << "no sweep while off screen";
+  EXPECT_FALSE(s.heatmap().computing());
+  EXPECT_EQ(s.heatmap().latest(), nullptr) << "no sweep while off screen";
   wait_for([&] {
     s.update(0.0, true);
-    return s.heatmap.complete();
+    return s.heatmap().complete();
   });
-  ASSERT_TRUE(s.heatmap.complete());
-  const HeatmapGridPtr shown = s.heatmap.latest();
+  ASSERT_TRUE(s.heatmap().complete());
+  const HeatmapGridPtr shown = s.heatmap().latest();
   // Another finger while hidden: nothing starts, the last grid stays for when the tab comes back.
   s.display.heatmap_finger = 2;
   s.update(0.0, false);
-  EXPECT_FALSE(s.heatmap.computing());
-  EXPECT_EQ(s.heatmap.latest(), shown);
+  EXPECT_FALSE(s.heatmap().computing());
+  EXPECT_EQ(s.heatmap().latest(), shown);
   wait_for([&] {
     s.update(0.0, true);
-    return s.heatmap.complete();
+    return s.heatmap().complete();
   });
-  ASSERT_TRUE(s.heatmap.complete());
-  EXPECT_NE(s.heatmap.latest(), shown);
+  ASSERT_TRUE(s.heatmap().complete());
+  EXPECT_NE(s.heatmap().latest(), shown);
   // A sweep under way when the tab is hidden stops (12,000 cells take far longer than the step
   // between the two calls) and starts again when shown.
   s.display.heatmap_cells = 96;
   s.update(0.0, true);
-  EXPECT_TRUE(s.heatmap.computing());
+  EXPECT_TRUE(s.heatmap().computing());
   s.update(0.0, false);
-  EXPECT_FALSE(s.heatmap.computing());
-  EXPECT_FALSE(s.heatmap.complete());
+  EXPECT_FALSE(s.heatmap().computing());
+  EXPECT_FALSE(s.heatmap().complete());
   wait_for([&] {
     s.update(0.0, true);
-    return s.heatmap.complete();
+    return s.heatmap().complete();
   });
-  ASSERT_TRUE(s.heatmap.complete());
-  EXPECT_EQ(s.heatmap.latest()->nx, 96);
+  ASSERT_TRUE(s.heatmap().complete());
+  EXPECT_EQ(s.heatmap().latest()->nx, 96);
 }
 
 TEST(FrameVisibility, CountsAgreeWithTheBitsAndRaysCarryReasons) {
@@ -256,20 +256,20 @@ TEST(FrameVisibility, CountsAgreeWithTheBitsAndRaysCarryReasons) {
   EXPECT_TRUE(explain_frame(l, poses->prepared[0], -1).rays.empty());
 }
 
-TEST(LayoutTabState, UnsavedMarkFollowsTheSavedCommitAndSelectionIsPruned) {
-  LayoutTabState s(make_document(square_layout()));
+TEST(LayoutState, UnsavedMarkFollowsTheSavedCommitAndSelectionIsPruned) {
+  LayoutState s(make_document(square_layout()));
   EXPECT_FALSE(s.unsaved());
   s.select(3);
   ASSERT_TRUE(remove_device(s.upd_history(), 3));
   s.prune_selection();
-  EXPECT_EQ(s.selected, 2);
+  EXPECT_EQ(s.selected(), 2);
   EXPECT_TRUE(s.unsaved());
   EXPECT_NE(s.title().find('*'), std::string::npos);
   s.undo();
   EXPECT_FALSE(s.unsaved()) << "back at the saved commit";
 }
 
-TEST(LayoutTabState, OpeningABadFileNamesTheJsonPathAndChangesNothing) {
+TEST(LayoutState, OpeningABadFileNamesTheJsonPathAndChangesNothing) {
   const auto dir = lmc::test::scratch_dir("ui_model_bad_layout");
   const auto path = dir / "bad.json";
   {
@@ -278,7 +278,7 @@ TEST(LayoutTabState, OpeningABadFileNamesTheJsonPathAndChangesNothing) {
                "devices": [{"slot": "LMC1", "serial": null, "pose": {"x": "left", "y": 0, "z": 0, "rx": 0, "ry": 0, "rz": 0},
                             "offset": [0, 0, 0]}]})";
   }
-  LayoutTabState s(make_document(square_layout()));
+  LayoutState s(make_document(square_layout()));
   const LayoutDocument before = s.history().head();
   const std::string err = s.open_file(path);
   EXPECT_NE(err.find("/devices/0/pose/x"), std::string::npos) << err;
@@ -291,14 +291,14 @@ TEST(LayoutTabState, OpeningABadFileNamesTheJsonPathAndChangesNothing) {
   std::filesystem::remove_all(dir);
 }
 
-TEST(LayoutTabState, SaveThenOpenRoundTripsTheLayout) {
+TEST(LayoutState, SaveThenOpenRoundTripsTheLayout) {
   const auto dir = lmc::test::scratch_dir("ui_model_roundtrip");
-  LayoutTabState s(make_document(square_layout()));
+  LayoutState s(make_document(square_layout()));
   ASSERT_TRUE(set_pose_param(s.upd_history(), 1, 3, 22.5));
   ASSERT_TRUE(s.save_to(dir / "rig.json").empty());
   EXPECT_FALSE(s.unsaved());
   EXPECT_EQ(s.title(), "rig.json");
-  LayoutTabState t(make_document(default_new_layout()));
+  LayoutState t(make_document(default_new_layout()));
   ASSERT_TRUE(t.open_file(dir / "rig.json").empty());
   EXPECT_EQ(t.layout().devices[1].pose.rx_deg, 22.5);
   EXPECT_FALSE(t.unsaved());

@@ -19,7 +19,7 @@
 #include "core/session/session_folder.h"
 #include "tests/support/scratch_dir.h"
 #include "ui/model/devices/fusion_readout.h"
-#include "ui/model/record/record_session_model.h"
+#include "ui/model/record/record_state.h"
 #include "ui/model/workbench_context.h"
 
 namespace lmc::ui {
@@ -43,7 +43,7 @@ NewSessionSpec quick() {
 }
 
 // Polls until `done` or the deadline; returns the status lines poll() gave.
-std::vector<StatusReport> poll_until(RecordSessionModel& m, const std::function<bool()>& done, double timeout_s = 60) {
+std::vector<StatusReport> poll_until(RecordState& m, const std::function<bool()>& done, double timeout_s = 60) {
   std::vector<StatusReport> lines;
   const auto deadline = std::chrono::steady_clock::now() + std::chrono::duration<double>(timeout_s);
   while (std::chrono::steady_clock::now() < deadline) {
@@ -56,7 +56,7 @@ std::vector<StatusReport> poll_until(RecordSessionModel& m, const std::function<
 
 TEST(RecordLiveFusion, ARealTimeTrialShowsTheFusedHandAndItsLatencyThenEscAbortsItKeptAndRedoable) {
   const fs::path dir = test::fresh_test_dir("record_live");
-  RecordSessionModel m;
+  RecordState m;
   ASSERT_EQ(m.create(dir, quick(), real_time_sim()), "");
   ASSERT_EQ(m.override_preflight("test"), "");
   EXPECT_NE(m.abort_trial(), "");  // nothing records yet
@@ -130,7 +130,7 @@ TEST(RecordLiveFusion, ASharedRigSessionRecordsThroughTheWorkbenchsHubAndGivesIt
   WorkbenchContext context;
   context.layout().publish(load_layout_or_preset("paper-initial"));  // as the Layout tab would
   LiveRig& rig = context.rig();
-  RecordSessionModel m(&rig);
+  RecordState m(&rig);
   RecordSettings settings = real_time_sim();
   settings.share_rig_hub = true;
   ASSERT_EQ(m.create(dir, quick(), settings), "");
@@ -169,7 +169,7 @@ TEST(RecordLiveFusion, ASharedRigSessionRecordsThroughTheWorkbenchsHubAndGivesIt
 // without a frame whose verdict says so (not a controller fault) and which cannot be kept at all;
 // an attempt with frames that failed is kept only after a question naming what failed, whose
 // default answer is No.
-void start_first_trial(RecordSessionModel& m, const fs::path& dir, double countdown_s) {
+void start_first_trial(RecordState& m, const fs::path& dir, double countdown_s) {
   RecordSettings settings = real_time_sim();
   settings.countdown_s = countdown_s;
   ASSERT_EQ(m.create(dir, quick(), settings), "");
@@ -179,7 +179,7 @@ void start_first_trial(RecordSessionModel& m, const fs::path& dir, double countd
 
 TEST(RecordAcceptDecision, EscInTheCountdownIsNoDataNotAControllerFaultAndCannotBeKept) {
   const fs::path dir = test::fresh_test_dir("record_accept_countdown");
-  RecordSessionModel m;
+  RecordState m;
   start_first_trial(m, dir, 5.0);
   poll_until(m, [&] { return m.live() && m.live()->phase == devices::TrialPhase::kCountdown; });
   ASSERT_TRUE(m.live());
@@ -212,7 +212,7 @@ TEST(RecordAcceptDecision, EscInTheCountdownIsNoDataNotAControllerFaultAndCannot
 
 TEST(RecordAcceptDecision, AFailedAttemptWithFramesIsKeptOnlyAfterAQuestionWhoseDefaultIsNo) {
   const fs::path dir = test::fresh_test_dir("record_accept_question");
-  RecordSessionModel m;
+  RecordState m;
   start_first_trial(m, dir, 0.0);
   poll_until(m, [&] { return m.live() && m.live()->recorder.frames_written > 20; });
   m.stop_trial();  // Space mid-trial: interrupted, a fail with frames

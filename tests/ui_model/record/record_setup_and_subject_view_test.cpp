@@ -13,8 +13,8 @@
 #include "core/session/trial_files.h"
 #include "tests/support/scratch_dir.h"
 #include "ui/model/record/motion_pictogram.h"
-#include "ui/model/record/record_session_model.h"
 #include "ui/model/record/record_setup_form.h"
+#include "ui/model/record/record_state.h"
 #include "ui/model/record/resume_notice.h"
 #include "ui/model/record/subject_screen_link.h"
 #include "ui/model/record/subject_text_scale.h"
@@ -207,7 +207,7 @@ TEST(RecordResumeNotice, AnInterruptedSessionSaysWhatHappenedAndWhereItContinues
     f.trial_started(0);
     std::ofstream(lmc::trial_files(dir, "Naiv_Static101").recording) << "partial\n";
   }  // the process "dies" mid-trial
-  RecordSessionModel m;
+  RecordState m;
   ASSERT_EQ(m.open(dir, fast_sim()), "");
   const auto& notice = m.resume_notice();
   ASSERT_EQ(notice.size(), 2U);
@@ -221,7 +221,7 @@ TEST(RecordResumeNotice, AnInterruptedSessionSaysWhatHappenedAndWhereItContinues
   ASSERT_EQ(m.open(dir, fast_sim()), "");
   ASSERT_EQ(m.resume_notice().size(), 1U);
   m.close();
-  RecordSessionModel fresh;
+  RecordState fresh;
   NewSessionSpec spec;
   spec.subject.subject_id = "S04";
   spec.protocol = "quick";
@@ -359,7 +359,7 @@ TEST(SubjectView, ShowsTheRedCircleOnlyWhileRecordingAndNothingForTheOperator) {
 
 TEST(SubjectView, FollowsTheRecordModelsSession) {
   const fs::path dir = test::fresh_test_dir("subject_view");
-  RecordSessionModel m;
+  RecordState m;
   EXPECT_EQ(build_subject_view(subject_view_inputs(m), 0).stage, SubjectStage::kNoSession);
   NewSessionSpec spec;
   spec.subject.subject_id = "S05";

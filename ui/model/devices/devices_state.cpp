@@ -68,7 +68,10 @@ void DevicesState::auto_start() {
 std::string DevicesState::start(const std::string& backend, const devices::SimConfig& sim) {
   auto_started_ = true;  // a start by hand (or for a picture) replaces the automatic one
   const std::string err = view_.start(backend, sim);
-  if (!err.empty()) report("Devices: " + err, true);
+  if (!err.empty())
+    report("Devices: " + err, true);
+  else if (showing_error_)
+    report("Devices: started " + backend + " with layout '" + view_.layout().name + "'", false);
   return err;
 }
 

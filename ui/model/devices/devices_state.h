@@ -51,7 +51,7 @@ class DevicesState {
   void auto_start();
   bool auto_started() const { return auto_started_; }
   // Starts a backend ("sim", "leapc", "replay:FILE"); an error goes to the status line and is
-  // returned ("" when started).
+  // returned ("" when started). A start that works replaces an error the line still shows.
   std::string start(const std::string& backend, const devices::SimConfig& sim = {});
   void stop() { view_.stop(); }
   void assign(const std::string& serial, const std::string& slot);
@@ -68,7 +68,8 @@ class DevicesState {
   void report_calibration(const std::string& text, bool is_error) { report("Calibrate: " + text, is_error); }
 
   // A line in the status bar.
-  void report(const std::string& text, bool is_error) const {
+  void report(const std::string& text, bool is_error) {
+    showing_error_ = is_error;
     if (status_) status_(text, is_error);
   }
 
@@ -82,6 +83,7 @@ class DevicesState {
   std::uint64_t seen_messages_ = 0;
   bool auto_started_ = false;
   bool fallback_pending_ = false;
+  bool showing_error_ = false;  // the tab's latest status line is an error
 };
 
 }  // namespace lmc::ui

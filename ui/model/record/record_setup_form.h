@@ -11,7 +11,7 @@
 
 #include "core/session/session_folder.h"
 #include "devices/session_runner/new_session_spec.h"
-#include "ui/model/record/record_session_model.h"
+#include "ui/model/record/record_state.h"
 
 namespace lmc::ui {
 

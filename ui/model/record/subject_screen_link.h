@@ -14,6 +14,7 @@ namespace lmc::ui {
 struct SubjectScreenLink {
   // ---- set by the Record tab ----
   SubjectView view;
+  double recording_s = 0;  // how far into the trial being recorded (0 outside one)
   bool open = false;
   int monitor = -1;  // index into monitors; -1: the last (on a two-monitor bench, not the operator's)
   // The operator's choice of a plain window over covering the monitor; unset until they make one,

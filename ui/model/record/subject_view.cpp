@@ -3,11 +3,11 @@
 #include <algorithm>
 #include <cmath>
 
-#include "ui/model/record/record_session_model.h"
+#include "ui/model/record/record_state.h"
 
 namespace lmc::ui {
 
-SubjectViewInputs subject_view_inputs(const RecordSessionModel& model) {
+SubjectViewInputs subject_view_inputs(const RecordState& model) {
   SubjectViewInputs in;
   in.has_session = model.has_session();
   if (!in.has_session) return in;

@@ -13,7 +13,7 @@
 
 namespace lmc::ui {
 
-class RecordSessionModel;
+class RecordState;
 
 enum class SubjectStage { kNoSession, kGetReady, kWaiting, kCountdown, kRecording, kDone };
 
@@ -46,7 +46,7 @@ int countdown_number(double remaining_s);
 // Whole seconds left of a trial of `duration_s` after `recording_s`, rounded up, for both screens.
 int seconds_left(double duration_s, double recording_s);
 
-SubjectViewInputs subject_view_inputs(const RecordSessionModel& model);
+SubjectViewInputs subject_view_inputs(const RecordState& model);
 // `t_s` drives the pictogram's animation (any steadily increasing clock).
 SubjectView build_subject_view(const SubjectViewInputs& in, double t_s);
 

@@ -4,12 +4,13 @@
 #include <memory>
 
 #include "ui/model/devices/devices_state.h"
+#include "ui/widgets/panel.h"
 
 namespace lmc::ui {
 
-class DeviceLogPanel {
+class DeviceLogPanel : public Panel {
  public:
-  explicit DeviceLogPanel(std::shared_ptr<const DevicesState> state) : state_(std::move(state)) {}
+  explicit DeviceLogPanel(std::shared_ptr<const DevicesState> state) : Panel("device_log"), state_(std::move(state)) {}
   void draw();
 
  private:

@@ -8,12 +8,13 @@
 
 #include "ui/model/devices/devices_state.h"
 #include "ui/widgets/file_browser.h"
+#include "ui/widgets/panel.h"
 
 namespace lmc::ui {
 
-class DevicesCalibratePanel {
+class DevicesCalibratePanel : public Panel {
  public:
-  explicit DevicesCalibratePanel(std::shared_ptr<DevicesState> state) : state_(std::move(state)) {}
+  explicit DevicesCalibratePanel(std::shared_ptr<DevicesState> state) : Panel("calibrate"), state_(std::move(state)) {}
 
   // Draws the section into the current window, using the width available.
   void draw();

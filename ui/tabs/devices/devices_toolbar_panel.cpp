@@ -2,9 +2,12 @@
 
 #include <imgui.h>
 
+#include <cstdio>
 #include <string>
+#include <string_view>
 
 #include "core/common/paths.h"
+#include "ui/widgets/palette.h"
 
 namespace lmc::ui {
 
@@ -12,6 +15,7 @@ void DevicesToolbarPanel::draw() {
   anchors_.clear();  // only what this frame drew
   DevicesState& s = *state_;
   DevicesViewModel& vm = s.view();
+  follow_running_backend();
   ImGui::TextUnformatted("Backend");
   ImGui::SameLine();
   ImGui::SetNextItemWidth(110);
@@ -32,7 +36,7 @@ void DevicesToolbarPanel::draw() {
   ImGui::SameLine();
   ImGui::TextUnformatted("Layout");
   ImGui::SameLine();
-  ImGui::TextColored(ImVec4(0.6F, 0.85F, 1.0F, 1.0F), "%s", vm.layout().name.c_str());
+  ImGui::TextColored(palette::kInfo, "%s", vm.layout().name.c_str());
   if (ImGui::IsItemHovered()) {
     ImGui::SetTooltip("The layout open in the Layout tab: open, edit or pick a preset there and the rig follows");
   }
@@ -55,6 +59,19 @@ void DevicesToolbarPanel::draw() {
     anchors_.remember("stop");
     ImGui::SameLine();
     ImGui::Text("%s running %.0f s", vm.backend().c_str(), vm.running_seconds());
+  }
+}
+
+void DevicesToolbarPanel::follow_running_backend() {
+  const DevicesViewModel& vm = state_->view();
+  if (!vm.running() || vm.backend() == followed_backend_) return;
+  followed_backend_ = vm.backend();
+  constexpr std::string_view kReplay = "replay:";
+  if (followed_backend_.rfind(kReplay, 0) == 0) {
+    backend_choice_ = 2;
+    std::snprintf(replay_, sizeof replay_, "%s", followed_backend_.substr(kReplay.size()).c_str());
+  } else {
+    backend_choice_ = followed_backend_ == "leapc" ? 1 : 0;
   }
 }
 

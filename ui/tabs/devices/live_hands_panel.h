@@ -6,12 +6,13 @@
 
 #include "ui/model/devices/devices_state.h"
 #include "ui/scene/orbit_camera.h"
+#include "ui/widgets/panel.h"
 
 namespace lmc::ui {
 
-class LiveHandsPanel {
+class LiveHandsPanel : public Panel {
  public:
-  explicit LiveHandsPanel(std::shared_ptr<const DevicesState> state) : state_(std::move(state)) {}
+  explicit LiveHandsPanel(std::shared_ptr<const DevicesState> state) : Panel("live_view"), state_(std::move(state)) {}
   void draw();
   const OrbitCamera& camera() const { return camera_; }
 

@@ -11,7 +11,7 @@
 namespace lmc::ui {
 
 TestRecordingPanel::TestRecordingPanel(std::shared_ptr<DevicesState> state, const std::filesystem::path& folder)
-    : state_(std::move(state)) {
+    : Panel("##test_recording"), state_(std::move(state)) {
   std::snprintf(folder_, sizeof folder_, "%s", folder.string().c_str());
   std::snprintf(trial_, sizeof trial_, "%s", "test_trial_1");
 }

@@ -5,11 +5,12 @@
 #include <memory>
 
 #include "ui/model/devices/devices_state.h"
+#include "ui/widgets/panel.h"
 #include "ui/widgets/widget_anchors.h"
 
 namespace lmc::ui {
 
-class TestRecordingPanel {
+class TestRecordingPanel : public Panel {
  public:
   // `folder`: where a recording goes unless the operator types another.
   TestRecordingPanel(std::shared_ptr<DevicesState> state, const std::filesystem::path& folder);

@@ -5,18 +5,24 @@
 // a controller that moved, so the table follows a drag.
 #include <memory>
 
-#include "ui/model/layout/layout_tab_state.h"
+#include "ui/model/layout/layout_state.h"
 #include "ui/widgets/file_browser.h"
+#include "ui/widgets/panel.h"
 
 namespace lmc::ui {
 
-class CoveragePanel {
+class CoveragePanel : public Panel {
  public:
-  explicit CoveragePanel(std::shared_ptr<LayoutTabState> state) : state_(std::move(state)) {}
+  explicit CoveragePanel(std::shared_ptr<LayoutState> state) : Panel("##coverage"), state_(std::move(state)) {}
   void draw();
 
  private:
-  std::shared_ptr<LayoutTabState> state_;
+  bool draw_status();
+  void draw_table(const Coverage& c) const;
+  static void draw_metric(const CoverageSnapshot& snap);
+  static void draw_histogram(const Coverage& c);
+
+  std::shared_ptr<LayoutState> state_;
   FileBrowser report_browser_{"Write the layout report into a new folder", ""};
 };
 

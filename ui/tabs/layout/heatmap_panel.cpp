@@ -5,12 +5,13 @@
 #include <string>
 
 #include "ui/widgets/colour_legend.h"
+#include "ui/widgets/palette.h"
 #include "ui/widgets/progress_row.h"
 
 namespace lmc::ui {
 
 void HeatmapPanel::draw() {
-  LayoutTabState& s = *state_;
+  LayoutState& s = *state_;
   DisplaySettings& d = s.display;
   ImGui::Checkbox("Show the heatmap on the table", &d.show_heatmap);
   ImGui::PushTextWrapPos(0.0f);
@@ -19,10 +20,10 @@ void HeatmapPanel::draw() {
       "pose set's frames in which the finger would be visible, or the frames it would add because no "
       "other controller sees the finger.");
   ImGui::PopTextWrapPos();
-  if (s.selected < 0) {
-    ImGui::TextColored(ImVec4(1.0f, 0.75f, 0.3f, 1.0f), "Select a controller to sweep.");
+  if (s.selected() < 0) {
+    ImGui::TextColored(palette::kWarning, "Select a controller to sweep.");
   } else {
-    ImGui::Text("Controller: %s", s.layout().devices[static_cast<size_t>(s.selected)].slot.c_str());
+    ImGui::Text("Controller: %s", s.layout().devices[static_cast<size_t>(s.selected())].slot.c_str());
   }
   const char* fingers[] = {"all five", "thumb", "index", "middle", "ring", "pinky"};
   int f = d.heatmap_finger + 1;
@@ -42,15 +43,15 @@ void HeatmapPanel::draw() {
 
   ImGui::Spacing();
   draw_colour_bar(s.heatmap_range(), std::min(300.0f, ImGui::GetContentRegionAvail().x), 100.0, 0, " %");
-  const HeatmapGridPtr g = s.heatmap.latest();
+  const HeatmapGridPtr g = s.heatmap().latest();
   if (g) {
     ImGui::TextDisabled("data range %.1f - %.1f %% · %d × %d cells%s", g->data_min * 100, g->data_max * 100, g->nx,
                         g->nz, g->fine ? "" : " (preview)");
   }
-  if (s.heatmap.computing()) {
-    draw_progress_row("heatmap", s.heatmap.fraction(), s.heatmap.stage(), 0.0, std::nullopt, false);
+  if (s.heatmap().computing()) {
+    draw_progress_row("heatmap", s.heatmap().fraction(), s.heatmap().stage(), 0.0, std::nullopt, false);
   }
-  if (!s.heatmap.error().empty()) ImGui::TextColored(ImVec4(1, 0.45f, 0.4f, 1), "%s", s.heatmap.error().c_str());
+  if (!s.heatmap().error().empty()) ImGui::TextColored(palette::kError, "%s", s.heatmap().error().c_str());
 }
 
 }  // namespace lmc::ui

@@ -4,17 +4,18 @@
 // controller sees), grid size and extent, fixed 0–100 % or data range, and the sweep's progress.
 #include <memory>
 
-#include "ui/model/layout/layout_tab_state.h"
+#include "ui/model/layout/layout_state.h"
+#include "ui/widgets/panel.h"
 
 namespace lmc::ui {
 
-class HeatmapPanel {
+class HeatmapPanel : public Panel {
  public:
-  explicit HeatmapPanel(std::shared_ptr<LayoutTabState> state) : state_(std::move(state)) {}
+  explicit HeatmapPanel(std::shared_ptr<LayoutState> state) : Panel("##heatmap_body"), state_(std::move(state)) {}
   void draw();
 
  private:
-  std::shared_ptr<LayoutTabState> state_;
+  std::shared_ptr<LayoutState> state_;
 };
 
 }  // namespace lmc::ui

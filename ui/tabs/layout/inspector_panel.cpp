@@ -5,12 +5,13 @@
 #include <cstdio>
 
 #include "core/io/sensor_catalogue_json.h"
+#include "ui/widgets/palette.h"
 
 namespace lmc::ui {
 
 void InspectorPanel::draw() {
   anchors_.clear();
-  LayoutTabState& s = *state_;
+  LayoutState& s = *state_;
   const Layout& l = s.layout();
   ImGui::TextDisabled("Controllers (%d of 1-%d)", l.device_count(), kMaxDevices);
   ImGui::BeginChild("##devices", ImVec2(0, ImGui::GetTextLineHeightWithSpacing() * std::min(l.device_count(), 5) + 8),
@@ -21,7 +22,7 @@ void InspectorPanel::draw() {
     std::snprintf(label, sizeof label, "%-5s %-5s %-9s x %5.0f z %5.0f rx %5.1f ry %6.1f##dev%d", d.slot.c_str(),
                   d.model.c_str(), d.serial ? d.serial->c_str() : "", d.pose.x_mm, d.pose.z_mm, d.pose.rx_deg,
                   d.pose.ry_deg, i);
-    if (ImGui::Selectable(label, s.selected == i)) s.select(i);
+    if (ImGui::Selectable(label, s.selected() == i)) s.select(i);
     anchors_.remember("device." + std::to_string(i));
     if (ImGui::IsItemHovered()) {
       const SensorSpec* spec = sensor_catalogue().find(d.model);
@@ -36,23 +37,23 @@ void InspectorPanel::draw() {
   anchors_.remember("add");
   ImGui::EndDisabled();
   ImGui::SameLine();
-  ImGui::BeginDisabled(s.selected < 0 || l.device_count() <= 1);
-  if (ImGui::Button("Remove selected")) s.report(remove_device(s.upd_history(), s.selected), "Remove controller");
+  ImGui::BeginDisabled(s.selected() < 0 || l.device_count() <= 1);
+  if (ImGui::Button("Remove selected")) s.report(remove_device(s.upd_history(), s.selected()), "Remove controller");
   anchors_.remember("remove");
   ImGui::EndDisabled();
 
   ImGui::Separator();
-  if (s.selected >= 0 && s.selected < s.doc().device_count()) {
-    draw_device(s.selected);
+  if (s.selected() >= 0 && s.selected() < s.doc().device_count()) {
+    draw_device(s.selected());
     ImGui::Separator();
-    draw_model_and_sensor(s.selected);
+    draw_model_and_sensor(s.selected());
   } else {
     ImGui::TextDisabled("Select a controller in the scene or the list to edit it.");
   }
 }
 
 void InspectorPanel::draw_device(int index) {
-  LayoutTabState& s = *state_;
+  LayoutState& s = *state_;
   const LayoutDevice& d = s.layout().devices[static_cast<size_t>(index)];
   // Re-sync the text fields when the selection or the document changed under them.
   if (buffers_for_ != index || buffers_head_ != s.history().head_id()) {
@@ -121,15 +122,24 @@ void InspectorPanel::draw_device(int index) {
 }
 
 void InspectorPanel::draw_model_and_sensor(int index) {
-  LayoutTabState& s = *state_;
-  const std::string slot = s.layout().devices[static_cast<size_t>(index)].slot;
-  const std::string shown_model = s.layout().devices[static_cast<size_t>(index)].model;
-  const SensorSpec* shown_spec = sensor_catalogue().find(shown_model);
   ImGui::PushID("model");
   if (scroll_to_model_) {
     ImGui::SetScrollHereY(0.0f);
     scroll_to_model_ = false;
   }
+  draw_model_combo(index);
+  draw_sensor_fields(index);
+  const LayoutDevice& d = state_->layout().devices[static_cast<size_t>(index)];
+  if (const SensorSpec* spec = sensor_catalogue().find(d.model)) draw_position_noise(*spec);
+  draw_model_buttons(index);
+  ImGui::PopID();
+}
+
+void InspectorPanel::draw_model_combo(int index) {
+  LayoutState& s = *state_;
+  const std::string slot = s.layout().devices[static_cast<size_t>(index)].slot;
+  const std::string shown_model = s.layout().devices[static_cast<size_t>(index)].model;
+  const SensorSpec* shown_spec = sensor_catalogue().find(shown_model);
   // As wide as the panel allows beside its label: the study's model has a long name.
   ImGui::SetNextItemWidth(-(ImGui::CalcTextSize("Model").x + ImGui::GetStyle().ItemInnerSpacing.x));
   if (ImGui::BeginCombo("Model", shown_spec ? shown_spec->name.c_str() : shown_model.c_str())) {
@@ -148,12 +158,15 @@ void InspectorPanel::draw_model_and_sensor(int index) {
         "The values below are its model's; one you change overrides the model for %s only.",
         slot.c_str(), slot.c_str());
   }
+}
 
-  // Read again: the combo may just have changed the model. A value that differs from the model's
-  // is an override (what the layout file stores for this controller).
+// The sensor's values, read again (the combo may just have changed the model). A value that
+// differs from the model's is an override (what the layout file stores for this controller).
+void InspectorPanel::draw_sensor_fields(int index) {
+  LayoutState& s = *state_;
   const LayoutDevice& d = s.layout().devices[static_cast<size_t>(index)];
-  const std::string model_id = d.model;  // kept: the actions below replace the devices `d` is in
-  const SensorSpec* spec = sensor_catalogue().find(model_id);
+  const std::string slot = d.slot;  // kept: the actions below replace the devices `d` is in
+  const SensorSpec* spec = sensor_catalogue().find(d.model);
   const SensorModel model_sensor = spec ? spec->sensor : d.sensor;
   SensorModel sensor = d.sensor;
   struct Field {
@@ -184,34 +197,43 @@ void InspectorPanel::draw_model_and_sensor(int index) {
       char model_text[48];
       std::snprintf(model_text, sizeof model_text, "%.0f%s", f.model_value, f.unit);
       ImGui::SameLine();
-      ImGui::TextColored(ImVec4(1.0f, 0.70f, 0.30f, 1.0f), "overrides %s", model_text);
+      ImGui::TextColored(palette::kWarning, "overrides %s", model_text);
       anchors_.remember(std::string("override.") + f.key);
     }
     ImGui::PopID();
   }
   if (changed) preview_device_sensor(s.upd_history(), index, sensor);
   if (released) s.report(set_device_sensor(s.upd_history(), index, sensor), "Sensor of " + slot);
-  // Not a layout value (nothing to drag): how far this model's reported positions scatter, which
-  // the simulated rig adds to every point of a controller of this model. A no-break space keeps
-  // the figure and its unit on one line when the text wraps.
-  if (spec != nullptr) {
-    char noise[160];
-    if (spec->position_noise_sd_mm) {
-      std::snprintf(noise, sizeof noise,
-                    "Position noise %.2f\u00a0mm SD per axis (published); the simulated rig uses it",
-                    *spec->position_noise_sd_mm);
-    } else {
-      std::snprintf(noise, sizeof noise,
-                    "Position noise: no published figure; the simulated rig uses %.0f\u00a0mm SD per axis",
-                    kDefaultPositionNoiseSdMm);
-    }
-    ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
-    ImGui::TextWrapped("%s", noise);
-    ImGui::PopStyleColor();
-    anchors_.remember("position-noise");
-  }
+}
 
-  const bool overridden = spec != nullptr && !(sensor == spec->sensor);
+// Not a layout value (nothing to drag): how far this model's reported positions scatter, which
+// the simulated rig adds to every point of a controller of this model. A no-break space keeps the
+// figure and its unit on one line when the text wraps.
+void InspectorPanel::draw_position_noise(const SensorSpec& spec) {
+  char noise[160];
+  if (spec.position_noise_sd_mm) {
+    std::snprintf(noise, sizeof noise, "Position noise %.2f\u00a0mm SD per axis (published); the simulated rig uses it",
+                  *spec.position_noise_sd_mm);
+  } else {
+    std::snprintf(noise, sizeof noise,
+                  "Position noise: no published figure; the simulated rig uses %.0f\u00a0mm SD per axis",
+                  kDefaultPositionNoiseSdMm);
+  }
+  ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
+  ImGui::TextWrapped("%s", noise);
+  ImGui::PopStyleColor();
+  anchors_.remember("position-noise");
+}
+
+// Reset to model (while the sensor overrides it) and Apply this model to all controllers.
+void InspectorPanel::draw_model_buttons(int index) {
+  LayoutState& s = *state_;
+  const LayoutDevice& d = s.layout().devices[static_cast<size_t>(index)];
+  const std::string slot = d.slot;
+  const std::string model_id = d.model;  // kept: the actions below replace the devices `d` is in
+  const SensorSpec* spec = sensor_catalogue().find(model_id);
+  const SensorModel model_sensor = spec ? spec->sensor : d.sensor;
+  const bool overridden = spec != nullptr && !(d.sensor == spec->sensor);
   ImGui::BeginDisabled(!overridden);
   if (ImGui::Button("Reset to model")) s.report(reset_device_sensor(s.upd_history(), index), "Reset " + slot);
   anchors_.remember("reset-sensor");
@@ -231,7 +253,6 @@ void InspectorPanel::draw_model_and_sensor(int index) {
     ImGui::SetTooltip("Every controller becomes a %s, overrides dropped (one undo step)",
                       spec ? spec->name.c_str() : model_id.c_str());
   }
-  ImGui::PopID();
 }
 
 }  // namespace lmc::ui

@@ -8,14 +8,16 @@
 #include <memory>
 #include <string>
 
-#include "ui/model/layout/layout_tab_state.h"
+#include "core/layout/sensor_catalogue.h"
+#include "ui/model/layout/layout_state.h"
+#include "ui/widgets/panel.h"
 #include "ui/widgets/widget_anchors.h"
 
 namespace lmc::ui {
 
-class InspectorPanel {
+class InspectorPanel : public Panel {
  public:
-  explicit InspectorPanel(std::shared_ptr<LayoutTabState> state) : state_(std::move(state)) {}
+  explicit InspectorPanel(std::shared_ptr<LayoutState> state) : Panel("##inspector_body"), state_(std::move(state)) {}
   void draw();
   // "add", "remove", "device.<i>", "lock.<k>", "pose.<k>", "model", "model.<id>" (while the combo
   // is open), "sensor.<field>", "override.<field>" (only when overridden), "reset-sensor",
@@ -29,8 +31,12 @@ class InspectorPanel {
   // The selected controller's catalogue model, its sensor values (marked where they override the
   // model's), "Reset to model" and "Apply this model to all controllers".
   void draw_model_and_sensor(int index);
+  void draw_model_combo(int index);
+  void draw_sensor_fields(int index);
+  void draw_position_noise(const SensorSpec& spec);
+  void draw_model_buttons(int index);
 
-  std::shared_ptr<LayoutTabState> state_;
+  std::shared_ptr<LayoutState> state_;
   WidgetAnchors anchors_;
   char slot_buf_[64] = {};
   char serial_buf_[64] = {};

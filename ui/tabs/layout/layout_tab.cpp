@@ -5,9 +5,6 @@
 #include <imgui.h>
 
 #include <algorithm>
-#include <cmath>
-#include <cstdio>
-#include <cstdlib>
 #include <filesystem>
 
 #include "core/common/paths.h"
@@ -22,18 +19,17 @@
 #include "ui/tabs/layout/scene_panel.h"
 #include "ui/tabs/layout/timeline_panel.h"
 #include "ui/widgets/flow_row.h"
+#include "ui/widgets/palette.h"
 
 namespace lmc::ui {
 namespace {
-
-constexpr const char* kStartLayout = "paper-optimized-as-processed";
 
 LayoutDocument initial_document() {
   // Open on the paper's optimized layout as the authors processed it: the first thing a lab sees is
   // a real design in which every controller sees the hand (the table's own numbers point LMC1 away
   // from it, and the Devices tab would stream a controller that never sees anything).
   try {
-    return make_document(load_layout_or_preset(kStartLayout));
+    return make_document(load_layout_or_preset(LayoutTab::kStartLayout));
   } catch (const std::exception&) {
     return make_document(default_new_layout());
   }
@@ -43,7 +39,7 @@ LayoutDocument initial_document() {
 // and the status line follow an applied or undone calibration as they follow this tab's own edits.
 class StateLayoutEditor final : public LayoutEditor {
  public:
-  explicit StateLayoutEditor(LayoutTabState& state) : state_(state) {}
+  explicit StateLayoutEditor(LayoutState& state) : state_(state) {}
   const Layout& committed() const override { return state_.history().head().layout; }
   ActionResult apply_calibration(const Layout& calibrated) override {
     ActionResult r = ui::apply_calibration(state_.upd_history(), calibrated);
@@ -55,7 +51,7 @@ class StateLayoutEditor final : public LayoutEditor {
   void undo() override { state_.undo(); }
 
  private:
-  LayoutTabState& state_;
+  LayoutState& state_;
 };
 
 // GLFW key codes (the 1.86 GLFW backend indexes KeysDown by them); letters are their ASCII codes.
@@ -72,8 +68,8 @@ std::unique_ptr<Tab> make_layout_tab(StatusSink& status, WorkbenchContext& conte
 LayoutTab::LayoutTab(StatusSink& status, std::unique_ptr<SceneRenderer> renderer, CurrentLayout* shared)
     : status_(status),
       shared_layout_(shared),
-      state_(std::make_shared<LayoutTabState>(initial_document(),
-                                              [this](const std::string& t, bool e) { status_.set_status(t, e); })),
+      state_(std::make_shared<LayoutState>(initial_document(),
+                                           [this](const std::string& t, bool e) { status_.set_status(t, e); })),
       renderer_(std::move(renderer)) {
   scene_ = std::make_unique<ScenePanel>(state_, [this] { return this->renderer(); });
   timeline_ = std::make_unique<TimelinePanel>(state_);
@@ -91,47 +87,6 @@ LayoutTab::LayoutTab(StatusSink& status, std::unique_ptr<SceneRenderer> renderer
 
 LayoutTab::~LayoutTab() {
   if (shared_layout_ != nullptr && shared_layout_->editor() == editor_.get()) shared_layout_->set_editor(nullptr);
-  if (stats_frames_wanted_ > 0) report_frame_stats();
-}
-
-void LayoutTab::scripted_drag_step() {
-  LayoutTabState& s = *state_;
-  if (stats_frame_ >= stats_frames_wanted_ || s.selected < 0 || !s.poses.current()) return;
-  // Start once the heatmap and coverage have settled, so the figure is "dragging with live
-  // coverage", not "dragging while the first heatmap sweep is still running".
-  if (stats_frame_ == 0 && s.busy()) return;
-  // A slow circle of 80 mm around the start position, as a hand on the mouse would do.
-  const double t = stats_frame_ * 0.05;
-  DevicePose p = stats_start_pose_;
-  p.x_mm += 80.0 * std::sin(t);
-  p.z_mm += 80.0 * (1.0 - std::cos(t));
-  preview_device_pose(s.upd_history(), s.selected, p);
-  if (++stats_frame_ == stats_frames_wanted_) commit_device_pose(s.upd_history(), s.selected, "Move");
-}
-
-void LayoutTab::report_frame_stats() const {
-  if (frame_ms_.empty()) return;
-  std::vector<double> v = frame_ms_;
-  std::sort(v.begin(), v.end());
-  double sum = 0;
-  for (double x : v) sum += x;
-  const auto pct = [&](double q) {
-    return v[std::min(v.size() - 1, static_cast<size_t>(q * static_cast<double>(v.size())))];
-  };
-  const PoseSetPtr p = state_->poses.current();
-  std::vector<double> iv = interval_ms_;
-  std::sort(iv.begin(), iv.end());
-  const double whole_median = iv.empty() ? 0.0 : iv[iv.size() / 2] - 15.0;
-  std::fprintf(
-      stderr,
-      "layout tab frame CPU (update + draw incl. scene rendering), %zu frames while dragging %s: "
-      "mean %.2f ms, median %.2f ms, p95 %.2f ms, max %.2f ms; %d controllers, %d-frame pose set, "
-      "%d coverage updates during the drag (update step %.2f ms/frame on average); whole frame incl. ImGui "
-      "rendering and buffer swap (frame-to-frame interval minus the capture loop's 15 ms pause): median %.2f ms\n",
-      v.size(),
-      state_->selected >= 0 ? state_->layout().devices[static_cast<size_t>(state_->selected)].slot.c_str() : "-",
-      sum / static_cast<double>(v.size()), pct(0.5), pct(0.95), v.back(), state_->layout().device_count(),
-      p ? p->size() : 0, coverage_updates_, update_ms_ / std::max(1, stats_frame_), whole_median);
 }
 
 SceneRenderer* LayoutTab::renderer() {
@@ -151,21 +106,6 @@ SceneRenderer* LayoutTab::renderer() {
 }
 
 void LayoutTab::update(bool shown) {
-  const auto now = std::chrono::steady_clock::now();
-  if (stats_frames_wanted_ > 0 && stats_frame_ > 0 && stats_frame_ <= stats_frames_wanted_) {
-    interval_ms_.push_back(std::chrono::duration<double, std::milli>(now - frame_start_).count());
-  }
-  frame_start_ = now;
-  if (stats_frames_wanted_ > 0) scripted_drag_step();
-  if (capture_cancel_at_ && now >= *capture_cancel_at_) {
-    capture_cancel_at_.reset();
-    state_->cancel_optimiser();
-  }
-  // The mixed-rig capture's model changes are taken back once another tab is shown, so the tabs
-  // captured after it (Devices) see the layout they always saw.
-  if (!shown && mixed_rig_capture_steps_ > 0) {
-    for (; mixed_rig_capture_steps_ > 0; --mixed_rig_capture_steps_) state_->undo();
-  }
   if (pose_requests_ != nullptr && !pose_requests_->empty()) {
     state_->use_recorded_pose_set(std::move(*pose_requests_));
     pose_requests_->clear();
@@ -174,9 +114,6 @@ void LayoutTab::update(bool shown) {
   state_->update(static_cast<double>(ImGui::GetIO().DeltaTime), shown);
   // The committed layout, not the scratch copy: a drag in progress would restart the rig every frame.
   if (shared_layout_ != nullptr) shared_layout_->publish(state_->history().head().layout);
-  if (stats_frames_wanted_ > 0) {
-    update_ms_ += std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - frame_start_).count();
-  }
 }
 
 std::string LayoutTab::document_title() const {
@@ -211,90 +148,6 @@ void LayoutTab::open_document(const std::filesystem::path& path) {
   pending_path_ = path;
   request(Pending::kOpenPath);
 }
-
-int LayoutTab::prepare_for_capture() {
-  // What a new user sees first, or LMC_LAYOUT_PRESET=NAME (the Devices capture follows it).
-  const char* preset = std::getenv("LMC_LAYOUT_PRESET");
-  state_->load_preset(preset != nullptr && *preset != '\0' ? preset : kStartLayout);
-  state_->select(1);
-  state_->display.show_heatmap = true;
-  state_->display.heatmap_finger = 1;  // index: the finger the study's index-flexion trials move
-  state_->display.show_pyramids = true;
-  state_->display.show_rays = true;
-  scene_->frame_all();
-  if (const char* view = std::getenv("LMC_LAYOUT_PLAIN"); view != nullptr && view[0] == '1') {
-    // Controllers, hand and coverage only: for comparing frame times without the heavy overlays.
-    state_->display.show_pyramids = false;
-    state_->display.show_heatmap = false;
-    state_->display.show_rays = false;
-  }
-  // LMC_LAYOUT_HEATMAP_CELLS=N: a coarser heatmap grid. The smoke test under ASan uses 24: the
-  // 48×48 sweep did not finish within the capture's 20 s there (the picture showed the 24×24
-  // preview anyway) and went on using a core beside the other tests.
-  if (const char* cells = std::getenv("LMC_LAYOUT_HEATMAP_CELLS"); cells != nullptr && std::atoi(cells) > 0) {
-    state_->display.heatmap_cells = std::clamp(std::atoi(cells), 8, 96);  // the Heatmap panel's slider range
-  }
-  if (const char* view = std::getenv("LMC_LAYOUT_VIEW")) {  // top, front or side (default: 3D)
-    const std::string v = view;
-    if (v == "top") state_->camera.set_named_view(NamedView::kTop);
-    if (v == "front") state_->camera.set_named_view(NamedView::kFront);
-    if (v == "side") state_->camera.set_named_view(NamedView::kSide);
-  }
-  if (const char* panel = std::getenv("LMC_LAYOUT_PANEL")) {
-    show_panel(panel);
-    // "optimiser-settings": the Optimiser panel with its settings and term weights open.
-    if (capture_panel_ == "optimiser-settings") {
-      capture_panel_ = "optimiser";
-      optimiser_->open_settings_once();
-    }
-    // "optimiser-compare": the Optimiser panel scrolled to the robust rows of Current vs candidate.
-    if (capture_panel_ == "optimiser-compare") {
-      capture_panel_ = "optimiser";
-      optimiser_->show_comparison_once();
-    }
-  }
-  if (const char* env = std::getenv("LMC_LAYOUT_OPTIMISE"); env != nullptr && std::atoi(env) > 0) {
-    state_->pso.iterations = std::atoi(env);
-    // LMC_LAYOUT_STARTS=N: a multi-start run, so the capture shows a convergence curve per start.
-    if (const char* starts = std::getenv("LMC_LAYOUT_STARTS"); starts != nullptr && std::atoi(starts) > 0) {
-      state_->optimiser_starts = std::atoi(starts);
-    }
-    state_->update(0.0);
-    state_->poses.wait();
-    state_->update(0.0);
-    state_->start_optimiser();
-    // LMC_LAYOUT_CANCEL_AFTER=S: Cancel the search S seconds in, so the capture shows a cancelled
-    // search's best so far (set a long search with LMC_LAYOUT_OPTIMISE).
-    if (const char* after = std::getenv("LMC_LAYOUT_CANCEL_AFTER"); after != nullptr && std::atof(after) > 0) {
-      capture_cancel_at_ =
-          std::chrono::steady_clock::now() + std::chrono::duration_cast<std::chrono::steady_clock::duration>(
-                                                 std::chrono::duration<double>(std::atof(after)));
-    }
-  }
-  if (const char* env = std::getenv("LMC_LAYOUT_FRAME_STATS"); env != nullptr && std::atoi(env) > 0) {
-    stats_frames_wanted_ = std::atoi(env);
-    stats_start_pose_ = state_->layout().devices[1].pose;
-  }
-  return 4;
-}
-
-void LayoutTab::prepare_extra_capture(const std::string& name) {
-  if (name != "layout-mixed-rig") return;
-  const char* models[] = {"lmc", "lmc", "lmc2", "lmc2"};
-  for (int i = 0; i < state_->layout().device_count() && i < 4; ++i) {
-    const size_t steps = state_->history().undo_size();
-    state_->report(set_device_model(state_->upd_history(), i, models[i]), "Model");
-    mixed_rig_capture_steps_ += static_cast<int>(state_->history().undo_size() - steps);
-  }
-  state_->select(2);
-  show_panel("inspector");
-  inspector_->show_model_once();
-}
-
-bool LayoutTab::busy_for_capture() const {
-  return state_->busy() || (stats_frames_wanted_ > 0 && stats_frame_ < stats_frames_wanted_);
-}
-// care: the capture loop gives a tab at most 20 s; use a few hundred frames for the statistics.
 
 void LayoutTab::request(Pending action, std::string preset) {
   pending_preset_ = std::move(preset);
@@ -364,13 +217,13 @@ void LayoutTab::handle_shortcuts() {
     return;
   }
   if (ImGui::IsKeyPressed('F', false)) scene_->frame_all();
-  if (ImGui::IsKeyPressed(kKeyDelete, false) && state_->selected >= 0) {
-    state_->report(remove_device(state_->upd_history(), state_->selected), "Remove controller");
+  if (ImGui::IsKeyPressed(kKeyDelete, false) && state_->selected() >= 0) {
+    state_->report(remove_device(state_->upd_history(), state_->selected()), "Remove controller");
   }
 }
 
 void LayoutTab::draw_toolbar() {
-  LayoutTabState& s = *state_;
+  LayoutState& s = *state_;
   if (ImGui::Button("New")) request(Pending::kNew);
   ImGui::SameLine();
   if (ImGui::Button("Open...")) request(Pending::kOpen);
@@ -445,7 +298,7 @@ void LayoutTab::draw_dialogs() {
   }
   if (ImGui::BeginPopupModal("Layout file problem", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) {
     ImGui::PushTextWrapPos(560.0f);
-    ImGui::TextColored(ImVec4(1, 0.5f, 0.45f, 1), "%s", error_message_.c_str());
+    ImGui::TextColored(palette::kError, "%s", error_message_.c_str());
     ImGui::PopTextWrapPos();
     if (ImGui::Button("OK", ImVec2(100, 0))) ImGui::CloseCurrentPopup();
     ImGui::EndPopup();
@@ -453,7 +306,7 @@ void LayoutTab::draw_dialogs() {
 }
 
 void LayoutTab::draw_scene_side() {
-  LayoutTabState& s = *state_;
+  LayoutState& s = *state_;
   // View row above the scene.
   if (ImGui::SmallButton("3D")) s.camera.set_named_view(NamedView::kPerspective);
   ImGui::SameLine();
@@ -489,20 +342,16 @@ void LayoutTab::draw_panel_side() {
   ImGui::BeginChild("##right_tabs", ImVec2(0, avail_y - coverage_h - 4), true);
   if (ImGui::BeginTabBar("##layout_panels")) {
     const auto flags_for = [this](const char* id) {
-      if (capture_panel_frames_ > 0 && capture_panel_ == id) return ImGuiTabItemFlags_SetSelected;
+      if (front_panel_frames_ > 0 && front_panel_ == id) return ImGuiTabItemFlags_SetSelected;
       return ImGuiTabItemFlags_None;
     };
     // Each panel scrolls inside its own child so the tab strip above it stays in view.
     if (ImGui::BeginTabItem("Inspector", nullptr, flags_for("inspector"))) {
-      ImGui::BeginChild("##inspector_body");
-      inspector_->draw();
-      ImGui::EndChild();
+      if (const auto window = inspector_->window()) inspector_->draw();
       ImGui::EndTabItem();
     }
     if (ImGui::BeginTabItem("Heatmap", nullptr, flags_for("heatmap"))) {
-      ImGui::BeginChild("##heatmap_body");
-      heatmap_->draw();
-      ImGui::EndChild();
+      if (const auto window = heatmap_->window()) heatmap_->draw();
       ImGui::EndTabItem();
     }
     bool optimiser_open = false;
@@ -514,32 +363,17 @@ void LayoutTab::draw_panel_side() {
     // While the Optimiser panel is open the scene shows where the search may put controllers.
     state_->display.show_search_box = optimiser_open;
     ImGui::EndTabBar();
-    if (capture_panel_frames_ > 0) --capture_panel_frames_;
+    if (front_panel_frames_ > 0) --front_panel_frames_;
   }
   ImGui::EndChild();
-  ImGui::BeginChild("##coverage", ImVec2(0, 0), true);
-  coverage_->draw();
-  ImGui::EndChild();
+  if (const auto window = coverage_->window(ImVec2(0, 0), true)) coverage_->draw();
 }
 
 void LayoutTab::draw() {
-  LayoutTabState& s = *state_;
   handle_shortcuts();
   draw_toolbar();
-
   split_.draw([this] { draw_scene_side(); }, [this] { draw_panel_side(); });
   draw_dialogs();
-  if (stats_frames_wanted_ > 0 && stats_frame_ > 0 && stats_frame_ <= stats_frames_wanted_ &&
-      frame_start_.time_since_epoch().count() != 0) {
-    if (const auto snap = s.coverage.latest(); snap && snap.get() != last_snapshot_) {
-      last_snapshot_ = snap.get();
-      ++coverage_updates_;
-    }
-    if (frame_ms_.size() < static_cast<size_t>(stats_frames_wanted_)) {
-      frame_ms_.push_back(
-          std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - frame_start_).count());
-    }
-  }
 }
 
 }  // namespace lmc::ui

@@ -1,17 +1,16 @@
 #pragma once
 // The Layout tab: design where the controllers stand, see which fingers each can see,
 // and let the optimiser search for a better layout. This class is the composition root: it builds
-// the shared LayoutTabState and one object per panel, arranges them (ImGui 1.86 has no docking:
+// the shared LayoutState and one object per panel, arranges them (ImGui 1.86 has no docking:
 // child regions with a splitter), and owns the tab-level commands (file dialogs, shortcuts,
 // confirmations).
-#include <chrono>
 #include <filesystem>
 #include <memory>
 #include <optional>
 #include <string>
 #include <vector>
 
-#include "ui/model/layout/layout_tab_state.h"
+#include "ui/model/layout/layout_state.h"
 #include "ui/scene/scene_renderer.h"
 #include "ui/tabs/tab.h"
 #include "ui/widgets/file_browser.h"
@@ -49,23 +48,21 @@ class LayoutTab final : public Tab {
   void handle_file_command(FileCommand command) override;
   void open_document(const std::filesystem::path& path) override;
   std::optional<std::filesystem::path> document_path() const override;
-  int prepare_for_capture() override;
-  bool busy_for_capture() const override;
-  // "layout-mixed-rig": the same layout as two Leap Motion Controllers and two LMC2s, the first
-  // LMC2 selected with its model in the Inspector.
-  std::vector<std::string> extra_captures() const override { return {"layout-mixed-rig"}; }
-  void prepare_extra_capture(const std::string& name) override;
 
   // Where Review leaves trials to design for (WorkbenchContext::layout_pose_request); null in tests.
   void take_pose_requests_from(std::vector<std::string>* requests) { pose_requests_ = requests; }
 
-  LayoutTabState& state() { return *state_; }
+  // The preset the tab opens on.
+  static constexpr const char* kStartLayout = "paper-optimized-as-processed";
+
+  LayoutState& state() { return *state_; }
   ScenePanel& scene_panel() { return *scene_; }
+  InspectorPanel& inspector_panel() { return *inspector_; }
   OptimiserPanel& optimiser_panel() { return *optimiser_; }
   // Brings a right-hand panel to the front on the next draws: "inspector", "heatmap" or "optimiser".
   void show_panel(const std::string& id) {
-    capture_panel_ = id;
-    capture_panel_frames_ = 2;
+    front_panel_ = id;
+    front_panel_frames_ = 2;
   }
   // Modal dialogs off (tests): errors go to the status line only.
   void set_modals_enabled(bool on) { modals_enabled_ = on; }
@@ -82,37 +79,13 @@ class LayoutTab final : public Tab {
   void save(bool save_as);
   SceneRenderer* renderer();
 
-  // Frame-time measurement (LMC_LAYOUT_FRAME_STATS=N with --capture): a scripted drag of the
-  // selected controller for N frames, timing update + draw of this tab (GL submission included).
-  void scripted_drag_step();
-  void report_frame_stats() const;
-  int stats_frames_wanted_ = 0;
-  int stats_frame_ = 0;
-  DevicePose stats_start_pose_;
-  std::vector<double> frame_ms_;
-  std::vector<double> interval_ms_;
-  std::chrono::steady_clock::time_point frame_start_{};
-  int coverage_updates_ = 0;
-  double update_ms_ = 0;
-  const void* last_snapshot_ = nullptr;
-
-  // Screenshot options (read in prepare_for_capture): LMC_LAYOUT_PANEL=inspector|heatmap|optimiser|
-  // optimiser-settings (the Optimiser with its settings and term weights open)|optimiser-compare
-  // (scrolled to Current vs candidate)
-  // picks the right-hand panel; LMC_LAYOUT_OPTIMISE=N runs an N-iteration search first so the
-  // ghost controllers and the comparison table are in the picture; LMC_LAYOUT_CANCEL_AFTER=S
-  // cancels it after S seconds; LMC_LAYOUT_PRESET=NAME opens that preset instead of the start layout.
-  std::string capture_panel_;
-  int capture_panel_frames_ = 0;
-  // LMC_LAYOUT_CANCEL_AFTER=S: when to cancel the search LMC_LAYOUT_OPTIMISE started.
-  std::optional<std::chrono::steady_clock::time_point> capture_cancel_at_;
-  // Undo steps the "layout-mixed-rig" capture added, taken back when another tab is shown.
-  int mixed_rig_capture_steps_ = 0;
+  std::string front_panel_;  // show_panel()'s, for its next draws
+  int front_panel_frames_ = 0;
 
   StatusSink& status_;
   CurrentLayout* shared_layout_ = nullptr;
   std::vector<std::string>* pose_requests_ = nullptr;
-  std::shared_ptr<LayoutTabState> state_;
+  std::shared_ptr<LayoutState> state_;
   std::unique_ptr<LayoutEditor> editor_;  // registered in shared_layout_ for the other tabs' edits
   std::unique_ptr<SceneRenderer> renderer_;
   bool renderer_failed_ = false;

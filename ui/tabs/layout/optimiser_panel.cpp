@@ -3,16 +3,19 @@
 #include <imgui.h>
 
 #include <algorithm>
+#include <cstdint>
 #include <cstdio>
 #include <string>
 
 #include "core/metric/robust_metric.h"
+#include "ui/widgets/palette.h"
 #include "ui/widgets/progress_row.h"
 #include "ui/widgets/series_plot.h"
 
 namespace lmc::ui {
 
-OptimiserPanel::OptimiserPanel(std::shared_ptr<LayoutTabState> state) : state_(std::move(state)) {}
+OptimiserPanel::OptimiserPanel(std::shared_ptr<LayoutState> state)
+    : Panel("##optimiser_body"), state_(std::move(state)) {}
 
 void OptimiserPanel::draw() {
   anchors_.clear();
@@ -22,23 +25,23 @@ void OptimiserPanel::draw() {
   // never lower than its rows need now: the progress row is two lines (with one line reserved,
   // "elapsed ... remaining ..." fell off the bottom of the panel at 1280 x 800).
   const float line = ImGui::GetFrameHeightWithSpacing();
-  const float rows = state_->optimiser.running() ? 2.0f : state_->optimiser.outcome() ? 3.0f : 1.0f;
+  const float rows = state_->optimiser().running() ? 2.0f : state_->optimiser().outcome() ? 3.0f : 1.0f;
   const float footer_h = std::max(rows * line, footer_h_) + 4.0f;
-  ImGui::BeginChild("##optimiser_body", ImVec2(0, -footer_h));
-  if (ImGui::CollapsingHeader("Pose set", ImGuiTreeNodeFlags_DefaultOpen)) draw_pose_set();
-  if (open_settings_once_) ImGui::SetNextItemOpen(true);
-  if (ImGui::CollapsingHeader("Search settings")) draw_settings();
-  open_settings_once_ = false;
-  draw_convergence();
-  draw_comparison();
-  ImGui::EndChild();
+  if (const auto window = this->window(ImVec2(0, -footer_h))) {
+    if (ImGui::CollapsingHeader("Pose set", ImGuiTreeNodeFlags_DefaultOpen)) draw_pose_set();
+    if (open_settings_once_) ImGui::SetNextItemOpen(true);
+    if (ImGui::CollapsingHeader("Search settings")) draw_settings();
+    open_settings_once_ = false;
+    draw_convergence();
+    draw_comparison();
+  }
   const float footer_top = ImGui::GetCursorPosY();
   draw_run();
   footer_h_ = ImGui::GetCursorPosY() - footer_top;
 }
 
 void OptimiserPanel::draw_pose_set() {
-  LayoutTabState& s = *state_;
+  LayoutState& s = *state_;
   if (!choice_synced_ || (!ImGui::IsAnyItemActive() && !(edit_choice_ == s.doc().pose_set) && !browser_.is_open())) {
     edit_choice_ = s.doc().pose_set;
     std::snprintf(file_buf_, sizeof file_buf_, "%s", edit_choice_.file.c_str());
@@ -85,6 +88,13 @@ void OptimiserPanel::draw_pose_set() {
   if (ImGui::Button("Use this pose set")) s.report(set_pose_set_choice(s.upd_history(), edit_choice_), "Pose set");
   ImGui::EndDisabled();
   ImGui::SameLine();
+  draw_pose_set_status();
+}
+
+// The pose set in use: its loading progress (with Cancel), or its frames, where they came from and
+// the trials left out; and why it failed to load.
+void OptimiserPanel::draw_pose_set_status() {
+  LayoutState& s = *state_;
   if (s.poses.loading()) {
     ImGui::TextDisabled("%s... %.0f %%", s.poses.stage().c_str(), 100.0 * s.poses.progress());
     ImGui::SameLine();
@@ -96,7 +106,7 @@ void OptimiserPanel::draw_pose_set() {
       ImGui::PushTextWrapPos(0.0f);
       for (const auto& line : p->set.provenance) ImGui::TextDisabled("%s", line.c_str());
       if (!p->left_out.empty()) {
-        ImGui::TextColored(ImVec4(1, 0.75f, 0.3f, 1), "%zu trials left out (hover)", p->left_out.size());
+        ImGui::TextColored(palette::kWarning, "%zu trials left out (hover)", p->left_out.size());
         if (ImGui::IsItemHovered()) {
           std::string all;
           for (const auto& l : p->left_out) all += l + "\n";
@@ -108,7 +118,7 @@ void OptimiserPanel::draw_pose_set() {
   }
   if (!s.poses.error().empty()) {
     ImGui::PushTextWrapPos(0.0f);
-    ImGui::TextColored(ImVec4(1, 0.45f, 0.4f, 1), "%s", s.poses.error().c_str());
+    ImGui::TextColored(palette::kError, "%s", s.poses.error().c_str());
     ImGui::PopTextWrapPos();
   }
 }
@@ -151,8 +161,17 @@ void OptimiserPanel::draw_recordings_choice() {
 }
 
 void OptimiserPanel::draw_settings() {
-  LayoutTabState& s = *state_;
-  PsoSettings& p = s.pso;
+  LayoutState& s = *state_;
+  PsoSettings p = s.pso();
+  draw_metric(p);
+  draw_swarm(p);
+  s.set_pso(p);
+  ImGui::Spacing();
+  draw_movable();
+  draw_bounds();
+}
+
+void OptimiserPanel::draw_metric(PsoSettings& p) {
   int metric = static_cast<int>(p.metric);
   ImGui::SetNextItemWidth(300);  // the whole of its longest choice
   if (ImGui::Combo("metric", &metric, "study: M only (the reference)\0robust: M, then every controller counts\0")) {
@@ -184,6 +203,10 @@ void OptimiserPanel::draw_settings() {
     if (ImGui::SmallButton("default weights")) p.weights = RobustWeights{};
     ImGui::TreePop();
   }
+}
+
+void OptimiserPanel::draw_swarm(PsoSettings& p) {
+  LayoutState& s = *state_;
   // Rows short enough for the panel at 1280 x 800 (three inputs in a row pushed "starts" off it).
   ImGui::SetNextItemWidth(100);
   ImGui::InputInt("particles", &p.particles);
@@ -193,8 +216,8 @@ void OptimiserPanel::draw_settings() {
   ImGui::InputInt("iterations", &p.iterations);
   p.iterations = std::clamp(p.iterations, 1, 10000);
   ImGui::SetNextItemWidth(100);
-  ImGui::InputInt("starts", &s.optimiser_starts);
-  s.optimiser_starts = std::clamp(s.optimiser_starts, 1, 8);
+  int starts = s.optimiser_starts();
+  if (ImGui::InputInt("starts", &starts)) s.set_optimiser_starts(starts);
   anchors_.remember("starts");
   if (ImGui::IsItemHovered()) {
     ImGui::SetTooltip(
@@ -220,8 +243,10 @@ void OptimiserPanel::draw_settings() {
   }
   if (ImGui::IsItemHovered())
     ImGui::SetTooltip("30 particles, 100 iterations, w 0.9, c1 0.5, c2 0.3 (docs/algorithms/search.md)");
+}
 
-  ImGui::Spacing();
+void OptimiserPanel::draw_movable() {
+  LayoutState& s = *state_;
   ImGui::PushTextWrapPos(0.0f);
   ImGui::TextDisabled("Which controllers may move (locks per parameter are in the Inspector)");
   ImGui::PopTextWrapPos();
@@ -238,32 +263,36 @@ void OptimiserPanel::draw_settings() {
     }
     ImGui::PopID();
   }
+}
+
+void OptimiserPanel::draw_bounds() {
+  LayoutState& s = *state_;
+  const LayoutDocument& doc = s.doc();
   ImGui::TextDisabled("Search bounds (shared by all controllers)");
-  if (ImGui::BeginTable("##bounds", 3, ImGuiTableFlags_SizingFixedFit)) {
-    for (int k = 0; k < kNumPoseParams; ++k) {
-      ImGui::TableNextRow();
-      ImGui::TableSetColumnIndex(0);
-      ImGui::TextUnformatted(pose_param_name(k));
-      ParamRange r = doc.bounds.range[static_cast<size_t>(k)];
-      ImGui::PushID(k);
-      ImGui::TableSetColumnIndex(1);
-      ImGui::SetNextItemWidth(90);
-      ImGui::InputDouble("##lo", &r.lo, 0, 0, "%.0f");
-      const bool lo_done = ImGui::IsItemDeactivatedAfterEdit();
-      ImGui::TableSetColumnIndex(2);
-      ImGui::SetNextItemWidth(90);
-      ImGui::InputDouble("##hi", &r.hi, 0, 0, "%.0f");
-      const bool hi_done = ImGui::IsItemDeactivatedAfterEdit();
-      if (lo_done || hi_done) s.report(set_search_range(s.upd_history(), k, r.lo, r.hi), "Bounds");
-      ImGui::PopID();
-    }
-    ImGui::EndTable();
+  if (!ImGui::BeginTable("##bounds", 3, ImGuiTableFlags_SizingFixedFit)) return;
+  for (int k = 0; k < kNumPoseParams; ++k) {
+    ImGui::TableNextRow();
+    ImGui::TableSetColumnIndex(0);
+    ImGui::TextUnformatted(pose_param_name(k));
+    ParamRange r = doc.bounds.range[static_cast<size_t>(k)];
+    ImGui::PushID(k);
+    ImGui::TableSetColumnIndex(1);
+    ImGui::SetNextItemWidth(90);
+    ImGui::InputDouble("##lo", &r.lo, 0, 0, "%.0f");
+    const bool lo_done = ImGui::IsItemDeactivatedAfterEdit();
+    ImGui::TableSetColumnIndex(2);
+    ImGui::SetNextItemWidth(90);
+    ImGui::InputDouble("##hi", &r.hi, 0, 0, "%.0f");
+    const bool hi_done = ImGui::IsItemDeactivatedAfterEdit();
+    if (lo_done || hi_done) s.report(set_search_range(s.upd_history(), k, r.lo, r.hi), "Bounds");
+    ImGui::PopID();
   }
+  ImGui::EndTable();
 }
 
 void OptimiserPanel::draw_run() {
-  LayoutTabState& s = *state_;
-  OptimiserJob& job = s.optimiser;
+  LayoutState& s = *state_;
+  const OptimiserJob& job = s.optimiser();
   if (job.running()) {
     char stage[96];
     const auto& h = job.history();
@@ -284,11 +313,11 @@ void OptimiserPanel::draw_run() {
     anchors_.remember("start");
     ImGui::EndDisabled();
     ImGui::SameLine();
-    ImGui::TextDisabled("%d particles × %d iterations", s.pso.particles, s.pso.iterations);
+    ImGui::TextDisabled("%d particles × %d iterations", s.pso().particles, s.pso().iterations);
   }
   if (job.state() == JobState::kFailed) {
     ImGui::PushTextWrapPos(0.0f);
-    ImGui::TextColored(ImVec4(1, 0.45f, 0.4f, 1), "Failed: %s", job.error().c_str());
+    ImGui::TextColored(palette::kError, "Failed: %s", job.error().c_str());
     ImGui::PopTextWrapPos();
   }
   const auto outcome = job.outcome();
@@ -316,7 +345,7 @@ void OptimiserPanel::draw_run() {
   anchors_.remember("apply");
   if (ImGui::IsItemHovered()) ImGui::SetTooltip("Replace the poses with the candidate's (one undo step)");
   ImGui::SameLine();
-  if (ImGui::Button("Discard", ImVec2(100, 0))) job.discard();
+  if (ImGui::Button("Discard", ImVec2(100, 0))) s.discard_optimised();
   anchors_.remember("discard");
   ImGui::SameLine();
   ImGui::Checkbox("ghost", &s.display.show_ghost);
@@ -324,8 +353,8 @@ void OptimiserPanel::draw_run() {
 }
 
 void OptimiserPanel::draw_convergence() {
-  LayoutTabState& s = *state_;
-  const OptimiserJob& job = s.optimiser;
+  LayoutState& s = *state_;
+  const OptimiserJob& job = s.optimiser();
   if (job.history().empty() && !job.running()) return;
   // One curve per start, on one iteration axis.
   size_t longest = 0;
@@ -336,7 +365,7 @@ void OptimiserPanel::draw_convergence() {
   o.log_y = true;
   o.height_px = 110;
   o.x_label = "iteration";
-  o.y_label = s.pso.metric == PlacementMetricKind::kStudy ? "best cost M (log scale)" : "best cost R (log scale)";
+  o.y_label = s.pso().metric == PlacementMetricKind::kStudy ? "best cost M (log scale)" : "best cost R (log scale)";
   std::vector<PlotSeries> series;
   const auto& histories = job.histories();
   for (size_t k = 0; k < histories.size(); ++k) {
@@ -347,20 +376,91 @@ void OptimiserPanel::draw_convergence() {
   convergence_.draw("convergence", series, o);
 }
 
+namespace {
+
+// A row of Current vs candidate: green where the candidate is better, red where worse, whichever
+// way the number moved.
+void comparison_row(const char* name, double a, double b, bool lower_better, bool percent,
+                    const char* meaning = nullptr) {
+  ImGui::TableNextRow();
+  ImGui::TableSetColumnIndex(0);
+  ImGui::TextUnformatted(name);
+  if (meaning != nullptr && ImGui::IsItemHovered()) ImGui::SetTooltip("%s (lower is better)", meaning);
+  ImGui::TableSetColumnIndex(1);
+  percent ? ImGui::Text("%.1f %%", a * 100) : ImGui::Text("%.4g", a);
+  ImGui::TableSetColumnIndex(2);
+  percent ? ImGui::Text("%.1f %%", b * 100) : ImGui::Text("%.4g", b);
+  ImGui::TableSetColumnIndex(3);
+  const double diff = b - a;
+  const bool better = lower_better ? diff < 0 : diff > 0;
+  const ImVec4 col = diff == 0 ? palette::kMuted : better ? palette::kOk : palette::kError;
+  percent ? ImGui::TextColored(col, "%+.1f pt", diff * 100) : ImGui::TextColored(col, "%+.4g", diff);
+}
+
+// The share of frames in which every finger is seen by at least `i` controllers.
+double share_seen_by_at_least(const Coverage& c, size_t i) {
+  std::int64_t n = 0;
+  for (size_t k = i; k < c.c.size(); ++k) n += c.c[k];
+  return c.frames > 0 ? static_cast<double>(n) / static_cast<double>(c.frames) : 0.0;
+}
+
+// M, how many controllers see every finger, each finger, and each controller's best finger.
+void coverage_rows(const CoverageSnapshot& cur, const LayoutEvaluation& cand, const Layout& layout) {
+  comparison_row("M, all frames", cur.all.metric, cand.all.metric, true, false);
+  comparison_row("M, palm down", cur.horizontal.metric, cand.horizontal.metric, true, false);
+  comparison_row("M, palm left", cur.vertical.metric, cand.vertical.metric, true, false);
+  // Cumulative shares read one way: more frames with every finger seen by >= i controllers is
+  // better for every i (the c_i histogram itself is not: moving frames from c_1 to c_2 is good).
+  const size_t nc = std::min(cur.all.c.size(), cand.all.c.size());
+  for (size_t i = 1; i < nc; ++i) {
+    char name[48];
+    std::snprintf(name, sizeof name, "all fingers, %zu+ ctrl.", i);
+    comparison_row(name, share_seen_by_at_least(cur.all, i), share_seen_by_at_least(cand.all, i), false, true);
+  }
+  for (int k = 0; k < kNumDigits; ++k) {
+    char name[48];
+    std::snprintf(name, sizeof name, "%s seen", std::string(digit_name(k)).c_str());
+    comparison_row(name, 1.0 - cur.all.finger_unseen_fraction(k), 1.0 - cand.all.finger_unseen_fraction(k), false,
+                   true);
+  }
+  for (int d = 0; d < cand.all.devices && d < cur.all.devices; ++d) {
+    // The share of frames in which this controller sees its best finger: 0 means it is idle.
+    double a = 0, b = 0;
+    for (int k = 0; k < kNumDigits; ++k) {
+      a = std::max(a, cur.all.device_finger_fraction(d, k));
+      b = std::max(b, cand.all.device_finger_fraction(d, k));
+    }
+    char name[48];
+    std::snprintf(name, sizeof name, "%s, best finger", layout.devices[static_cast<size_t>(d)].slot.c_str());
+    comparison_row(name, a, b, false, true);
+  }
+}
+
+// The robust metric's terms (lower is better), from the start layout to the candidate.
+void robust_term_rows(const OptimiserOutcome& outcome) {
+  comparison_row("R (robust metric)", outcome.start_terms.total, outcome.pso.best_terms.total, true, false,
+                 "M plus each weight times its term");
+  for (const RobustTermInfo& term : robust_term_infos()) {
+    if (term.weight == nullptr) continue;  // M is in the first rows
+    comparison_row(term.name, outcome.start_terms.*(term.value), outcome.pso.best_terms.*(term.value), true, false,
+                   term.meaning);
+  }
+}
+
+}  // namespace
+
 void OptimiserPanel::draw_comparison() {
-  LayoutTabState& s = *state_;
-  const auto outcome = s.optimiser.outcome();
-  const CoverageSnapshotPtr cur = s.coverage.latest();
+  LayoutState& s = *state_;
+  const auto outcome = s.optimiser().outcome();
+  const CoverageSnapshotPtr cur = s.coverage().latest();
   if (!outcome || !cur) return;
-  const LayoutEvaluation& cand = outcome->candidate;
   ImGui::Spacing();
   ImGui::TextUnformatted("Current vs candidate");
   ImGui::PushTextWrapPos(0.0f);
   ImGui::TextUnformatted(specialisation_summary(*outcome).c_str());
   ImGui::PopTextWrapPos();
   anchors_.remember("specialisation");
-  // The label column fits its longest label; the numbers share the rest. Green is better and red
-  // worse whichever way the number moved (an improvement showed in red).
+  // The label column fits its longest label; the numbers share the rest.
   if (!ImGui::BeginTable("##compare", 4,
                          ImGuiTableFlags_Borders | ImGuiTableFlags_RowBg | ImGuiTableFlags_SizingFixedFit))
     return;
@@ -369,69 +469,12 @@ void OptimiserPanel::draw_comparison() {
   ImGui::TableSetupColumn("candidate", ImGuiTableColumnFlags_WidthStretch);
   ImGui::TableSetupColumn("change", ImGuiTableColumnFlags_WidthStretch);
   ImGui::TableHeadersRow();
-  const auto row_num = [](const char* name, double a, double b, bool lower_better, bool percent,
-                          const char* meaning = nullptr) {
-    ImGui::TableNextRow();
-    ImGui::TableSetColumnIndex(0);
-    ImGui::TextUnformatted(name);
-    if (meaning != nullptr && ImGui::IsItemHovered()) ImGui::SetTooltip("%s (lower is better)", meaning);
-    ImGui::TableSetColumnIndex(1);
-    percent ? ImGui::Text("%.1f %%", a * 100) : ImGui::Text("%.4g", a);
-    ImGui::TableSetColumnIndex(2);
-    percent ? ImGui::Text("%.1f %%", b * 100) : ImGui::Text("%.4g", b);
-    ImGui::TableSetColumnIndex(3);
-    const double diff = b - a;
-    const bool better = lower_better ? diff < 0 : diff > 0;
-    const ImVec4 col = diff == 0 ? ImVec4(0.7f, 0.7f, 0.7f, 1)
-                       : better  ? ImVec4(0.4f, 0.9f, 0.45f, 1)
-                                 : ImVec4(1, 0.45f, 0.4f, 1);
-    percent ? ImGui::TextColored(col, "%+.1f pt", diff * 100) : ImGui::TextColored(col, "%+.4g", diff);
-  };
-  row_num("M, all frames", cur->all.metric, cand.all.metric, true, false);
-  row_num("M, palm down", cur->horizontal.metric, cand.horizontal.metric, true, false);
-  row_num("M, palm left", cur->vertical.metric, cand.vertical.metric, true, false);
-  // Cumulative shares read one way: more frames with every finger seen by >= i controllers is
-  // better for every i (the c_i histogram itself is not: moving frames from c_1 to c_2 is good).
-  const auto at_least = [](const Coverage& c, size_t i) {
-    std::int64_t n = 0;
-    for (size_t k = i; k < c.c.size(); ++k) n += c.c[k];
-    return c.frames > 0 ? static_cast<double>(n) / static_cast<double>(c.frames) : 0.0;
-  };
-  const size_t nc = std::min(cur->all.c.size(), cand.all.c.size());
-  for (size_t i = 1; i < nc; ++i) {
-    char name[48];
-    std::snprintf(name, sizeof name, "all fingers, %zu+ ctrl.", i);
-    row_num(name, at_least(cur->all, i), at_least(cand.all, i), false, true);
-  }
-  for (int k = 0; k < kNumDigits; ++k) {
-    char name[48];
-    std::snprintf(name, sizeof name, "%s seen", std::string(digit_name(k)).c_str());
-    row_num(name, 1.0 - cur->all.finger_unseen_fraction(k), 1.0 - cand.all.finger_unseen_fraction(k), false, true);
-  }
-  for (int d = 0; d < cand.all.devices && d < cur->all.devices; ++d) {
-    // The share of frames in which this controller sees its best finger: 0 means it is idle.
-    double a = 0, b = 0;
-    for (int k = 0; k < kNumDigits; ++k) {
-      a = std::max(a, cur->all.device_finger_fraction(d, k));
-      b = std::max(b, cand.all.device_finger_fraction(d, k));
-    }
-    char name[48];
-    std::snprintf(name, sizeof name, "%s, best finger", s.layout().devices[static_cast<size_t>(d)].slot.c_str());
-    row_num(name, a, b, false, true);
-  }
-  // The robust metric's terms (lower is better), when "current" is still the layout the search
-  // started from: the job computed both on the same pose set with the same weights.
-  // (Poses, offsets and the sensor model all change the terms; the name does not.)
+  coverage_rows(*cur, outcome->candidate, s.layout());
+  // The terms only while "current" is still the layout the search started from: the job computed
+  // both on the same pose set with the same weights. (Poses, offsets and the sensor model all
+  // change the terms; the name does not.)
   const bool same_start = outcome->start_layout.devices == s.layout().devices;
-  if (same_start) {
-    row_num("R (robust metric)", outcome->start_terms.total, outcome->pso.best_terms.total, true, false,
-            "M plus each weight times its term");
-    for (const RobustTermInfo& term : robust_term_infos()) {
-      if (term.weight == nullptr) continue;  // M is in the first rows
-      row_num(term.name, outcome->start_terms.*(term.value), outcome->pso.best_terms.*(term.value), true, false,
-              term.meaning);
-    }
-  }
+  if (same_start) robust_term_rows(*outcome);
   ImGui::EndTable();
   if (!same_start)
     ImGui::TextDisabled("(the robust terms are not compared: the layout changed since the search started)");

@@ -7,16 +7,17 @@
 // comparison table shows current vs candidate.
 #include <memory>
 
-#include "ui/model/layout/layout_tab_state.h"
+#include "ui/model/layout/layout_state.h"
 #include "ui/widgets/file_browser.h"
+#include "ui/widgets/panel.h"
 #include "ui/widgets/series_plot.h"
 #include "ui/widgets/widget_anchors.h"
 
 namespace lmc::ui {
 
-class OptimiserPanel {
+class OptimiserPanel : public Panel {
  public:
-  explicit OptimiserPanel(std::shared_ptr<LayoutTabState> state);
+  explicit OptimiserPanel(std::shared_ptr<LayoutState> state);
   void draw();
   // Start, pso.cancel, pso.elapsed, Apply, Discard, the result line and a few labels as last drawn
   // (for headless tests).
@@ -31,13 +32,18 @@ class OptimiserPanel {
 
  private:
   void draw_pose_set();
+  void draw_pose_set_status();
   void draw_recordings_choice();
   void draw_settings();
-  void draw_run();  // the footer: Start or progress, then the result with Apply / Discard
+  void draw_metric(PsoSettings& p);  // the metric and, for the robust one, its term weights
+  void draw_swarm(PsoSettings& p);   // particles, iterations, starts, seed and the swarm's constants
+  void draw_movable();               // which controllers the search may move
+  void draw_bounds();                // the search range of each pose parameter
+  void draw_run();                   // the footer: Start or progress, then the result with Apply / Discard
   void draw_convergence();
   void draw_comparison();
 
-  std::shared_ptr<LayoutTabState> state_;
+  std::shared_ptr<LayoutState> state_;
   PoseSetChoice edit_choice_;
   bool choice_synced_ = false;
   char file_buf_[512] = {};

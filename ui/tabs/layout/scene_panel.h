@@ -10,16 +10,17 @@
 
 #include <imgui.h>
 
-#include "ui/model/layout/layout_tab_state.h"
+#include "ui/model/layout/layout_state.h"
 #include "ui/scene/drag_controller.h"
 #include "ui/scene/scene_renderer.h"
+#include "ui/widgets/panel.h"
 
 namespace lmc::ui {
 
-class ScenePanel {
+class ScenePanel : public Panel {
  public:
   // `renderer` is asked for lazily (the GL one needs the window's context).
-  ScenePanel(std::shared_ptr<LayoutTabState> state, std::function<SceneRenderer*()> renderer);
+  ScenePanel(std::shared_ptr<LayoutState> state, std::function<SceneRenderer*()> renderer);
 
   void draw(ImVec2 size);
 
@@ -33,11 +34,20 @@ class ScenePanel {
  private:
   enum class Gesture { kNone, kHandle, kOrbit, kPan };
   void handle_input(bool hovered);
+  void update_hover(bool hovered, ImVec2 mouse_in_image);
+  void begin_gesture(bool hovered);
+  void continue_drag(float moved_px);  // moved_px: how far the pointer is from the press (|dx| + |dy|)
+  struct OverlayPlaces;
+  OverlayPlaces place_overlays() const;
   void draw_overlays(ImDrawList* dl);
+  void draw_labels(ImDrawList* dl, const OverlayPlaces& o) const;
+  static void draw_finger_legend(ImDrawList* dl, const OverlayPlaces& o);
+  void draw_heat_bar(ImDrawList* dl, const OverlayPlaces& o) const;
+  void draw_tooltips() const;
   Ray mouse_ray() const;
   int pick_device(const Ray& ray) const;
 
-  std::shared_ptr<LayoutTabState> state_;
+  std::shared_ptr<LayoutState> state_;
   std::function<SceneRenderer*()> renderer_;
   SceneList scene_;
   ImVec2 image_min_{0, 0}, image_size_{1, 1};

@@ -27,7 +27,7 @@ float TimelinePanel::height(float width) const {
 }
 
 void TimelinePanel::draw() {
-  LayoutTabState& s = *state_;
+  LayoutState& s = *state_;
   TimelineState& t = s.timeline;
   const PoseSetPtr p = s.poses.current();
   const auto& frames = s.timeline_frames();

@@ -5,6 +5,7 @@
 #include <algorithm>
 
 #include "ui/widgets/calibration_result_view.h"
+#include "ui/widgets/palette.h"
 
 namespace lmc::ui {
 namespace {
@@ -32,7 +33,7 @@ void RecordCalibrationPanel::keep_nominal(TrialPanelAction& action) {
 
 TrialPanelAction RecordCalibrationPanel::draw() {
   anchors_.clear();  // only what this frame drew
-  const RecordSessionModel& model = *model_;
+  const RecordState& model = *model_;
   TrialPanelAction action = TrialPanelAction::kNone;
   const auto& step = *model.state().protocol.calibration;
   const Layout* layout = model.current_layout();
@@ -55,7 +56,7 @@ TrialPanelAction RecordCalibrationPanel::draw() {
     const double done = live ? live->recording_s : 0.0;
     ImGui::Text("Recording the calibration trial: %.1f s of %.0f s", done, step.duration_s);
     ImGui::ProgressBar(static_cast<float>(std::clamp(done / step.duration_s, 0.0, 1.0)), ImVec2(360, 0));
-    if (calibration_big_button("Stop  [Space]", ImVec4(0.7F, 0.15F, 0.15F, 1.0F))) action = TrialPanelAction::kStop;
+    if (calibration_big_button("Stop  [Space]", palette::kButtonStop)) action = TrialPanelAction::kStop;
     return action;
   }
   const auto& pending = model.pending_calibration();
@@ -64,20 +65,18 @@ TrialPanelAction RecordCalibrationPanel::draw() {
       draw_calibration_result(pending->trial_name, pending->fit->result, pending->fit->file_warnings,
                               pending->fit->notes);
       ImGui::Spacing();
-      if (calibration_big_button("Apply  [Enter]", ImVec4(0.15F, 0.55F, 0.25F, 1.0F)))
-        action = TrialPanelAction::kApplyCalibration;
+      if (calibration_big_button("Apply  [Enter]", palette::kButtonGo)) action = TrialPanelAction::kApplyCalibration;
       anchors_.remember("apply_calibration");
       ImGui::SameLine();
     } else {
-      ImGui::TextColored(ImVec4(1.0F, 0.38F, 0.33F, 1.0F), "%s: %s", pending->trial_name.c_str(),
-                         pending->failure.c_str());
+      ImGui::TextColored(palette::kError, "%s: %s", pending->trial_name.c_str(), pending->failure.c_str());
     }
     if (ImGui::Button("Calibrate again  [R]", ImVec2(200, 48))) action = TrialPanelAction::kCalibrate;
     anchors_.remember("calibrate_again");
     keep_nominal(action);
     return action;
   }
-  if (calibration_big_button("Record calibration  [Space]", ImVec4(0.2F, 0.4F, 0.7F, 1.0F)))
+  if (calibration_big_button("Record calibration  [Space]", palette::kButtonAction))
     action = TrialPanelAction::kCalibrate;
   anchors_.remember("calibrate");
   ImGui::Spacing();

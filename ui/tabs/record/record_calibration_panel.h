@@ -5,15 +5,17 @@
 // and the operator's choice: Apply, calibrate again, or keep the nominal layout with a reason.
 #include <memory>
 
-#include "ui/model/record/record_session_model.h"
+#include "ui/model/record/record_state.h"
 #include "ui/tabs/record/trial_panel_action.h"
+#include "ui/widgets/panel.h"
 #include "ui/widgets/widget_anchors.h"
 
 namespace lmc::ui {
 
-class RecordCalibrationPanel {
+class RecordCalibrationPanel : public Panel {
  public:
-  explicit RecordCalibrationPanel(std::shared_ptr<const RecordSessionModel> model) : model_(std::move(model)) {}
+  explicit RecordCalibrationPanel(std::shared_ptr<const RecordState> model)
+      : Panel("##calibration"), model_(std::move(model)) {}
   // Call only while the current block needs, records or waits on its calibration.
   TrialPanelAction draw();
   // Why the block keeps its nominal layout (kKeepNominal), as typed.
@@ -24,7 +26,7 @@ class RecordCalibrationPanel {
  private:
   void keep_nominal(TrialPanelAction& action);
 
-  std::shared_ptr<const RecordSessionModel> model_;
+  std::shared_ptr<const RecordState> model_;
   char nominal_reason_[200] = "";
   WidgetAnchors anchors_;
 };

@@ -6,6 +6,7 @@
 #include <string>
 
 #include "core/session/session_state.h"
+#include "ui/widgets/palette.h"
 
 namespace lmc::ui {
 
@@ -16,21 +17,21 @@ struct StatusLook {
 };
 
 inline ImVec4 verdict_colour(const std::string& verdict) {
-  if (verdict == "pass") return {0.35F, 0.85F, 0.4F, 1.0F};
-  if (verdict == "warn") return {1.0F, 0.75F, 0.2F, 1.0F};
-  if (verdict == "fail") return {1.0F, 0.3F, 0.3F, 1.0F};
-  return {0.6F, 0.6F, 0.6F, 1.0F};
+  if (verdict == "pass") return palette::kOk;
+  if (verdict == "warn") return palette::kWarning;
+  if (verdict == "fail") return palette::kFail;
+  return palette::kMuted;
 }
 
 inline StatusLook trial_status_look(const TrialState& t, bool recording_now) {
-  const ImVec4 grey{0.55F, 0.55F, 0.55F, 1.0F};
-  if (recording_now || t.status == TrialStatus::kRecording) return {"(o)", "recording", {1.0F, 0.25F, 0.25F, 1.0F}};
+  const ImVec4 grey = palette::kMuted;
+  if (recording_now || t.status == TrialStatus::kRecording) return {"(o)", "recording", palette::kRecording};
   const std::string verdict = t.attempts.empty() ? std::string() : t.attempts.back().verdict();
   switch (t.status) {
     case TrialStatus::kPending:
       return t.attempts.empty() ? StatusLook{" - ", "pending", grey} : StatusLook{" ~ ", "to record again", grey};
     case TrialStatus::kInterrupted:
-      return {" ! ", "interrupted", {1.0F, 0.55F, 0.2F, 1.0F}};
+      return {" ! ", "interrupted", palette::kAttention};
     case TrialStatus::kFailed:
       return {" x ", "fail", verdict_colour("fail")};
     case TrialStatus::kRecorded:

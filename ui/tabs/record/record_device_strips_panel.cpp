@@ -3,14 +3,15 @@
 #include <imgui.h>
 
 #include "ui/model/devices/live_hands.h"
+#include "ui/widgets/palette.h"
 
 namespace lmc::ui {
 // Named, not anonymous: main compiles libraries in unity batches, where two files' kRed would meet.
 namespace device_strips {
 
-const ImVec4 kRed{1.0F, 0.3F, 0.3F, 1.0F};
-const ImVec4 kGreen{0.35F, 0.85F, 0.4F, 1.0F};
-const ImVec4 kAmber{1.0F, 0.75F, 0.2F, 1.0F};
+const ImVec4& kRed = palette::kFail;
+const ImVec4& kGreen = palette::kOk;
+const ImVec4& kAmber = palette::kWarning;
 
 // A controller whose latest frame is older than this has stalled (a LeapC controller sends
 // every 8–16 ms; the simulator's slowest rate is 11 Hz, 90 ms).

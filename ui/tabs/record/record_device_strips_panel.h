@@ -5,17 +5,19 @@
 // first snapshot.
 #include <memory>
 
-#include "ui/model/record/record_session_model.h"
+#include "ui/model/record/record_state.h"
+#include "ui/widgets/panel.h"
 
 namespace lmc::ui {
 
-class RecordDeviceStripsPanel {
+class RecordDeviceStripsPanel : public Panel {
  public:
-  explicit RecordDeviceStripsPanel(std::shared_ptr<const RecordSessionModel> model) : model_(std::move(model)) {}
+  explicit RecordDeviceStripsPanel(std::shared_ptr<const RecordState> model)
+      : Panel("##device_strips"), model_(std::move(model)) {}
   void draw();
 
  private:
-  std::shared_ptr<const RecordSessionModel> model_;
+  std::shared_ptr<const RecordState> model_;
 };
 
 }  // namespace lmc::ui

@@ -36,7 +36,7 @@ void RecordNotePanel::open(bool by_key) {
 }
 
 bool RecordNotePanel::draw() {
-  const RecordSessionModel& model = *model_;
+  const RecordState& model = *model_;
   bool submitted = false;
   if (open_) {
     if (focus_) {

@@ -1,19 +1,20 @@
 #pragma once
 // N: the one-line note on a trial. Opened by the key or a Note button, it takes the keyboard a
-// frame or two later; Enter submits it (the tab journals it through RecordSessionModel::add_note,
+// frame or two later; Enter submits it (the tab journals it through RecordState::add_note,
 // which while a trial records keeps it until the trial ends), Esc drops it.
 #include <imgui.h>
 
 #include <memory>
 #include <vector>
 
-#include "ui/model/record/record_session_model.h"
+#include "ui/model/record/record_state.h"
+#include "ui/widgets/panel.h"
 
 namespace lmc::ui {
 
-class RecordNotePanel {
+class RecordNotePanel : public Panel {
  public:
-  explicit RecordNotePanel(std::shared_ptr<const RecordSessionModel> model) : model_(std::move(model)) {}
+  explicit RecordNotePanel(std::shared_ptr<const RecordState> model) : Panel("##note"), model_(std::move(model)) {}
   // Shows the note field and gives it the keyboard (by_key: N was pressed, and letters typed
   // after it in the same frame are kept).
   void open(bool by_key = false);
@@ -32,7 +33,7 @@ class RecordNotePanel {
  private:
   void reset();
 
-  std::shared_ptr<const RecordSessionModel> model_;
+  std::shared_ptr<const RecordState> model_;
   char text_[240] = "";
   bool open_ = false;   // the note line is shown (N or the button)
   bool focus_ = false;  // give it the keyboard on the next frame

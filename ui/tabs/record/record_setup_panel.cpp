@@ -1,5 +1,7 @@
 #include "ui/tabs/record/record_setup_panel.h"
 
+#include "ui/widgets/palette.h"
+
 #include <imgui.h>
 
 #include <algorithm>
@@ -8,7 +10,7 @@
 namespace lmc::ui {
 namespace {
 
-const ImVec4 kProblem{1.0F, 0.4F, 0.35F, 1.0F};
+const ImVec4& kProblem = palette::kError;
 
 // The field's problem, in red right under it (nothing when it is fine).
 void problem_line(const std::string& problem) {
@@ -27,6 +29,19 @@ void hint(const char* text) {
 
 SetupAction RecordSetupPanel::draw(const std::vector<SessionListing>& sessions, const std::string& error) {
   anchors_.clear();  // only what this frame drew
+  SetupAction action = draw_new_session();
+  if (const SetupAction resume = draw_resume(sessions); resume != SetupAction::kNone) action = resume;
+  if (!error.empty()) {
+    ImGui::Spacing();
+    ImGui::PushStyleColor(ImGuiCol_Text, kProblem);
+    ImGui::TextWrapped("%s", error.c_str());
+    ImGui::PopStyleColor();
+  }
+  return action;
+}
+
+// The new session's fields, each with its problem under it, and Create.
+SetupAction RecordSetupPanel::draw_new_session() {
   RecordSetupForm& f = form_;
   const SetupFormProblems problems = check_setup_form(f);
   WidgetAnchors* anchors = &anchors_;
@@ -83,6 +98,15 @@ SetupAction RecordSetupPanel::draw(const std::vector<SessionListing>& sessions, 
   ImGui::EndDisabled();
   if (problems.any()) hint("(fix the red lines first)");
 
+  return action;
+}
+
+// A session folder to open, and the sessions folder's sessions (a click fills the folder in, a
+// double click opens it).
+SetupAction RecordSetupPanel::draw_resume(const std::vector<SessionListing>& sessions) {
+  RecordSetupForm& f = form_;
+  WidgetAnchors* anchors = &anchors_;
+  SetupAction action = SetupAction::kNone;
   ImGui::Spacing();
   ImGui::Spacing();
   ImGui::TextUnformatted("Or resume a session");
@@ -132,12 +156,6 @@ SetupAction RecordSetupPanel::draw(const std::vector<SessionListing>& sessions, 
     if (group != nullptr && !group->empty()) ImGui::Unindent();
   }
   if (!sessions.empty()) ImGui::EndChild();
-  if (!error.empty()) {
-    ImGui::Spacing();
-    ImGui::PushStyleColor(ImGuiCol_Text, kProblem);
-    ImGui::TextWrapped("%s", error.c_str());
-    ImGui::PopStyleColor();
-  }
   return action;
 }
 

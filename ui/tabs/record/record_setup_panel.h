@@ -7,16 +7,17 @@
 #include <vector>
 
 #include "ui/model/record/record_setup_form.h"
+#include "ui/widgets/panel.h"
 #include "ui/widgets/widget_anchors.h"
 
 namespace lmc::ui {
 
 enum class SetupAction { kNone, kCreate, kOpen, kRefreshSessions };
 
-class RecordSetupPanel {
+class RecordSetupPanel : public Panel {
  public:
   // `form`: the tab's, edited in place as the operator types.
-  explicit RecordSetupPanel(RecordSetupForm& form) : form_(form) {}
+  explicit RecordSetupPanel(RecordSetupForm& form) : Panel("setup"), form_(form) {}
   // `sessions`: the folders under the sessions directory; a click on one fills the folder to open.
   // `error`: why the last create or open failed ("" = none).
   SetupAction draw(const std::vector<SessionListing>& sessions, const std::string& error);
@@ -24,6 +25,9 @@ class RecordSetupPanel {
   const WidgetAnchors& anchors() const { return anchors_; }
 
  private:
+  SetupAction draw_new_session();
+  SetupAction draw_resume(const std::vector<SessionListing>& sessions);
+
   RecordSetupForm& form_;
   WidgetAnchors anchors_;
 };

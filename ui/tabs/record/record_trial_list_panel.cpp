@@ -10,7 +10,7 @@ namespace lmc::ui {
 
 void RecordTrialListPanel::draw() {
   anchors_.clear();  // only what this frame drew
-  RecordSessionModel& model = *model_;
+  RecordState& model = *model_;
   const SessionState& state = model.state();
   const int current = model.current_trial();
   const int recording = model.recording_trial();

@@ -4,20 +4,21 @@
 // on a row selects that trial for the next Start or redo (not while a trial records).
 #include <memory>
 
-#include "ui/model/record/record_session_model.h"
+#include "ui/model/record/record_state.h"
+#include "ui/widgets/panel.h"
 #include "ui/widgets/widget_anchors.h"
 
 namespace lmc::ui {
 
-class RecordTrialListPanel {
+class RecordTrialListPanel : public Panel {
  public:
-  explicit RecordTrialListPanel(std::shared_ptr<RecordSessionModel> model) : model_(std::move(model)) {}
+  explicit RecordTrialListPanel(std::shared_ptr<RecordState> model) : Panel("trials"), model_(std::move(model)) {}
   void draw();
   // "trial.N" for the row of trial N as drawn (headless tests click them).
   const WidgetAnchors& anchors() const { return anchors_; }
 
  private:
-  std::shared_ptr<RecordSessionModel> model_;
+  std::shared_ptr<RecordState> model_;
   WidgetAnchors anchors_;
 };
 

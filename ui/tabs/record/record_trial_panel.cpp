@@ -11,12 +11,13 @@
 #include "ui/tabs/record/record_colours.h"
 #include "ui/widgets/hand_pictogram.h"
 #include "ui/widgets/live_hands_view.h"
+#include "ui/widgets/palette.h"
 
 namespace lmc::ui {
 namespace {
 
-const ImVec4 kRed{1.0F, 0.3F, 0.3F, 1.0F};
-const ImVec4 kGreen{0.35F, 0.85F, 0.4F, 1.0F};
+const ImVec4& kRed = palette::kFail;
+const ImVec4& kGreen = palette::kOk;
 
 void big_text(const std::string& text, float scale) {
   ImGui::SetWindowFontScale(scale);
@@ -38,7 +39,7 @@ void recording_circle(bool counting_down) {
   ImDrawList* dl = ImGui::GetWindowDrawList();
   const ImVec2 p = ImGui::GetCursorScreenPos();
   const float r = 34.0F;
-  const ImU32 fill = counting_down ? IM_COL32(120, 120, 120, 255) : IM_COL32(230, 40, 40, 255);
+  const ImU32 fill = counting_down ? palette::kCountdownCircle : palette::kRecordingCircle;
   dl->AddCircleFilled(ImVec2(p.x + r, p.y + r), r, fill, 48);
   ImGui::Dummy(ImVec2(2 * r + 8, 2 * r));
 }
@@ -56,17 +57,17 @@ void preflight_checklist(const devices::PreflightReport& report) {
 
 }  // namespace
 
-RecordTrialPanel::RecordTrialPanel(std::shared_ptr<const RecordSessionModel> model)
-    : model_(model), note_(model), verdict_(model, note_), calibration_(model), strips_(model) {}
+RecordTrialPanel::RecordTrialPanel(std::shared_ptr<const RecordState> model)
+    : Panel("trial"), model_(model), note_(model), verdict_(model, note_), calibration_(model), strips_(model) {}
 
 TrialPanelAction RecordTrialPanel::preflight_section() {
-  const RecordSessionModel& model = *model_;
+  const RecordState& model = *model_;
   TrialPanelAction action = TrialPanelAction::kNone;
   ImGui::TextWrapped("%s", model.block_instructions().c_str());
   ImGui::Spacing();
   if (const auto& report = model.last_preflight()) preflight_checklist(*report);
   // One action per key: Space runs the pre-flight here; Start appears once the block is cleared.
-  if (big_button("Run pre-flight  [Space]", ImVec4(0.2F, 0.4F, 0.7F, 1.0F))) action = TrialPanelAction::kPreflight;
+  if (big_button("Run pre-flight  [Space]", palette::kButtonAction)) action = TrialPanelAction::kPreflight;
   anchors_.remember("preflight");
   ImGui::TextDisabled(
       "Start [Space] comes when every pre-flight line is green, or after an override with a typed "
@@ -106,7 +107,7 @@ void RecordTrialPanel::verdict_section(TrialPanelAction& action) {
 
 // The block's controllers where the layout puts them and, while recording, each one's hand.
 void RecordTrialPanel::live_view() {
-  const RecordSessionModel& model = *model_;
+  const RecordState& model = *model_;
   const Layout* layout = model.current_layout();
   if (!layout) return;
   ImGui::Spacing();
@@ -131,11 +132,10 @@ void RecordTrialPanel::live_view() {
 
 TrialPanelAction RecordTrialPanel::draw() {
   anchors_.clear();  // only what this frame drew
-  const RecordSessionModel& model = *model_;
+  const RecordState& model = *model_;
   TrialPanelAction action = TrialPanelAction::kNone;
-  const auto& state = model.state();
   // The plain notice of a resumed session, until the first attempt of this run begins.
-  ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0F, 0.6F, 0.2F, 1.0F));
+  ImGui::PushStyleColor(ImGuiCol_Text, palette::kAttention);
   for (const auto& line : model.resume_notice()) ImGui::TextWrapped("%s", line.c_str());
   ImGui::PopStyleColor();
 
@@ -149,25 +149,47 @@ TrialPanelAction RecordTrialPanel::draw() {
     verdict_section(action);
     return action;
   }
+  draw_cues(i);
+  if (model.recording()) {
+    action = recording_section(i);
+    strips_.draw();
+  } else if (model.needs_preflight()) {
+    const TrialPanelAction a = preflight_section();
+    verdict_section(action);
+    if (a != TrialPanelAction::kNone) action = a;
+  } else if (model.needs_calibration() || model.calibrating() || model.pending_calibration()) {
+    action = calibration_.draw();
+  } else {
+    action = start_section(i);
+    verdict_section(action);
+  }
+  live_view();
+  return action;
+}
+
+// Which trial, its name, the operator's and the subject's cues, and the motion's pictogram (what
+// the subject screen shows) on the right.
+void RecordTrialPanel::draw_cues(int i) {
+  const RecordState& model = *model_;
+  const auto& state = model.state();
   const auto& trial = state.trials.at(static_cast<size_t>(i));
   const auto& type = model.trial_type(i);
   const auto& pose = state.protocol.poses.at(static_cast<size_t>(trial.plan.pose));
   ImGui::TextDisabled("Trial %d of %zu  ·  layout %s  ·  palm %s  ·  %.0f s", i + 1, state.trials.size(),
                       trial.plan.layout_key.c_str(), pose.key.c_str(), type.duration_s);
-  // The cues on the left, the motion's pictogram (what the subject screen shows) on the right.
   const ImVec2 cue_top = ImGui::GetCursorScreenPos();
   const float pictogram_w = 230.0F, pictogram_h = 150.0F;
   const float cue_width = ImGui::GetContentRegionAvail().x - pictogram_w - 12.0F;
   ImGui::PushTextWrapPos(ImGui::GetCursorPosX() + cue_width);
   big_text(trial.plan.name, 2.0F);
   ImGui::TextWrapped("Operator: %s", type.operator_cue.c_str());
-  ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0F, 0.9F, 0.5F, 1.0F));
+  ImGui::PushStyleColor(ImGuiCol_Text, palette::kCue);
   big_text("Subject: " + type.subject_cue, 1.4F);
   ImGui::PopStyleColor();
   // Overridden in this run (a pre-flight that passed since says nothing more).
   if (const auto it = state.preflight_override.find(trial.plan.layout_key);
       it != state.preflight_override.end() && !(model.last_preflight() && model.last_preflight()->ok()))
-    ImGui::TextColored(ImVec4(1.0F, 0.75F, 0.2F, 1.0F), "Pre-flight overridden: %s (journaled)", it->second.c_str());
+    ImGui::TextColored(palette::kWarning, "Pre-flight overridden: %s (journaled)", it->second.c_str());
   ImGui::PopTextWrapPos();
   const float cue_bottom = ImGui::GetCursorScreenPos().y;
   if (const auto pictogram =
@@ -178,54 +200,52 @@ TrialPanelAction RecordTrialPanel::draw() {
   }
   ImGui::SetCursorScreenPos(ImVec2(cue_top.x, std::max(cue_bottom, cue_top.y + pictogram_h + 4.0F)));
   ImGui::Spacing();
+}
 
-  if (model.recording()) {
-    const auto& live = model.live();
-    const bool counting = live && live->phase == devices::TrialPhase::kCountdown;
-    recording_circle(counting || !live || live->phase == devices::TrialPhase::kWaitingForStreams);
-    ImGui::SameLine();
-    ImGui::BeginGroup();
-    if (!live) {
-      big_text("starting...", 1.4F);
-    } else if (live->phase == devices::TrialPhase::kWaitingForStreams) {
-      big_text("waiting for every controller", 1.4F);
-    } else if (counting) {
-      char text[64];
-      // The number the subject sees at this moment (subject_view.h: one rule for both screens).
-      std::snprintf(text, sizeof text, "starts in %d s", countdown_number(live->countdown_remaining_s));
-      big_text(text, 1.6F);
-    } else {
-      char text[96];
-      // Counted from the protocol's duration, which is what the subject was told.
-      std::snprintf(text, sizeof text, "RECORDING  %.1f s  ·  %d s left", live->recording_s,
-                    seconds_left(type.duration_s, live->recording_s));
-      big_text(text, 1.6F);
-      const float f = type.duration_s > 0 ? static_cast<float>(live->recording_s / type.duration_s) : 0.0F;
-      ImGui::ProgressBar(std::clamp(f, 0.0F, 1.0F), ImVec2(360, 0));
-    }
-    ImGui::EndGroup();
-    if (big_button("Stop  [Space]", ImVec4(0.7F, 0.15F, 0.15F, 1.0F))) action = TrialPanelAction::kStop;
-    ImGui::SameLine();
-    if (ImGui::Button("Abort  [Esc]", ImVec2(160, 52))) action = TrialPanelAction::kAbort;
-    ImGui::SameLine();
-    if (ImGui::Button("Note  [N]", ImVec2(120, 52))) note_.open();
-    if (note_.draw()) action = TrialPanelAction::kNote;
-    strips_.draw();
-    live_view();
-    return action;
+// While trial `i` records: the circle, where it is (waiting, counting down, recording), Stop, Abort
+// and Note.
+TrialPanelAction RecordTrialPanel::recording_section(int i) {
+  const RecordState& model = *model_;
+  TrialPanelAction action = TrialPanelAction::kNone;
+  const auto& type = model.trial_type(i);
+  const auto& live = model.live();
+  const bool counting = live && live->phase == devices::TrialPhase::kCountdown;
+  recording_circle(counting || !live || live->phase == devices::TrialPhase::kWaitingForStreams);
+  ImGui::SameLine();
+  ImGui::BeginGroup();
+  if (!live) {
+    big_text("starting...", 1.4F);
+  } else if (live->phase == devices::TrialPhase::kWaitingForStreams) {
+    big_text("waiting for every controller", 1.4F);
+  } else if (counting) {
+    char text[64];
+    // The number the subject sees at this moment (subject_view.h: one rule for both screens).
+    std::snprintf(text, sizeof text, "starts in %d s", countdown_number(live->countdown_remaining_s));
+    big_text(text, 1.6F);
+  } else {
+    char text[96];
+    // Counted from the protocol's duration, which is what the subject was told.
+    std::snprintf(text, sizeof text, "RECORDING  %.1f s  ·  %d s left", live->recording_s,
+                  seconds_left(type.duration_s, live->recording_s));
+    big_text(text, 1.6F);
+    const float f = type.duration_s > 0 ? static_cast<float>(live->recording_s / type.duration_s) : 0.0F;
+    ImGui::ProgressBar(std::clamp(f, 0.0F, 1.0F), ImVec2(360, 0));
   }
+  ImGui::EndGroup();
+  if (big_button("Stop  [Space]", palette::kButtonStop)) action = TrialPanelAction::kStop;
+  ImGui::SameLine();
+  if (ImGui::Button("Abort  [Esc]", ImVec2(160, 52))) action = TrialPanelAction::kAbort;
+  ImGui::SameLine();
+  if (ImGui::Button("Note  [N]", ImVec2(120, 52))) note_.open();
+  if (note_.draw()) action = TrialPanelAction::kNote;
+  return action;
+}
 
-  if (model.needs_preflight()) {
-    const TrialPanelAction a = preflight_section();
-    verdict_section(action);
-    live_view();
-    return a != TrialPanelAction::kNone ? a : action;
-  }
-  if (model.needs_calibration() || model.calibrating() || model.pending_calibration()) {
-    action = calibration_.draw();
-    live_view();
-    return action;
-  }
+// Between trials, with the block's pre-flight passed and no calibration waiting: Start.
+TrialPanelAction RecordTrialPanel::start_section(int i) {
+  const RecordState& model = *model_;
+  TrialPanelAction action = TrialPanelAction::kNone;
+  const auto& trial = model.state().trials.at(static_cast<size_t>(i));
   // The checklist that enabled Start stays in view until the block's first trial of this run.
   if (const auto& report = model.last_preflight(); report && report->ok() && !model.last_attempt())
     preflight_checklist(*report);
@@ -238,13 +258,11 @@ TrialPanelAction RecordTrialPanel::draw() {
     ImGui::TextColored(kGreen, "%s is accepted.", trial.plan.name.c_str());
     ImGui::TextDisabled("R records it again (this attempt is kept under superseded/); pick another trial in the list.");
   } else if (!model.busy()) {
-    if (big_button("Start  [Space]", ImVec4(0.15F, 0.55F, 0.25F, 1.0F))) action = TrialPanelAction::kStart;
+    if (big_button("Start  [Space]", palette::kButtonGo)) action = TrialPanelAction::kStart;
     anchors_.remember("start");
   }
   if (trial.attempts.size() > 0 && trial.status != TrialStatus::kAccepted)
     ImGui::TextDisabled("attempt %zu of this trial", trial.attempts.size() + 1);
-  verdict_section(action);
-  live_view();
   return action;
 }
 

@@ -7,20 +7,21 @@
 // is the tab's.
 #include <memory>
 
-#include "ui/model/record/record_session_model.h"
+#include "ui/model/record/record_state.h"
 #include "ui/scene/orbit_camera.h"
 #include "ui/tabs/record/record_calibration_panel.h"
 #include "ui/tabs/record/record_device_strips_panel.h"
 #include "ui/tabs/record/record_note_panel.h"
 #include "ui/tabs/record/record_verdict_panel.h"
 #include "ui/tabs/record/trial_panel_action.h"
+#include "ui/widgets/panel.h"
 #include "ui/widgets/widget_anchors.h"
 
 namespace lmc::ui {
 
-class RecordTrialPanel {
+class RecordTrialPanel : public Panel {
  public:
-  explicit RecordTrialPanel(std::shared_ptr<const RecordSessionModel> model);
+  explicit RecordTrialPanel(std::shared_ptr<const RecordState> model);
   RecordTrialPanel(const RecordTrialPanel&) = delete;  // verdict_ holds a reference to note_
   RecordTrialPanel& operator=(const RecordTrialPanel&) = delete;
   TrialPanelAction draw();
@@ -35,11 +36,14 @@ class RecordTrialPanel {
   const RecordCalibrationPanel& calibration() const { return calibration_; }
 
  private:
+  void draw_cues(int trial);
+  TrialPanelAction recording_section(int trial);
+  TrialPanelAction start_section(int trial);
   TrialPanelAction preflight_section();
   void verdict_section(TrialPanelAction& action);
   void live_view();
 
-  std::shared_ptr<const RecordSessionModel> model_;
+  std::shared_ptr<const RecordState> model_;
   char override_reason_[200] = "";
   OrbitCamera camera_;  // the live view's
   WidgetAnchors anchors_;

@@ -11,6 +11,7 @@
 #include "ui/model/devices/live_hands.h"
 #include "ui/tabs/record/record_colours.h"
 #include "ui/widgets/colour_legend.h"
+#include "ui/widgets/palette.h"
 #include "ui/widgets/timeline_plot.h"
 
 namespace lmc::ui {
@@ -78,7 +79,7 @@ void timeline(const QualityTimeline& t) {
 
 VerdictAction RecordVerdictPanel::draw() {
   anchors_.clear();  // only what this frame drew
-  const RecordSessionModel& model = *model_;
+  const RecordState& model = *model_;
   VerdictAction action = VerdictAction::kNone;
   const auto& a = model.last_attempt();
   if (!a) return action;
@@ -97,7 +98,7 @@ VerdictAction RecordVerdictPanel::draw() {
   const bool accepted = trial.status == TrialStatus::kAccepted;
   if (!model.busy() && !model.accept_question().empty()) {
     // The question Enter opened: No is the default (Enter again), keeping takes a Y or a click.
-    ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0F, 0.75F, 0.2F, 1.0F));
+    ImGui::PushStyleColor(ImGuiCol_Text, palette::kWarning);
     ImGui::TextWrapped("%s", model.accept_question().c_str());
     ImGui::PopStyleColor();
     if (ImGui::Button("No, keep it failed  [Enter]")) action = VerdictAction::kDontKeep;

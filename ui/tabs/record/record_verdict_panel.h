@@ -6,8 +6,9 @@
 // keys are the tab's.
 #include <memory>
 
-#include "ui/model/record/record_session_model.h"
+#include "ui/model/record/record_state.h"
 #include "ui/tabs/record/record_note_panel.h"
+#include "ui/widgets/panel.h"
 #include "ui/widgets/widget_anchors.h"
 
 namespace lmc::ui {
@@ -15,17 +16,17 @@ namespace lmc::ui {
 // kAccept asks (Enter); kKeepAnyway and kDontKeep answer the question it opened (Y, Enter/Esc).
 enum class VerdictAction { kNone, kAccept, kRedo, kKeepAnyway, kDontKeep };
 
-class RecordVerdictPanel {
+class RecordVerdictPanel : public Panel {
  public:
   // `note`: the trial panel's note line, which its Note button opens.
-  RecordVerdictPanel(std::shared_ptr<const RecordSessionModel> model, RecordNotePanel& note)
-      : model_(std::move(model)), note_(note) {}
+  RecordVerdictPanel(std::shared_ptr<const RecordState> model, RecordNotePanel& note)
+      : Panel("##verdict"), model_(std::move(model)), note_(note) {}
   VerdictAction draw();
   // "accept", "keep_anyway", "dont_keep", "redo" and "note" as drawn (headless tests click them).
   const WidgetAnchors& anchors() const { return anchors_; }
 
  private:
-  std::shared_ptr<const RecordSessionModel> model_;
+  std::shared_ptr<const RecordState> model_;
   RecordNotePanel& note_;
   WidgetAnchors anchors_;
 };

@@ -1,5 +1,7 @@
 #include "ui/tabs/record/subject_screen_controls_panel.h"
 
+#include "ui/widgets/palette.h"
+
 #include <imgui.h>
 
 namespace lmc::ui {
@@ -31,7 +33,7 @@ void SubjectScreenControlsPanel::draw() {
                               "left it); full screen needs a second monitor."
                             : "Off: the subject screen fills the chosen monitor. On: a plain window.");
   if (!link.problem.empty())
-    ImGui::TextColored(ImVec4(1.0F, 0.4F, 0.35F, 1.0F), "%s", link.problem.c_str());  // own line: it must be read whole
+    ImGui::TextColored(palette::kError, "%s", link.problem.c_str());  // own line: it must be read whole
 }
 
 }  // namespace lmc::ui

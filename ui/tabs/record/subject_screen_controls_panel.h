@@ -3,6 +3,7 @@
 // (F2), which monitor it covers, a windowed option for a one-monitor bench, and why it could not
 // open. Changes only the operator's choice in the link; the window follows it.
 #include "ui/model/record/subject_screen_link.h"
+#include "ui/widgets/panel.h"
 #include "ui/widgets/widget_anchors.h"
 
 namespace lmc::ui {
@@ -10,9 +11,9 @@ namespace lmc::ui {
 // GLFW's key code for F2 (ImGui 1.86 has no named function keys; io.KeysDown uses GLFW codes).
 inline constexpr int kSubjectScreenKey = 291;
 
-class SubjectScreenControlsPanel {
+class SubjectScreenControlsPanel : public Panel {
  public:
-  explicit SubjectScreenControlsPanel(SubjectScreenLink& link) : link_(link) {}
+  explicit SubjectScreenControlsPanel(SubjectScreenLink& link) : Panel("##subject_screen_controls"), link_(link) {}
   void draw();
   // "toggle" as drawn (headless tests click it).
   const WidgetAnchors& anchors() const { return anchors_; }

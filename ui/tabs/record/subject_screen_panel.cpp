@@ -6,6 +6,7 @@
 
 #include "ui/model/record/subject_text_scale.h"
 #include "ui/widgets/hand_pictogram.h"
+#include "ui/widgets/palette.h"
 
 namespace lmc::ui {
 namespace {
@@ -26,7 +27,7 @@ void SubjectScreenPanel::draw(const SubjectFonts& fonts) {
   const ImVec2 size = ImGui::GetIO().DisplaySize;
   ImGui::SetNextWindowPos(ImVec2(0, 0));
   ImGui::SetNextWindowSize(size);
-  ImGui::PushStyleColor(ImGuiCol_WindowBg, IM_COL32(0, 0, 0, 255));
+  ImGui::PushStyleColor(ImGuiCol_WindowBg, palette::kSubjectBackground);
   ImGui::Begin("##subject", nullptr,
                ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoInputs |
                    ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoBringToFrontOnFocus);
@@ -34,8 +35,8 @@ void SubjectScreenPanel::draw(const SubjectFonts& fonts) {
   const float w = size.x, h = size.y;
   const float scale = subject_text_scale(w, h);
   const float margin = 0.04F * h;  // kept free below the last line
-  const ImU32 white = IM_COL32(235, 235, 235, 255);
-  const ImU32 grey = IM_COL32(130, 130, 135, 255);
+  const ImU32 white = palette::kSubjectText;
+  const ImU32 grey = palette::kSubjectDim;
   if (v.stage == SubjectStage::kDone || v.stage == SubjectStage::kNoSession) {
     const float top = 0.25F * h;
     const float s = fit_subject_text_scale(scale, h - margin - top, [&](float k) {
@@ -51,7 +52,7 @@ void SubjectScreenPanel::draw(const SubjectFonts& fonts) {
   const float r = std::min(0.19F * h, 0.14F * w);
   const ImVec2 c(0.05F * w + r, 0.05F * h + r);
   if (v.red_circle) {
-    dl->AddCircleFilled(c, r, IM_COL32(230, 30, 30, 255), 96);
+    dl->AddCircleFilled(c, r, palette::kSubjectCircle, 96);
   } else {
     dl->AddCircle(c, r, grey, 96, 6.0F);
   }
@@ -64,7 +65,7 @@ void SubjectScreenPanel::draw(const SubjectFonts& fonts) {
   const float large_px = fonts.large->FontSize * scale;
   const std::string headline = v.stage == SubjectStage::kCountdown ? std::string("Starting") : v.headline;
   text_at(fonts.large, scale, ImVec2(right_of_circle, c.y - large_px),
-          v.red_circle ? IM_COL32(255, 80, 70, 255) : white, headline);
+          v.red_circle ? palette::kSubjectRecordingText : white, headline);
   if (!v.time_text.empty())
     text_at(fonts.large, scale, ImVec2(right_of_circle, c.y + 0.1F * large_px), white, v.time_text);
   // The cue on the left, the pictogram on the right; the cue and the hand line below it shrink
@@ -78,7 +79,7 @@ void SubjectScreenPanel::draw(const SubjectFonts& fonts) {
     return y;
   };
   const float cue_scale = fit_subject_text_scale(scale, h - margin - top, cue_block_height);
-  text_at(fonts.large, cue_scale, ImVec2(0.05F * w, top), IM_COL32(255, 230, 130, 255), v.cue, cue_width);
+  text_at(fonts.large, cue_scale, ImVec2(0.05F * w, top), palette::kSubjectCue, v.cue, cue_width);
   if (!pose_line.empty()) {
     const float cue_h = text_height(fonts.large, cue_scale, v.cue, cue_width);
     text_at(fonts.normal, cue_scale, ImVec2(0.05F * w, top + cue_h + 0.03F * h), grey, pose_line, cue_width);

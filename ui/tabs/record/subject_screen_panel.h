@@ -5,12 +5,13 @@
 // large letters, how to hold the hand and the animated motion pictogram. No controls.
 #include "ui/model/record/subject_screen_link.h"
 #include "ui/platform/subject_window.h"
+#include "ui/widgets/panel.h"
 
 namespace lmc::ui {
 
-class SubjectScreenPanel {
+class SubjectScreenPanel : public Panel {
  public:
-  explicit SubjectScreenPanel(const SubjectScreenLink& link) : link_(link) {}
+  explicit SubjectScreenPanel(const SubjectScreenLink& link) : Panel("##subject"), link_(link) {}
   // `fonts`: the subject window's (its own ImGui context, drawn in that context's frame).
   void draw(const SubjectFonts& fonts);
 

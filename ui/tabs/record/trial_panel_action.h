@@ -11,7 +11,7 @@ enum class TrialPanelAction {
   kStart,
   kStop,
   kAbort,
-  kAccept,      // asks first (RecordSessionModel::ask_accept)
+  kAccept,      // asks first (RecordState::ask_accept)
   kKeepAnyway,  // the answer: keep the failed attempt
   kDontKeep,    // the answer: no (the default)
   kRedo,

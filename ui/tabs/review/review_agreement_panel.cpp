@@ -15,6 +15,7 @@
 #include "ui/scene/colour_maps.h"
 #include "ui/widgets/figure_view.h"
 #include "ui/widgets/imgui_colour.h"
+#include "ui/widgets/palette.h"
 
 namespace lmc::ui {
 namespace {
@@ -143,7 +144,7 @@ void draw_visibility_map(const VisibilityMap& map) {
       const Rgba colour = viridis((cell->rate_mean + 1.0) / 2.0);
       ImGui::TableSetBgColor(ImGuiTableBgTarget_CellBg, to_u32(colour, 0.85F));
       const bool light = colour.r * 0.3 + colour.g * 0.6 + colour.b * 0.1 > 0.55;
-      ImGui::TextColored(light ? ImVec4(0, 0, 0, 1) : ImVec4(1, 1, 1, 1), "%s",
+      ImGui::TextColored(light ? palette::kBlack : palette::kWhite, "%s",
                          format_readable(cell->rate_mean, 2, true).c_str());
       if (ImGui::IsItemHovered()) {
         ImGui::SetTooltip(
@@ -161,12 +162,29 @@ void draw_visibility_map(const VisibilityMap& map) {
 void ReviewAgreementPanel::draw(const PictureRenderer& renderer) {
   anchors_.clear();  // only what this frame drew
   ReviewState& state = *state_;
-  const ReviewState::Agreement& agreement = state.agreement();
-  const AgreementTable& table = agreement.table;
+  const AgreementTable& table = state.agreement().table;
   ImGui::TextDisabled(
       "Across the %zu trial(s) the table shows (its filters apply), %zu without Vicon. Differences are LMC - Vicon; "
       "one trial is one observation.",
       table.trials, table.trials_without_vicon);
+  draw_motion_choice();
+  if (table.groups.empty()) {
+    ImGui::TextDisabled("No trial with Vicon among those shown.");
+    return;
+  }
+  const AgreementGroup& group = draw_group_choice(table);
+  ImGui::SameLine();
+  draw_export_all();
+  measure_ = std::clamp(measure_, 0, std::max(0, static_cast<int>(group.measures.size()) - 1));
+  draw_measure_table(group, measure_, anchors_);
+  if (!group.measures.empty()) draw_what_is_missing(group.measures[static_cast<size_t>(measure_)]);
+  ImGui::Spacing();
+  draw_figures(group, renderer);
+}
+
+// A joint's range of motion means something else in a static trial than in a flexion trial.
+void ReviewAgreementPanel::draw_motion_choice() {
+  ReviewState& state = *state_;
   std::set<std::string> motions;
   for (const auto& t : state.trials()) motions.insert(t.row.motion);
   ImGui::SetNextItemWidth(120);
@@ -181,10 +199,10 @@ void ReviewAgreementPanel::draw(const PictureRenderer& renderer) {
   anchors_.remember("motion");
   if (ImGui::IsItemHovered())
     ImGui::SetTooltip("A joint's range of motion means something else in a static trial than in a flexion trial");
-  if (table.groups.empty()) {
-    ImGui::TextDisabled("No trial with Vicon among those shown.");
-    return;
-  }
+}
+
+// The group shown (layout and pose, or every trial pooled: the last, and the default).
+const AgreementGroup& ReviewAgreementPanel::draw_group_choice(const AgreementTable& table) {
   const int last = static_cast<int>(table.groups.size()) - 1;
   const int g = group_ < 0 || group_ > last ? last : group_;
   ImGui::SameLine();
@@ -197,7 +215,11 @@ void ReviewAgreementPanel::draw(const PictureRenderer& renderer) {
     ImGui::EndCombo();
   }
   anchors_.remember("group");
-  ImGui::SameLine();
+  return table.groups[static_cast<size_t>(g)];
+}
+
+void ReviewAgreementPanel::draw_export_all() {
+  ReviewState& state = *state_;
   ImGui::BeginDisabled(state.exporting());
   if (ImGui::Button("Export all...")) export_browser_.open(FileBrowser::Mode::kSave, sessions_dir(), "review-export");
   anchors_.remember("export_all");
@@ -212,27 +234,26 @@ void ReviewAgreementPanel::draw(const PictureRenderer& renderer) {
     ImGui::SameLine();
     ImGui::TextDisabled("%s", state.export_message().c_str());
   }
-  const AgreementGroup& group = table.groups[static_cast<size_t>(g)];
-  measure_ = std::clamp(measure_, 0, std::max(0, static_cast<int>(group.measures.size()) - 1));
-  draw_measure_table(group, measure_, anchors_);
-  // What the table could not compute, in words (the statistics say why; the same for every measure
-  // of a one-subject group, so the selected one speaks for the rest).
-  if (!group.measures.empty()) {
-    const MeasureAgreement& chosen = group.measures[static_cast<size_t>(measure_)];
-    const auto& selected = chosen.bland_altman;
-    std::string missing;
-    if (!selected.reason.empty() && std::isfinite(selected.bias)) missing += "Bland-Altman: " + selected.reason + ". ";
-    if (!chosen.pearson.reason.empty()) missing += "r: " + chosen.pearson.reason + ". ";
-    if (!chosen.icc_reason.empty()) missing += "ICC: " + chosen.icc_reason + ".";
-    if (!missing.empty()) {
-      ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
-      ImGui::TextWrapped("%s", missing.c_str());
-      ImGui::PopStyleColor();
-      anchors_.remember("agreement.missing");
-    }
-  }
-  ImGui::Spacing();
-  // The selected measure's Bland-Altman plot beside the visibility map.
+}
+
+// What the table could not compute, in words (the statistics say why; the same for every measure
+// of a one-subject group, so the selected one speaks for the rest).
+void ReviewAgreementPanel::draw_what_is_missing(const MeasureAgreement& chosen) {
+  const auto& selected = chosen.bland_altman;
+  std::string missing;
+  if (!selected.reason.empty() && std::isfinite(selected.bias)) missing += "Bland-Altman: " + selected.reason + ". ";
+  if (!chosen.pearson.reason.empty()) missing += "r: " + chosen.pearson.reason + ". ";
+  if (!chosen.icc_reason.empty()) missing += "ICC: " + chosen.icc_reason + ".";
+  if (missing.empty()) return;
+  ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
+  ImGui::TextWrapped("%s", missing.c_str());
+  ImGui::PopStyleColor();
+  anchors_.remember("agreement.missing");
+}
+
+// The selected measure's Bland-Altman plot beside the visibility map.
+void ReviewAgreementPanel::draw_figures(const AgreementGroup& group, const PictureRenderer& renderer) {
+  const ReviewState::Agreement& agreement = state_->agreement();
   const float width = ImGui::GetContentRegionAvail().x;
   const float height = std::max(160.0F, ImGui::GetContentRegionAvail().y - 4);
   ImGui::BeginChild("bland_altman", ImVec2(width * 0.5F, height), false);

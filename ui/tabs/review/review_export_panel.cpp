@@ -37,7 +37,7 @@ std::string outcome_line(const MotionExportOutcome& o) {
 }  // namespace
 
 ReviewExportPanel::ReviewExportPanel(std::shared_ptr<ReviewState> state, FolderOpener opener)
-    : state_(std::move(state)), opener_(std::move(opener)) {
+    : Panel("##export"), state_(std::move(state)), opener_(std::move(opener)) {
   if (!opener_) {
     opener_ = [](const std::filesystem::path& folder, std::string* error) {
       return open_in_file_manager(folder, error);

@@ -10,11 +10,12 @@
 
 #include "ui/model/review/review_state.h"
 #include "ui/widgets/file_browser.h"
+#include "ui/widgets/panel.h"
 #include "ui/widgets/widget_anchors.h"
 
 namespace lmc::ui {
 
-class ReviewExportPanel {
+class ReviewExportPanel : public Panel {
  public:
   // Shows a folder to the person (tests pass a recorder instead of the file manager).
   using FolderOpener = std::function<bool(const std::filesystem::path& folder, std::string* error)>;

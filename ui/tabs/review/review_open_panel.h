@@ -5,13 +5,14 @@
 
 #include "ui/model/review/review_state.h"
 #include "ui/widgets/file_browser.h"
+#include "ui/widgets/panel.h"
 #include "ui/widgets/widget_anchors.h"
 
 namespace lmc::ui {
 
-class ReviewOpenPanel {
+class ReviewOpenPanel : public Panel {
  public:
-  explicit ReviewOpenPanel(std::shared_ptr<ReviewState> state) : state_(std::move(state)) {}
+  explicit ReviewOpenPanel(std::shared_ptr<ReviewState> state) : Panel("##open"), state_(std::move(state)) {}
   void draw();
   // "open", "sample" and "demo" as drawn (headless tests click them).
   const WidgetAnchors& anchors() const { return anchors_; }

@@ -6,13 +6,14 @@
 
 #include "ui/model/review/review_state.h"
 #include "ui/scene/orbit_camera.h"
+#include "ui/widgets/panel.h"
 #include "ui/widgets/widget_anchors.h"
 
 namespace lmc::ui {
 
-class ReviewReplayPanel {
+class ReviewReplayPanel : public Panel {
  public:
-  explicit ReviewReplayPanel(std::shared_ptr<ReviewState> state) : state_(std::move(state)) {}
+  explicit ReviewReplayPanel(std::shared_ptr<ReviewState> state) : Panel("replay"), state_(std::move(state)) {}
   void draw();
   bool playing() const { return playing_; }
   // "play" and "time" as drawn (headless tests click them).

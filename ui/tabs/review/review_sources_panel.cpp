@@ -6,6 +6,7 @@
 #include <string>
 
 #include "ui/widgets/flow_row.h"
+#include "ui/widgets/palette.h"
 
 namespace lmc::ui {
 
@@ -18,7 +19,7 @@ bool ReviewSourcesPanel::folder_chip(const std::filesystem::path& folder) {
   ImGui::SameLine(0, 6);
   if (const FolderLengthCorrection* c = state.length_correction(folder)) {
     const bool applied = state.method() == FusionMethod::kDefault;
-    ImGui::TextColored(applied ? ImVec4(0.45F, 0.85F, 0.95F, 1) : ImVec4(0.6F, 0.6F, 0.6F, 1),
+    ImGui::TextColored(applied ? palette::kInfo : palette::kMuted,
                        applied ? "lengths corrected" : "lengths not corrected (reference fusion)");
     if (ImGui::IsItemHovered()) {
       const LengthCorrection& lc = c->correction;
@@ -99,7 +100,7 @@ void ReviewSourcesPanel::draw() {
   }
   if (const auto chosen = correction_browser_.draw()) state.set_length_correction(correction_for_, *chosen);
   draw_progress();
-  if (!state.problem().empty()) ImGui::TextColored(ImVec4(0.95F, 0.45F, 0.35F, 1), "%s", state.problem().c_str());
+  if (!state.problem().empty()) ImGui::TextColored(palette::kError, "%s", state.problem().c_str());
 }
 
 void ReviewSourcesPanel::draw_progress() {
@@ -125,7 +126,7 @@ void ReviewSourcesPanel::draw_progress() {
                         job.state() == JobState::kCancelled ? " (cancelled: the rest were left out)" : "");
     if (failed > 0) {
       ImGui::SameLine();
-      ImGui::TextColored(ImVec4(0.95F, 0.45F, 0.35F, 1), "%d failed (status column says why)", failed);
+      ImGui::TextColored(palette::kError, "%d failed (status column says why)", failed);
     }
     if (!b->notes.empty() || !b->cache_warnings.empty()) {
       ImGui::SameLine();

@@ -7,13 +7,14 @@
 
 #include "ui/model/review/review_state.h"
 #include "ui/widgets/file_browser.h"
+#include "ui/widgets/panel.h"
 #include "ui/widgets/widget_anchors.h"
 
 namespace lmc::ui {
 
-class ReviewSourcesPanel {
+class ReviewSourcesPanel : public Panel {
  public:
-  explicit ReviewSourcesPanel(std::shared_ptr<ReviewState> state) : state_(std::move(state)) {}
+  explicit ReviewSourcesPanel(std::shared_ptr<ReviewState> state) : Panel("##sources"), state_(std::move(state)) {}
   void draw();
   // The width of the fusion choice that starts draw()'s row (the tab wraps the row before it).
   static float fusion_width();

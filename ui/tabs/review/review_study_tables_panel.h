@@ -4,12 +4,14 @@
 #include <memory>
 
 #include "ui/model/review/review_state.h"
+#include "ui/widgets/panel.h"
 
 namespace lmc::ui {
 
-class ReviewStudyTablesPanel {
+class ReviewStudyTablesPanel : public Panel {
  public:
-  explicit ReviewStudyTablesPanel(std::shared_ptr<const ReviewState> state) : state_(std::move(state)) {}
+  explicit ReviewStudyTablesPanel(std::shared_ptr<const ReviewState> state)
+      : Panel("##study_tables"), state_(std::move(state)) {}
   void draw();
 
  private:

@@ -10,6 +10,7 @@
 
 #include "core/common/number_format.h"
 #include "ui/model/review/trial_table_height.h"
+#include "ui/widgets/palette.h"
 
 namespace lmc::ui {
 namespace {
@@ -41,15 +42,15 @@ void number_cell(double v, int decimals, bool signed_value, const char* suffix =
 ImVec4 status_colour(TrialRowStatus s) {
   switch (s) {
     case TrialRowStatus::kOk:
-      return ImVec4(0.55F, 0.85F, 0.55F, 1);
+      return palette::kOk;
     case TrialRowStatus::kNoVicon:
-      return ImVec4(0.85F, 0.80F, 0.45F, 1);
+      return palette::kWarning;
     case TrialRowStatus::kFailed:
-      return ImVec4(0.95F, 0.45F, 0.35F, 1);
+      return palette::kError;
     case TrialRowStatus::kCancelled:
-      return ImVec4(0.6F, 0.6F, 0.6F, 1);
+      return palette::kMuted;
   }
-  return ImVec4(1, 1, 1, 1);
+  return palette::kWhite;
 }
 
 }  // namespace
@@ -65,7 +66,8 @@ void ReviewTrialTablePanel::draw() {
   draw_splitter(available, row_px, rows, table_px);
 }
 
-void ReviewTrialTablePanel::draw_table(float height_px) {
+// Subject, layout, pose, motion, status and a trial name: the model filters the rows.
+void ReviewTrialTablePanel::draw_filters() {
   ReviewState& state = *state_;
   const auto& trials = state.trials();
   TrialFilter f = state.filter();
@@ -84,22 +86,11 @@ void ReviewTrialTablePanel::draw_table(float height_px) {
   ImGui::SetNextItemWidth(120);
   if (ImGui::InputTextWithHint("##name", "trial name", text, sizeof text)) f.text = text;
   if (!(f == state.filter())) state.set_filter(f);
-  const std::vector<int> rows = state.visible_trials();
-  ImGui::SameLine();
-  ImGui::TextDisabled("%zu of %zu", rows.size(), trials.size());
+}
 
-  size_t controllers = 0;
-  for (const auto& t : trials) controllers = std::max(controllers, t.row.visibility_rate.size());
-  controllers = std::min<size_t>(controllers, 8);
-  const int fixed_columns = 9;
-  const int columns = fixed_columns + static_cast<int>(controllers);
-  const ImGuiTableFlags flags = ImGuiTableFlags_ScrollY | ImGuiTableFlags_RowBg | ImGuiTableFlags_BordersInnerV |
-                                ImGuiTableFlags_Resizable | ImGuiTableFlags_Sortable | ImGuiTableFlags_SizingFixedFit |
-                                ImGuiTableFlags_ScrollX;  // a narrow window scrolls the columns, never squeezes them
-  // The id holds the column count: a table whose columns changed starts with fresh widths.
-  const std::string table_id = "trials##" + std::to_string(columns);
-  if (!ImGui::BeginTable(table_id.c_str(), columns, flags, ImVec2(0, height_px))) return;
-  // Widths for what the cells hold, not for the header alone (the table is first drawn empty).
+// The columns (a visibility column per controller, at most 8), each wide enough for what its cells
+// hold, and the sort the user picked by clicking a header.
+void ReviewTrialTablePanel::setup_columns(size_t controllers) {
   // A header never ends in "…": each column is at least as wide as its name and the sort arrow
   // ImGui keeps room for.
   const auto header_width = [](const char* name, float width) {
@@ -129,57 +120,82 @@ void ReviewTrialTablePanel::draw_table(float height_px) {
   ImGui::TableHeadersRow();
   if (ImGuiTableSortSpecs* specs = ImGui::TableGetSortSpecs(); specs != nullptr && specs->SpecsDirty) {
     if (specs->SpecsCount > 0) {
-      state.set_sort(TrialSort{static_cast<int>(specs->Specs[0].ColumnUserID),
-                               specs->Specs[0].SortDirection != ImGuiSortDirection_Descending});
+      state_->set_sort(TrialSort{static_cast<int>(specs->Specs[0].ColumnUserID),
+                                 specs->Specs[0].SortDirection != ImGuiSortDirection_Descending});
     }
     specs->SpecsDirty = false;
   }
+}
+
+// One trial's row; its first cell selects it and tells where it came from.
+void ReviewTrialTablePanel::draw_row(int index, size_t controllers) {
+  ReviewState& state = *state_;
+  const ReviewTrial& t = state.trials()[static_cast<size_t>(index)];
+  const TrialRow& row = t.row;
+  ImGui::TableNextRow();
+  ImGui::TableNextColumn();
+  ImGui::PushID(index);
+  if (ImGui::Selectable(row.subject.c_str(), state.selected() == index, ImGuiSelectableFlags_SpanAllColumns)) {
+    state.select(index);
+  }
+  anchors_.remember("trial." + std::to_string(index));
+  if (ImGui::IsItemHovered()) {
+    ImGui::BeginTooltip();
+    ImGui::Text("%s  (%s%s)", t.job.lmc.string().c_str(), t.job.vicon ? "with Vicon" : "no Vicon file",
+                t.from_cache ? ", from the cache" : "");
+    if (!row.error.empty()) ImGui::TextColored(palette::kError, "%s", row.error.c_str());
+    for (const auto& w : t.outcome.warnings) ImGui::TextDisabled("%s", w.c_str());
+    ImGui::EndTooltip();
+  }
+  ImGui::PopID();
+  ImGui::TableNextColumn();
+  ImGui::TextUnformatted(row.trial.c_str());
+  ImGui::TableNextColumn();
+  ImGui::TextUnformatted(row.layout.c_str());
+  ImGui::TableNextColumn();
+  ImGui::TextUnformatted(row.pose.c_str());
+  ImGui::TableNextColumn();
+  ImGui::TextUnformatted(row.motion.c_str());
+  ImGui::TableNextColumn();
+  ImGui::TextColored(status_colour(row.status), "%s%s", trial_row_status_name(row.status),
+                     row.warnings > 0 && row.status == TrialRowStatus::kOk ? " (!)" : "");
+  for (size_t d = 0; d < controllers; ++d) {
+    ImGui::TableNextColumn();
+    const double v = d < row.visibility_rate.size() ? row.visibility_rate[d] * 100.0 : std::nan("");
+    number_cell(v, 0, false, " %");
+  }
+  ImGui::TableNextColumn();
+  number_cell(row.finger_length_diff_mm, 1, true);
+  ImGui::TableNextColumn();
+  number_cell(row.rom_abs_diff_deg, 1, false);
+  ImGui::TableNextColumn();
+  number_cell(row.lag_ms, 0, true);
+}
+
+void ReviewTrialTablePanel::draw_table(float height_px) {
+  ReviewState& state = *state_;
+  const auto& trials = state.trials();
+  draw_filters();
+  const std::vector<int> rows = state.visible_trials();
+  ImGui::SameLine();
+  ImGui::TextDisabled("%zu of %zu", rows.size(), trials.size());
+
+  size_t controllers = 0;
+  for (const auto& t : trials) controllers = std::max(controllers, t.row.visibility_rate.size());
+  controllers = std::min<size_t>(controllers, 8);
+  const int fixed_columns = 9;
+  const int columns = fixed_columns + static_cast<int>(controllers);
+  const ImGuiTableFlags flags = ImGuiTableFlags_ScrollY | ImGuiTableFlags_RowBg | ImGuiTableFlags_BordersInnerV |
+                                ImGuiTableFlags_Resizable | ImGuiTableFlags_Sortable | ImGuiTableFlags_SizingFixedFit |
+                                ImGuiTableFlags_ScrollX;  // a narrow window scrolls the columns, never squeezes them
+  // The id holds the column count: a table whose columns changed starts with fresh widths.
+  const std::string table_id = "trials##" + std::to_string(columns);
+  if (!ImGui::BeginTable(table_id.c_str(), columns, flags, ImVec2(0, height_px))) return;
+  setup_columns(controllers);
   ImGuiListClipper clipper;
   clipper.Begin(static_cast<int>(rows.size()));
   while (clipper.Step()) {
-    for (int r = clipper.DisplayStart; r < clipper.DisplayEnd; ++r) {
-      const int index = rows[static_cast<size_t>(r)];
-      const ReviewTrial& t = trials[static_cast<size_t>(index)];
-      const TrialRow& row = t.row;
-      ImGui::TableNextRow();
-      ImGui::TableNextColumn();
-      ImGui::PushID(index);
-      if (ImGui::Selectable(row.subject.c_str(), state.selected() == index, ImGuiSelectableFlags_SpanAllColumns)) {
-        state.select(index);
-      }
-      anchors_.remember("trial." + std::to_string(index));
-      if (ImGui::IsItemHovered()) {
-        ImGui::BeginTooltip();
-        ImGui::Text("%s  (%s%s)", t.job.lmc.string().c_str(), t.job.vicon ? "with Vicon" : "no Vicon file",
-                    t.from_cache ? ", from the cache" : "");
-        if (!row.error.empty()) ImGui::TextColored(ImVec4(0.95F, 0.45F, 0.35F, 1), "%s", row.error.c_str());
-        for (const auto& w : t.outcome.warnings) ImGui::TextDisabled("%s", w.c_str());
-        ImGui::EndTooltip();
-      }
-      ImGui::PopID();
-      ImGui::TableNextColumn();
-      ImGui::TextUnformatted(row.trial.c_str());
-      ImGui::TableNextColumn();
-      ImGui::TextUnformatted(row.layout.c_str());
-      ImGui::TableNextColumn();
-      ImGui::TextUnformatted(row.pose.c_str());
-      ImGui::TableNextColumn();
-      ImGui::TextUnformatted(row.motion.c_str());
-      ImGui::TableNextColumn();
-      ImGui::TextColored(status_colour(row.status), "%s%s", trial_row_status_name(row.status),
-                         row.warnings > 0 && row.status == TrialRowStatus::kOk ? " (!)" : "");
-      for (size_t d = 0; d < controllers; ++d) {
-        ImGui::TableNextColumn();
-        const double v = d < row.visibility_rate.size() ? row.visibility_rate[d] * 100.0 : std::nan("");
-        number_cell(v, 0, false, " %");
-      }
-      ImGui::TableNextColumn();
-      number_cell(row.finger_length_diff_mm, 1, true);
-      ImGui::TableNextColumn();
-      number_cell(row.rom_abs_diff_deg, 1, false);
-      ImGui::TableNextColumn();
-      number_cell(row.lag_ms, 0, true);
-    }
+    for (int r = clipper.DisplayStart; r < clipper.DisplayEnd; ++r) draw_row(rows[static_cast<size_t>(r)], controllers);
   }
   scrollbar_px_ = ImGui::GetCurrentWindow()->ScrollbarX ? ImGui::GetStyle().ScrollbarSize : 0.0F;
   ImGui::EndTable();

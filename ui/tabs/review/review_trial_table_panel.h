@@ -6,13 +6,15 @@
 #include <memory>
 
 #include "ui/model/review/review_state.h"
+#include "ui/widgets/panel.h"
 #include "ui/widgets/widget_anchors.h"
 
 namespace lmc::ui {
 
-class ReviewTrialTablePanel {
+class ReviewTrialTablePanel : public Panel {
  public:
-  explicit ReviewTrialTablePanel(std::shared_ptr<ReviewState> state) : state_(std::move(state)) {}
+  explicit ReviewTrialTablePanel(std::shared_ptr<ReviewState> state)
+      : Panel("##trial_table"), state_(std::move(state)) {}
   // The filters' line, the table (its height from ui/model/review/trial_table_height.h) and the splitter.
   void draw();
   // "trial.N" for the row of trials()[N] and "splitter", as drawn (headless tests click them).
@@ -20,6 +22,9 @@ class ReviewTrialTablePanel {
 
  private:
   void draw_table(float height_px);  // the filters' line and the table
+  void draw_filters();
+  void setup_columns(size_t controllers);
+  void draw_row(int index, size_t controllers);
   void draw_splitter(float available, float row_px, size_t rows, float table_px);
 
   std::shared_ptr<ReviewState> state_;

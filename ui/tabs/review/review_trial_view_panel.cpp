@@ -11,6 +11,7 @@
 #include "ui/widgets/figure_view.h"
 #include "ui/widgets/flow_row.h"
 #include "ui/widgets/label_strips.h"
+#include "ui/widgets/palette.h"
 
 namespace lmc::ui {
 namespace {
@@ -53,10 +54,26 @@ void ReviewTrialViewPanel::draw(const PictureRenderer& renderer) {
     } else if (state.selected() < 0) {
       ImGui::TextDisabled("Click a trial in the table to see it against Vicon.");
     } else if (state.view_job().state() == JobState::kFailed) {
-      ImGui::TextColored(ImVec4(0.95F, 0.45F, 0.35F, 1), "%s", state.view_job().error().c_str());
+      ImGui::TextColored(palette::kError, "%s", state.view_job().error().c_str());
     }
     return;
   }
+  draw_header(view, renderer);
+  // Plots on the left, the 3D replay at the cursor's time on the right.
+  const float replay_width = std::clamp(ImGui::GetContentRegionAvail().x * 0.36F, 280.0F, 560.0F);
+  ImGui::BeginChild("plots", ImVec2(ImGui::GetContentRegionAvail().x - replay_width - 6, 0), false);
+  draw_plots(view->series);
+  ImGui::EndChild();
+  ImGui::SameLine();
+  if (const auto window =
+          replay_.window(ImVec2(0, 0), false, ImGuiWindowFlags_NoScrollbar | ImGuiWindowFlags_NoScrollWithMouse))
+    replay_.draw();
+}
+
+// The trial's name and length, the fusion, "each controller", Export trial..., the PNG, and its
+// warnings.
+void ReviewTrialViewPanel::draw_header(const std::shared_ptr<const TrialView>& view, const PictureRenderer& renderer) {
+  ReviewState& state = *state_;
   const TrialSeries& s = view->series;
   ImGui::Text("%s", s.trial.c_str());
   ImGui::SameLine();
@@ -97,17 +114,19 @@ void ReviewTrialViewPanel::draw(const PictureRenderer& renderer) {
   }
   if (!view->warnings.empty()) {
     ImGui::SameLine();
-    ImGui::TextColored(ImVec4(0.85F, 0.80F, 0.45F, 1), "%zu warning(s)", view->warnings.size());
+    ImGui::TextColored(palette::kWarning, "%zu warning(s)", view->warnings.size());
     if (ImGui::IsItemHovered()) {
       ImGui::BeginTooltip();
       for (const auto& w : view->warnings) ImGui::TextUnformatted(w.c_str());
       ImGui::EndTooltip();
     }
   }
+}
 
-  // Plots on the left, the 3D replay at the cursor's time on the right.
-  const float replay_width = std::clamp(ImGui::GetContentRegionAvail().x * 0.36F, 280.0F, 560.0F);
-  ImGui::BeginChild("plots", ImVec2(ImGui::GetContentRegionAvail().x - replay_width - 6, 0), false);
+// The six angles and a finger's length against one time axis, then the label strips that
+// explain every gap in them.
+void ReviewTrialViewPanel::draw_plots(const TrialSeries& s) {
+  ReviewState& state = *state_;
   const auto& range = state.x_range();
   std::vector<LabelStrip> strips;
   for (const auto& d : s.devices) {
@@ -154,11 +173,6 @@ void ReviewTrialViewPanel::draw(const PictureRenderer& renderer) {
   same_line_or_wrap(ImGui::GetTextLineHeight() + ImGui::CalcTextSize("seen (ray-traced)").x);
   draw_label_legend();
   draw_label_strips("labels", s.time_s, strips, *range, kStripPx);
-  ImGui::EndChild();
-  ImGui::SameLine();
-  ImGui::BeginChild("replay", ImVec2(0, 0), false, ImGuiWindowFlags_NoScrollbar | ImGuiWindowFlags_NoScrollWithMouse);
-  replay_.draw();
-  ImGui::EndChild();
 }
 
 }  // namespace lmc::ui

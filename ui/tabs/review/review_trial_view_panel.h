@@ -11,21 +11,25 @@
 #include "ui/model/review/review_state.h"
 #include "ui/tabs/review/review_replay_panel.h"
 #include "ui/widgets/file_browser.h"
+#include "ui/widgets/panel.h"
 #include "ui/widgets/png_saver.h"
 #include "ui/widgets/series_plot.h"
 #include "ui/widgets/widget_anchors.h"
 
 namespace lmc::ui {
 
-class ReviewTrialViewPanel {
+class ReviewTrialViewPanel : public Panel {
  public:
-  explicit ReviewTrialViewPanel(std::shared_ptr<ReviewState> state) : state_(state), replay_(std::move(state)) {}
+  explicit ReviewTrialViewPanel(std::shared_ptr<ReviewState> state)
+      : Panel("##trial_view"), state_(state), replay_(std::move(state)) {}
   void draw(const PictureRenderer& renderer);
   // "each_controller" and "export_trial" as drawn (headless tests click them).
   const WidgetAnchors& anchors() const { return anchors_; }
   bool each_controller() const { return each_controller_; }  // each controller's curves drawn too
 
  private:
+  void draw_header(const std::shared_ptr<const TrialView>& view, const PictureRenderer& renderer);
+  void draw_plots(const TrialSeries& s);
   // One plot per id, all on the state's shared x range; each keeps its legend toggles.
   SeriesPlot& plot(const std::string& id, const std::shared_ptr<LinkedXRange>& range);
   std::shared_ptr<ReviewState> state_;

@@ -5,12 +5,13 @@
 
 #include "ui/model/review/review_state.h"
 #include "ui/tabs/review/review_open_panel.h"
+#include "ui/widgets/panel.h"
 
 namespace lmc::ui {
 
-class ReviewWelcomePanel {
+class ReviewWelcomePanel : public Panel {
  public:
-  explicit ReviewWelcomePanel(std::shared_ptr<ReviewState> state) : open_(std::move(state)) {}
+  explicit ReviewWelcomePanel(std::shared_ptr<ReviewState> state) : Panel("##welcome"), open_(std::move(state)) {}
   void draw();
   const ReviewOpenPanel& open_panel() const { return open_; }
 

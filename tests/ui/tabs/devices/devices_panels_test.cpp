@@ -94,6 +94,56 @@ TEST_F(DevicesPanels, ToolbarStartRunsTheChosenBackendAndStopStopsIt) {
   EXPECT_FALSE(state->view().running());
 }
 
+// The backend dropdown's text: the first word after "Backend" on the toolbar's line (a combo's
+// text reads "{ sim }").
+std::string backend_shown(const std::string& toolbar_text) {
+  const size_t at = toolbar_text.find("Backend");
+  if (at == std::string::npos) return {};
+  const size_t from = toolbar_text.find_first_not_of(" {\n", at + 7);
+  return from == std::string::npos ? std::string()
+                                   : toolbar_text.substr(from, toolbar_text.find_first_of(" \n", from) - from);
+}
+
+TEST_F(DevicesPanels, ToolbarDropdownShowsTheBackendThatRuns) {
+  // Started without the toolbar (the automatic LeapC start, or a start from another tab): the
+  // dropdown must name what runs, not its own default.
+  const auto path = test::reference_file("acquisition/LMC_Naiv_Static101.raw.txt");
+  LMC_REQUIRE_REFERENCE_FILE(path);
+  DevicesToolbarPanel panel(state);
+  const auto body = [&] {
+    state->update();
+    panel.draw();
+  };
+  EXPECT_EQ(backend_shown(gui.frame_text(body)), "sim") << "nothing runs: the default";
+  ASSERT_EQ(state->start("replay:" + path.string()), "");
+  gui.move_to(1270, 790);
+  std::string text = gui.frame_text(body);
+  EXPECT_EQ(backend_shown(text), "replay") << text;
+  EXPECT_TRUE(contains(text, path.filename().string())) << "the replayed file in its field: " << text;
+  start_sim();  // as the fallback to the simulated rig does
+  text = gui.frame_text(body);
+  EXPECT_EQ(backend_shown(text), "sim") << text;
+}
+
+TEST_F(DevicesPanels, ToolbarStartThatWorksReplacesAnEarlierError) {
+  DevicesToolbarPanel panel(state);
+  const auto body = [&] {
+    state->update();
+    panel.draw();
+  };
+  EXPECT_NE(state->start("replay:/nonexistent/LMC_x.raw.txt"), "");
+  ASSERT_FALSE(lines.empty());
+  EXPECT_TRUE(lines.back().second) << "a failed start is an error: " << lines.back().first;
+  gui.frame(body);
+  const auto start = panel.anchors().centre("start");
+  ASSERT_TRUE(start);
+  gui.click(start->x, start->y, body);
+  ASSERT_TRUE(state->view().running());
+  ASSERT_FALSE(lines.empty());
+  EXPECT_FALSE(lines.back().second) << "the error stayed after Start worked: " << lines.back().first;
+  EXPECT_TRUE(contains(lines.back().first, "started sim")) << lines.back().first;
+}
+
 TEST_F(DevicesPanels, DeviceTableHasARowPerControllerWithItsSerialSlotAndStatus) {
   DeviceTablePanel panel(state);
   EXPECT_TRUE(contains(gui.frame_text([&] { panel.draw(); }), "no backend running: press Start"));

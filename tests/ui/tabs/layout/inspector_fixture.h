@@ -10,7 +10,7 @@
 
 #include "tests/ui/headless_imgui.h"
 #include "ui/model/layout/layout_actions.h"
-#include "ui/model/layout/layout_tab_state.h"
+#include "ui/model/layout/layout_state.h"
 #include "ui/tabs/layout/inspector_panel.h"
 
 namespace lmc::test {
@@ -18,8 +18,8 @@ namespace lmc::test {
 template <int Width>
 struct InspectorAt : ::testing::Test {
   ui::testing::HeadlessImGui gui{Width, 900};
-  std::shared_ptr<ui::LayoutTabState> state =
-      std::make_shared<ui::LayoutTabState>(ui::make_document(ui::default_new_layout()));
+  std::shared_ptr<ui::LayoutState> state =
+      std::make_shared<ui::LayoutState>(ui::make_document(ui::default_new_layout()));
   ui::InspectorPanel inspector{state};
   std::function<void()> body() {
     return [this] { inspector.draw(); };

@@ -162,7 +162,7 @@ TEST(LayoutFileModels, AVersion1LayoutOpenedAndSavedIsWrittenAsVersion2WithModel
   v1["sensor"]["range_mm"] = 400.0;
   std::ofstream(dir / "v1-400.json") << v1.dump(2);
 
-  LayoutTabState plain(make_document(default_new_layout()));
+  LayoutState plain(make_document(default_new_layout()));
   ASSERT_EQ(plain.open_file(assets_dir() / "layouts" / "paper-initial.json"), "");
   ASSERT_EQ(plain.save_to(dir / "plain.json"), "");
   const nlohmann::json plain_out = read_json(dir / "plain.json");
@@ -174,7 +174,7 @@ TEST(LayoutFileModels, AVersion1LayoutOpenedAndSavedIsWrittenAsVersion2WithModel
     EXPECT_FALSE(d.contains("overrides")) << d.dump();
   }
 
-  LayoutTabState ranged(make_document(default_new_layout()));
+  LayoutState ranged(make_document(default_new_layout()));
   ASSERT_EQ(ranged.open_file(dir / "v1-400.json"), "");
   EXPECT_DOUBLE_EQ(ranged.layout().devices[0].sensor.range_mm, 400.0);
   ASSERT_EQ(ranged.save_to(dir / "ranged.json"), "");
@@ -188,7 +188,7 @@ TEST(LayoutFileModels, AVersion1LayoutOpenedAndSavedIsWrittenAsVersion2WithModel
 TEST(LayoutFileModels, AMixedRigRoundTripsThroughOpenEditAndSave) {
   const auto dir = test::scratch_dir("layout_mixed_rig");
   HeadlessImGui gui{460, 900};
-  auto state = std::make_shared<LayoutTabState>(make_document(default_new_layout()));
+  auto state = std::make_shared<LayoutState>(make_document(default_new_layout()));
   const char* models[] = {"lmc", "lmc", "lmc2", "lmc2"};
   for (int i = 0; i < 4; ++i) ASSERT_TRUE(set_device_model(state->upd_history(), i, models[i]));
   SensorModel s = state->layout().devices[3].sensor;
@@ -197,7 +197,7 @@ TEST(LayoutFileModels, AMixedRigRoundTripsThroughOpenEditAndSave) {
   ASSERT_EQ(state->save_to(dir / "mixed.json"), "");
   const Layout saved = state->history().head().layout;
 
-  auto reopened = std::make_shared<LayoutTabState>(make_document(default_new_layout()));
+  auto reopened = std::make_shared<LayoutState>(make_document(default_new_layout()));
   ASSERT_EQ(reopened->open_file(dir / "mixed.json"), "");
   EXPECT_EQ(reopened->layout(), saved);
   EXPECT_FALSE(reopened->unsaved());
@@ -224,7 +224,7 @@ TEST(LayoutFileModels, AMixedRigRoundTripsThroughOpenEditAndSave) {
     EXPECT_EQ(j.at("devices").at(i).at("model"), expected[i]) << i;
     EXPECT_FALSE(j.at("devices").at(i).contains("overrides")) << j.at("devices").at(i).dump();
   }
-  LayoutTabState third(make_document(default_new_layout()));
+  LayoutState third(make_document(default_new_layout()));
   ASSERT_EQ(third.open_file(dir / "mixed.json"), "");
   EXPECT_EQ(third.layout(), reopened->history().head().layout);
 }

@@ -40,7 +40,7 @@ std::filesystem::path write_fused_trial(const std::filesystem::path& dir, const 
   return file;
 }
 
-void use_small_monte_carlo(LayoutTabState& s) {
+void use_small_monte_carlo(LayoutState& s) {
   PoseSetChoice c;
   c.frames = 30;
   c.seed = 7;
@@ -76,10 +76,10 @@ TEST(LayoutRecordedPoses, ReviewsTrialsBecomeThePoseSetAndTheCoverageRunsOnThem)
   EXPECT_NE(p->set.provenance[0].find("fused hand"), std::string::npos);
   for (int i = 0; i < 3; ++i) {
     tab.state().update(0.0);
-    tab.state().coverage.wait();
+    tab.state().wait_for_coverage();
   }
-  ASSERT_TRUE(tab.state().coverage.latest());
-  EXPECT_EQ(tab.state().coverage.latest()->all.frames, 40);
+  ASSERT_TRUE(tab.state().coverage().latest());
+  EXPECT_EQ(tab.state().coverage().latest()->all.frames, 40);
   EXPECT_NE(status.last.find("Pose set: 40 recorded frames"), std::string::npos) << status.last;
   // The Optimiser panel lists where the frames came from.
   gui.frames(2, [&] {
@@ -92,7 +92,7 @@ TEST(LayoutRecordedPoses, ReviewsTrialsBecomeThePoseSetAndTheCoverageRunsOnThem)
 }
 
 TEST(LayoutRecordedPoses, CancellingALoadGoesBackToTheSetLoadedBefore) {
-  auto state = std::make_shared<LayoutTabState>(make_document(default_new_layout()));
+  auto state = std::make_shared<LayoutState>(make_document(default_new_layout()));
   state->display.show_heatmap = false;
   use_small_monte_carlo(*state);
   state->update(0.0);

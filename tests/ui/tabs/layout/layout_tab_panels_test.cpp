@@ -40,8 +40,16 @@ class RecordingRenderer final : public SceneRenderer {
 
 using SilentStatus = lmc::ui::testing::LastStatus;
 
+// A small swarm for a quick search (the Optimiser panel's particles and iterations fields).
+void set_swarm(LayoutState& state, int particles, int iterations) {
+  PsoSettings p = state.pso();
+  p.particles = particles;
+  p.iterations = iterations;
+  state.set_pso(p);
+}
+
 // A small pose set keeps every test fast (and under ASan).
-void use_small_pose_set(LayoutTabState& s, int frames) {
+void use_small_pose_set(LayoutState& s, int frames) {
   PoseSetChoice c;
   c.frames = frames;
   c.seed = 7;
@@ -107,7 +115,7 @@ TEST_F(TabFixture, DraggingAControllerMovesItAndIsOneUndoStep) {
   const auto& hist = tab->state().history();
   EXPECT_EQ(hist.undo_size(), commits + 1) << "a drag is exactly one undo step";
   EXPECT_EQ(hist.undo_message(), "Move LMC3");
-  EXPECT_EQ(tab->state().selected, 2) << "pressing on a controller selects it";
+  EXPECT_EQ(tab->state().selected(), 2) << "pressing on a controller selects it";
   const DevicePose moved = hist.head().layout.devices[2].pose;
   const DevicePose was = before.layout.devices[2].pose;
   EXPECT_GT(moved.x_mm - was.x_mm, 20.0) << "dragged right in a top view: +x";
@@ -163,9 +171,9 @@ TEST_F(TabFixture, ClickingEmptySpaceClearsTheSelectionAndOrbitDragMovesOnlyTheC
   gui.drag(corner, ImVec2(corner.x + 100, corner.y), 5, body());
   EXPECT_NE(tab->state().camera.yaw_deg(), yaw);
   EXPECT_EQ(tab->state().history().undo_size(), commits);
-  EXPECT_EQ(tab->state().selected, 0) << "a drag is not a click";
+  EXPECT_EQ(tab->state().selected(), 0) << "a drag is not a click";
   gui.click(corner.x, corner.y, body());
-  EXPECT_EQ(tab->state().selected, -1);
+  EXPECT_EQ(tab->state().selected(), -1);
 }
 
 // ---- optimiser panel on its own ----------------------------------------------------------------
@@ -173,7 +181,7 @@ TEST_F(TabFixture, ClickingEmptySpaceClearsTheSelectionAndOrbitDragMovesOnlyTheC
 struct OptimiserFixture : ::testing::Test {
   HeadlessImGui gui{900, 1000};
   SilentStatus status;
-  std::shared_ptr<LayoutTabState> state = std::make_shared<LayoutTabState>(
+  std::shared_ptr<LayoutState> state = std::make_shared<LayoutState>(
       make_document(default_new_layout()), [this](const std::string& t, bool e) { status.set_status(t, e); });
   OptimiserPanel panel{state};
 
@@ -199,7 +207,7 @@ struct OptimiserFixture : ::testing::Test {
   }
   void wait_until_idle() {
     const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(60);
-    while (state->optimiser.running() && std::chrono::steady_clock::now() < deadline) {
+    while (state->optimiser().running() && std::chrono::steady_clock::now() < deadline) {
       std::this_thread::sleep_for(std::chrono::milliseconds(2));
     }
     gui.frame(body());
@@ -207,15 +215,14 @@ struct OptimiserFixture : ::testing::Test {
 };
 
 TEST_F(OptimiserFixture, StartThenCancelLeavesTheLayoutUnchanged) {
-  state->pso.particles = 8;
-  state->pso.iterations = 100000;  // far more than can finish before Cancel
+  set_swarm(*state, 8, 100000);  // far more than can finish before Cancel
   const LayoutDocument before = state->history().head();
   const size_t commits = state->history().undo_size();
   click("start");
-  EXPECT_TRUE(state->optimiser.running() || state->optimiser.state() == JobState::kCancelled);
+  EXPECT_TRUE(state->optimiser().running() || state->optimiser().state() == JobState::kCancelled);
   click("pso.cancel");
   wait_until_idle();
-  EXPECT_EQ(state->optimiser.state(), JobState::kCancelled);
+  EXPECT_EQ(state->optimiser().state(), JobState::kCancelled);
   EXPECT_EQ(status.last.rfind("Optimiser cancelled", 0), 0u) << status.last;
   EXPECT_EQ(state->history().head(), before);
   EXPECT_EQ(state->doc(), before);
@@ -225,16 +232,15 @@ TEST_F(OptimiserFixture, StartThenCancelLeavesTheLayoutUnchanged) {
 // A cancelled search's best so far is a real layout the panel offers to Apply: it is evaluated like
 // a finished search's, so the comparison's robust rows and the status bar's M are its own, not zeros.
 TEST_F(OptimiserFixture, ACancelledSearchsBestSoFarIsEvaluatedLikeAFinishedOne) {
-  state->pso.particles = 8;
-  state->pso.iterations = 100000;  // far more than can finish before Cancel
+  set_swarm(*state, 8, 100000);  // far more than can finish before Cancel
   click("start");
   const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(60);
-  while (state->optimiser.history().empty() && std::chrono::steady_clock::now() < deadline) gui.frame(body());
-  ASSERT_FALSE(state->optimiser.history().empty()) << "the initial swarm was evaluated before Cancel";
+  while (state->optimiser().history().empty() && std::chrono::steady_clock::now() < deadline) gui.frame(body());
+  ASSERT_FALSE(state->optimiser().history().empty()) << "the initial swarm was evaluated before Cancel";
   click("pso.cancel");
   wait_until_idle();
-  ASSERT_EQ(state->optimiser.state(), JobState::kCancelled);
-  const auto outcome = state->optimiser.outcome();
+  ASSERT_EQ(state->optimiser().state(), JobState::kCancelled);
+  const auto outcome = state->optimiser().outcome();
   ASSERT_TRUE(outcome);
   const PsoResult& r = outcome->pso;
   EXPECT_EQ(r.status, lmc::JobStatus::kCancelled);
@@ -250,28 +256,27 @@ TEST_F(OptimiserFixture, ACancelledSearchsBestSoFarIsEvaluatedLikeAFinishedOne) 
 }
 
 TEST_F(OptimiserFixture, ApplyReplacesTheLayoutInOneUndoableStep) {
-  state->pso.particles = 6;
-  state->pso.iterations = 3;
+  set_swarm(*state, 6, 3);
   const LayoutDocument before = state->history().head();
   const size_t commits = state->history().undo_size();
   click("start");
   wait_until_idle();
-  ASSERT_EQ(state->optimiser.state(), JobState::kCompleted) << state->optimiser.error();
-  ASSERT_TRUE(state->optimiser.outcome());
-  EXPECT_FALSE(state->optimiser.history().empty()) << "the convergence plot has data";
+  ASSERT_EQ(state->optimiser().state(), JobState::kCompleted) << state->optimiser().error();
+  ASSERT_TRUE(state->optimiser().outcome());
+  EXPECT_FALSE(state->optimiser().history().empty()) << "the convergence plot has data";
   // The panel searches with the robust metric by default and says so.
   EXPECT_EQ(status.last.rfind("Optimiser finished: best R = ", 0), 0u) << status.last;
-  EXPECT_EQ(state->optimiser.outcome()->pso.metric, PlacementMetricKind::kRobust);
+  EXPECT_EQ(state->optimiser().outcome()->pso.metric, PlacementMetricKind::kRobust);
   // The comparison's robust rows: the start layout's terms beside the candidate's, on the same
   // pose set with the same weights (the candidate's are the search's own cost, bit for bit).
-  const auto& outcome = *state->optimiser.outcome();
+  const auto& outcome = *state->optimiser().outcome();
   for (size_t d = 0; d < before.layout.devices.size(); ++d) {
     EXPECT_EQ(outcome.start_layout.devices[d].pose, before.layout.devices[d].pose);
   }
   EXPECT_GT(outcome.start_terms.total, 0.0);
   EXPECT_EQ(outcome.pso.best_terms.total, outcome.pso.best_cost);
   EXPECT_GT(outcome.start_terms.metric_m_inside_cut, 0.0);
-  const Layout candidate = state->optimiser.outcome()->pso.best_layout;
+  const Layout candidate = state->optimiser().outcome()->pso.best_layout;
   click("apply");
   EXPECT_EQ(state->history().undo_size(), commits + 1);
   EXPECT_EQ(state->history().undo_message(), "Apply optimised layout");
@@ -280,23 +285,22 @@ TEST_F(OptimiserFixture, ApplyReplacesTheLayoutInOneUndoableStep) {
   }
   EXPECT_EQ(state->history().head().layout.name, "optimized-robust");
   EXPECT_NE(state->history().head().layout.description.find("robust metric"), std::string::npos);
-  EXPECT_FALSE(state->optimiser.outcome()) << "applied candidates are not offered again";
+  EXPECT_FALSE(state->optimiser().outcome()) << "applied candidates are not offered again";
   state->undo();
   EXPECT_EQ(state->history().head(), before);
 }
 
 TEST_F(OptimiserFixture, SeveralStartsKeepTheBestAndACurveEach) {
-  state->pso.particles = 6;
-  state->pso.iterations = 3;
-  state->optimiser_starts = 3;
+  set_swarm(*state, 6, 3);
+  state->set_optimiser_starts(3);
   click("start");
   wait_until_idle();
-  ASSERT_EQ(state->optimiser.state(), JobState::kCompleted) << state->optimiser.error();
-  const auto outcome = state->optimiser.outcome();
+  ASSERT_EQ(state->optimiser().state(), JobState::kCompleted) << state->optimiser().error();
+  const auto outcome = state->optimiser().outcome();
   ASSERT_TRUE(outcome);
   ASSERT_EQ(outcome->start_costs.size(), 3u);
-  ASSERT_EQ(state->optimiser.histories().size(), 3u);                          // one convergence curve per start
-  for (const auto& h : state->optimiser.histories()) EXPECT_EQ(h.size(), 4u);  // iterations 0…3
+  ASSERT_EQ(state->optimiser().histories().size(), 3u);                          // one convergence curve per start
+  for (const auto& h : state->optimiser().histories()) EXPECT_EQ(h.size(), 4u);  // iterations 0…3
   const double best = *std::min_element(outcome->start_costs.begin(), outcome->start_costs.end());
   EXPECT_DOUBLE_EQ(outcome->pso.best_cost, best);
   EXPECT_DOUBLE_EQ(outcome->start_costs[static_cast<size_t>(outcome->best_start)], best);
@@ -305,13 +309,12 @@ TEST_F(OptimiserFixture, SeveralStartsKeepTheBestAndACurveEach) {
 }
 
 TEST_F(OptimiserFixture, LockedParametersStayPutInTheCandidate) {
-  state->pso.particles = 6;
-  state->pso.iterations = 2;
+  set_swarm(*state, 6, 2);
   for (int k = 0; k < kNumPoseParams; ++k) ASSERT_TRUE(set_device_lock(state->upd_history(), 0, k, true));
   click("start");
   wait_until_idle();
-  ASSERT_TRUE(state->optimiser.outcome()) << state->optimiser.error();
-  EXPECT_EQ(state->optimiser.outcome()->pso.best_layout.devices[0].pose,
+  ASSERT_TRUE(state->optimiser().outcome()) << state->optimiser().error();
+  EXPECT_EQ(state->optimiser().outcome()->pso.best_layout.devices[0].pose,
             state->history().head().layout.devices[0].pose);
 }
 
@@ -327,8 +330,7 @@ struct OptimiserAt1280x800 : ::testing::Test {
     tab.set_modals_enabled(false);
     use_small_pose_set(tab.state(), 40);
     tab.state().display.show_heatmap = false;
-    tab.state().pso.particles = 8;
-    tab.state().pso.iterations = 100000;  // runs until cancelled
+    set_swarm(tab.state(), 8, 100000);  // runs until cancelled
     tab.show_panel("optimiser");
     tab.optimiser_panel().open_settings_once();
     tab.state().update(0.0);
@@ -356,14 +358,14 @@ TEST_F(OptimiserAt1280x800, SettingsRunningAndCancelledLinesAreNotCut) {
   EXPECT_TRUE(anchors().fits_across("movable-note")) << "(locks per parameter are in the Inspector) wraps";
 
   ASSERT_TRUE(tab.state().start_optimiser());
-  ASSERT_TRUE(frames_until([&] { return !tab.state().optimiser.history().empty(); }));
-  ASSERT_TRUE(tab.state().optimiser.running());
+  ASSERT_TRUE(frames_until([&] { return !tab.state().optimiser().history().empty(); }));
+  ASSERT_TRUE(tab.state().optimiser().running());
   EXPECT_TRUE(anchors().fully_visible("pso.cancel"));
   EXPECT_TRUE(anchors().fully_visible("pso.elapsed")) << "elapsed ... remaining ... under the progress bar";
 
   tab.state().cancel_optimiser();
-  ASSERT_TRUE(frames_until([&] { return !tab.state().optimiser.running(); }));
-  ASSERT_EQ(tab.state().optimiser.state(), JobState::kCancelled);
+  ASSERT_TRUE(frames_until([&] { return !tab.state().optimiser().running(); }));
+  ASSERT_EQ(tab.state().optimiser().state(), JobState::kCancelled);
   EXPECT_TRUE(anchors().fully_visible("result")) << "Cancelled: best so far ... (… s)";
   EXPECT_TRUE(anchors().fully_visible("apply"));
   EXPECT_TRUE(anchors().fully_visible("discard"));
@@ -377,12 +379,12 @@ TEST_F(InspectorFixture, AddSelectsTheNewControllerAndRemoveTakesItAwayEachOneUn
   state->select(0);
   click("add");
   EXPECT_EQ(state->doc().device_count(), 5);
-  EXPECT_EQ(state->selected, 4);
+  EXPECT_EQ(state->selected(), 4);
   EXPECT_EQ(state->history().undo_message(), "Add LMC5");
   click("remove");
   EXPECT_EQ(state->doc().device_count(), 4);
   EXPECT_EQ(state->history().undo_size(), 2u);
-  EXPECT_EQ(state->selected, 3) << "the selection is pruned to an existing controller";
+  EXPECT_EQ(state->selected(), 3) << "the selection is pruned to an existing controller";
 }
 
 TEST_F(InspectorFixture, TheLockCheckboxLocksThatParameterOnly) {
@@ -395,7 +397,7 @@ TEST_F(InspectorFixture, TheLockCheckboxLocksThatParameterOnly) {
 
 TEST(CoveragePanel, DrawsTheTableOnceCoverageIsIn) {
   HeadlessImGui gui{700, 500};
-  auto state = std::make_shared<LayoutTabState>(make_document(default_new_layout()));
+  auto state = std::make_shared<LayoutState>(make_document(default_new_layout()));
   PoseSetChoice c;
   c.frames = 30;
   ASSERT_TRUE(set_pose_set_choice(state->upd_history(), c));
@@ -404,14 +406,14 @@ TEST(CoveragePanel, DrawsTheTableOnceCoverageIsIn) {
   state->update(0.0);
   state->poses.wait();
   state->update(0.0);
-  state->coverage.wait();
+  state->wait_for_coverage();
   gui.frames(2, [&] {
     state->update(1.0 / 60.0);
     panel.draw();
   });
-  ASSERT_TRUE(state->coverage.latest());
-  EXPECT_EQ(state->coverage.latest()->all.frames, 30);
-  EXPECT_EQ(state->coverage.latest()->all.devices, 4);
+  ASSERT_TRUE(state->coverage().latest());
+  EXPECT_EQ(state->coverage().latest()->all.frames, 30);
+  EXPECT_EQ(state->coverage().latest()->all.devices, 4);
 }
 
 // The workbench's one layout: the live rig follows what the Layout tab has committed,

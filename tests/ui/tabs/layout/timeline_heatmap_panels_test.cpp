@@ -10,7 +10,7 @@
 #include "tests/ui/headless_imgui.h"
 #include "ui/app/capture/text_fit_check.h"
 #include "ui/model/layout/layout_actions.h"
-#include "ui/model/layout/layout_tab_state.h"
+#include "ui/model/layout/layout_state.h"
 #include "ui/tabs/layout/heatmap_panel.h"
 #include "ui/tabs/layout/timeline_panel.h"
 
@@ -19,8 +19,8 @@ namespace {
 
 using testing::HeadlessImGui;
 
-std::shared_ptr<LayoutTabState> state_with_poses(int frames) {
-  auto state = std::make_shared<LayoutTabState>(make_document(default_new_layout()));
+std::shared_ptr<LayoutState> state_with_poses(int frames) {
+  auto state = std::make_shared<LayoutState>(make_document(default_new_layout()));
   PoseSetChoice c;
   c.frames = frames;
   c.seed = 7;

@@ -14,8 +14,8 @@
 
 #include "tests/support/scratch_dir.h"
 #include "tests/ui/headless_imgui.h"
-#include "ui/model/record/record_session_model.h"
 #include "ui/model/record/record_setup_form.h"
+#include "ui/model/record/record_state.h"
 #include "ui/model/record/subject_screen_link.h"
 #include "ui/model/record/subject_view.h"
 #include "ui/tabs/record/record_calibration_panel.h"
@@ -49,7 +49,7 @@ NewSessionSpec spec_for(const std::string& subject, const std::string& protocol 
 }
 
 // Polls the model (as the tab does once a frame) until `done`, for at most a minute.
-void poll_until(RecordSessionModel& model, const std::function<bool()>& done) {
+void poll_until(RecordState& model, const std::function<bool()>& done) {
   const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(60);
   while (!done() && std::chrono::steady_clock::now() < deadline) {
     model.poll();
@@ -58,7 +58,7 @@ void poll_until(RecordSessionModel& model, const std::function<bool()>& done) {
 }
 
 // Records the current trial to its verdict.
-void record_one_trial(RecordSessionModel& model) {
+void record_one_trial(RecordState& model) {
   ASSERT_EQ(model.start_trial(), "");
   poll_until(model, [&] { return model.last_attempt() && !model.busy(); });
   ASSERT_TRUE(model.last_attempt());
@@ -72,7 +72,7 @@ struct ScratchSession {
     fs::remove_all(dir);
   }
   fs::path dir;
-  std::shared_ptr<RecordSessionModel> model = std::make_shared<RecordSessionModel>();
+  std::shared_ptr<RecordState> model = std::make_shared<RecordState>();
 };
 
 bool contains(const std::string& text, const std::string& part) {
@@ -153,7 +153,7 @@ TEST(RecordTrialPanel, StartIsEnabledOnlyAfterThePreflightOrAnOverrideWithAReaso
 
 TEST(RecordTrialPanel, AfterCloseAndReopenNothingOfTheLastVerdictIsDrawnAgainstAnEmptyList) {
   ScratchSession s("record_panels_close");
-  RecordSessionModel& model = *s.model;
+  RecordState& model = *s.model;
   ASSERT_EQ(model.create(s.dir, spec_for("S02"), sim_settings(true)), "");
   ASSERT_EQ(model.override_preflight("checked by hand"), "");
   record_one_trial(model);
@@ -174,7 +174,7 @@ TEST(RecordTrialPanel, AfterCloseAndReopenNothingOfTheLastVerdictIsDrawnAgainstA
 
 TEST(RecordVerdictPanel, ShowsTheVerdictWithItsFiguresAndRedoAndNoteAreItsButtons) {
   ScratchSession s("record_panels_verdict");
-  RecordSessionModel& model = *s.model;
+  RecordState& model = *s.model;
   ASSERT_EQ(model.create(s.dir, spec_for("S04"), sim_settings(true)), "");
   ASSERT_EQ(model.override_preflight("checked by hand"), "");
   record_one_trial(model);
@@ -238,7 +238,7 @@ TEST(RecordNotePanel, TypedLettersAndEnterSubmitTheNoteOnTheTrial) {
 
 TEST(RecordCalibrationPanel, ACalibratingBlockOffersTheCalibrationThenItsResidualsAndApply) {
   ScratchSession s("record_panels_calibration");
-  RecordSessionModel& model = *s.model;
+  RecordState& model = *s.model;
   NewSessionSpec spec = spec_for("S06", "study-calibrated");
   spec.duration_override_s = 1.0;
   RecordSettings settings = sim_settings(true);
@@ -276,7 +276,7 @@ TEST(RecordCalibrationPanel, ACalibratingBlockOffersTheCalibrationThenItsResidua
 
 TEST(RecordDeviceStripsPanel, ShowsEveryControllerOfTheRecordingTrial) {
   ScratchSession s("record_panels_strips");
-  RecordSessionModel& model = *s.model;
+  RecordState& model = *s.model;
   // Real time, so the trial is still recording when its snapshot is drawn.
   ASSERT_EQ(model.create(s.dir, spec_for("S07"), sim_settings(false)), "");
   ASSERT_EQ(model.override_preflight("checked by hand"), "");

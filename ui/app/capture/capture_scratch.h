@@ -1,8 +1,8 @@
 #pragma once
-// Folders a tab records demo sessions into while `--capture` takes its pictures. They are scratch
-// (the pictures are the output), so they go with the tab and never stay behind in /tmp.
-// Declare the member before whatever writes into the folders, so that
-// it is destroyed after the writer has stopped.
+// Folders a capture script records demo sessions into while `--capture` takes its pictures. They
+// are scratch (the pictures are the output), so they go with the script and never stay behind in
+// /tmp. The capture destroys its scripts after the shell, so a folder is removed only once the
+// tab writing into it has stopped.
 #include <filesystem>
 #include <string>
 #include <system_error>

@@ -4,6 +4,7 @@
 // the job handles. Panels read it through const accessors and change it through actions (ui/model/
 // layout_actions.h) or job controls. No ImGui and no GL here, so the tab's logic is testable with
 // plain gtest; update() is the frame's update step (poll jobs, refresh caches) and never blocks.
+#include <algorithm>
 #include <cstdint>
 #include <filesystem>
 #include <functional>
@@ -47,10 +48,10 @@ struct DisplaySettings {
   bool show_search_box = false;     // the Optimiser panel is open: draw its x/z bounds on the table
 };
 
-class LayoutTabState {
+class LayoutState {
  public:
   using StatusFn = std::function<void(const std::string&, bool is_error)>;
-  explicit LayoutTabState(LayoutDocument initial, StatusFn status = {});
+  explicit LayoutState(LayoutDocument initial, StatusFn status = {});
 
   // ---- document --------------------------------------------------------------------------------
   const UndoableLayoutDocument& history() const { return document_; }
@@ -74,10 +75,16 @@ class LayoutTabState {
   void new_layout();
 
   // ---- selection ------------------------------------------------------------------------------
-  int selected = -1;
-  int hovered = -1;
-  HandleKind hovered_handle = HandleKind::kNone;
-  HandleKind active_handle = HandleKind::kNone;
+  int selected() const { return selected_; }  // −1: none
+  // The controller under the pointer (−1: none) and which of its handles; the handle being dragged.
+  int hovered() const { return hovered_; }
+  HandleKind hovered_handle() const { return hovered_handle_; }
+  HandleKind active_handle() const { return active_handle_; }
+  void set_hover(int device, HandleKind handle) {
+    hovered_ = device;
+    hovered_handle_ = handle;
+  }
+  void set_active_handle(HandleKind handle) { active_handle_ = handle; }
   void select(int device);
   // Drops selection and hover that no longer exist (after undo, remove, open).
   void prune_selection();
@@ -86,15 +93,24 @@ class LayoutTabState {
   OrbitCamera camera;
   TimelineState timeline;
   DisplaySettings display;
-  PsoSettings pso;
-  int optimiser_starts = 1;  // swarms from seeds pso.seed, pso.seed + 1, …; the best is kept
+
+  // ---- the optimiser's settings ------------------------------------------------------------------
+  const PsoSettings& pso() const { return pso_; }
+  void set_pso(const PsoSettings& settings) { pso_ = settings; }
+  // Swarms from seeds pso().seed, pso().seed + 1, …; the best is kept.
+  int optimiser_starts() const { return optimiser_starts_; }
+  void set_optimiser_starts(int starts) { optimiser_starts_ = std::clamp(starts, 1, 8); }
 
   // ---- derived data ----------------------------------------------------------------------------
   PoseSetStore poses;
-  CoverageCache coverage;
-  HeatmapCache heatmap;
-  OptimiserJob optimiser;
-  LayoutReportJob report_job;  // "Report...": lmc evaluate --report for the edited layout
+  const CoverageCache& coverage() const { return coverage_; }
+  const HeatmapCache& heatmap() const { return heatmap_; }
+  const OptimiserJob& optimiser() const { return optimiser_; }
+  // "Report...": lmc evaluate --report for the edited layout and the pose set, into `dir`.
+  const LayoutReportJob& report_job() const { return report_job_; }
+  void start_report(const std::filesystem::path& dir);
+  // Blocks until the coverage of the current document is in (tests).
+  void wait_for_coverage() { coverage_.wait(); }
   const FrameVisibility& frame_visibility() const { return frame_visibility_; }
   const std::vector<int>& timeline_frames() const { return timeline_frames_; }  // after filters
   // The hand on screen (world frame), or null while the pose set loads.
@@ -107,7 +123,7 @@ class LayoutTabState {
   void update(double dt_seconds, bool on_screen = true);
   // Start / cancel / apply the optimiser (job controls).
   bool start_optimiser();
-  void cancel_optimiser() { optimiser.cancel(); }
+  void cancel_optimiser() { optimiser_.cancel(); }
   // Designs on recorded hands: the pose set becomes these trials' (Review's "Design a layout for
   // these trials", the Optimiser panel's "From recordings"); one undo step. False with the reason
   // in the status line when there is nothing to read.
@@ -116,6 +132,7 @@ class LayoutTabState {
   // Stops loading a pose set and goes back to the set loaded before (an undo step of its own).
   void cancel_pose_set_load();
   bool apply_optimised();
+  void discard_optimised() { optimiser_.discard(); }
   // True while background work that a screenshot should wait for is running.
   bool busy() const;
 
@@ -131,6 +148,16 @@ class LayoutTabState {
   void report_recorded_pose_set();
 
   UndoableLayoutDocument document_;
+  int selected_ = -1;
+  int hovered_ = -1;
+  HandleKind hovered_handle_ = HandleKind::kNone;
+  HandleKind active_handle_ = HandleKind::kNone;
+  PsoSettings pso_;
+  int optimiser_starts_ = 1;
+  CoverageCache coverage_;
+  HeatmapCache heatmap_;
+  OptimiserJob optimiser_;
+  LayoutReportJob report_job_;
   JobState last_optimiser_state_ = JobState::kIdle;
   std::uint64_t reported_pose_set_version_ = 0;
   std::uint64_t saved_head_id_ = 0;

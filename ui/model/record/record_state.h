@@ -53,14 +53,14 @@ struct RecordWorkResult {
 
 class LiveRig;
 
-class RecordSessionModel {
+class RecordState {
  public:
   // `rig` (optional, must outlive the model): the workbench's live rig, lent for sessions whose
   // settings share its hub.
-  explicit RecordSessionModel(LiveRig* rig = nullptr);
-  ~RecordSessionModel();
-  RecordSessionModel(const RecordSessionModel&) = delete;
-  RecordSessionModel& operator=(const RecordSessionModel&) = delete;
+  explicit RecordState(LiveRig* rig = nullptr);
+  ~RecordState();
+  RecordState(const RecordState&) = delete;
+  RecordState& operator=(const RecordState&) = delete;
 
   // ---- the session ---------------------------------------------------------------------------
   // Both return an error text ("" when done). A session already open is closed first.

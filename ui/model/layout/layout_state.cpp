@@ -1,4 +1,4 @@
-#include "ui/model/layout/layout_tab_state.h"
+#include "ui/model/layout/layout_state.h"
 
 #include <algorithm>
 #include <cmath>
@@ -10,16 +10,16 @@
 
 namespace lmc::ui {
 
-LayoutTabState::LayoutTabState(LayoutDocument initial, StatusFn status)
+LayoutState::LayoutState(LayoutDocument initial, StatusFn status)
     : document_(std::move(initial)), status_(std::move(status)) {
   saved_head_id_ = document_.head_id();
   // Leave one core to the UI thread; the result does not depend on the thread count.
-  pso.threads = std::max(1, static_cast<int>(std::thread::hardware_concurrency()) - 1);
+  pso_.threads = std::max(1, static_cast<int>(std::thread::hardware_concurrency()) - 1);
   // The Optimiser panel searches with the robust metric unless the user picks the study's.
-  pso.metric = PlacementMetricKind::kRobust;
+  pso_.metric = PlacementMetricKind::kRobust;
 }
 
-bool LayoutTabState::report(const ActionResult& r, const std::string& what) {
+bool LayoutState::report(const ActionResult& r, const std::string& what) {
   if (!r) {
     set_status(what + ": " + r.error, true);
     return false;
@@ -28,7 +28,7 @@ bool LayoutTabState::report(const ActionResult& r, const std::string& what) {
   return true;
 }
 
-void LayoutTabState::undo() {
+void LayoutState::undo() {
   if (!document_.can_undo()) return;
   const std::string msg = document_.undo_message();
   document_.undo();
@@ -36,7 +36,7 @@ void LayoutTabState::undo() {
   set_status("Undid " + msg);
 }
 
-void LayoutTabState::redo() {
+void LayoutState::redo() {
   if (!document_.can_redo()) return;
   const std::string msg = document_.redo_message();
   document_.redo();
@@ -44,7 +44,7 @@ void LayoutTabState::redo() {
   set_status("Redid " + msg);
 }
 
-std::string LayoutTabState::title() const {
+std::string LayoutState::title() const {
   std::string t = file_path_
                       ? file_path_->filename().string()
                       : (layout().name.empty() ? std::string("untitled layout") : layout().name + " (not saved)");
@@ -60,7 +60,7 @@ std::string error_text(const std::exception& e) {
 }
 }  // namespace
 
-std::string LayoutTabState::open_file(const std::filesystem::path& path) {
+std::string LayoutState::open_file(const std::filesystem::path& path) {
   try {
     const Layout l = load_layout(path);
     if (ActionResult r = replace_layout(document_, l, "Open " + path.filename().string()); !r) return r.error;
@@ -76,7 +76,7 @@ std::string LayoutTabState::open_file(const std::filesystem::path& path) {
   }
 }
 
-std::string LayoutTabState::save_to(const std::filesystem::path& path) {
+std::string LayoutState::save_to(const std::filesystem::path& path) {
   try {
     document_.rollback();  // never save a half-finished drag
     save_layout(document_.head().layout, path);
@@ -91,7 +91,7 @@ std::string LayoutTabState::save_to(const std::filesystem::path& path) {
   }
 }
 
-std::string LayoutTabState::load_preset(const std::string& name) {
+std::string LayoutState::load_preset(const std::string& name) {
   try {
     const Layout l = load_layout_or_preset(name);
     if (ActionResult r = replace_layout(document_, l, "Load preset " + name); !r) return r.error;
@@ -107,36 +107,36 @@ std::string LayoutTabState::load_preset(const std::string& name) {
   }
 }
 
-void LayoutTabState::new_layout() {
+void LayoutState::new_layout() {
   replace_layout(document_, default_new_layout(), "New layout");
   file_path_.reset();
   prune_selection();
 }
 
-void LayoutTabState::select(int device) {
-  selected = (device >= 0 && device < doc().device_count()) ? device : -1;
+void LayoutState::select(int device) {
+  selected_ = (device >= 0 && device < doc().device_count()) ? device : -1;
 }
 
-void LayoutTabState::prune_selection() {
-  if (selected >= doc().device_count()) selected = doc().device_count() - 1;
-  if (hovered >= doc().device_count()) hovered = -1;
+void LayoutState::prune_selection() {
+  if (selected_ >= doc().device_count()) selected_ = doc().device_count() - 1;
+  if (hovered_ >= doc().device_count()) hovered_ = -1;
 }
 
-const HandFrame* LayoutTabState::current_hand() const {
+const HandFrame* LayoutState::current_hand() const {
   const PoseSetPtr p = poses.current();
   if (!p || p->size() == 0) return nullptr;
   const int j = std::clamp(timeline.frame, 0, p->size() - 1);
   return &p->set.frames[static_cast<size_t>(j)];
 }
 
-ColourRange LayoutTabState::heatmap_range() const {
+ColourRange LayoutState::heatmap_range() const {
   if (display.heatmap_fixed_range) return {0.0, 1.0};
-  const HeatmapGridPtr g = heatmap.latest();
+  const HeatmapGridPtr g = heatmap_.latest();
   if (!g || g->data_max <= g->data_min) return {0.0, 1.0};
   return {g->data_min, g->data_max};
 }
 
-void LayoutTabState::refresh_timeline_frames() {
+void LayoutState::refresh_timeline_frames() {
   const PoseSetPtr p = poses.current();
   const std::uint64_t v = p ? p->version : 0;
   if (v == timeline_version_ && timeline_filters_[0] == timeline.orientation_filter &&
@@ -160,13 +160,13 @@ void LayoutTabState::refresh_timeline_frames() {
   }
 }
 
-void LayoutTabState::update(double dt_seconds, bool on_screen) {
+void LayoutState::update(double dt_seconds, bool on_screen) {
   poses.request(doc().pose_set);
   poses.poll();
   report_recorded_pose_set();
-  coverage.poll();
-  heatmap.poll();
-  optimiser.poll();
+  coverage_.poll();
+  heatmap_.poll();
+  optimiser_.poll();
   report_optimiser_end();
   prune_selection();
   refresh_timeline_frames();
@@ -190,54 +190,54 @@ void LayoutTabState::update(double dt_seconds, bool on_screen) {
 
   const PoseSetPtr p = poses.current();
   if (p) {
-    coverage.request(layout(), p);
+    coverage_.request(layout(), p);
     const int j = std::clamp(timeline.frame, 0, std::max(0, p->size() - 1));
     if (p->size() > 0) {
       frame_visibility_ =
-          explain_frame(layout(), p->prepared[static_cast<size_t>(j)], display.show_rays ? selected : -1);
+          explain_frame(layout(), p->prepared[static_cast<size_t>(j)], display.show_rays ? selected_ : -1);
     }
-    if (display.show_heatmap && selected >= 0) {
+    if (display.show_heatmap && selected_ >= 0) {
       HeatmapRequest req;
       req.layout = layout();
-      req.device = selected;
+      req.device = selected_;
       req.finger = display.heatmap_finger;
       req.mode = display.heatmap_mode;
       req.cells = display.heatmap_cells;
       req.half_extent_mm = display.heatmap_half_extent_mm;
       req.poses = p;
       if (on_screen) {
-        heatmap.request(req);
+        heatmap_.request(req);
       } else {
-        heatmap.pause();
+        heatmap_.pause();
       }
     } else {
-      heatmap.clear();
+      heatmap_.clear();
     }
   } else {
     frame_visibility_ = {};
   }
 }
 
-bool LayoutTabState::start_optimiser() {
+bool LayoutState::start_optimiser() {
   document_.rollback();
-  if (!optimiser.start(document_.head(), poses.current(), pso, optimiser_starts)) {
-    set_status("Cannot start the optimiser: " + optimiser.error(), true);
+  if (!optimiser_.start(document_.head(), poses.current(), pso_, optimiser_starts_)) {
+    set_status("Cannot start the optimiser: " + optimiser_.error(), true);
     return false;
   }
   set_status("Optimiser started");
   return true;
 }
 
-void LayoutTabState::report_optimiser_end() {
-  const JobState now = optimiser.state();
+void LayoutState::report_optimiser_end() {
+  const JobState now = optimiser_.state();
   if (now == last_optimiser_state_) return;
   last_optimiser_state_ = now;
   if (!job_finished(now)) return;
   if (now == JobState::kFailed) {
-    set_status("Optimiser failed: " + optimiser.error(), true);
+    set_status("Optimiser failed: " + optimiser_.error(), true);
     return;
   }
-  const auto outcome = optimiser.outcome();
+  const auto outcome = optimiser_.outcome();
   if (!outcome) {
     set_status(now == JobState::kCancelled ? "Optimiser cancelled before its first iteration" : "Optimiser finished");
     return;
@@ -254,22 +254,26 @@ void LayoutTabState::report_optimiser_end() {
   set_status(buf);
 }
 
-bool LayoutTabState::apply_optimised() {
-  const auto outcome = optimiser.outcome();
+bool LayoutState::apply_optimised() {
+  const auto outcome = optimiser_.outcome();
   if (!outcome) return false;
   if (!report(apply_layout(document_, outcome->pso.best_layout), "Apply optimised layout")) return false;
-  optimiser.discard();
+  optimiser_.discard();
   set_status("Applied the optimised layout (Ctrl+Z to undo)");
   return true;
 }
 
-bool LayoutTabState::busy() const {
-  return poses.loading() || !poses.current() || coverage.busy() || optimiser.running() ||
-         (display.show_heatmap && selected >= 0 && !heatmap.complete() && heatmap.error().empty());
+void LayoutState::start_report(const std::filesystem::path& dir) {
+  if (const PoseSetPtr p = poses.current()) report_job_.start(layout(), p, dir);
 }
 
-bool LayoutTabState::use_recorded_pose_set(std::vector<std::string> recordings, std::string source,
-                                           std::string trials_glob, int every) {
+bool LayoutState::busy() const {
+  return poses.loading() || !poses.current() || coverage_.busy() || optimiser_.running() ||
+         (display.show_heatmap && selected_ >= 0 && !heatmap_.complete() && heatmap_.error().empty());
+}
+
+bool LayoutState::use_recorded_pose_set(std::vector<std::string> recordings, std::string source,
+                                        std::string trials_glob, int every) {
   PoseSetChoice choice = doc().pose_set;
   choice.source = PoseSetChoice::Source::kRecordings;
   choice.recordings = std::move(recordings);
@@ -279,7 +283,7 @@ bool LayoutTabState::use_recorded_pose_set(std::vector<std::string> recordings, 
   return report(set_pose_set_choice(document_, choice), "Pose set");
 }
 
-void LayoutTabState::report_recorded_pose_set() {
+void LayoutState::report_recorded_pose_set() {
   const PoseSetPtr p = poses.current();
   if (!p || p->version == reported_pose_set_version_) return;
   reported_pose_set_version_ = p->version;
@@ -289,7 +293,7 @@ void LayoutTabState::report_recorded_pose_set() {
              false);
 }
 
-void LayoutTabState::cancel_pose_set_load() {
+void LayoutState::cancel_pose_set_load() {
   if (!poses.loading()) return;
   poses.cancel();
   if (const PoseSetPtr p = poses.current()) report(set_pose_set_choice(document_, p->choice), "Pose set");

@@ -16,7 +16,7 @@
 #include "core/session/session_folder.h"
 #include "core/session/trial_files.h"
 #include "tests/support/scratch_dir.h"
-#include "ui/model/record/record_session_model.h"
+#include "ui/model/record/record_state.h"
 #include "ui/model/record/subject_view.h"
 
 namespace lmc::ui {
@@ -40,7 +40,7 @@ NewSessionSpec quick(const std::string& subject = "S01") {
 }
 
 // Polls until `done` or the deadline; returns the status lines poll() gave.
-std::vector<std::string> poll_until(RecordSessionModel& m, const std::function<bool()>& done, double timeout_s = 60) {
+std::vector<std::string> poll_until(RecordState& m, const std::function<bool()>& done, double timeout_s = 60) {
   std::vector<std::string> lines;
   const auto deadline = std::chrono::steady_clock::now() + std::chrono::duration<double>(timeout_s);
   while (std::chrono::steady_clock::now() < deadline) {
@@ -51,7 +51,7 @@ std::vector<std::string> poll_until(RecordSessionModel& m, const std::function<b
   return lines;
 }
 
-void clear_preflight(RecordSessionModel& m) {
+void clear_preflight(RecordState& m) {
   ASSERT_TRUE(m.needs_preflight());
   ASSERT_EQ(m.start_preflight(), "");
   poll_until(m, [&] { return !m.busy() && m.last_preflight().has_value(); });
@@ -60,7 +60,7 @@ void clear_preflight(RecordSessionModel& m) {
   EXPECT_FALSE(m.needs_preflight());
 }
 
-void record_current(RecordSessionModel& m) {
+void record_current(RecordState& m) {
   const int before = m.last_attempt() ? m.last_attempt()->attempt + 1000 * m.last_attempt()->trial : -1;
   ASSERT_EQ(m.start_trial(), "");
   EXPECT_TRUE(m.busy());
@@ -70,9 +70,9 @@ void record_current(RecordSessionModel& m) {
   ASSERT_FALSE(m.busy());
 }
 
-TEST(RecordSessionModel, AQuickSessionRecordsBothTrialsAndAcceptsPassOrWarn) {
+TEST(RecordState, AQuickSessionRecordsBothTrialsAndAcceptsPassOrWarn) {
   const fs::path dir = test::fresh_test_dir("record_model");
-  RecordSessionModel m;
+  RecordState m;
   ASSERT_EQ(m.create(dir, quick(), fast_sim()), "");
   ASSERT_EQ(m.state().trials.size(), 2U);
   EXPECT_EQ(m.current_trial(), 0);
@@ -96,9 +96,9 @@ TEST(RecordSessionModel, AQuickSessionRecordsBothTrialsAndAcceptsPassOrWarn) {
   fs::remove_all(dir);
 }
 
-TEST(RecordSessionModel, RedoKeepsTheEarlierAttemptAndRecordsTheTrialAgain) {
+TEST(RecordState, RedoKeepsTheEarlierAttemptAndRecordsTheTrialAgain) {
   const fs::path dir = test::fresh_test_dir("record_model");
-  RecordSessionModel m;
+  RecordState m;
   ASSERT_EQ(m.create(dir, quick(), fast_sim()), "");
   clear_preflight(m);
   record_current(m);
@@ -116,9 +116,9 @@ TEST(RecordSessionModel, RedoKeepsTheEarlierAttemptAndRecordsTheTrialAgain) {
   fs::remove_all(dir);
 }
 
-TEST(RecordSessionModel, RedoTakesTheRecordedTrialPickedInTheListBeforeTheLastOne) {
+TEST(RecordState, RedoTakesTheRecordedTrialPickedInTheListBeforeTheLastOne) {
   const fs::path dir = test::fresh_test_dir("record_model");
-  RecordSessionModel m;
+  RecordState m;
   ASSERT_EQ(m.create(dir, quick(), fast_sim()), "");
   clear_preflight(m);
   record_current(m);
@@ -134,9 +134,9 @@ TEST(RecordSessionModel, RedoTakesTheRecordedTrialPickedInTheListBeforeTheLastOn
   fs::remove_all(dir);
 }
 
-TEST(RecordSessionModel, StopInterruptsTheTrialKeepsItsRowsAndWaitsForTheOperator) {
+TEST(RecordState, StopInterruptsTheTrialKeepsItsRowsAndWaitsForTheOperator) {
   const fs::path dir = test::fresh_test_dir("record_model");
-  RecordSessionModel m;
+  RecordState m;
   RecordSettings real_time = fast_sim();
   real_time.fast = false;  // a 3 s trial in real time, stopped after its first frames
   ASSERT_EQ(m.create(dir, quick(), real_time), "");
@@ -168,12 +168,12 @@ TEST(RecordSessionModel, StopInterruptsTheTrialKeepsItsRowsAndWaitsForTheOperato
 // The worker shares ownership of the folder, runner and live fusion it records through: a model
 // taken down while a trial records (the workbench closing mid-trial) ends the trial on the
 // worker, keeps its rows, and leaves a folder that opens again with the trial cut off and waiting.
-TEST(RecordSessionModel, TakenDownMidTrialTheFolderOpensAgainWithTheTrialWaiting) {
+TEST(RecordState, TakenDownMidTrialTheFolderOpensAgainWithTheTrialWaiting) {
   const fs::path dir = test::fresh_test_dir("record_model_teardown");
   RecordSettings real_time = fast_sim();
   real_time.fast = false;
   {
-    auto m = std::make_unique<RecordSessionModel>();
+    auto m = std::make_unique<RecordState>();
     ASSERT_EQ(m->create(dir, quick(), real_time), "");
     clear_preflight(*m);
     ASSERT_EQ(m->start_trial(), "");
@@ -182,7 +182,7 @@ TEST(RecordSessionModel, TakenDownMidTrialTheFolderOpensAgainWithTheTrialWaiting
     ASSERT_TRUE(m->recording());
   }  // destroyed while the worker records
   EXPECT_TRUE(fs::file_size(dir / "LMC_Naiv_Static101.raw.txt") > 1000) << "the rows recorded so far are kept";
-  RecordSessionModel again;
+  RecordState again;
   ASSERT_EQ(again.open(dir, fast_sim()), "") << "the folder's lock went with the model";
   ASSERT_FALSE(again.state().trials.empty());
   EXPECT_NE(again.state().trials[0].status, TrialStatus::kAccepted);
@@ -192,11 +192,11 @@ TEST(RecordSessionModel, TakenDownMidTrialTheFolderOpensAgainWithTheTrialWaiting
   fs::remove_all(dir);
 }
 
-TEST(RecordSessionModel, OpeningAnotherProcesssSessionOrABadFolderSaysWhy) {
+TEST(RecordState, OpeningAnotherProcesssSessionOrABadFolderSaysWhy) {
   const fs::path dir = test::fresh_test_dir("record_model");
-  RecordSessionModel a;
+  RecordState a;
   ASSERT_EQ(a.create(dir, quick(), fast_sim()), "");
-  RecordSessionModel b;
+  RecordState b;
   const std::string locked = b.open(dir, fast_sim());
   EXPECT_NE(locked, "");  // the folder's lock is held by `a`
   EXPECT_FALSE(b.has_session());
@@ -210,7 +210,7 @@ TEST(RecordSessionModel, OpeningAnotherProcesssSessionOrABadFolderSaysWhy) {
   EXPECT_NE(missing.find((dir / "nothing-here").string()), std::string::npos) << missing;
   EXPECT_EQ(missing.find("lmc session new"), std::string::npos) << "it exists nowhere: creating is not the fix";
   fs::remove_all(empty_dir);
-  RecordSessionModel c;
+  RecordState c;
   EXPECT_NE(c.create(test::fresh_test_dir("record_model_bad"), quick("../escape"), fast_sim()).find("subject id"),
             std::string::npos);
   a.close();
@@ -223,9 +223,9 @@ TEST(RecordSessionModel, OpeningAnotherProcesssSessionOrABadFolderSaysWhy) {
 // A Space pressed while the pre-flight runs (the Record tab asks for another pre-flight) is
 // answered with what is running and when Start comes, not a generic refusal; while a trial
 // records, the answer says how to stop it.
-TEST(RecordSessionModel, AnActionWhileBusySaysWhatRunsAndWhenToActAgain) {
+TEST(RecordState, AnActionWhileBusySaysWhatRunsAndWhenToActAgain) {
   const fs::path dir = test::fresh_test_dir("record_model");
-  RecordSessionModel m;
+  RecordState m;
   RecordSettings real_time = fast_sim();
   real_time.fast = false;  // a 3 s trial in real time: still recording when asked
   ASSERT_EQ(m.create(dir, quick(), real_time), "");
@@ -248,9 +248,9 @@ TEST(RecordSessionModel, AnActionWhileBusySaysWhatRunsAndWhenToActAgain) {
   fs::remove_all(dir);
 }
 
-TEST(RecordSessionModel, OverrideNeedsAReasonAndIsJournaled) {
+TEST(RecordState, OverrideNeedsAReasonAndIsJournaled) {
   const fs::path dir = test::fresh_test_dir("record_model");
-  RecordSessionModel m;
+  RecordState m;
   ASSERT_EQ(m.create(dir, quick(), fast_sim()), "");
   EXPECT_NE(m.override_preflight("  "), "");
   EXPECT_TRUE(m.needs_preflight());
@@ -261,14 +261,14 @@ TEST(RecordSessionModel, OverrideNeedsAReasonAndIsJournaled) {
   fs::remove_all(dir);
 }
 
-TEST(RecordSessionModel, ACalibratingProtocolCalibratesTheBlockBeforeItsFirstTrial) {
+TEST(RecordState, ACalibratingProtocolCalibratesTheBlockBeforeItsFirstTrial) {
   const fs::path dir = test::fresh_test_dir("record_model_calibration");
   NewSessionSpec spec = quick("S09");
   spec.protocol = "study-calibrated";  // 5 s still hand before each block
   spec.duration_override_s = 1.0;
   RecordSettings settings = fast_sim();
   settings.sim.calibration_random_translation_mm = 20;
-  RecordSessionModel m;
+  RecordState m;
   ASSERT_EQ(m.create(dir, spec, settings), "");
   EXPECT_FALSE(m.needs_calibration()) << "the pre-flight comes first";
   clear_preflight(m);
@@ -291,9 +291,9 @@ TEST(RecordSessionModel, ACalibratingProtocolCalibratesTheBlockBeforeItsFirstTri
   EXPECT_EQ(m.last_attempt()->outcome, "completed");
 }
 
-TEST(RecordSessionModel, CloseAfterRecordingThenReopenAndCloseAgain) {
+TEST(RecordState, CloseAfterRecordingThenReopenAndCloseAgain) {
   const fs::path dir = test::fresh_test_dir("record_model_close");
-  RecordSessionModel m;
+  RecordState m;
   ASSERT_EQ(m.create(dir, quick(), fast_sim()), "");
   clear_preflight(m);
   record_current(m);
@@ -330,9 +330,9 @@ TEST(RecordSessionModel, CloseAfterRecordingThenReopenAndCloseAgain) {
   fs::remove_all(dir);
 }
 
-TEST(RecordSessionModel, ARealTimeTrialShowsTheCircleForItsWholeLengthFromGo) {
+TEST(RecordState, ARealTimeTrialShowsTheCircleForItsWholeLengthFromGo) {
   const fs::path dir = test::fresh_test_dir("record_model_go");
-  RecordSessionModel m;
+  RecordState m;
   RecordSettings settings;
   settings.backend = "sim";
   settings.fast = false;  // real time: the countdown is the subject's

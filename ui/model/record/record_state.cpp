@@ -1,4 +1,4 @@
-#include "ui/model/record/record_session_model.h"
+#include "ui/model/record/record_state.h"
 
 #include <utility>
 
@@ -14,13 +14,13 @@ constexpr const char* kAbortedByOperator = "aborted by the operator";
 
 }  // namespace
 
-RecordSessionModel::RecordSessionModel(LiveRig* rig) : rig_(rig) {}
+RecordState::RecordState(LiveRig* rig) : rig_(rig) {}
 
-RecordSessionModel::~RecordSessionModel() {
+RecordState::~RecordState() {
   close();
 }
 
-std::string RecordSessionModel::adopt(SessionFolder folder, const RecordSettings& settings, bool resumed) {
+std::string RecordState::adopt(SessionFolder folder, const RecordSettings& settings, bool resumed) {
   folder_ = std::make_shared<SessionFolder>(std::move(folder));
   try {
     devices::SessionRunOptions options;
@@ -53,8 +53,8 @@ std::string RecordSessionModel::adopt(SessionFolder folder, const RecordSettings
   return {};
 }
 
-std::string RecordSessionModel::create(const std::filesystem::path& dir, const NewSessionSpec& spec,
-                                       const RecordSettings& settings) {
+std::string RecordState::create(const std::filesystem::path& dir, const NewSessionSpec& spec,
+                                const RecordSettings& settings) {
   if (busy()) return busy_reason();
   close();
   try {
@@ -64,7 +64,7 @@ std::string RecordSessionModel::create(const std::filesystem::path& dir, const N
   }
 }
 
-std::string RecordSessionModel::open(const std::filesystem::path& dir, const RecordSettings& settings) {
+std::string RecordState::open(const std::filesystem::path& dir, const RecordSettings& settings) {
   if (busy()) return busy_reason();
   close();
   try {
@@ -74,12 +74,12 @@ std::string RecordSessionModel::open(const std::filesystem::path& dir, const Rec
   }
 }
 
-void RecordSessionModel::give_back_rig() {
+void RecordState::give_back_rig() {
   if (rig_borrowed_ && rig_ != nullptr) rig_->give_back();
   rig_borrowed_ = false;
 }
 
-void RecordSessionModel::close() {
+void RecordState::close() {
   // The worker uses the runner, the folder, the live fusion and a lent hub: it ends first.
   job_.cancel_and_join();
   // A note typed while the last trial recorded still reaches the journal.
@@ -109,38 +109,38 @@ void RecordSessionModel::close() {
   last_note_error_.clear();
 }
 
-void RecordSessionModel::refresh_state() {
+void RecordState::refresh_state() {
   if (folder_) state_ = folder_->state();
 }
 
-int RecordSessionModel::current_trial() const {
+int RecordState::current_trial() const {
   if (!has_session()) return -1;
   if (selected_ >= 0 && selected_ < static_cast<int>(state_.trials.size())) return selected_;
   return state_.next_trial();
 }
 
-void RecordSessionModel::select(int i) {
+void RecordState::select(int i) {
   selected_ = (has_session() && i >= 0 && i < static_cast<int>(state_.trials.size())) ? i : -1;
 }
 
-const TrialType& RecordSessionModel::trial_type(int i) const {
+const TrialType& RecordState::trial_type(int i) const {
   const auto& plan = state_.trials.at(static_cast<size_t>(i)).plan;
   return state_.protocol.trial_types.at(static_cast<size_t>(plan.trial_type));
 }
 
-std::string RecordSessionModel::block_instructions() const {
+std::string RecordState::block_instructions() const {
   const int i = current_trial();
   if (!runner_ || i < 0) return {};
   return runner_->block_instructions(i);
 }
 
-bool RecordSessionModel::needs_preflight() const {
+bool RecordState::needs_preflight() const {
   const int i = current_trial();
   // runner_ is read, not changed; while the worker runs the answer is not needed.
   return runner_ && i >= 0 && !busy() && runner_->needs_preflight(i);
 }
 
-std::string RecordSessionModel::busy_reason() const {
+std::string RecordState::busy_reason() const {
   if (recording()) return "a trial is recording; stop it first (Space, or Esc to abort)";
   if (calibrating()) return "the block's calibration is recording; wait for it to finish";
   // A Space pressed while the controllers, Vicon and disk are checked lands here: it is not lost
@@ -149,7 +149,7 @@ std::string RecordSessionModel::busy_reason() const {
   return "the worker is busy";
 }
 
-std::string RecordSessionModel::start_preflight() {
+std::string RecordState::start_preflight() {
   if (!has_session()) return "open or create a session first";
   if (busy()) return busy_reason();
   const int i = current_trial();
@@ -164,7 +164,7 @@ std::string RecordSessionModel::start_preflight() {
   return {};
 }
 
-std::string RecordSessionModel::override_preflight(const std::string& reason) {
+std::string RecordState::override_preflight(const std::string& reason) {
   if (busy()) return busy_reason();
   if (reason.find_first_not_of(" \t") == std::string::npos) return "type the reason for going ahead; it is journaled";
   const int i = current_trial();
@@ -178,7 +178,7 @@ std::string RecordSessionModel::override_preflight(const std::string& reason) {
   return {};
 }
 
-std::string RecordSessionModel::start_trial() {
+std::string RecordState::start_trial() {
   if (!has_session()) return "open or create a session first";
   if (busy()) return busy_reason();
   const int i = current_trial();
@@ -213,13 +213,13 @@ std::string RecordSessionModel::start_trial() {
   return {};
 }
 
-bool RecordSessionModel::needs_calibration() const {
+bool RecordState::needs_calibration() const {
   if (!has_session() || busy()) return false;
   const int i = current_trial();
   return i >= 0 && !runner_->needs_preflight(i) && runner_->needs_calibration(i);
 }
 
-std::string RecordSessionModel::start_calibration() {
+std::string RecordState::start_calibration() {
   if (!has_session()) return "open or create a session first";
   if (busy()) return busy_reason();
   const int i = current_trial();
@@ -241,7 +241,7 @@ std::string RecordSessionModel::start_calibration() {
   return {};
 }
 
-std::string RecordSessionModel::apply_calibration() {
+std::string RecordState::apply_calibration() {
   if (busy()) return busy_reason();
   if (!pending_calibration_) return "no calibration to apply";
   if (!pending_calibration_->ok()) return "the calibration failed: " + pending_calibration_->failure;
@@ -255,7 +255,7 @@ std::string RecordSessionModel::apply_calibration() {
   return {};
 }
 
-std::string RecordSessionModel::keep_nominal_layout(const std::string& reason) {
+std::string RecordState::keep_nominal_layout(const std::string& reason) {
   if (busy()) return busy_reason();
   const int i = current_trial();
   if (i < 0) return "every trial is accepted";
@@ -271,25 +271,25 @@ std::string RecordSessionModel::keep_nominal_layout(const std::string& reason) {
   return {};
 }
 
-void RecordSessionModel::stop_trial() {
+void RecordState::stop_trial() {
   if (recording() || calibrating()) job_.cancel();
 }
 
-std::string RecordSessionModel::abort_trial() {
+std::string RecordState::abort_trial() {
   if (!recording()) return "no trial is recording";
   abort_requested_->store(true);
   job_.cancel();
   return {};
 }
 
-int RecordSessionModel::note_trial() const {
+int RecordState::note_trial() const {
   if (!has_session()) return -1;
   if (recording()) return recording_trial_;
   if (last_attempt_) return last_attempt_->trial;
   return current_trial();
 }
 
-std::string RecordSessionModel::add_note(const std::string& text) {
+std::string RecordState::add_note(const std::string& text) {
   if (!has_session()) return "open or create a session first";
   const auto first = text.find_first_not_of(" \t");
   if (first == std::string::npos) return "the note is empty";
@@ -305,7 +305,7 @@ std::string RecordSessionModel::add_note(const std::string& text) {
   return std::exchange(last_note_error_, {});
 }
 
-void RecordSessionModel::write_pending_notes() {
+void RecordState::write_pending_notes() {
   for (const auto& [i, line] : pending_notes_) {
     try {
       runner_->note(i, line);
@@ -329,7 +329,7 @@ std::string attempt_failure(const devices::AttemptResult& a) {
 
 }  // namespace
 
-std::string RecordSessionModel::accept_last() {
+std::string RecordState::accept_last() {
   accept_question_.clear();
   if (busy()) return busy_reason();
   if (!last_attempt_) return "no trial recorded in this run yet";
@@ -349,7 +349,7 @@ std::string RecordSessionModel::accept_last() {
   return {};
 }
 
-std::string RecordSessionModel::ask_accept() {
+std::string RecordState::ask_accept() {
   accept_question_.clear();
   if (busy()) return busy_reason();
   if (!last_attempt_) return "no trial recorded in this run yet";
@@ -361,7 +361,7 @@ std::string RecordSessionModel::ask_accept() {
   return {};
 }
 
-std::string RecordSessionModel::answer_accept(bool keep) {
+std::string RecordState::answer_accept(bool keep) {
   if (accept_question_.empty()) return "no question is open";
   if (!keep) {
     accept_question_.clear();
@@ -370,7 +370,7 @@ std::string RecordSessionModel::answer_accept(bool keep) {
   return accept_last();
 }
 
-std::string RecordSessionModel::redo(int i) {
+std::string RecordState::redo(int i) {
   if (busy()) return busy_reason();
   if (!has_session()) return "no session";
   if (i < 0) {
@@ -400,13 +400,13 @@ std::string RecordSessionModel::redo(int i) {
   return {};
 }
 
-const Layout* RecordSessionModel::current_layout() const {
+const Layout* RecordState::current_layout() const {
   const int i = recording() ? recording_trial_ : current_trial();
   if (!runner_ || i < 0) return nullptr;
   return &runner_->layout(i);
 }
 
-StatusReport RecordSessionModel::poll() {
+StatusReport RecordState::poll() {
   bool fresh = false;
   for (auto& s : job_.drain_reports()) {
     live_ = std::move(s);
