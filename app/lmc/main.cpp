@@ -2,9 +2,11 @@
 #include <algorithm>
 #include <csignal>
 #include <iostream>
+#include <string>
 
 #include "app/lmc/command.h"
 #include "core/common/error.h"
+#include "core/platform/command_line.h"
 
 namespace lmc::cli {
 
@@ -21,6 +23,10 @@ int& command_exit_code() {
 }  // namespace lmc::cli
 
 int main(int argc, char** argv) {
+  if (const std::string problem = lmc::platform::arguments_changed_by_code_page(); !problem.empty()) {
+    std::cerr << "lmc: error: " << problem << "\n";
+    return 2;
+  }
 #ifdef SIGXFSZ
   // A file-size limit (ulimit -f) must not kill the program in the middle of a trial: ignored,
   // the write fails with EFBIG and the recorder stops the trial with a clear message instead.
@@ -31,6 +37,9 @@ int main(int argc, char** argv) {
       "Every command prints its own help: lmc <command> --help"};
   app.set_version_flag("--version", std::string("lmc ") + LMC_VERSION);
   app.require_subcommand(1);
+  // CLI11 on Windows would also take /name for an option, so a path such as /data/S01 would be read
+  // as one; options are --name on every system. Set before the commands: they inherit it.
+  app.allow_windows_style_options(false);
 
   auto& registry = lmc::cli::command_registry();
   std::sort(registry.begin(), registry.end(), [](const auto& a, const auto& b) { return a.order < b.order; });

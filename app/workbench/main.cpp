@@ -6,6 +6,7 @@
 #include <iostream>
 #include <utility>
 
+#include "core/platform/command_line.h"
 #include "core/visibility/visibility_kernel.h"
 #include "devices/leapc/leapc_library.h"
 #include "ui/app/capture.h"
@@ -13,6 +14,10 @@
 #include "ui/platform/gl_window.h"
 
 int main(int argc, char** argv) {
+  if (const std::string problem = lmc::platform::arguments_changed_by_code_page(); !problem.empty()) {
+    std::cerr << "lmc-workbench: " << problem << "\n";
+    return 2;
+  }
 #ifdef SIGXFSZ
   // A file-size limit (ulimit -f) must not kill the workbench while it records: ignored, the
   // write fails with EFBIG and the recorder stops the trial with a clear message instead.
@@ -20,6 +25,7 @@ int main(int argc, char** argv) {
 #endif
   CLI::App app{"LMC Workbench — design controller layouts, record trials and review results."};
   app.set_version_flag("--version", std::string("lmc-workbench ") + LMC_VERSION);
+  app.allow_windows_style_options(false);  // as in lmc: a /path is a path, not an option
   std::string capture_dir;
   std::vector<std::string> capture_tabs;
   int width = 1280, height = 800;

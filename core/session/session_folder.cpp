@@ -292,7 +292,8 @@ void SessionFolder::redo(int i) {
   const auto& t = state_.trials[static_cast<size_t>(i)];
   if (t.status == TrialStatus::kRecording) throw Error("trial " + t.plan.name + " is recording; stop it first");
   if (!t.attempts.back().superseded_dir.empty()) return;  // already moved aside
-  const std::string rel = (fs::path("superseded") / attempt_dir_name(t.plan.name, a)).string();
+  // With '/' on every system: the journal names it, and a session folder moves between systems.
+  const std::string rel = (fs::path("superseded") / attempt_dir_name(t.plan.name, a)).generic_string();
   const fs::path target = dir_ / rel;
   std::error_code ec;
   fs::create_directories(target, ec);

@@ -173,11 +173,17 @@ std::string leapc_library_path() {
 std::vector<LeapcPlace> leapc_known_places() {
   const std::string root = env("LMC_LEAPC_SEARCH_ROOT");
   std::vector<LeapcPlace> places;
-  auto add = [&](const std::string& path, const std::string& what) { places.push_back({root + path, what}); };
 #if defined(_WIN32)
-  add("C:/Program Files/Ultraleap/LeapSDK/lib/x64/LeapC.dll", "Ultraleap SDK (Windows installer)");
-  add("C:/Program Files/Ultraleap/TrackingService/bin/LeapC.dll", "Ultraleap tracking service folder (Windows)");
+  // Where Windows keeps programs (%ProgramFiles%, on C: unless moved); under a search root (the
+  // tests') the root stands in for the drive.
+  std::string program_files = env("ProgramFiles");
+  if (program_files.empty()) program_files = "C:/Program Files";
+  if (!root.empty()) program_files = root + "/Program Files";
+  auto add = [&](const std::string& path, const std::string& what) { places.push_back({program_files + path, what}); };
+  add("/Ultraleap/LeapSDK/lib/x64/LeapC.dll", "Ultraleap SDK (Windows installer)");
+  add("/Ultraleap/TrackingService/bin/LeapC.dll", "Ultraleap tracking service folder (Windows)");
 #else
+  auto add = [&](const std::string& path, const std::string& what) { places.push_back({root + path, what}); };
   // Hyperion (6) first: where both are installed, the current service is the one running.
   add("/usr/lib/x86_64-linux-gnu/libLeapC.so.6", "Hyperion 6 package");
   add("/usr/lib/ultraleap-hand-tracking-service/libLeapC.so.6", "Hyperion 6 package (service folder)");

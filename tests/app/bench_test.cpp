@@ -96,13 +96,13 @@ TEST(LmcBench, SearchesPicksTheTimedSearches) {
 TEST(LmcBench, LmcKernelPicksTheBuildAndABadValueIsSaid) {
   const auto dir = lmc::test::scratch_dir("cli_bench_kernel");
   const std::string args = "bench --frames 20 --min-seconds 0.01 --no-search --json";
-  const CliRun base = run_lmc(args, dir / "baseline", "export LMC_KERNEL=baseline &&");
+  const CliRun base = run_lmc(args, dir / "baseline", lmc::test::env_prefix("LMC_KERNEL", "baseline"));
   ASSERT_EQ(base.exit_code, 0) << base.err;
   EXPECT_EQ(nlohmann::json::parse(base.out)["kernel_build"], "baseline");
-  const CliRun avx2 = run_lmc(args, dir / "avx2", "export LMC_KERNEL=avx2 &&");
+  const CliRun avx2 = run_lmc(args, dir / "avx2", lmc::test::env_prefix("LMC_KERNEL", "avx2"));
   ASSERT_EQ(avx2.exit_code, 0) << avx2.err;
   EXPECT_EQ(nlohmann::json::parse(avx2.out)["kernel_build"], lmc::kernel_build_name(lmc::KernelBuild::kAvx2));
-  const CliRun bad = run_lmc(args, dir / "bad", "export LMC_KERNEL=sse9 &&");
+  const CliRun bad = run_lmc(args, dir / "bad", lmc::test::env_prefix("LMC_KERNEL", "sse9"));
   ASSERT_EQ(bad.exit_code, 0) << bad.err;
   EXPECT_NE(bad.err.find("LMC_KERNEL=sse9 is not avx512, avx2 or baseline"), std::string::npos) << bad.err;
   EXPECT_EQ(nlohmann::json::parse(bad.out)["kernel_build"], lmc::kernel_build_name(lmc::KernelBuild::kBest));

@@ -57,10 +57,11 @@ class BidsExport : public ::testing::Test {
     root_ = new fs::path(test::scratch_dir("lmc_bids_export"));
     for (const char* subject : {"S_01", "S02"}) {
       const fs::path s = study() / subject;
-      CliRun r = run_lmc(
-          std::string("session new --subject ") + subject + " --protocol quick --seconds 1 --hand-length-mm 185 " +
-              "--hand-breadth-mm 84 --operator 'Operator Olga' --notes 'private remark' -o " + shell_quote(s.string()),
-          *root_ / "l");
+      CliRun r = run_lmc(std::string("session new --subject ") + subject +
+                             " --protocol quick --seconds 1 --hand-length-mm 185 " +
+                             "--hand-breadth-mm 84 --operator " + shell_quote("Operator Olga") + " --notes " +
+                             shell_quote("private remark") + " -o " + shell_quote(s.string()),
+                         *root_ / "l");
       ASSERT_EQ(r.exit_code, 0) << r.all();
       r = run_lmc("session run " + shell_quote(s.string()) + " --backend sim --fast --auto --quiet --seed 3",
                   *root_ / "l");

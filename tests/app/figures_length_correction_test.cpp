@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <nlohmann/json.hpp>
 #include <string>
 
 #include "tests/support/cli_runner.h"
@@ -29,7 +30,7 @@ TEST(LmcFigures, AppliesAFoldersLengthCorrectionAsTheReviewTabDoes) {
                      dir / "l");
   ASSERT_EQ(r.exit_code, 0) << r.all();
 
-  const std::string cache = "LMC_CACHE_DIR=" + shell_quote((dir / "cache").string());
+  const std::string cache = test::env_prefix("LMC_CACHE_DIR", (dir / "cache").string());
   const std::string base = "figures " + shell_quote(s01.string()) + " -o ";
   r = run_lmc(base + shell_quote((dir / "plain").string()), dir / "l", cache);
   ASSERT_EQ(r.exit_code, 0) << r.all();
@@ -45,7 +46,8 @@ TEST(LmcFigures, AppliesAFoldersLengthCorrectionAsTheReviewTabDoes) {
   EXPECT_EQ(text("plain", "study-joint-angles.csv"), text("corrected", "study-joint-angles.csv"));
   const std::string sidecar = text("corrected", "visibility-map.json");
   EXPECT_NE(sidecar.find("\"length_correction_files\""), std::string::npos) << sidecar;
-  EXPECT_NE(sidecar.find(lengths.string()), std::string::npos) << sidecar;
+  // As JSON writes it (a Windows path's backslashes doubled).
+  EXPECT_NE(sidecar.find(nlohmann::json(lengths.string()).dump()), std::string::npos) << sidecar;
   EXPECT_EQ(text("plain", "visibility-map.json").find("length_correction_files"), std::string::npos);
 
   r = run_lmc(base + shell_quote((dir / "x").string()) + " --length-correction " +

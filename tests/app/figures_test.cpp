@@ -22,7 +22,7 @@ TEST(LmcFigures, WritesTheAgreementFiguresAndTablesAndReusesTheCache) {
   const fs::path dir = test::scratch_dir("lmc_figures");
   ASSERT_EQ(test::record_quick_session(dir / "S01", dir / "l" / "S01", "S01", 1), "");
   ASSERT_EQ(test::record_quick_session(dir / "S02", dir / "l" / "S02", "S02", 2), "");
-  const std::string cache = "LMC_CACHE_DIR=" + shell_quote((dir / "cache").string());
+  const std::string cache = test::env_prefix("LMC_CACHE_DIR", (dir / "cache").string());
   const fs::path out = dir / "out";
   const std::string args = "figures " + shell_quote((dir / "S01").string()) + " " +
                            shell_quote((dir / "S02").string()) + " --trial Naiv_Index101 -o " +

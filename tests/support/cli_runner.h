@@ -11,6 +11,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <initializer_list>
 #include <sstream>
 #include <string>
 
@@ -42,6 +43,16 @@ inline std::string shell_quote(const std::string& s) {
   std::string q = "'";
   for (const char c : s) q += c == '\'' ? std::string("'\\''") : std::string(1, c);
   return q + "'";
+#endif
+}
+
+// The shell_prefix for run_lmc that sets one environment variable for that run: `export` in
+// /bin/sh, `set` in cmd.exe.
+inline std::string env_prefix(const std::string& name, const std::string& value) {
+#ifdef _WIN32
+  return "set \"" + name + "=" + value + "\" && ";
+#else
+  return "export " + name + "=" + shell_quote(value) + " &&";
 #endif
 }
 
@@ -91,6 +102,13 @@ inline CliRun run_lmc(const std::string& args, std::filesystem::path log_dir = {
 #endif
   r.out = read_text_file(log_dir / "out");
   r.err = read_text_file(log_dir / "err");
+#ifdef _WIN32
+  // The streams are text: Windows' C runtime ends their lines with CR LF; the tests compare lines.
+  for (std::string* text : {&r.out, &r.err}) {
+    size_t at = 0;
+    while ((at = text->find("\r\n", at)) != std::string::npos) text->erase(at, 1);
+  }
+#endif
   if (own_log_dir) {
     // Both streams are in `r` now; a folder of our own making is not left behind in /tmp.
     std::error_code ec;

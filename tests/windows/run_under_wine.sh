@@ -61,6 +61,25 @@ lmc_exe session run "$study\\S01" --backend sim --fast --auto --quiet --seed 5 >
 lmc_exe process "$study\\S01" --method reference -q -o "$(winepath "$e2e")\\processed" >"$logs/e2e-process.log" 2>&1
 lmc_exe export bids "$study" -o "$(winepath "$e2e")\\bids" >"$logs/e2e-export.log" 2>&1
 step "lmc.exe session new, run (study protocol, simulated), process, export bids: $((SECONDS - start)) s"
+[ -f "$study_unix/S01/session.json" ] && [ -d "$e2e/bids" ] ||
+  { echo "run_under_wine: the end-to-end session left no session.json or no dataset (logs in $logs)" >&2; status=1; }
+
+# A name the ANSI code page cannot carry (Windows-1252 has no Ł) is refused by name, and nothing is
+# written under the look-alike ("Lukasz") the code page would have made of it.
+odd_unix="$e2e/Dr Łukasz study"
+mkdir -p "$odd_unix"
+if lmc_exe session new --subject S02 --protocol quick --seconds 1 --hand-length-mm 180 --hand-breadth-mm 82 \
+  -o "$(winepath "$odd_unix")\\S02" >"$logs/e2e-refused.log" 2>&1; then
+  echo "run_under_wine: lmc.exe took a folder name its code page changes" >&2
+  status=1
+elif grep -q "would reach this program changed" "$logs/e2e-refused.log" && [ ! -e "$e2e/Dr Lukasz study" ] &&
+  [ -z "$(ls -A "$odd_unix")" ]; then
+  step "a folder name outside the code page (Łukasz) refused by name, nothing written"
+else
+  echo "run_under_wine: the refused name was not said, or something was written:" >&2
+  cat "$logs/e2e-refused.log" >&2
+  status=1
+fi
 
 # A killed lmc.exe (TerminateProcess: Wine's process is ended by SIGKILL) mid-trial, then resumed:
 # the journal and the rows written stay, the cut trial is marked interrupted and recorded again.

@@ -3,11 +3,13 @@
 // and a small memory bound makes producers wait rather than lose files.
 #include <gtest/gtest.h>
 
+#include <cerrno>
 #include <string>
 #include <thread>
 #include <vector>
 
 #include "core/io/file_committer.h"
+#include "core/platform/system_error.h"
 #include "tests/support/cli_runner.h"
 #include "tests/support/scratch_dir.h"
 
@@ -54,7 +56,13 @@ TEST(FileCommitter, ReportsAFileThatCannotBeWrittenWithItsOwnerAndPath) {
   ASSERT_EQ(failures.size(), 1u);
   EXPECT_EQ(failures[0].owner, "Naiv_Index102");
   EXPECT_NE(failures[0].message.find("lost.txt"), std::string::npos) << failures[0].message;
-  EXPECT_NE(failures[0].message.find("No such file or directory"), std::string::npos) << failures[0].message;
+  // The system's own words for a missing folder: strerror(ENOENT), or Windows' ERROR_PATH_NOT_FOUND (3).
+#ifdef _WIN32
+  const std::string missing = platform::system_error_text(3);
+#else
+  const std::string missing = platform::system_error_text(ENOENT);
+#endif
+  EXPECT_NE(failures[0].message.find(missing), std::string::npos) << failures[0].message;
   // The files around the failure are written all the same.
   EXPECT_EQ(read_text_file(dir / "fine.txt"), "kept\n");
   EXPECT_EQ(read_text_file(dir / "also_fine.txt"), "kept too\n");

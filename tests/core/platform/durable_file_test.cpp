@@ -16,6 +16,7 @@
 #include "core/platform/durable_file.h"
 #include "core/session/session_journal.h"
 #include "tests/support/scratch_dir.h"
+#include "tests/support/wine.h"
 
 namespace fs = std::filesystem;
 
@@ -84,6 +85,10 @@ TEST(DurableFile, AFileDeletedWhileOpenIsNoticed) {
   lmc::platform::DurableFile f(path, lmc::platform::OpenMode::truncate);
   ASSERT_TRUE(f.write("row\n"));
   fs::remove(path);
+  if (lmc::test::running_under_wine())
+    GTEST_SKIP() << "Wine keeps a file deleted while open in its folder until the last handle closes and reports "
+                    "no pending delete for it; Windows reports it (FILE_STANDARD_INFO.DeletePending), Linux by the "
+                    "link count";
   EXPECT_TRUE(f.deleted_while_open());
 }
 

@@ -106,7 +106,6 @@ TEST(SessionFolder, TrialLifecycleSurvivesReopening) {
   ASSERT_EQ(t.notes.size(), 1u);
   EXPECT_TRUE(g.recovered().empty());
   EXPECT_EQ(g.state().next_trial(), 1);
-  fs::remove_all(dir);
 }
 
 TEST(SessionFolder, NotesBelongToTheAttemptTheyWereTakenOnAndGoIsJournaled) {
@@ -129,7 +128,6 @@ TEST(SessionFolder, NotesBelongToTheAttemptTheyWereTakenOnAndGoIsJournaled) {
   EXPECT_EQ(t.notes.size(), 2u) << "the trial keeps every note";
   EXPECT_EQ(t.attempts[0].go_utc, "2026-11-27T10:00:03.000Z");
   EXPECT_EQ(t.attempts[1].go_utc, "2026-11-27T10:01:03.000Z");
-  fs::remove_all(dir);
 }
 
 // The manifest is assembled from each trial's kept text (manifest_text.h); after every kind of
@@ -175,7 +173,6 @@ TEST(SessionFolder, TheManifestIsTheStatesDocumentAfterEveryKindOfEvent) {
   SessionFolder g = SessionFolder::open(dir);  // reopening journals session_opened and rewrites it
   EXPECT_EQ(read_text(dir / kManifestFile), session_manifest_json(g.state()).dump(2) + "\n");
   EXPECT_EQ(checked, 12);
-  fs::remove_all(dir);
 }
 
 TEST(SessionFolder, RedoKeepsTheEarlierAttemptUnderSuperseded) {
@@ -199,7 +196,6 @@ TEST(SessionFolder, RedoKeepsTheEarlierAttemptUnderSuperseded) {
   EXPECT_EQ(f.state().trials[1].attempts[0].superseded_dir, "superseded/Naiv_Index101.attempt1");
   f.redo(1);  // repeating is harmless
   EXPECT_EQ(f.trial_started(1), 2);
-  fs::remove_all(dir);
 }
 
 TEST(SessionFolder, ACrashWhileRecordingIsMarkedInterruptedOnReopen) {
@@ -226,7 +222,6 @@ TEST(SessionFolder, ACrashWhileRecordingIsMarkedInterruptedOnReopen) {
   EXPECT_EQ(manifest["trials"][0]["status"], "interrupted");
   // The partial file is still there until a redo moves it aside.
   EXPECT_EQ(read_text(trial_files(dir, "Naiv_Static101").recording), "partial\n");
-  fs::remove_all(dir);
 }
 
 TEST(SessionFolder, ACutLastJournalLineIsSetAsideAndTheJournalGoesOn) {
@@ -277,7 +272,6 @@ TEST(SessionFolder, OneProcessAtATimeAndTheManifestIsRebuiltFromTheJournal) {
   }
   // While a runner holds the folder, a trial it is recording is shown as recording.
   f.trial_stopped(0, "interrupted", "x");
-  fs::remove_all(dir);
 }
 
 // A clean close leaves no lock file in the folder; the lock still keeps a second opener out while
@@ -318,7 +312,6 @@ TEST(SessionFolder, ProcessingTakesOnlyAcceptedAttempts) {
   EXPECT_EQ((*jobs[0].layout_json)["name"], "paper-initial");
   ASSERT_EQ(notes.size(), 1u);
   EXPECT_THAT(notes[0], HasSubstr("Naiv_Index101: recorded, not processed"));
-  fs::remove_all(dir);
 }
 
 }  // namespace

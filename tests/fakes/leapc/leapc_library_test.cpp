@@ -46,6 +46,34 @@ class LeapcLibrarySearch : public ::testing::Test {
   std::string named_;
 };
 
+#ifdef _WIN32
+// Windows: Ultraleap's installer's two folders under Program Files, the SDK's first; under a
+// search root the root stands in for the drive.
+constexpr const char* kSdkPlace = "/Program Files/Ultraleap/LeapSDK/lib/x64/LeapC.dll";
+constexpr const char* kSdkWhat = "Ultraleap SDK (Windows installer)";
+constexpr const char* kServicePlace = "/Program Files/Ultraleap/TrackingService/bin/LeapC.dll";
+
+TEST_F(LeapcLibrarySearch, KnownPlacesAreTriedInTheirDocumentedOrderUnderTheSearchRoot) {
+  const auto places = leapc_known_places();
+  ASSERT_EQ(places.size(), 2U);
+  EXPECT_EQ(places[0].path, root_.string() + kSdkPlace);
+  EXPECT_EQ(places[0].what, kSdkWhat);
+  EXPECT_EQ(places[1].path, root_.string() + kServicePlace);
+}
+
+TEST_F(LeapcLibrarySearch, TheSdkIsPreferredToTheServiceFolderWhenBothAreInstalled) {
+  install(kServicePlace);
+  const std::string sdk = install(kSdkPlace);
+  const LeapcSearchResult r = find_leapc();
+  ASSERT_TRUE(r.library) << r.failure_text();
+  EXPECT_EQ(r.library->path, sdk);
+  EXPECT_EQ(r.library->what, kSdkWhat);
+}
+#else
+// Linux: the packages' folders and the SDK tarball's.
+constexpr const char* kSdkPlace = "/opt/ultraleap/LeapSDK/lib/libLeapC.so.5";
+constexpr const char* kSdkWhat = "Ultraleap SDK tarball";
+
 TEST_F(LeapcLibrarySearch, KnownPlacesAreTriedInTheirDocumentedOrderUnderTheSearchRoot) {
   const auto places = leapc_known_places();
   ASSERT_GE(places.size(), 6U);
@@ -65,6 +93,7 @@ TEST_F(LeapcLibrarySearch, KnownPlacesAreTriedInTheirDocumentedOrderUnderTheSear
   EXPECT_LT(gemini_517, gemini_56);
   EXPECT_LT(gemini_56, tarball);
 }
+#endif
 
 TEST_F(LeapcLibrarySearch, NothingInstalledSaysEveryPlaceTriedAndWhy) {
   const LeapcSearchResult r = find_leapc();
@@ -81,16 +110,17 @@ TEST_F(LeapcLibrarySearch, NothingInstalledSaysEveryPlaceTriedAndWhy) {
 
 TEST_F(LeapcLibrarySearch, ALibraryInstalledAfterAFailedSearchIsFoundByTheNext) {
   ASSERT_FALSE(find_leapc().library);
-  const std::string path = install("/opt/ultraleap/LeapSDK/lib/libLeapC.so.5");
+  const std::string path = install(kSdkPlace);
   const LeapcSearchResult r = find_leapc();
   ASSERT_TRUE(r.library) << r.failure_text();
   EXPECT_EQ(r.library->path, path);
-  EXPECT_EQ(r.library->what, "Ultraleap SDK tarball");
+  EXPECT_EQ(r.library->what, kSdkWhat);
   ASSERT_TRUE(r.library->version);
   EXPECT_EQ(leapc_version_text(*r.library->version), "5.6.1");
   EXPECT_NE(leapc_library_text(*r.library).find("LeapC 5.6.1 from " + path), std::string::npos);
 }
 
+#ifndef _WIN32
 TEST_F(LeapcLibrarySearch, HyperionIsPreferredToGeminiWhenBothAreInstalled) {
   install("/usr/lib/ultraleap-hand-tracking-service/libLeapC.so.5");
   const std::string hyperion = install("/usr/lib/x86_64-linux-gnu/libLeapC.so.6");
@@ -99,6 +129,7 @@ TEST_F(LeapcLibrarySearch, HyperionIsPreferredToGeminiWhenBothAreInstalled) {
   EXPECT_EQ(r.library->path, hyperion);
   EXPECT_EQ(r.library->what, "Hyperion 6 package");
 }
+#endif
 
 TEST_F(LeapcLibrarySearch, ANamedLibraryIsTheOnlyOneTried) {
   install("/opt/ultraleap/LeapSDK/lib/libLeapC.so.5");

@@ -4,6 +4,8 @@
 // there by the search the backend runs at every start.
 #include <cstdlib>
 #include <filesystem>
+#include <fstream>
+#include <iterator>
 #include <string>
 
 #include <gtest/gtest.h>
@@ -17,15 +19,25 @@ namespace {
 
 namespace fs = std::filesystem;
 
+#ifdef _WIN32
+std::string read_bytes(const fs::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+}
+#endif
+
 TEST(LeapcWindowsPlace, FoundInTheUltraleapSdkFolder) {
 #ifdef _WIN32
   const char* named = std::getenv("LMC_LEAPC_LIBRARY");
   ASSERT_NE(named, nullptr) << "the test binary names the double (leapc_test_env.cpp)";
   const std::string double_path = named;
   const fs::path place = "C:/Program Files/Ultraleap/LeapSDK/lib/x64/LeapC.dll";
-  if (fs::exists(place)) GTEST_SKIP() << place << " is installed on this machine: not replaced by the double";
+  // The double an earlier run put there stays: this process loads it, and Windows deletes no
+  // library a process has loaded. A real LeapC there is never replaced.
+  if (fs::exists(place) && read_bytes(place) != read_bytes(double_path))
+    GTEST_SKIP() << place << " is installed on this machine: not replaced by the double";
   fs::create_directories(place.parent_path());
-  fs::copy_file(double_path, place);
+  fs::copy_file(double_path, place, fs::copy_options::overwrite_existing);
   lmc::test::unset_env("LMC_LEAPC_LIBRARY");
   fake_leapc::reset();
   const LeapcSearchResult found = find_leapc();
