@@ -3,11 +3,6 @@
 // status callback at a known phase, never from a timer.
 #include "devices/record/trial_engine.h"
 
-#include <arpa/inet.h>
-#include <netinet/in.h>
-#include <sys/socket.h>
-#include <unistd.h>
-
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
@@ -27,6 +22,7 @@
 #include "devices/host_clock.h"
 #include "devices/replay/replay_source.h"
 #include "devices/sim/sim_rig.h"
+#include "tests/devices/vicon/vicon_send_from.h"
 #include "tests/support/reference_data.h"
 
 namespace lmc::devices {
@@ -266,25 +262,6 @@ TEST(TrialEngine, ListenModeSkipsATakenNameAndIgnoresAnotherTrialsStop) {
   EXPECT_EQ(side.vicon_trigger_received.at("name"), "Fresh");
 }
 
-// Sends `message` three times from a UDP socket bound to `from` (127.0.0.2: another machine on
-// the lab network) to 127.0.0.1:port.
-void send_capture_from(const char* from, std::uint16_t port, ViconMessage message) {
-  const int fd = ::socket(AF_INET, SOCK_DGRAM, 0);
-  ASSERT_GE(fd, 0);
-  sockaddr_in local{};
-  local.sin_family = AF_INET;
-  ASSERT_EQ(inet_pton(AF_INET, from, &local.sin_addr), 1);
-  ASSERT_EQ(::bind(fd, reinterpret_cast<sockaddr*>(&local), sizeof local), 0) << from;
-  sockaddr_in to{};
-  to.sin_family = AF_INET;
-  to.sin_port = htons(port);
-  to.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
-  const std::string payload = format_vicon_message(message);
-  for (int i = 0; i < 3; ++i)
-    ::sendto(fd, payload.data(), payload.size(), 0, reinterpret_cast<sockaddr*>(&to), sizeof to);
-  ::close(fd);
-}
-
 // Only the configured Vicon host starts and stops the trial: another host's CaptureStart (even
 // with the PacketID the real one then uses) and its CaptureStop for the same trial are refused,
 // said with the sender, counted in the sidecar, and the verdict names both hosts.
@@ -308,7 +285,7 @@ TEST(TrialEngine, ListenModeObeysOnlyTheConfiguredViconHost) {
       ViconMessage intruder;
       intruder.name = "Intruder";
       intruder.packet_id = 900;
-      send_capture_from("127.0.0.2", port, intruder);
+      test::vicon_send_from("127.0.0.2", port, intruder, 3);
       ViconTriggerConfig vc;
       vc.host = "127.0.0.1";
       vc.port = port;
@@ -322,7 +299,7 @@ TEST(TrialEngine, ListenModeObeysOnlyTheConfiguredViconHost) {
       foreign_stop.type = ViconMessage::Type::kStop;
       foreign_stop.name = "Fresh";
       foreign_stop.packet_id = 950;
-      send_capture_from("127.0.0.2", port, foreign_stop);
+      test::vicon_send_from("127.0.0.2", port, foreign_stop, 3);
       step = 2;
     }
     if (step == 2 && s.vicon_refused >= 6) {
@@ -399,7 +376,7 @@ TEST(TrialEngine, ListenModeWithoutAViconHostWarnsThatAnySenderIsObeyed) {
       ViconMessage start;
       start.name = "Anyone";
       start.packet_id = 40;
-      send_capture_from("127.0.0.2", port(), start);
+      test::vicon_send_from("127.0.0.2", port(), start, 3);
       sent = true;
     }
     if (sent && !stopped && s.phase == TrialPhase::kRecording && s.recording_s > 0.2) {
@@ -407,7 +384,7 @@ TEST(TrialEngine, ListenModeWithoutAViconHostWarnsThatAnySenderIsObeyed) {
       end.type = ViconMessage::Type::kStop;
       end.name = "Anyone";
       end.packet_id = 41;
-      send_capture_from("127.0.0.2", port(), end);
+      test::vicon_send_from("127.0.0.2", port(), end, 3);
       stopped = true;
     }
     if (std::chrono::steady_clock::now() > deadline) stop.request_stop();

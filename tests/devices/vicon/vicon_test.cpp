@@ -20,10 +20,13 @@
 #include "devices/vicon/vicon_route.h"
 #include "devices/vicon/vicon_senders.h"
 #include "devices/vicon/vicon_trigger.h"
+#include "tests/devices/vicon/vicon_send_from.h"
 #include "tests/support/reference_data.h"
 
 namespace lmc::devices {
 namespace {
+
+using test::vicon_send_from;
 
 TEST(ViconMessage, StartHasEveryFieldAndIsNullTerminated) {
   ViconMessage m;
@@ -272,25 +275,6 @@ TEST(ViconTrigger, GivenFirstPacketIdIsUsedAsIsAndNothingIsPersisted) {
   EXPECT_EQ(t.send_start("t").message.packet_id, 42u);
   EXPECT_EQ(t.send_stop("t").message.packet_id, 43u);
   EXPECT_FALSE(std::filesystem::exists(file));
-}
-
-// Sends `message` `times` times from a UDP socket bound to `from` to 127.0.0.1:port.
-void vicon_send_from(const char* from, std::uint16_t port, const ViconMessage& message, int times) {
-  const int fd = ::socket(AF_INET, SOCK_DGRAM, 0);
-  ASSERT_GE(fd, 0);
-  sockaddr_in local{};
-  local.sin_family = AF_INET;
-  ASSERT_EQ(inet_pton(AF_INET, from, &local.sin_addr), 1);
-  ASSERT_EQ(::bind(fd, reinterpret_cast<sockaddr*>(&local), sizeof local), 0) << from;
-  sockaddr_in to{};
-  to.sin_family = AF_INET;
-  to.sin_port = htons(port);
-  to.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
-  const std::string payload = format_vicon_message(message);
-  for (int i = 0; i < times; ++i)
-    EXPECT_EQ(::sendto(fd, payload.data(), payload.size(), 0, reinterpret_cast<sockaddr*>(&to), sizeof to),
-              static_cast<ssize_t>(payload.size()));
-  ::close(fd);
 }
 
 ViconMessage vicon_capture(ViconMessage::Type type, const std::string& name, std::uint32_t packet_id) {
