@@ -15,6 +15,7 @@
 #include "ui/app/capture/text_fit_check.h"
 #include "ui/app/subject_screen.h"
 #include "ui/app/workbench_shell.h"
+#include "ui/model/shell/frame_pacer.h"
 #include "ui/model/record/subject_stage_trace.h"
 #include "ui/platform/gl_window.h"
 #include "ui/platform/offscreen_png.h"
@@ -85,6 +86,7 @@ int run_interactive(int width, int height, ShellStartup startup) {
   install_picture_renderer(shell, window);
   SubjectScreen subject(window.handle());
   SubjectStageTrace trace = subject_stage_trace_from_environment();
+  FramePacer pacer(window.monitor_refresh_hz(), window.software_renderer());
   std::string title;
   while (!shell.quit_requested()) {
     if (window.should_close()) {
@@ -101,6 +103,7 @@ int run_interactive(int width, int height, ShellStartup startup) {
       title = t;
       window.set_title(title);
     }
+    std::this_thread::sleep_until(pacer.next_frame_start(FramePacer::Clock::now()));
   }
   return 0;
 }

@@ -14,6 +14,7 @@
 #include <string>
 #include <vector>
 
+#include "ui/model/shell/software_renderer.h"
 #include "ui/platform/ui_fonts.h"
 #include "ui/platform/user_config.h"
 
@@ -79,7 +80,10 @@ GlWindow::GlWindow(const WindowOptions& options) {
   glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);
   glfwWindowHint(GLFW_OPENGL_FORWARD_COMPAT, GLFW_TRUE);
   glfwWindowHint(GLFW_VISIBLE, options.visible ? GLFW_TRUE : GLFW_FALSE);
-  glfwWindowHint(GLFW_SAMPLES, 4);
+  // No multisampling of the window itself: ImGui smooths its own edges, and the 3D views render
+  // into their own multisampled targets. Multisampling the window only multiplied the cost of
+  // every pixel drawn, which a software renderer (Xvfb, a virtual machine) pays on the CPU.
+  glfwWindowHint(GLFW_SAMPLES, 0);
   window_ = glfwCreateWindow(options.width, options.height, options.title.c_str(), nullptr, nullptr);
   if (window_ == nullptr) {
     glfwTerminate();
@@ -156,6 +160,17 @@ int GlWindow::framebuffer_width() const {
   int w = 0, h = 0;
   glfwGetFramebufferSize(window_, &w, &h);
   return w;
+}
+
+int GlWindow::monitor_refresh_hz() const {
+  GLFWmonitor* monitor = glfwGetPrimaryMonitor();
+  const GLFWvidmode* mode = monitor != nullptr ? glfwGetVideoMode(monitor) : nullptr;
+  return mode != nullptr ? mode->refreshRate : 0;
+}
+
+bool GlWindow::software_renderer() const {
+  const auto* renderer = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
+  return renderer != nullptr && is_software_renderer(renderer);
 }
 
 int GlWindow::framebuffer_height() const {

@@ -33,6 +33,10 @@ class GlWindow {
   void present();      // swap buffers
   int framebuffer_width() const;
   int framebuffer_height() const;
+  // The refresh rate of the primary monitor's current mode; 0 when GLFW cannot say.
+  int monitor_refresh_hz() const;
+  // Whether this window's OpenGL renderer draws on the CPU (is_software_renderer).
+  bool software_renderer() const;
   // Back buffer → PNG (call between end_frame and present). Throws on failure.
   void save_png(const std::string& path) const;
   GLFWwindow* handle() const { return window_; }

@@ -12,6 +12,7 @@
 #include <string>
 
 #include "core/common/paths.h"
+#include "ui/model/shell/software_renderer.h"
 
 namespace lmc::ui {
 namespace {
@@ -166,11 +167,10 @@ GlSceneRenderer::GlSceneRenderer() {
     glGetProgramInfoLog(program_, sizeof log, nullptr, log);
     throw std::runtime_error(std::string("scene shader link: ") + log);
   }
-  // Software rasterisers (Mesa llvmpipe under Xvfb, softpipe) pay for every sample on the CPU:
-  // 4× MSAA there costs tens of milliseconds per frame, so they render without it.
+  // A software rasteriser pays for every sample on the CPU: 4× MSAA there costs tens of
+  // milliseconds per frame, so it renders without it.
   if (const auto* renderer = reinterpret_cast<const char*>(glGetString(GL_RENDERER))) {
-    const std::string name(renderer);
-    if (name.find("llvmpipe") != std::string::npos || name.find("softpipe") != std::string::npos) samples_ = 0;
+    if (is_software_renderer(renderer)) samples_ = 0;
   }
   u_vp_ = glGetUniformLocation(program_, "u_view_projection");
   u_view_dir_ = glGetUniformLocation(program_, "u_view_dir");
