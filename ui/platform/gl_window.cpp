@@ -14,9 +14,9 @@
 #include <string>
 #include <vector>
 
-#include "ui/model/shell/software_renderer.h"
 #include "ui/platform/ui_fonts.h"
 #include "ui/platform/user_config.h"
+#include "ui/scene/software_renderer.h"
 
 namespace lmc::ui {
 namespace {

@@ -12,7 +12,7 @@
 #include <string>
 
 #include "core/common/paths.h"
-#include "ui/model/shell/software_renderer.h"
+#include "ui/scene/software_renderer.h"
 
 namespace lmc::ui {
 namespace {

@@ -5,7 +5,7 @@
 #include <gtest/gtest.h>
 
 #include "ui/model/shell/frame_pacer.h"
-#include "ui/model/shell/software_renderer.h"
+#include "ui/scene/software_renderer.h"
 
 namespace lmc::ui {
 namespace frame_pacer_test {  // named: test files share unity batches

@@ -18,7 +18,8 @@ int plausible_rate(int refresh_hz) {
 }  // namespace
 
 FramePacer::FramePacer(int refresh_hz, bool software_renderer)
-    : rate_hz_(software_renderer ? std::min(plausible_rate(refresh_hz), kSoftwareRendererHz) : plausible_rate(refresh_hz)),
+    : rate_hz_(software_renderer ? std::min(plausible_rate(refresh_hz), kSoftwareRendererHz)
+                                 : plausible_rate(refresh_hz)),
       interval_(std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(1.0 / rate_hz_))) {}
 
 FramePacer::Clock::time_point FramePacer::next_frame_start(Clock::time_point now) {

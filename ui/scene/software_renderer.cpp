@@ -1,4 +1,4 @@
-#include "ui/model/shell/software_renderer.h"
+#include "ui/scene/software_renderer.h"
 
 #include <array>
 
