@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstring>
 #include <fstream>
 #include <numbers>
 #include <sstream>
@@ -206,8 +207,8 @@ void GlSceneRenderer::release_targets() {
   width_ = height_ = 0;
 }
 
-void GlSceneRenderer::ensure_targets(int w, int h) {
-  if (w == width_ && h == height_ && fbo_ != 0) return;
+bool GlSceneRenderer::ensure_targets(int w, int h) {
+  if (w == width_ && h == height_ && fbo_ != 0) return false;
   release_targets();
   width_ = w;
   height_ = h;
@@ -247,6 +248,7 @@ void GlSceneRenderer::ensure_targets(int w, int h) {
     }
   }
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
+  return true;
 }
 
 void GlSceneRenderer::draw(const std::vector<Vertex>& verts, unsigned mode) {
@@ -304,12 +306,10 @@ void GlSceneRenderer::fill_passes(const SceneList& scene) {
 
 // Opaque triangles and lines, then the translucent ones without depth writes (volumes behind one
 // another all show), then the x-ray of what lies below the table.
-void GlSceneRenderer::draw_passes(const OrbitCamera& camera, int width_px, int height_px) {
-  const Eigen::Matrix4f vp =
-      (camera.projection(static_cast<double>(width_px) / height_px) * camera.view()).cast<float>();
+void GlSceneRenderer::draw_passes(const Eigen::Matrix4f& view_projection, const OrbitCamera& camera) {
   const Eigen::Vector3f view_dir = camera.forward().cast<float>();
   glUseProgram(program_);
-  glUniformMatrix4fv(u_vp_, 1, GL_FALSE, vp.data());  // Eigen is column-major, as GL expects
+  glUniformMatrix4fv(u_vp_, 1, GL_FALSE, view_projection.data());  // Eigen is column-major, as GL expects
   glUniform3f(u_view_dir_, view_dir.x(), view_dir.y(), view_dir.z());
   glBindVertexArray(vao_);
   glBindBuffer(GL_ARRAY_BUFFER, vbo_);
@@ -327,10 +327,38 @@ void GlSceneRenderer::draw_passes(const OrbitCamera& camera, int width_px, int h
   glUseProgram(0);
 }
 
+namespace {
+
+bool same_vertices(const std::vector<GlSceneRenderer::Vertex>& a, const std::vector<GlSceneRenderer::Vertex>& b) {
+  return a.size() == b.size() && (a.empty() || std::memcmp(a.data(), b.data(), a.size() * sizeof(a[0])) == 0);
+}
+
+}  // namespace
+
+bool GlSceneRenderer::same_as_drawn(const Eigen::Matrix4f& view_projection) {
+  if (drawn_ && view_projection == drawn_view_projection_ && same_vertices(opaque_, drawn_opaque_) &&
+      same_vertices(lines_, drawn_lines_) && same_vertices(translucent_, drawn_translucent_) &&
+      same_vertices(translucent_lines_, drawn_translucent_lines_) && same_vertices(xray_, drawn_xray_)) {
+    return true;
+  }
+  drawn_ = true;
+  drawn_view_projection_ = view_projection;
+  drawn_opaque_ = opaque_;
+  drawn_lines_ = lines_;
+  drawn_translucent_ = translucent_;
+  drawn_translucent_lines_ = translucent_lines_;
+  drawn_xray_ = xray_;
+  return false;
+}
+
 std::uintptr_t GlSceneRenderer::render(const SceneList& scene, const OrbitCamera& camera, int width_px, int height_px) {
   if (width_px < 8 || height_px < 8) return 0;
-  ensure_targets(width_px, height_px);
+  if (ensure_targets(width_px, height_px)) drawn_ = false;
   fill_passes(scene);
+  // The view direction follows from the view, which the view-projection holds.
+  const Eigen::Matrix4f vp =
+      (camera.projection(static_cast<double>(width_px) / height_px) * camera.view()).cast<float>();
+  if (same_as_drawn(vp)) return static_cast<std::uintptr_t>(texture_);
 
   GLint prev_fbo = 0, prev_viewport[4];
   glGetIntegerv(GL_FRAMEBUFFER_BINDING, &prev_fbo);
@@ -345,7 +373,7 @@ std::uintptr_t GlSceneRenderer::render(const SceneList& scene, const OrbitCamera
   glDisable(GL_SCISSOR_TEST);
   glEnable(GL_BLEND);
   glBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
-  draw_passes(camera, width_px, height_px);
+  draw_passes(vp, camera);
   if (msaa_fbo_) {
     glBindFramebuffer(GL_READ_FRAMEBUFFER, msaa_fbo_);
     glBindFramebuffer(GL_DRAW_FRAMEBUFFER, fbo_);
