@@ -169,22 +169,34 @@ def macros(text):
     return set(re.findall(r"^\s*#\s*define\s+([A-Za-z_]\w*)", text, re.MULTILINE))
 
 
-def used_names(code):
-    """(name, line) of identifiers used as our own: not after '.', '->' or a foreign '::'."""
-    code = re.sub(r"^[ \t]*#.*$", "", code, flags=re.MULTILINE)
-    for m in re.finditer(r"[A-Za-z_]\w*", code):
+IDENTIFIER = re.compile(r"[A-Za-z_]\w*")
+PREPROCESSOR_LINE = re.compile(r"^[ \t]*#.*$", re.MULTILINE)
+AFTER_MEMBER_ACCESS = re.compile(r"(\.|->)\s*$")
+AFTER_QUALIFIER = re.compile(r"([A-Za-z_]\w*)\s*::\s*$")
+AFTER_SCOPE = re.compile(r"::\s*$")
+
+
+def used_names(code, wanted=None):
+    """(name, line) of identifiers used as our own: not after '.', '->' or a foreign '::'.
+    `wanted(name)`, when given, skips the others before any of that work (most identifiers)."""
+    code = PREPROCESSOR_LINE.sub("", code)
+    line, counted_to = 1, 0
+    for m in IDENTIFIER.finditer(code):
         name = m.group()
-        if name in KEYWORDS:
+        if name in KEYWORDS or (wanted is not None and not wanted(name)):
             continue
         before = code[max(0, m.start() - 64):m.start()]
-        if re.search(r"(\.|->)\s*$", before):
+        if AFTER_MEMBER_ACCESS.search(before):
             continue
-        q = re.search(r"([A-Za-z_]\w*)\s*::\s*$", before)
+        q = AFTER_QUALIFIER.search(before)
         if q and q.group(1) not in OUR_NAMESPACES:
             continue
-        if re.search(r"::\s*$", before) and not q:
+        if not q and AFTER_SCOPE.search(before):
             continue  # ::name, the global namespace: a C library's
-        yield name, code.count("\n", 0, m.start()) + 1
+        # Counted on from the last name yielded, not from the start of the file each time.
+        line += code.count("\n", counted_to, m.start())
+        counted_to = m.start()
+        yield name, line
 
 
 def tree_files():
@@ -245,9 +257,7 @@ def analyse(text):
         for q in reach:
             known |= per_file_any.get(q, set())
         out, reported = [], set()
-        for name, line in used_names(c):
-            if name in reported or name in known or name not in owner:
-                continue
+        for name, line in used_names(c, lambda n: n in owner and n not in known and n not in reported):
             reported.add(name)
             where = " or ".join(str(h.relative_to(ROOT)) for h in sorted(owner[name]))
             out.append(f"{p.relative_to(ROOT)}:{line}: uses {name} from {where} without including it")
