@@ -6,38 +6,62 @@
 set(LMC_UBSAN_SKIP "" CACHE STRING "UBSan checks left out under LMC_SANITIZE, as -fno-sanitize=... (the check preset: those of memory access)")
 separate_arguments(LMC_UBSAN_SKIP_LIST UNIX_COMMAND "${LMC_UBSAN_SKIP}")
 
+# The same intent for MSVC (the msvc preset, Windows only): level 4 warnings, standard
+# conformance (/permissive-, the real __cplusplus that the libraries test), UTF-8 sources (the
+# µ and ± in messages), C++ exceptions, and /bigobj for unity batches full of Eigen's templates.
+# /fp:precise is MSVC's default and, since Visual Studio 2022, never contracts a*b+c into a
+# multiply-add: the counterpart of -ffp-contract=off. MSVC calls standard C functions such as
+# getenv and fopen deprecated in favour of its own *_s forms, which other systems lack: that
+# warning is off. AddressSanitizer only: MSVC has no UBSan.
+function(lmc_msvc_compile_flags target)
+  target_compile_options(${target} PRIVATE /W4 /permissive- /utf-8 /EHsc /Zc:__cplusplus /bigobj /fp:precise
+                                           /external:W0)
+  target_compile_definitions(${target} PRIVATE _CRT_SECURE_NO_WARNINGS)
+  if(LMC_WERROR)
+    target_compile_options(${target} PRIVATE /WX)
+  endif()
+  if(LMC_SANITIZE)
+    target_compile_options(${target} PRIVATE /fsanitize=address)
+    target_compile_definitions(${target} PRIVATE EIGEN_MALLOC_ALREADY_ALIGNED=0)
+  endif()
+endfunction()
+
 # Strict warnings are applied per first-party target (never globally) so Debian's headers, included
 # as SYSTEM by their imported targets, stay quiet.
 function(lmc_compile_flags target)
-  target_compile_options(${target} PRIVATE
-    -Wall -Wextra -Wpedantic
-    -Wshadow                # shadowed locals hide bugs in long numeric loops
-    -Wcast-qual
-    -Wimplicit-fallthrough
-    -Wvla                   # no variable-length arrays: stack blow-ups on large pose sets
-    -Wformat=2 -Wformat-security  # names from files must never become format strings
-    -Wnon-virtual-dtor
-    # Never fuse a*b+c into one multiply-add: the visibility kernel's AVX-512 build (which has FMA)
-    # must round as its baseline and AVX2 builds do, bit for bit (visibility_kernel.cpp;
-    # tests/check_no_fused_multiply_add.sh checks the program). Nothing else here is built for FMA.
-    -ffp-contract=off
-  )
-  if(LMC_WERROR)
-    target_compile_options(${target} PRIVATE -Werror)
-  endif()
-  if(LMC_GCC_FEWER_COLLECTIONS AND CMAKE_CXX_COMPILER_ID STREQUAL "GNU")
-    # GCC collects its own garbage every time its heap grows by a third (from 128 MB), a visible
-    # share of a unity batch's compile time; collecting only when it quadruples from 1 GB trades
-    # some peak memory for less CPU and gives the same objects (docs/results/build-time.md).
-    target_compile_options(${target} PRIVATE --param=ggc-min-expand=400 --param=ggc-min-heapsize=1048576)
-  endif()
-  if(LMC_SANITIZE)
-    target_compile_options(${target} PRIVATE -fsanitize=address,undefined -fno-sanitize-recover=all
-                                             -fno-omit-frame-pointer ${LMC_UBSAN_SKIP_LIST})
-    target_link_options(${target} PRIVATE -fsanitize=address,undefined)
-    # Eigen picks its allocator by whether the file is compiled with ASan: files with and without
-    # (LMC_TEST_FLAGS) would then free each other's matrices with the wrong one. One choice for all.
-    target_compile_definitions(${target} PRIVATE EIGEN_MALLOC_ALREADY_ALIGNED=0)
+  if(MSVC)
+    lmc_msvc_compile_flags(${target})
+  else()
+    target_compile_options(${target} PRIVATE
+      -Wall -Wextra -Wpedantic
+      -Wshadow                # shadowed locals hide bugs in long numeric loops
+      -Wcast-qual
+      -Wimplicit-fallthrough
+      -Wvla                   # no variable-length arrays: stack blow-ups on large pose sets
+      -Wformat=2 -Wformat-security  # names from files must never become format strings
+      -Wnon-virtual-dtor
+      # Never fuse a*b+c into one multiply-add: the visibility kernel's AVX-512 build (which has FMA)
+      # must round as its baseline and AVX2 builds do, bit for bit (visibility_kernel.cpp;
+      # tests/check_no_fused_multiply_add.sh checks the program). Nothing else here is built for FMA.
+      -ffp-contract=off
+    )
+    if(LMC_WERROR)
+      target_compile_options(${target} PRIVATE -Werror)
+    endif()
+    if(LMC_GCC_FEWER_COLLECTIONS AND CMAKE_CXX_COMPILER_ID STREQUAL "GNU")
+      # GCC collects its own garbage every time its heap grows by a third (from 128 MB), a visible
+      # share of a unity batch's compile time; collecting only when it quadruples from 1 GB trades
+      # some peak memory for less CPU and gives the same objects (docs/results/build-time.md).
+      target_compile_options(${target} PRIVATE --param=ggc-min-expand=400 --param=ggc-min-heapsize=1048576)
+    endif()
+    if(LMC_SANITIZE)
+      target_compile_options(${target} PRIVATE -fsanitize=address,undefined -fno-sanitize-recover=all
+                                               -fno-omit-frame-pointer ${LMC_UBSAN_SKIP_LIST})
+      target_link_options(${target} PRIVATE -fsanitize=address,undefined)
+      # Eigen picks its allocator by whether the file is compiled with ASan: files with and without
+      # (LMC_TEST_FLAGS) would then free each other's matrices with the wrong one. One choice for all.
+      target_compile_definitions(${target} PRIVATE EIGEN_MALLOC_ALREADY_ALIGNED=0)
+    endif()
   endif()
   # No absolute paths here (they would tie every object to the checkout's folder): the assets
   # path is compiled into core/common/paths.cpp alone.

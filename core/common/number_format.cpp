@@ -10,6 +10,7 @@
 #include <system_error>
 
 #include "core/common/decimal_digits.h"
+#include "core/common/uint128.h"
 
 namespace lmc {
 
@@ -31,7 +32,7 @@ char* write_fixed_by_integers(char* first, double v, int decimals) {
   if (biased == 0x7ff) return nullptr;
   const std::uint64_t m = biased == 0 ? fraction : (fraction | (std::uint64_t{1} << 52));
   const int e = biased == 0 ? -1074 : biased - 1075;
-  __extension__ typedef unsigned __int128 u128;                 // GCC and Clang; -Wpedantic needs the marker
+  using u128 = Uint128;
   const u128 scaled = static_cast<u128>(m) * kPow10[decimals];  // < 2^83
   u128 n = 0;
   if (e >= 0) {

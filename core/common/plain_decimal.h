@@ -21,6 +21,7 @@
 #include <cstdint>
 
 #include "core/common/cpu_features.h"
+#include "core/common/uint128.h"
 
 namespace lmc {
 
@@ -28,7 +29,7 @@ namespace plain_decimal_detail {
 
 inline constexpr int kMaxDigits = 19;  // 10^19 − 1 < 2^64
 
-__extension__ typedef unsigned __int128 u128;  // GCC and Clang; -Wpedantic needs the marker
+using u128 = Uint128;
 
 // 1/5^f as R / 2^(63+e), R = floor(2^(63+e) / 5^f) in [2^63, 2^64).
 struct Reciprocal {

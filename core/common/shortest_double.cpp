@@ -7,12 +7,13 @@
 #include <cstring>
 
 #include "core/common/decimal_digits.h"
+#include "core/common/uint128.h"
 
 namespace lmc {
 
 namespace {
 
-__extension__ typedef unsigned __int128 u128;  // GCC and Clang; -Wpedantic needs the marker
+using u128 = Uint128;
 
 // The fast path takes v = c · 2^q with q in [kMinExponent, 0]: every value from about 7.6e-6 to
 // 2^53 that is not a power of two, which is nearly every coordinate in millimetres. Anything else

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <map>
 #include <numeric>
 #include <sstream>
@@ -58,8 +59,12 @@ class RowPlace {
 };
 
 std::int64_t add_checked(std::int64_t a, std::int64_t b, const RowPlace& place, long row) {
-  std::int64_t out = 0;
-  if (__builtin_add_overflow(a, b, &out) || out > kMaxRebasedUs || out < -kMaxRebasedUs) {
+  // The sum is formed only when it cannot overflow (signed overflow is undefined behaviour).
+  constexpr std::int64_t kMax = std::numeric_limits<std::int64_t>::max();
+  constexpr std::int64_t kMin = std::numeric_limits<std::int64_t>::min();
+  const bool overflows = b > 0 ? a > kMax - b : a < kMin - b;
+  const std::int64_t out = overflows ? 0 : a + b;
+  if (overflows || out > kMaxRebasedUs || out < -kMaxRebasedUs) {
     place.fail(row, "timestamp arithmetic leaves the plausible range (|t| > 2^62 µs); the time stamps are corrupt");
   }
   return out;

@@ -20,6 +20,7 @@
 // exact.
 #include <cstdint>
 
+#include "core/common/always_inline.h"
 #include "core/visibility/device_view.h"
 #include "core/visibility/frame_prep.h"
 #include "core/visibility/visibility_tests.h"
@@ -44,7 +45,7 @@ struct PhalanxRing {
 };
 
 // The phalanges as prepare_phalanges computes them (set_phalanx_lane), then the wrap-around copies.
-[[gnu::always_inline]] inline void prepare_phalanx_ring(const PreparedFrame& fr, const DeviceView& d, PhalanxRing& r) {
+LMC_ALWAYS_INLINE void prepare_phalanx_ring(const PreparedFrame& fr, const DeviceView& d, PhalanxRing& r) {
   for (int p = 0; p < kNumPhalanges; ++p) set_phalanx_lane(fr, d, p, r);
   for (int p = kNumPhalanges; p < kRingLanes; ++p) {
     const int q = p - kNumPhalanges;
@@ -68,8 +69,8 @@ struct PhalanxRing {
 // loops over all 12 lanes with branch-free bodies and integer masks, so that GCC vectorises both
 // stages. (Running stage 2 only on the groups of four lanes that kept a lane, with GCC vector
 // extensions or with 4-lane loops, compiles to more instructions.)
-[[gnu::always_inline]] inline bool others_occlude(const PhalanxRing& r, int start, double vx, double vy, double vz,
-                                                  double vv, double radius_sq) {
+LMC_ALWAYS_INLINE bool others_occlude(const PhalanxRing& r, int start, double vx, double vy, double vz, double vv,
+                                      double radius_sq) {
   const double* const wx = r.wx + start;
   const double* const wy = r.wy + start;
   const double* const wz = r.wz + start;

@@ -7,6 +7,7 @@
 #include <cstdlib>
 #include <string>
 
+#include "core/common/always_inline.h"
 #include "core/common/cpu_features.h"
 #include "core/common/error.h"
 #include "core/visibility/phalanx_block_avx512.h"
@@ -26,9 +27,8 @@ namespace {
 // device (the robust metric's axis cut): the device-frame coordinates are computed here anyway, so
 // the tally need not transform the markers again. kBuild is never kBest.
 template <bool kCut, KernelBuild kBuild>
-[[gnu::always_inline]] inline FingerBits visible_fingers_body(const PreparedFrame& fr, const DeviceView& d,
-                                                              const VisibilityLimits& lim, double cut_mm,
-                                                              FingerBits* cut_bits) {
+LMC_ALWAYS_INLINE FingerBits visible_fingers_body(const PreparedFrame& fr, const DeviceView& d,
+                                                  const VisibilityLimits& lim, double cut_mm, FingerBits* cut_bits) {
   if constexpr (kCut) *cut_bits = 0;
   if (!fr.valid) return 0;
   // Visibility step 1 approach direction.
@@ -76,11 +76,16 @@ template <bool kCut, KernelBuild kBuild>
     crosses[k] = ((denom != 0.0) & (t > 0.0) & (t < 1.0)) ? -1 : 0;
   }
   FingerBits bits = kAllFingersVisible;
-  // Unrolled: marker indices and each finger's first ring lane become constants.
+  // Unrolled: marker indices and each finger's first ring lane become constants. (GCC's and
+  // Clang's pragma; other compilers would warn of an unknown one.)
+#if defined(__GNUC__)
 #pragma GCC unroll 5
+#endif
   for (int f = 0; f < kNumDigits; ++f) {
     const int start = vis::others_start(f);
+#if defined(__GNUC__)
 #pragma GCC unroll 4
+#endif
     for (int j = 0; j < 4; ++j) {
       const int k = finger_marker(f, j);
       // Visibility step 3 palm (rarely hides a ray, but it is cheaper than the fingers, so it goes first);
@@ -123,9 +128,9 @@ template <bool kCut, KernelBuild kBuild>
 
 // A device over a run of frames: the device view and limits stay in registers across frames.
 template <bool kCut, KernelBuild kBuild>
-[[gnu::always_inline]] inline void device_run_body(const DeviceView& d, std::span<const PreparedFrame> frames,
-                                                   const VisibilityLimits& lim, double cut_mm, FingerBits* out,
-                                                   FingerBits* cut_out) {
+LMC_ALWAYS_INLINE void device_run_body(const DeviceView& d, std::span<const PreparedFrame> frames,
+                                       const VisibilityLimits& lim, double cut_mm, FingerBits* out,
+                                       FingerBits* cut_out) {
   const DeviceView view = d;
   const VisibilityLimits limits = lim;
   for (size_t j = 0; j < frames.size(); ++j) {

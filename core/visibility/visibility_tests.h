@@ -4,6 +4,7 @@
 // two can never disagree. Everything is double precision, like the authors' numpy code.
 #include <cmath>
 
+#include "core/common/always_inline.h"
 #include "core/visibility/device_view.h"
 #include "core/visibility/frame_prep.h"
 #include "core/visibility/visibility_params.h"
@@ -69,7 +70,7 @@ struct PhalanxBlock {
 // Phalanx p of the frame, as seen from the device, into lane p of a block of lanes (PhalanxBlock
 // here, the batch kernel's PhalanxRing): the one place these per-phalanx numbers are computed.
 template <class Lanes>
-[[gnu::always_inline]] inline void set_phalanx_lane(const PreparedFrame& fr, const DeviceView& d, int p, Lanes& lanes) {
+LMC_ALWAYS_INLINE void set_phalanx_lane(const PreparedFrame& fr, const DeviceView& d, int p, Lanes& lanes) {
   const auto pp = static_cast<size_t>(p);
   const double ex = fr.bx[pp] - d.ox, ey = fr.by[pp] - d.oy, ez = fr.bz[pp] - d.oz;
   const double wx = fr.wx[pp], wy = fr.wy[pp], wz = fr.wz[pp];

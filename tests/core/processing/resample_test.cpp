@@ -3,6 +3,7 @@
 #include <cmath>
 #include <limits>
 #include <sstream>
+#include <string>
 
 #include "core/common/error.h"
 #include "core/io/lmc_recording.h"
@@ -55,6 +56,22 @@ TEST(Resample, GridStartsAtFirstHandAndInterpolatesLinearMotion) {
   EXPECT_FALSE(g.devices[1].track.has_hand(1));
   EXPECT_TRUE(g.devices[1].track.has_hand(2));
   EXPECT_TRUE(report.summary_lines().empty());
+}
+
+// The re-basing sums are checked before they are formed (signed overflow is undefined): a time
+// stamp that would overflow once re-based is refused, naming its row.
+TEST(Resample, ATimestampThatOverflowsWhenRebasedIsRefusedNamingItsRow) {
+  LmcRecording rec;
+  rec.rows.push_back(frame_at(1, 1'000'000));
+  rec.rows.push_back(frame_at(1, 0));  // back by 1 s: a clock reset, the rest re-based by +1.033 s
+  rec.rows.push_back(frame_at(1, std::numeric_limits<std::int64_t>::max()));
+  try {
+    resample_recording(rec, {});
+    FAIL() << "a recording whose re-based time stamps overflow was resampled";
+  } catch (const Error& e) {
+    const std::string what = e.what();
+    EXPECT_NE(what.find("row 3: timestamp arithmetic leaves the plausible range"), std::string::npos) << what;
+  }
 }
 
 TEST(Resample, GapsAndHandLossAreNaNNotBridged) {
