@@ -13,7 +13,8 @@ void SubjectScreenControlsPanel::draw() {
   anchors_.remember("toggle");
   ImGui::SameLine();
   const int n = static_cast<int>(link.monitors.size());
-  const int shown_monitor = link.monitor >= 0 && link.monitor < n ? link.monitor : n - 1;
+  // Where it is or would open (a second monitor when there is one, else the operator's pick).
+  const int shown_monitor = link.placed_monitor >= 0 && link.placed_monitor < n ? link.placed_monitor : -1;
   ImGui::SetNextItemWidth(230);
   if (ImGui::BeginCombo(
           "##monitor", shown_monitor >= 0 ? link.monitors[static_cast<size_t>(shown_monitor)].c_str() : "no monitor")) {
