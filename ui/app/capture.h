@@ -23,7 +23,7 @@ struct CaptureOptions {
   // stderr and in DIR/cut-text.txt, and the capture fails.
   bool check_text = false;
   // --ui-scale: the pictures at this scale (width × scale pixels wide); unset: the screen's.
-  std::optional<float> ui_scale;
+  std::optional<float> ui_scale{};
 };
 
 // Renders each requested tab in a hidden window to DIR/<tab>.png, plus the tab's extra pictures

@@ -86,7 +86,8 @@ void SubjectScreen::open(SubjectScreenLink& link, const std::vector<Monitor>& mo
   if (hidden_width_ <= 0) {
     ScreenRect operator_window;
     window_placement(main_, operator_window.x, operator_window.y, operator_window.width, operator_window.height);
-    const SubjectScreenPlace place = place_subject_screen(monitors, monitor, windowed, operator_window, settings_.window);
+    const SubjectScreenPlace place =
+        place_subject_screen(monitors, monitor, windowed, operator_window, settings_.window);
     options.place = place.rect;
     options.windowed = !place.covers_monitor;
   }

@@ -15,7 +15,7 @@ struct WindowOptions {
   int height = 800;
   bool visible = true;  // false for --capture (a hidden window still renders and reads back)
   std::string title = "LMC Workbench";
-  std::optional<float> ui_scale;  // --ui-scale; unset: the screen's content scale, followed as it changes
+  std::optional<float> ui_scale{};  // --ui-scale; unset: the screen's content scale, followed as it changes
 };
 
 class GlWindow {
@@ -29,8 +29,8 @@ class GlWindow {
   bool should_close() const;
   void set_should_close(bool close);
   void set_title(const std::string& title);
-  // Resizes the window to width × height ImGui units and waits (up to a second) until the display server reports the new size,
-  // so the next frame lays out at it.
+  // Resizes the window to width × height ImGui units and waits (up to a second) until the display server reports the
+  // new size, so the next frame lays out at it.
   void set_size(int units_wide, int units_high);
   void begin_frame();  // poll events, start an ImGui frame
   void end_frame();    // render ImGui into the back buffer (no swap)

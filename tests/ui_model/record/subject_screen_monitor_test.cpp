@@ -26,9 +26,9 @@ TEST(SubjectScreenMonitor, OpensOnASecondMonitorWhenThereIsOne) {
 TEST(SubjectScreenMonitor, TheOperatorsPickWinsThenTheSavedOneByName) {
   const std::vector<Monitor> three = {kLaptop, kSideScreen, kProjector};
   EXPECT_EQ(choose_subject_monitor(three, 2, std::nullopt), 2);
-  EXPECT_EQ(choose_subject_monitor(three, 0, kProjector), 0);    // this session's pick over the saved one
-  EXPECT_EQ(choose_subject_monitor(three, -1, kProjector), 2);   // saved last session
-  EXPECT_EQ(choose_subject_monitor(three, 7, kProjector), 2);    // a stale index counts as no pick
+  EXPECT_EQ(choose_subject_monitor(three, 0, kProjector), 0);   // this session's pick over the saved one
+  EXPECT_EQ(choose_subject_monitor(three, -1, kProjector), 2);  // saved last session
+  EXPECT_EQ(choose_subject_monitor(three, 7, kProjector), 2);   // a stale index counts as no pick
   // The projector now plugged in at another place: still found by its name.
   Monitor moved = kProjector;
   moved.rect.x = -1280;

@@ -23,7 +23,7 @@ TEST(UiScale, AnOrdinaryScreenKeepsTheBuiltInFontAtThirteenPixels) {
 }
 
 TEST(UiScale, RoundsToAQuarterSoANearlyOrdinaryScreenDoesNotBlurTheFont) {
-  EXPECT_FLOAT_EQ(choose_ui_scale(97.0F / 96.0F).scale, 1.0F);   // 97 dpi
+  EXPECT_FLOAT_EQ(choose_ui_scale(97.0F / 96.0F).scale, 1.0F);    // 97 dpi
   EXPECT_FLOAT_EQ(choose_ui_scale(120.0F / 96.0F).scale, 1.25F);  // 125 %
   EXPECT_FLOAT_EQ(choose_ui_scale(1.74F).scale, 1.75F);
   EXPECT_FLOAT_EQ(choose_ui_scale(2.0F).font_px, 26.0F);
@@ -32,7 +32,7 @@ TEST(UiScale, RoundsToAQuarterSoANearlyOrdinaryScreenDoesNotBlurTheFont) {
 TEST(UiScale, KeepsWithinOneToThreeAndTreatsNonsenseAsOne) {
   EXPECT_FLOAT_EQ(choose_ui_scale(0.75F).scale, 1.0F);  // smaller would cut the layouts' text
   EXPECT_FLOAT_EQ(choose_ui_scale(5.0F).scale, 3.0F);
-  EXPECT_FLOAT_EQ(choose_ui_scale(0.0F).scale, 1.0F);   // GLFW's answer when it could not ask
+  EXPECT_FLOAT_EQ(choose_ui_scale(0.0F).scale, 1.0F);  // GLFW's answer when it could not ask
   EXPECT_FLOAT_EQ(choose_ui_scale(-2.0F).scale, 1.0F);
   EXPECT_FLOAT_EQ(choose_ui_scale(std::numeric_limits<float>::quiet_NaN()).scale, 1.0F);
 }

@@ -24,7 +24,7 @@ struct SubjectScreenLink {
   std::vector<std::string> monitors;  // monitor_label() of each
   int placed_monitor = -1;            // where it is (or would open): the dropdown shows it
   bool shown = false;                 // a window is up and drawing
-  std::string problem;  // why the last attempt to open it failed ("" = none)
+  std::string problem;                // why the last attempt to open it failed ("" = none)
 };
 
 // `lmc-workbench --subject-screen [MONITOR|window]`: a number picks the monitor (0 = the primary;

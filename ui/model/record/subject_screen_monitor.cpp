@@ -32,7 +32,8 @@ int choose_subject_monitor(const std::vector<Monitor>& monitors, int chosen, con
 }
 
 SubjectScreenPlace place_subject_screen(const std::vector<Monitor>& monitors, int monitor, bool windowed,
-                                        const ScreenRect& operator_window, const std::optional<ScreenRect>& remembered) {
+                                        const ScreenRect& operator_window,
+                                        const std::optional<ScreenRect>& remembered) {
   SubjectScreenPlace place;
   place.monitor = monitor >= 0 && monitor < static_cast<int>(monitors.size()) ? monitor : -1;
   if (place.monitor >= 0 && !windowed) {

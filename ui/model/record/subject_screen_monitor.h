@@ -33,7 +33,7 @@ int find_monitor(const std::vector<Monitor>& monitors, const Monitor& saved);
 int choose_subject_monitor(const std::vector<Monitor>& monitors, int chosen, const std::optional<Monitor>& saved);
 
 struct SubjectScreenPlace {
-  int monitor = -1;            // index into the monitors; -1 when none is known
+  int monitor = -1;             // index into the monitors; -1 when none is known
   bool covers_monitor = false;  // borderless over the whole monitor; else a window at `rect`
   ScreenRect rect;
   bool operator==(const SubjectScreenPlace&) const = default;

@@ -30,8 +30,7 @@ bool parse_ui_scale(const std::string& text, std::optional<float>& scale, std::s
   char* end = nullptr;
   const double value = std::strtod(number.c_str(), &end);
   const double s = percent ? value / 100.0 : value;
-  if (number.empty() || end != number.c_str() + number.size() || !std::isfinite(s) || s < kMinScale ||
-      s > kMaxScale) {
+  if (number.empty() || end != number.c_str() + number.size() || !std::isfinite(s) || s < kMinScale || s > kMaxScale) {
     error = "--ui-scale: '" + text + "' is not a scale from 1 to 3 (1.5 or 150% for a 150 % screen, or auto)";
     return false;
   }
