@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # The Windows workbench's window under Wine and Xvfb, as unpacked from the zip: `--capture` renders
 # every tab, each picture checked as the Linux capture test checks them (tests/smoke/check_png.py:
-# present, window-sized, not blank; --check-text: no text cut), and again with Windows' display
+# present, window-sized, not blank; --check-text: no text cut; the Review tab on a quick simulated
+# session the zip's lmc.exe records first, as the demo is on Linux), and again with Windows' display
 # scaling at 150 % (144 dpi): the same 1280 x 800 layout in 1920 x 1200 pixels, nothing cut. With
 # LMC_LINUX_CAPTURE_DIR (a Linux `--capture` of the same build) the pictures must be the same set.
 #
@@ -35,7 +36,20 @@ capture() {
   end_wine
 }
 
-capture capture 96 1280x800 --also-size 1024x700 --check-text
+# The demo data the Review tab's pictures show: a quick session on the simulated rig, recorded by
+# the zip's lmc.exe.
+new_prefix wineprefix-workbench-96 96
+mkdir -p "$out/demo"
+lmc_exe=$out/unpacked/lmc-workbench/lmc.exe
+"$wine" "$lmc_exe" session new --subject W01 --protocol quick --hand-length-mm 180 --hand-breadth-mm 82 \
+  -o "$(winepath "$out/demo")\\W01" >"$out/demo.log" 2>&1 &&
+  "$wine" "$lmc_exe" session run "$(winepath "$out/demo")\\W01" --backend sim --fast --auto --quiet --seed 5 \
+    >>"$out/demo.log" 2>&1 || { echo "workbench_under_wine: lmc.exe could not record the demo session ($out/demo.log)"; status=1; }
+demo=$(winepath "$out/demo")\\W01
+end_wine
+step "the demo session for the Review tab: $out/demo/W01"
+
+capture capture 96 1280x800 --also-size 1024x700 --check-text --review "$demo"
 python3 "$root/tests/smoke/check_png.py" "$out/capture" 1280 800 || status=1
 for tab in layout devices record review; do
   [ -f "$out/capture/$tab.png" ] || { echo "workbench_under_wine: no picture of the $tab tab"; status=1; }
@@ -51,7 +65,7 @@ fi
 step "every tab at 96 dpi: $out/capture"
 
 # 150 %: Windows tells the program (GLFW: the window's content scale), the workbench scales.
-capture capture-144dpi 144 1920x1200 --check-text
+capture capture-144dpi 144 1920x1200 --check-text --review "$demo"
 python3 "$root/tests/smoke/check_png.py" "$out/capture-144dpi" 1920 1200 || status=1
 step "every tab at 144 dpi: $out/capture-144dpi"
 
