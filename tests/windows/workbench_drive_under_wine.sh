@@ -23,6 +23,7 @@ mkdir -p "$out/sessions" "$out/config"
 export LMC_SESSIONS_DIR LMC_STATUS_TRACE
 LMC_SESSIONS_DIR=$(winepath "$out/sessions")
 LMC_STATUS_TRACE=$(winepath "$out/status-trace.txt")
+end_wine  # a Wine started without the display would not open a window on it
 
 cat > "$out/drive.sh" <<'DRIVE'
 #!/usr/bin/env bash

@@ -29,9 +29,13 @@ capture() {
   shift 3
   new_prefix "wineprefix-workbench-$dpi" "$dpi"
   mkdir -p "$out/$name" "$out/$name-sessions"
+  local sessions pictures
+  sessions=$(winepath "$out/$name-sessions")
+  pictures=$(winepath "$out/$name")
+  end_wine  # a Wine started without the display would not open a window on it
   # The Devices tab's calibration records into the sessions folder: the test's, not the user's.
-  LMC_SESSIONS_DIR=$(winepath "$out/$name-sessions") LMC_LAYOUT_HEATMAP_CELLS=24 \
-    xvfb-run -a -s "-screen 0 ${screen}x24" "$wine" "$app" --capture "$(winepath "$out/$name")" "$@" \
+  LMC_SESSIONS_DIR=$sessions LMC_LAYOUT_HEATMAP_CELLS=24 \
+    xvfb-run -a -s "-screen 0 ${screen}x24" "$wine" "$app" --capture "$pictures" "$@" \
     >"$out/$name.log" 2>&1 || { echo "lmc-workbench.exe --capture ended with $? (log: $out/$name.log)"; tail -20 "$out/$name.log"; status=1; }
   end_wine
 }

@@ -35,7 +35,10 @@ new_prefix() {
   "$wineserver" -w
 }
 
-# Ends this prefix's Wine processes (its wineserver outlives the programs, and the display with it).
+# Ends this prefix's Wine processes: its wineserver outlives the programs, and a program with a
+# window started while a wineserver runs that began without the display (winepath, reg) fails
+# ("Failed to create helper window").
 end_wine() {
   "$wineserver" -k 2>/dev/null || true
+  "$wineserver" -w 2>/dev/null || true
 }

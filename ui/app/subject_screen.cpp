@@ -106,7 +106,11 @@ void SubjectScreen::open(SubjectScreenLink& link, const std::vector<Monitor>& mo
 void SubjectScreen::frame(SubjectScreenLink& link, const std::string& png_path) {
   const std::vector<Monitor> monitors = list_monitors();
   link.monitors.clear();
-  for (const auto& m : monitors) link.monitors.push_back(monitor_label(m));
+  link.monitor_shorts.clear();
+  for (size_t i = 0; i < monitors.size(); ++i) {
+    link.monitors.push_back(monitor_label(monitors[i]));
+    link.monitor_shorts.push_back(monitor_short_label(static_cast<int>(i), monitors[i]));
+  }
   remember_monitor_choice(link, monitors);
   if (window_ && window_->closed_by_user()) {
     remember_placement();

@@ -107,6 +107,10 @@ TEST(SubjectScreenMonitor, LabelsSayWhichIsThePrimary) {
   EXPECT_EQ(monitor_label(kLaptop), "eDP-1 (1920x1080, primary)");
   EXPECT_EQ(monitor_label(kProjector), "HDMI-1 (1280x800)");
   EXPECT_EQ(monitor_label(Monitor{"", {0, 0, 800, 600}, false}), "monitor (800x600)");
+  // The closed dropdown: no name (Windows' "Generic Non-PnP Monitor" did not fit its box).
+  EXPECT_EQ(monitor_short_label(0, Monitor{"Generic Non-PnP Monitor", {0, 0, 1920, 1080}, true}),
+            "1: 1920x1080, primary");
+  EXPECT_EQ(monitor_short_label(1, kProjector), "2: 1280x800");
 }
 
 }  // namespace subject_screen_monitor_test

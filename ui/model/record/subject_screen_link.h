@@ -21,10 +21,11 @@ struct SubjectScreenLink {
   // and then the bench decides (subject_screen_windowed).
   std::optional<bool> windowed;
   // ---- set by the window's side ----
-  std::vector<std::string> monitors;  // monitor_label() of each
-  int placed_monitor = -1;            // where it is (or would open): the dropdown shows it
-  bool shown = false;                 // a window is up and drawing
-  std::string problem;                // why the last attempt to open it failed ("" = none)
+  std::vector<std::string> monitors;        // monitor_label() of each
+  std::vector<std::string> monitor_shorts;  // monitor_short_label() of each
+  int placed_monitor = -1;                  // where it is (or would open): the dropdown shows it
+  bool shown = false;                       // a window is up and drawing
+  std::string problem;                      // why the last attempt to open it failed ("" = none)
 };
 
 // `lmc-workbench --subject-screen [MONITOR|window]`: a number picks the monitor (0 = the primary;

@@ -9,6 +9,11 @@ std::string monitor_label(const Monitor& m) {
          std::to_string(m.rect.height) + (m.primary ? ", primary)" : ")");
 }
 
+std::string monitor_short_label(int index, const Monitor& m) {
+  return std::to_string(index + 1) + ": " + std::to_string(m.rect.width) + "x" + std::to_string(m.rect.height) +
+         (m.primary ? ", primary" : "");
+}
+
 int find_monitor(const std::vector<Monitor>& monitors, const Monitor& saved) {
   int same_name = -1, named = 0;
   for (size_t i = 0; i < monitors.size(); ++i) {

@@ -20,8 +20,11 @@ struct Monitor {
   bool operator==(const Monitor&) const = default;
 };
 
-// "HDMI-1 (1920x1080)", "eDP-1 (1920x1080, primary)": the Record tab's dropdown.
+// "HDMI-1 (1920x1080)", "eDP-1 (1920x1080, primary)": the Record tab's dropdown list.
 std::string monitor_label(const Monitor& m);
+// "2: 1920x1080", "1: 1920x1080, primary" (index + 1): the closed dropdown, which has no room for
+// Windows' names ("Generic Non-PnP Monitor").
+std::string monitor_short_label(int index, const Monitor& m);
 
 // The monitor a saved choice means now: the same name at the same place, else the only one of
 // that name. -1 when it is not connected (or two of that name moved).
