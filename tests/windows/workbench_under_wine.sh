@@ -23,7 +23,9 @@ step_start=$SECONDS
 step() { echo "workbench_under_wine: $* (+$((SECONDS - step_start)) s)"; }
 
 # capture NAME DPI SCREEN ARGS...: every tab into $out/NAME under a prefix at DPI, on an Xvfb
-# screen of SCREEN (WxH); the workbench's own output in $out/NAME.log.
+# screen of SCREEN (WxH, larger than the window: Wine, as Windows, keeps a window with its title
+# bar inside the screen and would shrink a window the screen's size); the workbench's own output
+# in $out/NAME.log.
 capture() {
   local name=$1 dpi=$2 screen=$3
   shift 3
@@ -53,7 +55,7 @@ demo=$(winepath "$out/demo")\\W01
 end_wine
 step "the demo session for the Review tab: $out/demo/W01"
 
-capture capture 96 1280x800 --also-size 1024x700 --check-text --review "$demo"
+capture capture 96 1400x900 --also-size 1024x700 --check-text --review "$demo"
 python3 "$root/tests/smoke/check_png.py" "$out/capture" 1280 800 || status=1
 for tab in layout devices record review; do
   [ -f "$out/capture/$tab.png" ] || { echo "workbench_under_wine: no picture of the $tab tab"; status=1; }
@@ -69,7 +71,7 @@ fi
 step "every tab at 96 dpi: $out/capture"
 
 # 150 %: Windows tells the program (GLFW: the window's content scale), the workbench scales.
-capture capture-144dpi 144 1920x1200 --check-text --review "$demo"
+capture capture-144dpi 144 2100x1350 --check-text --review "$demo"
 python3 "$root/tests/smoke/check_png.py" "$out/capture-144dpi" 1920 1200 || status=1
 step "every tab at 144 dpi: $out/capture-144dpi"
 
