@@ -11,12 +11,8 @@
 # session and logs (default BUILD_DIR/workbench-drive). Needs wine64, Xvfb, xdotool and unzip.
 set -euo pipefail
 root=$(cd "$(dirname "$0")/../.." && pwd)
-build=$(cd "${1:-$root/build/windows}" && pwd)
-out=${2:-$build/workbench-drive}
-rm -rf "$out" && mkdir -p "$out"
-out=$(cd "$out" && pwd)
 # shellcheck source=tests/windows/workbench_wine_env.sh
-source "$root/tests/windows/workbench_wine_env.sh"
+source "$root/tests/windows/workbench_wine_env.sh" workbench-drive "$@"
 new_prefix wineprefix-workbench-96 96
 mkdir -p "$out/sessions" "$out/config"
 # The test's own sessions folder and status trace, as Windows paths.

@@ -12,12 +12,8 @@
 # pictures (default BUILD_DIR/workbench-wine). Needs wine64, Xvfb (xvfb-run) and unzip.
 set -euo pipefail
 root=$(cd "$(dirname "$0")/../.." && pwd)
-build=$(cd "${1:-$root/build/windows}" && pwd)
-out=${2:-$build/workbench-wine}
-rm -rf "$out" && mkdir -p "$out"
-out=$(cd "$out" && pwd)
 # shellcheck source=tests/windows/workbench_wine_env.sh
-source "$root/tests/windows/workbench_wine_env.sh"
+source "$root/tests/windows/workbench_wine_env.sh" workbench-wine "$@"
 status=0
 step_start=$SECONDS
 step() { echo "workbench_under_wine: $* (+$((SECONDS - step_start)) s)"; }

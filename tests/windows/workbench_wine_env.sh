@@ -1,7 +1,13 @@
-# The Windows workbench as a lab unpacks it, under Wine, for the scripts beside this file (sourced
-# by them). Expects $build (the Windows build folder, holding lmc-workbench-windows-x64.zip) and
-# $out (the test's own folder). Sets $wine, $app (the unpacked lmc-workbench.exe) and WINEPREFIX;
-# gives winepath (a Linux path as Wine's Windows path) and new_prefix NAME [DPI].
+# The Windows workbench as a lab unpacks it, under Wine, for the scripts beside this file, which
+# source it with: DEFAULT_OUT_NAME [BUILD_DIR [OUT_DIR]] (BUILD_DIR: the Windows build holding
+# lmc-workbench-windows-x64.zip, default build/windows; OUT_DIR: the test's own folder, emptied,
+# default BUILD_DIR/DEFAULT_OUT_NAME). Expects $root (the checkout). Sets $build, $out, $wine,
+# $app (the unpacked lmc-workbench.exe) and WINEPREFIX; gives winepath (a Linux path as Wine's
+# Windows path), new_prefix NAME [DPI] and end_wine.
+build=$(cd "${2:-$root/build/windows}" && pwd)
+out=${3:-$build/$1}
+rm -rf "$out" && mkdir -p "$out"
+out=$(cd "$out" && pwd)
 wine=$(command -v wine64 || true)
 [ -n "$wine" ] || wine=/usr/lib/wine/wine64
 [ -x "$wine" ] || { echo "workbench under Wine: wine64 is missing (scripts/install-deps --windows)" >&2; exit 1; }
