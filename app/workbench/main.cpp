@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
+#include <optional>
 #include <utility>
 
 #include "core/platform/command_line.h"
@@ -11,6 +12,7 @@
 #include "devices/leapc/leapc_library.h"
 #include "ui/app/capture.h"
 #include "ui/app/workbench_shell.h"
+#include "ui/model/shell/ui_scale.h"
 #include "ui/platform/gl_window.h"
 
 int main(int argc, char** argv) {
@@ -66,9 +68,17 @@ int main(int argc, char** argv) {
   app.add_flag("--check-text", check_text,
                "With --capture: fail (exit 3) when a picture shows text cut by its window or its widget, shortened "
                "with an ellipsis, or drawn over other text; the list in DIR/cut-text.txt");
-  app.add_option("--size", width, "Window width in pixels")->check(CLI::Range(640, 7680));
-  app.add_option("--height", height, "Window height in pixels")->check(CLI::Range(480, 4320));
+  app.add_option("--size", width, "Window width (in pixels at a UI scale of 1)")->check(CLI::Range(640, 7680));
+  app.add_option("--height", height, "Window height (in pixels at a UI scale of 1)")->check(CLI::Range(480, 4320));
+  std::string ui_scale_text;
+  app.add_option("--ui-scale", ui_scale_text,
+                 "Text and controls this many times larger: 1.5 or 150% (default auto: the screen's scaling)");
   CLI11_PARSE(app, argc, argv);
+  std::optional<float> ui_scale;
+  if (std::string error; !lmc::ui::parse_ui_scale(ui_scale_text, ui_scale, error)) {
+    std::cerr << "lmc-workbench: " << error << "\n";
+    return 2;
+  }
   if (!leapc_library.empty()) lmc::devices::set_leapc_library_path(leapc_library);
   // An unknown LMC_KERNEL leaves the fastest kernel build running; say so rather than ignore it.
   if (const std::string problem = lmc::kernel_setting_problem(); !problem.empty()) {
@@ -80,6 +90,7 @@ int main(int argc, char** argv) {
       lmc::ui::CaptureOptions capture{capture_dir, capture_tabs, width, height, {review.begin(), review.end()}};
       if (!also_size.empty()) std::sscanf(also_size.c_str(), "%dx%d", &capture.also_width, &capture.also_height);
       capture.check_text = check_text;
+      capture.ui_scale = ui_scale;
       return lmc::ui::run_capture(capture);
     }
     lmc::ui::ShellStartup startup;
@@ -98,7 +109,7 @@ int main(int argc, char** argv) {
       startup.record = lmc::ui::RecordStartup{session, backend, fast};
       if (startup.tab.empty()) startup.tab = "record";
     }
-    return lmc::ui::run_interactive(width, height, std::move(startup));
+    return lmc::ui::run_interactive(width, height, std::move(startup), ui_scale);
   } catch (const std::exception& e) {
     std::cerr << "lmc-workbench: " << e.what() << "\n";
     return 1;

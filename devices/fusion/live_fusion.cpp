@@ -1,6 +1,7 @@
 #include "devices/fusion/live_fusion.h"
 
 #include <algorithm>
+#include <chrono>
 #include <exception>
 #include <utility>
 
@@ -61,7 +62,13 @@ void LiveFusion::run(const std::stop_token& stop) {
     batch.clear();
     {
       std::unique_lock lock(queue_mutex_);
-      queue_cv_.wait(lock, stop, [this] { return count_ > 0; });
+      // Bounded, as the recorder's wait: with MinGW-w64's threads (winpthreads) under Wine the
+      // stop callback's wake-up was missed and stop()'s join hung the workbench at exit. A waiter
+      // that looks again every 100 ms ends whatever the runtime does with the notification.
+      if (!queue_cv_.wait_for(lock, stop, std::chrono::milliseconds(100), [this] { return count_ > 0; })) {
+        if (stop.stop_requested()) return;
+        continue;
+      }
       if (stop.stop_requested()) return;
       for (; count_ > 0; --count_) {
         batch.push_back(ring_[head_]);

@@ -77,8 +77,8 @@ size_t tab_index(const std::string& id) {
 
 }  // namespace
 
-int run_interactive(int width, int height, ShellStartup startup) {
-  GlWindow window(WindowOptions{width, height, true, "LMC Workbench"});
+int run_interactive(int width, int height, ShellStartup startup, std::optional<float> ui_scale) {
+  GlWindow window(WindowOptions{width, height, true, "LMC Workbench", ui_scale});
   if (startup.recent_files_path.empty()) {
     if (const auto dir = user_config_dir(); !dir.empty()) startup.recent_files_path = dir / "recent_files.json";
   }
@@ -240,15 +240,15 @@ int run_capture(const CaptureOptions& options) {
   std::filesystem::create_directories(options.dir);
   // Before the shell: a script's scratch folders are removed after the tabs recording into them.
   std::vector<std::unique_ptr<TabCapture>> scripts;
-  GlWindow window(WindowOptions{options.width, options.height, false, "LMC Workbench"});
+  GlWindow window(WindowOptions{options.width, options.height, false, "LMC Workbench", options.ui_scale});
   ShellStartup startup;  // no recent-files path: a capture never touches the user's list
   startup.review = options.review;
   WorkbenchShell shell(std::move(startup));
   install_picture_renderer(shell, window);
   open_help_from_environment(shell);
-  // The subject screen renders hidden at the main window's size, so its picture is checked like
-  // the others.
-  SubjectScreen subject(window.handle(), options.width, options.height);
+  // The subject screen renders hidden at the main window's size in pixels, so its picture is
+  // checked like the others.
+  SubjectScreen subject(window.handle(), window.framebuffer_width(), window.framebuffer_height());
   return CaptureRun(options, shell, window, subject, scripts).run(ids);
 }
 

@@ -1,6 +1,7 @@
 #pragma once
 // The two ways the workbench runs: interactively, or rendering tabs to PNG for review and tests.
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -8,7 +9,8 @@
 
 namespace lmc::ui {
 
-int run_interactive(int width, int height, ShellStartup startup = {});
+// `ui_scale`: --ui-scale (ui/model/shell/ui_scale.h); unset: the screen's content scale.
+int run_interactive(int width, int height, ShellStartup startup = {}, std::optional<float> ui_scale = {});
 struct CaptureOptions {
   std::string dir;
   std::vector<std::string> tab_ids;  // all tabs when empty
@@ -20,6 +22,8 @@ struct CaptureOptions {
   // Every picture's text checked (ui/app/capture/text_fit_check.h); what is cut is listed on
   // stderr and in DIR/cut-text.txt, and the capture fails.
   bool check_text = false;
+  // --ui-scale: the pictures at this scale (width × scale pixels wide); unset: the screen's.
+  std::optional<float> ui_scale{};
 };
 
 // Renders each requested tab in a hidden window to DIR/<tab>.png, plus the tab's extra pictures

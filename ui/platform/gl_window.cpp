@@ -8,6 +8,7 @@
 #include <imgui.h>
 #include <stb_image_write.h>
 
+#include <cfloat>
 #include <cstdlib>
 #include <filesystem>
 #include <stdexcept>
@@ -84,7 +85,14 @@ GlWindow::GlWindow(const WindowOptions& options) {
   // into their own multisampled targets. Multisampling the window only multiplied the cost of
   // every pixel drawn, which a software renderer (Xvfb, a virtual machine) pays on the CPU.
   glfwWindowHint(GLFW_SAMPLES, 0);
-  window_ = glfwCreateWindow(options.width, options.height, options.title.c_str(), nullptr, nullptr);
+  // Sized in units: GLFW scales the window by the monitor's content scale itself (and, on Windows,
+  // again when it moves to a monitor of another DPI); an override scales it here instead.
+  scale_override_ = options.ui_scale;
+  const UiScale initial = choose_ui_scale(1.0F, scale_override_);
+  glfwWindowHint(GLFW_SCALE_TO_MONITOR, scale_override_ ? GLFW_FALSE : GLFW_TRUE);
+  window_ = glfwCreateWindow(scaled_pixels(options.width, initial), scaled_pixels(options.height, initial),
+                             options.title.c_str(), nullptr, nullptr);
+  glfwDefaultWindowHints();  // the subject screen's window sets its own
   if (window_ == nullptr) {
     glfwTerminate();
     throw std::runtime_error("cannot create an OpenGL 3.3 core window: " + g_last_glfw_error);
@@ -97,7 +105,10 @@ GlWindow::GlWindow(const WindowOptions& options) {
   ImGuiIO& io = ImGui::GetIO();
   ini_path_ = options.visible ? user_ini_path() : std::string();
   io.IniFilename = ini_path_.empty() ? nullptr : ini_path_.c_str();
-  load_ui_fonts(io);  // the built-in font with DejaVu Sans merged in: dashes, arrows, ≤, µ …
+  float content_x = 1.0F, content_y = 1.0F;
+  glfwGetWindowContentScale(window_, &content_x, &content_y);
+  scale_ = choose_ui_scale(content_x, scale_override_);
+  load_fonts();
   ImGui::StyleColorsDark();
   ImGuiStyle& style = ImGui::GetStyle();
   style.WindowRounding = 3.0f;
@@ -106,7 +117,42 @@ GlWindow::GlWindow(const WindowOptions& options) {
   ImGui_ImplGlfw_InitForOpenGL(window_, true);
   // After ImGui's backend installed its callbacks: ours runs first and forwards to it.
   g_imgui_key_callback = glfwSetKeyCallback(window_, on_key);
+  glfwSetWindowUserPointer(window_, this);
+  glfwSetWindowContentScaleCallback(window_, on_content_scale);
   ImGui_ImplOpenGL3_Init("#version 330 core");
+}
+
+void GlWindow::on_content_scale(GLFWwindow* window, float /*x*/, float /*y*/) {
+  if (auto* self = static_cast<GlWindow*>(glfwGetWindowUserPointer(window))) self->content_scale_changed_ = true;
+}
+
+void GlWindow::load_fonts() {
+  ImGuiIO& io = ImGui::GetIO();
+  io.Fonts->Clear();
+  // The built-in font with DejaVu Sans merged in (dashes, arrows, ≤, µ …), rasterised at the
+  // window's pixels and drawn at the 13 units the layouts are made for.
+  load_ui_fonts(io, scale_.font_px);
+  io.FontGlobalScale = 1.0F / scale_.scale;
+}
+
+void GlWindow::follow_content_scale() {
+  content_scale_changed_ = false;
+  float x = 1.0F, y = 1.0F;
+  glfwGetWindowContentScale(window_, &x, &y);
+  const UiScale next = choose_ui_scale(x, scale_override_);
+  if (next == scale_) return;
+  scale_ = next;
+  load_fonts();
+  ImGui_ImplOpenGL3_DestroyFontsTexture();
+  ImGui_ImplOpenGL3_CreateFontsTexture();
+}
+
+void GlWindow::to_ui_units() const {
+  ImGuiIO& io = ImGui::GetIO();
+  const float s = scale_.scale;
+  io.DisplaySize = ImVec2(io.DisplaySize.x / s, io.DisplaySize.y / s);
+  io.DisplayFramebufferScale = ImVec2(io.DisplayFramebufferScale.x * s, io.DisplayFramebufferScale.y * s);
+  if (io.MousePos.x > -FLT_MAX && io.MousePos.y > -FLT_MAX) io.MousePos = ImVec2(io.MousePos.x / s, io.MousePos.y / s);
 }
 
 GlWindow::~GlWindow() {
@@ -129,7 +175,8 @@ void GlWindow::set_title(const std::string& title) {
   glfwSetWindowTitle(window_, title.c_str());
 }
 
-void GlWindow::set_size(int width, int height) {
+void GlWindow::set_size(int units_wide, int units_high) {
+  const int width = scaled_pixels(units_wide, scale_), height = scaled_pixels(units_high, scale_);
   glfwSetWindowSize(window_, width, height);
   for (int i = 0; i < 100 && (framebuffer_width() != width || framebuffer_height() != height); ++i) {
     glfwWaitEventsTimeout(0.01);
@@ -139,8 +186,10 @@ void GlWindow::set_size(int width, int height) {
 void GlWindow::begin_frame() {
   deliver_held_releases();
   glfwPollEvents();
+  if (content_scale_changed_) follow_content_scale();
   ImGui_ImplOpenGL3_NewFrame();
   ImGui_ImplGlfw_NewFrame();
+  to_ui_units();
   ImGui::NewFrame();
 }
 

@@ -37,43 +37,45 @@ class ContextSwitch {
   ImGuiContext* imgui_;
 };
 
+int g_monitor_changes = 0;
+void on_monitor(GLFWmonitor* /*monitor*/, int /*event*/) {
+  ++g_monitor_changes;
+}
 }  // namespace
 
-std::vector<MonitorInfo> list_monitors() {
-  std::vector<MonitorInfo> out;
+int monitor_changes() {
+  static const bool watching = [] {
+    glfwSetMonitorCallback(on_monitor);
+    return true;
+  }();
+  (void)watching;
+  return g_monitor_changes;
+}
+
+std::vector<Monitor> list_monitors() {
+  std::vector<Monitor> out;
   int count = 0;
   GLFWmonitor** monitors = glfwGetMonitors(&count);
   for (int i = 0; i < count; ++i) {
-    MonitorInfo m;
+    Monitor m;
     const char* name = glfwGetMonitorName(monitors[i]);
-    glfwGetMonitorPos(monitors[i], &m.x, &m.y);
+    m.name = name ? name : "";
+    glfwGetMonitorPos(monitors[i], &m.rect.x, &m.rect.y);
     if (const GLFWvidmode* mode = glfwGetVideoMode(monitors[i])) {
-      m.width = mode->width;
-      m.height = mode->height;
+      m.rect.width = mode->width;
+      m.rect.height = mode->height;
     }
-    m.name = std::string(name ? name : "monitor") + " (" + std::to_string(m.width) + "x" + std::to_string(m.height) +
-             (i == 0 ? ", primary)" : ")");
+    m.primary = i == 0;  // GLFW lists the primary monitor first
     out.push_back(std::move(m));
   }
   return out;
 }
 
 SubjectWindow::SubjectWindow(GLFWwindow* share, const SubjectWindowOptions& options) : options_(options) {
-  const std::vector<MonitorInfo> monitors = list_monitors();
-  MonitorInfo where{"", 0, 0, 1024, 640};
-  if (!monitors.empty()) {
-    const size_t i = options.monitor >= 0 && options.monitor < static_cast<int>(monitors.size())
-                         ? static_cast<size_t>(options.monitor)
-                         : monitors.size() - 1;
-    where = monitors[i];
-  }
-  int w = where.width, h = where.height;
+  int w = options.place.width, h = options.place.height;
   if (!options.visible) {
     w = options.width;
     h = options.height;
-  } else if (options.windowed) {
-    w = options.window_width;
-    h = options.window_height;
   }
   glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 3);
   glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 3);
@@ -91,10 +93,7 @@ SubjectWindow::SubjectWindow(GLFWwindow* share, const SubjectWindowOptions& opti
   glfwDefaultWindowHints();
   if (window_ == nullptr) throw std::runtime_error("cannot open the subject screen window (GLFW could not create it)");
   if (options.visible) {
-    if (options.windowed)
-      glfwSetWindowPos(window_, options.window_x, options.window_y);
-    else
-      glfwSetWindowPos(window_, where.x, where.y);
+    glfwSetWindowPos(window_, options.place.x, options.place.y);
     glfwShowWindow(window_);
   }
 

@@ -8,28 +8,31 @@
 #include <string>
 #include <vector>
 
+#include "ui/model/record/subject_screen_monitor.h"
+
 struct GLFWwindow;
 struct ImGuiContext;
 struct ImFont;
 
 namespace lmc::ui {
 
-struct MonitorInfo {
-  std::string name;  // "HDMI-1 (1920×1080)"
-  int x = 0, y = 0, width = 0, height = 0;
-};
 // The monitors GLFW sees now (GLFW must be initialised: the main window exists). The first is
 // the primary one.
-std::vector<MonitorInfo> list_monitors();
+std::vector<Monitor> list_monitors();
+// Goes up by one each time a monitor is connected or disconnected (GLFW's monitor callback,
+// installed by the first call).
+int monitor_changes();
 // Where `window` is on the desktop: its position and size in screen coordinates.
 void window_placement(GLFWwindow* window, int& x, int& y, int& width, int& height);
 
 struct SubjectWindowOptions {
-  int monitor = -1;       // index into list_monitors(); -1 or out of range: the last one
-  bool windowed = false;  // a decorated window at `window_rect` instead of covering the monitor
-  int window_x = 40, window_y = 40, window_width = 1024, window_height = 640;  // windowed: where
-  bool visible = true;                                                         // false for --capture
-  int width = 0, height = 0;                                                   // with !visible: the picture's size
+  // Where it opens on the desktop: a monitor's rectangle to cover, borderless, or (windowed) a
+  // decorated window's (subject_screen_monitor.h chooses it).
+  ScreenRect place{40, 40, 1024, 640};
+  bool windowed = false;
+  Monitor on;                 // the monitor it covers or was placed on (empty name: none known)
+  bool visible = true;        // false for --capture
+  int width = 0, height = 0;  // with !visible: the picture's size
   // > 0: the normal font's size in pixels (large and huge keep their ratio to it). The off-screen
   // figure pictures (offscreen_png.h) use the same window at a figure's text size.
   float normal_font_px = 0;

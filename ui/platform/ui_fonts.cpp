@@ -1,6 +1,10 @@
 #include "ui/platform/ui_fonts.h"
 
+#include <cstdlib>
 #include <system_error>
+#include <vector>
+
+#include "core/common/paths.h"
 
 namespace lmc::ui {
 
@@ -23,24 +27,36 @@ const ImWchar* ui_text_glyph_ranges() {
 }
 
 std::filesystem::path ui_font_file(bool bold) {
-  const std::filesystem::path file =
-      bold ? "/usr/share/fonts/truetype/dejavu/DejaVuSans-Bold.ttf" : "/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf";
+  const char* name = bold ? "DejaVuSans-Bold.ttf" : "DejaVuSans.ttf";
+  std::vector<std::filesystem::path> candidates = {
+      // A packed build (the Windows zip) may carry the font with its assets.
+      lmc::assets_dir() / "fonts" / name,
+      std::filesystem::path("/usr/share/fonts/truetype/dejavu") / name,
+  };
+#ifdef _WIN32
+  // Without DejaVu Sans, Windows' own UI font has the dashes, arrows, Greek and most symbols.
+  if (const char* windows = std::getenv("WINDIR"); windows != nullptr && *windows != '\0')
+    candidates.push_back(std::filesystem::path(windows) / "Fonts" / (bold ? "segoeuib.ttf" : "segoeui.ttf"));
+#endif
   std::error_code ec;
-  return std::filesystem::is_regular_file(file, ec) ? file : std::filesystem::path();
+  for (const auto& file : candidates)
+    if (std::filesystem::is_regular_file(file, ec)) return file;
+  return {};
 }
 
-bool load_ui_fonts(ImGuiIO& io) {
+bool load_ui_fonts(ImGuiIO& io, float size_px) {
   ImFontConfig base;
+  base.SizePixels = size_px;
   io.Fonts->AddFontDefault(&base);
   const std::filesystem::path file = ui_font_file();
   if (file.empty()) return false;
   ImFontConfig merge;
   merge.MergeMode = true;
-  // The built-in font is 13 px; DejaVu Sans at 13 px has the same x-height, so merged glyphs sit
-  // on the same line and the layouts keep their widths.
+  // DejaVu Sans at the built-in font's size has the same x-height, so merged glyphs sit on the
+  // same line and the layouts keep their widths.
   merge.GlyphOffset = ImVec2(0.0F, 0.0F);
   merge.PixelSnapH = true;
-  return io.Fonts->AddFontFromFileTTF(file.string().c_str(), 13.0F, &merge, ui_text_glyph_ranges()) != nullptr;
+  return io.Fonts->AddFontFromFileTTF(file.string().c_str(), size_px, &merge, ui_text_glyph_ranges()) != nullptr;
 }
 
 ImFont* add_large_ui_font(ImGuiIO& io, float size_px) {

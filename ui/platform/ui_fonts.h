@@ -13,12 +13,14 @@ namespace lmc::ui {
 // The code point ranges the UI's text uses beyond ASCII, as ImGui's zero-terminated pairs.
 const ImWchar* ui_text_glyph_ranges();
 
-// DejaVu Sans (regular or bold) where Debian installs it; empty when it is not there.
+// DejaVu Sans (regular or bold): in the assets' fonts folder (a packed build), else where Debian
+// installs it; on Windows without either, Segoe UI. Empty when none is there.
 std::filesystem::path ui_font_file(bool bold = false);
 
-// The main window's font: the built-in one with DejaVu Sans merged in for ui_text_glyph_ranges().
-// Returns false (the built-in font alone) when DejaVu Sans is missing.
-bool load_ui_fonts(ImGuiIO& io);
+// The main window's font at `size_px` (13: the built-in font's own size; more on a high-DPI
+// screen): the built-in one with DejaVu Sans merged in for ui_text_glyph_ranges(). Returns false
+// (the built-in font alone) when DejaVu Sans is missing.
+bool load_ui_fonts(ImGuiIO& io, float size_px = 13.0F);
 
 // A font of `size_px` for the subject screen: DejaVu Sans Bold with every range the UI uses, else
 // the built-in font scaled.

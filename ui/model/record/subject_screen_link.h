@@ -16,18 +16,20 @@ struct SubjectScreenLink {
   SubjectView view;
   double recording_s = 0;  // how far into the trial being recorded (0 outside one)
   bool open = false;
-  int monitor = -1;  // index into monitors; -1: the last (on a two-monitor bench, not the operator's)
+  int monitor = -1;  // index into monitors; -1: the bench decides (choose_subject_monitor)
   // The operator's choice of a plain window over covering the monitor; unset until they make one,
   // and then the bench decides (subject_screen_windowed).
   std::optional<bool> windowed;
   // ---- set by the window's side ----
-  std::vector<std::string> monitors;
-  bool shown = false;   // a window is up and drawing
-  std::string problem;  // why the last attempt to open it failed ("" = none)
+  std::vector<std::string> monitors;        // monitor_label() of each
+  std::vector<std::string> monitor_shorts;  // monitor_short_label() of each
+  int placed_monitor = -1;                  // where it is (or would open): the dropdown shows it
+  bool shown = false;                       // a window is up and drawing
+  std::string problem;                      // why the last attempt to open it failed ("" = none)
 };
 
 // `lmc-workbench --subject-screen [MONITOR|window]`: a number picks the monitor (0 = the primary;
-// none: the last), "window" a plain window. nullopt with `error` set for anything else.
+// none: the bench decides), "window" a plain window. nullopt with `error` set for anything else.
 struct SubjectScreenRequest {
   int monitor = -1;
   bool windowed = false;

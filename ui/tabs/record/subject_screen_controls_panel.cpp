@@ -4,6 +4,8 @@
 
 #include <imgui.h>
 
+#include <string>
+
 namespace lmc::ui {
 
 void SubjectScreenControlsPanel::draw() {
@@ -13,10 +15,15 @@ void SubjectScreenControlsPanel::draw() {
   anchors_.remember("toggle");
   ImGui::SameLine();
   const int n = static_cast<int>(link.monitors.size());
-  const int shown_monitor = link.monitor >= 0 && link.monitor < n ? link.monitor : n - 1;
+  // Where it is or would open (a second monitor when there is one, else the operator's pick).
+  const int shown_monitor = link.placed_monitor >= 0 && link.placed_monitor < n ? link.placed_monitor : -1;
   ImGui::SetNextItemWidth(230);
-  if (ImGui::BeginCombo(
-          "##monitor", shown_monitor >= 0 ? link.monitors[static_cast<size_t>(shown_monitor)].c_str() : "no monitor")) {
+  // Closed, the short label (Windows names monitors at length); open, the list with the names.
+  const bool has_short = shown_monitor >= 0 && static_cast<size_t>(shown_monitor) < link.monitor_shorts.size();
+  const std::string& preview = has_short            ? link.monitor_shorts[static_cast<size_t>(shown_monitor)]
+                               : shown_monitor >= 0 ? link.monitors[static_cast<size_t>(shown_monitor)]
+                                                    : std::string("no monitor");
+  if (ImGui::BeginCombo("##monitor", preview.c_str())) {
     for (int i = 0; i < n; ++i)
       if (ImGui::Selectable(link.monitors[static_cast<size_t>(i)].c_str(), i == shown_monitor)) link.monitor = i;
     ImGui::EndCombo();

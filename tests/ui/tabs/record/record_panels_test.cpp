@@ -304,12 +304,14 @@ TEST(RecordDeviceStripsPanel, ShowsEveryControllerOfTheRecordingTrial) {
 TEST(SubjectScreenControlsPanel, TheToggleOpensTheSubjectScreenAndSaysHowToCloseIt) {
   HeadlessImGui gui;
   SubjectScreenLink link;
-  link.monitors = {"DP-1", "HDMI-1"};
+  link.monitors = {"DP-1 (1920x1080, primary)", "HDMI-1 (1920x1080)"};
+  link.monitor_shorts = {"1: 1920x1080, primary", "2: 1920x1080"};
+  link.placed_monitor = 1;  // the window's side placed it on the second monitor
   SubjectScreenControlsPanel panel(link);
   const auto body = [&] { panel.draw(); };
   std::string text = gui.frame_text(body);
   EXPECT_TRUE(contains(text, "Subject screen (F2)")) << text;
-  EXPECT_TRUE(contains(text, "HDMI-1")) << "the last monitor is the default: " << text;
+  EXPECT_TRUE(contains(text, "2: 1920x1080")) << "the monitor it opens on is shown: " << text;
   const auto toggle = panel.anchors().centre("toggle");
   ASSERT_TRUE(toggle);
   gui.click(toggle->x, toggle->y, body);
