@@ -10,7 +10,7 @@ must agree to 1e-9 relative (or 1e-12 absolute), not to the bit. What `lmc proce
 those recordings inherits the difference: its fused tracks agree to the same 1e-9 (1e-13 seen), and
 its summaries (JSON) to 1e-6 relative or 1e-7 absolute, because their angles go through acos and
 atan2 near 0 and a standard deviation over frames (3e-8 degrees seen); a summary's input paths are
-compared as paths below each run's folder, since each system spells them its own way (Z:\... with
+compared as paths below each run's folder, since each system spells them its own way (Z:\\... with
 backslashes under Wine). Exit 1 when any other file differs or exists on one side only.
 
 usage: compare_outputs.py LINUX_DIR WINDOWS_DIR"""
