@@ -46,6 +46,7 @@ Recorder::~Recorder() {
   stop_requested_ = true;
   if (thread_.joinable()) {
     thread_.request_stop();
+    wake_writer();  // the writer's wait has no stop callback (run())
     thread_.join();
   }
 }
@@ -367,8 +368,13 @@ void Recorder::run(const std::stop_token& stop) {
     if (stopping && queue_.size_approx() == 0) break;
     if (popped == 0) {
       // Nothing came: sleep until a frame, the next flush or a stop request.
+      // A plain timed wait, woken by stop() itself: the stop-token overload registers a
+      // stop_callback, and MinGW-w64's libstdc++ (no futex: its semaphores wait on a condition
+      // variable) was seen to leave this thread for ever in that callback's deregistration when
+      // the stop request ran it at the same moment, with stop() joining it: a hang under Wine.
       std::unique_lock lock(wake_mutex_);
-      wake_.wait_until(lock, stop, last_push + interval, [this] { return queue_.size_approx() > 0; });
+      wake_.wait_until(lock, last_push + interval,
+                       [this, &stop] { return queue_.size_approx() > 0 || stop.stop_requested(); });
     }
   }
   if (!failed_) {
@@ -383,6 +389,7 @@ RecorderStatus Recorder::stop(const std::vector<std::pair<std::string, std::stri
   stop_requested_ = true;
   if (thread_.joinable()) {
     thread_.request_stop();
+    wake_writer();  // the writer's wait has no stop callback (run())
     thread_.join();
   }
   {

@@ -172,8 +172,7 @@ PreflightReport SessionRunner::preflight(int i, std::stop_token stop) {
       hub = hardware_hub_->hub.get();
     } else {
       probe_hub = make_recording_hub(i, 2.0, options_.sim.seed);
-      probe_hub->hub->start();
-      hub = probe_hub->hub.get();
+      hub = probe_hub->hub.get();  // started by probe_streams, once it listens
     }
     const auto timeout = std::chrono::milliseconds(static_cast<int>(options_.preflight_timeout_s * 1000));
     in.slots = probe_streams(*hub, timeout, 20, stop);

@@ -1,8 +1,12 @@
 #include "devices/session_runner/stream_probe.h"
 
+#include <algorithm>
 #include <thread>
 
 namespace lmc::devices {
+namespace {
+constexpr std::chrono::milliseconds kSimulatedProbeLimit{120'000};
+}  // namespace
 
 bool StreamProbe::offer(const HandFrame& frame, std::int64_t /*host_receive_ns*/, bool /*may_wait*/) {
   std::lock_guard lock(mutex_);
@@ -33,8 +37,18 @@ std::vector<SlotProbe> probe_streams(DeviceHub& hub, std::chrono::milliseconds t
                                      std::stop_token stop) {
   StreamProbe probe;
   hub.set_consumer(&probe);
+  // Started only once the probe listens: a simulated source played faster than real time
+  // delivers its two seconds in a few milliseconds, and the thread that start() creates may run
+  // them all before this thread, descheduled on a busy machine (or under Wine), attaches anyone.
+  if (!hub.running()) hub.start();
   const int slots = hub.layout().device_count();
-  const auto deadline = std::chrono::steady_clock::now() + timeout;
+  // A hub that plays simulated time faster than real time (lmc session run --fast) streams as fast
+  // as the machine lets it: the wall clock then measures the machine, not the controllers, and a
+  // starved one (a busy CI machine; Wine, whose every wait goes through its wineserver) can take
+  // many times `timeout` for the frames a real controller sends in it. Its source is finite, so
+  // the probe waits for the frames or the source's end, with a far deadline only against a hang.
+  const auto wait = hub.realtime() ? timeout : std::max(timeout, kSimulatedProbeLimit);
+  const auto deadline = std::chrono::steady_clock::now() + wait;
   for (;;) {
     bool all = true;
     for (int id = 1; id <= slots; ++id) all = all && probe.frames(id) >= frames_wanted;

@@ -34,8 +34,10 @@ class StreamProbe final : public FrameConsumer {
   std::map<int, Seen> seen_;
 };
 
-// Attaches a probe to `hub` (which must be running and have no other consumer) until every slot
-// has sent `frames_wanted` frames or `timeout` passes, then detaches it and describes each slot.
+// Attaches a probe to `hub` (which must have no other consumer; a hub not running yet is started
+// after the probe is attached, so no frame goes unseen) until every slot has sent `frames_wanted`
+// frames or `timeout` passes (for a hub faster than real time: its sources' end, or two minutes),
+// then detaches it and describes each slot.
 std::vector<SlotProbe> probe_streams(DeviceHub& hub, std::chrono::milliseconds timeout, std::int64_t frames_wanted,
                                      std::stop_token stop = {});
 

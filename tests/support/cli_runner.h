@@ -8,7 +8,9 @@
 #include <unistd.h>
 #endif
 
+#include <cerrno>
 #include <cstdlib>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <initializer_list>
@@ -90,7 +92,18 @@ inline CliRun run_lmc(const std::string& args, std::filesystem::path log_dir = {
       "\"" + shell_prefix + (launcher.empty() ? "" : launcher + " ") + shell_quote(cli_path().string()) + " " + args +
       " >" + shell_quote((log_dir / "out").string()) + " 2>" + shell_quote((log_dir / "err").string()) + "\"";
   CliRun r;
-  r.exit_code = std::system(cmd.c_str());
+  // -1 with errno set: cmd.exe itself could not be started, so nothing ran. Seen once under Wine
+  // while other test processes were starting programs too (the cause was not found); such a start
+  // is tried again, and a third failure is said in `err`. A program that ran and failed, or
+  // crashed (an exception code, never -1), is never run again.
+  std::string launch_error;
+  for (int attempt = 0; attempt < 3; ++attempt) {
+    errno = 0;
+    r.exit_code = std::system(cmd.c_str());
+    if (r.exit_code != -1 || errno == 0) break;
+    launch_error = std::string("cannot start cmd.exe: ") + std::strerror(errno) + "\n";
+    Sleep(200);
+  }
 #else
   const std::string inner = shell_prefix + (shell_prefix.empty() ? "" : " exec ") +
                             (launcher.empty() ? "" : launcher + " ") + shell_quote(cli_path().string()) + " " + args;
@@ -103,6 +116,7 @@ inline CliRun run_lmc(const std::string& args, std::filesystem::path log_dir = {
   r.out = read_text_file(log_dir / "out");
   r.err = read_text_file(log_dir / "err");
 #ifdef _WIN32
+  if (r.exit_code == -1) r.err += launch_error;
   // The streams are text: Windows' C runtime ends their lines with CR LF; the tests compare lines.
   for (std::string* text : {&r.out, &r.err}) {
     size_t at = 0;

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <atomic>
 #include <chrono>
+#include <cmath>
 #include <string>
 #include <thread>
 #include <vector>
@@ -13,6 +14,7 @@
 #include "devices/platform/fine_timer.h"
 #include "devices/platform/udp_socket.h"
 #include "devices/vicon/vicon_trigger.h"
+#include "tests/support/wine.h"
 
 using lmc::devices::net::UdpSocket;
 
@@ -84,11 +86,13 @@ TEST(UdpSocket, TheViconTriggerReachesAListenerOverLoopback) {
   EXPECT_EQ(got, 1);  // three repeats, one message
 }
 
-TEST(FineTimerResolution, PacesFramesAt120Hz) {
-  // Windows' default timer wakes a sleeping thread every 15.6 ms: without the fine timer a 120 Hz
-  // source would deliver frames two at a time. The median frame interval must be the frame period.
-  const lmc::devices::FineTimerResolution fine;
-  using Clock = std::chrono::steady_clock;
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+// One second of frames paced at 120 Hz as a source paces them (sleeps of at most 20 ms until each
+// frame is due): the intervals between frames, sorted, in ms.
+std::vector<double> paced_intervals_ms() {
   const auto period = std::chrono::nanoseconds(1'000'000'000 / 120);
   std::vector<double> intervals_ms;
   auto due = Clock::now();
@@ -102,10 +106,57 @@ TEST(FineTimerResolution, PacesFramesAt120Hz) {
     last = now;
   }
   std::sort(intervals_ms.begin(), intervals_ms.end());
-  const double median = intervals_ms[intervals_ms.size() / 2];
-  EXPECT_NEAR(median, 1000.0 / 120.0, 1.0);
-  // With the coarse timer every other frame comes at once after a late one (about half of them);
-  // a busy machine makes a few such pairs too, never a quarter.
-  const auto bursts = std::count_if(intervals_ms.begin(), intervals_ms.end(), [](double v) { return v < 0.5 * 8.33; });
-  EXPECT_LT(bursts, 30);
+  return intervals_ms;
+}
+
+}  // namespace
+
+// Windows' default timer wakes a sleeping thread every 15.6 ms: without the fine timer a 120 Hz
+// source would deliver frames two at a time. A busy machine only ever wakes a thread later, never
+// earlier, so the shortest of many 1 ms sleeps shows the timer's step however loaded the machine
+// is: with the coarse timer every sleep after the first lasts a whole 15.6 ms step.
+TEST(FineTimerResolution, AOneMillisecondSleepLastsAboutOneMillisecond) {
+  const lmc::devices::FineTimerResolution fine;
+  double shortest_ms = 1e9;
+  for (int i = 0; i < 200; ++i) {
+    const auto before = Clock::now();
+    std::this_thread::sleep_for(std::chrono::milliseconds(1));
+    shortest_ms = std::min(shortest_ms, std::chrono::duration<double, std::milli>(Clock::now() - before).count());
+  }
+  // Windows may end a sleep up to a fraction of its 1 ms step early; none ends at once.
+  EXPECT_GT(shortest_ms, 0.5);
+  EXPECT_LT(shortest_ms, 5.0);
+}
+
+// The median frame interval is the frame period, the frames keep the rate on average, and they do
+// not come in pairs. A second on a starved machine (two cores shared by several builds) can come
+// out late in steps of several ms without the timer being at fault; the coarse timer makes every
+// second fail, starvation only some. So up to five seconds are paced, and the first good one passes.
+//
+// Under Wine the timer this guards against does not exist: Wine's waits are its wineserver's, in
+// 1 ms steps whatever timeBeginPeriod asks, and a sleeping thread wakes when Linux runs the
+// wineserver again, on a busy machine at the kernel's next tick (4 ms), so frames come 4 and 12 ms
+// apart around the right median. That is Linux's scheduling, not the Windows timer, so under Wine
+// only the median and the average rate are held; the pairs are checked on Windows (and Linux).
+TEST(FineTimerResolution, PacesFramesAt120Hz) {
+  const lmc::devices::FineTimerResolution fine;
+  const bool pairs_checked = !lmc::test::running_under_wine();
+  const double period_ms = 1000.0 / 120.0;
+  std::string seen;
+  for (int round = 0; round < 5; ++round) {
+    const std::vector<double> intervals_ms = paced_intervals_ms();
+    const double median = intervals_ms[intervals_ms.size() / 2];
+    double total_ms = 0;
+    for (const double v : intervals_ms) total_ms += v;
+    const double mean = total_ms / static_cast<double>(intervals_ms.size());
+    // With the coarse timer every other frame comes at once after a late one (about half of them).
+    const auto pairs =
+        std::count_if(intervals_ms.begin(), intervals_ms.end(), [&](double v) { return v < 0.5 * period_ms; });
+    if (std::abs(median - period_ms) <= 1.0 && std::abs(mean - period_ms) <= 0.5 && (!pairs_checked || pairs < 30))
+      return;
+    seen += " median " + std::to_string(median) + " ms, mean " + std::to_string(mean) + " ms, " +
+            std::to_string(pairs) + " frames at once;";
+  }
+  ADD_FAILURE() << "no second of the five paced 120 Hz" << (pairs_checked ? "" : " (under Wine: pairs not checked)")
+                << ":" << seen;
 }
