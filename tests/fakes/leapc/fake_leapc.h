@@ -31,6 +31,10 @@ namespace fake_leapc {
 
 namespace leapc = lmc::devices::leapc;
 
+// Text the double's library carries (fake_leapc_api.cpp exports it): a test that finds a LeapC in
+// a machine-wide place tells an earlier run's double, which it may replace, from Ultraleap's own.
+inline constexpr char kMarker[] = "lmc-workbench LeapC test double";
+
 inline constexpr std::uint32_t kPidPeripheral = 0x0003;  // Leap Motion Controller
 inline constexpr std::uint32_t kPidSir170 = 0x1203;
 inline constexpr std::uint32_t kPidLmc2 = 0x1206;

@@ -18,6 +18,11 @@ using lmc::devices::leapc::DeviceRef;
 using lmc::devices::leapc::Result;
 using lmc::devices::leapc::Version;
 
+// Exported, so the marker's text is in the library's bytes whatever the linker drops.
+extern "C" const char* lmc_fake_leapc_marker() {
+  return kMarker;
+}
+
 namespace {
 
 // LMC_FAKE_LEAPC_DEVICES="3:LP11111,7:LP22222": devices plugged when the connection opens, so a
