@@ -1,7 +1,7 @@
 // On Windows LeapC is found where Ultraleap's installer puts it, with no search root and no
 // variable naming it: the double, built as LeapC.dll, is installed at
 // C:\Program Files\Ultraleap\LeapSDK\lib\x64\LeapC.dll (Wine's C: drive is its prefix) and found
-// there by the search the backend runs at every start.
+// there by the search the backend runs at every start. Built for Windows only (tests/CMakeLists.txt).
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -19,15 +19,12 @@ namespace {
 
 namespace fs = std::filesystem;
 
-#ifdef _WIN32
 std::string read_bytes(const fs::path& p) {
   std::ifstream in(p, std::ios::binary);
   return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
 }
-#endif
 
 TEST(LeapcWindowsPlace, FoundInTheUltraleapSdkFolder) {
-#ifdef _WIN32
   const char* named = std::getenv("LMC_LEAPC_LIBRARY");
   ASSERT_NE(named, nullptr) << "the test binary names the double (leapc_test_env.cpp)";
   const std::string double_path = named;
@@ -49,9 +46,6 @@ TEST(LeapcWindowsPlace, FoundInTheUltraleapSdkFolder) {
   EXPECT_EQ(fs::path(found.library->path), place);
   EXPECT_EQ(found.library->what, "Ultraleap SDK (Windows installer)");
   EXPECT_EQ(found.tried.size(), 1u);
-#else
-  GTEST_SKIP() << "Windows' install folder; the Linux places are checked by LeapcLibrarySearch";
-#endif
 }
 
 }  // namespace
