@@ -16,7 +16,7 @@ LiveFusion::LiveFusion(const Layout& layout, LiveFusionOptions options)
   options_.latency_window = std::max<size_t>(options_.latency_window, 1);
   ring_.resize(options_.queue_capacity);
   latency_ms_.resize(options_.latency_window);
-  worker_ = std::jthread([this](const std::stop_token& stop) { run(stop); });
+  worker_ = std::thread([this] { run(); });
 }
 
 LiveFusion::~LiveFusion() {
@@ -28,10 +28,8 @@ void LiveFusion::stop() {
     std::lock_guard lock(queue_mutex_);
     stopped_ = true;
   }
-  if (worker_.joinable()) {
-    worker_.request_stop();
-    worker_.join();
-  }
+  queue_cv_.notify_all();  // the worker's wait looks at stopped_, not at a stop token
+  if (worker_.joinable()) worker_.join();
 }
 
 void LiveFusion::tap(const HandFrame& frame) noexcept {
@@ -55,21 +53,22 @@ void LiveFusion::tap(const HandFrame& frame) noexcept {
   queue_cv_.notify_one();
 }
 
-void LiveFusion::run(const std::stop_token& stop) {
+void LiveFusion::run() {
   std::vector<Queued> batch;
   batch.reserve(ring_.size());  // the worker never allocates after this
   while (true) {
     batch.clear();
     {
       std::unique_lock lock(queue_mutex_);
-      // Bounded, as the recorder's wait: with MinGW-w64's threads (winpthreads) under Wine the
-      // stop callback's wake-up was missed and stop()'s join hung the workbench at exit. A waiter
-      // that looks again every 100 ms ends whatever the runtime does with the notification.
-      if (!queue_cv_.wait_for(lock, stop, std::chrono::milliseconds(100), [this] { return count_ > 0; })) {
-        if (stop.stop_requested()) return;
+      // A plain wait on stopped_, set and notified by stop(), as the recorder's writer waits: the
+      // stop-token overload registers a std::stop_callback on every call, and with MinGW-w64's
+      // libstdc++ (no futex: its semaphores wait on a condition variable) deregistering one while
+      // stop() runs it can wait for ever, so stop()'s join hung the workbench under Wine (at exit,
+      // and once in CI's capture, when a session closed). The 100 ms bound looks again whatever
+      // the runtime does with a notification.
+      if (!queue_cv_.wait_for(lock, std::chrono::milliseconds(100), [this] { return count_ > 0 || stopped_; }))
         continue;
-      }
-      if (stop.stop_requested()) return;
+      if (stopped_) return;
       for (; count_ > 0; --count_) {
         batch.push_back(ring_[head_]);
         head_ = (head_ + 1) % ring_.size();

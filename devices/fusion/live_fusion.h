@@ -20,7 +20,6 @@
 #include <memory>
 #include <mutex>
 #include <optional>
-#include <stop_token>
 #include <thread>
 #include <vector>
 
@@ -73,7 +72,7 @@ class LiveFusion final : public FrameTap {
     HandFrame frame;
     std::int64_t arrival_ns = 0;
   };
-  void run(const std::stop_token& stop);
+  void run();
 
   Layout layout_;
   LiveFusionOptions options_;
@@ -81,7 +80,7 @@ class LiveFusion final : public FrameTap {
 
   // The queue: a ring of queue_capacity slots, allocated once.
   mutable std::mutex queue_mutex_;
-  std::condition_variable_any queue_cv_;
+  std::condition_variable queue_cv_;
   std::vector<Queued> ring_;
   size_t head_ = 0;  // oldest
   size_t count_ = 0;
@@ -99,7 +98,7 @@ class LiveFusion final : public FrameTap {
   std::int64_t refused_ = 0;
   std::uint64_t published_ = 0;
 
-  std::jthread worker_;  // last: started when everything above exists, joined first
+  std::thread worker_;  // last: started when everything above exists, joined first
 };
 
 }  // namespace lmc::devices

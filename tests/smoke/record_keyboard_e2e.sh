@@ -35,7 +35,9 @@ press() {
   xdotool key --clearmodifiers "$1"
 }
 
-window=$(xdotool search --sync --onlyvisible --name "LMC Workbench" | head -1)
+# Bounded: a workbench that never shows its window fails the test instead of holding it.
+window=$(timeout 120 xdotool search --sync --onlyvisible --name "LMC Workbench" | head -1 || true)
+[ -n "$window" ] || { echo "no window named LMC Workbench within 2 min; its output:"; cat "$work/workbench.log" 2>/dev/null; exit 1; }
 xdotool windowfocus --sync "$window" || true
 wait_for '"session_opened"' 1 "the session to open"
 sleep 1  # a few frames for the tab to draw

@@ -41,6 +41,8 @@ wait_for_status() {
 start() {
   "$workbench" "$@" >> "$work/workbench.log" 2>&1 &
   pid=$!
-  window=$(xdotool search --sync --onlyvisible --name "LMC Workbench" | head -1)
+  # Bounded: a workbench that never shows its window fails the test instead of holding it.
+  window=$(timeout 120 xdotool search --sync --onlyvisible --name "LMC Workbench" | head -1 || true)
+  [ -n "$window" ] || { echo "no window named LMC Workbench within 2 min; its output:"; cat "$work/workbench.log" 2>/dev/null; exit 1; }
   xdotool windowactivate --sync "$window" 2>/dev/null || xdotool windowfocus --sync "$window" || true
 }

@@ -32,7 +32,7 @@ jobs=${LMC_WINE_JOBS:-$(nproc)}
 # Against a hang only, never a verdict on speed: a suite takes about a minute on an idle machine,
 # and ten times that when Wine is starved (its wineserver, through which every wait goes, at a low
 # priority on a busy machine).
-unit_limit=${LMC_WINE_UNIT_LIMIT:-2400}
+unit_limit=${LMC_WINE_UNIT_LIMIT:-600}
 winepath() { "$wine" winepath.exe -w "$1" 2>/dev/null | tr -d '\r'; }
 step_start=$SECONDS
 step() {

@@ -79,7 +79,9 @@ DRIVE
 chmod +x "$out/drive.sh"
 status=0
 # A screen larger than the window: Wine, as Windows, keeps a window with its title bar inside it.
-xvfb-run -a -s "-screen 0 1400x900x24" "$out/drive.sh" "$out" "$wine" "$app" "$root/tests/smoke/xdotool_lib.sh" || status=$?
+bounded "$out/drive.log" lmc-workbench.exe "the drive" \
+  xvfb-run -a -s "-screen 0 1400x900x24" "$out/drive.sh" "$out" "$wine" "$app" "$root/tests/smoke/xdotool_lib.sh" || status=$?
+cat "$out/drive.log"
 end_wine
 [ "$status" -eq 0 ] || { echo "workbench_drive_under_wine: FAILED (the drive above; pictures and logs in $out)"; exit 1; }
 

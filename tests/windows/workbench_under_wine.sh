@@ -32,9 +32,15 @@ capture() {
   pictures=$(winepath "$out/$name")
   end_wine  # a Wine started without the display would not open a window on it
   # The Devices tab's calibration records into the sessions folder: the test's, not the user's.
+  local code=0
   LMC_SESSIONS_DIR=$sessions LMC_LAYOUT_HEATMAP_CELLS=24 \
-    xvfb-run -a -s "-screen 0 ${screen}x24" "$wine" "$app" --capture "$pictures" "$@" \
-    >"$out/$name.log" 2>&1 || { echo "lmc-workbench.exe --capture ended with $? (log: $out/$name.log)"; tail -20 "$out/$name.log"; status=1; }
+    bounded "$out/$name.log" lmc-workbench.exe "the capture at $dpi dpi" \
+    xvfb-run -a -s "-screen 0 ${screen}x24" "$wine" "$app" --capture "$pictures" "$@" || code=$?
+  if [ "$code" -ne 0 ]; then
+    echo "lmc-workbench.exe --capture ended with $code (log: $out/$name.log)"
+    tail -20 "$out/$name.log"
+    status=1
+  fi
   end_wine
 }
 
@@ -43,10 +49,12 @@ capture() {
 new_prefix wineprefix-workbench-96 96
 mkdir -p "$out/demo"
 lmc_exe=$out/unpacked/lmc-workbench/lmc.exe
-"$wine" "$lmc_exe" session new --subject W01 --protocol quick --hand-length-mm 180 --hand-breadth-mm 82 \
-  -o "$(winepath "$out/demo")\\W01" >"$out/demo.log" 2>&1 &&
-  "$wine" "$lmc_exe" session run "$(winepath "$out/demo")\\W01" --backend sim --fast --auto --quiet --seed 5 \
-    >>"$out/demo.log" 2>&1 || { echo "workbench_under_wine: lmc.exe could not record the demo session ($out/demo.log)"; status=1; }
+bounded "$out/demo-new.log" lmc.exe "lmc.exe session new" \
+  "$wine" "$lmc_exe" session new --subject W01 --protocol quick --hand-length-mm 180 --hand-breadth-mm 82 \
+  -o "$(winepath "$out/demo")\\W01" &&
+  bounded "$out/demo.log" lmc.exe "lmc.exe session run" \
+    "$wine" "$lmc_exe" session run "$(winepath "$out/demo")\\W01" --backend sim --fast --auto --quiet --seed 5 ||
+  { echo "workbench_under_wine: lmc.exe could not record the demo session ($out/demo-new.log, $out/demo.log)"; status=1; }
 demo=$(winepath "$out/demo")\\W01
 end_wine
 step "the demo session for the Review tab: $out/demo/W01"

@@ -205,6 +205,28 @@ TEST(LiveFusion, FramesOfSlotsOutsideTheLayoutAreRefusedAndStopJoinsCleanly) {
   EXPECT_EQ(live.stats().frames_tapped, 2);
 }
 
+// stop() comes while the worker waits for frames, wakes for one, or fuses them: it must return
+// every time. With the stop-token wait the worker once used, MinGW-w64's runtime under Wine could
+// leave stop() waiting for ever (a session closing in the workbench's capture held CI for its
+// whole time); this loop meets each of those moments many times, in the Windows suite as here.
+TEST(LiveFusion, StopReturnsWhereverTheWorkerIs) {
+  const Layout layout = load_layout_or_preset("paper-initial");
+  std::int64_t tapped = 0;
+  for (int round = 0; round < 400; ++round) {
+    LiveFusion live(layout);
+    const int frames = round % 4;  // none: the worker waits; some: it wakes or fuses as stop() comes
+    for (int k = 1; k <= frames; ++k) live.tap(empty_frame(1 + k % 4, round * 4 + k));
+    if (round % 3 == 1) std::this_thread::yield();
+    if (round % 3 == 2) std::this_thread::sleep_for(std::chrono::microseconds(50 * (round % 7)));
+    live.stop();
+    const LiveFusionStats stats = live.stats();
+    EXPECT_EQ(stats.frames_tapped, frames);
+    EXPECT_LE(stats.frames_fused + stats.frames_refused + stats.frames_dropped, frames);
+    tapped += stats.frames_tapped;
+  }
+  EXPECT_EQ(tapped, 100 * (0 + 1 + 2 + 3));
+}
+
 TEST(LiveFusion, AHubCallsItsTapsAfterTheRecorderAndNotAfterRemoval) {
   Layout layout = load_layout_or_preset("paper-initial");
   DeviceHub hub(layout);
