@@ -22,18 +22,14 @@ build=$root/build/windows
 [ "${1:-}" = --no-build ] || scripts/build-windows --tests
 
 deps=${LMC_WINDOWS_DEPS_DIR:-${XDG_CACHE_HOME:-$HOME/.cache}/lmc-workbench/windows-deps}
-export WINEPREFIX=${WINEPREFIX:-$(dirname "$deps")/wineprefix} WINEDEBUG=-all
-# No Mono or Gecko download prompts: nothing here needs .NET or a browser engine.
-export WINEDLLOVERRIDES="mscoree,mshtml="
-wine=$(command -v wine64 || true)
-[ -n "$wine" ] || wine=/usr/lib/wine/wine64
-[ -x "$wine" ] || { echo "run_under_wine: wine64 is missing (scripts/install-deps --windows)" >&2; exit 1; }
+export WINEPREFIX=${WINEPREFIX:-$(dirname "$deps")/wineprefix}
+# shellcheck source=tests/windows/wine_env.sh
+source "$root/tests/windows/wine_env.sh"
 jobs=${LMC_WINE_JOBS:-$(nproc)}
-# Against a hang only, never a verdict on speed: a suite takes about a minute on an idle machine,
-# and ten times that when Wine is starved (its wineserver, through which every wait goes, at a low
-# priority on a busy machine).
+# Against a hang only, never a verdict on speed: a suite takes under half a minute on an idle
+# machine, and many times that when Wine is starved (its wineserver, through which every wait goes,
+# at a low priority on a busy machine).
 unit_limit=${LMC_WINE_UNIT_LIMIT:-600}
-winepath() { "$wine" winepath.exe -w "$1" 2>/dev/null | tr -d '\r'; }
 step_start=$SECONDS
 step() {
   echo "run_under_wine: $* (+$((SECONDS - step_start)) s)"
