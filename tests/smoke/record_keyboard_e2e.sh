@@ -16,9 +16,10 @@ cat > "$work/drive.sh" <<'EOF'
 #!/usr/bin/env bash
 set -eu
 workbench=$1; session=$2; work=$3
-LMC_STATUS_TRACE="$work/status-trace.txt" "$workbench" --session "$session" --fast > "$work/workbench.log" 2>&1 &
-pid=$!
-trap 'kill $pid 2>/dev/null || true' EXIT
+# shellcheck source=tests/smoke/xdotool_lib.sh
+source "$4"  # press, start
+pid=""
+trap '[ -z "$pid" ] || kill "$pid" 2>/dev/null || true' EXIT
 journal="$session/journal.jsonl"
 
 # Waits (up to 60 s) until the journal holds `count` lines matching `pattern`.
@@ -31,14 +32,8 @@ wait_for() {
   done
   echo "timed out waiting for $what; journal:"; cat "$journal"; exit 1
 }
-press() {
-  xdotool key --clearmodifiers "$1"
-}
 
-# Bounded: a workbench that never shows its window fails the test instead of holding it.
-window=$(timeout 120 xdotool search --sync --onlyvisible --name "LMC Workbench" | head -1 || true)
-[ -n "$window" ] || { echo "no window named LMC Workbench within 2 min; its output:"; cat "$work/workbench.log" 2>/dev/null; exit 1; }
-xdotool windowfocus --sync "$window" || true
+LMC_STATUS_TRACE="$work/status-trace.txt" start --session "$session" --fast
 wait_for '"session_opened"' 1 "the session to open"
 sleep 1  # a few frames for the tab to draw
 press space; wait_for '"type":"preflight"' 1 "the pre-flight"
@@ -65,7 +60,8 @@ if kill -0 $pid 2>/dev/null; then echo "Ctrl+Q did not close the workbench"; exi
 trap - EXIT
 EOF
 chmod +x "$work/drive.sh"
-xvfb-run -a -s "-screen 0 1280x800x24" "$work/drive.sh" "$workbench" "$session" "$work"
+xvfb-run -a -s "-screen 0 1280x800x24" "$work/drive.sh" "$workbench" "$session" "$work" \
+  "$(cd "$(dirname "$0")" && pwd)/xdotool_lib.sh"
 
 "$lmc" session status "$session" --json > "$work/status.json"
 python3 - "$work/status.json" "$session" <<'EOF'
