@@ -22,7 +22,6 @@ function(lmc_msvc_compile_flags target)
   endif()
   if(LMC_SANITIZE)
     target_compile_options(${target} PRIVATE /fsanitize=address)
-    target_compile_definitions(${target} PRIVATE EIGEN_MALLOC_ALREADY_ALIGNED=0)
   endif()
 endfunction()
 
@@ -58,10 +57,12 @@ function(lmc_compile_flags target)
       target_compile_options(${target} PRIVATE -fsanitize=address,undefined -fno-sanitize-recover=all
                                                -fno-omit-frame-pointer ${LMC_UBSAN_SKIP_LIST})
       target_link_options(${target} PRIVATE -fsanitize=address,undefined)
-      # Eigen picks its allocator by whether the file is compiled with ASan: files with and without
-      # (LMC_TEST_FLAGS) would then free each other's matrices with the wrong one. One choice for all.
-      target_compile_definitions(${target} PRIVATE EIGEN_MALLOC_ALREADY_ALIGNED=0)
     endif()
+  endif()
+  if(LMC_SANITIZE)
+    # Eigen picks its allocator by whether the file is compiled with ASan: files with and without
+    # (LMC_TEST_FLAGS) would then free each other's matrices with the wrong one. One choice for all.
+    target_compile_definitions(${target} PRIVATE EIGEN_MALLOC_ALREADY_ALIGNED=0)
   endif()
   # No absolute paths here (they would tie every object to the checkout's folder): the assets
   # path is compiled into core/common/paths.cpp alone.

@@ -203,7 +203,7 @@ class Recorder final : public FrameConsumer {
   // The writer sleeps on wake_ (under wake_mutex_) while the ring is empty, until a push, its
   // flush deadline or a stop request.
   std::mutex wake_mutex_;
-  std::condition_variable_any wake_;
+  std::condition_variable wake_;  // no stop-token waits: run() says why
   mutable std::mutex stats_mutex_;
   std::map<int, DeviceRecordStats> stats_;
   std::map<int, std::int64_t> last_frame_id_;
