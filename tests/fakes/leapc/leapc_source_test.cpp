@@ -259,11 +259,19 @@ TEST_F(LeapcBackend, EachDeviceIsAskedForTheTrackingModeOfItsPlaceAndItsModeAndM
   // Both left in head-mounted mode by another program; LMC2 is a Leap Motion Controller 2.
   fake_leapc::plug(1, "LP11111", fake_leapc::kPidPeripheral, leapc::kModeHmd);
   fake_leapc::plug(2, "LP22222", fake_leapc::kPidLmc2, leapc::kModeHmd);
-  auto modes_known = [&] {
+  // The service applies a request a few polls later (the double as well), and a read before then
+  // gives the old mode: the Devices row may show head-mounted first. Waited for until both show
+  // the mode of their place; a backend that never got there fails here.
+  auto modes_settled = [&] {
     const auto snap = hub.snapshot();
-    return snap.devices.size() == 2 && !snap.devices[0].tracking_mode.empty() && !snap.devices[1].tracking_mode.empty();
+    return snap.devices.size() == 2 && snap.devices[0].tracking_mode == "screen-top" &&
+           snap.devices[1].tracking_mode == "desktop";
   };
-  ASSERT_TRUE(wait_for(modes_known));
+  ASSERT_TRUE(wait_for(modes_settled)) << "modes shown: " << [&] {
+    std::string shown;
+    for (const auto& d : hub.snapshot().devices) shown += d.slot + " " + d.tracking_mode + "; ";
+    return shown;
+  }();
   EXPECT_EQ(fake_leapc::requested_tracking_mode(1), leapc::kModeScreenTop);
   EXPECT_EQ(fake_leapc::requested_tracking_mode(2), leapc::kModeDesktop);
   EXPECT_EQ(fake_leapc::stats().tracking_mode_calls, 2);
